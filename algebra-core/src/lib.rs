@@ -1,0 +1,37 @@
+//! # algebra-core
+//!
+//! The exact engine of GAM: Clifford algebras over **any** symmetric bilinear form (diagonal,
+//! non-diagonal, degenerate), in the *blade* basis (outer products of generators) and in the
+//! *product* basis (geometric products of generators, the basis of Cross, Cripps and
+//! Mullineux 2022), with exact product tables, layered scalar traits, and a runtime
+//! [`Multivector`] that serves as the reference for generated kernels.
+//!
+//! ```
+//! use algebra_core::{Algebra, Basis, Multivector, rational::Q};
+//! let alg = Algebra::builtin("cga-null").unwrap();
+//! let e0 = Multivector::<Q>::basis_element(&alg, Basis::Product, "e0").unwrap();
+//! let einf = Multivector::<Q>::basis_element(&alg, Basis::Product, "einf").unwrap();
+//! // einf e0 = -2 - e0inf in the product basis (e0 . einf = -1).
+//! assert_eq!((&einf * &e0).to_string(), "-2 - e0inf");
+//! ```
+
+pub mod algebra;
+pub mod basis;
+pub mod metric;
+pub mod multivector;
+pub mod rational;
+pub mod scalar;
+pub mod tables;
+#[cfg(feature = "rug")]
+pub mod poly;
+
+pub use algebra::Algebra;
+pub use basis::{Basis, BasisError};
+pub use metric::{Metric, MetricError};
+pub use multivector::{Multivector, MvError};
+pub use scalar::{Field, Jet, Real, Ring};
+#[cfg(feature = "rug")]
+pub use scalar::{MpFloat, MpRational, PrecisionGuard, default_precision, set_default_precision};
+#[cfg(feature = "rug")]
+
+pub use tables::{Product, Tables, Unary};

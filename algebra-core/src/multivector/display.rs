@@ -1,0 +1,66 @@
+//! Printing a multivector as a sum of basis elements.
+
+use super::Multivector;
+use crate::scalar::Ring;
+use std::fmt;
+
+/// Formats one term `c*name` the way the CLI prints it: `e12`, `-e12`, `3/2*e12`,
+/// `(x + y)*e12`, or just `c` for the scalar.
+pub fn format_term(coeff: &str, name: &str) -> String {
+    if name == "1" {
+        return coeff.to_string();
+    }
+    match coeff {
+        "1" => name.to_string(),
+        "-1" => format!("-{name}"),
+        c if c.get(1..).is_some_and(|rest| rest.contains([' ', '+', '-']) && !is_number(c)) => {
+            format!("({c})*{name}")
+        }
+        c => format!("{c}*{name}"),
+    }
+}
+
+/// True for a plain number like `-1.5e-3` or `3/4` (its signs need no parentheses).
+fn is_number(s: &str) -> bool {
+    s.parse::<f64>().is_ok() || crate::rational::parse_rational(s).is_ok()
+}
+
+/// Joins terms with ` + ` / ` - `; `0` when there are none.
+pub fn join_terms(terms: impl IntoIterator<Item = String>) -> String {
+    let mut out = String::new();
+    for t in terms {
+        if out.is_empty() {
+            out = t;
+        } else if let Some(rest) = t.strip_prefix('-') {
+            out.push_str(" - ");
+            out.push_str(rest);
+        } else {
+            out.push_str(" + ");
+            out.push_str(&t);
+        }
+    }
+    if out.is_empty() { "0".to_string() } else { out }
+}
+
+impl<T: Ring> fmt::Display for Multivector<T> {
+    /// `-2 - e0inf`, `1/2*e12 + e3`, `(x + 1)*e1`; `0` for zero. Terms in basis order.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&join_terms(self.terms().map(|(_, name, c)| format_term(&c.to_string(), name))))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn terms_format() {
+        assert_eq!(format_term("1", "e1"), "e1");
+        assert_eq!(format_term("-1", "e1"), "-e1");
+        assert_eq!(format_term("-3/2", "e1"), "-3/2*e1");
+        assert_eq!(format_term("1e-5", "e1"), "1e-5*e1");
+        assert_eq!(format_term("x - y", "e1"), "(x - y)*e1");
+        assert_eq!(format_term("-x*y", "e1"), "-x*y*e1");
+        assert_eq!(join_terms(["-2".to_string(), "-e0inf".to_string()]), "-2 - e0inf");
+    }
+}

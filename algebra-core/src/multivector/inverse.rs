@@ -1,0 +1,96 @@
+//! Inverse and division over a [`Field`]: exact Gaussian elimination on the matrix of left
+//! multiplication, so it works for every metric (degenerate too) without closed forms.
+
+use super::{Multivector, MvError};
+use crate::scalar::{Field, Ring};
+use crate::tables::Product;
+
+impl<T: Field> Multivector<T> {
+    /// The two-sided inverse, or [`MvError::NotInvertible`] for a zero divisor.
+    ///
+    /// Solves `self * y = 1` by Gaussian elimination on the `2^n x 2^n` matrix of left
+    /// multiplication (exact over rationals; partial pivoting over floats, where a pivot
+    /// below `64 · ε · 2^n · max|entry|` counts as zero). In a finite-dimensional associative
+    /// algebra a right inverse is also a left inverse.
+    ///
+    /// ```
+    /// use algebra_core::{Algebra, Basis, Multivector, MvError, rational::{Q, ratio}};
+    /// let alg = Algebra::builtin("cga-null").unwrap();
+    /// let e0 = Multivector::<Q>::basis_element(&alg, Basis::Product, "e0").unwrap();
+    /// assert!(matches!(e0.inverse(), Err(MvError::NotInvertible(_)))); // e0^2 = 0
+    /// // 2 + e0inf = 1 + e0^einf is a zero divisor ((e0^einf)^2 = 1); 3 + e0inf is not.
+    /// let z = Multivector::<Q>::from_terms(&alg, Basis::Product, [("1", ratio(2, 1)), ("e0inf", ratio(1, 1))]).unwrap();
+    /// assert!(z.inverse().is_err());
+    /// let x = Multivector::<Q>::from_terms(&alg, Basis::Product, [("1", ratio(3, 1)), ("e0inf", ratio(1, 1))]).unwrap();
+    /// let y = x.inverse().unwrap();
+    /// assert_eq!(&x * &y, Multivector::scalar(&alg, Basis::Product, ratio(1, 1)));
+    /// ```
+    pub fn inverse(&self) -> Result<Self, MvError> {
+        let dim = self.algebra.dim();
+        let table = self.algebra.tables().product(self.basis, Product::Geometric);
+        // column j of L = self * e_j
+        let mut l: Vec<Vec<T>> = vec![vec![T::zero(); dim]; dim];
+        for (a, x) in self.coeffs.iter().enumerate() {
+            if x.is_exact_zero() {
+                continue;
+            }
+            for j in 0..dim {
+                for (k, c) in table.get(a as u32, j as u32) {
+                    l[*k as usize][j].add_assign_ref(&x.scale_rational(c));
+                }
+            }
+        }
+        let mut rhs: Vec<T> = vec![T::zero(); dim];
+        rhs[0] = T::one();
+        let scale = l.iter().flatten().map(Ring::magnitude).fold(0.0, f64::max);
+        let tol = 64.0 * T::relative_epsilon() * dim as f64 * scale;
+        let not_invertible = || MvError::NotInvertible(self.to_string());
+        for col in 0..dim {
+            let pivot = (col..dim)
+                .filter(|&r| !l[r][col].is_exact_zero())
+                .max_by(|&a, &b| l[a][col].magnitude().total_cmp(&l[b][col].magnitude()))
+                .ok_or_else(not_invertible)?;
+            if l[pivot][col].magnitude() <= tol {
+                return Err(not_invertible());
+            }
+            l.swap(pivot, col);
+            rhs.swap(pivot, col);
+            let inv = l[col][col].try_recip().ok_or_else(not_invertible)?;
+            for r in col + 1..dim {
+                if l[r][col].is_exact_zero() {
+                    continue;
+                }
+                let f = l[r][col].mul_ref(&inv);
+                for c in col..dim {
+                    let d = f.mul_ref(&l[col][c]);
+                    l[r][c].sub_assign_ref(&d);
+                }
+                let d = f.mul_ref(&rhs[col]);
+                rhs[r].sub_assign_ref(&d);
+            }
+        }
+        let mut y = vec![T::zero(); dim];
+        for row in (0..dim).rev() {
+            let mut acc = rhs[row].clone();
+            for c in row + 1..dim {
+                acc.sub_assign_ref(&l[row][c].mul_ref(&y[c]));
+            }
+            y[row] = acc.div_ref(&l[row][row]);
+        }
+        Ok(Multivector { algebra: self.algebra.clone(), basis: self.basis, coeffs: y })
+    }
+
+    /// `self * rhs^-1`.
+    ///
+    /// ```
+    /// use algebra_core::{Algebra, Basis, Multivector};
+    /// let alg = Algebra::builtin("g3").unwrap();
+    /// let e1 = Multivector::<f64>::basis_element(&alg, Basis::Blade, "e1").unwrap();
+    /// let e12 = Multivector::<f64>::basis_element(&alg, Basis::Blade, "e12").unwrap();
+    /// assert_eq!(e12.div(&e1).unwrap().to_string(), "-e2");
+    /// ```
+    pub fn div(&self, rhs: &Self) -> Result<Self, MvError> {
+        self.same_algebra(rhs)?;
+        Ok(self.gp(&rhs.inverse()?))
+    }
+}

@@ -1,0 +1,1 @@
+//! Placeholder: the sparse multivariate polynomial scalar arrives in this commit series.

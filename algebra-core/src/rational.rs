@@ -1,0 +1,150 @@
+//! Exact rationals used by metrics and product tables (`num-rational`'s `BigRational`, so the
+//! tables build without GMP), with the parser and printer of the CLI's coefficient syntax.
+
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use num_traits::{One, Signed, ToPrimitive, Zero};
+use std::fmt;
+
+/// An exact rational number.
+pub type Q = BigRational;
+
+/// The integer `n` as a rational.
+///
+/// ```
+/// use algebra_core::rational::{q, parse_rational};
+/// assert_eq!(q(-1), parse_rational("-1").unwrap());
+/// ```
+pub fn q(n: i64) -> Q {
+    Q::from_integer(BigInt::from(n))
+}
+
+/// The ratio `num / den` as a rational (`den != 0`).
+///
+/// ```
+/// use algebra_core::rational::{ratio, format_rational};
+/// assert_eq!(format_rational(&ratio(2, -4)), "-1/2");
+/// ```
+pub fn ratio(num: i64, den: i64) -> Q {
+    Q::new(BigInt::from(num), BigInt::from(den))
+}
+
+/// Why a rational literal could not be read.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum RationalParseError {
+    /// Not of the form `p`, `p/q` or a decimal `d.ddd` (optionally with an exponent).
+    #[error("`{0}` is not a rational number (expected p, p/q or a decimal)")]
+    Syntax(String),
+    /// A zero denominator.
+    #[error("`{0}` has a zero denominator")]
+    ZeroDenominator(String),
+}
+
+/// Parses `p`, `p/q`, or an exact decimal (`0.25`, `-1.5e-3`) into a rational.
+///
+/// ```
+/// use algebra_core::rational::{parse_rational, ratio};
+/// assert_eq!(parse_rational("0.25").unwrap(), ratio(1, 4));
+/// assert_eq!(parse_rational("-3/6").unwrap(), ratio(-1, 2));
+/// assert!(parse_rational("1/0").is_err());
+/// ```
+pub fn parse_rational(text: &str) -> Result<Q, RationalParseError> {
+    let s = text.trim();
+    let err = || RationalParseError::Syntax(text.to_string());
+    if let Some((n, d)) = s.split_once('/') {
+        let n: BigInt = parse_int(n.trim()).ok_or_else(err)?;
+        let d: BigInt = parse_int(d.trim()).ok_or_else(err)?;
+        if d.is_zero() {
+            return Err(RationalParseError::ZeroDenominator(text.to_string()));
+        }
+        return Ok(Q::new(n, d));
+    }
+    parse_decimal(s).ok_or_else(err)
+}
+
+fn parse_int(s: &str) -> Option<BigInt> {
+    let digits = s.strip_prefix(['-', '+']).unwrap_or(s);
+    if digits.is_empty() || !digits.bytes().all(|b| b.is_ascii_digit()) {
+        return None;
+    }
+    s.parse().ok()
+}
+
+fn parse_decimal(s: &str) -> Option<Q> {
+    let (mantissa, exponent) = match s.find(['e', 'E']) {
+        Some(i) => (&s[..i], s[i + 1..].parse::<i32>().ok()?),
+        None => (s, 0),
+    };
+    let (neg, body) = match mantissa.strip_prefix('-') {
+        Some(rest) => (true, rest),
+        None => (false, mantissa.strip_prefix('+').unwrap_or(mantissa)),
+    };
+    let (int_part, frac_part) = body.split_once('.').unwrap_or((body, ""));
+    if int_part.is_empty() && frac_part.is_empty() {
+        return None;
+    }
+    if !int_part.bytes().chain(frac_part.bytes()).all(|b| b.is_ascii_digit()) {
+        return None;
+    }
+    let digits: BigInt = format!("{int_part}{frac_part}0").parse().ok()?;
+    let digits = digits / BigInt::from(10);
+    let scale = exponent - i32::try_from(frac_part.len()).ok()?;
+    let ten = BigInt::from(10);
+    let value = if scale >= 0 {
+        Q::from_integer(digits * num_traits::pow(ten, scale as usize))
+    } else {
+        Q::new(digits, num_traits::pow(ten, (-scale) as usize))
+    };
+    Some(if neg { -value } else { value })
+}
+
+/// Prints `p` or `p/q` in lowest terms (the CLI's `rational` coefficient syntax).
+///
+/// ```
+/// use algebra_core::rational::{format_rational, ratio};
+/// assert_eq!(format_rational(&ratio(6, 4)), "3/2");
+/// assert_eq!(format_rational(&ratio(-2, 1)), "-2");
+/// ```
+pub fn format_rational(x: &Q) -> String {
+    if x.denom().is_one() {
+        x.numer().to_string()
+    } else {
+        format!("{}/{}", x.numer(), x.denom())
+    }
+}
+
+/// `x` rounded to the nearest f64 (infinite if out of range).
+///
+/// ```
+/// use algebra_core::rational::{rational_to_f64, ratio};
+/// assert_eq!(rational_to_f64(&ratio(1, 4)), 0.25);
+/// ```
+pub fn rational_to_f64(x: &Q) -> f64 {
+    x.to_f64().unwrap_or_else(|| {
+        if x.is_negative() {
+            f64::NEG_INFINITY
+        } else {
+            f64::INFINITY
+        }
+    })
+}
+
+/// The exact rational value of a finite f64, or `None` for NaN and infinities.
+///
+/// ```
+/// use algebra_core::rational::{rational_from_f64, ratio};
+/// assert_eq!(rational_from_f64(0.375), Some(ratio(3, 8)));
+/// ```
+pub fn rational_from_f64(x: f64) -> Option<Q> {
+    Q::from_float(x)
+}
+
+/// A rational displayed in the CLI syntax.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Display<'a>(pub &'a Q);
+
+impl fmt::Display for Display<'_> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&format_rational(self.0))
+    }
+}
