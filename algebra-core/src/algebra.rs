@@ -74,8 +74,8 @@ impl Algebra {
             "cga" => Metric::from_squares(labels(&["1", "2", "3", "4", "5"]), vec![q(1), q(1), q(1), q(1), q(-1)])?,
             "cga-null" => {
                 let mut g = vec![vec![q(0); 5]; 5];
-                for i in 1..4 {
-                    g[i][i] = q(1);
+                for (i, row) in g.iter_mut().enumerate().take(4).skip(1) {
+                    row[i] = q(1);
                 }
                 g[0][4] = q(-1);
                 g[4][0] = q(-1);

@@ -84,7 +84,7 @@ pub fn grade(mask: u32) -> usize {
 
 /// `(-1)^k` as an i64 sign for the parity of `k`.
 pub(crate) fn parity_sign(k: usize) -> i64 {
-    if k % 2 == 0 { 1 } else { -1 }
+    if k.is_multiple_of(2) { 1 } else { -1 }
 }
 
 /// The sign of `e_A ^ e_B` relative to `e_{A u B}` for disjoint subsets (the parity of the

@@ -19,19 +19,19 @@ pub mod algebra;
 pub mod basis;
 pub mod metric;
 pub mod multivector;
+#[cfg(feature = "rug")]
+pub mod poly;
 pub mod rational;
 pub mod scalar;
 pub mod tables;
-#[cfg(feature = "rug")]
-pub mod poly;
 
 pub use algebra::Algebra;
 pub use basis::{Basis, BasisError};
 pub use metric::{Metric, MetricError};
 pub use multivector::{Multivector, MvError};
+#[cfg(feature = "rug")]
+pub use poly::Poly;
 pub use scalar::{Field, Jet, Real, Ring};
 #[cfg(feature = "rug")]
 pub use scalar::{MpFloat, MpRational, PrecisionGuard, default_precision, set_default_precision};
-#[cfg(feature = "rug")]
-
 pub use tables::{Product, Tables, Unary};

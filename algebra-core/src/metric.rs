@@ -164,9 +164,8 @@ impl Metric {
     /// ```
     pub fn from_squares(labels: Vec<String>, squares: Vec<Q>) -> Result<Self, MetricError> {
         let n = squares.len();
-        let gram = (0..n)
-            .map(|i| (0..n).map(|j| if i == j { squares[i].clone() } else { Q::zero() }).collect())
-            .collect();
+        let gram =
+            (0..n).map(|i| (0..n).map(|j| if i == j { squares[i].clone() } else { Q::zero() }).collect()).collect();
         Metric::new(labels, gram)
     }
 
@@ -265,9 +264,9 @@ impl Metric {
     /// ```
     pub fn from_toml_str(text: &str, path: &str) -> Result<(Option<String>, Metric), MetricError> {
         let err = |message: String| MetricError::Toml { path: path.to_string(), message };
-        let doc: toml::Table = text.parse().map_err(|e: toml::de::Error| {
-            err(e.to_string().lines().next().unwrap_or("parse error").to_string())
-        })?;
+        let doc: toml::Table = text
+            .parse()
+            .map_err(|e: toml::de::Error| err(e.to_string().lines().next().unwrap_or("parse error").to_string()))?;
         for key in doc.keys() {
             if !["name", "generators", "gram", "metric"].contains(&key.as_str()) {
                 return Err(err(format!("unknown key `{key}` (expected name, generators, gram or metric)")));
@@ -294,7 +293,9 @@ impl Metric {
             match v {
                 toml::Value::Integer(i) => Ok(q(*i)),
                 toml::Value::String(s) => parse_rational(s).map_err(|e| err(format!("{at}: {e}"))),
-                _ => Err(err(format!("{at}: entries must be integers or rational strings like \"1/2\" (floats are not exact)"))),
+                _ => Err(err(format!(
+                    "{at}: entries must be integers or rational strings like \"1/2\" (floats are not exact)"
+                ))),
             }
         };
         let gram = match (doc.get("gram"), doc.get("metric")) {
@@ -314,12 +315,10 @@ impl Metric {
                 .collect::<Result<Vec<_>, _>>()?,
             (None, Some(toml::Value::Table(t))) => {
                 let mut gram = vec![vec![Q::zero(); n]; n];
-                let index: HashMap<&str, usize> =
-                    labels.iter().enumerate().map(|(i, l)| (l.as_str(), i)).collect();
+                let index: HashMap<&str, usize> = labels.iter().enumerate().map(|(i, l)| (l.as_str(), i)).collect();
                 for (key, v) in t {
-                    let (a, b) = key
-                        .split_once(',')
-                        .ok_or_else(|| err(format!("metric key `{key}` must be \"a,b\"")))?;
+                    let (a, b) =
+                        key.split_once(',').ok_or_else(|| err(format!("metric key `{key}` must be \"a,b\"")))?;
                     let ia = *index.get(a.trim()).ok_or_else(|| MetricError::UnknownLabel(a.trim().into()))?;
                     let ib = *index.get(b.trim()).ok_or_else(|| MetricError::UnknownLabel(b.trim().into()))?;
                     let value = entry(v, &format!("metric \"{key}\""))?;
@@ -345,7 +344,11 @@ fn check_unambiguous(labels: &[String]) -> Result<(), MetricError> {
                 let parts: Vec<&str> = (0..n).filter(|i| m >> i & 1 == 1).map(|i| labels[i].as_str()).collect();
                 format!("[{}]", parts.join(", "))
             };
-            return Err(MetricError::AmbiguousLabels { name: format!("e{name}"), first: show(other), second: show(mask) });
+            return Err(MetricError::AmbiguousLabels {
+                name: format!("e{name}"),
+                first: show(other),
+                second: show(mask),
+            });
         }
         seen.insert(name, mask);
     }
@@ -353,6 +356,7 @@ fn check_unambiguous(labels: &[String]) -> Result<(), MetricError> {
 }
 
 /// The determinant of a rational matrix by exact Gaussian elimination.
+#[allow(clippy::needless_range_loop)] // row operations read clearest with indices
 pub(crate) fn determinant(m: &[Vec<Q>]) -> Q {
     let n = m.len();
     let mut a: Vec<Vec<Q>> = m.to_vec();
@@ -393,22 +397,21 @@ mod tests {
         // "1" + "12" and "11" + "2" both spell e112.
         let amb = Metric::from_squares(l(&["1", "12", "11", "2"]), vec![q(1); 4]);
         assert!(matches!(amb, Err(MetricError::AmbiguousLabels { .. })), "{amb:?}");
-        assert!(matches!(Metric::new(l(&["a", "b"]), vec![vec![q(1)], vec![q(1)]]), Err(MetricError::WrongSize { .. })));
+        assert!(matches!(
+            Metric::new(l(&["a", "b"]), vec![vec![q(1)], vec![q(1)]]),
+            Err(MetricError::WrongSize { .. })
+        ));
         assert!(matches!(Metric::new(l(&["a"]), vec![vec![q(1)], vec![q(1)]]), Err(MetricError::WrongSize { .. })));
     }
 
     #[test]
     fn toml_forms_agree() {
-        let (_, a) = Metric::from_toml_str(
-            "generators = [\"0\",\"1\",\"inf\"]\nmetric = { \"1,1\" = 1, \"0,inf\" = -1 }",
-            "a",
-        )
-        .unwrap();
-        let (_, b) = Metric::from_toml_str(
-            "generators = [\"0\",\"1\",\"inf\"]\ngram = [[0,0,-1],[0,1,0],[-1,0,0]]",
-            "b",
-        )
-        .unwrap();
+        let (_, a) =
+            Metric::from_toml_str("generators = [\"0\",\"1\",\"inf\"]\nmetric = { \"1,1\" = 1, \"0,inf\" = -1 }", "a")
+                .unwrap();
+        let (_, b) =
+            Metric::from_toml_str("generators = [\"0\",\"1\",\"inf\"]\ngram = [[0,0,-1],[0,1,0],[-1,0,0]]", "b")
+                .unwrap();
         assert_eq!(a, b);
         assert!(!a.is_degenerate());
         assert!(Metric::from_toml_str("generators = [\"a\"]\ngram = [[1.5]]", "c").is_err());

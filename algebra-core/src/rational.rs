@@ -106,11 +106,7 @@ fn parse_decimal(s: &str) -> Option<Q> {
 /// assert_eq!(format_rational(&ratio(-2, 1)), "-2");
 /// ```
 pub fn format_rational(x: &Q) -> String {
-    if x.denom().is_one() {
-        x.numer().to_string()
-    } else {
-        format!("{}/{}", x.numer(), x.denom())
-    }
+    if x.denom().is_one() { x.numer().to_string() } else { format!("{}/{}", x.numer(), x.denom()) }
 }
 
 /// `x` rounded to the nearest f64 (infinite if out of range).
@@ -120,13 +116,7 @@ pub fn format_rational(x: &Q) -> String {
 /// assert_eq!(rational_to_f64(&ratio(1, 4)), 0.25);
 /// ```
 pub fn rational_to_f64(x: &Q) -> f64 {
-    x.to_f64().unwrap_or_else(|| {
-        if x.is_negative() {
-            f64::NEG_INFINITY
-        } else {
-            f64::INFINITY
-        }
-    })
+    x.to_f64().unwrap_or_else(|| if x.is_negative() { f64::NEG_INFINITY } else { f64::INFINITY })
 }
 
 /// The exact rational value of a finite f64, or `None` for NaN and infinities.

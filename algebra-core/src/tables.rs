@@ -377,10 +377,14 @@ impl Tables {
                     LinearMap::diagonal(self.dim, |m| reverse_sign(grade(m)) * parity_sign(grade(m)))
                 }
                 (Basis::Blade, Unary::Dual) => LinearMap {
-                    images: (0..=full).map(|m| vec![(full ^ m, q(wedge_sign(m, full ^ m).expect("disjoint")))]).collect(),
+                    images: (0..=full)
+                        .map(|m| vec![(full ^ m, q(wedge_sign(m, full ^ m).expect("disjoint")))])
+                        .collect(),
                 },
                 (Basis::Blade, Unary::Undual) => LinearMap {
-                    images: (0..=full).map(|m| vec![(full ^ m, q(wedge_sign(full ^ m, m).expect("disjoint")))]).collect(),
+                    images: (0..=full)
+                        .map(|m| vec![(full ^ m, q(wedge_sign(full ^ m, m).expect("disjoint")))])
+                        .collect(),
                 },
                 (Basis::Product, _) => self.convert_map(self.unary(Basis::Blade, op)),
             }
@@ -541,7 +545,7 @@ impl Tables {
 }
 
 fn reverse_sign(k: usize) -> i64 {
-    if (k / 2) % 2 == 0 { 1 } else { -1 }
+    if (k / 2).is_multiple_of(2) { 1 } else { -1 }
 }
 
 /// `(xy ∓ yx)/2` from a geometric-product table.

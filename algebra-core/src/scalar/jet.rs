@@ -117,6 +117,7 @@ impl<T: Field> Div for Jet<T> {
 }
 impl<'a, T: Field> Div<&'a Jet<T>> for Jet<T> {
     type Output = Self;
+    #[allow(clippy::suspicious_arithmetic_impl)] // the quotient rule subtracts
     fn div(self, rhs: &'a Self) -> Self {
         // (a + a'ε)/(b + b'ε) = a/b + (a'b - ab')/b² ε
         let re = self.re.div_ref(&rhs.re);

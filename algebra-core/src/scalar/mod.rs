@@ -22,7 +22,7 @@ mod jet;
 #[cfg(feature = "rug")]
 mod mpfloat;
 #[cfg(feature = "rug")]
-mod mprational;
+pub(crate) mod mprational;
 
 pub use jet::Jet;
 #[cfg(feature = "rug")]
