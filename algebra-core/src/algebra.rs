@@ -16,7 +16,6 @@ use std::sync::Arc;
 /// assert_eq!(alg.dim(), 16);
 /// assert_eq!(alg.mask_of("e123inf").unwrap(), 0b1111);
 /// ```
-#[derive(Debug)]
 pub struct Algebra {
     name: String,
     metric: Metric,
@@ -28,6 +27,13 @@ pub struct Algebra {
 
 /// The names of the built-in algebras.
 pub const BUILTINS: [&str; 5] = ["g3", "g123inf", "pga3", "cga", "cga-null"];
+
+impl std::fmt::Debug for Algebra {
+    /// The name and the metric, not the tables.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "Algebra({}: {})", self.name, self.describe_metric())
+    }
+}
 
 impl Algebra {
     /// An algebra from a validated metric.

@@ -42,6 +42,21 @@ pub fn join_terms(terms: impl IntoIterator<Item = String>) -> String {
     if out.is_empty() { "0".to_string() } else { out }
 }
 
+impl<T: Ring> fmt::Debug for Multivector<T> {
+    /// `Multivector<cga-null, product>(-2 - e0inf)`: the algebra, the basis and the value
+    /// (the tables are not printed).
+    ///
+    /// ```
+    /// use algebra_core::{Algebra, Basis, Multivector};
+    /// let alg = Algebra::builtin("g3").unwrap();
+    /// let x = Multivector::<f64>::basis_element(&alg, Basis::Blade, "e12").unwrap();
+    /// assert_eq!(format!("{x:?}"), "Multivector<g3, blade>(e12)");
+    /// ```
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "Multivector<{}, {}>({self})", self.algebra.name(), self.basis)
+    }
+}
+
 impl<T: Ring> fmt::Display for Multivector<T> {
     /// `-2 - e0inf`, `1/2*e12 + e3`, `(x + 1)*e1`; `0` for zero. Terms in basis order.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {

@@ -71,7 +71,7 @@ pub enum MvError {
 /// let b = &e1 * &e2;
 /// assert_eq!((&b * &b).to_string(), "-1");
 /// ```
-#[derive(Clone, Debug)]
+#[derive(Clone)]
 pub struct Multivector<T> {
     algebra: Arc<Algebra>,
     basis: Basis,
