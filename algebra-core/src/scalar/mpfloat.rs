@@ -118,12 +118,29 @@ impl MpFloat {
 }
 
 impl fmt::Display for MpFloat {
-    /// Enough significant decimal digits for the precision, in scientific notation with `e`.
+    /// Enough significant decimal digits to identify the value at its precision (trailing
+    /// zeros dropped), plain for moderate exponents and with `e` otherwise: `1.5`,
+    /// `-2.5e-7`.
+    ///
+    /// ```
+    /// use algebra_core::{MpFloat, PrecisionGuard, Ring};
+    /// let _g = PrecisionGuard::new(256);
+    /// assert_eq!(MpFloat::from_ratio(3, 2).to_string(), "1.5");
+    /// assert_eq!(MpFloat::from_i64(-1234).to_string(), "-1234");
+    /// assert!(MpFloat::from_ratio(1, 3).to_string().starts_with("3.33333333333333333333333333333333333333333333333333333333333333333333333333"));
+    /// ```
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         if self.0.is_zero() {
             return f.write_str("0");
         }
-        f.write_str(&self.0.to_string_radix(10, Some(self.digits())))
+        let s = self.0.to_string_radix(10, Some(self.digits()));
+        let (mantissa, exponent) = match s.find('e') {
+            Some(i) => s.split_at(i),
+            None => (s.as_str(), ""),
+        };
+        let mantissa =
+            if mantissa.contains('.') { mantissa.trim_end_matches('0').trim_end_matches('.') } else { mantissa };
+        write!(f, "{mantissa}{exponent}")
     }
 }
 
