@@ -19,6 +19,7 @@ pub mod algebra;
 pub mod basis;
 pub mod metric;
 pub mod multivector;
+pub mod ops;
 #[cfg(feature = "rug")]
 pub mod poly;
 pub mod rational;

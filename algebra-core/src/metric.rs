@@ -264,9 +264,16 @@ impl Metric {
     /// ```
     pub fn from_toml_str(text: &str, path: &str) -> Result<(Option<String>, Metric), MetricError> {
         let err = |message: String| MetricError::Toml { path: path.to_string(), message };
-        let doc: toml::Table = text
-            .parse()
-            .map_err(|e: toml::de::Error| err(e.to_string().lines().next().unwrap_or("parse error").to_string()))?;
+        let doc: toml::Table = text.parse().map_err(|e: toml::de::Error| {
+            // "TOML parse error at line L, column C" ... "reason": keep both, on one line
+            let msg = e.to_string();
+            let mut lines = msg.lines().map(str::trim).filter(|l| !l.is_empty());
+            let first = lines.next().unwrap_or("parse error").to_string();
+            match lines.filter(|l| !l.contains('|') && !l.starts_with('^')).last() {
+                Some(reason) => err(format!("{first}: {reason}")),
+                None => err(first),
+            }
+        })?;
         for key in doc.keys() {
             if !["name", "generators", "gram", "metric"].contains(&key.as_str()) {
                 return Err(err(format!("unknown key `{key}` (expected name, generators, gram or metric)")));
@@ -416,7 +423,10 @@ mod tests {
         assert!(!a.is_degenerate());
         assert!(Metric::from_toml_str("generators = [\"a\"]\ngram = [[1.5]]", "c").is_err());
         assert!(Metric::from_toml_str("generators = [\"a\"]\nmetric = { \"a,z\" = 1 }", "c").is_err());
-        assert!(Metric::from_toml_str("generators = [", "c").is_err());
+        let Err(MetricError::Toml { message, .. }) = Metric::from_toml_str("generators = [\"a\"", "c") else {
+            panic!("broken TOML must be rejected")
+        };
+        assert!(message.contains("line 1") && message.contains(": "), "{message}");
     }
 
     #[test]

@@ -402,10 +402,10 @@ impl Tables {
     /// assert_eq!(g0.image(0b10001), &[(0, q(-1))]);
     /// ```
     pub fn grade_projection(&self, basis: Basis, k: usize) -> &LinearMap {
-        static EMPTY: OnceLock<LinearMap> = OnceLock::new();
+        let n = self.metric.dimension();
         let maps = self.grades[basis_index(basis)].get_or_init(|| {
-            let n = self.metric.dimension();
-            (0..=n)
+            // grades 0..=n, then the zero map for every k > n
+            (0..=n + 1)
                 .map(|k| {
                     let blade = LinearMap {
                         images: (0..self.dim as u32)
@@ -419,7 +419,7 @@ impl Tables {
                 })
                 .collect()
         });
-        maps.get(k).unwrap_or_else(|| EMPTY.get_or_init(|| LinearMap { images: vec![] }))
+        &maps[k.min(n + 1)]
     }
 
     /// Product-basis coordinates to blade-basis coordinates: `image(S)` is `e_{s1} e_{s2} ...`

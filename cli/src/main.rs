@@ -1,1 +1,171 @@
-fn main() {}
+//! `gam`: the GAM command line (see docs/cli.md and the contract in shared/cli.md).
+//!
+//! This file only parses arguments (clap), dispatches to [`commands`], and maps failures to
+//! exit statuses: 2 for bad usage or input, 1 for a mathematical failure, each with exactly one
+//! `error:` line on stderr and nothing on stdout.
+
+mod commands;
+mod error;
+mod eval;
+mod expr;
+mod output;
+mod scalar;
+
+use algebra_core::{Basis, Product};
+use clap::error::ErrorKind;
+use clap::{Parser, Subcommand};
+use error::{CliError, EXIT_USAGE};
+use scalar::ScalarKind;
+use std::io::Write;
+use std::process::ExitCode;
+
+/// Exact geometric algebra from the command line: evaluate expressions, print product tables.
+#[derive(Debug, Parser)]
+#[command(name = "gam", version, about, propagate_version = true)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Debug, Subcommand)]
+enum Command {
+    /// List the built-in algebras (or the named ones) with their labels and metrics.
+    Algebras {
+        /// Print one JSON list.
+        #[arg(long)]
+        json: bool,
+        /// Built-in names or TOML files to describe instead of all built-ins.
+        #[arg(value_name = "ALGEBRA")]
+        algebras: Vec<String>,
+    },
+    /// Evaluate a multivector expression.
+    Eval {
+        /// A built-in algebra (g3, g123inf, pga3, cga, cga-null) or a path to a TOML file.
+        #[arg(long, value_name = "NAME", default_value = "cga-null")]
+        algebra: String,
+        /// The basis for reading and printing basis names: blade or product.
+        #[arg(long, value_name = "B", default_value = "blade")]
+        basis: Basis,
+        /// rational (exact), poly (symbolic), f64, or mpfr:BITS.
+        #[arg(long, value_name = "S", default_value = "rational")]
+        scalar: ScalarKind,
+        /// Print the result as one JSON object.
+        #[arg(long)]
+        json: bool,
+        /// The expression, e.g. "e1*e2*e3*einf*e0" (may start with `-`).
+        #[arg(allow_hyphen_values = true, value_name = "EXPR")]
+        expr: String,
+    },
+    /// Print the table of a product on the basis elements.
+    Table {
+        /// A built-in algebra (g3, g123inf, pga3, cga, cga-null) or a path to a TOML file.
+        #[arg(long, value_name = "NAME", default_value = "cga-null")]
+        algebra: String,
+        /// The basis: blade or product.
+        #[arg(long, value_name = "B", default_value = "blade")]
+        basis: Basis,
+        /// gp, op, lc, rc, sp, rp, comm or acomm.
+        #[arg(long, value_name = "P", default_value = "gp")]
+        product: Product,
+        /// Print a JSON list of {"a", "b", "result"}.
+        #[arg(long)]
+        json: bool,
+    },
+}
+
+fn run(command: Command) -> Result<String, CliError> {
+    match command {
+        Command::Algebras { json, algebras } => commands::algebras(&algebras, json),
+        Command::Eval { algebra, basis, scalar, json, expr } => {
+            commands::eval(&commands::EvalArgs { algebra, basis, scalar, json, expr })
+        }
+        Command::Table { algebra, basis, product, json } => commands::table(&algebra, basis, product, json),
+    }
+}
+
+/// clap's error as one `error:` line (help and version requests are printed as usual).
+fn clap_failure(e: clap::Error) -> ExitCode {
+    if matches!(e.kind(), ErrorKind::DisplayHelp | ErrorKind::DisplayVersion) {
+        let _ = e.print();
+        return ExitCode::SUCCESS;
+    }
+    let text = e.render().to_string();
+    let line = match e.kind() {
+        ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand | ErrorKind::MissingSubcommand => {
+            "error: a subcommand is required: algebras, eval or table (see gam --help)".to_string()
+        }
+        _ => first_error_line(&text),
+    };
+    eprintln!("{line}");
+    ExitCode::from(EXIT_USAGE)
+}
+
+/// The `error:` line of a rendered clap error, with an indented continuation (such as the
+/// missing `<EXPR>` after "the following required arguments were not provided:") joined on.
+fn first_error_line(text: &str) -> String {
+    let mut lines = text.lines().skip_while(|l| !l.starts_with("error:"));
+    let Some(first) = lines.next() else {
+        return format!("error: {}", text.lines().next().unwrap_or("invalid arguments"));
+    };
+    let mut line = first.trim_end().to_string();
+    if line.ends_with(':') {
+        for more in lines.take_while(|l| l.starts_with(' ') && !l.trim().is_empty()) {
+            line.push(' ');
+            line.push_str(more.trim());
+        }
+    }
+    line
+}
+
+/// Rejects unknown `--options` of `gam eval` before clap sees them: EXPR accepts values that
+/// start with `-` (so `gam eval "-e1"` works), which would otherwise swallow a mistyped option.
+fn check_eval_options(args: &[String]) -> Result<(), String> {
+    let Some(at) = args.iter().skip(1).position(|a| a == "eval") else {
+        return Ok(());
+    };
+    let cmd = <Cli as clap::CommandFactory>::command();
+    let known: Vec<String> = cmd
+        .find_subcommand("eval")
+        .map(|sub| sub.get_arguments().filter_map(|a| a.get_long().map(str::to_string)).collect())
+        .unwrap_or_default();
+    for arg in args.iter().skip(at + 2).take_while(|a| *a != "--") {
+        let Some(long) = arg.strip_prefix("--") else { continue };
+        let name = long.split('=').next().unwrap_or(long);
+        let is_option = name.starts_with(|c: char| c.is_ascii_alphabetic());
+        if is_option && !known.iter().any(|k| k == name) && name != "help" && name != "version" {
+            return Err(format!(
+                "error: unexpected argument '--{name}' found (an expression starting with `--` must come after `--`)"
+            ));
+        }
+    }
+    Ok(())
+}
+
+fn main() -> ExitCode {
+    let args: Vec<String> = std::env::args_os().map(|a| a.to_string_lossy().into_owned()).collect();
+    if let Err(line) = check_eval_options(&args) {
+        eprintln!("{line}");
+        return ExitCode::from(EXIT_USAGE);
+    }
+    let cli = match Cli::try_parse_from(&args) {
+        Ok(cli) => cli,
+        Err(e) => return clap_failure(e),
+    };
+    match run(cli.command) {
+        Ok(out) => {
+            let mut stdout = std::io::stdout().lock();
+            match writeln!(stdout, "{out}").and_then(|()| stdout.flush()) {
+                Ok(()) => ExitCode::SUCCESS,
+                Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => ExitCode::SUCCESS,
+                Err(e) => {
+                    eprintln!("error: cannot write the output: {e}");
+                    ExitCode::from(EXIT_USAGE)
+                }
+            }
+        }
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::from(e.code)
+        }
+    }
+}

@@ -42,6 +42,21 @@ pub fn join_terms(terms: impl IntoIterator<Item = String>) -> String {
     if out.is_empty() { "0".to_string() } else { out }
 }
 
+impl<T: Ring> Multivector<T> {
+    /// The human form with each coefficient printed by `coeff` (for scalar types whose
+    /// `Display` is not the wanted syntax).
+    ///
+    /// ```
+    /// use algebra_core::{Algebra, Basis, Multivector};
+    /// let alg = Algebra::builtin("g3").unwrap();
+    /// let x = Multivector::from_terms(&alg, Basis::Blade, [("1", 0.5), ("e12", -2.0)]).unwrap();
+    /// assert_eq!(x.format_with(|c| format!("{c:.2}")), "0.50 - 2.00*e12");
+    /// ```
+    pub fn format_with(&self, coeff: impl Fn(&T) -> String) -> String {
+        join_terms(self.terms().map(|(_, name, c)| format_term(&coeff(c), name)))
+    }
+}
+
 impl<T: Ring> fmt::Debug for Multivector<T> {
     /// `Multivector<cga-null, product>(-2 - e0inf)`: the algebra, the basis and the value
     /// (the tables are not printed).
@@ -60,7 +75,7 @@ impl<T: Ring> fmt::Debug for Multivector<T> {
 impl<T: Ring> fmt::Display for Multivector<T> {
     /// `-2 - e0inf`, `1/2*e12 + e3`, `(x + 1)*e1`; `0` for zero. Terms in basis order.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(&join_terms(self.terms().map(|(_, name, c)| format_term(&c.to_string(), name))))
+        f.write_str(&self.format_with(T::to_string))
     }
 }
 
@@ -76,6 +91,9 @@ mod tests {
         assert_eq!(format_term("1e-5", "e1"), "1e-5*e1");
         assert_eq!(format_term("x - y", "e1"), "(x - y)*e1");
         assert_eq!(format_term("-x*y", "e1"), "-x*y*e1");
+        assert_eq!(format_term("a**2 - b", "e1"), "(a**2 - b)*e1");
+        assert_eq!(format_term("1.5e-7", "e1"), "1.5e-7*e1");
+        assert_eq!(format_term("-2", "1"), "-2");
         assert_eq!(join_terms(["-2".to_string(), "-e0inf".to_string()]), "-2 - e0inf");
     }
 }

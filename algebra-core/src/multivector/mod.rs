@@ -13,7 +13,7 @@
 //!   "by subset size" in the multivector's own basis. They equal the true ones in the blade
 //!   basis and for orthogonal generators, but not in the product basis of G_{0123inf}.
 
-mod display;
+pub mod display;
 mod exp_log;
 mod inverse;
 mod ops;
@@ -314,6 +314,7 @@ impl<T: Ring> Multivector<T> {
     /// let p = Multivector::<Q>::basis_element(&alg, Basis::Product, "e0inf").unwrap();
     /// assert_eq!(p.grade(0).to_string(), "-1");
     /// assert_eq!(p.grade(2).to_string(), "1 + e0inf"); // e0^einf in product coordinates
+    /// assert!(p.grade(9).is_zero()); // no grade 9 in a 5-generator algebra
     /// ```
     pub fn grade(&self, k: usize) -> Self {
         self.map(self.algebra.tables().grade_projection(self.basis, k), self.basis)

@@ -1,0 +1,230 @@
+//! The code generator behind the `algebra!` macro and `gam codegen`: from a [`ModuleSpec`]
+//! (an algebra, a basis and named types, each a set of basis elements) to a Rust module of
+//! types generic over the scalar with fully unrolled, sparse kernels.
+//!
+//! The pipeline is visible in three steps:
+//! 1. [`ModuleSpec`]: what the user declared (validated);
+//! 2. [`plan::Plan`]: the structural analysis — for every pair of types and every product,
+//!    which output coefficients receive which `(lhs, rhs, rational)` terms, and which declared
+//!    type is the smallest holding the result (decided here, at expansion time);
+//! 3. [`emit`]: the token stream (structs, constructors, Display, conversions, operator and
+//!    trait impls, unary operations).
+//!
+//! Kernels contain only structurally non-zero terms, fold rational constants into
+//! `T::from_ratio`, never compare values, and report their operation counts
+//! ([`plan::KernelStats`]).
+
+pub mod emit;
+pub mod plan;
+
+use crate::algebra::Algebra;
+use crate::basis::{Basis, grade};
+use crate::metric::Metric;
+use std::sync::Arc;
+
+/// Why a module specification was rejected.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum CodegenError {
+    /// No types declared.
+    #[error("declare at least one type")]
+    NoTypes,
+    /// A type name that is not a Rust type identifier.
+    #[error("`{0}` is not a valid type name (use an identifier starting with an uppercase letter)")]
+    InvalidTypeName(String),
+    /// The same type name twice.
+    #[error("type `{0}` is declared twice")]
+    DuplicateType(String),
+    /// A type with no elements.
+    #[error("type `{0}` has no basis elements")]
+    EmptyType(String),
+    /// An element listed twice in one type.
+    #[error("type `{ty}` lists `{element}` twice")]
+    DuplicateElement {
+        /// The type.
+        ty: String,
+        /// The repeated element.
+        element: String,
+    },
+    /// Two types with exactly the same elements (the output-type choice would be ambiguous).
+    #[error("types `{0}` and `{1}` have the same basis elements")]
+    SameElements(String, String),
+    /// An element that is not a basis name of the algebra.
+    #[error("type `{ty}`: unknown basis element `{element}` (generators: {labels})")]
+    UnknownElement {
+        /// The type.
+        ty: String,
+        /// The bad name.
+        element: String,
+        /// The algebra's labels.
+        labels: String,
+    },
+    /// A grade outside `0..=n`.
+    #[error("type `{ty}`: grade {grade} does not exist in an algebra with {n} generators")]
+    BadGrade {
+        /// The type.
+        ty: String,
+        /// The grade asked for.
+        grade: usize,
+        /// The number of generators.
+        n: usize,
+    },
+    /// A malformed `--types` string.
+    #[error("bad type list `{0}`: expected `Name=elements;Name=elements` with elements `grade K`, `even`, `odd`, `all` or a comma list of basis names")]
+    BadTypeList(String),
+    /// A table coefficient that does not fit the `i64` ratio of `T::from_ratio`.
+    #[error("a table coefficient ({0}) is too large for T::from_ratio(i64, i64)")]
+    CoefficientTooLarge(String),
+}
+
+/// One declared type: a name, doc lines and the basis elements (masks) it holds.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TypeSpec {
+    /// The Rust type name.
+    pub name: String,
+    /// Doc lines to put on the struct.
+    pub doc: Vec<String>,
+    /// The masks of the basis elements, in the algebra's basis order.
+    pub elements: Vec<u32>,
+}
+
+impl TypeSpec {
+    /// A type from a selector: `grade K` (or `gradeK`), `grades K,L`, `even`, `odd`, `all`,
+    /// or a comma-separated list of basis names (`1, e12, e1inf`). Grades count generators in
+    /// the chosen basis (the paper's notion in the product basis).
+    ///
+    /// ```
+    /// use algebra_core::{Algebra, codegen::TypeSpec};
+    /// let alg = Algebra::builtin("g123inf").unwrap();
+    /// let v = TypeSpec::parse("Vector", "grade 1", &alg).unwrap();
+    /// assert_eq!(v.elements.len(), 4);
+    /// let m = TypeSpec::parse("Motor", "1,e12,e13,e23,e1inf,e2inf,e3inf,e123inf", &alg).unwrap();
+    /// assert_eq!(m.elements, TypeSpec::parse("Motor", "even", &alg).unwrap().elements);
+    /// ```
+    pub fn parse(name: &str, selector: &str, algebra: &Algebra) -> Result<TypeSpec, CodegenError> {
+        let n = algebra.generators();
+        let sel = selector.trim();
+        let by_grades = |grades: &[usize]| -> Result<Vec<u32>, CodegenError> {
+            for &g in grades {
+                if g > n {
+                    return Err(CodegenError::BadGrade { ty: name.to_string(), grade: g, n });
+                }
+            }
+            Ok(algebra.basis_order().iter().copied().filter(|&m| grades.contains(&grade(m))).collect())
+        };
+        let elements = if let Some(rest) = sel.strip_prefix("grades") {
+            let gs: Result<Vec<usize>, _> = rest.split(',').map(|g| g.trim().parse::<usize>()).collect();
+            by_grades(&gs.map_err(|_| CodegenError::BadTypeList(selector.to_string()))?)?
+        } else if let Some(rest) = sel.strip_prefix("grade") {
+            let g = rest.trim().parse::<usize>().map_err(|_| CodegenError::BadTypeList(selector.to_string()))?;
+            by_grades(&[g])?
+        } else if sel == "even" {
+            by_grades(&(0..=n).step_by(2).collect::<Vec<_>>())?
+        } else if sel == "odd" {
+            by_grades(&(1..=n).step_by(2).collect::<Vec<_>>())?
+        } else if sel == "all" {
+            algebra.basis_order().to_vec()
+        } else {
+            let mut masks = Vec::new();
+            for el in sel.split(',').map(str::trim) {
+                let m = algebra.mask_of(el).map_err(|_| CodegenError::UnknownElement {
+                    ty: name.to_string(),
+                    element: el.to_string(),
+                    labels: algebra.metric().labels().join(", "),
+                })?;
+                if masks.contains(&m) {
+                    return Err(CodegenError::DuplicateElement { ty: name.to_string(), element: el.to_string() });
+                }
+                masks.push(m);
+            }
+            let order = algebra.basis_order();
+            masks.sort_by_key(|m| order.iter().position(|o| o == m));
+            masks
+        };
+        TypeSpec::new(name, elements)
+    }
+
+    /// A type from masks (sorted into basis order by the plan).
+    ///
+    /// ```
+    /// let t = algebra_core::codegen::TypeSpec::new("Scalar", vec![0]).unwrap();
+    /// assert_eq!(t.elements, [0]);
+    /// ```
+    pub fn new(name: &str, elements: Vec<u32>) -> Result<TypeSpec, CodegenError> {
+        let valid = name.chars().next().is_some_and(|c| c.is_ascii_uppercase())
+            && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_');
+        if !valid {
+            return Err(CodegenError::InvalidTypeName(name.to_string()));
+        }
+        if elements.is_empty() {
+            return Err(CodegenError::EmptyType(name.to_string()));
+        }
+        Ok(TypeSpec { name: name.to_string(), doc: Vec::new(), elements })
+    }
+}
+
+/// A module to generate.
+#[derive(Debug, Clone)]
+pub struct ModuleSpec {
+    /// The module name (`cga_null`).
+    pub name: String,
+    /// Doc lines for the module.
+    pub doc: Vec<String>,
+    /// The algebra.
+    pub algebra: Arc<Algebra>,
+    /// The basis the types' elements (and field names) refer to.
+    pub basis: Basis,
+    /// The declared types.
+    pub types: Vec<TypeSpec>,
+}
+
+impl ModuleSpec {
+    /// A module spec from a metric, validating the types.
+    ///
+    /// ```
+    /// use algebra_core::{Algebra, Basis, codegen::{ModuleSpec, TypeSpec}};
+    /// let alg = Algebra::builtin("g3").unwrap();
+    /// let types = vec![TypeSpec::parse("Vector", "grade 1", &alg).unwrap()];
+    /// let spec = ModuleSpec::new("g3", alg.metric().clone(), Basis::Blade, types).unwrap();
+    /// assert_eq!(spec.types.len(), 1);
+    /// ```
+    pub fn new(name: &str, metric: Metric, basis: Basis, types: Vec<TypeSpec>) -> Result<Self, CodegenError> {
+        let algebra = Algebra::new(name, metric);
+        if types.is_empty() {
+            return Err(CodegenError::NoTypes);
+        }
+        for (i, t) in types.iter().enumerate() {
+            for other in &types[..i] {
+                if other.name == t.name {
+                    return Err(CodegenError::DuplicateType(t.name.clone()));
+                }
+                let (mut a, mut b) = (other.elements.clone(), t.elements.clone());
+                a.sort_unstable();
+                b.sort_unstable();
+                if a == b {
+                    return Err(CodegenError::SameElements(other.name.clone(), t.name.clone()));
+                }
+            }
+        }
+        Ok(ModuleSpec { name: name.to_string(), doc: Vec::new(), algebra, basis, types })
+    }
+
+    /// Parses the `gam codegen --types` syntax: `Motor=1,e12,e13;Vector=grade1`.
+    ///
+    /// ```
+    /// use algebra_core::{Algebra, codegen::ModuleSpec};
+    /// let alg = Algebra::builtin("g123inf").unwrap();
+    /// let types = ModuleSpec::parse_types("Motor=even;Vector=grade1", &alg).unwrap();
+    /// assert_eq!(types[0].elements.len(), 8);
+    /// assert!(ModuleSpec::parse_types("Motor", &alg).is_err());
+    /// ```
+    pub fn parse_types(text: &str, algebra: &Algebra) -> Result<Vec<TypeSpec>, CodegenError> {
+        text.split(';')
+            .map(str::trim)
+            .filter(|s| !s.is_empty())
+            .map(|decl| {
+                let (name, sel) = decl.split_once('=').ok_or_else(|| CodegenError::BadTypeList(text.to_string()))?;
+                TypeSpec::parse(name.trim(), sel, algebra)
+            })
+            .collect()
+    }
+}

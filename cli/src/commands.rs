@@ -1,0 +1,146 @@
+//! The subcommands. Each returns its whole output as a string (printed only on success, so a
+//! failure never leaves partial output) or a [`CliError`].
+
+use crate::error::CliError;
+use crate::eval::Evaluator;
+use crate::expr;
+use crate::output::{mv_human, mv_json, text_table};
+use crate::scalar::{CliScalar, ScalarKind};
+use algebra_core::rational::{Q, format_rational};
+use algebra_core::{Algebra, Basis, MpFloat, Multivector, Poly, PrecisionGuard, Product, algebra::BUILTINS};
+use serde_json::{Value, json};
+
+/// A short description of a built-in algebra.
+fn description(name: &str) -> &'static str {
+    match name {
+        "g3" => "R^3, Euclidean space",
+        "g123inf" => "the paper's G_{123inf} (even subalgebra: dual quaternions)",
+        "pga3" => "R^{3,0,1}, projective geometric algebra",
+        "cga" => "R^{4,1}, conformal algebra with e4^2 = 1, e5^2 = -1",
+        "cga-null" => "the paper's G_{0123inf}: null vectors e0, einf with e0.einf = -1 (default)",
+        _ => "",
+    }
+}
+
+/// `gam algebras [--json] [ALGEBRA...]`: the built-ins (or the named algebras) with their
+/// labels and metrics.
+pub fn algebras(names: &[String], json: bool) -> Result<String, CliError> {
+    let names: Vec<String> =
+        if names.is_empty() { BUILTINS.iter().map(|s| s.to_string()).collect() } else { names.to_vec() };
+    let algs = names.iter().map(|n| Algebra::from_name_or_path(n)).collect::<Result<Vec<_>, _>>()?;
+    if json {
+        let list: Vec<Value> = algs
+            .iter()
+            .map(|a| {
+                let m = a.metric();
+                let gram: Vec<Vec<String>> =
+                    m.gram_matrix().iter().map(|row| row.iter().map(format_rational).collect()).collect();
+                let basis: Vec<&str> = a.basis_order().iter().map(|&k| a.name_of(k)).collect();
+                json!({
+                    "name": a.name(),
+                    "description": description(a.name()),
+                    "labels": m.labels(),
+                    "gram": gram,
+                    "dimension": m.dimension(),
+                    "basis": basis,
+                })
+            })
+            .collect();
+        return Ok(Value::Array(list).to_string());
+    }
+    let width = algs.iter().map(|a| a.name().len()).max().unwrap_or(0);
+    let blocks: Vec<String> = algs
+        .iter()
+        .map(|a| {
+            let labels = a.metric().labels().join(", ");
+            let about = description(a.name());
+            let head = if about.is_empty() { a.name().to_string() } else { format!("{:width$}  {about}", a.name()) };
+            format!("{}\n  labels: {labels}\n  metric: {}", head.trim_end(), a.describe_metric())
+        })
+        .collect();
+    Ok(blocks.join("\n"))
+}
+
+/// The options of `gam eval`.
+#[derive(Debug, Clone)]
+pub struct EvalArgs {
+    /// `--algebra`: a built-in name or a TOML path.
+    pub algebra: String,
+    /// `--basis`.
+    pub basis: Basis,
+    /// `--scalar`.
+    pub scalar: ScalarKind,
+    /// `--json`.
+    pub json: bool,
+    /// The expression.
+    pub expr: String,
+}
+
+/// `gam eval`: parse, evaluate over the chosen scalar, print in the chosen basis.
+pub fn eval(args: &EvalArgs) -> Result<String, CliError> {
+    let alg = Algebra::from_name_or_path(&args.algebra)?;
+    let ast = expr::parse(&args.expr)?;
+    let ev = Evaluator::new(&alg, args.basis);
+    match args.scalar {
+        ScalarKind::Rational => render(&ev.eval::<Q>(&ast)?, args.json),
+        ScalarKind::Poly => render(&ev.eval::<Poly>(&ast)?, args.json),
+        ScalarKind::F64 => render(&ev.eval::<f64>(&ast)?, args.json),
+        ScalarKind::Mpfr(bits) => {
+            let _precision = PrecisionGuard::new(bits);
+            render(&ev.eval::<MpFloat>(&ast)?, args.json)
+        }
+    }
+}
+
+fn render<T: CliScalar>(x: &Multivector<T>, json: bool) -> Result<String, CliError> {
+    Ok(if json { mv_json(x).to_string() } else { mv_human(x) })
+}
+
+/// `gam table`: the product table of `product` on the basis elements of `basis`.
+pub fn table(algebra: &str, basis: Basis, product: Product, json: bool) -> Result<String, CliError> {
+    let alg = Algebra::from_name_or_path(algebra)?;
+    let order = alg.basis_order();
+    let tab = alg.tables().product(basis, product);
+    let entry = |a: u32, b: u32| -> Multivector<Q> {
+        let mut m = Multivector::zero(&alg, basis);
+        for (k, c) in tab.get(a, b) {
+            *m.coeff_mut(*k) = c.clone();
+        }
+        m
+    };
+    if json {
+        let mut list = Vec::with_capacity(order.len() * order.len());
+        for &a in order {
+            for &b in order {
+                list.push(json!({"a": alg.name_of(a), "b": alg.name_of(b), "result": mv_json(&entry(a, b))}));
+            }
+        }
+        return Ok(Value::Array(list).to_string());
+    }
+    let mut rows: Vec<Vec<String>> = Vec::with_capacity(order.len() + 1);
+    rows.push(std::iter::once(String::new()).chain(order.iter().map(|&b| alg.name_of(b).to_string())).collect());
+    for &a in order {
+        let cells = order.iter().map(|&b| mv_human(&entry(a, b)));
+        rows.push(std::iter::once(alg.name_of(a).to_string()).chain(cells).collect());
+    }
+    let title = format!(
+        "{} table of {} in the {basis} basis: cell = {}(row, column)",
+        product_title(product),
+        alg.name(),
+        product.cli_name()
+    );
+    Ok(format!("{title}\n{}", text_table(&rows)))
+}
+
+fn product_title(p: Product) -> &'static str {
+    match p {
+        Product::Geometric => "gp (geometric product)",
+        Product::Outer => "op (outer product)",
+        Product::LeftContraction => "lc (left contraction)",
+        Product::RightContraction => "rc (right contraction)",
+        Product::Scalar => "sp (scalar product)",
+        Product::Regressive => "rp (regressive product)",
+        Product::Commutator => "comm ((xy - yx)/2)",
+        Product::Anticommutator => "acomm ((xy + yx)/2)",
+    }
+}

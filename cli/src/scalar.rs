@@ -1,0 +1,284 @@
+//! The scalar types of `--scalar` and what the evaluator needs from each: reading number
+//! literals, variables (only `poly`), printing coefficients, and the operations that not every
+//! scalar supports (division, inverse, exp/log/sqrt).
+
+use algebra_core::rational::{Q, format_rational, parse_rational};
+use algebra_core::{Field, MpFloat, MpRational, Multivector, MvError, Poly, Real, Ring};
+use num_traits::Zero;
+use std::str::FromStr;
+
+/// The largest `mpfr:BITS` precision accepted.
+pub const MAX_MPFR_BITS: u32 = 1_000_000;
+
+/// The value of `--scalar`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ScalarKind {
+    /// Exact rationals.
+    Rational,
+    /// Polynomials over the rationals.
+    Poly,
+    /// IEEE doubles.
+    F64,
+    /// MPFR floats with this many bits.
+    Mpfr(u32),
+}
+
+impl FromStr for ScalarKind {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        match s {
+            "rational" => Ok(ScalarKind::Rational),
+            "poly" => Ok(ScalarKind::Poly),
+            "f64" => Ok(ScalarKind::F64),
+            _ => match s.strip_prefix("mpfr:") {
+                Some(bits) => match bits.parse::<u32>() {
+                    Ok(b) if (2..=MAX_MPFR_BITS).contains(&b) => Ok(ScalarKind::Mpfr(b)),
+                    _ => {
+                        Err(format!("mpfr precision `{bits}` must be a whole number of bits from 2 to {MAX_MPFR_BITS}"))
+                    }
+                },
+                None => Err(format!("unknown scalar `{s}` (expected rational, poly, f64 or mpfr:BITS)")),
+            },
+        }
+    }
+}
+
+/// Why a scalar-specific operation failed.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Failure {
+    /// The scalar type cannot do this (a usage error, exit status 2).
+    Unsupported(String),
+    /// The operation is not defined for this value (exit status 1).
+    Math(String),
+}
+
+impl From<MvError> for Failure {
+    fn from(e: MvError) -> Self {
+        Failure::Math(e.to_string())
+    }
+}
+
+/// A scalar the CLI can evaluate over.
+pub trait CliScalar: Ring {
+    /// The `--scalar` name, for messages.
+    const NAME: &'static str;
+
+    /// The value of a number literal (`3`, `0.25`).
+    fn number(text: &str) -> Result<Self, String>;
+
+    /// The polynomial variable `name`; `None` for scalars without variables.
+    fn variable(_name: &str) -> Option<Self> {
+        None
+    }
+
+    /// The coefficient string of the JSON output.
+    fn format(&self) -> String {
+        self.to_string()
+    }
+
+    /// False for infinities and NaN.
+    fn finite(&self) -> bool {
+        true
+    }
+
+    /// `self / d` for a scalar `d`.
+    fn div_scalar(&self, d: &Self) -> Result<Self, Failure>;
+
+    /// The inverse of a multivector.
+    fn inverse(x: &Multivector<Self>) -> Result<Multivector<Self>, Failure>;
+
+    /// `exp`, `log` or `sqrt` of a multivector.
+    fn elementary(_f: Elementary, _x: &Multivector<Self>) -> Result<Multivector<Self>, Failure> {
+        Err(Failure::Unsupported("it needs --scalar f64 or mpfr:BITS".to_string()))
+    }
+}
+
+/// The transcendental functions, defined only over real scalars.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Elementary {
+    /// The exponential.
+    Exp,
+    /// The principal logarithm.
+    Log,
+    /// The principal square root.
+    Sqrt,
+}
+
+fn divide_field<T: Field>(x: &T, d: &T) -> Result<T, Failure> {
+    match d.try_recip() {
+        None => Err(Failure::Math("division by zero".to_string())),
+        Some(_) => Ok(x.div_ref(d)),
+    }
+}
+
+impl CliScalar for Q {
+    const NAME: &'static str = "rational";
+    fn number(text: &str) -> Result<Self, String> {
+        parse_rational(text).map_err(|e| e.to_string())
+    }
+    fn format(&self) -> String {
+        format_rational(self)
+    }
+    fn div_scalar(&self, d: &Self) -> Result<Self, Failure> {
+        divide_field(self, d)
+    }
+    fn inverse(x: &Multivector<Self>) -> Result<Multivector<Self>, Failure> {
+        Ok(x.inverse()?)
+    }
+}
+
+impl CliScalar for Poly {
+    const NAME: &'static str = "poly";
+    fn number(text: &str) -> Result<Self, String> {
+        parse_rational(text).map(|q| Poly::from_q(&q)).map_err(|e| e.to_string())
+    }
+    fn variable(name: &str) -> Option<Self> {
+        Some(Poly::var(name))
+    }
+    fn div_scalar(&self, d: &Self) -> Result<Self, Failure> {
+        let c = poly_constant(d).ok_or_else(|| {
+            Failure::Unsupported(format!(
+                "division by the non-constant polynomial `{d}` (poly divides only by constants)"
+            ))
+        })?;
+        if c.is_zero() {
+            return Err(Failure::Math("division by zero".to_string()));
+        }
+        Ok(self.mul_ref(&Poly::from_q(&c.recip())))
+    }
+    /// Only elements with constant coefficients: inverted exactly over the rationals.
+    fn inverse(x: &Multivector<Self>) -> Result<Multivector<Self>, Failure> {
+        let mut coeffs = Vec::with_capacity(x.coeffs().len());
+        for c in x.coeffs() {
+            coeffs.push(poly_constant(c).ok_or_else(|| {
+                Failure::Unsupported(format!(
+                    "{x} has non-constant coefficients (poly inverts only elements with constant coefficients)"
+                ))
+            })?);
+        }
+        let exact = Multivector::from_coeffs(x.algebra(), x.basis(), coeffs)?;
+        Ok(exact.inverse()?.map_coeffs(Poly::from_q))
+    }
+}
+
+/// The value of a constant polynomial.
+fn poly_constant(p: &Poly) -> Option<Q> {
+    p.as_constant().map(|r| MpRational(r).to_q())
+}
+
+/// The shortest round-trip decimal, plain for moderate magnitudes and in exponent form
+/// (`1.2246467991473532e-16`) outside `1e-7 <= |x| < 1e16`, like JavaScript.
+pub fn format_f64(x: f64) -> String {
+    let a = x.abs();
+    if a == 0.0 || !x.is_finite() || (1e-7..1e16).contains(&a) { format!("{x}") } else { format!("{x:e}") }
+}
+
+impl CliScalar for f64 {
+    const NAME: &'static str = "f64";
+    fn number(text: &str) -> Result<Self, String> {
+        text.parse::<f64>().map_err(|e| format!("`{text}`: {e}"))
+    }
+    fn format(&self) -> String {
+        format_f64(*self)
+    }
+    fn finite(&self) -> bool {
+        self.is_finite()
+    }
+    fn div_scalar(&self, d: &Self) -> Result<Self, Failure> {
+        divide_field(self, d)
+    }
+    fn inverse(x: &Multivector<Self>) -> Result<Multivector<Self>, Failure> {
+        Ok(x.inverse()?)
+    }
+    fn elementary(f: Elementary, x: &Multivector<Self>) -> Result<Multivector<Self>, Failure> {
+        real_elementary(f, x)
+    }
+}
+
+impl CliScalar for MpFloat {
+    const NAME: &'static str = "mpfr";
+    /// Exact rational value rounded once to the current default precision.
+    fn number(text: &str) -> Result<Self, String> {
+        parse_rational(text).map(|q| MpFloat::from_rational(&q)).map_err(|e| e.to_string())
+    }
+    fn finite(&self) -> bool {
+        Real::is_finite(self)
+    }
+    fn div_scalar(&self, d: &Self) -> Result<Self, Failure> {
+        divide_field(self, d)
+    }
+    fn inverse(x: &Multivector<Self>) -> Result<Multivector<Self>, Failure> {
+        Ok(x.inverse()?)
+    }
+    fn elementary(f: Elementary, x: &Multivector<Self>) -> Result<Multivector<Self>, Failure> {
+        real_elementary(f, x)
+    }
+}
+
+/// exp/log/sqrt over a real scalar: the scalar functions for a pure scalar (correctly rounded
+/// where the scalar type is), otherwise the multivector algorithms of algebra-core.
+fn real_elementary<T: Real + CliScalar>(f: Elementary, x: &Multivector<T>) -> Result<Multivector<T>, Failure> {
+    let is_scalar = x.coeffs().iter().skip(1).all(Ring::is_exact_zero);
+    let out = if is_scalar {
+        let a = x.coeff(0);
+        let zero = T::zero();
+        let value = match f {
+            Elementary::Exp => Real::exp(a),
+            Elementary::Log if *a > zero => Real::ln(a),
+            Elementary::Log => {
+                return Err(Failure::Math(format!(
+                    "log is not defined for {}: it needs a positive scalar",
+                    a.format()
+                )));
+            }
+            Elementary::Sqrt if *a >= zero => Real::sqrt(a),
+            Elementary::Sqrt => {
+                return Err(Failure::Math(format!("sqrt is not defined for {}: it needs a scalar >= 0", a.format())));
+            }
+        };
+        Multivector::scalar(x.algebra(), x.basis(), value)
+    } else {
+        match f {
+            Elementary::Exp => x.exp()?,
+            Elementary::Log => x.log()?,
+            Elementary::Sqrt => x.sqrt()?,
+        }
+    };
+    if out.coeffs().iter().all(CliScalar::finite) {
+        Ok(out)
+    } else {
+        Err(Failure::Math("the result is not finite".to_string()))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn scalar_kinds() {
+        assert_eq!("mpfr:256".parse::<ScalarKind>(), Ok(ScalarKind::Mpfr(256)));
+        assert!("mpfr:1".parse::<ScalarKind>().is_err());
+        assert!("mpfr:x".parse::<ScalarKind>().is_err());
+        assert!("mpfr:1000001".parse::<ScalarKind>().is_err());
+        assert!("float".parse::<ScalarKind>().is_err());
+    }
+
+    #[test]
+    fn f64_format() {
+        assert_eq!(format_f64(0.5), "0.5");
+        assert_eq!(format_f64(1.0), "1");
+        assert_eq!(format_f64(-2.0), "-2");
+        assert_eq!(format_f64(1.2246467991473532e-16), "1.2246467991473532e-16");
+        assert_eq!(format_f64(1e20), "1e20");
+        assert_eq!(format_f64(0.1 + 0.2), "0.30000000000000004");
+    }
+
+    #[test]
+    fn poly_constants() {
+        let x = Poly::var("x");
+        assert!(matches!(x.div_scalar(&x), Err(Failure::Unsupported(_))));
+        assert!(matches!(x.div_scalar(&Poly::zero()), Err(Failure::Math(_))));
+        assert_eq!(x.div_scalar(&Poly::from_i64(2)).unwrap().to_string(), "1/2*x");
+    }
+}
