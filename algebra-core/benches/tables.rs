@@ -2,6 +2,7 @@
 //! bases, and the geometric-product tables of larger non-diagonal algebras (n = 6, 8).
 //!
 //! Run with `cargo bench -p algebra-core --bench tables`.
+#![allow(missing_docs)] // criterion_group! generates undocumented items
 
 use algebra_core::rational::q;
 use algebra_core::{Algebra, Basis, Metric, Product};

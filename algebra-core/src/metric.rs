@@ -269,7 +269,7 @@ impl Metric {
             let msg = e.to_string();
             let mut lines = msg.lines().map(str::trim).filter(|l| !l.is_empty());
             let first = lines.next().unwrap_or("parse error").to_string();
-            match lines.filter(|l| !l.contains('|') && !l.starts_with('^')).last() {
+            match lines.rfind(|l| !l.contains('|') && !l.starts_with('^')) {
                 Some(reason) => err(format!("{first}: {reason}")),
                 None => err(first),
             }

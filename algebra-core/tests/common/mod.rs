@@ -98,11 +98,7 @@ pub fn check_eq(lhs: &Mv, rhs: &Mv, what: impl std::fmt::Display) -> Result<(), 
     if lhs.basis() == rhs.basis() && lhs.coeffs() == rhs.coeffs() {
         Ok(())
     } else {
-        Err(TestCaseError::fail(format!(
-            "{what}\n  left  ({}): {lhs}\n  right ({}): {rhs}",
-            lhs.basis(),
-            rhs.basis()
-        )))
+        Err(TestCaseError::fail(format!("{what}\n  left  ({}): {lhs}\n  right ({}): {rhs}", lhs.basis(), rhs.basis())))
     }
 }
 
