@@ -17,6 +17,8 @@
 
 pub mod algebra;
 pub mod basis;
+pub mod codegen;
+pub mod linalg;
 pub mod metric;
 pub mod multivector;
 pub mod ops;

@@ -69,7 +69,9 @@ pub enum CodegenError {
         n: usize,
     },
     /// A malformed `--types` string.
-    #[error("bad type list `{0}`: expected `Name=elements;Name=elements` with elements `grade K`, `even`, `odd`, `all` or a comma list of basis names")]
+    #[error(
+        "bad type list `{0}`: expected `Name=elements;Name=elements` with elements `grade K`, `even`, `odd`, `all` or a comma list of basis names"
+    )]
     BadTypeList(String),
     /// A table coefficient that does not fit the `i64` ratio of `T::from_ratio`.
     #[error("a table coefficient ({0}) is too large for T::from_ratio(i64, i64)")]

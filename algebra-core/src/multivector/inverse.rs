@@ -2,7 +2,8 @@
 //! multiplication, so it works for every metric (degenerate too) without closed forms.
 
 use super::{Multivector, MvError};
-use crate::scalar::{Field, Ring};
+use crate::scalar::Field;
+
 use crate::tables::Product;
 
 impl<T: Field> Multivector<T> {
@@ -25,7 +26,6 @@ impl<T: Field> Multivector<T> {
     /// let y = x.inverse().unwrap();
     /// assert_eq!(&x * &y, Multivector::scalar(&alg, Basis::Product, ratio(1, 1)));
     /// ```
-    #[allow(clippy::needless_range_loop)] // row operations read clearest with indices
     pub fn inverse(&self) -> Result<Self, MvError> {
         let dim = self.algebra.dim();
         let table = self.algebra.tables().product(self.basis, Product::Geometric);
@@ -43,41 +43,7 @@ impl<T: Field> Multivector<T> {
         }
         let mut rhs: Vec<T> = vec![T::zero(); dim];
         rhs[0] = T::one();
-        let scale = l.iter().flatten().map(Ring::magnitude).fold(0.0, f64::max);
-        let tol = 64.0 * T::relative_epsilon() * dim as f64 * scale;
-        let not_invertible = || MvError::NotInvertible(self.to_string());
-        for col in 0..dim {
-            let pivot = (col..dim)
-                .filter(|&r| !l[r][col].is_exact_zero())
-                .max_by(|&a, &b| l[a][col].magnitude().total_cmp(&l[b][col].magnitude()))
-                .ok_or_else(not_invertible)?;
-            if l[pivot][col].magnitude() <= tol {
-                return Err(not_invertible());
-            }
-            l.swap(pivot, col);
-            rhs.swap(pivot, col);
-            let inv = l[col][col].try_recip().ok_or_else(not_invertible)?;
-            for r in col + 1..dim {
-                if l[r][col].is_exact_zero() {
-                    continue;
-                }
-                let f = l[r][col].mul_ref(&inv);
-                for c in col..dim {
-                    let d = f.mul_ref(&l[col][c]);
-                    l[r][c].sub_assign_ref(&d);
-                }
-                let d = f.mul_ref(&rhs[col]);
-                rhs[r].sub_assign_ref(&d);
-            }
-        }
-        let mut y = vec![T::zero(); dim];
-        for row in (0..dim).rev() {
-            let mut acc = rhs[row].clone();
-            for c in row + 1..dim {
-                acc.sub_assign_ref(&l[row][c].mul_ref(&y[c]));
-            }
-            y[row] = acc.div_ref(&l[row][row]);
-        }
+        let y = crate::linalg::solve(l, rhs).ok_or_else(|| MvError::NotInvertible(self.to_string()))?;
         Ok(Multivector { algebra: self.algebra.clone(), basis: self.basis, coeffs: y })
     }
 

@@ -46,6 +46,14 @@ pub enum MvError {
         /// What was given.
         found: usize,
     },
+    /// A conversion to a generated type met a coefficient outside that type.
+    #[error("cannot convert to {ty}: non-zero coefficient of {element}")]
+    OutsideType {
+        /// The generated type.
+        ty: String,
+        /// The offending basis element.
+        element: String,
+    },
     /// The element has no inverse (it is a zero divisor).
     #[error("{0} is not invertible")]
     NotInvertible(String),

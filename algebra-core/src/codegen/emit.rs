@@ -1,0 +1,544 @@
+//! Token emission: a [`Plan`] becomes a Rust module.
+//!
+//! Generated code refers to the engine by absolute paths (`::algebra_core::...`), so a crate
+//! that uses the macro, or vendors the emitted file, depends on `algebra-core` (without its
+//! `rug` feature if it wants no GMP).
+
+use super::plan::{BinaryKernel, Plan, Ratio, Term, UnaryKernel, unary_name};
+use crate::basis::Basis;
+use crate::rational::format_rational;
+use crate::tables::Product;
+use proc_macro2::{Ident, Span, TokenStream};
+use quote::{format_ident, quote};
+use std::collections::BTreeMap;
+
+/// The trait and method of each product.
+fn product_trait(p: Product) -> (&'static str, &'static str) {
+    match p {
+        Product::Geometric => ("GeometricProduct", "gp"),
+        Product::Outer => ("OuterProduct", "op"),
+        Product::LeftContraction => ("LeftContraction", "lc"),
+        Product::RightContraction => ("RightContraction", "rc"),
+        Product::Scalar => ("ScalarProduct", "sp"),
+        Product::Regressive => ("RegressiveProduct", "regressive"),
+        Product::Commutator => ("CommutatorProduct", "commutator"),
+        Product::Anticommutator => ("AnticommutatorProduct", "anticommutator"),
+    }
+}
+
+/// The operator trait (if any) of each product: `*` geometric, `^` outer, `|` left contraction.
+fn product_operator(p: Product) -> Option<(&'static str, &'static str)> {
+    match p {
+        Product::Geometric => Some(("Mul", "mul")),
+        Product::Outer => Some(("BitXor", "bitxor")),
+        Product::LeftContraction => Some(("BitOr", "bitor")),
+        _ => None,
+    }
+}
+
+/// The field name of a basis element: `scalar` for `1`, else the basis name (`e12`).
+pub fn field_name(name: &str) -> String {
+    if name == "1" { "scalar".to_string() } else { name.to_string() }
+}
+
+fn ident(s: &str) -> Ident {
+    Ident::new(s, Span::call_site())
+}
+
+fn snake(name: &str) -> String {
+    let mut out = String::new();
+    for (i, c) in name.chars().enumerate() {
+        if c.is_ascii_uppercase() {
+            if i > 0 {
+                out.push('_');
+            }
+            out.push(c.to_ascii_lowercase());
+        } else {
+            out.push(c);
+        }
+    }
+    out
+}
+
+/// `T::from_ratio(n, d)`.
+fn constant(c: Ratio) -> TokenStream {
+    let (n, d) = (c.0, c.1);
+    quote!(T::from_ratio(#n, #d))
+}
+
+/// A sum of `(coefficient, operand)` terms, each operand an expression of type `T` that may be
+/// used by reference (`&operand`). `movable` says the operand may be moved when it comes
+/// first with coefficient 1.
+fn sum(mut terms: Vec<(Ratio, TokenStream, bool)>) -> TokenStream {
+    if terms.is_empty() {
+        return quote!(T::zero());
+    }
+    // start with a positive term if there is one, to avoid a negation
+    if let Some(p) = terms.iter().position(|(c, _, _)| c.0 > 0) {
+        terms.swap(0, p);
+    }
+    let mut it = terms.into_iter();
+    let (c, x, movable) = it.next().expect("non-empty");
+    let mut acc = match c {
+        (1, 1) if movable => x,
+        (1, 1) => quote!(::core::clone::Clone::clone(&#x)),
+        (-1, 1) => quote!(::algebra_core::Ring::neg_ref(&#x)),
+        c => {
+            let k = constant(c);
+            quote!(#k * &#x)
+        }
+    };
+    for (c, x, _) in it {
+        acc = match c {
+            (1, 1) => quote!(#acc + &#x),
+            (-1, 1) => quote!(#acc - &#x),
+            (n, d) if n < 0 => {
+                let k = constant((-n, d));
+                quote!(#acc - #k * &#x)
+            }
+            c => {
+                let k = constant(c);
+                quote!(#acc + #k * &#x)
+            }
+        };
+    }
+    acc
+}
+
+struct Names {
+    types: Vec<Ident>,
+    fields: Vec<Vec<Ident>>,
+    elements: Vec<Vec<String>>,
+    masks: Vec<Vec<u32>>,
+}
+
+impl Names {
+    fn new(plan: &Plan) -> Names {
+        let alg = &plan.spec.algebra;
+        let types = plan.spec.types.iter().map(|t| ident(&t.name)).collect();
+        let elements: Vec<Vec<String>> =
+            plan.spec.types.iter().map(|t| t.elements.iter().map(|&m| alg.name_of(m).to_string()).collect()).collect();
+        let fields = elements.iter().map(|es| es.iter().map(|e| ident(&field_name(e))).collect()).collect();
+        let masks = plan.spec.types.iter().map(|t| t.elements.clone()).collect();
+        Names { types, fields, elements, masks }
+    }
+}
+
+/// The whole module: `pub mod NAME { ... }`.
+///
+/// ```
+/// use algebra_core::{Algebra, Basis, codegen::{ModuleSpec, plan::Plan, emit}};
+/// let alg = Algebra::builtin("g3").unwrap();
+/// let types = ModuleSpec::parse_types("Vector=grade1;Rotor=even", &alg).unwrap();
+/// let spec = ModuleSpec::new("g3", alg.metric().clone(), Basis::Blade, types).unwrap();
+/// let code = emit::module(&Plan::new(spec).unwrap()).to_string();
+/// assert!(code.contains("pub struct Rotor"));
+/// ```
+pub fn module(plan: &Plan) -> TokenStream {
+    let name = ident(&plan.spec.name);
+    let docs = plan.spec.doc.iter().map(|d| quote!(#![doc = #d]));
+    let items = module_items(plan);
+    quote! {
+        #[allow(clippy::all, unused_parens, unused_mut, unused_variables, non_snake_case)]
+        pub mod #name {
+            #(#docs)*
+            #items
+        }
+    }
+}
+
+/// The module's items (without the `mod` wrapper).
+pub fn module_items(plan: &Plan) -> TokenStream {
+    let names = Names::new(plan);
+    let alg = &plan.spec.algebra;
+    let labels: Vec<&str> = alg.metric().labels().iter().map(String::as_str).collect();
+    let n = labels.len();
+    let gram: Vec<TokenStream> = (0..n)
+        .map(|i| {
+            let row: Vec<String> = (0..n).map(|j| format_rational(alg.metric().gram(i, j))).collect();
+            quote!(::std::vec![#(::algebra_core::rational::parse_rational(#row).expect("exact")),*])
+        })
+        .collect();
+    let alg_name = alg.name();
+    let basis = match plan.spec.basis {
+        Basis::Blade => quote!(::algebra_core::Basis::Blade),
+        Basis::Product => quote!(::algebra_core::Basis::Product),
+    };
+    let structs = (0..names.types.len()).map(|i| type_items(plan, &names, i));
+    let binaries = plan.binary.iter().map(|k| binary_items(&names, k));
+    let conversions = conversion_items(&names);
+    quote! {
+        pub use ::algebra_core::ops::{
+            AnticommutatorProduct, CommutatorProduct, GeometricProduct, LeftContraction, OuterProduct,
+            RegressiveProduct, RightContraction, ScalarProduct,
+        };
+        pub use ::algebra_core::{Field, Ring};
+
+        /// The basis the types' fields refer to.
+        pub const BASIS: ::algebra_core::Basis = #basis;
+
+        /// The runtime algebra of this module (for conversions to and from
+        /// [`::algebra_core::Multivector`]), built once.
+        pub fn algebra() -> ::std::sync::Arc<::algebra_core::Algebra> {
+            static ALGEBRA: ::std::sync::OnceLock<::std::sync::Arc<::algebra_core::Algebra>> =
+                ::std::sync::OnceLock::new();
+            ALGEBRA
+                .get_or_init(|| {
+                    let labels = ::std::vec![#(::std::string::String::from(#labels)),*];
+                    let gram = ::std::vec![#(#gram),*];
+                    let metric = ::algebra_core::Metric::new(labels, gram).expect("the metric was validated at generation");
+                    ::algebra_core::Algebra::new(#alg_name, metric)
+                })
+                .clone()
+        }
+
+        #(#structs)*
+        #(#binaries)*
+        #conversions
+    }
+}
+
+fn type_items(plan: &Plan, names: &Names, i: usize) -> TokenStream {
+    let t = &plan.spec.types[i];
+    let ty = &names.types[i];
+    let fields = &names.fields[i];
+    let elements = &names.elements[i];
+    let masks = &names.masks[i];
+    let count = fields.len();
+    let basis_doc = format!(
+        "Basis elements ({} basis): {}.",
+        plan.spec.basis,
+        elements.iter().map(|e| format!("`{e}`")).collect::<Vec<_>>().join(", ")
+    );
+    let docs = t.doc.iter().map(|d| quote!(#[doc = #d]));
+    let field_docs = elements.iter().map(|e| format!("Coefficient of `{e}`."));
+    let one = if masks.contains(&0) {
+        let vals = masks.iter().map(|&m| if m == 0 { quote!(T::one()) } else { quote!(T::zero()) });
+        quote! {
+            /// The identity element.
+            pub fn one() -> Self { #ty { #(#fields: #vals),* } }
+        }
+    } else {
+        quote!()
+    };
+    let unaries = plan.unary.iter().filter(|k| k.ty == i).map(|k| unary_method(names, k));
+    let norm = norm_method(names, i, &plan.norm[i]);
+    let rev_out =
+        &names.types[plan.unary.iter().find(|k| k.ty == i && k.op == crate::Unary::Reverse).expect("planned").out];
+    let inverse = inverse_method(plan, names, i);
+    quote! {
+        #(#docs)*
+        #[doc = #basis_doc]
+        #[derive(Clone, PartialEq)]
+        pub struct #ty<T> {
+            #(#[doc = #field_docs] pub #fields: T,)*
+        }
+
+        impl<T: ::algebra_core::Ring> #ty<T> {
+            /// The basis names of the fields, in order.
+            pub const ELEMENTS: [&'static str; #count] = [#(#elements),*];
+            /// The bitmasks of the fields' basis elements, in order.
+            pub const MASKS: [u32; #count] = [#(#masks),*];
+
+            /// A value from its coefficients, in the order of [`Self::ELEMENTS`].
+            #[allow(clippy::too_many_arguments)]
+            pub fn new(#(#fields: T),*) -> Self { #ty { #(#fields),* } }
+
+            /// Zero.
+            pub fn zero() -> Self { #ty { #(#fields: T::zero()),* } }
+
+            #one
+
+            /// Every coefficient multiplied by `s`.
+            pub fn scale(&self, s: &T) -> Self { #ty { #(#fields: self.#fields.mul_ref(s)),* } }
+
+            /// The same element as a runtime multivector of [`algebra()`].
+            pub fn to_multivector(&self) -> ::algebra_core::Multivector<T> {
+                let mut m = ::algebra_core::Multivector::zero(&algebra(), BASIS);
+                #(*m.coeff_mut(#masks) = ::core::clone::Clone::clone(&self.#fields);)*
+                m
+            }
+
+            /// The projection of a runtime multivector onto this type: its coefficients on this
+            /// type's basis elements (in [`BASIS`]); every other coefficient is dropped.
+            pub fn project(m: &::algebra_core::Multivector<T>) -> Self {
+                let m = m.in_basis(BASIS);
+                #ty { #(#fields: ::core::clone::Clone::clone(m.coeff(#masks))),* }
+            }
+
+            /// The sandwich `f_S(x) = rev(S) x S` of the main paper.
+            pub fn sandwich<X, Y>(&self, x: &X) -> <Y as ::algebra_core::ops::GeometricProduct<Self>>::Output
+            where
+                #rev_out<T>: ::algebra_core::ops::GeometricProduct<X, Output = Y>,
+                Y: ::algebra_core::ops::GeometricProduct<Self>,
+            {
+                ::algebra_core::ops::GeometricProduct::gp(
+                    &::algebra_core::ops::GeometricProduct::gp(&self.reverse(), x),
+                    self,
+                )
+            }
+
+            #(#unaries)*
+            #norm
+        }
+
+        #inverse
+
+        impl<T: ::algebra_core::Ring> ::core::convert::TryFrom<&::algebra_core::Multivector<T>> for #ty<T> {
+            type Error = ::algebra_core::MvError;
+            /// Exact conversion: fails if the multivector has a non-zero coefficient outside this type.
+            fn try_from(m: &::algebra_core::Multivector<T>) -> ::core::result::Result<Self, Self::Error> {
+                let converted = m.in_basis(BASIS);
+                for (mask, name, _) in converted.terms() {
+                    if !Self::MASKS.contains(&mask) {
+                        return Err(::algebra_core::MvError::OutsideType {
+                            ty: ::std::string::String::from(stringify!(#ty)),
+                            element: ::std::string::String::from(name),
+                        });
+                    }
+                }
+                Ok(Self::project(&converted))
+            }
+        }
+
+        impl<T: ::algebra_core::Ring> ::core::convert::From<&#ty<T>> for ::algebra_core::Multivector<T> {
+            fn from(x: &#ty<T>) -> Self { x.to_multivector() }
+        }
+
+        impl<T: ::algebra_core::Ring> ::core::fmt::Display for #ty<T> {
+            /// A sum of basis elements: `1 + 1/2*e1inf`; `0` for zero.
+            fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
+                let terms = [#((#elements, &self.#fields)),*];
+                f.write_str(&::algebra_core::multivector::display::join_terms(
+                    terms.iter().filter(|(_, c)| !::algebra_core::Ring::is_exact_zero(*c)).map(|(n, c)| {
+                        ::algebra_core::multivector::display::format_term(&::std::string::ToString::to_string(c), n)
+                    }),
+                ))
+            }
+        }
+
+        impl<T: ::algebra_core::Ring> ::core::fmt::Debug for #ty<T> {
+            fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
+                write!(f, "{}({})", stringify!(#ty), self)
+            }
+        }
+
+        impl<T: ::algebra_core::Ring> ::core::ops::Add for #ty<T> {
+            type Output = Self;
+            fn add(self, rhs: Self) -> Self { #ty { #(#fields: self.#fields + rhs.#fields),* } }
+        }
+        impl<T: ::algebra_core::Ring> ::core::ops::Add for &#ty<T> {
+            type Output = #ty<T>;
+            fn add(self, rhs: Self) -> #ty<T> { #ty { #(#fields: self.#fields.add_ref(&rhs.#fields)),* } }
+        }
+        impl<T: ::algebra_core::Ring> ::core::ops::Sub for #ty<T> {
+            type Output = Self;
+            fn sub(self, rhs: Self) -> Self { #ty { #(#fields: self.#fields - rhs.#fields),* } }
+        }
+        impl<T: ::algebra_core::Ring> ::core::ops::Sub for &#ty<T> {
+            type Output = #ty<T>;
+            fn sub(self, rhs: Self) -> #ty<T> { #ty { #(#fields: self.#fields.sub_ref(&rhs.#fields)),* } }
+        }
+        impl<T: ::algebra_core::Ring> ::core::ops::Neg for #ty<T> {
+            type Output = Self;
+            fn neg(self) -> Self { #ty { #(#fields: -self.#fields),* } }
+        }
+        impl<T: ::algebra_core::Ring> ::core::ops::Neg for &#ty<T> {
+            type Output = #ty<T>;
+            fn neg(self) -> #ty<T> { #ty { #(#fields: self.#fields.neg_ref()),* } }
+        }
+    }
+}
+
+fn unary_method(names: &Names, k: &UnaryKernel) -> TokenStream {
+    let method = ident(unary_name(k.op));
+    let out = &names.types[k.out];
+    let in_fields = &names.fields[k.ty];
+    let out_fields = &names.fields[k.out];
+    let exprs = k.outputs.iter().map(|terms| {
+        sum(terms
+            .iter()
+            .map(|(a, c)| {
+                let f = &in_fields[*a];
+                (*c, quote!(self.#f), false)
+            })
+            .collect())
+    });
+    let doc = format!("The {} (a linear map; output type chosen at generation).", unary_name(k.op).replace('_', " "));
+    quote! {
+        #[doc = #doc]
+        pub fn #method(&self) -> #out<T> { #out { #(#out_fields: #exprs),* } }
+    }
+}
+
+fn norm_method(names: &Names, i: usize, terms: &[Term]) -> TokenStream {
+    let fields = &names.fields[i];
+    let mut binds = Vec::new();
+    let mut parts = Vec::new();
+    for (n, t) in terms.iter().enumerate() {
+        let p = format_ident!("n{}", n);
+        let (a, b) = (&fields[t.lhs], &fields[t.rhs]);
+        binds.push(quote!(let #p = self.#a.mul_ref(&self.#b);));
+        parts.push((t.coef, quote!(#p), true));
+    }
+    let expr = sum(parts);
+    quote! {
+        /// The squared norm `<x rev(x)>_0` (a scalar; may be negative or zero in
+        /// non-Euclidean or degenerate metrics).
+        pub fn norm_squared(&self) -> T {
+            #(#binds)*
+            #expr
+        }
+    }
+}
+
+fn inverse_method(plan: &Plan, names: &Names, i: usize) -> TokenStream {
+    let ty = &names.types[i];
+    if !plan.closed[i] {
+        let full = &names.types[plan.full];
+        return quote! {
+            impl<T: ::algebra_core::Field> #ty<T> {
+                /// The inverse, computed in the whole algebra (this type is not a subalgebra).
+                pub fn inverse(&self) -> ::core::result::Result<#full<T>, ::algebra_core::MvError> {
+                    Ok(#full::project(&self.to_multivector().inverse()?))
+                }
+            }
+        };
+    }
+    // Inside a subalgebra containing 1 the inverse stays in it: solve self * y = 1 there.
+    let k = plan.kernel(Product::Geometric, i, i);
+    let masks = &names.masks[i];
+    let fields = &names.fields[i];
+    let m = masks.len();
+    let mut entries: BTreeMap<(usize, usize), Vec<(Ratio, TokenStream, bool)>> = BTreeMap::new();
+    for (ko, terms) in k.outputs.iter().enumerate() {
+        let row = masks.iter().position(|&mm| mm == names.masks[k.out][ko]).expect("closed type");
+        for t in terms {
+            let f = &fields[t.lhs];
+            entries.entry((row, t.rhs)).or_default().push((t.coef, quote!(self.#f), false));
+        }
+    }
+    let sets = entries.into_iter().map(|((r, c), terms)| {
+        let e = sum(terms);
+        quote!(l[#r][#c] = #e;)
+    });
+    let one_row = masks.iter().position(|&mm| mm == 0).expect("contains 1");
+    quote! {
+        impl<T: ::algebra_core::Field> #ty<T> {
+            /// The inverse, which stays in this type (a subalgebra containing 1): solves
+            /// `self * y = 1` within it. Fails for zero divisors.
+            pub fn inverse(&self) -> ::core::result::Result<Self, ::algebra_core::MvError> {
+                let mut l: ::std::vec::Vec<::std::vec::Vec<T>> = ::std::vec![::std::vec![T::zero(); #m]; #m];
+                #(#sets)*
+                let mut rhs = ::std::vec![T::zero(); #m];
+                rhs[#one_row] = T::one();
+                let y = ::algebra_core::linalg::solve(l, rhs)
+                    .ok_or_else(|| ::algebra_core::MvError::NotInvertible(::std::string::ToString::to_string(self)))?;
+                let mut it = y.into_iter();
+                Ok(#ty { #(#fields: it.next().expect("one value per field")),* })
+            }
+        }
+    }
+}
+
+fn binary_items(names: &Names, k: &BinaryKernel) -> TokenStream {
+    let (lt, rt, ot) = (&names.types[k.lhs], &names.types[k.rhs], &names.types[k.out]);
+    let (lf, rf, of) = (&names.fields[k.lhs], &names.fields[k.rhs], &names.fields[k.out]);
+    let (trait_name, method) = product_trait(k.product);
+    let (trait_name, method) = (ident(trait_name), ident(method));
+    let mut uses: BTreeMap<(usize, usize), usize> = BTreeMap::new();
+    for t in k.outputs.iter().flatten() {
+        *uses.entry((t.lhs, t.rhs)).or_default() += 1;
+    }
+    let binds = uses.keys().map(|&(a, b)| {
+        let p = format_ident!("p{}_{}", a, b);
+        let (fa, fb) = (&lf[a], &rf[b]);
+        quote!(let #p = self.#fa.mul_ref(&rhs.#fb);)
+    });
+    let mut moved = std::collections::BTreeSet::new();
+    let exprs: Vec<TokenStream> = k
+        .outputs
+        .iter()
+        .map(|terms| {
+            sum(terms
+                .iter()
+                .map(|t| {
+                    let p = format_ident!("p{}_{}", t.lhs, t.rhs);
+                    let movable = uses[&(t.lhs, t.rhs)] == 1 && moved.insert((t.lhs, t.rhs));
+                    (t.coef, quote!(#p), movable)
+                })
+                .collect())
+        })
+        .collect();
+    let operator = product_operator(k.product).map(|(op_trait, op_method)| {
+        let (op_trait, op_method) = (ident(op_trait), ident(op_method));
+        quote! {
+            impl<T: ::algebra_core::Ring> ::core::ops::#op_trait<&#rt<T>> for &#lt<T> {
+                type Output = #ot<T>;
+                fn #op_method(self, rhs: &#rt<T>) -> #ot<T> { ::algebra_core::ops::#trait_name::#method(self, rhs) }
+            }
+            impl<T: ::algebra_core::Ring> ::core::ops::#op_trait<#rt<T>> for #lt<T> {
+                type Output = #ot<T>;
+                fn #op_method(self, rhs: #rt<T>) -> #ot<T> { ::algebra_core::ops::#trait_name::#method(&self, &rhs) }
+            }
+        }
+    });
+    quote! {
+        impl<T: ::algebra_core::Ring> ::algebra_core::ops::#trait_name<#rt<T>> for #lt<T> {
+            type Output = #ot<T>;
+            #[inline]
+            fn #method(&self, rhs: &#rt<T>) -> #ot<T> {
+                #(#binds)*
+                #ot { #(#of: #exprs),* }
+            }
+        }
+        #operator
+    }
+}
+
+/// `From` embeddings (A ⊂ B) and named projections (`project_to_b`) between declared types.
+fn conversion_items(names: &Names) -> TokenStream {
+    let mut items = Vec::new();
+    for a in 0..names.types.len() {
+        for b in 0..names.types.len() {
+            if a == b {
+                continue;
+            }
+            let (ta, tb) = (&names.types[a], &names.types[b]);
+            let (ma, mb) = (&names.masks[a], &names.masks[b]);
+            let fb = &names.fields[b];
+            // the value of each target field, read from `recv`
+            let vals = |recv: TokenStream| -> Vec<TokenStream> {
+                mb.iter()
+                    .map(|m| match ma.iter().position(|x| x == m) {
+                        Some(p) => {
+                            let f = &names.fields[a][p];
+                            quote!(::core::clone::Clone::clone(&#recv.#f))
+                        }
+                        None => quote!(T::zero()),
+                    })
+                    .collect()
+            };
+            if ma.iter().all(|m| mb.contains(m)) {
+                let vals = vals(quote!(x));
+                items.push(quote! {
+                    impl<T: ::algebra_core::Ring> ::core::convert::From<&#ta<T>> for #tb<T> {
+                        /// The embedding (every basis element of the source is in the target).
+                        fn from(x: &#ta<T>) -> Self { #tb { #(#fb: #vals),* } }
+                    }
+                });
+            } else {
+                let vals = vals(quote!(self));
+                let method = format_ident!("project_to_{}", snake(&tb.to_string()));
+                let doc = format!("The projection onto [`{tb}`]: shared coefficients kept, the others dropped.");
+                items.push(quote! {
+                    impl<T: ::algebra_core::Ring> #ta<T> {
+                        #[doc = #doc]
+                        pub fn #method(&self) -> #tb<T> { #tb { #(#fb: #vals),* } }
+                    }
+                });
+            }
+        }
+    }
+    quote!(#(#items)*)
+}

@@ -1,0 +1,269 @@
+//! Structural analysis: which terms each generated kernel contains, and which declared type
+//! receives each result. Everything here is decided from the exact tables at expansion time.
+
+use super::{CodegenError, ModuleSpec, TypeSpec};
+use crate::basis::Basis;
+use crate::multivector::Multivector;
+use crate::rational::Q;
+use crate::tables::{Product, Unary};
+use num_traits::{ToPrimitive, Zero};
+use std::collections::BTreeSet;
+
+/// An exact constant of a kernel as `(numerator, denominator)`, for `T::from_ratio`.
+pub type Ratio = (i64, i64);
+
+/// `c · lhs[lhs] · rhs[rhs]`: one term of a binary kernel (field indices into the types).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Term {
+    /// Field index in the left type.
+    pub lhs: usize,
+    /// Field index in the right type.
+    pub rhs: usize,
+    /// The exact coefficient.
+    pub coef: Ratio,
+}
+
+/// One generated binary kernel.
+#[derive(Debug, Clone)]
+pub struct BinaryKernel {
+    /// The product.
+    pub product: Product,
+    /// Left type index.
+    pub lhs: usize,
+    /// Right type index.
+    pub rhs: usize,
+    /// Output type index (the smallest declared type holding the structural support).
+    pub out: usize,
+    /// For each field of the output type, its terms.
+    pub outputs: Vec<Vec<Term>>,
+}
+
+/// One generated linear unary kernel: each output field is `Σ c · x[field]`.
+#[derive(Debug, Clone)]
+pub struct UnaryKernel {
+    /// The operation.
+    pub op: Unary,
+    /// Input type index.
+    pub ty: usize,
+    /// Output type index.
+    pub out: usize,
+    /// For each output field, `(input field, coefficient)`.
+    pub outputs: Vec<Vec<(usize, Ratio)>>,
+}
+
+/// Operation counts of one kernel.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct KernelStats {
+    /// `gp`, `op`, `lc`, `rc`, `sp`, `rp`, `comm`, `acomm`, or a unary name.
+    pub op: String,
+    /// Left (or only) operand type.
+    pub lhs: String,
+    /// Right operand type (`None` for unary kernels).
+    pub rhs: Option<String>,
+    /// Output type.
+    pub out: String,
+    /// Multiplications: one per distinct `lhs × rhs` field product, plus one per constant
+    /// other than ±1.
+    pub mul: usize,
+    /// Additions and subtractions.
+    pub add: usize,
+}
+
+/// The analysed module.
+#[derive(Debug, Clone)]
+pub struct Plan {
+    /// The spec, with the full multivector type appended when no declared type holds every
+    /// basis element (named `Multivector`, or `FullMultivector` if that name is taken).
+    pub spec: ModuleSpec,
+    /// Index of the type holding every basis element (the fallback output type).
+    pub full: usize,
+    /// Every binary kernel: all ordered pairs of types, all products.
+    pub binary: Vec<BinaryKernel>,
+    /// Every unary kernel: reverse, grade involution, Clifford conjugate, dual, undual.
+    pub unary: Vec<UnaryKernel>,
+    /// For each type, the symmetric matrix of `<x rev(x)>_0` as upper-triangular terms.
+    pub norm: Vec<Vec<Term>>,
+    /// Per type: whether it is a subalgebra containing 1 (then `inverse` stays in the type).
+    pub closed: Vec<bool>,
+}
+
+/// The unary operations that get kernels.
+pub const UNARY_OPS: [Unary; 5] =
+    [Unary::Reverse, Unary::GradeInvolution, Unary::CliffordConjugate, Unary::Dual, Unary::Undual];
+
+fn to_ratio(c: &Q) -> Result<Ratio, CodegenError> {
+    match (c.numer().to_i64(), c.denom().to_i64()) {
+        (Some(n), Some(d)) => Ok((n, d)),
+        _ => Err(CodegenError::CoefficientTooLarge(crate::rational::format_rational(c))),
+    }
+}
+
+/// Counts of a kernel given its per-output terms.
+fn count(outputs: &[Vec<Term>]) -> (usize, usize) {
+    let pairs: BTreeSet<(usize, usize)> = outputs.iter().flatten().map(|t| (t.lhs, t.rhs)).collect();
+    let consts = outputs.iter().flatten().filter(|t| t.coef.0.abs() != 1 || t.coef.1 != 1).count();
+    let adds = outputs.iter().map(|o| o.len().saturating_sub(1)).sum();
+    (pairs.len() + consts, adds)
+}
+
+impl Plan {
+    /// Analyses a spec.
+    ///
+    /// ```
+    /// use algebra_core::{Algebra, Basis, codegen::{ModuleSpec, plan::Plan}};
+    /// let alg = Algebra::builtin("g123inf").unwrap();
+    /// let types = ModuleSpec::parse_types("Motor=even", &alg).unwrap();
+    /// let spec = ModuleSpec::new("g123inf", alg.metric().clone(), Basis::Blade, types).unwrap();
+    /// let plan = Plan::new(spec).unwrap();
+    /// let gp = plan.stats().into_iter().find(|s| s.op == "gp" && s.lhs == "Motor" && s.rhs.as_deref() == Some("Motor")).unwrap();
+    /// assert_eq!((gp.out.as_str(), gp.mul, gp.add), ("Motor", 48, 40));
+    /// ```
+    pub fn new(mut spec: ModuleSpec) -> Result<Plan, CodegenError> {
+        let alg = spec.algebra.clone();
+        let order = alg.basis_order().to_vec();
+        for t in &mut spec.types {
+            t.elements.sort_by_key(|m| order.iter().position(|o| o == m));
+        }
+        let full = match spec.types.iter().position(|t| t.elements.len() == alg.dim()) {
+            Some(i) => i,
+            None => {
+                let name =
+                    if spec.types.iter().any(|t| t.name == "Multivector") { "FullMultivector" } else { "Multivector" };
+                let mut t = TypeSpec::new(name, order.clone())?;
+                t.doc.push("Every basis element (the fallback output type).".into());
+                spec.types.push(t);
+                spec.types.len() - 1
+            }
+        };
+        let sets: Vec<BTreeSet<u32>> = spec.types.iter().map(|t| t.elements.iter().copied().collect()).collect();
+        // smallest type holding a support; ties go to the first declared
+        let choose = |support: &BTreeSet<u32>| -> usize {
+            (0..sets.len()).filter(|&i| support.is_subset(&sets[i])).min_by_key(|&i| (sets[i].len(), i)).unwrap_or(full)
+        };
+        let tables = alg.tables();
+        let basis = spec.basis;
+        let mut binary = Vec::new();
+        for product in Product::ALL {
+            let table = tables.product(basis, product);
+            for (li, lt) in spec.types.iter().enumerate() {
+                for (ri, rt) in spec.types.iter().enumerate() {
+                    let mut raw: Vec<(u32, Term)> = Vec::new();
+                    for (a, &ma) in lt.elements.iter().enumerate() {
+                        for (b, &mb) in rt.elements.iter().enumerate() {
+                            for (k, c) in table.get(ma, mb) {
+                                raw.push((*k, Term { lhs: a, rhs: b, coef: to_ratio(c)? }));
+                            }
+                        }
+                    }
+                    let support: BTreeSet<u32> = raw.iter().map(|(k, _)| *k).collect();
+                    let out = choose(&support);
+                    let outputs = spec.types[out]
+                        .elements
+                        .iter()
+                        .map(|m| raw.iter().filter(|(k, _)| k == m).map(|(_, t)| t.clone()).collect())
+                        .collect();
+                    binary.push(BinaryKernel { product, lhs: li, rhs: ri, out, outputs });
+                }
+            }
+        }
+        let mut unary = Vec::new();
+        for op in UNARY_OPS {
+            let map = tables.unary(basis, op);
+            for (ti, t) in spec.types.iter().enumerate() {
+                let mut raw: Vec<(u32, usize, Ratio)> = Vec::new();
+                for (a, &ma) in t.elements.iter().enumerate() {
+                    for (k, c) in map.image(ma) {
+                        raw.push((*k, a, to_ratio(c)?));
+                    }
+                }
+                let support: BTreeSet<u32> = raw.iter().map(|(k, _, _)| *k).collect();
+                let out = choose(&support);
+                let outputs = spec.types[out]
+                    .elements
+                    .iter()
+                    .map(|m| raw.iter().filter(|(k, _, _)| k == m).map(|(_, a, c)| (*a, *c)).collect())
+                    .collect();
+                unary.push(UnaryKernel { op, ty: ti, out, outputs });
+            }
+        }
+        let norm = spec.types.iter().map(|t| norm_terms(&alg, basis, &t.elements)).collect::<Result<_, _>>()?;
+        let closed = (0..spec.types.len())
+            .map(|i| {
+                let gp = binary.iter().find(|k| k.product == Product::Geometric && k.lhs == i && k.rhs == i);
+                sets[i].contains(&0) && gp.is_some_and(|k| k.out == i || sets[k.out].is_subset(&sets[i]))
+            })
+            .collect();
+        Ok(Plan { spec, full, binary, unary, norm, closed })
+    }
+
+    /// The binary kernel for a product and a pair of type indices.
+    pub fn kernel(&self, product: Product, lhs: usize, rhs: usize) -> &BinaryKernel {
+        self.binary
+            .iter()
+            .find(|k| k.product == product && k.lhs == lhs && k.rhs == rhs)
+            .expect("every pair and product is planned")
+    }
+
+    /// Operation counts of every kernel (binary first, then unary).
+    pub fn stats(&self) -> Vec<KernelStats> {
+        let name = |i: usize| self.spec.types[i].name.clone();
+        let mut out: Vec<KernelStats> = self
+            .binary
+            .iter()
+            .map(|k| {
+                let (mul, add) = count(&k.outputs);
+                KernelStats {
+                    op: k.product.cli_name().to_string(),
+                    lhs: name(k.lhs),
+                    rhs: Some(name(k.rhs)),
+                    out: name(k.out),
+                    mul,
+                    add,
+                }
+            })
+            .collect();
+        for k in &self.unary {
+            let mul = k.outputs.iter().flatten().filter(|(_, c)| c.0.abs() != 1 || c.1 != 1).count();
+            let add = k.outputs.iter().map(|o| o.len().saturating_sub(1)).sum();
+            out.push(KernelStats {
+                op: unary_name(k.op).to_string(),
+                lhs: name(k.ty),
+                rhs: None,
+                out: name(k.out),
+                mul,
+                add,
+            });
+        }
+        out
+    }
+}
+
+/// The method name of a unary operation in generated code.
+pub fn unary_name(op: Unary) -> &'static str {
+    match op {
+        Unary::Reverse => "reverse",
+        Unary::GradeInvolution => "grade_involution",
+        Unary::CliffordConjugate => "conjugate",
+        Unary::Dual => "dual",
+        Unary::Undual => "undual",
+        Unary::BasisReverse => "basis_reverse",
+    }
+}
+
+/// `<x rev(x)>_0 = Σ_{i<=j} c_ij x_i x_j` for a type with the given elements.
+fn norm_terms(alg: &std::sync::Arc<crate::Algebra>, basis: Basis, elements: &[u32]) -> Result<Vec<Term>, CodegenError> {
+    let e = |m: u32| Multivector::<Q>::from_mask(alg, basis, m);
+    let mut terms = Vec::new();
+    for (i, &mi) in elements.iter().enumerate() {
+        for (j, &mj) in elements.iter().enumerate().skip(i) {
+            let mut c = e(mi).sp(&e(mj).reverse()).scalar_part();
+            if i != j {
+                c += e(mj).sp(&e(mi).reverse()).scalar_part();
+            }
+            if !c.is_zero() {
+                terms.push(Term { lhs: i, rhs: j, coef: to_ratio(&c)? });
+            }
+        }
+    }
+    Ok(terms)
+}
