@@ -249,7 +249,7 @@ impl Acc {
         self.touched.sort_unstable();
         let mut out = Vec::with_capacity(self.touched.len());
         for &m in &self.touched {
-            let v = std::mem::replace(&mut self.vals[m as usize], Q::zero());
+            let v = std::mem::take(&mut self.vals[m as usize]);
             self.seen[m as usize] = false;
             if !v.is_zero() {
                 out.push((m, v));

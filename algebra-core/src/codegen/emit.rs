@@ -66,10 +66,13 @@ fn constant(c: Ratio) -> TokenStream {
     quote!(T::from_ratio(#n, #d))
 }
 
+/// One summand: coefficient, operand expression, whether the operand may be moved.
+type SumTerm = (Ratio, TokenStream, bool);
+
 /// A sum of `(coefficient, operand)` terms, each operand an expression of type `T` that may be
 /// used by reference (`&operand`). `movable` says the operand may be moved when it comes
 /// first with coefficient 1.
-fn sum(mut terms: Vec<(Ratio, TokenStream, bool)>) -> TokenStream {
+fn sum(mut terms: Vec<SumTerm>) -> TokenStream {
     if terms.is_empty() {
         return quote!(T::zero());
     }
@@ -410,7 +413,7 @@ fn inverse_method(plan: &Plan, names: &Names, i: usize) -> TokenStream {
     let masks = &names.masks[i];
     let fields = &names.fields[i];
     let m = masks.len();
-    let mut entries: BTreeMap<(usize, usize), Vec<(Ratio, TokenStream, bool)>> = BTreeMap::new();
+    let mut entries: BTreeMap<(usize, usize), Vec<SumTerm>> = BTreeMap::new();
     for (ko, terms) in k.outputs.iter().enumerate() {
         let row = masks.iter().position(|&mm| mm == names.masks[k.out][ko]).expect("closed type");
         for t in terms {

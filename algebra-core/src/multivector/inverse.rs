@@ -26,6 +26,7 @@ impl<T: Field> Multivector<T> {
     /// let y = x.inverse().unwrap();
     /// assert_eq!(&x * &y, Multivector::scalar(&alg, Basis::Product, ratio(1, 1)));
     /// ```
+    #[allow(clippy::needless_range_loop)] // matrix assembly reads clearest with indices
     pub fn inverse(&self) -> Result<Self, MvError> {
         let dim = self.algebra.dim();
         let table = self.algebra.tables().product(self.basis, Product::Geometric);
