@@ -136,6 +136,22 @@ impl Metric {
         Ok(Metric { labels, gram })
     }
 
+    /// A metric from labels and a Gram matrix of rational literals (`"1"`, `"-1/2"`); used by
+    /// generated code.
+    ///
+    /// ```
+    /// use algebra_core::{Metric, rational::q};
+    /// let m = Metric::from_strs(&["0", "inf"], &[&["0", "-1"], &["-1", "0"]]).unwrap();
+    /// assert_eq!(m.gram(1, 0), &q(-1));
+    /// ```
+    pub fn from_strs(labels: &[&str], gram: &[&[&str]]) -> Result<Self, MetricError> {
+        let parse = |s: &str| {
+            parse_rational(s).map_err(|e| MetricError::Toml { path: "<literal>".into(), message: e.to_string() })
+        };
+        let gram = gram.iter().map(|row| row.iter().map(|s| parse(s)).collect()).collect::<Result<_, _>>()?;
+        Metric::new(labels.iter().map(|s| s.to_string()).collect(), gram)
+    }
+
     /// The diagonal signature (p, q, r): `p` generators squaring to +1, then `q` to -1, then
     /// `r` to 0, labelled `1, 2, ..., p+q+r`.
     ///

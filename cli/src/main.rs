@@ -4,6 +4,7 @@
 //! exit statuses: 2 for bad usage or input, 1 for a mathematical failure, each with exactly one
 //! `error:` line on stderr and nothing on stdout.
 
+mod codegen;
 mod commands;
 mod error;
 mod eval;
@@ -71,6 +72,29 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Generate the Rust module of the `algebra!` macro (or its kernels' operation counts).
+    Codegen {
+        /// A built-in algebra (g3, g123inf, pga3, cga, cga-null) or a path to a TOML file.
+        #[arg(long, value_name = "NAME", default_value = "cga-null")]
+        algebra: String,
+        /// The types: "Name=selector;..." with selectors `grade K`, `even`, `odd`, `all` or a
+        /// comma list of basis names, e.g. "Motor=1,e12,e13,e23,e1inf,e2inf,e3inf,e123inf;Vector=grade1".
+        #[arg(long, value_name = "TYPES")]
+        types: String,
+        /// The basis the element names refer to: blade or product.
+        #[arg(long, value_name = "B", default_value = "blade")]
+        basis: Basis,
+        /// rust (formatted source) or stats (operation counts per kernel).
+        #[arg(long, value_enum, value_name = "WHAT", default_value = "rust")]
+        emit: codegen::Emit,
+        /// The module name (default: the algebra name, `-` as `_`).
+        #[arg(long, value_name = "NAME")]
+        module: Option<String>,
+        /// Print JSON: for stats a list of {"op","lhs","rhs","out","mul","add"}; for rust
+        /// {"module","source"}.
+        #[arg(long)]
+        json: bool,
+    },
 }
 
 fn run(command: Command) -> Result<String, CliError> {
@@ -80,6 +104,9 @@ fn run(command: Command) -> Result<String, CliError> {
             commands::eval(&commands::EvalArgs { algebra, basis, scalar, json, expr })
         }
         Command::Table { algebra, basis, product, json } => commands::table(&algebra, basis, product, json),
+        Command::Codegen { algebra, types, basis, emit, module, json } => {
+            codegen::codegen(&codegen::CodegenArgs { algebra, types, basis, emit, module, json })
+        }
     }
 }
 
@@ -92,7 +119,7 @@ fn clap_failure(e: clap::Error) -> ExitCode {
     let text = e.render().to_string();
     let line = match e.kind() {
         ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand | ErrorKind::MissingSubcommand => {
-            "error: a subcommand is required: algebras, eval or table (see gam --help)".to_string()
+            "error: a subcommand is required: algebras, eval, table or codegen (see gam --help)".to_string()
         }
         _ => first_error_line(&text),
     };

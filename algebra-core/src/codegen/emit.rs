@@ -159,7 +159,7 @@ pub fn module_items(plan: &Plan) -> TokenStream {
     let gram: Vec<TokenStream> = (0..n)
         .map(|i| {
             let row: Vec<String> = (0..n).map(|j| format_rational(alg.metric().gram(i, j))).collect();
-            quote!(::std::vec![#(::algebra_core::rational::parse_rational(#row).expect("exact")),*])
+            quote!(&[#(#row),*])
         })
         .collect();
     let alg_name = alg.name();
@@ -187,9 +187,8 @@ pub fn module_items(plan: &Plan) -> TokenStream {
                 ::std::sync::OnceLock::new();
             ALGEBRA
                 .get_or_init(|| {
-                    let labels = ::std::vec![#(::std::string::String::from(#labels)),*];
-                    let gram = ::std::vec![#(#gram),*];
-                    let metric = ::algebra_core::Metric::new(labels, gram).expect("the metric was validated at generation");
+                    let metric = ::algebra_core::Metric::from_strs(&[#(#labels),*], &[#(#gram),*])
+                        .expect("the metric was validated at generation");
                     ::algebra_core::Algebra::new(#alg_name, metric)
                 })
                 .clone()
