@@ -82,11 +82,10 @@ pub fn vector_coeffs(v: &Mv) -> Vec<Q> {
 
 /// `B(u, v)` computed straight from the Gram matrix.
 pub fn bilinear(alg: &Algebra, u: &[Q], v: &[Q]) -> Q {
-    let n = alg.generators();
     let mut s = q(0);
-    for i in 0..n {
-        for j in 0..n {
-            s += &u[i] * &v[j] * alg.metric().gram(i, j);
+    for (i, ui) in u.iter().enumerate() {
+        for (j, vj) in v.iter().enumerate() {
+            s += ui * vj * alg.metric().gram(i, j);
         }
     }
     s
@@ -148,5 +147,5 @@ pub fn reorder_sign(a: u32, b: u32) -> i64 {
             swaps += (b & ((1u32 << i) - 1)).count_ones();
         }
     }
-    if swaps % 2 == 0 { 1 } else { -1 }
+    if swaps.is_multiple_of(2) { 1 } else { -1 }
 }
