@@ -520,17 +520,26 @@ impl Tables {
         }
     }
 
-    /// A blade-basis product table carried to the product basis.
+    /// A blade-basis product table carried to the product basis:
+    /// `P_a ∘ P_b = from( Σ_j c_bj (Σ_i c_ai E_i ∘ E_j) )`, summing over the left factor once
+    /// per row (separably) rather than once per entry.
     fn convert_product(&self, blade: &ProductTable) -> ProductTable {
         let (to, from) = (self.to_blade(), self.from_blade());
         let mut acc = Acc::new(self.dim);
         let mut entries = Vec::with_capacity(self.dim * self.dim);
         for a in 0..self.dim as u32 {
-            for b in 0..self.dim as u32 {
-                for (i, ci) in to.image(a) {
-                    for (j, cj) in to.image(b) {
-                        acc.add_scaled(blade.get(*i, *j), &(ci * cj));
+            // row[j] = P_a ∘ E_j in blade coordinates
+            let row: Vec<Sparse> = (0..self.dim as u32)
+                .map(|j| {
+                    for (i, ci) in to.image(a) {
+                        acc.add_scaled(blade.get(*i, j), ci);
                     }
+                    acc.take()
+                })
+                .collect();
+            for b in 0..self.dim as u32 {
+                for (j, cj) in to.image(b) {
+                    acc.add_scaled(&row[*j as usize], cj);
                 }
                 entries.push(from.apply(&acc.take()));
             }
