@@ -592,9 +592,10 @@ fn vec_times_blade(metric: &Metric, n: usize, i: usize, t: u32, c: &Q, acc: &mut
     }
 }
 
-/// The geometric product in the blade basis (Chevalley recursion, see the module docs).
-fn build_blade_gp(metric: &Metric) -> ProductTable {
-    let n = metric.dimension();
+/// The row recursion shared by both geometric-product tables: row `∅` is the identity, and
+/// the row of `S = {i} ∪ S'` (`i = min S`) is computed entry by entry from rows of smaller
+/// subsets by `entry(rows, i, S', T, acc)`.
+fn build_rows(n: usize, mut entry: impl FnMut(&[Vec<Sparse>], usize, u32, usize, &mut Acc) -> Sparse) -> ProductTable {
     let dim = 1usize << n;
     let mut rows: Vec<Vec<Sparse>> = Vec::with_capacity(dim);
     rows.push((0..dim as u32).map(|t| vec![(t, q(1))]).collect());
@@ -602,27 +603,29 @@ fn build_blade_gp(metric: &Metric) -> ProductTable {
     for s in 1..dim as u32 {
         let i = s.trailing_zeros() as usize;
         let s1 = s & (s - 1);
-        // positions and Gram entries of e_i ⌋ E_{S'}
-        let contractions: Vec<(u32, Q)> = (0..n)
-            .filter(|&j| s1 >> j & 1 == 1)
-            .enumerate()
-            .filter(|(_, j)| !metric.gram(i, *j).is_zero())
-            .map(|(pos, j)| (s1 ^ (1 << j), -(metric.gram(i, j) * q(parity_sign(pos)))))
-            .collect();
-        let row = (0..dim)
-            .map(|t| {
-                for (m, c) in &rows[s1 as usize][t] {
-                    vec_times_blade(metric, n, i, *m, c, &mut acc);
-                }
-                for (u, f) in &contractions {
-                    acc.add_scaled(&rows[*u as usize][t], f);
-                }
-                acc.take()
-            })
-            .collect();
+        let row = (0..dim).map(|t| entry(&rows, i, s1, t, &mut acc)).collect();
         rows.push(row);
     }
     ProductTable { dim, entries: rows.into_iter().flatten().collect() }
+}
+
+/// The geometric product in the blade basis (Chevalley recursion, see the module docs):
+/// `E_S E_T = e_i (E_{S'} E_T) - (e_i ⌋ E_{S'}) E_T`.
+fn build_blade_gp(metric: &Metric) -> ProductTable {
+    let n = metric.dimension();
+    build_rows(n, |rows, i, s1, t, acc| {
+        for (m, c) in &rows[s1 as usize][t] {
+            vec_times_blade(metric, n, i, *m, c, acc);
+        }
+        // - e_i ⌋ E_{S'} = - Σ_pos (-1)^pos B(e_i, e_j) E_{S' \ j}
+        for (pos, j) in (0..n).filter(|&j| s1 >> j & 1 == 1).enumerate() {
+            let b = metric.gram(i, j);
+            if !b.is_zero() {
+                acc.add_scaled(&rows[(s1 ^ (1 << j)) as usize][t], &-(b * q(parity_sign(pos))));
+            }
+        }
+        acc.take()
+    })
 }
 
 /// `e_i P_T` in the product basis (see the module docs).
@@ -652,23 +655,10 @@ fn vec_times_product(metric: &Metric, i: usize, t: u32) -> Sparse {
 
 /// The geometric product in the product basis: `P_S P_T = e_i (P_{S'} P_T)`.
 fn build_product_gp(metric: &Metric) -> ProductTable {
-    let n = metric.dimension();
-    let dim = 1usize << n;
-    let mut rows: Vec<Vec<Sparse>> = Vec::with_capacity(dim);
-    rows.push((0..dim as u32).map(|t| vec![(t, q(1))]).collect());
-    let mut acc = Acc::new(dim);
-    for s in 1..dim as u32 {
-        let i = s.trailing_zeros() as usize;
-        let s1 = (s & (s - 1)) as usize;
-        let row = (0..dim)
-            .map(|t| {
-                for (m, c) in &rows[s1][t] {
-                    acc.add_scaled(&vec_times_product(metric, i, *m), c);
-                }
-                acc.take()
-            })
-            .collect();
-        rows.push(row);
-    }
-    ProductTable { dim, entries: rows.into_iter().flatten().collect() }
+    build_rows(metric.dimension(), |rows, i, s1, t, acc| {
+        for (m, c) in &rows[s1 as usize][t] {
+            acc.add_scaled(&vec_times_product(metric, i, *m), c);
+        }
+        acc.take()
+    })
 }

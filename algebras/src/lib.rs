@@ -5,3 +5,6 @@
 pub mod generated;
 
 pub use generated::{cga, cga_null, g3, g123inf, pga3};
+
+pub mod dual_quaternion;
+pub use dual_quaternion::DualQuaternion;

@@ -35,18 +35,7 @@ macro_rules! impl_dual {
             fn relative_epsilon() -> f64 {
                 f64::EPSILON
             }
-            fn add_ref(&self, rhs: &Self) -> Self {
-                self + rhs
-            }
-            fn sub_ref(&self, rhs: &Self) -> Self {
-                self - rhs
-            }
-            fn mul_ref(&self, rhs: &Self) -> Self {
-                self * rhs
-            }
-            fn neg_ref(&self) -> Self {
-                -self
-            }
+            native_ref_ops!();
         }
 
         impl Field for $t {

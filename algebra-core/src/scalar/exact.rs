@@ -31,18 +31,7 @@ impl Ring for Q {
     fn relative_epsilon() -> f64 {
         0.0
     }
-    fn add_ref(&self, rhs: &Self) -> Self {
-        self + rhs
-    }
-    fn sub_ref(&self, rhs: &Self) -> Self {
-        self - rhs
-    }
-    fn mul_ref(&self, rhs: &Self) -> Self {
-        self * rhs
-    }
-    fn neg_ref(&self) -> Self {
-        -self
-    }
+    native_ref_ops!();
     fn add_assign_ref(&mut self, rhs: &Self) {
         *self += rhs;
     }

@@ -30,18 +30,7 @@ macro_rules! impl_float {
             fn relative_epsilon() -> f64 {
                 f64::from(<$t>::EPSILON)
             }
-            fn add_ref(&self, rhs: &Self) -> Self {
-                self + rhs
-            }
-            fn sub_ref(&self, rhs: &Self) -> Self {
-                self - rhs
-            }
-            fn mul_ref(&self, rhs: &Self) -> Self {
-                self * rhs
-            }
-            fn neg_ref(&self) -> Self {
-                -self
-            }
+            native_ref_ops!();
             fn add_assign_ref(&mut self, rhs: &Self) {
                 *self += rhs;
             }

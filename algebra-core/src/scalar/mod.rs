@@ -15,6 +15,25 @@
 //! sites, so the trait offers it as methods ([`Ring::mul_ref`], ...) with efficient overrides
 //! for types whose clones are expensive.
 
+/// The [`Ring`] reference-arithmetic methods for a type whose references already implement
+/// `&a + &b`, `&a - &b`, `&a * &b` and `-&a` (floats, num-dual types, `BigRational`).
+macro_rules! native_ref_ops {
+    () => {
+        fn add_ref(&self, rhs: &Self) -> Self {
+            self + rhs
+        }
+        fn sub_ref(&self, rhs: &Self) -> Self {
+            self - rhs
+        }
+        fn mul_ref(&self, rhs: &Self) -> Self {
+            self * rhs
+        }
+        fn neg_ref(&self) -> Self {
+            -self
+        }
+    };
+}
+
 mod dual;
 mod exact;
 mod float;
