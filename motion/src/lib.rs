@@ -1,5 +1,49 @@
-//! Rigid-body motions in the conformal geometric algebra of Cross, Cripps and Mullineux (2022).
+//! # motion
 //!
-//! This crate is a placeholder until the motion-layer issue: it re-exports the algebra engine
-//! it will build on.
+//! Rigid-body motions in the conformal geometric algebra of Cross, Cripps and Mullineux
+//! (2022), generic over the scalar (`T: algebra_core::Real`: `f64`, num-dual numbers,
+//! [`algebra_core::Jet`], `MpFloat` (feature `rug` of algebra-core); the parts that need no square root also
+//! over exact rationals).
+//!
+//! A *pose* is an element `S` of G_{123inf}^+ (the generated [`Motor`], wrapped in [`Pose`]);
+//! it acts on R^3 by `F_S = P f_S E`, `f_S(x) = rev(S) x S`, so `F_{UV} = F_V F_U`
+//! (Lemma 2.3: `U * V` applies `U` first). Conventions (paper and `docs`): `R = cos(φ/2) +
+//! sin(φ/2) (a e123)` for a unit axis `a`; `T = 1 + ½ v einf`; `S = R T` rotates, then
+//! translates; `ω = e123inf`; `|S| = √(rev(S) S)` is a pseudoscalar `α + βω`. Non-unit poses
+//! are first-class.
+//!
+//! | module | contents |
+//! |---|---|
+//! | [`pose`] | [`Pose`], constructors, norm, unitize, inverse, equivalence (Lemmas 2.4-2.6, Thm 2.8) |
+//! | [`action`] | `F_S` on points and directions (eqs. 6-9) |
+//! | [`matrix`] | 4x4 homogeneous matrices both ways |
+//! | `ops` (private) | operators: `*` composes, `+ - ` for additive motions, `From` with [`Motor`] |
+//! | [`pseudoscalar`] | `a + bω`: inverse, square root, exp, ln (Lemma 2.4) |
+//! | [`exp_log`] | closed-form exp and log ("dual angle") |
+//! | [`interpolation`] | power, slerp (eq. 15), additive interpolation (eq. 17) |
+//! | [`error`] | [`MotionError`] |
+//!
+//! ```
+//! use motion::Pose;
+//! let a = Pose::<f64>::identity();
+//! let b = Pose::from_axis_angle_translation(&[0.0, 0.0, 1.0], &std::f64::consts::FRAC_PI_2, &[1.0, 0.0, 0.0]).unwrap();
+//! let mid = Pose::slerp(&a, &b, &0.5).unwrap();
+//! let p = mid.transform_point(&[0.0, 0.0, 0.0]).unwrap();
+//! assert!(p[2].abs() < 1e-15);
+//! ```
+
+pub mod action;
+pub mod error;
+pub mod exp_log;
+pub mod interpolation;
+pub mod matrix;
+mod ops;
+pub mod pose;
+pub mod pseudoscalar;
+mod series;
+
 pub use algebra_core;
+pub use error::MotionError;
+pub use gam_algebras::g123inf::{Motor, Pseudoscalar};
+pub use matrix::Matrix4;
+pub use pose::Pose;

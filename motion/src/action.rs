@@ -1,0 +1,116 @@
+//! The action of a pose on points and directions: `F_S = P f_S E` (Sec. 2 of the main paper).
+//!
+//! `E` embeds a point `(x, y, z)` as `e0 + x e1 + y e2 + z e3` in G_{0123inf}, `f_S(x) =
+//! rev(S) x S`, and `P` reads the coefficients of `e0, e1, e2, e3` and divides by that of
+//! `e0`. Instead of multiplying in the 32-dimensional G_{0123inf}, the closed forms of
+//! eqs. (6)-(9) give the image of `e1, e2, e3` and the vector part of the image of `e0`
+//! directly from the eight coefficients of `S` (the generated `cga_null` sandwich is the
+//! reference in the tests). With `rev(S) S = α + βω`, the `e0` coefficient of
+//! `rev(S)(W e0 + x)S` is `αW` (Lemma 2.2(ii)), so `F_S` is the projective map
+//! `(x, W) ↦ (A x + W t, αW)` and the Euclidean map `x ↦ (A x + t)/α`.
+//!
+//! Homogeneous points here are `[x, y, z, w]` (w last, as in 4x4 matrices); the paper writes
+//! `(W, X, Y, Z)`.
+//!
+//! ```
+//! use algebra_core::rational::{q, Q};
+//! use motion::Pose;
+//! // The non-unit pose 2(1 + e12) still acts as a quarter turn about e3 (Lemma 2.6(i)).
+//! let s = Pose::<Q>::rotor_from_parts(&q(2), &q(2), &[q(0), q(0), q(1)]);
+//! assert_eq!(s.transform_point(&[q(1), q(2), q(3)]).unwrap(), [q(-2), q(1), q(3)]);
+//! ```
+
+use crate::{MotionError, Pose};
+use algebra_core::{Field, Ring};
+
+impl<T: Ring> Pose<T> {
+    /// The rows `[A | t]` of the projective action and `α`, from eqs. (6)-(9): column `i` of
+    /// `A` is the `e1, e2, e3` part of `rev(S) e_i S`; `t` is that of `rev(S) e0 S`;
+    /// `α = S∅² + S12² + S13² + S23²`. Exact over exact scalars.
+    ///
+    /// ```
+    /// let (rows, alpha) = motion::Pose::translation(&[1.0, 2.0, 3.0]).action_rows();
+    /// assert_eq!(rows[1], [0.0, 1.0, 0.0, 2.0]);
+    /// assert_eq!(alpha, 1.0);
+    /// ```
+    pub fn action_rows(&self) -> ([[T; 4]; 3], T) {
+        let s = &self.0;
+        let (s0, s12, s13, s23) = (&s.scalar, &s.e12, &s.e13, &s.e23);
+        let (s1, s2, s3, sw) = (&s.e1inf, &s.e2inf, &s.e3inf, &s.e123inf);
+        let two = |x: T| x.add_ref(&x);
+        let (q0, q12, q13, q23) = (s0.mul_ref(s0), s12.mul_ref(s12), s13.mul_ref(s13), s23.mul_ref(s23));
+        // eq. (6): rev(S) e1 S
+        let c1 = [
+            q0.sub_ref(&q12).sub_ref(&q13).add_ref(&q23),
+            two(s0.mul_ref(s12).sub_ref(&s13.mul_ref(s23))),
+            two(s0.mul_ref(s13).add_ref(&s12.mul_ref(s23))),
+        ];
+        // eq. (7): rev(S) e2 S
+        let c2 = [
+            two(s0.mul_ref(s12).add_ref(&s13.mul_ref(s23))).neg_ref(),
+            q0.sub_ref(&q12).add_ref(&q13).sub_ref(&q23),
+            two(s0.mul_ref(s23).sub_ref(&s12.mul_ref(s13))),
+        ];
+        // eq. (8): rev(S) e3 S
+        let c3 = [
+            two(s0.mul_ref(s13).sub_ref(&s12.mul_ref(s23))).neg_ref(),
+            two(s0.mul_ref(s23).add_ref(&s12.mul_ref(s13))).neg_ref(),
+            q0.add_ref(&q12).sub_ref(&q13).sub_ref(&q23),
+        ];
+        // eq. (9): the e1, e2, e3 part of rev(S) e0 S
+        let t = [
+            two(s0.mul_ref(s1).sub_ref(&s12.mul_ref(s2)).sub_ref(&s13.mul_ref(s3)).add_ref(&s23.mul_ref(sw))),
+            two(s0.mul_ref(s2).add_ref(&s12.mul_ref(s1)).sub_ref(&s13.mul_ref(sw)).sub_ref(&s23.mul_ref(s3))),
+            two(s0.mul_ref(s3).add_ref(&s12.mul_ref(sw)).add_ref(&s13.mul_ref(s1)).add_ref(&s23.mul_ref(s2))),
+        ];
+        let alpha = q0 + &q12 + &q13 + &q23;
+        let ([a11, a21, a31], [a12, a22, a32], [a13, a23, a33], [t1, t2, t3]) = (c1, c2, c3, t);
+        let rows = [[a11, a12, a13, t1], [a21, a22, a23, t2], [a31, a32, a33, t3]];
+        (rows, alpha)
+    }
+
+    /// The projective map of `S` on a homogeneous point `[x, y, z, w]` (`w = 0`: a direction):
+    /// the `e1, e2, e3, e0` coefficients of `rev(S)(w e0 + x e1 + y e2 + z e3)S`. No division,
+    /// so exact over exact scalars, and `F_{UV} = F_V F_U` holds coefficient by coefficient
+    /// (Lemma 2.3).
+    ///
+    /// ```
+    /// let s = motion::Pose::translation(&[1.0, 0.0, 0.0]).scale(&2.0);
+    /// assert_eq!(s.apply_homogeneous(&[1.0, 1.0, 1.0, 1.0]), [8.0, 4.0, 4.0, 4.0]);
+    /// ```
+    pub fn apply_homogeneous(&self, p: &[T; 4]) -> [T; 4] {
+        let (rows, alpha) = self.action_rows();
+        let image = rows.map(|r| r[0].mul_ref(&p[0]) + r[1].mul_ref(&p[1]) + r[2].mul_ref(&p[2]) + r[3].mul_ref(&p[3]));
+        let [x, y, z] = image;
+        [x, y, z, alpha.mul_ref(&p[3])]
+    }
+}
+
+impl<T: Field> Pose<T> {
+    /// `F_S(p)` for a point `p` of R^3: `(A p + t)/α`. Fails for singular `S` (zero transform).
+    ///
+    /// ```
+    /// let s = motion::Pose::rotation(&[0.0, 0.0, 1.0], &std::f64::consts::FRAC_PI_2).unwrap();
+    /// let p = s.transform_point(&[1.0, 0.0, 5.0]).unwrap();
+    /// assert!(p[0].abs() < 1e-15 && (p[1] - 1.0).abs() < 1e-15 && (p[2] - 5.0).abs() < 1e-15);
+    /// ```
+    pub fn transform_point(&self, p: &[T; 3]) -> Result<[T; 3], MotionError> {
+        let [x, y, z, w] = self.apply_homogeneous(&[p[0].clone(), p[1].clone(), p[2].clone(), T::one()]);
+        let inv = w.try_recip().ok_or_else(|| self.singular("transform_point"))?;
+        Ok([x.mul_ref(&inv), y.mul_ref(&inv), z.mul_ref(&inv)])
+    }
+
+    /// The image `A d / α` of a direction (a point at infinity, `W = 0`): the rotation part
+    /// only. Fails for singular `S`.
+    ///
+    /// ```
+    /// let s = motion::Pose::from_axis_angle_translation(&[0.0, 0.0, 1.0], &std::f64::consts::PI, &[5.0, 5.0, 5.0]).unwrap();
+    /// let d = s.transform_direction(&[1.0, 0.0, 0.0]).unwrap();
+    /// assert!((d[0] + 1.0).abs() < 1e-15 && d[1].abs() < 1e-15 && d[2] == 0.0);
+    /// ```
+    pub fn transform_direction(&self, d: &[T; 3]) -> Result<[T; 3], MotionError> {
+        let (rows, alpha) = self.action_rows();
+        let inv = alpha.try_recip().ok_or_else(|| self.singular("transform_direction"))?;
+        Ok(rows.map(|r| (r[0].mul_ref(&d[0]) + r[1].mul_ref(&d[1]) + r[2].mul_ref(&d[2])).mul_ref(&inv)))
+    }
+}

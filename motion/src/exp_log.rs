@@ -1,0 +1,209 @@
+//! Closed-form exp and log on G_{123inf}^+ ("dual angle" formulas).
+//!
+//! Write an even element as `σ + B + pω` (σ scalar, B bivector, ω = e123inf). ω is central in
+//! the even subalgebra and `ω² = 0`, so `σ + pω` is a dual number and `exp(σ + pω) = e^σ(1 +
+//! pω)`. Split `B = a e123 + c einf` (`a e123 = a1 e23 - a2 e13 + a3 e12`; `a`, `c` vectors of
+//! R^3). Then `B² = -Θ²` with the *dual* squared angle `Θ² = u - 2wω`, `u = |a|²`,
+//! `w = a·c`, and `ωB = -a einf`. Summing the exponential series by parity,
+//!
+//! ```text
+//! exp(B) = cos Θ + (sin Θ/Θ) B,   cos Θ = C + wSω,   sin Θ/Θ = S + wTω,
+//! C = cos θ,  S = sin θ/θ,  T = (S - C)/θ²,  θ = √u,
+//! exp(σ + B + pω) = e^σ [ C + S a e123 + (S c - (wT + pS) a) einf + (wS + pC) ω ].
+//! ```
+//!
+//! `C, S, T` are power series in `u` near zero rotation, so pure translations are exact and
+//! dual-number derivatives stay finite there.
+//!
+//! The logarithm inverts this. For non-singular `S`, `log S = log|S| + log U` with
+//! `|S| = √(rev(S) S)` (Lemma 2.4) and `U = S/|S|` unitary; `log|S| = ½ ln α + (β/2α) ω` for
+//! `rev(S) S = α + βω` is exact. For unitary `U = u0 + a e123 + c einf + qω`, with
+//! `s = |a| = sin θ`, `u0 = cos θ`, `θ = atan2(s, u0) ∈ [0, π]` (the half rotation angle):
+//!
+//! * `u0 ≥ 0` (rotation angle `2θ ≤ π`): `log U = f a e123 + (f c + g q a) einf` with
+//!   `f = θ/sin θ`, `g = (sin θ - θ cos θ)/sin³ θ` (series in `s²` for `s² ≤ 1/4`);
+//! * `u0 < 0`, `s > 0`: with `â = a/s`, `c⊥ = c - (â·c)â`, `d = -q s - (â·c) u0` (the dual part
+//!   of Θ): `log U = θ â e123 + ((θ/s) c⊥ - d â) einf` — the `1/sin θ` of the first form
+//!   cancels analytically here and is avoided;
+//! * `U = -1 + c einf` (rotation by 2π, `s = 0`, `u0 < 0`): every axis `n` parallel to the
+//!   translation works; we take `n = c/|c|`, or e3 when `c = 0`:
+//!   `log U = π n e123 - c einf`.
+//!
+//! This is the logarithm *of the element*: `exp(log S) = S` always, the branch of the
+//! runtime [`algebra_core::Multivector::log`]. The rotation angle of the transform is `2θ ∈
+//! [0, 2π]`; [`Pose::log_shortest`] takes the logarithm of whichever of `±S` (the same
+//! transform) has non-negative scalar part, so the rotation angle is in `[0, π]`. At a rotation
+//! by exactly π (`u0 = 0`) the two are `±(π/2) n`: the sign of `S` as given decides the axis
+//! direction `n` (read off the bivector part) and so the direction in which
+//! [`Pose::power`] turns; with a translation along `n` the screw translation is the same
+//! either way.
+//!
+//! ```
+//! use motion::Pose;
+//! let s = Pose::<f64>::from_axis_angle_translation(&[0.0, 0.0, 1.0], &1.0, &[2.0, 0.0, 0.0]).unwrap();
+//! let l = s.log().unwrap();
+//! assert!((l.e12 - 0.5).abs() < 1e-15); // half the rotation angle about e3
+//! let back = Pose::exp(&l).unwrap();
+//! assert!(back.is_equivalent(&s, &1e-15).unwrap() && (back.as_motor().scalar - s.as_motor().scalar).abs() < 1e-15);
+//! ```
+
+use crate::pose::is_positive;
+use crate::series::{exp_kernel, log_kernel};
+use crate::{MotionError, Pose};
+use algebra_core::{Real, Ring};
+use gam_algebras::g123inf::{Motor, Pseudoscalar};
+
+/// `a` (with `a e123` = the rotational bivector part) and `c` (the einf part) of an even element.
+fn split<T: Ring>(m: &Motor<T>) -> ([T; 3], [T; 3]) {
+    ([m.e23.clone(), m.e13.neg_ref(), m.e12.clone()], [m.e1inf.clone(), m.e2inf.clone(), m.e3inf.clone()])
+}
+
+fn dot<T: Ring>(x: &[T; 3], y: &[T; 3]) -> T {
+    x[0].mul_ref(&y[0]) + x[1].mul_ref(&y[1]) + x[2].mul_ref(&y[2])
+}
+
+/// The even element `σ + a e123 + c einf + pω`.
+fn assemble<T: Ring>(sigma: T, a: [T; 3], c: [T; 3], p: T) -> Motor<T> {
+    let [a1, a2, a3] = a;
+    let [c1, c2, c3] = c;
+    Motor::new(sigma, a3, a2.neg_ref(), a1, c1, c2, c3, p)
+}
+
+fn not_finite<T: Ring>(op: &'static str, m: &Motor<T>) -> MotionError {
+    MotionError::NotFinite { op, value: m.to_string() }
+}
+
+impl<T: Real> Pose<T> {
+    /// The exponential of any even element (closed form, see the module docs). Fails only for
+    /// non-finite input or overflow.
+    ///
+    /// ```
+    /// use gam_algebras::g123inf::Motor;
+    /// use motion::Pose;
+    /// // exp(½ v einf) = 1 + ½ v einf, a translation by v, exactly.
+    /// let t = Pose::exp(&Motor::new(0.0, 0.0, 0.0, 0.0, 0.5, 1.0, 1.5, 0.0)).unwrap();
+    /// assert_eq!(t, Pose::translation(&[1.0, 2.0, 3.0]));
+    /// // exp((φ/2) e12) = cos(φ/2) + sin(φ/2) e12: rotation by φ about e3.
+    /// let r = Pose::exp(&Motor::new(0.0, 0.25, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)).unwrap();
+    /// assert_eq!(r, Pose::rotation(&[0.0, 0.0, 1.0], &0.5).unwrap());
+    /// ```
+    pub fn exp(generator: &Motor<T>) -> Result<Self, MotionError> {
+        let g = generator;
+        if ![&g.scalar, &g.e12, &g.e13, &g.e23, &g.e1inf, &g.e2inf, &g.e3inf, &g.e123inf]
+            .into_iter()
+            .all(Real::is_finite)
+        {
+            return Err(not_finite("exp", g));
+        }
+        let (a, c) = split(g);
+        let (u, w) = (dot(&a, &a), dot(&a, &c));
+        let [cc, ss, tt] = exp_kernel(&u);
+        let p = &g.e123inf;
+        let es = Real::exp(&g.scalar);
+        let ess = es.mul_ref(&ss);
+        // einf part: e^σ (S c - (wT + pS) a)
+        let k = w.mul_ref(&tt).add_ref(&p.mul_ref(&ss)).mul_ref(&es);
+        let c_out: [T; 3] = std::array::from_fn(|i| c[i].mul_ref(&ess).sub_ref(&a[i].mul_ref(&k)));
+        let a_out = a.map(|x| x.mul_ref(&ess));
+        let omega = w.mul_ref(&ess).add_ref(&p.mul_ref(&cc).mul_ref(&es));
+        let out = Pose(assemble(es.mul_ref(&cc), a_out, c_out, omega));
+        out.check_finite("exp").map_err(|_| not_finite("exp", g))?;
+        Ok(out)
+    }
+
+    /// The logarithm of the element (module docs): `exp(log S) = S`, rotational half-angle
+    /// in `[0, π]`; the scalar and ω parts are `log|S|`, zero for unitary `S`. Fails for
+    /// singular or non-finite `S`.
+    ///
+    /// ```
+    /// use motion::Pose;
+    /// // Pure translation: log(1 + ½ v einf) = ½ v einf, exactly.
+    /// let l = Pose::translation(&[2.0, 4.0, 6.0]).log().unwrap();
+    /// assert_eq!((l.e1inf, l.e2inf, l.e3inf, l.scalar, l.e12), (1.0, 2.0, 3.0, 0.0, 0.0));
+    /// // Non-unit: log(2S) = ln 2 + log S.
+    /// let l2 = Pose::translation(&[2.0, 4.0, 6.0]).scale(&2.0).log().unwrap();
+    /// assert!((l2.scalar - 2f64.ln()).abs() < 1e-15 && (l2.e1inf - 1.0).abs() < 1e-15);
+    /// assert!(Pose::<f64>::identity().scale(&0.0).log().is_err());
+    /// ```
+    pub fn log(&self) -> Result<Motor<T>, MotionError> {
+        self.check_finite("log")?;
+        let n2 = self.norm_squared();
+        let alpha = &n2.scalar;
+        if !is_positive(alpha) {
+            return Err(self.singular("log"));
+        }
+        // 1/|S| = (1/√α)(1 - mω) with m = β/(2α); log|S| = ½ ln α + mω.
+        let m = n2.e123inf.div_ref(&alpha.add_ref(alpha));
+        let inv_root = T::one().div_ref(&Real::sqrt(alpha));
+        let inv_norm = Pseudoscalar::new(inv_root.clone(), m.mul_ref(&inv_root).neg_ref());
+        let unit = &inv_norm * &self.0;
+        let mut l = unit_log(&unit);
+        l.scalar = Real::ln(alpha).mul_ref(&T::from_ratio(1, 2));
+        l.e123inf = m;
+        if ![&l.scalar, &l.e12, &l.e13, &l.e23, &l.e1inf, &l.e2inf, &l.e3inf, &l.e123inf]
+            .into_iter()
+            .all(Real::is_finite)
+        {
+            return Err(not_finite("log", &self.0));
+        }
+        Ok(l)
+    }
+
+    /// The logarithm of whichever of `±S` has non-negative scalar part (the same transform,
+    /// Theorem 2.8): the transform's rotation angle is in `[0, π]`, and `exp(log_shortest S) =
+    /// ±S`. At exactly π the sign of `S` as given is kept (module docs).
+    ///
+    /// ```
+    /// use motion::Pose;
+    /// let s = Pose::rotation(&[0.0, 0.0, 1.0], &(1.5 * std::f64::consts::PI)).unwrap();
+    /// assert!((s.log().unwrap().e12 - 0.75 * std::f64::consts::PI).abs() < 1e-15);
+    /// assert!((s.log_shortest().unwrap().e12 + 0.25 * std::f64::consts::PI).abs() < 1e-15);
+    /// ```
+    pub fn log_shortest(&self) -> Result<Motor<T>, MotionError> {
+        if self.0.scalar < T::zero() { (-self).log() } else { self.log() }
+    }
+}
+
+/// The logarithm (a bivector) of a unitary even element (module docs for the three cases).
+fn unit_log<T: Real>(u: &Motor<T>) -> Motor<T> {
+    let (a, c) = split(u);
+    let (u0, q) = (&u.scalar, &u.e123inf);
+    let x = dot(&a, &a);
+    let zero = T::zero();
+    if *u0 >= zero {
+        let (f, g) = if x <= T::from_ratio(1, 4) {
+            let [f, h] = log_kernel(&x);
+            (f, h.mul_ref(u0))
+        } else {
+            let s = Real::sqrt(&x);
+            let th = Real::atan2(&s, u0);
+            let g = s.sub_ref(&th.mul_ref(u0)).div_ref(&s.mul_ref(&x));
+            (th.div_ref(&s), g)
+        };
+        let gq = g.mul_ref(q);
+        let c_out = std::array::from_fn(|i| c[i].mul_ref(&f).add_ref(&a[i].mul_ref(&gq)));
+        return assemble(zero, a.map(|x| x.mul_ref(&f)), c_out, T::zero());
+    }
+    if x > zero {
+        let s = Real::sqrt(&x);
+        let th = Real::atan2(&s, u0);
+        let inv_s = T::one().div_ref(&s);
+        let n = a.map(|x| x.mul_ref(&inv_s));
+        let nc = dot(&n, &c);
+        let d = q.mul_ref(&s).add_ref(&nc.mul_ref(u0)).neg_ref();
+        let th_over_s = th.mul_ref(&inv_s);
+        let c_out =
+            std::array::from_fn(|i| c[i].sub_ref(&nc.mul_ref(&n[i])).mul_ref(&th_over_s).sub_ref(&d.mul_ref(&n[i])));
+        return assemble(zero, n.map(|x| x.mul_ref(&th)), c_out, T::zero());
+    }
+    // U = -1 + c einf: rotation by 2π about an axis along the translation.
+    let cc = dot(&c, &c);
+    let n = if cc > zero {
+        let inv = T::one().div_ref(&Real::sqrt(&cc));
+        c.clone().map(|x| x.mul_ref(&inv))
+    } else {
+        [T::zero(), T::zero(), T::one()]
+    };
+    let pi = T::pi();
+    assemble(zero, n.map(|x| x.mul_ref(&pi)), c.map(|x| x.neg_ref()), T::zero())
+}

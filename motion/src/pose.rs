@@ -1,0 +1,360 @@
+//! [`Pose`]: an element `S` of G_{123inf}^+ seen as a rigid-body transform (Sec. 2 of the main
+//! paper), with its constructors and algebra: the pseudoscalar norm `|S|` (Lemma 2.4), unitize
+//! and inverse (Lemma 2.6), and the equivalence test of Theorem 2.8.
+//!
+//! `S` acts on R^3 by `F_S = P f_S E` with `f_S(x) = rev(S) x S` (see [`crate::action`]), so a
+//! product acts right to left in reading order: `F_{UV} = F_V F_U` (Lemma 2.3), i.e. `U * V`
+//! applies `U` first, then `V`. Non-unit poses are first-class: additive motions
+//! `(1 - t) A + t B` leave the unit poses, and every non-singular `S` is *equivalent* to its
+//! unitization (`S = |S| U`, same transform).
+//!
+//! ```
+//! use motion::Pose;
+//! use std::f64::consts::FRAC_PI_2;
+//! // Rotate a quarter turn about e3, then translate by (1, 0, 0): S = R T.
+//! let s = Pose::from_axis_angle_translation(&[0.0, 0.0, 1.0], &FRAC_PI_2, &[1.0, 0.0, 0.0]).unwrap();
+//! let p = s.transform_point(&[1.0, 0.0, 0.0]).unwrap();
+//! assert!((p[0] - 1.0).abs() < 1e-15 && (p[1] - 1.0).abs() < 1e-15 && p[2].abs() < 1e-15);
+//! ```
+
+use crate::MotionError;
+use crate::pseudoscalar;
+use algebra_core::{Field, Real, Ring};
+use gam_algebras::g123inf::{Motor, Pseudoscalar};
+
+/// A pose: any element `S` of G_{123inf}^+ (eq. 4), unit or not.
+///
+/// A newtype over the generated [`Motor`] rather than an alias: the pose operations
+/// (action on points, norm, exp/log, ...) are inherent methods here without extension traits,
+/// the generated type stays free of hand-written code, and the wrapper is zero-cost
+/// (`repr(transparent)`). The field is public because every even element is a valid pose
+/// value: singular ones (zero transform) are rejected by the operations that need an inverse.
+///
+/// ```
+/// use motion::Pose;
+/// use gam_algebras::g123inf::Motor;
+/// let s = Pose(Motor::new(1.0, 0.0, 0.0, 0.0, 0.5, 0.0, 0.0, 0.0)); // 1 + ½ e1inf
+/// assert_eq!(s, Pose::translation(&[1.0, 0.0, 0.0]));
+/// assert_eq!(s.as_motor().e1inf, 0.5);
+/// ```
+#[derive(Clone, PartialEq)]
+#[repr(transparent)]
+pub struct Pose<T>(pub Motor<T>);
+
+impl<T: Ring> Pose<T> {
+    /// The identity pose `1`.
+    ///
+    /// ```
+    /// let i = motion::Pose::<f64>::identity();
+    /// assert_eq!(i.transform_point(&[1.0, 2.0, 3.0]).unwrap(), [1.0, 2.0, 3.0]);
+    /// ```
+    pub fn identity() -> Self {
+        Pose(Motor::one())
+    }
+
+    /// Wraps an even element.
+    ///
+    /// ```
+    /// use gam_algebras::g123inf::Motor;
+    /// assert_eq!(motion::Pose::from_motor(Motor::<f64>::one()), motion::Pose::identity());
+    /// ```
+    pub fn from_motor(m: Motor<T>) -> Self {
+        Pose(m)
+    }
+
+    /// The underlying even element.
+    ///
+    /// ```
+    /// assert_eq!(motion::Pose::<f64>::identity().as_motor().scalar, 1.0);
+    /// ```
+    pub fn as_motor(&self) -> &Motor<T> {
+        &self.0
+    }
+
+    /// The underlying even element, by value.
+    ///
+    /// ```
+    /// assert_eq!(motion::Pose::<f64>::identity().into_motor().e12, 0.0);
+    /// ```
+    pub fn into_motor(self) -> Motor<T> {
+        self.0
+    }
+
+    /// The translation `T = 1 + ½ v einf` by `v` (exact over exact scalars).
+    ///
+    /// ```
+    /// use algebra_core::rational::{q, Q};
+    /// let t = motion::Pose::<Q>::translation(&[q(2), q(0), q(-4)]);
+    /// assert_eq!(t.transform_point(&[q(1), q(1), q(1)]).unwrap(), [q(3), q(1), q(-3)]);
+    /// ```
+    pub fn translation(v: &[T; 3]) -> Self {
+        let half = T::from_ratio(1, 2);
+        let z = T::zero;
+        Pose(Motor::new(T::one(), z(), z(), z(), v[0].mul_ref(&half), v[1].mul_ref(&half), v[2].mul_ref(&half), z()))
+    }
+
+    /// `c + s (a e123)` for a vector `a` (not normalised): with `a` a unit vector,
+    /// `c = cos(φ/2)` and `s = sin(φ/2)` this is the paper's rotor `R` for the rotation by `φ`
+    /// about `a`. Uses `a e123 = a1 e23 - a2 e13 + a3 e12`. Exact over exact scalars (e.g.
+    /// the quarter turn `c = s = 1` up to the scale `√2`, which is a non-unit pose).
+    ///
+    /// ```
+    /// use algebra_core::rational::{q, Q};
+    /// // (1 + e12): a quarter turn about e3, non-unit (|S|² = 2), acting exactly.
+    /// let r = motion::Pose::<Q>::rotor_from_parts(&q(1), &q(1), &[q(0), q(0), q(1)]);
+    /// assert_eq!(r.transform_point(&[q(1), q(0), q(0)]).unwrap(), [q(0), q(1), q(0)]);
+    /// ```
+    pub fn rotor_from_parts(c: &T, s: &T, a: &[T; 3]) -> Self {
+        let z = T::zero;
+        Pose(Motor::new(c.clone(), s.mul_ref(&a[2]), s.mul_ref(&a[1]).neg_ref(), s.mul_ref(&a[0]), z(), z(), z(), z()))
+    }
+
+    /// The reverse `rev(S)` (negates the bivector part).
+    ///
+    /// ```
+    /// let t = motion::Pose::translation(&[2.0, 0.0, 0.0]);
+    /// assert_eq!(t.reverse(), motion::Pose::translation(&[-2.0, 0.0, 0.0]));
+    /// ```
+    pub fn reverse(&self) -> Self {
+        Pose(self.0.reverse())
+    }
+
+    /// `rev(S) S = α + βω` in closed form (eq. 5):
+    /// `α = S∅² + S12² + S13² + S23²`, `β = 2(S∅Sω - S12S3∞ + S13S2∞ - S23S1∞)`.
+    ///
+    /// ```
+    /// use algebra_core::rational::q;
+    /// use gam_algebras::g123inf::{Motor, Pseudoscalar};
+    /// let s = motion::Pose(Motor::new(q(1), q(2), q(0), q(0), q(0), q(0), q(3), q(1)));
+    /// assert_eq!(s.norm_squared(), Pseudoscalar::new(q(5), q(2 * (1 - 2 * 3))));
+    /// ```
+    pub fn norm_squared(&self) -> Pseudoscalar<T> {
+        let s = &self.0;
+        let alpha = s.scalar.mul_ref(&s.scalar) + s.e12.mul_ref(&s.e12) + s.e13.mul_ref(&s.e13) + s.e23.mul_ref(&s.e23);
+        let half_beta =
+            s.scalar.mul_ref(&s.e123inf) - s.e12.mul_ref(&s.e3inf) + s.e13.mul_ref(&s.e2inf) - s.e23.mul_ref(&s.e1inf);
+        Pseudoscalar::new(alpha, half_beta.add_ref(&half_beta))
+    }
+
+    /// True when `S` is exactly singular: the scalar part of `rev(S) S` is exactly zero, so
+    /// `F_S` is the zero transform (Lemma 2.6). Floats that are merely tiny are not singular here.
+    ///
+    /// ```
+    /// use gam_algebras::g123inf::Motor;
+    /// assert!(motion::Pose(Motor::new(0.0, 0.0, 0.0, 0.0, 1.0, 2.0, 3.0, 4.0)).is_singular());
+    /// assert!(!motion::Pose::<f64>::identity().is_singular());
+    /// ```
+    pub fn is_singular(&self) -> bool {
+        self.norm_squared().scalar.is_exact_zero()
+    }
+
+    /// `s S` for a scalar `s` (an equivalent pose when `s ≠ 0`).
+    ///
+    /// ```
+    /// let t = motion::Pose::translation(&[2.0, 0.0, 0.0]).scale(&3.0);
+    /// assert_eq!(t.as_motor().scalar, 3.0);
+    /// ```
+    pub fn scale(&self, s: &T) -> Self {
+        Pose(self.0.scale(s))
+    }
+
+    /// `γ S` for a pseudoscalar `γ` (an equivalent pose when `γ` is non-singular, Theorem 2.8).
+    ///
+    /// ```
+    /// use gam_algebras::g123inf::Pseudoscalar;
+    /// let s = motion::Pose::<f64>::identity().scale_pseudoscalar(&Pseudoscalar::new(2.0, 1.0));
+    /// assert_eq!((s.as_motor().scalar, s.as_motor().e123inf), (2.0, 1.0));
+    /// ```
+    pub fn scale_pseudoscalar(&self, gamma: &Pseudoscalar<T>) -> Self {
+        Pose(gamma * &self.0)
+    }
+
+    /// Theorem 2.8, exactly: `self` and `other` are non-singular and `other = γ self` for a
+    /// pseudoscalar `γ`, i.e. `other rev(self)` (= `γ |self|²`) has a zero bivector part.
+    /// Equivalent poses generate the same transform and conversely.
+    ///
+    /// ```
+    /// use algebra_core::rational::{q, Q};
+    /// use gam_algebras::g123inf::Pseudoscalar;
+    /// use motion::Pose;
+    /// let s = Pose::<Q>::rotor_from_parts(&q(1), &q(2), &[q(0), q(1), q(0)]) * Pose::translation(&[q(1), q(2), q(3)]);
+    /// let v = s.scale_pseudoscalar(&Pseudoscalar::new(q(-3), q(7)));
+    /// assert!(s.is_equivalent_exact(&v));
+    /// assert!(!s.is_equivalent_exact(&Pose::translation(&[q(1), q(0), q(0)])));
+    /// ```
+    pub fn is_equivalent_exact(&self, other: &Self) -> bool {
+        if self.is_singular() || other.is_singular() {
+            return false;
+        }
+        let w = &other.0 * &self.0.reverse();
+        [&w.e12, &w.e13, &w.e23, &w.e1inf, &w.e2inf, &w.e3inf].into_iter().all(Ring::is_exact_zero)
+    }
+
+    /// The eight coefficients in the paper's order (eq. 4):
+    /// `[S∅, S12, S13, S23, S1∞, S2∞, S3∞, Sω]`.
+    ///
+    /// ```
+    /// assert_eq!(motion::Pose::translation(&[2.0, 0.0, 0.0]).components()[4], &1.0);
+    /// ```
+    pub fn components(&self) -> [&T; 8] {
+        let s = &self.0;
+        [&s.scalar, &s.e12, &s.e13, &s.e23, &s.e1inf, &s.e2inf, &s.e3inf, &s.e123inf]
+    }
+
+    pub(crate) fn singular(&self, op: &'static str) -> MotionError {
+        MotionError::Singular { op, value: self.to_string() }
+    }
+}
+
+impl<T: Field> Pose<T> {
+    /// The inverse `S⁻¹ = rev(S)/|S|²` with `1/|S|² = (α - βω)/α²` (Lemmas 2.6(ii) and
+    /// 2.4(i)); no square root, so exact over exact scalars. Fails for singular `S`.
+    ///
+    /// ```
+    /// use algebra_core::rational::{q, Q};
+    /// use motion::Pose;
+    /// let s = Pose::<Q>::rotor_from_parts(&q(1), &q(2), &[q(1), q(0), q(0)]) * Pose::translation(&[q(3), q(0), q(1)]);
+    /// assert_eq!(&s * &s.inverse().unwrap(), Pose::identity());
+    /// ```
+    pub fn inverse(&self) -> Result<Self, MotionError> {
+        let inv_n2 = pseudoscalar::inverse(&self.norm_squared()).map_err(|_| self.singular("inverse"))?;
+        Ok(Pose(&inv_n2 * &self.0.reverse()))
+    }
+}
+
+impl<T: Real> Pose<T> {
+    /// The rotation `R = cos(φ/2) + sin(φ/2) (a e123)` by `angle` φ about the axis through the
+    /// origin along `axis` (normalised here; right-handed: a positive angle about e3 turns e1
+    /// towards e2).
+    ///
+    /// ```
+    /// let r = motion::Pose::rotation(&[0.0, 0.0, 2.0], &std::f64::consts::PI).unwrap();
+    /// let p = r.transform_point(&[1.0, 0.0, 0.0]).unwrap();
+    /// assert!((p[0] + 1.0).abs() < 1e-15 && p[1].abs() < 1e-15);
+    /// assert!(motion::Pose::rotation(&[0.0, 0.0, 0.0], &1.0).is_err());
+    /// ```
+    pub fn rotation(axis: &[T; 3], angle: &T) -> Result<Self, MotionError> {
+        let a = unit_axis(axis)?;
+        check_finite_scalar("rotation", angle)?;
+        let half = angle.mul_ref(&T::from_ratio(1, 2));
+        Ok(Pose::rotor_from_parts(&Real::cos(&half), &Real::sin(&half), &a))
+    }
+
+    /// `S = R T`: the rotation by `angle` about `axis` (through the origin) followed by the
+    /// translation by `translation` (`F_{RT} = F_T F_R`, Lemma 2.3), so
+    /// `F_S(p) = Rot(p) + translation`.
+    ///
+    /// ```
+    /// let s = motion::Pose::from_axis_angle_translation(&[1.0, 0.0, 0.0], &0.0, &[0.0, 5.0, 0.0]).unwrap();
+    /// assert_eq!(s.transform_point(&[1.0, 1.0, 1.0]).unwrap(), [1.0, 6.0, 1.0]);
+    /// ```
+    pub fn from_axis_angle_translation(axis: &[T; 3], angle: &T, translation: &[T; 3]) -> Result<Self, MotionError> {
+        for x in translation {
+            check_finite_scalar("from_axis_angle_translation", x)?;
+        }
+        Ok(Pose::rotation(axis, angle)? * Pose::translation(translation))
+    }
+
+    /// The pseudoscalar norm `|S| = √(rev(S) S) = (2α + βω)/(2√α)` (Lemma 2.4(ii) with
+    /// `rev(S) S = α + βω`, the root with positive scalar part). Fails for singular `S`.
+    ///
+    /// ```
+    /// use gam_algebras::g123inf::Motor;
+    /// let s = motion::Pose(Motor::new(2.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0)); // 2 + ω
+    /// let n = s.norm().unwrap(); // rev(S) S = 4 + 4ω, |S| = 2 + ω
+    /// assert_eq!((n.scalar, n.e123inf), (2.0, 1.0));
+    /// ```
+    pub fn norm(&self) -> Result<Pseudoscalar<T>, MotionError> {
+        self.check_finite("norm")?;
+        pseudoscalar::sqrt(&self.norm_squared()).map_err(|_| self.singular("norm"))
+    }
+
+    /// The unitary pose `U = S/|S|` (Lemma 2.6(i)): `rev(U) U = 1` and `U` generates the same
+    /// transform as `S`.
+    ///
+    /// ```
+    /// let s = motion::Pose::translation(&[1.0, 2.0, 3.0]).scale(&4.0);
+    /// assert_eq!(s.unitize().unwrap(), motion::Pose::translation(&[1.0, 2.0, 3.0]));
+    /// ```
+    pub fn unitize(&self) -> Result<Self, MotionError> {
+        let n = self.norm()?;
+        let inv = pseudoscalar::inverse(&n).map_err(|_| self.singular("unitize"))?;
+        Ok(self.scale_pseudoscalar(&inv))
+    }
+
+    /// True when `rev(S) S = 1` within `tol` (each of `α - 1` and `β`).
+    ///
+    /// ```
+    /// assert!(motion::Pose::translation(&[1.0, 2.0, 3.0]).is_unitary(&1e-15));
+    /// assert!(!motion::Pose::<f64>::identity().scale(&2.0).is_unitary(&1e-15));
+    /// ```
+    pub fn is_unitary(&self, tol: &T) -> bool {
+        let n2 = self.norm_squared();
+        Real::abs(&n2.scalar.sub_ref(&T::one())) <= *tol && Real::abs(&n2.e123inf) <= *tol
+    }
+
+    /// Theorem 2.8 with a tolerance: `self` and `other` are equivalent (`other = γ self` for a
+    /// non-singular pseudoscalar `γ`), so they generate the same transform. The test is that
+    /// the bivector part of `other rev(self)/√(α_self α_other)` has every component within
+    /// `tol` (`α` = scalar part of `rev(S) S`); its einf components carry lengths, so with
+    /// translations of size `L` expect rounding of order `L·ε`. Fails for singular input.
+    ///
+    /// ```
+    /// use gam_algebras::g123inf::Pseudoscalar;
+    /// use motion::Pose;
+    /// let s = Pose::from_axis_angle_translation(&[1.0, 2.0, 3.0], &0.7, &[4.0, 5.0, 6.0]).unwrap();
+    /// let v = s.scale_pseudoscalar(&Pseudoscalar::new(-2.0, 0.5));
+    /// assert!(s.is_equivalent(&v, &1e-12).unwrap());
+    /// assert!(!s.is_equivalent(&Pose::identity(), &1e-12).unwrap());
+    /// ```
+    pub fn is_equivalent(&self, other: &Self, tol: &T) -> Result<bool, MotionError> {
+        let a = self.norm_squared().scalar;
+        let b = other.norm_squared().scalar;
+        if !is_positive(&a) {
+            return Err(self.singular("is_equivalent"));
+        }
+        if !is_positive(&b) {
+            return Err(other.singular("is_equivalent"));
+        }
+        let scale = Real::sqrt(&a.mul_ref(&b));
+        let bound = tol.mul_ref(&scale);
+        let w = &other.0 * &self.0.reverse();
+        Ok([&w.e12, &w.e13, &w.e23, &w.e1inf, &w.e2inf, &w.e3inf].into_iter().all(|x| Real::abs(x) <= bound))
+    }
+
+    /// True when every coefficient is finite.
+    ///
+    /// ```
+    /// assert!(motion::Pose::<f64>::identity().is_finite());
+    /// assert!(!motion::Pose::translation(&[f64::NAN, 0.0, 0.0]).is_finite());
+    /// ```
+    pub fn is_finite(&self) -> bool {
+        self.components().into_iter().all(Real::is_finite)
+    }
+
+    pub(crate) fn check_finite(&self, op: &'static str) -> Result<(), MotionError> {
+        if self.is_finite() { Ok(()) } else { Err(MotionError::NotFinite { op, value: self.to_string() }) }
+    }
+}
+
+/// `axis / |axis|`, or [`MotionError::ZeroAxis`].
+pub(crate) fn unit_axis<T: Real>(axis: &[T; 3]) -> Result<[T; 3], MotionError> {
+    for x in axis {
+        check_finite_scalar("rotation axis", x)?;
+    }
+    let n2 = axis[0].mul_ref(&axis[0]) + axis[1].mul_ref(&axis[1]) + axis[2].mul_ref(&axis[2]);
+    if !is_positive(&n2) {
+        return Err(MotionError::ZeroAxis);
+    }
+    let inv = Real::sqrt(&n2).try_recip().ok_or(MotionError::ZeroAxis)?;
+    Ok([axis[0].mul_ref(&inv), axis[1].mul_ref(&inv), axis[2].mul_ref(&inv)])
+}
+
+/// `x > 0`, false for NaN.
+pub(crate) fn is_positive<T: Real>(x: &T) -> bool {
+    x.partial_cmp(&T::zero()) == Some(std::cmp::Ordering::Greater)
+}
+
+pub(crate) fn check_finite_scalar<T: Real>(op: &'static str, x: &T) -> Result<(), MotionError> {
+    if x.is_finite() { Ok(()) } else { Err(MotionError::NotFinite { op, value: x.to_string() }) }
+}

@@ -1,0 +1,96 @@
+//! The scalar functions behind the closed-form exp and log ([`crate::exp_log`]), as functions
+//! of a *squared* angle so that no square root is taken near zero rotation: there the power
+//! series is used, which is exact at `0` and keeps the derivative parts of dual numbers finite
+//! (`√x` has an infinite derivative at `0`). Away from zero the closed forms lose at most a few
+//! ulps to cancellation (the thresholds bound the loss by a factor 16).
+//!
+//! Series stop when a term (every component, for dual numbers) is below the type's relative
+//! epsilon over 16; the values are of order one.
+
+use algebra_core::{Real, Ring};
+
+const MAX_TERMS: i64 = 2000;
+
+fn negligible<T: Ring>(x: &T) -> bool {
+    x.magnitude() <= T::relative_epsilon() / 16.0
+}
+
+/// `[cos θ, sin θ / θ, (sin θ / θ - cos θ)/θ²]` for `u = θ² ≥ 0`: the exp kernel. Series for
+/// `u ≤ 1`: `Σ (-u)^k/(2k)!`, `Σ (-u)^k/(2k+1)!`, `Σ (-u)^j 2(j+1)/(2j+3)!`.
+pub(crate) fn exp_kernel<T: Real>(u: &T) -> [T; 3] {
+    if *u > T::one() {
+        let th = Real::sqrt(u);
+        let c = Real::cos(&th);
+        let s = Real::sin(&th).div_ref(&th);
+        let t = s.sub_ref(&c).div_ref(u);
+        return [c, s, t];
+    }
+    let neg_u = u.neg_ref();
+    let (mut tc, mut ts, mut tt) = (T::one(), T::one(), T::from_ratio(1, 3));
+    let (mut c, mut s, mut t) = (tc.clone(), ts.clone(), tt.clone());
+    for k in 1..MAX_TERMS {
+        tc = tc.mul_ref(&neg_u).mul_ref(&T::from_ratio(1, (2 * k - 1) * (2 * k)));
+        ts = ts.mul_ref(&neg_u).mul_ref(&T::from_ratio(1, (2 * k) * (2 * k + 1)));
+        tt = tt.mul_ref(&neg_u).mul_ref(&T::from_ratio(1, (2 * k) * (2 * k + 3)));
+        c.add_assign_ref(&tc);
+        s.add_assign_ref(&ts);
+        t.add_assign_ref(&tt);
+        if negligible(&tc) && negligible(&ts) && negligible(&tt) {
+            break;
+        }
+    }
+    [c, s, t]
+}
+
+/// `[f, h]` with `f = asin(s)/s` and `h = (df/ds)/s` for `x = s² ≤ 1/4`: the log kernel near
+/// zero rotation. `f = Σ c_k x^k`, `h = Σ_{k≥1} 2k c_k x^{k-1}` with `c_0 = 1`,
+/// `c_k = c_{k-1} (2k-1)²/(2k(2k+1))`.
+pub(crate) fn log_kernel<T: Real>(x: &T) -> [T; 2] {
+    let mut ck = T::one();
+    let mut xk = T::one(); // x^(k-1) at the top of the loop
+    let mut f = T::one();
+    let mut h = T::zero();
+    for k in 1..MAX_TERMS {
+        ck = ck.mul_ref(&T::from_ratio((2 * k - 1) * (2 * k - 1), (2 * k) * (2 * k + 1)));
+        let h_term = ck.mul_ref(&xk).mul_ref(&T::from_i64(2 * k));
+        xk = xk.mul_ref(x);
+        let f_term = ck.mul_ref(&xk);
+        f.add_assign_ref(&f_term);
+        h.add_assign_ref(&h_term);
+        if negligible(&f_term) && negligible(&h_term) {
+            break;
+        }
+    }
+    [f, h]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn exp_kernel_series_and_closed_form_agree_at_the_threshold() {
+        for u in [0.999_999f64, 1.000_001] {
+            let [c, s, t] = exp_kernel(&u);
+            let th = u.sqrt();
+            assert!((c - th.cos()).abs() < 1e-15);
+            assert!((s - th.sin() / th).abs() < 1e-15);
+            assert!((t - (th.sin() / th - th.cos()) / u).abs() < 1e-14);
+        }
+        assert_eq!(exp_kernel(&0.0f64), [1.0, 1.0, 1.0 / 3.0]);
+    }
+
+    #[test]
+    fn log_kernel_matches_closed_form() {
+        for x in [0.25f64, 0.1, 1e-3] {
+            let [f, h] = log_kernel(&x);
+            let s = x.sqrt();
+            let th = s.asin();
+            let c = th.cos();
+            assert!((f - th / s).abs() < 1e-15, "{x}");
+            // g = f'(θ)/sin θ = c h, closed form (s - θ c)/s³
+            assert!((c * h - (s - th * c) / (s * x)).abs() < 1e-12, "{x}");
+        }
+        assert_eq!(log_kernel(&0.0f64), [1.0, 1.0 / 3.0]);
+    }
+}

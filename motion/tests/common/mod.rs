@@ -1,0 +1,76 @@
+//! Helpers shared by the motion tests: component-wise distances, sample poses, and the
+//! independent references (Rodrigues' formula, the generated G_{0123inf} sandwich).
+#![allow(dead_code)]
+
+use algebra_core::{Real, Ring};
+use gam_algebras::cga_null;
+use motion::{Motor, Pose};
+
+/// The largest component of `a - b`.
+pub fn diff<T: Ring>(a: &Motor<T>, b: &Motor<T>) -> f64 {
+    let d = a - b;
+    [&d.scalar, &d.e12, &d.e13, &d.e23, &d.e1inf, &d.e2inf, &d.e3inf, &d.e123inf]
+        .into_iter()
+        .map(Ring::magnitude)
+        .fold(0.0, f64::max)
+}
+
+/// The largest component of `a`.
+pub fn size<T: Ring>(a: &Motor<T>) -> f64 {
+    diff(a, &Motor::zero())
+}
+
+/// The largest entry of `a - b` for arrays.
+pub fn diff_n<T: Ring, const N: usize>(a: &[T; N], b: &[T; N]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| x.sub_ref(y).magnitude()).fold(0.0, f64::max)
+}
+
+/// An exact-constant vector (a/d, b/d, c/d).
+pub fn v3<T: Ring>(a: i64, b: i64, c: i64, d: i64) -> [T; 3] {
+    [T::from_ratio(a, d), T::from_ratio(b, d), T::from_ratio(c, d)]
+}
+
+/// R T for an axis, angle and translation given as ratios (works over every Real).
+pub fn screw<T: Real>(axis: [i64; 3], angle: T, t: [i64; 3], den: i64) -> Pose<T> {
+    Pose::from_axis_angle_translation(&v3(axis[0], axis[1], axis[2], 1), &angle, &v3(t[0], t[1], t[2], den)).unwrap()
+}
+
+/// Rodrigues: p cos φ + (a × p) sin φ + a (a·p)(1 - cos φ) for a unit axis a, plus v.
+pub fn rodrigues(axis: [f64; 3], phi: f64, v: [f64; 3], p: [f64; 3]) -> [f64; 3] {
+    let n = (axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]).sqrt();
+    let a = axis.map(|x| x / n);
+    let (c, s) = (phi.cos(), phi.sin());
+    let cross = [a[1] * p[2] - a[2] * p[1], a[2] * p[0] - a[0] * p[2], a[0] * p[1] - a[1] * p[0]];
+    let ap = a[0] * p[0] + a[1] * p[1] + a[2] * p[2];
+    std::array::from_fn(|i| p[i] * c + cross[i] * s + a[i] * ap * (1.0 - c) + v[i])
+}
+
+/// `F_S(p)` computed independently: the generated G_{0123inf} (product basis) sandwich
+/// `rev(S)(e0 + p)S`, then P (divide e1, e2, e3 by e0). Also returns the e0 coefficient.
+pub fn cga_null_action<T: algebra_core::Field>(s: &Pose<T>, p: &[T; 3]) -> ([T; 3], T) {
+    let m = s.as_motor().clone();
+    let big = cga_null::Motor::new(m.scalar, m.e12, m.e13, m.e23, m.e1inf, m.e2inf, m.e3inf, m.e123inf);
+    let x = cga_null::Vector::new(T::one(), p[0].clone(), p[1].clone(), p[2].clone(), T::zero());
+    let y = big.sandwich(&x);
+    let w = y.e0.clone();
+    ([y.e1.div_ref(&w), y.e2.div_ref(&w), y.e3.div_ref(&w)], w)
+}
+
+/// A spread of f64 poses: unit and non-unit, all rotation angles, with translations.
+pub fn sample_poses() -> Vec<Pose<f64>> {
+    let mut out = Vec::new();
+    for (axis, phi, t) in [
+        ([0.0, 0.0, 1.0], 0.0, [0.0, 0.0, 0.0]),
+        ([1.0, 2.0, 3.0], 0.7, [1.0, -2.0, 0.5]),
+        ([0.0, 1.0, 0.0], std::f64::consts::PI, [3.0, 0.0, -1.0]),
+        ([1.0, 1.0, 0.0], 2.5, [0.0, 0.0, 10.0]),
+        ([-1.0, 0.5, 2.0], 4.0, [-3.0, 2.0, 1.0]),
+        ([0.3, -0.2, 0.9], 1e-9, [5.0, 5.0, 5.0]),
+        ([1.0, 0.0, 0.0], 6.0, [0.1, 0.2, 0.3]),
+    ] {
+        let s = Pose::from_axis_angle_translation(&axis, &phi, &t).unwrap();
+        out.push(s.clone());
+        out.push(s.scale_pseudoscalar(&motion::Pseudoscalar::new(-1.7, 0.4)));
+    }
+    out
+}
