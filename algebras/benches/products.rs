@@ -1,0 +1,257 @@
+//! Side-by-side product benchmarks (one process, so ratios are meaningful on a shared machine):
+//!
+//! * `motor_product`: the generated `g123inf::Motor * Motor` (G_{123inf}^+, 48 multiplications)
+//!   against nalgebra's `DualQuaternion<f64>` product and GAM's hand-written
+//!   [`DualQuaternion<f64>`] product (isomorphic algebras, same operation count);
+//! * `cga_full_product`: the generated full `cga::Multivector * Multivector` (R^{4,1}, 32x32
+//!   unrolled) against table-driven loops: a flat `f64` table `(a, b, k, sign)` built once from
+//!   the exact tables (the floor of a table-driven product), and the runtime
+//!   `algebra_core::Multivector<f64>` product (the reference implementation: exact rational table
+//!   entries, a heap allocation per product).
+//!
+//! Every iteration multiplies a batch of pre-generated operand pairs; throughput is per product.
+//! Criterion measures the kernels one after the other, which on a loaded machine lets the load
+//! change between them; so after the criterion groups, `cargo bench` also prints ratios measured
+//! **interleaved**: each round times every kernel of a group back to back (in rotating order),
+//! and the report gives the median of the per-round ratios.
+//!
+//! Run with `cargo bench -p gam-algebras --bench products`.
+#![allow(missing_docs)]
+
+use algebra_core::{Algebra, Multivector, Product, Ring};
+use criterion::{BenchmarkId, Criterion, Throughput, criterion_group};
+use gam_algebras::{DualQuaternion, cga, g123inf};
+use std::hint::black_box;
+use std::sync::OnceLock;
+use std::time::{Duration, Instant};
+
+/// Products per criterion iteration.
+const BATCH: usize = 1024;
+/// Products per criterion iteration for the (much slower) runtime reference.
+const RUNTIME_BATCH: usize = 64;
+
+/// A small deterministic generator (xorshift) of floats in [-1, 1).
+struct Rng(u64);
+impl Rng {
+    fn next(&mut self) -> f64 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 7;
+        self.0 ^= self.0 << 17;
+        (self.0 >> 11) as f64 / (1u64 << 52) as f64 - 1.0
+    }
+}
+
+/// One non-zero entry of a flat geometric-product table: `out[k] += sign * x[a] * y[b]`.
+#[derive(Clone, Copy)]
+struct Entry {
+    a: u8,
+    b: u8,
+    k: u8,
+    sign: f64,
+}
+
+/// The table-driven floor: a loop over the flattened non-zero table entries.
+fn table_gp(table: &[Entry], x: &[f64; 32], y: &[f64; 32]) -> [f64; 32] {
+    let mut out = [0.0; 32];
+    for e in table {
+        out[e.k as usize] += e.sign * x[e.a as usize] * y[e.b as usize];
+    }
+    out
+}
+
+/// The operands (`2 * BATCH` of each kind; products pair element `i` with `BATCH + i`).
+struct Data {
+    motors: Vec<g123inf::Motor<f64>>,
+    ours: Vec<DualQuaternion<f64>>,
+    theirs: Vec<nalgebra::DualQuaternion<f64>>,
+    table: Vec<Entry>,
+    dense: Vec<[f64; 32]>,
+    runtime: Vec<Multivector<f64>>,
+    generated: Vec<cga::Multivector<f64>>,
+}
+
+fn data() -> &'static Data {
+    static DATA: OnceLock<Data> = OnceLock::new();
+    DATA.get_or_init(|| {
+        let mut rng = Rng(0x9e37_79b9_7f4a_7c15);
+        let coeffs: Vec<[f64; 8]> = (0..2 * BATCH).map(|_| [(); 8].map(|_| rng.next())).collect();
+        let motors =
+            coeffs.iter().map(|&[s, a, b, c, d, e, f, w]| g123inf::Motor::new(s, a, b, c, d, e, f, w)).collect();
+        let ours = coeffs.iter().map(|&c| DualQuaternion::from_coeffs(c)).collect();
+        let theirs = coeffs
+            .iter()
+            .map(|&[rw, rx, ry, rz, dw, dx, dy, dz]| {
+                nalgebra::DualQuaternion::from_real_and_dual(
+                    nalgebra::Quaternion::new(rw, rx, ry, rz),
+                    nalgebra::Quaternion::new(dw, dx, dy, dz),
+                )
+            })
+            .collect();
+
+        let alg = Algebra::builtin("cga").expect("built-in cga");
+        let gp = alg.tables().product(cga::BASIS, Product::Geometric);
+        let mut table = Vec::new();
+        for a in 0..32u32 {
+            for b in 0..32u32 {
+                for (k, coeff) in gp.get(a, b) {
+                    table.push(Entry { a: a as u8, b: b as u8, k: *k as u8, sign: f64::from_rational(coeff) });
+                }
+            }
+        }
+        let dense: Vec<[f64; 32]> = (0..2 * BATCH).map(|_| [(); 32].map(|_| rng.next())).collect();
+        let runtime: Vec<Multivector<f64>> = dense
+            .iter()
+            .map(|c| Multivector::from_coeffs(&alg, cga::BASIS, c.to_vec()).expect("32 coefficients"))
+            .collect();
+        let generated: Vec<cga::Multivector<f64>> = runtime.iter().map(cga::Multivector::project).collect();
+
+        // the implementations agree (sanity check, outside the timing)
+        let reference = &runtime[0] * &runtime[BATCH];
+        let by_table = table_gp(&table, &dense[0], &dense[BATCH]);
+        let by_generated = (&generated[0] * &generated[BATCH]).to_multivector();
+        for (mask, t) in by_table.iter().enumerate() {
+            let r = reference.coeff(mask as u32);
+            assert!((r - t).abs() < 1e-12 && (r - by_generated.coeff(mask as u32)).abs() < 1e-12);
+        }
+        Data { motors, ours, theirs, table, dense, runtime, generated }
+    })
+}
+
+/// A kernel run over the first `n` operand pairs of a batch.
+type Kernel = fn(&Data, usize);
+
+fn motor_generated(d: &Data, n: usize) {
+    let (xs, ys) = d.motors.split_at(BATCH);
+    for (x, y) in xs.iter().zip(ys).take(n) {
+        black_box(black_box(x) * black_box(y));
+    }
+}
+
+fn motor_nalgebra(d: &Data, n: usize) {
+    let (xs, ys) = d.theirs.split_at(BATCH);
+    for (x, y) in xs.iter().zip(ys).take(n) {
+        black_box(*black_box(x) * *black_box(y));
+    }
+}
+
+fn motor_dual_quaternion(d: &Data, n: usize) {
+    let (xs, ys) = d.ours.split_at(BATCH);
+    for (x, y) in xs.iter().zip(ys).take(n) {
+        black_box(black_box(x) * black_box(y));
+    }
+}
+
+fn cga_generated(d: &Data, n: usize) {
+    let (xs, ys) = d.generated.split_at(BATCH);
+    for (x, y) in xs.iter().zip(ys).take(n) {
+        black_box(black_box(x) * black_box(y));
+    }
+}
+
+fn cga_table(d: &Data, n: usize) {
+    let (xs, ys) = d.dense.split_at(BATCH);
+    for (x, y) in xs.iter().zip(ys).take(n) {
+        black_box(table_gp(black_box(&d.table), black_box(x), black_box(y)));
+    }
+}
+
+fn cga_runtime(d: &Data, n: usize) {
+    let (xs, ys) = d.runtime.split_at(BATCH);
+    for (x, y) in xs.iter().zip(ys).take(n) {
+        black_box(black_box(x) * black_box(y));
+    }
+}
+
+const MOTOR_KERNELS: [(&str, Kernel); 3] = [
+    ("gam_generated_g123inf_motor", motor_generated),
+    ("nalgebra_dual_quaternion", motor_nalgebra),
+    ("gam_dual_quaternion", motor_dual_quaternion),
+];
+
+fn motor_products(c: &mut Criterion) {
+    let d = data();
+    let mut group = c.benchmark_group("motor_product");
+    group.throughput(Throughput::Elements(BATCH as u64));
+    for (name, kernel) in MOTOR_KERNELS {
+        group.bench_function(name, |b| b.iter(|| kernel(d, BATCH)));
+    }
+    group.finish();
+}
+
+fn cga_products(c: &mut Criterion) {
+    let d = data();
+    let mut group = c.benchmark_group("cga_full_product");
+    group.throughput(Throughput::Elements(BATCH as u64));
+    group.bench_function("gam_generated_cga_multivector", |b| b.iter(|| cga_generated(d, BATCH)));
+    group.bench_function("table_driven_flat_f64", |b| b.iter(|| cga_table(d, BATCH)));
+    group.throughput(Throughput::Elements(RUNTIME_BATCH as u64));
+    group.bench_function(BenchmarkId::new("runtime_multivector_reference", RUNTIME_BATCH), |b| {
+        b.iter(|| cga_runtime(d, RUNTIME_BATCH))
+    });
+    group.finish();
+}
+
+/// Times the kernels of one group interleaved: `rounds` rounds, each timing every kernel once
+/// on `n` products (`reps` times over), in an order rotated per round. Prints the median time per
+/// product of each kernel and, for each kernel, the median over rounds of its time divided by
+/// the first kernel's time in the same round.
+fn interleaved(title: &str, kernels: &[(&str, Kernel, usize)], rounds: usize, reps: usize) {
+    let d = data();
+    let mut times: Vec<Vec<f64>> = vec![Vec::with_capacity(rounds); kernels.len()];
+    for round in 0..rounds {
+        for j in 0..kernels.len() {
+            let i = (j + round) % kernels.len();
+            let (_, kernel, n) = kernels[i];
+            let start = Instant::now();
+            for _ in 0..reps {
+                kernel(d, n);
+            }
+            times[i].push(start.elapsed().as_secs_f64() * 1e9 / (reps * n) as f64);
+        }
+    }
+    let median = |mut v: Vec<f64>| {
+        v.sort_by(f64::total_cmp);
+        v[v.len() / 2]
+    };
+    println!("\ninterleaved ({rounds} rounds): {title}");
+    println!("  {:<40} {:>12} {:>12} {:>16}", "kernel", "median ns", "min ns", "ratio to first");
+    for (i, (name, _, _)) in kernels.iter().enumerate() {
+        let ratios = times[i].iter().zip(&times[0]).map(|(t, t0)| t / t0).collect();
+        let min = times[i].iter().copied().fold(f64::INFINITY, f64::min);
+        println!("  {name:<40} {:>12.2} {:>12.2} {:>16.3}", median(times[i].clone()), min, median(ratios));
+    }
+}
+
+fn interleaved_report() {
+    let motors: Vec<(&str, Kernel, usize)> = MOTOR_KERNELS.iter().map(|&(n, k)| (n, k, BATCH)).collect();
+    interleaved("G_{123inf}^+ motor product vs dual quaternions (f64)", &motors, 2000, 4);
+    interleaved(
+        "cga (R^{4,1}) full multivector product (f64)",
+        &[
+            ("gam_generated_cga_multivector", cga_generated, 64),
+            ("table_driven_flat_f64", cga_table, 64),
+            ("runtime_multivector_reference", cga_runtime, 64),
+        ],
+        400,
+        1,
+    );
+}
+
+fn config() -> Criterion {
+    Criterion::default().warm_up_time(Duration::from_secs(1)).measurement_time(Duration::from_secs(4)).sample_size(40)
+}
+
+criterion_group! {
+    name = benches;
+    config = config();
+    targets = motor_products, cga_products
+}
+
+fn main() {
+    benches();
+    Criterion::default().configure_from_args().final_summary();
+    // `cargo bench` passes `--bench`; skip the report when the bench is run as a test.
+    if std::env::args().any(|a| a == "--bench") {
+        interleaved_report();
+    }
+}
