@@ -9,6 +9,7 @@ mod commands;
 mod error;
 mod eval;
 mod expr;
+mod hermite;
 mod output;
 mod scalar;
 
@@ -95,6 +96,15 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Control poses of a motion segment from its end conditions (Secs. 4-5 of the main paper).
+    Hermite {
+        /// Print one JSON object: {"control_poses", "velocity_bivectors", "velocity_indicatrices"}.
+        #[arg(long)]
+        json: bool,
+        /// The JSON spec: kind, degree, start and end conditions (see docs/cli.md).
+        #[arg(value_name = "SPEC.json")]
+        spec: String,
+    },
 }
 
 fn run(command: Command) -> Result<String, CliError> {
@@ -107,6 +117,7 @@ fn run(command: Command) -> Result<String, CliError> {
         Command::Codegen { algebra, types, basis, emit, module, json } => {
             codegen::codegen(&codegen::CodegenArgs { algebra, types, basis, emit, module, json })
         }
+        Command::Hermite { json, spec } => hermite::hermite(&spec, json),
     }
 }
 
@@ -119,7 +130,7 @@ fn clap_failure(e: clap::Error) -> ExitCode {
     let text = e.render().to_string();
     let line = match e.kind() {
         ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand | ErrorKind::MissingSubcommand => {
-            "error: a subcommand is required: algebras, eval, table or codegen (see gam --help)".to_string()
+            "error: a subcommand is required: algebras, eval, table, codegen or hermite (see gam --help)".to_string()
         }
         _ => first_error_line(&text),
     };

@@ -21,6 +21,12 @@
 //! | [`pseudoscalar`] | `a + bω`: inverse, square root, exp, ln (Lemma 2.4) |
 //! | [`exp_log`] | closed-form exp and log ("dual angle") |
 //! | [`interpolation`] | power, slerp (eq. 15), additive interpolation (eq. 17) |
+//! | [`bezier`] | the [`Motion`] trait, [`CurveError`], additive (eq. 18) and multiplicative (Fig. 2) Bezier motions |
+//! | [`bspline`] | additive and multiplicative B-spline motions with knots (de Boor) |
+//! | [`piecewise`] | motions over parameter intervals: [`Reparametrized`], [`Piecewise`], [`AnyMotion`] |
+//! | [`velocity`] | Ψ (eq. 11), γ, ν, Ω and u (Thm 3.2), point velocities (eq. 14), Cor. 3.3, second derivatives, all by dual numbers |
+//! | [`joins`] | end conditions, `ν` and `Ψ = λ(ν + γ)`, control poses for C1/G1 joins (eqs. 22-23), [`Continuity`] check |
+//! | [`hermite`] | Hermite interpolation through precision poses with velocities (Sec. 5.3) |
 //! | [`error`] | [`MotionError`] |
 //!
 //! ```
@@ -33,17 +39,29 @@
 //! ```
 
 pub mod action;
+pub mod bezier;
+pub mod bspline;
 pub mod error;
 pub mod exp_log;
+pub mod hermite;
 pub mod interpolation;
+pub mod joins;
 pub mod matrix;
 mod ops;
+pub mod piecewise;
 pub mod pose;
 pub mod pseudoscalar;
 mod series;
+pub mod velocity;
 
 pub use algebra_core;
+pub use bezier::{AdditiveBezier, CurveError, Motion, MultiplicativeBezier};
+pub use bspline::{AdditiveBSpline, MultiplicativeBSpline};
 pub use error::MotionError;
 pub use gam_algebras::g123inf::{Motor, Pseudoscalar};
+pub use hermite::{HermiteSegment, HermiteShapes};
+pub use joins::{Continuity, EndCondition, JoinCheck, JoinError, SegmentKind, Shape};
 pub use matrix::Matrix4;
+pub use piecewise::{AnyMotion, Piecewise, Reparametrized};
 pub use pose::Pose;
+pub use velocity::{Twist, velocity_bivector, velocity_indicatrix};

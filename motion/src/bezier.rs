@@ -1,0 +1,580 @@
+//! Motion curves: the [`Motion`] trait shared by every motion, the curve error [`CurveError`],
+//! and the Bezier motions of Sec. 4 of the main paper.
+//!
+//! * [`AdditiveBezier`]: `S(t) = Σ B_i^n(t) S_i` (eq. 18), evaluated by the Bernstein sum or by
+//!   the de Casteljau tableau of additive combinations `(1 - t) A + t B` (eq. 17). Polynomial in
+//!   `t`, so it works over any [`Ring`] (exact over rationals) and is generally not unitary.
+//! * [`MultiplicativeBezier`]: the de Casteljau tableau of Fig. 2 with the slerp
+//!   `Φ(A, B; t) = A (rev(A) B)^t` (eq. 15) as the pairwise combination.
+//!
+//! A motion is evaluated at a parameter of its scalar type; to differentiate, lift the control
+//! poses to dual numbers with [`Motion::map_scalar`] and run the *same* evaluation code at
+//! `t + ε` (see [`crate::velocity`]): no derivative formula is written by hand.
+//!
+//! ```
+//! use motion::{AdditiveBezier, Motion, MultiplicativeBezier, Pose};
+//! let a = Pose::<f64>::identity();
+//! let b = Pose::from_axis_angle_translation(&[0.0, 0.0, 1.0], &1.0, &[1.0, 0.0, 0.0]).unwrap();
+//! let c = Pose::translation(&[2.0, 1.0, 0.0]);
+//! let add = AdditiveBezier::new(vec![a.clone(), b.clone(), c.clone()]).unwrap();
+//! let mul = MultiplicativeBezier::new(vec![a, b, c.clone()]).unwrap();
+//! // Both interpolate the end poses.
+//! assert_eq!(add.pose(&1.0).unwrap(), c);
+//! assert!(mul.pose(&1.0).unwrap().is_equivalent(&c, &1e-14).unwrap());
+//! ```
+
+use crate::{MotionError, Pose};
+use algebra_core::{Real, Ring};
+use gam_algebras::g123inf::Motor;
+use std::convert::Infallible;
+
+/// Why building or evaluating a motion curve failed.
+///
+/// Values are carried as their printed form, so the error type does not depend on the scalar.
+/// Pose-level failures (a singular pose in a slerp, an inverse, ...) are wrapped unchanged.
+///
+/// ```
+/// use motion::{AdditiveBezier, CurveError, Motion, Pose};
+/// let m = AdditiveBezier::new(vec![Pose::<f64>::identity(), Pose::translation(&[1.0, 0.0, 0.0])]).unwrap();
+/// assert!(matches!(m.pose(&1.5), Err(CurveError::OutOfDomain { .. })));
+/// assert!(matches!(AdditiveBezier::<f64>::new(vec![]), Err(CurveError::TooFewPoses { need: 1, got: 0 })));
+/// ```
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum CurveError {
+    /// A pose operation failed (singular pose, non-finite value, ...).
+    #[error(transparent)]
+    Pose(#[from] MotionError),
+    /// The parameter is outside the motion's domain (or is NaN).
+    #[error("the parameter {t} is outside the domain [{start}, {end}]")]
+    OutOfDomain {
+        /// The parameter, printed.
+        t: String,
+        /// The start of the domain, printed.
+        start: String,
+        /// The end of the domain, printed.
+        end: String,
+    },
+    /// Not enough control poses for the requested degree.
+    #[error("needs at least {need} control poses, got {got}")]
+    TooFewPoses {
+        /// The minimum.
+        need: usize,
+        /// What was given.
+        got: usize,
+    },
+    /// A knot vector of the wrong length: `poses + degree + 1` knots are needed.
+    #[error("a B-spline of degree {degree} with {poses} control poses needs {expected} knots, got {got}")]
+    KnotCount {
+        /// The degree.
+        degree: usize,
+        /// The number of control poses.
+        poses: usize,
+        /// `poses + degree + 1`.
+        expected: usize,
+        /// What was given.
+        got: usize,
+    },
+    /// A knot (or breakpoint) that is NaN or infinite.
+    #[error("{what} {index} is {value}, not finite")]
+    NotFiniteParameter {
+        /// "knot" or "breakpoint".
+        what: &'static str,
+        /// Its index.
+        index: usize,
+        /// The value, printed.
+        value: String,
+    },
+    /// Knots must be non-decreasing.
+    #[error("knot {index} ({value}) is smaller than knot {} ({previous}): knots must be non-decreasing", index - 1)]
+    KnotsDecreasing {
+        /// The index of the offending knot.
+        index: usize,
+        /// Its value, printed.
+        value: String,
+        /// The previous knot, printed.
+        previous: String,
+    },
+    /// A knot value repeated more than `degree + 1` times.
+    #[error("the knot {value} is repeated {multiplicity} times; degree {degree} allows at most {}", degree + 1)]
+    KnotMultiplicity {
+        /// The knot value, printed.
+        value: String,
+        /// How often it occurs.
+        multiplicity: usize,
+        /// The degree.
+        degree: usize,
+    },
+    /// The parameter domain `[u_p, u_{n+1}]` of a B-spline has zero length.
+    #[error("the B-spline domain [{start}, {end}] is empty")]
+    EmptyDomain {
+        /// `u_p`, printed.
+        start: String,
+        /// `u_{n+1}`, printed.
+        end: String,
+    },
+    /// A piecewise motion without segments.
+    #[error("a piecewise motion needs at least one segment")]
+    NoSegments,
+    /// A piecewise motion needs one more breakpoint than segments.
+    #[error("{segments} segments need {} breakpoints, got {got}", segments + 1)]
+    BreakCount {
+        /// The number of segments.
+        segments: usize,
+        /// The number of breakpoints given.
+        got: usize,
+    },
+    /// Breakpoints must be strictly increasing.
+    #[error("breakpoint {index} ({value}) is not greater than breakpoint {} ({previous})", index - 1)]
+    BreaksNotIncreasing {
+        /// The index of the offending breakpoint.
+        index: usize,
+        /// Its value, printed.
+        value: String,
+        /// The previous breakpoint, printed.
+        previous: String,
+    },
+}
+
+/// A motion `t ↦ S(t)` over a parameter interval: Bezier, B-spline, piecewise, reparametrised.
+///
+/// `Mapped<U>` is the same motion with its scalar changed (control poses, knots and breakpoints
+/// mapped by a function): lifting to dual numbers ([`algebra_core::Jet`], num-dual) and
+/// evaluating at `t + ε` gives `S(t)` and `dS/dt` from the same code (see [`crate::velocity`]).
+///
+/// ```
+/// use algebra_core::Jet;
+/// use motion::{AdditiveBezier, Motion, Pose};
+/// let m = AdditiveBezier::new(vec![Pose::<f64>::identity(), Pose::translation(&[2.0, 0.0, 0.0])]).unwrap();
+/// assert_eq!(m.domain(), [0.0, 1.0]);
+/// let lifted = m.map_scalar(&|x: &f64| Jet::constant(*x));
+/// let s = lifted.pose(&Jet::variable(0.5)).unwrap();
+/// assert_eq!(s.as_motor().e1inf, Jet::new(0.5, 1.0)); // S = 1 + t e1inf, dS/dt = e1inf
+/// ```
+pub trait Motion<T: Real> {
+    /// The same kind of motion over the scalar `U`.
+    type Mapped<U: Real>: Motion<U>;
+
+    /// The pose `S(t)` for `t` in [`Motion::domain`]: fails outside it (and for NaN) with
+    /// [`CurveError::OutOfDomain`], and where the construction meets a singular pose.
+    ///
+    /// ```
+    /// use motion::{Motion, MultiplicativeBezier, Pose};
+    /// let m = MultiplicativeBezier::new(vec![Pose::<f64>::identity(), Pose::translation(&[2.0, 0.0, 0.0])]).unwrap();
+    /// let p = m.pose(&0.25).unwrap().transform_point(&[0.0, 0.0, 0.0]).unwrap();
+    /// assert!((p[0] - 0.5).abs() < 1e-15);
+    /// assert!(m.pose(&1.25).is_err());
+    /// ```
+    fn pose(&self, t: &T) -> Result<Pose<T>, CurveError> {
+        check_domain(t, &self.domain())?;
+        self.evaluate(t)
+    }
+
+    /// The construction evaluated at any `t`, without the domain check: outside the domain it
+    /// continues the formula (polynomial, power or end span). Used by reparametrisations, where
+    /// rounding may put an end of an interval a few ulps outside the inner domain; clamping
+    /// instead would drop the derivative part of a dual-number parameter.
+    ///
+    /// ```
+    /// use motion::{AdditiveBezier, Motion, Pose};
+    /// let m = AdditiveBezier::new(vec![Pose::<f64>::identity(), Pose::translation(&[2.0, 0.0, 0.0])]).unwrap();
+    /// assert_eq!(m.evaluate(&2.0).unwrap(), Pose::translation(&[4.0, 0.0, 0.0]));
+    /// ```
+    fn evaluate(&self, t: &T) -> Result<Pose<T>, CurveError>;
+
+    /// The parameter interval `[start, end]` (closed).
+    ///
+    /// ```
+    /// use motion::{Motion, MultiplicativeBezier, Pose};
+    /// let m = MultiplicativeBezier::new(vec![Pose::<f64>::identity()]).unwrap();
+    /// assert_eq!(m.domain(), [0.0, 1.0]);
+    /// ```
+    fn domain(&self) -> [T; 2];
+
+    /// The same motion with every scalar (control-pose coefficient, knot, breakpoint) mapped
+    /// by `f`; `f` should embed `T` in `U` (e.g. `x ↦ Jet::constant(x)`).
+    ///
+    /// ```
+    /// use algebra_core::Jet;
+    /// use motion::{Motion, MultiplicativeBezier, Pose};
+    /// let m = MultiplicativeBezier::new(vec![Pose::<f64>::identity(), Pose::translation(&[2.0, 0.0, 0.0])]).unwrap();
+    /// let d = m.map_scalar(&|x: &f64| Jet::constant(*x)).pose(&Jet::variable(0.3)).unwrap();
+    /// assert!((d.as_motor().e1inf.eps - 1.0).abs() < 1e-15);
+    /// ```
+    fn map_scalar<U: Real>(&self, f: &dyn Fn(&T) -> U) -> Self::Mapped<U>;
+}
+
+impl<T: Ring> Pose<T> {
+    /// The same pose over another scalar, each coefficient mapped by `f` (e.g. lifting to dual
+    /// numbers).
+    ///
+    /// ```
+    /// use algebra_core::Jet;
+    /// let p = motion::Pose::translation(&[2.0, 0.0, 0.0]).map_scalar(&|x: &f64| Jet::constant(*x));
+    /// assert_eq!(p.as_motor().e1inf, Jet::constant(1.0));
+    /// ```
+    pub fn map_scalar<U: Ring>(&self, f: &dyn Fn(&T) -> U) -> Pose<U> {
+        Pose(map_motor(&self.0, f))
+    }
+}
+
+/// A [`Motor`] with each coefficient mapped by `f`.
+pub(crate) fn map_motor<T: Ring, U: Ring>(m: &Motor<T>, f: &dyn Fn(&T) -> U) -> Motor<U> {
+    Motor::new(f(&m.scalar), f(&m.e12), f(&m.e13), f(&m.e23), f(&m.e1inf), f(&m.e2inf), f(&m.e3inf), f(&m.e123inf))
+}
+
+/// `Ok` when `start ≤ t ≤ end` (false for NaN), else [`CurveError::OutOfDomain`].
+pub(crate) fn check_domain<T: Real>(t: &T, domain: &[T; 2]) -> Result<(), CurveError> {
+    if *t >= domain[0] && *t <= domain[1] {
+        Ok(())
+    } else {
+        Err(CurveError::OutOfDomain { t: t.to_string(), start: domain[0].to_string(), end: domain[1].to_string() })
+    }
+}
+
+fn unit_interval<T: Ring>() -> [T; 2] {
+    [T::zero(), T::one()]
+}
+
+fn at_least_one<T>(poses: &[T]) -> Result<(), CurveError> {
+    if poses.is_empty() { Err(CurveError::TooFewPoses { need: 1, got: 0 }) } else { Ok(()) }
+}
+
+/// The de Casteljau tableau with a pairwise combination: column 0 is the control poses,
+/// column `k` holds `S_{i..i+k}(t)`, the last column the single pose `S(t)`.
+pub(crate) fn tableau_with<T: Ring, E>(
+    poses: &[Pose<T>],
+    t: &T,
+    combine: impl Fn(&Pose<T>, &Pose<T>, &T) -> Result<Pose<T>, E>,
+) -> Result<Vec<Vec<Pose<T>>>, E> {
+    let mut columns = vec![poses.to_vec()];
+    while columns[columns.len() - 1].len() > 1 {
+        let last = &columns[columns.len() - 1];
+        let next = last.windows(2).map(|w| combine(&w[0], &w[1], t)).collect::<Result<Vec<_>, E>>()?;
+        columns.push(next);
+    }
+    Ok(columns)
+}
+
+/// The apex `S(t)` of the de Casteljau tableau, keeping one column at a time.
+pub(crate) fn de_casteljau_with<T: Ring, E>(
+    poses: &[Pose<T>],
+    t: &T,
+    combine: impl Fn(&Pose<T>, &Pose<T>, &T) -> Result<Pose<T>, E>,
+) -> Result<Pose<T>, E> {
+    let mut column = poses.to_vec();
+    while column.len() > 1 {
+        column = column.windows(2).map(|w| combine(&w[0], &w[1], t)).collect::<Result<Vec<_>, E>>()?;
+    }
+    Ok(column.pop().expect("a motion has at least one control pose"))
+}
+
+/// The additive Bezier motion `S(t) = Σ_{i=0}^{n} C(n, i) (1 - t)^{n-i} t^i S_i` (eq. 18) of
+/// degree `n` on `[0, 1]`, from `n + 1 ≥ 1` control poses (unit or not).
+///
+/// Polynomial in `t`, so evaluation needs only a [`Ring`]: exact over rationals and
+/// polynomials. `S(0) = S_0` and `S(1) = S_n` exactly. `S(t)` is generally not unitary and is
+/// singular (the zero transform) where it passes through a singular element; the velocity
+/// functions report that as an error.
+///
+/// ```
+/// use algebra_core::rational::{q, ratio, Q};
+/// use motion::{AdditiveBezier, Pose};
+/// let m = AdditiveBezier::new(vec![
+///     Pose::<Q>::identity(),
+///     Pose::translation(&[q(2), q(0), q(0)]),
+///     Pose::translation(&[q(2), q(2), q(0)]),
+/// ]).unwrap();
+/// let half = ratio(1, 2);
+/// assert_eq!(m.bernstein(&half), m.de_casteljau(&half));
+/// assert_eq!(m.bernstein(&half), Pose::translation(&[ratio(3, 2), ratio(1, 2), q(0)]));
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct AdditiveBezier<T: Ring> {
+    poses: Vec<Pose<T>>,
+}
+
+impl<T: Ring> AdditiveBezier<T> {
+    /// The motion with control poses `S_0, ..., S_n` (at least one).
+    ///
+    /// ```
+    /// let m = motion::AdditiveBezier::new(vec![motion::Pose::<f64>::identity(); 4]).unwrap();
+    /// assert_eq!(m.degree(), 3);
+    /// ```
+    pub fn new(poses: Vec<Pose<T>>) -> Result<Self, CurveError> {
+        at_least_one(&poses)?;
+        Ok(AdditiveBezier { poses })
+    }
+
+    /// The control poses.
+    ///
+    /// ```
+    /// let m = motion::AdditiveBezier::new(vec![motion::Pose::<f64>::identity(); 2]).unwrap();
+    /// assert_eq!(m.poses().len(), 2);
+    /// ```
+    pub fn poses(&self) -> &[Pose<T>] {
+        &self.poses
+    }
+
+    /// The degree `n` (number of control poses minus one).
+    ///
+    /// ```
+    /// assert_eq!(motion::AdditiveBezier::new(vec![motion::Pose::<f64>::identity()]).unwrap().degree(), 0);
+    /// ```
+    pub fn degree(&self) -> usize {
+        self.poses.len() - 1
+    }
+
+    /// `S(t)` by the Bernstein sum of eq. (18), for any `t` (extrapolates outside `[0, 1]`).
+    /// Binomial coefficients are built as exact ratios.
+    ///
+    /// ```
+    /// use motion::{AdditiveBezier, Pose};
+    /// let m = AdditiveBezier::new(vec![Pose::<f64>::identity(), Pose::translation(&[4.0, 0.0, 0.0])]).unwrap();
+    /// assert_eq!(m.bernstein(&0.25), Pose::translation(&[1.0, 0.0, 0.0]));
+    /// ```
+    pub fn bernstein(&self, t: &T) -> Pose<T> {
+        let n = self.degree();
+        let s = T::one().sub_ref(t);
+        let mut t_pow = Vec::with_capacity(n + 1);
+        let mut s_pow = Vec::with_capacity(n + 1);
+        t_pow.push(T::one());
+        s_pow.push(T::one());
+        for i in 1..=n {
+            t_pow.push(t_pow[i - 1].mul_ref(t));
+            s_pow.push(s_pow[i - 1].mul_ref(&s));
+        }
+        let mut binomial = T::one();
+        let mut sum = Motor::zero();
+        for (i, pose) in self.poses.iter().enumerate() {
+            if i > 0 {
+                binomial = binomial.mul_ref(&T::from_ratio((n + 1 - i) as i64, i as i64));
+            }
+            let weight = binomial.mul_ref(&s_pow[n - i]).mul_ref(&t_pow[i]);
+            sum = sum + pose.0.scale(&weight);
+        }
+        Pose(sum)
+    }
+
+    /// `S(t)` by the de Casteljau tableau of additive combinations `(1 - t) A + t B`
+    /// (Fig. 2 with eq. 17), for any `t`.
+    ///
+    /// ```
+    /// use motion::{AdditiveBezier, Pose};
+    /// let m = AdditiveBezier::new(vec![Pose::<f64>::identity(), Pose::translation(&[4.0, 0.0, 0.0])]).unwrap();
+    /// assert_eq!(m.de_casteljau(&0.25), Pose::translation(&[1.0, 0.0, 0.0]));
+    /// ```
+    pub fn de_casteljau(&self, t: &T) -> Pose<T> {
+        let Ok(pose) = de_casteljau_with::<T, Infallible>(&self.poses, t, |a, b, t| Ok(Pose::lerp(a, b, t)));
+        pose
+    }
+
+    /// The whole de Casteljau tableau at `t`: column 0 is the control poses, column `k` holds
+    /// `S_{i,...,i+k}(t)` for `i = 0..=n-k`, the last column is `[S(t)]` (Fig. 2).
+    ///
+    /// ```
+    /// use motion::{AdditiveBezier, Pose};
+    /// let m = AdditiveBezier::new(vec![Pose::<f64>::identity(); 4]).unwrap();
+    /// let tab = m.tableau(&0.5);
+    /// assert_eq!(tab.iter().map(Vec::len).collect::<Vec<_>>(), [4, 3, 2, 1]);
+    /// ```
+    pub fn tableau(&self, t: &T) -> Vec<Vec<Pose<T>>> {
+        let Ok(columns) = tableau_with::<T, Infallible>(&self.poses, t, |a, b, t| Ok(Pose::lerp(a, b, t)));
+        columns
+    }
+
+    /// The control poses in reverse order: `S_{n..0}(1 - t) = S_{0..n}(t)` for every `t`
+    /// (the Bernstein basis is symmetric), exactly over exact scalars.
+    ///
+    /// ```
+    /// use algebra_core::rational::{q, ratio, Q};
+    /// use motion::{AdditiveBezier, Pose};
+    /// let m = AdditiveBezier::new(vec![Pose::<Q>::identity(), Pose::translation(&[q(3), q(0), q(0)])]).unwrap();
+    /// assert_eq!(m.reversed().bernstein(&ratio(1, 3)), m.bernstein(&ratio(2, 3)));
+    /// ```
+    pub fn reversed(&self) -> Self {
+        AdditiveBezier { poses: self.poses.iter().rev().cloned().collect() }
+    }
+
+    /// Degree elevation: the same motion with `n + 2` control poses
+    /// `S'_i = (i/(n+1)) S_{i-1} + (1 - i/(n+1)) S_i` (exact over exact scalars).
+    ///
+    /// ```
+    /// use algebra_core::rational::{q, ratio, Q};
+    /// use motion::{AdditiveBezier, Pose};
+    /// let m = AdditiveBezier::new(vec![Pose::<Q>::identity(), Pose::translation(&[q(3), q(0), q(0)])]).unwrap();
+    /// let e = m.elevated();
+    /// assert_eq!(e.degree(), 2);
+    /// assert_eq!(e.bernstein(&ratio(1, 5)), m.bernstein(&ratio(1, 5)));
+    /// ```
+    pub fn elevated(&self) -> Self {
+        let m = self.poses.len() as i64; // n + 1
+        let mut poses = Vec::with_capacity(self.poses.len() + 1);
+        poses.push(self.poses[0].clone());
+        for i in 1..self.poses.len() {
+            let w = T::from_ratio(i as i64, m);
+            poses.push(&self.poses[i - 1].scale(&w) + &self.poses[i].scale(&T::one().sub_ref(&w)));
+        }
+        poses.push(self.poses[self.poses.len() - 1].clone());
+        AdditiveBezier { poses }
+    }
+
+    /// The same motion over another scalar (each control-pose coefficient mapped by `f`), for
+    /// any [`Ring`] target (e.g. `Jet<Q>` for exact derivatives over the rationals).
+    ///
+    /// ```
+    /// use algebra_core::Jet;
+    /// use algebra_core::rational::{q, Q};
+    /// use motion::{AdditiveBezier, Pose};
+    /// let m = AdditiveBezier::new(vec![Pose::<Q>::identity(), Pose::translation(&[q(2), q(0), q(0)])]).unwrap();
+    /// let d = m.map_ring(&|x: &Q| Jet::constant(x.clone())).bernstein(&Jet::variable(q(0)));
+    /// assert_eq!(d.as_motor().e1inf.eps, q(1)); // dS/dt = S_1 - S_0
+    /// ```
+    pub fn map_ring<U: Ring>(&self, f: &dyn Fn(&T) -> U) -> AdditiveBezier<U> {
+        AdditiveBezier { poses: self.poses.iter().map(|p| p.map_scalar(f)).collect() }
+    }
+}
+
+impl<T: Real> Motion<T> for AdditiveBezier<T> {
+    type Mapped<U: Real> = AdditiveBezier<U>;
+
+    /// `S(t)` by de Casteljau (the Bernstein sum agrees).
+    fn evaluate(&self, t: &T) -> Result<Pose<T>, CurveError> {
+        Ok(self.de_casteljau(t))
+    }
+
+    fn domain(&self) -> [T; 2] {
+        unit_interval()
+    }
+
+    fn map_scalar<U: Real>(&self, f: &dyn Fn(&T) -> U) -> AdditiveBezier<U> {
+        self.map_ring(f)
+    }
+}
+
+/// The multiplicative Bezier motion of degree `n` on `[0, 1]`: the de Casteljau tableau of
+/// Fig. 2 with the slerp `Φ(A, B; t) = A (rev(A) B)^t` (eq. 15, [`Pose::slerp`]) as the
+/// pairwise combination.
+///
+/// Control poses are used as given (the paper's definition). With unitary control poses the
+/// motion is unitary, `S(0) = S_0`, `S(1) = S_n`, and reversing the poses reverses the motion.
+/// With non-unit poses every tableau entry is a pseudoscalar multiple of the unitized one
+/// (eq. 16, Lemma 4.1): the same transforms, but `S(1)` is only *equivalent* to `S_n`, the
+/// reversal holds only up to equivalence, and Theorem 4.5(ii)'s formula at `t = 1` fails
+/// (see the tests); [`MultiplicativeBezier::unitized`] avoids all of that.
+///
+/// ```
+/// use motion::{Motion, MultiplicativeBezier, Pose};
+/// let r = Pose::rotation(&[0.0, 0.0, 1.0], &std::f64::consts::FRAC_PI_2).unwrap();
+/// let m = MultiplicativeBezier::new(vec![Pose::identity(), r.clone()]).unwrap();
+/// let half = m.pose(&0.5).unwrap();
+/// assert!(half.is_equivalent(&Pose::rotation(&[0.0, 0.0, 1.0], &std::f64::consts::FRAC_PI_4).unwrap(), &1e-15).unwrap());
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct MultiplicativeBezier<T: Ring> {
+    poses: Vec<Pose<T>>,
+}
+
+impl<T: Real> MultiplicativeBezier<T> {
+    /// The motion with control poses `S_0, ..., S_n` (at least one).
+    ///
+    /// ```
+    /// let m = motion::MultiplicativeBezier::new(vec![motion::Pose::<f64>::identity(); 3]).unwrap();
+    /// assert_eq!(m.degree(), 2);
+    /// ```
+    pub fn new(poses: Vec<Pose<T>>) -> Result<Self, CurveError> {
+        at_least_one(&poses)?;
+        Ok(MultiplicativeBezier { poses })
+    }
+
+    /// The control poses.
+    ///
+    /// ```
+    /// let m = motion::MultiplicativeBezier::new(vec![motion::Pose::<f64>::identity(); 2]).unwrap();
+    /// assert_eq!(m.poses().len(), 2);
+    /// ```
+    pub fn poses(&self) -> &[Pose<T>] {
+        &self.poses
+    }
+
+    /// The degree `n` (number of control poses minus one).
+    ///
+    /// ```
+    /// assert_eq!(motion::MultiplicativeBezier::new(vec![motion::Pose::<f64>::identity()]).unwrap().degree(), 0);
+    /// ```
+    pub fn degree(&self) -> usize {
+        self.poses.len() - 1
+    }
+
+    /// `S(t)`: the apex of the slerp tableau, for any `t` (extrapolates outside `[0, 1]`).
+    /// Fails when a slerp meets a singular pose.
+    ///
+    /// ```
+    /// use motion::{MultiplicativeBezier, Pose};
+    /// let m = MultiplicativeBezier::new(vec![Pose::<f64>::identity(), Pose::translation(&[4.0, 0.0, 0.0])]).unwrap();
+    /// let s = m.de_casteljau(&0.25).unwrap();
+    /// assert!((s.as_motor().e1inf - 0.5).abs() < 1e-15);
+    /// ```
+    pub fn de_casteljau(&self, t: &T) -> Result<Pose<T>, CurveError> {
+        Ok(de_casteljau_with(&self.poses, t, Pose::slerp)?)
+    }
+
+    /// The whole slerp tableau at `t` (Fig. 2): column 0 is the control poses, column `k` holds
+    /// `S_{i,...,i+k}(t)`, the last column `[S(t)]`.
+    ///
+    /// ```
+    /// use motion::{MultiplicativeBezier, Pose};
+    /// let m = MultiplicativeBezier::new(vec![Pose::<f64>::identity(); 4]).unwrap();
+    /// let tab = m.tableau(&0.5).unwrap();
+    /// assert_eq!(tab.iter().map(Vec::len).collect::<Vec<_>>(), [4, 3, 2, 1]);
+    /// ```
+    pub fn tableau(&self, t: &T) -> Result<Vec<Vec<Pose<T>>>, CurveError> {
+        Ok(tableau_with(&self.poses, t, Pose::slerp)?)
+    }
+
+    /// The control poses in reverse order. `S_{n..0}(1 - t) = S_{0..n}(t)` holds for unitary
+    /// control poses (the paper's proof of Theorem 4.5 at `t = 1`); for non-unit poses only up
+    /// to a pseudoscalar factor (the same transform).
+    ///
+    /// ```
+    /// use motion::{MultiplicativeBezier, Pose};
+    /// let a = Pose::<f64>::identity();
+    /// let b = Pose::from_axis_angle_translation(&[1.0, 0.0, 0.0], &1.0, &[0.0, 2.0, 0.0]).unwrap();
+    /// let m = MultiplicativeBezier::new(vec![a, b]).unwrap();
+    /// let x = m.de_casteljau(&0.3).unwrap();
+    /// let y = m.reversed().de_casteljau(&0.7).unwrap();
+    /// assert!((&x - &y).components().iter().all(|c| c.abs() < 1e-15));
+    /// ```
+    pub fn reversed(&self) -> Self {
+        MultiplicativeBezier { poses: self.poses.iter().rev().cloned().collect() }
+    }
+
+    /// The motion with every control pose unitized (`S_i/|S_i|`, Lemma 2.6(i)): the same
+    /// transforms (Lemma 4.1), a unitary motion, and the end formulas of Theorem 4.5(ii) hold.
+    /// Fails for a singular control pose.
+    ///
+    /// ```
+    /// use motion::{Motion, MultiplicativeBezier, Pose};
+    /// let m = MultiplicativeBezier::new(vec![Pose::<f64>::identity().scale(&2.0), Pose::translation(&[1.0, 0.0, 0.0])]).unwrap();
+    /// assert!(m.unitized().unwrap().pose(&0.4).unwrap().is_unitary(&1e-15));
+    /// ```
+    pub fn unitized(&self) -> Result<Self, CurveError> {
+        let poses = self.poses.iter().map(Pose::unitize).collect::<Result<Vec<_>, _>>()?;
+        Ok(MultiplicativeBezier { poses })
+    }
+}
+
+impl<T: Real> Motion<T> for MultiplicativeBezier<T> {
+    type Mapped<U: Real> = MultiplicativeBezier<U>;
+
+    fn evaluate(&self, t: &T) -> Result<Pose<T>, CurveError> {
+        self.de_casteljau(t)
+    }
+
+    fn domain(&self) -> [T; 2] {
+        unit_interval()
+    }
+
+    fn map_scalar<U: Real>(&self, f: &dyn Fn(&T) -> U) -> MultiplicativeBezier<U> {
+        MultiplicativeBezier { poses: self.poses.iter().map(|p| p.map_scalar(f)).collect() }
+    }
+}
