@@ -14,6 +14,7 @@
 
 use crate::error::CliError;
 use crate::output::{mv_human, mv_json};
+use motion::HermiteSegment;
 use motion::hermite::hermite_segment;
 use motion::{EndCondition, JoinError, MotionError, Motor, Pseudoscalar, SegmentKind, Shape};
 use serde::Deserialize;
@@ -33,11 +34,14 @@ enum Kind {
 /// The whole spec.
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
-struct Spec {
+pub(crate) struct Spec {
     kind: Kind,
     degree: i64,
     start: EndSpec,
     end: EndSpec,
+    /// The body point of `gam sample` / `gam plot` (body coordinates); `gam hermite` rejects it.
+    #[serde(default)]
+    pub(crate) body_point: Option<[f64; 3]>,
 }
 
 /// One end condition.
@@ -112,7 +116,7 @@ fn qualify_missing_field(message: &str, text: &str) -> String {
 }
 
 /// Reads and checks the spec file.
-fn read_spec(path: &str) -> Result<Spec, CliError> {
+pub(crate) fn read_spec(path: &str) -> Result<Spec, CliError> {
     let text = std::fs::read_to_string(path).map_err(|e| CliError::usage(format!("cannot read `{path}`: {e}")))?;
     let text = strip_comments(&text);
     let spec: Spec = serde_json::from_str(&text).map_err(|e| {
@@ -162,9 +166,8 @@ fn finite(m: &Motor<f64>) -> bool {
     [m.scalar, m.e12, m.e13, m.e23, m.e1inf, m.e2inf, m.e3inf, m.e123inf].iter().all(|x| x.is_finite())
 }
 
-/// Runs `gam hermite`.
-pub fn hermite(path: &str, json: bool) -> Result<String, CliError> {
-    let spec = read_spec(path)?;
+/// The segment of a checked spec (shared with `gam sample` and `gam plot`).
+pub(crate) fn build_segment(spec: &Spec) -> Result<HermiteSegment<f64>, CliError> {
     let kind = match spec.kind {
         Kind::Additive => SegmentKind::Additive,
         Kind::Multiplicative => SegmentKind::Multiplicative,
@@ -176,6 +179,18 @@ pub fn hermite(path: &str, json: bool) -> Result<String, CliError> {
         JoinError::Motion(m) => CliError::math(m.to_string()),
         other => CliError::usage(other.to_string()),
     })?;
+    Ok(seg)
+}
+
+/// Runs `gam hermite`.
+pub fn hermite(path: &str, json: bool) -> Result<String, CliError> {
+    let spec = read_spec(path)?;
+    if spec.body_point.is_some() {
+        return Err(CliError::usage(format!("`{path}`: `body_point` is only used by `gam sample` and `gam plot`")));
+    }
+    let seg = build_segment(&spec)?;
+    let kind = seg.kind;
+    let degree = seg.degree();
     let poses: Vec<&Motor<f64>> = seg.control_poses.iter().map(|s| s.as_motor()).collect();
     let mut all = poses.iter().copied().chain(&seg.velocity_bivectors).chain(&seg.velocity_indicatrices);
     if !all.all(finite) {

@@ -11,6 +11,8 @@ mod eval;
 mod expr;
 mod hermite;
 mod output;
+mod plot;
+mod sample;
 mod scalar;
 
 use algebra_core::{Basis, Product};
@@ -105,6 +107,30 @@ enum Command {
         #[arg(value_name = "SPEC.json")]
         spec: String,
     },
+    /// Sample a `gam hermite` segment: pose, body point position, linear and angular speed.
+    Sample {
+        /// The number of evenly spaced parameter values t = 0..1 (at least 2).
+        #[arg(long, value_name = "N")]
+        samples: usize,
+        /// Print one JSON object: {"samples": [{"t", "pose", "position", "linear_speed", "angular_speed"}]}.
+        #[arg(long)]
+        json: bool,
+        /// The JSON spec of `gam hermite`, plus an optional "body_point": [x, y, z].
+        #[arg(value_name = "SPEC.json")]
+        spec: String,
+    },
+    /// Plot a `gam hermite` segment to SVG: speeds against t and the path of the body point.
+    Plot {
+        /// The SVG file to write.
+        #[arg(long, value_name = "FILE.svg")]
+        out: String,
+        /// The number of evenly spaced parameter values t = 0..1 (at least 2).
+        #[arg(long, value_name = "N", default_value_t = plot::DEFAULT_SAMPLES)]
+        samples: usize,
+        /// The JSON spec of `gam hermite`, plus an optional "body_point": [x, y, z].
+        #[arg(value_name = "SPEC.json")]
+        spec: String,
+    },
 }
 
 fn run(command: Command) -> Result<String, CliError> {
@@ -118,6 +144,8 @@ fn run(command: Command) -> Result<String, CliError> {
             codegen::codegen(&codegen::CodegenArgs { algebra, types, basis, emit, module, json })
         }
         Command::Hermite { json, spec } => hermite::hermite(&spec, json),
+        Command::Sample { samples, json, spec } => sample::sample(&spec, samples, json),
+        Command::Plot { out, samples, spec } => plot::plot(&spec, &out, samples),
     }
 }
 
@@ -130,7 +158,8 @@ fn clap_failure(e: clap::Error) -> ExitCode {
     let text = e.render().to_string();
     let line = match e.kind() {
         ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand | ErrorKind::MissingSubcommand => {
-            "error: a subcommand is required: algebras, eval, table, codegen or hermite (see gam --help)".to_string()
+            "error: a subcommand is required: algebras, eval, table, codegen, hermite, sample or plot (see gam --help)"
+                .to_string()
         }
         _ => first_error_line(&text),
     };

@@ -1,0 +1,132 @@
+//! `gam sample SPEC.json --samples N [--json]`: the Hermite segment of a `gam hermite` spec
+//! (see [`crate::hermite`]) sampled at `N` evenly spaced parameter values `t = 0..1`: the pose,
+//! the position of a body point (`body_point` in the spec, body coordinates, default the
+//! origin), its linear speed and the angular speed of the body.
+//!
+//! Speeds are derivatives with respect to the segment parameter `t`, computed by
+//! `motion::velocity::velocity`, which evaluates the same motion over dual numbers (never
+//! finite differences): the linear speed is `|v|` of eq. (14) at the current position of the
+//! body point, the angular speed `|Ω|` of `ν = Ω e123 + u einf` (Theorem 3.2).
+
+use crate::error::CliError;
+use crate::hermite::{build_segment, read_spec};
+use crate::output::{mv_human, mv_json, text_table};
+use crate::scalar::format_f64;
+use motion::velocity::velocity;
+use motion::{AdditiveBezier, AnyMotion, MultiplicativeBezier, Pose, SegmentKind};
+use serde_json::{Value, json};
+
+/// The most samples accepted.
+pub(crate) const MAX_SAMPLES: usize = 1_000_000;
+
+/// One sample of the motion.
+pub(crate) struct Sample {
+    /// The parameter value.
+    pub t: f64,
+    /// `S(t)`.
+    pub pose: Pose<f64>,
+    /// The current position of the body point.
+    pub position: [f64; 3],
+    /// `|v|`: the speed of the body point.
+    pub linear_speed: f64,
+    /// `|Ω|`.
+    pub angular_speed: f64,
+}
+
+/// A sampled segment.
+pub(crate) struct Sampled {
+    /// Additive or multiplicative.
+    pub kind: SegmentKind,
+    /// The degree of the segment.
+    pub degree: usize,
+    /// The body point (body coordinates).
+    pub body_point: [f64; 3],
+    /// The samples, `t` from 0 to 1.
+    pub samples: Vec<Sample>,
+}
+
+fn norm(v: &[f64; 3]) -> f64 {
+    v.iter().map(|x| x * x).sum::<f64>().sqrt()
+}
+
+/// Reads the spec at `path` and samples its segment at `n` parameter values.
+pub(crate) fn sample_spec(path: &str, n: usize) -> Result<Sampled, CliError> {
+    if !(2..=MAX_SAMPLES).contains(&n) {
+        return Err(CliError::usage(format!("`--samples` must be an integer from 2 to {MAX_SAMPLES} (got {n})")));
+    }
+    let spec = read_spec(path)?;
+    let body_point = spec.body_point.unwrap_or([0.0; 3]);
+    if !body_point.iter().all(|x| x.is_finite()) {
+        return Err(CliError::usage(format!("`{path}`: `body_point` must be finite")));
+    }
+    let seg = build_segment(&spec)?;
+    let (kind, degree) = (seg.kind, seg.degree());
+    let curve = |e: motion::CurveError| CliError::math(e.to_string());
+    let motion: AnyMotion<f64> = match kind {
+        SegmentKind::Additive => AnyMotion::AdditiveBezier(AdditiveBezier::new(seg.control_poses).map_err(curve)?),
+        SegmentKind::Multiplicative => {
+            AnyMotion::MultiplicativeBezier(MultiplicativeBezier::new(seg.control_poses).map_err(curve)?)
+        }
+    };
+    let last = (n - 1) as f64;
+    let mut samples = Vec::with_capacity(n);
+    for i in 0..n {
+        let t = i as f64 / last;
+        let vel = velocity(&motion, &t).map_err(|e| CliError::math(format!("at t = {}: {e}", format_f64(t))))?;
+        let (position, v) = vel
+            .body_point_velocity(&body_point)
+            .map_err(|e| CliError::math(format!("at t = {}: {e}", format_f64(t))))?;
+        let sample =
+            Sample { t, linear_speed: norm(&v), angular_speed: norm(&vel.twist().angular), position, pose: vel.pose };
+        let m = sample.pose.as_motor();
+        let coefficients = [m.scalar, m.e12, m.e13, m.e23, m.e1inf, m.e2inf, m.e3inf, m.e123inf];
+        let all = coefficients.iter().chain(&sample.position).chain([&sample.linear_speed, &sample.angular_speed]);
+        if !all.into_iter().all(|x| x.is_finite()) {
+            return Err(CliError::math(format!("the result at t = {} is not finite (overflow)", format_f64(t))));
+        }
+        samples.push(sample);
+    }
+    Ok(Sampled { kind, degree, body_point, samples })
+}
+
+/// Runs `gam sample`.
+pub fn sample(path: &str, n: usize, json: bool) -> Result<String, CliError> {
+    let s = sample_spec(path, n)?;
+    if json {
+        let list: Vec<Value> = s
+            .samples
+            .iter()
+            .map(|x| {
+                json!({
+                    "t": x.t,
+                    "pose": mv_json(&x.pose.as_motor().to_multivector()),
+                    "position": x.position,
+                    "linear_speed": x.linear_speed,
+                    "angular_speed": x.angular_speed,
+                })
+            })
+            .collect();
+        return Ok(json!({ "samples": list }).to_string());
+    }
+    let header = ["t", "x", "y", "z", "linear speed", "angular speed", "pose"];
+    let mut rows = vec![header.map(str::to_string).to_vec()];
+    for x in &s.samples {
+        let mut row = vec![format_f64(x.t)];
+        row.extend(x.position.iter().map(|c| format_f64(*c)));
+        row.push(format_f64(x.linear_speed));
+        row.push(format_f64(x.angular_speed));
+        row.push(mv_human(&x.pose.as_motor().to_multivector()));
+        rows.push(row);
+    }
+    let p = s.body_point.map(format_f64);
+    let title = format!(
+        "{} segment of degree {}, body point [{}, {}, {}], {} samples",
+        s.kind,
+        s.degree,
+        p[0],
+        p[1],
+        p[2],
+        s.samples.len()
+    );
+    Ok(format!("{title}\n{}", text_table(&rows)))
+}

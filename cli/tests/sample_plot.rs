@@ -1,0 +1,309 @@
+//! `gam sample` and `gam plot`: the contract's example spec sampled (end positions, end
+//! speeds against the end conditions: the body-origin velocity at t = 0 is `shape` times the
+//! spec's start velocity), agreement with the `motion` library computed independently, a
+//! `body_point`, the sample-count rules, the SVG, and the error rules (one `error:` line,
+//! exit 2).
+
+use motion::hermite::hermite_segment;
+use motion::velocity::velocity;
+use motion::{AdditiveBezier, EndCondition, Motion, MultiplicativeBezier, Pseudoscalar, SegmentKind, Shape};
+use serde_json::Value;
+use std::path::PathBuf;
+use std::process::{Command, Output};
+
+/// The example of shared/cli.md, verbatim (with its `//` comment).
+const CONTRACT_EXAMPLE: &str = r#"{
+  "kind": "additive",            // or "multiplicative"
+  "degree": 3,
+  "start": {"position": [0,0,0], "axis": [0,0,1], "angle": 0,
+            "velocity": [1,1,1], "angular_velocity": [1,2,3],
+            "shape": 1, "gamma": [0, 0]},
+  "end":   {"position": [8,10,12], "axis": [1,2,3], "angle": 1.959,
+            "velocity": [1,5,3], "angular_velocity": [2,1,1]}
+}
+"#;
+
+/// Sec. 5.2 of the paper with λ0 = 4 and pseudoscalars, as `kind` and optional extra fields.
+fn sec52(kind: &str, extra: &str) -> String {
+    format!(
+        r#"{{"kind": "{kind}", "degree": 3,{extra}
+ "start": {{"position": [0, 0, 0], "axis": [1, 0, 0], "angle": 0, "velocity": [0, 0, 8],
+           "angular_velocity": [-0.7853981633974483, 0, 0], "shape": 4, "gamma": [0.5, 0.5]}},
+ "end":   {{"position": [0, 10, 0], "axis": [1, 0, 0], "angle": -1.5707963267948966,
+           "velocity": [0, 4, 0], "angular_velocity": [0.39269908169872414, 0, 0], "gamma": [1, -0.5]}}}}"#
+    )
+}
+
+fn gam(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_gam")).args(args).output().expect("run gam")
+}
+
+/// A file in the temp directory, removed on drop.
+struct TempFile(PathBuf);
+
+impl TempFile {
+    fn new(name: &str) -> Self {
+        TempFile(std::env::temp_dir().join(format!("gam-sample-test-{}-{name}", std::process::id())))
+    }
+    fn with(name: &str, text: &str) -> Self {
+        let f = TempFile::new(name);
+        std::fs::write(&f.0, text).expect("write spec");
+        f
+    }
+    fn path(&self) -> &str {
+        self.0.to_str().expect("utf-8 path")
+    }
+}
+
+impl Drop for TempFile {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_file(&self.0);
+    }
+}
+
+fn ok(args: &[&str]) -> String {
+    let out = gam(args);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "gam {args:?} failed: {stderr}");
+    assert!(stderr.is_empty(), "gam {args:?} wrote to stderr: {stderr}");
+    String::from_utf8(out.stdout).expect("utf-8")
+}
+
+fn fails(args: &[&str], code: i32) -> String {
+    let out = gam(args);
+    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert_eq!(out.status.code(), Some(code), "gam {args:?}: {stderr}");
+    assert!(out.stdout.is_empty(), "gam {args:?} printed {:?}", String::from_utf8_lossy(&out.stdout));
+    assert!(!stderr.contains("panicked"), "{stderr}");
+    let lines: Vec<&str> = stderr.lines().collect();
+    assert_eq!(lines.len(), 1, "gam {args:?}: expected one stderr line, got {stderr:?}");
+    assert!(lines[0].starts_with("error: "), "{stderr}");
+    lines[0].to_string()
+}
+
+/// One parsed sample.
+#[derive(Debug)]
+struct Sample {
+    t: f64,
+    pose: Value,
+    position: [f64; 3],
+    linear_speed: f64,
+    angular_speed: f64,
+}
+
+fn num(v: &Value) -> f64 {
+    v.as_f64().unwrap_or_else(|| panic!("not a number: {v}"))
+}
+
+/// `gam sample --json` on a spec text, parsed (and its shape checked).
+fn sample_json(name: &str, text: &str, n: usize) -> Vec<Sample> {
+    let spec = TempFile::with(name, text);
+    let out = ok(&["sample", spec.path(), "--samples", &n.to_string(), "--json"]);
+    let value: Value = serde_json::from_str(&out).expect("valid JSON");
+    let obj = value.as_object().expect("an object");
+    assert_eq!(obj.keys().collect::<Vec<_>>(), ["samples"]);
+    let list = value["samples"].as_array().expect("a list");
+    assert_eq!(list.len(), n);
+    list.iter()
+        .map(|s| {
+            let keys: Vec<&String> = s.as_object().expect("object").keys().collect();
+            assert_eq!(keys, ["t", "pose", "position", "linear_speed", "angular_speed"]);
+            let p = s["position"].as_array().expect("position list");
+            assert_eq!(p.len(), 3);
+            Sample {
+                t: num(&s["t"]),
+                pose: s["pose"].clone(),
+                position: [num(&p[0]), num(&p[1]), num(&p[2])],
+                linear_speed: num(&s["linear_speed"]),
+                angular_speed: num(&s["angular_speed"]),
+            }
+        })
+        .collect()
+}
+
+fn norm(v: &[f64; 3]) -> f64 {
+    v.iter().map(|x| x * x).sum::<f64>().sqrt()
+}
+
+fn close(a: f64, b: f64, tol: f64) -> bool {
+    (a - b).abs() <= tol * (1.0 + b.abs())
+}
+
+fn assert_close3(a: &[f64; 3], b: &[f64; 3], tol: f64) {
+    assert!(a.iter().zip(b).all(|(x, y)| close(*x, *y, tol)), "{a:?} != {b:?}");
+}
+
+#[test]
+fn contract_example_ends_match_the_spec() {
+    let s = sample_json("contract.json", CONTRACT_EXAMPLE, 11);
+    assert_eq!(s.first().unwrap().t, 0.0);
+    assert_eq!(s.last().unwrap().t, 1.0);
+    for (i, x) in s.iter().enumerate() {
+        assert!(close(x.t, i as f64 / 10.0, 1e-15));
+    }
+    assert_close3(&s[0].position, &[0.0, 0.0, 0.0], 1e-9);
+    assert_close3(&s[10].position, &[8.0, 10.0, 12.0], 1e-9);
+    // shape 1 at both ends: the body-origin speed and |Ω| are those of the end conditions.
+    assert!(close(s[0].linear_speed, norm(&[1.0, 1.0, 1.0]), 1e-12), "{}", s[0].linear_speed);
+    assert!(close(s[0].angular_speed, norm(&[1.0, 2.0, 3.0]), 1e-12));
+    assert!(close(s[10].linear_speed, norm(&[1.0, 5.0, 3.0]), 1e-12));
+    assert!(close(s[10].angular_speed, norm(&[2.0, 1.0, 1.0]), 1e-12));
+    assert_eq!(s[0].pose, serde_json::json!({"1": "1"}));
+}
+
+#[test]
+fn start_speed_is_shape_times_start_velocity() {
+    // Sec. 5.2 with λ0 = 4 (and γ0 ≠ 0): Ψ(0) = λ0 (ν0 + γ0), so the velocity of the body origin
+    // at t = 0 is λ0 v0 = 4 · [0, 0, 8] and |Ω(0)| = 4 · π/4; at t = 1, λ3 = 1.
+    for kind in ["additive", "multiplicative"] {
+        let s = sample_json(&format!("sec52-{kind}.json"), &sec52(kind, ""), 5);
+        assert!(close(s[0].linear_speed, 32.0, 1e-12), "{kind}: {}", s[0].linear_speed);
+        assert!(close(s[0].angular_speed, std::f64::consts::PI, 1e-12), "{kind}: {}", s[0].angular_speed);
+        assert!(close(s[4].linear_speed, 4.0, 1e-9), "{kind}: {}", s[4].linear_speed);
+        assert!(close(s[4].angular_speed, std::f64::consts::FRAC_PI_8, 1e-9), "{kind}: {}", s[4].angular_speed);
+        assert_close3(&s[0].position, &[0.0, 0.0, 0.0], 1e-9);
+        assert_close3(&s[4].position, &[0.0, 10.0, 0.0], 1e-9);
+    }
+}
+
+/// Every sample against the motion library, computed independently of the binary.
+#[test]
+fn body_point_samples_agree_with_the_library() {
+    let body = [1.0, -2.0, 0.5];
+    let text = sec52("multiplicative", r#" "body_point": [1, -2, 0.5],"#);
+    let s = sample_json("sec52-body.json", &text, 9);
+    let frac_pi_4 = std::f64::consts::FRAC_PI_4;
+    let a = EndCondition::from_axis_angle(&[0.0; 3], &[1.0, 0.0, 0.0], &0.0, &[0.0, 0.0, 8.0], &[-frac_pi_4, 0.0, 0.0])
+        .unwrap();
+    let b = EndCondition::from_axis_angle(
+        &[0.0, 10.0, 0.0],
+        &[1.0, 0.0, 0.0],
+        &-std::f64::consts::FRAC_PI_2,
+        &[0.0, 4.0, 0.0],
+        &[frac_pi_4 / 2.0, 0.0, 0.0],
+    )
+    .unwrap();
+    let seg = hermite_segment(
+        SegmentKind::Multiplicative,
+        3,
+        &a,
+        &b,
+        &Shape::new(4.0, Pseudoscalar::new(0.5, 0.5)),
+        &Shape::new(1.0, Pseudoscalar::new(1.0, -0.5)),
+    )
+    .unwrap();
+    let m = MultiplicativeBezier::new(seg.control_poses).unwrap();
+    for x in &s {
+        let v = velocity(&m, &x.t).unwrap();
+        let (q, qv) = v.body_point_velocity(&body).unwrap();
+        assert_close3(&x.position, &q, 1e-12);
+        assert!(close(x.linear_speed, norm(&qv), 1e-12));
+        assert!(close(x.angular_speed, norm(&v.twist().angular), 1e-12));
+        assert_close3(&x.position, &m.pose(&x.t).unwrap().transform_point(&body).unwrap(), 1e-12);
+    }
+    // The ends: the body point carried by the end poses.
+    assert_close3(&s[0].position, &a.pose.transform_point(&body).unwrap(), 1e-9);
+    assert_close3(&s[8].position, &b.pose.transform_point(&body).unwrap(), 1e-9);
+    // The additive kind too: the contract example with the same body point, 5 samples.
+    let a = EndCondition::from_axis_angle(&[0.0; 3], &[0.0, 0.0, 1.0], &0.0, &[1.0; 3], &[1.0, 2.0, 3.0]).unwrap();
+    let b =
+        EndCondition::from_axis_angle(&[8.0, 10.0, 12.0], &[1.0, 2.0, 3.0], &1.959, &[1.0, 5.0, 3.0], &[2.0, 1.0, 1.0])
+            .unwrap();
+    let seg = hermite_segment(SegmentKind::Additive, 3, &a, &b, &Shape::unit(), &Shape::unit()).unwrap();
+    let m = AdditiveBezier::new(seg.control_poses).unwrap();
+    let text = CONTRACT_EXAMPLE.replace("\"degree\": 3,", "\"degree\": 3, \"body_point\": [1, -2, 0.5],");
+    let s = sample_json("contract-body.json", &text, 5);
+    for x in &s {
+        let v = velocity(&m, &x.t).unwrap();
+        let (q, qv) = v.body_point_velocity(&body).unwrap();
+        assert_close3(&x.position, &q, 1e-12);
+        assert!(close(x.linear_speed, norm(&qv), 1e-12));
+        assert!(close(x.angular_speed, norm(&v.twist().angular), 1e-12));
+    }
+    assert_close3(&s[4].position, &b.pose.transform_point(&body).unwrap(), 1e-9);
+    assert_close3(&s[0].position, &body, 1e-12);
+    // ν0 = Ω e123 + u einf with the origin at 0: v(q) = v0 + Ω × q.
+    let (w, v0) = ([1.0, 2.0, 3.0], [1.0, 1.0, 1.0]);
+    let cross = [w[1] * body[2] - w[2] * body[1], w[2] * body[0] - w[0] * body[2], w[0] * body[1] - w[1] * body[0]];
+    let expected = [v0[0] + cross[0], v0[1] + cross[1], v0[2] + cross[2]];
+    assert!(close(s[0].linear_speed, norm(&expected), 1e-12), "{} vs {}", s[0].linear_speed, norm(&expected));
+}
+
+#[test]
+fn sample_counts() {
+    let spec = TempFile::with("counts.json", CONTRACT_EXAMPLE);
+    let s = sample_json("counts2.json", CONTRACT_EXAMPLE, 2);
+    assert_eq!((s[0].t, s[1].t), (0.0, 1.0));
+    for n in ["1", "0"] {
+        let line = fails(&["sample", spec.path(), "--samples", n], 2);
+        assert!(line.contains("--samples"), "{line}");
+    }
+    fails(&["sample", spec.path(), "--samples", "-3"], 2);
+    fails(&["sample", spec.path(), "--samples", "x"], 2);
+    fails(&["sample", spec.path()], 2);
+    fails(&["plot", spec.path(), "--out", "x.svg", "--samples", "1"], 2);
+}
+
+#[test]
+fn human_form_is_a_table() {
+    let spec = TempFile::with("human.json", CONTRACT_EXAMPLE);
+    let out = ok(&["sample", spec.path(), "--samples", "3"]);
+    let lines: Vec<&str> = out.lines().collect();
+    assert_eq!(lines.len(), 1 + 2 + 3, "{out}");
+    assert_eq!(lines[0], "additive segment of degree 3, body point [0, 0, 0], 3 samples");
+    assert!(lines[1].starts_with("t   | x") && lines[1].contains("linear speed") && lines[1].contains("angular speed"));
+    assert!(lines[3].starts_with("0   | 0"), "{out}");
+    assert!(lines[5].starts_with("1   | 8"), "{out}");
+    // Aligned: the `|` in the same column everywhere but the rule.
+    let bar = lines[1].find('|').unwrap();
+    assert!(lines.iter().skip(3).all(|l| l.find('|') == Some(bar)), "{out}");
+}
+
+#[test]
+fn spec_errors() {
+    let bad = TempFile::with("bad-body.json", &sec52("additive", r#" "body_point": [1, 2],"#));
+    let line = fails(&["sample", bad.path(), "--samples", "3"], 2);
+    assert!(line.contains("invalid spec"), "{line}");
+    fails(&["sample", "/nonexistent/gam-spec.json", "--samples", "3"], 2);
+    // `gam hermite` keeps its contract: `body_point` is not one of its fields.
+    let body = TempFile::with("hermite-body.json", &sec52("additive", r#" "body_point": [1, 2, 3],"#));
+    let line = fails(&["hermite", body.path()], 2);
+    assert!(line.contains("body_point"), "{line}");
+}
+
+#[test]
+fn plot_writes_an_svg() {
+    let spec = TempFile::with("plot.json", &sec52("multiplicative", r#" "body_point": [0, 1, 0],"#));
+    let out = TempFile::new("plot.svg");
+    let msg = ok(&["plot", spec.path(), "--out", out.path(), "--samples", "50"]);
+    assert!(msg.starts_with("wrote "), "{msg}");
+    let svg = std::fs::read_to_string(&out.0).expect("the SVG was written");
+    assert!(svg.starts_with("<svg"), "{}", &svg[..svg.len().min(100)]);
+    assert!(svg.trim_end().ends_with("</svg>"));
+    for text in [
+        "multiplicative segment of degree 3, body point [0, 1, 0]",
+        "linear and angular speed",
+        "path of the body point",
+        "linear speed |v|",
+        "angular speed |Omega|",
+        "\nt\n",
+        "\nx\n",
+        "\ny\n",
+    ] {
+        assert!(svg.contains(text), "the SVG lacks {text:?}");
+    }
+    assert!(svg.contains("<polyline"), "no line series");
+    // The default sample count.
+    ok(&["plot", spec.path(), "--out", out.path()]);
+    assert!(std::fs::read_to_string(&out.0).unwrap().starts_with("<svg"));
+}
+
+#[test]
+fn plot_to_a_bad_path_is_exit_2() {
+    let spec = TempFile::with("plot-bad.json", CONTRACT_EXAMPLE);
+    let line = fails(&["plot", spec.path(), "--out", "/nonexistent-dir/gam/out.svg"], 2);
+    assert!(line.contains("cannot write `/nonexistent-dir/gam/out.svg`"), "{line}");
+    let dir = std::env::temp_dir();
+    fails(&["plot", spec.path(), "--out", dir.to_str().unwrap()], 2);
+    fails(&["plot", spec.path()], 2);
+}
