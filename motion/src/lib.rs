@@ -47,6 +47,8 @@ pub mod hermite;
 pub mod interpolation;
 pub mod joins;
 pub mod matrix;
+#[cfg(feature = "nalgebra")]
+pub mod nalgebra_conv;
 mod ops;
 pub mod piecewise;
 pub mod pose;
