@@ -117,8 +117,16 @@ fn isometry_moves_points_like_the_pose() {
         for p in points() {
             let ours = s.transform_point(&p).unwrap();
             let np = Point3::new(p[0], p[1], p[2]);
-            assert!(close3(&ours, &iso.transform_point(&np)), "{s}: {ours:?} vs isometry {:?}", iso.transform_point(&np));
-            assert!(close3(&ours, &udq.transform_point(&np)), "{s}: {ours:?} vs dual quaternion {:?}", udq.transform_point(&np));
+            assert!(
+                close3(&ours, &iso.transform_point(&np)),
+                "{s}: {ours:?} vs isometry {:?}",
+                iso.transform_point(&np)
+            );
+            assert!(
+                close3(&ours, &udq.transform_point(&np)),
+                "{s}: {ours:?} vs dual quaternion {:?}",
+                udq.transform_point(&np)
+            );
         }
     }
 }
