@@ -1,0 +1,13 @@
+// The clash is between the first two types: the error should point at `Quaternion`.
+algebra_macros::algebra! {
+    pub mod bad {
+        metric builtin "g3";
+        types {
+            Rotor = even;
+            Quaternion = [1, e12, e13, e23];
+            Vector = grade 1;
+        }
+    }
+}
+
+fn main() {}

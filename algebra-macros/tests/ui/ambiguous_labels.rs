@@ -1,0 +1,11 @@
+algebra_macros::algebra! {
+    pub mod bad {
+        generators { e1, e2, e12 }
+        metric { (e1, e1) = 1, (e2, e2) = 1, (e12, e12) = 1 }
+        types {
+            Vector = grade 1;
+        }
+    }
+}
+
+fn main() {}

@@ -1,0 +1,10 @@
+algebra_macros::algebra! {
+    pub mod bad {
+        metric builtin "g3";
+        types {
+            Rotor = evens;
+        }
+    }
+}
+
+fn main() {}

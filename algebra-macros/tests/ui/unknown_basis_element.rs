@@ -1,0 +1,11 @@
+algebra_macros::algebra! {
+    pub mod bad {
+        generators { e1, e2, e3 }
+        metric { (e1, e1) = 1, (e2, e2) = 1, (e3, e3) = 1 }
+        types {
+            Rotor = [1, e12, e14, e23];
+        }
+    }
+}
+
+fn main() {}
