@@ -11,37 +11,13 @@ use algebra_core::rational::{Q, q, ratio};
 use common::*;
 use motion::{
     AdditiveBSpline, AdditiveBezier, AnyMotion, CurveError, Motion, Motor, MultiplicativeBSpline, MultiplicativeBezier,
-    Piecewise, Pose, Pseudoscalar, Reparametrized,
+    Piecewise, Pose, Reparametrized,
 };
 use proptest::prelude::*;
 
 fn qpose(c: [i64; 8]) -> Pose<Q> {
     let [a, b, cc, d, e, f, g, h] = c.map(q);
     Pose(Motor::new(a, b, cc, d, e, f, g, h))
-}
-
-/// `n + 1` unit poses of a varied motion (all rotation angles below π between neighbours).
-fn unit_poses(n: usize) -> Vec<Pose<f64>> {
-    (0..=n)
-        .map(|i| {
-            let x = i as f64;
-            Pose::from_axis_angle_translation(
-                &[1.0 + 0.3 * x, -0.5 + x * x * 0.1, 0.7 - 0.2 * x],
-                &(0.4 + 0.35 * x),
-                &[x, 1.5 - 0.5 * x * x, 0.3 * x],
-            )
-            .unwrap()
-        })
-        .collect()
-}
-
-/// The same poses multiplied by varied non-singular pseudoscalars (non-unit, equivalent).
-fn non_unit(poses: &[Pose<f64>]) -> Vec<Pose<f64>> {
-    poses
-        .iter()
-        .enumerate()
-        .map(|(i, p)| p.scale_pseudoscalar(&Pseudoscalar::new(1.3 + 0.4 * i as f64, 0.5 - 0.3 * i as f64)))
-        .collect()
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -20,30 +20,6 @@ use motion::{
 };
 use num_dual::{Dual2_64, Dual64};
 
-/// `n + 1` unit poses of a varied motion (neighbouring rotations well below π apart).
-fn unit_poses(n: usize) -> Vec<Pose<f64>> {
-    (0..=n)
-        .map(|i| {
-            let x = i as f64;
-            Pose::from_axis_angle_translation(
-                &[1.0 + 0.3 * x, -0.5 + x * x * 0.1, 0.7 - 0.2 * x],
-                &(0.4 + 0.35 * x),
-                &[x, 1.5 - 0.5 * x * x, 0.3 * x],
-            )
-            .unwrap()
-        })
-        .collect()
-}
-
-/// The same poses times varied non-singular pseudoscalars: non-unit, equivalent.
-fn non_unit(poses: &[Pose<f64>]) -> Vec<Pose<f64>> {
-    poses
-        .iter()
-        .enumerate()
-        .map(|(i, p)| p.scale_pseudoscalar(&Pseudoscalar::new(1.3 + 0.4 * i as f64, 0.5 - 0.3 * i as f64)))
-        .collect()
-}
-
 fn pseudo_motor(g: &Pseudoscalar<f64>) -> Motor<f64> {
     Motor::new(g.scalar, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, g.e123inf)
 }

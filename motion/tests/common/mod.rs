@@ -4,7 +4,7 @@
 
 use algebra_core::{Real, Ring};
 use gam_algebras::cga_null;
-use motion::{Motor, Pose};
+use motion::{Motor, Pose, Pseudoscalar};
 
 /// The largest component of `a - b`.
 pub fn diff<T: Ring>(a: &Motor<T>, b: &Motor<T>) -> f64 {
@@ -73,4 +73,28 @@ pub fn sample_poses() -> Vec<Pose<f64>> {
         out.push(s.scale_pseudoscalar(&motion::Pseudoscalar::new(-1.7, 0.4)));
     }
     out
+}
+
+/// `n + 1` unit poses of a varied motion (all rotation angles below π between neighbours).
+pub fn unit_poses(n: usize) -> Vec<Pose<f64>> {
+    (0..=n)
+        .map(|i| {
+            let x = i as f64;
+            Pose::from_axis_angle_translation(
+                &[1.0 + 0.3 * x, -0.5 + x * x * 0.1, 0.7 - 0.2 * x],
+                &(0.4 + 0.35 * x),
+                &[x, 1.5 - 0.5 * x * x, 0.3 * x],
+            )
+            .unwrap()
+        })
+        .collect()
+}
+
+/// The same poses multiplied by varied non-singular pseudoscalars (non-unit, equivalent).
+pub fn non_unit(poses: &[Pose<f64>]) -> Vec<Pose<f64>> {
+    poses
+        .iter()
+        .enumerate()
+        .map(|(i, p)| p.scale_pseudoscalar(&Pseudoscalar::new(1.3 + 0.4 * i as f64, 0.5 - 0.3 * i as f64)))
+        .collect()
 }
