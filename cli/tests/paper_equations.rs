@@ -1,10 +1,10 @@
 //! The main paper's eqs. (5)-(9) through the command line: `gam eval --algebra cga-null
 //! --basis product --scalar poly --json "rev(S)*x*S"` for a fully symbolic even S of
 //! G_{123inf} must print exactly the paper's polynomials (typed in from the paper in
-//! `gam_tests`).
+//! `gam_verify::cross2022::formulas`).
 
 use algebra_core::Poly;
-use gam_tests::{eq5, eq6, eq7, eq8, eq9_vector_part, symbolic_s_expr};
+use gam_verify::cross2022::formulas::{eq5, eq6, eq7, eq8, eq9_vector_part, symbolic_s_expr};
 use serde_json::{Map, Value};
 use std::process::Command;
 
