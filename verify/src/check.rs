@@ -147,8 +147,12 @@ impl Checker {
                 }
             }
             let diff = a.sub_ref(b).abs();
-            // `!(diff <= ...)` also catches NaN.
-            if !(diff <= tol.mul_ref(&scale)) || !a.is_finite() || !b.is_finite() {
+            // `partial_cmp` is None for NaN, which fails too.
+            let within = matches!(
+                diff.partial_cmp(&tol.mul_ref(&scale)),
+                Some(std::cmp::Ordering::Less | std::cmp::Ordering::Equal)
+            );
+            if !within || !a.is_finite() || !b.is_finite() {
                 self.failures.push(format!("{what}: entry {i}: {a} != {b} (to {digits} digits)"));
                 return false;
             }
