@@ -23,6 +23,27 @@ pub mod wareham_lasenby;
 pub use check::{Checker, Outcome};
 pub use statement::{Method, Paper, Report, Statement};
 
+/// A built-in algebra shared by all checks of the process, so its lazily built product
+/// tables are built once (`Algebra::builtin` makes a fresh algebra on every call).
+///
+/// ```
+/// let a = gam_verify::algebra("cga-null");
+/// assert!(std::sync::Arc::ptr_eq(&a, &gam_verify::algebra("cga-null")));
+/// ```
+///
+/// # Panics
+/// If `name` is not a built-in algebra name (a programming error in a check).
+pub fn algebra(name: &str) -> std::sync::Arc<algebra_core::Algebra> {
+    use std::collections::HashMap;
+    use std::sync::{Arc, Mutex, OnceLock};
+    static CACHE: OnceLock<Mutex<HashMap<String, Arc<algebra_core::Algebra>>>> = OnceLock::new();
+    let mut cache = CACHE.get_or_init(Default::default).lock().unwrap_or_else(|e| e.into_inner());
+    cache
+        .entry(name.to_string())
+        .or_insert_with(|| algebra_core::Algebra::builtin(name).expect("a built-in algebra name"))
+        .clone()
+}
+
 /// Every statement of the four papers, in paper order.
 ///
 /// ```
@@ -30,10 +51,7 @@ pub use statement::{Method, Paper, Report, Statement};
 /// assert!(ids.contains(&"cross2022/lemma-2.2-ii"));
 /// ```
 pub fn statements() -> impl Iterator<Item = &'static Statement> {
-    cross2022::statements()
-        .chain(wareham_lasenby::STATEMENTS)
-        .chain(juttler::STATEMENTS)
-        .chain(angelidis::STATEMENTS)
+    cross2022::statements().chain(wareham_lasenby::STATEMENTS).chain(juttler::STATEMENTS).chain(angelidis::STATEMENTS)
 }
 
 /// The statement with this id, if there is one.

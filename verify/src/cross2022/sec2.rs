@@ -174,7 +174,7 @@ pub const STATEMENTS: &[Statement] = &[
 ];
 
 fn builtin(name: &str) -> Arc<Algebra> {
-    Algebra::builtin(name).expect("built-in algebra")
+    crate::algebra(name)
 }
 
 fn expected(alg: &Arc<Algebra>, terms: Vec<(&str, Poly)>) -> Multivector<Poly> {
