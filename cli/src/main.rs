@@ -14,6 +14,7 @@ mod output;
 mod plot;
 mod sample;
 mod scalar;
+mod verify;
 
 use algebra_core::{Basis, Product};
 use clap::error::ErrorKind;
@@ -131,10 +132,22 @@ enum Command {
         #[arg(value_name = "SPEC.json")]
         spec: String,
     },
+    /// Check the papers' numbered statements (lemmas, theorems, equations) and report each.
+    Verify {
+        /// Print a JSON list of {"id", "paper", "label", "statement", "method", "holds",
+        /// "checks", "failures", "note", "time_ms"}.
+        #[arg(long)]
+        json: bool,
+        /// Only the statements whose id, label, paper or method contains TEXT (case-insensitive).
+        #[arg(long, value_name = "TEXT")]
+        filter: Option<String>,
+    },
 }
 
-fn run(command: Command) -> Result<String, CliError> {
-    match command {
+/// Runs a command: its output and, for `verify`, the failure to report after printing it.
+fn run(command: Command) -> Result<(String, Option<CliError>), CliError> {
+    let done = |out: String| (out, None);
+    let out = match command {
         Command::Algebras { json, algebras } => commands::algebras(&algebras, json),
         Command::Eval { algebra, basis, scalar, json, expr } => {
             commands::eval(&commands::EvalArgs { algebra, basis, scalar, json, expr })
@@ -146,7 +159,11 @@ fn run(command: Command) -> Result<String, CliError> {
         Command::Hermite { json, spec } => hermite::hermite(&spec, json),
         Command::Sample { samples, json, spec } => sample::sample(&spec, samples, json),
         Command::Plot { out, samples, spec } => plot::plot(&spec, &out, samples),
-    }
+        Command::Verify { json, filter } => {
+            return verify::verify(filter.as_deref(), json).map(|v| (v.output, v.failure));
+        }
+    };
+    out.map(done)
 }
 
 /// clap's error as one `error:` line (help and version requests are printed as usual).
@@ -158,7 +175,7 @@ fn clap_failure(e: clap::Error) -> ExitCode {
     let text = e.render().to_string();
     let line = match e.kind() {
         ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand | ErrorKind::MissingSubcommand => {
-            "error: a subcommand is required: algebras, eval, table, codegen, hermite, sample or plot (see gam --help)"
+            "error: a subcommand is required: algebras, eval, table, codegen, hermite, sample, plot or verify (see gam --help)"
                 .to_string()
         }
         _ => first_error_line(&text),
@@ -219,10 +236,16 @@ fn main() -> ExitCode {
         Err(e) => return clap_failure(e),
     };
     match run(cli.command) {
-        Ok(out) => {
+        Ok((out, failure)) => {
             let mut stdout = std::io::stdout().lock();
             match writeln!(stdout, "{out}").and_then(|()| stdout.flush()) {
-                Ok(()) => ExitCode::SUCCESS,
+                Ok(()) => match failure {
+                    None => ExitCode::SUCCESS,
+                    Some(e) => {
+                        eprintln!("error: {e}");
+                        ExitCode::from(e.code)
+                    }
+                },
                 Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => ExitCode::SUCCESS,
                 Err(e) => {
                     eprintln!("error: cannot write the output: {e}");

@@ -1,0 +1,120 @@
+//! `gam verify`: runs the papers' statements (the `gam-verify` registry) as a report.
+
+use crate::error::CliError;
+use crate::output::text_table;
+use gam_verify::Report;
+use serde_json::{Value, json};
+
+/// The printed report and, when some statement does not hold, the error that sets the exit
+/// status (the report is still printed: it says which and why).
+pub struct Verified {
+    /// The report (text table or JSON list).
+    pub output: String,
+    /// `Some` when at least one selected statement does not hold.
+    pub failure: Option<CliError>,
+}
+
+/// Runs every statement whose id, label or paper matches `filter` (case-insensitive
+/// substring; all when `None`).
+pub fn verify(filter: Option<&str>, json: bool) -> Result<Verified, CliError> {
+    let needle = filter.map(str::to_lowercase);
+    let selected: Vec<_> = gam_verify::statements()
+        .filter(|s| {
+            needle.as_ref().is_none_or(|n| {
+                [s.id, s.label, s.paper.key(), s.method.key()].iter().any(|h| h.to_lowercase().contains(n.as_str()))
+            })
+        })
+        .collect();
+    if selected.is_empty() {
+        return Err(CliError::usage(format!(
+            "no statement matches the filter '{}' (ids look like cross2022/lemma-2.2-ii)",
+            filter.unwrap_or_default()
+        )));
+    }
+    // A check that panics is reported as a failed statement; keep stderr for the error line.
+    let previous_hook = std::panic::take_hook();
+    std::panic::set_hook(Box::new(|_| {}));
+    let reports: Vec<Report> = selected.into_iter().map(|s| s.run()).collect();
+    std::panic::set_hook(previous_hook);
+
+    let failed: Vec<&str> = reports.iter().filter(|r| !r.outcome.holds()).map(|r| r.statement.id).collect();
+    let failure = (!failed.is_empty()).then(|| {
+        CliError::math(format!("{} of {} statements do not hold: {}", failed.len(), reports.len(), failed.join(", ")))
+    });
+    let output = if json { json_report(&reports) } else { text_report(&reports) };
+    Ok(Verified { output, failure })
+}
+
+/// The hypotheses of the statement and the notes of its run, one string.
+fn note(r: &Report) -> String {
+    let mut parts: Vec<String> = Vec::new();
+    if !r.statement.hypotheses.is_empty() {
+        parts.push(r.statement.hypotheses.to_string());
+    }
+    parts.extend(r.outcome.notes.iter().cloned());
+    parts.join("; ")
+}
+
+fn millis(r: &Report) -> f64 {
+    r.elapsed.as_secs_f64() * 1e3
+}
+
+fn json_report(reports: &[Report]) -> String {
+    let list: Vec<Value> = reports
+        .iter()
+        .map(|r| {
+            let s = r.statement;
+            json!({
+                "id": s.id,
+                "paper": s.paper.key(),
+                "label": s.label,
+                "statement": s.statement,
+                "method": s.method.key(),
+                "holds": r.outcome.holds(),
+                "checks": r.outcome.checks,
+                "failures": r.outcome.failures,
+                "note": note(r),
+                "time_ms": (millis(r) * 1e3).round() / 1e3,
+            })
+        })
+        .collect();
+    serde_json::to_string_pretty(&Value::Array(list)).unwrap_or_default()
+}
+
+fn text_report(reports: &[Report]) -> String {
+    let mut rows = vec![["id", "label", "method", "holds", "checks", "time"].map(String::from).to_vec()];
+    for r in reports {
+        rows.push(vec![
+            r.statement.id.to_string(),
+            r.statement.label.to_string(),
+            r.statement.method.key().to_string(),
+            if r.outcome.holds() { "yes" } else { "NO" }.to_string(),
+            r.outcome.checks.to_string(),
+            format!("{:.1} ms", millis(r)),
+        ]);
+    }
+    let mut out = text_table(&rows);
+    let mut details = String::new();
+    for r in reports {
+        let n = note(r);
+        if n.is_empty() && r.outcome.failures.is_empty() {
+            continue;
+        }
+        details.push_str(&format!("\n{} ({}): {}\n", r.statement.id, r.statement.label, r.statement.statement));
+        for f in &r.outcome.failures {
+            details.push_str(&format!("  FAILED: {f}\n"));
+        }
+        if !n.is_empty() {
+            details.push_str(&format!("  note: {n}\n"));
+        }
+    }
+    let holding = reports.iter().filter(|r| r.outcome.holds()).count();
+    let total: f64 = reports.iter().map(millis).sum();
+    if !details.is_empty() {
+        out.push('\n');
+        out.push_str(details.trim_end());
+        out.push('\n');
+    }
+    out.push_str(&format!("\n{holding} of {} statements hold ({total:.0} ms)", reports.len()));
+    out
+}
