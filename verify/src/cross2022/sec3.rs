@@ -97,8 +97,11 @@ pub(super) fn times(s: &Pose<MpFloat>, a: (i64, i64), b: (i64, i64)) -> Pose<MpF
     s.scale_pseudoscalar(&Pseudoscalar::new(mp(a.0, a.1), mp(b.0, b.1)))
 }
 
+/// Unit control poses and pseudoscalar multiples of them.
+pub(super) type Poses = (Vec<Pose<MpFloat>>, Vec<Pose<MpFloat>>);
+
 /// Three unit control poses and non-unit versions of them (pseudoscalar multiples).
-pub(super) fn sample_poses() -> Result<(Vec<Pose<MpFloat>>, Vec<Pose<MpFloat>>), String> {
+pub(super) fn sample_poses() -> Result<Poses, String> {
     let unit = vec![
         unit_pose([1, 2, 2], (3, 10), [(1, 2), (-1, 1), (1, 4)])?,
         unit_pose([0, -1, 3], (6, 5), [(2, 1), (1, 3), (-1, 2)])?,

@@ -18,9 +18,9 @@
 //!   The t = 1 formulas and the reversal of multiplicative motions need unit control poses
 //!   (counterexample S0 = 2, S1 = 1).
 
-use super::sec3::{comps, mp, sample_poses, times, unit_pose};
+use super::sec3::{comps, mp, sample_poses};
 use crate::{Checker, Method, Paper, Statement};
-use algebra_core::rational::{Q, ratio};
+use algebra_core::rational::Q;
 use algebra_core::{Field, Jet, MpFloat, Poly, PrecisionGuard, Real, Ring};
 use motion::velocity::{indicatrix_from_derivative, pose_derivative, split_jet, velocity_indicatrix};
 use motion::{AdditiveBezier, Motion, Motor, MultiplicativeBezier, Pose, Pseudoscalar, pseudoscalar};
@@ -456,7 +456,7 @@ fn q_pose(v: [i64; 8]) -> Pose<Q> {
 
 fn corollary_4_6_additive(c: &mut Checker) {
     // Exact: non-unit rational control poses, S and Ṡ from dual numbers over Q.
-    let poses = vec![
+    let poses = [
         q_pose([2, 1, 0, -1, 3, 0, 1, 2]),
         q_pose([1, -2, 1, 0, 0, 1, -1, 1]),
         q_pose([3, 0, 2, 1, -2, 1, 0, 0]),
@@ -476,7 +476,6 @@ fn corollary_4_6_additive(c: &mut Checker) {
             c.equal(format!("n = {n}: Ψ({t}) = 2n S{s}⁻¹ (S{b} - S{a}) exactly"), &psi, &formula);
         }
     }
-    let _ = ratio(1, 2);
     // The motion crate's velocity_indicatrix at 256 bits agrees.
     let _g = PrecisionGuard::new(256);
     let Some((_, non_unit)) = c.ok("poses", sample_poses()) else { return };
@@ -525,5 +524,4 @@ fn corollary_4_6_multiplicative(c: &mut Checker) {
             formula.scalar.to_f64()
         ),
     );
-    let _ = (unit_pose, times);
 }
