@@ -1,7 +1,7 @@
 //! Angelidis, "Hexanions: 6D space for twists", statement by statement.
 //!
 //! A hexanion `<ω, m>` has the matrix form `(ω, m) = [[ [ω]x, m ], [0, 0]]` of eq. (4). The
-//! small helpers below (4x4 matrices over any ring, [`hexanion matrix`](hex), the paper's
+//! small helpers below (4x4 matrices over any ring, the hexanion matrix `hex`, the paper's
 //! closed forms typed in) are an independent reference. Two other computations are compared
 //! with them, at 256-bit MPFR (agreement to >= 70 digits):
 //!
@@ -286,6 +286,10 @@ fn eq_14(c: &mut Checker) {
             );
         }
     }
+    c.note(
+        "OCR: the Notation paragraph is garbled (it says · and × denote the dot product, + and * the cross \
+         products); read · = dot, × = cross, * = the hexanion action (16), (18), as the formulas require",
+    );
     // The rotation case applied to a twist.
     let (name, w, m) = samples().swap_remove(4);
     let s = series(&hex(&w, &m));
@@ -484,6 +488,11 @@ fn eq_37(c: &mut Checker) {
     c.equal("(37): (ω, m)³ = (-|ω|² ω, -(ω × m) × ω)", &h3, &hex(&vscale(&n2.neg_ref(), &w), &left));
     c.equal("(37): (ω, m)³ = (-|ω|² ω, -ω × (m × ω))", &h3, &hex(&vscale(&n2.neg_ref(), &w), &right));
     c.note("ω × m × ω is the same vector in either grouping, |ω|² m - (ω·m) ω");
+    c.equal(
+        "(37): the cube is a rotation hexanion: (-|ω|² ω)·(-ω × m × ω) = 0",
+        &dot(&vscale(&n2.neg_ref(), &w), &left),
+        &Poly::zero(),
+    );
 }
 
 fn eq_38(c: &mut Checker) {

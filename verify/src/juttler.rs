@@ -16,7 +16,8 @@
 //!   Symbolic for (7): `y = 4 v0 · M x` with `M`, `U` of eqs. (10), (11) typed in (the same
 //!   homogeneous point), and `U Uᵀ = |D|⁴ I`. Exact rationals for random `Q` with (8): the
 //!   Euclidean point `y/y0` equals `DualQuaternion::transform_point` and
-//!   `Pose::transform_point` of the corresponding pose.
+//!   `Pose::transform_point` of the corresponding pose; for a `Q` without (8), (12) equals the
+//!   motion of `Q` projected onto (8) (only `Vec(Qε Q~0)` enters).
 //! * `juttler/eq-29`: the Bernstein product formula, symbolic in `t` for all degrees
 //!   `k, l <= 4`; and the TR product `Q_trans(t) Q_rot(t)` of Bézier dual quaternion curves
 //!   (rational control points) equals the Bézier curve whose control points are obtained with
@@ -61,7 +62,7 @@ pub const STATEMENTS: &[Statement] = &[
                     the same point as M x with M, U of eqs. (10), (11)",
         method: Method::Symbolic,
         hypotheses: "y = 4 v0 M x: the same homogeneous point, not the same coordinates. U is orthogonal only up \
-                     to the factor |D|² (U Uᵀ = |D|⁴ I)",
+                     to the factor |D|² (U Uᵀ = |D|⁴ I). (8) is not needed: a Q off the quadric acts as its projection onto it",
         check: eq_12,
     },
     Statement {
@@ -314,6 +315,14 @@ fn eq_12(c: &mut Checker) {
     let expect: [[Poly; 3]; 3] =
         std::array::from_fn(|i| std::array::from_fn(|j| if i == j { d4.clone() } else { Poly::zero() }));
     c.equal("(11): U Uᵀ = |D|⁴ I", &uut, &expect);
+    // Without (8): (12) still defines a rigid motion, the one of Q with its dual part projected onto (8).
+    let raw = Lcg(120).dq();
+    let x: [Q; 3] = [q(1), q(-2), ratio(1, 3)];
+    let (y0, y) = image12(&raw, &q(1), &x);
+    let ours = y.map(|e| e / &y0);
+    let projected = project_plucker(&raw).transform_point(&x);
+    c.equal("(12) for Q without (8) = the motion of Q projected onto (8)", &Some(ours), &projected);
+    c.note("(12) does not need (8): only Vec(Qε Q~0) enters, so a Q off the quadric acts as its projection onto it");
     c.note("(12) gives 4 v0 · M x: the same homogeneous point as (10); U of (11) is orthogonal only after division by |D|²");
     // Exact instances with (8): the Euclidean image equals the library's.
     let mut rng = Lcg(12);
