@@ -1,63 +1,16 @@
 //! End-to-end tests of the `gam` binary: the contract's examples (shared/cli.md), every
 //! scalar type, tables, and the error rules (one `error:` line, exit 2 or 1, empty stdout).
 
+mod common;
+
+use common::{TempFile, fails, gam, ok};
 use serde_json::Value;
-use std::path::PathBuf;
-use std::process::{Command, Output};
-
-fn gam(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_gam")).args(args).output().expect("run gam")
-}
-
-/// Runs a successful command and returns stdout without its final newline.
-fn ok(args: &[&str]) -> String {
-    let out = gam(args);
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert!(out.status.success(), "gam {args:?} failed: {stderr}");
-    assert!(stderr.is_empty(), "gam {args:?} wrote to stderr: {stderr}");
-    let stdout = String::from_utf8(out.stdout).expect("utf-8");
-    stdout.strip_suffix('\n').expect("output ends with a newline").to_string()
-}
 
 /// `gam eval --json ARGS...` parsed as JSON.
 fn eval_json(args: &[&str]) -> Value {
     let mut all = vec!["eval", "--json"];
     all.extend_from_slice(args);
     serde_json::from_str(&ok(&all)).expect("valid JSON")
-}
-
-/// Runs a failing command: checks the exit status, empty stdout and exactly one stderr line
-/// starting `error:`, and returns that line.
-fn fails(args: &[&str], code: i32) -> String {
-    let out = gam(args);
-    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
-    assert_eq!(out.status.code(), Some(code), "gam {args:?}: {stderr}");
-    assert!(out.stdout.is_empty(), "gam {args:?} printed {:?}", String::from_utf8_lossy(&out.stdout));
-    assert!(!stderr.contains("panicked"), "{stderr}");
-    let lines: Vec<&str> = stderr.lines().collect();
-    assert_eq!(lines.len(), 1, "gam {args:?}: expected one stderr line, got {stderr:?}");
-    assert!(lines[0].starts_with("error: "), "{stderr}");
-    lines[0].to_string()
-}
-
-/// A file in the temp directory, removed on drop.
-struct TempFile(PathBuf);
-
-impl TempFile {
-    fn new(name: &str, text: &str) -> Self {
-        let path = std::env::temp_dir().join(format!("gam-cli-test-{}-{name}", std::process::id()));
-        std::fs::write(&path, text).expect("write temp file");
-        TempFile(path)
-    }
-    fn path(&self) -> &str {
-        self.0.to_str().expect("utf-8 path")
-    }
-}
-
-impl Drop for TempFile {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_file(&self.0);
-    }
 }
 
 #[test]

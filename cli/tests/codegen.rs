@@ -2,11 +2,9 @@
 //! compile and check against the runtime), the stats are the documented counts, and bad type
 //! lists are usage errors.
 
-use std::process::{Command, Output};
+mod common;
 
-fn gam(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_gam")).args(args).output().expect("gam runs")
-}
+use common::gam;
 
 #[test]
 fn emitted_module_matches_the_snapshot() {

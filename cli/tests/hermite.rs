@@ -3,11 +3,12 @@
 //! JSON shape (keys, basis order, zeros omitted, shortest round-trip f64 strings, identical to
 //! the library), the human form, and the error rules (one `error:` line, exit 2 or 1).
 
+mod common;
+
+use common::{TempFile, fails, ok};
 use motion::hermite::hermite_segment;
 use motion::{EndCondition, Pseudoscalar, SegmentKind, Shape};
 use serde_json::Value;
-use std::path::PathBuf;
-use std::process::{Command, Output};
 
 const BLADES: [&str; 8] = ["1", "e12", "e13", "e23", "e1inf", "e2inf", "e3inf", "e123inf"];
 
@@ -23,54 +24,9 @@ const CONTRACT_EXAMPLE: &str = r#"{
 }
 "#;
 
-fn gam(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_gam")).args(args).output().expect("run gam")
-}
-
-/// A spec file in the temp directory, removed on drop.
-struct Spec(PathBuf);
-
-impl Spec {
-    fn new(name: &str, text: &str) -> Self {
-        let path = std::env::temp_dir().join(format!("gam-hermite-test-{}-{name}.json", std::process::id()));
-        std::fs::write(&path, text).expect("write spec");
-        Spec(path)
-    }
-    fn path(&self) -> &str {
-        self.0.to_str().expect("utf-8 path")
-    }
-}
-
-impl Drop for Spec {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_file(&self.0);
-    }
-}
-
-fn ok(args: &[&str]) -> String {
-    let out = gam(args);
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert!(out.status.success(), "gam {args:?} failed: {stderr}");
-    assert!(stderr.is_empty(), "gam {args:?} wrote to stderr: {stderr}");
-    let stdout = String::from_utf8(out.stdout).expect("utf-8");
-    stdout.strip_suffix('\n').expect("output ends with a newline").to_string()
-}
-
-fn fails(args: &[&str], code: i32) -> String {
-    let out = gam(args);
-    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
-    assert_eq!(out.status.code(), Some(code), "gam {args:?}: {stderr}");
-    assert!(out.stdout.is_empty(), "gam {args:?} printed {:?}", String::from_utf8_lossy(&out.stdout));
-    assert!(!stderr.contains("panicked"), "{stderr}");
-    let lines: Vec<&str> = stderr.lines().collect();
-    assert_eq!(lines.len(), 1, "gam {args:?}: expected one stderr line, got {stderr:?}");
-    assert!(lines[0].starts_with("error: "), "{stderr}");
-    lines[0].to_string()
-}
-
 /// `gam hermite --json` on a spec text, parsed.
 fn hermite_json(name: &str, text: &str) -> Value {
-    let spec = Spec::new(name, text);
+    let spec = TempFile::new(&format!("{name}.json"), text);
     serde_json::from_str(&ok(&["hermite", "--json", spec.path()])).expect("valid JSON")
 }
 
@@ -304,7 +260,7 @@ fn defaults_and_normalised_axes() {
 
 #[test]
 fn human_output() {
-    let spec = Spec::new("human", CONTRACT_EXAMPLE);
+    let spec = TempFile::new("human.json", CONTRACT_EXAMPLE);
     let out = ok(&["hermite", spec.path()]);
     let lines: Vec<&str> = out.lines().collect();
     assert_eq!(lines[0], "additive segment of degree 3");
@@ -322,7 +278,7 @@ fn human_output() {
 #[test]
 fn input_errors() {
     let run = |name: &str, text: &str, code: i32| {
-        let spec = Spec::new(name, text);
+        let spec = TempFile::new(&format!("{name}.json"), text);
         fails(&["hermite", "--json", spec.path()], code)
     };
     let e = fails(&["hermite", "/nonexistent/spec.json"], 2);

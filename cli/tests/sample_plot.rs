@@ -4,12 +4,13 @@
 //! `body_point`, the sample-count rules, the SVG, and the error rules (one `error:` line,
 //! exit 2).
 
+mod common;
+
+use common::{TempFile, fails, ok};
 use motion::hermite::hermite_segment;
 use motion::velocity::velocity;
 use motion::{AdditiveBezier, EndCondition, Motion, MultiplicativeBezier, Pseudoscalar, SegmentKind, Shape};
 use serde_json::Value;
-use std::path::PathBuf;
-use std::process::{Command, Output};
 
 /// The example of shared/cli.md, verbatim (with its `//` comment).
 const CONTRACT_EXAMPLE: &str = r#"{
@@ -34,53 +35,6 @@ fn sec52(kind: &str, extra: &str) -> String {
     )
 }
 
-fn gam(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_gam")).args(args).output().expect("run gam")
-}
-
-/// A file in the temp directory, removed on drop.
-struct TempFile(PathBuf);
-
-impl TempFile {
-    fn new(name: &str) -> Self {
-        TempFile(std::env::temp_dir().join(format!("gam-sample-test-{}-{name}", std::process::id())))
-    }
-    fn with(name: &str, text: &str) -> Self {
-        let f = TempFile::new(name);
-        std::fs::write(&f.0, text).expect("write spec");
-        f
-    }
-    fn path(&self) -> &str {
-        self.0.to_str().expect("utf-8 path")
-    }
-}
-
-impl Drop for TempFile {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_file(&self.0);
-    }
-}
-
-fn ok(args: &[&str]) -> String {
-    let out = gam(args);
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert!(out.status.success(), "gam {args:?} failed: {stderr}");
-    assert!(stderr.is_empty(), "gam {args:?} wrote to stderr: {stderr}");
-    String::from_utf8(out.stdout).expect("utf-8")
-}
-
-fn fails(args: &[&str], code: i32) -> String {
-    let out = gam(args);
-    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
-    assert_eq!(out.status.code(), Some(code), "gam {args:?}: {stderr}");
-    assert!(out.stdout.is_empty(), "gam {args:?} printed {:?}", String::from_utf8_lossy(&out.stdout));
-    assert!(!stderr.contains("panicked"), "{stderr}");
-    let lines: Vec<&str> = stderr.lines().collect();
-    assert_eq!(lines.len(), 1, "gam {args:?}: expected one stderr line, got {stderr:?}");
-    assert!(lines[0].starts_with("error: "), "{stderr}");
-    lines[0].to_string()
-}
-
 /// One parsed sample.
 #[derive(Debug)]
 struct Sample {
@@ -97,7 +51,7 @@ fn num(v: &Value) -> f64 {
 
 /// `gam sample --json` on a spec text, parsed (and its shape checked).
 fn sample_json(name: &str, text: &str, n: usize) -> Vec<Sample> {
-    let spec = TempFile::with(name, text);
+    let spec = TempFile::new(name, text);
     let out = ok(&["sample", spec.path(), "--samples", &n.to_string(), "--json"]);
     let value: Value = serde_json::from_str(&out).expect("valid JSON");
     let obj = value.as_object().expect("an object");
@@ -231,7 +185,7 @@ fn body_point_samples_agree_with_the_library() {
 
 #[test]
 fn sample_counts() {
-    let spec = TempFile::with("counts.json", CONTRACT_EXAMPLE);
+    let spec = TempFile::new("counts.json", CONTRACT_EXAMPLE);
     let s = sample_json("counts2.json", CONTRACT_EXAMPLE, 2);
     assert_eq!((s[0].t, s[1].t), (0.0, 1.0));
     for n in ["1", "0"] {
@@ -246,7 +200,7 @@ fn sample_counts() {
 
 #[test]
 fn human_form_is_a_table() {
-    let spec = TempFile::with("human.json", CONTRACT_EXAMPLE);
+    let spec = TempFile::new("human.json", CONTRACT_EXAMPLE);
     let out = ok(&["sample", spec.path(), "--samples", "3"]);
     let lines: Vec<&str> = out.lines().collect();
     assert_eq!(lines.len(), 1 + 2 + 3, "{out}");
@@ -261,23 +215,23 @@ fn human_form_is_a_table() {
 
 #[test]
 fn spec_errors() {
-    let bad = TempFile::with("bad-body.json", &sec52("additive", r#" "body_point": [1, 2],"#));
+    let bad = TempFile::new("bad-body.json", &sec52("additive", r#" "body_point": [1, 2],"#));
     let line = fails(&["sample", bad.path(), "--samples", "3"], 2);
     assert!(line.contains("invalid spec"), "{line}");
     fails(&["sample", "/nonexistent/gam-spec.json", "--samples", "3"], 2);
     // `gam hermite` keeps its contract: `body_point` is not one of its fields.
-    let body = TempFile::with("hermite-body.json", &sec52("additive", r#" "body_point": [1, 2, 3],"#));
+    let body = TempFile::new("hermite-body.json", &sec52("additive", r#" "body_point": [1, 2, 3],"#));
     let line = fails(&["hermite", body.path()], 2);
     assert!(line.contains("body_point"), "{line}");
 }
 
 #[test]
 fn plot_writes_an_svg() {
-    let spec = TempFile::with("plot.json", &sec52("multiplicative", r#" "body_point": [0, 1, 0],"#));
-    let out = TempFile::new("plot.svg");
+    let spec = TempFile::new("plot.json", &sec52("multiplicative", r#" "body_point": [0, 1, 0],"#));
+    let out = TempFile::empty("plot.svg");
     let msg = ok(&["plot", spec.path(), "--out", out.path(), "--samples", "50"]);
     assert!(msg.starts_with("wrote "), "{msg}");
-    let svg = std::fs::read_to_string(&out.0).expect("the SVG was written");
+    let svg = std::fs::read_to_string(out.path()).expect("the SVG was written");
     assert!(svg.starts_with("<svg"), "{}", &svg[..svg.len().min(100)]);
     assert!(svg.trim_end().ends_with("</svg>"));
     for text in [
@@ -295,12 +249,12 @@ fn plot_writes_an_svg() {
     assert!(svg.contains("<polyline"), "no line series");
     // The default sample count.
     ok(&["plot", spec.path(), "--out", out.path()]);
-    assert!(std::fs::read_to_string(&out.0).unwrap().starts_with("<svg"));
+    assert!(std::fs::read_to_string(out.path()).unwrap().starts_with("<svg"));
 }
 
 #[test]
 fn plot_to_a_bad_path_is_exit_2() {
-    let spec = TempFile::with("plot-bad.json", CONTRACT_EXAMPLE);
+    let spec = TempFile::new("plot-bad.json", CONTRACT_EXAMPLE);
     let line = fails(&["plot", spec.path(), "--out", "/nonexistent-dir/gam/out.svg"], 2);
     assert!(line.contains("cannot write `/nonexistent-dir/gam/out.svg`"), "{line}");
     let dir = std::env::temp_dir();

@@ -1,0 +1,70 @@
+//! What every end-to-end test of the `gam` binary needs: run it, insist on success (stdout,
+//! nothing on stderr) or on the error contract (exit status, empty stdout, exactly one
+//! `error:` line), and temporary input files.
+#![allow(dead_code)] // each test binary uses its own subset
+
+use std::path::PathBuf;
+use std::process::{Command, Output};
+
+/// Runs `gam` with `args`.
+pub fn gam(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_gam")).args(args).output().expect("run gam")
+}
+
+/// Runs a successful command and returns stdout without its final newline.
+pub fn ok(args: &[&str]) -> String {
+    let out = gam(args);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "gam {args:?} failed: {stderr}");
+    assert!(stderr.is_empty(), "gam {args:?} wrote to stderr: {stderr}");
+    let stdout = String::from_utf8(out.stdout).expect("utf-8");
+    stdout.strip_suffix('\n').expect("output ends with a newline").to_string()
+}
+
+/// Asserts the error contract on `stderr` (one line starting `error: `, no panic) and returns
+/// that line.
+pub fn one_error_line(args: &[&str], stderr: &str) -> String {
+    assert!(!stderr.contains("panicked"), "{stderr}");
+    let lines: Vec<&str> = stderr.lines().collect();
+    assert_eq!(lines.len(), 1, "gam {args:?}: expected one stderr line, got {stderr:?}");
+    assert!(lines[0].starts_with("error: "), "{stderr}");
+    lines[0].to_string()
+}
+
+/// Runs a failing command: checks the exit status, empty stdout and exactly one stderr line
+/// starting `error:`, and returns that line.
+pub fn fails(args: &[&str], code: i32) -> String {
+    let out = gam(args);
+    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert_eq!(out.status.code(), Some(code), "gam {args:?}: {stderr}");
+    assert!(out.stdout.is_empty(), "gam {args:?} printed {:?}", String::from_utf8_lossy(&out.stdout));
+    one_error_line(args, &stderr)
+}
+
+/// A file in the temp directory (unique per test process), removed on drop.
+pub struct TempFile(PathBuf);
+
+impl TempFile {
+    /// A path for a file the test (or gam) will write.
+    pub fn empty(name: &str) -> Self {
+        TempFile(std::env::temp_dir().join(format!("gam-cli-test-{}-{name}", std::process::id())))
+    }
+
+    /// A file holding `text`.
+    pub fn new(name: &str, text: &str) -> Self {
+        let f = TempFile::empty(name);
+        std::fs::write(&f.0, text).expect("write temp file");
+        f
+    }
+
+    /// The path as a command-line argument.
+    pub fn path(&self) -> &str {
+        self.0.to_str().expect("utf-8 path")
+    }
+}
+
+impl Drop for TempFile {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_file(&self.0);
+    }
+}
