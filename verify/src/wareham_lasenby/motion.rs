@@ -7,9 +7,12 @@ use crate::Checker;
 use algebra_core::{Algebra, Basis, Field, MpFloat, Multivector, Poly, PrecisionGuard, Real, Ring, rational::Q};
 use std::sync::Arc;
 
+/// One exact instance: q, (u, v, w), t, σ as ratios.
+type ExactData = ((i64, i64), (i64, i64, i64), [(i64, i64); 3], (i64, i64));
+
 /// Exact instances: (q with cos = (1-q²)/(1+q²), sin = 2q/(1+q²)), (u, v, w), t, σ (a rational
 /// stand-in for sinc(ψ/2): the identities hold for every value of it).
-const EXACT: &[((i64, i64), (i64, i64, i64), [(i64, i64); 3], (i64, i64))] = &[
+const EXACT: &[ExactData] = &[
     ((1, 3), (1, 2, 3), [(1, 2), (-2, 3), (5, 4)], (5, 7)),
     ((2, 7), (2, -1, 1), [(3, 1), (1, 5), (-1, 7)], (-3, 11)),
     ((-5, 4), (3, -2, 5), [(1, 1), (1, 1), (1, 1)], (1, 1)),
@@ -280,7 +283,7 @@ pub(super) fn theorem_9(c: &mut Checker) {
             format!("Theorem 9 without 0 < ||ab|| < π: {what}"),
             works,
             format!(
-                "{what}: the formulas give {}",
+                "the formulas give {}",
                 if l.coeffs().iter().all(Real::is_finite) {
                     "a bivector whose exp is not R"
                 } else {

@@ -149,8 +149,11 @@ pub(super) fn lemma_2(c: &mut Checker) {
     );
 }
 
-/// Concrete instances (φ, (u, v, w) of the plane, t) for the float checks.
-pub(super) const INSTANCES: &[((i64, i64), (i64, i64, i64), [(i64, i64); 3])] = &[
+/// One float instance: φ as a ratio, the (u, v, w) of the plane, t as three ratios.
+pub(super) type Instance = ((i64, i64), (i64, i64, i64), [(i64, i64); 3]);
+
+/// Concrete instances for the float checks.
+pub(super) const INSTANCES: &[Instance] = &[
     ((3, 10), (1, 2, 3), [(1, 2), (-2, 3), (5, 4)]),
     ((17, 10), (2, -1, 1), [(3, 1), (1, 5), (-1, 7)]),
     ((29, 10), (0, 0, 1), [(2, 3), (3, 4), (7, 5)]),
@@ -162,7 +165,7 @@ pub(super) const INSTANCES: &[((i64, i64), (i64, i64, i64), [(i64, i64); 3])] = 
 /// (φ, unit plane P, t) over MpFloat for one instance.
 pub(super) fn instance(
     alg: &Arc<Algebra>,
-    ((pn, pd), (u, v, w), t): &((i64, i64), (i64, i64, i64), [(i64, i64); 3]),
+    ((pn, pd), (u, v, w), t): &Instance,
 ) -> (MpFloat, Multivector<MpFloat>, Multivector<MpFloat>) {
     let (m, big_n) = pythagorean(&Q::from_i64(*u), &Q::from_i64(*v), &Q::from_i64(*w));
     let p = plane(alg, &m).scale(&Q::one().div_ref(&big_n));
