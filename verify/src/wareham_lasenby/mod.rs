@@ -13,9 +13,11 @@
 //!   blade P = e14.
 //! * `lemma-2` (symbolic): α1 = α2 = 0 and the closed form of α4 (k <= 14); B^(2k), B^(2k+1)
 //!   for k <= 3; and the induction step with a symbolic k (so it holds for all k).
-//! * `theorem-3` (mpfr-256): the proof's identities tnP + Ptn = 2P t_perp n and
-//!   PtnP = (t_par - t_perp) n symbolically; the closed form against the runtime exp
-//!   (scaling and squaring) and the Taylor series to 70 digits.
+//! * `theorem-3` (symbolic, then mpfr-256): the proof's identities tnP + Ptn = 2P t_perp n and
+//!   PtnP = (t_par - t_perp) n; the closed form G(λ) at (λφ, λt) solves G' = B G, G(0) = 1
+//!   (symbolic c = cos λφ, s = sin λφ with c' = -φs, s' = φc), which characterises exp(λB);
+//!   and the closed form against the runtime exp (scaling and squaring) and the Taylor series
+//!   to 70 digits.
 //! * `lemma-5` (exact): the twist is a rotor, Lemma 5's form equals eq. (2) which equals
 //!   Theorem 3 at (ψ/2, t/2), exactly on rational points of the circle; and against the
 //!   runtime exp at 256 bits.
@@ -63,7 +65,7 @@ pub const STATEMENTS: &[Statement] = &[
         label: "Theorem 3",
         statement: "exp(φP + tn) = [cos φ + sin φ P][1 + t_perp n] + sinc(φ) t_par n, t_par the component of t in \
                     the plane of P and t_perp = t - t_par",
-        method: Method::MpFloat,
+        method: Method::Symbolic,
         hypotheses: "",
         check: powers::theorem_3,
     },

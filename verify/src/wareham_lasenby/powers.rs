@@ -212,6 +212,26 @@ pub(super) fn theorem_3(c: &mut Checker) {
         &(&(&pu * &tn) * &pu),
         &(&(&t_par - &t_perp) * &nn).scale(&big_n.mul_ref(&big_n)),
     );
+    // The closed form as the solution of G' = B G, G(0) = 1 (which characterises exp(λB)):
+    // G(λ) = [c + sP][1 + λ t_perp n] + (s/φ) t_par n with c = cos λφ, s = sin λφ, so
+    // d/dλ = ∂_λ - φ s ∂_c + φ c ∂_s. With φ = N φ0 (φP = φ0 P_u) the multiple φG is polynomial.
+    let (cc, ss, lam, phi0) = (Poly::var("c"), Poly::var("s"), Poly::var("lambda"), Poly::var("phi0"));
+    let phi = big_n.mul_ref(&phi0);
+    let one = scalar(&alg, Poly::one());
+    let phi_g = &(&(&scalar(&alg, phi.mul_ref(&cc)) + &pu.scale(&phi0.mul_ref(&ss)))
+        * &(&one + &(&t_perp * &nn).scale(&lam)))
+        + &(&t_par * &nn).scale(&ss);
+    let d = |p: &Poly| {
+        p.derivative("lambda")
+            .sub_ref(&phi.mul_ref(&ss).mul_ref(&p.derivative("c")))
+            .add_ref(&phi.mul_ref(&cc).mul_ref(&p.derivative("s")))
+    };
+    let b = &pu.scale(&phi0) + &tn;
+    c.equal_mv("d/dλ G(λ) = B G(λ) for Theorem 3's form at (λφ, λt) (symbolic)", &phi_g.map_coeffs(d), &(&b * &phi_g));
+    let at0 = phi_g.map_coeffs(|p| {
+        p.substitute("lambda", &Poly::zero()).substitute("c", &Poly::one()).substitute("s", &Poly::zero())
+    });
+    c.equal_mv("G(0) = 1", &at0, &one.scale(&phi));
     // The closed form against the runtime exp (scaling and squaring) and the Taylor series.
     let _g = PrecisionGuard::new(256);
     for inst in INSTANCES {
