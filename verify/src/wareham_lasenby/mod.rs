@@ -18,11 +18,12 @@
 //!   (symbolic c = cos λφ, s = sin λφ with c' = -φs, s' = φc), which characterises exp(λB);
 //!   and the closed form against the runtime exp (scaling and squaring) and the Taylor series
 //!   to 70 digits.
-//! * `lemma-5` (exact): the twist is a rotor, Lemma 5's form equals eq. (2) which equals
-//!   Theorem 3 at (ψ/2, t/2), exactly on rational points of the circle; and against the
-//!   runtime exp at 256 bits.
-//! * `lemma-6` (exact): the expression equals the translator 1 + n t'_par/2, t'_par is a vector
-//!   in the plane, and it maps F(y) to F(y + t'_par); the sign of the prose after it.
+//! * `lemma-5` (symbolic, exact, mpfr-256): rev(τ) τ = cos² + sin² and Lemma 5's form equals
+//!   eq. (2) with symbolic cos, sin, sinc, P, t; exactly on rational points of the circle also
+//!   eq. (2) = Theorem 3 at (ψ/2, t/2); and against the runtime exp at 256 bits.
+//! * `lemma-6` (symbolic, exact, mpfr-256): the expression equals the translator
+//!   1 + n t'_par/2 with t'_par a vector in the plane; exactly, it maps F(y) to F(y + t'_par);
+//!   the sign of the prose after it.
 //! * `theorem-7`, `theorem-8` (symbolic): R rev(R) = cos² + sin² and R n rev(R) = (cos² + sin²) n
 //!   for Theorem 3's form with symbolic cos, sin, sinc, P, t; runtime exp(B) at 256 bits; a
 //!   counterexample to Theorem 8 for the non-Euclidean P = e14.
@@ -75,7 +76,7 @@ pub const STATEMENTS: &[Statement] = &[
         label: "Lemma 5",
         statement: "exp(ψ/2 P + tn/2) = [1 + sinc(ψ/2) t_par n/2 rev(τ(ψ, P, -t_perp))] τ(ψ, P, -t_perp) with the \
                     twist τ(ψ, P, a) = [cos(ψ/2) + sin(ψ/2) P][1 + na/2]",
-        method: Method::Exact,
+        method: Method::Symbolic,
         hypotheses: "",
         check: motion::lemma_5,
     },
@@ -85,7 +86,7 @@ pub const STATEMENTS: &[Statement] = &[
         label: "Lemma 6",
         statement: "1 + sinc(ψ/2) t_par n/2 rev(τ(ψ, P, -t_perp)) is a rotor translating along \
                     t'_par = -sinc(ψ/2) t_par (cos(ψ/2) - sin(ψ/2) P)",
-        method: Method::Exact,
+        method: Method::Symbolic,
         hypotheses: "",
         check: motion::lemma_6,
     },

@@ -52,8 +52,51 @@ fn lemma_5_sides<T: Ring>(
     (rhs, eq2, tau)
 }
 
+/// Symbolic parts: (P_u, c, s0, σ, t_par = x⌋P_u, t_perp = h m, c² + s²) with P = P_u/N,
+/// cos = c, sin = s0 N (so sin P = s0 P_u), σ standing for sinc.
+struct SymbolicParts {
+    pu: Multivector<Poly>,
+    c: Poly,
+    s0: Poly,
+    sigma: Poly,
+    t_par: Multivector<Poly>,
+    t_perp: Multivector<Poly>,
+    norm: Poly,
+}
+
+fn symbolic_parts(alg: &Arc<Algebra>) -> SymbolicParts {
+    let (m, big_n) = pythagorean(&Poly::var("u"), &Poly::var("v"), &Poly::var("w"));
+    let pu = plane(alg, &m);
+    let (c, s0) = (Poly::var("c"), Poly::var("s0"));
+    let t_par = vector(alg, [Poly::var("x1"), Poly::var("x2"), Poly::var("x3")]).lc(&pu);
+    let t_perp = vector(alg, m).scale(&Poly::var("h"));
+    let s = s0.mul_ref(&big_n);
+    let norm = c.mul_ref(&c).add_ref(&s.mul_ref(&s));
+    SymbolicParts { pu, c, s0, sigma: Poly::var("sigma"), t_par, t_perp, norm }
+}
+
+/// Symbolic Lemma 5/6 pieces: (τ = τ(ψ, P, -t_perp), X = 1 + σ t_par n/2 rev(τ)).
+fn symbolic_twist(alg: &Arc<Algebra>, sp: &SymbolicParts) -> (Multivector<Poly>, Multivector<Poly>) {
+    let one = scalar(alg, Poly::one());
+    let half = Poly::from_ratio(1, 2);
+    let rot = &scalar(alg, sp.c.clone()) + &sp.pu.scale(&sp.s0);
+    let tau = &rot * &(&one - &(&n(alg) * &sp.t_perp).scale(&half));
+    let x = &one + &(&(&sp.t_par * &n(alg)).scale(&sp.sigma.mul_ref(&half)) * &tau.reverse());
+    (tau, x)
+}
+
 pub(super) fn lemma_5(c: &mut Checker) {
     let alg = cga();
+    // Symbolic: rev(τ) τ = cos² + sin² (= 1), so [1 + σ t_par n/2 rev(τ)] τ = τ + σ t_par n/2.
+    let sp = symbolic_parts(&alg);
+    let (tau, x) = symbolic_twist(&alg, &sp);
+    c.equal_mv("rev(τ) τ = cos² + sin² (symbolic)", &(&tau.reverse() * &tau), &scalar(&alg, sp.norm.clone()));
+    let eq2_term = (&sp.t_par * &n(&alg)).scale(&sp.sigma.mul_ref(&Poly::from_ratio(1, 2)));
+    c.equal_mv(
+        "[1 + σ t_par n/2 rev(τ)] τ = τ + (cos² + sin²) σ t_par n/2 (symbolic)",
+        &(&x * &tau),
+        &(&tau + &eq2_term.scale(&sp.norm)),
+    );
     let one = scalar(&alg, Q::one());
     for i in 0..EXACT.len() {
         let ((cs, ss), p, t, sigma) = exact_instance(&alg, i);
@@ -84,6 +127,17 @@ pub(super) fn lemma_5(c: &mut Checker) {
 
 pub(super) fn lemma_6(c: &mut Checker) {
     let alg = cga();
+    // Symbolic: X = 1 + n t'_par/2 with t'_par = -σ t_par (cos - sin P), a vector in the plane.
+    let sp = symbolic_parts(&alg);
+    let (_, x) = symbolic_twist(&alg, &sp);
+    let tp_sym = (&sp.t_par * &(&scalar(&alg, sp.c.clone()) - &sp.pu.scale(&sp.s0))).scale(&sp.sigma.neg_ref());
+    c.equal_mv("t'_par is a vector (symbolic)", &tp_sym.grade(1), &tp_sym);
+    c.equal_mv("t'_par lies in the plane (symbolic)", &tp_sym.op(&sp.pu), &Multivector::zero(&alg, Basis::Blade));
+    c.equal_mv(
+        "1 + σ t_par n/2 rev(τ) = 1 + n t'_par/2 (symbolic)",
+        &x,
+        &(&scalar(&alg, Poly::one()) + &(&n(&alg) * &tp_sym).scale(&Poly::from_ratio(1, 2))),
+    );
     let one = scalar(&alg, Q::one());
     let nn = n::<Q>(&alg);
     let half = Q::from_ratio(1, 2);
@@ -151,16 +205,11 @@ pub(super) fn lemma_6(c: &mut Checker) {
 /// Theorem 3's closed form with symbolic cos = c, sin = s0 N, σ = sinc, P = P_u/N,
 /// t_perp = h m, t_par = x⌋P_u: returns (R, c² + s²).
 fn symbolic_rotor(alg: &Arc<Algebra>) -> (Multivector<Poly>, Poly) {
-    let (m, big_n) = pythagorean(&Poly::var("u"), &Poly::var("v"), &Poly::var("w"));
-    let pu = plane(alg, &m);
-    let (cc, s0) = (Poly::var("c"), Poly::var("s0"));
-    let t_par = vector(alg, [Poly::var("x1"), Poly::var("x2"), Poly::var("x3")]).lc(&pu);
-    let t_perp = vector(alg, m).scale(&Poly::var("h"));
+    let sp = symbolic_parts(alg);
     let nn = n(alg);
-    let rot = &scalar(alg, cc.clone()) + &pu.scale(&s0);
-    let r = &(&rot * &(&scalar(alg, Poly::one()) + &(&t_perp * &nn))) + &(&t_par * &nn).scale(&Poly::var("sigma"));
-    let s = s0.mul_ref(&big_n);
-    (r, cc.mul_ref(&cc).add_ref(&s.mul_ref(&s)))
+    let rot = &scalar(alg, sp.c.clone()) + &sp.pu.scale(&sp.s0);
+    let r = &(&rot * &(&scalar(alg, Poly::one()) + &(&sp.t_perp * &nn))) + &(&sp.t_par * &nn).scale(&sp.sigma);
+    (r, sp.norm)
 }
 
 pub(super) fn theorem_7(c: &mut Checker) {
