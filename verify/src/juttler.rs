@@ -322,8 +322,7 @@ fn eq_12(c: &mut Checker) {
     let ours = y.map(|e| e / &y0);
     let projected = project_plucker(&raw).transform_point(&x);
     c.equal("(12) for Q without (8) = the motion of Q projected onto (8)", &Some(ours), &projected);
-    c.note("(12) does not need (8): only Vec(Qε Q~0) enters, so a Q off the quadric acts as its projection onto it");
-    c.note("(12) gives 4 v0 · M x: the same homogeneous point as (10); U of (11) is orthogonal only after division by |D|²");
+    // (The findings are in the statement's `hypotheses`: 4 v0 M x, U U^T = |D|^4 I, (8) not needed.)
     // Exact instances with (8): the Euclidean image equals the library's.
     let mut rng = Lcg(12);
     for k in 0..4 {
