@@ -10,66 +10,25 @@ mod common;
 mod jaklic;
 
 use algebra_core::{MpFloat, PrecisionGuard, Real};
-use common::{diff, size};
+use common::{bernstein, de_casteljau, diff, size, value_and_derivative};
 use motion::hermite::{self, HermiteSegment, HermiteShapes};
 use motion::joins;
 use motion::{Continuity, EndCondition, JoinError, Motor, Pose, Pseudoscalar, SegmentKind, Shape};
-use num_dual::{Dual64, DualNum};
+use num_dual::Dual64;
 
 const KINDS: [SegmentKind; 2] = [SegmentKind::Additive, SegmentKind::Multiplicative];
 
-fn lift(s: &Pose<f64>) -> Pose<Dual64> {
-    let m = s.as_motor();
-    let d = |x: &f64| Dual64::from(*x);
-    Pose(Motor::new(
-        d(&m.scalar),
-        d(&m.e12),
-        d(&m.e13),
-        d(&m.e23),
-        d(&m.e1inf),
-        d(&m.e2inf),
-        d(&m.e3inf),
-        d(&m.e123inf),
-    ))
-}
-
-fn split(s: &Pose<Dual64>) -> (Pose<f64>, Motor<f64>) {
-    let m = s.as_motor();
-    let parts = [&m.scalar, &m.e12, &m.e13, &m.e23, &m.e1inf, &m.e2inf, &m.e3inf, &m.e123inf];
-    let mk = |c: [f64; 8]| Motor::new(c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7]);
-    (Pose(mk(parts.map(|x| x.re))), mk(parts.map(|x| x.eps)))
-}
-
-fn binomial(n: usize, k: usize) -> f64 {
-    (0..k).fold(1.0, |acc, i| acc * (n - i) as f64 / (i + 1) as f64)
-}
-
 /// A segment evaluated at a dual parameter: Bernstein sum (eq. 18) or slerp tableau (Fig. 2).
 fn evaluate(seg: &HermiteSegment<f64>, t: Dual64) -> Pose<Dual64> {
-    let controls = &seg.control_poses;
     match seg.kind {
-        SegmentKind::Additive => {
-            let n = controls.len() - 1;
-            let mut sum = Motor::<Dual64>::zero();
-            for (i, c) in controls.iter().enumerate() {
-                let w = (Dual64::from(1.0) - t).powi((n - i) as i32) * t.powi(i as i32) * binomial(n, i);
-                sum = &sum + &lift(c).0.scale(&w);
-            }
-            Pose(sum)
-        }
-        SegmentKind::Multiplicative => {
-            let mut level: Vec<Pose<Dual64>> = controls.iter().map(lift).collect();
-            while level.len() > 1 {
-                level = level.windows(2).map(|w| Pose::slerp(&w[0], &w[1], &t).unwrap()).collect();
-            }
-            level.pop().unwrap()
-        }
+        SegmentKind::Additive => bernstein(&seg.control_poses, &t),
+        SegmentKind::Multiplicative => de_casteljau(&seg.control_poses, &t),
     }
 }
 
 /// `(S(t), Ψ(t) = 2 S⁻¹ S')` of a segment at `t` by a dual number.
 fn pose_and_indicatrix(seg: &HermiteSegment<f64>, t: f64) -> (Pose<f64>, Motor<f64>) {
-    let (s, ds) = split(&evaluate(seg, Dual64::new(t, 1.0)));
+    let (s, ds) = value_and_derivative(&evaluate(seg, Dual64::new(t, 1.0)));
     let psi = (&s.inverse().unwrap().0 * &ds).scale(&2.0);
     (s, psi)
 }
@@ -86,7 +45,7 @@ fn jaklic_end_conditions_match_the_motion() {
     assert_eq!(poses.len(), 9);
     for (k, cond) in poses.iter().enumerate() {
         let t = (k + 1) as f64;
-        let (s, ds) = split(&jaklic::pose(Dual64::new(t, 1.0)));
+        let (s, ds) = value_and_derivative(&jaklic::pose(Dual64::new(t, 1.0)));
         assert!(s.is_unitary(&1e-14));
         let psi = (&s.reverse().0 * &ds).scale(&2.0);
         assert!(diff(&psi, &cond.velocity_bivector()) < 1e-13, "t = {t}: {psi} vs {}", cond.velocity_bivector());

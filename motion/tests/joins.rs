@@ -10,7 +10,7 @@ mod common;
 
 use algebra_core::Ring;
 use algebra_core::rational::{Q, q, ratio};
-use common::diff;
+use common::{bernstein, de_casteljau, diff, indicatrix, value_and_derivative};
 use motion::joins::{self, end_velocity_bivector, shaped_indicatrix};
 use motion::{Continuity, EndCondition, Motor, Pose, Pseudoscalar, SegmentKind, Shape};
 use num_dual::{Dual64, DualNum};
@@ -241,61 +241,6 @@ fn additive_joins_are_exact_over_rationals() {
 }
 
 // ---------------------------------------------------------------- dual-number derivatives
-
-fn lift(s: &Pose<f64>) -> Pose<Dual64> {
-    let m = s.as_motor();
-    let d = |x: &f64| Dual64::from(*x);
-    Pose(Motor::new(
-        d(&m.scalar),
-        d(&m.e12),
-        d(&m.e13),
-        d(&m.e23),
-        d(&m.e1inf),
-        d(&m.e2inf),
-        d(&m.e3inf),
-        d(&m.e123inf),
-    ))
-}
-
-fn value_and_derivative(s: &Pose<Dual64>) -> (Pose<f64>, Motor<f64>) {
-    let m = s.as_motor();
-    let parts = [&m.scalar, &m.e12, &m.e13, &m.e23, &m.e1inf, &m.e2inf, &m.e3inf, &m.e123inf];
-    let re = parts.map(|x| x.re);
-    let eps = parts.map(|x| x.eps);
-    let mk = |c: [f64; 8]| Motor::new(c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7]);
-    (Pose(mk(re)), mk(eps))
-}
-
-/// `Ψ(t) = 2 S(t)⁻¹ S'(t)` of a pose evaluated over a dual number `t + ε`.
-fn indicatrix(s: &Pose<Dual64>) -> Motor<f64> {
-    let (value, derivative) = value_and_derivative(s);
-    (&value.inverse().unwrap().0 * &derivative).scale(&2.0)
-}
-
-fn binomial(n: usize, k: usize) -> f64 {
-    (0..k).fold(1.0, |acc, i| acc * (n - i) as f64 / (i + 1) as f64)
-}
-
-/// The additive Bezier motion (eq. 18) by its Bernstein sum, over dual numbers.
-fn bernstein(controls: &[Pose<f64>], t: &Dual64) -> Pose<Dual64> {
-    let n = controls.len() - 1;
-    let one_minus = Dual64::from(1.0) - *t;
-    let mut sum = Motor::<Dual64>::zero();
-    for (i, c) in controls.iter().enumerate() {
-        let w = one_minus.powi((n - i) as i32) * t.powi(i as i32) * binomial(n, i);
-        sum = &sum + &lift(c).0.scale(&w);
-    }
-    Pose(sum)
-}
-
-/// The multiplicative Bezier motion by its de Casteljau tableau of slerps (Fig. 2).
-fn de_casteljau(controls: &[Pose<f64>], t: &Dual64) -> Pose<Dual64> {
-    let mut level: Vec<Pose<Dual64>> = controls.iter().map(lift).collect();
-    while level.len() > 1 {
-        level = level.windows(2).map(|w| Pose::slerp(&w[0], &w[1], t).unwrap()).collect();
-    }
-    level.pop().unwrap()
-}
 
 fn end_indicatrices_by_duals(kind: SegmentKind, controls: &[Pose<f64>]) -> [Motor<f64>; 2] {
     let eval = |t: f64| {

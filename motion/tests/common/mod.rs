@@ -98,3 +98,53 @@ pub fn non_unit(poses: &[Pose<f64>]) -> Vec<Pose<f64>> {
         .map(|(i, p)| p.scale_pseudoscalar(&Pseudoscalar::new(1.3 + 0.4 * i as f64, 0.5 - 0.3 * i as f64)))
         .collect()
 }
+
+// ---------------------------------------------------------------- dual-number references
+// Independent evaluations of Bézier motions over `Dual64` (a local Bernstein sum and a local
+// slerp tableau), used to check end indicatrices of constructed segments.
+
+/// A pose lifted to constant dual numbers.
+pub fn lift(s: &Pose<f64>) -> Pose<num_dual::Dual64> {
+    s.map_scalar(&|x: &f64| num_dual::Dual64::from(*x))
+}
+
+/// The value and the derivative (ε part) of a pose over dual numbers.
+pub fn value_and_derivative(s: &Pose<num_dual::Dual64>) -> (Pose<f64>, Motor<f64>) {
+    let m = s.as_motor();
+    let parts = [&m.scalar, &m.e12, &m.e13, &m.e23, &m.e1inf, &m.e2inf, &m.e3inf, &m.e123inf];
+    let mk = |c: [f64; 8]| Motor::new(c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7]);
+    (Pose(mk(parts.map(|x| x.re))), mk(parts.map(|x| x.eps)))
+}
+
+/// `Ψ(t) = 2 S(t)⁻¹ S'(t)` of a pose evaluated over a dual number `t + ε`.
+pub fn indicatrix(s: &Pose<num_dual::Dual64>) -> Motor<f64> {
+    let (value, derivative) = value_and_derivative(s);
+    (&value.inverse().unwrap().0 * &derivative).scale(&2.0)
+}
+
+/// The binomial coefficient as a float.
+pub fn binomial(n: usize, k: usize) -> f64 {
+    (0..k).fold(1.0, |acc, i| acc * (n - i) as f64 / (i + 1) as f64)
+}
+
+/// The additive Bézier motion (eq. 18) by its Bernstein sum, over dual numbers.
+pub fn bernstein(controls: &[Pose<f64>], t: &num_dual::Dual64) -> Pose<num_dual::Dual64> {
+    use num_dual::DualNum;
+    let n = controls.len() - 1;
+    let one_minus = num_dual::Dual64::from(1.0) - *t;
+    let mut sum = Motor::<num_dual::Dual64>::zero();
+    for (i, c) in controls.iter().enumerate() {
+        let w = one_minus.powi((n - i) as i32) * t.powi(i as i32) * binomial(n, i);
+        sum = &sum + &lift(c).0.scale(&w);
+    }
+    Pose(sum)
+}
+
+/// The multiplicative Bézier motion by its de Casteljau tableau of slerps (Fig. 2).
+pub fn de_casteljau(controls: &[Pose<f64>], t: &num_dual::Dual64) -> Pose<num_dual::Dual64> {
+    let mut level: Vec<Pose<num_dual::Dual64>> = controls.iter().map(lift).collect();
+    while level.len() > 1 {
+        level = level.windows(2).map(|w| Pose::slerp(&w[0], &w[1], t).unwrap()).collect();
+    }
+    level.pop().unwrap()
+}
