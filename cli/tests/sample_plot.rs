@@ -6,23 +6,11 @@
 
 mod common;
 
-use common::{TempFile, fails, ok};
+use common::{CONTRACT_EXAMPLE, TempFile, fails, ok};
 use motion::hermite::hermite_segment;
 use motion::velocity::velocity;
 use motion::{AdditiveBezier, EndCondition, Motion, MultiplicativeBezier, Pseudoscalar, SegmentKind, Shape};
 use serde_json::Value;
-
-/// The example of shared/cli.md, verbatim (with its `//` comment).
-const CONTRACT_EXAMPLE: &str = r#"{
-  "kind": "additive",            // or "multiplicative"
-  "degree": 3,
-  "start": {"position": [0,0,0], "axis": [0,0,1], "angle": 0,
-            "velocity": [1,1,1], "angular_velocity": [1,2,3],
-            "shape": 1, "gamma": [0, 0]},
-  "end":   {"position": [8,10,12], "axis": [1,2,3], "angle": 1.959,
-            "velocity": [1,5,3], "angular_velocity": [2,1,1]}
-}
-"#;
 
 /// Sec. 5.2 of the paper with λ0 = 4 and pseudoscalars, as `kind` and optional extra fields.
 fn sec52(kind: &str, extra: &str) -> String {

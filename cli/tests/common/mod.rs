@@ -6,6 +6,18 @@
 use std::path::PathBuf;
 use std::process::{Command, Output};
 
+/// The example of shared/cli.md, verbatim (with its `//` comment).
+pub const CONTRACT_EXAMPLE: &str = r#"{
+  "kind": "additive",            // or "multiplicative"
+  "degree": 3,
+  "start": {"position": [0,0,0], "axis": [0,0,1], "angle": 0,
+            "velocity": [1,1,1], "angular_velocity": [1,2,3],
+            "shape": 1, "gamma": [0, 0]},
+  "end":   {"position": [8,10,12], "axis": [1,2,3], "angle": 1.959,
+            "velocity": [1,5,3], "angular_velocity": [2,1,1]}
+}
+"#;
+
 /// Runs `gam` with `args`.
 pub fn gam(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_gam")).args(args).output().expect("run gam")
