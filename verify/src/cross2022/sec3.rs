@@ -71,7 +71,7 @@ pub const STATEMENTS: &[Statement] = &[
 ];
 
 pub(super) fn cga_null() -> Arc<Algebra> {
-    Algebra::builtin("cga-null").expect("built-in algebra")
+    crate::algebra("cga-null")
 }
 
 pub(super) fn mp(n: i64, d: i64) -> MpFloat {

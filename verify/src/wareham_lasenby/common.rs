@@ -8,7 +8,7 @@ use std::sync::Arc;
 /// The runtime algebra R^{4,1}: e1, e2, e3 Euclidean, e4 = the paper's e (e² = 1),
 /// e5 = the paper's ē (ē² = -1).
 pub(super) fn cga() -> Arc<Algebra> {
-    Algebra::builtin("cga").expect("built-in algebra")
+    crate::algebra("cga")
 }
 
 /// A multivector from blade names (all names used here exist in `cga`).
