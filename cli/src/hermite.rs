@@ -1,67 +1,18 @@
 //! `gam hermite [--json] SPEC.json`: a Bezier motion segment of degree `n` from its end
 //! conditions (Secs. 4-5 of the main paper), exactly as in the contract (shared/cli.md).
 //!
-//! The spec gives, at each end, the position of the reference point, the rotation (axis,
-//! normalised, and angle), the velocity of the reference point and the angular velocity, and
-//! optionally the shape factor `shape` (λ, default 1, positive) and `gamma` (`[α, β]` for
-//! `α + βω`, default `[0, 0]`). The end poses are `S = R T`; `ν = Ω e123 + u einf` with
-//! `u = v - Ω × r`; `Ψ = λ(ν + γ)`; the control poses next to the ends follow eq. (22)
-//! (additive) or eq. (23) (multiplicative), read as in Sec. 5.2 (`motion::joins`). Degrees
-//! above 3 spread the inner control poses evenly from `S1` to `S_{n-1}`
-//! (`motion::hermite::hermite_segment`).
+//! The spec, its checks and the segment it describes are `motion::spec` (the library owns the
+//! format); this module reads the file and prints the result.
 //!
 //! The file is JSON; `//` comments (outside strings) are allowed, as in the contract's example.
 
 use crate::error::CliError;
 use crate::output::{mv_human, mv_json};
 use motion::HermiteSegment;
-use motion::hermite::hermite_segment;
-use motion::{EndCondition, JoinError, MotionError, Motor, Pseudoscalar, SegmentKind, Shape};
-use serde::Deserialize;
+use motion::Motor;
+pub(crate) use motion::spec::HermiteSpec as Spec;
+use motion::spec::SpecError;
 use serde_json::{Value, json};
-
-/// The largest degree accepted (a segment of degree `n` has `n + 1` control poses).
-const MAX_DEGREE: i64 = 10_000;
-
-/// The segment kind, as spelled in the spec.
-#[derive(Debug, Clone, Copy, Deserialize)]
-#[serde(rename_all = "lowercase")]
-enum Kind {
-    Additive,
-    Multiplicative,
-}
-
-/// The whole spec.
-#[derive(Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub(crate) struct Spec {
-    kind: Kind,
-    degree: i64,
-    start: EndSpec,
-    end: EndSpec,
-    /// The body point of `gam sample` / `gam plot` (body coordinates); `gam hermite` rejects it.
-    #[serde(default)]
-    pub(crate) body_point: Option<[f64; 3]>,
-}
-
-/// One end condition.
-#[derive(Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct EndSpec {
-    position: [f64; 3],
-    axis: [f64; 3],
-    angle: f64,
-    velocity: [f64; 3],
-    angular_velocity: [f64; 3],
-    #[serde(default = "one")]
-    shape: f64,
-    #[serde(default)]
-    gamma: [f64; 2],
-}
-
-fn one() -> f64 {
-    1.0
-}
 
 /// Replaces `//` comments outside JSON strings by spaces (line and column numbers unchanged).
 fn strip_comments(text: &str) -> String {
@@ -126,35 +77,14 @@ pub(crate) fn read_spec(path: &str) -> Result<Spec, CliError> {
         };
         CliError::usage(format!("`{path}`: {what}: {message}"))
     })?;
-    if !(3..=MAX_DEGREE).contains(&spec.degree) {
-        return Err(CliError::usage(format!(
-            "`{path}`: `degree` must be an integer from 3 to {MAX_DEGREE} (got {}): the end conditions fix the \
-             four control poses S0, S1, S_(n-1) and Sn",
-            spec.degree
-        )));
-    }
-    for (name, end) in [("start", &spec.start), ("end", &spec.end)] {
-        if end.axis.iter().all(|x| *x == 0.0) {
-            return Err(CliError::usage(format!("`{path}`: `{name}.axis` has length zero")));
-        }
-        if end.shape <= 0.0 || end.shape.is_nan() {
-            return Err(CliError::usage(format!(
-                "`{path}`: `{name}.shape` must be positive (got {})",
-                crate::scalar::format_f64(end.shape)
-            )));
-        }
-    }
+    spec.check().map_err(|e| spec_error(path, e))?;
     Ok(spec)
 }
 
-fn end_condition(name: &str, end: &EndSpec) -> Result<(EndCondition<f64>, Shape<f64>), CliError> {
-    let cond =
-        EndCondition::from_axis_angle(&end.position, &end.axis, &end.angle, &end.velocity, &end.angular_velocity)
-            .map_err(|e| match e {
-                MotionError::ZeroAxis => CliError::usage(format!("`{name}.axis` has length zero")),
-                other => CliError::math(format!("`{name}`: {other}")),
-            })?;
-    Ok((cond, Shape::new(end.shape, Pseudoscalar::new(end.gamma[0], end.gamma[1]))))
+/// A rejected spec as a CLI error: bad input is exit 2 (prefixed by the file), a mathematical
+/// failure exit 1.
+fn spec_error(path: &str, e: SpecError) -> CliError {
+    if e.is_input() { CliError::usage(format!("`{path}`: {e}")) } else { CliError::math(e.to_string()) }
 }
 
 /// A JSON list of multivectors in g123inf blade names.
@@ -162,24 +92,10 @@ fn mv_list<'a>(list: impl Iterator<Item = &'a Motor<f64>>) -> Value {
     Value::Array(list.map(|m| mv_json(&m.to_multivector())).collect())
 }
 
-fn finite(m: &Motor<f64>) -> bool {
-    [m.scalar, m.e12, m.e13, m.e23, m.e1inf, m.e2inf, m.e3inf, m.e123inf].iter().all(|x| x.is_finite())
-}
-
 /// The segment of a checked spec (shared with `gam sample` and `gam plot`).
 pub(crate) fn build_segment(spec: &Spec) -> Result<HermiteSegment<f64>, CliError> {
-    let kind = match spec.kind {
-        Kind::Additive => SegmentKind::Additive,
-        Kind::Multiplicative => SegmentKind::Multiplicative,
-    };
-    let degree = usize::try_from(spec.degree).map_err(|_| CliError::usage("`degree` out of range"))?;
-    let (start, start_shape) = end_condition("start", &spec.start)?;
-    let (end, end_shape) = end_condition("end", &spec.end)?;
-    let seg = hermite_segment(kind, degree, &start, &end, &start_shape, &end_shape).map_err(|e| match e {
-        JoinError::Motion(m) => CliError::math(m.to_string()),
-        other => CliError::usage(other.to_string()),
-    })?;
-    Ok(seg)
+    spec.segment()
+        .map_err(|e| if e.is_input() { CliError::usage(e.to_string()) } else { CliError::math(e.to_string()) })
 }
 
 /// Runs `gam hermite`.
@@ -192,10 +108,6 @@ pub fn hermite(path: &str, json: bool) -> Result<String, CliError> {
     let kind = seg.kind;
     let degree = seg.degree();
     let poses: Vec<&Motor<f64>> = seg.control_poses.iter().map(|s| s.as_motor()).collect();
-    let mut all = poses.iter().copied().chain(&seg.velocity_bivectors).chain(&seg.velocity_indicatrices);
-    if !all.all(finite) {
-        return Err(CliError::math("the result is not finite (overflow)"));
-    }
     if json {
         let out = json!({
             "control_poses": mv_list(poses.iter().copied()),

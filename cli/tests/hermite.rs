@@ -7,10 +7,12 @@ mod common;
 
 use common::{CONTRACT_EXAMPLE, TempFile, fails, ok};
 use motion::hermite::hermite_segment;
-use motion::{EndCondition, Pseudoscalar, SegmentKind, Shape};
+use motion::paper::{self, mismatches};
+use motion::spec::SpecKind;
+use motion::{SegmentKind, Shape};
 use serde_json::Value;
 
-const BLADES: [&str; 8] = ["1", "e12", "e13", "e23", "e1inf", "e2inf", "e3inf", "e123inf"];
+use paper::BLADES;
 
 /// `gam hermite --json` on a spec text, parsed.
 fn hermite_json(name: &str, text: &str) -> Value {
@@ -39,29 +41,8 @@ fn list(v: &Value, key: &str) -> Vec<[f64; 8]> {
     v[key].as_array().unwrap_or_else(|| panic!("no list {key}")).iter().map(coeffs).collect()
 }
 
-/// `x` rounded to as many decimals as `printed` has is `printed` (`-0.000` counts as `0.000`).
-fn rounds_to(x: f64, printed: &str) -> bool {
-    let decimals = printed.split('.').nth(1).map_or(0, str::len);
-    let s = format!("{x:.decimals$}");
-    s == printed
-        || s.strip_prefix('-').is_some_and(|rest| rest == printed && rest.chars().all(|c| c == '0' || c == '.'))
-}
-
-fn mismatches(c: &[f64; 8], printed: &[&str; 8]) -> Vec<&'static str> {
-    c.iter().zip(printed).zip(BLADES).filter(|((x, p), _)| !rounds_to(**x, p)).map(|(_, b)| b).collect()
-}
-
-// The printed control poses of Sec. 5.1 (components in blade order).
-const S0: [&str; 8] = ["1.000", "0.000", "0.000", "0.000", "0.000", "0.000", "0.000", "0.000"];
-const S3_51: [&str; 8] = ["0.557", "0.666", "-0.444", "0.222", "2.895", "1.456", "4.010", "7.101"];
-const MULT_51: [[&str; 8]; 2] = [
-    ["0.812", "0.468", "-0.312", "0.156", "0.147", "0.138", "0.129", "0.156"],
-    ["0.763", "0.413", "-0.497", "-0.013", "1.683", "1.508", "6.308", "4.363"],
-];
-const ADD_51: [[&str; 8]; 2] = [
-    ["1.000", "0.500", "-0.333", "0.167", "0.167", "0.167", "0.167", "0.000"],
-    ["0.816", "0.462", "-0.536", "-0.001", "1.934", "1.764", "6.877", "4.707"],
-];
+use paper::sec_5_1::{ADDITIVE as ADD_51, MULTIPLICATIVE as MULT_51, S0, S3 as S3_51};
+use paper::sec_5_2::{ADDITIVE as ADD_52, MULTIPLICATIVE as MULT_52, S3 as S3_52};
 
 fn spec_51(kind: &str, angle: &str) -> String {
     CONTRACT_EXAMPLE.replace("\"additive\"", &format!("\"{kind}\"")).replace("1.959", angle)
@@ -112,41 +93,10 @@ fn contract_example_is_section_5_1() {
     }
 }
 
-// Sec. 5.2.
-const S3_52: [&str; 8] = ["0.707", "0.000", "0.000", "-0.707", "0.000", "3.536", "3.536", "0.000"];
-const MULT_52: [[[&str; 8]; 2]; 2] = [
-    [
-        ["1.078", "0.000", "0.000", "-0.142", "0.012", "0.000", "1.445", "0.090"],
-        ["0.558", "0.000", "0.000", "-0.636", "0.053", "2.392", "2.783", "0.047"],
-    ],
-    [
-        ["1.209", "0.000", "0.000", "-0.698", "0.233", "0.000", "7.108", "0.403"],
-        ["0.257", "0.000", "0.000", "-0.445", "0.148", "0.326", "1.266", "0.086"],
-    ],
-];
-const ADD_52: [[[&str; 8]; 2]; 2] = [
-    [
-        ["1.083", "0.000", "0.000", "-0.131", "0.000", "0.000", "1.333", "0.083"],
-        ["0.543", "0.000", "0.000", "-0.636", "0.059", "2.243", "2.706", "0.059"],
-    ],
-    [
-        ["1.333", "0.000", "0.000", "-0.524", "0.000", "0.000", "5.333", "0.333"],
-        ["0.051", "0.000", "0.000", "-0.421", "0.236", "-1.633", "0.218", "0.236"],
-    ],
-];
-
+/// The Sec. 5.2 spec (`motion::paper`) with shape factor `shape` at both ends, as JSON.
 fn spec_52(kind: &str, shape: f64) -> String {
-    // θ3 = -π/2, Ω0 = (-π/4, 0, 0), Ω3 = (π/8, 0, 0) as f64 literals.
-    format!(
-        r#"{{"kind": "{kind}", "degree": 3,
-  "start": {{"position": [0, 0, 0], "axis": [1, 0, 0], "angle": 0, "velocity": [0, 0, 8],
-            "angular_velocity": [{}, 0, 0], "shape": {shape}, "gamma": [0.5, 0.5]}},
-  "end":   {{"position": [0, 10, 0], "axis": [1, 0, 0], "angle": {}, "velocity": [0, 4, 0],
-            "angular_velocity": [{}, 0, 0], "shape": {shape}, "gamma": [1, -0.5]}}}}"#,
-        -std::f64::consts::FRAC_PI_4,
-        -std::f64::consts::FRAC_PI_2,
-        std::f64::consts::FRAC_PI_8
-    )
+    let kind = if kind == "additive" { SpecKind::Additive } else { SpecKind::Multiplicative };
+    serde_json::to_string_pretty(&paper::sec_5_2::spec(kind, shape, shape)).unwrap()
 }
 
 /// Sec. 5.2: every printed value (ν0, ν3, S0, S3, and S1, S2 for λ = 1 and λ = 4, both kinds).
@@ -161,13 +111,11 @@ fn section_5_2() {
             assert_eq!(mismatches(&poses[2], &printed[1]), [""; 0], "{kind} λ3 = {shape} S2");
             assert_eq!(mismatches(&poses[3], &S3_52), [""; 0]);
             let nu = list(&v, "velocity_bivectors");
-            let nu0 = ["0.000", "0.000", "0.000", "-0.785", "0.000", "0.000", "8.000", "0.000"];
-            let nu3 = ["0.000", "0.000", "0.000", "0.393", "0.000", "4.000", "-3.927", "0.000"];
-            assert_eq!(mismatches(&nu[0], &nu0), [""; 0]);
-            assert_eq!(mismatches(&nu[1], &nu3), [""; 0]);
+            assert_eq!(mismatches(&nu[0], &paper::sec_5_2::NU0), [""; 0]);
+            assert_eq!(mismatches(&nu[1], &paper::sec_5_2::NU3), [""; 0]);
             // Ψ = λ(ν + γ).
             let psi = list(&v, "velocity_indicatrices");
-            let g = [[0.5, 0.5], [1.0, -0.5]];
+            let g = [paper::sec_5_2::GAMMA0, paper::sec_5_2::GAMMA3];
             for end in 0..2 {
                 let mut want = nu[end].map(|x| x * shape);
                 want[0] = shape * g[end][0];
@@ -186,29 +134,14 @@ fn output_is_the_library_result() {
         for degree in [3usize, 5] {
             let text = spec_52(name, 1.5).replace("\"degree\": 3", &format!("\"degree\": {degree}"));
             let v = hermite_json(&format!("lib-{name}-{degree}"), &text);
-            let a = EndCondition::from_axis_angle(
-                &[0.0; 3],
-                &[1.0, 0.0, 0.0],
-                &0.0,
-                &[0.0, 0.0, 8.0],
-                &[-std::f64::consts::FRAC_PI_4, 0.0, 0.0],
-            )
-            .unwrap();
-            let b = EndCondition::from_axis_angle(
-                &[0.0, 10.0, 0.0],
-                &[1.0, 0.0, 0.0],
-                &-std::f64::consts::FRAC_PI_2,
-                &[0.0, 4.0, 0.0],
-                &[std::f64::consts::FRAC_PI_8, 0.0, 0.0],
-            )
-            .unwrap();
+            let (a, b) = paper::sec_5_2::end_conditions();
             let seg = hermite_segment(
                 kind,
                 degree,
                 &a,
                 &b,
-                &Shape::new(1.5, Pseudoscalar::new(0.5, 0.5)),
-                &Shape::new(1.5, Pseudoscalar::new(1.0, -0.5)),
+                &Shape::new(1.5, paper::sec_5_2::gammas()[0].clone()),
+                &Shape::new(1.5, paper::sec_5_2::gammas()[1].clone()),
             )
             .unwrap();
             let poses = list(&v, "control_poses");

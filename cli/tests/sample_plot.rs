@@ -8,19 +8,18 @@ mod common;
 
 use common::{CONTRACT_EXAMPLE, TempFile, fails, ok};
 use motion::hermite::hermite_segment;
+use motion::paper;
+use motion::spec::SpecKind;
 use motion::velocity::velocity;
-use motion::{AdditiveBezier, EndCondition, Motion, MultiplicativeBezier, Pseudoscalar, SegmentKind, Shape};
+use motion::{AdditiveBezier, Motion, MultiplicativeBezier, SegmentKind, Shape};
 use serde_json::Value;
 
-/// Sec. 5.2 of the paper with λ0 = 4 and pseudoscalars, as `kind` and optional extra fields.
+/// Sec. 5.2 of the paper (`motion::paper`) with λ0 = 4, λ3 = 1 and pseudoscalars, as `kind`,
+/// with `extra` (`"key": value,`) put first.
 fn sec52(kind: &str, extra: &str) -> String {
-    format!(
-        r#"{{"kind": "{kind}", "degree": 3,{extra}
- "start": {{"position": [0, 0, 0], "axis": [1, 0, 0], "angle": 0, "velocity": [0, 0, 8],
-           "angular_velocity": [-0.7853981633974483, 0, 0], "shape": 4, "gamma": [0.5, 0.5]}},
- "end":   {{"position": [0, 10, 0], "axis": [1, 0, 0], "angle": -1.5707963267948966,
-           "velocity": [0, 4, 0], "angular_velocity": [0.39269908169872414, 0, 0], "gamma": [1, -0.5]}}}}"#
-    )
+    let kind = if kind == "additive" { SpecKind::Additive } else { SpecKind::Multiplicative };
+    let json = serde_json::to_string(&paper::sec_5_2::spec(kind, 4.0, 1.0)).unwrap();
+    format!("{{{extra}{}", &json[1..])
 }
 
 /// One parsed sample.
@@ -114,26 +113,10 @@ fn body_point_samples_agree_with_the_library() {
     let body = [1.0, -2.0, 0.5];
     let text = sec52("multiplicative", r#" "body_point": [1, -2, 0.5],"#);
     let s = sample_json("sec52-body.json", &text, 9);
-    let frac_pi_4 = std::f64::consts::FRAC_PI_4;
-    let a = EndCondition::from_axis_angle(&[0.0; 3], &[1.0, 0.0, 0.0], &0.0, &[0.0, 0.0, 8.0], &[-frac_pi_4, 0.0, 0.0])
-        .unwrap();
-    let b = EndCondition::from_axis_angle(
-        &[0.0, 10.0, 0.0],
-        &[1.0, 0.0, 0.0],
-        &-std::f64::consts::FRAC_PI_2,
-        &[0.0, 4.0, 0.0],
-        &[frac_pi_4 / 2.0, 0.0, 0.0],
-    )
-    .unwrap();
-    let seg = hermite_segment(
-        SegmentKind::Multiplicative,
-        3,
-        &a,
-        &b,
-        &Shape::new(4.0, Pseudoscalar::new(0.5, 0.5)),
-        &Shape::new(1.0, Pseudoscalar::new(1.0, -0.5)),
-    )
-    .unwrap();
+    let (a, b) = paper::sec_5_2::end_conditions();
+    let [g0, g3] = paper::sec_5_2::gammas();
+    let seg =
+        hermite_segment(SegmentKind::Multiplicative, 3, &a, &b, &Shape::new(4.0, g0), &Shape::new(1.0, g3)).unwrap();
     let m = MultiplicativeBezier::new(seg.control_poses).unwrap();
     for x in &s {
         let v = velocity(&m, &x.t).unwrap();
@@ -147,10 +130,7 @@ fn body_point_samples_agree_with_the_library() {
     assert_close3(&s[0].position, &a.pose.transform_point(&body).unwrap(), 1e-9);
     assert_close3(&s[8].position, &b.pose.transform_point(&body).unwrap(), 1e-9);
     // The additive kind too: the contract example with the same body point, 5 samples.
-    let a = EndCondition::from_axis_angle(&[0.0; 3], &[0.0, 0.0, 1.0], &0.0, &[1.0; 3], &[1.0, 2.0, 3.0]).unwrap();
-    let b =
-        EndCondition::from_axis_angle(&[8.0, 10.0, 12.0], &[1.0, 2.0, 3.0], &1.959, &[1.0, 5.0, 3.0], &[2.0, 1.0, 1.0])
-            .unwrap();
+    let (a, b) = paper::sec_5_1::end_conditions(paper::sec_5_1::PRINTED_ANGLE, paper::sec_5_1::AXIS);
     let seg = hermite_segment(SegmentKind::Additive, 3, &a, &b, &Shape::unit(), &Shape::unit()).unwrap();
     let m = AdditiveBezier::new(seg.control_poses).unwrap();
     let text = CONTRACT_EXAMPLE.replace("\"degree\": 3,", "\"degree\": 3, \"body_point\": [1, -2, 0.5],");

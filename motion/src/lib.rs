@@ -28,6 +28,8 @@
 //! | [`joins`] | end conditions, `ν` and `Ψ = λ(ν + γ)`, control poses for C1/G1 joins (eqs. 22-23), [`Continuity`] check |
 //! | [`hermite`] | Hermite interpolation through precision poses with velocities (Sec. 5.3) |
 //! | [`error`] | [`MotionError`] |
+//! | [`spec`] | the `gam hermite` spec: format, checks ([`spec::SpecError`]), segment |
+//! | [`paper`] | the paper's worked examples (Secs. 4, 5.1, 5.2, 5.3 Jaklič), once |
 //!
 //! ```
 //! use motion::Pose;
@@ -50,10 +52,12 @@ pub mod matrix;
 #[cfg(feature = "nalgebra")]
 pub mod nalgebra_conv;
 mod ops;
+pub mod paper;
 pub mod piecewise;
 pub mod pose;
 pub mod pseudoscalar;
 mod series;
+pub mod spec;
 pub mod velocity;
 
 pub use algebra_core;

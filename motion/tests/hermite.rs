@@ -1,18 +1,16 @@
-//! Hermite interpolation (Sec. 5.3): the Jaklič et al. example of `examples/jaklic.rs` (nine
+//! Hermite interpolation (Sec. 5.3): the Jaklič et al. example of `motion::paper::jaklic` (nine
 //! precision poses, eight cubic segments) with common shape factors 0.5, 1 and 1.5 (Fig. 10),
 //! both kinds; every segment's end indicatrices and every join's jump in ν from dual-number
 //! derivatives of a local Bernstein sum or de Casteljau tableau; per-pose (C1) and
 //! per-segment (G1) shapes; non-uniform parameters; higher degrees; errors; 256-bit floats.
 
 mod common;
-#[allow(dead_code)]
-#[path = "../examples/jaklic.rs"]
-mod jaklic;
 
 use algebra_core::{MpFloat, PrecisionGuard, Real};
 use common::{bernstein, de_casteljau, diff, size, value_and_derivative};
 use motion::hermite::{self, HermiteSegment, HermiteShapes};
 use motion::joins;
+use motion::paper::jaklic;
 use motion::{Continuity, EndCondition, JoinError, Motor, Pose, Pseudoscalar, SegmentKind, Shape};
 use num_dual::Dual64;
 
@@ -41,11 +39,11 @@ fn bivector(m: &Motor<f64>) -> Motor<f64> {
 /// `Ψ = 2 S⁻¹ S'` (a unitary motion, so `Ψ = ν`) is the ν of Theorem 3.2 from `c'`, `Ω`, `c`.
 #[test]
 fn jaklic_end_conditions_match_the_motion() {
-    let poses = jaklic::precision_poses();
+    let poses = jaklic::precision_poses().unwrap();
     assert_eq!(poses.len(), 9);
     for (k, cond) in poses.iter().enumerate() {
         let t = (k + 1) as f64;
-        let (s, ds) = value_and_derivative(&jaklic::pose(Dual64::new(t, 1.0)));
+        let (s, ds) = value_and_derivative(&jaklic::pose(&Dual64::new(t, 1.0)).unwrap());
         assert!(s.is_unitary(&1e-14));
         let psi = (&s.reverse().0 * &ds).scale(&2.0);
         assert!(diff(&psi, &cond.velocity_bivector()) < 1e-13, "t = {t}: {psi} vs {}", cond.velocity_bivector());
@@ -61,10 +59,10 @@ fn jaklic_end_conditions_match_the_motion() {
 /// and every join is C1: zero jump in ν (and here in Ψ).
 #[test]
 fn jaklic_segments_are_c1_for_every_common_shape() {
-    let poses = jaklic::precision_poses();
+    let poses = jaklic::precision_poses().unwrap();
     for kind in KINDS {
         for lambda in [0.5, 1.0, 1.5] {
-            let segs = jaklic::segments(kind, lambda);
+            let segs = jaklic::segments(kind, lambda).unwrap();
             assert_eq!(segs.len(), 8);
             for (k, seg) in segs.iter().enumerate() {
                 assert_eq!(seg.degree(), 3);
@@ -102,7 +100,7 @@ fn jaklic_segments_are_c1_for_every_common_shape() {
 /// `ν_right = (λ_right/λ_left) ν_left` at each join.
 #[test]
 fn jaklic_mixed_segments_are_g1() {
-    let poses = jaklic::precision_poses();
+    let poses = jaklic::precision_poses().unwrap();
     let cases = [0.5, 1.0, 1.5];
     let per_segment: Vec<[Shape<f64>; 2]> =
         (0..8).map(|k| [Shape::factor(cases[k % 3]), Shape::factor(cases[k % 3])]).collect();
@@ -110,7 +108,7 @@ fn jaklic_mixed_segments_are_g1() {
         let segs = hermite::hermite(kind, 3, &poses, &HermiteShapes::PerSegment(per_segment.clone())).unwrap();
         // The same segments as taking segment k from the common-λ case k mod 3.
         for (k, seg) in segs.iter().enumerate() {
-            let common = &jaklic::segments(kind, cases[k % 3])[k];
+            let common = &jaklic::segments(kind, cases[k % 3]).unwrap()[k];
             for (a, b) in seg.control_poses.iter().zip(&common.control_poses) {
                 assert!(diff(&a.0, &b.0) < 1e-15);
             }
@@ -134,7 +132,7 @@ fn jaklic_mixed_segments_are_g1() {
 /// keep ν continuous: C1, with Ψ continuous for additive segments.
 #[test]
 fn per_pose_shapes_are_c1() {
-    let poses = jaklic::precision_poses();
+    let poses = jaklic::precision_poses().unwrap();
     let shapes: Vec<Shape<f64>> = (0..9)
         .map(|k| Shape::new(0.5 + 0.125 * k as f64, Pseudoscalar::new(0.1 * k as f64 - 0.4, 0.25 - 0.05 * k as f64)))
         .collect();
@@ -160,7 +158,8 @@ fn per_pose_shapes_are_c1() {
 /// every join (C1 in `t`), although the local ones differ by the ratio of the interval lengths.
 #[test]
 fn non_uniform_parameters() {
-    let poses: Vec<EndCondition<f64>> = [1.0, 1.5, 3.0, 3.25].iter().map(|&t| jaklic::end_condition(t)).collect();
+    let poses: Vec<EndCondition<f64>> =
+        [1.0, 1.5, 3.0, 3.25].iter().map(|&t| jaklic::end_condition(t).unwrap()).collect();
     let params = [1.0, 1.5, 3.0, 3.25];
     for kind in KINDS {
         let segs = hermite::hermite_with_parameters(kind, 3, &poses, &params, &HermiteShapes::unit()).unwrap();
@@ -188,8 +187,8 @@ fn non_uniform_parameters() {
 /// Bernstein sum / tableau of that degree), the poses in between spread from `S1` to `S_{n-1}`.
 #[test]
 fn higher_degrees() {
-    let a = jaklic::end_condition(2.0);
-    let b = jaklic::end_condition(3.0);
+    let a = jaklic::end_condition(2.0).unwrap();
+    let b = jaklic::end_condition(3.0).unwrap();
     let shape0 = Shape::new(1.2, Pseudoscalar::zero());
     let shape1 = Shape::new(0.8, Pseudoscalar::zero());
     for kind in KINDS {
@@ -218,7 +217,7 @@ fn higher_degrees() {
 
 #[test]
 fn input_errors() {
-    let poses = jaklic::precision_poses();
+    let poses = jaklic::precision_poses().unwrap();
     for kind in KINDS {
         for n in [0usize, 1, 2] {
             assert_eq!(
@@ -273,22 +272,7 @@ fn multiple_precision() {
             hermite::hermite_segment(kind, 3, &a, &b, &Shape::new(m(4.0), g0.clone()), &Shape::new(m(4.0), g3.clone()))
                 .unwrap();
         // Against f64 (the Sec. 5.2 λ = 4 poses).
-        let a64 = EndCondition::from_axis_angle(
-            &[0.0; 3],
-            &[1.0, 0.0, 0.0],
-            &0.0,
-            &[0.0, 0.0, 8.0],
-            &[-std::f64::consts::FRAC_PI_4, 0.0, 0.0],
-        )
-        .unwrap();
-        let b64 = EndCondition::from_axis_angle(
-            &[0.0, 10.0, 0.0],
-            &[1.0, 0.0, 0.0],
-            &-std::f64::consts::FRAC_PI_2,
-            &[0.0, 4.0, 0.0],
-            &[std::f64::consts::FRAC_PI_8, 0.0, 0.0],
-        )
-        .unwrap();
+        let (a64, b64) = motion::paper::sec_5_2::end_conditions();
         let seg64 = hermite::hermite_segment(
             kind,
             3,

@@ -12,42 +12,21 @@ use algebra_core::Ring;
 use algebra_core::rational::{Q, q, ratio};
 use common::{bernstein, de_casteljau, diff, indicatrix, value_and_derivative};
 use motion::joins::{self, end_velocity_bivector, shaped_indicatrix};
+use motion::paper;
 use motion::{Continuity, EndCondition, Motor, Pose, Pseudoscalar, SegmentKind, Shape};
 use num_dual::{Dual64, DualNum};
-use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, FRAC_PI_8};
-
-const BLADES: [&str; 8] = ["1", "e12", "e13", "e23", "e1inf", "e2inf", "e3inf", "e123inf"];
-
-/// `x` printed to as many decimals as `printed` has equals `printed` (`-0.000` counts as `0.000`).
-fn rounds_to(x: f64, printed: &str) -> bool {
-    let decimals = printed.split('.').nth(1).map_or(0, str::len);
-    let s = format!("{x:.decimals$}");
-    s == printed
-        || s.strip_prefix('-').is_some_and(|rest| rest == printed && rest.chars().all(|c| c == '0' || c == '.'))
-}
 
 /// The components (blade names) of `s` that do not round to the printed values.
 fn mismatches(s: &Pose<f64>, printed: &[&str; 8]) -> Vec<&'static str> {
-    s.components().iter().zip(printed).zip(BLADES).filter(|((x, p), _)| !rounds_to(***x, p)).map(|(_, b)| b).collect()
+    paper::mismatches(&s.components().map(|x| *x), printed)
 }
 
 // ---------------------------------------------------------------- Sec. 5.1 (Belta and Kumar)
 
-const S0_51: [&str; 8] = ["1.000", "0.000", "0.000", "0.000", "0.000", "0.000", "0.000", "0.000"];
-const S3_51: [&str; 8] = ["0.557", "0.666", "-0.444", "0.222", "2.895", "1.456", "4.010", "7.101"];
-const MULT_S1_51: [&str; 8] = ["0.812", "0.468", "-0.312", "0.156", "0.147", "0.138", "0.129", "0.156"];
-const MULT_S2_51: [&str; 8] = ["0.763", "0.413", "-0.497", "-0.013", "1.683", "1.508", "6.308", "4.363"];
-const ADD_S1_51: [&str; 8] = ["1.000", "0.500", "-0.333", "0.167", "0.167", "0.167", "0.167", "0.000"];
-const ADD_S2_51: [&str; 8] = ["0.816", "0.462", "-0.536", "-0.001", "1.934", "1.764", "6.877", "4.707"];
-
-/// The Sec. 5.1 end conditions with end angle `theta3` and end axis `axis3` (normalised).
-fn sec_5_1(theta3: f64, axis3: [f64; 3]) -> (EndCondition<f64>, EndCondition<f64>) {
-    let a =
-        EndCondition::from_axis_angle(&[0.0; 3], &[0.0, 0.0, 1.0], &0.0, &[1.0, 1.0, 1.0], &[1.0, 2.0, 3.0]).unwrap();
-    let b =
-        EndCondition::from_axis_angle(&[8.0, 10.0, 12.0], &axis3, &theta3, &[1.0, 5.0, 3.0], &[2.0, 1.0, 1.0]).unwrap();
-    (a, b)
-}
+use paper::sec_5_1::{ADDITIVE as ADD_51, MULTIPLICATIVE as MULT_51, S0 as S0_51, S3 as S3_51};
+use paper::sec_5_1::{AXIS, PRINTED_ANGLE, end_conditions as sec_5_1};
+use paper::sec_5_2::end_conditions as sec_5_2;
+use paper::sec_5_2::{ADDITIVE as ADD_52, MULTIPLICATIVE as MULT_52, S3 as S3_52};
 
 /// All printed mismatches of Sec. 5.1 as `(pose, blade)`.
 fn sec_5_1_mismatches(theta3: f64, axis3: [f64; 3]) -> Vec<(&'static str, &'static str)> {
@@ -58,12 +37,12 @@ fn sec_5_1_mismatches(theta3: f64, axis3: [f64; 3]) -> Vec<(&'static str, &'stat
     let mut out = Vec::new();
     for (name, pose, printed) in [
         ("S0", &mult.control_poses[0], &S0_51),
-        ("multiplicative S1", &mult.control_poses[1], &MULT_S1_51),
-        ("multiplicative S2", &mult.control_poses[2], &MULT_S2_51),
+        ("multiplicative S1", &mult.control_poses[1], &MULT_51[0]),
+        ("multiplicative S2", &mult.control_poses[2], &MULT_51[1]),
         ("S3", &mult.control_poses[3], &S3_51),
         ("additive S0", &add.control_poses[0], &S0_51),
-        ("additive S1", &add.control_poses[1], &ADD_S1_51),
-        ("additive S2", &add.control_poses[2], &ADD_S2_51),
+        ("additive S1", &add.control_poses[1], &ADD_51[0]),
+        ("additive S2", &add.control_poses[2], &ADD_51[1]),
         ("additive S3", &add.control_poses[3], &S3_51),
     ] {
         out.extend(mismatches(pose, printed).into_iter().map(|b| (name, b)));
@@ -73,7 +52,7 @@ fn sec_5_1_mismatches(theta3: f64, axis3: [f64; 3]) -> Vec<(&'static str, &'stat
 
 #[test]
 fn sec_5_1_velocity_bivectors() {
-    let (a, b) = sec_5_1(1.959, [1.0, 2.0, 3.0]);
+    let (a, b) = sec_5_1(PRINTED_ANGLE, AXIS);
     // ν0 = Ω0 e123 + v0 einf (u0 = v0 at the origin).
     assert_eq!(a.velocity_bivector(), Motor::new(0.0, 3.0, -2.0, 1.0, 1.0, 1.0, 1.0, 0.0));
     // ν3: u3 = v3 - Ω3 × r3 = (1,5,3) - (2,1,1) × (8,10,12) = (1,5,3) - (2,-16,12).
@@ -84,13 +63,13 @@ fn sec_5_1_velocity_bivectors() {
 /// Sec. 5.1 are reproduced; each of the three is one unit off in the third decimal.
 #[test]
 fn sec_5_1_at_the_printed_angle() {
-    let bad = sec_5_1_mismatches(1.959, [1.0, 2.0, 3.0]);
+    let bad = sec_5_1_mismatches(PRINTED_ANGLE, AXIS);
     assert_eq!(
         bad,
         [("S3", "e123inf"), ("additive S2", "e3inf"), ("additive S2", "e123inf"), ("additive S3", "e123inf")],
         "mismatches at θ3 = 1.959"
     );
-    let (a, b) = sec_5_1(1.959, [1.0, 2.0, 3.0]);
+    let (a, b) = sec_5_1(PRINTED_ANGLE, AXIS);
     let add =
         motion::hermite::hermite_segment(SegmentKind::Additive, 3, &a, &b, &Shape::unit(), &Shape::unit()).unwrap();
     let s2 = add.control_poses[2].as_motor();
@@ -104,11 +83,11 @@ fn sec_5_1_at_the_printed_angle() {
 #[test]
 fn sec_5_1_all_values_within_the_rounding_of_the_angle() {
     for theta3 in [112.25f64.to_radians(), 1.959126, 1.959149] {
-        assert_eq!(sec_5_1_mismatches(theta3, [1.0, 2.0, 3.0]), [], "θ3 = {theta3}");
+        assert_eq!(sec_5_1_mismatches(theta3, AXIS), [], "θ3 = {theta3}");
     }
     // Outside that window some value is always off.
     for theta3 in [1.9591, 1.95916] {
-        assert!(!sec_5_1_mismatches(theta3, [1.0, 2.0, 3.0]).is_empty(), "θ3 = {theta3}");
+        assert!(!sec_5_1_mismatches(theta3, AXIS).is_empty(), "θ3 = {theta3}");
     }
     // The axis is (1, 2, 3)/√14: the printed (rounded) axis (0.267, 0.535, 0.802), normalised,
     // does not reproduce the translation parts, at any angle in the window.
@@ -120,44 +99,12 @@ fn sec_5_1_all_values_within_the_rounding_of_the_angle() {
 
 // ---------------------------------------------------------------- Sec. 5.2 (shape factors)
 
-const S3_52: [&str; 8] = ["0.707", "0.000", "0.000", "-0.707", "0.000", "3.536", "3.536", "0.000"];
-const MULT_S1_52: [[&str; 8]; 2] = [
-    ["1.078", "0.000", "0.000", "-0.142", "0.012", "0.000", "1.445", "0.090"],
-    ["1.209", "0.000", "0.000", "-0.698", "0.233", "0.000", "7.108", "0.403"],
-];
-const MULT_S2_52: [[&str; 8]; 2] = [
-    ["0.558", "0.000", "0.000", "-0.636", "0.053", "2.392", "2.783", "0.047"],
-    ["0.257", "0.000", "0.000", "-0.445", "0.148", "0.326", "1.266", "0.086"],
-];
-const ADD_S1_52: [[&str; 8]; 2] = [
-    ["1.083", "0.000", "0.000", "-0.131", "0.000", "0.000", "1.333", "0.083"],
-    ["1.333", "0.000", "0.000", "-0.524", "0.000", "0.000", "5.333", "0.333"],
-];
-const ADD_S2_52: [[&str; 8]; 2] = [
-    ["0.543", "0.000", "0.000", "-0.636", "0.059", "2.243", "2.706", "0.059"],
-    ["0.051", "0.000", "0.000", "-0.421", "0.236", "-1.633", "0.218", "0.236"],
-];
-
-fn sec_5_2() -> (EndCondition<f64>, EndCondition<f64>) {
-    let a = EndCondition::from_axis_angle(&[0.0; 3], &[1.0, 0.0, 0.0], &0.0, &[0.0, 0.0, 8.0], &[-FRAC_PI_4, 0.0, 0.0])
-        .unwrap();
-    let b = EndCondition::from_axis_angle(
-        &[0.0, 10.0, 0.0],
-        &[1.0, 0.0, 0.0],
-        &-FRAC_PI_2,
-        &[0.0, 4.0, 0.0],
-        &[FRAC_PI_8, 0.0, 0.0],
-    )
-    .unwrap();
-    (a, b)
-}
-
 fn gamma0() -> Pseudoscalar<f64> {
-    Pseudoscalar::new(0.5, 0.5)
+    paper::sec_5_2::gammas()[0].clone()
 }
 
 fn gamma3() -> Pseudoscalar<f64> {
-    Pseudoscalar::new(1.0, -0.5)
+    paper::sec_5_2::gammas()[1].clone()
 }
 
 #[test]
@@ -165,14 +112,8 @@ fn sec_5_2_velocity_bivectors_and_end_poses() {
     let (a, b) = sec_5_2();
     let nu0 = a.velocity_bivector();
     let nu3 = b.velocity_bivector();
-    assert_eq!(
-        mismatches(&Pose(nu0), &["0.000", "0.000", "0.000", "-0.785", "0.000", "0.000", "8.000", "0.000"]),
-        [""; 0]
-    );
-    assert_eq!(
-        mismatches(&Pose(nu3), &["0.000", "0.000", "0.000", "0.393", "0.000", "4.000", "-3.927", "0.000"]),
-        [""; 0]
-    );
+    assert_eq!(mismatches(&Pose(nu0), &paper::sec_5_2::NU0), [""; 0]);
+    assert_eq!(mismatches(&Pose(nu3), &paper::sec_5_2::NU3), [""; 0]);
     assert_eq!(mismatches(&a.pose, &S0_51), [""; 0]);
     assert_eq!(mismatches(&b.pose, &S3_52), [""; 0]);
 }
@@ -184,8 +125,8 @@ fn sec_5_2_all_printed_control_poses() {
         let psi0 = a.velocity_indicatrix(&Shape::new(lambda, gamma0()));
         let psi3 = b.velocity_indicatrix(&Shape::new(lambda, gamma3()));
         for (kind, s1_printed, s2_printed) in [
-            (SegmentKind::Multiplicative, &MULT_S1_52[i], &MULT_S2_52[i]),
-            (SegmentKind::Additive, &ADD_S1_52[i], &ADD_S2_52[i]),
+            (SegmentKind::Multiplicative, &MULT_52[i][0], &MULT_52[i][1]),
+            (SegmentKind::Additive, &ADD_52[i][0], &ADD_52[i][1]),
         ] {
             let s1 = joins::start_control_pose(kind, &a.pose, &psi0, 3).unwrap();
             let s2 = joins::end_control_pose(kind, &b.pose, &psi3, 3).unwrap();
@@ -205,10 +146,10 @@ fn sec_5_2_needs_lambda_times_nu_plus_gamma() {
         let psi = &nu0.scale(&lambda) + &Motor::from(&gamma0());
         joins::additive_start(&a.pose, &psi, 3).unwrap()
     };
-    assert_eq!(mismatches(&literal(1.0), &ADD_S1_52[0]), [""; 0]);
-    assert_eq!(mismatches(&literal(4.0), &ADD_S1_52[1]), ["1", "e123inf"]);
+    assert_eq!(mismatches(&literal(1.0), &ADD_52[0][0]), [""; 0]);
+    assert_eq!(mismatches(&literal(4.0), &ADD_52[1][0]), ["1", "e123inf"]);
     let read = joins::additive_start(&a.pose, &shaped_indicatrix(&nu0, &4.0, &gamma0()), 3).unwrap();
-    assert_eq!(mismatches(&read, &ADD_S1_52[1]), [""; 0]);
+    assert_eq!(mismatches(&read, &ADD_52[1][0]), [""; 0]);
 }
 
 // ---------------------------------------------------------------- exactness over Q
@@ -266,7 +207,7 @@ fn bivector(m: &Motor<f64>) -> Motor<f64> {
 /// reversal-symmetric (eq. 16), so eq. (21) at `t = 1` holds only in its bivector part.
 #[test]
 fn end_indicatrices_by_dual_numbers() {
-    let (a51, b51) = sec_5_1(1.959, [1.0, 2.0, 3.0]);
+    let (a51, b51) = sec_5_1(PRINTED_ANGLE, AXIS);
     let (a52, b52) = sec_5_2();
     let cases = [
         (a51.clone(), b51.clone(), Shape::unit(), Shape::unit()),

@@ -197,35 +197,7 @@ fn theorem_4_5_ii_at_256_bits() {
 // ---------------------------------------------------------------------------------------------
 // The Sec. 4 quadrant example
 
-fn motor(c: [f64; 8]) -> Pose<f64> {
-    Pose(Motor::new(c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7]))
-}
-
-/// `U_0..U_3` exactly as printed (4 decimals).
-#[allow(clippy::approx_constant)] // the paper's printed values
-fn printed_arc() -> Vec<Pose<f64>> {
-    vec![
-        motor([0.7071, 0.7071, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]),
-        motor([0.8047, 0.4714, 0.0, 0.0, 0.6667, 0.6667, 0.0, 0.0]),
-        motor([0.9024, 0.2357, 0.0, 0.0, 1.3333, 1.3333, 0.0, 0.0]),
-        motor([1.0, 0.0, 0.0, 0.0, 2.0, 2.0, 0.0, 0.0]),
-    ]
-}
-
-/// The exact poses the printed ones round: `U_0 = (1 + e12)/√2` (a quarter turn about e3),
-/// `U_3 = 1 + 2e1inf + 2e2inf` (the translation by (4, 4, 0)), and `U_1, U_2` on the line
-/// between them: the cubic is the linear motion `(1 - t)U_0 + tU_3` degree-elevated twice.
-fn exact_arc() -> Vec<Pose<f64>> {
-    let h = std::f64::consts::FRAC_1_SQRT_2;
-    let u0 = motor([h, h, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]);
-    let u3 = motor([1.0, 0.0, 0.0, 0.0, 2.0, 2.0, 0.0, 0.0]);
-    AdditiveBezier::new(vec![u0, u3]).unwrap().elevated().elevated().poses().to_vec()
-}
-
-#[allow(clippy::approx_constant)] // the paper's printed values
-fn printed_line() -> Vec<Pose<f64>> {
-    [2.0, 3.0472, 4.0944, 5.1416].map(|x| motor([1.0, 0.0, 0.0, 0.0, x, 2.0, 0.0, 0.0])).to_vec()
-}
+use motion::paper::sec_4::{exact_arc, printed_arc, printed_line};
 
 fn round4(x: f64) -> f64 {
     (x * 1e4).round() / 1e4
@@ -240,7 +212,7 @@ fn round4(x: f64) -> f64 {
 #[test]
 #[allow(clippy::approx_constant)] // the paper's printed values
 fn quadrant_example_indicatrix_at_end_of_arc() {
-    let printed_psi = [0.5858, -1.4142, 5.6569];
+    let printed_psi = motion::paper::sec_4::PRINTED_PSI_END_OF_ARC;
     // The exact poses reproduce the printed Ψ to all 4 printed decimals...
     let exact = exact_arc();
     for (e, p) in exact.iter().zip(printed_arc()) {
