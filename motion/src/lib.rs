@@ -29,6 +29,7 @@
 //! | [`hermite`] | Hermite interpolation through precision poses with velocities (Sec. 5.3) |
 //! | [`error`] | [`MotionError`] |
 //! | [`spec`] | the `gam hermite` spec: format, checks ([`spec::SpecError`]), segment |
+//! | [`trajectory`] | [`trajectory::Trajectory`]: a C1 motion through key poses at times in one call, velocity estimate, sampler |
 //! | [`paper`] | the paper's worked examples (Secs. 4, 5.1, 5.2, 5.3 Jaklič), once |
 //!
 //! ```
@@ -51,6 +52,8 @@ pub mod joins;
 pub mod matrix;
 #[cfg(feature = "nalgebra")]
 pub mod nalgebra_conv;
+#[cfg(feature = "nalgebra")]
+pub mod nalgebra_generic;
 mod ops;
 pub mod paper;
 pub mod piecewise;
@@ -58,6 +61,7 @@ pub mod pose;
 pub mod pseudoscalar;
 mod series;
 pub mod spec;
+pub mod trajectory;
 pub mod velocity;
 
 pub use algebra_core;
