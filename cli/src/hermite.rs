@@ -15,7 +15,7 @@ use motion::spec::SpecError;
 use serde_json::{Value, json};
 
 /// Replaces `//` comments outside JSON strings by spaces (line and column numbers unchanged).
-fn strip_comments(text: &str) -> String {
+pub(crate) fn strip_comments(text: &str) -> String {
     let mut out = String::with_capacity(text.len());
     let mut chars = text.chars().peekable();
     let (mut in_string, mut escaped, mut in_comment) = (false, false, false);

@@ -10,6 +10,7 @@ mod error;
 mod eval;
 mod expr;
 mod hermite;
+mod interpolate;
 mod output;
 mod plot;
 mod sample;
@@ -108,6 +109,16 @@ enum Command {
         #[arg(value_name = "SPEC.json")]
         spec: String,
     },
+    /// A motion through key poses by a named method (ccm-additive, ccm-multiplicative).
+    Interpolate {
+        /// Print one JSON object: {"method", "parameters", "segments", "samples"}.
+        #[arg(long)]
+        json: bool,
+        /// The JSON spec: method, poses, optional parameters, velocities, shape, gamma, samples,
+        /// body_points (see docs/cli.md).
+        #[arg(value_name = "SPEC.json")]
+        spec: String,
+    },
     /// Sample a `gam hermite` segment: pose, body point position, linear and angular speed.
     Sample {
         /// The number of evenly spaced parameter values t = 0..1 (at least 2).
@@ -157,6 +168,7 @@ fn run(command: Command) -> Result<(String, Option<CliError>), CliError> {
             codegen::codegen(&codegen::CodegenArgs { algebra, types, basis, emit, module, json })
         }
         Command::Hermite { json, spec } => hermite::hermite(&spec, json),
+        Command::Interpolate { json, spec } => interpolate::interpolate(&spec, json),
         Command::Sample { samples, json, spec } => sample::sample(&spec, samples, json),
         Command::Plot { out, samples, spec } => plot::plot(&spec, &out, samples),
         Command::Verify { json, filter } => {
@@ -175,7 +187,7 @@ fn clap_failure(e: clap::Error) -> ExitCode {
     let text = e.render().to_string();
     let line = match e.kind() {
         ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand | ErrorKind::MissingSubcommand => {
-            "error: a subcommand is required: algebras, eval, table, codegen, hermite, sample, plot or verify (see gam --help)"
+            "error: a subcommand is required: algebras, eval, table, codegen, hermite, interpolate, sample, plot or verify (see gam --help)"
                 .to_string()
         }
         _ => first_error_line(&text),

@@ -28,7 +28,12 @@ fn range(values: impl Iterator<Item = f64>) -> (f64, f64) {
 /// The title of the figure.
 pub(crate) fn title(s: &Sampled) -> String {
     let p = s.body_point.map(format_f64);
-    format!("{} segment of degree {}, body point [{}, {}, {}]", s.kind, s.degree, p[0], p[1], p[2])
+    let what = if s.segments == 1 {
+        format!("{} segment of degree {}", s.kind, s.degree)
+    } else {
+        format!("{} motion of {} segments of degree {}", s.kind, s.segments, s.degree)
+    };
+    format!("{what}, body point [{}, {}, {}]", p[0], p[1], p[2])
 }
 
 fn draw_error<E: std::fmt::Display>(e: E) -> CliError {
@@ -45,6 +50,10 @@ pub(crate) fn render(s: &Sampled) -> Result<String, CliError> {
         let (left, right) = root.split_horizontally(600);
 
         // Panel 1: speeds against t.
+        let t_range = match (s.samples.first(), s.samples.last()) {
+            (Some(a), Some(b)) if b.t > a.t => (a.t, b.t),
+            _ => (0.0, 1.0),
+        };
         let (_, speed_hi) =
             range(s.samples.iter().flat_map(|x| [x.linear_speed, x.angular_speed]).chain(std::iter::once(0.0)));
         let mut chart = ChartBuilder::on(&left)
@@ -52,7 +61,7 @@ pub(crate) fn render(s: &Sampled) -> Result<String, CliError> {
             .margin(15)
             .x_label_area_size(40)
             .y_label_area_size(60)
-            .build_cartesian_2d(0.0..1.0, 0.0..speed_hi)
+            .build_cartesian_2d(t_range.0..t_range.1, 0.0..speed_hi)
             .map_err(draw_error)?;
         chart.configure_mesh().x_desc("t").y_desc("speed (per unit t)").draw().map_err(draw_error)?;
         chart

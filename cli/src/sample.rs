@@ -1,5 +1,6 @@
 //! `gam sample SPEC.json --samples N [--json]`: the Hermite segment of a `gam hermite` spec
-//! (see [`crate::hermite`]) sampled at `N` evenly spaced parameter values `t = 0..1`: the pose,
+//! (see [`crate::hermite`]) sampled at `N` evenly spaced parameter values `t = 0..1` (or the
+//! motion of a `gam interpolate` spec over `[t_0, t_m]`, [`crate::interpolate::sampled`]): the pose,
 //! the position of a body point (`body_point` in the spec, body coordinates, default the
 //! origin), its linear speed and the angular speed of the body.
 //!
@@ -37,8 +38,10 @@ pub(crate) struct Sample {
 pub(crate) struct Sampled {
     /// Additive or multiplicative.
     pub kind: SegmentKind,
-    /// The degree of the segment.
+    /// The degree of the segment(s).
     pub degree: usize,
+    /// The number of segments (1 for a `gam hermite` spec).
+    pub segments: usize,
     /// The body point (body coordinates).
     pub body_point: [f64; 3],
     /// The samples, `t` from 0 to 1.
@@ -53,6 +56,9 @@ fn norm(v: &[f64; 3]) -> f64 {
 pub(crate) fn sample_spec(path: &str, n: usize) -> Result<Sampled, CliError> {
     if !(2..=MAX_SAMPLES).contains(&n) {
         return Err(CliError::usage(format!("`--samples` must be an integer from 2 to {MAX_SAMPLES} (got {n})")));
+    }
+    if let Some(s) = crate::interpolate::sampled(path, n)? {
+        return Ok(s);
     }
     let spec = read_spec(path)?;
     let body_point = spec.body_point.unwrap_or([0.0; 3]);
@@ -86,7 +92,7 @@ pub(crate) fn sample_spec(path: &str, n: usize) -> Result<Sampled, CliError> {
         }
         samples.push(sample);
     }
-    Ok(Sampled { kind, degree, body_point, samples })
+    Ok(Sampled { kind, degree, segments: 1, body_point, samples })
 }
 
 /// Runs `gam sample`.
@@ -118,15 +124,6 @@ pub fn sample(path: &str, n: usize, json: bool) -> Result<String, CliError> {
         row.push(mv_human(&x.pose.as_motor().to_multivector()));
         rows.push(row);
     }
-    let p = s.body_point.map(format_f64);
-    let title = format!(
-        "{} segment of degree {}, body point [{}, {}, {}], {} samples",
-        s.kind,
-        s.degree,
-        p[0],
-        p[1],
-        p[2],
-        s.samples.len()
-    );
+    let title = format!("{}, {} samples", crate::plot::title(&s), s.samples.len());
     Ok(format!("{title}\n{}", text_table(&rows)))
 }

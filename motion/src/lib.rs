@@ -30,6 +30,7 @@
 //! | [`error`] | [`MotionError`] |
 //! | [`spec`] | the `gam hermite` spec: format, checks ([`spec::SpecError`]), segment |
 //! | [`trajectory`] | [`trajectory::Trajectory`]: a C1 motion through key poses at times in one call, velocity estimate, sampler |
+//! | [`method`] | the methods of `gam interpolate` by name ([`method::Method`]) |
 //! | [`paper`] | the paper's worked examples (Secs. 4, 5.1, 5.2, 5.3 Jaklič), once |
 //!
 //! ```
@@ -50,6 +51,7 @@ pub mod hermite;
 pub mod interpolation;
 pub mod joins;
 pub mod matrix;
+pub mod method;
 #[cfg(feature = "nalgebra")]
 pub mod nalgebra_conv;
 #[cfg(feature = "nalgebra")]
