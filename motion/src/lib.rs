@@ -30,6 +30,7 @@
 //! | [`error`] | [`MotionError`] |
 //! | [`spec`] | the `gam hermite` spec: format, checks ([`spec::SpecError`]), segment |
 //! | [`trajectory`] | [`trajectory::Trajectory`]: a C1 motion through key poses at times in one call, velocity estimate, sampler |
+//! | [`jacobian`] | [`jacobian::JetN`] (multi-directional duals), derivatives of a sampled body point and twist w.r.t. every key pose and time |
 //! | [`method`] | the methods of `gam interpolate` by name ([`method::Method`]) |
 //! | [`paper`] | the paper's worked examples (Secs. 4, 5.1, 5.2, 5.3 Jaklič), once |
 //!
@@ -49,6 +50,7 @@ pub mod error;
 pub mod exp_log;
 pub mod hermite;
 pub mod interpolation;
+pub mod jacobian;
 pub mod joins;
 pub mod matrix;
 pub mod method;
