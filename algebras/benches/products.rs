@@ -108,7 +108,7 @@ fn data() -> &'static Data {
         // the implementations agree (sanity check, outside the timing)
         let reference = &runtime[0] * &runtime[BATCH];
         let by_table = table_gp(&table, &dense[0], &dense[BATCH]);
-        let by_generated = (&generated[0] * &generated[BATCH]).to_multivector();
+        let by_generated = (generated[0] * generated[BATCH]).to_multivector();
         for (mask, t) in by_table.iter().enumerate() {
             let r = reference.coeff(mask as u32);
             assert!((r - t).abs() < 1e-12 && (r - by_generated.coeff(mask as u32)).abs() < 1e-12);

@@ -56,7 +56,7 @@ pub fn pose(t: Dual64) -> Pose<Dual64> {
 pub fn end_condition(t: f64) -> EndCondition<f64> {
     let td = Dual64::new(t, 1.0);
     let (rotor, rotor_dot) = split(&quaternion(td).unitize().expect("q(t) is never zero for t > 0"));
-    let w = (&rotor.inverse().expect("unit rotor").0 * &rotor_dot).scale(&2.0);
+    let w = (rotor.inverse().expect("unit rotor").0 * rotor_dot).scale(&2.0);
     let omega = [w.e23, -w.e13, w.e12];
     let c = path(td);
     EndCondition::new(split(&pose(td)).0, c.map(|x| x.re), c.map(|x| x.eps), omega)
