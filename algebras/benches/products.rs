@@ -361,57 +361,51 @@ fn interleaved_report() {
 }
 
 /// The versor-action, nalgebra and closed-form groups (docs/performance.md).
-fn versor_report() {
-    interleaved(
+const VERSOR_GROUPS: [(&str, &[(&str, Kernel)]); 5] = [
+    (
         "conformal point (cga_null, f64)",
         &[
-            ("cga_null Motor * Motor", cn_motor_product, BATCH),
-            ("cga_null Motor.sandwich(Vector), fused", cn_sandwich_fused, BATCH),
-            ("cga_null (rev(S) x) S, composed full kernels", cn_sandwich_composed, BATCH),
+            ("cga_null Motor * Motor", cn_motor_product),
+            ("cga_null Motor.sandwich(Vector), fused", cn_sandwich_fused),
+            ("cga_null (rev(S) x) S, composed full kernels", cn_sandwich_composed),
         ],
-        2000,
-        1,
-    );
-    interleaved(
+    ),
+    (
         "PGA point at f32",
         &[
-            ("pga3 Motor<f32> * Motor<f32>", pga32_motor_product, BATCH),
-            ("pga3 Motor<f32>.apply(Trivector)", pga32_apply_point, BATCH),
+            ("pga3 Motor<f32> * Motor<f32>", pga32_motor_product),
+            ("pga3 Motor<f32>.apply(Trivector)", pga32_apply_point),
         ],
-        2000,
-        1,
-    );
-    interleaved(
+    ),
+    (
         "against nalgebra (f64)",
         &[
-            ("nalgebra DualQuaternion *", na_dq_product, BATCH),
-            ("g123inf Motor * Motor", g123_motor_product, BATCH),
-            ("nalgebra UnitDualQuaternion::transform_point", na_unit_dq_point, BATCH),
-            ("pga3 Motor.apply(Trivector point)", pga_apply_point, BATCH),
-            ("nalgebra Isometry3::transform_point", na_iso_point, BATCH),
+            ("nalgebra DualQuaternion *", na_dq_product),
+            ("g123inf Motor * Motor", g123_motor_product),
+            ("nalgebra UnitDualQuaternion::transform_point", na_unit_dq_point),
+            ("pga3 Motor.apply(Trivector point)", pga_apply_point),
+            ("nalgebra Isometry3::transform_point", na_iso_point),
         ],
-        2000,
-        1,
-    );
-    interleaved(
+    ),
+    (
         "closed-form motor exp and log (g123inf, f64)",
         &[
-            ("g123inf Motor * Motor", g123_motor_product, BATCH),
-            ("g123inf Bivector::exp", motor_exp, BATCH),
-            ("g123inf Motor::log (unit motors)", motor_log, BATCH),
+            ("g123inf Motor * Motor", g123_motor_product),
+            ("g123inf Bivector::exp", motor_exp),
+            ("g123inf Motor::log (unit motors)", motor_log),
         ],
-        2000,
-        1,
-    );
-    interleaved(
+    ),
+    (
         "a batch of points by one pose (f64)",
-        &[
-            ("nalgebra Isometry3::transform_point", na_iso_batch, BATCH),
-            ("pga3 Motor.apply(Trivector)", pga_batch, BATCH),
-        ],
-        2000,
-        1,
-    );
+        &[("nalgebra Isometry3::transform_point", na_iso_batch), ("pga3 Motor.apply(Trivector)", pga_batch)],
+    ),
+];
+
+fn versor_report() {
+    for (title, kernels) in VERSOR_GROUPS {
+        let kernels: Vec<(&str, Kernel, usize)> = kernels.iter().map(|&(n, k)| (n, k, BATCH)).collect();
+        interleaved(title, &kernels, 2000, 1);
+    }
 }
 
 fn config() -> Criterion {
