@@ -28,6 +28,17 @@
 //! w *= 0.5;
 //! w[0] = 1.0;                                   // IndexMut
 //! assert_eq!(<[f32; 4]>::from(w), [1.0, 1.5, 0.125, 0.0]);
+//! assert_eq!(Vector::from([1.0, 1.5, 0.125, 0.0]), w);
+//! for c in w.iter_mut() {
+//!     *c *= 2.0;
+//! }
+//! w /= 2.0;
+//! w -= Vector::e0();
+//! assert_eq!(w.into_iter().collect::<Vec<f32>>(), [0.0, 1.5, 0.125, 0.0]);
+//! assert_eq!((&w).into_iter().count(), Vector::<f32>::LEN);
+//! assert_eq!(&w * 2.0, w + w);
+//! assert_eq!(&w / 2.0, w * 0.5);
+//! assert_eq!(w.into_array(), w.to_array());
 //! let m = Motor::<f32>::one() + Motor::e12() * 0.5;
 //! let (a, b, c) = (m * m, &m * m, m * &m);     // values, references and mixed
 //! assert!(a == b && b == c);
