@@ -65,3 +65,25 @@ pub trait AnticommutatorProduct<Rhs: ?Sized> {
     /// `(self rhs + rhs self)/2`.
     fn anticommutator(&self, rhs: &Rhs) -> Self::Output;
 }
+
+/// The main paper's sandwich `f_S(x) = rev(S) x S` (eq. 3). For a versor type `S` and a
+/// declared operand type `X` the generated impl is one fused kernel returning `X`: the
+/// projection of `rev(S) x S` onto `X`, which is the action itself whenever `S` is a versor
+/// whose action preserves `X`'s grades (motors and rotors on vectors, bivectors, motors).
+/// Other pairs return the full product's type.
+pub trait Sandwich<X: ?Sized> {
+    /// `X` for a fused kernel, else the smallest declared type holding `rev(S) x S`.
+    type Output;
+    /// `rev(self) x self`.
+    fn sandwich(&self, x: &X) -> Self::Output;
+}
+
+/// The versor action `S x rev(S)` in the convention of klein, GATL and ganja (the reverse of
+/// [`Sandwich`]'s: `s.apply(x) == s.reverse().sandwich(x)`), fused and typed as
+/// [`Sandwich`] is.
+pub trait Apply<X: ?Sized> {
+    /// `X` for a fused kernel, else the smallest declared type holding `S x rev(S)`.
+    type Output;
+    /// `self x rev(self)`.
+    fn apply(&self, x: &X) -> Self::Output;
+}

@@ -69,6 +69,7 @@ struct Decl {
     metric_span: proc_macro2::Span,
     basis: Basis,
     types: Vec<TypeDecl>,
+    serde: bool,
 }
 
 fn parse_value(input: ParseStream) -> syn::Result<Q> {
@@ -95,6 +96,7 @@ impl Parse for Decl {
         let body;
         braced!(body in input);
         let (mut generators, mut metric, mut basis, mut types) = (None, None, Basis::Blade, None);
+        let mut serde = false;
         let mut metric_span = proc_macro2::Span::call_site();
         while !body.is_empty() {
             let key: Ident = body.parse()?;
@@ -135,6 +137,14 @@ impl Parse for Decl {
                         metric = Some(MetricDecl::Builtin(body.parse()?));
                         body.parse::<Token![;]>()?;
                     }
+                }
+                "derive" => {
+                    let d: Ident = body.parse()?;
+                    if d != "serde" {
+                        return Err(syn::Error::new(d.span(), "expected `serde` (the only optional derive)"));
+                    }
+                    serde = true;
+                    body.parse::<Token![;]>()?;
                 }
                 "basis" => {
                     let b: Ident = body.parse()?;
@@ -189,7 +199,7 @@ impl Parse for Decl {
                 other => {
                     return Err(syn::Error::new(
                         key.span(),
-                        format!("unknown section `{other}` (expected generators, metric, basis or types)"),
+                        format!("unknown section `{other}` (expected generators, metric, basis, derive or types)"),
                     ));
                 }
             }
@@ -205,7 +215,7 @@ impl Parse for Decl {
             (MetricDecl::Builtin(_), None) => Vec::new(),
             (MetricDecl::Pairs(_), None) => return Err(missing("generators")),
         };
-        Ok(Decl { attrs, vis, name, generators, metric, metric_span, basis, types })
+        Ok(Decl { attrs, vis, name, generators, metric, metric_span, basis, types, serde })
     }
 }
 
@@ -280,10 +290,11 @@ fn expand(decl: Decl) -> syn::Result<proc_macro2::TokenStream> {
         spec.doc = doc_lines(&t.attrs);
         types.push(spec);
     }
-    let spec = ModuleSpec::new(&decl.name.to_string(), metric, decl.basis, types).map_err(|e| {
+    let mut spec = ModuleSpec::new(&decl.name.to_string(), metric, decl.basis, types).map_err(|e| {
         let span = decl.types.last().map(|t| t.name.span()).unwrap_or(decl.name.span());
         syn::Error::new(span, e)
     })?;
+    spec.serde = decl.serde;
     let plan = Plan::new(spec).map_err(|e| syn::Error::new(decl.name.span(), e))?;
     let items = algebra_core::codegen::emit::module_items(&plan);
     let (attrs, vis, name) = (&decl.attrs, &decl.vis, &decl.name);

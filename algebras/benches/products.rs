@@ -15,12 +15,21 @@
 //! **interleaved**: each round times every kernel of a group back to back (in rotating order),
 //! and the report gives the median of the per-round ratios.
 //!
+//! * versor action (the report only, interleaved): `cga_null::Motor::sandwich(&Vector)` (fused)
+//!   and the composed `(rev(S) x) S` relative to `cga_null` `Motor * Motor`; `pga3` `apply` on a
+//!   trivector point at f32 relative to the f32 motor product; against nalgebra (f64):
+//!   `g123inf` `Motor * Motor` vs `DualQuaternion *`, a pose applied to a point (`pga3` `apply`
+//!   on a trivector) vs `UnitDualQuaternion::transform_point` and `Isometry3::transform_point`,
+//!   and a batch of points by one pose; closed-form `g123inf` `Bivector::exp` and `Motor::log`
+//!   relative to `Motor * Motor`.
+//!
 //! Run with `cargo bench -p gam-algebras --bench products`.
 #![allow(missing_docs)]
 
 use algebra_core::{Algebra, Multivector, Product, Ring};
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group};
-use gam_algebras::{DualQuaternion, cga, g123inf};
+use gam_algebras::{DualQuaternion, cga, cga_null, g123inf, pga3};
+use nalgebra::{Isometry3, Point3, Quaternion, Translation3, UnitDualQuaternion, UnitQuaternion, Vector3};
 use std::hint::black_box;
 use std::sync::OnceLock;
 use std::time::{Duration, Instant};
@@ -68,6 +77,24 @@ struct Data {
     dense: Vec<[f64; 32]>,
     runtime: Vec<Multivector<f64>>,
     generated: Vec<cga::Multivector<f64>>,
+    versor: Versor,
+}
+
+/// The operands of the versor-action and closed-form groups.
+struct Versor {
+    cn_motors: Vec<cga_null::Motor<f64>>,
+    cn_points: Vec<cga_null::Vector<f64>>,
+    pga_motors32: Vec<pga3::Motor<f32>>,
+    pga_points32: Vec<pga3::Trivector<f32>>,
+    pga_motors: Vec<pga3::Motor<f64>>,
+    pga_points: Vec<pga3::Trivector<f64>>,
+    motors: Vec<g123inf::Motor<f64>>,
+    bivectors: Vec<g123inf::Bivector<f64>>,
+    units: Vec<g123inf::Motor<f64>>,
+    dq: Vec<nalgebra::DualQuaternion<f64>>,
+    unit_dq: Vec<UnitDualQuaternion<f64>>,
+    iso: Vec<Isometry3<f64>>,
+    points: Vec<Point3<f64>>,
 }
 
 fn data() -> &'static Data {
@@ -108,13 +135,60 @@ fn data() -> &'static Data {
         // the implementations agree (sanity check, outside the timing)
         let reference = &runtime[0] * &runtime[BATCH];
         let by_table = table_gp(&table, &dense[0], &dense[BATCH]);
-        let by_generated = (&generated[0] * &generated[BATCH]).to_multivector();
+        let by_generated = (generated[0] * generated[BATCH]).to_multivector();
         for (mask, t) in by_table.iter().enumerate() {
             let r = reference.coeff(mask as u32);
             assert!((r - t).abs() < 1e-12 && (r - by_generated.coeff(mask as u32)).abs() < 1e-12);
         }
-        Data { motors, ours, theirs, table, dense, runtime, generated }
+        Data { motors, ours, theirs, table, dense, runtime, generated, versor: versor_data() }
     })
+}
+
+fn versor_data() -> Versor {
+    let mut rng = Rng(0x2545_f491_4f6c_dd1d);
+    let mut d = Versor {
+        cn_motors: Vec::new(),
+        cn_points: Vec::new(),
+        pga_motors32: Vec::new(),
+        pga_points32: Vec::new(),
+        pga_motors: Vec::new(),
+        pga_points: Vec::new(),
+        motors: Vec::new(),
+        bivectors: Vec::new(),
+        units: Vec::new(),
+        dq: Vec::new(),
+        unit_dq: Vec::new(),
+        iso: Vec::new(),
+        points: Vec::new(),
+    };
+    for _ in 0..2 * BATCH {
+        let c = [(); 8].map(|_| rng.next());
+        let p = [(); 3].map(|_| rng.next());
+        d.cn_motors.push(cga_null::Motor::from_array(c));
+        let p2 = p.iter().map(|x| x * x).sum::<f64>() / 2.0;
+        d.cn_points.push(cga_null::Vector::new(1.0, p[0], p[1], p[2], p2));
+        d.pga_motors.push(pga3::Motor::from_array(c));
+        d.pga_motors32.push(pga3::Motor::from_array(c.map(|x| x as f32)));
+        d.pga_points.push(pga3::Trivector::new(p[0], p[1], p[2], 1.0));
+        d.pga_points32.push(pga3::Trivector::new(p[0] as f32, p[1] as f32, p[2] as f32, 1.0));
+        d.motors.push(g123inf::Motor::from_array(c));
+        let b = g123inf::Bivector::from_array([c[1], c[2], c[4], c[3], c[5], c[6]]);
+        d.units.push(b.exp());
+        d.bivectors.push(b);
+        let (r, t) = (Quaternion::new(c[0], c[1], c[2], c[3]), Quaternion::new(c[4], c[5], c[6], c[7]));
+        d.dq.push(nalgebra::DualQuaternion::from_real_and_dual(r, t));
+        let rot = UnitQuaternion::from_quaternion(r);
+        let tr = Translation3::new(c[5], c[6], c[7]);
+        d.unit_dq.push(UnitDualQuaternion::from_parts(tr, rot));
+        d.iso.push(Isometry3::from_parts(tr, rot));
+        d.points.push(Point3::from(Vector3::new(p[0], p[1], p[2])));
+    }
+    // sanity: the fused action is the projected composed one
+    let (s, x) = (&d.cn_motors[0], &d.cn_points[0]);
+    let composed = cga_null::Vector::project(&((s.reverse() * x) * s).to_multivector());
+    let fused = s.sandwich(x);
+    assert!(fused.iter().zip(composed.iter()).all(|(a, b)| (a - b).abs() < 1e-12));
+    d
 }
 
 /// A kernel run over the first `n` operand pairs of a batch.
@@ -159,6 +233,55 @@ fn cga_runtime(d: &Data, n: usize) {
     let (xs, ys) = d.runtime.split_at(BATCH);
     for (x, y) in xs.iter().zip(ys).take(n) {
         black_box(black_box(x) * black_box(y));
+    }
+}
+
+macro_rules! pairs {
+    ($name:ident, $xs:ident, $ys:ident, |$x:ident, $y:ident| $body:expr) => {
+        fn $name(d: &Data, n: usize) {
+            for ($x, $y) in d.versor.$xs[..n].iter().zip(&d.versor.$ys[BATCH..BATCH + n]) {
+                let ($x, $y) = (black_box($x), black_box($y));
+                black_box($body);
+            }
+        }
+    };
+}
+
+pairs!(cn_motor_product, cn_motors, cn_motors, |x, y| x * y);
+pairs!(cn_sandwich_fused, cn_motors, cn_points, |s, p| s.sandwich(p));
+pairs!(cn_sandwich_composed, cn_motors, cn_points, |s, p| (s.reverse() * p) * s);
+pairs!(pga32_motor_product, pga_motors32, pga_motors32, |x, y| x * y);
+pairs!(pga32_apply_point, pga_motors32, pga_points32, |s, p| s.apply(p));
+pairs!(g123_motor_product, motors, motors, |x, y| x * y);
+pairs!(na_dq_product, dq, dq, |x, y| *x * *y);
+pairs!(pga_apply_point, pga_motors, pga_points, |s, p| s.apply(p));
+pairs!(na_unit_dq_point, unit_dq, points, |s, p| s.transform_point(p));
+pairs!(na_iso_point, iso, points, |s, p| s.transform_point(p));
+
+fn motor_exp(d: &Data, n: usize) {
+    for b in &d.versor.bivectors[..n] {
+        black_box(black_box(b).exp());
+    }
+}
+
+fn motor_log(d: &Data, n: usize) {
+    for m in &d.versor.units[..n] {
+        black_box(black_box(m).log().ok());
+    }
+}
+
+/// One pose, a batch of points.
+fn pga_batch(d: &Data, n: usize) {
+    let s = black_box(&d.versor.pga_motors[0]);
+    for p in &d.versor.pga_points[..n] {
+        black_box(s.apply(black_box(p)));
+    }
+}
+
+fn na_iso_batch(d: &Data, n: usize) {
+    let s = black_box(&d.versor.iso[0]);
+    for p in &d.versor.points[..n] {
+        black_box(s.transform_point(black_box(p)));
     }
 }
 
@@ -237,6 +360,54 @@ fn interleaved_report() {
     );
 }
 
+/// The versor-action, nalgebra and closed-form groups (docs/performance.md).
+const VERSOR_GROUPS: [(&str, &[(&str, Kernel)]); 5] = [
+    (
+        "conformal point (cga_null, f64)",
+        &[
+            ("cga_null Motor * Motor", cn_motor_product),
+            ("cga_null Motor.sandwich(Vector), fused", cn_sandwich_fused),
+            ("cga_null (rev(S) x) S, composed full kernels", cn_sandwich_composed),
+        ],
+    ),
+    (
+        "PGA point at f32",
+        &[
+            ("pga3 Motor<f32> * Motor<f32>", pga32_motor_product),
+            ("pga3 Motor<f32>.apply(Trivector)", pga32_apply_point),
+        ],
+    ),
+    (
+        "against nalgebra (f64)",
+        &[
+            ("nalgebra DualQuaternion *", na_dq_product),
+            ("g123inf Motor * Motor", g123_motor_product),
+            ("nalgebra UnitDualQuaternion::transform_point", na_unit_dq_point),
+            ("pga3 Motor.apply(Trivector point)", pga_apply_point),
+            ("nalgebra Isometry3::transform_point", na_iso_point),
+        ],
+    ),
+    (
+        "closed-form motor exp and log (g123inf, f64)",
+        &[
+            ("g123inf Motor * Motor", g123_motor_product),
+            ("g123inf Bivector::exp", motor_exp),
+            ("g123inf Motor::log (unit motors)", motor_log),
+        ],
+    ),
+    (
+        "a batch of points by one pose (f64)",
+        &[("nalgebra Isometry3::transform_point", na_iso_batch), ("pga3 Motor.apply(Trivector)", pga_batch)],
+    ),
+];
+
+fn versor_report() {
+    for (title, kernels) in VERSOR_GROUPS {
+        let kernels: Vec<(&str, Kernel, usize)> = kernels.iter().map(|&(n, k)| (n, k, BATCH)).collect();
+        interleaved(title, &kernels, 2000, 1);
+    }
+}
+
 fn config() -> Criterion {
     Criterion::default().warm_up_time(Duration::from_secs(1)).measurement_time(Duration::from_secs(4)).sample_size(40)
 }
@@ -253,5 +424,6 @@ fn main() {
     // `cargo bench` passes `--bench`; skip the report when the bench is run as a test.
     if std::env::args().any(|a| a == "--bench") {
         interleaved_report();
+        versor_report();
     }
 }

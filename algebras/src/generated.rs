@@ -6,6 +6,7 @@ use algebra_macros::algebra;
 algebra! {
     /// Euclidean 3-space R^3 (labels 1, 2, 3).
     pub mod g3 {
+        derive serde;
         metric builtin "g3";
         types {
             /// Scalars.
@@ -28,6 +29,7 @@ algebra! {
     /// The main paper's G_{123inf} (labels 1, 2, 3, inf; einf^2 = 0). Its even subalgebra is
     /// the paper's poses and is isomorphic to the dual quaternions (Appendix 2).
     pub mod g123inf {
+        derive serde;
         metric builtin "g123inf";
         types {
             /// Vectors.
@@ -47,6 +49,7 @@ algebra! {
 algebra! {
     /// Projective geometric algebra R^{3,0,1} (labels 0, 1, 2, 3; e0^2 = 0).
     pub mod pga3 {
+        derive serde;
         metric builtin "pga3";
         types {
             /// Vectors (planes).
@@ -67,6 +70,7 @@ algebra! {
     /// Conformal geometric algebra R^{4,1} (labels 1..5; e4^2 = 1, e5^2 = -1), as in
     /// Wareham and Lasenby.
     pub mod cga {
+        derive serde;
         metric builtin "cga";
         types {
             /// Vectors (points, spheres, planes).
@@ -87,6 +91,7 @@ algebra! {
     /// The main paper's G_{0123inf} in its product basis (e0 . einf = -1, e0^2 = einf^2 = 0):
     /// basis elements are geometric products of generators.
     pub mod cga_null {
+        derive serde;
         metric builtin "cga-null";
         basis product;
         types {

@@ -248,7 +248,7 @@ fn rotation_and_translation_map_to_the_standard_unit_dual_quaternion() {
     let mut rng = Rng(0x9e37_79b9_7f4a_7c15);
     for _ in 0..200 {
         let (axis, phi, v, p) = (rng.unit3(), 3.0 * rng.next(), rng.vec3().map(|x| 4.0 * x), rng.vec3());
-        let s = &paper_rotation(axis, phi) * &paper_translation(v);
+        let s = paper_rotation(axis, phi) * paper_translation(v);
         let qdq = DualQuaternion::from_pose(&s);
         // the textbook construction
         let r = Quaternion::new((phi / 2.0).cos(), 0.0, 0.0, 0.0);
@@ -298,7 +298,7 @@ fn product_matches_nalgebra() {
         let ours = (&a * &b).coeffs();
         let theirs = nalgebra_coeffs(&(to_nalgebra(&a) * to_nalgebra(&b)));
         assert!(close(&ours, &theirs, 1e-12), "{ours:?} vs {theirs:?}");
-        let via_motor = DualQuaternion::from(&(&Motor::from(&a) * &Motor::from(&b))).coeffs();
+        let via_motor = DualQuaternion::from(&(Motor::from(&a) * Motor::from(&b))).coeffs();
         assert!(close(&via_motor, &theirs, 1e-12), "{via_motor:?} vs {theirs:?}");
         let conj = nalgebra_coeffs(&to_nalgebra(&a).conjugate());
         assert!(close(&a.conjugate().coeffs(), &conj, 0.0));
@@ -313,7 +313,7 @@ fn pose_matches_nalgebra_unit_dual_quaternion() {
     let mut rng = Rng(0x0123_4567_89ab_cdef);
     for _ in 0..200 {
         let (axis, phi, v, p) = (rng.unit3(), 3.0 * rng.next(), rng.vec3(), rng.vec3());
-        let s = &paper_rotation(axis, phi) * &paper_translation(v);
+        let s = paper_rotation(axis, phi) * paper_translation(v);
         let rotation = UnitQuaternion::from_axis_angle(&nalgebra::Unit::new_normalize(Vector3::from(axis)), phi);
         let theirs = UnitDualQuaternion::from_parts(Translation3::from(Vector3::from(v)), rotation);
         let ours = DualQuaternion::from_pose(&s);

@@ -44,14 +44,14 @@ fn full_cga_null<T: Ring>(c: &[Q]) -> cga_null::Multivector<T> {
 fn f64_kernels_match_the_runtime() {
     let a = motor::<f64>(&rationals(8, 0));
     let b = motor::<f64>(&rationals(8, 3));
-    let c = &a * &b;
+    let c = a * b;
     let reference = a.to_multivector() * b.to_multivector();
     assert!((c.to_multivector() - reference).magnitude() < 1e-12);
     let inv = a.inverse().expect("invertible");
-    assert!((&a * &inv - g123inf::Motor::one()).to_multivector().magnitude() < 1e-12);
+    assert!((a * inv - g123inf::Motor::one()).to_multivector().magnitude() < 1e-12);
     let x = full_cga_null::<f64>(&rationals(32, 1));
     let y = full_cga_null::<f64>(&rationals(32, 4));
-    let xy = &x * &y;
+    let xy = x * y;
     let reference = x.to_multivector() * y.to_multivector();
     assert!((xy.to_multivector() - &reference).magnitude() < 1e-12 * reference.magnitude());
 }
@@ -98,7 +98,7 @@ fn dual64_derivative_of_a_square() {
         let what = format!("g123inf Motor, t = {t}");
         assert_dual_parts(
             &what,
-            &(&m * &m).to_multivector(),
+            &(m * m).to_multivector(),
             &(&at_t * &at_t).to_multivector(),
             &derivative.to_multivector(),
         );
@@ -114,7 +114,7 @@ fn dual64_derivative_of_a_square() {
         let what = format!("cga_null Multivector, t = {t}");
         assert_dual_parts(
             &what,
-            &(&m * &m).to_multivector(),
+            &(m * m).to_multivector(),
             &(&at_t * &at_t).to_multivector(),
             &derivative.to_multivector(),
         );
@@ -212,11 +212,10 @@ fn poly_symbolic_sandwich_matches_the_runtime() {
     let x = g123inf::Vector::new(v("x1"), v("x2"), v("x3"), v("xinf"));
     let generated = s.sandwich(&x);
     let runtime = s.to_multivector().sandwich(&x.to_multivector());
-    assert_eq!(generated.to_multivector(), runtime);
-    // the sandwich of a vector is a vector (the generated output type is the full multivector:
-    // the type is chosen from the two products' structural supports, which include trivectors)
+    // the fused kernel is typed as a Vector, and the sandwich of a vector by any even element
+    // of G_{123inf} is a vector (the runtime result converts exactly)
     let back = g123inf::Vector::try_from(&runtime).expect("a motor maps vectors to vectors");
-    assert_eq!(generated.project_to_vector(), back);
+    assert_eq!(generated, back);
 }
 
 /// Eq. (5): `S rev(S)` is the pseudoscalar `(S^2 + S12^2 + S13^2 + S23^2)

@@ -10,7 +10,8 @@ fn motor_product_matches_runtime() {
     assert_eq!(c.to_multivector(), a.to_multivector() * b.to_multivector());
     let v = Vector::<Q>::new(q(1), q(2), q(3), q(4));
     let s = a.sandwich(&v);
-    assert_eq!(s.to_multivector(), a.to_multivector().sandwich(&v.to_multivector()));
+    // a random even element is not a versor: the fused sandwich is the projection onto Vector
+    assert_eq!(s, Vector::project(&a.to_multivector().sandwich(&v.to_multivector())));
     let inv = a.inverse().unwrap();
     assert_eq!(&a * &inv, Motor::one());
 }

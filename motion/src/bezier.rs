@@ -350,7 +350,7 @@ impl<T: Ring> AdditiveBezier<T> {
                 binomial = binomial.mul_ref(&T::from_ratio((n + 1 - i) as i64, i as i64));
             }
             let weight = binomial.mul_ref(&s_pow[n - i]).mul_ref(&t_pow[i]);
-            sum = sum + pose.0.scale(&weight);
+            sum += pose.0.scale(&weight);
         }
         Pose(sum)
     }

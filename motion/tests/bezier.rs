@@ -233,7 +233,7 @@ fn additive_bspline_de_boor_equals_basis_sum() {
             let mut sum = Motor::zero();
             for (i, s) in poses.iter().enumerate() {
                 let w = basis(&knots, i, p, t, last);
-                sum = sum + s.0.scale(&w);
+                sum += s.0.scale(&w);
             }
             let got = m.pose(&t).unwrap();
             assert!(diff(&got.0, &sum) < 1e-12 * size(&sum), "degree {p}, t = {t}");

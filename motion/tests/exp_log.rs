@@ -207,7 +207,7 @@ fn derivative_of_exp_from_dual_numbers() {
     ];
     for b in &bs {
         for t0 in [0.0, 1e-9, 0.6, 2.5] {
-            let expected = b * &Pose::exp(&b.scale(&t0)).unwrap().0;
+            let expected = b * Pose::exp(&b.scale(&t0)).unwrap().0;
             let lift = |x: &f64| Dual64::from(*x);
             let bd = Motor::new(
                 lift(&b.scalar),

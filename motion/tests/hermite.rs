@@ -27,7 +27,7 @@ fn evaluate(seg: &HermiteSegment<f64>, t: Dual64) -> Pose<Dual64> {
 /// `(S(t), Ψ(t) = 2 S⁻¹ S')` of a segment at `t` by a dual number.
 fn pose_and_indicatrix(seg: &HermiteSegment<f64>, t: f64) -> (Pose<f64>, Motor<f64>) {
     let (s, ds) = value_and_derivative(&evaluate(seg, Dual64::new(t, 1.0)));
-    let psi = (&s.inverse().unwrap().0 * &ds).scale(&2.0);
+    let psi = (s.inverse().unwrap().0 * ds).scale(&2.0);
     (s, psi)
 }
 
@@ -45,7 +45,7 @@ fn jaklic_end_conditions_match_the_motion() {
         let t = (k + 1) as f64;
         let (s, ds) = value_and_derivative(&jaklic::pose(&Dual64::new(t, 1.0)).unwrap());
         assert!(s.is_unitary(&1e-14));
-        let psi = (&s.reverse().0 * &ds).scale(&2.0);
+        let psi = (s.reverse().0 * ds).scale(&2.0);
         assert!(diff(&psi, &cond.velocity_bivector()) < 1e-13, "t = {t}: {psi} vs {}", cond.velocity_bivector());
         assert!(diff(&s.0, &cond.pose.0) < 1e-15);
         // The reference point is where the body origin goes.

@@ -100,7 +100,7 @@ fn eq_16_pseudoscalar_factors() {
     let (al, be) = (Pseudoscalar::new(1.7, -0.4), Pseudoscalar::new(0.6, 2.0));
     for t in [0.0, 0.3, 1.0] {
         let lhs = Pose::slerp(&a.scale_pseudoscalar(&al), &b.scale_pseudoscalar(&be), &t).unwrap();
-        let factor = &pow(&al, 1.0 + t) * &pow(&be, t);
+        let factor = pow(&al, 1.0 + t) * pow(&be, t);
         let rhs = Pose::slerp(&a, &b, &t).unwrap().scale_pseudoscalar(&factor);
         assert!(diff(&lhs.0, &rhs.0) < 1e-13, "t {t}");
     }

@@ -143,7 +143,7 @@ fn sec_5_2_needs_lambda_times_nu_plus_gamma() {
     let (a, _) = sec_5_2();
     let nu0 = a.velocity_bivector();
     let literal = |lambda: f64| {
-        let psi = &nu0.scale(&lambda) + &Motor::from(&gamma0());
+        let psi = nu0.scale(&lambda) + Motor::from(&gamma0());
         joins::additive_start(&a.pose, &psi, 3).unwrap()
     };
     assert_eq!(mismatches(&literal(1.0), &ADD_52[0][0]), [""; 0]);
@@ -218,7 +218,7 @@ fn end_indicatrices_by_dual_numbers() {
     for (case, (a, b, sa, sb)) in cases.iter().enumerate() {
         for kind in [SegmentKind::Additive, SegmentKind::Multiplicative] {
             let seg = motion::hermite::hermite_segment(kind, 3, a, b, sa, sb).unwrap();
-            let [want0, want1] = seg.velocity_indicatrices.clone();
+            let [want0, want1] = seg.velocity_indicatrices;
             let [got0, got1] = end_indicatrices_by_duals(kind, &seg.control_poses);
             // Corollary 4.6 (the library's route, from the control poses).
             let [cor0, cor1] = joins::end_indicatrices(kind, &seg.control_poses).unwrap();

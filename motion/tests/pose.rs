@@ -109,7 +109,7 @@ fn lemma_2_4_pseudoscalar_inverse_and_square_roots() {
     }
     assert!(matches!(pseudoscalar::inverse(&Pseudoscalar::new(q(0), q(2))), Err(MotionError::Pseudoscalar { .. })));
     let r = pseudoscalar::sqrt(&Pseudoscalar::new(2.0, 3.0)).unwrap();
-    let back = &r * &r;
+    let back = r * r;
     assert!((back.scalar - 2.0f64).abs() < 1e-15 && (back.e123inf - 3.0f64).abs() < 1e-15);
     let _g = PrecisionGuard::new(256);
     let c = Pseudoscalar::new(MpFloat::from_i64(2), MpFloat::from_ratio(1, 3));
@@ -150,7 +150,7 @@ fn lemma_2_6_unitize_and_inverse() {
             assert!(diff_n(&ms[i], &mu[i]) < 1e-13);
         }
         let n = s.norm().unwrap();
-        let n2 = &n * &n;
+        let n2 = n * n;
         assert!(diff_n(&[n2.scalar, n2.e123inf], &[s.norm_squared().scalar, s.norm_squared().e123inf]) < 1e-13);
         assert!(n.scalar > 0.0);
         let prod = &s * &s.inverse().unwrap();

@@ -111,8 +111,8 @@ fn theorem_4_5_ii_and_corollary_4_6_ii_unit_poses() {
         assert!(diff(&s0.0, &p[0].0) < 1e-15 && diff(&s1.0, &p[n].0) < 1e-12);
         let l0 = log_of(&p[0], &p[1]);
         let l1 = log_of(&p[n], &p[n - 1]);
-        assert!(rel(&d0, &(&p[0].0 * &l0).scale(&nf)) < 1e-13, "dS/dt(0), degree {n}");
-        assert!(rel(&d1, &(&p[n].0 * &l1).scale(&-nf)) < 1e-12, "dS/dt(1), degree {n}");
+        assert!(rel(&d0, &(p[0].0 * l0).scale(&nf)) < 1e-13, "dS/dt(0), degree {n}");
+        assert!(rel(&d1, &(p[n].0 * l1).scale(&-nf)) < 1e-12, "dS/dt(1), degree {n}");
         let psi0 = velocity_indicatrix(&m, &0.0).unwrap();
         let psi1 = velocity_indicatrix(&m, &1.0).unwrap();
         assert!(rel(&psi0, &l0.scale(&(2.0 * nf))) < 1e-13, "Ψ(0), degree {n}");
@@ -137,12 +137,12 @@ fn theorem_4_5_ii_at_t1_needs_unit_poses() {
         // t = 0 holds for non-unit poses.
         let (_, d0) = pose_derivative(&raw, &0.0).unwrap();
         let l0 = log_of(&p[0], &p[1]);
-        assert!(rel(&d0, &(&p[0].0 * &l0).scale(&nf)) < 1e-13, "dS/dt(0), degree {n}");
+        assert!(rel(&d0, &(p[0].0 * l0).scale(&nf)) < 1e-13, "dS/dt(0), degree {n}");
         assert!(rel(&velocity_indicatrix(&raw, &0.0).unwrap(), &l0.scale(&(2.0 * nf))) < 1e-13);
         // t = 1: the counterexample.
         let (_, d1) = pose_derivative(&raw, &1.0).unwrap();
         let l1 = log_of(&p[n], &p[n - 1]);
-        let formula = (&p[n].0 * &l1).scale(&-nf);
+        let formula = (p[n].0 * l1).scale(&-nf);
         assert!(rel(&d1, &formula) > 1e-2, "dS/dt(1) formula unexpectedly holds, degree {n}");
         let psi1 = velocity_indicatrix(&raw, &1.0).unwrap();
         let psi_formula = l1.scale(&(-2.0 * nf));
@@ -155,7 +155,7 @@ fn theorem_4_5_ii_at_t1_needs_unit_poses() {
         let u = unit.poses().to_vec();
         let (_, d1u) = pose_derivative(&unit, &1.0).unwrap();
         let l1u = log_of(&u[n], &u[n - 1]);
-        assert!(rel(&d1u, &(&u[n].0 * &l1u).scale(&-nf)) < 1e-12, "unitized dS/dt(1), degree {n}");
+        assert!(rel(&d1u, &(u[n].0 * l1u).scale(&-nf)) < 1e-12, "unitized dS/dt(1), degree {n}");
         assert!(rel(&velocity_indicatrix(&unit, &1.0).unwrap(), &l1u.scale(&(-2.0 * nf))) < 1e-12);
     }
 }
@@ -170,7 +170,7 @@ fn theorem_4_5_ii_counterexample_degree_1() {
     let ln2 = 2f64.ln();
     assert!((s1.0.scalar - 4.0).abs() < 1e-14); // S(1) = |S_0|² S_1 = 4, not S_1 = 1
     assert!((d1.scalar - 4.0 * ln2).abs() < 1e-14);
-    let formula = -(&Pose::<f64>::identity().0 * &log_of(&Pose::identity(), &Pose::identity().scale(&2.0))).scalar;
+    let formula = -(Pose::<f64>::identity().0 * log_of(&Pose::identity(), &Pose::identity().scale(&2.0))).scalar;
     assert!((formula + ln2).abs() < 1e-15);
 }
 

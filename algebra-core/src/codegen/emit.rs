@@ -13,7 +13,7 @@ use quote::{format_ident, quote};
 use std::collections::BTreeMap;
 
 /// The trait and method of each product.
-fn product_trait(p: Product) -> (&'static str, &'static str) {
+pub(super) fn product_trait(p: Product) -> (&'static str, &'static str) {
     match p {
         Product::Geometric => ("GeometricProduct", "gp"),
         Product::Outer => ("OuterProduct", "op"),
@@ -27,7 +27,7 @@ fn product_trait(p: Product) -> (&'static str, &'static str) {
 }
 
 /// The operator trait (if any) of each product: `*` geometric, `^` outer, `|` left contraction.
-fn product_operator(p: Product) -> Option<(&'static str, &'static str)> {
+pub(super) fn product_operator(p: Product) -> Option<(&'static str, &'static str)> {
     match p {
         Product::Geometric => Some(("Mul", "mul")),
         Product::Outer => Some(("BitXor", "bitxor")),
@@ -41,7 +41,7 @@ pub fn field_name(name: &str) -> String {
     if name == "1" { "scalar".to_string() } else { name.to_string() }
 }
 
-fn ident(s: &str) -> Ident {
+pub(super) fn ident(s: &str) -> Ident {
     Ident::new(s, Span::call_site())
 }
 
@@ -67,12 +67,12 @@ fn constant(c: Ratio) -> TokenStream {
 }
 
 /// One summand: coefficient, operand expression, whether the operand may be moved.
-type SumTerm = (Ratio, TokenStream, bool);
+pub(super) type SumTerm = (Ratio, TokenStream, bool);
 
 /// A sum of `(coefficient, operand)` terms, each operand an expression of type `T` that may be
 /// used by reference (`&operand`). `movable` says the operand may be moved when it comes
 /// first with coefficient 1.
-fn sum(mut terms: Vec<SumTerm>) -> TokenStream {
+pub(super) fn sum(mut terms: Vec<SumTerm>) -> TokenStream {
     if terms.is_empty() {
         return quote!(T::zero());
     }
@@ -108,15 +108,15 @@ fn sum(mut terms: Vec<SumTerm>) -> TokenStream {
     acc
 }
 
-struct Names {
-    types: Vec<Ident>,
-    fields: Vec<Vec<Ident>>,
-    elements: Vec<Vec<String>>,
-    masks: Vec<Vec<u32>>,
+pub(super) struct Names {
+    pub(super) types: Vec<Ident>,
+    pub(super) fields: Vec<Vec<Ident>>,
+    pub(super) elements: Vec<Vec<String>>,
+    pub(super) masks: Vec<Vec<u32>>,
 }
 
 impl Names {
-    fn new(plan: &Plan) -> Names {
+    pub(super) fn new(plan: &Plan) -> Names {
         let alg = &plan.spec.algebra;
         let types = plan.spec.types.iter().map(|t| ident(&t.name)).collect();
         let elements: Vec<Vec<String>> =
@@ -170,10 +170,11 @@ pub fn module_items(plan: &Plan) -> TokenStream {
     let structs = (0..names.types.len()).map(|i| type_items(plan, &names, i));
     let binaries = plan.binary.iter().map(|k| binary_items(&names, k));
     let conversions = conversion_items(&names);
+    let actions = super::versor::module_items(plan, &names);
     quote! {
         pub use ::algebra_core::ops::{
-            AnticommutatorProduct, CommutatorProduct, GeometricProduct, LeftContraction, OuterProduct,
-            RegressiveProduct, RightContraction, ScalarProduct,
+            AnticommutatorProduct, Apply, CommutatorProduct, GeometricProduct, LeftContraction, OuterProduct,
+            RegressiveProduct, RightContraction, Sandwich, ScalarProduct,
         };
         pub use ::algebra_core::{Field, Ring};
 
@@ -197,6 +198,7 @@ pub fn module_items(plan: &Plan) -> TokenStream {
         #(#structs)*
         #(#binaries)*
         #conversions
+        #actions
     }
 }
 
@@ -225,13 +227,15 @@ fn type_items(plan: &Plan, names: &Names, i: usize) -> TokenStream {
     };
     let unaries = plan.unary.iter().filter(|k| k.ty == i).map(|k| unary_method(names, k));
     let norm = norm_method(names, i, &plan.norm[i]);
-    let rev_out =
-        &names.types[plan.unary.iter().find(|k| k.ty == i && k.op == crate::Unary::Reverse).expect("planned").out];
     let inverse = inverse_method(plan, names, i);
+    let serde_derive = super::value::serde_attribute(plan);
+    let values = super::value::type_items(names, i);
     quote! {
         #(#docs)*
         #[doc = #basis_doc]
-        #[derive(Clone, PartialEq)]
+        #[derive(Clone, Copy, PartialEq)]
+        #[repr(C)]
+        #serde_derive
         pub struct #ty<T> {
             #(#[doc = #field_docs] pub #fields: T,)*
         }
@@ -268,16 +272,22 @@ fn type_items(plan: &Plan, names: &Names, i: usize) -> TokenStream {
                 #ty { #(#fields: ::core::clone::Clone::clone(m.coeff(#masks))),* }
             }
 
-            /// The sandwich `f_S(x) = rev(S) x S` of the main paper.
-            pub fn sandwich<X, Y>(&self, x: &X) -> <Y as ::algebra_core::ops::GeometricProduct<Self>>::Output
+            /// The sandwich `f_S(x) = rev(S) x S` of the main paper (eq. 3); a fused kernel typed
+            /// to `x`'s type when `Self` is a versor type (see [`::algebra_core::ops::Sandwich`]).
+            pub fn sandwich<X>(&self, x: &X) -> <Self as ::algebra_core::ops::Sandwich<X>>::Output
             where
-                #rev_out<T>: ::algebra_core::ops::GeometricProduct<X, Output = Y>,
-                Y: ::algebra_core::ops::GeometricProduct<Self>,
+                Self: ::algebra_core::ops::Sandwich<X>,
             {
-                ::algebra_core::ops::GeometricProduct::gp(
-                    &::algebra_core::ops::GeometricProduct::gp(&self.reverse(), x),
-                    self,
-                )
+                ::algebra_core::ops::Sandwich::sandwich(self, x)
+            }
+
+            /// The action `S x rev(S)` (the klein/GATL/ganja convention); a fused kernel typed to
+            /// `x`'s type when `Self` is a versor type (see [`::algebra_core::ops::Apply`]).
+            pub fn apply<X>(&self, x: &X) -> <Self as ::algebra_core::ops::Apply<X>>::Output
+            where
+                Self: ::algebra_core::ops::Apply<X>,
+            {
+                ::algebra_core::ops::Apply::apply(self, x)
             }
 
             #(#unaries)*
@@ -285,6 +295,7 @@ fn type_items(plan: &Plan, names: &Names, i: usize) -> TokenStream {
         }
 
         #inverse
+        #values
 
         impl<T: ::algebra_core::Ring> ::core::convert::TryFrom<&::algebra_core::Multivector<T>> for #ty<T> {
             type Error = ::algebra_core::MvError;
@@ -420,10 +431,21 @@ fn inverse_method(plan: &Plan, names: &Names, i: usize) -> TokenStream {
             entries.entry((row, t.rhs)).or_default().push((t.coef, quote!(self.#f), false));
         }
     }
-    let sets = entries.into_iter().map(|((r, c), terms)| {
-        let e = sum(terms);
-        quote!(l[#r][#c] = #e;)
-    });
+    let large = super::size::is_large(k.outputs.iter().map(Vec::len));
+    let fill = if large {
+        let mut flat = Vec::new();
+        for (ko, terms) in k.outputs.iter().enumerate() {
+            let row = masks.iter().position(|&mm| mm == names.masks[k.out][ko]).expect("closed type");
+            flat.extend(terms.iter().map(|t| (t.lhs, t.rhs, row, t.coef)));
+        }
+        super::size::matrix_fill(&flat, fields)
+    } else {
+        let sets = entries.into_iter().map(|((r, c), terms)| {
+            let e = sum(terms);
+            quote!(l[#r][#c] = #e;)
+        });
+        quote!(#(#sets)*)
+    };
     let one_row = masks.iter().position(|&mm| mm == 0).expect("contains 1");
     quote! {
         impl<T: ::algebra_core::Field> #ty<T> {
@@ -431,7 +453,7 @@ fn inverse_method(plan: &Plan, names: &Names, i: usize) -> TokenStream {
             /// `self * y = 1` within it. Fails for zero divisors.
             pub fn inverse(&self) -> ::core::result::Result<Self, ::algebra_core::MvError> {
                 let mut l: ::std::vec::Vec<::std::vec::Vec<T>> = ::std::vec![::std::vec![T::zero(); #m]; #m];
-                #(#sets)*
+                #fill
                 let mut rhs = ::std::vec![T::zero(); #m];
                 rhs[#one_row] = T::one();
                 let y = ::algebra_core::linalg::solve(l, rhs)
@@ -485,16 +507,25 @@ fn binary_items(names: &Names, k: &BinaryKernel) -> TokenStream {
             }
         }
     });
+    let mixed = super::value::mixed_operators(names, k);
+    let body = if super::size::is_large(k.outputs.iter().map(Vec::len)) {
+        super::size::binary_body(names, k)
+    } else {
+        quote! {
+            #(#binds)*
+            #ot { #(#of: #exprs),* }
+        }
+    };
     quote! {
         impl<T: ::algebra_core::Ring> ::algebra_core::ops::#trait_name<#rt<T>> for #lt<T> {
             type Output = #ot<T>;
             #[inline]
             fn #method(&self, rhs: &#rt<T>) -> #ot<T> {
-                #(#binds)*
-                #ot { #(#of: #exprs),* }
+                #body
             }
         }
         #operator
+        #mixed
     }
 }
 

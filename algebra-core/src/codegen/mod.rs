@@ -16,6 +16,9 @@
 
 pub mod emit;
 pub mod plan;
+pub mod size;
+mod value;
+pub mod versor;
 
 use crate::algebra::Algebra;
 use crate::basis::{Basis, grade};
@@ -177,6 +180,10 @@ pub struct ModuleSpec {
     pub basis: Basis,
     /// The declared types.
     pub types: Vec<TypeSpec>,
+    /// Derive `serde::Serialize`/`Deserialize` on every type under
+    /// `#[cfg_attr(feature = "serde", ...)]` (the declaring crate then has a `serde` feature
+    /// enabling its `serde` dependency).
+    pub serde: bool,
 }
 
 impl ModuleSpec {
@@ -207,7 +214,7 @@ impl ModuleSpec {
                 }
             }
         }
-        Ok(ModuleSpec { name: name.to_string(), doc: Vec::new(), algebra, basis, types })
+        Ok(ModuleSpec { name: name.to_string(), doc: Vec::new(), algebra, basis, types, serde: false })
     }
 
     /// Parses the `gam codegen --types` syntax: `Motor=1,e12,e13;Vector=grade1`.

@@ -85,13 +85,15 @@ pub struct Plan {
     pub norm: Vec<Vec<Term>>,
     /// Per type: whether it is a subalgebra containing 1 (then `inverse` stays in the type).
     pub closed: Vec<bool>,
+    /// The fused versor actions ([`super::versor`]).
+    pub actions: Vec<super::versor::ActionKernel>,
 }
 
 /// The unary operations that get kernels.
 pub const UNARY_OPS: [Unary; 5] =
     [Unary::Reverse, Unary::GradeInvolution, Unary::CliffordConjugate, Unary::Dual, Unary::Undual];
 
-fn to_ratio(c: &Q) -> Result<Ratio, CodegenError> {
+pub(super) fn to_ratio(c: &Q) -> Result<Ratio, CodegenError> {
     match (c.numer().to_i64(), c.denom().to_i64()) {
         (Some(n), Some(d)) => Ok((n, d)),
         _ => Err(CodegenError::CoefficientTooLarge(crate::rational::format_rational(c))),
@@ -193,7 +195,8 @@ impl Plan {
                 sets[i].contains(&0) && gp.is_some_and(|k| k.out == i || sets[k.out].is_subset(&sets[i]))
             })
             .collect();
-        Ok(Plan { spec, full, binary, unary, norm, closed })
+        let actions = super::versor::plan_actions(&spec, full)?;
+        Ok(Plan { spec, full, binary, unary, norm, closed, actions })
     }
 
     /// The binary kernel for a product and a pair of type indices.
@@ -230,6 +233,21 @@ impl Plan {
                 lhs: name(k.ty),
                 rhs: None,
                 out: name(k.out),
+                mul,
+                add,
+            });
+        }
+        for k in &self.actions {
+            let (mul, add) = k.counts();
+            let op = match k.convention {
+                super::versor::Convention::Sandwich => "sandwich",
+                super::versor::Convention::Apply => "apply",
+            };
+            out.push(KernelStats {
+                op: op.to_string(),
+                lhs: name(k.versor),
+                rhs: Some(name(k.operand)),
+                out: name(k.operand),
                 mul,
                 add,
             });

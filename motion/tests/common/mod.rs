@@ -119,7 +119,7 @@ pub fn value_and_derivative(s: &Pose<num_dual::Dual64>) -> (Pose<f64>, Motor<f64
 /// `Ψ(t) = 2 S(t)⁻¹ S'(t)` of a pose evaluated over a dual number `t + ε`.
 pub fn indicatrix(s: &Pose<num_dual::Dual64>) -> Motor<f64> {
     let (value, derivative) = value_and_derivative(s);
-    (&value.inverse().unwrap().0 * &derivative).scale(&2.0)
+    (value.inverse().unwrap().0 * derivative).scale(&2.0)
 }
 
 /// The binomial coefficient as a float.
@@ -135,7 +135,7 @@ pub fn bernstein(controls: &[Pose<f64>], t: &num_dual::Dual64) -> Pose<num_dual:
     let mut sum = Motor::<num_dual::Dual64>::zero();
     for (i, c) in controls.iter().enumerate() {
         let w = one_minus.powi((n - i) as i32) * t.powi(i as i32) * binomial(n, i);
-        sum = &sum + &lift(c).0.scale(&w);
+        sum += lift(c).0.scale(&w);
     }
     Pose(sum)
 }
