@@ -18,6 +18,8 @@
 pub mod algebra;
 pub mod basis;
 pub mod codegen;
+#[cfg(feature = "rug")]
+pub mod ideal;
 pub mod linalg;
 pub mod metric;
 pub mod multivector;

@@ -127,6 +127,26 @@ impl Poly {
         Poly { terms }
     }
 
+    /// The polynomial `sum c * prod name**e` from `(coefficient, [(name, exponent)])` terms, the
+    /// inverse of [`Poly::terms`] (like terms are added; zero exponents are dropped).
+    ///
+    /// ```
+    /// use algebra_core::Poly;
+    /// let p = Poly::from_terms([(rug::Rational::from(2), vec![("x".to_string(), 2)])]);
+    /// assert_eq!(Poly::from_terms(p.terms().map(|(c, m)| (c.clone(), m))), p);
+    /// ```
+    pub fn from_terms(terms: impl IntoIterator<Item = (Rational, Vec<(String, u32)>)>) -> Self {
+        let mut out = Poly::default();
+        for (c, m) in terms {
+            let mut mono: Monomial = Vec::new();
+            for (name, e) in m.into_iter().filter(|&(_, e)| e > 0) {
+                mono = mul_monomials(&mono, &vec![(intern(&name), e)]);
+            }
+            out.add_term(mono, c);
+        }
+        out
+    }
+
     /// The value when the polynomial is a constant, else `None`.
     ///
     /// ```

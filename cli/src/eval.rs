@@ -7,13 +7,16 @@
 use crate::error::CliError;
 use crate::expr::{BinOp, Func, Node, PrefixOp};
 use crate::scalar::{CliScalar, Elementary, Failure};
-use algebra_core::{Algebra, Basis, Multivector, Product};
+use algebra_core::{Algebra, Basis, Multivector, Poly, Product};
+use std::collections::HashMap;
 use std::sync::Arc;
 
 /// Evaluates expressions in one algebra and basis (over any scalar, chosen per call).
 pub struct Evaluator<'a> {
     algebra: &'a Arc<Algebra>,
     basis: Basis,
+    /// Named symbolic values (`gam prove`'s `let` names and builders), seen by `poly` only.
+    bindings: Option<&'a HashMap<String, Multivector<Poly>>>,
 }
 
 type Mv<T> = Multivector<T>;
@@ -31,7 +34,16 @@ fn failed(what: &str, col: usize, scalar: &str, f: Failure) -> CliError {
 impl<'a> Evaluator<'a> {
     /// An evaluator for `algebra` whose basis names mean elements of `basis`.
     pub fn new(algebra: &'a Arc<Algebra>, basis: Basis) -> Self {
-        Evaluator { algebra, basis }
+        Evaluator { algebra, basis, bindings: None }
+    }
+
+    /// An evaluator that also knows the named values `bindings` (under `--scalar poly`).
+    pub fn with_bindings(
+        algebra: &'a Arc<Algebra>,
+        basis: Basis,
+        bindings: &'a HashMap<String, Multivector<Poly>>,
+    ) -> Self {
+        Evaluator { algebra, basis, bindings: Some(bindings) }
     }
 
     /// The value of `node`, with every coefficient finite.
@@ -80,6 +92,11 @@ impl<'a> Evaluator<'a> {
     }
 
     fn identifier<T: CliScalar>(&self, name: &str, col: usize) -> Result<Mv<T>, CliError> {
+        if let Some(v) = self.bindings.and_then(|b| b.get(name))
+            && let Some(v) = (v as &dyn std::any::Any).downcast_ref::<Mv<T>>()
+        {
+            return Ok(v.clone());
+        }
         if let Ok(mask) = self.algebra.mask_of(name) {
             return Ok(Multivector::from_mask(self.algebra, self.basis, mask));
         }
@@ -118,6 +135,9 @@ impl<'a> Evaluator<'a> {
 
     fn call<T: CliScalar>(&self, func: Func, args: &[Node], col: usize) -> Result<Mv<T>, CliError> {
         let name = func.name();
+        if func == Func::Diff {
+            return crate::prove::differentiate(&self.value::<T>(&args[0])?, &args[1], col);
+        }
         let vals = args.iter().map(|a| self.value::<T>(a)).collect::<Result<Vec<_>, _>>()?;
         let binary = |p: Product| vals[0].try_product(&vals[1], p).map_err(|e| CliError::usage(e.to_string()));
         let elementary = |f: Elementary| T::elementary(f, &vals[0]).map_err(|e| failed(name, col, T::NAME, e));
@@ -140,6 +160,7 @@ impl<'a> Evaluator<'a> {
             Func::Exp => elementary(Elementary::Exp),
             Func::Log => elementary(Elementary::Log),
             Func::Sqrt => elementary(Elementary::Sqrt),
+            Func::Diff => unreachable!("handled above"),
             Func::Grade | Func::BasisGrade => {
                 let k = self.grade_arg(&args[1], name)?;
                 Ok(if k > self.algebra.generators() {

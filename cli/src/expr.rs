@@ -64,10 +64,12 @@ pub enum Func {
     Log,
     /// `sqrt(x)` (f64 and mpfr only).
     Sqrt,
+    /// `diff(x, v)`: the partial derivative by the variable `v` (poly only).
+    Diff,
 }
 
 /// Every function with its name and parameter names (for arity messages and the docs).
-pub const FUNCTIONS: [(Func, &str, &[&str]); 20] = [
+pub const FUNCTIONS: [(Func, &str, &[&str]); 21] = [
     (Func::Rev, "rev", &["x"]),
     (Func::Inv, "inv", &["x"]),
     (Func::Grade, "grade", &["x", "k"]),
@@ -88,6 +90,7 @@ pub const FUNCTIONS: [(Func, &str, &[&str]); 20] = [
     (Func::Exp, "exp", &["x"]),
     (Func::Log, "log", &["x"]),
     (Func::Sqrt, "sqrt", &["x"]),
+    (Func::Diff, "diff", &["x", "v"]),
 ];
 
 impl Func {

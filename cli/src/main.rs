@@ -13,6 +13,7 @@ mod hermite;
 mod interpolate;
 mod output;
 mod plot;
+mod prove;
 mod sample;
 mod scalar;
 mod verify;
@@ -143,6 +144,28 @@ enum Command {
         #[arg(value_name = "SPEC.json")]
         spec: String,
     },
+    /// Decide a polynomial identity symbolically under hypotheses (ideal membership over Q).
+    Prove {
+        /// A built-in algebra (g3, g123inf, pga3, cga, cga-null) or a path to a TOML file.
+        #[arg(long, value_name = "NAME", default_value = "cga-null")]
+        algebra: String,
+        /// The basis for basis names and builders: blade or product.
+        #[arg(long, value_name = "B", default_value = "blade")]
+        basis: Basis,
+        /// A hypothesis `EXPR = EXPR` (component-wise) or `EXPR != 0` (scalar); repeatable.
+        #[arg(long, value_name = "EQ", allow_hyphen_values = true)]
+        assume: Vec<String>,
+        /// Give up with "undecided" (exit 1) after this many seconds.
+        #[arg(long, value_name = "SECONDS", default_value_t = 10.0)]
+        timeout: f64,
+        /// Print one JSON object: {"holds", "method", "basis_size", "time_ms", "witness", ...}.
+        #[arg(long)]
+        json: bool,
+        /// `[let NAME = EXPR;]... EXPR = EXPR`, with builders even("P"), odd("P"), vector("P"),
+        /// grade("P", k), all("P").
+        #[arg(allow_hyphen_values = true, value_name = "CLAIM")]
+        claim: String,
+    },
     /// Check the papers' numbered statements (lemmas, theorems, equations) and report each.
     Verify {
         /// Print a JSON list of {"id", "paper", "label", "statement", "method", "holds",
@@ -161,6 +184,9 @@ fn run(command: Command) -> Result<(String, Option<CliError>), CliError> {
     let out = match command {
         Command::Algebras { json, algebras } => commands::algebras(&algebras, json),
         Command::Eval { algebra, basis, scalar, json, expr } => {
+            if let Some(result) = prove::eval_relation(&algebra, basis, &scalar, json, &expr) {
+                return result;
+            }
             commands::eval(&commands::EvalArgs { algebra, basis, scalar, json, expr })
         }
         Command::Table { algebra, basis, product, json } => commands::table(&algebra, basis, product, json),
@@ -171,6 +197,9 @@ fn run(command: Command) -> Result<(String, Option<CliError>), CliError> {
         Command::Interpolate { json, spec } => interpolate::interpolate(&spec, json),
         Command::Sample { samples, json, spec } => sample::sample(&spec, samples, json),
         Command::Plot { out, samples, spec } => plot::plot(&spec, &out, samples),
+        Command::Prove { algebra, basis, assume, timeout, json, claim } => {
+            return prove::prove(&prove::ProveArgs { algebra, basis, assume, timeout, json, claim });
+        }
         Command::Verify { json, filter } => {
             return verify::verify(filter.as_deref(), json).map(|v| (v.output, v.failure));
         }
@@ -187,7 +216,7 @@ fn clap_failure(e: clap::Error) -> ExitCode {
     let text = e.render().to_string();
     let line = match e.kind() {
         ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand | ErrorKind::MissingSubcommand => {
-            "error: a subcommand is required: algebras, eval, table, codegen, hermite, interpolate, sample, plot or verify (see gam --help)"
+            "error: a subcommand is required: algebras, eval, table, codegen, hermite, interpolate, sample, plot, prove or verify (see gam --help)"
                 .to_string()
         }
         _ => first_error_line(&text),

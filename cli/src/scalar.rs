@@ -59,7 +59,7 @@ impl From<MvError> for Failure {
 }
 
 /// A scalar the CLI can evaluate over.
-pub trait CliScalar: Ring {
+pub trait CliScalar: Ring + 'static {
     /// The `--scalar` name, for messages.
     const NAME: &'static str;
 
@@ -86,6 +86,11 @@ pub trait CliScalar: Ring {
 
     /// The inverse of a multivector.
     fn inverse(x: &Multivector<Self>) -> Result<Multivector<Self>, Failure>;
+
+    /// The partial derivative by the variable `var` (`diff(x, var)`).
+    fn derivative(&self, _var: &str) -> Result<Self, Failure> {
+        Err(Failure::Unsupported("it needs --scalar poly".to_string()))
+    }
 
     /// `exp`, `log` or `sqrt` of a multivector.
     fn elementary(_f: Elementary, _x: &Multivector<Self>) -> Result<Multivector<Self>, Failure> {
@@ -134,6 +139,9 @@ impl CliScalar for Poly {
     }
     fn variable(name: &str) -> Option<Self> {
         Some(Poly::var(name))
+    }
+    fn derivative(&self, var: &str) -> Result<Self, Failure> {
+        Ok(Poly::derivative(self, var))
     }
     fn div_scalar(&self, d: &Self) -> Result<Self, Failure> {
         let c = poly_constant(d).ok_or_else(|| {

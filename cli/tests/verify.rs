@@ -43,10 +43,23 @@ fn filter_selects_by_id_label_paper_or_method() {
     let ids = |f: &str| -> Vec<String> {
         verify_json(&["--filter", f]).iter().map(|e| e["id"].as_str().unwrap().to_string()).collect()
     };
-    assert_eq!(ids("lemma-2.2"), ["cross2022/lemma-2.2-i", "cross2022/lemma-2.2-ii", "cross2022/lemma-2.2-iii"]);
+    assert_eq!(
+        ids("lemma-2.2"),
+        [
+            "cross2022/lemma-2.2-i",
+            "cross2022/lemma-2.2-ii",
+            "cross2022/lemma-2.2-iii",
+            "cross2022/lemma-2.2-null",
+            "cross2022/lemma-2.2-inner-product"
+        ]
+    );
     assert_eq!(ids("LEMMA 2.2 (II)"), ["cross2022/lemma-2.2-ii"]);
     assert!(ids("juttler").iter().all(|id| id.starts_with("juttler/")));
-    assert!(verify_json(&["--filter", "symbolic"]).iter().all(|e| e["method"] == "symbolic"));
+    assert!(
+        verify_json(&["--filter", "symbolic"]).iter().all(|e| e["method"].as_str().unwrap().starts_with("symbolic"))
+    );
+    let under = verify_json(&["--filter", "symbolic-under-hypotheses"]);
+    assert!(under.len() >= 3 && under.iter().all(|e| e["method"] == "symbolic-under-hypotheses"));
 }
 
 #[test]

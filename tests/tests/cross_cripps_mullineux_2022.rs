@@ -37,6 +37,10 @@ const IDS: &[&str] = &[
     "cross2022/theorem-4.5-multiplicative",
     "cross2022/corollary-4.6-additive",
     "cross2022/corollary-4.6-multiplicative",
+    // symbolic-under-hypotheses (tests in tests/tests/under_hypotheses.rs)
+    "cross2022/lemma-2.2-null",
+    "cross2022/lemma-2.2-inner-product",
+    "cross2022/lemma-3.4-symbolic",
 ];
 
 #[test]

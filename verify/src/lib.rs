@@ -18,6 +18,7 @@ mod check;
 pub mod cross2022;
 pub mod juttler;
 mod statement;
+pub mod under_hypotheses;
 pub mod wareham_lasenby;
 
 pub use check::{Checker, Outcome};
@@ -51,7 +52,11 @@ pub fn algebra(name: &str) -> std::sync::Arc<algebra_core::Algebra> {
 /// assert!(ids.contains(&"cross2022/lemma-2.2-ii"));
 /// ```
 pub fn statements() -> impl Iterator<Item = &'static Statement> {
-    cross2022::statements().chain(wareham_lasenby::STATEMENTS).chain(juttler::STATEMENTS).chain(angelidis::STATEMENTS)
+    cross2022::statements()
+        .chain(under_hypotheses::STATEMENTS)
+        .chain(wareham_lasenby::STATEMENTS)
+        .chain(juttler::STATEMENTS)
+        .chain(angelidis::STATEMENTS)
 }
 
 /// The statement with this id, if there is one.

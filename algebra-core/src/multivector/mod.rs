@@ -17,6 +17,8 @@ pub mod display;
 mod exp_log;
 mod inverse;
 mod ops;
+#[cfg(feature = "rug")]
+pub mod symbolic;
 
 use crate::algebra::Algebra;
 use crate::basis::{Basis, BasisError, grade};
