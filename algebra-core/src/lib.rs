@@ -17,7 +17,6 @@
 
 pub mod algebra;
 pub mod basis;
-pub mod codegen;
 pub mod linalg;
 pub mod metric;
 pub mod multivector;

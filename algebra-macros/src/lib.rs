@@ -1,6 +1,6 @@
 //! The `algebra!` proc-macro: declares a geometric algebra and the multivector types to
 //! generate for it. This crate only parses the DSL; the generator is
-//! [`algebra_core::codegen`].
+//! [`algebra_codegen`].
 //!
 //! ```ignore
 //! algebra_macros::algebra! {
@@ -26,7 +26,7 @@
 //! - `types { Name = selector; ... }` with selectors `grade K`, `even`, `odd`, `all`, or a
 //!   list `[1, e12, ...]`; doc comments on types are kept.
 
-use algebra_core::codegen::{ModuleSpec, TypeSpec, plan::Plan};
+use algebra_codegen::{ModuleSpec, TypeSpec, plan::Plan};
 use algebra_core::rational::{Q, q};
 use algebra_core::{Algebra, Basis, Metric};
 use proc_macro::TokenStream;
@@ -285,7 +285,7 @@ fn expand(decl: Decl) -> syn::Result<proc_macro2::TokenStream> {
         syn::Error::new(span, e)
     })?;
     let plan = Plan::new(spec).map_err(|e| syn::Error::new(decl.name.span(), e))?;
-    let items = algebra_core::codegen::emit::module_items(&plan);
+    let items = algebra_codegen::emit::module_items(&plan);
     let (attrs, vis, name) = (&decl.attrs, &decl.vis, &decl.name);
     Ok(quote! {
         #(#attrs)*

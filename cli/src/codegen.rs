@@ -3,8 +3,9 @@
 //! operation counts of every kernel.
 
 use crate::error::CliError;
-use algebra_core::codegen::{ModuleSpec, plan::Plan};
-use algebra_core::{Algebra, Basis};
+use algebra_codegen::metric_toml::algebra_from_name_or_path;
+use algebra_codegen::{CodegenError, ModuleSpec, plan::Plan};
+use algebra_core::Basis;
 use serde_json::{Value, json};
 
 /// What `gam codegen` prints.
@@ -35,7 +36,7 @@ pub struct CodegenArgs {
 
 /// Runs `gam codegen`.
 pub fn codegen(args: &CodegenArgs) -> Result<String, CliError> {
-    let alg = Algebra::from_name_or_path(&args.algebra)?;
+    let alg = algebra_from_name_or_path(&args.algebra)?;
     let module = args.module.clone().unwrap_or_else(|| {
         let stem = std::path::Path::new(alg.name()).file_stem().and_then(|s| s.to_str()).unwrap_or("generated");
         stem.chars().map(|c| if c.is_ascii_alphanumeric() { c.to_ascii_lowercase() } else { '_' }).collect()
@@ -43,7 +44,7 @@ pub fn codegen(args: &CodegenArgs) -> Result<String, CliError> {
     if syn::parse_str::<syn::Ident>(&module).is_err() {
         return Err(CliError::usage(format!("`{module}` is not a valid module name (use --module NAME)")));
     }
-    let bad = |e: algebra_core::codegen::CodegenError| CliError::usage(e.to_string());
+    let bad = |e: CodegenError| CliError::usage(e.to_string());
     let types = ModuleSpec::parse_types(&args.types, &alg).map_err(bad)?;
     let mut spec = ModuleSpec::new(&module, alg.metric().clone(), args.basis, types).map_err(bad)?;
     spec.doc = vec![
@@ -56,7 +57,7 @@ pub fn codegen(args: &CodegenArgs) -> Result<String, CliError> {
     let plan = Plan::new(spec).map_err(bad)?;
     match args.emit {
         Emit::Rust => {
-            let tokens = algebra_core::codegen::emit::module(&plan);
+            let tokens = algebra_codegen::emit::module(&plan);
             let file: syn::File = syn::parse2(tokens)
                 .map_err(|e| CliError::usage(format!("internal: generated code does not parse: {e}")))?;
             let source = prettyplease::unparse(&file);

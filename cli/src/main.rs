@@ -32,6 +32,11 @@ struct Cli {
     command: Command,
 }
 
+/// The `--algebra` help, naming the built-ins from algebra-core's one table.
+fn algebra_help() -> String {
+    format!("A built-in algebra ({}) or a path to a TOML file", algebra_core::algebra::builtin_names())
+}
+
 #[derive(Debug, Subcommand)]
 enum Command {
     /// List the built-in algebras (or the named ones) with their labels and metrics.
@@ -45,8 +50,7 @@ enum Command {
     },
     /// Evaluate a multivector expression.
     Eval {
-        /// A built-in algebra (g3, g123inf, pga3, cga, cga-null) or a path to a TOML file.
-        #[arg(long, value_name = "NAME", default_value = "cga-null")]
+        #[arg(long, value_name = "NAME", default_value = "cga-null", help = algebra_help())]
         algebra: String,
         /// The basis for reading and printing basis names: blade or product.
         #[arg(long, value_name = "B", default_value = "blade")]
@@ -63,8 +67,7 @@ enum Command {
     },
     /// Print the table of a product on the basis elements.
     Table {
-        /// A built-in algebra (g3, g123inf, pga3, cga, cga-null) or a path to a TOML file.
-        #[arg(long, value_name = "NAME", default_value = "cga-null")]
+        #[arg(long, value_name = "NAME", default_value = "cga-null", help = algebra_help())]
         algebra: String,
         /// The basis: blade or product.
         #[arg(long, value_name = "B", default_value = "blade")]
@@ -78,8 +81,7 @@ enum Command {
     },
     /// Generate the Rust module of the `algebra!` macro (or its kernels' operation counts).
     Codegen {
-        /// A built-in algebra (g3, g123inf, pga3, cga, cga-null) or a path to a TOML file.
-        #[arg(long, value_name = "NAME", default_value = "cga-null")]
+        #[arg(long, value_name = "NAME", default_value = "cga-null", help = algebra_help())]
         algebra: String,
         /// The types: "Name=selector;..." with selectors `grade K`, `even`, `odd`, `all` or a
         /// comma list of basis names, e.g. "Motor=1,e12,e13,e23,e1inf,e2inf,e3inf,e123inf;Vector=grade1".
