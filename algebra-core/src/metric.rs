@@ -12,22 +12,17 @@ use std::collections::HashMap;
 pub const MAX_GENERATORS: usize = 10;
 
 /// Why a metric (or an algebra description) was rejected.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[derive(Debug, Clone, PartialEq)]
 pub enum MetricError {
     /// No generators.
-    #[error("an algebra needs at least one generator")]
     Empty,
     /// More generators than [`MAX_GENERATORS`].
-    #[error("{0} generators: at most {MAX_GENERATORS} are supported")]
     TooManyGenerators(usize),
     /// A label that is empty or not ASCII alphanumeric.
-    #[error("generator label `{0}` must be non-empty ASCII letters or digits")]
     InvalidLabel(String),
     /// The same label twice.
-    #[error("generator label `{0}` is declared twice")]
     DuplicateLabel(String),
     /// Two different subsets of generators would get the same basis name.
-    #[error("labels are ambiguous: basis name `{name}` would mean both {first} and {second}")]
     AmbiguousLabels {
         /// The name that two subsets share.
         name: String,
@@ -37,7 +32,6 @@ pub enum MetricError {
         second: String,
     },
     /// The Gram matrix is not n x n.
-    #[error("the Gram matrix must be {expected}x{expected}, found a row or column count of {found}")]
     WrongSize {
         /// The number of generators.
         expected: usize,
@@ -45,7 +39,6 @@ pub enum MetricError {
         found: usize,
     },
     /// `B(e_i, e_j) != B(e_j, e_i)`.
-    #[error("the Gram matrix is not symmetric: B({a}, {b}) = {ab} but B({b}, {a}) = {ba}")]
     Asymmetric {
         /// First label.
         a: String,
@@ -57,13 +50,10 @@ pub enum MetricError {
         ba: String,
     },
     /// A metric entry names a label that is not a generator.
-    #[error("metric entry names unknown generator `{0}`")]
     UnknownLabel(String),
     /// No built-in algebra of that name.
-    #[error("unknown algebra `{0}` (built-ins: {names}; or a path to a .toml file)", names = crate::algebra::builtin_names())]
     UnknownAlgebra(String),
     /// A TOML description that could not be read or understood.
-    #[error("bad algebra file {path}: {message}")]
     Toml {
         /// The file (or `<string>`).
         path: String,
@@ -71,6 +61,37 @@ pub enum MetricError {
         message: String,
     },
 }
+
+impl std::fmt::Display for MetricError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            MetricError::Empty => write!(f, "an algebra needs at least one generator"),
+            MetricError::TooManyGenerators(x) => write!(f, "{x} generators: at most {MAX_GENERATORS} are supported"),
+            MetricError::InvalidLabel(x) => {
+                write!(f, "generator label `{x}` must be non-empty ASCII letters or digits")
+            }
+            MetricError::DuplicateLabel(x) => write!(f, "generator label `{x}` is declared twice"),
+            MetricError::AmbiguousLabels { name, first, second } => {
+                write!(f, "labels are ambiguous: basis name `{name}` would mean both {first} and {second}")
+            }
+            MetricError::WrongSize { expected, found } => {
+                write!(f, "the Gram matrix must be {expected}x{expected}, found a row or column count of {found}")
+            }
+            MetricError::Asymmetric { a, b, ab, ba } => {
+                write!(f, "the Gram matrix is not symmetric: B({a}, {b}) = {ab} but B({b}, {a}) = {ba}")
+            }
+            MetricError::UnknownLabel(x) => write!(f, "metric entry names unknown generator `{x}`"),
+            MetricError::UnknownAlgebra(x) => write!(
+                f,
+                "unknown algebra `{x}` (built-ins: {names}; or a path to a .toml file)",
+                names = crate::algebra::builtin_names()
+            ),
+            MetricError::Toml { path, message } => write!(f, "bad algebra file {path}: {message}"),
+        }
+    }
+}
+
+impl std::error::Error for MetricError {}
 
 /// Generator labels with the symmetric bilinear form on them.
 ///
