@@ -30,6 +30,7 @@
 pub mod emit;
 #[cfg(feature = "toml")]
 pub mod metric_toml;
+pub mod paths;
 pub mod plan;
 pub mod spec;
 

@@ -25,6 +25,10 @@
 //! - `basis blade;` (default) or `basis product;`: what the type fields' names mean.
 //! - `types { Name = selector; ... }` with selectors `grade K`, `even`, `odd`, `all`, or a
 //!   list `[1, e12, ...]`; doc comments on types are kept.
+//! - optionally, before the module, `crate PATH;`: where the generated code finds the engine
+//!   (`algebra-core`). The default is `::algebra_core`, for crates that depend on algebra-core
+//!   directly (the workspace's `gam-algebras`, `motion`); the front door `gam_ga::algebra!`
+//!   passes `crate $crate::__engine;`, so its users need no other dependency.
 
 use algebra_codegen::{ModuleSpec, TypeSpec, plan::Plan};
 use algebra_core::rational::{Q, q};
@@ -61,6 +65,7 @@ enum Selector {
 }
 
 struct Decl {
+    engine: Option<proc_macro2::TokenStream>,
     attrs: Vec<Attribute>,
     vis: Visibility,
     name: Ident,
@@ -88,6 +93,17 @@ fn parse_value(input: ParseStream) -> syn::Result<Q> {
 
 impl Parse for Decl {
     fn parse(input: ParseStream) -> syn::Result<Self> {
+        let engine = if input.peek(Token![crate]) {
+            input.parse::<Token![crate]>()?;
+            let mut path = proc_macro2::TokenStream::new();
+            while !input.peek(Token![;]) {
+                path.extend([input.parse::<proc_macro2::TokenTree>()?]);
+            }
+            input.parse::<Token![;]>()?;
+            Some(path)
+        } else {
+            None
+        };
         let attrs = input.call(Attribute::parse_outer)?;
         let vis: Visibility = input.parse()?;
         input.parse::<Token![mod]>()?;
@@ -205,7 +221,7 @@ impl Parse for Decl {
             (MetricDecl::Builtin(_), None) => Vec::new(),
             (MetricDecl::Pairs(_), None) => return Err(missing("generators")),
         };
-        Ok(Decl { attrs, vis, name, generators, metric, metric_span, basis, types })
+        Ok(Decl { engine, attrs, vis, name, generators, metric, metric_span, basis, types })
     }
 }
 
@@ -285,7 +301,10 @@ fn expand(decl: Decl) -> syn::Result<proc_macro2::TokenStream> {
         syn::Error::new(span, e)
     })?;
     let plan = Plan::new(spec).map_err(|e| syn::Error::new(decl.name.span(), e))?;
-    let items = algebra_codegen::emit::module_items(&plan);
+    let mut items = algebra_codegen::emit::module_items(&plan);
+    if let Some(engine) = &decl.engine {
+        items = algebra_codegen::paths::with_engine_path(items, engine);
+    }
     let (attrs, vis, name) = (&decl.attrs, &decl.vis, &decl.name);
     Ok(quote! {
         #(#attrs)*
