@@ -33,5 +33,6 @@ pub mod metric_toml;
 pub mod paths;
 pub mod plan;
 pub mod spec;
+pub mod standalone;
 
 pub use spec::{CodegenError, ModuleSpec, TypeSpec};

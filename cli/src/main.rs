@@ -93,13 +93,18 @@ enum Command {
         /// rust (formatted source) or stats (operation counts per kernel).
         #[arg(long, value_enum, value_name = "WHAT", default_value = "rust")]
         emit: codegen::Emit,
-        /// The module name (default: the algebra name, `-` as `_`).
+        /// The module name (default: the algebra name, `-` as `_`). With --standalone: wrap the
+        /// items in `pub mod NAME` (default: no wrapper).
         #[arg(long, value_name = "NAME")]
         module: Option<String>,
         /// Print JSON: for stats a list of {"op","lhs","rhs","out","mul","add"}; for rust
         /// {"module","source"}.
         #[arg(long)]
         json: bool,
+        /// A file with no dependency: scalar and product traits inlined (for f32/f64), no
+        /// conversions to the runtime multivector, items at the top level.
+        #[arg(long)]
+        standalone: bool,
     },
     /// Control poses of a motion segment from its end conditions (Secs. 4-5 of the main paper).
     Hermite {
@@ -155,8 +160,8 @@ fn run(command: Command) -> Result<(String, Option<CliError>), CliError> {
             commands::eval(&commands::EvalArgs { algebra, basis, scalar, json, expr })
         }
         Command::Table { algebra, basis, product, json } => commands::table(&algebra, basis, product, json),
-        Command::Codegen { algebra, types, basis, emit, module, json } => {
-            codegen::codegen(&codegen::CodegenArgs { algebra, types, basis, emit, module, json })
+        Command::Codegen { algebra, types, basis, emit, module, json, standalone } => {
+            codegen::codegen(&codegen::CodegenArgs { algebra, types, basis, emit, module, json, standalone })
         }
         Command::Hermite { json, spec } => hermite::hermite(&spec, json),
         Command::Sample { samples, json, spec } => sample::sample(&spec, samples, json),
