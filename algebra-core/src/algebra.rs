@@ -25,8 +25,95 @@ pub struct Algebra {
     tables: Tables,
 }
 
-/// The names of the built-in algebras.
-pub const BUILTINS: [&str; 5] = ["g3", "g123inf", "pga3", "cga", "cga-null"];
+/// One built-in algebra: the single description that the runtime ([`Algebra::builtin`]), the
+/// CLI (`gam algebras`, `--algebra` help), the `algebra!` macro's `metric builtin "..."` and the
+/// predefined modules of `gam-algebras` all read.
+///
+/// ```
+/// use algebra_core::algebra::BUILTIN_ALGEBRAS;
+/// let cga_null = BUILTIN_ALGEBRAS.iter().find(|b| b.name == "cga-null").unwrap();
+/// assert_eq!(cga_null.labels, ["0", "1", "2", "3", "inf"]);
+/// assert_eq!(cga_null.gram[0][4], -1); // e0 . einf = -1
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct BuiltinAlgebra {
+    /// The name used by `--algebra`, `Algebra::builtin` and `metric builtin`.
+    pub name: &'static str,
+    /// One line saying what the algebra is.
+    pub description: &'static str,
+    /// The generator labels (basis names are `e` + labels).
+    pub labels: &'static [&'static str],
+    /// The Gram matrix `B(e_i, e_j)` (integer entries; symmetric).
+    pub gram: &'static [&'static [i8]],
+}
+
+impl BuiltinAlgebra {
+    /// The metric of this entry.
+    ///
+    /// ```
+    /// let g3 = &algebra_core::algebra::BUILTIN_ALGEBRAS[0];
+    /// assert_eq!(g3.metric().unwrap().dimension(), 3);
+    /// ```
+    pub fn metric(&self) -> Result<Metric, MetricError> {
+        let labels = self.labels.iter().map(|s| s.to_string()).collect();
+        let gram = self.gram.iter().map(|row| row.iter().map(|&x| q(i64::from(x))).collect()).collect();
+        Metric::new(labels, gram)
+    }
+}
+
+/// The built-in algebras, in the order `gam algebras` lists them.
+pub const BUILTIN_ALGEBRAS: &[BuiltinAlgebra] = &[
+    BuiltinAlgebra {
+        name: "g3",
+        description: "Euclidean 3-space R^3",
+        labels: &["1", "2", "3"],
+        gram: &[&[1, 0, 0], &[0, 1, 0], &[0, 0, 1]],
+    },
+    BuiltinAlgebra {
+        name: "g123inf",
+        description: "the paper's G_{123inf}: R^3 with a null einf (einf^2 = 0)",
+        labels: &["1", "2", "3", "inf"],
+        gram: &[&[1, 0, 0, 0], &[0, 1, 0, 0], &[0, 0, 1, 0], &[0, 0, 0, 0]],
+    },
+    BuiltinAlgebra {
+        name: "pga3",
+        description: "projective geometric algebra R^{3,0,1} (e0^2 = 0)",
+        labels: &["0", "1", "2", "3"],
+        gram: &[&[0, 0, 0, 0], &[0, 1, 0, 0], &[0, 0, 1, 0], &[0, 0, 0, 1]],
+    },
+    BuiltinAlgebra {
+        name: "cga",
+        description: "conformal geometric algebra R^{4,1} (e4^2 = 1, e5^2 = -1)",
+        labels: &["1", "2", "3", "4", "5"],
+        gram: &[&[1, 0, 0, 0, 0], &[0, 1, 0, 0, 0], &[0, 0, 1, 0, 0], &[0, 0, 0, 1, 0], &[0, 0, 0, 0, -1]],
+    },
+    BuiltinAlgebra {
+        name: "cga-null",
+        description: "the paper's G_{0123inf}: conformal algebra with null e0, einf (e0 . einf = -1)",
+        labels: &["0", "1", "2", "3", "inf"],
+        gram: &[&[0, 0, 0, 0, -1], &[0, 1, 0, 0, 0], &[0, 0, 1, 0, 0], &[0, 0, 0, 1, 0], &[-1, 0, 0, 0, 0]],
+    },
+];
+
+/// The names of the built-in algebras (read from [`BUILTIN_ALGEBRAS`]).
+pub const BUILTINS: [&str; BUILTIN_ALGEBRAS.len()] = {
+    let mut names = [""; BUILTIN_ALGEBRAS.len()];
+    let mut i = 0;
+    while i < names.len() {
+        names[i] = BUILTIN_ALGEBRAS[i].name;
+        i += 1;
+    }
+    names
+};
+
+/// The built-in names joined by `, ` (for help texts and error messages).
+///
+/// ```
+/// assert_eq!(algebra_core::algebra::builtin_names(), "g3, g123inf, pga3, cga, cga-null");
+/// ```
+pub fn builtin_names() -> String {
+    BUILTINS.join(", ")
+}
 
 impl std::fmt::Debug for Algebra {
     /// The name and the metric, not the tables.
@@ -57,7 +144,7 @@ impl Algebra {
         })
     }
 
-    /// A built-in algebra by its CLI name:
+    /// A built-in algebra by its CLI name (the entries of [`BUILTIN_ALGEBRAS`]):
     /// - `g3`: R^3, labels 1, 2, 3.
     /// - `g123inf`: the paper's G_{123inf}, labels 1, 2, 3, inf; `e1^2 = e2^2 = e3^2 = 1`,
     ///   `einf^2 = 0`.
@@ -72,44 +159,11 @@ impl Algebra {
     /// assert!(matches!(Algebra::builtin("nope"), Err(MetricError::UnknownAlgebra(_))));
     /// ```
     pub fn builtin(name: &str) -> Result<Arc<Self>, MetricError> {
-        let labels = |v: &[&str]| v.iter().map(|s| s.to_string()).collect::<Vec<_>>();
-        let metric = match name {
-            "g3" => Metric::from_squares(labels(&["1", "2", "3"]), vec![q(1); 3])?,
-            "g123inf" => Metric::from_squares(labels(&["1", "2", "3", "inf"]), vec![q(1), q(1), q(1), q(0)])?,
-            "pga3" => Metric::from_squares(labels(&["0", "1", "2", "3"]), vec![q(0), q(1), q(1), q(1)])?,
-            "cga" => Metric::from_squares(labels(&["1", "2", "3", "4", "5"]), vec![q(1), q(1), q(1), q(1), q(-1)])?,
-            "cga-null" => {
-                let mut g = vec![vec![q(0); 5]; 5];
-                for (i, row) in g.iter_mut().enumerate().take(4).skip(1) {
-                    row[i] = q(1);
-                }
-                g[0][4] = q(-1);
-                g[4][0] = q(-1);
-                Metric::new(labels(&["0", "1", "2", "3", "inf"]), g)?
-            }
-            _ => return Err(MetricError::UnknownAlgebra(name.to_string())),
-        };
-        Ok(Algebra::new(name, metric))
-    }
-
-    /// A built-in name, or else a path to a TOML description (see
-    /// [`Metric::from_toml_str`]); the CLI's `--algebra` argument.
-    ///
-    /// ```
-    /// let alg = algebra_core::Algebra::from_name_or_path("pga3").unwrap();
-    /// assert!(alg.metric().is_degenerate());
-    /// ```
-    pub fn from_name_or_path(arg: &str) -> Result<Arc<Self>, MetricError> {
-        if BUILTINS.contains(&arg) {
-            return Algebra::builtin(arg);
-        }
-        if !arg.ends_with(".toml") && !std::path::Path::new(arg).exists() {
-            return Err(MetricError::UnknownAlgebra(arg.to_string()));
-        }
-        let text = std::fs::read_to_string(arg)
-            .map_err(|e| MetricError::Toml { path: arg.to_string(), message: e.to_string() })?;
-        let (name, metric) = Metric::from_toml_str(&text, arg)?;
-        Ok(Algebra::new(name.unwrap_or_else(|| arg.to_string()), metric))
+        let entry = BUILTIN_ALGEBRAS
+            .iter()
+            .find(|b| b.name == name)
+            .ok_or_else(|| MetricError::UnknownAlgebra(name.to_string()))?;
+        Ok(Algebra::new(name, entry.metric()?))
     }
 
     /// The algebra's name.

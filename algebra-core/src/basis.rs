@@ -47,13 +47,11 @@ impl fmt::Display for Basis {
 }
 
 /// A basis name that the algebra does not have, or an unknown basis representation.
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[derive(Debug, Clone, PartialEq, Eq)]
 pub enum BasisError {
     /// Not `blade` or `product`.
-    #[error("unknown basis `{0}` (expected blade or product)")]
     UnknownRepresentation(String),
     /// Not a basis element of the algebra.
-    #[error("unknown basis element `{name}` (this algebra's generators are {labels})")]
     UnknownElement {
         /// The name asked for.
         name: String,
@@ -61,6 +59,19 @@ pub enum BasisError {
         labels: String,
     },
 }
+
+impl std::fmt::Display for BasisError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            BasisError::UnknownRepresentation(x) => write!(f, "unknown basis `{x}` (expected blade or product)"),
+            BasisError::UnknownElement { name, labels } => {
+                write!(f, "unknown basis element `{name}` (this algebra's generators are {labels})")
+            }
+        }
+    }
+}
+
+impl std::error::Error for BasisError {}
 
 impl FromStr for Basis {
     type Err = BasisError;

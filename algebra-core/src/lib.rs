@@ -17,7 +17,6 @@
 
 pub mod algebra;
 pub mod basis;
-pub mod codegen;
 #[cfg(feature = "rug")]
 pub mod ideal;
 pub mod linalg;

@@ -12,22 +12,17 @@ use std::collections::HashMap;
 pub const MAX_GENERATORS: usize = 10;
 
 /// Why a metric (or an algebra description) was rejected.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[derive(Debug, Clone, PartialEq)]
 pub enum MetricError {
     /// No generators.
-    #[error("an algebra needs at least one generator")]
     Empty,
     /// More generators than [`MAX_GENERATORS`].
-    #[error("{0} generators: at most {MAX_GENERATORS} are supported")]
     TooManyGenerators(usize),
     /// A label that is empty or not ASCII alphanumeric.
-    #[error("generator label `{0}` must be non-empty ASCII letters or digits")]
     InvalidLabel(String),
     /// The same label twice.
-    #[error("generator label `{0}` is declared twice")]
     DuplicateLabel(String),
     /// Two different subsets of generators would get the same basis name.
-    #[error("labels are ambiguous: basis name `{name}` would mean both {first} and {second}")]
     AmbiguousLabels {
         /// The name that two subsets share.
         name: String,
@@ -37,7 +32,6 @@ pub enum MetricError {
         second: String,
     },
     /// The Gram matrix is not n x n.
-    #[error("the Gram matrix must be {expected}x{expected}, found a row or column count of {found}")]
     WrongSize {
         /// The number of generators.
         expected: usize,
@@ -45,7 +39,6 @@ pub enum MetricError {
         found: usize,
     },
     /// `B(e_i, e_j) != B(e_j, e_i)`.
-    #[error("the Gram matrix is not symmetric: B({a}, {b}) = {ab} but B({b}, {a}) = {ba}")]
     Asymmetric {
         /// First label.
         a: String,
@@ -57,13 +50,10 @@ pub enum MetricError {
         ba: String,
     },
     /// A metric entry names a label that is not a generator.
-    #[error("metric entry names unknown generator `{0}`")]
     UnknownLabel(String),
     /// No built-in algebra of that name.
-    #[error("unknown algebra `{0}` (built-ins: g3, g123inf, pga3, cga, cga-null; or a path to a .toml file)")]
     UnknownAlgebra(String),
     /// A TOML description that could not be read or understood.
-    #[error("bad algebra file {path}: {message}")]
     Toml {
         /// The file (or `<string>`).
         path: String,
@@ -71,6 +61,37 @@ pub enum MetricError {
         message: String,
     },
 }
+
+impl std::fmt::Display for MetricError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            MetricError::Empty => write!(f, "an algebra needs at least one generator"),
+            MetricError::TooManyGenerators(x) => write!(f, "{x} generators: at most {MAX_GENERATORS} are supported"),
+            MetricError::InvalidLabel(x) => {
+                write!(f, "generator label `{x}` must be non-empty ASCII letters or digits")
+            }
+            MetricError::DuplicateLabel(x) => write!(f, "generator label `{x}` is declared twice"),
+            MetricError::AmbiguousLabels { name, first, second } => {
+                write!(f, "labels are ambiguous: basis name `{name}` would mean both {first} and {second}")
+            }
+            MetricError::WrongSize { expected, found } => {
+                write!(f, "the Gram matrix must be {expected}x{expected}, found a row or column count of {found}")
+            }
+            MetricError::Asymmetric { a, b, ab, ba } => {
+                write!(f, "the Gram matrix is not symmetric: B({a}, {b}) = {ab} but B({b}, {a}) = {ba}")
+            }
+            MetricError::UnknownLabel(x) => write!(f, "metric entry names unknown generator `{x}`"),
+            MetricError::UnknownAlgebra(x) => write!(
+                f,
+                "unknown algebra `{x}` (built-ins: {names}; or a path to a .toml file)",
+                names = crate::algebra::builtin_names()
+            ),
+            MetricError::Toml { path, message } => write!(f, "bad algebra file {path}: {message}"),
+        }
+    }
+}
+
+impl std::error::Error for MetricError {}
 
 /// Generator labels with the symmetric bilinear form on them.
 ///
@@ -250,110 +271,6 @@ impl Metric {
     pub fn label_index(&self, label: &str) -> Option<usize> {
         self.labels.iter().position(|l| l == label)
     }
-
-    /// Reads an algebra description in TOML. Either a full matrix
-    ///
-    /// ```toml
-    /// name = "plane"            # optional
-    /// generators = ["x", "y"]
-    /// gram = [[1, 0], [0, "-1/2"]]
-    /// ```
-    ///
-    /// or the non-zero entries by label pair (unlisted pairs are 0; `(a, b)` sets both
-    /// `B(a, b)` and `B(b, a)`):
-    ///
-    /// ```toml
-    /// generators = ["0", "1", "2", "3", "inf"]
-    /// metric = { "1,1" = 1, "2,2" = 1, "3,3" = 1, "0,inf" = -1 }
-    /// ```
-    ///
-    /// Entries are integers or rational strings (`"p/q"`, exact decimals). Returns the
-    /// optional name and the metric.
-    ///
-    /// ```
-    /// let (name, m) = algebra_core::Metric::from_toml_str(
-    ///     "name = \"h\"\ngenerators = [\"a\", \"b\"]\nmetric = { \"a,b\" = \"1/2\" }",
-    ///     "<string>",
-    /// ).unwrap();
-    /// assert_eq!(name.as_deref(), Some("h"));
-    /// assert_eq!(m.gram(1, 0), &algebra_core::rational::ratio(1, 2));
-    /// ```
-    pub fn from_toml_str(text: &str, path: &str) -> Result<(Option<String>, Metric), MetricError> {
-        let err = |message: String| MetricError::Toml { path: path.to_string(), message };
-        let doc: toml::Table = text.parse().map_err(|e: toml::de::Error| {
-            // "TOML parse error at line L, column C" ... "reason": keep both, on one line
-            let msg = e.to_string();
-            let mut lines = msg.lines().map(str::trim).filter(|l| !l.is_empty());
-            let first = lines.next().unwrap_or("parse error").to_string();
-            match lines.rfind(|l| !l.contains('|') && !l.starts_with('^')) {
-                Some(reason) => err(format!("{first}: {reason}")),
-                None => err(first),
-            }
-        })?;
-        for key in doc.keys() {
-            if !["name", "generators", "gram", "metric"].contains(&key.as_str()) {
-                return Err(err(format!("unknown key `{key}` (expected name, generators, gram or metric)")));
-            }
-        }
-        let name = match doc.get("name") {
-            None => None,
-            Some(toml::Value::String(s)) => Some(s.clone()),
-            Some(_) => return Err(err("`name` must be a string".into())),
-        };
-        let labels: Vec<String> = match doc.get("generators") {
-            Some(toml::Value::Array(a)) => a
-                .iter()
-                .map(|v| match v {
-                    toml::Value::String(s) => Ok(s.clone()),
-                    toml::Value::Integer(i) => Ok(i.to_string()),
-                    _ => Err(err("`generators` must be a list of labels".into())),
-                })
-                .collect::<Result<_, _>>()?,
-            _ => return Err(err("missing `generators = [...]`".into())),
-        };
-        let n = labels.len();
-        let entry = |v: &toml::Value, at: &str| -> Result<Q, MetricError> {
-            match v {
-                toml::Value::Integer(i) => Ok(q(*i)),
-                toml::Value::String(s) => parse_rational(s).map_err(|e| err(format!("{at}: {e}"))),
-                _ => Err(err(format!(
-                    "{at}: entries must be integers or rational strings like \"1/2\" (floats are not exact)"
-                ))),
-            }
-        };
-        let gram = match (doc.get("gram"), doc.get("metric")) {
-            (Some(_), Some(_)) => return Err(err("give either `gram` or `metric`, not both".into())),
-            (None, None) => return Err(err("missing `gram = [[...]]` or `metric = { \"a,b\" = value }`".into())),
-            (Some(toml::Value::Array(rows)), None) => rows
-                .iter()
-                .enumerate()
-                .map(|(i, row)| match row {
-                    toml::Value::Array(r) => r
-                        .iter()
-                        .enumerate()
-                        .map(|(j, v)| entry(v, &format!("gram[{i}][{j}]")))
-                        .collect::<Result<Vec<_>, _>>(),
-                    _ => Err(err("`gram` must be a list of rows".into())),
-                })
-                .collect::<Result<Vec<_>, _>>()?,
-            (None, Some(toml::Value::Table(t))) => {
-                let mut gram = vec![vec![Q::zero(); n]; n];
-                let index: HashMap<&str, usize> = labels.iter().enumerate().map(|(i, l)| (l.as_str(), i)).collect();
-                for (key, v) in t {
-                    let (a, b) =
-                        key.split_once(',').ok_or_else(|| err(format!("metric key `{key}` must be \"a,b\"")))?;
-                    let ia = *index.get(a.trim()).ok_or_else(|| MetricError::UnknownLabel(a.trim().into()))?;
-                    let ib = *index.get(b.trim()).ok_or_else(|| MetricError::UnknownLabel(b.trim().into()))?;
-                    let value = entry(v, &format!("metric \"{key}\""))?;
-                    gram[ia][ib] = value.clone();
-                    gram[ib][ia] = value;
-                }
-                gram
-            }
-            _ => return Err(err("`gram` must be a matrix and `metric` a table".into())),
-        };
-        Ok((name, Metric::new(labels, gram)?))
-    }
 }
 
 /// Rejects label sets for which two subsets concatenate to the same basis name.
@@ -425,24 +342,6 @@ mod tests {
             Err(MetricError::WrongSize { .. })
         ));
         assert!(matches!(Metric::new(l(&["a"]), vec![vec![q(1)], vec![q(1)]]), Err(MetricError::WrongSize { .. })));
-    }
-
-    #[test]
-    fn toml_forms_agree() {
-        let (_, a) =
-            Metric::from_toml_str("generators = [\"0\",\"1\",\"inf\"]\nmetric = { \"1,1\" = 1, \"0,inf\" = -1 }", "a")
-                .unwrap();
-        let (_, b) =
-            Metric::from_toml_str("generators = [\"0\",\"1\",\"inf\"]\ngram = [[0,0,-1],[0,1,0],[-1,0,0]]", "b")
-                .unwrap();
-        assert_eq!(a, b);
-        assert!(!a.is_degenerate());
-        assert!(Metric::from_toml_str("generators = [\"a\"]\ngram = [[1.5]]", "c").is_err());
-        assert!(Metric::from_toml_str("generators = [\"a\"]\nmetric = { \"a,z\" = 1 }", "c").is_err());
-        let Err(MetricError::Toml { message, .. }) = Metric::from_toml_str("generators = [\"a\"", "c") else {
-            panic!("broken TOML must be rejected")
-        };
-        assert!(message.contains("line 1") && message.contains(": "), "{message}");
     }
 
     #[test]

@@ -30,15 +30,26 @@ pub fn ratio(num: i64, den: i64) -> Q {
 }
 
 /// Why a rational literal could not be read.
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[derive(Debug, Clone, PartialEq, Eq)]
 pub enum RationalParseError {
     /// Not of the form `p`, `p/q` or a decimal `d.ddd` (optionally with an exponent).
-    #[error("`{0}` is not a rational number (expected p, p/q or a decimal)")]
     Syntax(String),
     /// A zero denominator.
-    #[error("`{0}` has a zero denominator")]
     ZeroDenominator(String),
 }
+
+impl std::fmt::Display for RationalParseError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            RationalParseError::Syntax(x) => {
+                write!(f, "`{x}` is not a rational number (expected p, p/q or a decimal)")
+            }
+            RationalParseError::ZeroDenominator(x) => write!(f, "`{x}` has a zero denominator"),
+        }
+    }
+}
+
+impl std::error::Error for RationalParseError {}
 
 /// Parses `p`, `p/q`, or an exact decimal (`0.25`, `-1.5e-3`) into a rational.
 ///

@@ -104,9 +104,16 @@ impl fmt::Display for Product {
 }
 
 /// An unknown product name.
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-#[error("unknown product `{0}` (expected gp, op, lc, rc, sp, rp, comm or acomm)")]
+#[derive(Debug, Clone, PartialEq, Eq)]
 pub struct UnknownProduct(pub String);
+
+impl std::fmt::Display for UnknownProduct {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "unknown product `{}` (expected gp, op, lc, rc, sp, rp, comm or acomm)", self.0)
+    }
+}
+
+impl std::error::Error for UnknownProduct {}
 
 impl FromStr for Product {
     type Err = UnknownProduct;

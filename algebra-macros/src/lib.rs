@@ -1,6 +1,6 @@
 //! The `algebra!` proc-macro: declares a geometric algebra and the multivector types to
 //! generate for it. This crate only parses the DSL; the generator is
-//! [`algebra_core::codegen`].
+//! [`algebra_codegen`].
 //!
 //! ```ignore
 //! algebra_macros::algebra! {
@@ -25,8 +25,12 @@
 //! - `basis blade;` (default) or `basis product;`: what the type fields' names mean.
 //! - `types { Name = selector; ... }` with selectors `grade K`, `even`, `odd`, `all`, or a
 //!   list `[1, e12, ...]`; doc comments on types are kept.
+//! - optionally, before the module, `crate PATH;`: where the generated code finds the engine
+//!   (`algebra-core`). The default is `::algebra_core`, for crates that depend on algebra-core
+//!   directly (the workspace's `gam-algebras`, `motion`); the front door `gam_ga::algebra!`
+//!   passes `crate $crate::__engine;`, so its users need no other dependency.
 
-use algebra_core::codegen::{ModuleSpec, TypeSpec, plan::Plan};
+use algebra_codegen::{ModuleSpec, TypeSpec, plan::Plan};
 use algebra_core::rational::{Q, q};
 use algebra_core::{Algebra, Basis, Metric};
 use proc_macro::TokenStream;
@@ -61,6 +65,7 @@ enum Selector {
 }
 
 struct Decl {
+    engine: Option<proc_macro2::TokenStream>,
     attrs: Vec<Attribute>,
     vis: Visibility,
     name: Ident,
@@ -89,6 +94,17 @@ fn parse_value(input: ParseStream) -> syn::Result<Q> {
 
 impl Parse for Decl {
     fn parse(input: ParseStream) -> syn::Result<Self> {
+        let engine = if input.peek(Token![crate]) {
+            input.parse::<Token![crate]>()?;
+            let mut path = proc_macro2::TokenStream::new();
+            while !input.peek(Token![;]) {
+                path.extend([input.parse::<proc_macro2::TokenTree>()?]);
+            }
+            input.parse::<Token![;]>()?;
+            Some(path)
+        } else {
+            None
+        };
         let attrs = input.call(Attribute::parse_outer)?;
         let vis: Visibility = input.parse()?;
         input.parse::<Token![mod]>()?;
@@ -215,7 +231,7 @@ impl Parse for Decl {
             (MetricDecl::Builtin(_), None) => Vec::new(),
             (MetricDecl::Pairs(_), None) => return Err(missing("generators")),
         };
-        Ok(Decl { attrs, vis, name, generators, metric, metric_span, basis, types, serde })
+        Ok(Decl { engine, attrs, vis, name, generators, metric, metric_span, basis, types, serde })
     }
 }
 
@@ -296,7 +312,10 @@ fn expand(decl: Decl) -> syn::Result<proc_macro2::TokenStream> {
     })?;
     spec.serde = decl.serde;
     let plan = Plan::new(spec).map_err(|e| syn::Error::new(decl.name.span(), e))?;
-    let items = algebra_core::codegen::emit::module_items(&plan);
+    let mut items = algebra_codegen::emit::module_items(&plan);
+    if let Some(engine) = &decl.engine {
+        items = algebra_codegen::paths::with_engine_path(items, engine);
+    }
     let (attrs, vis, name) = (&decl.attrs, &decl.vis, &decl.name);
     Ok(quote! {
         #(#attrs)*

@@ -1,5 +1,5 @@
 //! The `algebra!` declarations of the predefined algebras. Everything inside each module is
-//! generated at compile time; see `algebra_core::codegen` for what each type gets.
+//! generated at compile time; see `algebra_codegen` for what each type gets.
 
 use algebra_macros::algebra;
 

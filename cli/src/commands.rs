@@ -6,8 +6,9 @@ use crate::eval::Evaluator;
 use crate::expr;
 use crate::output::{mv_human, mv_json, text_table};
 use crate::scalar::{CliScalar, ScalarKind};
+use algebra_codegen::metric_toml::algebra_from_name_or_path;
 use algebra_core::rational::{Q, format_rational};
-use algebra_core::{Algebra, Basis, MpFloat, Multivector, Poly, PrecisionGuard, Product, algebra::BUILTINS};
+use algebra_core::{Basis, MpFloat, Multivector, Poly, PrecisionGuard, Product, algebra::BUILTINS};
 use serde_json::{Value, json};
 
 /// A short description of a built-in algebra.
@@ -27,7 +28,7 @@ fn description(name: &str) -> &'static str {
 pub fn algebras(names: &[String], json: bool) -> Result<String, CliError> {
     let names: Vec<String> =
         if names.is_empty() { BUILTINS.iter().map(|s| s.to_string()).collect() } else { names.to_vec() };
-    let algs = names.iter().map(|n| Algebra::from_name_or_path(n)).collect::<Result<Vec<_>, _>>()?;
+    let algs = names.iter().map(|n| algebra_from_name_or_path(n)).collect::<Result<Vec<_>, _>>()?;
     if json {
         let list: Vec<Value> = algs
             .iter()
@@ -78,7 +79,7 @@ pub struct EvalArgs {
 
 /// `gam eval`: parse, evaluate over the chosen scalar, print in the chosen basis.
 pub fn eval(args: &EvalArgs) -> Result<String, CliError> {
-    let alg = Algebra::from_name_or_path(&args.algebra)?;
+    let alg = algebra_from_name_or_path(&args.algebra)?;
     let ast = expr::parse(&args.expr)?;
     let ev = Evaluator::new(&alg, args.basis);
     match args.scalar {
@@ -98,7 +99,7 @@ fn render<T: CliScalar>(x: &Multivector<T>, json: bool) -> Result<String, CliErr
 
 /// `gam table`: the product table of `product` on the basis elements of `basis`.
 pub fn table(algebra: &str, basis: Basis, product: Product, json: bool) -> Result<String, CliError> {
-    let alg = Algebra::from_name_or_path(algebra)?;
+    let alg = algebra_from_name_or_path(algebra)?;
     let order = alg.basis_order();
     let tab = alg.tables().product(basis, product);
     let entry = |a: u32, b: u32| -> Multivector<Q> {

@@ -34,6 +34,11 @@ struct Cli {
     command: Command,
 }
 
+/// The `--algebra` help, naming the built-ins from algebra-core's one table.
+fn algebra_help() -> String {
+    format!("A built-in algebra ({}) or a path to a TOML file", algebra_core::algebra::builtin_names())
+}
+
 #[derive(Debug, Subcommand)]
 enum Command {
     /// List the built-in algebras (or the named ones) with their labels and metrics.
@@ -47,8 +52,7 @@ enum Command {
     },
     /// Evaluate a multivector expression.
     Eval {
-        /// A built-in algebra (g3, g123inf, pga3, cga, cga-null) or a path to a TOML file.
-        #[arg(long, value_name = "NAME", default_value = "cga-null")]
+        #[arg(long, value_name = "NAME", default_value = "cga-null", help = algebra_help())]
         algebra: String,
         /// The basis for reading and printing basis names: blade or product.
         #[arg(long, value_name = "B", default_value = "blade")]
@@ -65,8 +69,7 @@ enum Command {
     },
     /// Print the table of a product on the basis elements.
     Table {
-        /// A built-in algebra (g3, g123inf, pga3, cga, cga-null) or a path to a TOML file.
-        #[arg(long, value_name = "NAME", default_value = "cga-null")]
+        #[arg(long, value_name = "NAME", default_value = "cga-null", help = algebra_help())]
         algebra: String,
         /// The basis: blade or product.
         #[arg(long, value_name = "B", default_value = "blade")]
@@ -80,8 +83,7 @@ enum Command {
     },
     /// Generate the Rust module of the `algebra!` macro (or its kernels' operation counts).
     Codegen {
-        /// A built-in algebra (g3, g123inf, pga3, cga, cga-null) or a path to a TOML file.
-        #[arg(long, value_name = "NAME", default_value = "cga-null")]
+        #[arg(long, value_name = "NAME", default_value = "cga-null", help = algebra_help())]
         algebra: String,
         /// The types: "Name=selector;..." with selectors `grade K`, `even`, `odd`, `all` or a
         /// comma list of basis names, e.g. "Motor=1,e12,e13,e23,e1inf,e2inf,e3inf,e123inf;Vector=grade1".
@@ -93,13 +95,18 @@ enum Command {
         /// rust (formatted source) or stats (operation counts per kernel).
         #[arg(long, value_enum, value_name = "WHAT", default_value = "rust")]
         emit: codegen::Emit,
-        /// The module name (default: the algebra name, `-` as `_`).
+        /// The module name (default: the algebra name, `-` as `_`). With --standalone: wrap the
+        /// items in `pub mod NAME` (default: no wrapper).
         #[arg(long, value_name = "NAME")]
         module: Option<String>,
         /// Print JSON: for stats a list of {"op","lhs","rhs","out","mul","add"}; for rust
         /// {"module","source"}.
         #[arg(long)]
         json: bool,
+        /// A file with no dependency: scalar and product traits inlined (for f32/f64), no
+        /// conversions to the runtime multivector, items at the top level.
+        #[arg(long)]
+        standalone: bool,
     },
     /// Control poses of a motion segment from its end conditions (Secs. 4-5 of the main paper).
     Hermite {
@@ -190,8 +197,8 @@ fn run(command: Command) -> Result<(String, Option<CliError>), CliError> {
             commands::eval(&commands::EvalArgs { algebra, basis, scalar, json, expr })
         }
         Command::Table { algebra, basis, product, json } => commands::table(&algebra, basis, product, json),
-        Command::Codegen { algebra, types, basis, emit, module, json } => {
-            codegen::codegen(&codegen::CodegenArgs { algebra, types, basis, emit, module, json })
+        Command::Codegen { algebra, types, basis, emit, module, json, standalone } => {
+            codegen::codegen(&codegen::CodegenArgs { algebra, types, basis, emit, module, json, standalone })
         }
         Command::Hermite { json, spec } => hermite::hermite(&spec, json),
         Command::Interpolate { json, spec } => interpolate::interpolate(&spec, json),

@@ -54,3 +54,26 @@ fn bad_type_lists_are_usage_errors() {
         assert!(out.stdout.is_empty());
     }
 }
+
+#[test]
+fn standalone_file_matches_the_vendored_example() {
+    // examples/vendored builds this file as its own crate with no dependencies (cargo test
+    // --workspace compiles and tests it); here it is regenerated and compared byte for byte.
+    let out = gam(&["codegen", "--standalone", "--algebra", "g3", "--types", "Vector=grade1;Rotor=even"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let expected = include_str!("../../examples/vendored/src/kernels.rs");
+    let got = String::from_utf8(out.stdout).unwrap();
+    assert_eq!(got.trim_end(), expected.trim_end(), "regenerate with the command in the file's header");
+    let header: Vec<&str> = got.lines().take(4).collect();
+    assert!(header[3].contains("regenerate with `cargo run --release -p gam -- codegen --standalone"), "{header:?}");
+    assert!(!got.contains("algebra_core") && !got.contains("pub mod "), "no dependency, no nesting");
+}
+
+#[test]
+fn standalone_nests_only_when_asked() {
+    let out = gam(&["codegen", "--standalone", "--algebra", "g3", "--types", "Vector=grade1", "--module", "g3k"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let got = String::from_utf8(out.stdout).unwrap();
+    assert_eq!(got.matches("pub mod ").count(), 1, "one wrapper module");
+    assert!(got.contains("pub mod g3k {"));
+}

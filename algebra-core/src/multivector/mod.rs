@@ -27,10 +27,9 @@ use crate::tables::{LinearMap, Unary};
 use std::sync::Arc;
 
 /// Why a multivector operation failed.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[derive(Debug, Clone, PartialEq)]
 pub enum MvError {
     /// The operands belong to algebras with different metrics.
-    #[error("operands belong to different algebras ({left} and {right})")]
     AlgebraMismatch {
         /// The left operand's algebra.
         left: String,
@@ -38,10 +37,8 @@ pub enum MvError {
         right: String,
     },
     /// A basis name or representation problem.
-    #[error(transparent)]
-    Basis(#[from] BasisError),
+    Basis(BasisError),
     /// A coefficient vector of the wrong length.
-    #[error("expected {expected} coefficients, got {found}")]
     WrongLength {
         /// `2^n`.
         expected: usize,
@@ -49,7 +46,6 @@ pub enum MvError {
         found: usize,
     },
     /// A conversion to a generated type met a coefficient outside that type.
-    #[error("cannot convert to {ty}: non-zero coefficient of {element}")]
     OutsideType {
         /// The generated type.
         ty: String,
@@ -57,10 +53,8 @@ pub enum MvError {
         element: String,
     },
     /// The element has no inverse (it is a zero divisor).
-    #[error("{0} is not invertible")]
     NotInvertible(String),
     /// No real logarithm or square root exists, or the iteration for it did not converge.
-    #[error("{op} is not defined for {value}: {why}")]
     Undefined {
         /// `log`, `sqrt`, `exp`.
         op: &'static str,
@@ -69,6 +63,32 @@ pub enum MvError {
         /// Why.
         why: String,
     },
+}
+
+impl std::fmt::Display for MvError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            MvError::AlgebraMismatch { left, right } => {
+                write!(f, "operands belong to different algebras ({left} and {right})")
+            }
+            MvError::Basis(e) => e.fmt(f),
+            MvError::WrongLength { expected, found } => write!(f, "expected {expected} coefficients, got {found}"),
+            MvError::OutsideType { ty, element } => {
+                write!(f, "cannot convert to {ty}: non-zero coefficient of {element}")
+            }
+            MvError::NotInvertible(x) => write!(f, "{x} is not invertible"),
+            MvError::Undefined { op, value, why } => write!(f, "{op} is not defined for {value}: {why}"),
+        }
+    }
+}
+
+/// `Basis` is transparent: its message is the inner error's.
+impl std::error::Error for MvError {}
+
+impl From<BasisError> for MvError {
+    fn from(e: BasisError) -> Self {
+        MvError::Basis(e)
+    }
 }
 
 /// A multivector: coefficients in one basis of one algebra.

@@ -16,8 +16,8 @@
 use super::emit::{Names, SumTerm, sum};
 use super::plan::{Ratio, to_ratio};
 use super::{CodegenError, ModuleSpec};
-use crate::rational::Q;
-use crate::tables::{Product, Unary};
+use algebra_core::rational::Q;
+use algebra_core::tables::{Product, Unary};
 use num_traits::Zero;
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};

@@ -1,28 +1,9 @@
-//! The code generator behind the `algebra!` macro and `gam codegen`: from a [`ModuleSpec`]
-//! (an algebra, a basis and named types, each a set of basis elements) to a Rust module of
-//! types generic over the scalar with fully unrolled, sparse kernels.
-//!
-//! The pipeline is visible in three steps:
-//! 1. [`ModuleSpec`]: what the user declared (validated);
-//! 2. [`plan::Plan`]: the structural analysis — for every pair of types and every product,
-//!    which output coefficients receive which `(lhs, rhs, rational)` terms, and which declared
-//!    type is the smallest holding the result (decided here, at expansion time);
-//! 3. [`emit`]: the token stream (structs, constructors, Display, conversions, operator and
-//!    trait impls, unary operations).
-//!
-//! Kernels contain only structurally non-zero terms, fold rational constants into
-//! `T::from_ratio`, never compare values, and report their operation counts
-//! ([`plan::KernelStats`]).
+//! Step 1 of the pipeline: the typed module specification ([`ModuleSpec`], [`TypeSpec`]) and
+//! its validation ([`CodegenError`]).
 
-pub mod emit;
-pub mod plan;
-pub mod size;
-mod value;
-pub mod versor;
-
-use crate::algebra::Algebra;
-use crate::basis::{Basis, grade};
-use crate::metric::Metric;
+use algebra_core::algebra::Algebra;
+use algebra_core::basis::{Basis, grade};
+use algebra_core::metric::Metric;
 use std::sync::Arc;
 
 /// Why a module specification was rejected.
@@ -98,7 +79,8 @@ impl TypeSpec {
     /// the chosen basis (the paper's notion in the product basis).
     ///
     /// ```
-    /// use algebra_core::{Algebra, codegen::TypeSpec};
+    /// use algebra_core::Algebra;
+    /// use algebra_codegen::TypeSpec;
     /// let alg = Algebra::builtin("g123inf").unwrap();
     /// let v = TypeSpec::parse("Vector", "grade 1", &alg).unwrap();
     /// assert_eq!(v.elements.len(), 4);
@@ -151,7 +133,7 @@ impl TypeSpec {
     /// A type from masks (sorted into basis order by the plan).
     ///
     /// ```
-    /// let t = algebra_core::codegen::TypeSpec::new("Scalar", vec![0]).unwrap();
+    /// let t = algebra_codegen::TypeSpec::new("Scalar", vec![0]).unwrap();
     /// assert_eq!(t.elements, [0]);
     /// ```
     pub fn new(name: &str, elements: Vec<u32>) -> Result<TypeSpec, CodegenError> {
@@ -190,7 +172,8 @@ impl ModuleSpec {
     /// A module spec from a metric, validating the types.
     ///
     /// ```
-    /// use algebra_core::{Algebra, Basis, codegen::{ModuleSpec, TypeSpec}};
+    /// use algebra_core::{Algebra, Basis};
+    /// use algebra_codegen::{ModuleSpec, TypeSpec};
     /// let alg = Algebra::builtin("g3").unwrap();
     /// let types = vec![TypeSpec::parse("Vector", "grade 1", &alg).unwrap()];
     /// let spec = ModuleSpec::new("g3", alg.metric().clone(), Basis::Blade, types).unwrap();
@@ -220,7 +203,8 @@ impl ModuleSpec {
     /// Parses the `gam codegen --types` syntax: `Motor=1,e12,e13;Vector=grade1`.
     ///
     /// ```
-    /// use algebra_core::{Algebra, codegen::ModuleSpec};
+    /// use algebra_core::Algebra;
+    /// use algebra_codegen::ModuleSpec;
     /// let alg = Algebra::builtin("g123inf").unwrap();
     /// let types = ModuleSpec::parse_types("Motor=even;Vector=grade1", &alg).unwrap();
     /// assert_eq!(types[0].elements.len(), 8);

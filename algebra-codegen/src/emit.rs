@@ -4,10 +4,10 @@
 //! that uses the macro, or vendors the emitted file, depends on `algebra-core` (without its
 //! `rug` feature if it wants no GMP).
 
-use super::plan::{BinaryKernel, Plan, Ratio, Term, UnaryKernel, unary_name};
-use crate::basis::Basis;
-use crate::rational::format_rational;
-use crate::tables::Product;
+use crate::plan::{BinaryKernel, Plan, Ratio, Term, UnaryKernel, unary_name};
+use algebra_core::basis::Basis;
+use algebra_core::rational::format_rational;
+use algebra_core::tables::Product;
 use proc_macro2::{Ident, Span, TokenStream};
 use quote::{format_ident, quote};
 use std::collections::BTreeMap;
@@ -130,7 +130,8 @@ impl Names {
 /// The whole module: `pub mod NAME { ... }`.
 ///
 /// ```
-/// use algebra_core::{Algebra, Basis, codegen::{ModuleSpec, plan::Plan, emit}};
+/// use algebra_core::{Algebra, Basis};
+/// use algebra_codegen::{ModuleSpec, emit, plan::Plan};
 /// let alg = Algebra::builtin("g3").unwrap();
 /// let types = ModuleSpec::parse_types("Vector=grade1;Rotor=even", &alg).unwrap();
 /// let spec = ModuleSpec::new("g3", alg.metric().clone(), Basis::Blade, types).unwrap();
@@ -227,6 +228,8 @@ fn type_items(plan: &Plan, names: &Names, i: usize) -> TokenStream {
     };
     let unaries = plan.unary.iter().filter(|k| k.ty == i).map(|k| unary_method(names, k));
     let norm = norm_method(names, i, &plan.norm[i]);
+    let rev_out = &names.types
+        [plan.unary.iter().find(|k| k.ty == i && k.op == algebra_core::Unary::Reverse).expect("planned").out];
     let inverse = inverse_method(plan, names, i);
     let serde_derive = super::value::serde_attribute(plan);
     let values = super::value::type_items(names, i);

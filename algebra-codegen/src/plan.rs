@@ -1,11 +1,11 @@
 //! Structural analysis: which terms each generated kernel contains, and which declared type
 //! receives each result. Everything here is decided from the exact tables at expansion time.
 
-use super::{CodegenError, ModuleSpec, TypeSpec};
-use crate::basis::Basis;
-use crate::multivector::Multivector;
-use crate::rational::Q;
-use crate::tables::{Product, Unary};
+use crate::spec::{CodegenError, ModuleSpec, TypeSpec};
+use algebra_core::basis::Basis;
+use algebra_core::multivector::Multivector;
+use algebra_core::rational::Q;
+use algebra_core::tables::{Product, Unary};
 use num_traits::{ToPrimitive, Zero};
 use std::collections::BTreeSet;
 
@@ -96,7 +96,7 @@ pub const UNARY_OPS: [Unary; 5] =
 pub(super) fn to_ratio(c: &Q) -> Result<Ratio, CodegenError> {
     match (c.numer().to_i64(), c.denom().to_i64()) {
         (Some(n), Some(d)) => Ok((n, d)),
-        _ => Err(CodegenError::CoefficientTooLarge(crate::rational::format_rational(c))),
+        _ => Err(CodegenError::CoefficientTooLarge(algebra_core::rational::format_rational(c))),
     }
 }
 
@@ -112,7 +112,8 @@ impl Plan {
     /// Analyses a spec.
     ///
     /// ```
-    /// use algebra_core::{Algebra, Basis, codegen::{ModuleSpec, plan::Plan}};
+    /// use algebra_core::{Algebra, Basis};
+    /// use algebra_codegen::{ModuleSpec, plan::Plan};
     /// let alg = Algebra::builtin("g123inf").unwrap();
     /// let types = ModuleSpec::parse_types("Motor=even", &alg).unwrap();
     /// let spec = ModuleSpec::new("g123inf", alg.metric().clone(), Basis::Blade, types).unwrap();
@@ -269,7 +270,11 @@ pub fn unary_name(op: Unary) -> &'static str {
 }
 
 /// `<x rev(x)>_0 = Σ_{i<=j} c_ij x_i x_j` for a type with the given elements.
-fn norm_terms(alg: &std::sync::Arc<crate::Algebra>, basis: Basis, elements: &[u32]) -> Result<Vec<Term>, CodegenError> {
+fn norm_terms(
+    alg: &std::sync::Arc<algebra_core::Algebra>,
+    basis: Basis,
+    elements: &[u32],
+) -> Result<Vec<Term>, CodegenError> {
     let e = |m: u32| Multivector::<Q>::from_mask(alg, basis, m);
     let mut terms = Vec::new();
     for (i, &mi) in elements.iter().enumerate() {

@@ -1,0 +1,41 @@
+//! The code generator behind the `algebra!` macro and `gam codegen`: from a [`ModuleSpec`]
+//! (an algebra, a basis and named types, each a set of basis elements) to a Rust module of
+//! types generic over the scalar with fully unrolled, sparse kernels.
+//!
+//! The pipeline is visible in three steps:
+//! 1. [`spec::ModuleSpec`]: what the user declared (validated);
+//! 2. [`plan::Plan`]: the structural analysis — for every pair of types and every product,
+//!    which output coefficients receive which `(lhs, rhs, rational)` terms, and which declared
+//!    type is the smallest holding the result (decided here, at expansion time);
+//! 3. [`emit`]: the token stream (structs, constructors, Display, conversions, operator and
+//!    trait impls, unary operations).
+//!
+//! Kernels contain only structurally non-zero terms, fold rational constants into
+//! `T::from_ratio`, never compare values, and report their operation counts
+//! ([`plan::KernelStats`]).
+//!
+//! The `toml` feature adds [`metric_toml`]: algebra descriptions read from TOML files (the
+//! CLI's `--algebra file.toml`). This crate is a build-time dependency only: kernels (from the
+//! macro or vendored) need `algebra-core` at run time, never this crate.
+//!
+//! ```
+//! use algebra_core::{Algebra, Basis};
+//! use algebra_codegen::{ModuleSpec, emit, plan::Plan};
+//! let alg = Algebra::builtin("pga3").unwrap();
+//! let types = ModuleSpec::parse_types("Motor=even;Point=grade3", &alg).unwrap();
+//! let plan = Plan::new(ModuleSpec::new("pga", alg.metric().clone(), Basis::Blade, types).unwrap()).unwrap();
+//! assert!(emit::module(&plan).to_string().contains("struct Motor"));
+//! ```
+
+pub mod emit;
+#[cfg(feature = "toml")]
+pub mod metric_toml;
+pub mod paths;
+pub mod plan;
+pub mod size;
+pub mod spec;
+pub mod standalone;
+mod value;
+pub mod versor;
+
+pub use spec::{CodegenError, ModuleSpec, TypeSpec};

@@ -1,0 +1,49 @@
+//! Vendored kernels: `src/kernels.rs` was written by
+//! `cargo run --release -p gam -- codegen --standalone --algebra g3 --types "Vector=grade1;Rotor=even"`
+//! and this crate has no dependencies. Rotors of Euclidean 3-space at `f32` rotate vectors by
+//! `rev(R) v R`. Run: `cargo run -p gam-example-vendored`.
+
+#[rustfmt::skip] // kept byte-for-byte as generated (the CLI test compares it)
+mod kernels;
+
+use kernels::{GeometricProduct, Rotor, Vector};
+
+/// The rotor of the rotation by `angle` in the plane `e12` (about `e3`):
+/// `R = cos(angle/2) + sin(angle/2) e12`, acting as `rev(R) v R`.
+fn rotor_about_e3(angle: f32) -> Rotor<f32> {
+    let (s, c) = (angle / 2.0).sin_cos();
+    Rotor::new(c, s, 0.0, 0.0)
+}
+
+/// `rev(R) v R`, projected onto vectors (the other grades vanish for a unit rotor).
+fn rotate(r: &Rotor<f32>, v: &Vector<f32>) -> Vector<f32> {
+    r.reverse().gp(v).gp(r).project_to_vector()
+}
+
+fn main() {
+    let r = rotor_about_e3(std::f32::consts::FRAC_PI_2);
+    let v = Vector::new(1.0, 0.0, 0.0);
+    println!("rev(R) e1 R = {}", rotate(&r, &v));
+    println!("R^-1 = {}", r.inverse().expect("a unit rotor is invertible"));
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn quarter_turn_about_e3() {
+        // By hand, R = c + s e12: rev(R) e1 R = (c^2 - s^2) e1 + 2cs e2 = cos(a) e1 + sin(a) e2.
+        let w = rotate(&rotor_about_e3(std::f32::consts::FRAC_PI_2), &Vector::new(1.0, 0.0, 0.0));
+        assert!((w.e1).abs() < 1e-6 && (w.e2 - 1.0).abs() < 1e-6 && w.e3.abs() < 1e-6, "{w}");
+    }
+
+    #[test]
+    fn inverse_is_the_reverse_for_a_unit_rotor() {
+        let r = rotor_about_e3(0.7);
+        let inv = r.inverse().unwrap();
+        let rev = r.reverse();
+        assert!((inv.scalar - rev.scalar).abs() < 1e-6 && (inv.e12 - rev.e12).abs() < 1e-6, "{inv} {rev}");
+        assert_eq!(Rotor::<f32>::new(0.0, 0.0, 0.0, 0.0).inverse().unwrap_err().to_string(), "0 is not invertible");
+    }
+}
