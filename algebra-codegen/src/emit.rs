@@ -276,7 +276,7 @@ fn type_items(plan: &Plan, names: &Names, i: usize) -> TokenStream {
             }
 
             /// The sandwich `f_S(x) = rev(S) x S` of the main paper (eq. 3); a fused kernel typed
-            /// to `x`'s type when `Self` is a versor type (see [`::algebra_core::ops::Sandwich`]).
+            /// to `x`'s type when `Self` is a versor type (see the `Sandwich` trait).
             pub fn sandwich<X>(&self, x: &X) -> <Self as ::algebra_core::ops::Sandwich<X>>::Output
             where
                 Self: ::algebra_core::ops::Sandwich<X>,
@@ -285,7 +285,7 @@ fn type_items(plan: &Plan, names: &Names, i: usize) -> TokenStream {
             }
 
             /// The action `S x rev(S)` (the klein/GATL/ganja convention); a fused kernel typed to
-            /// `x`'s type when `Self` is a versor type (see [`::algebra_core::ops::Apply`]).
+            /// `x`'s type when `Self` is a versor type (see the `Apply` trait).
             pub fn apply<X>(&self, x: &X) -> <Self as ::algebra_core::ops::Apply<X>>::Output
             where
                 Self: ::algebra_core::ops::Apply<X>,

@@ -12,6 +12,26 @@ use proc_macro2::TokenStream;
 use quote::quote;
 
 /// Kernels with more terms than this are table-driven.
+///
+/// ```
+/// use algebra_core::{Algebra, Basis, codegen::{ModuleSpec, plan::Plan, emit}};
+/// let code = |name: &str, types: &str| {
+///     let alg = Algebra::builtin(name).unwrap();
+///     let types = ModuleSpec::parse_types(types, &alg).unwrap();
+///     let spec = ModuleSpec::new(name, alg.metric().clone(), Basis::Blade, types).unwrap();
+///     emit::module(&Plan::new(spec).unwrap()).to_string()
+/// };
+/// // the text of the `GeometricProduct<X> for X` impl
+/// let gp = |code: &str, x: &str| {
+///     let head = format!("GeometricProduct < {x} < T >> for {x} < T >");
+///     let body = &code[code.find(&head).unwrap()..];
+///     body[..body[1..].find("impl").unwrap()].to_string()
+/// };
+/// // the 64-term motor product stays straight-line code ...
+/// assert!(!gp(&code("g123inf", "Motor=even"), "Motor").contains("TERMS"));
+/// // ... the 1024-term full product of a 5-generator algebra is a loop over a table
+/// assert!(gp(&code("cga", "Multivector=all"), "Multivector").contains("const TERMS"));
+/// ```
 pub const TABLE_THRESHOLD: usize = 64;
 
 /// `out[k] += c · a[i] · b[j]` for every `(i, j, k, c)` in `terms`, as a loop over a constant

@@ -135,7 +135,7 @@ pub(super) fn type_items(names: &Names, i: usize) -> TokenStream {
         impl<T: ::algebra_core::Field> ::core::ops::Div<T> for #ty<T> {
             type Output = Self;
             /// `x / s`: every coefficient divided by `s`.
-            fn div(self, s: T) -> Self { #ty { #(#fields: self.#fields / &s),* } }
+            fn div(self, s: T) -> Self { #ty { #(#fields: self.#fields.div_ref(&s)),* } }
         }
         impl<T: ::algebra_core::Field> ::core::ops::Div<T> for &#ty<T> {
             type Output = #ty<T>;

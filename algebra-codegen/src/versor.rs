@@ -70,6 +70,18 @@ pub fn is_versor_type(spec: &ModuleSpec, full: usize, i: usize) -> bool {
 
 /// The fused kernels of every (versor type, operand type other than the full one) pair, in
 /// both conventions.
+///
+/// ```
+/// use algebra_core::{Algebra, Basis, codegen::{ModuleSpec, versor::{plan_actions, Convention}}};
+/// let alg = Algebra::builtin("cga-null").unwrap();
+/// let types = ModuleSpec::parse_types("Motor=1,e12,e13,e23,e1inf,e2inf,e3inf,e123inf;Vector=grade1", &alg).unwrap();
+/// let spec = ModuleSpec::new("cga_null", alg.metric().clone(), Basis::Product, types).unwrap();
+/// let actions = plan_actions(&spec, 2).unwrap();
+/// // Motor and Vector are versor types; each acts on both, in both conventions
+/// assert_eq!(actions.len(), 8);
+/// let k = actions.iter().find(|k| (k.versor, k.operand, k.convention) == (0, 1, Convention::Sandwich)).unwrap();
+/// assert_eq!(k.counts(), (64, 43)); // the pose on a conformal point (motor product: 48, 40)
+/// ```
 pub fn plan_actions(spec: &ModuleSpec, full: usize) -> Result<Vec<ActionKernel>, CodegenError> {
     let mut out = Vec::new();
     for v in (0..spec.types.len()).filter(|&v| is_versor_type(spec, full, v)) {

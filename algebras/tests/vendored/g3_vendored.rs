@@ -83,7 +83,7 @@ pub mod g3_vendored {
             }
         }
         /// The sandwich `f_S(x) = rev(S) x S` of the main paper (eq. 3); a fused kernel typed
-        /// to `x`'s type when `Self` is a versor type (see [`::algebra_core::ops::Sandwich`]).
+        /// to `x`'s type when `Self` is a versor type (see the `Sandwich` trait).
         pub fn sandwich<X>(
             &self,
             x: &X,
@@ -94,7 +94,7 @@ pub mod g3_vendored {
             ::algebra_core::ops::Sandwich::sandwich(self, x)
         }
         /// The action `S x rev(S)` (the klein/GATL/ganja convention); a fused kernel typed to
-        /// `x`'s type when `Self` is a versor type (see [`::algebra_core::ops::Apply`]).
+        /// `x`'s type when `Self` is a versor type (see the `Apply` trait).
         pub fn apply<X>(&self, x: &X) -> <Self as ::algebra_core::ops::Apply<X>>::Output
         where
             Self: ::algebra_core::ops::Apply<X>,
@@ -298,9 +298,9 @@ pub mod g3_vendored {
         /// `x / s`: every coefficient divided by `s`.
         fn div(self, s: T) -> Self {
             Vector {
-                e1: self.e1 / &s,
-                e2: self.e2 / &s,
-                e3: self.e3 / &s,
+                e1: self.e1.div_ref(&s),
+                e2: self.e2.div_ref(&s),
+                e3: self.e3.div_ref(&s),
             }
         }
     }
@@ -565,7 +565,7 @@ pub mod g3_vendored {
             }
         }
         /// The sandwich `f_S(x) = rev(S) x S` of the main paper (eq. 3); a fused kernel typed
-        /// to `x`'s type when `Self` is a versor type (see [`::algebra_core::ops::Sandwich`]).
+        /// to `x`'s type when `Self` is a versor type (see the `Sandwich` trait).
         pub fn sandwich<X>(
             &self,
             x: &X,
@@ -576,7 +576,7 @@ pub mod g3_vendored {
             ::algebra_core::ops::Sandwich::sandwich(self, x)
         }
         /// The action `S x rev(S)` (the klein/GATL/ganja convention); a fused kernel typed to
-        /// `x`'s type when `Self` is a versor type (see [`::algebra_core::ops::Apply`]).
+        /// `x`'s type when `Self` is a versor type (see the `Apply` trait).
         pub fn apply<X>(&self, x: &X) -> <Self as ::algebra_core::ops::Apply<X>>::Output
         where
             Self: ::algebra_core::ops::Apply<X>,
@@ -829,10 +829,10 @@ pub mod g3_vendored {
         /// `x / s`: every coefficient divided by `s`.
         fn div(self, s: T) -> Self {
             Rotor {
-                scalar: self.scalar / &s,
-                e12: self.e12 / &s,
-                e13: self.e13 / &s,
-                e23: self.e23 / &s,
+                scalar: self.scalar.div_ref(&s),
+                e12: self.e12.div_ref(&s),
+                e13: self.e13.div_ref(&s),
+                e23: self.e23.div_ref(&s),
             }
         }
     }
@@ -1175,7 +1175,7 @@ pub mod g3_vendored {
             }
         }
         /// The sandwich `f_S(x) = rev(S) x S` of the main paper (eq. 3); a fused kernel typed
-        /// to `x`'s type when `Self` is a versor type (see [`::algebra_core::ops::Sandwich`]).
+        /// to `x`'s type when `Self` is a versor type (see the `Sandwich` trait).
         pub fn sandwich<X>(
             &self,
             x: &X,
@@ -1186,7 +1186,7 @@ pub mod g3_vendored {
             ::algebra_core::ops::Sandwich::sandwich(self, x)
         }
         /// The action `S x rev(S)` (the klein/GATL/ganja convention); a fused kernel typed to
-        /// `x`'s type when `Self` is a versor type (see [`::algebra_core::ops::Apply`]).
+        /// `x`'s type when `Self` is a versor type (see the `Apply` trait).
         pub fn apply<X>(&self, x: &X) -> <Self as ::algebra_core::ops::Apply<X>>::Output
         where
             Self: ::algebra_core::ops::Apply<X>,
@@ -1625,14 +1625,14 @@ pub mod g3_vendored {
         /// `x / s`: every coefficient divided by `s`.
         fn div(self, s: T) -> Self {
             Multivector {
-                scalar: self.scalar / &s,
-                e1: self.e1 / &s,
-                e2: self.e2 / &s,
-                e3: self.e3 / &s,
-                e12: self.e12 / &s,
-                e13: self.e13 / &s,
-                e23: self.e23 / &s,
-                e123: self.e123 / &s,
+                scalar: self.scalar.div_ref(&s),
+                e1: self.e1.div_ref(&s),
+                e2: self.e2.div_ref(&s),
+                e3: self.e3.div_ref(&s),
+                e12: self.e12.div_ref(&s),
+                e13: self.e13.div_ref(&s),
+                e23: self.e23.div_ref(&s),
+                e123: self.e123.div_ref(&s),
             }
         }
     }
