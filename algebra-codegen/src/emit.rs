@@ -228,8 +228,6 @@ fn type_items(plan: &Plan, names: &Names, i: usize) -> TokenStream {
     };
     let unaries = plan.unary.iter().filter(|k| k.ty == i).map(|k| unary_method(names, k));
     let norm = norm_method(names, i, &plan.norm[i]);
-    let rev_out = &names.types
-        [plan.unary.iter().find(|k| k.ty == i && k.op == algebra_core::Unary::Reverse).expect("planned").out];
     let inverse = inverse_method(plan, names, i);
     let serde_derive = super::value::serde_attribute(plan);
     let values = super::value::type_items(names, i);

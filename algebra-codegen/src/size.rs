@@ -14,7 +14,8 @@ use quote::quote;
 /// Kernels with more terms than this are table-driven.
 ///
 /// ```
-/// use algebra_core::{Algebra, Basis, codegen::{ModuleSpec, plan::Plan, emit}};
+/// use algebra_core::{Algebra, Basis};
+/// use algebra_codegen::{ModuleSpec, emit, plan::Plan};
 /// let code = |name: &str, types: &str| {
 ///     let alg = Algebra::builtin(name).unwrap();
 ///     let types = ModuleSpec::parse_types(types, &alg).unwrap();

@@ -72,7 +72,8 @@ pub fn is_versor_type(spec: &ModuleSpec, full: usize, i: usize) -> bool {
 /// both conventions.
 ///
 /// ```
-/// use algebra_core::{Algebra, Basis, codegen::{ModuleSpec, versor::{plan_actions, Convention}}};
+/// use algebra_core::{Algebra, Basis};
+/// use algebra_codegen::{ModuleSpec, versor::{Convention, plan_actions}};
 /// let alg = Algebra::builtin("cga-null").unwrap();
 /// let types = ModuleSpec::parse_types("Motor=1,e12,e13,e23,e1inf,e2inf,e3inf,e123inf;Vector=grade1", &alg).unwrap();
 /// let spec = ModuleSpec::new("cga_null", alg.metric().clone(), Basis::Product, types).unwrap();

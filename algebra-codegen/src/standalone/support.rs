@@ -46,6 +46,14 @@ pub trait Ring:
     fn neg_ref(&self) -> Self {
         -self.clone()
     }
+    /// `self += rhs`.
+    fn add_assign_ref(&mut self, rhs: &Self) {
+        *self = self.add_ref(rhs);
+    }
+    /// `self -= rhs`.
+    fn sub_assign_ref(&mut self, rhs: &Self) {
+        *self = self.sub_ref(rhs);
+    }
 }
 
 /// Division (algebra-core's `Field`, reduced to what the kernels call).
@@ -140,6 +148,22 @@ pub trait AnticommutatorProduct<Rhs: ?Sized> {
     type Output;
     /// `(self rhs + rhs self)/2`.
     fn anticommutator(&self, rhs: &Rhs) -> Self::Output;
+}
+
+/// The sandwich `rev(S) x S` (fused kernels typed to `x`'s type for versor types).
+pub trait Sandwich<X: ?Sized> {
+    /// The result type.
+    type Output;
+    /// `rev(self) x self`.
+    fn sandwich(&self, x: &X) -> Self::Output;
+}
+
+/// The versor action `S x rev(S)` (the klein/GATL/ganja convention).
+pub trait Apply<X: ?Sized> {
+    /// The result type.
+    type Output;
+    /// `self x rev(self)`.
+    fn apply(&self, x: &X) -> Self::Output;
 }
 
 /// Why an operation failed.

@@ -72,10 +72,9 @@ pub enum Limit {
 }
 
 /// Errors of the ideal computations.
-#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub enum IdealError {
     /// The budget ran out before the answer was known: neither "holds" nor "does not hold".
-    #[error("undecided within budget: {limit} limit reached after {elapsed_ms} ms")]
     Undecided {
         /// The limit that was reached.
         limit: Limit,
@@ -83,9 +82,21 @@ pub enum IdealError {
         elapsed_ms: u128,
     },
     /// A polynomial mentions a variable the ring does not have.
-    #[error("variable `{0}` is not a variable of the polynomial ring")]
     UnknownVariable(String),
 }
+
+impl fmt::Display for IdealError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            IdealError::Undecided { limit, elapsed_ms } => {
+                write!(f, "undecided within budget: {limit} limit reached after {elapsed_ms} ms")
+            }
+            IdealError::UnknownVariable(v) => write!(f, "variable `{v}` is not a variable of the polynomial ring"),
+        }
+    }
+}
+
+impl std::error::Error for IdealError {}
 
 impl fmt::Display for Limit {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
