@@ -26,6 +26,20 @@ pub enum Part {
     Elements(Vec<String>),
 }
 
+impl Part {
+    /// [`Part::Elements`] from a list of basis names, e.g. a generated type's `ELEMENTS`: with
+    /// the type's `project`, a symbolic element of a generated type is
+    /// `Motor::project(&Multivector::symbolic(&algebra(), BASIS, "S", &Part::elements(&Motor::ELEMENTS))?)`.
+    ///
+    /// ```
+    /// use algebra_core::multivector::symbolic::Part;
+    /// assert_eq!(Part::elements(&["1", "e12"]), Part::Elements(vec!["1".into(), "e12".into()]));
+    /// ```
+    pub fn elements(names: &[&str]) -> Part {
+        Part::Elements(names.iter().map(|n| n.to_string()).collect())
+    }
+}
+
 /// The coefficient symbol of basis element `name` for `prefix`: `prefix` for the scalar `1`,
 /// otherwise `prefix` followed by the labels (`e12` -> `S12`).
 ///
