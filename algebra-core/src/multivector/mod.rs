@@ -15,6 +15,9 @@
 
 pub mod display;
 mod exp_log;
+mod general;
+
+pub use exp_log::F64_GENERAL_BOUND;
 mod inverse;
 mod ops;
 
