@@ -53,6 +53,7 @@ mod ops;
 pub mod piecewise;
 pub mod pose;
 pub mod pseudoscalar;
+mod scaled;
 mod series;
 pub mod velocity;
 

@@ -133,6 +133,18 @@ pub trait Ring:
         eps > 0.0 && self.magnitude() <= f64::from(ulps) * eps * scale.magnitude()
     }
 
+    /// False when the value (any component, for dual numbers) is NaN or infinite; always true
+    /// for exact types. Lets code generic over a [`Ring`] or [`Field`] refuse non-finite
+    /// input with a typed error.
+    ///
+    /// ```
+    /// use algebra_core::{Ring, rational::ratio};
+    /// assert!(!f64::NAN.is_finite_value() && 1.0f64.is_finite_value() && ratio(1, 3).is_finite_value());
+    /// ```
+    fn is_finite_value(&self) -> bool {
+        true
+    }
+
     /// `self + rhs` without consuming either operand.
     fn add_ref(&self, rhs: &Self) -> Self {
         self.clone() + rhs

@@ -199,6 +199,9 @@ impl Ring for MpFloat {
     fn relative_epsilon() -> f64 {
         2f64.powi(1 - default_precision() as i32)
     }
+    fn is_finite_value(&self) -> bool {
+        self.0.is_finite()
+    }
     fn cmp_magnitude(&self, other: &Self) -> std::cmp::Ordering {
         self.0.cmp_abs(&other.0).unwrap_or_else(|| self.0.is_nan().cmp(&other.0.is_nan()))
     }
