@@ -275,7 +275,7 @@ impl<T: Real> Motion<T> for MultiplicativeBSpline<T> {
     type Mapped<U: Real> = MultiplicativeBSpline<U>;
 
     fn evaluate(&self, t: &T) -> Result<Pose<T>, CurveError> {
-        self.0.de_boor(t, Pose::slerp)
+        self.0.de_boor(t, crate::stable_slerp::slerp)
     }
 
     fn domain(&self) -> [T; 2] {

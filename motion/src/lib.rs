@@ -55,6 +55,7 @@ pub mod pose;
 pub mod pseudoscalar;
 mod scaled;
 mod series;
+mod stable_slerp;
 pub mod velocity;
 
 pub use algebra_core;
