@@ -81,3 +81,30 @@ fn non_finite_poses_are_not_finite_errors() {
         assert!(matches!(Pose::slerp(&r, &r, &bad), Err(MotionError::NotFinite { .. })), "slerp t {bad}");
     }
 }
+
+#[test]
+fn out_of_range_degrees_are_typed_errors() {
+    use motion::joins::JoinError;
+    use motion::{AdditiveBSpline, CurveError, EndCondition, MultiplicativeBSpline, Pseudoscalar, SegmentKind, Shape};
+    let poses = vec![Pose::<f64>::identity(); 3];
+    for degree in [3, 1 << 40, usize::MAX] {
+        assert!(matches!(
+            AdditiveBSpline::clamped_uniform(degree, poses.clone()),
+            Err(CurveError::TooFewPoses { got: 3, .. })
+        ));
+        assert!(matches!(
+            MultiplicativeBSpline::new(degree, vec![0.0; 8], poses.clone()),
+            Err(CurveError::TooFewPoses { got: 3, .. })
+        ));
+    }
+    let a =
+        EndCondition::from_axis_angle(&[0.0, 0.0, 0.0], &[1.0, 0.0, 0.0], &0.0, &[1.0, 0.0, 0.0], &[0.0; 3]).unwrap();
+    let b =
+        EndCondition::from_axis_angle(&[1.0, 0.0, 0.0], &[1.0, 0.0, 0.0], &0.0, &[1.0, 0.0, 0.0], &[0.0; 3]).unwrap();
+    let sh = Shape::new(1.0, Pseudoscalar::new(1.0, 0.0));
+    for degree in [10_001, 1 << 40, usize::MAX] {
+        let e = motion::hermite::hermite_segment(SegmentKind::Multiplicative, degree, &a, &b, &sh, &sh).unwrap_err();
+        assert_eq!(e, JoinError::DegreeTooLarge { degree, max: 10_000 });
+    }
+    assert!(motion::hermite::hermite_segment(SegmentKind::Additive, 10_000, &a, &b, &sh, &sh).is_ok());
+}

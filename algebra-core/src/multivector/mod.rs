@@ -57,6 +57,14 @@ pub enum MvError {
         /// The offending basis element.
         element: String,
     },
+    /// A basis bitmask with a bit at or above the number of generators.
+    #[error("basis mask {mask:#b} is out of range for {generators} generators")]
+    MaskOutOfRange {
+        /// The mask.
+        mask: u32,
+        /// The number of generators.
+        generators: usize,
+    },
     /// The element has no inverse (it is a zero divisor).
     #[error("{0} is not invertible")]
     NotInvertible(String),
@@ -70,6 +78,14 @@ pub enum MvError {
         /// Why.
         why: String,
     },
+}
+
+fn check_mask(algebra: &Algebra, mask: u32) -> Result<(), MvError> {
+    if (mask as usize) < algebra.dim() {
+        Ok(())
+    } else {
+        Err(MvError::MaskOutOfRange { mask, generators: algebra.dim().trailing_zeros() as usize })
+    }
 }
 
 /// A multivector: coefficients in one basis of one algebra.
@@ -129,6 +145,10 @@ impl<T: Ring> Multivector<T> {
 
     /// The basis element with this bitmask.
     ///
+    /// # Panics
+    /// When `mask` has a bit at or above the number of generators; see
+    /// [`Multivector::try_from_mask`] for the checked form.
+    ///
     /// ```
     /// use algebra_core::{Algebra, Basis, Multivector};
     /// let alg = Algebra::builtin("g3").unwrap();
@@ -138,6 +158,36 @@ impl<T: Ring> Multivector<T> {
         let mut m = Self::zero(algebra, basis);
         m.coeffs[mask as usize] = T::one();
         m
+    }
+
+    /// The basis element with this bitmask, or [`MvError::MaskOutOfRange`] for a mask with a
+    /// bit at or above the number of generators (the checked form of
+    /// [`Multivector::from_mask`]).
+    ///
+    /// ```
+    /// use algebra_core::{Algebra, Basis, Multivector};
+    /// let alg = Algebra::builtin("g3").unwrap();
+    /// assert!(Multivector::<f64>::try_from_mask(&alg, Basis::Blade, 0b111).is_ok());
+    /// assert!(Multivector::<f64>::try_from_mask(&alg, Basis::Blade, 0b1000).is_err());
+    /// ```
+    pub fn try_from_mask(algebra: &Arc<Algebra>, basis: Basis, mask: u32) -> Result<Self, MvError> {
+        check_mask(algebra, mask)?;
+        Ok(Self::from_mask(algebra, basis, mask))
+    }
+
+    /// The coefficient of the basis element `mask`, or [`MvError::MaskOutOfRange`] (the
+    /// checked form of [`Multivector::coeff`]).
+    ///
+    /// ```
+    /// use algebra_core::{Algebra, Basis, Multivector};
+    /// let alg = Algebra::builtin("g3").unwrap();
+    /// let v = Multivector::from_terms(&alg, Basis::Blade, [("e2", 4.0)]).unwrap();
+    /// assert_eq!(v.try_coeff(0b010), Ok(&4.0));
+    /// assert!(v.try_coeff(u32::MAX).is_err());
+    /// ```
+    pub fn try_coeff(&self, mask: u32) -> Result<&T, MvError> {
+        check_mask(&self.algebra, mask)?;
+        Ok(&self.coeffs[mask as usize])
     }
 
     /// A multivector from its coefficients, indexed by mask.
@@ -192,6 +242,9 @@ impl<T: Ring> Multivector<T> {
     }
 
     /// The coefficient of the basis element `mask` (in this multivector's basis).
+    ///
+    /// # Panics
+    /// When `mask` is out of range; see [`Multivector::try_coeff`] for the checked form.
     pub fn coeff(&self, mask: u32) -> &T {
         &self.coeffs[mask as usize]
     }
