@@ -2,18 +2,11 @@
 //! off unit exponentially: 4e-7 at degree 20, failure from about 40), and agree with the plain
 //! definition (de Casteljau with `Pose::slerp`) evaluated at 256 bits.
 
-use algebra_core::{MpFloat, PrecisionGuard, Real};
-use motion::{Motion, MultiplicativeBSpline, MultiplicativeBezier, Pose};
+mod common;
 
-struct Rng(u64);
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 7;
-        self.0 ^= self.0 << 17;
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64 - 0.5
-    }
-}
+use algebra_core::{MpFloat, PrecisionGuard, Real};
+use common::Rng;
+use motion::{Motion, MultiplicativeBSpline, MultiplicativeBezier, Pose};
 
 fn random_unit_poses(rng: &mut Rng, n: usize) -> Vec<Pose<f64>> {
     (0..=n)

@@ -2,6 +2,8 @@
 //! intermediate square (axes, norms, unitize, log), checked against the same computation on
 //! a moderately scaled input (an exact power-of-ten rescaling of the same geometry).
 
+mod common;
+
 use motion::{MotionError, Pose};
 
 fn max_diff(a: &Pose<f64>, b: &Pose<f64>) -> f64 {
@@ -21,13 +23,8 @@ fn huge_and_tiny_axes_rotate() {
 
 #[test]
 fn random_axis_scales_give_the_same_rotation() {
-    let mut seed = 0x2545f4914f6cdd1du64;
-    let mut next = || {
-        seed ^= seed << 13;
-        seed ^= seed >> 7;
-        seed ^= seed << 17;
-        (seed >> 11) as f64 / (1u64 << 53) as f64 - 0.5
-    };
+    let mut rng = common::Rng(0x2545f4914f6cdd1d);
+    let mut next = || rng.next();
     for _ in 0..500 {
         let axis = [next(), next(), next()];
         let angle = 6.0 * next();
