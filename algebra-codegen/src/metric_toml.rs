@@ -96,11 +96,20 @@ pub fn metric_from_toml_str(text: &str, path: &str) -> Result<(Option<String>, M
         (None, Some(toml::Value::Table(t))) => {
             let mut gram = vec![vec![Q::zero(); n]; n];
             let index: HashMap<&str, usize> = labels.iter().enumerate().map(|(i, l)| (l.as_str(), i)).collect();
+            let mut set: HashMap<(usize, usize), Q> = HashMap::new();
             for (key, v) in t {
                 let (a, b) = key.split_once(',').ok_or_else(|| err(format!("metric key `{key}` must be \"a,b\"")))?;
                 let ia = *index.get(a.trim()).ok_or_else(|| MetricError::UnknownLabel(a.trim().into()))?;
                 let ib = *index.get(b.trim()).ok_or_else(|| MetricError::UnknownLabel(b.trim().into()))?;
                 let value = entry(v, &format!("metric \"{key}\""))?;
+                // "a,b" and "b,a" name one entry: contradictory values are an error, not "last wins"
+                if let Some(first) = set.insert((ia.min(ib), ia.max(ib)), value.clone())
+                    && first != value
+                {
+                    return Err(err(format!(
+                        "metric \"{key}\" = {value} contradicts an earlier entry for the same pair ({first}); B is symmetric"
+                    )));
+                }
                 gram[ia][ib] = value.clone();
                 gram[ib][ia] = value;
             }

@@ -32,6 +32,7 @@ pub mod tables;
 pub use algebra::Algebra;
 pub use basis::{Basis, BasisError};
 pub use metric::{Metric, MetricError};
+pub use multivector::F64_GENERAL_BOUND;
 pub use multivector::{Multivector, MvError};
 #[cfg(feature = "rug")]
 pub use poly::Poly;

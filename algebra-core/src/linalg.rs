@@ -1,10 +1,12 @@
 //! Small dense linear solves over a [`Field`], shared by the runtime inverse and generated
 //! kernels' `inverse`.
 
-use crate::scalar::{Field, Ring};
+use crate::scalar::Field;
 
-/// Solves `l · y = rhs` by Gaussian elimination (exact for exact fields; partial pivoting by
-/// [`Ring::magnitude`] for floats, where a pivot below `64 · ε · n · max|entry|` counts as zero).
+/// Solves `l · y = rhs` by Gaussian elimination with partial pivoting. Pivots are compared
+/// and tested in the scalar's own precision and range ([`cmp_magnitude`](crate::Ring::cmp_magnitude),
+/// [`is_negligible`](crate::Ring::is_negligible)): for exact fields only an exact zero is a zero pivot, however
+/// small the others are; for floats a pivot below `64 · ε · n · max|entry|` counts as zero.
 /// Returns `None` for a singular matrix.
 ///
 /// ```
@@ -16,13 +18,15 @@ use crate::scalar::{Field, Ring};
 #[allow(clippy::needless_range_loop)] // row operations read clearest with indices
 pub fn solve<T: Field>(mut l: Vec<Vec<T>>, mut rhs: Vec<T>) -> Option<Vec<T>> {
     let n = rhs.len();
-    let scale = l.iter().flatten().map(Ring::magnitude).fold(0.0, f64::max);
-    let tol = 64.0 * T::relative_epsilon() * n as f64 * scale;
+    if n == 0 {
+        return Some(Vec::new());
+    }
+    let scale = l.iter().flatten().reduce(|a, b| if b.cmp_magnitude(a).is_gt() { b } else { a })?.clone();
+    let ulps = u32::try_from(n).unwrap_or(u32::MAX).saturating_mul(64);
     for col in 0..n {
-        let pivot = (col..n)
-            .filter(|&r| !l[r][col].is_exact_zero())
-            .max_by(|&a, &b| l[a][col].magnitude().total_cmp(&l[b][col].magnitude()))?;
-        if l[pivot][col].magnitude() <= tol {
+        let pivot =
+            (col..n).filter(|&r| !l[r][col].is_exact_zero()).max_by(|&a, &b| l[a][col].cmp_magnitude(&l[b][col]))?;
+        if l[pivot][col].is_negligible(&scale, ulps) {
             return None;
         }
         l.swap(pivot, col);

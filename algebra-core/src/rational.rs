@@ -36,6 +36,9 @@ pub enum RationalParseError {
     Syntax(String),
     /// A zero denominator.
     ZeroDenominator(String),
+    /// A decimal exponent beyond [`MAX_DECIMAL_EXPONENT`] in absolute value (its digits would
+    /// not fit in memory).
+    ExponentTooLarge(String),
 }
 
 impl std::fmt::Display for RationalParseError {
@@ -45,11 +48,18 @@ impl std::fmt::Display for RationalParseError {
                 write!(f, "`{x}` is not a rational number (expected p, p/q or a decimal)")
             }
             RationalParseError::ZeroDenominator(x) => write!(f, "`{x}` has a zero denominator"),
+            RationalParseError::ExponentTooLarge(x) => {
+                write!(f, "`{x}`: the decimal exponent is limited to ±{MAX_DECIMAL_EXPONENT}")
+            }
         }
     }
 }
 
 impl std::error::Error for RationalParseError {}
+
+/// The largest decimal exponent `|e|` a literal such as `1e5000` may have: `10^e` is built
+/// exactly, so an exponent of `2^31` would need gigabytes before any work is done.
+pub const MAX_DECIMAL_EXPONENT: i64 = 100_000;
 
 /// Parses `p`, `p/q`, or an exact decimal (`0.25`, `-1.5e-3`) into a rational.
 ///
@@ -58,6 +68,7 @@ impl std::error::Error for RationalParseError {}
 /// assert_eq!(parse_rational("0.25").unwrap(), ratio(1, 4));
 /// assert_eq!(parse_rational("-3/6").unwrap(), ratio(-1, 2));
 /// assert!(parse_rational("1/0").is_err());
+/// assert!(parse_rational("1e2147483648").is_err()); // exponent cap, checked before any work
 /// ```
 pub fn parse_rational(text: &str) -> Result<Q, RationalParseError> {
     let s = text.trim();
@@ -69,6 +80,19 @@ pub fn parse_rational(text: &str) -> Result<Q, RationalParseError> {
             return Err(RationalParseError::ZeroDenominator(text.to_string()));
         }
         return Ok(Q::new(n, d));
+    }
+    if let Some(i) = s.find(['e', 'E']) {
+        // checked before any digits are built: 1e2147483647 must not allocate
+        let too_large = match s[i + 1..].parse::<i64>() {
+            Ok(e) => e.abs() > MAX_DECIMAL_EXPONENT,
+            Err(_) => {
+                let digits = s[i + 1..].trim_start_matches(['-', '+']);
+                !digits.is_empty() && digits.bytes().all(|b| b.is_ascii_digit())
+            }
+        };
+        if too_large || s.len() > MAX_DECIMAL_EXPONENT as usize {
+            return Err(RationalParseError::ExponentTooLarge(text.to_string()));
+        }
     }
     parse_decimal(s).ok_or_else(err)
 }
@@ -99,7 +123,7 @@ fn parse_decimal(s: &str) -> Option<Q> {
     }
     let digits: BigInt = format!("{int_part}{frac_part}0").parse().ok()?;
     let digits = digits / BigInt::from(10);
-    let scale = exponent - i32::try_from(frac_part.len()).ok()?;
+    let scale = exponent.checked_sub(i32::try_from(frac_part.len()).ok()?)?;
     let ten = BigInt::from(10);
     let value = if scale >= 0 {
         Q::from_integer(digits * num_traits::pow(ten, scale as usize))

@@ -43,7 +43,8 @@ pub fn codegen(args: &CodegenArgs) -> Result<String, CliError> {
         let stem = std::path::Path::new(alg.name()).file_stem().and_then(|s| s.to_str()).unwrap_or("generated");
         stem.chars().map(|c| if c.is_ascii_alphanumeric() { c.to_ascii_lowercase() } else { '_' }).collect()
     });
-    if syn::parse_str::<syn::Ident>(&module).is_err() {
+    // raw identifiers (`r#type`) parse but cannot name a generated module: refuse them here
+    if module.starts_with("r#") || syn::parse_str::<syn::Ident>(&module).is_err() {
         return Err(CliError::usage(format!("`{module}` is not a valid module name (use --module NAME)")));
     }
     let bad = |e: CodegenError| CliError::usage(e.to_string());

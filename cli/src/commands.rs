@@ -80,7 +80,8 @@ pub struct EvalArgs {
 /// `gam eval`: parse, evaluate over the chosen scalar, print in the chosen basis.
 pub fn eval(args: &EvalArgs) -> Result<String, CliError> {
     let alg = algebra_from_name_or_path(&args.algebra)?;
-    let ast = expr::parse(&args.expr)?;
+    let text = expression_text(&args.expr)?;
+    let ast = expr::parse(&text)?;
     let ev = Evaluator::new(&alg, args.basis);
     match args.scalar {
         ScalarKind::Rational => render(&ev.eval::<Q>(&ast)?, args.json),
@@ -91,6 +92,35 @@ pub fn eval(args: &EvalArgs) -> Result<String, CliError> {
             render(&ev.eval::<MpFloat>(&ast)?, args.json)
         }
     }
+}
+
+/// The largest expression read from a file or stdin, in bytes.
+const MAX_EXPRESSION_BYTES: u64 = 1 << 20;
+
+/// The expression itself, or the contents of `FILE` for `@FILE`, or of stdin for `-`
+/// (at most [`MAX_EXPRESSION_BYTES`]).
+fn expression_text(arg: &str) -> Result<String, CliError> {
+    use std::io::Read;
+    let (mut reader, what): (Box<dyn Read>, String) = match arg {
+        "-" => (Box::new(std::io::stdin()), "stdin".to_string()),
+        _ => match arg.strip_prefix('@') {
+            Some(path) => (
+                Box::new(std::fs::File::open(path).map_err(|e| CliError::usage(format!("cannot read `{path}`: {e}")))?),
+                format!("`{path}`"),
+            ),
+            None => return Ok(arg.to_string()),
+        },
+    };
+    let mut bytes = Vec::new();
+    reader
+        .by_ref()
+        .take(MAX_EXPRESSION_BYTES + 1)
+        .read_to_end(&mut bytes)
+        .map_err(|e| CliError::usage(format!("cannot read {what}: {e}")))?;
+    if bytes.len() as u64 > MAX_EXPRESSION_BYTES {
+        return Err(CliError::usage(format!("{what}: the expression is longer than {MAX_EXPRESSION_BYTES} bytes")));
+    }
+    String::from_utf8(bytes).map_err(|_| CliError::usage(format!("{what} is not UTF-8 text")))
 }
 
 fn render<T: CliScalar>(x: &Multivector<T>, json: bool) -> Result<String, CliError> {

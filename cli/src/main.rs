@@ -4,6 +4,7 @@
 //! exit statuses: 2 for bad usage or input, 1 for a mathematical failure, each with exactly one
 //! `error:` line on stderr and nothing on stdout.
 
+mod budget;
 mod codegen;
 mod commands;
 mod error;
@@ -63,7 +64,8 @@ enum Command {
         /// Print the result as one JSON object.
         #[arg(long)]
         json: bool,
-        /// The expression, e.g. "e1*e2*e3*einf*e0" (may start with `-`).
+        /// The expression, e.g. "e1*e2*e3*einf*e0" (may start with `-`); `@FILE` reads it from
+        /// FILE and `-` from stdin.
         #[arg(allow_hyphen_values = true, value_name = "EXPR")]
         expr: String,
     },

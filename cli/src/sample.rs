@@ -67,6 +67,8 @@ pub(crate) fn sample_spec(path: &str, n: usize) -> Result<Sampled, CliError> {
     }
     let seg = build_segment(&spec)?;
     let (kind, degree) = (seg.kind, seg.degree());
+    // building the segment is O(degree); sampling it is O(samples x degree^2)
+    crate::budget::check(&format!("sampling degree {degree} at {n} values"), crate::budget::sampling_work(degree, n))?;
     let curve = |e: motion::CurveError| CliError::math(e.to_string());
     let motion: AnyMotion<f64> = match kind {
         SegmentKind::Additive => AnyMotion::AdditiveBezier(AdditiveBezier::new(seg.control_poses).map_err(curve)?),
@@ -99,20 +101,23 @@ pub(crate) fn sample_spec(path: &str, n: usize) -> Result<Sampled, CliError> {
 pub fn sample(path: &str, n: usize, json: bool) -> Result<String, CliError> {
     let s = sample_spec(path, n)?;
     if json {
-        let list: Vec<Value> = s
-            .samples
-            .iter()
-            .map(|x| {
-                json!({
-                    "t": x.t,
-                    "pose": mv_json(&x.pose.as_motor().to_multivector()),
-                    "position": x.position,
-                    "linear_speed": x.linear_speed,
-                    "angular_speed": x.angular_speed,
-                })
-            })
-            .collect();
-        return Ok(json!({ "samples": list }).to_string());
+        // written sample by sample: no JSON tree of a million samples is built in memory
+        let mut out = String::from("{\"samples\":[");
+        for (i, x) in s.samples.iter().enumerate() {
+            if i > 0 {
+                out.push(',');
+            }
+            let one: Value = json!({
+                "t": x.t,
+                "pose": mv_json(&x.pose.as_motor().to_multivector()),
+                "position": x.position,
+                "linear_speed": x.linear_speed,
+                "angular_speed": x.angular_speed,
+            });
+            out.push_str(&one.to_string());
+        }
+        out.push_str("]}");
+        return Ok(out);
     }
     let header = ["t", "x", "y", "z", "linear speed", "angular speed", "pose"];
     let mut rows = vec![header.map(str::to_string).to_vec()];

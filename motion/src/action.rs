@@ -95,6 +95,7 @@ impl<T: Field> Pose<T> {
     /// assert!(p[0].abs() < 1e-15 && (p[1] - 1.0).abs() < 1e-15 && (p[2] - 5.0).abs() < 1e-15);
     /// ```
     pub fn transform_point(&self, p: &[T; 3]) -> Result<[T; 3], MotionError> {
+        crate::scaled::require_finite("transform_point", self, p)?;
         let [x, y, z, w] = self.apply_homogeneous(&[p[0].clone(), p[1].clone(), p[2].clone(), T::one()]);
         let inv = w.try_recip().ok_or_else(|| self.singular("transform_point"))?;
         Ok([x.mul_ref(&inv), y.mul_ref(&inv), z.mul_ref(&inv)])
@@ -109,6 +110,7 @@ impl<T: Field> Pose<T> {
     /// assert!((d[0] + 1.0).abs() < 1e-15 && d[1].abs() < 1e-15 && d[2] == 0.0);
     /// ```
     pub fn transform_direction(&self, d: &[T; 3]) -> Result<[T; 3], MotionError> {
+        crate::scaled::require_finite("transform_direction", self, d)?;
         let (rows, alpha) = self.action_rows();
         let inv = alpha.try_recip().ok_or_else(|| self.singular("transform_direction"))?;
         Ok(rows.map(|r| (r[0].mul_ref(&d[0]) + r[1].mul_ref(&d[1]) + r[2].mul_ref(&d[2])).mul_ref(&inv)))

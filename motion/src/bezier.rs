@@ -515,7 +515,8 @@ impl<T: Real> MultiplicativeBezier<T> {
     /// assert!((s.as_motor().e1inf - 0.5).abs() < 1e-15);
     /// ```
     pub fn de_casteljau(&self, t: &T) -> Result<Pose<T>, CurveError> {
-        Ok(de_casteljau_with(&self.poses, t, Pose::slerp)?)
+        // factored as exp(l) U with U unitized at every level: stable in the degree
+        Ok(de_casteljau_with(&self.poses, t, crate::stable_slerp::slerp)?)
     }
 
     /// The whole slerp tableau at `t` (Fig. 2): column 0 is the control poses, column `k` holds
@@ -528,7 +529,7 @@ impl<T: Real> MultiplicativeBezier<T> {
     /// assert_eq!(tab.iter().map(Vec::len).collect::<Vec<_>>(), [4, 3, 2, 1]);
     /// ```
     pub fn tableau(&self, t: &T) -> Result<Vec<Vec<Pose<T>>>, CurveError> {
-        Ok(tableau_with(&self.poses, t, Pose::slerp)?)
+        Ok(tableau_with(&self.poses, t, crate::stable_slerp::slerp)?)
     }
 
     /// The control poses in reverse order. `S_{n..0}(1 - t) = S_{0..n}(t)` holds for unitary

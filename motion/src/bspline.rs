@@ -41,8 +41,9 @@ struct Spline<T: Ring> {
 
 impl<T: Real> Spline<T> {
     fn new(degree: usize, knots: Vec<T>, poses: Vec<Pose<T>>) -> Result<Self, CurveError> {
-        if poses.len() < degree + 1 {
-            return Err(CurveError::TooFewPoses { need: degree + 1, got: poses.len() });
+        // degree + 1 would overflow for usize::MAX: there are never that many poses
+        if degree >= poses.len() {
+            return Err(CurveError::TooFewPoses { need: degree.saturating_add(1), got: poses.len() });
         }
         let expected = poses.len() + degree + 1;
         if knots.len() != expected {
@@ -77,8 +78,8 @@ impl<T: Real> Spline<T> {
 
     /// `0 (p + 1 times), 1/(n-p+1), ..., (n-p)/(n-p+1), 1 (p + 1 times)`.
     fn clamped_uniform(degree: usize, poses: Vec<Pose<T>>) -> Result<Self, CurveError> {
-        if poses.len() < degree + 1 {
-            return Err(CurveError::TooFewPoses { need: degree + 1, got: poses.len() });
+        if degree >= poses.len() {
+            return Err(CurveError::TooFewPoses { need: degree.saturating_add(1), got: poses.len() });
         }
         let spans = (poses.len() - degree) as i64;
         let mut knots = vec![T::zero(); degree + 1];
@@ -275,7 +276,7 @@ impl<T: Real> Motion<T> for MultiplicativeBSpline<T> {
     type Mapped<U: Real> = MultiplicativeBSpline<U>;
 
     fn evaluate(&self, t: &T) -> Result<Pose<T>, CurveError> {
-        self.0.de_boor(t, Pose::slerp)
+        self.0.de_boor(t, crate::stable_slerp::slerp)
     }
 
     fn domain(&self) -> [T; 2] {

@@ -127,7 +127,9 @@ impl<T: Real> Pose<T> {
     /// ```
     pub fn log(&self) -> Result<Motor<T>, MotionError> {
         self.check_finite("log")?;
-        let n2 = self.norm_squared();
+        // log(m S') = ln m + log S' for m > 0: the squares of S' = S/m stay in range.
+        let (scale, s) = crate::scaled::rotational_scale(self).ok_or_else(|| self.singular("log"))?;
+        let n2 = s.norm_squared();
         let alpha = &n2.scalar;
         if !is_positive(alpha) {
             return Err(self.singular("log"));
@@ -136,9 +138,9 @@ impl<T: Real> Pose<T> {
         let m = n2.e123inf.div_ref(&alpha.add_ref(alpha));
         let inv_root = T::one().div_ref(&Real::sqrt(alpha));
         let inv_norm = Pseudoscalar::new(inv_root.clone(), m.mul_ref(&inv_root).neg_ref());
-        let unit = &inv_norm * &self.0;
+        let unit = &inv_norm * &s.0;
         let mut l = unit_log(&unit);
-        l.scalar = Real::ln(alpha).mul_ref(&T::from_ratio(1, 2));
+        l.scalar = Real::ln(alpha).mul_ref(&T::from_ratio(1, 2)).add_ref(&Real::ln(&scale));
         l.e123inf = m;
         if ![&l.scalar, &l.e12, &l.e13, &l.e23, &l.e1inf, &l.e2inf, &l.e3inf, &l.e123inf]
             .into_iter()
@@ -197,13 +199,7 @@ fn unit_log<T: Real>(u: &Motor<T>) -> Motor<T> {
         return assemble(zero, n.map(|x| x.mul_ref(&th)), c_out, T::zero());
     }
     // U = -1 + c einf: rotation by 2π about an axis along the translation.
-    let cc = dot(&c, &c);
-    let n = if cc > zero {
-        let inv = T::one().div_ref(&Real::sqrt(&cc));
-        c.clone().map(|x| x.mul_ref(&inv))
-    } else {
-        [T::zero(), T::zero(), T::one()]
-    };
+    let n = crate::scaled::direction(&c).unwrap_or_else(|| [T::zero(), T::zero(), T::one()]);
     let pi = T::pi();
     assemble(zero, n.map(|x| x.mul_ref(&pi)), c.map(|x| x.neg_ref()), T::zero())
 }

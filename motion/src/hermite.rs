@@ -127,6 +127,14 @@ impl<T> HermiteSegment<T> {
     }
 }
 
+/// The largest segment degree [`hermite_segment`] accepts (the CLI's `gam hermite` range):
+/// checked before the `degree + 1` control poses are allocated.
+///
+/// ```
+/// assert_eq!(motion::hermite::MAX_SEGMENT_DEGREE, 10_000);
+/// ```
+pub const MAX_SEGMENT_DEGREE: usize = 10_000;
+
 /// One segment of degree `n ≥ 3` from `start` to `end`: `S0 = start.pose`, `Sn = end.pose`,
 /// `S1` and `S_{n-1}` from the end indicatrices `Ψ0 = λ0(ν0 + γ0)` and `Ψn = λn(νn + γn)` by
 /// eq. (22) or (23) ([`joins::start_control_pose`], [`joins::end_control_pose`]); for `n > 3`
@@ -155,6 +163,9 @@ pub fn hermite_segment<T: Real>(
 ) -> Result<HermiteSegment<T>, JoinError> {
     if degree < 3 {
         return Err(JoinError::Degree { degree, min: 3 });
+    }
+    if degree > MAX_SEGMENT_DEGREE {
+        return Err(JoinError::DegreeTooLarge { degree, max: MAX_SEGMENT_DEGREE });
     }
     let nu = [start.velocity_bivector(), end.velocity_bivector()];
     let psi = [start_shape.indicatrix(&nu[0]), end_shape.indicatrix(&nu[1])];

@@ -27,6 +27,7 @@ impl<T: Real> Pose<T> {
     /// assert!(half.is_equivalent(&Pose::rotation(&[0.0, 0.0, 1.0], &0.6).unwrap(), &1e-15).unwrap());
     /// ```
     pub fn power(&self, t: &T) -> Result<Self, MotionError> {
+        crate::scaled::require_finite("power", self, [t])?;
         let l = self.log()?;
         Pose::exp(&l.scale(t))
     }
@@ -46,6 +47,8 @@ impl<T: Real> Pose<T> {
     /// assert!((&end - &b).components().iter().all(|x| x.abs() < 1e-14f64));
     /// ```
     pub fn slerp(a: &Self, b: &Self, t: &T) -> Result<Self, MotionError> {
+        crate::scaled::require_finite("slerp", a, [t])?;
+        crate::scaled::require_finite("slerp", b, [])?;
         let rel = &a.reverse() * b;
         Ok(a * &rel.power(t)?)
     }

@@ -66,6 +66,15 @@ pub enum JoinError {
         /// The smallest degree allowed here.
         min: usize,
     },
+    /// A segment degree above [`crate::hermite::MAX_SEGMENT_DEGREE`] (its control poses would
+    /// not fit in memory, and evaluation costs `O(n²)` slerps).
+    #[error("the degree must be at most {max} (got {degree})")]
+    DegreeTooLarge {
+        /// The degree asked for.
+        degree: usize,
+        /// The largest degree allowed.
+        max: usize,
+    },
     /// Fewer than two precision poses, a list of the wrong length, or a bad parameter list.
     #[error("{0}")]
     Input(String),

@@ -63,8 +63,10 @@ pub mod paper;
 pub mod piecewise;
 pub mod pose;
 pub mod pseudoscalar;
+mod scaled;
 mod series;
 pub mod spec;
+mod stable_slerp;
 pub mod trajectory;
 pub mod velocity;
 

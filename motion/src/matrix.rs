@@ -51,6 +51,7 @@ impl<T: Field> Pose<T> {
     /// assert_eq!(m[2], [0.0, 0.0, 1.0, 3.0]);
     /// ```
     pub fn to_matrix(&self) -> Result<Matrix4<T>, MotionError> {
+        crate::scaled::require_finite("to_matrix", self, [])?;
         let (rows, alpha) = self.action_rows();
         let inv = alpha.try_recip().ok_or_else(|| self.singular("to_matrix"))?;
         let [r0, r1, r2] = rows.map(|r| r.map(|x| x.mul_ref(&inv)));

@@ -217,6 +217,7 @@ impl<T: Field> Pose<T> {
     /// assert_eq!(&s * &s.inverse().unwrap(), Pose::identity());
     /// ```
     pub fn inverse(&self) -> Result<Self, MotionError> {
+        crate::scaled::require_finite("inverse", self, [])?;
         let inv_n2 = pseudoscalar::inverse(&self.norm_squared()).map_err(|_| self.singular("inverse"))?;
         Ok(Pose(&inv_n2 * &self.0.reverse()))
     }
@@ -266,7 +267,15 @@ impl<T: Real> Pose<T> {
     /// ```
     pub fn norm(&self) -> Result<Pseudoscalar<T>, MotionError> {
         self.check_finite("norm")?;
-        pseudoscalar::sqrt(&self.norm_squared()).map_err(|_| self.singular("norm"))
+        // |m S'| = m |S'|: the squares of S' = S/m neither overflow nor underflow.
+        let (m, s) = crate::scaled::rotational_scale(self).ok_or_else(|| self.singular("norm"))?;
+        let n = pseudoscalar::sqrt(&s.norm_squared()).map_err(|_| self.singular("norm"))?;
+        let n = Pseudoscalar::new(n.scalar.mul_ref(&m), n.e123inf.mul_ref(&m));
+        if Real::is_finite(&n.scalar) && Real::is_finite(&n.e123inf) {
+            Ok(n)
+        } else {
+            Err(MotionError::NotFinite { op: "norm", value: self.to_string() })
+        }
     }
 
     /// The unitary pose `U = S/|S|` (Lemma 2.6(i)): `rev(U) U = 1` and `U` generates the same
@@ -277,9 +286,14 @@ impl<T: Real> Pose<T> {
     /// assert_eq!(s.unitize().unwrap(), motion::Pose::translation(&[1.0, 2.0, 3.0]));
     /// ```
     pub fn unitize(&self) -> Result<Self, MotionError> {
-        let n = self.norm()?;
+        self.check_finite("unitize")?;
+        // S/|S| = S'/|S'| for S' = S/m (no overflow of |S| for huge S).
+        let (_, s) = crate::scaled::rotational_scale(self).ok_or_else(|| self.singular("unitize"))?;
+        let n = pseudoscalar::sqrt(&s.norm_squared()).map_err(|_| self.singular("unitize"))?;
         let inv = pseudoscalar::inverse(&n).map_err(|_| self.singular("unitize"))?;
-        Ok(self.scale_pseudoscalar(&inv))
+        let u = s.scale_pseudoscalar(&inv);
+        u.check_finite("unitize")?;
+        Ok(u)
     }
 
     /// True when `rev(S) S = 1` within `tol` (each of `α - 1` and `β`).
@@ -316,7 +330,7 @@ impl<T: Real> Pose<T> {
         if !is_positive(&b) {
             return Err(other.singular("is_equivalent"));
         }
-        let scale = Real::sqrt(&a.mul_ref(&b));
+        let scale = Real::sqrt(&a).mul_ref(&Real::sqrt(&b));
         let bound = tol.mul_ref(&scale);
         let w = &other.0 * &self.0.reverse();
         Ok([&w.e12, &w.e13, &w.e23, &w.e1inf, &w.e2inf, &w.e3inf].into_iter().all(|x| Real::abs(x) <= bound))
@@ -342,12 +356,8 @@ pub(crate) fn unit_axis<T: Real>(axis: &[T; 3]) -> Result<[T; 3], MotionError> {
     for x in axis {
         check_finite_scalar("rotation axis", x)?;
     }
-    let n2 = axis[0].mul_ref(&axis[0]) + axis[1].mul_ref(&axis[1]) + axis[2].mul_ref(&axis[2]);
-    if !is_positive(&n2) {
-        return Err(MotionError::ZeroAxis);
-    }
-    let inv = Real::sqrt(&n2).try_recip().ok_or(MotionError::ZeroAxis)?;
-    Ok([axis[0].mul_ref(&inv), axis[1].mul_ref(&inv), axis[2].mul_ref(&inv)])
+    // divided by the largest component first: [1e200, 1e200, 0] and [1e-200, 0, 0] have directions
+    crate::scaled::direction(axis).ok_or(MotionError::ZeroAxis)
 }
 
 /// `x > 0`, false for NaN.

@@ -12,7 +12,8 @@ use algebra_core::{Real, Ring};
 const MAX_TERMS: i64 = 2000;
 
 fn negligible<T: Ring>(x: &T) -> bool {
-    x.magnitude() <= T::relative_epsilon() / 16.0
+    // in the type's own precision: at more than ~1070 bits ε is below f64's range
+    x.is_negligible(&T::from_ratio(1, 16), 1)
 }
 
 /// `[cos θ, sin θ / θ, (sin θ / θ - cos θ)/θ²]` for `u = θ² ≥ 0`: the exp kernel. Series for

@@ -2,22 +2,34 @@
 //!
 //! * Closed forms when `x = a + B` with `B² = β` a scalar (rotors, boosts, null
 //!   translators): `exp`, `log`.
-//! * Otherwise general methods that work in every algebra: `exp` by scaling and squaring with
-//!   a Taylor series, `sqrt` by the Denman–Beavers iteration, `log` by inverse scaling and
-//!   squaring (repeated square roots, then the series of `log(1 + z)`). Each result is
-//!   checked, and a failure is a typed [`MvError::Undefined`], never a NaN.
+//! * Otherwise general methods that work in every algebra ([`super::general`]): `exp` by
+//!   scaling and squaring with a Taylor series, `sqrt` by the Denman–Beavers iteration, `log`
+//!   by inverse scaling and squaring (repeated square roots, then the series of `log(1 + z)`).
+//!
+//! Precision: every convergence and zero test runs in the scalar's own type. For
+//! multiple-precision scalars the whole computation is repeated with more guard bits until
+//! two runs agree to the requested precision (the largest precision among the argument's
+//! coefficients), and the result is rounded to it; for fixed-precision scalars (`f64`, dual
+//! numbers) a result whose error estimate exceeds [`F64_GENERAL_BOUND`] is refused as
+//! ill-conditioned. A failure is a typed [`MvError::Undefined`], never a NaN.
 
 use super::{Multivector, MvError};
 use crate::scalar::{Real, Ring};
 
-const MAX_SERIES_TERMS: usize = 2000;
+/// The largest relative error (in the 1-norm of the coefficients) that the general exp, log
+/// and sqrt accept for fixed-precision scalars (`f64`, dual numbers): `2^-26 ≈ 1.5e-8`. A
+/// result whose running error estimate is larger is refused with an "ill-conditioned" error.
+pub const F64_GENERAL_BOUND: f64 = 1.0 / 67_108_864.0;
+
+/// Guard bits beyond which a multiple-precision computation is declared ill-conditioned.
+const MAX_GUARD_BITS: u32 = 8192;
 
 impl<T: Real> Multivector<T> {
-    fn undefined(&self, op: &'static str, why: impl Into<String>) -> MvError {
+    pub(super) fn undefined(&self, op: &'static str, why: impl Into<String>) -> MvError {
         MvError::Undefined { op, value: self.to_string(), why: why.into() }
     }
 
-    fn one_like(&self) -> Self {
+    pub(super) fn one_like(&self) -> Self {
         Multivector::scalar(&self.algebra, self.basis, T::one())
     }
 
@@ -33,12 +45,22 @@ impl<T: Real> Multivector<T> {
         (a, b, beta)
     }
 
-    fn check_finite(self, op: &'static str, arg: &Self) -> Result<Self, MvError> {
-        if self.coeffs.iter().all(Real::is_finite) {
-            Ok(self)
-        } else {
-            Err(arg.undefined(op, "the result is not finite"))
-        }
+    /// The closed forms are used when `β` is exactly zero or clearly away from it (a tiny
+    /// `β` would lose accuracy, and for dual numbers an infinite derivative, in `√β`).
+    fn closed_form_applies(beta: &T) -> bool {
+        beta.is_exact_zero() || Real::abs(beta) > Real::sqrt(&T::epsilon())
+    }
+
+    pub(super) fn check_finite(self, op: &'static str, arg: &Self, why: &str) -> Result<Self, MvError> {
+        if self.all_finite() { Ok(self) } else { Err(arg.undefined(op, why)) }
+    }
+
+    pub(super) fn all_finite(&self) -> bool {
+        self.coeffs.iter().all(Real::is_finite)
+    }
+
+    fn require_finite(&self, op: &'static str) -> Result<(), MvError> {
+        if self.all_finite() { Ok(()) } else { Err(self.undefined(op, "coefficients are not finite")) }
     }
 
     /// The exponential.
@@ -52,10 +74,16 @@ impl<T: Real> Multivector<T> {
     /// assert!(r.coeff_by_name("1").unwrap().abs() < 1e-15);
     /// ```
     pub fn exp(&self) -> Result<Self, MvError> {
+        self.require_finite("exp")?;
+        self.at_requested_precision("exp", Self::exp_raw)
+    }
+
+    /// exp at the working precision: closed form, or `e^a · exp(B)` by the general method
+    /// (the scalar part commutes with everything).
+    pub(super) fn exp_raw(&self) -> Result<Self, MvError> {
         let (a, b, beta) = self.scalar_square_split();
         let ea = Real::exp(&a);
-        let eps = T::relative_epsilon().max(1e-300);
-        if let Some(beta) = beta.filter(|beta| beta.is_exact_zero() || beta.magnitude() > eps.sqrt()) {
+        if let Some(beta) = beta.filter(Self::closed_form_applies) {
             let (c, s_over) = if beta.is_exact_zero() {
                 (T::one(), T::one())
             } else if beta < T::zero() {
@@ -67,38 +95,17 @@ impl<T: Real> Multivector<T> {
             };
             let mut out = b.scale(&s_over.mul_ref(&ea));
             out.coeffs[0] = c.mul_ref(&ea);
-            return out.check_finite("exp", self);
+            return out.check_finite("exp", self, "the result overflows");
         }
-        self.exp_series()
-    }
-
-    /// exp by scaling and squaring: exp(x) = exp(x / 2^k)^(2^k).
-    fn exp_series(&self) -> Result<Self, MvError> {
-        let norm = self.magnitude();
-        if !norm.is_finite() {
-            return Err(self.undefined("exp", "coefficients are not finite"));
+        let (eb, log2_err) = b.exp_scaled(self)?;
+        if self.fixed_precision() && log2_err > F64_GENERAL_BOUND.log2() {
+            return Err(self.undefined("exp", Self::ill_conditioned(log2_err)));
         }
-        let k = if norm > 0.25 { (norm / 0.25).log2().ceil() as u32 } else { 0 };
-        let y = self.scale(&T::from_ratio(1, 1).div_ref(&T::from_i64(1i64 << k.min(62))));
-        let eps = T::relative_epsilon();
-        let mut term = self.one_like();
-        let mut sum = term.clone();
-        for m in 1..MAX_SERIES_TERMS {
-            term = (&term * &y).scale(&T::from_ratio(1, m as i64));
-            sum = &sum + &term;
-            if term.magnitude() <= eps * 0.5 * sum.magnitude() || term.is_zero() {
-                let mut out = sum;
-                for _ in 0..k {
-                    out = &out * &out;
-                }
-                return out.check_finite("exp", self);
-            }
-        }
-        Err(self.undefined("exp", "the series did not converge"))
+        eb.scale(&ea).check_finite("exp", self, "the result overflows")
     }
 
     /// The principal square root: closed form when `x = a + B` with `B²` scalar, else the
-    /// Denman–Beavers iteration. Fails when no real square root exists (e.g. `-1` in g3).
+    /// general log. Fails when no real square root exists (e.g. `-1` in g3).
     ///
     /// ```
     /// use algebra_core::{Algebra, Basis, Multivector};
@@ -109,28 +116,16 @@ impl<T: Real> Multivector<T> {
     /// assert!(Multivector::scalar(&alg, Basis::Blade, -1.0).sqrt().is_err());
     /// ```
     pub fn sqrt(&self) -> Result<Self, MvError> {
-        let l = self.log().map_err(|_| self.undefined("sqrt", "no real square root (no real logarithm)"))?;
-        l.scale(&T::from_ratio(1, 2)).exp()
+        self.require_finite("sqrt")?;
+        self.at_requested_precision("sqrt", Self::sqrt_raw)
     }
 
-    /// Denman–Beavers: Y ← (Y + Z⁻¹)/2, Z ← (Z + Y⁻¹)/2 with Y₀ = x, Z₀ = 1; Y → √x.
-    fn sqrt_db(&self) -> Result<Self, MvError> {
-        let half = T::from_ratio(1, 2);
-        let eps = T::relative_epsilon().max(1e-300);
-        let mut y = self.clone();
-        let mut z = self.one_like();
-        for _ in 0..100 {
-            let yi = y.inverse().map_err(|_| self.undefined("sqrt", "the iteration met a non-invertible element"))?;
-            let zi = z.inverse().map_err(|_| self.undefined("sqrt", "the iteration met a non-invertible element"))?;
-            let y_next = (&y + &zi).scale(&half);
-            z = (&z + &yi).scale(&half);
-            let change = (&y_next - &y).magnitude();
-            y = y_next;
-            if change <= 16.0 * eps * y.magnitude() {
-                return y.check_finite("sqrt", self);
-            }
-        }
-        Err(self.undefined("sqrt", "the Denman-Beavers iteration did not converge"))
+    fn sqrt_raw(&self) -> Result<Self, MvError> {
+        let l = self.log_raw().map_err(|e| match e {
+            MvError::Undefined { why, .. } if why.starts_with("ill-conditioned") => self.undefined("sqrt", why),
+            _ => self.undefined("sqrt", "no real square root (no real logarithm)"),
+        })?;
+        l.scale(&T::from_ratio(1, 2)).exp_raw()
     }
 
     /// The principal logarithm (inverse of [`Multivector::exp`]).
@@ -144,9 +139,13 @@ impl<T: Real> Multivector<T> {
     /// assert!(Multivector::scalar(&alg, Basis::Blade, 0.0).log().is_err());
     /// ```
     pub fn log(&self) -> Result<Self, MvError> {
+        self.require_finite("log")?;
+        self.at_requested_precision("log", Self::log_raw)
+    }
+
+    pub(super) fn log_raw(&self) -> Result<Self, MvError> {
         let (a, b, beta) = self.scalar_square_split();
-        let eps = T::relative_epsilon().max(1e-300);
-        if let Some(beta) = beta.filter(|beta| beta.is_exact_zero() || beta.magnitude() > eps.sqrt()) {
+        if let Some(beta) = beta.filter(Self::closed_form_applies) {
             let zero = T::zero();
             let (ln_r, f) = if beta.is_exact_zero() {
                 if a <= zero {
@@ -167,48 +166,69 @@ impl<T: Real> Multivector<T> {
             };
             let mut out = b.scale(&f);
             out.coeffs[0] = ln_r;
-            return out.check_finite("log", self);
+            return out.check_finite("log", self, "the result is not finite (overflow in the algorithm)");
         }
         self.log_general()
     }
 
-    /// Inverse scaling and squaring: log x = 2^k log(x^(1/2^k)).
-    fn log_general(&self) -> Result<Self, MvError> {
-        let one = self.one_like();
-        let eps = T::relative_epsilon().max(1e-300);
-        let mut y = self.clone();
-        let mut k = 0u32;
-        while (&y - &one).magnitude() > 0.25 {
-            if k >= 60 {
-                return Err(self.undefined("log", "repeated square roots did not approach 1"));
+    /// True for fixed-precision scalars (no coefficient reports a precision).
+    pub(super) fn fixed_precision(&self) -> bool {
+        self.coeffs.iter().all(|c| c.precision_bits().is_none())
+    }
+
+    pub(super) fn ill_conditioned(log2_err: f64) -> String {
+        format!(
+            "ill-conditioned: the estimated relative error 2^{log2_err:.0} of the general method exceeds the bound {F64_GENERAL_BOUND:.1e} (use mpfr:BITS)"
+        )
+    }
+
+    /// The coefficients rounded (or extended) to `bits` bits.
+    pub(super) fn at_precision(&self, bits: u32) -> Self {
+        self.map_coeffs(|c| c.with_precision(bits))
+    }
+
+    /// Runs `f` at the working precision. Fixed-precision scalars: once. Multiple precision
+    /// `p` (the largest among the coefficients): with `g` and then `2g` guard bits (g = 32,
+    /// doubling) until two runs agree to within `2^(1-p)` of the largest coefficient, then
+    /// rounds to `p` bits.
+    fn at_requested_precision(&self, op: &'static str, f: fn(&Self) -> Result<Self, MvError>) -> Result<Self, MvError> {
+        let Some(p) = self.coeffs.iter().filter_map(Real::precision_bits).max() else {
+            return f(self);
+        };
+        let run = |guard: u32| {
+            let w = p.saturating_add(guard);
+            T::with_working_precision(w, || f(&self.at_precision(w)))
+        };
+        let mut guard = 32;
+        let mut prev = run(guard)?;
+        while guard < MAX_GUARD_BITS {
+            guard *= 2;
+            let next = run(guard)?;
+            let scale = next.largest_coeff().with_precision(p);
+            let agree = next
+                .coeffs
+                .iter()
+                .zip(&prev.coeffs)
+                .all(|(x, y)| x.sub_ref(y).with_precision(p).is_negligible(&scale, 1));
+            if agree {
+                return Ok(next.at_precision(p));
             }
-            y = y.sqrt_db().map_err(|_| self.undefined("log", "no real logarithm (square root failed)"))?;
-            k += 1;
+            prev = next;
         }
-        let z = &y - &one;
-        let mut power = z.clone();
-        let mut sum = z.clone();
-        let mut converged = z.is_zero();
-        for m in 2..MAX_SERIES_TERMS as i64 {
-            if converged {
-                break;
-            }
-            power = &power * &z;
-            let sign = if m % 2 == 0 { -1 } else { 1 };
-            let term = power.scale(&T::from_ratio(sign, m));
-            sum = &sum + &term;
-            converged = term.magnitude() <= eps * 0.5 * sum.magnitude().max(eps) || power.is_zero();
-        }
-        if !converged {
-            return Err(self.undefined("log", "the series did not converge"));
-        }
-        let out = sum.scale(&T::from_i64(1i64 << k));
-        // The result must exponentiate back.
-        let back = out.exp()?;
-        let err = (&back - self).magnitude();
-        if err > 1e3 * eps.sqrt().max(eps * 1e6) * self.magnitude().max(1.0) {
-            return Err(self.undefined("log", "no real logarithm (check exp(log x) = x failed)"));
-        }
-        out.check_finite("log", self)
+        Err(self.undefined(op, format!("ill-conditioned: {MAX_GUARD_BITS} guard bits did not reach {p} correct bits")))
+    }
+
+    /// The coefficient of largest magnitude (compared in the scalar's own type).
+    pub(super) fn largest_coeff(&self) -> T {
+        self.coeffs
+            .iter()
+            .reduce(|a, b| if b.cmp_magnitude(a).is_gt() { b } else { a })
+            .cloned()
+            .unwrap_or_else(T::zero)
+    }
+
+    /// The sum of the absolute values of the coefficients, in the scalar's own type.
+    pub(super) fn norm1(&self) -> T {
+        self.coeffs.iter().fold(T::zero(), |acc, c| acc.add_ref(&Real::abs(c)))
     }
 }

@@ -15,6 +15,9 @@
 
 pub mod display;
 mod exp_log;
+mod general;
+
+pub use exp_log::F64_GENERAL_BOUND;
 mod inverse;
 mod ops;
 #[cfg(feature = "rug")]
@@ -52,6 +55,13 @@ pub enum MvError {
         /// The offending basis element.
         element: String,
     },
+    /// A basis bitmask with a bit at or above the number of generators.
+    MaskOutOfRange {
+        /// The mask.
+        mask: u32,
+        /// The number of generators.
+        generators: usize,
+    },
     /// The element has no inverse (it is a zero divisor).
     NotInvertible(String),
     /// No real logarithm or square root exists, or the iteration for it did not converge.
@@ -76,6 +86,9 @@ impl std::fmt::Display for MvError {
             MvError::OutsideType { ty, element } => {
                 write!(f, "cannot convert to {ty}: non-zero coefficient of {element}")
             }
+            MvError::MaskOutOfRange { mask, generators } => {
+                write!(f, "basis mask {mask:#b} is out of range for {generators} generators")
+            }
             MvError::NotInvertible(x) => write!(f, "{x} is not invertible"),
             MvError::Undefined { op, value, why } => write!(f, "{op} is not defined for {value}: {why}"),
         }
@@ -88,6 +101,14 @@ impl std::error::Error for MvError {}
 impl From<BasisError> for MvError {
     fn from(e: BasisError) -> Self {
         MvError::Basis(e)
+    }
+}
+
+fn check_mask(algebra: &Algebra, mask: u32) -> Result<(), MvError> {
+    if (mask as usize) < algebra.dim() {
+        Ok(())
+    } else {
+        Err(MvError::MaskOutOfRange { mask, generators: algebra.dim().trailing_zeros() as usize })
     }
 }
 
@@ -148,6 +169,10 @@ impl<T: Ring> Multivector<T> {
 
     /// The basis element with this bitmask.
     ///
+    /// # Panics
+    /// When `mask` has a bit at or above the number of generators; see
+    /// [`Multivector::try_from_mask`] for the checked form.
+    ///
     /// ```
     /// use algebra_core::{Algebra, Basis, Multivector};
     /// let alg = Algebra::builtin("g3").unwrap();
@@ -157,6 +182,36 @@ impl<T: Ring> Multivector<T> {
         let mut m = Self::zero(algebra, basis);
         m.coeffs[mask as usize] = T::one();
         m
+    }
+
+    /// The basis element with this bitmask, or [`MvError::MaskOutOfRange`] for a mask with a
+    /// bit at or above the number of generators (the checked form of
+    /// [`Multivector::from_mask`]).
+    ///
+    /// ```
+    /// use algebra_core::{Algebra, Basis, Multivector};
+    /// let alg = Algebra::builtin("g3").unwrap();
+    /// assert!(Multivector::<f64>::try_from_mask(&alg, Basis::Blade, 0b111).is_ok());
+    /// assert!(Multivector::<f64>::try_from_mask(&alg, Basis::Blade, 0b1000).is_err());
+    /// ```
+    pub fn try_from_mask(algebra: &Arc<Algebra>, basis: Basis, mask: u32) -> Result<Self, MvError> {
+        check_mask(algebra, mask)?;
+        Ok(Self::from_mask(algebra, basis, mask))
+    }
+
+    /// The coefficient of the basis element `mask`, or [`MvError::MaskOutOfRange`] (the
+    /// checked form of [`Multivector::coeff`]).
+    ///
+    /// ```
+    /// use algebra_core::{Algebra, Basis, Multivector};
+    /// let alg = Algebra::builtin("g3").unwrap();
+    /// let v = Multivector::from_terms(&alg, Basis::Blade, [("e2", 4.0)]).unwrap();
+    /// assert_eq!(v.try_coeff(0b010), Ok(&4.0));
+    /// assert!(v.try_coeff(u32::MAX).is_err());
+    /// ```
+    pub fn try_coeff(&self, mask: u32) -> Result<&T, MvError> {
+        check_mask(&self.algebra, mask)?;
+        Ok(&self.coeffs[mask as usize])
     }
 
     /// A multivector from its coefficients, indexed by mask.
@@ -211,6 +266,9 @@ impl<T: Ring> Multivector<T> {
     }
 
     /// The coefficient of the basis element `mask` (in this multivector's basis).
+    ///
+    /// # Panics
+    /// When `mask` is out of range; see [`Multivector::try_coeff`] for the checked form.
     pub fn coeff(&self, mask: u32) -> &T {
         &self.coeffs[mask as usize]
     }

@@ -35,6 +35,9 @@ macro_rules! impl_dual {
             fn relative_epsilon() -> f64 {
                 f64::EPSILON
             }
+            fn is_finite_value(&self) -> bool {
+                true $(&& self.$part.is_finite())*
+            }
             native_ref_ops!();
         }
 

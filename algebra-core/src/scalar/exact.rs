@@ -31,6 +31,9 @@ impl Ring for Q {
     fn relative_epsilon() -> f64 {
         0.0
     }
+    fn cmp_magnitude(&self, other: &Self) -> std::cmp::Ordering {
+        num_traits::Signed::abs(self).cmp(&num_traits::Signed::abs(other))
+    }
     native_ref_ops!();
     fn add_assign_ref(&mut self, rhs: &Self) {
         *self += rhs;

@@ -30,6 +30,9 @@ macro_rules! impl_float {
             fn relative_epsilon() -> f64 {
                 f64::from(<$t>::EPSILON)
             }
+            fn is_finite_value(&self) -> bool {
+                <$t>::is_finite(*self)
+            }
             native_ref_ops!();
             fn add_assign_ref(&mut self, rhs: &Self) {
                 *self += rhs;

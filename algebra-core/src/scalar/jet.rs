@@ -156,6 +156,9 @@ impl<T: Ring> Ring for Jet<T> {
     fn relative_epsilon() -> f64 {
         T::relative_epsilon()
     }
+    fn is_finite_value(&self) -> bool {
+        self.re.is_finite_value() && self.eps.is_finite_value()
+    }
     fn mul_ref(&self, rhs: &Self) -> Self {
         let eps = self.re.mul_ref(&rhs.eps) + &self.eps.mul_ref(&rhs.re);
         Jet { re: self.re.mul_ref(&rhs.re), eps }

@@ -100,6 +100,51 @@ pub trait Ring:
     /// `2^(1 - bits)` for multiple-precision floats.
     fn relative_epsilon() -> f64;
 
+    /// `|self|` compared with `|other|`, decided in the type's own precision and exponent
+    /// range: exactly for rationals, in MPFR for [`MpFloat`](crate::MpFloat). The default
+    /// compares [`Ring::magnitude`] (exact for `f32`/`f64`; the largest component for dual
+    /// numbers).
+    ///
+    /// ```
+    /// use algebra_core::{Ring, rational::ratio};
+    /// use std::cmp::Ordering;
+    /// assert_eq!(ratio(-1, 2).cmp_magnitude(&ratio(1, 3)), Ordering::Greater);
+    /// assert_eq!((-2.0f64).cmp_magnitude(&2.0), Ordering::Equal);
+    /// ```
+    fn cmp_magnitude(&self, other: &Self) -> std::cmp::Ordering {
+        self.magnitude().total_cmp(&other.magnitude())
+    }
+    /// True when `|self| <= ulps · ε · |scale|`, with ε the type's relative precision, decided
+    /// in the type's own precision and exponent range. For exact types (ε = 0) only an exact
+    /// zero is negligible: pivots, convergence and zero tests never round a non-zero exact
+    /// value to zero.
+    ///
+    /// ```
+    /// use algebra_core::{Ring, rational::ratio};
+    /// assert!(1e-17f64.is_negligible(&1.0, 1));
+    /// assert!(!1e-15f64.is_negligible(&1.0, 1));
+    /// assert!(!ratio(1, 1_000_000_000).is_negligible(&ratio(1, 1), 1_000));
+    /// ```
+    fn is_negligible(&self, scale: &Self, ulps: u32) -> bool {
+        if self.is_exact_zero() {
+            return true;
+        }
+        let eps = Self::relative_epsilon();
+        eps > 0.0 && self.magnitude() <= f64::from(ulps) * eps * scale.magnitude()
+    }
+
+    /// False when the value (any component, for dual numbers) is NaN or infinite; always true
+    /// for exact types. Lets code generic over a [`Ring`] or [`Field`] refuse non-finite
+    /// input with a typed error.
+    ///
+    /// ```
+    /// use algebra_core::{Ring, rational::ratio};
+    /// assert!(!f64::NAN.is_finite_value() && 1.0f64.is_finite_value() && ratio(1, 3).is_finite_value());
+    /// ```
+    fn is_finite_value(&self) -> bool {
+        true
+    }
+
     /// `self + rhs` without consuming either operand.
     fn add_ref(&self, rhs: &Self) -> Self {
         self.clone() + rhs
@@ -215,4 +260,34 @@ pub trait Real: Field + PartialOrd {
     }
     /// True when the value is finite (for dual numbers: every component).
     fn is_finite(&self) -> bool;
+    /// The bits of precision this value carries, for multiple-precision types; `None` for
+    /// fixed-precision ones (`f32`, `f64`, dual numbers), which cannot add guard bits.
+    ///
+    /// ```
+    /// assert_eq!(algebra_core::Real::precision_bits(&1.0f64), None);
+    /// ```
+    fn precision_bits(&self) -> Option<u32> {
+        None
+    }
+    /// The value at `bits` bits of precision (rounded to nearest, or extended exactly), for
+    /// multiple-precision types; unchanged for fixed-precision ones.
+    ///
+    /// ```
+    /// assert_eq!(algebra_core::Real::with_precision(&0.1f64, 10), 0.1);
+    /// ```
+    fn with_precision(&self, bits: u32) -> Self {
+        let _ = bits;
+        self.clone()
+    }
+    /// Runs `f` with the precision of newly made constants (`one`, `from_ratio`, `pi`, ...)
+    /// set to `bits`, for multiple-precision types; fixed-precision types just run `f`. The
+    /// general exp/log/sqrt use it to compute with guard bits.
+    ///
+    /// ```
+    /// assert_eq!(<f64 as algebra_core::Real>::with_working_precision(500, || 1.0 + 1.0), 2.0);
+    /// ```
+    fn with_working_precision<R>(bits: u32, f: impl FnOnce() -> R) -> R {
+        let _ = bits;
+        f()
+    }
 }

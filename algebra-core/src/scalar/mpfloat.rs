@@ -199,6 +199,22 @@ impl Ring for MpFloat {
     fn relative_epsilon() -> f64 {
         2f64.powi(1 - default_precision() as i32)
     }
+    fn is_finite_value(&self) -> bool {
+        self.0.is_finite()
+    }
+    fn cmp_magnitude(&self, other: &Self) -> std::cmp::Ordering {
+        self.0.cmp_abs(&other.0).unwrap_or_else(|| self.0.is_nan().cmp(&other.0.is_nan()))
+    }
+    /// `|self| <= ulps · 2^(1 - p) · |scale|` in MPFR, `p` the larger precision of the two.
+    fn is_negligible(&self, scale: &Self, ulps: u32) -> bool {
+        if self.0.is_zero() {
+            return true;
+        }
+        let p = self.prec2(scale);
+        let mut bound = Float::with_val(p + 32, scale.0.abs_ref()) * ulps;
+        bound >>= p as i32 - 1;
+        self.0.cmp_abs(&bound).is_some_and(|o| o.is_le())
+    }
     fn add_ref(&self, rhs: &Self) -> Self {
         MpFloat(Float::with_val(self.prec2(rhs), &self.0 + &rhs.0))
     }
@@ -271,6 +287,16 @@ impl Real for MpFloat {
     }
     fn is_finite(&self) -> bool {
         self.0.is_finite()
+    }
+    fn precision_bits(&self) -> Option<u32> {
+        Some(self.0.prec())
+    }
+    fn with_precision(&self, bits: u32) -> Self {
+        MpFloat(Float::with_val(bits, &self.0))
+    }
+    fn with_working_precision<R>(bits: u32, f: impl FnOnce() -> R) -> R {
+        let _guard = PrecisionGuard::new(bits);
+        f()
     }
 }
 

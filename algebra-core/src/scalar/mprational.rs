@@ -110,6 +110,9 @@ impl Ring for MpRational {
     fn relative_epsilon() -> f64 {
         0.0
     }
+    fn cmp_magnitude(&self, other: &Self) -> std::cmp::Ordering {
+        self.0.cmp_abs(&other.0)
+    }
     fn add_ref(&self, rhs: &Self) -> Self {
         MpRational(rug::Rational::from(&self.0 + &rhs.0))
     }

@@ -148,3 +148,15 @@ pub fn de_casteljau(controls: &[Pose<f64>], t: &num_dual::Dual64) -> Pose<num_du
     }
     level.pop().unwrap()
 }
+
+/// A small deterministic generator (xorshift) of floats in [-0.5, 0.5).
+pub struct Rng(pub u64);
+impl Rng {
+    /// The next value in [-0.5, 0.5).
+    pub fn next(&mut self) -> f64 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 7;
+        self.0 ^= self.0 << 17;
+        (self.0 >> 11) as f64 / (1u64 << 53) as f64 - 0.5
+    }
+}
