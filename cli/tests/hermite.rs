@@ -140,8 +140,8 @@ fn output_is_the_library_result() {
                 degree,
                 &a,
                 &b,
-                &Shape::new(1.5, paper::sec_5_2::gammas()[0].clone()),
-                &Shape::new(1.5, paper::sec_5_2::gammas()[1].clone()),
+                &Shape::new(1.5, paper::sec_5_2::gammas()[0]),
+                &Shape::new(1.5, paper::sec_5_2::gammas()[1]),
             )
             .unwrap();
             let poses = list(&v, "control_poses");

@@ -100,11 +100,11 @@ fn sec_5_1_all_values_within_the_rounding_of_the_angle() {
 // ---------------------------------------------------------------- Sec. 5.2 (shape factors)
 
 fn gamma0() -> Pseudoscalar<f64> {
-    paper::sec_5_2::gammas()[0].clone()
+    paper::sec_5_2::gammas()[0]
 }
 
 fn gamma3() -> Pseudoscalar<f64> {
-    paper::sec_5_2::gammas()[1].clone()
+    paper::sec_5_2::gammas()[1]
 }
 
 #[test]
