@@ -1,14 +1,17 @@
 //! `gam codegen --standalone`: a module source with no dependency at all. The emitted items
 //! are kept except the runtime bridge (the `algebra()` instance, `BASIS`, conversions to and
 //! from `Multivector`, and the inverse of types that are not subalgebras, which goes through
-//! the runtime); every `::algebra_core` path is pointed at the items of
-//! `standalone/support.rs` (the scalar traits for `f32`/`f64`, the product traits, a small
-//! solver and the printing helpers), which are appended to the file.
+//! the runtime); every `::algebra_core` path is pointed at items appended to the file: the
+//! product traits, `Ring`/`Field` reduced to the methods kernels call, the solver and
+//! `join_terms`, all
+//! parsed from algebra-core's own sources ([`algebra_core::sources`]), then
+//! `standalone/support.rs` (`f32`/`f64` impls, `MvError`, `format_term`).
 
 use crate::paths::{join_path, map_engine_paths};
 use crate::plan::Plan;
 use proc_macro2::TokenStream;
 use quote::{ToTokens, quote};
+use syn::parse_quote;
 
 /// The inlined support items (parsed once per call).
 const SUPPORT: &str = include_str!("standalone/support.rs");
@@ -46,6 +49,7 @@ pub fn file(plan: &Plan, header: &[String], nest: Option<&str>) -> syn::Result<s
     });
     let mut file: syn::File = syn::parse2(items)?;
     file.items.retain_mut(keep_item);
+    file.items.extend(shared_items()?);
     let support: syn::File = syn::parse_str(SUPPORT)?;
     file.items.extend(support.items);
     let allow = allow();
@@ -96,4 +100,72 @@ fn keep_item(item: &mut syn::Item) -> bool {
         }
         _ => true,
     }
+}
+
+/// The `Ring` methods kept in the standalone file (what kernels, `inverse` and printing call).
+const RING_METHODS: [&str; 11] = [
+    "zero",
+    "one",
+    "from_ratio",
+    "is_exact_zero",
+    "magnitude",
+    "relative_epsilon",
+    "add_ref",
+    "sub_ref",
+    "mul_ref",
+    "neg_ref",
+    "sub_assign_ref",
+];
+
+/// The `Field` methods kept.
+const FIELD_METHODS: [&str; 2] = ["try_recip", "div_ref"];
+
+/// Replaces an item's doc comments (whose examples name algebra-core) by `doc`.
+fn set_doc(attrs: &mut Vec<syn::Attribute>, doc: &str) {
+    attrs.retain(|a| !a.path().is_ident("doc"));
+    attrs.insert(0, parse_quote!(#[doc = #doc]));
+}
+
+/// The product traits, `Ring` and `Field` reduced to [`RING_METHODS`] and [`FIELD_METHODS`],
+/// the solver and `join_terms`, from algebra-core's sources.
+fn shared_items() -> syn::Result<Vec<syn::Item>> {
+    let mut items: Vec<syn::Item> = syn::parse_str::<syn::File>(algebra_core::sources::OPS)?
+        .items
+        .into_iter()
+        .filter(|it| matches!(it, syn::Item::Trait(_)))
+        .collect();
+    for item in syn::parse_str::<syn::File>(algebra_core::sources::SCALAR)?.items {
+        let syn::Item::Trait(mut t) = item else { continue };
+        let keep: &[&str] = match t.ident.to_string().as_str() {
+            "Ring" => &RING_METHODS,
+            "Field" => &FIELD_METHODS,
+            _ => continue,
+        };
+        t.items.retain(|m| matches!(m, syn::TraitItem::Fn(f) if keep.iter().any(|k| f.sig.ident == k)));
+        let doc = format!(
+            " algebra-core's `{}`, reduced to the methods the kernels call; implemented below for `f32` and `f64`.",
+            t.ident
+        );
+        set_doc(&mut t.attrs, &doc);
+        items.push(syn::Item::Trait(t));
+    }
+    let functions = [
+        (
+            algebra_core::sources::LINALG,
+            "solve",
+            " Solves `l y = rhs` (algebra-core's `linalg::solve`); `None` when singular.",
+        ),
+        (algebra_core::sources::DISPLAY, "join_terms", " Terms joined with ` + ` / ` - `; `0` when there are none."),
+    ];
+    for (source, name, doc) in functions {
+        for item in syn::parse_str::<syn::File>(source)?.items {
+            let syn::Item::Fn(mut f) = item else { continue };
+            if f.sig.ident == name {
+                set_doc(&mut f.attrs, doc);
+                f.vis = syn::Visibility::Inherited;
+                items.push(syn::Item::Fn(f));
+            }
+        }
+    }
+    Ok(items)
 }

@@ -40,3 +40,18 @@ pub use scalar::{Field, Jet, Real, Ring};
 #[cfg(feature = "rug")]
 pub use scalar::{MpFloat, MpRational, PrecisionGuard, default_precision, set_default_precision};
 pub use tables::{Product, Tables, Unary};
+
+/// The source text of the product traits, the scalar traits, the solver and the printing helper, which
+/// `gam codegen --standalone` inlines (reduced) into its dependency-free files, so that those
+/// files and this crate share one definition. Not a stable API.
+#[doc(hidden)]
+pub mod sources {
+    /// `ops.rs`.
+    pub const OPS: &str = include_str!("ops.rs");
+    /// `scalar/mod.rs`.
+    pub const SCALAR: &str = include_str!("scalar/mod.rs");
+    /// `linalg.rs`.
+    pub const LINALG: &str = include_str!("linalg.rs");
+    /// `multivector/display.rs`.
+    pub const DISPLAY: &str = include_str!("multivector/display.rs");
+}

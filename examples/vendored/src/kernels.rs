@@ -3077,34 +3077,90 @@ impl<T: self::Ring> Multivector<T> {
         }
     }
 }
-/// Scalar arithmetic the kernels use (algebra-core's `Ring`, reduced to what they call).
-/// Implemented here for `f32` and `f64`; implement it for another scalar to use that.
-pub trait Ring: Clone + ::core::fmt::Debug + ::core::fmt::Display + PartialEq + ::core::ops::Add<
+/// The geometric product `self * rhs`.
+pub trait GeometricProduct<Rhs: ?Sized> {
+    /// The smallest declared type holding the result.
+    type Output;
+    /// `self * rhs`.
+    fn gp(&self, rhs: &Rhs) -> Self::Output;
+}
+/// The outer product `self ^ rhs`.
+pub trait OuterProduct<Rhs: ?Sized> {
+    /// The smallest declared type holding the result.
+    type Output;
+    /// `self ^ rhs`.
+    fn op(&self, rhs: &Rhs) -> Self::Output;
+}
+/// The left contraction `self ⌋ rhs` (also the operator `|`).
+pub trait LeftContraction<Rhs: ?Sized> {
+    /// The smallest declared type holding the result.
+    type Output;
+    /// `self ⌋ rhs`.
+    fn lc(&self, rhs: &Rhs) -> Self::Output;
+}
+/// The right contraction `self ⌊ rhs`.
+pub trait RightContraction<Rhs: ?Sized> {
+    /// The smallest declared type holding the result.
+    type Output;
+    /// `self ⌊ rhs`.
+    fn rc(&self, rhs: &Rhs) -> Self::Output;
+}
+/// The scalar product `<self rhs>_0`.
+pub trait ScalarProduct<Rhs: ?Sized> {
+    /// The smallest declared type holding the result.
+    type Output;
+    /// `<self rhs>_0`.
+    fn sp(&self, rhs: &Rhs) -> Self::Output;
+}
+/// The regressive product `self ∨ rhs`.
+pub trait RegressiveProduct<Rhs: ?Sized> {
+    /// The smallest declared type holding the result.
+    type Output;
+    /// `self ∨ rhs`.
+    fn regressive(&self, rhs: &Rhs) -> Self::Output;
+}
+/// The commutator product `(self rhs - rhs self)/2` (the main paper's `∧`).
+pub trait CommutatorProduct<Rhs: ?Sized> {
+    /// The smallest declared type holding the result.
+    type Output;
+    /// `(self rhs - rhs self)/2`.
+    fn commutator(&self, rhs: &Rhs) -> Self::Output;
+}
+/// The anticommutator product `(self rhs + rhs self)/2` (the main paper's `·`).
+pub trait AnticommutatorProduct<Rhs: ?Sized> {
+    /// The smallest declared type holding the result.
+    type Output;
+    /// `(self rhs + rhs self)/2`.
+    fn anticommutator(&self, rhs: &Rhs) -> Self::Output;
+}
+/// algebra-core's `Ring`, reduced to the methods the kernels call; implemented below for `f32` and `f64`.
+pub trait Ring: Clone + Debug + Display + PartialEq + Add<
         Output = Self,
-    > + ::core::ops::Sub<
+    > + Sub<
         Output = Self,
-    > + ::core::ops::Mul<
+    > + Mul<
         Output = Self,
-    > + ::core::ops::Neg<
+    > + Neg<
         Output = Self,
-    > + for<'a> ::core::ops::Add<
+    > + for<'a> Add<
         &'a Self,
         Output = Self,
-    > + for<'a> ::core::ops::Sub<
-        &'a Self,
-        Output = Self,
-    > + for<'a> ::core::ops::Mul<&'a Self, Output = Self> {
+    > + for<'a> Sub<&'a Self, Output = Self> + for<'a> Mul<&'a Self, Output = Self> {
     /// The additive identity.
     fn zero() -> Self;
     /// The multiplicative identity.
     fn one() -> Self;
-    /// The ratio `num / den` (`den != 0`).
+    /// The exact ratio `num / den` (`den != 0`; kernels only use non-zero constant denominators).
     fn from_ratio(num: i64, den: i64) -> Self;
-    /// True only for an exact zero (used for printing and pivots, never to drop terms).
+    /// True only when *every* component is zero (for dual numbers: the real part and all
+    /// derivative parts). Never used to drop terms in kernels; used for printing and pivots.
     fn is_exact_zero(&self) -> bool;
-    /// A non-negative size for choosing pivots.
+    /// A non-negative size used to choose pivots and test series convergence: `|x|` for
+    /// floats, the largest absolute component for dual numbers, `|x|` rounded to f64 for
+    /// rationals. Not for exact decisions.
     fn magnitude(&self) -> f64;
-    /// The relative precision: machine epsilon for floats, `0.0` for exact types.
+    /// The relative precision of the type: `0.0` for exact types, machine epsilon for floats,
+    /// `2^(1 - bits)` for multiple-precision floats.
     fn relative_epsilon() -> f64;
     /// `self + rhs` without consuming either operand.
     fn add_ref(&self, rhs: &Self) -> Self {
@@ -3122,99 +3178,23 @@ pub trait Ring: Clone + ::core::fmt::Debug + ::core::fmt::Display + PartialEq + 
     fn neg_ref(&self) -> Self {
         -self.clone()
     }
-}
-/// Division (algebra-core's `Field`, reduced to what the kernels call).
-pub trait Field: Ring {
-    /// `self / rhs`.
-    fn div_ref(&self, rhs: &Self) -> Self;
-    /// `1 / self`, `None` for zero.
-    fn try_recip(&self) -> Option<Self>;
-}
-macro_rules! float_scalar {
-    ($($t:ty),*) => {
-        $(impl Ring for $t { fn zero() -> Self { 0.0 } fn one() -> Self { 1.0 } fn
-        from_ratio(num : i64, den : i64) -> Self { num as $t / den as $t } fn
-        is_exact_zero(& self) -> bool { * self == 0.0 } fn magnitude(& self) -> f64 {
-        f64::from(self.abs()) } fn relative_epsilon() -> f64 { f64::from(<$t >::EPSILON)
-        } fn add_ref(& self, rhs : & Self) -> Self { self + rhs } fn sub_ref(& self, rhs
-        : & Self) -> Self { self - rhs } fn mul_ref(& self, rhs : & Self) -> Self { self
-        * rhs } fn neg_ref(& self) -> Self { - self } } impl Field for $t { fn div_ref(&
-        self, rhs : & Self) -> Self { self / rhs } fn try_recip(& self) -> Option < Self
-        > { if * self == 0.0 { None } else { Some(1.0 / self) } } })*
-    };
-}
-float_scalar!(f32, f64);
-/// The geometric product.
-pub trait GeometricProduct<Rhs: ?Sized> {
-    /// The result type.
-    type Output;
-    /// `self rhs`.
-    fn gp(&self, rhs: &Rhs) -> Self::Output;
-}
-/// The outer (wedge) product.
-pub trait OuterProduct<Rhs: ?Sized> {
-    /// The result type.
-    type Output;
-    /// `self ^ rhs`.
-    fn op(&self, rhs: &Rhs) -> Self::Output;
-}
-/// The left contraction.
-pub trait LeftContraction<Rhs: ?Sized> {
-    /// The result type.
-    type Output;
-    /// `self _| rhs`.
-    fn lc(&self, rhs: &Rhs) -> Self::Output;
-}
-/// The right contraction.
-pub trait RightContraction<Rhs: ?Sized> {
-    /// The result type.
-    type Output;
-    /// `self |_ rhs`.
-    fn rc(&self, rhs: &Rhs) -> Self::Output;
-}
-/// The scalar product.
-pub trait ScalarProduct<Rhs: ?Sized> {
-    /// The result type.
-    type Output;
-    /// `<self rhs>_0`.
-    fn sp(&self, rhs: &Rhs) -> Self::Output;
-}
-/// The regressive (meet) product.
-pub trait RegressiveProduct<Rhs: ?Sized> {
-    /// The result type.
-    type Output;
-    /// `self v rhs`.
-    fn regressive(&self, rhs: &Rhs) -> Self::Output;
-}
-/// The commutator product `(ab - ba)/2`.
-pub trait CommutatorProduct<Rhs: ?Sized> {
-    /// The result type.
-    type Output;
-    /// `(self rhs - rhs self)/2`.
-    fn commutator(&self, rhs: &Rhs) -> Self::Output;
-}
-/// The anticommutator product `(ab + ba)/2`.
-pub trait AnticommutatorProduct<Rhs: ?Sized> {
-    /// The result type.
-    type Output;
-    /// `(self rhs + rhs self)/2`.
-    fn anticommutator(&self, rhs: &Rhs) -> Self::Output;
-}
-/// Why an operation failed.
-#[derive(Debug, Clone, PartialEq)]
-pub enum MvError {
-    /// The element has no inverse (it is a zero divisor).
-    NotInvertible(String),
-}
-impl ::core::fmt::Display for MvError {
-    fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
-        match self {
-            MvError::NotInvertible(x) => write!(f, "{x} is not invertible"),
-        }
+    /// `self -= rhs`.
+    fn sub_assign_ref(&mut self, rhs: &Self) {
+        let lhs = std::mem::replace(self, Self::zero());
+        *self = lhs - rhs;
     }
 }
-impl ::std::error::Error for MvError {}
-/// Solves `l y = rhs` by Gaussian elimination with partial pivoting; `None` when singular.
+/// algebra-core's `Field`, reduced to the methods the kernels call; implemented below for `f32` and `f64`.
+pub trait Field: Ring + Div<Output = Self> + for<'a> Div<&'a Self, Output = Self> {
+    /// `1 / self`, or `None` when `self` is zero (exactly zero for exact types; zero or with a
+    /// non-finite reciprocal for floats).
+    fn try_recip(&self) -> Option<Self>;
+    /// `self / rhs` without consuming either operand (`rhs` must be non-zero).
+    fn div_ref(&self, rhs: &Self) -> Self {
+        self.clone() / rhs
+    }
+}
+/// Solves `l y = rhs` (algebra-core's `linalg::solve`); `None` when singular.
 #[allow(clippy::needless_range_loop)]
 fn solve<T: Field>(mut l: Vec<Vec<T>>, mut rhs: Vec<T>) -> Option<Vec<T>> {
     let n = rhs.len();
@@ -3237,22 +3217,68 @@ fn solve<T: Field>(mut l: Vec<Vec<T>>, mut rhs: Vec<T>) -> Option<Vec<T>> {
             let f = l[r][col].mul_ref(&inv);
             for c in col..n {
                 let d = f.mul_ref(&l[col][c]);
-                l[r][c] = l[r][c].sub_ref(&d);
+                l[r][c].sub_assign_ref(&d);
             }
             let d = f.mul_ref(&rhs[col]);
-            rhs[r] = rhs[r].sub_ref(&d);
+            rhs[r].sub_assign_ref(&d);
         }
     }
     let mut y = vec![T::zero(); n];
     for row in (0..n).rev() {
         let mut acc = rhs[row].clone();
         for c in row + 1..n {
-            acc = acc.sub_ref(&l[row][c].mul_ref(&y[c]));
+            acc.sub_assign_ref(&l[row][c].mul_ref(&y[c]));
         }
         y[row] = acc.div_ref(&l[row][row]);
     }
     Some(y)
 }
+/// Terms joined with ` + ` / ` - `; `0` when there are none.
+fn join_terms(terms: impl IntoIterator<Item = String>) -> String {
+    let mut out = String::new();
+    for t in terms {
+        if out.is_empty() {
+            out = t;
+        } else if let Some(rest) = t.strip_prefix('-') {
+            out.push_str(" - ");
+            out.push_str(rest);
+        } else {
+            out.push_str(" + ");
+            out.push_str(&t);
+        }
+    }
+    if out.is_empty() { "0".to_string() } else { out }
+}
+use ::core::fmt::{Debug, Display};
+use ::core::ops::{Add, Div, Mul, Neg, Sub};
+macro_rules! float_scalar {
+    ($($t:ty),*) => {
+        $(impl Ring for $t { fn zero() -> Self { 0.0 } fn one() -> Self { 1.0 } fn
+        from_ratio(num : i64, den : i64) -> Self { num as $t / den as $t } fn
+        is_exact_zero(& self) -> bool { * self == 0.0 } fn magnitude(& self) -> f64 {
+        f64::from(self.abs()) } fn relative_epsilon() -> f64 { f64::from(<$t >::EPSILON)
+        } fn add_ref(& self, rhs : & Self) -> Self { self + rhs } fn sub_ref(& self, rhs
+        : & Self) -> Self { self - rhs } fn mul_ref(& self, rhs : & Self) -> Self { self
+        * rhs } fn neg_ref(& self) -> Self { - self } } impl Field for $t { fn div_ref(&
+        self, rhs : & Self) -> Self { self / rhs } fn try_recip(& self) -> Option < Self
+        > { if * self == 0.0 { None } else { Some(1.0 / self) } } })*
+    };
+}
+float_scalar!(f32, f64);
+/// Why an operation failed.
+#[derive(Debug, Clone, PartialEq)]
+pub enum MvError {
+    /// The element has no inverse (it is a zero divisor).
+    NotInvertible(String),
+}
+impl ::core::fmt::Display for MvError {
+    fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
+        match self {
+            MvError::NotInvertible(x) => write!(f, "{x} is not invertible"),
+        }
+    }
+}
+impl ::std::error::Error for MvError {}
 /// One term `c*name` as the CLI prints it: `e12`, `-e12`, `1.5*e12`, or `c` for the scalar.
 fn format_term(coeff: &str, name: &str) -> String {
     if name == "1" {
@@ -3270,21 +3296,5 @@ fn format_term(coeff: &str, name: &str) -> String {
         }
         c => format!("{c}*{name}"),
     }
-}
-/// Terms joined with ` + ` / ` - `; `0` when there are none.
-fn join_terms(terms: impl IntoIterator<Item = String>) -> String {
-    let mut out = String::new();
-    for t in terms {
-        if out.is_empty() {
-            out = t;
-        } else if let Some(rest) = t.strip_prefix('-') {
-            out.push_str(" - ");
-            out.push_str(rest);
-        } else {
-            out.push_str(" + ");
-            out.push_str(&t);
-        }
-    }
-    if out.is_empty() { "0".to_string() } else { out }
 }
 
