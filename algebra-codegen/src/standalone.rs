@@ -103,17 +103,20 @@ fn keep_item(item: &mut syn::Item) -> bool {
 }
 
 /// The `Ring` methods kept in the standalone file (what kernels, `inverse` and printing call).
-const RING_METHODS: [&str; 11] = [
+const RING_METHODS: [&str; 14] = [
     "zero",
     "one",
     "from_ratio",
     "is_exact_zero",
     "magnitude",
     "relative_epsilon",
+    "cmp_magnitude",
+    "is_negligible",
     "add_ref",
     "sub_ref",
     "mul_ref",
     "neg_ref",
+    "add_assign_ref",
     "sub_assign_ref",
 ];
 
@@ -142,6 +145,12 @@ fn shared_items() -> syn::Result<Vec<syn::Item>> {
             _ => continue,
         };
         t.items.retain(|m| matches!(m, syn::TraitItem::Fn(f) if keep.iter().any(|k| f.sig.ident == k)));
+        // the methods' doc examples name algebra-core: keep one line pointing at the original
+        for m in &mut t.items {
+            if let syn::TraitItem::Fn(f) = m {
+                set_doc(&mut f.attrs, &format!(" algebra-core's `{}::{}`.", t.ident, f.sig.ident));
+            }
+        }
         let doc = format!(
             " algebra-core's `{}`, reduced to the methods the kernels call; implemented below for `f32` and `f64`.",
             t.ident

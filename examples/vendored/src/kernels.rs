@@ -11,7 +11,8 @@
     dead_code
 )]
 ///Basis elements (blade basis): `e1`, `e2`, `e3`.
-#[derive(Clone, PartialEq)]
+#[derive(Clone, Copy, PartialEq)]
+#[repr(C)]
 pub struct Vector<T> {
     ///Coefficient of `e1`.
     pub e1: T,
@@ -46,13 +47,21 @@ impl<T: self::Ring> Vector<T> {
             e3: self.e3.mul_ref(s),
         }
     }
-    /// The sandwich `f_S(x) = rev(S) x S` of the main paper.
-    pub fn sandwich<X, Y>(&self, x: &X) -> <Y as self::GeometricProduct<Self>>::Output
+    /// The sandwich `f_S(x) = rev(S) x S` of the main paper (eq. 3); a fused kernel typed
+    /// to `x`'s type when `Self` is a versor type (see the `Sandwich` trait).
+    pub fn sandwich<X>(&self, x: &X) -> <Self as self::Sandwich<X>>::Output
     where
-        Vector<T>: self::GeometricProduct<X, Output = Y>,
-        Y: self::GeometricProduct<Self>,
+        Self: self::Sandwich<X>,
     {
-        self::GeometricProduct::gp(&self::GeometricProduct::gp(&self.reverse(), x), self)
+        self::Sandwich::sandwich(self, x)
+    }
+    /// The action `S x rev(S)` (the klein/GATL/ganja convention); a fused kernel typed to
+    /// `x`'s type when `Self` is a versor type (see the `Apply` trait).
+    pub fn apply<X>(&self, x: &X) -> <Self as self::Apply<X>>::Output
+    where
+        Self: self::Apply<X>,
+    {
+        self::Apply::apply(self, x)
     }
     ///The reverse (a linear map; output type chosen at generation).
     pub fn reverse(&self) -> Vector<T> {
@@ -103,6 +112,230 @@ impl<T: self::Ring> Vector<T> {
         let n1 = self.e2.mul_ref(&self.e2);
         let n2 = self.e3.mul_ref(&self.e3);
         n0 + &n1 + &n2
+    }
+}
+impl<T: self::Ring> Vector<T> {
+    /// The number of coefficients.
+    pub const LEN: usize = 3usize;
+    ///The basis element `e1` (coefficient 1, every other coefficient 0).
+    pub fn e1() -> Self {
+        Vector {
+            e1: T::one(),
+            e2: T::zero(),
+            e3: T::zero(),
+        }
+    }
+    ///The basis element `e2` (coefficient 1, every other coefficient 0).
+    pub fn e2() -> Self {
+        Vector {
+            e1: T::zero(),
+            e2: T::one(),
+            e3: T::zero(),
+        }
+    }
+    ///The basis element `e3` (coefficient 1, every other coefficient 0).
+    pub fn e3() -> Self {
+        Vector {
+            e1: T::zero(),
+            e2: T::zero(),
+            e3: T::one(),
+        }
+    }
+    /// The coefficients in the order of [`Self::ELEMENTS`] (cloned).
+    pub fn to_array(&self) -> [T; 3usize] {
+        [
+            ::core::clone::Clone::clone(&self.e1),
+            ::core::clone::Clone::clone(&self.e2),
+            ::core::clone::Clone::clone(&self.e3),
+        ]
+    }
+    /// The coefficients in the order of [`Self::ELEMENTS`] (moved out).
+    pub fn into_array(self) -> [T; 3usize] {
+        [self.e1, self.e2, self.e3]
+    }
+    /// A value from its coefficients in the order of [`Self::ELEMENTS`].
+    pub fn from_array(a: [T; 3usize]) -> Self {
+        let [e1, e2, e3] = a;
+        Vector { e1, e2, e3 }
+    }
+    /// An iterator over references to the coefficients, in the order of [`Self::ELEMENTS`].
+    pub fn iter(&self) -> ::core::array::IntoIter<&T, 3usize> {
+        [&self.e1, &self.e2, &self.e3].into_iter()
+    }
+    /// An iterator over mutable references to the coefficients.
+    pub fn iter_mut(&mut self) -> ::core::array::IntoIter<&mut T, 3usize> {
+        [&mut self.e1, &mut self.e2, &mut self.e3].into_iter()
+    }
+}
+impl<T: self::Ring> ::core::default::Default for Vector<T> {
+    /// Zero.
+    fn default() -> Self {
+        Self::zero()
+    }
+}
+impl<T: self::Ring> ::core::convert::From<[T; 3usize]> for Vector<T> {
+    fn from(a: [T; 3usize]) -> Self {
+        Self::from_array(a)
+    }
+}
+impl<T: self::Ring> ::core::convert::From<Vector<T>> for [T; 3usize] {
+    fn from(x: Vector<T>) -> Self {
+        x.into_array()
+    }
+}
+impl<T: self::Ring> ::core::ops::Index<usize> for Vector<T> {
+    type Output = T;
+    /// The coefficient at position `i` of [`Self::ELEMENTS`]; panics if `i >= LEN`, like
+    /// an array.
+    fn index(&self, i: usize) -> &T {
+        match i {
+            0usize => &self.e1,
+            1usize => &self.e2,
+            2usize => &self.e3,
+            _ => {
+                panic!(
+                    "index {} out of range for {} (length {})", i, stringify!(Vector),
+                    3usize
+                )
+            }
+        }
+    }
+}
+impl<T: self::Ring> ::core::ops::IndexMut<usize> for Vector<T> {
+    fn index_mut(&mut self, i: usize) -> &mut T {
+        match i {
+            0usize => &mut self.e1,
+            1usize => &mut self.e2,
+            2usize => &mut self.e3,
+            _ => {
+                panic!(
+                    "index {} out of range for {} (length {})", i, stringify!(Vector),
+                    3usize
+                )
+            }
+        }
+    }
+}
+impl<T: self::Ring> ::core::iter::IntoIterator for Vector<T> {
+    type Item = T;
+    type IntoIter = ::core::array::IntoIter<T, 3usize>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.into_array().into_iter()
+    }
+}
+impl<'a, T: self::Ring> ::core::iter::IntoIterator for &'a Vector<T> {
+    type Item = &'a T;
+    type IntoIter = ::core::array::IntoIter<&'a T, 3usize>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.iter()
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<T> for Vector<T> {
+    type Output = Self;
+    /// `x * s`: every coefficient multiplied by `s`.
+    fn mul(self, s: T) -> Self {
+        Vector {
+            e1: self.e1 * &s,
+            e2: self.e2 * &s,
+            e3: self.e3 * &s,
+        }
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<T> for &Vector<T> {
+    type Output = Vector<T>;
+    fn mul(self, s: T) -> Vector<T> {
+        self.scale(&s)
+    }
+}
+impl<T: self::Field> ::core::ops::Div<T> for Vector<T> {
+    type Output = Self;
+    /// `x / s`: every coefficient divided by `s`.
+    fn div(self, s: T) -> Self {
+        Vector {
+            e1: self.e1.div_ref(&s),
+            e2: self.e2.div_ref(&s),
+            e3: self.e3.div_ref(&s),
+        }
+    }
+}
+impl<T: self::Field> ::core::ops::Div<T> for &Vector<T> {
+    type Output = Vector<T>;
+    fn div(self, s: T) -> Vector<T> {
+        Vector {
+            e1: self.e1.div_ref(&s),
+            e2: self.e2.div_ref(&s),
+            e3: self.e3.div_ref(&s),
+        }
+    }
+}
+impl<T: self::Ring> ::core::ops::AddAssign for Vector<T> {
+    fn add_assign(&mut self, rhs: Self) {
+        self.e1.add_assign_ref(&rhs.e1);
+        self.e2.add_assign_ref(&rhs.e2);
+        self.e3.add_assign_ref(&rhs.e3);
+    }
+}
+impl<T: self::Ring> ::core::ops::SubAssign for Vector<T> {
+    fn sub_assign(&mut self, rhs: Self) {
+        self.e1.sub_assign_ref(&rhs.e1);
+        self.e2.sub_assign_ref(&rhs.e2);
+        self.e3.sub_assign_ref(&rhs.e3);
+    }
+}
+impl<T: self::Ring> ::core::ops::MulAssign<T> for Vector<T> {
+    fn mul_assign(&mut self, s: T) {
+        self.e1 = self.e1.mul_ref(&s);
+        self.e2 = self.e2.mul_ref(&s);
+        self.e3 = self.e3.mul_ref(&s);
+    }
+}
+impl<T: self::Field> ::core::ops::DivAssign<T> for Vector<T> {
+    fn div_assign(&mut self, s: T) {
+        self.e1 = self.e1.div_ref(&s);
+        self.e2 = self.e2.div_ref(&s);
+        self.e3 = self.e3.div_ref(&s);
+    }
+}
+impl ::core::ops::Mul<Vector<f32>> for f32 {
+    type Output = Vector<f32>;
+    /// `s * x`: every coefficient multiplied by `s`.
+    fn mul(self, x: Vector<f32>) -> Vector<f32> {
+        Vector {
+            e1: self * x.e1,
+            e2: self * x.e2,
+            e3: self * x.e3,
+        }
+    }
+}
+impl ::core::ops::Mul<&Vector<f32>> for f32 {
+    type Output = Vector<f32>;
+    fn mul(self, x: &Vector<f32>) -> Vector<f32> {
+        Vector {
+            e1: self * x.e1,
+            e2: self * x.e2,
+            e3: self * x.e3,
+        }
+    }
+}
+impl ::core::ops::Mul<Vector<f64>> for f64 {
+    type Output = Vector<f64>;
+    /// `s * x`: every coefficient multiplied by `s`.
+    fn mul(self, x: Vector<f64>) -> Vector<f64> {
+        Vector {
+            e1: self * x.e1,
+            e2: self * x.e2,
+            e3: self * x.e3,
+        }
+    }
+}
+impl ::core::ops::Mul<&Vector<f64>> for f64 {
+    type Output = Vector<f64>;
+    fn mul(self, x: &Vector<f64>) -> Vector<f64> {
+        Vector {
+            e1: self * x.e1,
+            e2: self * x.e2,
+            e3: self * x.e3,
+        }
     }
 }
 impl<T: self::Ring> ::core::fmt::Display for Vector<T> {
@@ -187,7 +420,8 @@ impl<T: self::Ring> ::core::ops::Neg for &Vector<T> {
     }
 }
 ///Basis elements (blade basis): `1`, `e12`, `e13`, `e23`.
-#[derive(Clone, PartialEq)]
+#[derive(Clone, Copy, PartialEq)]
+#[repr(C)]
 pub struct Rotor<T> {
     ///Coefficient of `1`.
     pub scalar: T,
@@ -235,13 +469,21 @@ impl<T: self::Ring> Rotor<T> {
             e23: self.e23.mul_ref(s),
         }
     }
-    /// The sandwich `f_S(x) = rev(S) x S` of the main paper.
-    pub fn sandwich<X, Y>(&self, x: &X) -> <Y as self::GeometricProduct<Self>>::Output
+    /// The sandwich `f_S(x) = rev(S) x S` of the main paper (eq. 3); a fused kernel typed
+    /// to `x`'s type when `Self` is a versor type (see the `Sandwich` trait).
+    pub fn sandwich<X>(&self, x: &X) -> <Self as self::Sandwich<X>>::Output
     where
-        Rotor<T>: self::GeometricProduct<X, Output = Y>,
-        Y: self::GeometricProduct<Self>,
+        Self: self::Sandwich<X>,
     {
-        self::GeometricProduct::gp(&self::GeometricProduct::gp(&self.reverse(), x), self)
+        self::Sandwich::sandwich(self, x)
+    }
+    /// The action `S x rev(S)` (the klein/GATL/ganja convention); a fused kernel typed to
+    /// `x`'s type when `Self` is a versor type (see the `Apply` trait).
+    pub fn apply<X>(&self, x: &X) -> <Self as self::Apply<X>>::Output
+    where
+        Self: self::Apply<X>,
+    {
+        self::Apply::apply(self, x)
     }
     ///The reverse (a linear map; output type chosen at generation).
     pub fn reverse(&self) -> Rotor<T> {
@@ -344,6 +586,247 @@ impl<T: self::Field> Rotor<T> {
         })
     }
 }
+impl<T: self::Ring> Rotor<T> {
+    /// The number of coefficients.
+    pub const LEN: usize = 4usize;
+    ///The basis element `e12` (coefficient 1, every other coefficient 0).
+    pub fn e12() -> Self {
+        Rotor {
+            scalar: T::zero(),
+            e12: T::one(),
+            e13: T::zero(),
+            e23: T::zero(),
+        }
+    }
+    ///The basis element `e13` (coefficient 1, every other coefficient 0).
+    pub fn e13() -> Self {
+        Rotor {
+            scalar: T::zero(),
+            e12: T::zero(),
+            e13: T::one(),
+            e23: T::zero(),
+        }
+    }
+    ///The basis element `e23` (coefficient 1, every other coefficient 0).
+    pub fn e23() -> Self {
+        Rotor {
+            scalar: T::zero(),
+            e12: T::zero(),
+            e13: T::zero(),
+            e23: T::one(),
+        }
+    }
+    /// The coefficients in the order of [`Self::ELEMENTS`] (cloned).
+    pub fn to_array(&self) -> [T; 4usize] {
+        [
+            ::core::clone::Clone::clone(&self.scalar),
+            ::core::clone::Clone::clone(&self.e12),
+            ::core::clone::Clone::clone(&self.e13),
+            ::core::clone::Clone::clone(&self.e23),
+        ]
+    }
+    /// The coefficients in the order of [`Self::ELEMENTS`] (moved out).
+    pub fn into_array(self) -> [T; 4usize] {
+        [self.scalar, self.e12, self.e13, self.e23]
+    }
+    /// A value from its coefficients in the order of [`Self::ELEMENTS`].
+    pub fn from_array(a: [T; 4usize]) -> Self {
+        let [scalar, e12, e13, e23] = a;
+        Rotor { scalar, e12, e13, e23 }
+    }
+    /// An iterator over references to the coefficients, in the order of [`Self::ELEMENTS`].
+    pub fn iter(&self) -> ::core::array::IntoIter<&T, 4usize> {
+        [&self.scalar, &self.e12, &self.e13, &self.e23].into_iter()
+    }
+    /// An iterator over mutable references to the coefficients.
+    pub fn iter_mut(&mut self) -> ::core::array::IntoIter<&mut T, 4usize> {
+        [&mut self.scalar, &mut self.e12, &mut self.e13, &mut self.e23].into_iter()
+    }
+}
+impl<T: self::Ring> ::core::default::Default for Rotor<T> {
+    /// Zero.
+    fn default() -> Self {
+        Self::zero()
+    }
+}
+impl<T: self::Ring> ::core::convert::From<[T; 4usize]> for Rotor<T> {
+    fn from(a: [T; 4usize]) -> Self {
+        Self::from_array(a)
+    }
+}
+impl<T: self::Ring> ::core::convert::From<Rotor<T>> for [T; 4usize] {
+    fn from(x: Rotor<T>) -> Self {
+        x.into_array()
+    }
+}
+impl<T: self::Ring> ::core::ops::Index<usize> for Rotor<T> {
+    type Output = T;
+    /// The coefficient at position `i` of [`Self::ELEMENTS`]; panics if `i >= LEN`, like
+    /// an array.
+    fn index(&self, i: usize) -> &T {
+        match i {
+            0usize => &self.scalar,
+            1usize => &self.e12,
+            2usize => &self.e13,
+            3usize => &self.e23,
+            _ => {
+                panic!(
+                    "index {} out of range for {} (length {})", i, stringify!(Rotor),
+                    4usize
+                )
+            }
+        }
+    }
+}
+impl<T: self::Ring> ::core::ops::IndexMut<usize> for Rotor<T> {
+    fn index_mut(&mut self, i: usize) -> &mut T {
+        match i {
+            0usize => &mut self.scalar,
+            1usize => &mut self.e12,
+            2usize => &mut self.e13,
+            3usize => &mut self.e23,
+            _ => {
+                panic!(
+                    "index {} out of range for {} (length {})", i, stringify!(Rotor),
+                    4usize
+                )
+            }
+        }
+    }
+}
+impl<T: self::Ring> ::core::iter::IntoIterator for Rotor<T> {
+    type Item = T;
+    type IntoIter = ::core::array::IntoIter<T, 4usize>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.into_array().into_iter()
+    }
+}
+impl<'a, T: self::Ring> ::core::iter::IntoIterator for &'a Rotor<T> {
+    type Item = &'a T;
+    type IntoIter = ::core::array::IntoIter<&'a T, 4usize>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.iter()
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<T> for Rotor<T> {
+    type Output = Self;
+    /// `x * s`: every coefficient multiplied by `s`.
+    fn mul(self, s: T) -> Self {
+        Rotor {
+            scalar: self.scalar * &s,
+            e12: self.e12 * &s,
+            e13: self.e13 * &s,
+            e23: self.e23 * &s,
+        }
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<T> for &Rotor<T> {
+    type Output = Rotor<T>;
+    fn mul(self, s: T) -> Rotor<T> {
+        self.scale(&s)
+    }
+}
+impl<T: self::Field> ::core::ops::Div<T> for Rotor<T> {
+    type Output = Self;
+    /// `x / s`: every coefficient divided by `s`.
+    fn div(self, s: T) -> Self {
+        Rotor {
+            scalar: self.scalar.div_ref(&s),
+            e12: self.e12.div_ref(&s),
+            e13: self.e13.div_ref(&s),
+            e23: self.e23.div_ref(&s),
+        }
+    }
+}
+impl<T: self::Field> ::core::ops::Div<T> for &Rotor<T> {
+    type Output = Rotor<T>;
+    fn div(self, s: T) -> Rotor<T> {
+        Rotor {
+            scalar: self.scalar.div_ref(&s),
+            e12: self.e12.div_ref(&s),
+            e13: self.e13.div_ref(&s),
+            e23: self.e23.div_ref(&s),
+        }
+    }
+}
+impl<T: self::Ring> ::core::ops::AddAssign for Rotor<T> {
+    fn add_assign(&mut self, rhs: Self) {
+        self.scalar.add_assign_ref(&rhs.scalar);
+        self.e12.add_assign_ref(&rhs.e12);
+        self.e13.add_assign_ref(&rhs.e13);
+        self.e23.add_assign_ref(&rhs.e23);
+    }
+}
+impl<T: self::Ring> ::core::ops::SubAssign for Rotor<T> {
+    fn sub_assign(&mut self, rhs: Self) {
+        self.scalar.sub_assign_ref(&rhs.scalar);
+        self.e12.sub_assign_ref(&rhs.e12);
+        self.e13.sub_assign_ref(&rhs.e13);
+        self.e23.sub_assign_ref(&rhs.e23);
+    }
+}
+impl<T: self::Ring> ::core::ops::MulAssign<T> for Rotor<T> {
+    fn mul_assign(&mut self, s: T) {
+        self.scalar = self.scalar.mul_ref(&s);
+        self.e12 = self.e12.mul_ref(&s);
+        self.e13 = self.e13.mul_ref(&s);
+        self.e23 = self.e23.mul_ref(&s);
+    }
+}
+impl<T: self::Field> ::core::ops::DivAssign<T> for Rotor<T> {
+    fn div_assign(&mut self, s: T) {
+        self.scalar = self.scalar.div_ref(&s);
+        self.e12 = self.e12.div_ref(&s);
+        self.e13 = self.e13.div_ref(&s);
+        self.e23 = self.e23.div_ref(&s);
+    }
+}
+impl ::core::ops::Mul<Rotor<f32>> for f32 {
+    type Output = Rotor<f32>;
+    /// `s * x`: every coefficient multiplied by `s`.
+    fn mul(self, x: Rotor<f32>) -> Rotor<f32> {
+        Rotor {
+            scalar: self * x.scalar,
+            e12: self * x.e12,
+            e13: self * x.e13,
+            e23: self * x.e23,
+        }
+    }
+}
+impl ::core::ops::Mul<&Rotor<f32>> for f32 {
+    type Output = Rotor<f32>;
+    fn mul(self, x: &Rotor<f32>) -> Rotor<f32> {
+        Rotor {
+            scalar: self * x.scalar,
+            e12: self * x.e12,
+            e13: self * x.e13,
+            e23: self * x.e23,
+        }
+    }
+}
+impl ::core::ops::Mul<Rotor<f64>> for f64 {
+    type Output = Rotor<f64>;
+    /// `s * x`: every coefficient multiplied by `s`.
+    fn mul(self, x: Rotor<f64>) -> Rotor<f64> {
+        Rotor {
+            scalar: self * x.scalar,
+            e12: self * x.e12,
+            e13: self * x.e13,
+            e23: self * x.e23,
+        }
+    }
+}
+impl ::core::ops::Mul<&Rotor<f64>> for f64 {
+    type Output = Rotor<f64>;
+    fn mul(self, x: &Rotor<f64>) -> Rotor<f64> {
+        Rotor {
+            scalar: self * x.scalar,
+            e12: self * x.e12,
+            e13: self * x.e13,
+            e23: self * x.e23,
+        }
+    }
+}
 impl<T: self::Ring> ::core::fmt::Display for Rotor<T> {
     /// A sum of basis elements: `1 + 1/2*e1inf`; `0` for zero.
     fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
@@ -438,7 +921,8 @@ impl<T: self::Ring> ::core::ops::Neg for &Rotor<T> {
 }
 ///Every basis element (the fallback output type).
 ///Basis elements (blade basis): `1`, `e1`, `e2`, `e3`, `e12`, `e13`, `e23`, `e123`.
-#[derive(Clone, PartialEq)]
+#[derive(Clone, Copy, PartialEq)]
+#[repr(C)]
 pub struct Multivector<T> {
     ///Coefficient of `1`.
     pub scalar: T,
@@ -524,13 +1008,21 @@ impl<T: self::Ring> Multivector<T> {
             e123: self.e123.mul_ref(s),
         }
     }
-    /// The sandwich `f_S(x) = rev(S) x S` of the main paper.
-    pub fn sandwich<X, Y>(&self, x: &X) -> <Y as self::GeometricProduct<Self>>::Output
+    /// The sandwich `f_S(x) = rev(S) x S` of the main paper (eq. 3); a fused kernel typed
+    /// to `x`'s type when `Self` is a versor type (see the `Sandwich` trait).
+    pub fn sandwich<X>(&self, x: &X) -> <Self as self::Sandwich<X>>::Output
     where
-        Multivector<T>: self::GeometricProduct<X, Output = Y>,
-        Y: self::GeometricProduct<Self>,
+        Self: self::Sandwich<X>,
     {
-        self::GeometricProduct::gp(&self::GeometricProduct::gp(&self.reverse(), x), self)
+        self::Sandwich::sandwich(self, x)
+    }
+    /// The action `S x rev(S)` (the klein/GATL/ganja convention); a fused kernel typed to
+    /// `x`'s type when `Self` is a versor type (see the `Apply` trait).
+    pub fn apply<X>(&self, x: &X) -> <Self as self::Apply<X>>::Output
+    where
+        Self: self::Apply<X>,
+    {
+        self::Apply::apply(self, x)
     }
     ///The reverse (a linear map; output type chosen at generation).
     pub fn reverse(&self) -> Multivector<T> {
@@ -701,6 +1193,396 @@ impl<T: self::Field> Multivector<T> {
         })
     }
 }
+impl<T: self::Ring> Multivector<T> {
+    /// The number of coefficients.
+    pub const LEN: usize = 8usize;
+    ///The basis element `e1` (coefficient 1, every other coefficient 0).
+    pub fn e1() -> Self {
+        Multivector {
+            scalar: T::zero(),
+            e1: T::one(),
+            e2: T::zero(),
+            e3: T::zero(),
+            e12: T::zero(),
+            e13: T::zero(),
+            e23: T::zero(),
+            e123: T::zero(),
+        }
+    }
+    ///The basis element `e2` (coefficient 1, every other coefficient 0).
+    pub fn e2() -> Self {
+        Multivector {
+            scalar: T::zero(),
+            e1: T::zero(),
+            e2: T::one(),
+            e3: T::zero(),
+            e12: T::zero(),
+            e13: T::zero(),
+            e23: T::zero(),
+            e123: T::zero(),
+        }
+    }
+    ///The basis element `e3` (coefficient 1, every other coefficient 0).
+    pub fn e3() -> Self {
+        Multivector {
+            scalar: T::zero(),
+            e1: T::zero(),
+            e2: T::zero(),
+            e3: T::one(),
+            e12: T::zero(),
+            e13: T::zero(),
+            e23: T::zero(),
+            e123: T::zero(),
+        }
+    }
+    ///The basis element `e12` (coefficient 1, every other coefficient 0).
+    pub fn e12() -> Self {
+        Multivector {
+            scalar: T::zero(),
+            e1: T::zero(),
+            e2: T::zero(),
+            e3: T::zero(),
+            e12: T::one(),
+            e13: T::zero(),
+            e23: T::zero(),
+            e123: T::zero(),
+        }
+    }
+    ///The basis element `e13` (coefficient 1, every other coefficient 0).
+    pub fn e13() -> Self {
+        Multivector {
+            scalar: T::zero(),
+            e1: T::zero(),
+            e2: T::zero(),
+            e3: T::zero(),
+            e12: T::zero(),
+            e13: T::one(),
+            e23: T::zero(),
+            e123: T::zero(),
+        }
+    }
+    ///The basis element `e23` (coefficient 1, every other coefficient 0).
+    pub fn e23() -> Self {
+        Multivector {
+            scalar: T::zero(),
+            e1: T::zero(),
+            e2: T::zero(),
+            e3: T::zero(),
+            e12: T::zero(),
+            e13: T::zero(),
+            e23: T::one(),
+            e123: T::zero(),
+        }
+    }
+    ///The basis element `e123` (coefficient 1, every other coefficient 0).
+    pub fn e123() -> Self {
+        Multivector {
+            scalar: T::zero(),
+            e1: T::zero(),
+            e2: T::zero(),
+            e3: T::zero(),
+            e12: T::zero(),
+            e13: T::zero(),
+            e23: T::zero(),
+            e123: T::one(),
+        }
+    }
+    /// The coefficients in the order of [`Self::ELEMENTS`] (cloned).
+    pub fn to_array(&self) -> [T; 8usize] {
+        [
+            ::core::clone::Clone::clone(&self.scalar),
+            ::core::clone::Clone::clone(&self.e1),
+            ::core::clone::Clone::clone(&self.e2),
+            ::core::clone::Clone::clone(&self.e3),
+            ::core::clone::Clone::clone(&self.e12),
+            ::core::clone::Clone::clone(&self.e13),
+            ::core::clone::Clone::clone(&self.e23),
+            ::core::clone::Clone::clone(&self.e123),
+        ]
+    }
+    /// The coefficients in the order of [`Self::ELEMENTS`] (moved out).
+    pub fn into_array(self) -> [T; 8usize] {
+        [self.scalar, self.e1, self.e2, self.e3, self.e12, self.e13, self.e23, self.e123]
+    }
+    /// A value from its coefficients in the order of [`Self::ELEMENTS`].
+    pub fn from_array(a: [T; 8usize]) -> Self {
+        let [scalar, e1, e2, e3, e12, e13, e23, e123] = a;
+        Multivector {
+            scalar,
+            e1,
+            e2,
+            e3,
+            e12,
+            e13,
+            e23,
+            e123,
+        }
+    }
+    /// An iterator over references to the coefficients, in the order of [`Self::ELEMENTS`].
+    pub fn iter(&self) -> ::core::array::IntoIter<&T, 8usize> {
+        [
+            &self.scalar,
+            &self.e1,
+            &self.e2,
+            &self.e3,
+            &self.e12,
+            &self.e13,
+            &self.e23,
+            &self.e123,
+        ]
+            .into_iter()
+    }
+    /// An iterator over mutable references to the coefficients.
+    pub fn iter_mut(&mut self) -> ::core::array::IntoIter<&mut T, 8usize> {
+        [
+            &mut self.scalar,
+            &mut self.e1,
+            &mut self.e2,
+            &mut self.e3,
+            &mut self.e12,
+            &mut self.e13,
+            &mut self.e23,
+            &mut self.e123,
+        ]
+            .into_iter()
+    }
+}
+impl<T: self::Ring> ::core::default::Default for Multivector<T> {
+    /// Zero.
+    fn default() -> Self {
+        Self::zero()
+    }
+}
+impl<T: self::Ring> ::core::convert::From<[T; 8usize]> for Multivector<T> {
+    fn from(a: [T; 8usize]) -> Self {
+        Self::from_array(a)
+    }
+}
+impl<T: self::Ring> ::core::convert::From<Multivector<T>> for [T; 8usize] {
+    fn from(x: Multivector<T>) -> Self {
+        x.into_array()
+    }
+}
+impl<T: self::Ring> ::core::ops::Index<usize> for Multivector<T> {
+    type Output = T;
+    /// The coefficient at position `i` of [`Self::ELEMENTS`]; panics if `i >= LEN`, like
+    /// an array.
+    fn index(&self, i: usize) -> &T {
+        match i {
+            0usize => &self.scalar,
+            1usize => &self.e1,
+            2usize => &self.e2,
+            3usize => &self.e3,
+            4usize => &self.e12,
+            5usize => &self.e13,
+            6usize => &self.e23,
+            7usize => &self.e123,
+            _ => {
+                panic!(
+                    "index {} out of range for {} (length {})", i,
+                    stringify!(Multivector), 8usize
+                )
+            }
+        }
+    }
+}
+impl<T: self::Ring> ::core::ops::IndexMut<usize> for Multivector<T> {
+    fn index_mut(&mut self, i: usize) -> &mut T {
+        match i {
+            0usize => &mut self.scalar,
+            1usize => &mut self.e1,
+            2usize => &mut self.e2,
+            3usize => &mut self.e3,
+            4usize => &mut self.e12,
+            5usize => &mut self.e13,
+            6usize => &mut self.e23,
+            7usize => &mut self.e123,
+            _ => {
+                panic!(
+                    "index {} out of range for {} (length {})", i,
+                    stringify!(Multivector), 8usize
+                )
+            }
+        }
+    }
+}
+impl<T: self::Ring> ::core::iter::IntoIterator for Multivector<T> {
+    type Item = T;
+    type IntoIter = ::core::array::IntoIter<T, 8usize>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.into_array().into_iter()
+    }
+}
+impl<'a, T: self::Ring> ::core::iter::IntoIterator for &'a Multivector<T> {
+    type Item = &'a T;
+    type IntoIter = ::core::array::IntoIter<&'a T, 8usize>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.iter()
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<T> for Multivector<T> {
+    type Output = Self;
+    /// `x * s`: every coefficient multiplied by `s`.
+    fn mul(self, s: T) -> Self {
+        Multivector {
+            scalar: self.scalar * &s,
+            e1: self.e1 * &s,
+            e2: self.e2 * &s,
+            e3: self.e3 * &s,
+            e12: self.e12 * &s,
+            e13: self.e13 * &s,
+            e23: self.e23 * &s,
+            e123: self.e123 * &s,
+        }
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<T> for &Multivector<T> {
+    type Output = Multivector<T>;
+    fn mul(self, s: T) -> Multivector<T> {
+        self.scale(&s)
+    }
+}
+impl<T: self::Field> ::core::ops::Div<T> for Multivector<T> {
+    type Output = Self;
+    /// `x / s`: every coefficient divided by `s`.
+    fn div(self, s: T) -> Self {
+        Multivector {
+            scalar: self.scalar.div_ref(&s),
+            e1: self.e1.div_ref(&s),
+            e2: self.e2.div_ref(&s),
+            e3: self.e3.div_ref(&s),
+            e12: self.e12.div_ref(&s),
+            e13: self.e13.div_ref(&s),
+            e23: self.e23.div_ref(&s),
+            e123: self.e123.div_ref(&s),
+        }
+    }
+}
+impl<T: self::Field> ::core::ops::Div<T> for &Multivector<T> {
+    type Output = Multivector<T>;
+    fn div(self, s: T) -> Multivector<T> {
+        Multivector {
+            scalar: self.scalar.div_ref(&s),
+            e1: self.e1.div_ref(&s),
+            e2: self.e2.div_ref(&s),
+            e3: self.e3.div_ref(&s),
+            e12: self.e12.div_ref(&s),
+            e13: self.e13.div_ref(&s),
+            e23: self.e23.div_ref(&s),
+            e123: self.e123.div_ref(&s),
+        }
+    }
+}
+impl<T: self::Ring> ::core::ops::AddAssign for Multivector<T> {
+    fn add_assign(&mut self, rhs: Self) {
+        self.scalar.add_assign_ref(&rhs.scalar);
+        self.e1.add_assign_ref(&rhs.e1);
+        self.e2.add_assign_ref(&rhs.e2);
+        self.e3.add_assign_ref(&rhs.e3);
+        self.e12.add_assign_ref(&rhs.e12);
+        self.e13.add_assign_ref(&rhs.e13);
+        self.e23.add_assign_ref(&rhs.e23);
+        self.e123.add_assign_ref(&rhs.e123);
+    }
+}
+impl<T: self::Ring> ::core::ops::SubAssign for Multivector<T> {
+    fn sub_assign(&mut self, rhs: Self) {
+        self.scalar.sub_assign_ref(&rhs.scalar);
+        self.e1.sub_assign_ref(&rhs.e1);
+        self.e2.sub_assign_ref(&rhs.e2);
+        self.e3.sub_assign_ref(&rhs.e3);
+        self.e12.sub_assign_ref(&rhs.e12);
+        self.e13.sub_assign_ref(&rhs.e13);
+        self.e23.sub_assign_ref(&rhs.e23);
+        self.e123.sub_assign_ref(&rhs.e123);
+    }
+}
+impl<T: self::Ring> ::core::ops::MulAssign<T> for Multivector<T> {
+    fn mul_assign(&mut self, s: T) {
+        self.scalar = self.scalar.mul_ref(&s);
+        self.e1 = self.e1.mul_ref(&s);
+        self.e2 = self.e2.mul_ref(&s);
+        self.e3 = self.e3.mul_ref(&s);
+        self.e12 = self.e12.mul_ref(&s);
+        self.e13 = self.e13.mul_ref(&s);
+        self.e23 = self.e23.mul_ref(&s);
+        self.e123 = self.e123.mul_ref(&s);
+    }
+}
+impl<T: self::Field> ::core::ops::DivAssign<T> for Multivector<T> {
+    fn div_assign(&mut self, s: T) {
+        self.scalar = self.scalar.div_ref(&s);
+        self.e1 = self.e1.div_ref(&s);
+        self.e2 = self.e2.div_ref(&s);
+        self.e3 = self.e3.div_ref(&s);
+        self.e12 = self.e12.div_ref(&s);
+        self.e13 = self.e13.div_ref(&s);
+        self.e23 = self.e23.div_ref(&s);
+        self.e123 = self.e123.div_ref(&s);
+    }
+}
+impl ::core::ops::Mul<Multivector<f32>> for f32 {
+    type Output = Multivector<f32>;
+    /// `s * x`: every coefficient multiplied by `s`.
+    fn mul(self, x: Multivector<f32>) -> Multivector<f32> {
+        Multivector {
+            scalar: self * x.scalar,
+            e1: self * x.e1,
+            e2: self * x.e2,
+            e3: self * x.e3,
+            e12: self * x.e12,
+            e13: self * x.e13,
+            e23: self * x.e23,
+            e123: self * x.e123,
+        }
+    }
+}
+impl ::core::ops::Mul<&Multivector<f32>> for f32 {
+    type Output = Multivector<f32>;
+    fn mul(self, x: &Multivector<f32>) -> Multivector<f32> {
+        Multivector {
+            scalar: self * x.scalar,
+            e1: self * x.e1,
+            e2: self * x.e2,
+            e3: self * x.e3,
+            e12: self * x.e12,
+            e13: self * x.e13,
+            e23: self * x.e23,
+            e123: self * x.e123,
+        }
+    }
+}
+impl ::core::ops::Mul<Multivector<f64>> for f64 {
+    type Output = Multivector<f64>;
+    /// `s * x`: every coefficient multiplied by `s`.
+    fn mul(self, x: Multivector<f64>) -> Multivector<f64> {
+        Multivector {
+            scalar: self * x.scalar,
+            e1: self * x.e1,
+            e2: self * x.e2,
+            e3: self * x.e3,
+            e12: self * x.e12,
+            e13: self * x.e13,
+            e23: self * x.e23,
+            e123: self * x.e123,
+        }
+    }
+}
+impl ::core::ops::Mul<&Multivector<f64>> for f64 {
+    type Output = Multivector<f64>;
+    fn mul(self, x: &Multivector<f64>) -> Multivector<f64> {
+        Multivector {
+            scalar: self * x.scalar,
+            e1: self * x.e1,
+            e2: self * x.e2,
+            e3: self * x.e3,
+            e12: self * x.e12,
+            e13: self * x.e13,
+            e23: self * x.e23,
+            e123: self * x.e123,
+        }
+    }
+}
 impl<T: self::Ring> ::core::fmt::Display for Multivector<T> {
     /// A sum of basis elements: `1 + 1/2*e1inf`; `0` for zero.
     fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
@@ -854,6 +1736,18 @@ impl<T: self::Ring> ::core::ops::Mul<Vector<T>> for Vector<T> {
         self::GeometricProduct::gp(&self, &rhs)
     }
 }
+impl<T: self::Ring> ::core::ops::Mul<&Vector<T>> for Vector<T> {
+    type Output = Rotor<T>;
+    fn mul(self, rhs: &Vector<T>) -> Rotor<T> {
+        self::GeometricProduct::gp(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<Vector<T>> for &Vector<T> {
+    type Output = Rotor<T>;
+    fn mul(self, rhs: Vector<T>) -> Rotor<T> {
+        self::GeometricProduct::gp(self, &rhs)
+    }
+}
 impl<T: self::Ring> self::GeometricProduct<Rotor<T>> for Vector<T> {
     type Output = Multivector<T>;
     #[inline]
@@ -892,6 +1786,18 @@ impl<T: self::Ring> ::core::ops::Mul<Rotor<T>> for Vector<T> {
     type Output = Multivector<T>;
     fn mul(self, rhs: Rotor<T>) -> Multivector<T> {
         self::GeometricProduct::gp(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<&Rotor<T>> for Vector<T> {
+    type Output = Multivector<T>;
+    fn mul(self, rhs: &Rotor<T>) -> Multivector<T> {
+        self::GeometricProduct::gp(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<Rotor<T>> for &Vector<T> {
+    type Output = Multivector<T>;
+    fn mul(self, rhs: Rotor<T>) -> Multivector<T> {
+        self::GeometricProduct::gp(self, &rhs)
     }
 }
 impl<T: self::Ring> self::GeometricProduct<Multivector<T>> for Vector<T> {
@@ -946,6 +1852,18 @@ impl<T: self::Ring> ::core::ops::Mul<Multivector<T>> for Vector<T> {
         self::GeometricProduct::gp(&self, &rhs)
     }
 }
+impl<T: self::Ring> ::core::ops::Mul<&Multivector<T>> for Vector<T> {
+    type Output = Multivector<T>;
+    fn mul(self, rhs: &Multivector<T>) -> Multivector<T> {
+        self::GeometricProduct::gp(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<Multivector<T>> for &Vector<T> {
+    type Output = Multivector<T>;
+    fn mul(self, rhs: Multivector<T>) -> Multivector<T> {
+        self::GeometricProduct::gp(self, &rhs)
+    }
+}
 impl<T: self::Ring> self::GeometricProduct<Vector<T>> for Rotor<T> {
     type Output = Multivector<T>;
     #[inline]
@@ -986,6 +1904,18 @@ impl<T: self::Ring> ::core::ops::Mul<Vector<T>> for Rotor<T> {
         self::GeometricProduct::gp(&self, &rhs)
     }
 }
+impl<T: self::Ring> ::core::ops::Mul<&Vector<T>> for Rotor<T> {
+    type Output = Multivector<T>;
+    fn mul(self, rhs: &Vector<T>) -> Multivector<T> {
+        self::GeometricProduct::gp(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<Vector<T>> for &Rotor<T> {
+    type Output = Multivector<T>;
+    fn mul(self, rhs: Vector<T>) -> Multivector<T> {
+        self::GeometricProduct::gp(self, &rhs)
+    }
+}
 impl<T: self::Ring> self::GeometricProduct<Rotor<T>> for Rotor<T> {
     type Output = Rotor<T>;
     #[inline]
@@ -1024,6 +1954,18 @@ impl<T: self::Ring> ::core::ops::Mul<Rotor<T>> for Rotor<T> {
     type Output = Rotor<T>;
     fn mul(self, rhs: Rotor<T>) -> Rotor<T> {
         self::GeometricProduct::gp(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<&Rotor<T>> for Rotor<T> {
+    type Output = Rotor<T>;
+    fn mul(self, rhs: &Rotor<T>) -> Rotor<T> {
+        self::GeometricProduct::gp(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<Rotor<T>> for &Rotor<T> {
+    type Output = Rotor<T>;
+    fn mul(self, rhs: Rotor<T>) -> Rotor<T> {
+        self::GeometricProduct::gp(self, &rhs)
     }
 }
 impl<T: self::Ring> self::GeometricProduct<Multivector<T>> for Rotor<T> {
@@ -1086,6 +2028,18 @@ impl<T: self::Ring> ::core::ops::Mul<Multivector<T>> for Rotor<T> {
         self::GeometricProduct::gp(&self, &rhs)
     }
 }
+impl<T: self::Ring> ::core::ops::Mul<&Multivector<T>> for Rotor<T> {
+    type Output = Multivector<T>;
+    fn mul(self, rhs: &Multivector<T>) -> Multivector<T> {
+        self::GeometricProduct::gp(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<Multivector<T>> for &Rotor<T> {
+    type Output = Multivector<T>;
+    fn mul(self, rhs: Multivector<T>) -> Multivector<T> {
+        self::GeometricProduct::gp(self, &rhs)
+    }
+}
 impl<T: self::Ring> self::GeometricProduct<Vector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
@@ -1136,6 +2090,18 @@ impl<T: self::Ring> ::core::ops::Mul<Vector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     fn mul(self, rhs: Vector<T>) -> Multivector<T> {
         self::GeometricProduct::gp(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<&Vector<T>> for Multivector<T> {
+    type Output = Multivector<T>;
+    fn mul(self, rhs: &Vector<T>) -> Multivector<T> {
+        self::GeometricProduct::gp(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<Vector<T>> for &Multivector<T> {
+    type Output = Multivector<T>;
+    fn mul(self, rhs: Vector<T>) -> Multivector<T> {
+        self::GeometricProduct::gp(self, &rhs)
     }
 }
 impl<T: self::Ring> self::GeometricProduct<Rotor<T>> for Multivector<T> {
@@ -1196,6 +2162,18 @@ impl<T: self::Ring> ::core::ops::Mul<Rotor<T>> for Multivector<T> {
     type Output = Multivector<T>;
     fn mul(self, rhs: Rotor<T>) -> Multivector<T> {
         self::GeometricProduct::gp(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<&Rotor<T>> for Multivector<T> {
+    type Output = Multivector<T>;
+    fn mul(self, rhs: &Rotor<T>) -> Multivector<T> {
+        self::GeometricProduct::gp(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<Rotor<T>> for &Multivector<T> {
+    type Output = Multivector<T>;
+    fn mul(self, rhs: Rotor<T>) -> Multivector<T> {
+        self::GeometricProduct::gp(self, &rhs)
     }
 }
 impl<T: self::Ring> self::GeometricProduct<Multivector<T>> for Multivector<T> {
@@ -1290,6 +2268,18 @@ impl<T: self::Ring> ::core::ops::Mul<Multivector<T>> for Multivector<T> {
         self::GeometricProduct::gp(&self, &rhs)
     }
 }
+impl<T: self::Ring> ::core::ops::Mul<&Multivector<T>> for Multivector<T> {
+    type Output = Multivector<T>;
+    fn mul(self, rhs: &Multivector<T>) -> Multivector<T> {
+        self::GeometricProduct::gp(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<Multivector<T>> for &Multivector<T> {
+    type Output = Multivector<T>;
+    fn mul(self, rhs: Multivector<T>) -> Multivector<T> {
+        self::GeometricProduct::gp(self, &rhs)
+    }
+}
 impl<T: self::Ring> self::OuterProduct<Vector<T>> for Vector<T> {
     type Output = Rotor<T>;
     #[inline]
@@ -1318,6 +2308,18 @@ impl<T: self::Ring> ::core::ops::BitXor<Vector<T>> for Vector<T> {
     type Output = Rotor<T>;
     fn bitxor(self, rhs: Vector<T>) -> Rotor<T> {
         self::OuterProduct::op(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitXor<&Vector<T>> for Vector<T> {
+    type Output = Rotor<T>;
+    fn bitxor(self, rhs: &Vector<T>) -> Rotor<T> {
+        self::OuterProduct::op(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitXor<Vector<T>> for &Vector<T> {
+    type Output = Rotor<T>;
+    fn bitxor(self, rhs: Vector<T>) -> Rotor<T> {
+        self::OuterProduct::op(self, &rhs)
     }
 }
 impl<T: self::Ring> self::OuterProduct<Rotor<T>> for Vector<T> {
@@ -1352,6 +2354,18 @@ impl<T: self::Ring> ::core::ops::BitXor<Rotor<T>> for Vector<T> {
     type Output = Multivector<T>;
     fn bitxor(self, rhs: Rotor<T>) -> Multivector<T> {
         self::OuterProduct::op(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitXor<&Rotor<T>> for Vector<T> {
+    type Output = Multivector<T>;
+    fn bitxor(self, rhs: &Rotor<T>) -> Multivector<T> {
+        self::OuterProduct::op(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitXor<Rotor<T>> for &Vector<T> {
+    type Output = Multivector<T>;
+    fn bitxor(self, rhs: Rotor<T>) -> Multivector<T> {
+        self::OuterProduct::op(self, &rhs)
     }
 }
 impl<T: self::Ring> self::OuterProduct<Multivector<T>> for Vector<T> {
@@ -1394,6 +2408,18 @@ impl<T: self::Ring> ::core::ops::BitXor<Multivector<T>> for Vector<T> {
         self::OuterProduct::op(&self, &rhs)
     }
 }
+impl<T: self::Ring> ::core::ops::BitXor<&Multivector<T>> for Vector<T> {
+    type Output = Multivector<T>;
+    fn bitxor(self, rhs: &Multivector<T>) -> Multivector<T> {
+        self::OuterProduct::op(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitXor<Multivector<T>> for &Vector<T> {
+    type Output = Multivector<T>;
+    fn bitxor(self, rhs: Multivector<T>) -> Multivector<T> {
+        self::OuterProduct::op(self, &rhs)
+    }
+}
 impl<T: self::Ring> self::OuterProduct<Vector<T>> for Rotor<T> {
     type Output = Multivector<T>;
     #[inline]
@@ -1428,6 +2454,18 @@ impl<T: self::Ring> ::core::ops::BitXor<Vector<T>> for Rotor<T> {
         self::OuterProduct::op(&self, &rhs)
     }
 }
+impl<T: self::Ring> ::core::ops::BitXor<&Vector<T>> for Rotor<T> {
+    type Output = Multivector<T>;
+    fn bitxor(self, rhs: &Vector<T>) -> Multivector<T> {
+        self::OuterProduct::op(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitXor<Vector<T>> for &Rotor<T> {
+    type Output = Multivector<T>;
+    fn bitxor(self, rhs: Vector<T>) -> Multivector<T> {
+        self::OuterProduct::op(self, &rhs)
+    }
+}
 impl<T: self::Ring> self::OuterProduct<Rotor<T>> for Rotor<T> {
     type Output = Rotor<T>;
     #[inline]
@@ -1457,6 +2495,18 @@ impl<T: self::Ring> ::core::ops::BitXor<Rotor<T>> for Rotor<T> {
     type Output = Rotor<T>;
     fn bitxor(self, rhs: Rotor<T>) -> Rotor<T> {
         self::OuterProduct::op(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitXor<&Rotor<T>> for Rotor<T> {
+    type Output = Rotor<T>;
+    fn bitxor(self, rhs: &Rotor<T>) -> Rotor<T> {
+        self::OuterProduct::op(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitXor<Rotor<T>> for &Rotor<T> {
+    type Output = Rotor<T>;
+    fn bitxor(self, rhs: Rotor<T>) -> Rotor<T> {
+        self::OuterProduct::op(self, &rhs)
     }
 }
 impl<T: self::Ring> self::OuterProduct<Multivector<T>> for Rotor<T> {
@@ -1501,6 +2551,18 @@ impl<T: self::Ring> ::core::ops::BitXor<Multivector<T>> for Rotor<T> {
         self::OuterProduct::op(&self, &rhs)
     }
 }
+impl<T: self::Ring> ::core::ops::BitXor<&Multivector<T>> for Rotor<T> {
+    type Output = Multivector<T>;
+    fn bitxor(self, rhs: &Multivector<T>) -> Multivector<T> {
+        self::OuterProduct::op(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitXor<Multivector<T>> for &Rotor<T> {
+    type Output = Multivector<T>;
+    fn bitxor(self, rhs: Multivector<T>) -> Multivector<T> {
+        self::OuterProduct::op(self, &rhs)
+    }
+}
 impl<T: self::Ring> self::OuterProduct<Vector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
@@ -1539,6 +2601,18 @@ impl<T: self::Ring> ::core::ops::BitXor<Vector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     fn bitxor(self, rhs: Vector<T>) -> Multivector<T> {
         self::OuterProduct::op(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitXor<&Vector<T>> for Multivector<T> {
+    type Output = Multivector<T>;
+    fn bitxor(self, rhs: &Vector<T>) -> Multivector<T> {
+        self::OuterProduct::op(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitXor<Vector<T>> for &Multivector<T> {
+    type Output = Multivector<T>;
+    fn bitxor(self, rhs: Vector<T>) -> Multivector<T> {
+        self::OuterProduct::op(self, &rhs)
     }
 }
 impl<T: self::Ring> self::OuterProduct<Rotor<T>> for Multivector<T> {
@@ -1581,6 +2655,18 @@ impl<T: self::Ring> ::core::ops::BitXor<Rotor<T>> for Multivector<T> {
     type Output = Multivector<T>;
     fn bitxor(self, rhs: Rotor<T>) -> Multivector<T> {
         self::OuterProduct::op(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitXor<&Rotor<T>> for Multivector<T> {
+    type Output = Multivector<T>;
+    fn bitxor(self, rhs: &Rotor<T>) -> Multivector<T> {
+        self::OuterProduct::op(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitXor<Rotor<T>> for &Multivector<T> {
+    type Output = Multivector<T>;
+    fn bitxor(self, rhs: Rotor<T>) -> Multivector<T> {
+        self::OuterProduct::op(self, &rhs)
     }
 }
 impl<T: self::Ring> self::OuterProduct<Multivector<T>> for Multivector<T> {
@@ -1638,6 +2724,18 @@ impl<T: self::Ring> ::core::ops::BitXor<Multivector<T>> for Multivector<T> {
         self::OuterProduct::op(&self, &rhs)
     }
 }
+impl<T: self::Ring> ::core::ops::BitXor<&Multivector<T>> for Multivector<T> {
+    type Output = Multivector<T>;
+    fn bitxor(self, rhs: &Multivector<T>) -> Multivector<T> {
+        self::OuterProduct::op(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitXor<Multivector<T>> for &Multivector<T> {
+    type Output = Multivector<T>;
+    fn bitxor(self, rhs: Multivector<T>) -> Multivector<T> {
+        self::OuterProduct::op(self, &rhs)
+    }
+}
 impl<T: self::Ring> self::LeftContraction<Vector<T>> for Vector<T> {
     type Output = Rotor<T>;
     #[inline]
@@ -1663,6 +2761,18 @@ impl<T: self::Ring> ::core::ops::BitOr<Vector<T>> for Vector<T> {
     type Output = Rotor<T>;
     fn bitor(self, rhs: Vector<T>) -> Rotor<T> {
         self::LeftContraction::lc(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitOr<&Vector<T>> for Vector<T> {
+    type Output = Rotor<T>;
+    fn bitor(self, rhs: &Vector<T>) -> Rotor<T> {
+        self::LeftContraction::lc(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitOr<Vector<T>> for &Vector<T> {
+    type Output = Rotor<T>;
+    fn bitor(self, rhs: Vector<T>) -> Rotor<T> {
+        self::LeftContraction::lc(self, &rhs)
     }
 }
 impl<T: self::Ring> self::LeftContraction<Rotor<T>> for Vector<T> {
@@ -1692,6 +2802,18 @@ impl<T: self::Ring> ::core::ops::BitOr<Rotor<T>> for Vector<T> {
     type Output = Vector<T>;
     fn bitor(self, rhs: Rotor<T>) -> Vector<T> {
         self::LeftContraction::lc(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitOr<&Rotor<T>> for Vector<T> {
+    type Output = Vector<T>;
+    fn bitor(self, rhs: &Rotor<T>) -> Vector<T> {
+        self::LeftContraction::lc(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitOr<Rotor<T>> for &Vector<T> {
+    type Output = Vector<T>;
+    fn bitor(self, rhs: Rotor<T>) -> Vector<T> {
+        self::LeftContraction::lc(self, &rhs)
     }
 }
 impl<T: self::Ring> self::LeftContraction<Multivector<T>> for Vector<T> {
@@ -1734,6 +2856,18 @@ impl<T: self::Ring> ::core::ops::BitOr<Multivector<T>> for Vector<T> {
         self::LeftContraction::lc(&self, &rhs)
     }
 }
+impl<T: self::Ring> ::core::ops::BitOr<&Multivector<T>> for Vector<T> {
+    type Output = Multivector<T>;
+    fn bitor(self, rhs: &Multivector<T>) -> Multivector<T> {
+        self::LeftContraction::lc(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitOr<Multivector<T>> for &Vector<T> {
+    type Output = Multivector<T>;
+    fn bitor(self, rhs: Multivector<T>) -> Multivector<T> {
+        self::LeftContraction::lc(self, &rhs)
+    }
+}
 impl<T: self::Ring> self::LeftContraction<Vector<T>> for Rotor<T> {
     type Output = Vector<T>;
     #[inline]
@@ -1758,6 +2892,18 @@ impl<T: self::Ring> ::core::ops::BitOr<Vector<T>> for Rotor<T> {
     type Output = Vector<T>;
     fn bitor(self, rhs: Vector<T>) -> Vector<T> {
         self::LeftContraction::lc(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitOr<&Vector<T>> for Rotor<T> {
+    type Output = Vector<T>;
+    fn bitor(self, rhs: &Vector<T>) -> Vector<T> {
+        self::LeftContraction::lc(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitOr<Vector<T>> for &Rotor<T> {
+    type Output = Vector<T>;
+    fn bitor(self, rhs: Vector<T>) -> Vector<T> {
+        self::LeftContraction::lc(self, &rhs)
     }
 }
 impl<T: self::Ring> self::LeftContraction<Rotor<T>> for Rotor<T> {
@@ -1789,6 +2935,18 @@ impl<T: self::Ring> ::core::ops::BitOr<Rotor<T>> for Rotor<T> {
     type Output = Rotor<T>;
     fn bitor(self, rhs: Rotor<T>) -> Rotor<T> {
         self::LeftContraction::lc(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitOr<&Rotor<T>> for Rotor<T> {
+    type Output = Rotor<T>;
+    fn bitor(self, rhs: &Rotor<T>) -> Rotor<T> {
+        self::LeftContraction::lc(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitOr<Rotor<T>> for &Rotor<T> {
+    type Output = Rotor<T>;
+    fn bitor(self, rhs: Rotor<T>) -> Rotor<T> {
+        self::LeftContraction::lc(self, &rhs)
     }
 }
 impl<T: self::Ring> self::LeftContraction<Multivector<T>> for Rotor<T> {
@@ -1833,6 +2991,18 @@ impl<T: self::Ring> ::core::ops::BitOr<Multivector<T>> for Rotor<T> {
         self::LeftContraction::lc(&self, &rhs)
     }
 }
+impl<T: self::Ring> ::core::ops::BitOr<&Multivector<T>> for Rotor<T> {
+    type Output = Multivector<T>;
+    fn bitor(self, rhs: &Multivector<T>) -> Multivector<T> {
+        self::LeftContraction::lc(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitOr<Multivector<T>> for &Rotor<T> {
+    type Output = Multivector<T>;
+    fn bitor(self, rhs: Multivector<T>) -> Multivector<T> {
+        self::LeftContraction::lc(self, &rhs)
+    }
+}
 impl<T: self::Ring> self::LeftContraction<Vector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
@@ -1865,6 +3035,18 @@ impl<T: self::Ring> ::core::ops::BitOr<Vector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     fn bitor(self, rhs: Vector<T>) -> Multivector<T> {
         self::LeftContraction::lc(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitOr<&Vector<T>> for Multivector<T> {
+    type Output = Multivector<T>;
+    fn bitor(self, rhs: &Vector<T>) -> Multivector<T> {
+        self::LeftContraction::lc(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitOr<Vector<T>> for &Multivector<T> {
+    type Output = Multivector<T>;
+    fn bitor(self, rhs: Vector<T>) -> Multivector<T> {
+        self::LeftContraction::lc(self, &rhs)
     }
 }
 impl<T: self::Ring> self::LeftContraction<Rotor<T>> for Multivector<T> {
@@ -1906,6 +3088,18 @@ impl<T: self::Ring> ::core::ops::BitOr<Rotor<T>> for Multivector<T> {
     type Output = Multivector<T>;
     fn bitor(self, rhs: Rotor<T>) -> Multivector<T> {
         self::LeftContraction::lc(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitOr<&Rotor<T>> for Multivector<T> {
+    type Output = Multivector<T>;
+    fn bitor(self, rhs: &Rotor<T>) -> Multivector<T> {
+        self::LeftContraction::lc(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitOr<Rotor<T>> for &Multivector<T> {
+    type Output = Multivector<T>;
+    fn bitor(self, rhs: Rotor<T>) -> Multivector<T> {
+        self::LeftContraction::lc(self, &rhs)
     }
 }
 impl<T: self::Ring> self::LeftContraction<Multivector<T>> for Multivector<T> {
@@ -1961,6 +3155,18 @@ impl<T: self::Ring> ::core::ops::BitOr<Multivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     fn bitor(self, rhs: Multivector<T>) -> Multivector<T> {
         self::LeftContraction::lc(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitOr<&Multivector<T>> for Multivector<T> {
+    type Output = Multivector<T>;
+    fn bitor(self, rhs: &Multivector<T>) -> Multivector<T> {
+        self::LeftContraction::lc(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitOr<Multivector<T>> for &Multivector<T> {
+    type Output = Multivector<T>;
+    fn bitor(self, rhs: Multivector<T>) -> Multivector<T> {
+        self::LeftContraction::lc(self, &rhs)
     }
 }
 impl<T: self::Ring> self::RightContraction<Vector<T>> for Vector<T> {
@@ -3077,6 +4283,262 @@ impl<T: self::Ring> Multivector<T> {
         }
     }
 }
+impl<T: self::Ring> self::Sandwich<Vector<T>> for Vector<T> {
+    type Output = Vector<T>;
+    ///`rev(self) x self` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
+    #[inline]
+    fn sandwich(&self, x: &Vector<T>) -> Vector<T> {
+        let t0 = (self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2))
+            + &(self.e3.mul_ref(&x.e3));
+        let t1 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1));
+        let t2 = (self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1));
+        let t3 = (self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2));
+        Vector {
+            e1: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
+                + &(t2.mul_ref(&self.e3)),
+            e2: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
+                + &(t3.mul_ref(&self.e3)),
+            e3: (t0.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e1))
+                - &(t3.mul_ref(&self.e2)),
+        }
+    }
+}
+impl<T: self::Ring> self::Apply<Vector<T>> for Vector<T> {
+    type Output = Vector<T>;
+    ///`self x rev(self)` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
+    #[inline]
+    fn apply(&self, x: &Vector<T>) -> Vector<T> {
+        let t0 = (self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2))
+            + &(self.e3.mul_ref(&x.e3));
+        let t1 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1));
+        let t2 = (self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1));
+        let t3 = (self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2));
+        Vector {
+            e1: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
+                + &(t2.mul_ref(&self.e3)),
+            e2: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
+                + &(t3.mul_ref(&self.e3)),
+            e3: (t0.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e1))
+                - &(t3.mul_ref(&self.e2)),
+        }
+    }
+}
+impl<T: self::Ring> self::Sandwich<Rotor<T>> for Vector<T> {
+    type Output = Rotor<T>;
+    ///`rev(self) x self` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
+    #[inline]
+    fn sandwich(&self, x: &Rotor<T>) -> Rotor<T> {
+        let t0 = (self.e1.mul_ref(&x.scalar)) - &(self.e2.mul_ref(&x.e12))
+            - &(self.e3.mul_ref(&x.e13));
+        let t1 = (self.e1.mul_ref(&x.e12)) + &(self.e2.mul_ref(&x.scalar))
+            - &(self.e3.mul_ref(&x.e23));
+        let t2 = (self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23))
+            + &(self.e3.mul_ref(&x.scalar));
+        let t3 = (self.e1.mul_ref(&x.e23)) - &(self.e2.mul_ref(&x.e13))
+            + &(self.e3.mul_ref(&x.e12));
+        Rotor {
+            scalar: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
+                + &(t2.mul_ref(&self.e3)),
+            e12: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
+                + &(t3.mul_ref(&self.e3)),
+            e13: (t0.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e1))
+                - &(t3.mul_ref(&self.e2)),
+            e23: (t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e2))
+                + &(t3.mul_ref(&self.e1)),
+        }
+    }
+}
+impl<T: self::Ring> self::Apply<Rotor<T>> for Vector<T> {
+    type Output = Rotor<T>;
+    ///`self x rev(self)` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
+    #[inline]
+    fn apply(&self, x: &Rotor<T>) -> Rotor<T> {
+        let t0 = (self.e1.mul_ref(&x.scalar)) - &(self.e2.mul_ref(&x.e12))
+            - &(self.e3.mul_ref(&x.e13));
+        let t1 = (self.e1.mul_ref(&x.e12)) + &(self.e2.mul_ref(&x.scalar))
+            - &(self.e3.mul_ref(&x.e23));
+        let t2 = (self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23))
+            + &(self.e3.mul_ref(&x.scalar));
+        let t3 = (self.e1.mul_ref(&x.e23)) - &(self.e2.mul_ref(&x.e13))
+            + &(self.e3.mul_ref(&x.e12));
+        Rotor {
+            scalar: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
+                + &(t2.mul_ref(&self.e3)),
+            e12: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
+                + &(t3.mul_ref(&self.e3)),
+            e13: (t0.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e1))
+                - &(t3.mul_ref(&self.e2)),
+            e23: (t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e2))
+                + &(t3.mul_ref(&self.e1)),
+        }
+    }
+}
+impl<T: self::Ring> self::Sandwich<Vector<T>> for Rotor<T> {
+    type Output = Vector<T>;
+    ///`rev(self) x self` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
+    #[inline]
+    fn sandwich(&self, x: &Vector<T>) -> Vector<T> {
+        let t0 = (self.scalar.mul_ref(&x.e1)) - &(self.e12.mul_ref(&x.e2))
+            - &(self.e13.mul_ref(&x.e3));
+        let t1 = (self.scalar.mul_ref(&x.e2)) + &(self.e12.mul_ref(&x.e1))
+            - &(self.e23.mul_ref(&x.e3));
+        let t2 = (self.scalar.mul_ref(&x.e3)) + &(self.e13.mul_ref(&x.e1))
+            + &(self.e23.mul_ref(&x.e2));
+        let t3 = (self.e13.mul_ref(&x.e2)) - &(self.e12.mul_ref(&x.e3))
+            - &(self.e23.mul_ref(&x.e1));
+        Vector {
+            e1: (t0.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e12))
+                - &(t2.mul_ref(&self.e13)) - &(t3.mul_ref(&self.e23)),
+            e2: (t0.mul_ref(&self.e12)) + &(t1.mul_ref(&self.scalar))
+                - &(t2.mul_ref(&self.e23)) + &(t3.mul_ref(&self.e13)),
+            e3: (t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23))
+                + &(t2.mul_ref(&self.scalar)) - &(t3.mul_ref(&self.e12)),
+        }
+    }
+}
+impl<T: self::Ring> self::Apply<Vector<T>> for Rotor<T> {
+    type Output = Vector<T>;
+    ///`self x rev(self)` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
+    #[inline]
+    fn apply(&self, x: &Vector<T>) -> Vector<T> {
+        let t0 = (self.scalar.mul_ref(&x.e1)) + &(self.e12.mul_ref(&x.e2))
+            + &(self.e13.mul_ref(&x.e3));
+        let t1 = (self.scalar.mul_ref(&x.e2)) - &(self.e12.mul_ref(&x.e1))
+            + &(self.e23.mul_ref(&x.e3));
+        let t2 = (self.scalar.mul_ref(&x.e3)) - &(self.e13.mul_ref(&x.e1))
+            - &(self.e23.mul_ref(&x.e2));
+        let t3 = (self.e12.mul_ref(&x.e3)) - &(self.e13.mul_ref(&x.e2))
+            + &(self.e23.mul_ref(&x.e1));
+        Vector {
+            e1: (t0.mul_ref(&self.scalar)) + &(t1.mul_ref(&self.e12))
+                + &(t2.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e23)),
+            e2: (t1.mul_ref(&self.scalar)) - &(t0.mul_ref(&self.e12))
+                + &(t2.mul_ref(&self.e23)) - &(t3.mul_ref(&self.e13)),
+            e3: (t2.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e23))
+                - &(t0.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e12)),
+        }
+    }
+}
+impl<T: self::Ring> self::Sandwich<Rotor<T>> for Rotor<T> {
+    type Output = Rotor<T>;
+    ///`rev(self) x self` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
+    #[inline]
+    fn sandwich(&self, x: &Rotor<T>) -> Rotor<T> {
+        let t0 = (self.scalar.mul_ref(&x.scalar)) + &(self.e12.mul_ref(&x.e12))
+            + &(self.e13.mul_ref(&x.e13)) + &(self.e23.mul_ref(&x.e23));
+        let t1 = (self.scalar.mul_ref(&x.e12)) - &(self.e12.mul_ref(&x.scalar))
+            + &(self.e13.mul_ref(&x.e23)) - &(self.e23.mul_ref(&x.e13));
+        let t2 = (self.scalar.mul_ref(&x.e13)) - &(self.e12.mul_ref(&x.e23))
+            - &(self.e13.mul_ref(&x.scalar)) + &(self.e23.mul_ref(&x.e12));
+        let t3 = (self.scalar.mul_ref(&x.e23)) + &(self.e12.mul_ref(&x.e13))
+            - &(self.e13.mul_ref(&x.e12)) - &(self.e23.mul_ref(&x.scalar));
+        Rotor {
+            scalar: (t0.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e12))
+                - &(t2.mul_ref(&self.e13)) - &(t3.mul_ref(&self.e23)),
+            e12: (t0.mul_ref(&self.e12)) + &(t1.mul_ref(&self.scalar))
+                - &(t2.mul_ref(&self.e23)) + &(t3.mul_ref(&self.e13)),
+            e13: (t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23))
+                + &(t2.mul_ref(&self.scalar)) - &(t3.mul_ref(&self.e12)),
+            e23: (t0.mul_ref(&self.e23)) - &(t1.mul_ref(&self.e13))
+                + &(t2.mul_ref(&self.e12)) + &(t3.mul_ref(&self.scalar)),
+        }
+    }
+}
+impl<T: self::Ring> self::Apply<Rotor<T>> for Rotor<T> {
+    type Output = Rotor<T>;
+    ///`self x rev(self)` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
+    #[inline]
+    fn apply(&self, x: &Rotor<T>) -> Rotor<T> {
+        let t0 = (self.scalar.mul_ref(&x.scalar)) - &(self.e12.mul_ref(&x.e12))
+            - &(self.e13.mul_ref(&x.e13)) - &(self.e23.mul_ref(&x.e23));
+        let t1 = (self.scalar.mul_ref(&x.e12)) + &(self.e12.mul_ref(&x.scalar))
+            - &(self.e13.mul_ref(&x.e23)) + &(self.e23.mul_ref(&x.e13));
+        let t2 = (self.scalar.mul_ref(&x.e13)) + &(self.e12.mul_ref(&x.e23))
+            + &(self.e13.mul_ref(&x.scalar)) - &(self.e23.mul_ref(&x.e12));
+        let t3 = (self.scalar.mul_ref(&x.e23)) - &(self.e12.mul_ref(&x.e13))
+            + &(self.e13.mul_ref(&x.e12)) + &(self.e23.mul_ref(&x.scalar));
+        Rotor {
+            scalar: (t0.mul_ref(&self.scalar)) + &(t1.mul_ref(&self.e12))
+                + &(t2.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e23)),
+            e12: (t1.mul_ref(&self.scalar)) - &(t0.mul_ref(&self.e12))
+                + &(t2.mul_ref(&self.e23)) - &(t3.mul_ref(&self.e13)),
+            e13: (t2.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e23))
+                - &(t0.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e12)),
+            e23: (t1.mul_ref(&self.e13)) - &(t0.mul_ref(&self.e23))
+                - &(t2.mul_ref(&self.e12)) + &(t3.mul_ref(&self.scalar)),
+        }
+    }
+}
+impl<T: self::Ring> self::Sandwich<Multivector<T>> for Vector<T> {
+    type Output = Multivector<T>;
+    /// `rev(self) x self` as two full products (no fused kernel for this pair).
+    fn sandwich(&self, x: &Multivector<T>) -> Multivector<T> {
+        self::GeometricProduct::gp(&self::GeometricProduct::gp(&self.reverse(), x), self)
+    }
+}
+impl<T: self::Ring> self::Apply<Multivector<T>> for Vector<T> {
+    type Output = Multivector<T>;
+    /// `self x rev(self)` as two full products (no fused kernel for this pair).
+    fn apply(&self, x: &Multivector<T>) -> Multivector<T> {
+        self::GeometricProduct::gp(&self::GeometricProduct::gp(self, x), &self.reverse())
+    }
+}
+impl<T: self::Ring> self::Sandwich<Multivector<T>> for Rotor<T> {
+    type Output = Multivector<T>;
+    /// `rev(self) x self` as two full products (no fused kernel for this pair).
+    fn sandwich(&self, x: &Multivector<T>) -> Multivector<T> {
+        self::GeometricProduct::gp(&self::GeometricProduct::gp(&self.reverse(), x), self)
+    }
+}
+impl<T: self::Ring> self::Apply<Multivector<T>> for Rotor<T> {
+    type Output = Multivector<T>;
+    /// `self x rev(self)` as two full products (no fused kernel for this pair).
+    fn apply(&self, x: &Multivector<T>) -> Multivector<T> {
+        self::GeometricProduct::gp(&self::GeometricProduct::gp(self, x), &self.reverse())
+    }
+}
+impl<T: self::Ring> self::Sandwich<Vector<T>> for Multivector<T> {
+    type Output = Multivector<T>;
+    /// `rev(self) x self` as two full products (no fused kernel for this pair).
+    fn sandwich(&self, x: &Vector<T>) -> Multivector<T> {
+        self::GeometricProduct::gp(&self::GeometricProduct::gp(&self.reverse(), x), self)
+    }
+}
+impl<T: self::Ring> self::Apply<Vector<T>> for Multivector<T> {
+    type Output = Multivector<T>;
+    /// `self x rev(self)` as two full products (no fused kernel for this pair).
+    fn apply(&self, x: &Vector<T>) -> Multivector<T> {
+        self::GeometricProduct::gp(&self::GeometricProduct::gp(self, x), &self.reverse())
+    }
+}
+impl<T: self::Ring> self::Sandwich<Rotor<T>> for Multivector<T> {
+    type Output = Multivector<T>;
+    /// `rev(self) x self` as two full products (no fused kernel for this pair).
+    fn sandwich(&self, x: &Rotor<T>) -> Multivector<T> {
+        self::GeometricProduct::gp(&self::GeometricProduct::gp(&self.reverse(), x), self)
+    }
+}
+impl<T: self::Ring> self::Apply<Rotor<T>> for Multivector<T> {
+    type Output = Multivector<T>;
+    /// `self x rev(self)` as two full products (no fused kernel for this pair).
+    fn apply(&self, x: &Rotor<T>) -> Multivector<T> {
+        self::GeometricProduct::gp(&self::GeometricProduct::gp(self, x), &self.reverse())
+    }
+}
+impl<T: self::Ring> self::Sandwich<Multivector<T>> for Multivector<T> {
+    type Output = Multivector<T>;
+    /// `rev(self) x self` as two full products (no fused kernel for this pair).
+    fn sandwich(&self, x: &Multivector<T>) -> Multivector<T> {
+        self::GeometricProduct::gp(&self::GeometricProduct::gp(&self.reverse(), x), self)
+    }
+}
+impl<T: self::Ring> self::Apply<Multivector<T>> for Multivector<T> {
+    type Output = Multivector<T>;
+    /// `self x rev(self)` as two full products (no fused kernel for this pair).
+    fn apply(&self, x: &Multivector<T>) -> Multivector<T> {
+        self::GeometricProduct::gp(&self::GeometricProduct::gp(self, x), &self.reverse())
+    }
+}
 /// The geometric product `self * rhs`.
 pub trait GeometricProduct<Rhs: ?Sized> {
     /// The smallest declared type holding the result.
@@ -3133,6 +4595,26 @@ pub trait AnticommutatorProduct<Rhs: ?Sized> {
     /// `(self rhs + rhs self)/2`.
     fn anticommutator(&self, rhs: &Rhs) -> Self::Output;
 }
+/// The main paper's sandwich `f_S(x) = rev(S) x S` (eq. 3). For a versor type `S` and a
+/// declared operand type `X` the generated impl is one fused kernel returning `X`: the
+/// projection of `rev(S) x S` onto `X`, which is the action itself whenever `S` is a versor
+/// whose action preserves `X`'s grades (motors and rotors on vectors, bivectors, motors).
+/// Other pairs return the full product's type.
+pub trait Sandwich<X: ?Sized> {
+    /// `X` for a fused kernel, else the smallest declared type holding `rev(S) x S`.
+    type Output;
+    /// `rev(self) x self`.
+    fn sandwich(&self, x: &X) -> Self::Output;
+}
+/// The versor action `S x rev(S)` in the convention of klein, GATL and ganja (the reverse of
+/// [`Sandwich`]'s: `s.apply(x) == s.reverse().sandwich(x)`), fused and typed as
+/// [`Sandwich`] is.
+pub trait Apply<X: ?Sized> {
+    /// `X` for a fused kernel, else the smallest declared type holding `S x rev(S)`.
+    type Output;
+    /// `self x rev(self)`.
+    fn apply(&self, x: &X) -> Self::Output;
+}
 /// algebra-core's `Ring`, reduced to the methods the kernels call; implemented below for `f32` and `f64`.
 pub trait Ring: Clone + Debug + Display + PartialEq + Add<
         Output = Self,
@@ -3146,39 +4628,52 @@ pub trait Ring: Clone + Debug + Display + PartialEq + Add<
         &'a Self,
         Output = Self,
     > + for<'a> Sub<&'a Self, Output = Self> + for<'a> Mul<&'a Self, Output = Self> {
-    /// The additive identity.
+    /// algebra-core's `Ring::zero`.
     fn zero() -> Self;
-    /// The multiplicative identity.
+    /// algebra-core's `Ring::one`.
     fn one() -> Self;
-    /// The exact ratio `num / den` (`den != 0`; kernels only use non-zero constant denominators).
+    /// algebra-core's `Ring::from_ratio`.
     fn from_ratio(num: i64, den: i64) -> Self;
-    /// True only when *every* component is zero (for dual numbers: the real part and all
-    /// derivative parts). Never used to drop terms in kernels; used for printing and pivots.
+    /// algebra-core's `Ring::is_exact_zero`.
     fn is_exact_zero(&self) -> bool;
-    /// A non-negative size used to choose pivots and test series convergence: `|x|` for
-    /// floats, the largest absolute component for dual numbers, `|x|` rounded to f64 for
-    /// rationals. Not for exact decisions.
+    /// algebra-core's `Ring::magnitude`.
     fn magnitude(&self) -> f64;
-    /// The relative precision of the type: `0.0` for exact types, machine epsilon for floats,
-    /// `2^(1 - bits)` for multiple-precision floats.
+    /// algebra-core's `Ring::relative_epsilon`.
     fn relative_epsilon() -> f64;
-    /// `self + rhs` without consuming either operand.
+    /// algebra-core's `Ring::cmp_magnitude`.
+    fn cmp_magnitude(&self, other: &Self) -> std::cmp::Ordering {
+        self.magnitude().total_cmp(&other.magnitude())
+    }
+    /// algebra-core's `Ring::is_negligible`.
+    fn is_negligible(&self, scale: &Self, ulps: u32) -> bool {
+        if self.is_exact_zero() {
+            return true;
+        }
+        let eps = Self::relative_epsilon();
+        eps > 0.0 && self.magnitude() <= f64::from(ulps) * eps * scale.magnitude()
+    }
+    /// algebra-core's `Ring::add_ref`.
     fn add_ref(&self, rhs: &Self) -> Self {
         self.clone() + rhs
     }
-    /// `self - rhs` without consuming either operand.
+    /// algebra-core's `Ring::sub_ref`.
     fn sub_ref(&self, rhs: &Self) -> Self {
         self.clone() - rhs
     }
-    /// `self * rhs` without consuming either operand.
+    /// algebra-core's `Ring::mul_ref`.
     fn mul_ref(&self, rhs: &Self) -> Self {
         self.clone() * rhs
     }
-    /// `-self` without consuming it.
+    /// algebra-core's `Ring::neg_ref`.
     fn neg_ref(&self) -> Self {
         -self.clone()
     }
-    /// `self -= rhs`.
+    /// algebra-core's `Ring::add_assign_ref`.
+    fn add_assign_ref(&mut self, rhs: &Self) {
+        let lhs = std::mem::replace(self, Self::zero());
+        *self = lhs + rhs;
+    }
+    /// algebra-core's `Ring::sub_assign_ref`.
     fn sub_assign_ref(&mut self, rhs: &Self) {
         let lhs = std::mem::replace(self, Self::zero());
         *self = lhs - rhs;
@@ -3186,10 +4681,9 @@ pub trait Ring: Clone + Debug + Display + PartialEq + Add<
 }
 /// algebra-core's `Field`, reduced to the methods the kernels call; implemented below for `f32` and `f64`.
 pub trait Field: Ring + Div<Output = Self> + for<'a> Div<&'a Self, Output = Self> {
-    /// `1 / self`, or `None` when `self` is zero (exactly zero for exact types; zero or with a
-    /// non-finite reciprocal for floats).
+    /// algebra-core's `Field::try_recip`.
     fn try_recip(&self) -> Option<Self>;
-    /// `self / rhs` without consuming either operand (`rhs` must be non-zero).
+    /// algebra-core's `Field::div_ref`.
     fn div_ref(&self, rhs: &Self) -> Self {
         self.clone() / rhs
     }
@@ -3198,13 +4692,20 @@ pub trait Field: Ring + Div<Output = Self> + for<'a> Div<&'a Self, Output = Self
 #[allow(clippy::needless_range_loop)]
 fn solve<T: Field>(mut l: Vec<Vec<T>>, mut rhs: Vec<T>) -> Option<Vec<T>> {
     let n = rhs.len();
-    let scale = l.iter().flatten().map(Ring::magnitude).fold(0.0, f64::max);
-    let tol = 64.0 * T::relative_epsilon() * n as f64 * scale;
+    if n == 0 {
+        return Some(Vec::new());
+    }
+    let scale = l
+        .iter()
+        .flatten()
+        .reduce(|a, b| if b.cmp_magnitude(a).is_gt() { b } else { a })?
+        .clone();
+    let ulps = u32::try_from(n).unwrap_or(u32::MAX).saturating_mul(64);
     for col in 0..n {
         let pivot = (col..n)
             .filter(|&r| !l[r][col].is_exact_zero())
-            .max_by(|&a, &b| l[a][col].magnitude().total_cmp(&l[b][col].magnitude()))?;
-        if l[pivot][col].magnitude() <= tol {
+            .max_by(|&a, &b| l[a][col].cmp_magnitude(&l[b][col]))?;
+        if l[pivot][col].is_negligible(&scale, ulps) {
             return None;
         }
         l.swap(pivot, col);
