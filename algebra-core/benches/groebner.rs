@@ -10,12 +10,11 @@
 use algebra_core::Poly;
 use algebra_core::ideal::{Budget, MonomialOrder, PolyRing};
 use criterion::{Criterion, criterion_group, criterion_main};
-use rug::Rational;
-use serde_json::Value;
 use std::hint::black_box;
 use std::time::Instant;
 
-const FIXTURE: &str = include_str!("../../tests/fixtures/sympy/groebner.json");
+#[path = "../tests/sympy_fixture/mod.rs"]
+mod sympy_fixture;
 
 struct System {
     name: String,
@@ -26,27 +25,16 @@ struct System {
     sympy_seconds: f64,
 }
 
-fn poly(vars: &[String], terms: &Value) -> Poly {
-    Poly::from_terms(terms.as_array().expect("terms").iter().map(|t| {
-        let c: Rational = t[0].as_str().expect("coefficient").parse().expect("rational");
-        let e = t[1].as_array().expect("exponents").iter().map(|k| k.as_u64().expect("exponent") as u32);
-        (c, vars.iter().cloned().zip(e).collect())
-    }))
-}
-
 fn systems() -> Vec<System> {
-    let data: Value = serde_json::from_str(FIXTURE).expect("fixture");
-    data["systems"]
-        .as_array()
-        .expect("systems")
+    sympy_fixture::systems()
         .iter()
         .map(|s| {
-            let vars: Vec<String> =
-                s["variables"].as_array().expect("vars").iter().map(|v| v.as_str().expect("name").into()).collect();
-            let order = if s["order"] == "lex" { MonomialOrder::Lex } else { MonomialOrder::GrevLex };
-            let gens = s["generators"].as_array().expect("gens").iter().map(|g| poly(&vars, g)).collect();
-            let target = poly(&vars, &s["target"]);
+            let vars = sympy_fixture::variables(s);
+            let gens =
+                s["generators"].as_array().expect("gens").iter().map(|g| sympy_fixture::poly(&vars, g)).collect();
+            let target = sympy_fixture::poly(&vars, &s["target"]);
             let sympy_seconds = s["sympy_seconds"].as_f64().expect("time");
+            let order = sympy_fixture::order(s);
             System { name: s["name"].as_str().expect("name").into(), vars, order, gens, target, sympy_seconds }
         })
         .collect()

@@ -2,34 +2,20 @@
 //! (fixture: tests/fixtures/sympy/groebner.json, written by the committed script
 //! tests/fixtures/sympy/groebner.py).
 
+mod sympy_fixture;
+
 use algebra_core::ideal::{Budget, MonomialOrder, PolyRing};
 use algebra_core::{Poly, Ring};
-use rug::Rational;
-use serde_json::Value;
-
-const FIXTURE: &str = include_str!("../../tests/fixtures/sympy/groebner.json");
-
-fn poly(vars: &[String], terms: &Value) -> Poly {
-    Poly::from_terms(terms.as_array().unwrap().iter().map(|t| {
-        let c: Rational = t[0].as_str().unwrap().parse().unwrap();
-        let e = t[1].as_array().unwrap().iter().map(|k| k.as_u64().unwrap() as u32);
-        (c, vars.iter().cloned().zip(e).collect())
-    }))
-}
+use sympy_fixture::{order, poly, systems, variables};
 
 #[test]
 fn reduced_bases_and_normal_forms_match_sympy() {
-    let data: Value = serde_json::from_str(FIXTURE).unwrap();
-    let systems = data["systems"].as_array().unwrap();
+    let systems = systems();
     assert!(systems.len() >= 7);
-    for s in systems {
+    for s in &systems {
         let name = s["name"].as_str().unwrap();
-        let vars: Vec<String> = s["variables"].as_array().unwrap().iter().map(|v| v.as_str().unwrap().into()).collect();
-        let order = match s["order"].as_str().unwrap() {
-            "lex" => MonomialOrder::Lex,
-            _ => MonomialOrder::GrevLex,
-        };
-        let ring = PolyRing::new(&vars, order);
+        let vars = variables(s);
+        let ring = PolyRing::new(&vars, order(s));
         let gens: Vec<Poly> = s["generators"].as_array().unwrap().iter().map(|g| poly(&vars, g)).collect();
         let expected: Vec<Poly> = s["basis"].as_array().unwrap().iter().map(|g| poly(&vars, g)).collect();
         let g = ring.groebner(&gens, &Budget::default()).unwrap();
