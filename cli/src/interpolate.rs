@@ -303,10 +303,12 @@ pub fn interpolate(path: &str, json: bool) -> Result<String, CliError> {
         let mut out = Vec::with_capacity(sampled.len());
         for s in &sampled {
             let matrix = s.pose.unitize().and_then(|u| u.to_matrix()).map_err(|e| CliError::math(e.to_string()))?;
-            out.push(json!({"t": s.t, "matrix": matrix,
-                "points": s.points.iter().map(|p| p.position).collect::<Vec<_>>(),
-                "velocities": s.points.iter().map(|p| p.velocity).collect::<Vec<_>>(),
-                "angular_velocity": s.space_twist.angular}));
+            // `x + 0.0` prints -0.0 as 0.0.
+            let v3 = |v: &[f64; 3]| v.map(|x| x + 0.0);
+            out.push(json!({"t": s.t, "matrix": matrix.map(|r| r.map(|x| x + 0.0)),
+                "points": s.points.iter().map(|p| v3(&p.position)).collect::<Vec<_>>(),
+                "velocities": s.points.iter().map(|p| v3(&p.velocity)).collect::<Vec<_>>(),
+                "angular_velocity": v3(&s.space_twist.angular)}));
         }
         return Ok(json!({"method": name, "parameters": b.times, "segments": segs, "samples": out}).to_string());
     }
