@@ -52,8 +52,8 @@ fn homeless_supports(spec: &ModuleSpec) -> Vec<BTreeSet<u32>> {
     out
 }
 
-/// Appends `Even` and/or `Odd` (named `EvenMultivector`/`OddMultivector` if the short name is
-/// taken) while some single-parity result lands outside every type. Call only when no
+/// Appends `Even` and/or `Odd` (named `EvenMultivector`/`OddMultivector`, then with a number,
+/// if the short name is taken) while some single-parity result lands outside every type. Call only when no
 /// declared type is the full multivector.
 ///
 /// ```
@@ -67,6 +67,12 @@ fn homeless_supports(spec: &ModuleSpec) -> Vec<BTreeSet<u32>> {
 /// assert_eq!(names, ["Vector", "Rotor", "Odd", "Multivector"]);
 /// let gp = plan.stats().into_iter().find(|s| s.op == "gp" && s.lhs == "Vector" && s.rhs.as_deref() == Some("Rotor")).unwrap();
 /// assert_eq!(gp.out, "Odd");
+/// // names already taken by other types get a longer one
+/// let alg = Algebra::builtin("pga3").unwrap();
+/// let types = ModuleSpec::parse_types("Even=grade1;EvenMultivector=grade3", &alg).unwrap();
+/// let plan = Plan::new(ModuleSpec::new("p", alg.metric().clone(), Basis::Blade, types).unwrap()).unwrap();
+/// let names: Vec<&str> = plan.spec.types.iter().map(|t| t.name.as_str()).collect();
+/// assert_eq!(names, ["Even", "EvenMultivector", "EvenMultivector2", "Odd", "Multivector"]);
 /// ```
 pub fn add_parity_types(spec: &mut ModuleSpec) -> Result<(), CodegenError> {
     let order = spec.algebra.basis_order().to_vec();
@@ -85,9 +91,14 @@ pub fn add_parity_types(spec: &mut ModuleSpec) -> Result<(), CodegenError> {
         for p in wanted {
             let (short, long, what) =
                 if p == 0 { ("Even", "EvenMultivector", "even") } else { ("Odd", "OddMultivector", "odd") };
-            let name = if spec.types.iter().any(|t| t.name == short) { long } else { short };
+            let taken = |n: &str| spec.types.iter().any(|t| t.name == n);
+            let name = [short.to_string(), long.to_string()]
+                .into_iter()
+                .chain((2..).map(|i| format!("{long}{i}")))
+                .find(|n| !taken(n))
+                .expect("an unused name");
             let elements: Vec<u32> = order.iter().copied().filter(|&m| parity(m) == p).collect();
-            let mut t = TypeSpec::new(name, elements)?;
+            let mut t = TypeSpec::new(&name, elements)?;
             t.doc.push(format!(
                 "The {what} part of the algebra, declared automatically: some product of the declared types lands here."
             ));
