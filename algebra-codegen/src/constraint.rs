@@ -202,6 +202,20 @@ pub fn constrained_action(
 
 /// The geometric product `a b` of types `lhs` and `rhs` with the given constraints.
 ///
+/// ```
+/// use algebra_core::{Algebra, Basis};
+/// use algebra_codegen::ModuleSpec;
+/// use algebra_codegen::constraint::{Constraint, ConstraintKind, constrained_product};
+/// let alg = Algebra::builtin("g3").unwrap();
+/// let types = ModuleSpec::parse_types("Rotor=even;Vector=grade1", &alg).unwrap();
+/// let spec = ModuleSpec::new("g3", alg.metric().clone(), Basis::Blade, types).unwrap();
+/// let unit = [Constraint { ty: 0, kind: ConstraintKind::Unit }];
+/// // unit rotors R1, R2: every output of R1 R2 is kept (their product is again a rotor)
+/// let k = constrained_product(&spec, 0, 0, &unit).unwrap();
+/// assert_eq!((k.output_type, k.stats().outputs), (Some(0), 4));
+/// assert_eq!(k.relies_on, ["Rotor: rev(x) x = 1"]);
+/// ```
+///
 /// # Errors
 /// As [`constrained_action`].
 pub fn constrained_product(
@@ -394,6 +408,20 @@ fn degree(m: &[(usize, u32)]) -> usize {
 
 impl ConstrainedKernel {
     /// Operation counts in the matrix layout.
+    ///
+    /// ```
+    /// use algebra_core::{Algebra, Basis};
+    /// use algebra_codegen::ModuleSpec;
+    /// use algebra_codegen::constraint::{Constraint, ConstraintKind, constrained_product};
+    /// let alg = Algebra::builtin("g3").unwrap();
+    /// let types = ModuleSpec::parse_types("Rotor=even;Vector=grade1", &alg).unwrap();
+    /// let spec = ModuleSpec::new("g3", alg.metric().clone(), Basis::Blade, types).unwrap();
+    /// let unit = [Constraint { ty: 0, kind: ConstraintKind::Unit }];
+    /// let k = constrained_product(&spec, 0, 1, &unit).unwrap();
+    /// let c = k.stats();
+    /// assert_eq!(c.mul, c.setup_mul + c.apply_mul);
+    /// assert!(c.mul <= k.full.stats().mul);
+    /// ```
     pub fn stats(&self) -> Counts {
         let mut setup: usize = self.left_monomials.iter().map(|m| degree(m).saturating_sub(1)).sum();
         let (mut add, mut terms, mut apply) = (0, 0, 0);
@@ -421,6 +449,22 @@ impl ConstrainedKernel {
     /// Evaluates the kernel (in its layout) on coefficient slices of the two inputs, in the
     /// types' element order; returns `(mask, value)` per computed output. Valid only on inputs
     /// satisfying [`ConstrainedKernel::relies_on`].
+    ///
+    /// ```
+    /// use algebra_core::{Algebra, Basis};
+    /// use algebra_codegen::ModuleSpec;
+    /// use algebra_codegen::constraint::{Constraint, ConstraintKind, constrained_product};
+    /// let alg = Algebra::builtin("g3").unwrap();
+    /// let types = ModuleSpec::parse_types("Rotor=even;Vector=grade1", &alg).unwrap();
+    /// let spec = ModuleSpec::new("g3", alg.metric().clone(), Basis::Blade, types).unwrap();
+    /// let unit = [Constraint { ty: 0, kind: ConstraintKind::Unit }];
+    /// use algebra_core::rational::ratio;
+    /// // R = (3 + 4 e12)/5 times e1: (3/5) e1 - (4/5) e2
+    /// let k = constrained_product(&spec, 0, 1, &unit).unwrap();
+    /// let r = [ratio(3, 5), ratio(4, 5), ratio(0, 1), ratio(0, 1)];
+    /// let out = k.eval(&r, &[ratio(1, 1), ratio(0, 1), ratio(0, 1)]);
+    /// assert!(out.contains(&(0b001, ratio(3, 5))) && out.contains(&(0b010, ratio(-4, 5))));
+    /// ```
     pub fn eval<T: Ring>(&self, a: &[T], b: &[T]) -> Vec<(u32, T)> {
         let pow = |x: &[T], m: &[(usize, u32)]| {
             m.iter().fold(T::one(), |acc, &(i, e)| (0..e).fold(acc, |acc, _| acc.mul_ref(&x[i])))
@@ -444,6 +488,18 @@ impl ConstrainedKernel {
     }
 
     /// Doc lines for the generated kernel: the constraints it relies on and what they saved.
+    ///
+    /// ```
+    /// use algebra_core::{Algebra, Basis};
+    /// use algebra_codegen::ModuleSpec;
+    /// use algebra_codegen::constraint::{Constraint, ConstraintKind, constrained_product};
+    /// let alg = Algebra::builtin("g3").unwrap();
+    /// let types = ModuleSpec::parse_types("Rotor=even;Vector=grade1", &alg).unwrap();
+    /// let spec = ModuleSpec::new("g3", alg.metric().clone(), Basis::Blade, types).unwrap();
+    /// let unit = [Constraint { ty: 0, kind: ConstraintKind::Unit }];
+    /// let k = constrained_product(&spec, 0, 1, &unit).unwrap();
+    /// assert!(k.doc()[0].starts_with(" Valid only for inputs satisfying Rotor: rev(x) x = 1"));
+    /// ```
     pub fn doc(&self) -> Vec<String> {
         let (c, f) = (self.stats(), self.full.stats());
         let mut lines = vec![format!(

@@ -11,6 +11,19 @@ impl ConstrainedKernel {
     /// the two inputs' coefficients (in their types' element order), returning the computed
     /// outputs in [`ConstrainedKernel::outputs`] order, with [`ConstrainedKernel::doc`] as its
     /// docs. It needs `algebra_core::Ring` in scope.
+    ///
+    /// ```
+    /// use algebra_core::{Algebra, Basis};
+    /// use algebra_codegen::ModuleSpec;
+    /// use algebra_codegen::constraint::{Constraint, ConstraintKind, constrained_product};
+    /// let alg = Algebra::builtin("g3").unwrap();
+    /// let types = ModuleSpec::parse_types("Rotor=even;Vector=grade1", &alg).unwrap();
+    /// let spec = ModuleSpec::new("g3", alg.metric().clone(), Basis::Blade, types).unwrap();
+    /// let unit = [Constraint { ty: 0, kind: ConstraintKind::Unit }];
+    /// let k = constrained_product(&spec, 0, 1, &unit).unwrap();
+    /// let f: syn::ItemFn = syn::parse2(k.tokens("rotor_times_vector", 4, 3)).unwrap();
+    /// assert_eq!((f.sig.ident.to_string(), f.sig.inputs.len()), ("rotor_times_vector".to_string(), 2));
+    /// ```
     pub fn tokens(&self, name: &str, left_len: usize, right_len: usize) -> TokenStream {
         let f = format_ident!("{}", name);
         let doc = self.doc();
