@@ -166,13 +166,33 @@ fn unit_rotor_apply_in_g3() {
 
 #[test]
 fn null_and_simple_constraints_and_errors() {
-    // A null vector squared vanishes: every output of x x is in the ideal of x x = 0 — but a, b
-    // are two inputs, so only constraint-on-both products reduce; a b stays general.
+    // The product x y of two null vectors (x x = y y = 0 each; x y itself stays general).
     let spec = cga_null();
     let null = [Constraint { ty: 1, kind: ConstraintKind::Null }];
     let k = constrained_product(&spec, 1, 1, &null).unwrap();
     assert_eq!(k.relies_on, ["Vector: x x = 0"]);
     assert!(k.stats().mul <= k.full.stats().mul);
+    // exact on conformal points up(p) = e0 + p + p²/2 einf (null)
+    let mut rng = Rng(77);
+    let up = |rng: &mut Rng| {
+        let p: Vec<Q> = (0..3).map(|_| rng.next()).collect();
+        let p2 = p.iter().fold(Q::zero(), |acc, c| acc + c * c);
+        mv(
+            &spec,
+            vec![
+                ("e0", Q::one()),
+                ("e1", p[0].clone()),
+                ("e2", p[1].clone()),
+                ("e3", p[2].clone()),
+                ("einf", p2 * ratio(1, 2)),
+            ],
+        )
+    };
+    for _ in 0..20 {
+        let (x, y) = (up(&mut rng), up(&mut rng));
+        assert!((&x * &x).is_zero() && (&y * &y).is_zero());
+        assert!(agrees(&k, &fields(&spec, 1, &x), &fields(&spec, 1, &y), &(&x * &y)));
+    }
     // A PGA line with the Plücker condition: L ∧ L = 0 makes the line's square a scalar.
     let pga = Algebra::builtin("pga3").unwrap();
     let types = ModuleSpec::parse_types("Line=grade2;Even=even", &pga).unwrap();
@@ -180,6 +200,17 @@ fn null_and_simple_constraints_and_errors() {
     let simple = [Constraint { ty: 0, kind: ConstraintKind::Simple }];
     let k = constrained_product(&spec, 0, 0, &simple).unwrap();
     assert!(k.stats().terms <= k.full.stats().terms);
+    // exact on lines L = a ∧ b (simple bivectors)
+    let mut rng = Rng(99);
+    let vector = |rng: &mut Rng| {
+        let terms: Vec<(&str, Q)> = ["e0", "e1", "e2", "e3"].iter().map(|n| (*n, rng.next())).collect();
+        Multivector::from_terms(&spec.algebra, spec.basis, terms).unwrap()
+    };
+    for _ in 0..20 {
+        let (l1, l2) = (vector(&mut rng).op(&vector(&mut rng)), vector(&mut rng).op(&vector(&mut rng)));
+        assert!(l1.op(&l1).is_zero());
+        assert!(agrees(&k, &fields(&spec, 0, &l1), &fields(&spec, 0, &l2), &(&l1 * &l2)));
+    }
     // A scalar type both null and unit: inconsistent.
     let alg = Algebra::builtin("g3").unwrap();
     let types = ModuleSpec::parse_types("S=1;V=grade1", &alg).unwrap();
