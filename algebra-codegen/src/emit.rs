@@ -305,6 +305,15 @@ fn type_items(plan: &Plan, names: &Names, i: usize) -> TokenStream {
                 #ty { #(#fields: #from_runtime),* }
             }
 
+            /// A general element with symbolic coefficients named `prefix` + the basis label
+            /// (`S`, `S12`, ..., as the CLI prints them), for scalars with symbols (`Poly`).
+            pub fn symbolic(prefix: &str) -> Self
+            where
+                T: ::algebra_core::Symbolic,
+            {
+                #ty { #(#fields: <T as ::algebra_core::Symbolic>::coefficient(prefix, #elements)),* }
+            }
+
             /// The sandwich `f_S(x) = rev(S) x S` of the main paper (eq. 3); a fused kernel typed
             /// to `x`'s type when `Self` is a versor type (see the `Sandwich` trait).
             pub fn sandwich<X>(&self, x: &X) -> <Self as ::algebra_core::ops::Sandwich<X>>::Output

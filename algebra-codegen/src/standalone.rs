@@ -78,9 +78,16 @@ pub fn file(plan: &Plan, header: &[String], nest: Option<&str>) -> syn::Result<s
 /// Whether a tokenised item uses the runtime (paths now read `self :: Multivector` etc.).
 fn uses_runtime(tokens: impl ToTokens) -> bool {
     let text = tokens.to_token_stream().to_string();
-    ["self :: Multivector", "self :: Algebra", "self :: Metric", "self :: Basis", ". to_multivector ("]
-        .iter()
-        .any(|p| text.contains(p))
+    [
+        "self :: Multivector",
+        "self :: Algebra",
+        "self :: Metric",
+        "self :: Basis",
+        "self :: Symbolic",
+        ". to_multivector (",
+    ]
+    .iter()
+    .any(|p| text.contains(p))
 }
 
 /// Drops the runtime bridge: re-exports of engine items, `BASIS`, `algebra()`, runtime

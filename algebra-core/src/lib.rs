@@ -27,6 +27,7 @@ pub mod ops;
 pub mod poly;
 pub mod rational;
 pub mod scalar;
+pub mod symbol;
 pub mod tables;
 
 pub use algebra::Algebra;
@@ -39,6 +40,7 @@ pub use poly::Poly;
 pub use scalar::{Field, Jet, Real, Ring};
 #[cfg(feature = "rug")]
 pub use scalar::{MpFloat, MpRational, PrecisionGuard, default_precision, set_default_precision};
+pub use symbol::Symbolic;
 pub use tables::{Product, Tables, Unary};
 
 /// The source text of the product traits, the scalar traits, the solver and the printing helper, which

@@ -109,6 +109,11 @@ enum Command {
         /// conversions to the runtime multivector, items at the top level.
         #[arg(long)]
         standalone: bool,
+        /// With --emit stats: a polynomial constraint TYPE=unit (rev(x) x = 1), TYPE=null
+        /// (x x = 0) or TYPE=simple (x ∧ x = 0), repeatable; adds rows for the sandwich
+        /// kernels reduced modulo the constraints (the vanishing outputs proven and dropped).
+        #[arg(long, value_name = "TYPE=KIND")]
+        constrain: Vec<String>,
     },
     /// Control poses of a motion segment from its end conditions (Secs. 4-5 of the main paper).
     Hermite {
@@ -199,8 +204,8 @@ fn run(command: Command) -> Result<(String, Option<CliError>), CliError> {
             commands::eval(&commands::EvalArgs { algebra, basis, scalar, json, expr })
         }
         Command::Table { algebra, basis, product, json } => commands::table(&algebra, basis, product, json),
-        Command::Codegen { algebra, types, basis, emit, module, json, standalone } => {
-            codegen::codegen(&codegen::CodegenArgs { algebra, types, basis, emit, module, json, standalone })
+        Command::Codegen { algebra, types, basis, emit, module, json, standalone, constrain } => {
+            codegen::codegen(&codegen::CodegenArgs { algebra, types, basis, emit, module, json, standalone, constrain })
         }
         Command::Hermite { json, spec } => hermite::hermite(&spec, json),
         Command::Interpolate { json, spec } => interpolate::interpolate(&spec, json),

@@ -77,3 +77,30 @@ fn standalone_nests_only_when_asked() {
     assert_eq!(got.matches("pub mod ").count(), 1, "one wrapper module");
     assert!(got.contains("pub mod g3k {"));
 }
+
+#[test]
+fn constrained_unit_motor_on_a_point_is_a_point_with_fewer_multiplications() {
+    let types = "Motor=1,e12,e13,e23,e1inf,e2inf,e3inf,e123inf;Vector=grade1";
+    let args =
+        ["codegen", "--basis", "product", "--types", types, "--emit", "stats", "--json", "--constrain", "Motor=unit"];
+    let out = gam(&args);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let rows: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let row = rows
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|r| r["constraints"].is_array() && r["lhs"] == "Motor" && r["rhs"] == "Vector")
+        .expect("a constrained row");
+    // the output type is proven (the unconstrained expansion has a σ part)
+    assert_eq!((row["out"].as_str(), row["unconstrained"]["out"].as_str()), (Some("Vector"), Some("Multivector")));
+    assert_eq!((row["mul"].as_u64(), row["unconstrained"]["mul"].as_u64()), (Some(57), Some(65)));
+    assert_eq!((row["terms"].as_u64(), row["unconstrained"]["terms"].as_u64()), (Some(51), Some(68)));
+    // bad constraints are usage errors with one error line
+    for bad in [["--constrain", "Motor=blah"], ["--constrain", "Nope=unit"]] {
+        let out = gam(&["codegen", "--types", types, "--emit", "stats", bad[0], bad[1]]);
+        assert_eq!(out.status.code(), Some(2));
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.starts_with("error: --constrain") && err.lines().count() == 1, "{err}");
+    }
+}

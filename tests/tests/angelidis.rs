@@ -14,6 +14,8 @@ const IDS: &[&str] = &[
     "angelidis/eq-37",
     "angelidis/eq-38",
     "angelidis/eq-39",
+    // symbolic-under-hypotheses (tests in tests/tests/under_hypotheses.rs)
+    "angelidis/eq-14-symbolic",
 ];
 
 /// Asserts that the outcome's notes record a counterexample mentioning `needle`.

@@ -5,10 +5,11 @@
 use gam_tests::assert_holds;
 use gam_verify::Method;
 
-fn holds_and_needs_its_hypothesis(id: &str) {
+fn holds_and_needs_its_hypothesis(id: &str) -> gam_verify::Outcome {
     let out = assert_holds(id);
     assert_eq!(gam_verify::find(id).unwrap().method, Method::SymbolicUnderHypotheses);
     assert!(out.notes.iter().any(|n| n.starts_with("counterexample")), "{id}: {:?}", out.notes);
+    out
 }
 
 #[test]
@@ -26,4 +27,37 @@ fn lemma_2_2_inner_product() {
 #[test]
 fn lemma_3_4_symbolic() {
     holds_and_needs_its_hypothesis("cross2022/lemma-3.4-symbolic");
+}
+
+/// The counterexample notes of `id` (each hypothesis dropped in turn must leave the claim
+/// outside the ideal), checked to name every one of `dropped`.
+fn needs_each(id: &str, dropped: &[&str]) {
+    let out = holds_and_needs_its_hypothesis(id);
+    for d in dropped {
+        assert!(
+            out.notes.iter().any(|n| n.starts_with("counterexample") && n.contains(&format!("without {d}:"))),
+            "{id}: no counterexample without {d}: {:?}",
+            out.notes
+        );
+    }
+}
+
+#[test]
+fn juttler_eq_9_symbolic() {
+    needs_each("juttler/eq-9-symbolic", &["(8)", "Q0 Q~0 != 0", "Q0 Q~0 = 1"]);
+}
+
+#[test]
+fn wareham_lasenby_lemma_1_symbolic() {
+    needs_each("wareham-lasenby/lemma-1-symbolic", &["P n = n P", "P² = -1", "t · n = 0"]);
+}
+
+#[test]
+fn wareham_lasenby_theorem_8_symbolic() {
+    needs_each("wareham-lasenby/theorem-8-symbolic", &["P n = n P", "P² = -1", "c² + s² = 1"]);
+}
+
+#[test]
+fn angelidis_eq_14_symbolic() {
+    needs_each("angelidis/eq-14-symbolic", &["ω·m = 0", "|ω|² = θ²"]);
 }

@@ -14,6 +14,9 @@ const IDS: &[&str] = &[
     "wareham-lasenby/theorem-7",
     "wareham-lasenby/theorem-8",
     "wareham-lasenby/theorem-9",
+    // symbolic-under-hypotheses (tests in tests/tests/under_hypotheses.rs)
+    "wareham-lasenby/lemma-1-symbolic",
+    "wareham-lasenby/theorem-8-symbolic",
 ];
 
 /// Asserts that a counterexample mentioning `what` was recorded.

@@ -112,10 +112,10 @@ pub const STATEMENTS: &[Statement] = &[
     },
 ];
 
-type M4<T> = [[T; 4]; 4];
-type V3<T> = [T; 3];
+pub(crate) type M4<T> = [[T; 4]; 4];
+pub(crate) type V3<T> = [T; 3];
 
-fn dot<T: Ring>(a: &V3<T>, b: &V3<T>) -> T {
+pub(crate) fn dot<T: Ring>(a: &V3<T>, b: &V3<T>) -> T {
     a[0].mul_ref(&b[0]) + a[1].mul_ref(&b[1]) + a[2].mul_ref(&b[2])
 }
 
@@ -136,7 +136,7 @@ fn vscale<T: Ring>(s: &T, a: &V3<T>) -> V3<T> {
 }
 
 /// The hexanion's matrix form (4): `[[0, -ωz, ωy, mx], [ωz, 0, -ωx, my], [-ωy, ωx, 0, mz], 0]`.
-fn hex<T: Ring>(w: &V3<T>, m: &V3<T>) -> M4<T> {
+pub(crate) fn hex<T: Ring>(w: &V3<T>, m: &V3<T>) -> M4<T> {
     let z = T::zero;
     [
         [z(), w[2].neg_ref(), w[1].clone(), m[0].clone()],
@@ -146,23 +146,23 @@ fn hex<T: Ring>(w: &V3<T>, m: &V3<T>) -> M4<T> {
     ]
 }
 
-fn mmul<T: Ring>(a: &M4<T>, b: &M4<T>) -> M4<T> {
+pub(crate) fn mmul<T: Ring>(a: &M4<T>, b: &M4<T>) -> M4<T> {
     std::array::from_fn(|i| std::array::from_fn(|j| (0..4).fold(T::zero(), |acc, k| acc + a[i][k].mul_ref(&b[k][j]))))
 }
 
-fn madd<T: Ring>(a: &M4<T>, b: &M4<T>) -> M4<T> {
+pub(crate) fn madd<T: Ring>(a: &M4<T>, b: &M4<T>) -> M4<T> {
     std::array::from_fn(|i| std::array::from_fn(|j| a[i][j].add_ref(&b[i][j])))
 }
 
-fn mscale<T: Ring>(s: &T, a: &M4<T>) -> M4<T> {
+pub(crate) fn mscale<T: Ring>(s: &T, a: &M4<T>) -> M4<T> {
     a.clone().map(|r| r.map(|x| s.mul_ref(&x)))
 }
 
-fn ident<T: Ring>() -> M4<T> {
+pub(crate) fn ident<T: Ring>() -> M4<T> {
     std::array::from_fn(|i| std::array::from_fn(|j| if i == j { T::one() } else { T::zero() }))
 }
 
-fn flat<T: Clone>(a: &M4<T>) -> Vec<T> {
+pub(crate) fn flat<T: Clone>(a: &M4<T>) -> Vec<T> {
     a.iter().flatten().cloned().collect()
 }
 

@@ -55,8 +55,11 @@ pub fn statements() -> impl Iterator<Item = &'static Statement> {
     cross2022::statements()
         .chain(under_hypotheses::STATEMENTS)
         .chain(wareham_lasenby::STATEMENTS)
+        .chain(under_hypotheses::wareham_lasenby::STATEMENTS)
         .chain(juttler::STATEMENTS)
+        .chain(under_hypotheses::juttler::STATEMENTS)
         .chain(angelidis::STATEMENTS)
+        .chain(under_hypotheses::angelidis::STATEMENTS)
 }
 
 /// The statement with this id, if there is one.

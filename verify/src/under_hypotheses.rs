@@ -4,8 +4,16 @@
 //! also records that the hypothesis is needed: without it the claim is not in the ideal, and a
 //! concrete rational instance fails.
 //!
-//! Self-contained on purpose: only the runtime `Multivector<Poly>` of `cga-null` in the
-//! paper's product basis, with symbolic elements (`Multivector::symbolic`), no motion types.
+//! The main paper's statements (here) use only the runtime `Multivector<Poly>` of `cga-null`
+//! in the paper's product basis, with symbolic elements (`Multivector::symbolic`), no motion
+//! types. The other papers' statements are in the submodules, registered after each paper's
+//! own statements: [`juttler::STATEMENTS`] (eq. (9) on the Study quadric),
+//! [`wareham_lasenby::STATEMENTS`] (Lemma 1, Theorem 8 under P n = n P, P² = -1) and
+//! [`angelidis::STATEMENTS`] (the rotation case of (14) under ω·m = 0).
+
+pub mod angelidis;
+pub mod juttler;
+pub mod wareham_lasenby;
 
 use crate::check::Checker;
 use crate::statement::{Method, Paper, Statement};
@@ -78,15 +86,26 @@ fn equations(m: &Mv) -> Vec<Poly> {
 /// Checks that `claim = 0` follows from `hyps` and that it does not follow from `without`.
 fn proves(c: &mut Checker, what: &str, claim: &Mv, hyps: &Hypotheses, without: &Hypotheses) {
     let claims = equations(claim);
-    c.check(format!("{what}: the claim is not trivially zero"), !claims.is_empty());
-    let budget = Budget::default();
-    if let Some(d) = c.ok(what, decide(&claims, hyps, &budget)) {
+    holds_under(c, what, &claims, hyps);
+    needs(c, what, "the hypothesis", &claims, without);
+}
+
+/// Checks that every `claims[i] = 0` follows from `hyps` (ideal membership over Q), that the
+/// claims are not all trivially zero and that the hypotheses are consistent.
+pub(crate) fn holds_under(c: &mut Checker, what: &str, claims: &[Poly], hyps: &Hypotheses) {
+    c.check(format!("{what}: the claim is not trivially zero"), claims.iter().any(|p| !p.is_exact_zero()));
+    if let Some(d) = c.ok(what, decide(claims, hyps, &Budget::default())) {
         c.check(format!("{what}: in the ideal of the hypotheses ({} components)", claims.len()), d.holds);
         c.check(format!("{what}: the hypotheses are consistent"), !d.inconsistent);
     }
-    if let Some(d) = c.ok(what, decide(&claims, without, &budget)) {
+}
+
+/// Records the counterexample "`claims` without `dropped`": the claims must not follow from
+/// `without` (the hypotheses less `dropped`); the note gives the first non-zero normal form.
+pub(crate) fn needs(c: &mut Checker, what: &str, dropped: &str, claims: &[Poly], without: &Hypotheses) {
+    if let Some(d) = c.ok(what, decide(claims, without, &Budget::default())) {
         let found = d.failures.first().map(|(_, nf)| format!("normal form {nf}")).unwrap_or_default();
-        c.counterexample(format!("{what} without the hypothesis"), d.holds, found);
+        c.counterexample(format!("{what} without {dropped}"), d.holds, found);
     }
 }
 

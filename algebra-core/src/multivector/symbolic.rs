@@ -49,10 +49,7 @@ impl Part {
 /// assert_eq!(coefficient_symbol("S", "e123inf"), "S123inf");
 /// ```
 pub fn coefficient_symbol(prefix: &str, name: &str) -> String {
-    match name {
-        "1" => prefix.to_string(),
-        _ => format!("{prefix}{}", name.strip_prefix('e').unwrap_or(name)),
-    }
+    crate::symbol::coefficient_name(prefix, name)
 }
 
 impl Multivector<Poly> {

@@ -82,6 +82,18 @@ pub mod g3_vendored {
                 e3: ::core::clone::Clone::clone(&*m.coeff(4u32)),
             }
         }
+        /// A general element with symbolic coefficients named `prefix` + the basis label
+        /// (`S`, `S12`, ..., as the CLI prints them), for scalars with symbols (`Poly`).
+        pub fn symbolic(prefix: &str) -> Self
+        where
+            T: ::algebra_core::Symbolic,
+        {
+            Vector {
+                e1: <T as ::algebra_core::Symbolic>::coefficient(prefix, "e1"),
+                e2: <T as ::algebra_core::Symbolic>::coefficient(prefix, "e2"),
+                e3: <T as ::algebra_core::Symbolic>::coefficient(prefix, "e3"),
+            }
+        }
         /// The sandwich `f_S(x) = rev(S) x S` of the main paper (eq. 3); a fused kernel typed
         /// to `x`'s type when `Self` is a versor type (see the `Sandwich` trait).
         pub fn sandwich<X>(
@@ -613,6 +625,19 @@ pub mod g3_vendored {
                 e12: ::core::clone::Clone::clone(&*m.coeff(3u32)),
                 e13: ::core::clone::Clone::clone(&*m.coeff(5u32)),
                 e23: ::core::clone::Clone::clone(&*m.coeff(6u32)),
+            }
+        }
+        /// A general element with symbolic coefficients named `prefix` + the basis label
+        /// (`S`, `S12`, ..., as the CLI prints them), for scalars with symbols (`Poly`).
+        pub fn symbolic(prefix: &str) -> Self
+        where
+            T: ::algebra_core::Symbolic,
+        {
+            Rotor {
+                scalar: <T as ::algebra_core::Symbolic>::coefficient(prefix, "1"),
+                e12: <T as ::algebra_core::Symbolic>::coefficient(prefix, "e12"),
+                e13: <T as ::algebra_core::Symbolic>::coefficient(prefix, "e13"),
+                e23: <T as ::algebra_core::Symbolic>::coefficient(prefix, "e23"),
             }
         }
         /// The sandwich `f_S(x) = rev(S) x S` of the main paper (eq. 3); a fused kernel typed
@@ -1832,6 +1857,23 @@ pub mod g3_vendored {
                 e13: ::core::clone::Clone::clone(&*m.coeff(5u32)),
                 e23: ::core::clone::Clone::clone(&*m.coeff(6u32)),
                 e123: ::core::clone::Clone::clone(&*m.coeff(7u32)),
+            }
+        }
+        /// A general element with symbolic coefficients named `prefix` + the basis label
+        /// (`S`, `S12`, ..., as the CLI prints them), for scalars with symbols (`Poly`).
+        pub fn symbolic(prefix: &str) -> Self
+        where
+            T: ::algebra_core::Symbolic,
+        {
+            Multivector {
+                scalar: <T as ::algebra_core::Symbolic>::coefficient(prefix, "1"),
+                e1: <T as ::algebra_core::Symbolic>::coefficient(prefix, "e1"),
+                e2: <T as ::algebra_core::Symbolic>::coefficient(prefix, "e2"),
+                e3: <T as ::algebra_core::Symbolic>::coefficient(prefix, "e3"),
+                e12: <T as ::algebra_core::Symbolic>::coefficient(prefix, "e12"),
+                e13: <T as ::algebra_core::Symbolic>::coefficient(prefix, "e13"),
+                e23: <T as ::algebra_core::Symbolic>::coefficient(prefix, "e23"),
+                e123: <T as ::algebra_core::Symbolic>::coefficient(prefix, "e123"),
             }
         }
         /// The sandwich `f_S(x) = rev(S) x S` of the main paper (eq. 3); a fused kernel typed

@@ -32,7 +32,7 @@
 
 mod common;
 mod motion;
-mod powers;
+pub(crate) mod powers;
 
 use crate::{Method, Paper, Statement};
 

@@ -45,7 +45,7 @@ fn alphas<T: Ring>(alg: &Arc<Algebra>, q: &Multivector<T>, phi2: &T, k_max: usiz
 }
 
 /// (B^k by repeated products, Lemma 1's right-hand side) for k = 0..=k_max.
-fn lemma_1_pairs<T: Ring>(
+pub(crate) fn lemma_1_pairs<T: Ring>(
     alg: &Arc<Algebra>,
     q: &Multivector<T>,
     phi2: &T,
