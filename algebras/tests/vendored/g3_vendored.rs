@@ -1227,6 +1227,19 @@ pub mod g3_vendored {
                 e123: ::core::clone::Clone::clone(&*m.coeff(7u32)),
             }
         }
+        /// A general element with symbolic coefficients named `prefix` + the basis label
+        /// (`S`, `S12`, ..., as the CLI prints them), for scalars with symbols (`Poly`).
+        pub fn symbolic(prefix: &str) -> Self
+        where
+            T: ::algebra_core::Symbolic,
+        {
+            Odd {
+                e1: <T as ::algebra_core::Symbolic>::coefficient(prefix, "e1"),
+                e2: <T as ::algebra_core::Symbolic>::coefficient(prefix, "e2"),
+                e3: <T as ::algebra_core::Symbolic>::coefficient(prefix, "e3"),
+                e123: <T as ::algebra_core::Symbolic>::coefficient(prefix, "e123"),
+            }
+        }
         /// The sandwich `f_S(x) = rev(S) x S` of the main paper (eq. 3); a fused kernel typed
         /// to `x`'s type when `Self` is a versor type (see the `Sandwich` trait).
         pub fn sandwich<X>(
