@@ -16,7 +16,7 @@ use crate::error::CliError;
 use crate::output::{mv_human, mv_json};
 use motion::HermiteSegment;
 use motion::hermite::hermite_segment;
-use motion::{EndCondition, JoinError, MotionError, Motor, Pseudoscalar, SegmentKind, Shape};
+use motion::{EndCondition, Even, JoinError, MotionError, Pseudoscalar, SegmentKind, Shape};
 use serde::Deserialize;
 use serde_json::{Value, json};
 
@@ -158,11 +158,11 @@ fn end_condition(name: &str, end: &EndSpec) -> Result<(EndCondition<f64>, Shape<
 }
 
 /// A JSON list of multivectors in g123inf blade names.
-fn mv_list<'a>(list: impl Iterator<Item = &'a Motor<f64>>) -> Value {
+fn mv_list<'a>(list: impl Iterator<Item = &'a Even<f64>>) -> Value {
     Value::Array(list.map(|m| mv_json(&m.to_multivector())).collect())
 }
 
-fn finite(m: &Motor<f64>) -> bool {
+fn finite(m: &Even<f64>) -> bool {
     [m.scalar, m.e12, m.e13, m.e23, m.e1inf, m.e2inf, m.e3inf, m.e123inf].iter().all(|x| x.is_finite())
 }
 
@@ -191,15 +191,16 @@ pub fn hermite(path: &str, json: bool) -> Result<String, CliError> {
     let seg = build_segment(&spec)?;
     let kind = seg.kind;
     let degree = seg.degree();
-    let poses: Vec<&Motor<f64>> = seg.control_poses.iter().map(|s| s.as_motor()).collect();
-    let mut all = poses.iter().copied().chain(&seg.velocity_bivectors).chain(&seg.velocity_indicatrices);
+    let poses: Vec<&Even<f64>> = seg.control_poses.iter().collect();
+    let nus: Vec<Even<f64>> = seg.velocity_bivectors.iter().map(Even::from).collect();
+    let mut all = poses.iter().copied().chain(&nus).chain(&seg.velocity_indicatrices);
     if !all.all(finite) {
         return Err(CliError::math("the result is not finite (overflow)"));
     }
     if json {
         let out = json!({
             "control_poses": mv_list(poses.iter().copied()),
-            "velocity_bivectors": mv_list(seg.velocity_bivectors.iter()),
+            "velocity_bivectors": mv_list(nus.iter()),
             "velocity_indicatrices": mv_list(seg.velocity_indicatrices.iter()),
         });
         return Ok(out.to_string());

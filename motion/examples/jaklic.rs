@@ -18,7 +18,7 @@
 
 use motion::hermite::{self, HermiteSegment, HermiteShapes};
 use motion::joins;
-use motion::{EndCondition, Motor, Pose, SegmentKind, Shape};
+use motion::{Bivector, EndCondition, Even, Pose, SegmentKind, Shape};
 use num_dual::{Dual64, DualNum};
 use std::f64::consts::PI;
 
@@ -34,15 +34,15 @@ pub fn quaternion(t: Dual64) -> Pose<Dual64> {
     let e23 = t + (t * (PI / 4.0)).cos();
     let e31 = (t * (PI / 4.0)).sin();
     let e12 = (t * (PI / 10.0)).cos();
-    Pose(Motor::new(t, e12, -e31, e23, z, z, z, z))
+    Pose::new(t, e12, -e31, e23, z, z, z, z)
 }
 
 /// The value and the derivative parts of a pose over dual numbers.
-fn split(s: &Pose<Dual64>) -> (Pose<f64>, Motor<f64>) {
-    let m = s.as_motor();
+fn split(s: &Pose<Dual64>) -> (Pose<f64>, Even<f64>) {
+    let m = s;
     let parts = [&m.scalar, &m.e12, &m.e13, &m.e23, &m.e1inf, &m.e2inf, &m.e3inf, &m.e123inf];
-    let mk = |c: [f64; 8]| Motor::new(c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7]);
-    (Pose(mk(parts.map(|x| x.re))), mk(parts.map(|x| x.eps)))
+    let mk = |c: [f64; 8]| Even::new(c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7]);
+    ((mk(parts.map(|x| x.re))), mk(parts.map(|x| x.eps)))
 }
 
 /// The precision pose `S(t) = R(t) T(c(t))` over dual numbers (`t + ε` gives `S'(t)` too).
@@ -56,7 +56,7 @@ pub fn pose(t: Dual64) -> Pose<Dual64> {
 pub fn end_condition(t: f64) -> EndCondition<f64> {
     let td = Dual64::new(t, 1.0);
     let (rotor, rotor_dot) = split(&quaternion(td).unitize().expect("q(t) is never zero for t > 0"));
-    let w = (&rotor.inverse().expect("unit rotor").0 * &rotor_dot).scale(&2.0);
+    let w = (&rotor.try_inverse().expect("unit rotor") * &rotor_dot).scale(&2.0);
     let omega = [w.e23, -w.e13, w.e12];
     let c = path(td);
     EndCondition::new(split(&pose(td)).0, c.map(|x| x.re), c.map(|x| x.eps), omega)
@@ -132,10 +132,8 @@ trait MaxAbs {
     fn components_max_abs(&self) -> f64;
 }
 
-impl MaxAbs for Motor<f64> {
+impl MaxAbs for Bivector<f64> {
     fn components_max_abs(&self) -> f64 {
-        [self.scalar, self.e12, self.e13, self.e23, self.e1inf, self.e2inf, self.e3inf, self.e123inf]
-            .into_iter()
-            .fold(0.0, |m, x| m.max(x.abs()))
+        [self.e12, self.e13, self.e23, self.e1inf, self.e2inf, self.e3inf].into_iter().fold(0.0, |m, x| m.max(x.abs()))
     }
 }
