@@ -561,3 +561,44 @@ fn bspline_continuity_at_a_knot() {
     assert!(d_mul < 1e-7, "multiplicative S': {d_mul:e}");
     assert!(a_mul > 1e-4, "multiplicative S'' unexpectedly continuous: {a_mul:e}");
 }
+
+/// The body twist against an independent reference: with `A` the rotation of `F_S` (its
+/// matrix, read off `Pose::to_matrix`), `Ω_b = Aᵀ Ω` and `u_b = Aᵀ v_0`, where `v_0` is the
+/// velocity of the body origin from dual numbers (`body_point_kinematics`), not from `ν`.
+/// Also: the body twist's point velocity of body coordinates `p` is `Aᵀ` times the space
+/// velocity of that body point.
+#[test]
+fn body_twist_is_the_space_twist_seen_from_the_body() {
+    let a = Pose::from_axis_angle_translation(&[1.0, 2.0, -1.0], &0.7, &[0.5, -1.0, 2.0]).unwrap();
+    let b = Pose::from_axis_angle_translation(&[-0.3, 1.0, 0.4], &2.1, &[3.0, 1.0, -2.0]).unwrap();
+    let c = Pose::from_axis_angle_translation(&[0.0, 0.2, 1.0], &-0.9, &[1.0, 4.0, 0.0]).unwrap();
+    let m = MultiplicativeBezier::new(vec![a.clone(), b.clone(), c.clone()]).unwrap();
+    let add = AdditiveBezier::new(vec![a, b.scale(&2.0), c]).unwrap(); // non-unit poses too
+    for t in [0.0, 0.35, 0.8] {
+        for (name, v, k0, kp) in [
+            (
+                "multiplicative",
+                velocity(&m, &t).unwrap(),
+                body_point_kinematics(&m, &t, &[0.0; 3]).unwrap(),
+                body_point_kinematics(&m, &t, &[0.3, -1.0, 2.0]).unwrap(),
+            ),
+            (
+                "additive",
+                velocity(&add, &t).unwrap(),
+                body_point_kinematics(&add, &t, &[0.0; 3]).unwrap(),
+                body_point_kinematics(&add, &t, &[0.3, -1.0, 2.0]).unwrap(),
+            ),
+        ] {
+            let rot = v.pose.to_matrix().unwrap();
+            let at = |x: &[f64; 3]| -> [f64; 3] {
+                std::array::from_fn(|j| (0..3).map(|i| rot[i][j] * x[i]).sum::<f64>())
+            };
+            let body = v.body_twist().unwrap();
+            let omega = v.space_twist().angular.to_array();
+            assert!(diff_n(&body.angular.to_array(), &at(&omega)) < 1e-12, "{name} t = {t}: Ω_b");
+            assert!(diff_n(&body.linear.to_array(), &at(&k0.velocity)) < 1e-12, "{name} t = {t}: u_b");
+            let vp = body.point_velocity(&[0.3, -1.0, 2.0]).to_array();
+            assert!(diff_n(&vp, &at(&kp.velocity)) < 1e-12, "{name} t = {t}: body point");
+        }
+    }
+}
