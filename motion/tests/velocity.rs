@@ -590,9 +590,8 @@ fn body_twist_is_the_space_twist_seen_from_the_body() {
             ),
         ] {
             let rot = v.pose.to_matrix().unwrap();
-            let at = |x: &[f64; 3]| -> [f64; 3] {
-                std::array::from_fn(|j| (0..3).map(|i| rot[i][j] * x[i]).sum::<f64>())
-            };
+            let at =
+                |x: &[f64; 3]| -> [f64; 3] { std::array::from_fn(|j| (0..3).map(|i| rot[i][j] * x[i]).sum::<f64>()) };
             let body = v.body_twist().unwrap();
             let omega = v.space_twist().angular.to_array();
             assert!(diff_n(&body.angular.to_array(), &at(&omega)) < 1e-12, "{name} t = {t}: Ω_b");
