@@ -51,7 +51,7 @@ fn data() -> Data {
 }
 
 fn poses<M: Motion<f64>>(m: &M, ts: &[f64]) -> f64 {
-    ts.iter().map(|t| black_box(m.pose(black_box(t)).unwrap()).as_motor().scalar).sum()
+    ts.iter().map(|t| black_box(m.pose(black_box(t)).unwrap()).scalar).sum()
 }
 
 fn psis<M: Motion<f64>>(m: &M, ts: &[f64]) -> f64 {

@@ -25,7 +25,6 @@
 
 use crate::{MotionError, Pose};
 use algebra_core::{Real, Ring};
-use gam_algebras::g123inf::Motor;
 use std::convert::Infallible;
 
 /// Why building or evaluating a motion curve failed.
@@ -148,7 +147,7 @@ pub enum CurveError {
 /// assert_eq!(m.domain(), [0.0, 1.0]);
 /// let lifted = m.map_scalar(&|x: &f64| Jet::constant(*x));
 /// let s = lifted.pose(&Jet::variable(0.5)).unwrap();
-/// assert_eq!(s.as_motor().e1inf, Jet::new(0.5, 1.0)); // S = 1 + t e1inf, dS/dt = e1inf
+/// assert_eq!(s.e1inf, Jet::new(0.5, 1.0)); // S = 1 + t e1inf, dS/dt = e1inf
 /// ```
 pub trait Motion<T: Real> {
     /// The same kind of motion over the scalar `U`.
@@ -198,7 +197,7 @@ pub trait Motion<T: Real> {
     /// use motion::{Motion, MultiplicativeBezier, Pose};
     /// let m = MultiplicativeBezier::new(vec![Pose::<f64>::identity(), Pose::translation(&[2.0, 0.0, 0.0])]).unwrap();
     /// let d = m.map_scalar(&|x: &f64| Jet::constant(*x)).pose(&Jet::variable(0.3)).unwrap();
-    /// assert!((d.as_motor().e1inf.eps - 1.0).abs() < 1e-15);
+    /// assert!((d.e1inf.eps - 1.0).abs() < 1e-15);
     /// ```
     fn map_scalar<U: Real>(&self, f: &dyn Fn(&T) -> U) -> Self::Mapped<U>;
 }
@@ -210,16 +209,16 @@ impl<T: Ring> Pose<T> {
     /// ```
     /// use algebra_core::Jet;
     /// let p = motion::Pose::translation(&[2.0, 0.0, 0.0]).map_scalar(&|x: &f64| Jet::constant(*x));
-    /// assert_eq!(p.as_motor().e1inf, Jet::constant(1.0));
+    /// assert_eq!(p.e1inf, Jet::constant(1.0));
     /// ```
     pub fn map_scalar<U: Ring>(&self, f: &dyn Fn(&T) -> U) -> Pose<U> {
-        Pose(map_motor(&self.0, f))
+        map_even(self, f)
     }
 }
 
-/// A [`Motor`] with each coefficient mapped by `f`.
-pub(crate) fn map_motor<T: Ring, U: Ring>(m: &Motor<T>, f: &dyn Fn(&T) -> U) -> Motor<U> {
-    Motor::new(f(&m.scalar), f(&m.e12), f(&m.e13), f(&m.e23), f(&m.e1inf), f(&m.e2inf), f(&m.e3inf), f(&m.e123inf))
+/// An even element with each coefficient mapped by `f`.
+pub(crate) fn map_even<T: Ring, U: Ring>(m: &Pose<T>, f: &dyn Fn(&T) -> U) -> Pose<U> {
+    Pose::new(f(&m.scalar), f(&m.e12), f(&m.e13), f(&m.e23), f(&m.e1inf), f(&m.e2inf), f(&m.e3inf), f(&m.e123inf))
 }
 
 /// `Ok` when `start ≤ t ≤ end` (false for NaN), else [`CurveError::OutOfDomain`].
@@ -344,15 +343,15 @@ impl<T: Ring> AdditiveBezier<T> {
             s_pow.push(s_pow[i - 1].mul_ref(&s));
         }
         let mut binomial = T::one();
-        let mut sum = Motor::zero();
+        let mut sum = Pose::zero();
         for (i, pose) in self.poses.iter().enumerate() {
             if i > 0 {
                 binomial = binomial.mul_ref(&T::from_ratio((n + 1 - i) as i64, i as i64));
             }
             let weight = binomial.mul_ref(&s_pow[n - i]).mul_ref(&t_pow[i]);
-            sum += pose.0.scale(&weight);
+            sum += pose.scale(&weight);
         }
-        Pose(sum)
+        sum
     }
 
     /// `S(t)` by the de Casteljau tableau of additive combinations `(1 - t) A + t B`
@@ -427,7 +426,7 @@ impl<T: Ring> AdditiveBezier<T> {
     /// use motion::{AdditiveBezier, Pose};
     /// let m = AdditiveBezier::new(vec![Pose::<Q>::identity(), Pose::translation(&[q(2), q(0), q(0)])]).unwrap();
     /// let d = m.map_ring(&|x: &Q| Jet::constant(x.clone())).bernstein(&Jet::variable(q(0)));
-    /// assert_eq!(d.as_motor().e1inf.eps, q(1)); // dS/dt = S_1 - S_0
+    /// assert_eq!(d.e1inf.eps, q(1)); // dS/dt = S_1 - S_0
     /// ```
     pub fn map_ring<U: Ring>(&self, f: &dyn Fn(&T) -> U) -> AdditiveBezier<U> {
         AdditiveBezier { poses: self.poses.iter().map(|p| p.map_scalar(f)).collect() }
@@ -512,7 +511,7 @@ impl<T: Real> MultiplicativeBezier<T> {
     /// use motion::{MultiplicativeBezier, Pose};
     /// let m = MultiplicativeBezier::new(vec![Pose::<f64>::identity(), Pose::translation(&[4.0, 0.0, 0.0])]).unwrap();
     /// let s = m.de_casteljau(&0.25).unwrap();
-    /// assert!((s.as_motor().e1inf - 0.5).abs() < 1e-15);
+    /// assert!((s.e1inf - 0.5).abs() < 1e-15);
     /// ```
     pub fn de_casteljau(&self, t: &T) -> Result<Pose<T>, CurveError> {
         // factored as exp(l) U with U unitized at every level: stable in the degree

@@ -172,7 +172,7 @@ macro_rules! spline_accessors {
 /// let m = AdditiveBSpline::clamped_uniform(3, poses).unwrap();
 /// // Control points on a line, evenly spaced: the motion is a translation along it.
 /// let s = m.pose(&0.5).unwrap();
-/// assert!((s.as_motor().e1inf - 1.0).abs() < 1e-15 && (s.as_motor().scalar - 1.0).abs() < 1e-15);
+/// assert!((s.e1inf - 1.0).abs() < 1e-15 && (s.scalar - 1.0).abs() < 1e-15);
 /// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct AdditiveBSpline<T: Ring>(Spline<T>);

@@ -52,7 +52,7 @@ impl Pose<f64> {
     /// after unitizing. Fails for singular or non-finite poses.
     fn unit_dual_quaternion(&self) -> Result<DualQuaternion<f64>, MotionError> {
         let u = self.unitize()?;
-        Ok(DualQuaternion::from_pose(u.as_motor()))
+        Ok(DualQuaternion::from_pose(&u.to_motor()))
     }
 
     /// The nalgebra unit dual quaternion of the same rigid motion (`q = r + ε ½ t r`), after
@@ -83,7 +83,7 @@ impl Pose<f64> {
     /// ```
     pub fn from_unit_dual_quaternion(q: &UnitDualQuaternion<f64>) -> Self {
         let q = q.as_ref();
-        Pose(DualQuaternion::new(from_na(&q.real), from_na(&q.dual)).to_pose())
+        Pose::from_motor(DualQuaternion::new(from_na(&q.real), from_na(&q.dual)).to_pose())
     }
 
     /// The nalgebra isometry of the same rigid motion, `p ↦ R p + t`, after unitizing a
@@ -116,7 +116,7 @@ impl Pose<f64> {
         let r = DualQuaternion::from_real(from_na(iso.rotation.quaternion()));
         let v = iso.translation.vector;
         let q = &DualQuaternion::from_translation(&[v.x, v.y, v.z]) * &r;
-        Pose(q.to_pose())
+        Pose::from_motor(q.to_pose())
     }
 }
 

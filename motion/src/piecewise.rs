@@ -111,7 +111,7 @@ impl<T: Real, M: Motion<T>> Motion<T> for Reparametrized<T, M> {
 /// let seg = MultiplicativeBezier::new(vec![Pose::<f64>::identity(), Pose::translation(&[1.0, 0.0, 0.0])]).unwrap();
 /// let m = Piecewise::new(vec![0.0, 0.5, 2.0], vec![seg.clone(), seg]).unwrap();
 /// let s = m.pose(&1.25).unwrap(); // halfway through the second segment
-/// assert!((s.as_motor().e1inf - 0.25).abs() < 1e-15);
+/// assert!((s.e1inf - 0.25).abs() < 1e-15);
 /// assert!(matches!(m.pose(&-0.1), Err(CurveError::OutOfDomain { .. })));
 /// ```
 #[derive(Clone, Debug, PartialEq)]
@@ -272,7 +272,7 @@ fn check_breaks<T: Real>(breaks: &[T]) -> Result<(), CurveError> {
 /// let first: AnyMotion<f64> = AdditiveBezier::new(vec![Pose::identity(), b.clone()]).unwrap().into();
 /// let second = MultiplicativeBezier::new(vec![b, Pose::translation(&[2.0, 0.0, 0.0])]).unwrap().into();
 /// let m = Piecewise::uniform(vec![first, second]).unwrap();
-/// assert!((m.pose(&1.5).unwrap().as_motor().e1inf - 0.75).abs() < 1e-15);
+/// assert!((m.pose(&1.5).unwrap().e1inf - 0.75).abs() < 1e-15);
 /// ```
 #[derive(Clone, Debug, PartialEq)]
 pub enum AnyMotion<T: Ring> {
