@@ -141,12 +141,8 @@ fn pose(path: &str, i: usize, v: &Value) -> Result<Pose<f64>, CliError> {
     if let Some(q) = obj.get("quaternion") {
         let q: [f64; 4] = serde_json::from_value(q.clone())
             .map_err(|_| usage(path, format!("`{}` must be [w, x, y, z]", at("quaternion"))))?;
-        let n = q.iter().map(|x| x * x).sum::<f64>().sqrt();
-        if !(n > 0.0 && n.is_finite()) {
-            return Err(usage(path, format!("`{}` must be non-zero and finite", at("quaternion"))));
-        }
-        let r = Pose::rotor_from_parts(&(q[0] / n), &1.0, &[q[1] / n, q[2] / n, q[3] / n]);
-        return Ok(r * Pose::translation(&position));
+        return Pose::from_quaternion_translation(&q, &position)
+            .map_err(|_| usage(path, format!("`{}` must be non-zero and finite", at("quaternion"))));
     }
     match (obj.get("axis"), obj.get("angle")) {
         (None, None) => Ok(Pose::translation(&position)),

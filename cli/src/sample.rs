@@ -14,7 +14,7 @@ use crate::hermite::{build_segment, read_spec};
 use crate::output::{mv_human, mv_json, text_table};
 use crate::scalar::format_f64;
 use motion::velocity::velocity;
-use motion::{AdditiveBezier, AnyMotion, MultiplicativeBezier, Pose, SegmentKind};
+use motion::{AnyMotion, Pose, SegmentKind};
 use serde_json::{Value, json};
 
 /// The most samples accepted.
@@ -70,12 +70,7 @@ pub(crate) fn sample_spec(path: &str, n: usize) -> Result<Sampled, CliError> {
     // building the segment is O(degree); sampling it is O(samples x degree^2)
     crate::budget::check(&format!("sampling degree {degree} at {n} values"), crate::budget::sampling_work(degree, n))?;
     let curve = |e: motion::CurveError| CliError::math(e.to_string());
-    let motion: AnyMotion<f64> = match kind {
-        SegmentKind::Additive => AnyMotion::AdditiveBezier(AdditiveBezier::new(seg.control_poses).map_err(curve)?),
-        SegmentKind::Multiplicative => {
-            AnyMotion::MultiplicativeBezier(MultiplicativeBezier::new(seg.control_poses).map_err(curve)?)
-        }
-    };
+    let motion: AnyMotion<f64> = seg.into_motion().map_err(curve)?;
     let last = (n - 1) as f64;
     let mut samples = Vec::with_capacity(n);
     for i in 0..n {

@@ -50,4 +50,7 @@ pub enum MotionError {
         /// What failed (bottom row, orthonormality or orientation).
         why: String,
     },
+    /// A rotation quaternion `[w, x, y, z]` that is zero (no rotation to normalise to).
+    #[error("the rotation quaternion is zero")]
+    ZeroQuaternion,
 }

@@ -30,7 +30,7 @@
 
 use crate::joins::{self, EndCondition, JoinError, SegmentKind, Shape};
 use crate::pose::is_positive;
-use crate::{Bivector, Even, Pose};
+use crate::{AdditiveBezier, AnyMotion, Bivector, CurveError, Even, MultiplicativeBezier, Pose};
 use algebra_core::{Real, Ring};
 
 /// The shape parameters of a Hermite interpolation (see the module docs).
@@ -124,6 +124,28 @@ impl<T> HermiteSegment<T> {
     /// ```
     pub fn degree(&self) -> usize {
         self.control_poses.len().saturating_sub(1)
+    }
+}
+
+impl<T: Real> HermiteSegment<T> {
+    /// The segment as a motion on `[0, 1]`: the [`crate::Bezier`] of its control poses with
+    /// the segment's blend (the runtime [`SegmentKind`] picks [`crate::Additive`] or
+    /// [`crate::Multiplicative`]).
+    ///
+    /// ```
+    /// use motion::{EndCondition, Motion, SegmentKind, Shape, hermite};
+    /// let a = EndCondition::from_axis_angle(&[0.0; 3], &[0.0, 0.0, 1.0], &0.0, &[1.0, 0.0, 0.0], &[0.0; 3])?;
+    /// let b = EndCondition::from_axis_angle(&[2.0, 0.0, 0.0], &[0.0, 0.0, 1.0], &0.0, &[1.0, 0.0, 0.0], &[0.0; 3])?;
+    /// let seg = hermite::hermite_segment(SegmentKind::Additive, 3, &a, &b, &Shape::unit(), &Shape::unit())?;
+    /// let m = seg.clone().into_motion()?;
+    /// assert_eq!(m.pose(&1.0)?, seg.control_poses[3]);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn into_motion(self) -> Result<AnyMotion<T>, CurveError> {
+        Ok(match self.kind {
+            SegmentKind::Additive => AnyMotion::from(AdditiveBezier::new(self.control_poses)?),
+            SegmentKind::Multiplicative => AnyMotion::from(MultiplicativeBezier::new(self.control_poses)?),
+        })
     }
 }
 

@@ -42,6 +42,7 @@
 //! # Ok::<(), motion::joins::JoinError>(())
 //! ```
 
+use crate::blend::{Additive, Blend, Multiplicative};
 use crate::pose::is_positive;
 use crate::{Bivector, Even, Pseudoscalar, Vec3};
 use crate::{MotionError, Pose};
@@ -99,35 +100,14 @@ pub enum SegmentKind {
     Multiplicative,
 }
 
-impl SegmentKind {
-    /// `"additive"` or `"multiplicative"`.
-    ///
-    /// ```
-    /// assert_eq!(motion::SegmentKind::Multiplicative.name(), "multiplicative");
-    /// ```
-    pub fn name(self) -> &'static str {
-        match self {
-            SegmentKind::Additive => "additive",
-            SegmentKind::Multiplicative => "multiplicative",
-        }
-    }
-}
-
-impl std::fmt::Display for SegmentKind {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(self.name())
-    }
-}
+crate::names::named!("motion::SegmentKind", SegmentKind { Additive => "additive", Multiplicative => "multiplicative" });
 
 impl std::str::FromStr for SegmentKind {
     type Err = String;
     /// `additive` or `multiplicative`.
     fn from_str(s: &str) -> Result<Self, String> {
-        match s {
-            "additive" => Ok(SegmentKind::Additive),
-            "multiplicative" => Ok(SegmentKind::Multiplicative),
-            _ => Err(format!("unknown segment kind `{s}` (expected additive or multiplicative)")),
-        }
+        SegmentKind::from_name(s)
+            .ok_or_else(|| format!("unknown segment kind `{s}` (expected additive or multiplicative)"))
     }
 }
 
@@ -458,8 +438,8 @@ pub fn start_control_pose<T: Real>(
     degree: usize,
 ) -> Result<Pose<T>, JoinError> {
     match kind {
-        SegmentKind::Additive => additive_start(s0, psi0, degree),
-        SegmentKind::Multiplicative => multiplicative_start(s0, psi0, degree),
+        SegmentKind::Additive => Additive::start_control_pose(s0, psi0, degree),
+        SegmentKind::Multiplicative => Multiplicative::start_control_pose(s0, psi0, degree),
     }
 }
 
@@ -481,8 +461,8 @@ pub fn end_control_pose<T: Real>(
     degree: usize,
 ) -> Result<Pose<T>, JoinError> {
     match kind {
-        SegmentKind::Additive => additive_end(sn, psin, degree),
-        SegmentKind::Multiplicative => multiplicative_end(sn, psin, degree),
+        SegmentKind::Additive => Additive::end_control_pose(sn, psin, degree),
+        SegmentKind::Multiplicative => Multiplicative::end_control_pose(sn, psin, degree),
     }
 }
 
@@ -501,20 +481,9 @@ pub fn end_control_pose<T: Real>(
 /// # Ok::<(), motion::joins::JoinError>(())
 /// ```
 pub fn end_indicatrices<T: Real>(kind: SegmentKind, controls: &[Pose<T>]) -> Result<[Even<T>; 2], JoinError> {
-    let n = controls.len().checked_sub(1).filter(|&n| n >= 1).ok_or(JoinError::Degree { degree: 0, min: 1 })?;
-    let two_n = T::from_i64(2 * n as i64);
-    let (s0, s1, sm, sn) = (&controls[0], &controls[1], &controls[n - 1], &controls[n]);
     match kind {
-        SegmentKind::Additive => {
-            let a = &s0.try_inverse()? * &(s1 - s0);
-            let b = &sn.try_inverse()? * &(sn - sm);
-            Ok([a.scale(&two_n), b.scale(&two_n)])
-        }
-        SegmentKind::Multiplicative => {
-            let a = (&s0.reverse() * s1).log()?;
-            let b = (&sn.reverse() * sm).log()?;
-            Ok([a.scale(&two_n), b.scale(&two_n.neg_ref())])
-        }
+        SegmentKind::Additive => Additive::end_indicatrices(controls),
+        SegmentKind::Multiplicative => Multiplicative::end_indicatrices(controls),
     }
 }
 

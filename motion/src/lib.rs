@@ -23,8 +23,9 @@
 //! | [`pseudoscalar`] | `a + bω`: inverse, square root, exp, ln, pow (Lemma 2.4) |
 //! | [`exp_log`] | closed-form exp and log ("dual angle") |
 //! | [`interpolation`] | power, slerp (eq. 15), additive interpolation (eq. 17) |
-//! | [`bezier`] | the [`Motion`] trait, [`CurveError`], additive (eq. 18) and multiplicative (Fig. 2) Bezier motions |
-//! | [`bspline`] | additive and multiplicative B-spline motions with knots (de Boor) |
+//! | [`bezier`] | the [`Motion`] and [`MapScalar`] traits, [`CurveError`], [`Bezier`] motions: additive (eq. 18) and multiplicative (Fig. 2) |
+//! | [`blend`] | [`Blend`]: [`Additive`] (eq. 17) or [`Multiplicative`] (eq. 15) as a type parameter, with the join rules (eqs. 20-23) |
+//! | [`bspline`] | [`BSpline`] motions with knots (de Boor), either blend |
 //! | [`piecewise`] | motions over parameter intervals: [`Reparametrized`], [`Piecewise`], [`AnyMotion`] |
 //! | [`velocity`] | Ψ (eq. 11), γ, ν, Ω and u (Thm 3.2), point velocities (eq. 14), Cor. 3.3, second derivatives, all by dual numbers |
 //! | [`joins`] | end conditions, `ν` and `Ψ = λ(ν + γ)`, control poses for C1/G1 joins (eqs. 22-23), [`Continuity`] check |
@@ -47,6 +48,7 @@
 
 pub mod action;
 pub mod bezier;
+pub mod blend;
 pub mod bspline;
 pub mod error;
 pub mod exp_log;
@@ -60,6 +62,7 @@ pub mod method;
 pub mod nalgebra_conv;
 #[cfg(feature = "nalgebra")]
 pub mod nalgebra_generic;
+mod names;
 mod ops;
 pub mod paper;
 pub mod piecewise;
@@ -74,8 +77,9 @@ pub mod vec3;
 pub mod velocity;
 
 pub use algebra_core;
-pub use bezier::{AdditiveBezier, CurveError, Motion, MultiplicativeBezier};
-pub use bspline::{AdditiveBSpline, MultiplicativeBSpline};
+pub use bezier::{AdditiveBezier, Bezier, CurveError, MapScalar, Motion, MultiplicativeBezier};
+pub use blend::{Additive, Blend, Multiplicative};
+pub use bspline::{AdditiveBSpline, BSpline, MultiplicativeBSpline};
 pub use error::MotionError;
 pub use gam_algebras::g123inf::Motor;
 pub use hermite::{HermiteSegment, HermiteShapes};

@@ -39,7 +39,7 @@
 //! # Ok::<(), motion::trajectory::TrajectoryError>(())
 //! ```
 
-use crate::bezier::{AdditiveBezier, CurveError, Motion, MultiplicativeBezier};
+use crate::bezier::{CurveError, Motion};
 use crate::hermite::{HermiteSegment, HermiteShapes, hermite_with_parameters};
 use crate::joins::{EndCondition, JoinError, SegmentKind};
 use crate::piecewise::{AnyMotion, Piecewise};
@@ -241,17 +241,7 @@ impl<T: Real> Trajectory<T> {
             })
             .collect::<Result<Vec<_>, MotionError>>()?;
         let segments = hermite_with_parameters(kind, 3, &conditions, times, shapes)?;
-        let pieces = segments
-            .iter()
-            .map(|seg| {
-                Ok(match kind {
-                    SegmentKind::Additive => AnyMotion::from(AdditiveBezier::new(seg.control_poses.clone())?),
-                    SegmentKind::Multiplicative => {
-                        AnyMotion::from(MultiplicativeBezier::new(seg.control_poses.clone())?)
-                    }
-                })
-            })
-            .collect::<Result<Vec<_>, CurveError>>()?;
+        let pieces = segments.iter().map(|seg| seg.clone().into_motion()).collect::<Result<Vec<_>, CurveError>>()?;
         let motion = Piecewise::new(times.to_vec(), pieces)?;
         let tr = Trajectory { kind, poses, twists, segments, motion };
         if !matches!(shapes, HermiteShapes::PerSegment(_)) {

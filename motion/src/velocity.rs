@@ -1,6 +1,6 @@
 //! Velocities of motions (Sec. 3 of the main paper), with every derivative taken by running
 //! the motion's own evaluation code over dual numbers: the control poses are lifted with
-//! [`Motion::map_scalar`] to [`Jet<T>`] (or `Jet<Jet<T>>` for second derivatives) and the motion
+//! [`MapScalar::map_scalar`] to [`Jet<T>`] (or `Jet<Jet<T>>` for second derivatives) and the motion
 //! is evaluated at `t + ε`. No derivative formula is written by hand.
 //!
 //! * the velocity indicatrix `Ψ(t) = 2 S(t)⁻¹ dS/dt` (eq. 11), for unit and non-unit motions;
@@ -31,7 +31,7 @@
 //! assert!(v.gamma().scalar.abs() < 1e-15); // unitary motion: Ψ = ν (Lemma 3.4)
 //! ```
 
-use crate::bezier::{CurveError, Motion};
+use crate::bezier::{CurveError, MapScalar, Motion, check_domain};
 use crate::{Bivector, Even, Pseudoscalar, Vec3};
 use crate::{MotionError, Pose};
 use algebra_core::{Field, Jet, Real, Ring};
@@ -74,8 +74,12 @@ pub fn split_jet<T: Ring>(m: &Even<Jet<T>>) -> (Even<T>, Even<T>) {
 /// assert_eq!(s, Pose::translation(&[1.0, 0.0, 0.0]));
 /// assert_eq!(ds.e1inf, 1.0); // S_1 - S_0 = e1inf
 /// ```
-pub fn pose_derivative<T: Real, M: Motion<T>>(motion: &M, t: &T) -> Result<(Pose<T>, Even<T>), CurveError> {
-    let s = motion.map_scalar(&lift::<T>).pose(&Jet::variable(t.clone()))?;
+pub fn pose_derivative<T: Field + PartialOrd, M: MapScalar<T, Jet<T>>>(
+    motion: &M,
+    t: &T,
+) -> Result<(Pose<T>, Even<T>), CurveError> {
+    check_domain(t, &motion.domain())?;
+    let s = motion.map_scalar(&lift::<T>).evaluate(&Jet::variable(t.clone()))?;
     Ok(split_jet(&s))
 }
 
@@ -99,7 +103,10 @@ pub type SecondOrder<T> = (Pose<T>, Even<T>, Even<T>);
 /// let (_, ds, dds) = pose_second_derivative(&m, &0.5).unwrap();
 /// assert_eq!((ds.e1inf, dds.e1inf), (1.0, 2.0)); // S = 1 + t² e1inf
 /// ```
-pub fn pose_second_derivative<T: Real, M: Motion<T>>(motion: &M, t: &T) -> Result<SecondOrder<T>, CurveError> {
+pub fn pose_second_derivative<T: Real, M: MapScalar<T, Jet<Jet<T>>>>(
+    motion: &M,
+    t: &T,
+) -> Result<SecondOrder<T>, CurveError> {
     let s = evaluate2(motion, t)?;
     let (value, derivative) = split_jet(&s);
     let (s0, s1) = split_jet(&value);
@@ -109,9 +116,10 @@ pub fn pose_second_derivative<T: Real, M: Motion<T>>(motion: &M, t: &T) -> Resul
 
 /// The motion over `Jet<Jet<T>>` at `Jet(Jet(t, 1), Jet(1, 0))`: the value part is
 /// `S + S'ε₁`, the derivative part `S' + S''ε₁`.
-fn evaluate2<T: Real, M: Motion<T>>(motion: &M, t: &T) -> Result<Pose<Jet<Jet<T>>>, CurveError> {
+fn evaluate2<T: Real, M: MapScalar<T, Jet<Jet<T>>>>(motion: &M, t: &T) -> Result<Pose<Jet<Jet<T>>>, CurveError> {
     let tt = Jet::new(Jet::variable(t.clone()), Jet::constant(T::one()));
-    motion.map_scalar(&lift2::<T>).pose(&tt)
+    check_domain(t, &motion.domain())?;
+    motion.map_scalar(&lift2::<T>).evaluate(&tt)
 }
 
 /// The definition `Ψ = 2 S⁻¹ dS/dt` (eq. 11) for a pose and its derivative, over any field
@@ -142,7 +150,10 @@ pub fn indicatrix_from_derivative<T: Field>(s: &Pose<T>, ds: &Even<T>) -> Result
 /// let psi = velocity_indicatrix(&m, &1.0).unwrap();
 /// assert_eq!((psi.scalar, psi.e12), (1.0, 0.0));
 /// ```
-pub fn velocity_indicatrix<T: Real, M: Motion<T>>(motion: &M, t: &T) -> Result<Even<T>, CurveError> {
+pub fn velocity_indicatrix<T: Field + PartialOrd, M: MapScalar<T, Jet<T>>>(
+    motion: &M,
+    t: &T,
+) -> Result<Even<T>, CurveError> {
     let (s, ds) = pose_derivative(motion, t)?;
     Ok(indicatrix_from_derivative(&s, &ds)?)
 }
@@ -158,7 +169,7 @@ pub fn velocity_indicatrix<T: Real, M: Motion<T>>(motion: &M, t: &T) -> Result<E
 /// let (psi, dpsi) = velocity_indicatrix_derivative(&m, &1.0).unwrap();
 /// assert_eq!((psi.scalar, dpsi.scalar), (1.0, -0.5));
 /// ```
-pub fn velocity_indicatrix_derivative<T: Real, M: Motion<T>>(
+pub fn velocity_indicatrix_derivative<T: Real, M: MapScalar<T, Jet<Jet<T>>>>(
     motion: &M,
     t: &T,
 ) -> Result<(Even<T>, Even<T>), CurveError> {
@@ -197,7 +208,10 @@ pub fn split_indicatrix<T: Ring>(psi: &Even<T>) -> (Pseudoscalar<T>, Bivector<T>
 /// let nu = velocity_bivector(&m, &0.5).unwrap();
 /// assert_eq!(nu.e1inf, 3.0); // u = (3, 0, 0)
 /// ```
-pub fn velocity_bivector<T: Real, M: Motion<T>>(motion: &M, t: &T) -> Result<Bivector<T>, CurveError> {
+pub fn velocity_bivector<T: Field + PartialOrd, M: MapScalar<T, Jet<T>>>(
+    motion: &M,
+    t: &T,
+) -> Result<Bivector<T>, CurveError> {
     Ok(split_indicatrix(&velocity_indicatrix(motion, t)?).1)
 }
 
@@ -318,7 +332,7 @@ pub struct Velocity<T: Ring> {
 /// let m = MultiplicativeBezier::new(vec![Pose::<f64>::identity(), Pose::rotation(&[1.0, 0.0, 0.0], &2.0).unwrap()]).unwrap();
 /// assert!((velocity(&m, &0.3).unwrap().twist().angular[0] - 2.0).abs() < 1e-15);
 /// ```
-pub fn velocity<T: Real, M: Motion<T>>(motion: &M, t: &T) -> Result<Velocity<T>, CurveError> {
+pub fn velocity<T: Field + PartialOrd, M: MapScalar<T, Jet<T>>>(motion: &M, t: &T) -> Result<Velocity<T>, CurveError> {
     let (pose, derivative) = pose_derivative(motion, t)?;
     let indicatrix = indicatrix_from_derivative(&pose, &derivative)?;
     Ok(Velocity { pose, derivative, indicatrix })
@@ -461,7 +475,7 @@ pub struct Acceleration<T: Ring> {
 /// let a = acceleration(&m, &0.4).unwrap();
 /// assert!(a.twist_derivative().angular.to_array().iter().all(|x| x.abs() < 1e-15));
 /// ```
-pub fn acceleration<T: Real, M: Motion<T>>(motion: &M, t: &T) -> Result<Acceleration<T>, CurveError> {
+pub fn acceleration<T: Real, M: MapScalar<T, Jet<Jet<T>>>>(motion: &M, t: &T) -> Result<Acceleration<T>, CurveError> {
     let s = evaluate2(motion, t)?;
     let (value, derivative) = split_jet(&s);
     let psi = indicatrix_from_derivative(&value, &derivative)?;
@@ -545,7 +559,7 @@ pub struct PointKinematics<T> {
 /// let k = body_point_kinematics(&m, &0.0, &[1.0, 0.0, 0.0]).unwrap();
 /// assert!((k.velocity[1] - 1.0).abs() < 1e-15 && (k.acceleration[0] + 1.0).abs() < 1e-15);
 /// ```
-pub fn body_point_kinematics<T: Real, M: Motion<T>>(
+pub fn body_point_kinematics<T: Real, M: MapScalar<T, Jet<Jet<T>>>>(
     motion: &M,
     t: &T,
     p: &[T; 3],

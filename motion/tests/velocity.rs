@@ -15,8 +15,8 @@ use motion::velocity::{
     pose_derivative, pose_second_derivative, split_indicatrix, split_jet, velocity, velocity_indicatrix_derivative,
 };
 use motion::{
-    AdditiveBSpline, AdditiveBezier, AnyMotion, Even, Motion, MultiplicativeBSpline, MultiplicativeBezier, Piecewise,
-    Pose, Pseudoscalar, velocity_bivector, velocity_indicatrix,
+    AdditiveBSpline, AdditiveBezier, AnyMotion, Even, MapScalar, Motion, MultiplicativeBSpline, MultiplicativeBezier,
+    Piecewise, Pose, Pseudoscalar, velocity_bivector, velocity_indicatrix,
 };
 use num_dual::{Dual2_64, Dual64};
 
@@ -273,7 +273,7 @@ fn quadrant_example_path_and_distances() {
 }
 
 /// The speed of the body origin at `t` on piece `k` alone (one-sided at a join).
-fn left_speed<M: Motion<f64> + Clone>(m: &Piecewise<f64, M>, k: usize, t: f64) -> f64 {
+fn left_speed<M: MapScalar<f64, Jet<f64>> + Clone>(m: &Piecewise<f64, M>, k: usize, t: f64) -> f64 {
     let piece = m.piece(k).unwrap();
     let (_, v) = velocity(&piece, &t).unwrap().body_point_velocity(&[0.0; 3]).unwrap();
     (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt()

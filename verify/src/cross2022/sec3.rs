@@ -21,7 +21,7 @@ use crate::{Checker, Method, Paper, Statement};
 use algebra_core::rational::{Q, ratio};
 use algebra_core::{Algebra, Basis, Field, Jet, MpFloat, Multivector, Poly, PrecisionGuard, Real, Ring};
 use motion::velocity::{bivector_from_point_velocity, split_indicatrix, velocity};
-use motion::{AdditiveBezier, Motion, MultiplicativeBezier, Pose};
+use motion::{AdditiveBezier, MapScalar, Motion, MultiplicativeBezier, Pose};
 use motion::{Bivector, Even, Pseudoscalar};
 use std::sync::Arc;
 
@@ -212,7 +212,7 @@ fn vector(alg: &Arc<Algebra>, x: &[MpFloat; 3]) -> Option<Multivector<MpFloat>> 
 
 /// Current position and velocity of the body point `p`, by differentiating its trajectory
 /// `F_{S(t)}(p)` over dual numbers.
-fn trajectory<M: Motion<MpFloat>>(
+fn trajectory<M: MapScalar<MpFloat, Jet<MpFloat>>>(
     m: &M,
     t: &MpFloat,
     p: &[MpFloat; 3],
@@ -255,7 +255,7 @@ struct Sample {
     at_origin_velocity: [MpFloat; 3],
 }
 
-fn sample<M: Motion<MpFloat>>(m: &M, t: &MpFloat, p: &[MpFloat; 3]) -> Result<Sample, String> {
+fn sample<M: MapScalar<MpFloat, Jet<MpFloat>>>(m: &M, t: &MpFloat, p: &[MpFloat; 3]) -> Result<Sample, String> {
     let vel = velocity(m, t).map_err(|e| e.to_string())?;
     let (gamma, nu) = split_indicatrix(&vel.indicatrix);
     let (q, v) = trajectory(m, t, p)?;
