@@ -26,12 +26,14 @@ pub(super) fn product_trait(p: Product) -> (&'static str, &'static str) {
     }
 }
 
-/// The operator trait (if any) of each product: `*` geometric, `^` outer, `|` left contraction.
+/// The operator trait (if any) of each product: `*` geometric, `^` outer, `|` left
+/// contraction, `&` the join (regressive product, as in klein and ganja).
 pub(super) fn product_operator(p: Product) -> Option<(&'static str, &'static str)> {
     match p {
         Product::Geometric => Some(("Mul", "mul")),
         Product::Outer => Some(("BitXor", "bitxor")),
         Product::LeftContraction => Some(("BitOr", "bitor")),
+        Product::Regressive => Some(("BitAnd", "bitand")),
         _ => None,
     }
 }
@@ -111,19 +113,41 @@ pub(super) fn sum(mut terms: Vec<SumTerm>) -> TokenStream {
 pub(super) struct Names {
     pub(super) types: Vec<Ident>,
     pub(super) fields: Vec<Vec<Ident>>,
+    /// The element names as declared (`e20` where the user reordered `e02`).
     pub(super) elements: Vec<Vec<String>>,
     pub(super) masks: Vec<Vec<u32>>,
+    /// Per field: `-1` when its name reverses the canonical orientation.
+    pub(super) signs: Vec<Vec<i64>>,
 }
 
 impl Names {
     pub(super) fn new(plan: &Plan) -> Names {
         let alg = &plan.spec.algebra;
         let types = plan.spec.types.iter().map(|t| ident(&t.name)).collect();
-        let elements: Vec<Vec<String>> =
-            plan.spec.types.iter().map(|t| t.elements.iter().map(|&m| alg.name_of(m).to_string()).collect()).collect();
+        let elements: Vec<Vec<String>> = plan
+            .spec
+            .types
+            .iter()
+            .map(|t| {
+                t.elements
+                    .iter()
+                    .map(|m| t.renamed.get(m).map_or_else(|| alg.name_of(*m).to_string(), |(n, _)| n.clone()))
+                    .collect()
+            })
+            .collect();
         let fields = elements.iter().map(|es| es.iter().map(|e| ident(&field_name(e))).collect()).collect();
         let masks = plan.spec.types.iter().map(|t| t.elements.clone()).collect();
-        Names { types, fields, elements, masks }
+        let signs = plan.spec.types.iter().map(super::orient::field_signs).collect();
+        Names { types, fields, elements, masks, signs }
+    }
+
+    /// `expr` (a `T` place), cloned, negated when `sign` is `-1`.
+    pub(super) fn signed(expr: TokenStream, sign: i64) -> TokenStream {
+        if sign < 0 {
+            quote!(::algebra_core::Ring::neg_ref(&#expr))
+        } else {
+            quote!(::core::clone::Clone::clone(&#expr))
+        }
     }
 }
 
@@ -170,12 +194,14 @@ pub fn module_items(plan: &Plan) -> TokenStream {
     };
     let structs = (0..names.types.len()).map(|i| type_items(plan, &names, i));
     let binaries = plan.binary.iter().map(|k| binary_items(&names, k));
+    let typed = plan.typed.iter().map(|k| typed_items(&names, k));
     let conversions = conversion_items(&names);
     let actions = super::versor::module_items(plan, &names);
+    let matrices = super::matrix::module_items(plan, &names);
     quote! {
         pub use ::algebra_core::ops::{
-            AnticommutatorProduct, Apply, CommutatorProduct, GeometricProduct, LeftContraction, OuterProduct,
-            RegressiveProduct, RightContraction, Sandwich, ScalarProduct,
+            ActionMatrix, AnticommutatorProduct, Apply, CommutatorProduct, GeometricProduct, GeometricProductInto,
+            LeftContraction, OuterProduct, RegressiveProduct, RightContraction, Sandwich, ScalarProduct,
         };
         pub use ::algebra_core::{Field, Ring};
 
@@ -198,8 +224,10 @@ pub fn module_items(plan: &Plan) -> TokenStream {
 
         #(#structs)*
         #(#binaries)*
+        #(#typed)*
         #conversions
         #actions
+        #matrices
     }
 }
 
@@ -210,6 +238,10 @@ fn type_items(plan: &Plan, names: &Names, i: usize) -> TokenStream {
     let elements = &names.elements[i];
     let masks = &names.masks[i];
     let count = fields.len();
+    let to_runtime: Vec<TokenStream> =
+        fields.iter().zip(&names.signs[i]).map(|(f, &s)| Names::signed(quote!(self.#f), s)).collect();
+    let from_runtime: Vec<TokenStream> =
+        masks.iter().zip(&names.signs[i]).map(|(m, &s)| Names::signed(quote!(*m.coeff(#m)), s)).collect();
     let basis_doc = format!(
         "Basis elements ({} basis): {}.",
         plan.spec.basis,
@@ -262,7 +294,7 @@ fn type_items(plan: &Plan, names: &Names, i: usize) -> TokenStream {
             /// The same element as a runtime multivector of [`algebra()`].
             pub fn to_multivector(&self) -> ::algebra_core::Multivector<T> {
                 let mut m = ::algebra_core::Multivector::zero(&algebra(), BASIS);
-                #(*m.coeff_mut(#masks) = ::core::clone::Clone::clone(&self.#fields);)*
+                #(*m.coeff_mut(#masks) = #to_runtime;)*
                 m
             }
 
@@ -270,7 +302,7 @@ fn type_items(plan: &Plan, names: &Names, i: usize) -> TokenStream {
             /// type's basis elements (in [`BASIS`]); every other coefficient is dropped.
             pub fn project(m: &::algebra_core::Multivector<T>) -> Self {
                 let m = m.in_basis(BASIS);
-                #ty { #(#fields: ::core::clone::Clone::clone(m.coeff(#masks))),* }
+                #ty { #(#fields: #from_runtime),* }
             }
 
             /// The sandwich `f_S(x) = rev(S) x S` of the main paper (eq. 3); a fused kernel typed
@@ -289,6 +321,52 @@ fn type_items(plan: &Plan, names: &Names, i: usize) -> TokenStream {
                 Self: ::algebra_core::ops::Apply<X>,
             {
                 ::algebra_core::ops::Apply::apply(self, x)
+            }
+
+            /// The matrix of the action `x ↦ self x rev(self)` on `X` (see `ActionMatrix`):
+            /// `let m = motor.apply_matrix::<Point<f64>>();` then `Motor::transform(&m, &p)`
+            /// per point equals `motor.apply(&p)`.
+            pub fn apply_matrix<X>(&self) -> <Self as ::algebra_core::ops::ActionMatrix<X>>::Matrix
+            where
+                Self: ::algebra_core::ops::ActionMatrix<X>,
+            {
+                ::algebra_core::ops::ActionMatrix::apply_matrix(self)
+            }
+
+            /// The matrix of the action `x ↦ rev(self) x self` on `X` (see `ActionMatrix`).
+            pub fn sandwich_matrix<X>(&self) -> <Self as ::algebra_core::ops::ActionMatrix<X>>::Matrix
+            where
+                Self: ::algebra_core::ops::ActionMatrix<X>,
+            {
+                ::algebra_core::ops::ActionMatrix::sandwich_matrix(self)
+            }
+
+            /// An action matrix of this type applied to `x` (see `ActionMatrix`).
+            pub fn transform<X>(m: &<Self as ::algebra_core::ops::ActionMatrix<X>>::Matrix, x: &X) -> X
+            where
+                Self: ::algebra_core::ops::ActionMatrix<X>,
+            {
+                <Self as ::algebra_core::ops::ActionMatrix<X>>::transform(m, x)
+            }
+
+            /// The join `self ∨ x` (the regressive product, also `self & x`):
+            /// `undual(dual(self) ^ dual(x))` with the metric-free complements of `dual`, so it
+            /// is the same in degenerate metrics (PGA) as in non-degenerate ones.
+            pub fn join<X>(&self, x: &X) -> <Self as ::algebra_core::ops::RegressiveProduct<X>>::Output
+            where
+                Self: ::algebra_core::ops::RegressiveProduct<X>,
+            {
+                ::algebra_core::ops::RegressiveProduct::regressive(self, x)
+            }
+
+            /// The geometric product computed only on `O`'s components (the projection of
+            /// `self * x` onto `O`): `let r: Rotor<f64> = a.gp_into(&b);` or
+            /// `a.gp_into::<Rotor<f64>, _>(&b)`. See `GeometricProductInto`.
+            pub fn gp_into<O, X>(&self, x: &X) -> O
+            where
+                Self: ::algebra_core::ops::GeometricProductInto<X, O>,
+            {
+                ::algebra_core::ops::GeometricProductInto::gp_into(self, x)
             }
 
             #(#unaries)*
@@ -466,11 +544,13 @@ fn inverse_method(plan: &Plan, names: &Names, i: usize) -> TokenStream {
     }
 }
 
-fn binary_items(names: &Names, k: &BinaryKernel) -> TokenStream {
-    let (lt, rt, ot) = (&names.types[k.lhs], &names.types[k.rhs], &names.types[k.out]);
+/// The body of a binary kernel: straight-line code, or a table loop above the size threshold.
+fn kernel_body(names: &Names, k: &BinaryKernel) -> TokenStream {
+    if super::size::is_large(k.outputs.iter().map(Vec::len)) {
+        return super::size::binary_body(names, k);
+    }
     let (lf, rf, of) = (&names.fields[k.lhs], &names.fields[k.rhs], &names.fields[k.out]);
-    let (trait_name, method) = product_trait(k.product);
-    let (trait_name, method) = (ident(trait_name), ident(method));
+    let ot = &names.types[k.out];
     let mut uses: BTreeMap<(usize, usize), usize> = BTreeMap::new();
     for t in k.outputs.iter().flatten() {
         *uses.entry((t.lhs, t.rhs)).or_default() += 1;
@@ -495,6 +575,16 @@ fn binary_items(names: &Names, k: &BinaryKernel) -> TokenStream {
                 .collect())
         })
         .collect();
+    quote! {
+        #(#binds)*
+        #ot { #(#of: #exprs),* }
+    }
+}
+
+fn binary_items(names: &Names, k: &BinaryKernel) -> TokenStream {
+    let (lt, rt, ot) = (&names.types[k.lhs], &names.types[k.rhs], &names.types[k.out]);
+    let (trait_name, method) = product_trait(k.product);
+    let (trait_name, method) = (ident(trait_name), ident(method));
     let operator = product_operator(k.product).map(|(op_trait, op_method)| {
         let (op_trait, op_method) = (ident(op_trait), ident(op_method));
         quote! {
@@ -509,13 +599,17 @@ fn binary_items(names: &Names, k: &BinaryKernel) -> TokenStream {
         }
     });
     let mixed = super::value::mixed_operators(names, k);
-    let body = if super::size::is_large(k.outputs.iter().map(Vec::len)) {
-        super::size::binary_body(names, k)
-    } else {
+    let body = kernel_body(names, k);
+    let typed = if k.product == Product::Geometric {
+        // `gp_into` with the natural output type is `gp` itself
         quote! {
-            #(#binds)*
-            #ot { #(#of: #exprs),* }
+            impl<T: ::algebra_core::Ring> ::algebra_core::ops::GeometricProductInto<#rt<T>, #ot<T>> for #lt<T> {
+                #[inline]
+                fn gp_into(&self, rhs: &#rt<T>) -> #ot<T> { ::algebra_core::ops::GeometricProduct::gp(self, rhs) }
+            }
         }
+    } else {
+        quote!()
     };
     quote! {
         impl<T: ::algebra_core::Ring> ::algebra_core::ops::#trait_name<#rt<T>> for #lt<T> {
@@ -525,8 +619,23 @@ fn binary_items(names: &Names, k: &BinaryKernel) -> TokenStream {
                 #body
             }
         }
+        #typed
         #operator
         #mixed
+    }
+}
+
+/// An output-typed geometric product (`GeometricProductInto<Rhs, Out>`): only `Out`'s terms.
+fn typed_items(names: &Names, k: &BinaryKernel) -> TokenStream {
+    let (lt, rt, ot) = (&names.types[k.lhs], &names.types[k.rhs], &names.types[k.out]);
+    let body = kernel_body(names, k);
+    quote! {
+        impl<T: ::algebra_core::Ring> ::algebra_core::ops::GeometricProductInto<#rt<T>, #ot<T>> for #lt<T> {
+            #[inline]
+            fn gp_into(&self, rhs: &#rt<T>) -> #ot<T> {
+                #body
+            }
+        }
     }
 }
 
@@ -544,10 +653,11 @@ fn conversion_items(names: &Names) -> TokenStream {
             // the value of each target field, read from `recv`
             let vals = |recv: TokenStream| -> Vec<TokenStream> {
                 mb.iter()
-                    .map(|m| match ma.iter().position(|x| x == m) {
+                    .zip(&names.signs[b])
+                    .map(|(m, sb)| match ma.iter().position(|x| x == m) {
                         Some(p) => {
                             let f = &names.fields[a][p];
-                            quote!(::core::clone::Clone::clone(&#recv.#f))
+                            Names::signed(quote!(#recv.#f), names.signs[a][p] * sb)
                         }
                         None => quote!(T::zero()),
                     })

@@ -28,8 +28,11 @@
 //! ```
 
 pub mod emit;
+pub mod fallback;
+pub mod matrix;
 #[cfg(feature = "toml")]
 pub mod metric_toml;
+pub mod orient;
 pub mod paths;
 pub mod plan;
 pub mod size;

@@ -87,6 +87,12 @@ pub struct Plan {
     pub closed: Vec<bool>,
     /// The fused versor actions ([`super::versor`]).
     pub actions: Vec<super::versor::ActionKernel>,
+    /// The output-typed geometric products (`GeometricProductInto`): for every pair of types
+    /// and every type `out` other than the natural output that shares a basis element with
+    /// the product's support, the kernel computing only `out`'s components.
+    pub typed: Vec<BinaryKernel>,
+    /// The matrix forms of the fused actions small enough ([`super::matrix`]).
+    pub matrices: Vec<super::matrix::MatrixKernel>,
 }
 
 /// The unary operations that get kernels.
@@ -130,6 +136,7 @@ impl Plan {
         let full = match spec.types.iter().position(|t| t.elements.len() == alg.dim()) {
             Some(i) => i,
             None => {
+                super::fallback::add_parity_types(&mut spec)?;
                 let name =
                     if spec.types.iter().any(|t| t.name == "Multivector") { "FullMultivector" } else { "Multivector" };
                 let mut t = TypeSpec::new(name, order.clone())?;
@@ -146,6 +153,7 @@ impl Plan {
         let tables = alg.tables();
         let basis = spec.basis;
         let mut binary = Vec::new();
+        let mut typed = Vec::new();
         for product in Product::ALL {
             let table = tables.product(basis, product);
             for (li, lt) in spec.types.iter().enumerate() {
@@ -160,12 +168,19 @@ impl Plan {
                     }
                     let support: BTreeSet<u32> = raw.iter().map(|(k, _)| *k).collect();
                     let out = choose(&support);
-                    let outputs = spec.types[out]
-                        .elements
-                        .iter()
-                        .map(|m| raw.iter().filter(|(k, _)| k == m).map(|(_, t)| t.clone()).collect())
-                        .collect();
-                    binary.push(BinaryKernel { product, lhs: li, rhs: ri, out, outputs });
+                    let restrict = |o: usize| -> Vec<Vec<Term>> {
+                        spec.types[o]
+                            .elements
+                            .iter()
+                            .map(|m| raw.iter().filter(|(k, _)| k == m).map(|(_, t)| t.clone()).collect())
+                            .collect()
+                    };
+                    if product == Product::Geometric {
+                        for o in (0..sets.len()).filter(|&o| o != out && !sets[o].is_disjoint(&support)) {
+                            typed.push(BinaryKernel { product, lhs: li, rhs: ri, out: o, outputs: restrict(o) });
+                        }
+                    }
+                    binary.push(BinaryKernel { product, lhs: li, rhs: ri, out, outputs: restrict(out) });
                 }
             }
         }
@@ -197,7 +212,10 @@ impl Plan {
             })
             .collect();
         let actions = super::versor::plan_actions(&spec, full)?;
-        Ok(Plan { spec, full, binary, unary, norm, closed, actions })
+        let mut plan = Plan { spec, full, binary, unary, norm, closed, actions, typed, matrices: Vec::new() };
+        super::orient::fold_signs(&mut plan);
+        plan.matrices = super::matrix::plan_matrices(&plan);
+        Ok(plan)
     }
 
     /// The binary kernel for a product and a pair of type indices.
@@ -208,7 +226,23 @@ impl Plan {
             .expect("every pair and product is planned")
     }
 
-    /// Operation counts of every kernel (binary first, then unary).
+    /// Operation counts of every kernel (binary first, then the output-typed geometric
+    /// products as `gp_into`, the unary kernels and the fused actions).
+    ///
+    /// ```
+    /// use algebra_core::{Algebra, Basis};
+    /// use algebra_codegen::{ModuleSpec, plan::Plan};
+    /// let alg = Algebra::builtin("g123inf").unwrap();
+    /// let types = ModuleSpec::parse_types("Motor=even;Pseudoscalar=1,e123inf", &alg).unwrap();
+    /// let plan = Plan::new(ModuleSpec::new("m", alg.metric().clone(), Basis::Blade, types).unwrap()).unwrap();
+    /// let find = |op: &str, out: &str| {
+    ///     let s = plan.stats().into_iter().find(|s| s.op == op && s.lhs == "Motor" && s.rhs.as_deref() == Some("Motor") && s.out == out).unwrap();
+    ///     (s.mul, s.add)
+    /// };
+    /// // the pseudoscalar part of a motor product costs a quarter of the product
+    /// assert_eq!(find("gp", "Motor"), (48, 40));
+    /// assert_eq!(find("gp_into", "Pseudoscalar"), (12, 10));
+    /// ```
     pub fn stats(&self) -> Vec<KernelStats> {
         let name = |i: usize| self.spec.types[i].name.clone();
         let mut out: Vec<KernelStats> = self
@@ -226,6 +260,17 @@ impl Plan {
                 }
             })
             .collect();
+        for k in &self.typed {
+            let (mul, add) = count(&k.outputs);
+            out.push(KernelStats {
+                op: "gp_into".to_string(),
+                lhs: name(k.lhs),
+                rhs: Some(name(k.rhs)),
+                out: name(k.out),
+                mul,
+                add,
+            });
+        }
         for k in &self.unary {
             let mul = k.outputs.iter().flatten().filter(|(_, c)| c.0.abs() != 1 || c.1 != 1).count();
             let add = k.outputs.iter().map(|o| o.len().saturating_sub(1)).sum();

@@ -4,6 +4,7 @@
 use algebra_core::algebra::Algebra;
 use algebra_core::basis::{Basis, grade};
 use algebra_core::metric::Metric;
+use std::collections::BTreeMap;
 use std::sync::Arc;
 
 /// Why a module specification was rejected.
@@ -57,6 +58,17 @@ pub enum CodegenError {
         "bad type list `{0}`: expected `Name=elements;Name=elements` with elements `grade K`, `even`, `odd`, `all` or a comma list of basis names"
     )]
     BadTypeList(String),
+    /// A reordered basis name (`e20`) in the product basis, where reordering generators is
+    /// not a sign change in general.
+    #[error(
+        "type `{ty}`: `{element}` reorders the generators of a basis element; orientation-aware names need the blade basis"
+    )]
+    OrientedInProductBasis {
+        /// The type.
+        ty: String,
+        /// The reordered name.
+        element: String,
+    },
     /// A table coefficient that does not fit the `i64` ratio of `T::from_ratio`.
     #[error("a table coefficient ({0}) is too large for T::from_ratio(i64, i64)")]
     CoefficientTooLarge(String),
@@ -71,12 +83,16 @@ pub struct TypeSpec {
     pub doc: Vec<String>,
     /// The masks of the basis elements, in the algebra's basis order.
     pub elements: Vec<u32>,
+    /// Elements listed in a non-canonical orientation (`e20` for `e02`): mask → (the name
+    /// as written, `-1` or `1`). The field holds the coefficient in that orientation.
+    pub renamed: BTreeMap<u32, (String, i64)>,
 }
 
 impl TypeSpec {
     /// A type from a selector: `grade K` (or `gradeK`), `grades K,L`, `even`, `odd`, `all`,
     /// or a comma-separated list of basis names (`1, e12, e1inf`). Grades count generators in
-    /// the chosen basis (the paper's notion in the product basis).
+    /// the chosen basis (the paper's notion in the product basis). A listed name may reorder
+    /// the generators (`e20`, `e31`: the blade in that orientation, see [`crate::orient`]).
     ///
     /// ```
     /// use algebra_core::Algebra;
@@ -112,20 +128,31 @@ impl TypeSpec {
             algebra.basis_order().to_vec()
         } else {
             let mut masks = Vec::new();
+            let mut renamed = BTreeMap::new();
             for el in sel.split(',').map(str::trim) {
-                let m = algebra.mask_of(el).map_err(|_| CodegenError::UnknownElement {
-                    ty: name.to_string(),
-                    element: el.to_string(),
-                    labels: algebra.metric().labels().join(", "),
-                })?;
+                let (m, sign) = match algebra.mask_of(el) {
+                    Ok(m) => (m, 1),
+                    Err(_) => {
+                        crate::orient::oriented_mask(algebra, el).ok_or_else(|| CodegenError::UnknownElement {
+                            ty: name.to_string(),
+                            element: el.to_string(),
+                            labels: algebra.metric().labels().join(", "),
+                        })?
+                    }
+                };
                 if masks.contains(&m) {
                     return Err(CodegenError::DuplicateElement { ty: name.to_string(), element: el.to_string() });
+                }
+                if el != algebra.name_of(m) {
+                    renamed.insert(m, (el.to_string(), sign));
                 }
                 masks.push(m);
             }
             let order = algebra.basis_order();
             masks.sort_by_key(|m| order.iter().position(|o| o == m));
-            masks
+            let mut t = TypeSpec::new(name, masks)?;
+            t.renamed = renamed;
+            return Ok(t);
         };
         TypeSpec::new(name, elements)
     }
@@ -145,7 +172,7 @@ impl TypeSpec {
         if elements.is_empty() {
             return Err(CodegenError::EmptyType(name.to_string()));
         }
-        Ok(TypeSpec { name: name.to_string(), doc: Vec::new(), elements })
+        Ok(TypeSpec { name: name.to_string(), doc: Vec::new(), elements, renamed: BTreeMap::new() })
     }
 }
 
@@ -185,6 +212,9 @@ impl ModuleSpec {
             return Err(CodegenError::NoTypes);
         }
         for (i, t) in types.iter().enumerate() {
+            if let (Basis::Product, Some((name, _))) = (basis, t.renamed.values().next()) {
+                return Err(CodegenError::OrientedInProductBasis { ty: t.name.clone(), element: name.clone() });
+            }
             for other in &types[..i] {
                 if other.name == t.name {
                     return Err(CodegenError::DuplicateType(t.name.clone()));

@@ -1,6 +1,7 @@
 //! Product traits implemented by generated multivector types (the `algebra!` macro) for every
 //! pair of declared types, so that `a.lc(&b)` works whatever the operand types. The geometric
-//! and outer products also get the operators `*` and `^`, and the left contraction `|`.
+//! and outer products also get the operators `*` and `^`, the left contraction `|` and the
+//! regressive product (the join) `&`.
 
 /// The geometric product `self * rhs`.
 pub trait GeometricProduct<Rhs: ?Sized> {
@@ -8,6 +9,16 @@ pub trait GeometricProduct<Rhs: ?Sized> {
     type Output;
     /// `self * rhs`.
     fn gp(&self, rhs: &Rhs) -> Self::Output;
+}
+
+/// The geometric product computed only on the components of a type `Out` chosen by the
+/// caller: the projection of `self * rhs` onto `Out` (coefficients outside `Out` are dropped,
+/// and never computed). Generated for every pair of declared types and every declared `Out`
+/// sharing a basis element with the product's support; the result type selects the kernel
+/// (`let r: Rotor<f64> = a.gp_into(&b);`).
+pub trait GeometricProductInto<Rhs: ?Sized, Out> {
+    /// `<self * rhs>_Out`.
+    fn gp_into(&self, rhs: &Rhs) -> Out;
 }
 
 /// The outer product `self ^ rhs`.
@@ -42,7 +53,9 @@ pub trait ScalarProduct<Rhs: ?Sized> {
     fn sp(&self, rhs: &Rhs) -> Self::Output;
 }
 
-/// The regressive product `self ∨ rhs`.
+/// The regressive product (the join) `self ∨ rhs = undual(dual(self) ^ dual(rhs))`, with the
+/// metric-free complements of `dual` (so it needs no invertible pseudoscalar); also the
+/// operator `&` and the generated types' `join` method.
 pub trait RegressiveProduct<Rhs: ?Sized> {
     /// The smallest declared type holding the result.
     type Output;
@@ -86,4 +99,20 @@ pub trait Apply<X: ?Sized> {
     type Output;
     /// `self x rev(self)`.
     fn apply(&self, x: &X) -> Self::Output;
+}
+
+/// The versor action on `X` as a matrix, for transforming many values by one versor: the
+/// action is linear in `x`, so `transform(&s.apply_matrix(), &x) == s.apply(&x)` (and the
+/// same for `sandwich`), exactly, with the matrix (entries quadratic in `self`) computed once.
+/// Generated for each fused action whose matrix is small (motors and rotors on points,
+/// vectors, lines, planes).
+pub trait ActionMatrix<X> {
+    /// `[[T; LEN]; LEN]` for `X` of `LEN` coefficients, row = output coefficient.
+    type Matrix;
+    /// The matrix of `x ↦ <rev(self) x self>_X` ([`Sandwich`]).
+    fn sandwich_matrix(&self) -> Self::Matrix;
+    /// The matrix of `x ↦ <self x rev(self)>_X` ([`Apply`]).
+    fn apply_matrix(&self) -> Self::Matrix;
+    /// The matrix applied to `x` (skipping entries that are structurally zero).
+    fn transform(m: &Self::Matrix, x: &X) -> X;
 }

@@ -289,7 +289,7 @@ fn expand(decl: Decl) -> syn::Result<proc_macro2::TokenStream> {
             }
             Selector::List(els) => {
                 for (el, span) in els {
-                    if algebra.mask_of(el).is_err() {
+                    if algebra.mask_of(el).is_err() && algebra_codegen::orient::oriented_mask(&algebra, el).is_none() {
                         return Err(syn::Error::new(
                             *span,
                             format!(

@@ -270,11 +270,26 @@ fn motor_log(d: &Data, n: usize) {
     }
 }
 
+fn motor_log_unit(d: &Data, n: usize) {
+    for m in &d.versor.units[..n] {
+        black_box(black_box(m).log_unit().ok());
+    }
+}
+
 /// One pose, a batch of points.
 fn pga_batch(d: &Data, n: usize) {
     let s = black_box(&d.versor.pga_motors[0]);
     for p in &d.versor.pga_points[..n] {
         black_box(s.apply(black_box(p)));
+    }
+}
+
+/// One pose, a batch of points, through the action's matrix (computed once per batch).
+fn pga_batch_matrix(d: &Data, n: usize) {
+    let s = black_box(&d.versor.pga_motors[0]);
+    let m = s.apply_matrix::<pga3::Trivector<f64>>();
+    for p in &d.versor.pga_points[..n] {
+        black_box(pga3::Motor::transform(&m, black_box(p)));
     }
 }
 
@@ -393,11 +408,16 @@ const VERSOR_GROUPS: [(&str, &[(&str, Kernel)]); 5] = [
             ("g123inf Motor * Motor", g123_motor_product),
             ("g123inf Bivector::exp", motor_exp),
             ("g123inf Motor::log (unit motors)", motor_log),
+            ("g123inf Motor::log_unit", motor_log_unit),
         ],
     ),
     (
         "a batch of points by one pose (f64)",
-        &[("nalgebra Isometry3::transform_point", na_iso_batch), ("pga3 Motor.apply(Trivector)", pga_batch)],
+        &[
+            ("nalgebra Isometry3::transform_point", na_iso_batch),
+            ("pga3 Motor.apply(Trivector)", pga_batch),
+            ("pga3 apply_matrix once, then transform", pga_batch_matrix),
+        ],
     ),
 ];
 

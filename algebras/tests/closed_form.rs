@@ -53,6 +53,16 @@ macro_rules! closed_form_tests {
                 }
 
                 #[test]
+                fn log_unit_matches_the_series_log(c in coeffs()) {
+                    let b = bivector(c);
+                    let m = b.exp();
+                    let fast = m.log_unit().expect("log of a unit motor");
+                    let reference = m.to_multivector().log().expect("runtime log");
+                    close("log_unit(exp(B))", &fast.to_multivector(), &reference, 1e3 * b.to_multivector().magnitude());
+                    close("log_unit = log", &fast.to_multivector(), &m.log().unwrap().to_multivector(), 1.0);
+                }
+
+                #[test]
                 fn normalize_removes_a_dual_number_factor(c in coeffs(), a in 0.2..5.0f64, d in -3.0..3.0f64) {
                     let m = bivector(c).exp();
                     let mut lambda = Motor::<f64>::zero();
@@ -80,6 +90,7 @@ macro_rules! closed_form_tests {
                 assert!(Motor::<f64>::zero().normalize().is_err());
                 assert!(Motor::<f64>::zero().log().is_err());
                 assert!((-Motor::<f64>::one()).log().is_err(), "a full turn");
+                assert!((-Motor::<f64>::one()).log_unit().is_err(), "a full turn");
                 assert_eq!(Bivector::<f64>::zero().exp(), Motor::one());
             }
         }

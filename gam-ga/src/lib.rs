@@ -45,8 +45,8 @@
 //! ```
 
 pub use algebra_core::ops::{
-    AnticommutatorProduct, CommutatorProduct, GeometricProduct, LeftContraction, OuterProduct, RegressiveProduct,
-    RightContraction, ScalarProduct,
+    ActionMatrix, AnticommutatorProduct, CommutatorProduct, GeometricProduct, GeometricProductInto, LeftContraction,
+    OuterProduct, RegressiveProduct, RightContraction, ScalarProduct,
 };
 pub use algebra_core::{
     Algebra, Basis, BasisError, Field, Jet, Metric, MetricError, Multivector, MvError, Product, Real, Ring, Unary, ops,

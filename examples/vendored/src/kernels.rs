@@ -63,6 +63,47 @@ impl<T: self::Ring> Vector<T> {
     {
         self::Apply::apply(self, x)
     }
+    /// The matrix of the action `x ↦ self x rev(self)` on `X` (see `ActionMatrix`):
+    /// `let m = motor.apply_matrix::<Point<f64>>();` then `Motor::transform(&m, &p)`
+    /// per point equals `motor.apply(&p)`.
+    pub fn apply_matrix<X>(&self) -> <Self as self::ActionMatrix<X>>::Matrix
+    where
+        Self: self::ActionMatrix<X>,
+    {
+        self::ActionMatrix::apply_matrix(self)
+    }
+    /// The matrix of the action `x ↦ rev(self) x self` on `X` (see `ActionMatrix`).
+    pub fn sandwich_matrix<X>(&self) -> <Self as self::ActionMatrix<X>>::Matrix
+    where
+        Self: self::ActionMatrix<X>,
+    {
+        self::ActionMatrix::sandwich_matrix(self)
+    }
+    /// An action matrix of this type applied to `x` (see `ActionMatrix`).
+    pub fn transform<X>(m: &<Self as self::ActionMatrix<X>>::Matrix, x: &X) -> X
+    where
+        Self: self::ActionMatrix<X>,
+    {
+        <Self as self::ActionMatrix<X>>::transform(m, x)
+    }
+    /// The join `self ∨ x` (the regressive product, also `self & x`):
+    /// `undual(dual(self) ^ dual(x))` with the metric-free complements of `dual`, so it
+    /// is the same in degenerate metrics (PGA) as in non-degenerate ones.
+    pub fn join<X>(&self, x: &X) -> <Self as self::RegressiveProduct<X>>::Output
+    where
+        Self: self::RegressiveProduct<X>,
+    {
+        self::RegressiveProduct::regressive(self, x)
+    }
+    /// The geometric product computed only on `O`'s components (the projection of
+    /// `self * x` onto `O`): `let r: Rotor<f64> = a.gp_into(&b);` or
+    /// `a.gp_into::<Rotor<f64>, _>(&b)`. See `GeometricProductInto`.
+    pub fn gp_into<O, X>(&self, x: &X) -> O
+    where
+        Self: self::GeometricProductInto<X, O>,
+    {
+        self::GeometricProductInto::gp_into(self, x)
+    }
     ///The reverse (a linear map; output type chosen at generation).
     pub fn reverse(&self) -> Vector<T> {
         Vector {
@@ -485,6 +526,47 @@ impl<T: self::Ring> Rotor<T> {
     {
         self::Apply::apply(self, x)
     }
+    /// The matrix of the action `x ↦ self x rev(self)` on `X` (see `ActionMatrix`):
+    /// `let m = motor.apply_matrix::<Point<f64>>();` then `Motor::transform(&m, &p)`
+    /// per point equals `motor.apply(&p)`.
+    pub fn apply_matrix<X>(&self) -> <Self as self::ActionMatrix<X>>::Matrix
+    where
+        Self: self::ActionMatrix<X>,
+    {
+        self::ActionMatrix::apply_matrix(self)
+    }
+    /// The matrix of the action `x ↦ rev(self) x self` on `X` (see `ActionMatrix`).
+    pub fn sandwich_matrix<X>(&self) -> <Self as self::ActionMatrix<X>>::Matrix
+    where
+        Self: self::ActionMatrix<X>,
+    {
+        self::ActionMatrix::sandwich_matrix(self)
+    }
+    /// An action matrix of this type applied to `x` (see `ActionMatrix`).
+    pub fn transform<X>(m: &<Self as self::ActionMatrix<X>>::Matrix, x: &X) -> X
+    where
+        Self: self::ActionMatrix<X>,
+    {
+        <Self as self::ActionMatrix<X>>::transform(m, x)
+    }
+    /// The join `self ∨ x` (the regressive product, also `self & x`):
+    /// `undual(dual(self) ^ dual(x))` with the metric-free complements of `dual`, so it
+    /// is the same in degenerate metrics (PGA) as in non-degenerate ones.
+    pub fn join<X>(&self, x: &X) -> <Self as self::RegressiveProduct<X>>::Output
+    where
+        Self: self::RegressiveProduct<X>,
+    {
+        self::RegressiveProduct::regressive(self, x)
+    }
+    /// The geometric product computed only on `O`'s components (the projection of
+    /// `self * x` onto `O`): `let r: Rotor<f64> = a.gp_into(&b);` or
+    /// `a.gp_into::<Rotor<f64>, _>(&b)`. See `GeometricProductInto`.
+    pub fn gp_into<O, X>(&self, x: &X) -> O
+    where
+        Self: self::GeometricProductInto<X, O>,
+    {
+        self::GeometricProductInto::gp_into(self, x)
+    }
     ///The reverse (a linear map; output type chosen at generation).
     pub fn reverse(&self) -> Rotor<T> {
         Rotor {
@@ -513,28 +595,20 @@ impl<T: self::Ring> Rotor<T> {
         }
     }
     ///The dual (a linear map; output type chosen at generation).
-    pub fn dual(&self) -> Multivector<T> {
-        Multivector {
-            scalar: T::zero(),
+    pub fn dual(&self) -> Odd<T> {
+        Odd {
             e1: ::core::clone::Clone::clone(&self.e23),
             e2: self::Ring::neg_ref(&self.e13),
             e3: ::core::clone::Clone::clone(&self.e12),
-            e12: T::zero(),
-            e13: T::zero(),
-            e23: T::zero(),
             e123: ::core::clone::Clone::clone(&self.scalar),
         }
     }
     ///The undual (a linear map; output type chosen at generation).
-    pub fn undual(&self) -> Multivector<T> {
-        Multivector {
-            scalar: T::zero(),
+    pub fn undual(&self) -> Odd<T> {
+        Odd {
             e1: ::core::clone::Clone::clone(&self.e23),
             e2: self::Ring::neg_ref(&self.e13),
             e3: ::core::clone::Clone::clone(&self.e12),
-            e12: T::zero(),
-            e13: T::zero(),
-            e23: T::zero(),
             e123: ::core::clone::Clone::clone(&self.scalar),
         }
     }
@@ -919,6 +993,502 @@ impl<T: self::Ring> ::core::ops::Neg for &Rotor<T> {
         }
     }
 }
+///The odd part of the algebra, declared automatically: some product of the declared types lands here.
+///Basis elements (blade basis): `e1`, `e2`, `e3`, `e123`.
+#[derive(Clone, Copy, PartialEq)]
+#[repr(C)]
+pub struct Odd<T> {
+    ///Coefficient of `e1`.
+    pub e1: T,
+    ///Coefficient of `e2`.
+    pub e2: T,
+    ///Coefficient of `e3`.
+    pub e3: T,
+    ///Coefficient of `e123`.
+    pub e123: T,
+}
+impl<T: self::Ring> Odd<T> {
+    /// The basis names of the fields, in order.
+    pub const ELEMENTS: [&'static str; 4usize] = ["e1", "e2", "e3", "e123"];
+    /// The bitmasks of the fields' basis elements, in order.
+    pub const MASKS: [u32; 4usize] = [1u32, 2u32, 4u32, 7u32];
+    /// A value from its coefficients, in the order of [`Self::ELEMENTS`].
+    #[allow(clippy::too_many_arguments)]
+    pub fn new(e1: T, e2: T, e3: T, e123: T) -> Self {
+        Odd { e1, e2, e3, e123 }
+    }
+    /// Zero.
+    pub fn zero() -> Self {
+        Odd {
+            e1: T::zero(),
+            e2: T::zero(),
+            e3: T::zero(),
+            e123: T::zero(),
+        }
+    }
+    /// Every coefficient multiplied by `s`.
+    pub fn scale(&self, s: &T) -> Self {
+        Odd {
+            e1: self.e1.mul_ref(s),
+            e2: self.e2.mul_ref(s),
+            e3: self.e3.mul_ref(s),
+            e123: self.e123.mul_ref(s),
+        }
+    }
+    /// The sandwich `f_S(x) = rev(S) x S` of the main paper (eq. 3); a fused kernel typed
+    /// to `x`'s type when `Self` is a versor type (see the `Sandwich` trait).
+    pub fn sandwich<X>(&self, x: &X) -> <Self as self::Sandwich<X>>::Output
+    where
+        Self: self::Sandwich<X>,
+    {
+        self::Sandwich::sandwich(self, x)
+    }
+    /// The action `S x rev(S)` (the klein/GATL/ganja convention); a fused kernel typed to
+    /// `x`'s type when `Self` is a versor type (see the `Apply` trait).
+    pub fn apply<X>(&self, x: &X) -> <Self as self::Apply<X>>::Output
+    where
+        Self: self::Apply<X>,
+    {
+        self::Apply::apply(self, x)
+    }
+    /// The matrix of the action `x ↦ self x rev(self)` on `X` (see `ActionMatrix`):
+    /// `let m = motor.apply_matrix::<Point<f64>>();` then `Motor::transform(&m, &p)`
+    /// per point equals `motor.apply(&p)`.
+    pub fn apply_matrix<X>(&self) -> <Self as self::ActionMatrix<X>>::Matrix
+    where
+        Self: self::ActionMatrix<X>,
+    {
+        self::ActionMatrix::apply_matrix(self)
+    }
+    /// The matrix of the action `x ↦ rev(self) x self` on `X` (see `ActionMatrix`).
+    pub fn sandwich_matrix<X>(&self) -> <Self as self::ActionMatrix<X>>::Matrix
+    where
+        Self: self::ActionMatrix<X>,
+    {
+        self::ActionMatrix::sandwich_matrix(self)
+    }
+    /// An action matrix of this type applied to `x` (see `ActionMatrix`).
+    pub fn transform<X>(m: &<Self as self::ActionMatrix<X>>::Matrix, x: &X) -> X
+    where
+        Self: self::ActionMatrix<X>,
+    {
+        <Self as self::ActionMatrix<X>>::transform(m, x)
+    }
+    /// The join `self ∨ x` (the regressive product, also `self & x`):
+    /// `undual(dual(self) ^ dual(x))` with the metric-free complements of `dual`, so it
+    /// is the same in degenerate metrics (PGA) as in non-degenerate ones.
+    pub fn join<X>(&self, x: &X) -> <Self as self::RegressiveProduct<X>>::Output
+    where
+        Self: self::RegressiveProduct<X>,
+    {
+        self::RegressiveProduct::regressive(self, x)
+    }
+    /// The geometric product computed only on `O`'s components (the projection of
+    /// `self * x` onto `O`): `let r: Rotor<f64> = a.gp_into(&b);` or
+    /// `a.gp_into::<Rotor<f64>, _>(&b)`. See `GeometricProductInto`.
+    pub fn gp_into<O, X>(&self, x: &X) -> O
+    where
+        Self: self::GeometricProductInto<X, O>,
+    {
+        self::GeometricProductInto::gp_into(self, x)
+    }
+    ///The reverse (a linear map; output type chosen at generation).
+    pub fn reverse(&self) -> Odd<T> {
+        Odd {
+            e1: ::core::clone::Clone::clone(&self.e1),
+            e2: ::core::clone::Clone::clone(&self.e2),
+            e3: ::core::clone::Clone::clone(&self.e3),
+            e123: self::Ring::neg_ref(&self.e123),
+        }
+    }
+    ///The grade involution (a linear map; output type chosen at generation).
+    pub fn grade_involution(&self) -> Odd<T> {
+        Odd {
+            e1: self::Ring::neg_ref(&self.e1),
+            e2: self::Ring::neg_ref(&self.e2),
+            e3: self::Ring::neg_ref(&self.e3),
+            e123: self::Ring::neg_ref(&self.e123),
+        }
+    }
+    ///The conjugate (a linear map; output type chosen at generation).
+    pub fn conjugate(&self) -> Odd<T> {
+        Odd {
+            e1: self::Ring::neg_ref(&self.e1),
+            e2: self::Ring::neg_ref(&self.e2),
+            e3: self::Ring::neg_ref(&self.e3),
+            e123: ::core::clone::Clone::clone(&self.e123),
+        }
+    }
+    ///The dual (a linear map; output type chosen at generation).
+    pub fn dual(&self) -> Rotor<T> {
+        Rotor {
+            scalar: ::core::clone::Clone::clone(&self.e123),
+            e12: ::core::clone::Clone::clone(&self.e3),
+            e13: self::Ring::neg_ref(&self.e2),
+            e23: ::core::clone::Clone::clone(&self.e1),
+        }
+    }
+    ///The undual (a linear map; output type chosen at generation).
+    pub fn undual(&self) -> Rotor<T> {
+        Rotor {
+            scalar: ::core::clone::Clone::clone(&self.e123),
+            e12: ::core::clone::Clone::clone(&self.e3),
+            e13: self::Ring::neg_ref(&self.e2),
+            e23: ::core::clone::Clone::clone(&self.e1),
+        }
+    }
+    /// The squared norm `<x rev(x)>_0` (a scalar; may be negative or zero in
+    /// non-Euclidean or degenerate metrics).
+    pub fn norm_squared(&self) -> T {
+        let n0 = self.e1.mul_ref(&self.e1);
+        let n1 = self.e2.mul_ref(&self.e2);
+        let n2 = self.e3.mul_ref(&self.e3);
+        let n3 = self.e123.mul_ref(&self.e123);
+        n0 + &n1 + &n2 + &n3
+    }
+}
+impl<T: self::Ring> Odd<T> {
+    /// The number of coefficients.
+    pub const LEN: usize = 4usize;
+    ///The basis element `e1` (coefficient 1, every other coefficient 0).
+    pub fn e1() -> Self {
+        Odd {
+            e1: T::one(),
+            e2: T::zero(),
+            e3: T::zero(),
+            e123: T::zero(),
+        }
+    }
+    ///The basis element `e2` (coefficient 1, every other coefficient 0).
+    pub fn e2() -> Self {
+        Odd {
+            e1: T::zero(),
+            e2: T::one(),
+            e3: T::zero(),
+            e123: T::zero(),
+        }
+    }
+    ///The basis element `e3` (coefficient 1, every other coefficient 0).
+    pub fn e3() -> Self {
+        Odd {
+            e1: T::zero(),
+            e2: T::zero(),
+            e3: T::one(),
+            e123: T::zero(),
+        }
+    }
+    ///The basis element `e123` (coefficient 1, every other coefficient 0).
+    pub fn e123() -> Self {
+        Odd {
+            e1: T::zero(),
+            e2: T::zero(),
+            e3: T::zero(),
+            e123: T::one(),
+        }
+    }
+    /// The coefficients in the order of [`Self::ELEMENTS`] (cloned).
+    pub fn to_array(&self) -> [T; 4usize] {
+        [
+            ::core::clone::Clone::clone(&self.e1),
+            ::core::clone::Clone::clone(&self.e2),
+            ::core::clone::Clone::clone(&self.e3),
+            ::core::clone::Clone::clone(&self.e123),
+        ]
+    }
+    /// The coefficients in the order of [`Self::ELEMENTS`] (moved out).
+    pub fn into_array(self) -> [T; 4usize] {
+        [self.e1, self.e2, self.e3, self.e123]
+    }
+    /// A value from its coefficients in the order of [`Self::ELEMENTS`].
+    pub fn from_array(a: [T; 4usize]) -> Self {
+        let [e1, e2, e3, e123] = a;
+        Odd { e1, e2, e3, e123 }
+    }
+    /// An iterator over references to the coefficients, in the order of [`Self::ELEMENTS`].
+    pub fn iter(&self) -> ::core::array::IntoIter<&T, 4usize> {
+        [&self.e1, &self.e2, &self.e3, &self.e123].into_iter()
+    }
+    /// An iterator over mutable references to the coefficients.
+    pub fn iter_mut(&mut self) -> ::core::array::IntoIter<&mut T, 4usize> {
+        [&mut self.e1, &mut self.e2, &mut self.e3, &mut self.e123].into_iter()
+    }
+}
+impl<T: self::Ring> ::core::default::Default for Odd<T> {
+    /// Zero.
+    fn default() -> Self {
+        Self::zero()
+    }
+}
+impl<T: self::Ring> ::core::convert::From<[T; 4usize]> for Odd<T> {
+    fn from(a: [T; 4usize]) -> Self {
+        Self::from_array(a)
+    }
+}
+impl<T: self::Ring> ::core::convert::From<Odd<T>> for [T; 4usize] {
+    fn from(x: Odd<T>) -> Self {
+        x.into_array()
+    }
+}
+impl<T: self::Ring> ::core::ops::Index<usize> for Odd<T> {
+    type Output = T;
+    /// The coefficient at position `i` of [`Self::ELEMENTS`]; panics if `i >= LEN`, like
+    /// an array.
+    fn index(&self, i: usize) -> &T {
+        match i {
+            0usize => &self.e1,
+            1usize => &self.e2,
+            2usize => &self.e3,
+            3usize => &self.e123,
+            _ => {
+                panic!(
+                    "index {} out of range for {} (length {})", i, stringify!(Odd),
+                    4usize
+                )
+            }
+        }
+    }
+}
+impl<T: self::Ring> ::core::ops::IndexMut<usize> for Odd<T> {
+    fn index_mut(&mut self, i: usize) -> &mut T {
+        match i {
+            0usize => &mut self.e1,
+            1usize => &mut self.e2,
+            2usize => &mut self.e3,
+            3usize => &mut self.e123,
+            _ => {
+                panic!(
+                    "index {} out of range for {} (length {})", i, stringify!(Odd),
+                    4usize
+                )
+            }
+        }
+    }
+}
+impl<T: self::Ring> ::core::iter::IntoIterator for Odd<T> {
+    type Item = T;
+    type IntoIter = ::core::array::IntoIter<T, 4usize>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.into_array().into_iter()
+    }
+}
+impl<'a, T: self::Ring> ::core::iter::IntoIterator for &'a Odd<T> {
+    type Item = &'a T;
+    type IntoIter = ::core::array::IntoIter<&'a T, 4usize>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.iter()
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<T> for Odd<T> {
+    type Output = Self;
+    /// `x * s`: every coefficient multiplied by `s`.
+    fn mul(self, s: T) -> Self {
+        Odd {
+            e1: self.e1 * &s,
+            e2: self.e2 * &s,
+            e3: self.e3 * &s,
+            e123: self.e123 * &s,
+        }
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<T> for &Odd<T> {
+    type Output = Odd<T>;
+    fn mul(self, s: T) -> Odd<T> {
+        self.scale(&s)
+    }
+}
+impl<T: self::Field> ::core::ops::Div<T> for Odd<T> {
+    type Output = Self;
+    /// `x / s`: every coefficient divided by `s`.
+    fn div(self, s: T) -> Self {
+        Odd {
+            e1: self.e1.div_ref(&s),
+            e2: self.e2.div_ref(&s),
+            e3: self.e3.div_ref(&s),
+            e123: self.e123.div_ref(&s),
+        }
+    }
+}
+impl<T: self::Field> ::core::ops::Div<T> for &Odd<T> {
+    type Output = Odd<T>;
+    fn div(self, s: T) -> Odd<T> {
+        Odd {
+            e1: self.e1.div_ref(&s),
+            e2: self.e2.div_ref(&s),
+            e3: self.e3.div_ref(&s),
+            e123: self.e123.div_ref(&s),
+        }
+    }
+}
+impl<T: self::Ring> ::core::ops::AddAssign for Odd<T> {
+    fn add_assign(&mut self, rhs: Self) {
+        self.e1.add_assign_ref(&rhs.e1);
+        self.e2.add_assign_ref(&rhs.e2);
+        self.e3.add_assign_ref(&rhs.e3);
+        self.e123.add_assign_ref(&rhs.e123);
+    }
+}
+impl<T: self::Ring> ::core::ops::SubAssign for Odd<T> {
+    fn sub_assign(&mut self, rhs: Self) {
+        self.e1.sub_assign_ref(&rhs.e1);
+        self.e2.sub_assign_ref(&rhs.e2);
+        self.e3.sub_assign_ref(&rhs.e3);
+        self.e123.sub_assign_ref(&rhs.e123);
+    }
+}
+impl<T: self::Ring> ::core::ops::MulAssign<T> for Odd<T> {
+    fn mul_assign(&mut self, s: T) {
+        self.e1 = self.e1.mul_ref(&s);
+        self.e2 = self.e2.mul_ref(&s);
+        self.e3 = self.e3.mul_ref(&s);
+        self.e123 = self.e123.mul_ref(&s);
+    }
+}
+impl<T: self::Field> ::core::ops::DivAssign<T> for Odd<T> {
+    fn div_assign(&mut self, s: T) {
+        self.e1 = self.e1.div_ref(&s);
+        self.e2 = self.e2.div_ref(&s);
+        self.e3 = self.e3.div_ref(&s);
+        self.e123 = self.e123.div_ref(&s);
+    }
+}
+impl ::core::ops::Mul<Odd<f32>> for f32 {
+    type Output = Odd<f32>;
+    /// `s * x`: every coefficient multiplied by `s`.
+    fn mul(self, x: Odd<f32>) -> Odd<f32> {
+        Odd {
+            e1: self * x.e1,
+            e2: self * x.e2,
+            e3: self * x.e3,
+            e123: self * x.e123,
+        }
+    }
+}
+impl ::core::ops::Mul<&Odd<f32>> for f32 {
+    type Output = Odd<f32>;
+    fn mul(self, x: &Odd<f32>) -> Odd<f32> {
+        Odd {
+            e1: self * x.e1,
+            e2: self * x.e2,
+            e3: self * x.e3,
+            e123: self * x.e123,
+        }
+    }
+}
+impl ::core::ops::Mul<Odd<f64>> for f64 {
+    type Output = Odd<f64>;
+    /// `s * x`: every coefficient multiplied by `s`.
+    fn mul(self, x: Odd<f64>) -> Odd<f64> {
+        Odd {
+            e1: self * x.e1,
+            e2: self * x.e2,
+            e3: self * x.e3,
+            e123: self * x.e123,
+        }
+    }
+}
+impl ::core::ops::Mul<&Odd<f64>> for f64 {
+    type Output = Odd<f64>;
+    fn mul(self, x: &Odd<f64>) -> Odd<f64> {
+        Odd {
+            e1: self * x.e1,
+            e2: self * x.e2,
+            e3: self * x.e3,
+            e123: self * x.e123,
+        }
+    }
+}
+impl<T: self::Ring> ::core::fmt::Display for Odd<T> {
+    /// A sum of basis elements: `1 + 1/2*e1inf`; `0` for zero.
+    fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
+        let terms = [
+            ("e1", &self.e1),
+            ("e2", &self.e2),
+            ("e3", &self.e3),
+            ("e123", &self.e123),
+        ];
+        f.write_str(
+            &self::join_terms(
+                terms
+                    .iter()
+                    .filter(|(_, c)| !self::Ring::is_exact_zero(*c))
+                    .map(|(n, c)| {
+                        self::format_term(&::std::string::ToString::to_string(c), n)
+                    }),
+            ),
+        )
+    }
+}
+impl<T: self::Ring> ::core::fmt::Debug for Odd<T> {
+    fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
+        write!(f, "{}({})", stringify!(Odd), self)
+    }
+}
+impl<T: self::Ring> ::core::ops::Add for Odd<T> {
+    type Output = Self;
+    fn add(self, rhs: Self) -> Self {
+        Odd {
+            e1: self.e1 + rhs.e1,
+            e2: self.e2 + rhs.e2,
+            e3: self.e3 + rhs.e3,
+            e123: self.e123 + rhs.e123,
+        }
+    }
+}
+impl<T: self::Ring> ::core::ops::Add for &Odd<T> {
+    type Output = Odd<T>;
+    fn add(self, rhs: Self) -> Odd<T> {
+        Odd {
+            e1: self.e1.add_ref(&rhs.e1),
+            e2: self.e2.add_ref(&rhs.e2),
+            e3: self.e3.add_ref(&rhs.e3),
+            e123: self.e123.add_ref(&rhs.e123),
+        }
+    }
+}
+impl<T: self::Ring> ::core::ops::Sub for Odd<T> {
+    type Output = Self;
+    fn sub(self, rhs: Self) -> Self {
+        Odd {
+            e1: self.e1 - rhs.e1,
+            e2: self.e2 - rhs.e2,
+            e3: self.e3 - rhs.e3,
+            e123: self.e123 - rhs.e123,
+        }
+    }
+}
+impl<T: self::Ring> ::core::ops::Sub for &Odd<T> {
+    type Output = Odd<T>;
+    fn sub(self, rhs: Self) -> Odd<T> {
+        Odd {
+            e1: self.e1.sub_ref(&rhs.e1),
+            e2: self.e2.sub_ref(&rhs.e2),
+            e3: self.e3.sub_ref(&rhs.e3),
+            e123: self.e123.sub_ref(&rhs.e123),
+        }
+    }
+}
+impl<T: self::Ring> ::core::ops::Neg for Odd<T> {
+    type Output = Self;
+    fn neg(self) -> Self {
+        Odd {
+            e1: -self.e1,
+            e2: -self.e2,
+            e3: -self.e3,
+            e123: -self.e123,
+        }
+    }
+}
+impl<T: self::Ring> ::core::ops::Neg for &Odd<T> {
+    type Output = Odd<T>;
+    fn neg(self) -> Odd<T> {
+        Odd {
+            e1: self.e1.neg_ref(),
+            e2: self.e2.neg_ref(),
+            e3: self.e3.neg_ref(),
+            e123: self.e123.neg_ref(),
+        }
+    }
+}
 ///Every basis element (the fallback output type).
 ///Basis elements (blade basis): `1`, `e1`, `e2`, `e3`, `e12`, `e13`, `e23`, `e123`.
 #[derive(Clone, Copy, PartialEq)]
@@ -1023,6 +1593,47 @@ impl<T: self::Ring> Multivector<T> {
         Self: self::Apply<X>,
     {
         self::Apply::apply(self, x)
+    }
+    /// The matrix of the action `x ↦ self x rev(self)` on `X` (see `ActionMatrix`):
+    /// `let m = motor.apply_matrix::<Point<f64>>();` then `Motor::transform(&m, &p)`
+    /// per point equals `motor.apply(&p)`.
+    pub fn apply_matrix<X>(&self) -> <Self as self::ActionMatrix<X>>::Matrix
+    where
+        Self: self::ActionMatrix<X>,
+    {
+        self::ActionMatrix::apply_matrix(self)
+    }
+    /// The matrix of the action `x ↦ rev(self) x self` on `X` (see `ActionMatrix`).
+    pub fn sandwich_matrix<X>(&self) -> <Self as self::ActionMatrix<X>>::Matrix
+    where
+        Self: self::ActionMatrix<X>,
+    {
+        self::ActionMatrix::sandwich_matrix(self)
+    }
+    /// An action matrix of this type applied to `x` (see `ActionMatrix`).
+    pub fn transform<X>(m: &<Self as self::ActionMatrix<X>>::Matrix, x: &X) -> X
+    where
+        Self: self::ActionMatrix<X>,
+    {
+        <Self as self::ActionMatrix<X>>::transform(m, x)
+    }
+    /// The join `self ∨ x` (the regressive product, also `self & x`):
+    /// `undual(dual(self) ^ dual(x))` with the metric-free complements of `dual`, so it
+    /// is the same in degenerate metrics (PGA) as in non-degenerate ones.
+    pub fn join<X>(&self, x: &X) -> <Self as self::RegressiveProduct<X>>::Output
+    where
+        Self: self::RegressiveProduct<X>,
+    {
+        self::RegressiveProduct::regressive(self, x)
+    }
+    /// The geometric product computed only on `O`'s components (the projection of
+    /// `self * x` onto `O`): `let r: Rotor<f64> = a.gp_into(&b);` or
+    /// `a.gp_into::<Rotor<f64>, _>(&b)`. See `GeometricProductInto`.
+    pub fn gp_into<O, X>(&self, x: &X) -> O
+    where
+        Self: self::GeometricProductInto<X, O>,
+    {
+        self::GeometricProductInto::gp_into(self, x)
     }
     ///The reverse (a linear map; output type chosen at generation).
     pub fn reverse(&self) -> Multivector<T> {
@@ -1724,6 +2335,12 @@ impl<T: self::Ring> self::GeometricProduct<Vector<T>> for Vector<T> {
         }
     }
 }
+impl<T: self::Ring> self::GeometricProductInto<Vector<T>, Rotor<T>> for Vector<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Vector<T>) -> Rotor<T> {
+        self::GeometricProduct::gp(self, rhs)
+    }
+}
 impl<T: self::Ring> ::core::ops::Mul<&Vector<T>> for &Vector<T> {
     type Output = Rotor<T>;
     fn mul(self, rhs: &Vector<T>) -> Rotor<T> {
@@ -1749,9 +2366,9 @@ impl<T: self::Ring> ::core::ops::Mul<Vector<T>> for &Vector<T> {
     }
 }
 impl<T: self::Ring> self::GeometricProduct<Rotor<T>> for Vector<T> {
-    type Output = Multivector<T>;
+    type Output = Odd<T>;
     #[inline]
-    fn gp(&self, rhs: &Rotor<T>) -> Multivector<T> {
+    fn gp(&self, rhs: &Rotor<T>) -> Odd<T> {
         let p0_0 = self.e1.mul_ref(&rhs.scalar);
         let p0_1 = self.e1.mul_ref(&rhs.e12);
         let p0_2 = self.e1.mul_ref(&rhs.e13);
@@ -1764,39 +2381,95 @@ impl<T: self::Ring> self::GeometricProduct<Rotor<T>> for Vector<T> {
         let p2_1 = self.e3.mul_ref(&rhs.e12);
         let p2_2 = self.e3.mul_ref(&rhs.e13);
         let p2_3 = self.e3.mul_ref(&rhs.e23);
-        Multivector {
-            scalar: T::zero(),
+        Odd {
             e1: p0_0 - &p1_1 - &p2_2,
             e2: p0_1 + &p1_0 - &p2_3,
             e3: p0_2 + &p1_3 + &p2_0,
-            e12: T::zero(),
-            e13: T::zero(),
-            e23: T::zero(),
             e123: p0_3 - &p1_2 + &p2_1,
         }
     }
 }
+impl<T: self::Ring> self::GeometricProductInto<Rotor<T>, Odd<T>> for Vector<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Rotor<T>) -> Odd<T> {
+        self::GeometricProduct::gp(self, rhs)
+    }
+}
 impl<T: self::Ring> ::core::ops::Mul<&Rotor<T>> for &Vector<T> {
-    type Output = Multivector<T>;
-    fn mul(self, rhs: &Rotor<T>) -> Multivector<T> {
+    type Output = Odd<T>;
+    fn mul(self, rhs: &Rotor<T>) -> Odd<T> {
         self::GeometricProduct::gp(self, rhs)
     }
 }
 impl<T: self::Ring> ::core::ops::Mul<Rotor<T>> for Vector<T> {
-    type Output = Multivector<T>;
-    fn mul(self, rhs: Rotor<T>) -> Multivector<T> {
+    type Output = Odd<T>;
+    fn mul(self, rhs: Rotor<T>) -> Odd<T> {
         self::GeometricProduct::gp(&self, &rhs)
     }
 }
 impl<T: self::Ring> ::core::ops::Mul<&Rotor<T>> for Vector<T> {
-    type Output = Multivector<T>;
-    fn mul(self, rhs: &Rotor<T>) -> Multivector<T> {
+    type Output = Odd<T>;
+    fn mul(self, rhs: &Rotor<T>) -> Odd<T> {
         self::GeometricProduct::gp(&self, rhs)
     }
 }
 impl<T: self::Ring> ::core::ops::Mul<Rotor<T>> for &Vector<T> {
-    type Output = Multivector<T>;
-    fn mul(self, rhs: Rotor<T>) -> Multivector<T> {
+    type Output = Odd<T>;
+    fn mul(self, rhs: Rotor<T>) -> Odd<T> {
+        self::GeometricProduct::gp(self, &rhs)
+    }
+}
+impl<T: self::Ring> self::GeometricProduct<Odd<T>> for Vector<T> {
+    type Output = Rotor<T>;
+    #[inline]
+    fn gp(&self, rhs: &Odd<T>) -> Rotor<T> {
+        let p0_0 = self.e1.mul_ref(&rhs.e1);
+        let p0_1 = self.e1.mul_ref(&rhs.e2);
+        let p0_2 = self.e1.mul_ref(&rhs.e3);
+        let p0_3 = self.e1.mul_ref(&rhs.e123);
+        let p1_0 = self.e2.mul_ref(&rhs.e1);
+        let p1_1 = self.e2.mul_ref(&rhs.e2);
+        let p1_2 = self.e2.mul_ref(&rhs.e3);
+        let p1_3 = self.e2.mul_ref(&rhs.e123);
+        let p2_0 = self.e3.mul_ref(&rhs.e1);
+        let p2_1 = self.e3.mul_ref(&rhs.e2);
+        let p2_2 = self.e3.mul_ref(&rhs.e3);
+        let p2_3 = self.e3.mul_ref(&rhs.e123);
+        Rotor {
+            scalar: p0_0 + &p1_1 + &p2_2,
+            e12: p0_1 - &p1_0 + &p2_3,
+            e13: p0_2 - &p1_3 - &p2_0,
+            e23: p0_3 + &p1_2 - &p2_1,
+        }
+    }
+}
+impl<T: self::Ring> self::GeometricProductInto<Odd<T>, Rotor<T>> for Vector<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Odd<T>) -> Rotor<T> {
+        self::GeometricProduct::gp(self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<&Odd<T>> for &Vector<T> {
+    type Output = Rotor<T>;
+    fn mul(self, rhs: &Odd<T>) -> Rotor<T> {
+        self::GeometricProduct::gp(self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<Odd<T>> for Vector<T> {
+    type Output = Rotor<T>;
+    fn mul(self, rhs: Odd<T>) -> Rotor<T> {
+        self::GeometricProduct::gp(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<&Odd<T>> for Vector<T> {
+    type Output = Rotor<T>;
+    fn mul(self, rhs: &Odd<T>) -> Rotor<T> {
+        self::GeometricProduct::gp(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<Odd<T>> for &Vector<T> {
+    type Output = Rotor<T>;
+    fn mul(self, rhs: Odd<T>) -> Rotor<T> {
         self::GeometricProduct::gp(self, &rhs)
     }
 }
@@ -1840,6 +2513,13 @@ impl<T: self::Ring> self::GeometricProduct<Multivector<T>> for Vector<T> {
         }
     }
 }
+impl<T: self::Ring> self::GeometricProductInto<Multivector<T>, Multivector<T>>
+for Vector<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Multivector<T>) -> Multivector<T> {
+        self::GeometricProduct::gp(self, rhs)
+    }
+}
 impl<T: self::Ring> ::core::ops::Mul<&Multivector<T>> for &Vector<T> {
     type Output = Multivector<T>;
     fn mul(self, rhs: &Multivector<T>) -> Multivector<T> {
@@ -1865,9 +2545,9 @@ impl<T: self::Ring> ::core::ops::Mul<Multivector<T>> for &Vector<T> {
     }
 }
 impl<T: self::Ring> self::GeometricProduct<Vector<T>> for Rotor<T> {
-    type Output = Multivector<T>;
+    type Output = Odd<T>;
     #[inline]
-    fn gp(&self, rhs: &Vector<T>) -> Multivector<T> {
+    fn gp(&self, rhs: &Vector<T>) -> Odd<T> {
         let p0_0 = self.scalar.mul_ref(&rhs.e1);
         let p0_1 = self.scalar.mul_ref(&rhs.e2);
         let p0_2 = self.scalar.mul_ref(&rhs.e3);
@@ -1880,39 +2560,41 @@ impl<T: self::Ring> self::GeometricProduct<Vector<T>> for Rotor<T> {
         let p3_0 = self.e23.mul_ref(&rhs.e1);
         let p3_1 = self.e23.mul_ref(&rhs.e2);
         let p3_2 = self.e23.mul_ref(&rhs.e3);
-        Multivector {
-            scalar: T::zero(),
+        Odd {
             e1: p0_0 + &p1_1 + &p2_2,
             e2: p0_1 - &p1_0 + &p3_2,
             e3: p0_2 - &p2_0 - &p3_1,
-            e12: T::zero(),
-            e13: T::zero(),
-            e23: T::zero(),
             e123: p1_2 - &p2_1 + &p3_0,
         }
     }
 }
+impl<T: self::Ring> self::GeometricProductInto<Vector<T>, Odd<T>> for Rotor<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Vector<T>) -> Odd<T> {
+        self::GeometricProduct::gp(self, rhs)
+    }
+}
 impl<T: self::Ring> ::core::ops::Mul<&Vector<T>> for &Rotor<T> {
-    type Output = Multivector<T>;
-    fn mul(self, rhs: &Vector<T>) -> Multivector<T> {
+    type Output = Odd<T>;
+    fn mul(self, rhs: &Vector<T>) -> Odd<T> {
         self::GeometricProduct::gp(self, rhs)
     }
 }
 impl<T: self::Ring> ::core::ops::Mul<Vector<T>> for Rotor<T> {
-    type Output = Multivector<T>;
-    fn mul(self, rhs: Vector<T>) -> Multivector<T> {
+    type Output = Odd<T>;
+    fn mul(self, rhs: Vector<T>) -> Odd<T> {
         self::GeometricProduct::gp(&self, &rhs)
     }
 }
 impl<T: self::Ring> ::core::ops::Mul<&Vector<T>> for Rotor<T> {
-    type Output = Multivector<T>;
-    fn mul(self, rhs: &Vector<T>) -> Multivector<T> {
+    type Output = Odd<T>;
+    fn mul(self, rhs: &Vector<T>) -> Odd<T> {
         self::GeometricProduct::gp(&self, rhs)
     }
 }
 impl<T: self::Ring> ::core::ops::Mul<Vector<T>> for &Rotor<T> {
-    type Output = Multivector<T>;
-    fn mul(self, rhs: Vector<T>) -> Multivector<T> {
+    type Output = Odd<T>;
+    fn mul(self, rhs: Vector<T>) -> Odd<T> {
         self::GeometricProduct::gp(self, &rhs)
     }
 }
@@ -1944,6 +2626,12 @@ impl<T: self::Ring> self::GeometricProduct<Rotor<T>> for Rotor<T> {
         }
     }
 }
+impl<T: self::Ring> self::GeometricProductInto<Rotor<T>, Rotor<T>> for Rotor<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Rotor<T>) -> Rotor<T> {
+        self::GeometricProduct::gp(self, rhs)
+    }
+}
 impl<T: self::Ring> ::core::ops::Mul<&Rotor<T>> for &Rotor<T> {
     type Output = Rotor<T>;
     fn mul(self, rhs: &Rotor<T>) -> Rotor<T> {
@@ -1965,6 +2653,64 @@ impl<T: self::Ring> ::core::ops::Mul<&Rotor<T>> for Rotor<T> {
 impl<T: self::Ring> ::core::ops::Mul<Rotor<T>> for &Rotor<T> {
     type Output = Rotor<T>;
     fn mul(self, rhs: Rotor<T>) -> Rotor<T> {
+        self::GeometricProduct::gp(self, &rhs)
+    }
+}
+impl<T: self::Ring> self::GeometricProduct<Odd<T>> for Rotor<T> {
+    type Output = Odd<T>;
+    #[inline]
+    fn gp(&self, rhs: &Odd<T>) -> Odd<T> {
+        let p0_0 = self.scalar.mul_ref(&rhs.e1);
+        let p0_1 = self.scalar.mul_ref(&rhs.e2);
+        let p0_2 = self.scalar.mul_ref(&rhs.e3);
+        let p0_3 = self.scalar.mul_ref(&rhs.e123);
+        let p1_0 = self.e12.mul_ref(&rhs.e1);
+        let p1_1 = self.e12.mul_ref(&rhs.e2);
+        let p1_2 = self.e12.mul_ref(&rhs.e3);
+        let p1_3 = self.e12.mul_ref(&rhs.e123);
+        let p2_0 = self.e13.mul_ref(&rhs.e1);
+        let p2_1 = self.e13.mul_ref(&rhs.e2);
+        let p2_2 = self.e13.mul_ref(&rhs.e3);
+        let p2_3 = self.e13.mul_ref(&rhs.e123);
+        let p3_0 = self.e23.mul_ref(&rhs.e1);
+        let p3_1 = self.e23.mul_ref(&rhs.e2);
+        let p3_2 = self.e23.mul_ref(&rhs.e3);
+        let p3_3 = self.e23.mul_ref(&rhs.e123);
+        Odd {
+            e1: p0_0 + &p1_1 + &p2_2 - &p3_3,
+            e2: p0_1 - &p1_0 + &p2_3 + &p3_2,
+            e3: p0_2 - &p1_3 - &p2_0 - &p3_1,
+            e123: p0_3 + &p1_2 - &p2_1 + &p3_0,
+        }
+    }
+}
+impl<T: self::Ring> self::GeometricProductInto<Odd<T>, Odd<T>> for Rotor<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Odd<T>) -> Odd<T> {
+        self::GeometricProduct::gp(self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<&Odd<T>> for &Rotor<T> {
+    type Output = Odd<T>;
+    fn mul(self, rhs: &Odd<T>) -> Odd<T> {
+        self::GeometricProduct::gp(self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<Odd<T>> for Rotor<T> {
+    type Output = Odd<T>;
+    fn mul(self, rhs: Odd<T>) -> Odd<T> {
+        self::GeometricProduct::gp(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<&Odd<T>> for Rotor<T> {
+    type Output = Odd<T>;
+    fn mul(self, rhs: &Odd<T>) -> Odd<T> {
+        self::GeometricProduct::gp(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<Odd<T>> for &Rotor<T> {
+    type Output = Odd<T>;
+    fn mul(self, rhs: Odd<T>) -> Odd<T> {
         self::GeometricProduct::gp(self, &rhs)
     }
 }
@@ -2016,6 +2762,13 @@ impl<T: self::Ring> self::GeometricProduct<Multivector<T>> for Rotor<T> {
         }
     }
 }
+impl<T: self::Ring> self::GeometricProductInto<Multivector<T>, Multivector<T>>
+for Rotor<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Multivector<T>) -> Multivector<T> {
+        self::GeometricProduct::gp(self, rhs)
+    }
+}
 impl<T: self::Ring> ::core::ops::Mul<&Multivector<T>> for &Rotor<T> {
     type Output = Multivector<T>;
     fn mul(self, rhs: &Multivector<T>) -> Multivector<T> {
@@ -2035,6 +2788,255 @@ impl<T: self::Ring> ::core::ops::Mul<&Multivector<T>> for Rotor<T> {
     }
 }
 impl<T: self::Ring> ::core::ops::Mul<Multivector<T>> for &Rotor<T> {
+    type Output = Multivector<T>;
+    fn mul(self, rhs: Multivector<T>) -> Multivector<T> {
+        self::GeometricProduct::gp(self, &rhs)
+    }
+}
+impl<T: self::Ring> self::GeometricProduct<Vector<T>> for Odd<T> {
+    type Output = Rotor<T>;
+    #[inline]
+    fn gp(&self, rhs: &Vector<T>) -> Rotor<T> {
+        let p0_0 = self.e1.mul_ref(&rhs.e1);
+        let p0_1 = self.e1.mul_ref(&rhs.e2);
+        let p0_2 = self.e1.mul_ref(&rhs.e3);
+        let p1_0 = self.e2.mul_ref(&rhs.e1);
+        let p1_1 = self.e2.mul_ref(&rhs.e2);
+        let p1_2 = self.e2.mul_ref(&rhs.e3);
+        let p2_0 = self.e3.mul_ref(&rhs.e1);
+        let p2_1 = self.e3.mul_ref(&rhs.e2);
+        let p2_2 = self.e3.mul_ref(&rhs.e3);
+        let p3_0 = self.e123.mul_ref(&rhs.e1);
+        let p3_1 = self.e123.mul_ref(&rhs.e2);
+        let p3_2 = self.e123.mul_ref(&rhs.e3);
+        Rotor {
+            scalar: p0_0 + &p1_1 + &p2_2,
+            e12: p0_1 - &p1_0 + &p3_2,
+            e13: p0_2 - &p2_0 - &p3_1,
+            e23: p1_2 - &p2_1 + &p3_0,
+        }
+    }
+}
+impl<T: self::Ring> self::GeometricProductInto<Vector<T>, Rotor<T>> for Odd<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Vector<T>) -> Rotor<T> {
+        self::GeometricProduct::gp(self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<&Vector<T>> for &Odd<T> {
+    type Output = Rotor<T>;
+    fn mul(self, rhs: &Vector<T>) -> Rotor<T> {
+        self::GeometricProduct::gp(self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<Vector<T>> for Odd<T> {
+    type Output = Rotor<T>;
+    fn mul(self, rhs: Vector<T>) -> Rotor<T> {
+        self::GeometricProduct::gp(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<&Vector<T>> for Odd<T> {
+    type Output = Rotor<T>;
+    fn mul(self, rhs: &Vector<T>) -> Rotor<T> {
+        self::GeometricProduct::gp(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<Vector<T>> for &Odd<T> {
+    type Output = Rotor<T>;
+    fn mul(self, rhs: Vector<T>) -> Rotor<T> {
+        self::GeometricProduct::gp(self, &rhs)
+    }
+}
+impl<T: self::Ring> self::GeometricProduct<Rotor<T>> for Odd<T> {
+    type Output = Odd<T>;
+    #[inline]
+    fn gp(&self, rhs: &Rotor<T>) -> Odd<T> {
+        let p0_0 = self.e1.mul_ref(&rhs.scalar);
+        let p0_1 = self.e1.mul_ref(&rhs.e12);
+        let p0_2 = self.e1.mul_ref(&rhs.e13);
+        let p0_3 = self.e1.mul_ref(&rhs.e23);
+        let p1_0 = self.e2.mul_ref(&rhs.scalar);
+        let p1_1 = self.e2.mul_ref(&rhs.e12);
+        let p1_2 = self.e2.mul_ref(&rhs.e13);
+        let p1_3 = self.e2.mul_ref(&rhs.e23);
+        let p2_0 = self.e3.mul_ref(&rhs.scalar);
+        let p2_1 = self.e3.mul_ref(&rhs.e12);
+        let p2_2 = self.e3.mul_ref(&rhs.e13);
+        let p2_3 = self.e3.mul_ref(&rhs.e23);
+        let p3_0 = self.e123.mul_ref(&rhs.scalar);
+        let p3_1 = self.e123.mul_ref(&rhs.e12);
+        let p3_2 = self.e123.mul_ref(&rhs.e13);
+        let p3_3 = self.e123.mul_ref(&rhs.e23);
+        Odd {
+            e1: p0_0 - &p1_1 - &p2_2 - &p3_3,
+            e2: p0_1 + &p1_0 - &p2_3 + &p3_2,
+            e3: p0_2 + &p1_3 + &p2_0 - &p3_1,
+            e123: p0_3 - &p1_2 + &p2_1 + &p3_0,
+        }
+    }
+}
+impl<T: self::Ring> self::GeometricProductInto<Rotor<T>, Odd<T>> for Odd<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Rotor<T>) -> Odd<T> {
+        self::GeometricProduct::gp(self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<&Rotor<T>> for &Odd<T> {
+    type Output = Odd<T>;
+    fn mul(self, rhs: &Rotor<T>) -> Odd<T> {
+        self::GeometricProduct::gp(self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<Rotor<T>> for Odd<T> {
+    type Output = Odd<T>;
+    fn mul(self, rhs: Rotor<T>) -> Odd<T> {
+        self::GeometricProduct::gp(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<&Rotor<T>> for Odd<T> {
+    type Output = Odd<T>;
+    fn mul(self, rhs: &Rotor<T>) -> Odd<T> {
+        self::GeometricProduct::gp(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<Rotor<T>> for &Odd<T> {
+    type Output = Odd<T>;
+    fn mul(self, rhs: Rotor<T>) -> Odd<T> {
+        self::GeometricProduct::gp(self, &rhs)
+    }
+}
+impl<T: self::Ring> self::GeometricProduct<Odd<T>> for Odd<T> {
+    type Output = Rotor<T>;
+    #[inline]
+    fn gp(&self, rhs: &Odd<T>) -> Rotor<T> {
+        let p0_0 = self.e1.mul_ref(&rhs.e1);
+        let p0_1 = self.e1.mul_ref(&rhs.e2);
+        let p0_2 = self.e1.mul_ref(&rhs.e3);
+        let p0_3 = self.e1.mul_ref(&rhs.e123);
+        let p1_0 = self.e2.mul_ref(&rhs.e1);
+        let p1_1 = self.e2.mul_ref(&rhs.e2);
+        let p1_2 = self.e2.mul_ref(&rhs.e3);
+        let p1_3 = self.e2.mul_ref(&rhs.e123);
+        let p2_0 = self.e3.mul_ref(&rhs.e1);
+        let p2_1 = self.e3.mul_ref(&rhs.e2);
+        let p2_2 = self.e3.mul_ref(&rhs.e3);
+        let p2_3 = self.e3.mul_ref(&rhs.e123);
+        let p3_0 = self.e123.mul_ref(&rhs.e1);
+        let p3_1 = self.e123.mul_ref(&rhs.e2);
+        let p3_2 = self.e123.mul_ref(&rhs.e3);
+        let p3_3 = self.e123.mul_ref(&rhs.e123);
+        Rotor {
+            scalar: p0_0 + &p1_1 + &p2_2 - &p3_3,
+            e12: p0_1 - &p1_0 + &p2_3 + &p3_2,
+            e13: p0_2 - &p1_3 - &p2_0 - &p3_1,
+            e23: p0_3 + &p1_2 - &p2_1 + &p3_0,
+        }
+    }
+}
+impl<T: self::Ring> self::GeometricProductInto<Odd<T>, Rotor<T>> for Odd<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Odd<T>) -> Rotor<T> {
+        self::GeometricProduct::gp(self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<&Odd<T>> for &Odd<T> {
+    type Output = Rotor<T>;
+    fn mul(self, rhs: &Odd<T>) -> Rotor<T> {
+        self::GeometricProduct::gp(self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<Odd<T>> for Odd<T> {
+    type Output = Rotor<T>;
+    fn mul(self, rhs: Odd<T>) -> Rotor<T> {
+        self::GeometricProduct::gp(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<&Odd<T>> for Odd<T> {
+    type Output = Rotor<T>;
+    fn mul(self, rhs: &Odd<T>) -> Rotor<T> {
+        self::GeometricProduct::gp(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<Odd<T>> for &Odd<T> {
+    type Output = Rotor<T>;
+    fn mul(self, rhs: Odd<T>) -> Rotor<T> {
+        self::GeometricProduct::gp(self, &rhs)
+    }
+}
+impl<T: self::Ring> self::GeometricProduct<Multivector<T>> for Odd<T> {
+    type Output = Multivector<T>;
+    #[inline]
+    fn gp(&self, rhs: &Multivector<T>) -> Multivector<T> {
+        let p0_0 = self.e1.mul_ref(&rhs.scalar);
+        let p0_1 = self.e1.mul_ref(&rhs.e1);
+        let p0_2 = self.e1.mul_ref(&rhs.e2);
+        let p0_3 = self.e1.mul_ref(&rhs.e3);
+        let p0_4 = self.e1.mul_ref(&rhs.e12);
+        let p0_5 = self.e1.mul_ref(&rhs.e13);
+        let p0_6 = self.e1.mul_ref(&rhs.e23);
+        let p0_7 = self.e1.mul_ref(&rhs.e123);
+        let p1_0 = self.e2.mul_ref(&rhs.scalar);
+        let p1_1 = self.e2.mul_ref(&rhs.e1);
+        let p1_2 = self.e2.mul_ref(&rhs.e2);
+        let p1_3 = self.e2.mul_ref(&rhs.e3);
+        let p1_4 = self.e2.mul_ref(&rhs.e12);
+        let p1_5 = self.e2.mul_ref(&rhs.e13);
+        let p1_6 = self.e2.mul_ref(&rhs.e23);
+        let p1_7 = self.e2.mul_ref(&rhs.e123);
+        let p2_0 = self.e3.mul_ref(&rhs.scalar);
+        let p2_1 = self.e3.mul_ref(&rhs.e1);
+        let p2_2 = self.e3.mul_ref(&rhs.e2);
+        let p2_3 = self.e3.mul_ref(&rhs.e3);
+        let p2_4 = self.e3.mul_ref(&rhs.e12);
+        let p2_5 = self.e3.mul_ref(&rhs.e13);
+        let p2_6 = self.e3.mul_ref(&rhs.e23);
+        let p2_7 = self.e3.mul_ref(&rhs.e123);
+        let p3_0 = self.e123.mul_ref(&rhs.scalar);
+        let p3_1 = self.e123.mul_ref(&rhs.e1);
+        let p3_2 = self.e123.mul_ref(&rhs.e2);
+        let p3_3 = self.e123.mul_ref(&rhs.e3);
+        let p3_4 = self.e123.mul_ref(&rhs.e12);
+        let p3_5 = self.e123.mul_ref(&rhs.e13);
+        let p3_6 = self.e123.mul_ref(&rhs.e23);
+        let p3_7 = self.e123.mul_ref(&rhs.e123);
+        Multivector {
+            scalar: p0_1 + &p1_2 + &p2_3 - &p3_7,
+            e1: p0_0 - &p1_4 - &p2_5 - &p3_6,
+            e2: p0_4 + &p1_0 - &p2_6 + &p3_5,
+            e3: p0_5 + &p1_6 + &p2_0 - &p3_4,
+            e12: p0_2 - &p1_1 + &p2_7 + &p3_3,
+            e13: p0_3 - &p1_7 - &p2_1 - &p3_2,
+            e23: p0_7 + &p1_3 - &p2_2 + &p3_1,
+            e123: p0_6 - &p1_5 + &p2_4 + &p3_0,
+        }
+    }
+}
+impl<T: self::Ring> self::GeometricProductInto<Multivector<T>, Multivector<T>>
+for Odd<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Multivector<T>) -> Multivector<T> {
+        self::GeometricProduct::gp(self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<&Multivector<T>> for &Odd<T> {
+    type Output = Multivector<T>;
+    fn mul(self, rhs: &Multivector<T>) -> Multivector<T> {
+        self::GeometricProduct::gp(self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<Multivector<T>> for Odd<T> {
+    type Output = Multivector<T>;
+    fn mul(self, rhs: Multivector<T>) -> Multivector<T> {
+        self::GeometricProduct::gp(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<&Multivector<T>> for Odd<T> {
+    type Output = Multivector<T>;
+    fn mul(self, rhs: &Multivector<T>) -> Multivector<T> {
+        self::GeometricProduct::gp(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<Multivector<T>> for &Odd<T> {
     type Output = Multivector<T>;
     fn mul(self, rhs: Multivector<T>) -> Multivector<T> {
         self::GeometricProduct::gp(self, &rhs)
@@ -2078,6 +3080,13 @@ impl<T: self::Ring> self::GeometricProduct<Vector<T>> for Multivector<T> {
             e23: p2_2 - &p3_1 + &p7_0,
             e123: p4_2 - &p5_1 + &p6_0,
         }
+    }
+}
+impl<T: self::Ring> self::GeometricProductInto<Vector<T>, Multivector<T>>
+for Multivector<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Vector<T>) -> Multivector<T> {
+        self::GeometricProduct::gp(self, rhs)
     }
 }
 impl<T: self::Ring> ::core::ops::Mul<&Vector<T>> for &Multivector<T> {
@@ -2152,6 +3161,13 @@ impl<T: self::Ring> self::GeometricProduct<Rotor<T>> for Multivector<T> {
         }
     }
 }
+impl<T: self::Ring> self::GeometricProductInto<Rotor<T>, Multivector<T>>
+for Multivector<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Rotor<T>) -> Multivector<T> {
+        self::GeometricProduct::gp(self, rhs)
+    }
+}
 impl<T: self::Ring> ::core::ops::Mul<&Rotor<T>> for &Multivector<T> {
     type Output = Multivector<T>;
     fn mul(self, rhs: &Rotor<T>) -> Multivector<T> {
@@ -2173,6 +3189,85 @@ impl<T: self::Ring> ::core::ops::Mul<&Rotor<T>> for Multivector<T> {
 impl<T: self::Ring> ::core::ops::Mul<Rotor<T>> for &Multivector<T> {
     type Output = Multivector<T>;
     fn mul(self, rhs: Rotor<T>) -> Multivector<T> {
+        self::GeometricProduct::gp(self, &rhs)
+    }
+}
+impl<T: self::Ring> self::GeometricProduct<Odd<T>> for Multivector<T> {
+    type Output = Multivector<T>;
+    #[inline]
+    fn gp(&self, rhs: &Odd<T>) -> Multivector<T> {
+        let p0_0 = self.scalar.mul_ref(&rhs.e1);
+        let p0_1 = self.scalar.mul_ref(&rhs.e2);
+        let p0_2 = self.scalar.mul_ref(&rhs.e3);
+        let p0_3 = self.scalar.mul_ref(&rhs.e123);
+        let p1_0 = self.e1.mul_ref(&rhs.e1);
+        let p1_1 = self.e1.mul_ref(&rhs.e2);
+        let p1_2 = self.e1.mul_ref(&rhs.e3);
+        let p1_3 = self.e1.mul_ref(&rhs.e123);
+        let p2_0 = self.e2.mul_ref(&rhs.e1);
+        let p2_1 = self.e2.mul_ref(&rhs.e2);
+        let p2_2 = self.e2.mul_ref(&rhs.e3);
+        let p2_3 = self.e2.mul_ref(&rhs.e123);
+        let p3_0 = self.e3.mul_ref(&rhs.e1);
+        let p3_1 = self.e3.mul_ref(&rhs.e2);
+        let p3_2 = self.e3.mul_ref(&rhs.e3);
+        let p3_3 = self.e3.mul_ref(&rhs.e123);
+        let p4_0 = self.e12.mul_ref(&rhs.e1);
+        let p4_1 = self.e12.mul_ref(&rhs.e2);
+        let p4_2 = self.e12.mul_ref(&rhs.e3);
+        let p4_3 = self.e12.mul_ref(&rhs.e123);
+        let p5_0 = self.e13.mul_ref(&rhs.e1);
+        let p5_1 = self.e13.mul_ref(&rhs.e2);
+        let p5_2 = self.e13.mul_ref(&rhs.e3);
+        let p5_3 = self.e13.mul_ref(&rhs.e123);
+        let p6_0 = self.e23.mul_ref(&rhs.e1);
+        let p6_1 = self.e23.mul_ref(&rhs.e2);
+        let p6_2 = self.e23.mul_ref(&rhs.e3);
+        let p6_3 = self.e23.mul_ref(&rhs.e123);
+        let p7_0 = self.e123.mul_ref(&rhs.e1);
+        let p7_1 = self.e123.mul_ref(&rhs.e2);
+        let p7_2 = self.e123.mul_ref(&rhs.e3);
+        let p7_3 = self.e123.mul_ref(&rhs.e123);
+        Multivector {
+            scalar: p1_0 + &p2_1 + &p3_2 - &p7_3,
+            e1: p0_0 + &p4_1 + &p5_2 - &p6_3,
+            e2: p0_1 - &p4_0 + &p5_3 + &p6_2,
+            e3: p0_2 - &p4_3 - &p5_0 - &p6_1,
+            e12: p1_1 - &p2_0 + &p3_3 + &p7_2,
+            e13: p1_2 - &p2_3 - &p3_0 - &p7_1,
+            e23: p1_3 + &p2_2 - &p3_1 + &p7_0,
+            e123: p0_3 + &p4_2 - &p5_1 + &p6_0,
+        }
+    }
+}
+impl<T: self::Ring> self::GeometricProductInto<Odd<T>, Multivector<T>>
+for Multivector<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Odd<T>) -> Multivector<T> {
+        self::GeometricProduct::gp(self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<&Odd<T>> for &Multivector<T> {
+    type Output = Multivector<T>;
+    fn mul(self, rhs: &Odd<T>) -> Multivector<T> {
+        self::GeometricProduct::gp(self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<Odd<T>> for Multivector<T> {
+    type Output = Multivector<T>;
+    fn mul(self, rhs: Odd<T>) -> Multivector<T> {
+        self::GeometricProduct::gp(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<&Odd<T>> for Multivector<T> {
+    type Output = Multivector<T>;
+    fn mul(self, rhs: &Odd<T>) -> Multivector<T> {
+        self::GeometricProduct::gp(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::Mul<Odd<T>> for &Multivector<T> {
+    type Output = Multivector<T>;
+    fn mul(self, rhs: Odd<T>) -> Multivector<T> {
         self::GeometricProduct::gp(self, &rhs)
     }
 }
@@ -2256,6 +3351,13 @@ impl<T: self::Ring> self::GeometricProduct<Multivector<T>> for Multivector<T> {
         }
     }
 }
+impl<T: self::Ring> self::GeometricProductInto<Multivector<T>, Multivector<T>>
+for Multivector<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Multivector<T>) -> Multivector<T> {
+        self::GeometricProduct::gp(self, rhs)
+    }
+}
 impl<T: self::Ring> ::core::ops::Mul<&Multivector<T>> for &Multivector<T> {
     type Output = Multivector<T>;
     fn mul(self, rhs: &Multivector<T>) -> Multivector<T> {
@@ -2323,48 +3425,86 @@ impl<T: self::Ring> ::core::ops::BitXor<Vector<T>> for &Vector<T> {
     }
 }
 impl<T: self::Ring> self::OuterProduct<Rotor<T>> for Vector<T> {
-    type Output = Multivector<T>;
+    type Output = Odd<T>;
     #[inline]
-    fn op(&self, rhs: &Rotor<T>) -> Multivector<T> {
+    fn op(&self, rhs: &Rotor<T>) -> Odd<T> {
         let p0_0 = self.e1.mul_ref(&rhs.scalar);
         let p0_3 = self.e1.mul_ref(&rhs.e23);
         let p1_0 = self.e2.mul_ref(&rhs.scalar);
         let p1_2 = self.e2.mul_ref(&rhs.e13);
         let p2_0 = self.e3.mul_ref(&rhs.scalar);
         let p2_1 = self.e3.mul_ref(&rhs.e12);
-        Multivector {
-            scalar: T::zero(),
+        Odd {
             e1: p0_0,
             e2: p1_0,
             e3: p2_0,
-            e12: T::zero(),
-            e13: T::zero(),
-            e23: T::zero(),
             e123: p0_3 - &p1_2 + &p2_1,
         }
     }
 }
 impl<T: self::Ring> ::core::ops::BitXor<&Rotor<T>> for &Vector<T> {
-    type Output = Multivector<T>;
-    fn bitxor(self, rhs: &Rotor<T>) -> Multivector<T> {
+    type Output = Odd<T>;
+    fn bitxor(self, rhs: &Rotor<T>) -> Odd<T> {
         self::OuterProduct::op(self, rhs)
     }
 }
 impl<T: self::Ring> ::core::ops::BitXor<Rotor<T>> for Vector<T> {
-    type Output = Multivector<T>;
-    fn bitxor(self, rhs: Rotor<T>) -> Multivector<T> {
+    type Output = Odd<T>;
+    fn bitxor(self, rhs: Rotor<T>) -> Odd<T> {
         self::OuterProduct::op(&self, &rhs)
     }
 }
 impl<T: self::Ring> ::core::ops::BitXor<&Rotor<T>> for Vector<T> {
-    type Output = Multivector<T>;
-    fn bitxor(self, rhs: &Rotor<T>) -> Multivector<T> {
+    type Output = Odd<T>;
+    fn bitxor(self, rhs: &Rotor<T>) -> Odd<T> {
         self::OuterProduct::op(&self, rhs)
     }
 }
 impl<T: self::Ring> ::core::ops::BitXor<Rotor<T>> for &Vector<T> {
-    type Output = Multivector<T>;
-    fn bitxor(self, rhs: Rotor<T>) -> Multivector<T> {
+    type Output = Odd<T>;
+    fn bitxor(self, rhs: Rotor<T>) -> Odd<T> {
+        self::OuterProduct::op(self, &rhs)
+    }
+}
+impl<T: self::Ring> self::OuterProduct<Odd<T>> for Vector<T> {
+    type Output = Rotor<T>;
+    #[inline]
+    fn op(&self, rhs: &Odd<T>) -> Rotor<T> {
+        let p0_1 = self.e1.mul_ref(&rhs.e2);
+        let p0_2 = self.e1.mul_ref(&rhs.e3);
+        let p1_0 = self.e2.mul_ref(&rhs.e1);
+        let p1_2 = self.e2.mul_ref(&rhs.e3);
+        let p2_0 = self.e3.mul_ref(&rhs.e1);
+        let p2_1 = self.e3.mul_ref(&rhs.e2);
+        Rotor {
+            scalar: T::zero(),
+            e12: p0_1 - &p1_0,
+            e13: p0_2 - &p2_0,
+            e23: p1_2 - &p2_1,
+        }
+    }
+}
+impl<T: self::Ring> ::core::ops::BitXor<&Odd<T>> for &Vector<T> {
+    type Output = Rotor<T>;
+    fn bitxor(self, rhs: &Odd<T>) -> Rotor<T> {
+        self::OuterProduct::op(self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitXor<Odd<T>> for Vector<T> {
+    type Output = Rotor<T>;
+    fn bitxor(self, rhs: Odd<T>) -> Rotor<T> {
+        self::OuterProduct::op(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitXor<&Odd<T>> for Vector<T> {
+    type Output = Rotor<T>;
+    fn bitxor(self, rhs: &Odd<T>) -> Rotor<T> {
+        self::OuterProduct::op(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitXor<Odd<T>> for &Vector<T> {
+    type Output = Rotor<T>;
+    fn bitxor(self, rhs: Odd<T>) -> Rotor<T> {
         self::OuterProduct::op(self, &rhs)
     }
 }
@@ -2421,48 +3561,44 @@ impl<T: self::Ring> ::core::ops::BitXor<Multivector<T>> for &Vector<T> {
     }
 }
 impl<T: self::Ring> self::OuterProduct<Vector<T>> for Rotor<T> {
-    type Output = Multivector<T>;
+    type Output = Odd<T>;
     #[inline]
-    fn op(&self, rhs: &Vector<T>) -> Multivector<T> {
+    fn op(&self, rhs: &Vector<T>) -> Odd<T> {
         let p0_0 = self.scalar.mul_ref(&rhs.e1);
         let p0_1 = self.scalar.mul_ref(&rhs.e2);
         let p0_2 = self.scalar.mul_ref(&rhs.e3);
         let p1_2 = self.e12.mul_ref(&rhs.e3);
         let p2_1 = self.e13.mul_ref(&rhs.e2);
         let p3_0 = self.e23.mul_ref(&rhs.e1);
-        Multivector {
-            scalar: T::zero(),
+        Odd {
             e1: p0_0,
             e2: p0_1,
             e3: p0_2,
-            e12: T::zero(),
-            e13: T::zero(),
-            e23: T::zero(),
             e123: p1_2 - &p2_1 + &p3_0,
         }
     }
 }
 impl<T: self::Ring> ::core::ops::BitXor<&Vector<T>> for &Rotor<T> {
-    type Output = Multivector<T>;
-    fn bitxor(self, rhs: &Vector<T>) -> Multivector<T> {
+    type Output = Odd<T>;
+    fn bitxor(self, rhs: &Vector<T>) -> Odd<T> {
         self::OuterProduct::op(self, rhs)
     }
 }
 impl<T: self::Ring> ::core::ops::BitXor<Vector<T>> for Rotor<T> {
-    type Output = Multivector<T>;
-    fn bitxor(self, rhs: Vector<T>) -> Multivector<T> {
+    type Output = Odd<T>;
+    fn bitxor(self, rhs: Vector<T>) -> Odd<T> {
         self::OuterProduct::op(&self, &rhs)
     }
 }
 impl<T: self::Ring> ::core::ops::BitXor<&Vector<T>> for Rotor<T> {
-    type Output = Multivector<T>;
-    fn bitxor(self, rhs: &Vector<T>) -> Multivector<T> {
+    type Output = Odd<T>;
+    fn bitxor(self, rhs: &Vector<T>) -> Odd<T> {
         self::OuterProduct::op(&self, rhs)
     }
 }
 impl<T: self::Ring> ::core::ops::BitXor<Vector<T>> for &Rotor<T> {
-    type Output = Multivector<T>;
-    fn bitxor(self, rhs: Vector<T>) -> Multivector<T> {
+    type Output = Odd<T>;
+    fn bitxor(self, rhs: Vector<T>) -> Odd<T> {
         self::OuterProduct::op(self, &rhs)
     }
 }
@@ -2506,6 +3642,49 @@ impl<T: self::Ring> ::core::ops::BitXor<&Rotor<T>> for Rotor<T> {
 impl<T: self::Ring> ::core::ops::BitXor<Rotor<T>> for &Rotor<T> {
     type Output = Rotor<T>;
     fn bitxor(self, rhs: Rotor<T>) -> Rotor<T> {
+        self::OuterProduct::op(self, &rhs)
+    }
+}
+impl<T: self::Ring> self::OuterProduct<Odd<T>> for Rotor<T> {
+    type Output = Odd<T>;
+    #[inline]
+    fn op(&self, rhs: &Odd<T>) -> Odd<T> {
+        let p0_0 = self.scalar.mul_ref(&rhs.e1);
+        let p0_1 = self.scalar.mul_ref(&rhs.e2);
+        let p0_2 = self.scalar.mul_ref(&rhs.e3);
+        let p0_3 = self.scalar.mul_ref(&rhs.e123);
+        let p1_2 = self.e12.mul_ref(&rhs.e3);
+        let p2_1 = self.e13.mul_ref(&rhs.e2);
+        let p3_0 = self.e23.mul_ref(&rhs.e1);
+        Odd {
+            e1: p0_0,
+            e2: p0_1,
+            e3: p0_2,
+            e123: p0_3 + &p1_2 - &p2_1 + &p3_0,
+        }
+    }
+}
+impl<T: self::Ring> ::core::ops::BitXor<&Odd<T>> for &Rotor<T> {
+    type Output = Odd<T>;
+    fn bitxor(self, rhs: &Odd<T>) -> Odd<T> {
+        self::OuterProduct::op(self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitXor<Odd<T>> for Rotor<T> {
+    type Output = Odd<T>;
+    fn bitxor(self, rhs: Odd<T>) -> Odd<T> {
+        self::OuterProduct::op(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitXor<&Odd<T>> for Rotor<T> {
+    type Output = Odd<T>;
+    fn bitxor(self, rhs: &Odd<T>) -> Odd<T> {
+        self::OuterProduct::op(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitXor<Odd<T>> for &Rotor<T> {
+    type Output = Odd<T>;
+    fn bitxor(self, rhs: Odd<T>) -> Odd<T> {
         self::OuterProduct::op(self, &rhs)
     }
 }
@@ -2558,6 +3737,186 @@ impl<T: self::Ring> ::core::ops::BitXor<&Multivector<T>> for Rotor<T> {
     }
 }
 impl<T: self::Ring> ::core::ops::BitXor<Multivector<T>> for &Rotor<T> {
+    type Output = Multivector<T>;
+    fn bitxor(self, rhs: Multivector<T>) -> Multivector<T> {
+        self::OuterProduct::op(self, &rhs)
+    }
+}
+impl<T: self::Ring> self::OuterProduct<Vector<T>> for Odd<T> {
+    type Output = Rotor<T>;
+    #[inline]
+    fn op(&self, rhs: &Vector<T>) -> Rotor<T> {
+        let p0_1 = self.e1.mul_ref(&rhs.e2);
+        let p0_2 = self.e1.mul_ref(&rhs.e3);
+        let p1_0 = self.e2.mul_ref(&rhs.e1);
+        let p1_2 = self.e2.mul_ref(&rhs.e3);
+        let p2_0 = self.e3.mul_ref(&rhs.e1);
+        let p2_1 = self.e3.mul_ref(&rhs.e2);
+        Rotor {
+            scalar: T::zero(),
+            e12: p0_1 - &p1_0,
+            e13: p0_2 - &p2_0,
+            e23: p1_2 - &p2_1,
+        }
+    }
+}
+impl<T: self::Ring> ::core::ops::BitXor<&Vector<T>> for &Odd<T> {
+    type Output = Rotor<T>;
+    fn bitxor(self, rhs: &Vector<T>) -> Rotor<T> {
+        self::OuterProduct::op(self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitXor<Vector<T>> for Odd<T> {
+    type Output = Rotor<T>;
+    fn bitxor(self, rhs: Vector<T>) -> Rotor<T> {
+        self::OuterProduct::op(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitXor<&Vector<T>> for Odd<T> {
+    type Output = Rotor<T>;
+    fn bitxor(self, rhs: &Vector<T>) -> Rotor<T> {
+        self::OuterProduct::op(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitXor<Vector<T>> for &Odd<T> {
+    type Output = Rotor<T>;
+    fn bitxor(self, rhs: Vector<T>) -> Rotor<T> {
+        self::OuterProduct::op(self, &rhs)
+    }
+}
+impl<T: self::Ring> self::OuterProduct<Rotor<T>> for Odd<T> {
+    type Output = Odd<T>;
+    #[inline]
+    fn op(&self, rhs: &Rotor<T>) -> Odd<T> {
+        let p0_0 = self.e1.mul_ref(&rhs.scalar);
+        let p0_3 = self.e1.mul_ref(&rhs.e23);
+        let p1_0 = self.e2.mul_ref(&rhs.scalar);
+        let p1_2 = self.e2.mul_ref(&rhs.e13);
+        let p2_0 = self.e3.mul_ref(&rhs.scalar);
+        let p2_1 = self.e3.mul_ref(&rhs.e12);
+        let p3_0 = self.e123.mul_ref(&rhs.scalar);
+        Odd {
+            e1: p0_0,
+            e2: p1_0,
+            e3: p2_0,
+            e123: p0_3 - &p1_2 + &p2_1 + &p3_0,
+        }
+    }
+}
+impl<T: self::Ring> ::core::ops::BitXor<&Rotor<T>> for &Odd<T> {
+    type Output = Odd<T>;
+    fn bitxor(self, rhs: &Rotor<T>) -> Odd<T> {
+        self::OuterProduct::op(self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitXor<Rotor<T>> for Odd<T> {
+    type Output = Odd<T>;
+    fn bitxor(self, rhs: Rotor<T>) -> Odd<T> {
+        self::OuterProduct::op(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitXor<&Rotor<T>> for Odd<T> {
+    type Output = Odd<T>;
+    fn bitxor(self, rhs: &Rotor<T>) -> Odd<T> {
+        self::OuterProduct::op(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitXor<Rotor<T>> for &Odd<T> {
+    type Output = Odd<T>;
+    fn bitxor(self, rhs: Rotor<T>) -> Odd<T> {
+        self::OuterProduct::op(self, &rhs)
+    }
+}
+impl<T: self::Ring> self::OuterProduct<Odd<T>> for Odd<T> {
+    type Output = Rotor<T>;
+    #[inline]
+    fn op(&self, rhs: &Odd<T>) -> Rotor<T> {
+        let p0_1 = self.e1.mul_ref(&rhs.e2);
+        let p0_2 = self.e1.mul_ref(&rhs.e3);
+        let p1_0 = self.e2.mul_ref(&rhs.e1);
+        let p1_2 = self.e2.mul_ref(&rhs.e3);
+        let p2_0 = self.e3.mul_ref(&rhs.e1);
+        let p2_1 = self.e3.mul_ref(&rhs.e2);
+        Rotor {
+            scalar: T::zero(),
+            e12: p0_1 - &p1_0,
+            e13: p0_2 - &p2_0,
+            e23: p1_2 - &p2_1,
+        }
+    }
+}
+impl<T: self::Ring> ::core::ops::BitXor<&Odd<T>> for &Odd<T> {
+    type Output = Rotor<T>;
+    fn bitxor(self, rhs: &Odd<T>) -> Rotor<T> {
+        self::OuterProduct::op(self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitXor<Odd<T>> for Odd<T> {
+    type Output = Rotor<T>;
+    fn bitxor(self, rhs: Odd<T>) -> Rotor<T> {
+        self::OuterProduct::op(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitXor<&Odd<T>> for Odd<T> {
+    type Output = Rotor<T>;
+    fn bitxor(self, rhs: &Odd<T>) -> Rotor<T> {
+        self::OuterProduct::op(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitXor<Odd<T>> for &Odd<T> {
+    type Output = Rotor<T>;
+    fn bitxor(self, rhs: Odd<T>) -> Rotor<T> {
+        self::OuterProduct::op(self, &rhs)
+    }
+}
+impl<T: self::Ring> self::OuterProduct<Multivector<T>> for Odd<T> {
+    type Output = Multivector<T>;
+    #[inline]
+    fn op(&self, rhs: &Multivector<T>) -> Multivector<T> {
+        let p0_0 = self.e1.mul_ref(&rhs.scalar);
+        let p0_2 = self.e1.mul_ref(&rhs.e2);
+        let p0_3 = self.e1.mul_ref(&rhs.e3);
+        let p0_6 = self.e1.mul_ref(&rhs.e23);
+        let p1_0 = self.e2.mul_ref(&rhs.scalar);
+        let p1_1 = self.e2.mul_ref(&rhs.e1);
+        let p1_3 = self.e2.mul_ref(&rhs.e3);
+        let p1_5 = self.e2.mul_ref(&rhs.e13);
+        let p2_0 = self.e3.mul_ref(&rhs.scalar);
+        let p2_1 = self.e3.mul_ref(&rhs.e1);
+        let p2_2 = self.e3.mul_ref(&rhs.e2);
+        let p2_4 = self.e3.mul_ref(&rhs.e12);
+        let p3_0 = self.e123.mul_ref(&rhs.scalar);
+        Multivector {
+            scalar: T::zero(),
+            e1: p0_0,
+            e2: p1_0,
+            e3: p2_0,
+            e12: p0_2 - &p1_1,
+            e13: p0_3 - &p2_1,
+            e23: p1_3 - &p2_2,
+            e123: p0_6 - &p1_5 + &p2_4 + &p3_0,
+        }
+    }
+}
+impl<T: self::Ring> ::core::ops::BitXor<&Multivector<T>> for &Odd<T> {
+    type Output = Multivector<T>;
+    fn bitxor(self, rhs: &Multivector<T>) -> Multivector<T> {
+        self::OuterProduct::op(self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitXor<Multivector<T>> for Odd<T> {
+    type Output = Multivector<T>;
+    fn bitxor(self, rhs: Multivector<T>) -> Multivector<T> {
+        self::OuterProduct::op(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitXor<&Multivector<T>> for Odd<T> {
+    type Output = Multivector<T>;
+    fn bitxor(self, rhs: &Multivector<T>) -> Multivector<T> {
+        self::OuterProduct::op(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitXor<Multivector<T>> for &Odd<T> {
     type Output = Multivector<T>;
     fn bitxor(self, rhs: Multivector<T>) -> Multivector<T> {
         self::OuterProduct::op(self, &rhs)
@@ -2666,6 +4025,59 @@ impl<T: self::Ring> ::core::ops::BitXor<&Rotor<T>> for Multivector<T> {
 impl<T: self::Ring> ::core::ops::BitXor<Rotor<T>> for &Multivector<T> {
     type Output = Multivector<T>;
     fn bitxor(self, rhs: Rotor<T>) -> Multivector<T> {
+        self::OuterProduct::op(self, &rhs)
+    }
+}
+impl<T: self::Ring> self::OuterProduct<Odd<T>> for Multivector<T> {
+    type Output = Multivector<T>;
+    #[inline]
+    fn op(&self, rhs: &Odd<T>) -> Multivector<T> {
+        let p0_0 = self.scalar.mul_ref(&rhs.e1);
+        let p0_1 = self.scalar.mul_ref(&rhs.e2);
+        let p0_2 = self.scalar.mul_ref(&rhs.e3);
+        let p0_3 = self.scalar.mul_ref(&rhs.e123);
+        let p1_1 = self.e1.mul_ref(&rhs.e2);
+        let p1_2 = self.e1.mul_ref(&rhs.e3);
+        let p2_0 = self.e2.mul_ref(&rhs.e1);
+        let p2_2 = self.e2.mul_ref(&rhs.e3);
+        let p3_0 = self.e3.mul_ref(&rhs.e1);
+        let p3_1 = self.e3.mul_ref(&rhs.e2);
+        let p4_2 = self.e12.mul_ref(&rhs.e3);
+        let p5_1 = self.e13.mul_ref(&rhs.e2);
+        let p6_0 = self.e23.mul_ref(&rhs.e1);
+        Multivector {
+            scalar: T::zero(),
+            e1: p0_0,
+            e2: p0_1,
+            e3: p0_2,
+            e12: p1_1 - &p2_0,
+            e13: p1_2 - &p3_0,
+            e23: p2_2 - &p3_1,
+            e123: p0_3 + &p4_2 - &p5_1 + &p6_0,
+        }
+    }
+}
+impl<T: self::Ring> ::core::ops::BitXor<&Odd<T>> for &Multivector<T> {
+    type Output = Multivector<T>;
+    fn bitxor(self, rhs: &Odd<T>) -> Multivector<T> {
+        self::OuterProduct::op(self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitXor<Odd<T>> for Multivector<T> {
+    type Output = Multivector<T>;
+    fn bitxor(self, rhs: Odd<T>) -> Multivector<T> {
+        self::OuterProduct::op(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitXor<&Odd<T>> for Multivector<T> {
+    type Output = Multivector<T>;
+    fn bitxor(self, rhs: &Odd<T>) -> Multivector<T> {
+        self::OuterProduct::op(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitXor<Odd<T>> for &Multivector<T> {
+    type Output = Multivector<T>;
+    fn bitxor(self, rhs: Odd<T>) -> Multivector<T> {
         self::OuterProduct::op(self, &rhs)
     }
 }
@@ -2816,6 +4228,48 @@ impl<T: self::Ring> ::core::ops::BitOr<Rotor<T>> for &Vector<T> {
         self::LeftContraction::lc(self, &rhs)
     }
 }
+impl<T: self::Ring> self::LeftContraction<Odd<T>> for Vector<T> {
+    type Output = Rotor<T>;
+    #[inline]
+    fn lc(&self, rhs: &Odd<T>) -> Rotor<T> {
+        let p0_0 = self.e1.mul_ref(&rhs.e1);
+        let p0_3 = self.e1.mul_ref(&rhs.e123);
+        let p1_1 = self.e2.mul_ref(&rhs.e2);
+        let p1_3 = self.e2.mul_ref(&rhs.e123);
+        let p2_2 = self.e3.mul_ref(&rhs.e3);
+        let p2_3 = self.e3.mul_ref(&rhs.e123);
+        Rotor {
+            scalar: p0_0 + &p1_1 + &p2_2,
+            e12: p2_3,
+            e13: self::Ring::neg_ref(&p1_3),
+            e23: p0_3,
+        }
+    }
+}
+impl<T: self::Ring> ::core::ops::BitOr<&Odd<T>> for &Vector<T> {
+    type Output = Rotor<T>;
+    fn bitor(self, rhs: &Odd<T>) -> Rotor<T> {
+        self::LeftContraction::lc(self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitOr<Odd<T>> for Vector<T> {
+    type Output = Rotor<T>;
+    fn bitor(self, rhs: Odd<T>) -> Rotor<T> {
+        self::LeftContraction::lc(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitOr<&Odd<T>> for Vector<T> {
+    type Output = Rotor<T>;
+    fn bitor(self, rhs: &Odd<T>) -> Rotor<T> {
+        self::LeftContraction::lc(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitOr<Odd<T>> for &Vector<T> {
+    type Output = Rotor<T>;
+    fn bitor(self, rhs: Odd<T>) -> Rotor<T> {
+        self::LeftContraction::lc(self, &rhs)
+    }
+}
 impl<T: self::Ring> self::LeftContraction<Multivector<T>> for Vector<T> {
     type Output = Multivector<T>;
     #[inline]
@@ -2949,6 +4403,49 @@ impl<T: self::Ring> ::core::ops::BitOr<Rotor<T>> for &Rotor<T> {
         self::LeftContraction::lc(self, &rhs)
     }
 }
+impl<T: self::Ring> self::LeftContraction<Odd<T>> for Rotor<T> {
+    type Output = Odd<T>;
+    #[inline]
+    fn lc(&self, rhs: &Odd<T>) -> Odd<T> {
+        let p0_0 = self.scalar.mul_ref(&rhs.e1);
+        let p0_1 = self.scalar.mul_ref(&rhs.e2);
+        let p0_2 = self.scalar.mul_ref(&rhs.e3);
+        let p0_3 = self.scalar.mul_ref(&rhs.e123);
+        let p1_3 = self.e12.mul_ref(&rhs.e123);
+        let p2_3 = self.e13.mul_ref(&rhs.e123);
+        let p3_3 = self.e23.mul_ref(&rhs.e123);
+        Odd {
+            e1: p0_0 - &p3_3,
+            e2: p0_1 + &p2_3,
+            e3: p0_2 - &p1_3,
+            e123: p0_3,
+        }
+    }
+}
+impl<T: self::Ring> ::core::ops::BitOr<&Odd<T>> for &Rotor<T> {
+    type Output = Odd<T>;
+    fn bitor(self, rhs: &Odd<T>) -> Odd<T> {
+        self::LeftContraction::lc(self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitOr<Odd<T>> for Rotor<T> {
+    type Output = Odd<T>;
+    fn bitor(self, rhs: Odd<T>) -> Odd<T> {
+        self::LeftContraction::lc(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitOr<&Odd<T>> for Rotor<T> {
+    type Output = Odd<T>;
+    fn bitor(self, rhs: &Odd<T>) -> Odd<T> {
+        self::LeftContraction::lc(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitOr<Odd<T>> for &Rotor<T> {
+    type Output = Odd<T>;
+    fn bitor(self, rhs: Odd<T>) -> Odd<T> {
+        self::LeftContraction::lc(self, &rhs)
+    }
+}
 impl<T: self::Ring> self::LeftContraction<Multivector<T>> for Rotor<T> {
     type Output = Multivector<T>;
     #[inline]
@@ -2998,6 +4495,182 @@ impl<T: self::Ring> ::core::ops::BitOr<&Multivector<T>> for Rotor<T> {
     }
 }
 impl<T: self::Ring> ::core::ops::BitOr<Multivector<T>> for &Rotor<T> {
+    type Output = Multivector<T>;
+    fn bitor(self, rhs: Multivector<T>) -> Multivector<T> {
+        self::LeftContraction::lc(self, &rhs)
+    }
+}
+impl<T: self::Ring> self::LeftContraction<Vector<T>> for Odd<T> {
+    type Output = Rotor<T>;
+    #[inline]
+    fn lc(&self, rhs: &Vector<T>) -> Rotor<T> {
+        let p0_0 = self.e1.mul_ref(&rhs.e1);
+        let p1_1 = self.e2.mul_ref(&rhs.e2);
+        let p2_2 = self.e3.mul_ref(&rhs.e3);
+        Rotor {
+            scalar: p0_0 + &p1_1 + &p2_2,
+            e12: T::zero(),
+            e13: T::zero(),
+            e23: T::zero(),
+        }
+    }
+}
+impl<T: self::Ring> ::core::ops::BitOr<&Vector<T>> for &Odd<T> {
+    type Output = Rotor<T>;
+    fn bitor(self, rhs: &Vector<T>) -> Rotor<T> {
+        self::LeftContraction::lc(self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitOr<Vector<T>> for Odd<T> {
+    type Output = Rotor<T>;
+    fn bitor(self, rhs: Vector<T>) -> Rotor<T> {
+        self::LeftContraction::lc(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitOr<&Vector<T>> for Odd<T> {
+    type Output = Rotor<T>;
+    fn bitor(self, rhs: &Vector<T>) -> Rotor<T> {
+        self::LeftContraction::lc(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitOr<Vector<T>> for &Odd<T> {
+    type Output = Rotor<T>;
+    fn bitor(self, rhs: Vector<T>) -> Rotor<T> {
+        self::LeftContraction::lc(self, &rhs)
+    }
+}
+impl<T: self::Ring> self::LeftContraction<Rotor<T>> for Odd<T> {
+    type Output = Vector<T>;
+    #[inline]
+    fn lc(&self, rhs: &Rotor<T>) -> Vector<T> {
+        let p0_1 = self.e1.mul_ref(&rhs.e12);
+        let p0_2 = self.e1.mul_ref(&rhs.e13);
+        let p1_1 = self.e2.mul_ref(&rhs.e12);
+        let p1_3 = self.e2.mul_ref(&rhs.e23);
+        let p2_2 = self.e3.mul_ref(&rhs.e13);
+        let p2_3 = self.e3.mul_ref(&rhs.e23);
+        Vector {
+            e1: self::Ring::neg_ref(&p1_1) - &p2_2,
+            e2: p0_1 - &p2_3,
+            e3: p0_2 + &p1_3,
+        }
+    }
+}
+impl<T: self::Ring> ::core::ops::BitOr<&Rotor<T>> for &Odd<T> {
+    type Output = Vector<T>;
+    fn bitor(self, rhs: &Rotor<T>) -> Vector<T> {
+        self::LeftContraction::lc(self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitOr<Rotor<T>> for Odd<T> {
+    type Output = Vector<T>;
+    fn bitor(self, rhs: Rotor<T>) -> Vector<T> {
+        self::LeftContraction::lc(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitOr<&Rotor<T>> for Odd<T> {
+    type Output = Vector<T>;
+    fn bitor(self, rhs: &Rotor<T>) -> Vector<T> {
+        self::LeftContraction::lc(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitOr<Rotor<T>> for &Odd<T> {
+    type Output = Vector<T>;
+    fn bitor(self, rhs: Rotor<T>) -> Vector<T> {
+        self::LeftContraction::lc(self, &rhs)
+    }
+}
+impl<T: self::Ring> self::LeftContraction<Odd<T>> for Odd<T> {
+    type Output = Rotor<T>;
+    #[inline]
+    fn lc(&self, rhs: &Odd<T>) -> Rotor<T> {
+        let p0_0 = self.e1.mul_ref(&rhs.e1);
+        let p0_3 = self.e1.mul_ref(&rhs.e123);
+        let p1_1 = self.e2.mul_ref(&rhs.e2);
+        let p1_3 = self.e2.mul_ref(&rhs.e123);
+        let p2_2 = self.e3.mul_ref(&rhs.e3);
+        let p2_3 = self.e3.mul_ref(&rhs.e123);
+        let p3_3 = self.e123.mul_ref(&rhs.e123);
+        Rotor {
+            scalar: p0_0 + &p1_1 + &p2_2 - &p3_3,
+            e12: p2_3,
+            e13: self::Ring::neg_ref(&p1_3),
+            e23: p0_3,
+        }
+    }
+}
+impl<T: self::Ring> ::core::ops::BitOr<&Odd<T>> for &Odd<T> {
+    type Output = Rotor<T>;
+    fn bitor(self, rhs: &Odd<T>) -> Rotor<T> {
+        self::LeftContraction::lc(self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitOr<Odd<T>> for Odd<T> {
+    type Output = Rotor<T>;
+    fn bitor(self, rhs: Odd<T>) -> Rotor<T> {
+        self::LeftContraction::lc(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitOr<&Odd<T>> for Odd<T> {
+    type Output = Rotor<T>;
+    fn bitor(self, rhs: &Odd<T>) -> Rotor<T> {
+        self::LeftContraction::lc(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitOr<Odd<T>> for &Odd<T> {
+    type Output = Rotor<T>;
+    fn bitor(self, rhs: Odd<T>) -> Rotor<T> {
+        self::LeftContraction::lc(self, &rhs)
+    }
+}
+impl<T: self::Ring> self::LeftContraction<Multivector<T>> for Odd<T> {
+    type Output = Multivector<T>;
+    #[inline]
+    fn lc(&self, rhs: &Multivector<T>) -> Multivector<T> {
+        let p0_1 = self.e1.mul_ref(&rhs.e1);
+        let p0_4 = self.e1.mul_ref(&rhs.e12);
+        let p0_5 = self.e1.mul_ref(&rhs.e13);
+        let p0_7 = self.e1.mul_ref(&rhs.e123);
+        let p1_2 = self.e2.mul_ref(&rhs.e2);
+        let p1_4 = self.e2.mul_ref(&rhs.e12);
+        let p1_6 = self.e2.mul_ref(&rhs.e23);
+        let p1_7 = self.e2.mul_ref(&rhs.e123);
+        let p2_3 = self.e3.mul_ref(&rhs.e3);
+        let p2_5 = self.e3.mul_ref(&rhs.e13);
+        let p2_6 = self.e3.mul_ref(&rhs.e23);
+        let p2_7 = self.e3.mul_ref(&rhs.e123);
+        let p3_7 = self.e123.mul_ref(&rhs.e123);
+        Multivector {
+            scalar: p0_1 + &p1_2 + &p2_3 - &p3_7,
+            e1: self::Ring::neg_ref(&p1_4) - &p2_5,
+            e2: p0_4 - &p2_6,
+            e3: p0_5 + &p1_6,
+            e12: p2_7,
+            e13: self::Ring::neg_ref(&p1_7),
+            e23: p0_7,
+            e123: T::zero(),
+        }
+    }
+}
+impl<T: self::Ring> ::core::ops::BitOr<&Multivector<T>> for &Odd<T> {
+    type Output = Multivector<T>;
+    fn bitor(self, rhs: &Multivector<T>) -> Multivector<T> {
+        self::LeftContraction::lc(self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitOr<Multivector<T>> for Odd<T> {
+    type Output = Multivector<T>;
+    fn bitor(self, rhs: Multivector<T>) -> Multivector<T> {
+        self::LeftContraction::lc(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitOr<&Multivector<T>> for Odd<T> {
+    type Output = Multivector<T>;
+    fn bitor(self, rhs: &Multivector<T>) -> Multivector<T> {
+        self::LeftContraction::lc(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitOr<Multivector<T>> for &Odd<T> {
     type Output = Multivector<T>;
     fn bitor(self, rhs: Multivector<T>) -> Multivector<T> {
         self::LeftContraction::lc(self, &rhs)
@@ -3102,6 +4775,60 @@ impl<T: self::Ring> ::core::ops::BitOr<Rotor<T>> for &Multivector<T> {
         self::LeftContraction::lc(self, &rhs)
     }
 }
+impl<T: self::Ring> self::LeftContraction<Odd<T>> for Multivector<T> {
+    type Output = Multivector<T>;
+    #[inline]
+    fn lc(&self, rhs: &Odd<T>) -> Multivector<T> {
+        let p0_0 = self.scalar.mul_ref(&rhs.e1);
+        let p0_1 = self.scalar.mul_ref(&rhs.e2);
+        let p0_2 = self.scalar.mul_ref(&rhs.e3);
+        let p0_3 = self.scalar.mul_ref(&rhs.e123);
+        let p1_0 = self.e1.mul_ref(&rhs.e1);
+        let p1_3 = self.e1.mul_ref(&rhs.e123);
+        let p2_1 = self.e2.mul_ref(&rhs.e2);
+        let p2_3 = self.e2.mul_ref(&rhs.e123);
+        let p3_2 = self.e3.mul_ref(&rhs.e3);
+        let p3_3 = self.e3.mul_ref(&rhs.e123);
+        let p4_3 = self.e12.mul_ref(&rhs.e123);
+        let p5_3 = self.e13.mul_ref(&rhs.e123);
+        let p6_3 = self.e23.mul_ref(&rhs.e123);
+        let p7_3 = self.e123.mul_ref(&rhs.e123);
+        Multivector {
+            scalar: p1_0 + &p2_1 + &p3_2 - &p7_3,
+            e1: p0_0 - &p6_3,
+            e2: p0_1 + &p5_3,
+            e3: p0_2 - &p4_3,
+            e12: p3_3,
+            e13: self::Ring::neg_ref(&p2_3),
+            e23: p1_3,
+            e123: p0_3,
+        }
+    }
+}
+impl<T: self::Ring> ::core::ops::BitOr<&Odd<T>> for &Multivector<T> {
+    type Output = Multivector<T>;
+    fn bitor(self, rhs: &Odd<T>) -> Multivector<T> {
+        self::LeftContraction::lc(self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitOr<Odd<T>> for Multivector<T> {
+    type Output = Multivector<T>;
+    fn bitor(self, rhs: Odd<T>) -> Multivector<T> {
+        self::LeftContraction::lc(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitOr<&Odd<T>> for Multivector<T> {
+    type Output = Multivector<T>;
+    fn bitor(self, rhs: &Odd<T>) -> Multivector<T> {
+        self::LeftContraction::lc(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitOr<Odd<T>> for &Multivector<T> {
+    type Output = Multivector<T>;
+    fn bitor(self, rhs: Odd<T>) -> Multivector<T> {
+        self::LeftContraction::lc(self, &rhs)
+    }
+}
 impl<T: self::Ring> self::LeftContraction<Multivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
@@ -3198,6 +4925,21 @@ impl<T: self::Ring> self::RightContraction<Rotor<T>> for Vector<T> {
         }
     }
 }
+impl<T: self::Ring> self::RightContraction<Odd<T>> for Vector<T> {
+    type Output = Rotor<T>;
+    #[inline]
+    fn rc(&self, rhs: &Odd<T>) -> Rotor<T> {
+        let p0_0 = self.e1.mul_ref(&rhs.e1);
+        let p1_1 = self.e2.mul_ref(&rhs.e2);
+        let p2_2 = self.e3.mul_ref(&rhs.e3);
+        Rotor {
+            scalar: p0_0 + &p1_1 + &p2_2,
+            e12: T::zero(),
+            e13: T::zero(),
+            e23: T::zero(),
+        }
+    }
+}
 impl<T: self::Ring> self::RightContraction<Multivector<T>> for Vector<T> {
     type Output = Multivector<T>;
     #[inline]
@@ -3256,6 +4998,23 @@ impl<T: self::Ring> self::RightContraction<Rotor<T>> for Rotor<T> {
         }
     }
 }
+impl<T: self::Ring> self::RightContraction<Odd<T>> for Rotor<T> {
+    type Output = Vector<T>;
+    #[inline]
+    fn rc(&self, rhs: &Odd<T>) -> Vector<T> {
+        let p1_0 = self.e12.mul_ref(&rhs.e1);
+        let p1_1 = self.e12.mul_ref(&rhs.e2);
+        let p2_0 = self.e13.mul_ref(&rhs.e1);
+        let p2_2 = self.e13.mul_ref(&rhs.e3);
+        let p3_1 = self.e23.mul_ref(&rhs.e2);
+        let p3_2 = self.e23.mul_ref(&rhs.e3);
+        Vector {
+            e1: p1_1 + &p2_2,
+            e2: p3_2 - &p1_0,
+            e3: self::Ring::neg_ref(&p2_0) - &p3_1,
+        }
+    }
+}
 impl<T: self::Ring> self::RightContraction<Multivector<T>> for Rotor<T> {
     type Output = Multivector<T>;
     #[inline]
@@ -3282,6 +5041,92 @@ impl<T: self::Ring> self::RightContraction<Multivector<T>> for Rotor<T> {
             e13: p2_0,
             e23: p3_0,
             e123: T::zero(),
+        }
+    }
+}
+impl<T: self::Ring> self::RightContraction<Vector<T>> for Odd<T> {
+    type Output = Rotor<T>;
+    #[inline]
+    fn rc(&self, rhs: &Vector<T>) -> Rotor<T> {
+        let p0_0 = self.e1.mul_ref(&rhs.e1);
+        let p1_1 = self.e2.mul_ref(&rhs.e2);
+        let p2_2 = self.e3.mul_ref(&rhs.e3);
+        let p3_0 = self.e123.mul_ref(&rhs.e1);
+        let p3_1 = self.e123.mul_ref(&rhs.e2);
+        let p3_2 = self.e123.mul_ref(&rhs.e3);
+        Rotor {
+            scalar: p0_0 + &p1_1 + &p2_2,
+            e12: p3_2,
+            e13: self::Ring::neg_ref(&p3_1),
+            e23: p3_0,
+        }
+    }
+}
+impl<T: self::Ring> self::RightContraction<Rotor<T>> for Odd<T> {
+    type Output = Odd<T>;
+    #[inline]
+    fn rc(&self, rhs: &Rotor<T>) -> Odd<T> {
+        let p0_0 = self.e1.mul_ref(&rhs.scalar);
+        let p1_0 = self.e2.mul_ref(&rhs.scalar);
+        let p2_0 = self.e3.mul_ref(&rhs.scalar);
+        let p3_0 = self.e123.mul_ref(&rhs.scalar);
+        let p3_1 = self.e123.mul_ref(&rhs.e12);
+        let p3_2 = self.e123.mul_ref(&rhs.e13);
+        let p3_3 = self.e123.mul_ref(&rhs.e23);
+        Odd {
+            e1: p0_0 - &p3_3,
+            e2: p1_0 + &p3_2,
+            e3: p2_0 - &p3_1,
+            e123: p3_0,
+        }
+    }
+}
+impl<T: self::Ring> self::RightContraction<Odd<T>> for Odd<T> {
+    type Output = Rotor<T>;
+    #[inline]
+    fn rc(&self, rhs: &Odd<T>) -> Rotor<T> {
+        let p0_0 = self.e1.mul_ref(&rhs.e1);
+        let p1_1 = self.e2.mul_ref(&rhs.e2);
+        let p2_2 = self.e3.mul_ref(&rhs.e3);
+        let p3_0 = self.e123.mul_ref(&rhs.e1);
+        let p3_1 = self.e123.mul_ref(&rhs.e2);
+        let p3_2 = self.e123.mul_ref(&rhs.e3);
+        let p3_3 = self.e123.mul_ref(&rhs.e123);
+        Rotor {
+            scalar: p0_0 + &p1_1 + &p2_2 - &p3_3,
+            e12: p3_2,
+            e13: self::Ring::neg_ref(&p3_1),
+            e23: p3_0,
+        }
+    }
+}
+impl<T: self::Ring> self::RightContraction<Multivector<T>> for Odd<T> {
+    type Output = Multivector<T>;
+    #[inline]
+    fn rc(&self, rhs: &Multivector<T>) -> Multivector<T> {
+        let p0_0 = self.e1.mul_ref(&rhs.scalar);
+        let p0_1 = self.e1.mul_ref(&rhs.e1);
+        let p1_0 = self.e2.mul_ref(&rhs.scalar);
+        let p1_2 = self.e2.mul_ref(&rhs.e2);
+        let p2_0 = self.e3.mul_ref(&rhs.scalar);
+        let p2_3 = self.e3.mul_ref(&rhs.e3);
+        let p3_0 = self.e123.mul_ref(&rhs.scalar);
+        let p3_1 = self.e123.mul_ref(&rhs.e1);
+        let p3_2 = self.e123.mul_ref(&rhs.e2);
+        let p3_3 = self.e123.mul_ref(&rhs.e3);
+        let p3_4 = self.e123.mul_ref(&rhs.e12);
+        let p3_5 = self.e123.mul_ref(&rhs.e13);
+        let p3_6 = self.e123.mul_ref(&rhs.e23);
+        let p3_7 = self.e123.mul_ref(&rhs.e123);
+        Multivector {
+            scalar: p0_1 + &p1_2 + &p2_3 - &p3_7,
+            e1: p0_0 - &p3_6,
+            e2: p1_0 + &p3_5,
+            e3: p2_0 - &p3_4,
+            e12: p3_3,
+            e13: self::Ring::neg_ref(&p3_2),
+            e23: p3_1,
+            e123: p3_0,
         }
     }
 }
@@ -3340,6 +5185,35 @@ impl<T: self::Ring> self::RightContraction<Rotor<T>> for Multivector<T> {
             e13: p5_0,
             e23: p6_0,
             e123: p7_0,
+        }
+    }
+}
+impl<T: self::Ring> self::RightContraction<Odd<T>> for Multivector<T> {
+    type Output = Multivector<T>;
+    #[inline]
+    fn rc(&self, rhs: &Odd<T>) -> Multivector<T> {
+        let p1_0 = self.e1.mul_ref(&rhs.e1);
+        let p2_1 = self.e2.mul_ref(&rhs.e2);
+        let p3_2 = self.e3.mul_ref(&rhs.e3);
+        let p4_0 = self.e12.mul_ref(&rhs.e1);
+        let p4_1 = self.e12.mul_ref(&rhs.e2);
+        let p5_0 = self.e13.mul_ref(&rhs.e1);
+        let p5_2 = self.e13.mul_ref(&rhs.e3);
+        let p6_1 = self.e23.mul_ref(&rhs.e2);
+        let p6_2 = self.e23.mul_ref(&rhs.e3);
+        let p7_0 = self.e123.mul_ref(&rhs.e1);
+        let p7_1 = self.e123.mul_ref(&rhs.e2);
+        let p7_2 = self.e123.mul_ref(&rhs.e3);
+        let p7_3 = self.e123.mul_ref(&rhs.e123);
+        Multivector {
+            scalar: p1_0 + &p2_1 + &p3_2 - &p7_3,
+            e1: p4_1 + &p5_2,
+            e2: p6_2 - &p4_0,
+            e3: self::Ring::neg_ref(&p5_0) - &p6_1,
+            e12: p7_2,
+            e13: self::Ring::neg_ref(&p7_1),
+            e23: p7_0,
+            e123: T::zero(),
         }
     }
 }
@@ -3412,6 +5286,21 @@ impl<T: self::Ring> self::ScalarProduct<Rotor<T>> for Vector<T> {
         }
     }
 }
+impl<T: self::Ring> self::ScalarProduct<Odd<T>> for Vector<T> {
+    type Output = Rotor<T>;
+    #[inline]
+    fn sp(&self, rhs: &Odd<T>) -> Rotor<T> {
+        let p0_0 = self.e1.mul_ref(&rhs.e1);
+        let p1_1 = self.e2.mul_ref(&rhs.e2);
+        let p2_2 = self.e3.mul_ref(&rhs.e3);
+        Rotor {
+            scalar: p0_0 + &p1_1 + &p2_2,
+            e12: T::zero(),
+            e13: T::zero(),
+            e23: T::zero(),
+        }
+    }
+}
 impl<T: self::Ring> self::ScalarProduct<Multivector<T>> for Vector<T> {
     type Output = Rotor<T>;
     #[inline]
@@ -3454,6 +5343,17 @@ impl<T: self::Ring> self::ScalarProduct<Rotor<T>> for Rotor<T> {
         }
     }
 }
+impl<T: self::Ring> self::ScalarProduct<Odd<T>> for Rotor<T> {
+    type Output = Vector<T>;
+    #[inline]
+    fn sp(&self, rhs: &Odd<T>) -> Vector<T> {
+        Vector {
+            e1: T::zero(),
+            e2: T::zero(),
+            e3: T::zero(),
+        }
+    }
+}
 impl<T: self::Ring> self::ScalarProduct<Multivector<T>> for Rotor<T> {
     type Output = Rotor<T>;
     #[inline]
@@ -3464,6 +5364,64 @@ impl<T: self::Ring> self::ScalarProduct<Multivector<T>> for Rotor<T> {
         let p3_6 = self.e23.mul_ref(&rhs.e23);
         Rotor {
             scalar: p0_0 - &p1_4 - &p2_5 - &p3_6,
+            e12: T::zero(),
+            e13: T::zero(),
+            e23: T::zero(),
+        }
+    }
+}
+impl<T: self::Ring> self::ScalarProduct<Vector<T>> for Odd<T> {
+    type Output = Rotor<T>;
+    #[inline]
+    fn sp(&self, rhs: &Vector<T>) -> Rotor<T> {
+        let p0_0 = self.e1.mul_ref(&rhs.e1);
+        let p1_1 = self.e2.mul_ref(&rhs.e2);
+        let p2_2 = self.e3.mul_ref(&rhs.e3);
+        Rotor {
+            scalar: p0_0 + &p1_1 + &p2_2,
+            e12: T::zero(),
+            e13: T::zero(),
+            e23: T::zero(),
+        }
+    }
+}
+impl<T: self::Ring> self::ScalarProduct<Rotor<T>> for Odd<T> {
+    type Output = Vector<T>;
+    #[inline]
+    fn sp(&self, rhs: &Rotor<T>) -> Vector<T> {
+        Vector {
+            e1: T::zero(),
+            e2: T::zero(),
+            e3: T::zero(),
+        }
+    }
+}
+impl<T: self::Ring> self::ScalarProduct<Odd<T>> for Odd<T> {
+    type Output = Rotor<T>;
+    #[inline]
+    fn sp(&self, rhs: &Odd<T>) -> Rotor<T> {
+        let p0_0 = self.e1.mul_ref(&rhs.e1);
+        let p1_1 = self.e2.mul_ref(&rhs.e2);
+        let p2_2 = self.e3.mul_ref(&rhs.e3);
+        let p3_3 = self.e123.mul_ref(&rhs.e123);
+        Rotor {
+            scalar: p0_0 + &p1_1 + &p2_2 - &p3_3,
+            e12: T::zero(),
+            e13: T::zero(),
+            e23: T::zero(),
+        }
+    }
+}
+impl<T: self::Ring> self::ScalarProduct<Multivector<T>> for Odd<T> {
+    type Output = Rotor<T>;
+    #[inline]
+    fn sp(&self, rhs: &Multivector<T>) -> Rotor<T> {
+        let p0_1 = self.e1.mul_ref(&rhs.e1);
+        let p1_2 = self.e2.mul_ref(&rhs.e2);
+        let p2_3 = self.e3.mul_ref(&rhs.e3);
+        let p3_7 = self.e123.mul_ref(&rhs.e123);
+        Rotor {
+            scalar: p0_1 + &p1_2 + &p2_3 - &p3_7,
             e12: T::zero(),
             e13: T::zero(),
             e23: T::zero(),
@@ -3501,6 +5459,22 @@ impl<T: self::Ring> self::ScalarProduct<Rotor<T>> for Multivector<T> {
         }
     }
 }
+impl<T: self::Ring> self::ScalarProduct<Odd<T>> for Multivector<T> {
+    type Output = Rotor<T>;
+    #[inline]
+    fn sp(&self, rhs: &Odd<T>) -> Rotor<T> {
+        let p1_0 = self.e1.mul_ref(&rhs.e1);
+        let p2_1 = self.e2.mul_ref(&rhs.e2);
+        let p3_2 = self.e3.mul_ref(&rhs.e3);
+        let p7_3 = self.e123.mul_ref(&rhs.e123);
+        Rotor {
+            scalar: p1_0 + &p2_1 + &p3_2 - &p7_3,
+            e12: T::zero(),
+            e13: T::zero(),
+            e23: T::zero(),
+        }
+    }
+}
 impl<T: self::Ring> self::ScalarProduct<Multivector<T>> for Multivector<T> {
     type Output = Rotor<T>;
     #[inline]
@@ -3532,6 +5506,30 @@ impl<T: self::Ring> self::RegressiveProduct<Vector<T>> for Vector<T> {
         }
     }
 }
+impl<T: self::Ring> ::core::ops::BitAnd<&Vector<T>> for &Vector<T> {
+    type Output = Vector<T>;
+    fn bitand(self, rhs: &Vector<T>) -> Vector<T> {
+        self::RegressiveProduct::regressive(self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<Vector<T>> for Vector<T> {
+    type Output = Vector<T>;
+    fn bitand(self, rhs: Vector<T>) -> Vector<T> {
+        self::RegressiveProduct::regressive(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<&Vector<T>> for Vector<T> {
+    type Output = Vector<T>;
+    fn bitand(self, rhs: &Vector<T>) -> Vector<T> {
+        self::RegressiveProduct::regressive(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<Vector<T>> for &Vector<T> {
+    type Output = Vector<T>;
+    fn bitand(self, rhs: Vector<T>) -> Vector<T> {
+        self::RegressiveProduct::regressive(self, &rhs)
+    }
+}
 impl<T: self::Ring> self::RegressiveProduct<Rotor<T>> for Vector<T> {
     type Output = Rotor<T>;
     #[inline]
@@ -3545,6 +5543,68 @@ impl<T: self::Ring> self::RegressiveProduct<Rotor<T>> for Vector<T> {
             e13: T::zero(),
             e23: T::zero(),
         }
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<&Rotor<T>> for &Vector<T> {
+    type Output = Rotor<T>;
+    fn bitand(self, rhs: &Rotor<T>) -> Rotor<T> {
+        self::RegressiveProduct::regressive(self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<Rotor<T>> for Vector<T> {
+    type Output = Rotor<T>;
+    fn bitand(self, rhs: Rotor<T>) -> Rotor<T> {
+        self::RegressiveProduct::regressive(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<&Rotor<T>> for Vector<T> {
+    type Output = Rotor<T>;
+    fn bitand(self, rhs: &Rotor<T>) -> Rotor<T> {
+        self::RegressiveProduct::regressive(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<Rotor<T>> for &Vector<T> {
+    type Output = Rotor<T>;
+    fn bitand(self, rhs: Rotor<T>) -> Rotor<T> {
+        self::RegressiveProduct::regressive(self, &rhs)
+    }
+}
+impl<T: self::Ring> self::RegressiveProduct<Odd<T>> for Vector<T> {
+    type Output = Vector<T>;
+    #[inline]
+    fn regressive(&self, rhs: &Odd<T>) -> Vector<T> {
+        let p0_3 = self.e1.mul_ref(&rhs.e123);
+        let p1_3 = self.e2.mul_ref(&rhs.e123);
+        let p2_3 = self.e3.mul_ref(&rhs.e123);
+        Vector {
+            e1: p0_3,
+            e2: p1_3,
+            e3: p2_3,
+        }
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<&Odd<T>> for &Vector<T> {
+    type Output = Vector<T>;
+    fn bitand(self, rhs: &Odd<T>) -> Vector<T> {
+        self::RegressiveProduct::regressive(self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<Odd<T>> for Vector<T> {
+    type Output = Vector<T>;
+    fn bitand(self, rhs: Odd<T>) -> Vector<T> {
+        self::RegressiveProduct::regressive(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<&Odd<T>> for Vector<T> {
+    type Output = Vector<T>;
+    fn bitand(self, rhs: &Odd<T>) -> Vector<T> {
+        self::RegressiveProduct::regressive(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<Odd<T>> for &Vector<T> {
+    type Output = Vector<T>;
+    fn bitand(self, rhs: Odd<T>) -> Vector<T> {
+        self::RegressiveProduct::regressive(self, &rhs)
     }
 }
 impl<T: self::Ring> self::RegressiveProduct<Multivector<T>> for Vector<T> {
@@ -3569,6 +5629,30 @@ impl<T: self::Ring> self::RegressiveProduct<Multivector<T>> for Vector<T> {
         }
     }
 }
+impl<T: self::Ring> ::core::ops::BitAnd<&Multivector<T>> for &Vector<T> {
+    type Output = Multivector<T>;
+    fn bitand(self, rhs: &Multivector<T>) -> Multivector<T> {
+        self::RegressiveProduct::regressive(self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<Multivector<T>> for Vector<T> {
+    type Output = Multivector<T>;
+    fn bitand(self, rhs: Multivector<T>) -> Multivector<T> {
+        self::RegressiveProduct::regressive(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<&Multivector<T>> for Vector<T> {
+    type Output = Multivector<T>;
+    fn bitand(self, rhs: &Multivector<T>) -> Multivector<T> {
+        self::RegressiveProduct::regressive(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<Multivector<T>> for &Vector<T> {
+    type Output = Multivector<T>;
+    fn bitand(self, rhs: Multivector<T>) -> Multivector<T> {
+        self::RegressiveProduct::regressive(self, &rhs)
+    }
+}
 impl<T: self::Ring> self::RegressiveProduct<Vector<T>> for Rotor<T> {
     type Output = Rotor<T>;
     #[inline]
@@ -3582,6 +5666,30 @@ impl<T: self::Ring> self::RegressiveProduct<Vector<T>> for Rotor<T> {
             e13: T::zero(),
             e23: T::zero(),
         }
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<&Vector<T>> for &Rotor<T> {
+    type Output = Rotor<T>;
+    fn bitand(self, rhs: &Vector<T>) -> Rotor<T> {
+        self::RegressiveProduct::regressive(self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<Vector<T>> for Rotor<T> {
+    type Output = Rotor<T>;
+    fn bitand(self, rhs: Vector<T>) -> Rotor<T> {
+        self::RegressiveProduct::regressive(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<&Vector<T>> for Rotor<T> {
+    type Output = Rotor<T>;
+    fn bitand(self, rhs: &Vector<T>) -> Rotor<T> {
+        self::RegressiveProduct::regressive(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<Vector<T>> for &Rotor<T> {
+    type Output = Rotor<T>;
+    fn bitand(self, rhs: Vector<T>) -> Rotor<T> {
+        self::RegressiveProduct::regressive(self, &rhs)
     }
 }
 impl<T: self::Ring> self::RegressiveProduct<Rotor<T>> for Rotor<T> {
@@ -3599,6 +5707,73 @@ impl<T: self::Ring> self::RegressiveProduct<Rotor<T>> for Rotor<T> {
             e2: p1_3 - &p3_1,
             e3: p2_3 - &p3_2,
         }
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<&Rotor<T>> for &Rotor<T> {
+    type Output = Vector<T>;
+    fn bitand(self, rhs: &Rotor<T>) -> Vector<T> {
+        self::RegressiveProduct::regressive(self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<Rotor<T>> for Rotor<T> {
+    type Output = Vector<T>;
+    fn bitand(self, rhs: Rotor<T>) -> Vector<T> {
+        self::RegressiveProduct::regressive(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<&Rotor<T>> for Rotor<T> {
+    type Output = Vector<T>;
+    fn bitand(self, rhs: &Rotor<T>) -> Vector<T> {
+        self::RegressiveProduct::regressive(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<Rotor<T>> for &Rotor<T> {
+    type Output = Vector<T>;
+    fn bitand(self, rhs: Rotor<T>) -> Vector<T> {
+        self::RegressiveProduct::regressive(self, &rhs)
+    }
+}
+impl<T: self::Ring> self::RegressiveProduct<Odd<T>> for Rotor<T> {
+    type Output = Rotor<T>;
+    #[inline]
+    fn regressive(&self, rhs: &Odd<T>) -> Rotor<T> {
+        let p0_3 = self.scalar.mul_ref(&rhs.e123);
+        let p1_2 = self.e12.mul_ref(&rhs.e3);
+        let p1_3 = self.e12.mul_ref(&rhs.e123);
+        let p2_1 = self.e13.mul_ref(&rhs.e2);
+        let p2_3 = self.e13.mul_ref(&rhs.e123);
+        let p3_0 = self.e23.mul_ref(&rhs.e1);
+        let p3_3 = self.e23.mul_ref(&rhs.e123);
+        Rotor {
+            scalar: p0_3 + &p1_2 - &p2_1 + &p3_0,
+            e12: p1_3,
+            e13: p2_3,
+            e23: p3_3,
+        }
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<&Odd<T>> for &Rotor<T> {
+    type Output = Rotor<T>;
+    fn bitand(self, rhs: &Odd<T>) -> Rotor<T> {
+        self::RegressiveProduct::regressive(self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<Odd<T>> for Rotor<T> {
+    type Output = Rotor<T>;
+    fn bitand(self, rhs: Odd<T>) -> Rotor<T> {
+        self::RegressiveProduct::regressive(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<&Odd<T>> for Rotor<T> {
+    type Output = Rotor<T>;
+    fn bitand(self, rhs: &Odd<T>) -> Rotor<T> {
+        self::RegressiveProduct::regressive(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<Odd<T>> for &Rotor<T> {
+    type Output = Rotor<T>;
+    fn bitand(self, rhs: Odd<T>) -> Rotor<T> {
+        self::RegressiveProduct::regressive(self, &rhs)
     }
 }
 impl<T: self::Ring> self::RegressiveProduct<Multivector<T>> for Rotor<T> {
@@ -3630,6 +5805,208 @@ impl<T: self::Ring> self::RegressiveProduct<Multivector<T>> for Rotor<T> {
         }
     }
 }
+impl<T: self::Ring> ::core::ops::BitAnd<&Multivector<T>> for &Rotor<T> {
+    type Output = Multivector<T>;
+    fn bitand(self, rhs: &Multivector<T>) -> Multivector<T> {
+        self::RegressiveProduct::regressive(self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<Multivector<T>> for Rotor<T> {
+    type Output = Multivector<T>;
+    fn bitand(self, rhs: Multivector<T>) -> Multivector<T> {
+        self::RegressiveProduct::regressive(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<&Multivector<T>> for Rotor<T> {
+    type Output = Multivector<T>;
+    fn bitand(self, rhs: &Multivector<T>) -> Multivector<T> {
+        self::RegressiveProduct::regressive(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<Multivector<T>> for &Rotor<T> {
+    type Output = Multivector<T>;
+    fn bitand(self, rhs: Multivector<T>) -> Multivector<T> {
+        self::RegressiveProduct::regressive(self, &rhs)
+    }
+}
+impl<T: self::Ring> self::RegressiveProduct<Vector<T>> for Odd<T> {
+    type Output = Vector<T>;
+    #[inline]
+    fn regressive(&self, rhs: &Vector<T>) -> Vector<T> {
+        let p3_0 = self.e123.mul_ref(&rhs.e1);
+        let p3_1 = self.e123.mul_ref(&rhs.e2);
+        let p3_2 = self.e123.mul_ref(&rhs.e3);
+        Vector {
+            e1: p3_0,
+            e2: p3_1,
+            e3: p3_2,
+        }
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<&Vector<T>> for &Odd<T> {
+    type Output = Vector<T>;
+    fn bitand(self, rhs: &Vector<T>) -> Vector<T> {
+        self::RegressiveProduct::regressive(self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<Vector<T>> for Odd<T> {
+    type Output = Vector<T>;
+    fn bitand(self, rhs: Vector<T>) -> Vector<T> {
+        self::RegressiveProduct::regressive(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<&Vector<T>> for Odd<T> {
+    type Output = Vector<T>;
+    fn bitand(self, rhs: &Vector<T>) -> Vector<T> {
+        self::RegressiveProduct::regressive(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<Vector<T>> for &Odd<T> {
+    type Output = Vector<T>;
+    fn bitand(self, rhs: Vector<T>) -> Vector<T> {
+        self::RegressiveProduct::regressive(self, &rhs)
+    }
+}
+impl<T: self::Ring> self::RegressiveProduct<Rotor<T>> for Odd<T> {
+    type Output = Rotor<T>;
+    #[inline]
+    fn regressive(&self, rhs: &Rotor<T>) -> Rotor<T> {
+        let p0_3 = self.e1.mul_ref(&rhs.e23);
+        let p1_2 = self.e2.mul_ref(&rhs.e13);
+        let p2_1 = self.e3.mul_ref(&rhs.e12);
+        let p3_0 = self.e123.mul_ref(&rhs.scalar);
+        let p3_1 = self.e123.mul_ref(&rhs.e12);
+        let p3_2 = self.e123.mul_ref(&rhs.e13);
+        let p3_3 = self.e123.mul_ref(&rhs.e23);
+        Rotor {
+            scalar: p0_3 - &p1_2 + &p2_1 + &p3_0,
+            e12: p3_1,
+            e13: p3_2,
+            e23: p3_3,
+        }
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<&Rotor<T>> for &Odd<T> {
+    type Output = Rotor<T>;
+    fn bitand(self, rhs: &Rotor<T>) -> Rotor<T> {
+        self::RegressiveProduct::regressive(self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<Rotor<T>> for Odd<T> {
+    type Output = Rotor<T>;
+    fn bitand(self, rhs: Rotor<T>) -> Rotor<T> {
+        self::RegressiveProduct::regressive(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<&Rotor<T>> for Odd<T> {
+    type Output = Rotor<T>;
+    fn bitand(self, rhs: &Rotor<T>) -> Rotor<T> {
+        self::RegressiveProduct::regressive(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<Rotor<T>> for &Odd<T> {
+    type Output = Rotor<T>;
+    fn bitand(self, rhs: Rotor<T>) -> Rotor<T> {
+        self::RegressiveProduct::regressive(self, &rhs)
+    }
+}
+impl<T: self::Ring> self::RegressiveProduct<Odd<T>> for Odd<T> {
+    type Output = Odd<T>;
+    #[inline]
+    fn regressive(&self, rhs: &Odd<T>) -> Odd<T> {
+        let p0_3 = self.e1.mul_ref(&rhs.e123);
+        let p1_3 = self.e2.mul_ref(&rhs.e123);
+        let p2_3 = self.e3.mul_ref(&rhs.e123);
+        let p3_0 = self.e123.mul_ref(&rhs.e1);
+        let p3_1 = self.e123.mul_ref(&rhs.e2);
+        let p3_2 = self.e123.mul_ref(&rhs.e3);
+        let p3_3 = self.e123.mul_ref(&rhs.e123);
+        Odd {
+            e1: p0_3 + &p3_0,
+            e2: p1_3 + &p3_1,
+            e3: p2_3 + &p3_2,
+            e123: p3_3,
+        }
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<&Odd<T>> for &Odd<T> {
+    type Output = Odd<T>;
+    fn bitand(self, rhs: &Odd<T>) -> Odd<T> {
+        self::RegressiveProduct::regressive(self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<Odd<T>> for Odd<T> {
+    type Output = Odd<T>;
+    fn bitand(self, rhs: Odd<T>) -> Odd<T> {
+        self::RegressiveProduct::regressive(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<&Odd<T>> for Odd<T> {
+    type Output = Odd<T>;
+    fn bitand(self, rhs: &Odd<T>) -> Odd<T> {
+        self::RegressiveProduct::regressive(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<Odd<T>> for &Odd<T> {
+    type Output = Odd<T>;
+    fn bitand(self, rhs: Odd<T>) -> Odd<T> {
+        self::RegressiveProduct::regressive(self, &rhs)
+    }
+}
+impl<T: self::Ring> self::RegressiveProduct<Multivector<T>> for Odd<T> {
+    type Output = Multivector<T>;
+    #[inline]
+    fn regressive(&self, rhs: &Multivector<T>) -> Multivector<T> {
+        let p0_6 = self.e1.mul_ref(&rhs.e23);
+        let p0_7 = self.e1.mul_ref(&rhs.e123);
+        let p1_5 = self.e2.mul_ref(&rhs.e13);
+        let p1_7 = self.e2.mul_ref(&rhs.e123);
+        let p2_4 = self.e3.mul_ref(&rhs.e12);
+        let p2_7 = self.e3.mul_ref(&rhs.e123);
+        let p3_0 = self.e123.mul_ref(&rhs.scalar);
+        let p3_1 = self.e123.mul_ref(&rhs.e1);
+        let p3_2 = self.e123.mul_ref(&rhs.e2);
+        let p3_3 = self.e123.mul_ref(&rhs.e3);
+        let p3_4 = self.e123.mul_ref(&rhs.e12);
+        let p3_5 = self.e123.mul_ref(&rhs.e13);
+        let p3_6 = self.e123.mul_ref(&rhs.e23);
+        let p3_7 = self.e123.mul_ref(&rhs.e123);
+        Multivector {
+            scalar: p0_6 - &p1_5 + &p2_4 + &p3_0,
+            e1: p0_7 + &p3_1,
+            e2: p1_7 + &p3_2,
+            e3: p2_7 + &p3_3,
+            e12: p3_4,
+            e13: p3_5,
+            e23: p3_6,
+            e123: p3_7,
+        }
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<&Multivector<T>> for &Odd<T> {
+    type Output = Multivector<T>;
+    fn bitand(self, rhs: &Multivector<T>) -> Multivector<T> {
+        self::RegressiveProduct::regressive(self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<Multivector<T>> for Odd<T> {
+    type Output = Multivector<T>;
+    fn bitand(self, rhs: Multivector<T>) -> Multivector<T> {
+        self::RegressiveProduct::regressive(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<&Multivector<T>> for Odd<T> {
+    type Output = Multivector<T>;
+    fn bitand(self, rhs: &Multivector<T>) -> Multivector<T> {
+        self::RegressiveProduct::regressive(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<Multivector<T>> for &Odd<T> {
+    type Output = Multivector<T>;
+    fn bitand(self, rhs: Multivector<T>) -> Multivector<T> {
+        self::RegressiveProduct::regressive(self, &rhs)
+    }
+}
 impl<T: self::Ring> self::RegressiveProduct<Vector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
@@ -3650,6 +6027,30 @@ impl<T: self::Ring> self::RegressiveProduct<Vector<T>> for Multivector<T> {
             e23: T::zero(),
             e123: T::zero(),
         }
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<&Vector<T>> for &Multivector<T> {
+    type Output = Multivector<T>;
+    fn bitand(self, rhs: &Vector<T>) -> Multivector<T> {
+        self::RegressiveProduct::regressive(self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<Vector<T>> for Multivector<T> {
+    type Output = Multivector<T>;
+    fn bitand(self, rhs: Vector<T>) -> Multivector<T> {
+        self::RegressiveProduct::regressive(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<&Vector<T>> for Multivector<T> {
+    type Output = Multivector<T>;
+    fn bitand(self, rhs: &Vector<T>) -> Multivector<T> {
+        self::RegressiveProduct::regressive(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<Vector<T>> for &Multivector<T> {
+    type Output = Multivector<T>;
+    fn bitand(self, rhs: Vector<T>) -> Multivector<T> {
+        self::RegressiveProduct::regressive(self, &rhs)
     }
 }
 impl<T: self::Ring> self::RegressiveProduct<Rotor<T>> for Multivector<T> {
@@ -3679,6 +6080,84 @@ impl<T: self::Ring> self::RegressiveProduct<Rotor<T>> for Multivector<T> {
             e23: p7_3,
             e123: T::zero(),
         }
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<&Rotor<T>> for &Multivector<T> {
+    type Output = Multivector<T>;
+    fn bitand(self, rhs: &Rotor<T>) -> Multivector<T> {
+        self::RegressiveProduct::regressive(self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<Rotor<T>> for Multivector<T> {
+    type Output = Multivector<T>;
+    fn bitand(self, rhs: Rotor<T>) -> Multivector<T> {
+        self::RegressiveProduct::regressive(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<&Rotor<T>> for Multivector<T> {
+    type Output = Multivector<T>;
+    fn bitand(self, rhs: &Rotor<T>) -> Multivector<T> {
+        self::RegressiveProduct::regressive(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<Rotor<T>> for &Multivector<T> {
+    type Output = Multivector<T>;
+    fn bitand(self, rhs: Rotor<T>) -> Multivector<T> {
+        self::RegressiveProduct::regressive(self, &rhs)
+    }
+}
+impl<T: self::Ring> self::RegressiveProduct<Odd<T>> for Multivector<T> {
+    type Output = Multivector<T>;
+    #[inline]
+    fn regressive(&self, rhs: &Odd<T>) -> Multivector<T> {
+        let p0_3 = self.scalar.mul_ref(&rhs.e123);
+        let p1_3 = self.e1.mul_ref(&rhs.e123);
+        let p2_3 = self.e2.mul_ref(&rhs.e123);
+        let p3_3 = self.e3.mul_ref(&rhs.e123);
+        let p4_2 = self.e12.mul_ref(&rhs.e3);
+        let p4_3 = self.e12.mul_ref(&rhs.e123);
+        let p5_1 = self.e13.mul_ref(&rhs.e2);
+        let p5_3 = self.e13.mul_ref(&rhs.e123);
+        let p6_0 = self.e23.mul_ref(&rhs.e1);
+        let p6_3 = self.e23.mul_ref(&rhs.e123);
+        let p7_0 = self.e123.mul_ref(&rhs.e1);
+        let p7_1 = self.e123.mul_ref(&rhs.e2);
+        let p7_2 = self.e123.mul_ref(&rhs.e3);
+        let p7_3 = self.e123.mul_ref(&rhs.e123);
+        Multivector {
+            scalar: p0_3 + &p4_2 - &p5_1 + &p6_0,
+            e1: p1_3 + &p7_0,
+            e2: p2_3 + &p7_1,
+            e3: p3_3 + &p7_2,
+            e12: p4_3,
+            e13: p5_3,
+            e23: p6_3,
+            e123: p7_3,
+        }
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<&Odd<T>> for &Multivector<T> {
+    type Output = Multivector<T>;
+    fn bitand(self, rhs: &Odd<T>) -> Multivector<T> {
+        self::RegressiveProduct::regressive(self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<Odd<T>> for Multivector<T> {
+    type Output = Multivector<T>;
+    fn bitand(self, rhs: Odd<T>) -> Multivector<T> {
+        self::RegressiveProduct::regressive(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<&Odd<T>> for Multivector<T> {
+    type Output = Multivector<T>;
+    fn bitand(self, rhs: &Odd<T>) -> Multivector<T> {
+        self::RegressiveProduct::regressive(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<Odd<T>> for &Multivector<T> {
+    type Output = Multivector<T>;
+    fn bitand(self, rhs: Odd<T>) -> Multivector<T> {
+        self::RegressiveProduct::regressive(self, &rhs)
     }
 }
 impl<T: self::Ring> self::RegressiveProduct<Multivector<T>> for Multivector<T> {
@@ -3724,6 +6203,30 @@ impl<T: self::Ring> self::RegressiveProduct<Multivector<T>> for Multivector<T> {
         }
     }
 }
+impl<T: self::Ring> ::core::ops::BitAnd<&Multivector<T>> for &Multivector<T> {
+    type Output = Multivector<T>;
+    fn bitand(self, rhs: &Multivector<T>) -> Multivector<T> {
+        self::RegressiveProduct::regressive(self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<Multivector<T>> for Multivector<T> {
+    type Output = Multivector<T>;
+    fn bitand(self, rhs: Multivector<T>) -> Multivector<T> {
+        self::RegressiveProduct::regressive(&self, &rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<&Multivector<T>> for Multivector<T> {
+    type Output = Multivector<T>;
+    fn bitand(self, rhs: &Multivector<T>) -> Multivector<T> {
+        self::RegressiveProduct::regressive(&self, rhs)
+    }
+}
+impl<T: self::Ring> ::core::ops::BitAnd<Multivector<T>> for &Multivector<T> {
+    type Output = Multivector<T>;
+    fn bitand(self, rhs: Multivector<T>) -> Multivector<T> {
+        self::RegressiveProduct::regressive(self, &rhs)
+    }
+}
 impl<T: self::Ring> self::CommutatorProduct<Vector<T>> for Vector<T> {
     type Output = Rotor<T>;
     #[inline]
@@ -3756,6 +6259,24 @@ impl<T: self::Ring> self::CommutatorProduct<Rotor<T>> for Vector<T> {
             e1: self::Ring::neg_ref(&p1_1) - &p2_2,
             e2: p0_1 - &p2_3,
             e3: p0_2 + &p1_3,
+        }
+    }
+}
+impl<T: self::Ring> self::CommutatorProduct<Odd<T>> for Vector<T> {
+    type Output = Rotor<T>;
+    #[inline]
+    fn commutator(&self, rhs: &Odd<T>) -> Rotor<T> {
+        let p0_1 = self.e1.mul_ref(&rhs.e2);
+        let p0_2 = self.e1.mul_ref(&rhs.e3);
+        let p1_0 = self.e2.mul_ref(&rhs.e1);
+        let p1_2 = self.e2.mul_ref(&rhs.e3);
+        let p2_0 = self.e3.mul_ref(&rhs.e1);
+        let p2_1 = self.e3.mul_ref(&rhs.e2);
+        Rotor {
+            scalar: T::zero(),
+            e12: p0_1 - &p1_0,
+            e13: p0_2 - &p2_0,
+            e23: p1_2 - &p2_1,
         }
     }
 }
@@ -3822,6 +6343,23 @@ impl<T: self::Ring> self::CommutatorProduct<Rotor<T>> for Rotor<T> {
         }
     }
 }
+impl<T: self::Ring> self::CommutatorProduct<Odd<T>> for Rotor<T> {
+    type Output = Vector<T>;
+    #[inline]
+    fn commutator(&self, rhs: &Odd<T>) -> Vector<T> {
+        let p1_0 = self.e12.mul_ref(&rhs.e1);
+        let p1_1 = self.e12.mul_ref(&rhs.e2);
+        let p2_0 = self.e13.mul_ref(&rhs.e1);
+        let p2_2 = self.e13.mul_ref(&rhs.e3);
+        let p3_1 = self.e23.mul_ref(&rhs.e2);
+        let p3_2 = self.e23.mul_ref(&rhs.e3);
+        Vector {
+            e1: p1_1 + &p2_2,
+            e2: p3_2 - &p1_0,
+            e3: self::Ring::neg_ref(&p2_0) - &p3_1,
+        }
+    }
+}
 impl<T: self::Ring> self::CommutatorProduct<Multivector<T>> for Rotor<T> {
     type Output = Multivector<T>;
     #[inline]
@@ -3846,6 +6384,87 @@ impl<T: self::Ring> self::CommutatorProduct<Multivector<T>> for Rotor<T> {
             e12: p3_5 - &p2_6,
             e13: p1_6 - &p3_4,
             e23: p2_4 - &p1_5,
+            e123: T::zero(),
+        }
+    }
+}
+impl<T: self::Ring> self::CommutatorProduct<Vector<T>> for Odd<T> {
+    type Output = Rotor<T>;
+    #[inline]
+    fn commutator(&self, rhs: &Vector<T>) -> Rotor<T> {
+        let p0_1 = self.e1.mul_ref(&rhs.e2);
+        let p0_2 = self.e1.mul_ref(&rhs.e3);
+        let p1_0 = self.e2.mul_ref(&rhs.e1);
+        let p1_2 = self.e2.mul_ref(&rhs.e3);
+        let p2_0 = self.e3.mul_ref(&rhs.e1);
+        let p2_1 = self.e3.mul_ref(&rhs.e2);
+        Rotor {
+            scalar: T::zero(),
+            e12: p0_1 - &p1_0,
+            e13: p0_2 - &p2_0,
+            e23: p1_2 - &p2_1,
+        }
+    }
+}
+impl<T: self::Ring> self::CommutatorProduct<Rotor<T>> for Odd<T> {
+    type Output = Vector<T>;
+    #[inline]
+    fn commutator(&self, rhs: &Rotor<T>) -> Vector<T> {
+        let p0_1 = self.e1.mul_ref(&rhs.e12);
+        let p0_2 = self.e1.mul_ref(&rhs.e13);
+        let p1_1 = self.e2.mul_ref(&rhs.e12);
+        let p1_3 = self.e2.mul_ref(&rhs.e23);
+        let p2_2 = self.e3.mul_ref(&rhs.e13);
+        let p2_3 = self.e3.mul_ref(&rhs.e23);
+        Vector {
+            e1: self::Ring::neg_ref(&p1_1) - &p2_2,
+            e2: p0_1 - &p2_3,
+            e3: p0_2 + &p1_3,
+        }
+    }
+}
+impl<T: self::Ring> self::CommutatorProduct<Odd<T>> for Odd<T> {
+    type Output = Rotor<T>;
+    #[inline]
+    fn commutator(&self, rhs: &Odd<T>) -> Rotor<T> {
+        let p0_1 = self.e1.mul_ref(&rhs.e2);
+        let p0_2 = self.e1.mul_ref(&rhs.e3);
+        let p1_0 = self.e2.mul_ref(&rhs.e1);
+        let p1_2 = self.e2.mul_ref(&rhs.e3);
+        let p2_0 = self.e3.mul_ref(&rhs.e1);
+        let p2_1 = self.e3.mul_ref(&rhs.e2);
+        Rotor {
+            scalar: T::zero(),
+            e12: p0_1 - &p1_0,
+            e13: p0_2 - &p2_0,
+            e23: p1_2 - &p2_1,
+        }
+    }
+}
+impl<T: self::Ring> self::CommutatorProduct<Multivector<T>> for Odd<T> {
+    type Output = Multivector<T>;
+    #[inline]
+    fn commutator(&self, rhs: &Multivector<T>) -> Multivector<T> {
+        let p0_2 = self.e1.mul_ref(&rhs.e2);
+        let p0_3 = self.e1.mul_ref(&rhs.e3);
+        let p0_4 = self.e1.mul_ref(&rhs.e12);
+        let p0_5 = self.e1.mul_ref(&rhs.e13);
+        let p1_1 = self.e2.mul_ref(&rhs.e1);
+        let p1_3 = self.e2.mul_ref(&rhs.e3);
+        let p1_4 = self.e2.mul_ref(&rhs.e12);
+        let p1_6 = self.e2.mul_ref(&rhs.e23);
+        let p2_1 = self.e3.mul_ref(&rhs.e1);
+        let p2_2 = self.e3.mul_ref(&rhs.e2);
+        let p2_5 = self.e3.mul_ref(&rhs.e13);
+        let p2_6 = self.e3.mul_ref(&rhs.e23);
+        Multivector {
+            scalar: T::zero(),
+            e1: self::Ring::neg_ref(&p1_4) - &p2_5,
+            e2: p0_4 - &p2_6,
+            e3: p0_5 + &p1_6,
+            e12: p0_2 - &p1_1,
+            e13: p0_3 - &p2_1,
+            e23: p1_3 - &p2_2,
             e123: T::zero(),
         }
     }
@@ -3906,6 +6525,34 @@ impl<T: self::Ring> self::CommutatorProduct<Rotor<T>> for Multivector<T> {
         }
     }
 }
+impl<T: self::Ring> self::CommutatorProduct<Odd<T>> for Multivector<T> {
+    type Output = Multivector<T>;
+    #[inline]
+    fn commutator(&self, rhs: &Odd<T>) -> Multivector<T> {
+        let p1_1 = self.e1.mul_ref(&rhs.e2);
+        let p1_2 = self.e1.mul_ref(&rhs.e3);
+        let p2_0 = self.e2.mul_ref(&rhs.e1);
+        let p2_2 = self.e2.mul_ref(&rhs.e3);
+        let p3_0 = self.e3.mul_ref(&rhs.e1);
+        let p3_1 = self.e3.mul_ref(&rhs.e2);
+        let p4_0 = self.e12.mul_ref(&rhs.e1);
+        let p4_1 = self.e12.mul_ref(&rhs.e2);
+        let p5_0 = self.e13.mul_ref(&rhs.e1);
+        let p5_2 = self.e13.mul_ref(&rhs.e3);
+        let p6_1 = self.e23.mul_ref(&rhs.e2);
+        let p6_2 = self.e23.mul_ref(&rhs.e3);
+        Multivector {
+            scalar: T::zero(),
+            e1: p4_1 + &p5_2,
+            e2: p6_2 - &p4_0,
+            e3: self::Ring::neg_ref(&p5_0) - &p6_1,
+            e12: p1_1 - &p2_0,
+            e13: p1_2 - &p3_0,
+            e23: p2_2 - &p3_1,
+            e123: T::zero(),
+        }
+    }
+}
 impl<T: self::Ring> self::CommutatorProduct<Multivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
@@ -3962,24 +6609,38 @@ impl<T: self::Ring> self::AnticommutatorProduct<Vector<T>> for Vector<T> {
     }
 }
 impl<T: self::Ring> self::AnticommutatorProduct<Rotor<T>> for Vector<T> {
-    type Output = Multivector<T>;
+    type Output = Odd<T>;
     #[inline]
-    fn anticommutator(&self, rhs: &Rotor<T>) -> Multivector<T> {
+    fn anticommutator(&self, rhs: &Rotor<T>) -> Odd<T> {
         let p0_0 = self.e1.mul_ref(&rhs.scalar);
         let p0_3 = self.e1.mul_ref(&rhs.e23);
         let p1_0 = self.e2.mul_ref(&rhs.scalar);
         let p1_2 = self.e2.mul_ref(&rhs.e13);
         let p2_0 = self.e3.mul_ref(&rhs.scalar);
         let p2_1 = self.e3.mul_ref(&rhs.e12);
-        Multivector {
-            scalar: T::zero(),
+        Odd {
             e1: p0_0,
             e2: p1_0,
             e3: p2_0,
-            e12: T::zero(),
-            e13: T::zero(),
-            e23: T::zero(),
             e123: p0_3 - &p1_2 + &p2_1,
+        }
+    }
+}
+impl<T: self::Ring> self::AnticommutatorProduct<Odd<T>> for Vector<T> {
+    type Output = Rotor<T>;
+    #[inline]
+    fn anticommutator(&self, rhs: &Odd<T>) -> Rotor<T> {
+        let p0_0 = self.e1.mul_ref(&rhs.e1);
+        let p0_3 = self.e1.mul_ref(&rhs.e123);
+        let p1_1 = self.e2.mul_ref(&rhs.e2);
+        let p1_3 = self.e2.mul_ref(&rhs.e123);
+        let p2_2 = self.e3.mul_ref(&rhs.e3);
+        let p2_3 = self.e3.mul_ref(&rhs.e123);
+        Rotor {
+            scalar: p0_0 + &p1_1 + &p2_2,
+            e12: p2_3,
+            e13: self::Ring::neg_ref(&p1_3),
+            e23: p0_3,
         }
     }
 }
@@ -4012,23 +6673,19 @@ impl<T: self::Ring> self::AnticommutatorProduct<Multivector<T>> for Vector<T> {
     }
 }
 impl<T: self::Ring> self::AnticommutatorProduct<Vector<T>> for Rotor<T> {
-    type Output = Multivector<T>;
+    type Output = Odd<T>;
     #[inline]
-    fn anticommutator(&self, rhs: &Vector<T>) -> Multivector<T> {
+    fn anticommutator(&self, rhs: &Vector<T>) -> Odd<T> {
         let p0_0 = self.scalar.mul_ref(&rhs.e1);
         let p0_1 = self.scalar.mul_ref(&rhs.e2);
         let p0_2 = self.scalar.mul_ref(&rhs.e3);
         let p1_2 = self.e12.mul_ref(&rhs.e3);
         let p2_1 = self.e13.mul_ref(&rhs.e2);
         let p3_0 = self.e23.mul_ref(&rhs.e1);
-        Multivector {
-            scalar: T::zero(),
+        Odd {
             e1: p0_0,
             e2: p0_1,
             e3: p0_2,
-            e12: T::zero(),
-            e13: T::zero(),
-            e23: T::zero(),
             e123: p1_2 - &p2_1 + &p3_0,
         }
     }
@@ -4052,6 +6709,28 @@ impl<T: self::Ring> self::AnticommutatorProduct<Rotor<T>> for Rotor<T> {
             e12: p0_1 + &p1_0,
             e13: p0_2 + &p2_0,
             e23: p0_3 + &p3_0,
+        }
+    }
+}
+impl<T: self::Ring> self::AnticommutatorProduct<Odd<T>> for Rotor<T> {
+    type Output = Odd<T>;
+    #[inline]
+    fn anticommutator(&self, rhs: &Odd<T>) -> Odd<T> {
+        let p0_0 = self.scalar.mul_ref(&rhs.e1);
+        let p0_1 = self.scalar.mul_ref(&rhs.e2);
+        let p0_2 = self.scalar.mul_ref(&rhs.e3);
+        let p0_3 = self.scalar.mul_ref(&rhs.e123);
+        let p1_2 = self.e12.mul_ref(&rhs.e3);
+        let p1_3 = self.e12.mul_ref(&rhs.e123);
+        let p2_1 = self.e13.mul_ref(&rhs.e2);
+        let p2_3 = self.e13.mul_ref(&rhs.e123);
+        let p3_0 = self.e23.mul_ref(&rhs.e1);
+        let p3_3 = self.e23.mul_ref(&rhs.e123);
+        Odd {
+            e1: p0_0 - &p3_3,
+            e2: p0_1 + &p2_3,
+            e3: p0_2 - &p1_3,
+            e123: p0_3 + &p1_2 - &p2_1 + &p3_0,
         }
     }
 }
@@ -4088,6 +6767,104 @@ impl<T: self::Ring> self::AnticommutatorProduct<Multivector<T>> for Rotor<T> {
             e13: p0_5 + &p2_0,
             e23: p0_6 + &p3_0,
             e123: p0_7 + &p1_3 - &p2_2 + &p3_1,
+        }
+    }
+}
+impl<T: self::Ring> self::AnticommutatorProduct<Vector<T>> for Odd<T> {
+    type Output = Rotor<T>;
+    #[inline]
+    fn anticommutator(&self, rhs: &Vector<T>) -> Rotor<T> {
+        let p0_0 = self.e1.mul_ref(&rhs.e1);
+        let p1_1 = self.e2.mul_ref(&rhs.e2);
+        let p2_2 = self.e3.mul_ref(&rhs.e3);
+        let p3_0 = self.e123.mul_ref(&rhs.e1);
+        let p3_1 = self.e123.mul_ref(&rhs.e2);
+        let p3_2 = self.e123.mul_ref(&rhs.e3);
+        Rotor {
+            scalar: p0_0 + &p1_1 + &p2_2,
+            e12: p3_2,
+            e13: self::Ring::neg_ref(&p3_1),
+            e23: p3_0,
+        }
+    }
+}
+impl<T: self::Ring> self::AnticommutatorProduct<Rotor<T>> for Odd<T> {
+    type Output = Odd<T>;
+    #[inline]
+    fn anticommutator(&self, rhs: &Rotor<T>) -> Odd<T> {
+        let p0_0 = self.e1.mul_ref(&rhs.scalar);
+        let p0_3 = self.e1.mul_ref(&rhs.e23);
+        let p1_0 = self.e2.mul_ref(&rhs.scalar);
+        let p1_2 = self.e2.mul_ref(&rhs.e13);
+        let p2_0 = self.e3.mul_ref(&rhs.scalar);
+        let p2_1 = self.e3.mul_ref(&rhs.e12);
+        let p3_0 = self.e123.mul_ref(&rhs.scalar);
+        let p3_1 = self.e123.mul_ref(&rhs.e12);
+        let p3_2 = self.e123.mul_ref(&rhs.e13);
+        let p3_3 = self.e123.mul_ref(&rhs.e23);
+        Odd {
+            e1: p0_0 - &p3_3,
+            e2: p1_0 + &p3_2,
+            e3: p2_0 - &p3_1,
+            e123: p0_3 - &p1_2 + &p2_1 + &p3_0,
+        }
+    }
+}
+impl<T: self::Ring> self::AnticommutatorProduct<Odd<T>> for Odd<T> {
+    type Output = Rotor<T>;
+    #[inline]
+    fn anticommutator(&self, rhs: &Odd<T>) -> Rotor<T> {
+        let p0_0 = self.e1.mul_ref(&rhs.e1);
+        let p0_3 = self.e1.mul_ref(&rhs.e123);
+        let p1_1 = self.e2.mul_ref(&rhs.e2);
+        let p1_3 = self.e2.mul_ref(&rhs.e123);
+        let p2_2 = self.e3.mul_ref(&rhs.e3);
+        let p2_3 = self.e3.mul_ref(&rhs.e123);
+        let p3_0 = self.e123.mul_ref(&rhs.e1);
+        let p3_1 = self.e123.mul_ref(&rhs.e2);
+        let p3_2 = self.e123.mul_ref(&rhs.e3);
+        let p3_3 = self.e123.mul_ref(&rhs.e123);
+        Rotor {
+            scalar: p0_0 + &p1_1 + &p2_2 - &p3_3,
+            e12: p2_3 + &p3_2,
+            e13: self::Ring::neg_ref(&p1_3) - &p3_1,
+            e23: p0_3 + &p3_0,
+        }
+    }
+}
+impl<T: self::Ring> self::AnticommutatorProduct<Multivector<T>> for Odd<T> {
+    type Output = Multivector<T>;
+    #[inline]
+    fn anticommutator(&self, rhs: &Multivector<T>) -> Multivector<T> {
+        let p0_0 = self.e1.mul_ref(&rhs.scalar);
+        let p0_1 = self.e1.mul_ref(&rhs.e1);
+        let p0_6 = self.e1.mul_ref(&rhs.e23);
+        let p0_7 = self.e1.mul_ref(&rhs.e123);
+        let p1_0 = self.e2.mul_ref(&rhs.scalar);
+        let p1_2 = self.e2.mul_ref(&rhs.e2);
+        let p1_5 = self.e2.mul_ref(&rhs.e13);
+        let p1_7 = self.e2.mul_ref(&rhs.e123);
+        let p2_0 = self.e3.mul_ref(&rhs.scalar);
+        let p2_3 = self.e3.mul_ref(&rhs.e3);
+        let p2_4 = self.e3.mul_ref(&rhs.e12);
+        let p2_7 = self.e3.mul_ref(&rhs.e123);
+        let p3_0 = self.e123.mul_ref(&rhs.scalar);
+        let p3_1 = self.e123.mul_ref(&rhs.e1);
+        let p3_2 = self.e123.mul_ref(&rhs.e2);
+        let p3_3 = self.e123.mul_ref(&rhs.e3);
+        let p3_4 = self.e123.mul_ref(&rhs.e12);
+        let p3_5 = self.e123.mul_ref(&rhs.e13);
+        let p3_6 = self.e123.mul_ref(&rhs.e23);
+        let p3_7 = self.e123.mul_ref(&rhs.e123);
+        Multivector {
+            scalar: p0_1 + &p1_2 + &p2_3 - &p3_7,
+            e1: p0_0 - &p3_6,
+            e2: p1_0 + &p3_5,
+            e3: p2_0 - &p3_4,
+            e12: p2_7 + &p3_3,
+            e13: self::Ring::neg_ref(&p1_7) - &p3_2,
+            e23: p0_7 + &p3_1,
+            e123: p0_6 - &p1_5 + &p2_4 + &p3_0,
         }
     }
 }
@@ -4155,6 +6932,42 @@ impl<T: self::Ring> self::AnticommutatorProduct<Rotor<T>> for Multivector<T> {
         }
     }
 }
+impl<T: self::Ring> self::AnticommutatorProduct<Odd<T>> for Multivector<T> {
+    type Output = Multivector<T>;
+    #[inline]
+    fn anticommutator(&self, rhs: &Odd<T>) -> Multivector<T> {
+        let p0_0 = self.scalar.mul_ref(&rhs.e1);
+        let p0_1 = self.scalar.mul_ref(&rhs.e2);
+        let p0_2 = self.scalar.mul_ref(&rhs.e3);
+        let p0_3 = self.scalar.mul_ref(&rhs.e123);
+        let p1_0 = self.e1.mul_ref(&rhs.e1);
+        let p1_3 = self.e1.mul_ref(&rhs.e123);
+        let p2_1 = self.e2.mul_ref(&rhs.e2);
+        let p2_3 = self.e2.mul_ref(&rhs.e123);
+        let p3_2 = self.e3.mul_ref(&rhs.e3);
+        let p3_3 = self.e3.mul_ref(&rhs.e123);
+        let p4_2 = self.e12.mul_ref(&rhs.e3);
+        let p4_3 = self.e12.mul_ref(&rhs.e123);
+        let p5_1 = self.e13.mul_ref(&rhs.e2);
+        let p5_3 = self.e13.mul_ref(&rhs.e123);
+        let p6_0 = self.e23.mul_ref(&rhs.e1);
+        let p6_3 = self.e23.mul_ref(&rhs.e123);
+        let p7_0 = self.e123.mul_ref(&rhs.e1);
+        let p7_1 = self.e123.mul_ref(&rhs.e2);
+        let p7_2 = self.e123.mul_ref(&rhs.e3);
+        let p7_3 = self.e123.mul_ref(&rhs.e123);
+        Multivector {
+            scalar: p1_0 + &p2_1 + &p3_2 - &p7_3,
+            e1: p0_0 - &p6_3,
+            e2: p0_1 + &p5_3,
+            e3: p0_2 - &p4_3,
+            e12: p3_3 + &p7_2,
+            e13: self::Ring::neg_ref(&p2_3) - &p7_1,
+            e23: p1_3 + &p7_0,
+            e123: p0_3 + &p4_2 - &p5_1 + &p6_0,
+        }
+    }
+}
 impl<T: self::Ring> self::AnticommutatorProduct<Multivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
@@ -4211,6 +7024,901 @@ impl<T: self::Ring> self::AnticommutatorProduct<Multivector<T>> for Multivector<
         }
     }
 }
+impl<T: self::Ring> self::GeometricProductInto<Vector<T>, Multivector<T>> for Vector<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Vector<T>) -> Multivector<T> {
+        let p0_0 = self.e1.mul_ref(&rhs.e1);
+        let p0_1 = self.e1.mul_ref(&rhs.e2);
+        let p0_2 = self.e1.mul_ref(&rhs.e3);
+        let p1_0 = self.e2.mul_ref(&rhs.e1);
+        let p1_1 = self.e2.mul_ref(&rhs.e2);
+        let p1_2 = self.e2.mul_ref(&rhs.e3);
+        let p2_0 = self.e3.mul_ref(&rhs.e1);
+        let p2_1 = self.e3.mul_ref(&rhs.e2);
+        let p2_2 = self.e3.mul_ref(&rhs.e3);
+        Multivector {
+            scalar: p0_0 + &p1_1 + &p2_2,
+            e1: T::zero(),
+            e2: T::zero(),
+            e3: T::zero(),
+            e12: p0_1 - &p1_0,
+            e13: p0_2 - &p2_0,
+            e23: p1_2 - &p2_1,
+            e123: T::zero(),
+        }
+    }
+}
+impl<T: self::Ring> self::GeometricProductInto<Rotor<T>, Vector<T>> for Vector<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Rotor<T>) -> Vector<T> {
+        let p0_0 = self.e1.mul_ref(&rhs.scalar);
+        let p0_1 = self.e1.mul_ref(&rhs.e12);
+        let p0_2 = self.e1.mul_ref(&rhs.e13);
+        let p1_0 = self.e2.mul_ref(&rhs.scalar);
+        let p1_1 = self.e2.mul_ref(&rhs.e12);
+        let p1_3 = self.e2.mul_ref(&rhs.e23);
+        let p2_0 = self.e3.mul_ref(&rhs.scalar);
+        let p2_2 = self.e3.mul_ref(&rhs.e13);
+        let p2_3 = self.e3.mul_ref(&rhs.e23);
+        Vector {
+            e1: p0_0 - &p1_1 - &p2_2,
+            e2: p0_1 + &p1_0 - &p2_3,
+            e3: p0_2 + &p1_3 + &p2_0,
+        }
+    }
+}
+impl<T: self::Ring> self::GeometricProductInto<Rotor<T>, Multivector<T>> for Vector<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Rotor<T>) -> Multivector<T> {
+        let p0_0 = self.e1.mul_ref(&rhs.scalar);
+        let p0_1 = self.e1.mul_ref(&rhs.e12);
+        let p0_2 = self.e1.mul_ref(&rhs.e13);
+        let p0_3 = self.e1.mul_ref(&rhs.e23);
+        let p1_0 = self.e2.mul_ref(&rhs.scalar);
+        let p1_1 = self.e2.mul_ref(&rhs.e12);
+        let p1_2 = self.e2.mul_ref(&rhs.e13);
+        let p1_3 = self.e2.mul_ref(&rhs.e23);
+        let p2_0 = self.e3.mul_ref(&rhs.scalar);
+        let p2_1 = self.e3.mul_ref(&rhs.e12);
+        let p2_2 = self.e3.mul_ref(&rhs.e13);
+        let p2_3 = self.e3.mul_ref(&rhs.e23);
+        Multivector {
+            scalar: T::zero(),
+            e1: p0_0 - &p1_1 - &p2_2,
+            e2: p0_1 + &p1_0 - &p2_3,
+            e3: p0_2 + &p1_3 + &p2_0,
+            e12: T::zero(),
+            e13: T::zero(),
+            e23: T::zero(),
+            e123: p0_3 - &p1_2 + &p2_1,
+        }
+    }
+}
+impl<T: self::Ring> self::GeometricProductInto<Odd<T>, Multivector<T>> for Vector<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Odd<T>) -> Multivector<T> {
+        let p0_0 = self.e1.mul_ref(&rhs.e1);
+        let p0_1 = self.e1.mul_ref(&rhs.e2);
+        let p0_2 = self.e1.mul_ref(&rhs.e3);
+        let p0_3 = self.e1.mul_ref(&rhs.e123);
+        let p1_0 = self.e2.mul_ref(&rhs.e1);
+        let p1_1 = self.e2.mul_ref(&rhs.e2);
+        let p1_2 = self.e2.mul_ref(&rhs.e3);
+        let p1_3 = self.e2.mul_ref(&rhs.e123);
+        let p2_0 = self.e3.mul_ref(&rhs.e1);
+        let p2_1 = self.e3.mul_ref(&rhs.e2);
+        let p2_2 = self.e3.mul_ref(&rhs.e3);
+        let p2_3 = self.e3.mul_ref(&rhs.e123);
+        Multivector {
+            scalar: p0_0 + &p1_1 + &p2_2,
+            e1: T::zero(),
+            e2: T::zero(),
+            e3: T::zero(),
+            e12: p0_1 - &p1_0 + &p2_3,
+            e13: p0_2 - &p1_3 - &p2_0,
+            e23: p0_3 + &p1_2 - &p2_1,
+            e123: T::zero(),
+        }
+    }
+}
+impl<T: self::Ring> self::GeometricProductInto<Multivector<T>, Vector<T>> for Vector<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Multivector<T>) -> Vector<T> {
+        let p0_0 = self.e1.mul_ref(&rhs.scalar);
+        let p0_4 = self.e1.mul_ref(&rhs.e12);
+        let p0_5 = self.e1.mul_ref(&rhs.e13);
+        let p1_0 = self.e2.mul_ref(&rhs.scalar);
+        let p1_4 = self.e2.mul_ref(&rhs.e12);
+        let p1_6 = self.e2.mul_ref(&rhs.e23);
+        let p2_0 = self.e3.mul_ref(&rhs.scalar);
+        let p2_5 = self.e3.mul_ref(&rhs.e13);
+        let p2_6 = self.e3.mul_ref(&rhs.e23);
+        Vector {
+            e1: p0_0 - &p1_4 - &p2_5,
+            e2: p0_4 + &p1_0 - &p2_6,
+            e3: p0_5 + &p1_6 + &p2_0,
+        }
+    }
+}
+impl<T: self::Ring> self::GeometricProductInto<Multivector<T>, Rotor<T>> for Vector<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Multivector<T>) -> Rotor<T> {
+        let p0_1 = self.e1.mul_ref(&rhs.e1);
+        let p0_2 = self.e1.mul_ref(&rhs.e2);
+        let p0_3 = self.e1.mul_ref(&rhs.e3);
+        let p0_7 = self.e1.mul_ref(&rhs.e123);
+        let p1_1 = self.e2.mul_ref(&rhs.e1);
+        let p1_2 = self.e2.mul_ref(&rhs.e2);
+        let p1_3 = self.e2.mul_ref(&rhs.e3);
+        let p1_7 = self.e2.mul_ref(&rhs.e123);
+        let p2_1 = self.e3.mul_ref(&rhs.e1);
+        let p2_2 = self.e3.mul_ref(&rhs.e2);
+        let p2_3 = self.e3.mul_ref(&rhs.e3);
+        let p2_7 = self.e3.mul_ref(&rhs.e123);
+        Rotor {
+            scalar: p0_1 + &p1_2 + &p2_3,
+            e12: p0_2 - &p1_1 + &p2_7,
+            e13: p0_3 - &p1_7 - &p2_1,
+            e23: p0_7 + &p1_3 - &p2_2,
+        }
+    }
+}
+impl<T: self::Ring> self::GeometricProductInto<Multivector<T>, Odd<T>> for Vector<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Multivector<T>) -> Odd<T> {
+        let p0_0 = self.e1.mul_ref(&rhs.scalar);
+        let p0_4 = self.e1.mul_ref(&rhs.e12);
+        let p0_5 = self.e1.mul_ref(&rhs.e13);
+        let p0_6 = self.e1.mul_ref(&rhs.e23);
+        let p1_0 = self.e2.mul_ref(&rhs.scalar);
+        let p1_4 = self.e2.mul_ref(&rhs.e12);
+        let p1_5 = self.e2.mul_ref(&rhs.e13);
+        let p1_6 = self.e2.mul_ref(&rhs.e23);
+        let p2_0 = self.e3.mul_ref(&rhs.scalar);
+        let p2_4 = self.e3.mul_ref(&rhs.e12);
+        let p2_5 = self.e3.mul_ref(&rhs.e13);
+        let p2_6 = self.e3.mul_ref(&rhs.e23);
+        Odd {
+            e1: p0_0 - &p1_4 - &p2_5,
+            e2: p0_4 + &p1_0 - &p2_6,
+            e3: p0_5 + &p1_6 + &p2_0,
+            e123: p0_6 - &p1_5 + &p2_4,
+        }
+    }
+}
+impl<T: self::Ring> self::GeometricProductInto<Vector<T>, Vector<T>> for Rotor<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Vector<T>) -> Vector<T> {
+        let p0_0 = self.scalar.mul_ref(&rhs.e1);
+        let p0_1 = self.scalar.mul_ref(&rhs.e2);
+        let p0_2 = self.scalar.mul_ref(&rhs.e3);
+        let p1_0 = self.e12.mul_ref(&rhs.e1);
+        let p1_1 = self.e12.mul_ref(&rhs.e2);
+        let p2_0 = self.e13.mul_ref(&rhs.e1);
+        let p2_2 = self.e13.mul_ref(&rhs.e3);
+        let p3_1 = self.e23.mul_ref(&rhs.e2);
+        let p3_2 = self.e23.mul_ref(&rhs.e3);
+        Vector {
+            e1: p0_0 + &p1_1 + &p2_2,
+            e2: p0_1 - &p1_0 + &p3_2,
+            e3: p0_2 - &p2_0 - &p3_1,
+        }
+    }
+}
+impl<T: self::Ring> self::GeometricProductInto<Vector<T>, Multivector<T>> for Rotor<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Vector<T>) -> Multivector<T> {
+        let p0_0 = self.scalar.mul_ref(&rhs.e1);
+        let p0_1 = self.scalar.mul_ref(&rhs.e2);
+        let p0_2 = self.scalar.mul_ref(&rhs.e3);
+        let p1_0 = self.e12.mul_ref(&rhs.e1);
+        let p1_1 = self.e12.mul_ref(&rhs.e2);
+        let p1_2 = self.e12.mul_ref(&rhs.e3);
+        let p2_0 = self.e13.mul_ref(&rhs.e1);
+        let p2_1 = self.e13.mul_ref(&rhs.e2);
+        let p2_2 = self.e13.mul_ref(&rhs.e3);
+        let p3_0 = self.e23.mul_ref(&rhs.e1);
+        let p3_1 = self.e23.mul_ref(&rhs.e2);
+        let p3_2 = self.e23.mul_ref(&rhs.e3);
+        Multivector {
+            scalar: T::zero(),
+            e1: p0_0 + &p1_1 + &p2_2,
+            e2: p0_1 - &p1_0 + &p3_2,
+            e3: p0_2 - &p2_0 - &p3_1,
+            e12: T::zero(),
+            e13: T::zero(),
+            e23: T::zero(),
+            e123: p1_2 - &p2_1 + &p3_0,
+        }
+    }
+}
+impl<T: self::Ring> self::GeometricProductInto<Rotor<T>, Multivector<T>> for Rotor<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Rotor<T>) -> Multivector<T> {
+        let p0_0 = self.scalar.mul_ref(&rhs.scalar);
+        let p0_1 = self.scalar.mul_ref(&rhs.e12);
+        let p0_2 = self.scalar.mul_ref(&rhs.e13);
+        let p0_3 = self.scalar.mul_ref(&rhs.e23);
+        let p1_0 = self.e12.mul_ref(&rhs.scalar);
+        let p1_1 = self.e12.mul_ref(&rhs.e12);
+        let p1_2 = self.e12.mul_ref(&rhs.e13);
+        let p1_3 = self.e12.mul_ref(&rhs.e23);
+        let p2_0 = self.e13.mul_ref(&rhs.scalar);
+        let p2_1 = self.e13.mul_ref(&rhs.e12);
+        let p2_2 = self.e13.mul_ref(&rhs.e13);
+        let p2_3 = self.e13.mul_ref(&rhs.e23);
+        let p3_0 = self.e23.mul_ref(&rhs.scalar);
+        let p3_1 = self.e23.mul_ref(&rhs.e12);
+        let p3_2 = self.e23.mul_ref(&rhs.e13);
+        let p3_3 = self.e23.mul_ref(&rhs.e23);
+        Multivector {
+            scalar: p0_0 - &p1_1 - &p2_2 - &p3_3,
+            e1: T::zero(),
+            e2: T::zero(),
+            e3: T::zero(),
+            e12: p0_1 + &p1_0 - &p2_3 + &p3_2,
+            e13: p0_2 + &p1_3 + &p2_0 - &p3_1,
+            e23: p0_3 - &p1_2 + &p2_1 + &p3_0,
+            e123: T::zero(),
+        }
+    }
+}
+impl<T: self::Ring> self::GeometricProductInto<Odd<T>, Vector<T>> for Rotor<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Odd<T>) -> Vector<T> {
+        let p0_0 = self.scalar.mul_ref(&rhs.e1);
+        let p0_1 = self.scalar.mul_ref(&rhs.e2);
+        let p0_2 = self.scalar.mul_ref(&rhs.e3);
+        let p1_0 = self.e12.mul_ref(&rhs.e1);
+        let p1_1 = self.e12.mul_ref(&rhs.e2);
+        let p1_3 = self.e12.mul_ref(&rhs.e123);
+        let p2_0 = self.e13.mul_ref(&rhs.e1);
+        let p2_2 = self.e13.mul_ref(&rhs.e3);
+        let p2_3 = self.e13.mul_ref(&rhs.e123);
+        let p3_1 = self.e23.mul_ref(&rhs.e2);
+        let p3_2 = self.e23.mul_ref(&rhs.e3);
+        let p3_3 = self.e23.mul_ref(&rhs.e123);
+        Vector {
+            e1: p0_0 + &p1_1 + &p2_2 - &p3_3,
+            e2: p0_1 - &p1_0 + &p2_3 + &p3_2,
+            e3: p0_2 - &p1_3 - &p2_0 - &p3_1,
+        }
+    }
+}
+impl<T: self::Ring> self::GeometricProductInto<Odd<T>, Multivector<T>> for Rotor<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Odd<T>) -> Multivector<T> {
+        let p0_0 = self.scalar.mul_ref(&rhs.e1);
+        let p0_1 = self.scalar.mul_ref(&rhs.e2);
+        let p0_2 = self.scalar.mul_ref(&rhs.e3);
+        let p0_3 = self.scalar.mul_ref(&rhs.e123);
+        let p1_0 = self.e12.mul_ref(&rhs.e1);
+        let p1_1 = self.e12.mul_ref(&rhs.e2);
+        let p1_2 = self.e12.mul_ref(&rhs.e3);
+        let p1_3 = self.e12.mul_ref(&rhs.e123);
+        let p2_0 = self.e13.mul_ref(&rhs.e1);
+        let p2_1 = self.e13.mul_ref(&rhs.e2);
+        let p2_2 = self.e13.mul_ref(&rhs.e3);
+        let p2_3 = self.e13.mul_ref(&rhs.e123);
+        let p3_0 = self.e23.mul_ref(&rhs.e1);
+        let p3_1 = self.e23.mul_ref(&rhs.e2);
+        let p3_2 = self.e23.mul_ref(&rhs.e3);
+        let p3_3 = self.e23.mul_ref(&rhs.e123);
+        Multivector {
+            scalar: T::zero(),
+            e1: p0_0 + &p1_1 + &p2_2 - &p3_3,
+            e2: p0_1 - &p1_0 + &p2_3 + &p3_2,
+            e3: p0_2 - &p1_3 - &p2_0 - &p3_1,
+            e12: T::zero(),
+            e13: T::zero(),
+            e23: T::zero(),
+            e123: p0_3 + &p1_2 - &p2_1 + &p3_0,
+        }
+    }
+}
+impl<T: self::Ring> self::GeometricProductInto<Multivector<T>, Vector<T>> for Rotor<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Multivector<T>) -> Vector<T> {
+        let p0_1 = self.scalar.mul_ref(&rhs.e1);
+        let p0_2 = self.scalar.mul_ref(&rhs.e2);
+        let p0_3 = self.scalar.mul_ref(&rhs.e3);
+        let p1_1 = self.e12.mul_ref(&rhs.e1);
+        let p1_2 = self.e12.mul_ref(&rhs.e2);
+        let p1_7 = self.e12.mul_ref(&rhs.e123);
+        let p2_1 = self.e13.mul_ref(&rhs.e1);
+        let p2_3 = self.e13.mul_ref(&rhs.e3);
+        let p2_7 = self.e13.mul_ref(&rhs.e123);
+        let p3_2 = self.e23.mul_ref(&rhs.e2);
+        let p3_3 = self.e23.mul_ref(&rhs.e3);
+        let p3_7 = self.e23.mul_ref(&rhs.e123);
+        Vector {
+            e1: p0_1 + &p1_2 + &p2_3 - &p3_7,
+            e2: p0_2 - &p1_1 + &p2_7 + &p3_3,
+            e3: p0_3 - &p1_7 - &p2_1 - &p3_2,
+        }
+    }
+}
+impl<T: self::Ring> self::GeometricProductInto<Multivector<T>, Rotor<T>> for Rotor<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Multivector<T>) -> Rotor<T> {
+        let p0_0 = self.scalar.mul_ref(&rhs.scalar);
+        let p0_4 = self.scalar.mul_ref(&rhs.e12);
+        let p0_5 = self.scalar.mul_ref(&rhs.e13);
+        let p0_6 = self.scalar.mul_ref(&rhs.e23);
+        let p1_0 = self.e12.mul_ref(&rhs.scalar);
+        let p1_4 = self.e12.mul_ref(&rhs.e12);
+        let p1_5 = self.e12.mul_ref(&rhs.e13);
+        let p1_6 = self.e12.mul_ref(&rhs.e23);
+        let p2_0 = self.e13.mul_ref(&rhs.scalar);
+        let p2_4 = self.e13.mul_ref(&rhs.e12);
+        let p2_5 = self.e13.mul_ref(&rhs.e13);
+        let p2_6 = self.e13.mul_ref(&rhs.e23);
+        let p3_0 = self.e23.mul_ref(&rhs.scalar);
+        let p3_4 = self.e23.mul_ref(&rhs.e12);
+        let p3_5 = self.e23.mul_ref(&rhs.e13);
+        let p3_6 = self.e23.mul_ref(&rhs.e23);
+        Rotor {
+            scalar: p0_0 - &p1_4 - &p2_5 - &p3_6,
+            e12: p0_4 + &p1_0 - &p2_6 + &p3_5,
+            e13: p0_5 + &p1_6 + &p2_0 - &p3_4,
+            e23: p0_6 - &p1_5 + &p2_4 + &p3_0,
+        }
+    }
+}
+impl<T: self::Ring> self::GeometricProductInto<Multivector<T>, Odd<T>> for Rotor<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Multivector<T>) -> Odd<T> {
+        let p0_1 = self.scalar.mul_ref(&rhs.e1);
+        let p0_2 = self.scalar.mul_ref(&rhs.e2);
+        let p0_3 = self.scalar.mul_ref(&rhs.e3);
+        let p0_7 = self.scalar.mul_ref(&rhs.e123);
+        let p1_1 = self.e12.mul_ref(&rhs.e1);
+        let p1_2 = self.e12.mul_ref(&rhs.e2);
+        let p1_3 = self.e12.mul_ref(&rhs.e3);
+        let p1_7 = self.e12.mul_ref(&rhs.e123);
+        let p2_1 = self.e13.mul_ref(&rhs.e1);
+        let p2_2 = self.e13.mul_ref(&rhs.e2);
+        let p2_3 = self.e13.mul_ref(&rhs.e3);
+        let p2_7 = self.e13.mul_ref(&rhs.e123);
+        let p3_1 = self.e23.mul_ref(&rhs.e1);
+        let p3_2 = self.e23.mul_ref(&rhs.e2);
+        let p3_3 = self.e23.mul_ref(&rhs.e3);
+        let p3_7 = self.e23.mul_ref(&rhs.e123);
+        Odd {
+            e1: p0_1 + &p1_2 + &p2_3 - &p3_7,
+            e2: p0_2 - &p1_1 + &p2_7 + &p3_3,
+            e3: p0_3 - &p1_7 - &p2_1 - &p3_2,
+            e123: p0_7 + &p1_3 - &p2_2 + &p3_1,
+        }
+    }
+}
+impl<T: self::Ring> self::GeometricProductInto<Vector<T>, Multivector<T>> for Odd<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Vector<T>) -> Multivector<T> {
+        let p0_0 = self.e1.mul_ref(&rhs.e1);
+        let p0_1 = self.e1.mul_ref(&rhs.e2);
+        let p0_2 = self.e1.mul_ref(&rhs.e3);
+        let p1_0 = self.e2.mul_ref(&rhs.e1);
+        let p1_1 = self.e2.mul_ref(&rhs.e2);
+        let p1_2 = self.e2.mul_ref(&rhs.e3);
+        let p2_0 = self.e3.mul_ref(&rhs.e1);
+        let p2_1 = self.e3.mul_ref(&rhs.e2);
+        let p2_2 = self.e3.mul_ref(&rhs.e3);
+        let p3_0 = self.e123.mul_ref(&rhs.e1);
+        let p3_1 = self.e123.mul_ref(&rhs.e2);
+        let p3_2 = self.e123.mul_ref(&rhs.e3);
+        Multivector {
+            scalar: p0_0 + &p1_1 + &p2_2,
+            e1: T::zero(),
+            e2: T::zero(),
+            e3: T::zero(),
+            e12: p0_1 - &p1_0 + &p3_2,
+            e13: p0_2 - &p2_0 - &p3_1,
+            e23: p1_2 - &p2_1 + &p3_0,
+            e123: T::zero(),
+        }
+    }
+}
+impl<T: self::Ring> self::GeometricProductInto<Rotor<T>, Vector<T>> for Odd<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Rotor<T>) -> Vector<T> {
+        let p0_0 = self.e1.mul_ref(&rhs.scalar);
+        let p0_1 = self.e1.mul_ref(&rhs.e12);
+        let p0_2 = self.e1.mul_ref(&rhs.e13);
+        let p1_0 = self.e2.mul_ref(&rhs.scalar);
+        let p1_1 = self.e2.mul_ref(&rhs.e12);
+        let p1_3 = self.e2.mul_ref(&rhs.e23);
+        let p2_0 = self.e3.mul_ref(&rhs.scalar);
+        let p2_2 = self.e3.mul_ref(&rhs.e13);
+        let p2_3 = self.e3.mul_ref(&rhs.e23);
+        let p3_1 = self.e123.mul_ref(&rhs.e12);
+        let p3_2 = self.e123.mul_ref(&rhs.e13);
+        let p3_3 = self.e123.mul_ref(&rhs.e23);
+        Vector {
+            e1: p0_0 - &p1_1 - &p2_2 - &p3_3,
+            e2: p0_1 + &p1_0 - &p2_3 + &p3_2,
+            e3: p0_2 + &p1_3 + &p2_0 - &p3_1,
+        }
+    }
+}
+impl<T: self::Ring> self::GeometricProductInto<Rotor<T>, Multivector<T>> for Odd<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Rotor<T>) -> Multivector<T> {
+        let p0_0 = self.e1.mul_ref(&rhs.scalar);
+        let p0_1 = self.e1.mul_ref(&rhs.e12);
+        let p0_2 = self.e1.mul_ref(&rhs.e13);
+        let p0_3 = self.e1.mul_ref(&rhs.e23);
+        let p1_0 = self.e2.mul_ref(&rhs.scalar);
+        let p1_1 = self.e2.mul_ref(&rhs.e12);
+        let p1_2 = self.e2.mul_ref(&rhs.e13);
+        let p1_3 = self.e2.mul_ref(&rhs.e23);
+        let p2_0 = self.e3.mul_ref(&rhs.scalar);
+        let p2_1 = self.e3.mul_ref(&rhs.e12);
+        let p2_2 = self.e3.mul_ref(&rhs.e13);
+        let p2_3 = self.e3.mul_ref(&rhs.e23);
+        let p3_0 = self.e123.mul_ref(&rhs.scalar);
+        let p3_1 = self.e123.mul_ref(&rhs.e12);
+        let p3_2 = self.e123.mul_ref(&rhs.e13);
+        let p3_3 = self.e123.mul_ref(&rhs.e23);
+        Multivector {
+            scalar: T::zero(),
+            e1: p0_0 - &p1_1 - &p2_2 - &p3_3,
+            e2: p0_1 + &p1_0 - &p2_3 + &p3_2,
+            e3: p0_2 + &p1_3 + &p2_0 - &p3_1,
+            e12: T::zero(),
+            e13: T::zero(),
+            e23: T::zero(),
+            e123: p0_3 - &p1_2 + &p2_1 + &p3_0,
+        }
+    }
+}
+impl<T: self::Ring> self::GeometricProductInto<Odd<T>, Multivector<T>> for Odd<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Odd<T>) -> Multivector<T> {
+        let p0_0 = self.e1.mul_ref(&rhs.e1);
+        let p0_1 = self.e1.mul_ref(&rhs.e2);
+        let p0_2 = self.e1.mul_ref(&rhs.e3);
+        let p0_3 = self.e1.mul_ref(&rhs.e123);
+        let p1_0 = self.e2.mul_ref(&rhs.e1);
+        let p1_1 = self.e2.mul_ref(&rhs.e2);
+        let p1_2 = self.e2.mul_ref(&rhs.e3);
+        let p1_3 = self.e2.mul_ref(&rhs.e123);
+        let p2_0 = self.e3.mul_ref(&rhs.e1);
+        let p2_1 = self.e3.mul_ref(&rhs.e2);
+        let p2_2 = self.e3.mul_ref(&rhs.e3);
+        let p2_3 = self.e3.mul_ref(&rhs.e123);
+        let p3_0 = self.e123.mul_ref(&rhs.e1);
+        let p3_1 = self.e123.mul_ref(&rhs.e2);
+        let p3_2 = self.e123.mul_ref(&rhs.e3);
+        let p3_3 = self.e123.mul_ref(&rhs.e123);
+        Multivector {
+            scalar: p0_0 + &p1_1 + &p2_2 - &p3_3,
+            e1: T::zero(),
+            e2: T::zero(),
+            e3: T::zero(),
+            e12: p0_1 - &p1_0 + &p2_3 + &p3_2,
+            e13: p0_2 - &p1_3 - &p2_0 - &p3_1,
+            e23: p0_3 + &p1_2 - &p2_1 + &p3_0,
+            e123: T::zero(),
+        }
+    }
+}
+impl<T: self::Ring> self::GeometricProductInto<Multivector<T>, Vector<T>> for Odd<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Multivector<T>) -> Vector<T> {
+        let p0_0 = self.e1.mul_ref(&rhs.scalar);
+        let p0_4 = self.e1.mul_ref(&rhs.e12);
+        let p0_5 = self.e1.mul_ref(&rhs.e13);
+        let p1_0 = self.e2.mul_ref(&rhs.scalar);
+        let p1_4 = self.e2.mul_ref(&rhs.e12);
+        let p1_6 = self.e2.mul_ref(&rhs.e23);
+        let p2_0 = self.e3.mul_ref(&rhs.scalar);
+        let p2_5 = self.e3.mul_ref(&rhs.e13);
+        let p2_6 = self.e3.mul_ref(&rhs.e23);
+        let p3_4 = self.e123.mul_ref(&rhs.e12);
+        let p3_5 = self.e123.mul_ref(&rhs.e13);
+        let p3_6 = self.e123.mul_ref(&rhs.e23);
+        Vector {
+            e1: p0_0 - &p1_4 - &p2_5 - &p3_6,
+            e2: p0_4 + &p1_0 - &p2_6 + &p3_5,
+            e3: p0_5 + &p1_6 + &p2_0 - &p3_4,
+        }
+    }
+}
+impl<T: self::Ring> self::GeometricProductInto<Multivector<T>, Rotor<T>> for Odd<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Multivector<T>) -> Rotor<T> {
+        let p0_1 = self.e1.mul_ref(&rhs.e1);
+        let p0_2 = self.e1.mul_ref(&rhs.e2);
+        let p0_3 = self.e1.mul_ref(&rhs.e3);
+        let p0_7 = self.e1.mul_ref(&rhs.e123);
+        let p1_1 = self.e2.mul_ref(&rhs.e1);
+        let p1_2 = self.e2.mul_ref(&rhs.e2);
+        let p1_3 = self.e2.mul_ref(&rhs.e3);
+        let p1_7 = self.e2.mul_ref(&rhs.e123);
+        let p2_1 = self.e3.mul_ref(&rhs.e1);
+        let p2_2 = self.e3.mul_ref(&rhs.e2);
+        let p2_3 = self.e3.mul_ref(&rhs.e3);
+        let p2_7 = self.e3.mul_ref(&rhs.e123);
+        let p3_1 = self.e123.mul_ref(&rhs.e1);
+        let p3_2 = self.e123.mul_ref(&rhs.e2);
+        let p3_3 = self.e123.mul_ref(&rhs.e3);
+        let p3_7 = self.e123.mul_ref(&rhs.e123);
+        Rotor {
+            scalar: p0_1 + &p1_2 + &p2_3 - &p3_7,
+            e12: p0_2 - &p1_1 + &p2_7 + &p3_3,
+            e13: p0_3 - &p1_7 - &p2_1 - &p3_2,
+            e23: p0_7 + &p1_3 - &p2_2 + &p3_1,
+        }
+    }
+}
+impl<T: self::Ring> self::GeometricProductInto<Multivector<T>, Odd<T>> for Odd<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Multivector<T>) -> Odd<T> {
+        let p0_0 = self.e1.mul_ref(&rhs.scalar);
+        let p0_4 = self.e1.mul_ref(&rhs.e12);
+        let p0_5 = self.e1.mul_ref(&rhs.e13);
+        let p0_6 = self.e1.mul_ref(&rhs.e23);
+        let p1_0 = self.e2.mul_ref(&rhs.scalar);
+        let p1_4 = self.e2.mul_ref(&rhs.e12);
+        let p1_5 = self.e2.mul_ref(&rhs.e13);
+        let p1_6 = self.e2.mul_ref(&rhs.e23);
+        let p2_0 = self.e3.mul_ref(&rhs.scalar);
+        let p2_4 = self.e3.mul_ref(&rhs.e12);
+        let p2_5 = self.e3.mul_ref(&rhs.e13);
+        let p2_6 = self.e3.mul_ref(&rhs.e23);
+        let p3_0 = self.e123.mul_ref(&rhs.scalar);
+        let p3_4 = self.e123.mul_ref(&rhs.e12);
+        let p3_5 = self.e123.mul_ref(&rhs.e13);
+        let p3_6 = self.e123.mul_ref(&rhs.e23);
+        Odd {
+            e1: p0_0 - &p1_4 - &p2_5 - &p3_6,
+            e2: p0_4 + &p1_0 - &p2_6 + &p3_5,
+            e3: p0_5 + &p1_6 + &p2_0 - &p3_4,
+            e123: p0_6 - &p1_5 + &p2_4 + &p3_0,
+        }
+    }
+}
+impl<T: self::Ring> self::GeometricProductInto<Vector<T>, Vector<T>> for Multivector<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Vector<T>) -> Vector<T> {
+        let p0_0 = self.scalar.mul_ref(&rhs.e1);
+        let p0_1 = self.scalar.mul_ref(&rhs.e2);
+        let p0_2 = self.scalar.mul_ref(&rhs.e3);
+        let p4_0 = self.e12.mul_ref(&rhs.e1);
+        let p4_1 = self.e12.mul_ref(&rhs.e2);
+        let p5_0 = self.e13.mul_ref(&rhs.e1);
+        let p5_2 = self.e13.mul_ref(&rhs.e3);
+        let p6_1 = self.e23.mul_ref(&rhs.e2);
+        let p6_2 = self.e23.mul_ref(&rhs.e3);
+        Vector {
+            e1: p0_0 + &p4_1 + &p5_2,
+            e2: p0_1 - &p4_0 + &p6_2,
+            e3: p0_2 - &p5_0 - &p6_1,
+        }
+    }
+}
+impl<T: self::Ring> self::GeometricProductInto<Vector<T>, Rotor<T>> for Multivector<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Vector<T>) -> Rotor<T> {
+        let p1_0 = self.e1.mul_ref(&rhs.e1);
+        let p1_1 = self.e1.mul_ref(&rhs.e2);
+        let p1_2 = self.e1.mul_ref(&rhs.e3);
+        let p2_0 = self.e2.mul_ref(&rhs.e1);
+        let p2_1 = self.e2.mul_ref(&rhs.e2);
+        let p2_2 = self.e2.mul_ref(&rhs.e3);
+        let p3_0 = self.e3.mul_ref(&rhs.e1);
+        let p3_1 = self.e3.mul_ref(&rhs.e2);
+        let p3_2 = self.e3.mul_ref(&rhs.e3);
+        let p7_0 = self.e123.mul_ref(&rhs.e1);
+        let p7_1 = self.e123.mul_ref(&rhs.e2);
+        let p7_2 = self.e123.mul_ref(&rhs.e3);
+        Rotor {
+            scalar: p1_0 + &p2_1 + &p3_2,
+            e12: p1_1 - &p2_0 + &p7_2,
+            e13: p1_2 - &p3_0 - &p7_1,
+            e23: p2_2 - &p3_1 + &p7_0,
+        }
+    }
+}
+impl<T: self::Ring> self::GeometricProductInto<Vector<T>, Odd<T>> for Multivector<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Vector<T>) -> Odd<T> {
+        let p0_0 = self.scalar.mul_ref(&rhs.e1);
+        let p0_1 = self.scalar.mul_ref(&rhs.e2);
+        let p0_2 = self.scalar.mul_ref(&rhs.e3);
+        let p4_0 = self.e12.mul_ref(&rhs.e1);
+        let p4_1 = self.e12.mul_ref(&rhs.e2);
+        let p4_2 = self.e12.mul_ref(&rhs.e3);
+        let p5_0 = self.e13.mul_ref(&rhs.e1);
+        let p5_1 = self.e13.mul_ref(&rhs.e2);
+        let p5_2 = self.e13.mul_ref(&rhs.e3);
+        let p6_0 = self.e23.mul_ref(&rhs.e1);
+        let p6_1 = self.e23.mul_ref(&rhs.e2);
+        let p6_2 = self.e23.mul_ref(&rhs.e3);
+        Odd {
+            e1: p0_0 + &p4_1 + &p5_2,
+            e2: p0_1 - &p4_0 + &p6_2,
+            e3: p0_2 - &p5_0 - &p6_1,
+            e123: p4_2 - &p5_1 + &p6_0,
+        }
+    }
+}
+impl<T: self::Ring> self::GeometricProductInto<Rotor<T>, Vector<T>> for Multivector<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Rotor<T>) -> Vector<T> {
+        let p1_0 = self.e1.mul_ref(&rhs.scalar);
+        let p1_1 = self.e1.mul_ref(&rhs.e12);
+        let p1_2 = self.e1.mul_ref(&rhs.e13);
+        let p2_0 = self.e2.mul_ref(&rhs.scalar);
+        let p2_1 = self.e2.mul_ref(&rhs.e12);
+        let p2_3 = self.e2.mul_ref(&rhs.e23);
+        let p3_0 = self.e3.mul_ref(&rhs.scalar);
+        let p3_2 = self.e3.mul_ref(&rhs.e13);
+        let p3_3 = self.e3.mul_ref(&rhs.e23);
+        let p7_1 = self.e123.mul_ref(&rhs.e12);
+        let p7_2 = self.e123.mul_ref(&rhs.e13);
+        let p7_3 = self.e123.mul_ref(&rhs.e23);
+        Vector {
+            e1: p1_0 - &p2_1 - &p3_2 - &p7_3,
+            e2: p1_1 + &p2_0 - &p3_3 + &p7_2,
+            e3: p1_2 + &p2_3 + &p3_0 - &p7_1,
+        }
+    }
+}
+impl<T: self::Ring> self::GeometricProductInto<Rotor<T>, Rotor<T>> for Multivector<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Rotor<T>) -> Rotor<T> {
+        let p0_0 = self.scalar.mul_ref(&rhs.scalar);
+        let p0_1 = self.scalar.mul_ref(&rhs.e12);
+        let p0_2 = self.scalar.mul_ref(&rhs.e13);
+        let p0_3 = self.scalar.mul_ref(&rhs.e23);
+        let p4_0 = self.e12.mul_ref(&rhs.scalar);
+        let p4_1 = self.e12.mul_ref(&rhs.e12);
+        let p4_2 = self.e12.mul_ref(&rhs.e13);
+        let p4_3 = self.e12.mul_ref(&rhs.e23);
+        let p5_0 = self.e13.mul_ref(&rhs.scalar);
+        let p5_1 = self.e13.mul_ref(&rhs.e12);
+        let p5_2 = self.e13.mul_ref(&rhs.e13);
+        let p5_3 = self.e13.mul_ref(&rhs.e23);
+        let p6_0 = self.e23.mul_ref(&rhs.scalar);
+        let p6_1 = self.e23.mul_ref(&rhs.e12);
+        let p6_2 = self.e23.mul_ref(&rhs.e13);
+        let p6_3 = self.e23.mul_ref(&rhs.e23);
+        Rotor {
+            scalar: p0_0 - &p4_1 - &p5_2 - &p6_3,
+            e12: p0_1 + &p4_0 - &p5_3 + &p6_2,
+            e13: p0_2 + &p4_3 + &p5_0 - &p6_1,
+            e23: p0_3 - &p4_2 + &p5_1 + &p6_0,
+        }
+    }
+}
+impl<T: self::Ring> self::GeometricProductInto<Rotor<T>, Odd<T>> for Multivector<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Rotor<T>) -> Odd<T> {
+        let p1_0 = self.e1.mul_ref(&rhs.scalar);
+        let p1_1 = self.e1.mul_ref(&rhs.e12);
+        let p1_2 = self.e1.mul_ref(&rhs.e13);
+        let p1_3 = self.e1.mul_ref(&rhs.e23);
+        let p2_0 = self.e2.mul_ref(&rhs.scalar);
+        let p2_1 = self.e2.mul_ref(&rhs.e12);
+        let p2_2 = self.e2.mul_ref(&rhs.e13);
+        let p2_3 = self.e2.mul_ref(&rhs.e23);
+        let p3_0 = self.e3.mul_ref(&rhs.scalar);
+        let p3_1 = self.e3.mul_ref(&rhs.e12);
+        let p3_2 = self.e3.mul_ref(&rhs.e13);
+        let p3_3 = self.e3.mul_ref(&rhs.e23);
+        let p7_0 = self.e123.mul_ref(&rhs.scalar);
+        let p7_1 = self.e123.mul_ref(&rhs.e12);
+        let p7_2 = self.e123.mul_ref(&rhs.e13);
+        let p7_3 = self.e123.mul_ref(&rhs.e23);
+        Odd {
+            e1: p1_0 - &p2_1 - &p3_2 - &p7_3,
+            e2: p1_1 + &p2_0 - &p3_3 + &p7_2,
+            e3: p1_2 + &p2_3 + &p3_0 - &p7_1,
+            e123: p1_3 - &p2_2 + &p3_1 + &p7_0,
+        }
+    }
+}
+impl<T: self::Ring> self::GeometricProductInto<Odd<T>, Vector<T>> for Multivector<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Odd<T>) -> Vector<T> {
+        let p0_0 = self.scalar.mul_ref(&rhs.e1);
+        let p0_1 = self.scalar.mul_ref(&rhs.e2);
+        let p0_2 = self.scalar.mul_ref(&rhs.e3);
+        let p4_0 = self.e12.mul_ref(&rhs.e1);
+        let p4_1 = self.e12.mul_ref(&rhs.e2);
+        let p4_3 = self.e12.mul_ref(&rhs.e123);
+        let p5_0 = self.e13.mul_ref(&rhs.e1);
+        let p5_2 = self.e13.mul_ref(&rhs.e3);
+        let p5_3 = self.e13.mul_ref(&rhs.e123);
+        let p6_1 = self.e23.mul_ref(&rhs.e2);
+        let p6_2 = self.e23.mul_ref(&rhs.e3);
+        let p6_3 = self.e23.mul_ref(&rhs.e123);
+        Vector {
+            e1: p0_0 + &p4_1 + &p5_2 - &p6_3,
+            e2: p0_1 - &p4_0 + &p5_3 + &p6_2,
+            e3: p0_2 - &p4_3 - &p5_0 - &p6_1,
+        }
+    }
+}
+impl<T: self::Ring> self::GeometricProductInto<Odd<T>, Rotor<T>> for Multivector<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Odd<T>) -> Rotor<T> {
+        let p1_0 = self.e1.mul_ref(&rhs.e1);
+        let p1_1 = self.e1.mul_ref(&rhs.e2);
+        let p1_2 = self.e1.mul_ref(&rhs.e3);
+        let p1_3 = self.e1.mul_ref(&rhs.e123);
+        let p2_0 = self.e2.mul_ref(&rhs.e1);
+        let p2_1 = self.e2.mul_ref(&rhs.e2);
+        let p2_2 = self.e2.mul_ref(&rhs.e3);
+        let p2_3 = self.e2.mul_ref(&rhs.e123);
+        let p3_0 = self.e3.mul_ref(&rhs.e1);
+        let p3_1 = self.e3.mul_ref(&rhs.e2);
+        let p3_2 = self.e3.mul_ref(&rhs.e3);
+        let p3_3 = self.e3.mul_ref(&rhs.e123);
+        let p7_0 = self.e123.mul_ref(&rhs.e1);
+        let p7_1 = self.e123.mul_ref(&rhs.e2);
+        let p7_2 = self.e123.mul_ref(&rhs.e3);
+        let p7_3 = self.e123.mul_ref(&rhs.e123);
+        Rotor {
+            scalar: p1_0 + &p2_1 + &p3_2 - &p7_3,
+            e12: p1_1 - &p2_0 + &p3_3 + &p7_2,
+            e13: p1_2 - &p2_3 - &p3_0 - &p7_1,
+            e23: p1_3 + &p2_2 - &p3_1 + &p7_0,
+        }
+    }
+}
+impl<T: self::Ring> self::GeometricProductInto<Odd<T>, Odd<T>> for Multivector<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Odd<T>) -> Odd<T> {
+        let p0_0 = self.scalar.mul_ref(&rhs.e1);
+        let p0_1 = self.scalar.mul_ref(&rhs.e2);
+        let p0_2 = self.scalar.mul_ref(&rhs.e3);
+        let p0_3 = self.scalar.mul_ref(&rhs.e123);
+        let p4_0 = self.e12.mul_ref(&rhs.e1);
+        let p4_1 = self.e12.mul_ref(&rhs.e2);
+        let p4_2 = self.e12.mul_ref(&rhs.e3);
+        let p4_3 = self.e12.mul_ref(&rhs.e123);
+        let p5_0 = self.e13.mul_ref(&rhs.e1);
+        let p5_1 = self.e13.mul_ref(&rhs.e2);
+        let p5_2 = self.e13.mul_ref(&rhs.e3);
+        let p5_3 = self.e13.mul_ref(&rhs.e123);
+        let p6_0 = self.e23.mul_ref(&rhs.e1);
+        let p6_1 = self.e23.mul_ref(&rhs.e2);
+        let p6_2 = self.e23.mul_ref(&rhs.e3);
+        let p6_3 = self.e23.mul_ref(&rhs.e123);
+        Odd {
+            e1: p0_0 + &p4_1 + &p5_2 - &p6_3,
+            e2: p0_1 - &p4_0 + &p5_3 + &p6_2,
+            e3: p0_2 - &p4_3 - &p5_0 - &p6_1,
+            e123: p0_3 + &p4_2 - &p5_1 + &p6_0,
+        }
+    }
+}
+impl<T: self::Ring> self::GeometricProductInto<Multivector<T>, Vector<T>>
+for Multivector<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Multivector<T>) -> Vector<T> {
+        let p0_1 = self.scalar.mul_ref(&rhs.e1);
+        let p0_2 = self.scalar.mul_ref(&rhs.e2);
+        let p0_3 = self.scalar.mul_ref(&rhs.e3);
+        let p1_0 = self.e1.mul_ref(&rhs.scalar);
+        let p1_4 = self.e1.mul_ref(&rhs.e12);
+        let p1_5 = self.e1.mul_ref(&rhs.e13);
+        let p2_0 = self.e2.mul_ref(&rhs.scalar);
+        let p2_4 = self.e2.mul_ref(&rhs.e12);
+        let p2_6 = self.e2.mul_ref(&rhs.e23);
+        let p3_0 = self.e3.mul_ref(&rhs.scalar);
+        let p3_5 = self.e3.mul_ref(&rhs.e13);
+        let p3_6 = self.e3.mul_ref(&rhs.e23);
+        let p4_1 = self.e12.mul_ref(&rhs.e1);
+        let p4_2 = self.e12.mul_ref(&rhs.e2);
+        let p4_7 = self.e12.mul_ref(&rhs.e123);
+        let p5_1 = self.e13.mul_ref(&rhs.e1);
+        let p5_3 = self.e13.mul_ref(&rhs.e3);
+        let p5_7 = self.e13.mul_ref(&rhs.e123);
+        let p6_2 = self.e23.mul_ref(&rhs.e2);
+        let p6_3 = self.e23.mul_ref(&rhs.e3);
+        let p6_7 = self.e23.mul_ref(&rhs.e123);
+        let p7_4 = self.e123.mul_ref(&rhs.e12);
+        let p7_5 = self.e123.mul_ref(&rhs.e13);
+        let p7_6 = self.e123.mul_ref(&rhs.e23);
+        Vector {
+            e1: p0_1 + &p1_0 - &p2_4 - &p3_5 + &p4_2 + &p5_3 - &p6_7 - &p7_6,
+            e2: p0_2 + &p1_4 + &p2_0 - &p3_6 - &p4_1 + &p5_7 + &p6_3 + &p7_5,
+            e3: p0_3 + &p1_5 + &p2_6 + &p3_0 - &p4_7 - &p5_1 - &p6_2 - &p7_4,
+        }
+    }
+}
+impl<T: self::Ring> self::GeometricProductInto<Multivector<T>, Rotor<T>>
+for Multivector<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Multivector<T>) -> Rotor<T> {
+        let p0_0 = self.scalar.mul_ref(&rhs.scalar);
+        let p0_4 = self.scalar.mul_ref(&rhs.e12);
+        let p0_5 = self.scalar.mul_ref(&rhs.e13);
+        let p0_6 = self.scalar.mul_ref(&rhs.e23);
+        let p1_1 = self.e1.mul_ref(&rhs.e1);
+        let p1_2 = self.e1.mul_ref(&rhs.e2);
+        let p1_3 = self.e1.mul_ref(&rhs.e3);
+        let p1_7 = self.e1.mul_ref(&rhs.e123);
+        let p2_1 = self.e2.mul_ref(&rhs.e1);
+        let p2_2 = self.e2.mul_ref(&rhs.e2);
+        let p2_3 = self.e2.mul_ref(&rhs.e3);
+        let p2_7 = self.e2.mul_ref(&rhs.e123);
+        let p3_1 = self.e3.mul_ref(&rhs.e1);
+        let p3_2 = self.e3.mul_ref(&rhs.e2);
+        let p3_3 = self.e3.mul_ref(&rhs.e3);
+        let p3_7 = self.e3.mul_ref(&rhs.e123);
+        let p4_0 = self.e12.mul_ref(&rhs.scalar);
+        let p4_4 = self.e12.mul_ref(&rhs.e12);
+        let p4_5 = self.e12.mul_ref(&rhs.e13);
+        let p4_6 = self.e12.mul_ref(&rhs.e23);
+        let p5_0 = self.e13.mul_ref(&rhs.scalar);
+        let p5_4 = self.e13.mul_ref(&rhs.e12);
+        let p5_5 = self.e13.mul_ref(&rhs.e13);
+        let p5_6 = self.e13.mul_ref(&rhs.e23);
+        let p6_0 = self.e23.mul_ref(&rhs.scalar);
+        let p6_4 = self.e23.mul_ref(&rhs.e12);
+        let p6_5 = self.e23.mul_ref(&rhs.e13);
+        let p6_6 = self.e23.mul_ref(&rhs.e23);
+        let p7_1 = self.e123.mul_ref(&rhs.e1);
+        let p7_2 = self.e123.mul_ref(&rhs.e2);
+        let p7_3 = self.e123.mul_ref(&rhs.e3);
+        let p7_7 = self.e123.mul_ref(&rhs.e123);
+        Rotor {
+            scalar: p0_0 + &p1_1 + &p2_2 + &p3_3 - &p4_4 - &p5_5 - &p6_6 - &p7_7,
+            e12: p0_4 + &p1_2 - &p2_1 + &p3_7 + &p4_0 - &p5_6 + &p6_5 + &p7_3,
+            e13: p0_5 + &p1_3 - &p2_7 - &p3_1 + &p4_6 + &p5_0 - &p6_4 - &p7_2,
+            e23: p0_6 + &p1_7 + &p2_3 - &p3_2 - &p4_5 + &p5_4 + &p6_0 + &p7_1,
+        }
+    }
+}
+impl<T: self::Ring> self::GeometricProductInto<Multivector<T>, Odd<T>>
+for Multivector<T> {
+    #[inline]
+    fn gp_into(&self, rhs: &Multivector<T>) -> Odd<T> {
+        let p0_1 = self.scalar.mul_ref(&rhs.e1);
+        let p0_2 = self.scalar.mul_ref(&rhs.e2);
+        let p0_3 = self.scalar.mul_ref(&rhs.e3);
+        let p0_7 = self.scalar.mul_ref(&rhs.e123);
+        let p1_0 = self.e1.mul_ref(&rhs.scalar);
+        let p1_4 = self.e1.mul_ref(&rhs.e12);
+        let p1_5 = self.e1.mul_ref(&rhs.e13);
+        let p1_6 = self.e1.mul_ref(&rhs.e23);
+        let p2_0 = self.e2.mul_ref(&rhs.scalar);
+        let p2_4 = self.e2.mul_ref(&rhs.e12);
+        let p2_5 = self.e2.mul_ref(&rhs.e13);
+        let p2_6 = self.e2.mul_ref(&rhs.e23);
+        let p3_0 = self.e3.mul_ref(&rhs.scalar);
+        let p3_4 = self.e3.mul_ref(&rhs.e12);
+        let p3_5 = self.e3.mul_ref(&rhs.e13);
+        let p3_6 = self.e3.mul_ref(&rhs.e23);
+        let p4_1 = self.e12.mul_ref(&rhs.e1);
+        let p4_2 = self.e12.mul_ref(&rhs.e2);
+        let p4_3 = self.e12.mul_ref(&rhs.e3);
+        let p4_7 = self.e12.mul_ref(&rhs.e123);
+        let p5_1 = self.e13.mul_ref(&rhs.e1);
+        let p5_2 = self.e13.mul_ref(&rhs.e2);
+        let p5_3 = self.e13.mul_ref(&rhs.e3);
+        let p5_7 = self.e13.mul_ref(&rhs.e123);
+        let p6_1 = self.e23.mul_ref(&rhs.e1);
+        let p6_2 = self.e23.mul_ref(&rhs.e2);
+        let p6_3 = self.e23.mul_ref(&rhs.e3);
+        let p6_7 = self.e23.mul_ref(&rhs.e123);
+        let p7_0 = self.e123.mul_ref(&rhs.scalar);
+        let p7_4 = self.e123.mul_ref(&rhs.e12);
+        let p7_5 = self.e123.mul_ref(&rhs.e13);
+        let p7_6 = self.e123.mul_ref(&rhs.e23);
+        Odd {
+            e1: p0_1 + &p1_0 - &p2_4 - &p3_5 + &p4_2 + &p5_3 - &p6_7 - &p7_6,
+            e2: p0_2 + &p1_4 + &p2_0 - &p3_6 - &p4_1 + &p5_7 + &p6_3 + &p7_5,
+            e3: p0_3 + &p1_5 + &p2_6 + &p3_0 - &p4_7 - &p5_1 - &p6_2 - &p7_4,
+            e123: p0_7 + &p1_6 - &p2_5 + &p3_4 + &p4_3 - &p5_2 + &p6_1 + &p7_0,
+        }
+    }
+}
 impl<T: self::Ring> Vector<T> {
     ///The projection onto [`Rotor`]: shared coefficients kept, the others dropped.
     pub fn project_to_rotor(&self) -> Rotor<T> {
@@ -4219,6 +7927,17 @@ impl<T: self::Ring> Vector<T> {
             e12: T::zero(),
             e13: T::zero(),
             e23: T::zero(),
+        }
+    }
+}
+impl<T: self::Ring> ::core::convert::From<&Vector<T>> for Odd<T> {
+    /// The embedding (every basis element of the source is in the target).
+    fn from(x: &Vector<T>) -> Self {
+        Odd {
+            e1: ::core::clone::Clone::clone(&x.e1),
+            e2: ::core::clone::Clone::clone(&x.e2),
+            e3: ::core::clone::Clone::clone(&x.e3),
+            e123: T::zero(),
         }
     }
 }
@@ -4247,6 +7966,17 @@ impl<T: self::Ring> Rotor<T> {
         }
     }
 }
+impl<T: self::Ring> Rotor<T> {
+    ///The projection onto [`Odd`]: shared coefficients kept, the others dropped.
+    pub fn project_to_odd(&self) -> Odd<T> {
+        Odd {
+            e1: T::zero(),
+            e2: T::zero(),
+            e3: T::zero(),
+            e123: T::zero(),
+        }
+    }
+}
 impl<T: self::Ring> ::core::convert::From<&Rotor<T>> for Multivector<T> {
     /// The embedding (every basis element of the source is in the target).
     fn from(x: &Rotor<T>) -> Self {
@@ -4259,6 +7989,42 @@ impl<T: self::Ring> ::core::convert::From<&Rotor<T>> for Multivector<T> {
             e13: ::core::clone::Clone::clone(&x.e13),
             e23: ::core::clone::Clone::clone(&x.e23),
             e123: T::zero(),
+        }
+    }
+}
+impl<T: self::Ring> Odd<T> {
+    ///The projection onto [`Vector`]: shared coefficients kept, the others dropped.
+    pub fn project_to_vector(&self) -> Vector<T> {
+        Vector {
+            e1: ::core::clone::Clone::clone(&self.e1),
+            e2: ::core::clone::Clone::clone(&self.e2),
+            e3: ::core::clone::Clone::clone(&self.e3),
+        }
+    }
+}
+impl<T: self::Ring> Odd<T> {
+    ///The projection onto [`Rotor`]: shared coefficients kept, the others dropped.
+    pub fn project_to_rotor(&self) -> Rotor<T> {
+        Rotor {
+            scalar: T::zero(),
+            e12: T::zero(),
+            e13: T::zero(),
+            e23: T::zero(),
+        }
+    }
+}
+impl<T: self::Ring> ::core::convert::From<&Odd<T>> for Multivector<T> {
+    /// The embedding (every basis element of the source is in the target).
+    fn from(x: &Odd<T>) -> Self {
+        Multivector {
+            scalar: T::zero(),
+            e1: ::core::clone::Clone::clone(&x.e1),
+            e2: ::core::clone::Clone::clone(&x.e2),
+            e3: ::core::clone::Clone::clone(&x.e3),
+            e12: T::zero(),
+            e13: T::zero(),
+            e23: T::zero(),
+            e123: ::core::clone::Clone::clone(&x.e123),
         }
     }
 }
@@ -4280,6 +8046,17 @@ impl<T: self::Ring> Multivector<T> {
             e12: ::core::clone::Clone::clone(&self.e12),
             e13: ::core::clone::Clone::clone(&self.e13),
             e23: ::core::clone::Clone::clone(&self.e23),
+        }
+    }
+}
+impl<T: self::Ring> Multivector<T> {
+    ///The projection onto [`Odd`]: shared coefficients kept, the others dropped.
+    pub fn project_to_odd(&self) -> Odd<T> {
+        Odd {
+            e1: ::core::clone::Clone::clone(&self.e1),
+            e2: ::core::clone::Clone::clone(&self.e2),
+            e3: ::core::clone::Clone::clone(&self.e3),
+            e123: ::core::clone::Clone::clone(&self.e123),
         }
     }
 }
@@ -4369,6 +8146,56 @@ impl<T: self::Ring> self::Apply<Rotor<T>> for Vector<T> {
             e13: (t0.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e1))
                 - &(t3.mul_ref(&self.e2)),
             e23: (t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e2))
+                + &(t3.mul_ref(&self.e1)),
+        }
+    }
+}
+impl<T: self::Ring> self::Sandwich<Odd<T>> for Vector<T> {
+    type Output = Odd<T>;
+    ///`rev(self) x self` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
+    #[inline]
+    fn sandwich(&self, x: &Odd<T>) -> Odd<T> {
+        let t0 = (self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2))
+            + &(self.e3.mul_ref(&x.e3));
+        let t1 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1))
+            + &(self.e3.mul_ref(&x.e123));
+        let t2 = (self.e1.mul_ref(&x.e3)) - &(self.e2.mul_ref(&x.e123))
+            - &(self.e3.mul_ref(&x.e1));
+        let t3 = (self.e1.mul_ref(&x.e123)) + &(self.e2.mul_ref(&x.e3))
+            - &(self.e3.mul_ref(&x.e2));
+        Odd {
+            e1: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
+                + &(t2.mul_ref(&self.e3)),
+            e2: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
+                + &(t3.mul_ref(&self.e3)),
+            e3: (t0.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e1))
+                - &(t3.mul_ref(&self.e2)),
+            e123: (t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e2))
+                + &(t3.mul_ref(&self.e1)),
+        }
+    }
+}
+impl<T: self::Ring> self::Apply<Odd<T>> for Vector<T> {
+    type Output = Odd<T>;
+    ///`self x rev(self)` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
+    #[inline]
+    fn apply(&self, x: &Odd<T>) -> Odd<T> {
+        let t0 = (self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2))
+            + &(self.e3.mul_ref(&x.e3));
+        let t1 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1))
+            + &(self.e3.mul_ref(&x.e123));
+        let t2 = (self.e1.mul_ref(&x.e3)) - &(self.e2.mul_ref(&x.e123))
+            - &(self.e3.mul_ref(&x.e1));
+        let t3 = (self.e1.mul_ref(&x.e123)) + &(self.e2.mul_ref(&x.e3))
+            - &(self.e3.mul_ref(&x.e2));
+        Odd {
+            e1: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
+                + &(t2.mul_ref(&self.e3)),
+            e2: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
+                + &(t3.mul_ref(&self.e3)),
+            e3: (t0.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e1))
+                - &(t3.mul_ref(&self.e2)),
+            e123: (t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e2))
                 + &(t3.mul_ref(&self.e1)),
         }
     }
@@ -4469,6 +8296,202 @@ impl<T: self::Ring> self::Apply<Rotor<T>> for Rotor<T> {
         }
     }
 }
+impl<T: self::Ring> self::Sandwich<Odd<T>> for Rotor<T> {
+    type Output = Odd<T>;
+    ///`rev(self) x self` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
+    #[inline]
+    fn sandwich(&self, x: &Odd<T>) -> Odd<T> {
+        let t0 = (self.scalar.mul_ref(&x.e1)) - &(self.e12.mul_ref(&x.e2))
+            - &(self.e13.mul_ref(&x.e3)) + &(self.e23.mul_ref(&x.e123));
+        let t1 = (self.scalar.mul_ref(&x.e2)) + &(self.e12.mul_ref(&x.e1))
+            - &(self.e13.mul_ref(&x.e123)) - &(self.e23.mul_ref(&x.e3));
+        let t2 = (self.scalar.mul_ref(&x.e3)) + &(self.e12.mul_ref(&x.e123))
+            + &(self.e13.mul_ref(&x.e1)) + &(self.e23.mul_ref(&x.e2));
+        let t3 = (self.scalar.mul_ref(&x.e123)) - &(self.e12.mul_ref(&x.e3))
+            + &(self.e13.mul_ref(&x.e2)) - &(self.e23.mul_ref(&x.e1));
+        Odd {
+            e1: (t0.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e12))
+                - &(t2.mul_ref(&self.e13)) - &(t3.mul_ref(&self.e23)),
+            e2: (t0.mul_ref(&self.e12)) + &(t1.mul_ref(&self.scalar))
+                - &(t2.mul_ref(&self.e23)) + &(t3.mul_ref(&self.e13)),
+            e3: (t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23))
+                + &(t2.mul_ref(&self.scalar)) - &(t3.mul_ref(&self.e12)),
+            e123: (t0.mul_ref(&self.e23)) - &(t1.mul_ref(&self.e13))
+                + &(t2.mul_ref(&self.e12)) + &(t3.mul_ref(&self.scalar)),
+        }
+    }
+}
+impl<T: self::Ring> self::Apply<Odd<T>> for Rotor<T> {
+    type Output = Odd<T>;
+    ///`self x rev(self)` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
+    #[inline]
+    fn apply(&self, x: &Odd<T>) -> Odd<T> {
+        let t0 = (self.scalar.mul_ref(&x.e1)) + &(self.e12.mul_ref(&x.e2))
+            + &(self.e13.mul_ref(&x.e3)) - &(self.e23.mul_ref(&x.e123));
+        let t1 = (self.scalar.mul_ref(&x.e2)) - &(self.e12.mul_ref(&x.e1))
+            + &(self.e13.mul_ref(&x.e123)) + &(self.e23.mul_ref(&x.e3));
+        let t2 = (self.scalar.mul_ref(&x.e3)) - &(self.e12.mul_ref(&x.e123))
+            - &(self.e13.mul_ref(&x.e1)) - &(self.e23.mul_ref(&x.e2));
+        let t3 = (self.scalar.mul_ref(&x.e123)) + &(self.e12.mul_ref(&x.e3))
+            - &(self.e13.mul_ref(&x.e2)) + &(self.e23.mul_ref(&x.e1));
+        Odd {
+            e1: (t0.mul_ref(&self.scalar)) + &(t1.mul_ref(&self.e12))
+                + &(t2.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e23)),
+            e2: (t1.mul_ref(&self.scalar)) - &(t0.mul_ref(&self.e12))
+                + &(t2.mul_ref(&self.e23)) - &(t3.mul_ref(&self.e13)),
+            e3: (t2.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e23))
+                - &(t0.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e12)),
+            e123: (t1.mul_ref(&self.e13)) - &(t0.mul_ref(&self.e23))
+                - &(t2.mul_ref(&self.e12)) + &(t3.mul_ref(&self.scalar)),
+        }
+    }
+}
+impl<T: self::Ring> self::Sandwich<Vector<T>> for Odd<T> {
+    type Output = Vector<T>;
+    ///`rev(self) x self` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
+    #[inline]
+    fn sandwich(&self, x: &Vector<T>) -> Vector<T> {
+        let t0 = (self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2))
+            + &(self.e3.mul_ref(&x.e3));
+        let t1 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1))
+            - &(self.e123.mul_ref(&x.e3));
+        let t2 = (self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1))
+            + &(self.e123.mul_ref(&x.e2));
+        let t3 = (self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2))
+            - &(self.e123.mul_ref(&x.e1));
+        Vector {
+            e1: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
+                + &(t2.mul_ref(&self.e3)) - &(t3.mul_ref(&self.e123)),
+            e2: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
+                + &(t2.mul_ref(&self.e123)) + &(t3.mul_ref(&self.e3)),
+            e3: (t0.mul_ref(&self.e3)) - &(t1.mul_ref(&self.e123))
+                - &(t2.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e2)),
+        }
+    }
+}
+impl<T: self::Ring> self::Apply<Vector<T>> for Odd<T> {
+    type Output = Vector<T>;
+    ///`self x rev(self)` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
+    #[inline]
+    fn apply(&self, x: &Vector<T>) -> Vector<T> {
+        let t0 = (self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2))
+            + &(self.e3.mul_ref(&x.e3));
+        let t1 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1))
+            + &(self.e123.mul_ref(&x.e3));
+        let t2 = (self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1))
+            - &(self.e123.mul_ref(&x.e2));
+        let t3 = (self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2))
+            + &(self.e123.mul_ref(&x.e1));
+        Vector {
+            e1: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
+                + &(t2.mul_ref(&self.e3)) + &(t3.mul_ref(&self.e123)),
+            e2: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
+                - &(t2.mul_ref(&self.e123)) + &(t3.mul_ref(&self.e3)),
+            e3: (t0.mul_ref(&self.e3)) + &(t1.mul_ref(&self.e123))
+                - &(t2.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e2)),
+        }
+    }
+}
+impl<T: self::Ring> self::Sandwich<Rotor<T>> for Odd<T> {
+    type Output = Rotor<T>;
+    ///`rev(self) x self` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
+    #[inline]
+    fn sandwich(&self, x: &Rotor<T>) -> Rotor<T> {
+        let t0 = (self.e1.mul_ref(&x.scalar)) - &(self.e2.mul_ref(&x.e12))
+            - &(self.e3.mul_ref(&x.e13)) + &(self.e123.mul_ref(&x.e23));
+        let t1 = (self.e1.mul_ref(&x.e12)) + &(self.e2.mul_ref(&x.scalar))
+            - &(self.e3.mul_ref(&x.e23)) - &(self.e123.mul_ref(&x.e13));
+        let t2 = (self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23))
+            + &(self.e3.mul_ref(&x.scalar)) + &(self.e123.mul_ref(&x.e12));
+        let t3 = (self.e1.mul_ref(&x.e23)) - &(self.e2.mul_ref(&x.e13))
+            + &(self.e3.mul_ref(&x.e12)) - &(self.e123.mul_ref(&x.scalar));
+        Rotor {
+            scalar: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
+                + &(t2.mul_ref(&self.e3)) - &(t3.mul_ref(&self.e123)),
+            e12: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
+                + &(t2.mul_ref(&self.e123)) + &(t3.mul_ref(&self.e3)),
+            e13: (t0.mul_ref(&self.e3)) - &(t1.mul_ref(&self.e123))
+                - &(t2.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e2)),
+            e23: (t0.mul_ref(&self.e123)) + &(t1.mul_ref(&self.e3))
+                - &(t2.mul_ref(&self.e2)) + &(t3.mul_ref(&self.e1)),
+        }
+    }
+}
+impl<T: self::Ring> self::Apply<Rotor<T>> for Odd<T> {
+    type Output = Rotor<T>;
+    ///`self x rev(self)` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
+    #[inline]
+    fn apply(&self, x: &Rotor<T>) -> Rotor<T> {
+        let t0 = (self.e1.mul_ref(&x.scalar)) - &(self.e2.mul_ref(&x.e12))
+            - &(self.e3.mul_ref(&x.e13)) - &(self.e123.mul_ref(&x.e23));
+        let t1 = (self.e1.mul_ref(&x.e12)) + &(self.e2.mul_ref(&x.scalar))
+            - &(self.e3.mul_ref(&x.e23)) + &(self.e123.mul_ref(&x.e13));
+        let t2 = (self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23))
+            + &(self.e3.mul_ref(&x.scalar)) - &(self.e123.mul_ref(&x.e12));
+        let t3 = (self.e1.mul_ref(&x.e23)) - &(self.e2.mul_ref(&x.e13))
+            + &(self.e3.mul_ref(&x.e12)) + &(self.e123.mul_ref(&x.scalar));
+        Rotor {
+            scalar: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
+                + &(t2.mul_ref(&self.e3)) + &(t3.mul_ref(&self.e123)),
+            e12: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
+                - &(t2.mul_ref(&self.e123)) + &(t3.mul_ref(&self.e3)),
+            e13: (t0.mul_ref(&self.e3)) + &(t1.mul_ref(&self.e123))
+                - &(t2.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e2)),
+            e23: (t1.mul_ref(&self.e3)) - &(t0.mul_ref(&self.e123))
+                - &(t2.mul_ref(&self.e2)) + &(t3.mul_ref(&self.e1)),
+        }
+    }
+}
+impl<T: self::Ring> self::Sandwich<Odd<T>> for Odd<T> {
+    type Output = Odd<T>;
+    ///`rev(self) x self` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
+    #[inline]
+    fn sandwich(&self, x: &Odd<T>) -> Odd<T> {
+        let t0 = (self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2))
+            + &(self.e3.mul_ref(&x.e3)) + &(self.e123.mul_ref(&x.e123));
+        let t1 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1))
+            + &(self.e3.mul_ref(&x.e123)) - &(self.e123.mul_ref(&x.e3));
+        let t2 = (self.e1.mul_ref(&x.e3)) - &(self.e2.mul_ref(&x.e123))
+            - &(self.e3.mul_ref(&x.e1)) + &(self.e123.mul_ref(&x.e2));
+        let t3 = (self.e1.mul_ref(&x.e123)) + &(self.e2.mul_ref(&x.e3))
+            - &(self.e3.mul_ref(&x.e2)) - &(self.e123.mul_ref(&x.e1));
+        Odd {
+            e1: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
+                + &(t2.mul_ref(&self.e3)) - &(t3.mul_ref(&self.e123)),
+            e2: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
+                + &(t2.mul_ref(&self.e123)) + &(t3.mul_ref(&self.e3)),
+            e3: (t0.mul_ref(&self.e3)) - &(t1.mul_ref(&self.e123))
+                - &(t2.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e2)),
+            e123: (t0.mul_ref(&self.e123)) + &(t1.mul_ref(&self.e3))
+                - &(t2.mul_ref(&self.e2)) + &(t3.mul_ref(&self.e1)),
+        }
+    }
+}
+impl<T: self::Ring> self::Apply<Odd<T>> for Odd<T> {
+    type Output = Odd<T>;
+    ///`self x rev(self)` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
+    #[inline]
+    fn apply(&self, x: &Odd<T>) -> Odd<T> {
+        let t0 = (self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2))
+            + &(self.e3.mul_ref(&x.e3)) - &(self.e123.mul_ref(&x.e123));
+        let t1 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1))
+            + &(self.e3.mul_ref(&x.e123)) + &(self.e123.mul_ref(&x.e3));
+        let t2 = (self.e1.mul_ref(&x.e3)) - &(self.e2.mul_ref(&x.e123))
+            - &(self.e3.mul_ref(&x.e1)) - &(self.e123.mul_ref(&x.e2));
+        let t3 = (self.e1.mul_ref(&x.e123)) + &(self.e2.mul_ref(&x.e3))
+            - &(self.e3.mul_ref(&x.e2)) + &(self.e123.mul_ref(&x.e1));
+        Odd {
+            e1: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
+                + &(t2.mul_ref(&self.e3)) + &(t3.mul_ref(&self.e123)),
+            e2: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
+                - &(t2.mul_ref(&self.e123)) + &(t3.mul_ref(&self.e3)),
+            e3: (t0.mul_ref(&self.e3)) + &(t1.mul_ref(&self.e123))
+                - &(t2.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e2)),
+            e123: (t1.mul_ref(&self.e3)) - &(t0.mul_ref(&self.e123))
+                - &(t2.mul_ref(&self.e2)) + &(t3.mul_ref(&self.e1)),
+        }
+    }
+}
 impl<T: self::Ring> self::Sandwich<Multivector<T>> for Vector<T> {
     type Output = Multivector<T>;
     /// `rev(self) x self` as two full products (no fused kernel for this pair).
@@ -4491,6 +8514,20 @@ impl<T: self::Ring> self::Sandwich<Multivector<T>> for Rotor<T> {
     }
 }
 impl<T: self::Ring> self::Apply<Multivector<T>> for Rotor<T> {
+    type Output = Multivector<T>;
+    /// `self x rev(self)` as two full products (no fused kernel for this pair).
+    fn apply(&self, x: &Multivector<T>) -> Multivector<T> {
+        self::GeometricProduct::gp(&self::GeometricProduct::gp(self, x), &self.reverse())
+    }
+}
+impl<T: self::Ring> self::Sandwich<Multivector<T>> for Odd<T> {
+    type Output = Multivector<T>;
+    /// `rev(self) x self` as two full products (no fused kernel for this pair).
+    fn sandwich(&self, x: &Multivector<T>) -> Multivector<T> {
+        self::GeometricProduct::gp(&self::GeometricProduct::gp(&self.reverse(), x), self)
+    }
+}
+impl<T: self::Ring> self::Apply<Multivector<T>> for Odd<T> {
     type Output = Multivector<T>;
     /// `self x rev(self)` as two full products (no fused kernel for this pair).
     fn apply(&self, x: &Multivector<T>) -> Multivector<T> {
@@ -4525,6 +8562,20 @@ impl<T: self::Ring> self::Apply<Rotor<T>> for Multivector<T> {
         self::GeometricProduct::gp(&self::GeometricProduct::gp(self, x), &self.reverse())
     }
 }
+impl<T: self::Ring> self::Sandwich<Odd<T>> for Multivector<T> {
+    type Output = Multivector<T>;
+    /// `rev(self) x self` as two full products (no fused kernel for this pair).
+    fn sandwich(&self, x: &Odd<T>) -> Multivector<T> {
+        self::GeometricProduct::gp(&self::GeometricProduct::gp(&self.reverse(), x), self)
+    }
+}
+impl<T: self::Ring> self::Apply<Odd<T>> for Multivector<T> {
+    type Output = Multivector<T>;
+    /// `self x rev(self)` as two full products (no fused kernel for this pair).
+    fn apply(&self, x: &Odd<T>) -> Multivector<T> {
+        self::GeometricProduct::gp(&self::GeometricProduct::gp(self, x), &self.reverse())
+    }
+}
 impl<T: self::Ring> self::Sandwich<Multivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     /// `rev(self) x self` as two full products (no fused kernel for this pair).
@@ -4539,12 +8590,777 @@ impl<T: self::Ring> self::Apply<Multivector<T>> for Multivector<T> {
         self::GeometricProduct::gp(&self::GeometricProduct::gp(self, x), &self.reverse())
     }
 }
+///The action on [`Vector`] as a matrix (entries quadratic in `self`), for transforming many values by one versor.
+impl<T: self::Ring> self::ActionMatrix<Vector<T>> for Vector<T> {
+    type Matrix = [[T; 3usize]; 3usize];
+    fn sandwich_matrix(&self) -> [[T; 3usize]; 3usize] {
+        let q0_0 = self.e1.mul_ref(&self.e1);
+        let q0_1 = self.e1.mul_ref(&self.e2);
+        let q0_2 = self.e1.mul_ref(&self.e3);
+        let q1_1 = self.e2.mul_ref(&self.e2);
+        let q1_2 = self.e2.mul_ref(&self.e3);
+        let q2_2 = self.e3.mul_ref(&self.e3);
+        [
+            [
+                ::core::clone::Clone::clone(&q0_0) - &q1_1 - &q2_2,
+                T::from_ratio(2i64, 1i64) * &q0_1,
+                T::from_ratio(2i64, 1i64) * &q0_2,
+            ],
+            [
+                T::from_ratio(2i64, 1i64) * &q0_1,
+                ::core::clone::Clone::clone(&q1_1) - &q0_0 - &q2_2,
+                T::from_ratio(2i64, 1i64) * &q1_2,
+            ],
+            [
+                T::from_ratio(2i64, 1i64) * &q0_2,
+                T::from_ratio(2i64, 1i64) * &q1_2,
+                ::core::clone::Clone::clone(&q2_2) - &q1_1 - &q0_0,
+            ],
+        ]
+    }
+    fn apply_matrix(&self) -> [[T; 3usize]; 3usize] {
+        let q0_0 = self.e1.mul_ref(&self.e1);
+        let q0_1 = self.e1.mul_ref(&self.e2);
+        let q0_2 = self.e1.mul_ref(&self.e3);
+        let q1_1 = self.e2.mul_ref(&self.e2);
+        let q1_2 = self.e2.mul_ref(&self.e3);
+        let q2_2 = self.e3.mul_ref(&self.e3);
+        [
+            [
+                ::core::clone::Clone::clone(&q0_0) - &q1_1 - &q2_2,
+                T::from_ratio(2i64, 1i64) * &q0_1,
+                T::from_ratio(2i64, 1i64) * &q0_2,
+            ],
+            [
+                T::from_ratio(2i64, 1i64) * &q0_1,
+                ::core::clone::Clone::clone(&q1_1) - &q0_0 - &q2_2,
+                T::from_ratio(2i64, 1i64) * &q1_2,
+            ],
+            [
+                T::from_ratio(2i64, 1i64) * &q0_2,
+                T::from_ratio(2i64, 1i64) * &q1_2,
+                ::core::clone::Clone::clone(&q2_2) - &q1_1 - &q0_0,
+            ],
+        ]
+    }
+    #[inline]
+    fn transform(m: &[[T; 3usize]; 3usize], x: &Vector<T>) -> Vector<T> {
+        Vector {
+            e1: (m[0usize][0usize].mul_ref(&x.e1)) + &(m[0usize][1usize].mul_ref(&x.e2))
+                + &(m[0usize][2usize].mul_ref(&x.e3)),
+            e2: (m[1usize][0usize].mul_ref(&x.e1)) + &(m[1usize][1usize].mul_ref(&x.e2))
+                + &(m[1usize][2usize].mul_ref(&x.e3)),
+            e3: (m[2usize][0usize].mul_ref(&x.e1)) + &(m[2usize][1usize].mul_ref(&x.e2))
+                + &(m[2usize][2usize].mul_ref(&x.e3)),
+        }
+    }
+}
+///The action on [`Rotor`] as a matrix (entries quadratic in `self`), for transforming many values by one versor.
+impl<T: self::Ring> self::ActionMatrix<Rotor<T>> for Vector<T> {
+    type Matrix = [[T; 4usize]; 4usize];
+    fn sandwich_matrix(&self) -> [[T; 4usize]; 4usize] {
+        let q0_0 = self.e1.mul_ref(&self.e1);
+        let q0_1 = self.e1.mul_ref(&self.e2);
+        let q0_2 = self.e1.mul_ref(&self.e3);
+        let q1_1 = self.e2.mul_ref(&self.e2);
+        let q1_2 = self.e2.mul_ref(&self.e3);
+        let q2_2 = self.e3.mul_ref(&self.e3);
+        [
+            [
+                ::core::clone::Clone::clone(&q0_0) + &q1_1 + &q2_2,
+                T::zero(),
+                T::zero(),
+                T::zero(),
+            ],
+            [
+                T::zero(),
+                ::core::clone::Clone::clone(&q2_2) - &q1_1 - &q0_0,
+                T::from_ratio(-2i64, 1i64) * &q1_2,
+                T::from_ratio(2i64, 1i64) * &q0_2,
+            ],
+            [
+                T::zero(),
+                T::from_ratio(-2i64, 1i64) * &q1_2,
+                ::core::clone::Clone::clone(&q1_1) - &q0_0 - &q2_2,
+                T::from_ratio(-2i64, 1i64) * &q0_1,
+            ],
+            [
+                T::zero(),
+                T::from_ratio(2i64, 1i64) * &q0_2,
+                T::from_ratio(-2i64, 1i64) * &q0_1,
+                ::core::clone::Clone::clone(&q0_0) - &q1_1 - &q2_2,
+            ],
+        ]
+    }
+    fn apply_matrix(&self) -> [[T; 4usize]; 4usize] {
+        let q0_0 = self.e1.mul_ref(&self.e1);
+        let q0_1 = self.e1.mul_ref(&self.e2);
+        let q0_2 = self.e1.mul_ref(&self.e3);
+        let q1_1 = self.e2.mul_ref(&self.e2);
+        let q1_2 = self.e2.mul_ref(&self.e3);
+        let q2_2 = self.e3.mul_ref(&self.e3);
+        [
+            [
+                ::core::clone::Clone::clone(&q0_0) + &q1_1 + &q2_2,
+                T::zero(),
+                T::zero(),
+                T::zero(),
+            ],
+            [
+                T::zero(),
+                ::core::clone::Clone::clone(&q2_2) - &q1_1 - &q0_0,
+                T::from_ratio(-2i64, 1i64) * &q1_2,
+                T::from_ratio(2i64, 1i64) * &q0_2,
+            ],
+            [
+                T::zero(),
+                T::from_ratio(-2i64, 1i64) * &q1_2,
+                ::core::clone::Clone::clone(&q1_1) - &q0_0 - &q2_2,
+                T::from_ratio(-2i64, 1i64) * &q0_1,
+            ],
+            [
+                T::zero(),
+                T::from_ratio(2i64, 1i64) * &q0_2,
+                T::from_ratio(-2i64, 1i64) * &q0_1,
+                ::core::clone::Clone::clone(&q0_0) - &q1_1 - &q2_2,
+            ],
+        ]
+    }
+    #[inline]
+    fn transform(m: &[[T; 4usize]; 4usize], x: &Rotor<T>) -> Rotor<T> {
+        Rotor {
+            scalar: (m[0usize][0usize].mul_ref(&x.scalar)),
+            e12: (m[1usize][1usize].mul_ref(&x.e12))
+                + &(m[1usize][2usize].mul_ref(&x.e13))
+                + &(m[1usize][3usize].mul_ref(&x.e23)),
+            e13: (m[2usize][1usize].mul_ref(&x.e12))
+                + &(m[2usize][2usize].mul_ref(&x.e13))
+                + &(m[2usize][3usize].mul_ref(&x.e23)),
+            e23: (m[3usize][1usize].mul_ref(&x.e12))
+                + &(m[3usize][2usize].mul_ref(&x.e13))
+                + &(m[3usize][3usize].mul_ref(&x.e23)),
+        }
+    }
+}
+///The action on [`Odd`] as a matrix (entries quadratic in `self`), for transforming many values by one versor.
+impl<T: self::Ring> self::ActionMatrix<Odd<T>> for Vector<T> {
+    type Matrix = [[T; 4usize]; 4usize];
+    fn sandwich_matrix(&self) -> [[T; 4usize]; 4usize] {
+        let q0_0 = self.e1.mul_ref(&self.e1);
+        let q0_1 = self.e1.mul_ref(&self.e2);
+        let q0_2 = self.e1.mul_ref(&self.e3);
+        let q1_1 = self.e2.mul_ref(&self.e2);
+        let q1_2 = self.e2.mul_ref(&self.e3);
+        let q2_2 = self.e3.mul_ref(&self.e3);
+        [
+            [
+                ::core::clone::Clone::clone(&q0_0) - &q1_1 - &q2_2,
+                T::from_ratio(2i64, 1i64) * &q0_1,
+                T::from_ratio(2i64, 1i64) * &q0_2,
+                T::zero(),
+            ],
+            [
+                T::from_ratio(2i64, 1i64) * &q0_1,
+                ::core::clone::Clone::clone(&q1_1) - &q0_0 - &q2_2,
+                T::from_ratio(2i64, 1i64) * &q1_2,
+                T::zero(),
+            ],
+            [
+                T::from_ratio(2i64, 1i64) * &q0_2,
+                T::from_ratio(2i64, 1i64) * &q1_2,
+                ::core::clone::Clone::clone(&q2_2) - &q1_1 - &q0_0,
+                T::zero(),
+            ],
+            [
+                T::zero(),
+                T::zero(),
+                T::zero(),
+                ::core::clone::Clone::clone(&q0_0) + &q1_1 + &q2_2,
+            ],
+        ]
+    }
+    fn apply_matrix(&self) -> [[T; 4usize]; 4usize] {
+        let q0_0 = self.e1.mul_ref(&self.e1);
+        let q0_1 = self.e1.mul_ref(&self.e2);
+        let q0_2 = self.e1.mul_ref(&self.e3);
+        let q1_1 = self.e2.mul_ref(&self.e2);
+        let q1_2 = self.e2.mul_ref(&self.e3);
+        let q2_2 = self.e3.mul_ref(&self.e3);
+        [
+            [
+                ::core::clone::Clone::clone(&q0_0) - &q1_1 - &q2_2,
+                T::from_ratio(2i64, 1i64) * &q0_1,
+                T::from_ratio(2i64, 1i64) * &q0_2,
+                T::zero(),
+            ],
+            [
+                T::from_ratio(2i64, 1i64) * &q0_1,
+                ::core::clone::Clone::clone(&q1_1) - &q0_0 - &q2_2,
+                T::from_ratio(2i64, 1i64) * &q1_2,
+                T::zero(),
+            ],
+            [
+                T::from_ratio(2i64, 1i64) * &q0_2,
+                T::from_ratio(2i64, 1i64) * &q1_2,
+                ::core::clone::Clone::clone(&q2_2) - &q1_1 - &q0_0,
+                T::zero(),
+            ],
+            [
+                T::zero(),
+                T::zero(),
+                T::zero(),
+                ::core::clone::Clone::clone(&q0_0) + &q1_1 + &q2_2,
+            ],
+        ]
+    }
+    #[inline]
+    fn transform(m: &[[T; 4usize]; 4usize], x: &Odd<T>) -> Odd<T> {
+        Odd {
+            e1: (m[0usize][0usize].mul_ref(&x.e1)) + &(m[0usize][1usize].mul_ref(&x.e2))
+                + &(m[0usize][2usize].mul_ref(&x.e3)),
+            e2: (m[1usize][0usize].mul_ref(&x.e1)) + &(m[1usize][1usize].mul_ref(&x.e2))
+                + &(m[1usize][2usize].mul_ref(&x.e3)),
+            e3: (m[2usize][0usize].mul_ref(&x.e1)) + &(m[2usize][1usize].mul_ref(&x.e2))
+                + &(m[2usize][2usize].mul_ref(&x.e3)),
+            e123: (m[3usize][3usize].mul_ref(&x.e123)),
+        }
+    }
+}
+///The action on [`Vector`] as a matrix (entries quadratic in `self`), for transforming many values by one versor.
+impl<T: self::Ring> self::ActionMatrix<Vector<T>> for Rotor<T> {
+    type Matrix = [[T; 3usize]; 3usize];
+    fn sandwich_matrix(&self) -> [[T; 3usize]; 3usize] {
+        let q0_0 = self.scalar.mul_ref(&self.scalar);
+        let q0_1 = self.scalar.mul_ref(&self.e12);
+        let q0_2 = self.scalar.mul_ref(&self.e13);
+        let q0_3 = self.scalar.mul_ref(&self.e23);
+        let q1_1 = self.e12.mul_ref(&self.e12);
+        let q1_2 = self.e12.mul_ref(&self.e13);
+        let q1_3 = self.e12.mul_ref(&self.e23);
+        let q2_2 = self.e13.mul_ref(&self.e13);
+        let q2_3 = self.e13.mul_ref(&self.e23);
+        let q3_3 = self.e23.mul_ref(&self.e23);
+        [
+            [
+                ::core::clone::Clone::clone(&q0_0) - &q1_1 - &q2_2 + &q3_3,
+                T::from_ratio(-2i64, 1i64) * &q0_1 - T::from_ratio(2i64, 1i64) * &q2_3,
+                T::from_ratio(2i64, 1i64) * &q1_3 - T::from_ratio(2i64, 1i64) * &q0_2,
+            ],
+            [
+                T::from_ratio(2i64, 1i64) * &q0_1 - T::from_ratio(2i64, 1i64) * &q2_3,
+                ::core::clone::Clone::clone(&q0_0) - &q1_1 + &q2_2 - &q3_3,
+                T::from_ratio(-2i64, 1i64) * &q0_3 - T::from_ratio(2i64, 1i64) * &q1_2,
+            ],
+            [
+                T::from_ratio(2i64, 1i64) * &q0_2 + T::from_ratio(2i64, 1i64) * &q1_3,
+                T::from_ratio(2i64, 1i64) * &q0_3 - T::from_ratio(2i64, 1i64) * &q1_2,
+                ::core::clone::Clone::clone(&q0_0) + &q1_1 - &q2_2 - &q3_3,
+            ],
+        ]
+    }
+    fn apply_matrix(&self) -> [[T; 3usize]; 3usize] {
+        let q0_0 = self.scalar.mul_ref(&self.scalar);
+        let q0_1 = self.scalar.mul_ref(&self.e12);
+        let q0_2 = self.scalar.mul_ref(&self.e13);
+        let q0_3 = self.scalar.mul_ref(&self.e23);
+        let q1_1 = self.e12.mul_ref(&self.e12);
+        let q1_2 = self.e12.mul_ref(&self.e13);
+        let q1_3 = self.e12.mul_ref(&self.e23);
+        let q2_2 = self.e13.mul_ref(&self.e13);
+        let q2_3 = self.e13.mul_ref(&self.e23);
+        let q3_3 = self.e23.mul_ref(&self.e23);
+        [
+            [
+                ::core::clone::Clone::clone(&q0_0) - &q1_1 - &q2_2 + &q3_3,
+                T::from_ratio(2i64, 1i64) * &q0_1 - T::from_ratio(2i64, 1i64) * &q2_3,
+                T::from_ratio(2i64, 1i64) * &q0_2 + T::from_ratio(2i64, 1i64) * &q1_3,
+            ],
+            [
+                T::from_ratio(-2i64, 1i64) * &q0_1 - T::from_ratio(2i64, 1i64) * &q2_3,
+                ::core::clone::Clone::clone(&q0_0) - &q1_1 + &q2_2 - &q3_3,
+                T::from_ratio(2i64, 1i64) * &q0_3 - T::from_ratio(2i64, 1i64) * &q1_2,
+            ],
+            [
+                T::from_ratio(2i64, 1i64) * &q1_3 - T::from_ratio(2i64, 1i64) * &q0_2,
+                T::from_ratio(-2i64, 1i64) * &q0_3 - T::from_ratio(2i64, 1i64) * &q1_2,
+                ::core::clone::Clone::clone(&q0_0) + &q1_1 - &q2_2 - &q3_3,
+            ],
+        ]
+    }
+    #[inline]
+    fn transform(m: &[[T; 3usize]; 3usize], x: &Vector<T>) -> Vector<T> {
+        Vector {
+            e1: (m[0usize][0usize].mul_ref(&x.e1)) + &(m[0usize][1usize].mul_ref(&x.e2))
+                + &(m[0usize][2usize].mul_ref(&x.e3)),
+            e2: (m[1usize][0usize].mul_ref(&x.e1)) + &(m[1usize][1usize].mul_ref(&x.e2))
+                + &(m[1usize][2usize].mul_ref(&x.e3)),
+            e3: (m[2usize][0usize].mul_ref(&x.e1)) + &(m[2usize][1usize].mul_ref(&x.e2))
+                + &(m[2usize][2usize].mul_ref(&x.e3)),
+        }
+    }
+}
+///The action on [`Rotor`] as a matrix (entries quadratic in `self`), for transforming many values by one versor.
+impl<T: self::Ring> self::ActionMatrix<Rotor<T>> for Rotor<T> {
+    type Matrix = [[T; 4usize]; 4usize];
+    fn sandwich_matrix(&self) -> [[T; 4usize]; 4usize] {
+        let q0_0 = self.scalar.mul_ref(&self.scalar);
+        let q0_1 = self.scalar.mul_ref(&self.e12);
+        let q0_2 = self.scalar.mul_ref(&self.e13);
+        let q0_3 = self.scalar.mul_ref(&self.e23);
+        let q1_1 = self.e12.mul_ref(&self.e12);
+        let q1_2 = self.e12.mul_ref(&self.e13);
+        let q1_3 = self.e12.mul_ref(&self.e23);
+        let q2_2 = self.e13.mul_ref(&self.e13);
+        let q2_3 = self.e13.mul_ref(&self.e23);
+        let q3_3 = self.e23.mul_ref(&self.e23);
+        [
+            [
+                ::core::clone::Clone::clone(&q0_0) + &q1_1 + &q2_2 + &q3_3,
+                T::zero(),
+                T::zero(),
+                T::zero(),
+            ],
+            [
+                T::zero(),
+                ::core::clone::Clone::clone(&q0_0) + &q1_1 - &q2_2 - &q3_3,
+                T::from_ratio(2i64, 1i64) * &q1_2 - T::from_ratio(2i64, 1i64) * &q0_3,
+                T::from_ratio(2i64, 1i64) * &q0_2 + T::from_ratio(2i64, 1i64) * &q1_3,
+            ],
+            [
+                T::zero(),
+                T::from_ratio(2i64, 1i64) * &q0_3 + T::from_ratio(2i64, 1i64) * &q1_2,
+                ::core::clone::Clone::clone(&q0_0) - &q1_1 + &q2_2 - &q3_3,
+                T::from_ratio(2i64, 1i64) * &q2_3 - T::from_ratio(2i64, 1i64) * &q0_1,
+            ],
+            [
+                T::zero(),
+                T::from_ratio(2i64, 1i64) * &q1_3 - T::from_ratio(2i64, 1i64) * &q0_2,
+                T::from_ratio(2i64, 1i64) * &q0_1 + T::from_ratio(2i64, 1i64) * &q2_3,
+                ::core::clone::Clone::clone(&q0_0) - &q1_1 - &q2_2 + &q3_3,
+            ],
+        ]
+    }
+    fn apply_matrix(&self) -> [[T; 4usize]; 4usize] {
+        let q0_0 = self.scalar.mul_ref(&self.scalar);
+        let q0_1 = self.scalar.mul_ref(&self.e12);
+        let q0_2 = self.scalar.mul_ref(&self.e13);
+        let q0_3 = self.scalar.mul_ref(&self.e23);
+        let q1_1 = self.e12.mul_ref(&self.e12);
+        let q1_2 = self.e12.mul_ref(&self.e13);
+        let q1_3 = self.e12.mul_ref(&self.e23);
+        let q2_2 = self.e13.mul_ref(&self.e13);
+        let q2_3 = self.e13.mul_ref(&self.e23);
+        let q3_3 = self.e23.mul_ref(&self.e23);
+        [
+            [
+                ::core::clone::Clone::clone(&q0_0) + &q1_1 + &q2_2 + &q3_3,
+                T::zero(),
+                T::zero(),
+                T::zero(),
+            ],
+            [
+                T::zero(),
+                ::core::clone::Clone::clone(&q0_0) + &q1_1 - &q2_2 - &q3_3,
+                T::from_ratio(2i64, 1i64) * &q0_3 + T::from_ratio(2i64, 1i64) * &q1_2,
+                T::from_ratio(2i64, 1i64) * &q1_3 - T::from_ratio(2i64, 1i64) * &q0_2,
+            ],
+            [
+                T::zero(),
+                T::from_ratio(2i64, 1i64) * &q1_2 - T::from_ratio(2i64, 1i64) * &q0_3,
+                ::core::clone::Clone::clone(&q0_0) - &q1_1 + &q2_2 - &q3_3,
+                T::from_ratio(2i64, 1i64) * &q0_1 + T::from_ratio(2i64, 1i64) * &q2_3,
+            ],
+            [
+                T::zero(),
+                T::from_ratio(2i64, 1i64) * &q0_2 + T::from_ratio(2i64, 1i64) * &q1_3,
+                T::from_ratio(2i64, 1i64) * &q2_3 - T::from_ratio(2i64, 1i64) * &q0_1,
+                ::core::clone::Clone::clone(&q0_0) - &q1_1 - &q2_2 + &q3_3,
+            ],
+        ]
+    }
+    #[inline]
+    fn transform(m: &[[T; 4usize]; 4usize], x: &Rotor<T>) -> Rotor<T> {
+        Rotor {
+            scalar: (m[0usize][0usize].mul_ref(&x.scalar)),
+            e12: (m[1usize][1usize].mul_ref(&x.e12))
+                + &(m[1usize][2usize].mul_ref(&x.e13))
+                + &(m[1usize][3usize].mul_ref(&x.e23)),
+            e13: (m[2usize][1usize].mul_ref(&x.e12))
+                + &(m[2usize][2usize].mul_ref(&x.e13))
+                + &(m[2usize][3usize].mul_ref(&x.e23)),
+            e23: (m[3usize][1usize].mul_ref(&x.e12))
+                + &(m[3usize][2usize].mul_ref(&x.e13))
+                + &(m[3usize][3usize].mul_ref(&x.e23)),
+        }
+    }
+}
+///The action on [`Odd`] as a matrix (entries quadratic in `self`), for transforming many values by one versor.
+impl<T: self::Ring> self::ActionMatrix<Odd<T>> for Rotor<T> {
+    type Matrix = [[T; 4usize]; 4usize];
+    fn sandwich_matrix(&self) -> [[T; 4usize]; 4usize] {
+        let q0_0 = self.scalar.mul_ref(&self.scalar);
+        let q0_1 = self.scalar.mul_ref(&self.e12);
+        let q0_2 = self.scalar.mul_ref(&self.e13);
+        let q0_3 = self.scalar.mul_ref(&self.e23);
+        let q1_1 = self.e12.mul_ref(&self.e12);
+        let q1_2 = self.e12.mul_ref(&self.e13);
+        let q1_3 = self.e12.mul_ref(&self.e23);
+        let q2_2 = self.e13.mul_ref(&self.e13);
+        let q2_3 = self.e13.mul_ref(&self.e23);
+        let q3_3 = self.e23.mul_ref(&self.e23);
+        [
+            [
+                ::core::clone::Clone::clone(&q0_0) - &q1_1 - &q2_2 + &q3_3,
+                T::from_ratio(-2i64, 1i64) * &q0_1 - T::from_ratio(2i64, 1i64) * &q2_3,
+                T::from_ratio(2i64, 1i64) * &q1_3 - T::from_ratio(2i64, 1i64) * &q0_2,
+                T::zero(),
+            ],
+            [
+                T::from_ratio(2i64, 1i64) * &q0_1 - T::from_ratio(2i64, 1i64) * &q2_3,
+                ::core::clone::Clone::clone(&q0_0) - &q1_1 + &q2_2 - &q3_3,
+                T::from_ratio(-2i64, 1i64) * &q0_3 - T::from_ratio(2i64, 1i64) * &q1_2,
+                T::zero(),
+            ],
+            [
+                T::from_ratio(2i64, 1i64) * &q0_2 + T::from_ratio(2i64, 1i64) * &q1_3,
+                T::from_ratio(2i64, 1i64) * &q0_3 - T::from_ratio(2i64, 1i64) * &q1_2,
+                ::core::clone::Clone::clone(&q0_0) + &q1_1 - &q2_2 - &q3_3,
+                T::zero(),
+            ],
+            [
+                T::zero(),
+                T::zero(),
+                T::zero(),
+                ::core::clone::Clone::clone(&q0_0) + &q1_1 + &q2_2 + &q3_3,
+            ],
+        ]
+    }
+    fn apply_matrix(&self) -> [[T; 4usize]; 4usize] {
+        let q0_0 = self.scalar.mul_ref(&self.scalar);
+        let q0_1 = self.scalar.mul_ref(&self.e12);
+        let q0_2 = self.scalar.mul_ref(&self.e13);
+        let q0_3 = self.scalar.mul_ref(&self.e23);
+        let q1_1 = self.e12.mul_ref(&self.e12);
+        let q1_2 = self.e12.mul_ref(&self.e13);
+        let q1_3 = self.e12.mul_ref(&self.e23);
+        let q2_2 = self.e13.mul_ref(&self.e13);
+        let q2_3 = self.e13.mul_ref(&self.e23);
+        let q3_3 = self.e23.mul_ref(&self.e23);
+        [
+            [
+                ::core::clone::Clone::clone(&q0_0) - &q1_1 - &q2_2 + &q3_3,
+                T::from_ratio(2i64, 1i64) * &q0_1 - T::from_ratio(2i64, 1i64) * &q2_3,
+                T::from_ratio(2i64, 1i64) * &q0_2 + T::from_ratio(2i64, 1i64) * &q1_3,
+                T::zero(),
+            ],
+            [
+                T::from_ratio(-2i64, 1i64) * &q0_1 - T::from_ratio(2i64, 1i64) * &q2_3,
+                ::core::clone::Clone::clone(&q0_0) - &q1_1 + &q2_2 - &q3_3,
+                T::from_ratio(2i64, 1i64) * &q0_3 - T::from_ratio(2i64, 1i64) * &q1_2,
+                T::zero(),
+            ],
+            [
+                T::from_ratio(2i64, 1i64) * &q1_3 - T::from_ratio(2i64, 1i64) * &q0_2,
+                T::from_ratio(-2i64, 1i64) * &q0_3 - T::from_ratio(2i64, 1i64) * &q1_2,
+                ::core::clone::Clone::clone(&q0_0) + &q1_1 - &q2_2 - &q3_3,
+                T::zero(),
+            ],
+            [
+                T::zero(),
+                T::zero(),
+                T::zero(),
+                ::core::clone::Clone::clone(&q0_0) + &q1_1 + &q2_2 + &q3_3,
+            ],
+        ]
+    }
+    #[inline]
+    fn transform(m: &[[T; 4usize]; 4usize], x: &Odd<T>) -> Odd<T> {
+        Odd {
+            e1: (m[0usize][0usize].mul_ref(&x.e1)) + &(m[0usize][1usize].mul_ref(&x.e2))
+                + &(m[0usize][2usize].mul_ref(&x.e3)),
+            e2: (m[1usize][0usize].mul_ref(&x.e1)) + &(m[1usize][1usize].mul_ref(&x.e2))
+                + &(m[1usize][2usize].mul_ref(&x.e3)),
+            e3: (m[2usize][0usize].mul_ref(&x.e1)) + &(m[2usize][1usize].mul_ref(&x.e2))
+                + &(m[2usize][2usize].mul_ref(&x.e3)),
+            e123: (m[3usize][3usize].mul_ref(&x.e123)),
+        }
+    }
+}
+///The action on [`Vector`] as a matrix (entries quadratic in `self`), for transforming many values by one versor.
+impl<T: self::Ring> self::ActionMatrix<Vector<T>> for Odd<T> {
+    type Matrix = [[T; 3usize]; 3usize];
+    fn sandwich_matrix(&self) -> [[T; 3usize]; 3usize] {
+        let q0_0 = self.e1.mul_ref(&self.e1);
+        let q0_1 = self.e1.mul_ref(&self.e2);
+        let q0_2 = self.e1.mul_ref(&self.e3);
+        let q0_3 = self.e1.mul_ref(&self.e123);
+        let q1_1 = self.e2.mul_ref(&self.e2);
+        let q1_2 = self.e2.mul_ref(&self.e3);
+        let q1_3 = self.e2.mul_ref(&self.e123);
+        let q2_2 = self.e3.mul_ref(&self.e3);
+        let q2_3 = self.e3.mul_ref(&self.e123);
+        let q3_3 = self.e123.mul_ref(&self.e123);
+        [
+            [
+                ::core::clone::Clone::clone(&q0_0) - &q1_1 - &q2_2 + &q3_3,
+                T::from_ratio(2i64, 1i64) * &q0_1 + T::from_ratio(2i64, 1i64) * &q2_3,
+                T::from_ratio(2i64, 1i64) * &q0_2 - T::from_ratio(2i64, 1i64) * &q1_3,
+            ],
+            [
+                T::from_ratio(2i64, 1i64) * &q0_1 - T::from_ratio(2i64, 1i64) * &q2_3,
+                ::core::clone::Clone::clone(&q1_1) - &q0_0 - &q2_2 + &q3_3,
+                T::from_ratio(2i64, 1i64) * &q0_3 + T::from_ratio(2i64, 1i64) * &q1_2,
+            ],
+            [
+                T::from_ratio(2i64, 1i64) * &q0_2 + T::from_ratio(2i64, 1i64) * &q1_3,
+                T::from_ratio(2i64, 1i64) * &q1_2 - T::from_ratio(2i64, 1i64) * &q0_3,
+                ::core::clone::Clone::clone(&q2_2) - &q1_1 - &q0_0 + &q3_3,
+            ],
+        ]
+    }
+    fn apply_matrix(&self) -> [[T; 3usize]; 3usize] {
+        let q0_0 = self.e1.mul_ref(&self.e1);
+        let q0_1 = self.e1.mul_ref(&self.e2);
+        let q0_2 = self.e1.mul_ref(&self.e3);
+        let q0_3 = self.e1.mul_ref(&self.e123);
+        let q1_1 = self.e2.mul_ref(&self.e2);
+        let q1_2 = self.e2.mul_ref(&self.e3);
+        let q1_3 = self.e2.mul_ref(&self.e123);
+        let q2_2 = self.e3.mul_ref(&self.e3);
+        let q2_3 = self.e3.mul_ref(&self.e123);
+        let q3_3 = self.e123.mul_ref(&self.e123);
+        [
+            [
+                ::core::clone::Clone::clone(&q0_0) - &q1_1 - &q2_2 + &q3_3,
+                T::from_ratio(2i64, 1i64) * &q0_1 - T::from_ratio(2i64, 1i64) * &q2_3,
+                T::from_ratio(2i64, 1i64) * &q0_2 + T::from_ratio(2i64, 1i64) * &q1_3,
+            ],
+            [
+                T::from_ratio(2i64, 1i64) * &q0_1 + T::from_ratio(2i64, 1i64) * &q2_3,
+                ::core::clone::Clone::clone(&q1_1) - &q0_0 - &q2_2 + &q3_3,
+                T::from_ratio(2i64, 1i64) * &q1_2 - T::from_ratio(2i64, 1i64) * &q0_3,
+            ],
+            [
+                T::from_ratio(2i64, 1i64) * &q0_2 - T::from_ratio(2i64, 1i64) * &q1_3,
+                T::from_ratio(2i64, 1i64) * &q0_3 + T::from_ratio(2i64, 1i64) * &q1_2,
+                ::core::clone::Clone::clone(&q2_2) - &q1_1 - &q0_0 + &q3_3,
+            ],
+        ]
+    }
+    #[inline]
+    fn transform(m: &[[T; 3usize]; 3usize], x: &Vector<T>) -> Vector<T> {
+        Vector {
+            e1: (m[0usize][0usize].mul_ref(&x.e1)) + &(m[0usize][1usize].mul_ref(&x.e2))
+                + &(m[0usize][2usize].mul_ref(&x.e3)),
+            e2: (m[1usize][0usize].mul_ref(&x.e1)) + &(m[1usize][1usize].mul_ref(&x.e2))
+                + &(m[1usize][2usize].mul_ref(&x.e3)),
+            e3: (m[2usize][0usize].mul_ref(&x.e1)) + &(m[2usize][1usize].mul_ref(&x.e2))
+                + &(m[2usize][2usize].mul_ref(&x.e3)),
+        }
+    }
+}
+///The action on [`Rotor`] as a matrix (entries quadratic in `self`), for transforming many values by one versor.
+impl<T: self::Ring> self::ActionMatrix<Rotor<T>> for Odd<T> {
+    type Matrix = [[T; 4usize]; 4usize];
+    fn sandwich_matrix(&self) -> [[T; 4usize]; 4usize] {
+        let q0_0 = self.e1.mul_ref(&self.e1);
+        let q0_1 = self.e1.mul_ref(&self.e2);
+        let q0_2 = self.e1.mul_ref(&self.e3);
+        let q0_3 = self.e1.mul_ref(&self.e123);
+        let q1_1 = self.e2.mul_ref(&self.e2);
+        let q1_2 = self.e2.mul_ref(&self.e3);
+        let q1_3 = self.e2.mul_ref(&self.e123);
+        let q2_2 = self.e3.mul_ref(&self.e3);
+        let q2_3 = self.e3.mul_ref(&self.e123);
+        let q3_3 = self.e123.mul_ref(&self.e123);
+        [
+            [
+                ::core::clone::Clone::clone(&q0_0) + &q1_1 + &q2_2 + &q3_3,
+                T::zero(),
+                T::zero(),
+                T::zero(),
+            ],
+            [
+                T::zero(),
+                ::core::clone::Clone::clone(&q2_2) - &q1_1 - &q0_0 + &q3_3,
+                T::from_ratio(2i64, 1i64) * &q0_3 - T::from_ratio(2i64, 1i64) * &q1_2,
+                T::from_ratio(2i64, 1i64) * &q0_2 + T::from_ratio(2i64, 1i64) * &q1_3,
+            ],
+            [
+                T::zero(),
+                T::from_ratio(-2i64, 1i64) * &q0_3 - T::from_ratio(2i64, 1i64) * &q1_2,
+                ::core::clone::Clone::clone(&q1_1) - &q0_0 - &q2_2 + &q3_3,
+                T::from_ratio(2i64, 1i64) * &q2_3 - T::from_ratio(2i64, 1i64) * &q0_1,
+            ],
+            [
+                T::zero(),
+                T::from_ratio(2i64, 1i64) * &q0_2 - T::from_ratio(2i64, 1i64) * &q1_3,
+                T::from_ratio(-2i64, 1i64) * &q0_1 - T::from_ratio(2i64, 1i64) * &q2_3,
+                ::core::clone::Clone::clone(&q0_0) - &q1_1 - &q2_2 + &q3_3,
+            ],
+        ]
+    }
+    fn apply_matrix(&self) -> [[T; 4usize]; 4usize] {
+        let q0_0 = self.e1.mul_ref(&self.e1);
+        let q0_1 = self.e1.mul_ref(&self.e2);
+        let q0_2 = self.e1.mul_ref(&self.e3);
+        let q0_3 = self.e1.mul_ref(&self.e123);
+        let q1_1 = self.e2.mul_ref(&self.e2);
+        let q1_2 = self.e2.mul_ref(&self.e3);
+        let q1_3 = self.e2.mul_ref(&self.e123);
+        let q2_2 = self.e3.mul_ref(&self.e3);
+        let q2_3 = self.e3.mul_ref(&self.e123);
+        let q3_3 = self.e123.mul_ref(&self.e123);
+        [
+            [
+                ::core::clone::Clone::clone(&q0_0) + &q1_1 + &q2_2 + &q3_3,
+                T::zero(),
+                T::zero(),
+                T::zero(),
+            ],
+            [
+                T::zero(),
+                ::core::clone::Clone::clone(&q2_2) - &q1_1 - &q0_0 + &q3_3,
+                T::from_ratio(-2i64, 1i64) * &q0_3 - T::from_ratio(2i64, 1i64) * &q1_2,
+                T::from_ratio(2i64, 1i64) * &q0_2 - T::from_ratio(2i64, 1i64) * &q1_3,
+            ],
+            [
+                T::zero(),
+                T::from_ratio(2i64, 1i64) * &q0_3 - T::from_ratio(2i64, 1i64) * &q1_2,
+                ::core::clone::Clone::clone(&q1_1) - &q0_0 - &q2_2 + &q3_3,
+                T::from_ratio(-2i64, 1i64) * &q0_1 - T::from_ratio(2i64, 1i64) * &q2_3,
+            ],
+            [
+                T::zero(),
+                T::from_ratio(2i64, 1i64) * &q0_2 + T::from_ratio(2i64, 1i64) * &q1_3,
+                T::from_ratio(2i64, 1i64) * &q2_3 - T::from_ratio(2i64, 1i64) * &q0_1,
+                ::core::clone::Clone::clone(&q0_0) - &q1_1 - &q2_2 + &q3_3,
+            ],
+        ]
+    }
+    #[inline]
+    fn transform(m: &[[T; 4usize]; 4usize], x: &Rotor<T>) -> Rotor<T> {
+        Rotor {
+            scalar: (m[0usize][0usize].mul_ref(&x.scalar)),
+            e12: (m[1usize][1usize].mul_ref(&x.e12))
+                + &(m[1usize][2usize].mul_ref(&x.e13))
+                + &(m[1usize][3usize].mul_ref(&x.e23)),
+            e13: (m[2usize][1usize].mul_ref(&x.e12))
+                + &(m[2usize][2usize].mul_ref(&x.e13))
+                + &(m[2usize][3usize].mul_ref(&x.e23)),
+            e23: (m[3usize][1usize].mul_ref(&x.e12))
+                + &(m[3usize][2usize].mul_ref(&x.e13))
+                + &(m[3usize][3usize].mul_ref(&x.e23)),
+        }
+    }
+}
+///The action on [`Odd`] as a matrix (entries quadratic in `self`), for transforming many values by one versor.
+impl<T: self::Ring> self::ActionMatrix<Odd<T>> for Odd<T> {
+    type Matrix = [[T; 4usize]; 4usize];
+    fn sandwich_matrix(&self) -> [[T; 4usize]; 4usize] {
+        let q0_0 = self.e1.mul_ref(&self.e1);
+        let q0_1 = self.e1.mul_ref(&self.e2);
+        let q0_2 = self.e1.mul_ref(&self.e3);
+        let q0_3 = self.e1.mul_ref(&self.e123);
+        let q1_1 = self.e2.mul_ref(&self.e2);
+        let q1_2 = self.e2.mul_ref(&self.e3);
+        let q1_3 = self.e2.mul_ref(&self.e123);
+        let q2_2 = self.e3.mul_ref(&self.e3);
+        let q2_3 = self.e3.mul_ref(&self.e123);
+        let q3_3 = self.e123.mul_ref(&self.e123);
+        [
+            [
+                ::core::clone::Clone::clone(&q0_0) - &q1_1 - &q2_2 + &q3_3,
+                T::from_ratio(2i64, 1i64) * &q0_1 + T::from_ratio(2i64, 1i64) * &q2_3,
+                T::from_ratio(2i64, 1i64) * &q0_2 - T::from_ratio(2i64, 1i64) * &q1_3,
+                T::zero(),
+            ],
+            [
+                T::from_ratio(2i64, 1i64) * &q0_1 - T::from_ratio(2i64, 1i64) * &q2_3,
+                ::core::clone::Clone::clone(&q1_1) - &q0_0 - &q2_2 + &q3_3,
+                T::from_ratio(2i64, 1i64) * &q0_3 + T::from_ratio(2i64, 1i64) * &q1_2,
+                T::zero(),
+            ],
+            [
+                T::from_ratio(2i64, 1i64) * &q0_2 + T::from_ratio(2i64, 1i64) * &q1_3,
+                T::from_ratio(2i64, 1i64) * &q1_2 - T::from_ratio(2i64, 1i64) * &q0_3,
+                ::core::clone::Clone::clone(&q2_2) - &q1_1 - &q0_0 + &q3_3,
+                T::zero(),
+            ],
+            [
+                T::zero(),
+                T::zero(),
+                T::zero(),
+                ::core::clone::Clone::clone(&q0_0) + &q1_1 + &q2_2 + &q3_3,
+            ],
+        ]
+    }
+    fn apply_matrix(&self) -> [[T; 4usize]; 4usize] {
+        let q0_0 = self.e1.mul_ref(&self.e1);
+        let q0_1 = self.e1.mul_ref(&self.e2);
+        let q0_2 = self.e1.mul_ref(&self.e3);
+        let q0_3 = self.e1.mul_ref(&self.e123);
+        let q1_1 = self.e2.mul_ref(&self.e2);
+        let q1_2 = self.e2.mul_ref(&self.e3);
+        let q1_3 = self.e2.mul_ref(&self.e123);
+        let q2_2 = self.e3.mul_ref(&self.e3);
+        let q2_3 = self.e3.mul_ref(&self.e123);
+        let q3_3 = self.e123.mul_ref(&self.e123);
+        [
+            [
+                ::core::clone::Clone::clone(&q0_0) - &q1_1 - &q2_2 + &q3_3,
+                T::from_ratio(2i64, 1i64) * &q0_1 - T::from_ratio(2i64, 1i64) * &q2_3,
+                T::from_ratio(2i64, 1i64) * &q0_2 + T::from_ratio(2i64, 1i64) * &q1_3,
+                T::zero(),
+            ],
+            [
+                T::from_ratio(2i64, 1i64) * &q0_1 + T::from_ratio(2i64, 1i64) * &q2_3,
+                ::core::clone::Clone::clone(&q1_1) - &q0_0 - &q2_2 + &q3_3,
+                T::from_ratio(2i64, 1i64) * &q1_2 - T::from_ratio(2i64, 1i64) * &q0_3,
+                T::zero(),
+            ],
+            [
+                T::from_ratio(2i64, 1i64) * &q0_2 - T::from_ratio(2i64, 1i64) * &q1_3,
+                T::from_ratio(2i64, 1i64) * &q0_3 + T::from_ratio(2i64, 1i64) * &q1_2,
+                ::core::clone::Clone::clone(&q2_2) - &q1_1 - &q0_0 + &q3_3,
+                T::zero(),
+            ],
+            [
+                T::zero(),
+                T::zero(),
+                T::zero(),
+                ::core::clone::Clone::clone(&q0_0) + &q1_1 + &q2_2 + &q3_3,
+            ],
+        ]
+    }
+    #[inline]
+    fn transform(m: &[[T; 4usize]; 4usize], x: &Odd<T>) -> Odd<T> {
+        Odd {
+            e1: (m[0usize][0usize].mul_ref(&x.e1)) + &(m[0usize][1usize].mul_ref(&x.e2))
+                + &(m[0usize][2usize].mul_ref(&x.e3)),
+            e2: (m[1usize][0usize].mul_ref(&x.e1)) + &(m[1usize][1usize].mul_ref(&x.e2))
+                + &(m[1usize][2usize].mul_ref(&x.e3)),
+            e3: (m[2usize][0usize].mul_ref(&x.e1)) + &(m[2usize][1usize].mul_ref(&x.e2))
+                + &(m[2usize][2usize].mul_ref(&x.e3)),
+            e123: (m[3usize][3usize].mul_ref(&x.e123)),
+        }
+    }
+}
 /// The geometric product `self * rhs`.
 pub trait GeometricProduct<Rhs: ?Sized> {
     /// The smallest declared type holding the result.
     type Output;
     /// `self * rhs`.
     fn gp(&self, rhs: &Rhs) -> Self::Output;
+}
+/// The geometric product computed only on the components of a type `Out` chosen by the
+/// caller: the projection of `self * rhs` onto `Out` (coefficients outside `Out` are dropped,
+/// and never computed). Generated for every pair of declared types and every declared `Out`
+/// sharing a basis element with the product's support; the result type selects the kernel
+/// (`let r: Rotor<f64> = a.gp_into(&b);`).
+pub trait GeometricProductInto<Rhs: ?Sized, Out> {
+    /// `<self * rhs>_Out`.
+    fn gp_into(&self, rhs: &Rhs) -> Out;
 }
 /// The outer product `self ^ rhs`.
 pub trait OuterProduct<Rhs: ?Sized> {
@@ -4574,7 +9390,9 @@ pub trait ScalarProduct<Rhs: ?Sized> {
     /// `<self rhs>_0`.
     fn sp(&self, rhs: &Rhs) -> Self::Output;
 }
-/// The regressive product `self ∨ rhs`.
+/// The regressive product (the join) `self ∨ rhs = undual(dual(self) ^ dual(rhs))`, with the
+/// metric-free complements of `dual` (so it needs no invertible pseudoscalar); also the
+/// operator `&` and the generated types' `join` method.
 pub trait RegressiveProduct<Rhs: ?Sized> {
     /// The smallest declared type holding the result.
     type Output;
@@ -4614,6 +9432,21 @@ pub trait Apply<X: ?Sized> {
     type Output;
     /// `self x rev(self)`.
     fn apply(&self, x: &X) -> Self::Output;
+}
+/// The versor action on `X` as a matrix, for transforming many values by one versor: the
+/// action is linear in `x`, so `transform(&s.apply_matrix(), &x) == s.apply(&x)` (and the
+/// same for `sandwich`), exactly, with the matrix (entries quadratic in `self`) computed once.
+/// Generated for each fused action whose matrix is small (motors and rotors on points,
+/// vectors, lines, planes).
+pub trait ActionMatrix<X> {
+    /// `[[T; LEN]; LEN]` for `X` of `LEN` coefficients, row = output coefficient.
+    type Matrix;
+    /// The matrix of `x ↦ <rev(self) x self>_X` ([`Sandwich`]).
+    fn sandwich_matrix(&self) -> Self::Matrix;
+    /// The matrix of `x ↦ <self x rev(self)>_X` ([`Apply`]).
+    fn apply_matrix(&self) -> Self::Matrix;
+    /// The matrix applied to `x` (skipping entries that are structurally zero).
+    fn transform(m: &Self::Matrix, x: &X) -> X;
 }
 /// algebra-core's `Ring`, reduced to the methods the kernels call; implemented below for `f32` and `f64`.
 pub trait Ring: Clone + Debug + Display + PartialEq + Add<
