@@ -8,8 +8,8 @@
 
 use crate::error::CliError;
 use crate::output::{mv_human, mv_json};
+use motion::Even;
 use motion::HermiteSegment;
-use motion::Motor;
 pub(crate) use motion::spec::HermiteSpec as Spec;
 use motion::spec::SpecError;
 use serde_json::{Value, json};
@@ -88,7 +88,7 @@ fn spec_error(path: &str, e: SpecError) -> CliError {
 }
 
 /// A JSON list of multivectors in g123inf blade names.
-fn mv_list<'a>(list: impl Iterator<Item = &'a Motor<f64>>) -> Value {
+fn mv_list<'a>(list: impl Iterator<Item = &'a Even<f64>>) -> Value {
     Value::Array(list.map(|m| mv_json(&m.to_multivector())).collect())
 }
 
@@ -107,11 +107,12 @@ pub fn hermite(path: &str, json: bool) -> Result<String, CliError> {
     let seg = build_segment(&spec)?;
     let kind = seg.kind;
     let degree = seg.degree();
-    let poses: Vec<&Motor<f64>> = seg.control_poses.iter().map(|s| s.as_motor()).collect();
+    let poses: Vec<&Even<f64>> = seg.control_poses.iter().collect();
+    let nus: Vec<Even<f64>> = seg.velocity_bivectors.iter().map(Even::from).collect();
     if json {
         let out = json!({
             "control_poses": mv_list(poses.iter().copied()),
-            "velocity_bivectors": mv_list(seg.velocity_bivectors.iter()),
+            "velocity_bivectors": mv_list(nus.iter()),
             "velocity_indicatrices": mv_list(seg.velocity_indicatrices.iter()),
         });
         return Ok(out.to_string());
@@ -122,7 +123,7 @@ pub fn hermite(path: &str, json: bool) -> Result<String, CliError> {
         lines.push(format!("  S{i} = {}", mv_human(&m.to_multivector())));
     }
     lines.push("velocity bivectors (nu = Omega e123 + u einf):".to_string());
-    for (i, m) in [0, n].into_iter().zip(&seg.velocity_bivectors) {
+    for (i, m) in [0, n].into_iter().zip(&nus) {
         lines.push(format!("  nu{i} = {}", mv_human(&m.to_multivector())));
     }
     lines.push("velocity indicatrices (Psi = shape (nu + gamma)):".to_string());

@@ -19,7 +19,7 @@ use crate::scalar::format_f64;
 use motion::method::Method;
 use motion::trajectory::{Trajectory, TrajectoryError, TrajectorySample, Velocities};
 use motion::velocity::Twist;
-use motion::{HermiteShapes, JoinError, Motor, Pose, Pseudoscalar, Shape};
+use motion::{HermiteShapes, JoinError, Pose, Pseudoscalar, Shape, Vec3};
 use serde::Deserialize;
 use serde_json::{Value, json};
 
@@ -123,7 +123,7 @@ fn pose(path: &str, i: usize, v: &Value) -> Result<Pose<f64>, CliError> {
             .filter(|x| x.is_finite())
             .ok_or_else(|| usage(path, format!("`{}.{key}` must be a finite number", at("motor"))))?;
         }
-        let s = Pose::from_motor(Motor::new(c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7]));
+        let s = Pose::new(c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7]);
         if s.is_singular() {
             return Err(usage(path, format!("`{}` is singular (rev(S) S has zero scalar part)", at("motor"))));
         }
@@ -141,12 +141,8 @@ fn pose(path: &str, i: usize, v: &Value) -> Result<Pose<f64>, CliError> {
     if let Some(q) = obj.get("quaternion") {
         let q: [f64; 4] = serde_json::from_value(q.clone())
             .map_err(|_| usage(path, format!("`{}` must be [w, x, y, z]", at("quaternion"))))?;
-        let n = q.iter().map(|x| x * x).sum::<f64>().sqrt();
-        if !(n > 0.0 && n.is_finite()) {
-            return Err(usage(path, format!("`{}` must be non-zero and finite", at("quaternion"))));
-        }
-        let r = Pose::rotor_from_parts(&(q[0] / n), &1.0, &[q[1] / n, q[2] / n, q[3] / n]);
-        return Ok(&r * &Pose::translation(&position));
+        return Pose::from_quaternion_translation(&q, &position)
+            .map_err(|_| usage(path, format!("`{}` must be non-zero and finite", at("quaternion"))));
     }
     match (obj.get("axis"), obj.get("angle")) {
         (None, None) => Ok(Pose::translation(&position)),
@@ -251,7 +247,7 @@ fn build(path: &str, spec: &Spec) -> Result<Built, CliError> {
                     let p = s.transform_point(&[0.0; 3]).map_err(|e| CliError::math(e.to_string()))?;
                     let o = w.angular_velocity;
                     let c = [o[1] * p[2] - o[2] * p[1], o[2] * p[0] - o[0] * p[2], o[0] * p[1] - o[1] * p[0]];
-                    Ok(Twist { angular: o, linear: std::array::from_fn(|k| w.velocity[k] - c[k]) })
+                    Ok(Twist { angular: o.into(), linear: Vec3::from(std::array::from_fn(|k| w.velocity[k] - c[k])) })
                 })
                 .collect::<Result<Vec<_>, CliError>>()?,
         ),
@@ -274,8 +270,8 @@ fn finite3(v: &[f64; 3]) -> bool {
 fn samples(b: &Built, n: usize) -> Result<Vec<TrajectorySample<f64>>, CliError> {
     let out = b.trajectory.sample_evenly(n, &b.body_points).map_err(|e| CliError::math(e.to_string()))?;
     for s in &out {
-        let ok =
-            s.points.iter().all(|p| finite3(&p.position) && finite3(&p.velocity)) && finite3(&s.space_twist.angular);
+        let ok = s.points.iter().all(|p| finite3(&p.position) && finite3(&p.velocity))
+            && finite3(&s.space_twist.angular.to_array());
         if !ok {
             return Err(CliError::math(format!("the result at t = {} is not finite (overflow)", format_f64(s.t))));
         }
@@ -297,7 +293,7 @@ pub fn interpolate(path: &str, json: bool) -> Result<String, CliError> {
             .map(|(k, seg)| {
                 json!({"t0": b.times[k], "t1": b.times[k + 1], "representation": b.method.representation(),
                        "degree": seg.degree(),
-                       "control_poses": seg.control_poses.iter().map(|s| mv_json(&s.as_motor().to_multivector())).collect::<Vec<_>>()})
+                       "control_poses": seg.control_poses.iter().map(|s| mv_json(&s.to_multivector())).collect::<Vec<_>>()})
             })
             .collect();
         let mut out = Vec::with_capacity(sampled.len());
@@ -308,7 +304,7 @@ pub fn interpolate(path: &str, json: bool) -> Result<String, CliError> {
             out.push(json!({"t": s.t, "matrix": matrix.map(|r| r.map(|x| x + 0.0)),
                 "points": s.points.iter().map(|p| v3(&p.position)).collect::<Vec<_>>(),
                 "velocities": s.points.iter().map(|p| v3(&p.velocity)).collect::<Vec<_>>(),
-                "angular_velocity": v3(&s.space_twist.angular)}));
+                "angular_velocity": v3(&s.space_twist.angular.to_array())}));
         }
         return Ok(json!({"method": name, "parameters": b.times, "segments": segs, "samples": out}).to_string());
     }
@@ -317,7 +313,7 @@ pub fn interpolate(path: &str, json: bool) -> Result<String, CliError> {
     for (k, seg) in segments.iter().enumerate() {
         lines.push(format!("segment {k} (t = {} .. {}):", format_f64(b.times[k]), format_f64(b.times[k + 1])));
         for (i, s) in seg.control_poses.iter().enumerate() {
-            lines.push(format!("  S{i} = {}", mv_human(&s.as_motor().to_multivector())));
+            lines.push(format!("  S{i} = {}", mv_human(&s.to_multivector())));
         }
     }
     for s in &sampled {
@@ -341,7 +337,7 @@ pub(crate) fn sampled(path: &str, n: usize) -> Result<Option<Sampled>, CliError>
         .map(|s| Sample {
             t: s.t,
             linear_speed: norm(&s.points[0].velocity),
-            angular_speed: norm(&s.space_twist.angular),
+            angular_speed: norm(&s.space_twist.angular.to_array()),
             position: s.points[0].position,
             pose: s.pose,
         })

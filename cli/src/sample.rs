@@ -14,7 +14,7 @@ use crate::hermite::{build_segment, read_spec};
 use crate::output::{mv_human, mv_json, text_table};
 use crate::scalar::format_f64;
 use motion::velocity::velocity;
-use motion::{AdditiveBezier, AnyMotion, MultiplicativeBezier, Pose, SegmentKind};
+use motion::{AnyMotion, Pose, SegmentKind};
 use serde_json::{Value, json};
 
 /// The most samples accepted.
@@ -70,12 +70,7 @@ pub(crate) fn sample_spec(path: &str, n: usize) -> Result<Sampled, CliError> {
     // building the segment is O(degree); sampling it is O(samples x degree^2)
     crate::budget::check(&format!("sampling degree {degree} at {n} values"), crate::budget::sampling_work(degree, n))?;
     let curve = |e: motion::CurveError| CliError::math(e.to_string());
-    let motion: AnyMotion<f64> = match kind {
-        SegmentKind::Additive => AnyMotion::AdditiveBezier(AdditiveBezier::new(seg.control_poses).map_err(curve)?),
-        SegmentKind::Multiplicative => {
-            AnyMotion::MultiplicativeBezier(MultiplicativeBezier::new(seg.control_poses).map_err(curve)?)
-        }
-    };
+    let motion: AnyMotion<f64> = seg.into_motion().map_err(curve)?;
     let last = (n - 1) as f64;
     let mut samples = Vec::with_capacity(n);
     for i in 0..n {
@@ -84,9 +79,14 @@ pub(crate) fn sample_spec(path: &str, n: usize) -> Result<Sampled, CliError> {
         let (position, v) = vel
             .body_point_velocity(&body_point)
             .map_err(|e| CliError::math(format!("at t = {}: {e}", format_f64(t))))?;
-        let sample =
-            Sample { t, linear_speed: norm(&v), angular_speed: norm(&vel.twist().angular), position, pose: vel.pose };
-        let m = sample.pose.as_motor();
+        let sample = Sample {
+            t,
+            linear_speed: norm(&v),
+            angular_speed: norm(&vel.twist().angular.to_array()),
+            position,
+            pose: vel.pose,
+        };
+        let m = &sample.pose;
         let coefficients = [m.scalar, m.e12, m.e13, m.e23, m.e1inf, m.e2inf, m.e3inf, m.e123inf];
         let all = coefficients.iter().chain(&sample.position).chain([&sample.linear_speed, &sample.angular_speed]);
         if !all.into_iter().all(|x| x.is_finite()) {
@@ -109,7 +109,7 @@ pub fn sample(path: &str, n: usize, json: bool) -> Result<String, CliError> {
             }
             let one: Value = json!({
                 "t": x.t,
-                "pose": mv_json(&x.pose.as_motor().to_multivector()),
+                "pose": mv_json(&x.pose.to_multivector()),
                 "position": x.position,
                 "linear_speed": x.linear_speed,
                 "angular_speed": x.angular_speed,
@@ -126,7 +126,7 @@ pub fn sample(path: &str, n: usize, json: bool) -> Result<String, CliError> {
         row.extend(x.position.iter().map(|c| format_f64(*c)));
         row.push(format_f64(x.linear_speed));
         row.push(format_f64(x.angular_speed));
-        row.push(mv_human(&x.pose.as_motor().to_multivector()));
+        row.push(mv_human(&x.pose.to_multivector()));
         rows.push(row);
     }
     let title = format!("{}, {} samples", crate::plot::title(&s), s.samples.len());

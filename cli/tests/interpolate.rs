@@ -247,3 +247,17 @@ fn sample_and_plot_accept_an_interpolate_spec() {
     assert!(msg.contains("multiplicative motion of 4 segments of degree 3"), "{msg}");
     assert!(std::fs::read_to_string(out.path()).unwrap().starts_with("<svg"));
 }
+
+/// A quaternion is normalised without overflow (the library's `Pose::from_quaternion_translation`):
+/// components of size 1e200 give the same key pose as the unit quaternion.
+#[test]
+fn huge_quaternion_components() {
+    let big = Q.map(|x| x * 1e200);
+    let text = format!(
+        r#"{{"method": "ccm-multiplicative", "poses": [{{"position": [0, 0, 0]}}, {{"position": [1, 1, 0], "quaternion": {big:?}}}], "samples": 2}}"#
+    );
+    let v = run_json("huge-quaternion", &text);
+    let got = matrix(&v["samples"][1]["matrix"]);
+    let want = quaternion_matrix(Q, [1.0, 1.0, 0.0]);
+    assert!(max_diff(&got, &want) < 1e-14, "{got:?} vs {want:?}");
+}

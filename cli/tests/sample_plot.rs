@@ -123,7 +123,7 @@ fn body_point_samples_agree_with_the_library() {
         let (q, qv) = v.body_point_velocity(&body).unwrap();
         assert_close3(&x.position, &q, 1e-12);
         assert!(close(x.linear_speed, norm(&qv), 1e-12));
-        assert!(close(x.angular_speed, norm(&v.twist().angular), 1e-12));
+        assert!(close(x.angular_speed, norm(&v.twist().angular.to_array()), 1e-12));
         assert_close3(&x.position, &m.pose(&x.t).unwrap().transform_point(&body).unwrap(), 1e-12);
     }
     // The ends: the body point carried by the end poses.
@@ -140,7 +140,7 @@ fn body_point_samples_agree_with_the_library() {
         let (q, qv) = v.body_point_velocity(&body).unwrap();
         assert_close3(&x.position, &q, 1e-12);
         assert!(close(x.linear_speed, norm(&qv), 1e-12));
-        assert!(close(x.angular_speed, norm(&v.twist().angular), 1e-12));
+        assert!(close(x.angular_speed, norm(&v.twist().angular.to_array()), 1e-12));
     }
     assert_close3(&s[4].position, &b.pose.transform_point(&body).unwrap(), 1e-9);
     assert_close3(&s[0].position, &body, 1e-12);

@@ -51,10 +51,10 @@ fn data() -> Data {
 }
 
 fn poses<M: Motion<f64>>(m: &M, ts: &[f64]) -> f64 {
-    ts.iter().map(|t| black_box(m.pose(black_box(t)).unwrap()).as_motor().scalar).sum()
+    ts.iter().map(|t| black_box(m.pose(black_box(t)).unwrap()).scalar).sum()
 }
 
-fn psis<M: Motion<f64>>(m: &M, ts: &[f64]) -> f64 {
+fn psis<M: motion::MapScalar<f64, algebra_core::Jet<f64>>>(m: &M, ts: &[f64]) -> f64 {
     ts.iter().map(|t| black_box(velocity_indicatrix(m, black_box(t)).unwrap()).e12).sum()
 }
 

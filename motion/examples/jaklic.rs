@@ -18,7 +18,7 @@
 
 use motion::joins;
 use motion::paper::jaklic::segments;
-use motion::{Motor, Pose, SegmentKind};
+use motion::{Bivector, Pose, SegmentKind};
 
 fn format_pose(s: &Pose<f64>) -> String {
     let names = ["", "e12", "e13", "e23", "e1inf", "e2inf", "e3inf", "ω"];
@@ -85,10 +85,8 @@ trait MaxAbs {
     fn components_max_abs(&self) -> f64;
 }
 
-impl MaxAbs for Motor<f64> {
+impl MaxAbs for Bivector<f64> {
     fn components_max_abs(&self) -> f64 {
-        [self.scalar, self.e12, self.e13, self.e23, self.e1inf, self.e2inf, self.e3inf, self.e123inf]
-            .into_iter()
-            .fold(0.0, |m, x| m.max(x.abs()))
+        [self.e12, self.e13, self.e23, self.e1inf, self.e2inf, self.e3inf].into_iter().fold(0.0, |m, x| m.max(x.abs()))
     }
 }

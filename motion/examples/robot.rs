@@ -44,8 +44,8 @@ fn main() {
                 "{:5.2} {} {} {}",
                 s.t,
                 f(&s.points[0].position),
-                f(&s.space_twist.angular),
-                f(&s.body_twist.linear)
+                f(&s.space_twist.angular.to_array()),
+                f(&s.body_twist.linear.to_array())
             );
         }
         Ok(())

@@ -34,7 +34,7 @@ impl<T: Ring> Pose<T> {
     /// assert_eq!(alpha, 1.0);
     /// ```
     pub fn action_rows(&self) -> ([[T; 4]; 3], T) {
-        let s = &self.0;
+        let s = self;
         let (s0, s12, s13, s23) = (&s.scalar, &s.e12, &s.e13, &s.e23);
         let (s1, s2, s3, sw) = (&s.e1inf, &s.e2inf, &s.e3inf, &s.e123inf);
         let two = |x: T| x.add_ref(&x);

@@ -23,9 +23,10 @@
 //! assert!(mul.pose(&1.0).unwrap().is_equivalent(&c, &1e-14).unwrap());
 //! ```
 
-use crate::{MotionError, Pose};
-use algebra_core::{Real, Ring};
-use gam_algebras::g123inf::Motor;
+use crate::blend::{Additive, Blend, Multiplicative};
+use crate::joins::JoinError;
+use crate::{Even, MotionError, Pose};
+use algebra_core::{Field, Real, Ring};
 use std::convert::Infallible;
 
 /// Why building or evaluating a motion curve failed.
@@ -137,25 +138,24 @@ pub enum CurveError {
 
 /// A motion `t ↦ S(t)` over a parameter interval: Bezier, B-spline, piecewise, reparametrised.
 ///
-/// `Mapped<U>` is the same motion with its scalar changed (control poses, knots and breakpoints
-/// mapped by a function): lifting to dual numbers ([`algebra_core::Jet`], num-dual) and
-/// evaluating at `t + ε` gives `S(t)` and `dS/dt` from the same code (see [`crate::velocity`]).
+/// The trait asks only for a [`Ring`]: an additive motion over exact rationals is a `Motion`.
+/// Changing the scalar (lifting to dual numbers to differentiate) is [`MapScalar`]; the
+/// velocity functions of [`crate::velocity`] ask for `MapScalar<T, Jet<T>>`, so they work for
+/// every motion whose kind works over `Jet<T>` (additive over `Q` included).
 ///
 /// ```
 /// use algebra_core::Jet;
-/// use motion::{AdditiveBezier, Motion, Pose};
+/// use motion::{AdditiveBezier, MapScalar, Motion, Pose};
 /// let m = AdditiveBezier::new(vec![Pose::<f64>::identity(), Pose::translation(&[2.0, 0.0, 0.0])]).unwrap();
 /// assert_eq!(m.domain(), [0.0, 1.0]);
 /// let lifted = m.map_scalar(&|x: &f64| Jet::constant(*x));
 /// let s = lifted.pose(&Jet::variable(0.5)).unwrap();
-/// assert_eq!(s.as_motor().e1inf, Jet::new(0.5, 1.0)); // S = 1 + t e1inf, dS/dt = e1inf
+/// assert_eq!(s.e1inf, Jet::new(0.5, 1.0)); // S = 1 + t e1inf, dS/dt = e1inf
 /// ```
-pub trait Motion<T: Real> {
-    /// The same kind of motion over the scalar `U`.
-    type Mapped<U: Real>: Motion<U>;
-
+pub trait Motion<T: Ring> {
     /// The pose `S(t)` for `t` in [`Motion::domain`]: fails outside it (and for NaN) with
-    /// [`CurveError::OutOfDomain`], and where the construction meets a singular pose.
+    /// [`CurveError::OutOfDomain`], and where the construction meets a singular pose. Needs
+    /// ordered scalars (over unordered ones use [`Motion::evaluate`]).
     ///
     /// ```
     /// use motion::{Motion, MultiplicativeBezier, Pose};
@@ -164,7 +164,10 @@ pub trait Motion<T: Real> {
     /// assert!((p[0] - 0.5).abs() < 1e-15);
     /// assert!(m.pose(&1.25).is_err());
     /// ```
-    fn pose(&self, t: &T) -> Result<Pose<T>, CurveError> {
+    fn pose(&self, t: &T) -> Result<Pose<T>, CurveError>
+    where
+        T: PartialOrd,
+    {
         check_domain(t, &self.domain())?;
         self.evaluate(t)
     }
@@ -189,18 +192,34 @@ pub trait Motion<T: Real> {
     /// assert_eq!(m.domain(), [0.0, 1.0]);
     /// ```
     fn domain(&self) -> [T; 2];
+}
 
-    /// The same motion with every scalar (control-pose coefficient, knot, breakpoint) mapped
-    /// by `f`; `f` should embed `T` in `U` (e.g. `x ↦ Jet::constant(x)`).
+/// The same motion over the scalar `U`: every scalar (control-pose coefficient, knot,
+/// breakpoint) mapped by a function that should embed `T` in `U` (e.g. `x ↦ Jet::constant(x)`).
+/// Lifting to dual numbers and evaluating at `t + ε` gives `S(t)` and `dS/dt` from the same
+/// code (see [`crate::velocity`]).
+///
+/// ```
+/// use algebra_core::Jet;
+/// use motion::{MapScalar, Motion, MultiplicativeBezier, Pose};
+/// let m = MultiplicativeBezier::new(vec![Pose::<f64>::identity(), Pose::translation(&[2.0, 0.0, 0.0])]).unwrap();
+/// let d = m.map_scalar(&|x: &f64| Jet::constant(*x)).pose(&Jet::variable(0.3)).unwrap();
+/// assert!((d.e1inf.eps - 1.0).abs() < 1e-15);
+/// ```
+pub trait MapScalar<T: Ring, U: Ring>: Motion<T> {
+    /// The motion over `U`.
+    type Mapped: Motion<U>;
+
+    /// The motion with every scalar mapped by `f`.
     ///
     /// ```
-    /// use algebra_core::Jet;
-    /// use motion::{Motion, MultiplicativeBezier, Pose};
-    /// let m = MultiplicativeBezier::new(vec![Pose::<f64>::identity(), Pose::translation(&[2.0, 0.0, 0.0])]).unwrap();
-    /// let d = m.map_scalar(&|x: &f64| Jet::constant(*x)).pose(&Jet::variable(0.3)).unwrap();
-    /// assert!((d.as_motor().e1inf.eps - 1.0).abs() < 1e-15);
+    /// use algebra_core::rational::{q, rational_to_f64, Q};
+    /// use motion::{AdditiveBezier, MapScalar, Motion, Pose};
+    /// let m = AdditiveBezier::new(vec![Pose::<Q>::identity(), Pose::translation(&[q(2), q(0), q(0)])]).unwrap();
+    /// let f = m.map_scalar(&|x: &Q| rational_to_f64(x));
+    /// assert_eq!(f.evaluate(&0.5).unwrap(), Pose::translation(&[1.0, 0.0, 0.0]));
     /// ```
-    fn map_scalar<U: Real>(&self, f: &dyn Fn(&T) -> U) -> Self::Mapped<U>;
+    fn map_scalar(&self, f: &dyn Fn(&T) -> U) -> Self::Mapped;
 }
 
 impl<T: Ring> Pose<T> {
@@ -210,20 +229,20 @@ impl<T: Ring> Pose<T> {
     /// ```
     /// use algebra_core::Jet;
     /// let p = motion::Pose::translation(&[2.0, 0.0, 0.0]).map_scalar(&|x: &f64| Jet::constant(*x));
-    /// assert_eq!(p.as_motor().e1inf, Jet::constant(1.0));
+    /// assert_eq!(p.e1inf, Jet::constant(1.0));
     /// ```
     pub fn map_scalar<U: Ring>(&self, f: &dyn Fn(&T) -> U) -> Pose<U> {
-        Pose(map_motor(&self.0, f))
+        map_even(self, f)
     }
 }
 
-/// A [`Motor`] with each coefficient mapped by `f`.
-pub(crate) fn map_motor<T: Ring, U: Ring>(m: &Motor<T>, f: &dyn Fn(&T) -> U) -> Motor<U> {
-    Motor::new(f(&m.scalar), f(&m.e12), f(&m.e13), f(&m.e23), f(&m.e1inf), f(&m.e2inf), f(&m.e3inf), f(&m.e123inf))
+/// An even element with each coefficient mapped by `f`.
+pub(crate) fn map_even<T: Ring, U: Ring>(m: &Pose<T>, f: &dyn Fn(&T) -> U) -> Pose<U> {
+    Pose::new(f(&m.scalar), f(&m.e12), f(&m.e13), f(&m.e23), f(&m.e1inf), f(&m.e2inf), f(&m.e3inf), f(&m.e123inf))
 }
 
 /// `Ok` when `start ≤ t ≤ end` (false for NaN), else [`CurveError::OutOfDomain`].
-pub(crate) fn check_domain<T: Real>(t: &T, domain: &[T; 2]) -> Result<(), CurveError> {
+pub(crate) fn check_domain<T: Ring + PartialOrd>(t: &T, domain: &[T; 2]) -> Result<(), CurveError> {
     if *t >= domain[0] && *t <= domain[1] {
         Ok(())
     } else {
@@ -268,6 +287,24 @@ pub(crate) fn de_casteljau_with<T: Ring, E>(
     Ok(column.pop().expect("a motion has at least one control pose"))
 }
 
+/// A Bezier motion of degree `n` on `[0, 1]` with the pairwise combination of the blend `B`
+/// ([`Additive`]: eq. 18, [`Multiplicative`]: Fig. 2 with eq. 15), from `n + 1 ≥ 1` control
+/// poses (unit or not). [`AdditiveBezier`] and [`MultiplicativeBezier`] name the two kinds.
+///
+/// ```
+/// use motion::{Additive, Bezier, Motion, Multiplicative, Pose};
+/// let poses = vec![Pose::<f64>::identity(), Pose::translation(&[2.0, 0.0, 0.0])];
+/// let a = Bezier::<f64, Additive>::new(poses.clone()).unwrap();
+/// let m = Bezier::<f64, Multiplicative>::new(poses).unwrap();
+/// // A pure translation: both kinds agree.
+/// assert_eq!(a.pose(&0.5).unwrap(), m.pose(&0.5).unwrap());
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct Bezier<T: Ring, B> {
+    poses: Vec<Pose<T>>,
+    blend: B,
+}
+
 /// The additive Bezier motion `S(t) = Σ_{i=0}^{n} C(n, i) (1 - t)^{n-i} t^i S_i` (eq. 18) of
 /// degree `n` on `[0, 1]`, from `n + 1 ≥ 1` control poses (unit or not).
 ///
@@ -288,12 +325,29 @@ pub(crate) fn de_casteljau_with<T: Ring, E>(
 /// assert_eq!(m.bernstein(&half), m.de_casteljau(&half));
 /// assert_eq!(m.bernstein(&half), Pose::translation(&[ratio(3, 2), ratio(1, 2), q(0)]));
 /// ```
-#[derive(Clone, Debug, PartialEq)]
-pub struct AdditiveBezier<T: Ring> {
-    poses: Vec<Pose<T>>,
-}
+pub type AdditiveBezier<T> = Bezier<T, Additive>;
 
-impl<T: Ring> AdditiveBezier<T> {
+/// The multiplicative Bezier motion of degree `n` on `[0, 1]`: the de Casteljau tableau of
+/// Fig. 2 with the slerp `Φ(A, B; t) = A (rev(A) B)^t` (eq. 15, [`Pose::slerp`]) as the
+/// pairwise combination.
+///
+/// Control poses are used as given (the paper's definition). With unitary control poses the
+/// motion is unitary, `S(0) = S_0`, `S(1) = S_n`, and reversing the poses reverses the motion.
+/// With non-unit poses every tableau entry is a pseudoscalar multiple of the unitized one
+/// (eq. 16, Lemma 4.1): the same transforms, but `S(1)` is only *equivalent* to `S_n`, the
+/// reversal holds only up to equivalence, and Theorem 4.5(ii)'s formula at `t = 1` fails
+/// (see the tests); [`MultiplicativeBezier::unitized`] avoids all of that.
+///
+/// ```
+/// use motion::{Motion, MultiplicativeBezier, Pose};
+/// let r = Pose::rotation(&[0.0, 0.0, 1.0], &std::f64::consts::FRAC_PI_2).unwrap();
+/// let m = MultiplicativeBezier::new(vec![Pose::identity(), r.clone()]).unwrap();
+/// let half = m.pose(&0.5).unwrap();
+/// assert!(half.is_equivalent(&Pose::rotation(&[0.0, 0.0, 1.0], &std::f64::consts::FRAC_PI_4).unwrap(), &1e-15).unwrap());
+/// ```
+pub type MultiplicativeBezier<T> = Bezier<T, Multiplicative>;
+
+impl<T: Ring, B: Default> Bezier<T, B> {
     /// The motion with control poses `S_0, ..., S_n` (at least one).
     ///
     /// ```
@@ -302,13 +356,13 @@ impl<T: Ring> AdditiveBezier<T> {
     /// ```
     pub fn new(poses: Vec<Pose<T>>) -> Result<Self, CurveError> {
         at_least_one(&poses)?;
-        Ok(AdditiveBezier { poses })
+        Ok(Bezier { poses, blend: B::default() })
     }
 
     /// The control poses.
     ///
     /// ```
-    /// let m = motion::AdditiveBezier::new(vec![motion::Pose::<f64>::identity(); 2]).unwrap();
+    /// let m = motion::MultiplicativeBezier::new(vec![motion::Pose::<f64>::identity(); 2]).unwrap();
     /// assert_eq!(m.poses().len(), 2);
     /// ```
     pub fn poses(&self) -> &[Pose<T>] {
@@ -324,6 +378,65 @@ impl<T: Ring> AdditiveBezier<T> {
         self.poses.len() - 1
     }
 
+    /// The control poses in reverse order: `S_{n..0}(1 - t) = S_{0..n}(t)` for every `t` for
+    /// additive motions (the Bernstein basis is symmetric), exactly over exact scalars; for
+    /// multiplicative ones with unitary control poses (the paper's proof of Theorem 4.5 at
+    /// `t = 1`), and for non-unit ones only up to a pseudoscalar factor (the same transform).
+    ///
+    /// ```
+    /// use algebra_core::rational::{q, ratio, Q};
+    /// use motion::{AdditiveBezier, MultiplicativeBezier, Pose};
+    /// let m = AdditiveBezier::new(vec![Pose::<Q>::identity(), Pose::translation(&[q(3), q(0), q(0)])]).unwrap();
+    /// assert_eq!(m.reversed().bernstein(&ratio(1, 3)), m.bernstein(&ratio(2, 3)));
+    /// let b = Pose::from_axis_angle_translation(&[1.0, 0.0, 0.0], &1.0, &[0.0, 2.0, 0.0]).unwrap();
+    /// let m = MultiplicativeBezier::new(vec![Pose::<f64>::identity(), b]).unwrap();
+    /// let (x, y) = (m.de_casteljau(&0.3).unwrap(), m.reversed().de_casteljau(&0.7).unwrap());
+    /// assert!((&x - &y).components().iter().all(|c| c.abs() < 1e-15));
+    /// ```
+    pub fn reversed(&self) -> Self {
+        Bezier { poses: self.poses.iter().rev().cloned().collect(), blend: B::default() }
+    }
+}
+
+impl<T: Ring, B: Blend<T>> Bezier<T, B> {
+    /// The end indicatrices `[Ψ(0), Ψ(1)]` (eq. 20 or 21, [`Blend::end_indicatrices`]).
+    ///
+    /// ```
+    /// use algebra_core::rational::{q, Q};
+    /// use motion::{AdditiveBezier, Pose};
+    /// let m = AdditiveBezier::new(vec![Pose::<Q>::identity(), Pose::translation(&[q(2), q(0), q(0)])]).unwrap();
+    /// assert_eq!(m.end_indicatrices()?[0].e1inf, q(2));
+    /// # Ok::<(), motion::joins::JoinError>(())
+    /// ```
+    pub fn end_indicatrices(&self) -> Result<[Even<T>; 2], JoinError>
+    where
+        T: Field,
+    {
+        B::end_indicatrices(&self.poses)
+    }
+}
+
+impl<T: Ring, B: Blend<T>> Motion<T> for Bezier<T, B> {
+    /// `S(t)`: the apex of the de Casteljau tableau of [`Blend::blend`] (for additive motions
+    /// the Bernstein sum agrees).
+    fn evaluate(&self, t: &T) -> Result<Pose<T>, CurveError> {
+        Ok(de_casteljau_with(&self.poses, t, B::blend)?)
+    }
+
+    fn domain(&self) -> [T; 2] {
+        unit_interval()
+    }
+}
+
+impl<T: Ring, U: Ring, B: Blend<T> + Blend<U>> MapScalar<T, U> for Bezier<T, B> {
+    type Mapped = Bezier<U, B>;
+
+    fn map_scalar(&self, f: &dyn Fn(&T) -> U) -> Bezier<U, B> {
+        Bezier { poses: self.poses.iter().map(|p| p.map_scalar(f)).collect(), blend: self.blend }
+    }
+}
+
+impl<T: Ring> Bezier<T, Additive> {
     /// `S(t)` by the Bernstein sum of eq. (18), for any `t` (extrapolates outside `[0, 1]`).
     /// Binomial coefficients are built as exact ratios.
     ///
@@ -344,15 +457,15 @@ impl<T: Ring> AdditiveBezier<T> {
             s_pow.push(s_pow[i - 1].mul_ref(&s));
         }
         let mut binomial = T::one();
-        let mut sum = Motor::zero();
+        let mut sum = Pose::zero();
         for (i, pose) in self.poses.iter().enumerate() {
             if i > 0 {
                 binomial = binomial.mul_ref(&T::from_ratio((n + 1 - i) as i64, i as i64));
             }
             let weight = binomial.mul_ref(&s_pow[n - i]).mul_ref(&t_pow[i]);
-            sum += pose.0.scale(&weight);
+            sum += pose.scale(&weight);
         }
-        Pose(sum)
+        sum
     }
 
     /// `S(t)` by the de Casteljau tableau of additive combinations `(1 - t) A + t B`
@@ -382,19 +495,6 @@ impl<T: Ring> AdditiveBezier<T> {
         columns
     }
 
-    /// The control poses in reverse order: `S_{n..0}(1 - t) = S_{0..n}(t)` for every `t`
-    /// (the Bernstein basis is symmetric), exactly over exact scalars.
-    ///
-    /// ```
-    /// use algebra_core::rational::{q, ratio, Q};
-    /// use motion::{AdditiveBezier, Pose};
-    /// let m = AdditiveBezier::new(vec![Pose::<Q>::identity(), Pose::translation(&[q(3), q(0), q(0)])]).unwrap();
-    /// assert_eq!(m.reversed().bernstein(&ratio(1, 3)), m.bernstein(&ratio(2, 3)));
-    /// ```
-    pub fn reversed(&self) -> Self {
-        AdditiveBezier { poses: self.poses.iter().rev().cloned().collect() }
-    }
-
     /// Degree elevation: the same motion with `n + 2` control poses
     /// `S'_i = (i/(n+1)) S_{i-1} + (1 - i/(n+1)) S_i` (exact over exact scalars).
     ///
@@ -415,7 +515,7 @@ impl<T: Ring> AdditiveBezier<T> {
             poses.push(&self.poses[i - 1].scale(&w) + &self.poses[i].scale(&T::one().sub_ref(&w)));
         }
         poses.push(self.poses[self.poses.len() - 1].clone());
-        AdditiveBezier { poses }
+        Bezier { poses, blend: Additive }
     }
 
     /// The same motion over another scalar (each control-pose coefficient mapped by `f`), for
@@ -427,84 +527,14 @@ impl<T: Ring> AdditiveBezier<T> {
     /// use motion::{AdditiveBezier, Pose};
     /// let m = AdditiveBezier::new(vec![Pose::<Q>::identity(), Pose::translation(&[q(2), q(0), q(0)])]).unwrap();
     /// let d = m.map_ring(&|x: &Q| Jet::constant(x.clone())).bernstein(&Jet::variable(q(0)));
-    /// assert_eq!(d.as_motor().e1inf.eps, q(1)); // dS/dt = S_1 - S_0
+    /// assert_eq!(d.e1inf.eps, q(1)); // dS/dt = S_1 - S_0
     /// ```
-    pub fn map_ring<U: Ring>(&self, f: &dyn Fn(&T) -> U) -> AdditiveBezier<U> {
-        AdditiveBezier { poses: self.poses.iter().map(|p| p.map_scalar(f)).collect() }
+    pub fn map_ring<U: Ring>(&self, f: &dyn Fn(&T) -> U) -> Bezier<U, Additive> {
+        MapScalar::map_scalar(self, f)
     }
 }
 
-impl<T: Real> Motion<T> for AdditiveBezier<T> {
-    type Mapped<U: Real> = AdditiveBezier<U>;
-
-    /// `S(t)` by de Casteljau (the Bernstein sum agrees).
-    fn evaluate(&self, t: &T) -> Result<Pose<T>, CurveError> {
-        Ok(self.de_casteljau(t))
-    }
-
-    fn domain(&self) -> [T; 2] {
-        unit_interval()
-    }
-
-    fn map_scalar<U: Real>(&self, f: &dyn Fn(&T) -> U) -> AdditiveBezier<U> {
-        self.map_ring(f)
-    }
-}
-
-/// The multiplicative Bezier motion of degree `n` on `[0, 1]`: the de Casteljau tableau of
-/// Fig. 2 with the slerp `Φ(A, B; t) = A (rev(A) B)^t` (eq. 15, [`Pose::slerp`]) as the
-/// pairwise combination.
-///
-/// Control poses are used as given (the paper's definition). With unitary control poses the
-/// motion is unitary, `S(0) = S_0`, `S(1) = S_n`, and reversing the poses reverses the motion.
-/// With non-unit poses every tableau entry is a pseudoscalar multiple of the unitized one
-/// (eq. 16, Lemma 4.1): the same transforms, but `S(1)` is only *equivalent* to `S_n`, the
-/// reversal holds only up to equivalence, and Theorem 4.5(ii)'s formula at `t = 1` fails
-/// (see the tests); [`MultiplicativeBezier::unitized`] avoids all of that.
-///
-/// ```
-/// use motion::{Motion, MultiplicativeBezier, Pose};
-/// let r = Pose::rotation(&[0.0, 0.0, 1.0], &std::f64::consts::FRAC_PI_2).unwrap();
-/// let m = MultiplicativeBezier::new(vec![Pose::identity(), r.clone()]).unwrap();
-/// let half = m.pose(&0.5).unwrap();
-/// assert!(half.is_equivalent(&Pose::rotation(&[0.0, 0.0, 1.0], &std::f64::consts::FRAC_PI_4).unwrap(), &1e-15).unwrap());
-/// ```
-#[derive(Clone, Debug, PartialEq)]
-pub struct MultiplicativeBezier<T: Ring> {
-    poses: Vec<Pose<T>>,
-}
-
-impl<T: Real> MultiplicativeBezier<T> {
-    /// The motion with control poses `S_0, ..., S_n` (at least one).
-    ///
-    /// ```
-    /// let m = motion::MultiplicativeBezier::new(vec![motion::Pose::<f64>::identity(); 3]).unwrap();
-    /// assert_eq!(m.degree(), 2);
-    /// ```
-    pub fn new(poses: Vec<Pose<T>>) -> Result<Self, CurveError> {
-        at_least_one(&poses)?;
-        Ok(MultiplicativeBezier { poses })
-    }
-
-    /// The control poses.
-    ///
-    /// ```
-    /// let m = motion::MultiplicativeBezier::new(vec![motion::Pose::<f64>::identity(); 2]).unwrap();
-    /// assert_eq!(m.poses().len(), 2);
-    /// ```
-    pub fn poses(&self) -> &[Pose<T>] {
-        &self.poses
-    }
-
-    /// The degree `n` (number of control poses minus one).
-    ///
-    /// ```
-    /// assert_eq!(motion::MultiplicativeBezier::new(vec![motion::Pose::<f64>::identity()]).unwrap().degree(), 0);
-    /// ```
-    pub fn degree(&self) -> usize {
-        self.poses.len() - 1
-    }
-
+impl<T: Real> Bezier<T, Multiplicative> {
     /// `S(t)`: the apex of the slerp tableau, for any `t` (extrapolates outside `[0, 1]`).
     /// Fails when a slerp meets a singular pose.
     ///
@@ -512,7 +542,7 @@ impl<T: Real> MultiplicativeBezier<T> {
     /// use motion::{MultiplicativeBezier, Pose};
     /// let m = MultiplicativeBezier::new(vec![Pose::<f64>::identity(), Pose::translation(&[4.0, 0.0, 0.0])]).unwrap();
     /// let s = m.de_casteljau(&0.25).unwrap();
-    /// assert!((s.as_motor().e1inf - 0.5).abs() < 1e-15);
+    /// assert!((s.e1inf - 0.5).abs() < 1e-15);
     /// ```
     pub fn de_casteljau(&self, t: &T) -> Result<Pose<T>, CurveError> {
         // factored as exp(l) U with U unitized at every level: stable in the degree
@@ -532,23 +562,6 @@ impl<T: Real> MultiplicativeBezier<T> {
         Ok(tableau_with(&self.poses, t, crate::stable_slerp::slerp)?)
     }
 
-    /// The control poses in reverse order. `S_{n..0}(1 - t) = S_{0..n}(t)` holds for unitary
-    /// control poses (the paper's proof of Theorem 4.5 at `t = 1`); for non-unit poses only up
-    /// to a pseudoscalar factor (the same transform).
-    ///
-    /// ```
-    /// use motion::{MultiplicativeBezier, Pose};
-    /// let a = Pose::<f64>::identity();
-    /// let b = Pose::from_axis_angle_translation(&[1.0, 0.0, 0.0], &1.0, &[0.0, 2.0, 0.0]).unwrap();
-    /// let m = MultiplicativeBezier::new(vec![a, b]).unwrap();
-    /// let x = m.de_casteljau(&0.3).unwrap();
-    /// let y = m.reversed().de_casteljau(&0.7).unwrap();
-    /// assert!((&x - &y).components().iter().all(|c| c.abs() < 1e-15));
-    /// ```
-    pub fn reversed(&self) -> Self {
-        MultiplicativeBezier { poses: self.poses.iter().rev().cloned().collect() }
-    }
-
     /// The motion with every control pose unitized (`S_i/|S_i|`, Lemma 2.6(i)): the same
     /// transforms (Lemma 4.1), a unitary motion, and the end formulas of Theorem 4.5(ii) hold.
     /// Fails for a singular control pose.
@@ -560,22 +573,6 @@ impl<T: Real> MultiplicativeBezier<T> {
     /// ```
     pub fn unitized(&self) -> Result<Self, CurveError> {
         let poses = self.poses.iter().map(Pose::unitize).collect::<Result<Vec<_>, _>>()?;
-        Ok(MultiplicativeBezier { poses })
-    }
-}
-
-impl<T: Real> Motion<T> for MultiplicativeBezier<T> {
-    type Mapped<U: Real> = MultiplicativeBezier<U>;
-
-    fn evaluate(&self, t: &T) -> Result<Pose<T>, CurveError> {
-        self.de_casteljau(t)
-    }
-
-    fn domain(&self) -> [T; 2] {
-        unit_interval()
-    }
-
-    fn map_scalar<U: Real>(&self, f: &dyn Fn(&T) -> U) -> MultiplicativeBezier<U> {
-        MultiplicativeBezier { poses: self.poses.iter().map(|p| p.map_scalar(f)).collect() }
+        Ok(Bezier { poses, blend: Multiplicative })
     }
 }

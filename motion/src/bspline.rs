@@ -28,7 +28,8 @@
 //! ```
 
 use crate::Pose;
-use crate::bezier::{CurveError, Motion};
+use crate::bezier::{CurveError, MapScalar, Motion};
+use crate::blend::{Additive, Blend, Multiplicative};
 use algebra_core::{Real, Ring};
 
 /// Degree, knots and control poses, validated.
@@ -118,7 +119,7 @@ impl<T: Real> Spline<T> {
         Ok(d.swap_remove(p))
     }
 
-    fn map_scalar<U: Real>(&self, f: &dyn Fn(&T) -> U) -> Spline<U> {
+    fn map_scalar<U: Ring>(&self, f: &dyn Fn(&T) -> U) -> Spline<U> {
         Spline {
             degree: self.degree,
             knots: self.knots.iter().map(f).collect(),
@@ -127,73 +128,68 @@ impl<T: Real> Spline<T> {
     }
 }
 
-macro_rules! spline_accessors {
-    ($ty:ident) => {
-        impl<T: Real> $ty<T> {
-            /// The degree `p`.
-            ///
-            /// ```
-            #[doc = concat!("let m = motion::", stringify!($ty), "::clamped_uniform(2, vec![motion::Pose::<f64>::identity(); 5]).unwrap();")]
-            /// assert_eq!(m.degree(), 2);
-            /// ```
-            pub fn degree(&self) -> usize {
-                self.0.degree
-            }
-
-            /// The knot vector `u_0, ..., u_{n+p+1}`.
-            ///
-            /// ```
-            #[doc = concat!("let m = motion::", stringify!($ty), "::clamped_uniform(2, vec![motion::Pose::<f64>::identity(); 4]).unwrap();")]
-            /// assert_eq!(m.knots(), [0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0]);
-            /// ```
-            pub fn knots(&self) -> &[T] {
-                &self.0.knots
-            }
-
-            /// The control poses `S_0, ..., S_n`.
-            ///
-            /// ```
-            #[doc = concat!("let m = motion::", stringify!($ty), "::clamped_uniform(1, vec![motion::Pose::<f64>::identity(); 3]).unwrap();")]
-            /// assert_eq!(m.poses().len(), 3);
-            /// ```
-            pub fn poses(&self) -> &[Pose<T>] {
-                &self.0.poses
-            }
-        }
-    };
-}
-
-/// The additive B-spline motion: de Boor's algorithm with `(1 - α) A + α B` (eq. 17), a
-/// piecewise polynomial in `t`. Not unitary in general.
+/// A B-spline motion of degree `p` with knots, evaluated by de Boor's algorithm with the
+/// pairwise combination of the blend `B` ([`Additive`]: eq. 17, a piecewise polynomial in `t`,
+/// not unitary in general; [`Multiplicative`]: the slerp of eq. 15, unitary when the control
+/// poses are). [`AdditiveBSpline`] and [`MultiplicativeBSpline`] name the two kinds.
 ///
 /// ```
-/// use motion::{AdditiveBSpline, Motion, Pose};
+/// use motion::{Additive, BSpline, Motion, Pose};
 /// let poses: Vec<_> = (0..5).map(|i| Pose::<f64>::translation(&[f64::from(i), 0.0, 0.0])).collect();
-/// let m = AdditiveBSpline::clamped_uniform(3, poses).unwrap();
+/// let m = BSpline::<f64, Additive>::clamped_uniform(3, poses).unwrap();
 /// // Control points on a line, evenly spaced: the motion is a translation along it.
 /// let s = m.pose(&0.5).unwrap();
-/// assert!((s.as_motor().e1inf - 1.0).abs() < 1e-15 && (s.as_motor().scalar - 1.0).abs() < 1e-15);
+/// assert!((s.e1inf - 1.0).abs() < 1e-15 && (s.scalar - 1.0).abs() < 1e-15);
 /// ```
 #[derive(Clone, Debug, PartialEq)]
-pub struct AdditiveBSpline<T: Ring>(Spline<T>);
+pub struct BSpline<T: Ring, B> {
+    spline: Spline<T>,
+    blend: B,
+}
 
-impl<T: Real> AdditiveBSpline<T> {
+/// The additive B-spline motion: de Boor's algorithm with `(1 - α) A + α B` (eq. 17).
+///
+/// ```
+/// use motion::{AdditiveBSpline, CurveError, Pose};
+/// let poses = vec![Pose::<f64>::identity(); 3];
+/// assert!(AdditiveBSpline::new(1, vec![0.0, 0.0, 0.5, 1.0, 1.0], poses.clone()).is_ok());
+/// assert!(matches!(AdditiveBSpline::new(1, vec![0.0, 0.5, 1.0], poses.clone()), Err(CurveError::KnotCount { .. })));
+/// assert!(matches!(
+///     AdditiveBSpline::new(1, vec![0.0, 0.0, 0.7, 0.5, 1.0], poses),
+///     Err(CurveError::KnotsDecreasing { index: 3, .. })
+/// ));
+/// ```
+pub type AdditiveBSpline<T> = BSpline<T, Additive>;
+
+/// The multiplicative B-spline motion: de Boor's algorithm with the slerp `A (rev(A) B)^α`
+/// (eq. 15). Unitary when the control poses are.
+///
+/// ```
+/// use motion::{Motion, MultiplicativeBSpline, Pose};
+/// let poses: Vec<_> = (0..4).map(|i| Pose::<f64>::rotation(&[0.0, 0.0, 1.0], &(0.3 * f64::from(i))).unwrap()).collect();
+/// let m = MultiplicativeBSpline::clamped_uniform(2, poses).unwrap();
+/// let s = m.pose(&0.5).unwrap();
+/// assert!(s.is_unitary(&1e-15));
+/// // Rotations about one axis commute: the angle is the B-spline of the angles, 0.45 here.
+/// assert!(s.is_equivalent(&Pose::rotation(&[0.0, 0.0, 1.0], &0.45).unwrap(), &1e-15).unwrap());
+/// ```
+pub type MultiplicativeBSpline<T> = BSpline<T, Multiplicative>;
+
+impl<T: Real, B: Default> BSpline<T, B> {
     /// A motion of degree `degree` with the given knots (`poses.len() + degree + 1` of them,
     /// finite, non-decreasing, each value at most `degree + 1` times, `u_p < u_{n+1}`) and
     /// control poses (at least `degree + 1`). Typed errors for each violation.
     ///
     /// ```
-    /// use motion::{AdditiveBSpline, CurveError, Pose};
+    /// use motion::{CurveError, MultiplicativeBSpline, Pose};
     /// let poses = vec![Pose::<f64>::identity(); 3];
-    /// assert!(AdditiveBSpline::new(1, vec![0.0, 0.0, 0.5, 1.0, 1.0], poses.clone()).is_ok());
-    /// assert!(matches!(AdditiveBSpline::new(1, vec![0.0, 0.5, 1.0], poses.clone()), Err(CurveError::KnotCount { .. })));
     /// assert!(matches!(
-    ///     AdditiveBSpline::new(1, vec![0.0, 0.0, 0.7, 0.5, 1.0], poses),
-    ///     Err(CurveError::KnotsDecreasing { index: 3, .. })
+    ///     MultiplicativeBSpline::new(1, vec![0.0, 0.0, 0.0, 0.0, 1.0], poses),
+    ///     Err(CurveError::KnotMultiplicity { multiplicity: 3, .. })
     /// ));
     /// ```
     pub fn new(degree: usize, knots: Vec<T>, poses: Vec<Pose<T>>) -> Result<Self, CurveError> {
-        Ok(AdditiveBSpline(Spline::new(degree, knots, poses)?))
+        Ok(BSpline { spline: Spline::new(degree, knots, poses)?, blend: B::default() })
     }
 
     /// Clamped uniform knots on `[0, 1]`: `0` and `1` repeated `degree + 1` times, the interior
@@ -206,84 +202,56 @@ impl<T: Real> AdditiveBSpline<T> {
     /// assert_eq!(m.domain(), [0.0, 1.0]);
     /// ```
     pub fn clamped_uniform(degree: usize, poses: Vec<Pose<T>>) -> Result<Self, CurveError> {
-        Ok(AdditiveBSpline(Spline::clamped_uniform(degree, poses)?))
+        Ok(BSpline { spline: Spline::clamped_uniform(degree, poses)?, blend: B::default() })
     }
 }
 
-spline_accessors!(AdditiveBSpline);
+impl<T: Ring, B> BSpline<T, B> {
+    /// The degree `p`.
+    ///
+    /// ```
+    /// let m = motion::AdditiveBSpline::clamped_uniform(2, vec![motion::Pose::<f64>::identity(); 5]).unwrap();
+    /// assert_eq!(m.degree(), 2);
+    /// ```
+    pub fn degree(&self) -> usize {
+        self.spline.degree
+    }
 
-impl<T: Real> Motion<T> for AdditiveBSpline<T> {
-    type Mapped<U: Real> = AdditiveBSpline<U>;
+    /// The knot vector `u_0, ..., u_{n+p+1}`.
+    ///
+    /// ```
+    /// let m = motion::MultiplicativeBSpline::clamped_uniform(2, vec![motion::Pose::<f64>::identity(); 4]).unwrap();
+    /// assert_eq!(m.knots(), [0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0]);
+    /// ```
+    pub fn knots(&self) -> &[T] {
+        &self.spline.knots
+    }
 
+    /// The control poses `S_0, ..., S_n`.
+    ///
+    /// ```
+    /// let m = motion::AdditiveBSpline::clamped_uniform(1, vec![motion::Pose::<f64>::identity(); 3]).unwrap();
+    /// assert_eq!(m.poses().len(), 3);
+    /// ```
+    pub fn poses(&self) -> &[Pose<T>] {
+        &self.spline.poses
+    }
+}
+
+impl<T: Real, B: Blend<T>> Motion<T> for BSpline<T, B> {
     fn evaluate(&self, t: &T) -> Result<Pose<T>, CurveError> {
-        self.0.de_boor(t, |a, b, alpha| Ok(Pose::lerp(a, b, alpha)))
+        self.spline.de_boor(t, B::blend)
     }
 
     fn domain(&self) -> [T; 2] {
-        self.0.domain()
-    }
-
-    fn map_scalar<U: Real>(&self, f: &dyn Fn(&T) -> U) -> AdditiveBSpline<U> {
-        AdditiveBSpline(self.0.map_scalar(f))
+        self.spline.domain()
     }
 }
 
-/// The multiplicative B-spline motion: de Boor's algorithm with the slerp
-/// `A (rev(A) B)^α` (eq. 15). Unitary when the control poses are.
-///
-/// ```
-/// use motion::{Motion, MultiplicativeBSpline, Pose};
-/// let poses: Vec<_> = (0..4).map(|i| Pose::<f64>::rotation(&[0.0, 0.0, 1.0], &(0.3 * f64::from(i))).unwrap()).collect();
-/// let m = MultiplicativeBSpline::clamped_uniform(2, poses).unwrap();
-/// let s = m.pose(&0.5).unwrap();
-/// assert!(s.is_unitary(&1e-15));
-/// // Rotations about one axis commute: the angle is the B-spline of the angles, 0.45 here.
-/// assert!(s.is_equivalent(&Pose::rotation(&[0.0, 0.0, 1.0], &0.45).unwrap(), &1e-15).unwrap());
-/// ```
-#[derive(Clone, Debug, PartialEq)]
-pub struct MultiplicativeBSpline<T: Ring>(Spline<T>);
+impl<T: Real, U: Real, B: Blend<T> + Blend<U>> MapScalar<T, U> for BSpline<T, B> {
+    type Mapped = BSpline<U, B>;
 
-impl<T: Real> MultiplicativeBSpline<T> {
-    /// A motion of degree `degree` with the given knots and control poses; the same validation
-    /// as [`AdditiveBSpline::new`].
-    ///
-    /// ```
-    /// use motion::{CurveError, MultiplicativeBSpline, Pose};
-    /// let poses = vec![Pose::<f64>::identity(); 3];
-    /// assert!(matches!(
-    ///     MultiplicativeBSpline::new(1, vec![0.0, 0.0, 0.0, 0.0, 1.0], poses),
-    ///     Err(CurveError::KnotMultiplicity { multiplicity: 3, .. })
-    /// ));
-    /// ```
-    pub fn new(degree: usize, knots: Vec<T>, poses: Vec<Pose<T>>) -> Result<Self, CurveError> {
-        Ok(MultiplicativeBSpline(Spline::new(degree, knots, poses)?))
-    }
-
-    /// Clamped uniform knots on `[0, 1]` (see [`AdditiveBSpline::clamped_uniform`]).
-    ///
-    /// ```
-    /// let m = motion::MultiplicativeBSpline::clamped_uniform(2, vec![motion::Pose::<f64>::identity(); 3]).unwrap();
-    /// assert_eq!(m.knots(), [0.0, 0.0, 0.0, 1.0, 1.0, 1.0]);
-    /// ```
-    pub fn clamped_uniform(degree: usize, poses: Vec<Pose<T>>) -> Result<Self, CurveError> {
-        Ok(MultiplicativeBSpline(Spline::clamped_uniform(degree, poses)?))
-    }
-}
-
-spline_accessors!(MultiplicativeBSpline);
-
-impl<T: Real> Motion<T> for MultiplicativeBSpline<T> {
-    type Mapped<U: Real> = MultiplicativeBSpline<U>;
-
-    fn evaluate(&self, t: &T) -> Result<Pose<T>, CurveError> {
-        self.0.de_boor(t, crate::stable_slerp::slerp)
-    }
-
-    fn domain(&self) -> [T; 2] {
-        self.0.domain()
-    }
-
-    fn map_scalar<U: Real>(&self, f: &dyn Fn(&T) -> U) -> MultiplicativeBSpline<U> {
-        MultiplicativeBSpline(self.0.map_scalar(f))
+    fn map_scalar(&self, f: &dyn Fn(&T) -> U) -> BSpline<U, B> {
+        BSpline { spline: self.spline.map_scalar(f), blend: self.blend }
     }
 }

@@ -7,10 +7,9 @@
 ///
 /// ```
 /// use motion::{MotionError, Pose};
-/// use gam_algebras::g123inf::Motor;
 /// // Only the translation part: rev(S) S = 0 + 0 ω is singular, F_S is the zero transform.
-/// let s = Pose(Motor::new(0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0));
-/// assert!(matches!(s.inverse(), Err(MotionError::Singular { .. })));
+/// let s = Pose::new(0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0);
+/// assert!(matches!(s.try_inverse(), Err(MotionError::Singular { .. })));
 /// ```
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 pub enum MotionError {
@@ -51,4 +50,7 @@ pub enum MotionError {
         /// What failed (bottom row, orthonormality or orientation).
         why: String,
     },
+    /// A rotation quaternion `[w, x, y, z]` that is zero (no rotation to normalise to).
+    #[error("the rotation quaternion is zero")]
+    ZeroQuaternion,
 }

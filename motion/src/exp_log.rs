@@ -44,17 +44,17 @@
 //! let l = s.log().unwrap();
 //! assert!((l.e12 - 0.5).abs() < 1e-15); // half the rotation angle about e3
 //! let back = Pose::exp(&l).unwrap();
-//! assert!(back.is_equivalent(&s, &1e-15).unwrap() && (back.as_motor().scalar - s.as_motor().scalar).abs() < 1e-15);
+//! assert!(back.is_equivalent(&s, &1e-15).unwrap() && (back.scalar - s.scalar).abs() < 1e-15);
 //! ```
 
 use crate::pose::is_positive;
 use crate::series::{exp_kernel, log_kernel};
+use crate::{Even, Pseudoscalar};
 use crate::{MotionError, Pose};
 use algebra_core::{Real, Ring};
-use gam_algebras::g123inf::{Motor, Pseudoscalar};
 
 /// `a` (with `a e123` = the rotational bivector part) and `c` (the einf part) of an even element.
-fn split<T: Ring>(m: &Motor<T>) -> ([T; 3], [T; 3]) {
+fn split<T: Ring>(m: &Even<T>) -> ([T; 3], [T; 3]) {
     ([m.e23.clone(), m.e13.neg_ref(), m.e12.clone()], [m.e1inf.clone(), m.e2inf.clone(), m.e3inf.clone()])
 }
 
@@ -63,13 +63,13 @@ fn dot<T: Ring>(x: &[T; 3], y: &[T; 3]) -> T {
 }
 
 /// The even element `σ + a e123 + c einf + pω`.
-fn assemble<T: Ring>(sigma: T, a: [T; 3], c: [T; 3], p: T) -> Motor<T> {
+fn assemble<T: Ring>(sigma: T, a: [T; 3], c: [T; 3], p: T) -> Even<T> {
     let [a1, a2, a3] = a;
     let [c1, c2, c3] = c;
-    Motor::new(sigma, a3, a2.neg_ref(), a1, c1, c2, c3, p)
+    Even::new(sigma, a3, a2.neg_ref(), a1, c1, c2, c3, p)
 }
 
-fn not_finite<T: Ring>(op: &'static str, m: &Motor<T>) -> MotionError {
+fn not_finite<T: Ring>(op: &'static str, m: &Even<T>) -> MotionError {
     MotionError::NotFinite { op, value: m.to_string() }
 }
 
@@ -78,16 +78,16 @@ impl<T: Real> Pose<T> {
     /// non-finite input or overflow.
     ///
     /// ```
-    /// use gam_algebras::g123inf::Motor;
+    /// use motion::Even;
     /// use motion::Pose;
     /// // exp(½ v einf) = 1 + ½ v einf, a translation by v, exactly.
-    /// let t = Pose::exp(&Motor::new(0.0, 0.0, 0.0, 0.0, 0.5, 1.0, 1.5, 0.0)).unwrap();
+    /// let t = Pose::exp(&Even::new(0.0, 0.0, 0.0, 0.0, 0.5, 1.0, 1.5, 0.0)).unwrap();
     /// assert_eq!(t, Pose::translation(&[1.0, 2.0, 3.0]));
     /// // exp((φ/2) e12) = cos(φ/2) + sin(φ/2) e12: rotation by φ about e3.
-    /// let r = Pose::exp(&Motor::new(0.0, 0.25, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)).unwrap();
+    /// let r = Pose::exp(&Even::new(0.0, 0.25, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)).unwrap();
     /// assert_eq!(r, Pose::rotation(&[0.0, 0.0, 1.0], &0.5).unwrap());
     /// ```
-    pub fn exp(generator: &Motor<T>) -> Result<Self, MotionError> {
+    pub fn exp(generator: &Even<T>) -> Result<Self, MotionError> {
         let g = generator;
         if ![&g.scalar, &g.e12, &g.e13, &g.e23, &g.e1inf, &g.e2inf, &g.e3inf, &g.e123inf]
             .into_iter()
@@ -106,7 +106,7 @@ impl<T: Real> Pose<T> {
         let c_out: [T; 3] = std::array::from_fn(|i| c[i].mul_ref(&ess).sub_ref(&a[i].mul_ref(&k)));
         let a_out = a.map(|x| x.mul_ref(&ess));
         let omega = w.mul_ref(&ess).add_ref(&p.mul_ref(&cc).mul_ref(&es));
-        let out = Pose(assemble(es.mul_ref(&cc), a_out, c_out, omega));
+        let out = assemble(es.mul_ref(&cc), a_out, c_out, omega);
         out.check_finite("exp").map_err(|_| not_finite("exp", g))?;
         Ok(out)
     }
@@ -125,11 +125,11 @@ impl<T: Real> Pose<T> {
     /// assert!((l2.scalar - 2f64.ln()).abs() < 1e-15 && (l2.e1inf - 1.0).abs() < 1e-15);
     /// assert!(Pose::<f64>::identity().scale(&0.0).log().is_err());
     /// ```
-    pub fn log(&self) -> Result<Motor<T>, MotionError> {
+    pub fn log(&self) -> Result<Even<T>, MotionError> {
         self.check_finite("log")?;
         // log(m S') = ln m + log S' for m > 0: the squares of S' = S/m stay in range.
         let (scale, s) = crate::scaled::rotational_scale(self).ok_or_else(|| self.singular("log"))?;
-        let n2 = s.norm_squared();
+        let n2 = s.pseudo_norm_squared();
         let alpha = &n2.scalar;
         if !is_positive(alpha) {
             return Err(self.singular("log"));
@@ -138,7 +138,7 @@ impl<T: Real> Pose<T> {
         let m = n2.e123inf.div_ref(&alpha.add_ref(alpha));
         let inv_root = T::one().div_ref(&Real::sqrt(alpha));
         let inv_norm = Pseudoscalar::new(inv_root.clone(), m.mul_ref(&inv_root).neg_ref());
-        let unit = &inv_norm * &s.0;
+        let unit = &inv_norm * &s;
         let mut l = unit_log(&unit);
         l.scalar = Real::ln(alpha).mul_ref(&T::from_ratio(1, 2)).add_ref(&Real::ln(&scale));
         l.e123inf = m;
@@ -146,7 +146,7 @@ impl<T: Real> Pose<T> {
             .into_iter()
             .all(Real::is_finite)
         {
-            return Err(not_finite("log", &self.0));
+            return Err(not_finite("log", self));
         }
         Ok(l)
     }
@@ -161,13 +161,13 @@ impl<T: Real> Pose<T> {
     /// assert!((s.log().unwrap().e12 - 0.75 * std::f64::consts::PI).abs() < 1e-15);
     /// assert!((s.log_shortest().unwrap().e12 + 0.25 * std::f64::consts::PI).abs() < 1e-15);
     /// ```
-    pub fn log_shortest(&self) -> Result<Motor<T>, MotionError> {
-        if self.0.scalar < T::zero() { (-self).log() } else { self.log() }
+    pub fn log_shortest(&self) -> Result<Even<T>, MotionError> {
+        if self.scalar < T::zero() { (-self).log() } else { self.log() }
     }
 }
 
 /// The logarithm (a bivector) of a unitary even element (module docs for the three cases).
-fn unit_log<T: Real>(u: &Motor<T>) -> Motor<T> {
+fn unit_log<T: Real>(u: &Even<T>) -> Even<T> {
     let (a, c) = split(u);
     let (u0, q) = (&u.scalar, &u.e123inf);
     let x = dot(&a, &a);

@@ -30,7 +30,7 @@
 
 use crate::joins::{self, EndCondition, JoinError, SegmentKind, Shape};
 use crate::pose::is_positive;
-use crate::{Motor, Pose};
+use crate::{AdditiveBezier, AnyMotion, Bivector, CurveError, Even, MultiplicativeBezier, Pose};
 use algebra_core::{Real, Ring};
 
 /// The shape parameters of a Hermite interpolation (see the module docs).
@@ -93,7 +93,7 @@ impl<T: Ring> HermiteShapes<T> {
 /// let b = EndCondition::from_axis_angle(&[3.0, 0.0, 0.0], &[0.0, 0.0, 1.0], &0.0, &[3.0, 0.0, 0.0], &[0.0; 3])?;
 /// let seg = hermite::hermite_segment(SegmentKind::Additive, 3, &a, &b, &Shape::unit(), &Shape::unit())?;
 /// // Uniform translation: the control poses are translations by 0, 1, 2, 3.
-/// let x: Vec<f64> = seg.control_poses.iter().map(|s| 2.0 * s.as_motor().e1inf).collect();
+/// let x: Vec<f64> = seg.control_poses.iter().map(|s| 2.0 * s.e1inf).collect();
 /// assert_eq!(x, [0.0, 1.0, 2.0, 3.0]);
 /// assert_eq!(seg.degree(), 3);
 /// # Ok::<(), motion::joins::JoinError>(())
@@ -106,10 +106,10 @@ pub struct HermiteSegment<T> {
     pub control_poses: Vec<Pose<T>>,
     /// `[ν0, νn]`: the velocity bivectors of the two end conditions (with respect to the
     /// interpolation parameter `t`).
-    pub velocity_bivectors: [Motor<T>; 2],
+    pub velocity_bivectors: [Bivector<T>; 2],
     /// `[Ψ0, Ψn]`: the velocity indicatrices the segment has at its ends (with respect to its
     /// own parameter in `[0, 1]`; `h λ(ν + γ)` for an interval of length `h`).
-    pub velocity_indicatrices: [Motor<T>; 2],
+    pub velocity_indicatrices: [Even<T>; 2],
 }
 
 impl<T> HermiteSegment<T> {
@@ -124,6 +124,28 @@ impl<T> HermiteSegment<T> {
     /// ```
     pub fn degree(&self) -> usize {
         self.control_poses.len().saturating_sub(1)
+    }
+}
+
+impl<T: Real> HermiteSegment<T> {
+    /// The segment as a motion on `[0, 1]`: the [`crate::Bezier`] of its control poses with
+    /// the segment's blend (the runtime [`SegmentKind`] picks [`crate::Additive`] or
+    /// [`crate::Multiplicative`]).
+    ///
+    /// ```
+    /// use motion::{EndCondition, Motion, SegmentKind, Shape, hermite};
+    /// let a = EndCondition::from_axis_angle(&[0.0; 3], &[0.0, 0.0, 1.0], &0.0, &[1.0, 0.0, 0.0], &[0.0; 3])?;
+    /// let b = EndCondition::from_axis_angle(&[2.0, 0.0, 0.0], &[0.0, 0.0, 1.0], &0.0, &[1.0, 0.0, 0.0], &[0.0; 3])?;
+    /// let seg = hermite::hermite_segment(SegmentKind::Additive, 3, &a, &b, &Shape::unit(), &Shape::unit())?;
+    /// let m = seg.clone().into_motion()?;
+    /// assert_eq!(m.pose(&1.0)?, seg.control_poses[3]);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn into_motion(self) -> Result<AnyMotion<T>, CurveError> {
+        Ok(match self.kind {
+            SegmentKind::Additive => AnyMotion::from(AdditiveBezier::new(self.control_poses)?),
+            SegmentKind::Multiplicative => AnyMotion::from(MultiplicativeBezier::new(self.control_poses)?),
+        })
     }
 }
 
@@ -148,7 +170,7 @@ pub const MAX_SEGMENT_DEGREE: usize = 10_000;
 /// let b = EndCondition::from_axis_angle(&[0.0, 10.0, 0.0], &[1.0, 0.0, 0.0], &-FRAC_PI_2, &[0.0, 4.0, 0.0], &[FRAC_PI_8, 0.0, 0.0])?;
 /// let seg = hermite::hermite_segment(SegmentKind::Additive, 3, &a, &b,
 ///     &Shape::new(4.0, Pseudoscalar::new(0.5, 0.5)), &Shape::new(1.0, Pseudoscalar::new(1.0, -0.5)))?;
-/// let s1 = seg.control_poses[1].as_motor();
+/// let s1 = &seg.control_poses[1];
 /// // printed: S1 = 1.333 - 0.524 e23 + 5.333 e3inf + 0.333 ω
 /// assert_eq!([s1.scalar, s1.e23, s1.e3inf, s1.e123inf].map(|x| format!("{x:.3}")), ["1.333", "-0.524", "5.333", "0.333"]);
 /// # Ok::<(), motion::joins::JoinError>(())

@@ -31,7 +31,7 @@ use crate::hermite::HermiteShapes;
 use crate::joins::{SegmentKind, Shape};
 use crate::trajectory::{Trajectory, TrajectoryError, Velocities};
 use crate::velocity::{Twist, velocity};
-use crate::{Pose, Pseudoscalar};
+use crate::{Pose, Pseudoscalar, Vec3};
 use algebra_core::rational::{Q, rational_to_f64};
 use algebra_core::{Field, Real, Ring};
 use std::cmp::Ordering;
@@ -268,14 +268,14 @@ pub fn key_sensitivity<const N: usize>(
     let mut lifted = Vec::with_capacity(m);
     for (i, s) in poses.iter().enumerate() {
         let d = |k: usize| JetN::<N> { re: 0.0, eps: std::array::from_fn(|j| if j == 6 * i + k { 0.5 } else { 0.0 }) };
-        let g = Twist { angular: [d(0), d(1), d(2)], linear: [d(3), d(4), d(5)] }.to_bivector();
-        lifted.push(&s.map_scalar(&c) * &Pose::exp(&g)?);
+        let g = Twist { angular: Vec3::new(d(0), d(1), d(2)), linear: Vec3::new(d(3), d(4), d(5)) }.to_bivector();
+        lifted.push(s.map_scalar(&c) * Pose::exp(&Pose::from(&g))?);
     }
     let times: Vec<JetN<N>> = times.iter().enumerate().map(|(i, x)| JetN::variable(*x, 6 * m + i)).collect();
     let velocities = match velocities {
-        Velocities::Given(v) => Velocities::Given(
-            v.iter().map(|w| Twist { angular: w.angular.map(|x| c(&x)), linear: w.linear.map(|x| c(&x)) }).collect(),
-        ),
+        Velocities::Given(v) => {
+            Velocities::Given(v.iter().map(|w| Twist { angular: w.angular.map(c), linear: w.linear.map(c) }).collect())
+        }
         Velocities::CatmullRom => Velocities::CatmullRom,
         Velocities::Zero => Velocities::Zero,
     };

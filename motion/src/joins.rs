@@ -38,21 +38,22 @@
 //! let start = EndCondition::from_axis_angle(&[0.0, 0.0, 0.0], &[0.0, 0.0, 1.0], &0.0, &[1.0, 1.0, 1.0], &[1.0, 2.0, 3.0])?;
 //! let psi = start.velocity_indicatrix(&Shape::unit());
 //! let s1 = joins::start_control_pose(SegmentKind::Additive, &start.pose, &psi, 3)?;
-//! assert_eq!(s1.as_motor().e12, 0.5); // printed: S1 = 1.000 + 0.500 e12 - 0.333 e13 + ...
+//! assert_eq!(s1.e12, 0.5); // printed: S1 = 1.000 + 0.500 e12 - 0.333 e13 + ...
 //! # Ok::<(), motion::joins::JoinError>(())
 //! ```
 
+use crate::blend::{Additive, Blend, Multiplicative};
 use crate::pose::is_positive;
+use crate::{Bivector, Even, Pseudoscalar, Vec3};
 use crate::{MotionError, Pose};
 use algebra_core::{Real, Ring};
-use gam_algebras::g123inf::{Motor, Pseudoscalar};
 
 /// Why a join or Hermite construction failed.
 ///
 /// ```
 /// use motion::joins::{self, JoinError, SegmentKind};
-/// use motion::{Motor, Pose};
-/// let e = joins::start_control_pose(SegmentKind::Additive, &Pose::<f64>::identity(), &Motor::zero(), 0);
+/// use motion::{Even, Pose};
+/// let e = joins::start_control_pose(SegmentKind::Additive, &Pose::<f64>::identity(), &Even::zero(), 0);
 /// assert!(matches!(e, Err(JoinError::Degree { degree: 0, min: 1 })));
 /// ```
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
@@ -99,35 +100,14 @@ pub enum SegmentKind {
     Multiplicative,
 }
 
-impl SegmentKind {
-    /// `"additive"` or `"multiplicative"`.
-    ///
-    /// ```
-    /// assert_eq!(motion::SegmentKind::Multiplicative.name(), "multiplicative");
-    /// ```
-    pub fn name(self) -> &'static str {
-        match self {
-            SegmentKind::Additive => "additive",
-            SegmentKind::Multiplicative => "multiplicative",
-        }
-    }
-}
-
-impl std::fmt::Display for SegmentKind {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(self.name())
-    }
-}
+crate::names::named!("motion::SegmentKind", SegmentKind { Additive => "additive", Multiplicative => "multiplicative" });
 
 impl std::str::FromStr for SegmentKind {
     type Err = String;
     /// `additive` or `multiplicative`.
     fn from_str(s: &str) -> Result<Self, String> {
-        match s {
-            "additive" => Ok(SegmentKind::Additive),
-            "multiplicative" => Ok(SegmentKind::Multiplicative),
-            _ => Err(format!("unknown segment kind `{s}` (expected additive or multiplicative)")),
-        }
+        SegmentKind::from_name(s)
+            .ok_or_else(|| format!("unknown segment kind `{s}` (expected additive or multiplicative)"))
     }
 }
 
@@ -181,12 +161,12 @@ impl<T: Ring> Shape<T> {
     /// `Ψ = λ(ν + γ)` for the velocity bivector `nu` ([`shaped_indicatrix`]).
     ///
     /// ```
-    /// use motion::{Motor, Pseudoscalar, Shape};
-    /// let nu = Motor::new(0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 2.0, 0.0);
+    /// use motion::{Bivector, Pseudoscalar, Shape};
+    /// let nu = Bivector::new(0.0, 0.0, 1.0, 0.0, 0.0, 2.0);
     /// let psi = Shape::new(2.0, Pseudoscalar::new(0.5, 1.0)).indicatrix(&nu);
     /// assert_eq!((psi.scalar, psi.e23, psi.e3inf, psi.e123inf), (1.0, 2.0, 4.0, 2.0));
     /// ```
-    pub fn indicatrix(&self, nu: &Motor<T>) -> Motor<T> {
+    pub fn indicatrix(&self, nu: &Bivector<T>) -> Even<T> {
         shaped_indicatrix(nu, &self.lambda, &self.gamma)
     }
 
@@ -215,17 +195,10 @@ impl<T: Ring> Shape<T> {
 /// assert_eq!((nu.e23, nu.e2inf), (w, 4.0));
 /// assert!((nu.e3inf + 3.927).abs() < 5e-4); // printed: ν3 = 0.393 e23 + 4.000 e2inf - 3.927 e3inf
 /// ```
-pub fn end_velocity_bivector<T: Ring>(angular_velocity: &[T; 3], velocity: &[T; 3], position: &[T; 3]) -> Motor<T> {
-    let [w1, w2, w3] = angular_velocity;
-    let [r1, r2, r3] = position;
-    let cross = [
-        w2.mul_ref(r3).sub_ref(&w3.mul_ref(r2)),
-        w3.mul_ref(r1).sub_ref(&w1.mul_ref(r3)),
-        w1.mul_ref(r2).sub_ref(&w2.mul_ref(r1)),
-    ];
-    let u: [T; 3] = std::array::from_fn(|i| velocity[i].sub_ref(&cross[i]));
-    let [u1, u2, u3] = u;
-    Motor::new(T::zero(), w3.clone(), w2.neg_ref(), w1.clone(), u1, u2, u3, T::zero())
+pub fn end_velocity_bivector<T: Ring>(angular_velocity: &[T; 3], velocity: &[T; 3], position: &[T; 3]) -> Bivector<T> {
+    let omega = Vec3::from(angular_velocity);
+    let u = Vec3::from(velocity).sub(&omega.cross(&Vec3::from(position)));
+    Bivector::from_parts(&omega, &u)
 }
 
 /// The velocity indicatrix `Ψ = λ(ν + γ)` (the reading of eqs. 22-23 that reproduces Sec. 5.2);
@@ -233,14 +206,14 @@ pub fn end_velocity_bivector<T: Ring>(angular_velocity: &[T; 3], velocity: &[T; 
 ///
 /// ```
 /// use motion::joins::shaped_indicatrix;
-/// use motion::{Motor, Pseudoscalar};
-/// let nu = Motor::new(0.0, 0.0, 0.0, -0.25, 0.0, 0.0, 8.0, 0.0);
+/// use motion::{Bivector, Even, Pseudoscalar};
+/// let nu = Bivector::new(0.0, 0.0, -0.25, 0.0, 0.0, 8.0);
 /// let psi = shaped_indicatrix(&nu, &4.0, &Pseudoscalar::new(0.5, 0.5));
-/// assert_eq!(psi, Motor::new(2.0, 0.0, 0.0, -1.0, 0.0, 0.0, 32.0, 2.0));
+/// assert_eq!(psi, Even::new(2.0, 0.0, 0.0, -1.0, 0.0, 0.0, 32.0, 2.0));
 /// ```
-pub fn shaped_indicatrix<T: Ring>(nu: &Motor<T>, lambda: &T, gamma: &Pseudoscalar<T>) -> Motor<T> {
+pub fn shaped_indicatrix<T: Ring>(nu: &Bivector<T>, lambda: &T, gamma: &Pseudoscalar<T>) -> Even<T> {
     let l = |x: &T| x.mul_ref(lambda);
-    Motor::new(
+    Even::new(
         l(&gamma.scalar),
         l(&nu.e12),
         l(&nu.e13),
@@ -249,20 +222,6 @@ pub fn shaped_indicatrix<T: Ring>(nu: &Motor<T>, lambda: &T, gamma: &Pseudoscala
         l(&nu.e2inf),
         l(&nu.e3inf),
         l(&gamma.e123inf),
-    )
-}
-
-/// The bivector part of an even element (scalar and ω parts set to zero).
-fn bivector_part<T: Ring>(m: &Motor<T>) -> Motor<T> {
-    Motor::new(
-        T::zero(),
-        m.e12.clone(),
-        m.e13.clone(),
-        m.e23.clone(),
-        m.e1inf.clone(),
-        m.e2inf.clone(),
-        m.e3inf.clone(),
-        T::zero(),
     )
 }
 
@@ -317,7 +276,7 @@ impl<T: Ring> EndCondition<T> {
     /// let nu = c.velocity_bivector();
     /// assert_eq!((nu.e12, nu.e13, nu.e23, nu.e1inf), (3.0, -2.0, 1.0, 1.0));
     /// ```
-    pub fn velocity_bivector(&self) -> Motor<T> {
+    pub fn velocity_bivector(&self) -> Bivector<T> {
         end_velocity_bivector(&self.angular_velocity, &self.velocity, &self.position)
     }
 
@@ -328,7 +287,7 @@ impl<T: Ring> EndCondition<T> {
     /// let c = EndCondition::new(Pose::<f64>::identity(), [0.0; 3], [1.0, 0.0, 0.0], [0.0; 3]);
     /// assert_eq!(c.velocity_indicatrix(&Shape::factor(2.0)).e1inf, 2.0);
     /// ```
-    pub fn velocity_indicatrix(&self, shape: &Shape<T>) -> Motor<T> {
+    pub fn velocity_indicatrix(&self, shape: &Shape<T>) -> Even<T> {
         shape.indicatrix(&self.velocity_bivector())
     }
 }
@@ -342,7 +301,7 @@ impl<T: Real> EndCondition<T> {
     /// ```
     /// use motion::EndCondition;
     /// let c = EndCondition::from_axis_angle(&[8.0, 10.0, 12.0], &[1.0, 2.0, 3.0], &1.959, &[1.0, 5.0, 3.0], &[2.0, 1.0, 1.0])?;
-    /// assert_eq!(format!("{:.3}", c.pose.as_motor().scalar), "0.557"); // Sec. 5.1, S3
+    /// assert_eq!(format!("{:.3}", c.pose.scalar), "0.557"); // Sec. 5.1, S3
     /// assert!(EndCondition::from_axis_angle(&[0.0; 3], &[0.0; 3], &0.0, &[0.0; 3], &[0.0; 3]).is_err());
     /// # Ok::<(), motion::MotionError>(())
     /// ```
@@ -398,17 +357,17 @@ fn inv_2n<T: Ring>(degree: usize) -> T {
 ///
 /// ```
 /// use algebra_core::rational::{q, ratio};
-/// use motion::{Motor, Pose, joins};
-/// let psi = Motor::new(q(0), q(3), q(0), q(0), q(6), q(0), q(0), q(0));
+/// use motion::{Even, Pose, joins};
+/// let psi = Even::new(q(0), q(3), q(0), q(0), q(6), q(0), q(0), q(0));
 /// let s1 = joins::additive_start(&Pose::identity(), &psi, 3)?;
-/// assert_eq!(s1.as_motor().e12, ratio(1, 2));
-/// assert_eq!(s1.as_motor().e1inf, q(1));
+/// assert_eq!(s1.e12, ratio(1, 2));
+/// assert_eq!(s1.e1inf, q(1));
 /// # Ok::<(), motion::joins::JoinError>(())
 /// ```
-pub fn additive_start<T: Ring>(s0: &Pose<T>, psi0: &Motor<T>, degree: usize) -> Result<Pose<T>, JoinError> {
+pub fn additive_start<T: Ring>(s0: &Pose<T>, psi0: &Even<T>, degree: usize) -> Result<Pose<T>, JoinError> {
     check_degree(degree, 1)?;
-    let factor = &Motor::one() + &psi0.scale(&inv_2n(degree));
-    Ok(Pose(&s0.0 * &factor))
+    let factor = &Even::one() + &psi0.scale(&inv_2n(degree));
+    Ok(s0 * &factor)
 }
 
 /// Additive end (eq. 22 as read in Sec. 5.2): `S_{n-1} = Sn (1 - Ψn/(2n))`, so that
@@ -416,16 +375,16 @@ pub fn additive_start<T: Ring>(s0: &Pose<T>, psi0: &Motor<T>, degree: usize) -> 
 ///
 /// ```
 /// use algebra_core::rational::{q, ratio};
-/// use motion::{Motor, Pose, joins};
-/// let psi = Motor::new(q(0), q(0), q(0), q(0), q(6), q(0), q(0), q(0));
+/// use motion::{Even, Pose, joins};
+/// let psi = Even::new(q(0), q(0), q(0), q(0), q(6), q(0), q(0), q(0));
 /// let s2 = joins::additive_end(&Pose::identity(), &psi, 3)?;
-/// assert_eq!(s2.as_motor().e1inf, q(-1));
+/// assert_eq!(s2.e1inf, q(-1));
 /// # Ok::<(), motion::joins::JoinError>(())
 /// ```
-pub fn additive_end<T: Ring>(sn: &Pose<T>, psin: &Motor<T>, degree: usize) -> Result<Pose<T>, JoinError> {
+pub fn additive_end<T: Ring>(sn: &Pose<T>, psin: &Even<T>, degree: usize) -> Result<Pose<T>, JoinError> {
     check_degree(degree, 1)?;
-    let factor = &Motor::one() - &psin.scale(&inv_2n(degree));
-    Ok(Pose(&sn.0 * &factor))
+    let factor = &Even::one() - &psin.scale(&inv_2n(degree));
+    Ok(sn * &factor)
 }
 
 /// Multiplicative start (eq. 23): `S1 = S0 exp(Ψ0/(2n))`. With `S0` unitary,
@@ -433,13 +392,13 @@ pub fn additive_end<T: Ring>(sn: &Pose<T>, psin: &Motor<T>, degree: usize) -> Re
 /// `Ψ0/(2n)` is below π).
 ///
 /// ```
-/// use motion::{Motor, Pose, joins};
-/// let psi = Motor::new(0.0, 0.0, 0.0, 0.0, 6.0, 0.0, 0.0, 0.0);
+/// use motion::{Even, Pose, joins};
+/// let psi = Even::new(0.0, 0.0, 0.0, 0.0, 6.0, 0.0, 0.0, 0.0);
 /// let s1 = joins::multiplicative_start(&Pose::identity(), &psi, 3)?;
 /// assert_eq!(s1, Pose::translation(&[2.0, 0.0, 0.0]));
 /// # Ok::<(), motion::joins::JoinError>(())
 /// ```
-pub fn multiplicative_start<T: Real>(s0: &Pose<T>, psi0: &Motor<T>, degree: usize) -> Result<Pose<T>, JoinError> {
+pub fn multiplicative_start<T: Real>(s0: &Pose<T>, psi0: &Even<T>, degree: usize) -> Result<Pose<T>, JoinError> {
     check_degree(degree, 1)?;
     Ok(s0 * &Pose::exp(&psi0.scale(&inv_2n(degree)))?)
 }
@@ -448,13 +407,13 @@ pub fn multiplicative_start<T: Real>(s0: &Pose<T>, psi0: &Motor<T>, degree: usiz
 /// `Ψ(1) = -2n log(rev(Sn) S_{n-1}) = Ψn` (Corollary 4.6(ii)).
 ///
 /// ```
-/// use motion::{Motor, Pose, joins};
-/// let psi = Motor::new(0.0, 0.0, 0.0, 0.0, 6.0, 0.0, 0.0, 0.0);
+/// use motion::{Even, Pose, joins};
+/// let psi = Even::new(0.0, 0.0, 0.0, 0.0, 6.0, 0.0, 0.0, 0.0);
 /// let s2 = joins::multiplicative_end(&Pose::identity(), &psi, 3)?;
 /// assert_eq!(s2, Pose::translation(&[-2.0, 0.0, 0.0]));
 /// # Ok::<(), motion::joins::JoinError>(())
 /// ```
-pub fn multiplicative_end<T: Real>(sn: &Pose<T>, psin: &Motor<T>, degree: usize) -> Result<Pose<T>, JoinError> {
+pub fn multiplicative_end<T: Real>(sn: &Pose<T>, psin: &Even<T>, degree: usize) -> Result<Pose<T>, JoinError> {
     check_degree(degree, 1)?;
     let m = psin.scale(&inv_2n::<T>(degree)).scale(&T::one().neg_ref());
     Ok(sn * &Pose::exp(&m)?)
@@ -465,8 +424,8 @@ pub fn multiplicative_end<T: Real>(sn: &Pose<T>, psin: &Motor<T>, degree: usize)
 /// [`multiplicative_start`].
 ///
 /// ```
-/// use motion::{Motor, Pose, SegmentKind, joins};
-/// let psi = Motor::new(0.0, 0.0, 0.0, 0.0, 6.0, 0.0, 0.0, 0.0); // a pure translation velocity
+/// use motion::{Even, Pose, SegmentKind, joins};
+/// let psi = Even::new(0.0, 0.0, 0.0, 0.0, 6.0, 0.0, 0.0, 0.0); // a pure translation velocity
 /// let a = joins::start_control_pose(SegmentKind::Additive, &Pose::identity(), &psi, 3)?;
 /// let m = joins::start_control_pose(SegmentKind::Multiplicative, &Pose::identity(), &psi, 3)?;
 /// assert_eq!(a, m); // 1 + e1inf either way
@@ -475,12 +434,12 @@ pub fn multiplicative_end<T: Real>(sn: &Pose<T>, psin: &Motor<T>, degree: usize)
 pub fn start_control_pose<T: Real>(
     kind: SegmentKind,
     s0: &Pose<T>,
-    psi0: &Motor<T>,
+    psi0: &Even<T>,
     degree: usize,
 ) -> Result<Pose<T>, JoinError> {
     match kind {
-        SegmentKind::Additive => additive_start(s0, psi0, degree),
-        SegmentKind::Multiplicative => multiplicative_start(s0, psi0, degree),
+        SegmentKind::Additive => Additive::start_control_pose(s0, psi0, degree),
+        SegmentKind::Multiplicative => Multiplicative::start_control_pose(s0, psi0, degree),
     }
 }
 
@@ -489,8 +448,8 @@ pub fn start_control_pose<T: Real>(
 /// [`multiplicative_end`].
 ///
 /// ```
-/// use motion::{Motor, Pose, SegmentKind, joins};
-/// let psi = Motor::new(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 3.0, 0.0);
+/// use motion::{Even, Pose, SegmentKind, joins};
+/// let psi = Even::new(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 3.0, 0.0);
 /// let s = joins::end_control_pose(SegmentKind::Additive, &Pose::identity(), &psi, 3)?;
 /// assert_eq!(s, Pose::translation(&[0.0, 0.0, -1.0]));
 /// # Ok::<(), motion::joins::JoinError>(())
@@ -498,12 +457,12 @@ pub fn start_control_pose<T: Real>(
 pub fn end_control_pose<T: Real>(
     kind: SegmentKind,
     sn: &Pose<T>,
-    psin: &Motor<T>,
+    psin: &Even<T>,
     degree: usize,
 ) -> Result<Pose<T>, JoinError> {
     match kind {
-        SegmentKind::Additive => additive_end(sn, psin, degree),
-        SegmentKind::Multiplicative => multiplicative_end(sn, psin, degree),
+        SegmentKind::Additive => Additive::end_control_pose(sn, psin, degree),
+        SegmentKind::Multiplicative => Multiplicative::end_control_pose(sn, psin, degree),
     }
 }
 
@@ -521,21 +480,10 @@ pub fn end_control_pose<T: Real>(
 /// assert_eq!((a.e1inf, b.e1inf), (2.0, 2.0)); // 2n · ½ · 1 with n = 2
 /// # Ok::<(), motion::joins::JoinError>(())
 /// ```
-pub fn end_indicatrices<T: Real>(kind: SegmentKind, controls: &[Pose<T>]) -> Result<[Motor<T>; 2], JoinError> {
-    let n = controls.len().checked_sub(1).filter(|&n| n >= 1).ok_or(JoinError::Degree { degree: 0, min: 1 })?;
-    let two_n = T::from_i64(2 * n as i64);
-    let (s0, s1, sm, sn) = (&controls[0], &controls[1], &controls[n - 1], &controls[n]);
+pub fn end_indicatrices<T: Real>(kind: SegmentKind, controls: &[Pose<T>]) -> Result<[Even<T>; 2], JoinError> {
     match kind {
-        SegmentKind::Additive => {
-            let a = &s0.inverse()?.0 * &(&s1.0 - &s0.0);
-            let b = &sn.inverse()?.0 * &(&sn.0 - &sm.0);
-            Ok([a.scale(&two_n), b.scale(&two_n)])
-        }
-        SegmentKind::Multiplicative => {
-            let a = (&s0.reverse() * s1).log()?;
-            let b = (&sn.reverse() * sm).log()?;
-            Ok([a.scale(&two_n), b.scale(&two_n.neg_ref())])
-        }
+        SegmentKind::Additive => Additive::end_indicatrices(controls),
+        SegmentKind::Multiplicative => Multiplicative::end_indicatrices(controls),
     }
 }
 
@@ -586,8 +534,8 @@ impl<T> Continuity<T> {
 /// The jumps at a join and their classification (see [`check_join`]).
 ///
 /// ```
-/// use motion::{Motor, Pose, joins};
-/// let nu = Motor::new(0.0, 1.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0);
+/// use motion::{Bivector, Even, Pose, joins};
+/// let nu = Even::from(&Bivector::new(1.0, 0.0, 0.0, 1.0, 0.0, 0.0));
 /// let j = joins::check_join(&Pose::identity(), &nu, &Pose::identity(), &nu.scale(&3.0), &1e-12)?;
 /// assert_eq!(j.nu_jump.e12, 2.0);
 /// assert_eq!(j.continuity, motion::Continuity::G1 { factor: 3.0 });
@@ -596,16 +544,16 @@ impl<T> Continuity<T> {
 #[derive(Clone, PartialEq)]
 pub struct JoinCheck<T> {
     /// `S_right(0) - S_left(1)` (zero for a join through the same control pose).
-    pub pose_jump: Motor<T>,
+    pub pose_jump: Even<T>,
     /// `ν_right - ν_left`: zero for C1.
-    pub nu_jump: Motor<T>,
+    pub nu_jump: Bivector<T>,
     /// `Ψ_right - Ψ_left` (a pseudoscalar for C1 with different `γ` on the two sides).
-    pub indicatrix_jump: Motor<T>,
+    pub indicatrix_jump: Even<T>,
     /// The classification.
     pub continuity: Continuity<T>,
 }
 
-fn bivector_components<T>(b: &Motor<T>) -> [&T; 6] {
+fn bivector_components<T>(b: &Bivector<T>) -> [&T; 6] {
     [&b.e12, &b.e13, &b.e23, &b.e1inf, &b.e2inf, &b.e3inf]
 }
 
@@ -624,10 +572,10 @@ fn max_abs<'a, T: Real + 'a>(xs: impl IntoIterator<Item = &'a T>) -> T {
 /// `ν_right - k ν_left` is within `tol·s`; otherwise C0. Fails for singular poses.
 ///
 /// ```
-/// use motion::{Continuity, Motor, Pose, joins};
+/// use motion::{Bivector, Continuity, Even, Pose, joins};
 /// let s = Pose::<f64>::identity();
-/// let nu = Motor::new(0.0, 1.0, 2.0, 0.0, 0.0, 0.0, 5.0, 0.0);
-/// let with_gamma = &nu + &Motor::new(0.5, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 2.0);
+/// let nu = Even::from(&Bivector::new(1.0, 2.0, 0.0, 0.0, 0.0, 5.0));
+/// let with_gamma = &nu + &Even::new(0.5, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 2.0);
 /// assert_eq!(joins::check_join(&s, &nu, &s, &with_gamma, &1e-12)?.continuity, Continuity::C1);
 /// assert_eq!(joins::check_join(&s, &nu, &s, &nu.scale(&-1.0), &1e-12)?.continuity, Continuity::C0);
 /// let t = Pose::translation(&[1.0, 0.0, 0.0]);
@@ -636,15 +584,15 @@ fn max_abs<'a, T: Real + 'a>(xs: impl IntoIterator<Item = &'a T>) -> T {
 /// ```
 pub fn check_join<T: Real>(
     left_end: &Pose<T>,
-    left_psi: &Motor<T>,
+    left_psi: &Even<T>,
     right_start: &Pose<T>,
-    right_psi: &Motor<T>,
+    right_psi: &Even<T>,
     tol: &T,
 ) -> Result<JoinCheck<T>, MotionError> {
-    let pose_jump = &right_start.0 - &left_end.0;
+    let pose_jump = right_start - left_end;
     let indicatrix_jump = right_psi - left_psi;
-    let a = bivector_part(left_psi);
-    let b = bivector_part(right_psi);
+    let a = left_psi.project_to_bivector();
+    let b = right_psi.project_to_bivector();
     let nu_jump = &b - &a;
     let continuity = if !left_end.is_equivalent(right_start, tol)? {
         Continuity::Discontinuous
@@ -654,7 +602,7 @@ pub fn check_join<T: Real>(
         if max_abs(bivector_components(&nu_jump)) <= bound {
             Continuity::C1
         } else {
-            let dot = |x: &Motor<T>, y: &Motor<T>| {
+            let dot = |x: &Bivector<T>, y: &Bivector<T>| {
                 bivector_components(x)
                     .into_iter()
                     .zip(bivector_components(y))

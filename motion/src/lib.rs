@@ -5,24 +5,27 @@
 //! [`algebra_core::Jet`], `MpFloat` (feature `rug` of algebra-core); the parts that need no square root also
 //! over exact rationals).
 //!
-//! A *pose* is an element `S` of G_{123inf}^+ (the generated [`Motor`], wrapped in [`Pose`]);
+//! A *pose* is an element `S` of G_{123inf}^+: [`Pose`], generated in this crate
+//! ([`pose::elements`]) together with [`Bivector`] (`ν`, `log S`) and [`Pseudoscalar`] (`α + βω`);
 //! it acts on R^3 by `F_S = P f_S E`, `f_S(x) = rev(S) x S`, so `F_{UV} = F_V F_U`
-//! (Lemma 2.3: `U * V` applies `U` first). Conventions (paper and `docs`): `R = cos(φ/2) +
+//! (Lemma 2.3: `U * V` applies `U` first; [`Pose::then`] and [`Pose::after`] say it in words). Conventions (paper and `docs`): `R = cos(φ/2) +
 //! sin(φ/2) (a e123)` for a unit axis `a`; `T = 1 + ½ v einf`; `S = R T` rotates, then
 //! translates; `ω = e123inf`; `|S| = √(rev(S) S)` is a pseudoscalar `α + βω`. Non-unit poses
 //! are first-class.
 //!
 //! | module | contents |
 //! |---|---|
-//! | [`pose`] | [`Pose`], constructors, norm, unitize, inverse, equivalence (Lemmas 2.4-2.6, Thm 2.8) |
+//! | [`pose`] | [`Pose`], [`Bivector`], [`Pseudoscalar`] (generated), [`Even`]; constructors, norm, unitize, inverse, equivalence (Lemmas 2.4-2.6, Thm 2.8) |
+//! | [`vec3`] | [`Vec3`]: dot, cross, `a ↦ a e123`, `c ↦ c einf`; `ν = Ω e123 + u einf` both ways |
 //! | [`action`] | `F_S` on points and directions (eqs. 6-9) |
 //! | [`matrix`] | 4x4 homogeneous matrices both ways |
-//! | `ops` (private) | operators: `*` composes, `+ - ` for additive motions, `From` with [`Motor`] |
-//! | [`pseudoscalar`] | `a + bω`: inverse, square root, exp, ln (Lemma 2.4) |
+//! | `ops` (private) | [`Pose::then`], [`Pose::after`], `From` with gam-algebras' [`Motor`] |
+//! | [`pseudoscalar`] | `a + bω`: inverse, square root, exp, ln, pow (Lemma 2.4) |
 //! | [`exp_log`] | closed-form exp and log ("dual angle") |
 //! | [`interpolation`] | power, slerp (eq. 15), additive interpolation (eq. 17) |
-//! | [`bezier`] | the [`Motion`] trait, [`CurveError`], additive (eq. 18) and multiplicative (Fig. 2) Bezier motions |
-//! | [`bspline`] | additive and multiplicative B-spline motions with knots (de Boor) |
+//! | [`bezier`] | the [`Motion`] and [`MapScalar`] traits, [`CurveError`], [`Bezier`] motions: additive (eq. 18) and multiplicative (Fig. 2) |
+//! | [`blend`] | [`Blend`]: [`Additive`] (eq. 17) or [`Multiplicative`] (eq. 15) as a type parameter, with the join rules (eqs. 20-23) |
+//! | [`bspline`] | [`BSpline`] motions with knots (de Boor), either blend |
 //! | [`piecewise`] | motions over parameter intervals: [`Reparametrized`], [`Piecewise`], [`AnyMotion`] |
 //! | [`velocity`] | Ψ (eq. 11), γ, ν, Ω and u (Thm 3.2), point velocities (eq. 14), Cor. 3.3, second derivatives, all by dual numbers |
 //! | [`joins`] | end conditions, `ν` and `Ψ = λ(ν + γ)`, control poses for C1/G1 joins (eqs. 22-23), [`Continuity`] check |
@@ -45,6 +48,7 @@
 
 pub mod action;
 pub mod bezier;
+pub mod blend;
 pub mod bspline;
 pub mod error;
 pub mod exp_log;
@@ -58,6 +62,7 @@ pub mod method;
 pub mod nalgebra_conv;
 #[cfg(feature = "nalgebra")]
 pub mod nalgebra_generic;
+mod names;
 mod ops;
 pub mod paper;
 pub mod piecewise;
@@ -68,16 +73,19 @@ mod series;
 pub mod spec;
 mod stable_slerp;
 pub mod trajectory;
+pub mod vec3;
 pub mod velocity;
 
 pub use algebra_core;
-pub use bezier::{AdditiveBezier, CurveError, Motion, MultiplicativeBezier};
-pub use bspline::{AdditiveBSpline, MultiplicativeBSpline};
+pub use bezier::{AdditiveBezier, Bezier, CurveError, MapScalar, Motion, MultiplicativeBezier};
+pub use blend::{Additive, Blend, Multiplicative};
+pub use bspline::{AdditiveBSpline, BSpline, MultiplicativeBSpline};
 pub use error::MotionError;
-pub use gam_algebras::g123inf::{Motor, Pseudoscalar};
+pub use gam_algebras::g123inf::Motor;
 pub use hermite::{HermiteSegment, HermiteShapes};
 pub use joins::{Continuity, EndCondition, JoinCheck, JoinError, SegmentKind, Shape};
 pub use matrix::Matrix4;
 pub use piecewise::{AnyMotion, Piecewise, Reparametrized};
-pub use pose::Pose;
+pub use pose::{Bivector, Even, Pose, Pseudoscalar};
+pub use vec3::Vec3;
 pub use velocity::{Twist, velocity_bivector, velocity_indicatrix};

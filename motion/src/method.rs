@@ -72,30 +72,16 @@ pub enum MethodError {
 impl std::str::FromStr for Method {
     type Err = MethodError;
     fn from_str(s: &str) -> Result<Self, MethodError> {
-        match s {
-            "ccm-additive" => Ok(Method::CcmAdditive),
-            "ccm-multiplicative" => Ok(Method::CcmMultiplicative),
-            _ => Err(match LATER.iter().find(|(n, _)| *n == s) {
-                Some((_, issue)) => MethodError::NotYet { name: s.to_string(), issue: *issue },
-                None => MethodError::Unknown { name: s.to_string() },
-            }),
-        }
+        Method::from_name(s).ok_or_else(|| match LATER.iter().find(|(n, _)| *n == s) {
+            Some((_, issue)) => MethodError::NotYet { name: s.to_string(), issue: *issue },
+            None => MethodError::Unknown { name: s.to_string() },
+        })
     }
 }
 
-impl Method {
-    /// The name in the contract.
-    ///
-    /// ```
-    /// assert_eq!(motion::method::Method::CcmAdditive.name(), "ccm-additive");
-    /// ```
-    pub fn name(self) -> &'static str {
-        match self {
-            Method::CcmAdditive => "ccm-additive",
-            Method::CcmMultiplicative => "ccm-multiplicative",
-        }
-    }
+crate::names::named!("motion::method::Method", Method { CcmAdditive => "ccm-additive", CcmMultiplicative => "ccm-multiplicative" });
 
+impl Method {
     /// The segment kind of a `ccm-*` method.
     ///
     /// ```

@@ -9,7 +9,9 @@
 //! the paper's `U * V` applies `U` first (`F_{UV} = F_V F_U`, Lemma 2.3), nalgebra's
 //! `v * u` applies `u` first, so `to_isometry(U * V) = to_isometry(V) * to_isometry(U)`.
 //!
-//! Both directions go through GAM's hand-written [`DualQuaternion`]:
+//! The isometry conversions are the generic ones of [`crate::nalgebra_generic`] at `f64`
+//! ([`Pose::to_na_isometry`], [`Pose::from_na_isometry`]). The dual-quaternion conversions go
+//! through GAM's hand-written [`DualQuaternion`]:
 //! [`DualQuaternion::from_pose`] is the anti-isomorphism onto the standard dual quaternion of the
 //! same rigid motion, `q = r + ε ½ t r`, which is exactly nalgebra's `UnitDualQuaternion`
 //! (`real` = the rotation, `dual` = `½ t r`, Hamilton quaternions `w + x i + y j + z k`).
@@ -37,7 +39,7 @@
 use crate::{MotionError, Pose};
 use gam_algebras::DualQuaternion;
 use gam_algebras::dual_quaternion::Quaternion;
-use nalgebra::{Isometry3, Translation3, UnitDualQuaternion, UnitQuaternion};
+use nalgebra::{Isometry3, UnitDualQuaternion};
 
 fn to_na(q: &Quaternion<f64>) -> nalgebra::Quaternion<f64> {
     nalgebra::Quaternion::new(q.w, q.x, q.y, q.z)
@@ -52,7 +54,7 @@ impl Pose<f64> {
     /// after unitizing. Fails for singular or non-finite poses.
     fn unit_dual_quaternion(&self) -> Result<DualQuaternion<f64>, MotionError> {
         let u = self.unitize()?;
-        Ok(DualQuaternion::from_pose(u.as_motor()))
+        Ok(DualQuaternion::from_pose(&u.to_motor()))
     }
 
     /// The nalgebra unit dual quaternion of the same rigid motion (`q = r + ε ½ t r`), after
@@ -83,11 +85,11 @@ impl Pose<f64> {
     /// ```
     pub fn from_unit_dual_quaternion(q: &UnitDualQuaternion<f64>) -> Self {
         let q = q.as_ref();
-        Pose(DualQuaternion::new(from_na(&q.real), from_na(&q.dual)).to_pose())
+        Pose::from_motor(DualQuaternion::new(from_na(&q.real), from_na(&q.dual)).to_pose())
     }
 
     /// The nalgebra isometry of the same rigid motion, `p ↦ R p + t`, after unitizing a
-    /// non-unit pose. Fails for singular or non-finite poses.
+    /// non-unit pose ([`Pose::to_na_isometry`] at `f64`). Fails for singular or non-finite poses.
     ///
     /// ```
     /// use motion::Pose;
@@ -95,14 +97,11 @@ impl Pose<f64> {
     /// assert_eq!(iso.translation.vector.z, 3.0);
     /// ```
     pub fn to_isometry(&self) -> Result<Isometry3<f64>, MotionError> {
-        let q = self.unit_dual_quaternion()?;
-        // t = 2 d r* for q = r + ε ½ t r with |r| = 1.
-        let t = (&q.dual * &q.real.conjugate()).scale(&2.0);
-        let rotation = UnitQuaternion::new_normalize(to_na(&q.real));
-        Ok(Isometry3::from_parts(Translation3::new(t.x, t.y, t.z), rotation))
+        self.to_na_isometry()
     }
 
-    /// The unit pose `S = R T` of a nalgebra isometry (rotation, then translation).
+    /// The unit pose `S = R T` of a nalgebra isometry (rotation, then translation;
+    /// [`Pose::from_na_isometry`] at `f64`).
     ///
     /// ```
     /// use motion::Pose;
@@ -113,10 +112,7 @@ impl Pose<f64> {
     /// assert!(s.is_equivalent(&expected, &1e-15).unwrap());
     /// ```
     pub fn from_isometry(iso: &Isometry3<f64>) -> Self {
-        let r = DualQuaternion::from_real(from_na(iso.rotation.quaternion()));
-        let v = iso.translation.vector;
-        let q = &DualQuaternion::from_translation(&[v.x, v.y, v.z]) * &r;
-        Pose(q.to_pose())
+        Pose::from_na_isometry(iso)
     }
 }
 

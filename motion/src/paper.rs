@@ -15,7 +15,7 @@
 //! use motion::paper::sec_5_1;
 //! use motion::spec::SpecKind;
 //! let seg = sec_5_1::spec(SpecKind::Additive, sec_5_1::PRINTED_ANGLE).segment()?;
-//! assert_eq!(format!("{:.3}", seg.control_poses[1].as_motor().e12), sec_5_1::ADDITIVE[0][1]);
+//! assert_eq!(format!("{:.3}", seg.control_poses[1].e12), sec_5_1::ADDITIVE[0][1]);
 //! # Ok::<(), motion::spec::SpecError>(())
 //! ```
 
@@ -61,7 +61,7 @@ pub mod sec_4 {
     /// `U_0..U_3` of the arc exactly as printed (4 decimals).
     ///
     /// ```
-    /// assert_eq!(motion::paper::sec_4::printed_arc()[1].as_motor().scalar, 0.8047);
+    /// assert_eq!(motion::paper::sec_4::printed_arc()[1].scalar, 0.8047);
     /// ```
     #[allow(clippy::approx_constant)] // the paper's printed values
     pub fn printed_arc() -> Vec<Pose<f64>> {
@@ -79,7 +79,7 @@ pub mod sec_4 {
     ///
     /// ```
     /// let e = motion::paper::sec_4::exact_arc();
-    /// assert_eq!(e[3].as_motor().e1inf, 2.0);
+    /// assert_eq!(e[3].e1inf, 2.0);
     /// ```
     pub fn exact_arc() -> Vec<Pose<f64>> {
         let h = std::f64::consts::FRAC_1_SQRT_2;
@@ -94,7 +94,7 @@ pub mod sec_4 {
     /// `V_0..V_3` of the line exactly as printed (translations by `(2x, 4, 0)`).
     ///
     /// ```
-    /// assert_eq!(motion::paper::sec_4::printed_line()[3].as_motor().e1inf, 5.1416);
+    /// assert_eq!(motion::paper::sec_4::printed_line()[3].e1inf, 5.1416);
     /// ```
     #[allow(clippy::approx_constant)] // the paper's printed values
     pub fn printed_line() -> Vec<Pose<f64>> {
@@ -294,7 +294,7 @@ pub mod jaklic {
     ///
     /// ```
     /// let q = motion::paper::jaklic::quaternion(&0.0);
-    /// assert_eq!((q.as_motor().scalar, q.as_motor().e23, q.as_motor().e12), (0.0, 1.0, 1.0));
+    /// assert_eq!((q.scalar, q.e23, q.e12), (0.0, 1.0, 1.0));
     /// ```
     pub fn quaternion<T: Real>(t: &T) -> Pose<T> {
         let quarter = t.mul_ref(&T::pi()).mul_ref(&T::from_ratio(1, 4));
@@ -332,7 +332,7 @@ pub mod jaklic {
         let re = |x: &Jet<f64>| x.re;
         let eps = |x: &Jet<f64>| x.eps;
         let (r, dr) = (rotor.map_scalar(&re), rotor.map_scalar(&eps));
-        let w = (r.inverse()?.as_motor() * dr.as_motor()).scale(&2.0);
+        let w = (r.try_inverse()? * dr).scale(&2.0);
         let omega = [w.e23, -w.e13, w.e12];
         let c = path(&td);
         Ok(EndCondition::new(pose(&t)?, c.clone().map(|x| x.re), c.map(|x| x.eps), omega))

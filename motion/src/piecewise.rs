@@ -25,7 +25,7 @@
 //! ```
 
 use crate::Pose;
-use crate::bezier::{AdditiveBezier, CurveError, Motion, MultiplicativeBezier, check_domain};
+use crate::bezier::{AdditiveBezier, CurveError, MapScalar, Motion, MultiplicativeBezier, check_domain};
 use crate::bspline::{AdditiveBSpline, MultiplicativeBSpline};
 use algebra_core::{Real, Ring};
 
@@ -83,8 +83,6 @@ impl<T: Real, M: Motion<T>> Reparametrized<T, M> {
 }
 
 impl<T: Real, M: Motion<T>> Motion<T> for Reparametrized<T, M> {
-    type Mapped<U: Real> = Reparametrized<U, M::Mapped<U>>;
-
     /// `inner` at the mapped parameter, by [`Motion::evaluate`]: an end of the interval that
     /// rounding maps a few ulps outside the inner domain is no error.
     fn evaluate(&self, t: &T) -> Result<Pose<T>, CurveError> {
@@ -94,8 +92,12 @@ impl<T: Real, M: Motion<T>> Motion<T> for Reparametrized<T, M> {
     fn domain(&self) -> [T; 2] {
         self.interval.clone()
     }
+}
 
-    fn map_scalar<U: Real>(&self, f: &dyn Fn(&T) -> U) -> Self::Mapped<U> {
+impl<T: Real, U: Real, M: MapScalar<T, U>> MapScalar<T, U> for Reparametrized<T, M> {
+    type Mapped = Reparametrized<U, M::Mapped>;
+
+    fn map_scalar(&self, f: &dyn Fn(&T) -> U) -> Self::Mapped {
         Reparametrized { interval: [f(&self.interval[0]), f(&self.interval[1])], inner: self.inner.map_scalar(f) }
     }
 }
@@ -111,7 +113,7 @@ impl<T: Real, M: Motion<T>> Motion<T> for Reparametrized<T, M> {
 /// let seg = MultiplicativeBezier::new(vec![Pose::<f64>::identity(), Pose::translation(&[1.0, 0.0, 0.0])]).unwrap();
 /// let m = Piecewise::new(vec![0.0, 0.5, 2.0], vec![seg.clone(), seg]).unwrap();
 /// let s = m.pose(&1.25).unwrap(); // halfway through the second segment
-/// assert!((s.as_motor().e1inf - 0.25).abs() < 1e-15);
+/// assert!((s.e1inf - 0.25).abs() < 1e-15);
 /// assert!(matches!(m.pose(&-0.1), Err(CurveError::OutOfDomain { .. })));
 /// ```
 #[derive(Clone, Debug, PartialEq)]
@@ -216,8 +218,6 @@ impl<T: Real, M: Motion<T>> Piecewise<T, M> {
 }
 
 impl<T: Real, M: Motion<T>> Motion<T> for Piecewise<T, M> {
-    type Mapped<U: Real> = Piecewise<U, M::Mapped<U>>;
-
     /// The segment with `t_k ≤ t < t_{k+1}` (the first below `t_0`, the last from `t_m` on),
     /// at its reparametrised parameter.
     fn evaluate(&self, t: &T) -> Result<Pose<T>, CurveError> {
@@ -229,8 +229,12 @@ impl<T: Real, M: Motion<T>> Motion<T> for Piecewise<T, M> {
     fn domain(&self) -> [T; 2] {
         [self.breaks[0].clone(), self.breaks[self.breaks.len() - 1].clone()]
     }
+}
 
-    fn map_scalar<U: Real>(&self, f: &dyn Fn(&T) -> U) -> Self::Mapped<U> {
+impl<T: Real, U: Real, M: MapScalar<T, U>> MapScalar<T, U> for Piecewise<T, M> {
+    type Mapped = Piecewise<U, M::Mapped>;
+
+    fn map_scalar(&self, f: &dyn Fn(&T) -> U) -> Self::Mapped {
         Piecewise {
             breaks: self.breaks.iter().map(f).collect(),
             segments: self.segments.iter().map(|s| s.map_scalar(f)).collect(),
@@ -272,7 +276,7 @@ fn check_breaks<T: Real>(breaks: &[T]) -> Result<(), CurveError> {
 /// let first: AnyMotion<f64> = AdditiveBezier::new(vec![Pose::identity(), b.clone()]).unwrap().into();
 /// let second = MultiplicativeBezier::new(vec![b, Pose::translation(&[2.0, 0.0, 0.0])]).unwrap().into();
 /// let m = Piecewise::uniform(vec![first, second]).unwrap();
-/// assert!((m.pose(&1.5).unwrap().as_motor().e1inf - 0.75).abs() < 1e-15);
+/// assert!((m.pose(&1.5).unwrap().e1inf - 0.75).abs() < 1e-15);
 /// ```
 #[derive(Clone, Debug, PartialEq)]
 pub enum AnyMotion<T: Ring> {
@@ -299,8 +303,6 @@ macro_rules! any_motion_from {
 any_motion_from!(AdditiveBezier, MultiplicativeBezier, AdditiveBSpline, MultiplicativeBSpline);
 
 impl<T: Real> Motion<T> for AnyMotion<T> {
-    type Mapped<U: Real> = AnyMotion<U>;
-
     fn evaluate(&self, t: &T) -> Result<Pose<T>, CurveError> {
         match self {
             AnyMotion::AdditiveBezier(m) => m.evaluate(t),
@@ -318,8 +320,12 @@ impl<T: Real> Motion<T> for AnyMotion<T> {
             AnyMotion::MultiplicativeBSpline(m) => m.domain(),
         }
     }
+}
 
-    fn map_scalar<U: Real>(&self, f: &dyn Fn(&T) -> U) -> AnyMotion<U> {
+impl<T: Real, U: Real> MapScalar<T, U> for AnyMotion<T> {
+    type Mapped = AnyMotion<U>;
+
+    fn map_scalar(&self, f: &dyn Fn(&T) -> U) -> AnyMotion<U> {
         match self {
             AnyMotion::AdditiveBezier(m) => AnyMotion::AdditiveBezier(m.map_scalar(f)),
             AnyMotion::MultiplicativeBezier(m) => AnyMotion::MultiplicativeBezier(m.map_scalar(f)),

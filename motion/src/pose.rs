@@ -18,28 +18,59 @@
 //! ```
 
 use crate::MotionError;
-use crate::pseudoscalar;
 use algebra_core::{Field, Real, Ring};
-use gam_algebras::g123inf::{Motor, Pseudoscalar};
+use gam_algebras::g123inf::Motor;
 
-/// A pose: any element `S` of G_{123inf}^+ (eq. 4), unit or not.
-///
-/// A newtype over the generated [`Motor`] rather than an alias: the pose operations
-/// (action on points, norm, exp/log, ...) are inherent methods here without extension traits,
-/// the generated type stays free of hand-written code, and the wrapper is zero-cost
-/// (`repr(transparent)`). The field is public because every even element is a valid pose
-/// value: singular ones (zero transform) are rejected by the operations that need an inverse.
+algebra_macros::algebra! {
+    /// The main paper's G_{123inf} (e1² = e2² = e3² = 1, einf² = 0) with the types the motion
+    /// layer speaks in: [`Pose`] (G_{123inf}^+), [`Bivector`] and [`Pseudoscalar`]. Generated
+    /// here, in the crate that gives them their methods, so the pose is the generated type
+    /// itself (named fields `scalar, e12, e13, e23, e1inf, e2inf, e3inf, e123inf`), with the
+    /// generated products, sums, `reverse`, `scale`, embeddings (`Pose::from(&bivector)`) and
+    /// projections (`pose.project_to_bivector()`).
+    pub mod elements {
+        metric builtin "g123inf";
+        types {
+            /// The paper's pose `S`: any element of G_{123inf}^+ (eq. 4), unit or not, in the
+            /// paper's order `[S∅, S12, S13, S23, S1∞, S2∞, S3∞, Sω]`. The same type carries the
+            /// even elements that are not read as poses (`log S`, the velocity indicatrix `Ψ`):
+            /// see [`crate::Even`].
+            ///
+            /// Generated, no wrapper: every even element is a valid pose value; singular ones
+            /// (zero transform) are rejected by the operations that need an inverse. Three
+            /// generated methods keep the algebra's general meaning: `norm_squared` is the scalar
+            /// `<S rev(S)>_0` (the paper's `|S|² = rev(S) S` is [`Pose::pseudo_norm_squared`]),
+            /// `inverse` solves `S y = 1` by elimination (the closed form of Lemma 2.6 with a
+            /// [`crate::MotionError`] is [`Pose::try_inverse`]), and `dual` is the algebra's dual.
+            ///
+            /// ```
+            /// use motion::Pose;
+            /// let s = Pose::new(1.0, 0.0, 0.0, 0.0, 0.5, 0.0, 0.0, 0.0); // 1 + ½ e1inf
+            /// assert_eq!(s, Pose::translation(&[1.0, 0.0, 0.0]));
+            /// assert_eq!(s.e1inf, 0.5);
+            /// ```
+            Pose = [1, e12, e13, e23, e1inf, e2inf, e3inf, e123inf];
+            /// A bivector `a e123 + c einf` of G_{123inf}: the velocity bivector `ν = Ω e123 + u einf`
+            /// (Theorem 3.2), the bivector part of `Ψ` and of `log S`.
+            Bivector = grade 2;
+            /// A pseudoscalar `α + βω` (`ω = e123inf`, `ω² = 0`): `|S|`, `rev(S) S` (eq. 5), `γ`.
+            Pseudoscalar = [1, e123inf];
+        }
+    }
+}
+
+pub use elements::{Bivector, Pose, Pseudoscalar};
+
+/// An element of G_{123inf}^+ that is not read as a pose: the velocity indicatrix `Ψ`
+/// (eq. 11), `log S`, the argument of [`Pose::exp`]. The same type as [`Pose`]; the name says
+/// how to read it.
 ///
 /// ```
-/// use motion::Pose;
-/// use gam_algebras::g123inf::Motor;
-/// let s = Pose(Motor::new(1.0, 0.0, 0.0, 0.0, 0.5, 0.0, 0.0, 0.0)); // 1 + ½ e1inf
-/// assert_eq!(s, Pose::translation(&[1.0, 0.0, 0.0]));
-/// assert_eq!(s.as_motor().e1inf, 0.5);
+/// use motion::{Even, Pose};
+/// let psi: Even<f64> = Pose::translation(&[2.0, 0.0, 0.0]).log().unwrap();
+/// assert_eq!(psi.e1inf, 1.0);
 /// ```
-#[derive(Clone, PartialEq)]
-#[repr(transparent)]
-pub struct Pose<T>(pub Motor<T>);
+pub type Even<T> = elements::Pose<T>;
 
 impl<T: Ring> Pose<T> {
     /// The identity pose `1`.
@@ -49,35 +80,38 @@ impl<T: Ring> Pose<T> {
     /// assert_eq!(i.transform_point(&[1.0, 2.0, 3.0]).unwrap(), [1.0, 2.0, 3.0]);
     /// ```
     pub fn identity() -> Self {
-        Pose(Motor::one())
+        Pose::one()
     }
 
-    /// Wraps an even element.
+    /// The pose of an element of gam-algebras' `g123inf::Motor` (the same coefficients; for
+    /// interoperation with [`gam_algebras::DualQuaternion`] and code generated there).
     ///
     /// ```
     /// use gam_algebras::g123inf::Motor;
     /// assert_eq!(motion::Pose::from_motor(Motor::<f64>::one()), motion::Pose::identity());
     /// ```
     pub fn from_motor(m: Motor<T>) -> Self {
-        Pose(m)
+        let Motor { scalar, e12, e13, e23, e1inf, e2inf, e3inf, e123inf } = m;
+        Pose { scalar, e12, e13, e23, e1inf, e2inf, e3inf, e123inf }
     }
 
-    /// The underlying even element.
+    /// The same coefficients as gam-algebras' `g123inf::Motor` (see [`Pose::from_motor`]).
     ///
     /// ```
-    /// assert_eq!(motion::Pose::<f64>::identity().as_motor().scalar, 1.0);
+    /// assert_eq!(motion::Pose::<f64>::identity().to_motor().scalar, 1.0);
     /// ```
-    pub fn as_motor(&self) -> &Motor<T> {
-        &self.0
+    pub fn to_motor(&self) -> Motor<T> {
+        self.clone().into_motor()
     }
 
-    /// The underlying even element, by value.
+    /// The same coefficients as gam-algebras' `g123inf::Motor`, by value.
     ///
     /// ```
     /// assert_eq!(motion::Pose::<f64>::identity().into_motor().e12, 0.0);
     /// ```
     pub fn into_motor(self) -> Motor<T> {
-        self.0
+        let Pose { scalar, e12, e13, e23, e1inf, e2inf, e3inf, e123inf } = self;
+        Motor { scalar, e12, e13, e23, e1inf, e2inf, e3inf, e123inf }
     }
 
     /// The translation `T = 1 + ½ v einf` by `v` (exact over exact scalars).
@@ -90,7 +124,7 @@ impl<T: Ring> Pose<T> {
     pub fn translation(v: &[T; 3]) -> Self {
         let half = T::from_ratio(1, 2);
         let z = T::zero;
-        Pose(Motor::new(T::one(), z(), z(), z(), v[0].mul_ref(&half), v[1].mul_ref(&half), v[2].mul_ref(&half), z()))
+        Pose::new(T::one(), z(), z(), z(), v[0].mul_ref(&half), v[1].mul_ref(&half), v[2].mul_ref(&half), z())
     }
 
     /// `c + s (a e123)` for a vector `a` (not normalised): with `a` a unit vector,
@@ -106,17 +140,7 @@ impl<T: Ring> Pose<T> {
     /// ```
     pub fn rotor_from_parts(c: &T, s: &T, a: &[T; 3]) -> Self {
         let z = T::zero;
-        Pose(Motor::new(c.clone(), s.mul_ref(&a[2]), s.mul_ref(&a[1]).neg_ref(), s.mul_ref(&a[0]), z(), z(), z(), z()))
-    }
-
-    /// The reverse `rev(S)` (negates the bivector part).
-    ///
-    /// ```
-    /// let t = motion::Pose::translation(&[2.0, 0.0, 0.0]);
-    /// assert_eq!(t.reverse(), motion::Pose::translation(&[-2.0, 0.0, 0.0]));
-    /// ```
-    pub fn reverse(&self) -> Self {
-        Pose(self.0.reverse())
+        Pose::new(c.clone(), s.mul_ref(&a[2]), s.mul_ref(&a[1]).neg_ref(), s.mul_ref(&a[0]), z(), z(), z(), z())
     }
 
     /// `rev(S) S = α + βω` in closed form (eq. 5):
@@ -124,12 +148,13 @@ impl<T: Ring> Pose<T> {
     ///
     /// ```
     /// use algebra_core::rational::q;
-    /// use gam_algebras::g123inf::{Motor, Pseudoscalar};
-    /// let s = motion::Pose(Motor::new(q(1), q(2), q(0), q(0), q(0), q(0), q(3), q(1)));
-    /// assert_eq!(s.norm_squared(), Pseudoscalar::new(q(5), q(2 * (1 - 2 * 3))));
+    /// use motion::{Pose, Pseudoscalar};
+    /// let s = Pose::new(q(1), q(2), q(0), q(0), q(0), q(0), q(3), q(1));
+    /// assert_eq!(s.pseudo_norm_squared(), Pseudoscalar::new(q(5), q(2 * (1 - 2 * 3))));
+    /// assert_eq!(s.norm_squared(), q(5)); // the generated scalar part <S rev(S)>_0 = α
     /// ```
-    pub fn norm_squared(&self) -> Pseudoscalar<T> {
-        let s = &self.0;
+    pub fn pseudo_norm_squared(&self) -> Pseudoscalar<T> {
+        let s = self;
         let alpha = s.scalar.mul_ref(&s.scalar) + s.e12.mul_ref(&s.e12) + s.e13.mul_ref(&s.e13) + s.e23.mul_ref(&s.e23);
         let half_beta =
             s.scalar.mul_ref(&s.e123inf) - s.e12.mul_ref(&s.e3inf) + s.e13.mul_ref(&s.e2inf) - s.e23.mul_ref(&s.e1inf);
@@ -140,33 +165,22 @@ impl<T: Ring> Pose<T> {
     /// `F_S` is the zero transform (Lemma 2.6). Floats that are merely tiny are not singular here.
     ///
     /// ```
-    /// use gam_algebras::g123inf::Motor;
-    /// assert!(motion::Pose(Motor::new(0.0, 0.0, 0.0, 0.0, 1.0, 2.0, 3.0, 4.0)).is_singular());
+    /// assert!(motion::Pose::new(0.0, 0.0, 0.0, 0.0, 1.0, 2.0, 3.0, 4.0).is_singular());
     /// assert!(!motion::Pose::<f64>::identity().is_singular());
     /// ```
     pub fn is_singular(&self) -> bool {
-        self.norm_squared().scalar.is_exact_zero()
-    }
-
-    /// `s S` for a scalar `s` (an equivalent pose when `s ≠ 0`).
-    ///
-    /// ```
-    /// let t = motion::Pose::translation(&[2.0, 0.0, 0.0]).scale(&3.0);
-    /// assert_eq!(t.as_motor().scalar, 3.0);
-    /// ```
-    pub fn scale(&self, s: &T) -> Self {
-        Pose(self.0.scale(s))
+        self.pseudo_norm_squared().scalar.is_exact_zero()
     }
 
     /// `γ S` for a pseudoscalar `γ` (an equivalent pose when `γ` is non-singular, Theorem 2.8).
     ///
     /// ```
-    /// use gam_algebras::g123inf::Pseudoscalar;
+    /// use motion::Pseudoscalar;
     /// let s = motion::Pose::<f64>::identity().scale_pseudoscalar(&Pseudoscalar::new(2.0, 1.0));
-    /// assert_eq!((s.as_motor().scalar, s.as_motor().e123inf), (2.0, 1.0));
+    /// assert_eq!((s.scalar, s.e123inf), (2.0, 1.0));
     /// ```
     pub fn scale_pseudoscalar(&self, gamma: &Pseudoscalar<T>) -> Self {
-        Pose(gamma * &self.0)
+        gamma * self
     }
 
     /// Theorem 2.8, exactly: `self` and `other` are non-singular and `other = γ self` for a
@@ -175,8 +189,7 @@ impl<T: Ring> Pose<T> {
     ///
     /// ```
     /// use algebra_core::rational::{q, Q};
-    /// use gam_algebras::g123inf::Pseudoscalar;
-    /// use motion::Pose;
+    /// use motion::{Pose, Pseudoscalar};
     /// let s = Pose::<Q>::rotor_from_parts(&q(1), &q(2), &[q(0), q(1), q(0)]) * Pose::translation(&[q(1), q(2), q(3)]);
     /// let v = s.scale_pseudoscalar(&Pseudoscalar::new(q(-3), q(7)));
     /// assert!(s.is_equivalent_exact(&v));
@@ -186,7 +199,7 @@ impl<T: Ring> Pose<T> {
         if self.is_singular() || other.is_singular() {
             return false;
         }
-        let w = &other.0 * &self.0.reverse();
+        let w = other * &self.reverse();
         [&w.e12, &w.e13, &w.e23, &w.e1inf, &w.e2inf, &w.e3inf].into_iter().all(Ring::is_exact_zero)
     }
 
@@ -197,7 +210,7 @@ impl<T: Ring> Pose<T> {
     /// assert_eq!(motion::Pose::translation(&[2.0, 0.0, 0.0]).components()[4], &1.0);
     /// ```
     pub fn components(&self) -> [&T; 8] {
-        let s = &self.0;
+        let s = self;
         [&s.scalar, &s.e12, &s.e13, &s.e23, &s.e1inf, &s.e2inf, &s.e3inf, &s.e123inf]
     }
 
@@ -214,12 +227,13 @@ impl<T: Field> Pose<T> {
     /// use algebra_core::rational::{q, Q};
     /// use motion::Pose;
     /// let s = Pose::<Q>::rotor_from_parts(&q(1), &q(2), &[q(1), q(0), q(0)]) * Pose::translation(&[q(3), q(0), q(1)]);
-    /// assert_eq!(&s * &s.inverse().unwrap(), Pose::identity());
+    /// assert_eq!(&s * &s.try_inverse().unwrap(), Pose::identity());
+    /// assert_eq!(s.try_inverse().unwrap(), s.inverse().unwrap()); // the generated elimination agrees
     /// ```
-    pub fn inverse(&self) -> Result<Self, MotionError> {
+    pub fn try_inverse(&self) -> Result<Self, MotionError> {
         crate::scaled::require_finite("inverse", self, [])?;
-        let inv_n2 = pseudoscalar::inverse(&self.norm_squared()).map_err(|_| self.singular("inverse"))?;
-        Ok(Pose(&inv_n2 * &self.0.reverse()))
+        let inv_n2 = self.pseudo_norm_squared().try_inverse().map_err(|_| self.singular("inverse"))?;
+        Ok(&inv_n2 * &self.reverse())
     }
 }
 
@@ -256,12 +270,33 @@ impl<T: Real> Pose<T> {
         Ok(Pose::rotation(axis, angle)? * Pose::translation(translation))
     }
 
+    /// `S = R T` from a rotation quaternion `q = [w, x, y, z]` (Hamilton, `w + x i + y j + z k`,
+    /// normalised here without overflow: components of size 1e200 or 1e-300 are fine) and the
+    /// translation: the rotor is `w + (x, y, z) e123` ([`Pose::rotor_from_parts`]), so
+    /// `F_S(p) = q p q* + translation`. Fails for a zero or non-finite quaternion.
+    ///
+    /// ```
+    /// use motion::{MotionError, Pose};
+    /// let h = std::f64::consts::FRAC_1_SQRT_2;
+    /// let s = Pose::from_quaternion_translation(&[1e200, 0.0, 0.0, 1e200], &[1.0, 0.0, 0.0])?; // quarter turn about e3
+    /// let want = Pose::from_axis_angle_translation(&[0.0, 0.0, 1.0], &std::f64::consts::FRAC_PI_2, &[1.0, 0.0, 0.0])?;
+    /// assert!(s.is_equivalent(&want, &1e-15)? && (s.scalar - h).abs() < 1e-15);
+    /// assert_eq!(Pose::from_quaternion_translation(&[0.0; 4], &[0.0; 3]), Err(MotionError::ZeroQuaternion));
+    /// # Ok::<(), MotionError>(())
+    /// ```
+    pub fn from_quaternion_translation(q: &[T; 4], translation: &[T; 3]) -> Result<Self, MotionError> {
+        for x in q.iter().chain(translation) {
+            check_finite_scalar("from_quaternion_translation", x)?;
+        }
+        let [w, x, y, z] = crate::scaled::direction(q).ok_or(MotionError::ZeroQuaternion)?;
+        Ok(Pose::rotor_from_parts(&w, &T::one(), &[x, y, z]) * Pose::translation(translation))
+    }
+
     /// The pseudoscalar norm `|S| = √(rev(S) S) = (2α + βω)/(2√α)` (Lemma 2.4(ii) with
     /// `rev(S) S = α + βω`, the root with positive scalar part). Fails for singular `S`.
     ///
     /// ```
-    /// use gam_algebras::g123inf::Motor;
-    /// let s = motion::Pose(Motor::new(2.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0)); // 2 + ω
+    /// let s = motion::Pose::new(2.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0); // 2 + ω
     /// let n = s.norm().unwrap(); // rev(S) S = 4 + 4ω, |S| = 2 + ω
     /// assert_eq!((n.scalar, n.e123inf), (2.0, 1.0));
     /// ```
@@ -269,7 +304,7 @@ impl<T: Real> Pose<T> {
         self.check_finite("norm")?;
         // |m S'| = m |S'|: the squares of S' = S/m neither overflow nor underflow.
         let (m, s) = crate::scaled::rotational_scale(self).ok_or_else(|| self.singular("norm"))?;
-        let n = pseudoscalar::sqrt(&s.norm_squared()).map_err(|_| self.singular("norm"))?;
+        let n = s.pseudo_norm_squared().sqrt().map_err(|_| self.singular("norm"))?;
         let n = Pseudoscalar::new(n.scalar.mul_ref(&m), n.e123inf.mul_ref(&m));
         if Real::is_finite(&n.scalar) && Real::is_finite(&n.e123inf) {
             Ok(n)
@@ -289,8 +324,8 @@ impl<T: Real> Pose<T> {
         self.check_finite("unitize")?;
         // S/|S| = S'/|S'| for S' = S/m (no overflow of |S| for huge S).
         let (_, s) = crate::scaled::rotational_scale(self).ok_or_else(|| self.singular("unitize"))?;
-        let n = pseudoscalar::sqrt(&s.norm_squared()).map_err(|_| self.singular("unitize"))?;
-        let inv = pseudoscalar::inverse(&n).map_err(|_| self.singular("unitize"))?;
+        let n = s.pseudo_norm_squared().sqrt().map_err(|_| self.singular("unitize"))?;
+        let inv = n.try_inverse().map_err(|_| self.singular("unitize"))?;
         let u = s.scale_pseudoscalar(&inv);
         u.check_finite("unitize")?;
         Ok(u)
@@ -303,7 +338,7 @@ impl<T: Real> Pose<T> {
     /// assert!(!motion::Pose::<f64>::identity().scale(&2.0).is_unitary(&1e-15));
     /// ```
     pub fn is_unitary(&self, tol: &T) -> bool {
-        let n2 = self.norm_squared();
+        let n2 = self.pseudo_norm_squared();
         Real::abs(&n2.scalar.sub_ref(&T::one())) <= *tol && Real::abs(&n2.e123inf) <= *tol
     }
 
@@ -314,16 +349,15 @@ impl<T: Real> Pose<T> {
     /// translations of size `L` expect rounding of order `L·ε`. Fails for singular input.
     ///
     /// ```
-    /// use gam_algebras::g123inf::Pseudoscalar;
-    /// use motion::Pose;
+    /// use motion::{Pose, Pseudoscalar};
     /// let s = Pose::from_axis_angle_translation(&[1.0, 2.0, 3.0], &0.7, &[4.0, 5.0, 6.0]).unwrap();
     /// let v = s.scale_pseudoscalar(&Pseudoscalar::new(-2.0, 0.5));
     /// assert!(s.is_equivalent(&v, &1e-12).unwrap());
     /// assert!(!s.is_equivalent(&Pose::identity(), &1e-12).unwrap());
     /// ```
     pub fn is_equivalent(&self, other: &Self, tol: &T) -> Result<bool, MotionError> {
-        let a = self.norm_squared().scalar;
-        let b = other.norm_squared().scalar;
+        let a = self.pseudo_norm_squared().scalar;
+        let b = other.pseudo_norm_squared().scalar;
         if !is_positive(&a) {
             return Err(self.singular("is_equivalent"));
         }
@@ -332,7 +366,7 @@ impl<T: Real> Pose<T> {
         }
         let scale = Real::sqrt(&a).mul_ref(&Real::sqrt(&b));
         let bound = tol.mul_ref(&scale);
-        let w = &other.0 * &self.0.reverse();
+        let w = other * &self.reverse();
         Ok([&w.e12, &w.e13, &w.e23, &w.e1inf, &w.e2inf, &w.e3inf].into_iter().all(|x| Real::abs(x) <= bound))
     }
 

@@ -24,7 +24,7 @@ pub(crate) fn length<T: Real>(x: &[T]) -> Option<T> {
 
 /// `x / max|x_i|`, `None` for the zero vector. Subnormal components (whose reciprocal
 /// overflows) are first scaled up by exact powers of two.
-fn by_largest<T: Real>(x: &[T; 3]) -> Option<[T; 3]> {
+fn by_largest<T: Real, const N: usize>(x: &[T; N]) -> Option<[T; N]> {
     let mut x = x.clone();
     let up = T::from_i64(1 << 62);
     for _ in 0..8 {
@@ -41,7 +41,7 @@ fn by_largest<T: Real>(x: &[T; 3]) -> Option<[T; 3]> {
 }
 
 /// `x / |x|`, `None` for the zero vector.
-pub(crate) fn direction<T: Real>(x: &[T; 3]) -> Option<[T; 3]> {
+pub(crate) fn direction<T: Real, const N: usize>(x: &[T; N]) -> Option<[T; N]> {
     let y = by_largest(x)?;
     let inv_len = length(&y)?.try_recip()?;
     Some(y.map(|c| c.mul_ref(&inv_len)))

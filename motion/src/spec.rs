@@ -26,7 +26,7 @@
 
 use crate::hermite::{HermiteSegment, hermite_segment};
 use crate::joins::{EndCondition, JoinError, SegmentKind, Shape};
-use crate::{MotionError, Pseudoscalar};
+use crate::{MotionError, Pose, Pseudoscalar};
 
 /// The largest degree accepted (a segment of degree `n` has `n + 1` control poses).
 pub const MAX_DEGREE: i64 = 10_000;
@@ -242,11 +242,9 @@ impl HermiteSpec {
                 JoinError::Motion(m) => SpecError::Motion { end: None, source: m },
                 other => SpecError::Join(other),
             })?;
-        let poses = seg.control_poses.iter().map(|s| s.as_motor());
-        let mut all = poses.chain(&seg.velocity_bivectors).chain(&seg.velocity_indicatrices);
-        if !all.all(|m| {
-            [m.scalar, m.e12, m.e13, m.e23, m.e1inf, m.e2inf, m.e3inf, m.e123inf].iter().all(|x| x.is_finite())
-        }) {
+        let nus = seg.velocity_bivectors.iter().map(Pose::from);
+        let mut all = seg.control_poses.iter().cloned().chain(nus).chain(seg.velocity_indicatrices.iter().cloned());
+        if !all.all(|m| m.is_finite()) {
             return Err(SpecError::NotFinite { end: "result", value: f64::INFINITY });
         }
         Ok(seg)

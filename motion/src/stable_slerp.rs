@@ -8,10 +8,9 @@
 //! exponentially with the degree: 4e-7 at degree 20, failure from about 40). The factors
 //! are applied to the unitized slerp of each pair.
 
-use crate::pose::Pose;
-use crate::{MotionError, pseudoscalar};
+use crate::MotionError;
+use crate::pose::{Pose, Pseudoscalar};
 use algebra_core::{Real, Ring};
-use gam_algebras::g123inf::Pseudoscalar;
 
 struct Factored<T: Ring> {
     unit: Pose<T>,
@@ -24,7 +23,7 @@ impl<T: Real> Factored<T> {
     /// powers `1 + t` and `t` at every level, so rounding noise in `l` would otherwise grow
     /// like `(1 + 2t)^n` with the degree `n`.
     fn new(s: &Pose<T>) -> Result<Self, MotionError> {
-        let mut l = pseudoscalar::ln(&s.norm()?)?;
+        let mut l = s.norm()?.ln()?;
         let one = T::one();
         if l.scalar.is_negligible(&one, 8) {
             l.scalar = T::zero();
@@ -48,7 +47,7 @@ impl<T: Real> Factored<T> {
     }
 
     fn expand(&self) -> Pose<T> {
-        self.unit.scale_pseudoscalar(&pseudoscalar::exp(&self.log_factor))
+        self.unit.scale_pseudoscalar(&self.log_factor.exp())
     }
 }
 

@@ -39,20 +39,20 @@
 //! # Ok::<(), motion::trajectory::TrajectoryError>(())
 //! ```
 
-use crate::bezier::{AdditiveBezier, CurveError, Motion, MultiplicativeBezier};
+use crate::bezier::{CurveError, Motion};
 use crate::hermite::{HermiteSegment, HermiteShapes, hermite_with_parameters};
 use crate::joins::{EndCondition, JoinError, SegmentKind};
 use crate::piecewise::{AnyMotion, Piecewise};
 use crate::pose::is_positive;
 use crate::velocity::{PointKinematics, Twist, acceleration, velocity};
-use crate::{MotionError, Pose};
+use crate::{MotionError, Pose, Vec3};
 use algebra_core::{Real, Ring};
 
 /// How the velocities at the key poses are chosen (module docs).
 ///
 /// ```
 /// use motion::{trajectory::Velocities, velocity::Twist};
-/// let given = Velocities::Given(vec![Twist { angular: [0.0; 3], linear: [1.0, 0.0, 0.0] }; 2]);
+/// let given = Velocities::Given(vec![Twist { angular: [0.0; 3].into(), linear: [1.0, 0.0, 0.0].into() }; 2]);
 /// assert!(matches!(given, Velocities::Given(ref v) if v.len() == 2));
 /// ```
 #[derive(Clone, Debug, PartialEq)]
@@ -237,21 +237,11 @@ impl<T: Real> Trajectory<T> {
             .map(|(s, w)| {
                 let p = s.transform_point(&[T::zero(), T::zero(), T::zero()])?;
                 let v = w.point_velocity(&p);
-                Ok(EndCondition::new(s.clone(), p, v, w.angular.clone()))
+                Ok(EndCondition::new(s.clone(), p, v.into(), w.angular.to_array()))
             })
             .collect::<Result<Vec<_>, MotionError>>()?;
         let segments = hermite_with_parameters(kind, 3, &conditions, times, shapes)?;
-        let pieces = segments
-            .iter()
-            .map(|seg| {
-                Ok(match kind {
-                    SegmentKind::Additive => AnyMotion::from(AdditiveBezier::new(seg.control_poses.clone())?),
-                    SegmentKind::Multiplicative => {
-                        AnyMotion::from(MultiplicativeBezier::new(seg.control_poses.clone())?)
-                    }
-                })
-            })
-            .collect::<Result<Vec<_>, CurveError>>()?;
+        let pieces = segments.iter().map(|seg| seg.clone().into_motion()).collect::<Result<Vec<_>, CurveError>>()?;
         let motion = Piecewise::new(times.to_vec(), pieces)?;
         let tr = Trajectory { kind, poses, twists, segments, motion };
         if !matches!(shapes, HermiteShapes::PerSegment(_)) {
@@ -358,7 +348,7 @@ impl<T: Real> Trajectory<T> {
                     (Some(l), Some(r)) => {
                         let (sl, sr) = (l.pose.components(), r.pose.components());
                         let (nl, nr) = (l.nu(), r.nu());
-                        let (nl, nr) = (Pose::from_motor(nl), Pose::from_motor(nr));
+                        let (nl, nr) = (Pose::from(&nl), Pose::from(&nr));
                         let (nl, nr) = (nl.components(), nr.components());
                         let gap =
                             |a: [&T; 8], b: [&T; 8]| (0..8).map(|i| a[i].sub_ref(b[i]).magnitude()).fold(0.0, f64::max);
@@ -386,18 +376,8 @@ impl<T: Real> Trajectory<T> {
         let acc = acceleration(&self.motion, t)?;
         let space = acc.velocity.twist();
         let rate = acc.twist_derivative();
+        let body_twist = acc.velocity.body_twist()?;
         let pose = acc.velocity.pose;
-        let zero = [T::zero(), T::zero(), T::zero()];
-        let origin = pose.transform_point(&zero)?;
-        let axes = [0, 1, 2].map(|i| {
-            let mut e = zero.clone();
-            e[i] = T::one();
-            pose.transform_direction(&e)
-        });
-        let [r0, r1, r2] = axes;
-        let columns = [r0?, r1?, r2?];
-        let to_body = |v: &[T; 3]| columns.clone().map(|c| dot(&c, v));
-        let body_twist = Twist { angular: to_body(&space.angular), linear: to_body(&space.point_velocity(&origin)) };
         let points = body_points
             .iter()
             .map(|p| {
@@ -405,9 +385,8 @@ impl<T: Real> Trajectory<T> {
                 let v = space.point_velocity(&q);
                 // d/dt (u + Ω × q) = du/dt + dΩ/dt × q + Ω × dq/dt.
                 let a1 = rate.point_velocity(&q);
-                let a2 = cross(&space.angular, &v);
-                let a = std::array::from_fn(|i| a1[i].add_ref(&a2[i]));
-                Ok(PointKinematics { position: q, velocity: v, acceleration: a })
+                let a = a1.add(&space.angular.cross(&v));
+                Ok(PointKinematics { position: q, velocity: v.into(), acceleration: a.into() })
             })
             .collect::<Result<Vec<_>, MotionError>>()?;
         Ok(TrajectorySample {
@@ -479,7 +458,7 @@ impl<T: Real> Trajectory<T> {
 }
 
 fn zero_twist<T: Ring>() -> Twist<T> {
-    Twist { angular: [T::zero(), T::zero(), T::zero()], linear: [T::zero(), T::zero(), T::zero()] }
+    Twist { angular: Vec3::zero(), linear: Vec3::zero() }
 }
 
 /// The [`Velocities::CatmullRom`] estimate (module docs).
@@ -488,11 +467,11 @@ fn catmull_rom<T: Real>(poses: &[Pose<T>], times: &[T]) -> Result<Vec<Twist<T>>,
     // The twist of the screw motion from pose k to pose k + 1 over its interval.
     let screw = |k: usize| -> Result<(Twist<T>, T), TrajectoryError> {
         let h = times[k + 1].sub_ref(&times[k]);
-        let rel = &poses[k].inverse()? * &poses[k + 1];
+        let rel = &poses[k].try_inverse()? * &poses[k + 1];
         let l = rel.log_shortest()?;
-        let w = Twist::from_bivector(&l);
+        let w = Twist::from_bivector(&l.project_to_bivector());
         let s = T::from_i64(2).div_ref(&h);
-        Ok((Twist { angular: w.angular.map(|x| x.mul_ref(&s)), linear: w.linear.map(|x| x.mul_ref(&s)) }, h))
+        Ok((Twist { angular: w.angular.scale(&s), linear: w.linear.scale(&s) }, h))
     };
     let mut out = vec![zero_twist()];
     for i in 1..m - 1 {
@@ -500,21 +479,9 @@ fn catmull_rom<T: Real>(poses: &[Pose<T>], times: &[T]) -> Result<Vec<Twist<T>>,
         let (right, hr) = screw(i)?;
         let sum = hl.add_ref(&hr);
         let (wl, wr) = (hr.div_ref(&sum), hl.div_ref(&sum));
-        let mix = |a: &[T; 3], b: &[T; 3]| std::array::from_fn(|j| a[j].mul_ref(&wl).add_ref(&b[j].mul_ref(&wr)));
+        let mix = |a: &Vec3<T>, b: &Vec3<T>| a.scale(&wl).add(&b.scale(&wr));
         out.push(Twist { angular: mix(&left.angular, &right.angular), linear: mix(&left.linear, &right.linear) });
     }
     out.push(zero_twist());
     Ok(out)
-}
-
-fn dot<T: Ring>(a: &[T; 3], b: &[T; 3]) -> T {
-    a[0].mul_ref(&b[0]).add_ref(&a[1].mul_ref(&b[1])).add_ref(&a[2].mul_ref(&b[2]))
-}
-
-fn cross<T: Ring>(a: &[T; 3], b: &[T; 3]) -> [T; 3] {
-    [
-        a[1].mul_ref(&b[2]).sub_ref(&a[2].mul_ref(&b[1])),
-        a[2].mul_ref(&b[0]).sub_ref(&a[0].mul_ref(&b[2])),
-        a[0].mul_ref(&b[1]).sub_ref(&a[1].mul_ref(&b[0])),
-    ]
 }

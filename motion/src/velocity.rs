@@ -1,6 +1,6 @@
 //! Velocities of motions (Sec. 3 of the main paper), with every derivative taken by running
 //! the motion's own evaluation code over dual numbers: the control poses are lifted with
-//! [`Motion::map_scalar`] to [`Jet<T>`] (or `Jet<Jet<T>>` for second derivatives) and the motion
+//! [`MapScalar::map_scalar`] to [`Jet<T>`] (or `Jet<Jet<T>>` for second derivatives) and the motion
 //! is evaluated at `t + ε`. No derivative formula is written by hand.
 //!
 //! * the velocity indicatrix `Ψ(t) = 2 S(t)⁻¹ dS/dt` (eq. 11), for unit and non-unit motions;
@@ -31,10 +31,10 @@
 //! assert!(v.gamma().scalar.abs() < 1e-15); // unitary motion: Ψ = ν (Lemma 3.4)
 //! ```
 
-use crate::bezier::{CurveError, Motion};
+use crate::bezier::{CurveError, MapScalar, Motion, check_domain};
+use crate::{Bivector, Even, Pseudoscalar, Vec3};
 use crate::{MotionError, Pose};
 use algebra_core::{Field, Jet, Real, Ring};
-use gam_algebras::g123inf::{Motor, Pseudoscalar};
 
 fn lift<T: Ring>(x: &T) -> Jet<T> {
     Jet::constant(x.clone())
@@ -49,17 +49,17 @@ fn lift2<T: Ring>(x: &T) -> Jet<Jet<T>> {
 ///
 /// ```
 /// use algebra_core::Jet;
-/// use motion::Motor;
-/// let m = Motor::new(Jet::new(1.0, 2.0), Jet::constant(0.0), Jet::constant(0.0), Jet::constant(0.0),
+/// use motion::Even;
+/// let m = Even::new(Jet::new(1.0, 2.0), Jet::constant(0.0), Jet::constant(0.0), Jet::constant(0.0),
 ///     Jet::new(0.5, -1.0), Jet::constant(0.0), Jet::constant(0.0), Jet::constant(0.0));
 /// let (v, d) = motion::velocity::split_jet(&m);
 /// assert_eq!((v.scalar, v.e1inf, d.scalar, d.e1inf), (1.0, 0.5, 2.0, -1.0));
 /// ```
-pub fn split_jet<T: Ring>(m: &Motor<Jet<T>>) -> (Motor<T>, Motor<T>) {
+pub fn split_jet<T: Ring>(m: &Even<Jet<T>>) -> (Even<T>, Even<T>) {
     let re = |x: &Jet<T>| x.re.clone();
     let eps = |x: &Jet<T>| x.eps.clone();
     let parts = |f: &dyn Fn(&Jet<T>) -> T| {
-        Motor::new(f(&m.scalar), f(&m.e12), f(&m.e13), f(&m.e23), f(&m.e1inf), f(&m.e2inf), f(&m.e3inf), f(&m.e123inf))
+        Even::new(f(&m.scalar), f(&m.e12), f(&m.e13), f(&m.e23), f(&m.e1inf), f(&m.e2inf), f(&m.e3inf), f(&m.e123inf))
     };
     (parts(&re), parts(&eps))
 }
@@ -74,21 +74,24 @@ pub fn split_jet<T: Ring>(m: &Motor<Jet<T>>) -> (Motor<T>, Motor<T>) {
 /// assert_eq!(s, Pose::translation(&[1.0, 0.0, 0.0]));
 /// assert_eq!(ds.e1inf, 1.0); // S_1 - S_0 = e1inf
 /// ```
-pub fn pose_derivative<T: Real, M: Motion<T>>(motion: &M, t: &T) -> Result<(Pose<T>, Motor<T>), CurveError> {
-    let s = motion.map_scalar(&lift::<T>).pose(&Jet::variable(t.clone()))?;
-    let (value, derivative) = split_jet(&s.0);
-    Ok((Pose(value), derivative))
+pub fn pose_derivative<T: Field + PartialOrd, M: MapScalar<T, Jet<T>>>(
+    motion: &M,
+    t: &T,
+) -> Result<(Pose<T>, Even<T>), CurveError> {
+    check_domain(t, &motion.domain())?;
+    let s = motion.map_scalar(&lift::<T>).evaluate(&Jet::variable(t.clone()))?;
+    Ok(split_jet(&s))
 }
 
 /// `(S, dS/dt, d²S/dt²)` at one parameter value, as returned by [`pose_second_derivative`].
 ///
 /// ```
 /// use motion::velocity::SecondOrder;
-/// use motion::{Motor, Pose};
-/// let d: SecondOrder<f64> = (Pose::identity(), Motor::zero(), Motor::zero());
+/// use motion::{Even, Pose};
+/// let d: SecondOrder<f64> = (Pose::identity(), Even::zero(), Even::zero());
 /// assert_eq!(d.1, d.2);
 /// ```
-pub type SecondOrder<T> = (Pose<T>, Motor<T>, Motor<T>);
+pub type SecondOrder<T> = (Pose<T>, Even<T>, Even<T>);
 
 /// `S(t)`, `dS/dt` and `d²S/dt²`, from evaluating the motion over `Jet<Jet<T>>` at
 /// `(t + ε₁) + ε₂` (nested dual numbers).
@@ -100,19 +103,23 @@ pub type SecondOrder<T> = (Pose<T>, Motor<T>, Motor<T>);
 /// let (_, ds, dds) = pose_second_derivative(&m, &0.5).unwrap();
 /// assert_eq!((ds.e1inf, dds.e1inf), (1.0, 2.0)); // S = 1 + t² e1inf
 /// ```
-pub fn pose_second_derivative<T: Real, M: Motion<T>>(motion: &M, t: &T) -> Result<SecondOrder<T>, CurveError> {
+pub fn pose_second_derivative<T: Real, M: MapScalar<T, Jet<Jet<T>>>>(
+    motion: &M,
+    t: &T,
+) -> Result<SecondOrder<T>, CurveError> {
     let s = evaluate2(motion, t)?;
-    let (value, derivative) = split_jet(&s.0);
+    let (value, derivative) = split_jet(&s);
     let (s0, s1) = split_jet(&value);
     let (_, s2) = split_jet(&derivative);
-    Ok((Pose(s0), s1, s2))
+    Ok((s0, s1, s2))
 }
 
 /// The motion over `Jet<Jet<T>>` at `Jet(Jet(t, 1), Jet(1, 0))`: the value part is
 /// `S + S'ε₁`, the derivative part `S' + S''ε₁`.
-fn evaluate2<T: Real, M: Motion<T>>(motion: &M, t: &T) -> Result<Pose<Jet<Jet<T>>>, CurveError> {
+fn evaluate2<T: Real, M: MapScalar<T, Jet<Jet<T>>>>(motion: &M, t: &T) -> Result<Pose<Jet<Jet<T>>>, CurveError> {
     let tt = Jet::new(Jet::variable(t.clone()), Jet::constant(T::one()));
-    motion.map_scalar(&lift2::<T>).pose(&tt)
+    check_domain(t, &motion.domain())?;
+    motion.map_scalar(&lift2::<T>).evaluate(&tt)
 }
 
 /// The definition `Ψ = 2 S⁻¹ dS/dt` (eq. 11) for a pose and its derivative, over any field
@@ -121,15 +128,15 @@ fn evaluate2<T: Real, M: Motion<T>>(motion: &M, t: &T) -> Result<Pose<Jet<Jet<T>
 /// ```
 /// use algebra_core::rational::{q, Q};
 /// use motion::velocity::indicatrix_from_derivative;
-/// use motion::{Motor, Pose};
+/// use motion::{Even, Pose};
 /// // S = 2 (non-unit identity), dS/dt = e12: Ψ = 2 · ½ · e12 = e12.
 /// let s = Pose::<Q>::identity().scale(&q(2));
-/// let ds = Motor::new(q(0), q(1), q(0), q(0), q(0), q(0), q(0), q(0));
+/// let ds = Even::new(q(0), q(1), q(0), q(0), q(0), q(0), q(0), q(0));
 /// assert_eq!(indicatrix_from_derivative(&s, &ds).unwrap(), ds);
 /// ```
-pub fn indicatrix_from_derivative<T: Field>(s: &Pose<T>, ds: &Motor<T>) -> Result<Motor<T>, MotionError> {
-    let inverse = s.inverse()?;
-    Ok((&inverse.0 * ds).scale(&T::from_i64(2)))
+pub fn indicatrix_from_derivative<T: Field>(s: &Pose<T>, ds: &Even<T>) -> Result<Even<T>, MotionError> {
+    let inverse = s.try_inverse()?;
+    Ok((&inverse * ds).scale(&T::from_i64(2)))
 }
 
 /// The velocity indicatrix `Ψ(t) = 2 S(t)⁻¹ dS/dt` (eq. 11), `dS/dt` from dual numbers. Fails
@@ -143,7 +150,10 @@ pub fn indicatrix_from_derivative<T: Field>(s: &Pose<T>, ds: &Motor<T>) -> Resul
 /// let psi = velocity_indicatrix(&m, &1.0).unwrap();
 /// assert_eq!((psi.scalar, psi.e12), (1.0, 0.0));
 /// ```
-pub fn velocity_indicatrix<T: Real, M: Motion<T>>(motion: &M, t: &T) -> Result<Motor<T>, CurveError> {
+pub fn velocity_indicatrix<T: Field + PartialOrd, M: MapScalar<T, Jet<T>>>(
+    motion: &M,
+    t: &T,
+) -> Result<Even<T>, CurveError> {
     let (s, ds) = pose_derivative(motion, t)?;
     Ok(indicatrix_from_derivative(&s, &ds)?)
 }
@@ -159,13 +169,13 @@ pub fn velocity_indicatrix<T: Real, M: Motion<T>>(motion: &M, t: &T) -> Result<M
 /// let (psi, dpsi) = velocity_indicatrix_derivative(&m, &1.0).unwrap();
 /// assert_eq!((psi.scalar, dpsi.scalar), (1.0, -0.5));
 /// ```
-pub fn velocity_indicatrix_derivative<T: Real, M: Motion<T>>(
+pub fn velocity_indicatrix_derivative<T: Real, M: MapScalar<T, Jet<Jet<T>>>>(
     motion: &M,
     t: &T,
-) -> Result<(Motor<T>, Motor<T>), CurveError> {
+) -> Result<(Even<T>, Even<T>), CurveError> {
     let s = evaluate2(motion, t)?;
-    let (value, derivative) = split_jet(&s.0);
-    let psi = indicatrix_from_derivative(&Pose(value), &derivative)?;
+    let (value, derivative) = split_jet(&s);
+    let psi = indicatrix_from_derivative(&value, &derivative)?;
     Ok(split_jet(&psi))
 }
 
@@ -173,19 +183,20 @@ pub fn velocity_indicatrix_derivative<T: Real, M: Motion<T>>(
 /// `ν = ½(Ψ - rev Ψ)` of an even element (Sec. 3), computed with the reverse as printed.
 ///
 /// ```
-/// use motion::Motor;
+/// use motion::{Bivector, Even};
 /// use motion::velocity::split_indicatrix;
-/// let psi = Motor::new(0.5, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0);
+/// let psi = Even::new(0.5, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0);
 /// let (gamma, nu) = split_indicatrix(&psi);
 /// assert_eq!((gamma.scalar, gamma.e123inf), (0.5, 7.0));
-/// assert_eq!(nu, Motor::new(0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 0.0));
+/// assert_eq!(nu, Bivector::new(1.0, 2.0, 3.0, 4.0, 5.0, 6.0));
+/// assert_eq!(&Even::from(&gamma) + &Even::from(&nu), psi); // Ψ = γ + ν
 /// ```
-pub fn split_indicatrix<T: Ring>(psi: &Motor<T>) -> (Pseudoscalar<T>, Motor<T>) {
+pub fn split_indicatrix<T: Ring>(psi: &Even<T>) -> (Pseudoscalar<T>, Bivector<T>) {
     let half = T::from_ratio(1, 2);
     let rev = psi.reverse();
     let gamma = (psi + &rev).scale(&half);
     let nu = (psi - &rev).scale(&half);
-    (Pseudoscalar::new(gamma.scalar, gamma.e123inf), nu)
+    (gamma.project_to_pseudoscalar(), nu.project_to_bivector())
 }
 
 /// The velocity bivector `ν(t)`: the bivector part of [`velocity_indicatrix`].
@@ -197,41 +208,29 @@ pub fn split_indicatrix<T: Ring>(psi: &Motor<T>) -> (Pseudoscalar<T>, Motor<T>) 
 /// let nu = velocity_bivector(&m, &0.5).unwrap();
 /// assert_eq!(nu.e1inf, 3.0); // u = (3, 0, 0)
 /// ```
-pub fn velocity_bivector<T: Real, M: Motion<T>>(motion: &M, t: &T) -> Result<Motor<T>, CurveError> {
+pub fn velocity_bivector<T: Field + PartialOrd, M: MapScalar<T, Jet<T>>>(
+    motion: &M,
+    t: &T,
+) -> Result<Bivector<T>, CurveError> {
     Ok(split_indicatrix(&velocity_indicatrix(motion, t)?).1)
 }
 
-/// `a × b`.
-fn cross<T: Ring>(a: &[T; 3], b: &[T; 3]) -> [T; 3] {
-    [
-        a[1].mul_ref(&b[2]).sub_ref(&a[2].mul_ref(&b[1])),
-        a[2].mul_ref(&b[0]).sub_ref(&a[0].mul_ref(&b[2])),
-        a[0].mul_ref(&b[1]).sub_ref(&a[1].mul_ref(&b[0])),
-    ]
-}
-
-/// `Ω e123 + c einf` as an even element (`Ω e123 = Ω1 e23 - Ω2 e13 + Ω3 e12`).
-fn rotational_plus_einf<T: Ring>(omega: &[T; 3], c: &[T; 3]) -> Motor<T> {
-    let z = T::zero;
-    Motor::new(
-        z(),
-        omega[2].clone(),
-        omega[1].neg_ref(),
-        omega[0].clone(),
-        c[0].clone(),
-        c[1].clone(),
-        c[2].clone(),
-        z(),
-    )
-}
-
-/// The angular velocity `Ω` and the linear velocity `u` of a velocity bivector
-/// `ν = Ω e123 + u einf` (Theorem 3.2), in global coordinates: `u` is the velocity of the body
-/// point instantaneously at the origin.
+/// A twist: the angular velocity `Ω` and the linear velocity `u` of a velocity bivector
+/// `ν = Ω e123 + u einf` (Theorem 3.2). Which frame the two vectors are in depends on where the
+/// twist came from:
+///
+/// * the **space twist** ([`Velocity::twist`], [`Velocity::space_twist`], `ν` of
+///   `Ψ = 2 S⁻¹ dS/dt`): `Ω` in the fixed frame, and `u` the velocity of the body point that is
+///   instantaneously at the *global origin* (not of the body origin), in the fixed frame;
+/// * the **body twist** ([`Velocity::body_twist`], `ν_b = S ν S⁻¹`): `Ω` and the velocity of
+///   the *body origin*, both in body coordinates (nalgebra/robotics "body velocity").
+///
+/// The velocity of any body point follows from either ([`Twist::point_velocity`]).
 ///
 /// ```
 /// use motion::velocity::Twist;
-/// let t = Twist { angular: [0.0, 0.0, 1.0], linear: [1.0, 0.0, 0.0] };
+/// use motion::Vec3;
+/// let t = Twist { angular: Vec3::new(0.0, 0.0, 1.0), linear: Vec3::new(1.0, 0.0, 0.0) };
 /// let nu = t.to_bivector();
 /// assert_eq!((nu.e12, nu.e1inf), (1.0, 1.0));
 /// assert_eq!(Twist::from_bivector(&nu), t);
@@ -239,50 +238,48 @@ fn rotational_plus_einf<T: Ring>(omega: &[T; 3], c: &[T; 3]) -> Motor<T> {
 #[derive(Clone, Debug, PartialEq)]
 pub struct Twist<T> {
     /// `Ω`.
-    pub angular: [T; 3],
+    pub angular: Vec3<T>,
     /// `u`.
-    pub linear: [T; 3],
+    pub linear: Vec3<T>,
 }
 
 impl<T: Ring> Twist<T> {
-    /// Reads `Ω = (ν23, -ν13, ν12)` and `u = (ν1∞, ν2∞, ν3∞)` off `ν` (scalar and ω parts are
-    /// ignored).
+    /// Reads `Ω = (ν23, -ν13, ν12)` and `u = (ν1∞, ν2∞, ν3∞)` off `ν`.
     ///
     /// ```
-    /// use motion::{Motor, velocity::Twist};
-    /// let nu = Motor::new(0.0, 3.0, 2.0, 1.0, 4.0, 5.0, 6.0, 0.0);
-    /// assert_eq!(Twist::from_bivector(&nu), Twist { angular: [1.0, -2.0, 3.0], linear: [4.0, 5.0, 6.0] });
+    /// use motion::{Bivector, velocity::Twist};
+    /// let nu = Bivector::new(3.0, 2.0, 1.0, 4.0, 5.0, 6.0);
+    /// let t = Twist::from_bivector(&nu);
+    /// assert_eq!((t.angular, t.linear), ([1.0, -2.0, 3.0].into(), [4.0, 5.0, 6.0].into()));
     /// ```
-    pub fn from_bivector(nu: &Motor<T>) -> Self {
-        Twist {
-            angular: [nu.e23.clone(), nu.e13.neg_ref(), nu.e12.clone()],
-            linear: [nu.e1inf.clone(), nu.e2inf.clone(), nu.e3inf.clone()],
-        }
+    pub fn from_bivector(nu: &Bivector<T>) -> Self {
+        Twist { angular: nu.rotational(), linear: nu.translational() }
     }
 
     /// `ν = Ω e123 + u einf` (Theorem 3.2).
     ///
     /// ```
-    /// use motion::{Motor, velocity::Twist};
-    /// let t = Twist { angular: [1.0, -2.0, 3.0], linear: [4.0, 5.0, 6.0] };
-    /// assert_eq!(t.to_bivector(), Motor::new(0.0, 3.0, 2.0, 1.0, 4.0, 5.0, 6.0, 0.0));
+    /// use motion::{Bivector, Vec3, velocity::Twist};
+    /// let t = Twist { angular: Vec3::new(1.0, -2.0, 3.0), linear: Vec3::new(4.0, 5.0, 6.0) };
+    /// assert_eq!(t.to_bivector(), Bivector::new(3.0, 2.0, 1.0, 4.0, 5.0, 6.0));
     /// ```
-    pub fn to_bivector(&self) -> Motor<T> {
-        rotational_plus_einf(&self.angular, &self.linear)
+    pub fn to_bivector(&self) -> Bivector<T> {
+        Bivector::from_parts(&self.angular, &self.linear)
     }
 
-    /// The velocity of the body point instantaneously at `q` (global coordinates):
-    /// `v_Q = u + (q ∧ Ω) e123 = u + Ω × q` (eq. 14 with Lemma 2.1).
+    /// The velocity of the body point instantaneously at `q` (in the twist's frame):
+    /// `v_Q = u + (q ∧ Ω) e123 = u + Ω × q` (eq. 14 with Lemma 2.1). For a space twist `q` is
+    /// the point's current global position; for a body twist, its body coordinates (and the
+    /// result is in body coordinates).
     ///
     /// ```
-    /// use motion::velocity::Twist;
+    /// use motion::{Vec3, velocity::Twist};
     /// // Spinning about e3 at unit rate: the point at (1, 0, 0) moves along e2.
-    /// let t = Twist { angular: [0.0, 0.0, 1.0], linear: [0.0, 0.0, 0.0] };
+    /// let t = Twist { angular: Vec3::new(0.0, 0.0, 1.0), linear: Vec3::zero() };
     /// assert_eq!(t.point_velocity(&[1.0, 0.0, 0.0]), [0.0, 1.0, 0.0]);
     /// ```
-    pub fn point_velocity(&self, q: &[T; 3]) -> [T; 3] {
-        let w = cross(&self.angular, q);
-        std::array::from_fn(|i| self.linear[i].add_ref(&w[i]))
+    pub fn point_velocity(&self, q: &[T; 3]) -> Vec3<T> {
+        self.linear.add(&self.angular.cross(&Vec3::from(q)))
     }
 }
 
@@ -295,15 +292,16 @@ impl<T: Ring> Twist<T> {
 /// use motion::velocity::{Twist, bivector_from_point_velocity};
 /// // Spinning about e3 at unit rate with the origin fixed: the point at (1, 0, 0) moves along e2.
 /// let nu = bivector_from_point_velocity(&[0.0, 0.0, 1.0], &[1.0, 0.0, 0.0], &[0.0, 1.0, 0.0]);
-/// assert_eq!(Twist::from_bivector(&nu), Twist { angular: [0.0, 0.0, 1.0], linear: [0.0, 0.0, 0.0] });
+/// assert_eq!(Twist::from_bivector(&nu), Twist { angular: [0.0, 0.0, 1.0].into(), linear: [0.0, 0.0, 0.0].into() });
 /// ```
-pub fn bivector_from_point_velocity<T: Ring>(omega: &[T; 3], r: &[T; 3], v: &[T; 3]) -> Motor<T> {
+pub fn bivector_from_point_velocity<T: Ring>(omega: &[T; 3], r: &[T; 3], v: &[T; 3]) -> Bivector<T> {
     let z = T::zero;
     let wedge = |i: usize, j: usize| omega[i].mul_ref(&r[j]).sub_ref(&omega[j].mul_ref(&r[i]));
-    let omega_wedge_r = Motor::new(z(), wedge(0, 1), wedge(0, 2), wedge(1, 2), z(), z(), z(), z());
-    let pseudo = Motor::new(z(), z(), z(), z(), z(), z(), z(), T::one());
-    let base = rotational_plus_einf(omega, v);
-    &base + &(&omega_wedge_r * &pseudo)
+    let omega_wedge_r = Bivector::new(wedge(0, 1), wedge(0, 2), wedge(1, 2), z(), z(), z());
+    let pseudo = Pseudoscalar::new(z(), T::one());
+    let base = Bivector::from_parts(&Vec3::from(omega), &Vec3::from(v));
+    let rotated: Bivector<T> = &omega_wedge_r * &pseudo;
+    &base + &rotated
 }
 
 /// The first-order state of a motion at one parameter value: `S`, `dS/dt` and `Ψ`.
@@ -321,9 +319,9 @@ pub struct Velocity<T: Ring> {
     /// `S(t)`.
     pub pose: Pose<T>,
     /// `dS/dt`.
-    pub derivative: Motor<T>,
+    pub derivative: Even<T>,
     /// `Ψ(t) = 2 S⁻¹ dS/dt`.
-    pub indicatrix: Motor<T>,
+    pub indicatrix: Even<T>,
 }
 
 /// [`Velocity`] of a motion at `t`.
@@ -334,7 +332,7 @@ pub struct Velocity<T: Ring> {
 /// let m = MultiplicativeBezier::new(vec![Pose::<f64>::identity(), Pose::rotation(&[1.0, 0.0, 0.0], &2.0).unwrap()]).unwrap();
 /// assert!((velocity(&m, &0.3).unwrap().twist().angular[0] - 2.0).abs() < 1e-15);
 /// ```
-pub fn velocity<T: Real, M: Motion<T>>(motion: &M, t: &T) -> Result<Velocity<T>, CurveError> {
+pub fn velocity<T: Field + PartialOrd, M: MapScalar<T, Jet<T>>>(motion: &M, t: &T) -> Result<Velocity<T>, CurveError> {
     let (pose, derivative) = pose_derivative(motion, t)?;
     let indicatrix = indicatrix_from_derivative(&pose, &derivative)?;
     Ok(Velocity { pose, derivative, indicatrix })
@@ -361,7 +359,7 @@ impl<T: Real> Velocity<T> {
     /// let m = AdditiveBezier::new(vec![Pose::<f64>::identity(), Pose::translation(&[0.0, 2.0, 0.0])]).unwrap();
     /// assert_eq!(velocity(&m, &0.0).unwrap().nu().e2inf, 2.0);
     /// ```
-    pub fn nu(&self) -> Motor<T> {
+    pub fn nu(&self) -> Bivector<T> {
         split_indicatrix(&self.indicatrix).1
     }
 
@@ -378,6 +376,43 @@ impl<T: Real> Velocity<T> {
         Twist::from_bivector(&self.nu())
     }
 
+    /// The space twist: the same as [`Velocity::twist`] (`Ω` in the fixed frame, `u` the
+    /// velocity of the body point at the global origin), named for the frame.
+    ///
+    /// ```
+    /// use motion::velocity::velocity;
+    /// use motion::{MultiplicativeBezier, Pose};
+    /// let m = MultiplicativeBezier::new(vec![Pose::<f64>::identity(), Pose::translation(&[1.0, 0.0, 0.0])]).unwrap();
+    /// let v = velocity(&m, &0.5).unwrap();
+    /// assert_eq!(v.space_twist(), v.twist());
+    /// ```
+    pub fn space_twist(&self) -> Twist<T> {
+        self.twist()
+    }
+
+    /// The body twist: `ν_b = S ν S⁻¹` read as `Ω_b e123 + u_b einf`, so `Ω_b` is the angular
+    /// velocity in body coordinates and `u_b` the velocity of the body origin in body
+    /// coordinates (`Ω = A Ω_b`, `F_S(0)' = A u_b` for the rotation `A` of `F_S`). Fails for
+    /// singular `S`.
+    ///
+    /// ```
+    /// use motion::velocity::velocity;
+    /// use motion::{MultiplicativeBezier, Pose};
+    /// use std::f64::consts::FRAC_PI_2;
+    /// // A quarter turn about e3, then moving along the fixed e1 axis at unit speed.
+    /// let a = Pose::from_axis_angle_translation(&[0.0, 0.0, 1.0], &FRAC_PI_2, &[0.0, 0.0, 0.0]).unwrap();
+    /// let b = Pose::from_axis_angle_translation(&[0.0, 0.0, 1.0], &FRAC_PI_2, &[1.0, 0.0, 0.0]).unwrap();
+    /// let v = velocity(&MultiplicativeBezier::new(vec![a, b]).unwrap(), &0.5).unwrap();
+    /// let body = v.body_twist().unwrap();
+    /// // In body coordinates the body moves along its own -e2 axis (e1 = A(-e2)).
+    /// assert!(body.linear[0].abs() < 1e-15 && (body.linear[1] + 1.0).abs() < 1e-15);
+    /// ```
+    pub fn body_twist(&self) -> Result<Twist<T>, MotionError> {
+        let nu = Even::from(&self.nu());
+        let body = &(&self.pose * &nu) * &self.pose.try_inverse()?;
+        Ok(Twist::from_bivector(&body.project_to_bivector()))
+    }
+
     /// The velocity of the body point currently at `q` (global coordinates), eq. (14).
     ///
     /// ```
@@ -387,7 +422,7 @@ impl<T: Real> Velocity<T> {
     /// let v = velocity(&m, &0.0).unwrap().point_velocity(&[2.0, 0.0, 0.0]);
     /// assert!(v[0].abs() < 1e-15 && (v[1] - 2.0).abs() < 1e-15);
     /// ```
-    pub fn point_velocity(&self, q: &[T; 3]) -> [T; 3] {
+    pub fn point_velocity(&self, q: &[T; 3]) -> Vec3<T> {
         self.twist().point_velocity(q)
     }
 
@@ -404,7 +439,7 @@ impl<T: Real> Velocity<T> {
     /// ```
     pub fn body_point_velocity(&self, p: &[T; 3]) -> Result<([T; 3], [T; 3]), MotionError> {
         let q = self.pose.transform_point(p)?;
-        let v = self.point_velocity(&q);
+        let v = self.point_velocity(&q).into();
         Ok((q, v))
     }
 }
@@ -425,9 +460,9 @@ pub struct Acceleration<T: Ring> {
     /// `S`, `dS/dt`, `Ψ`.
     pub velocity: Velocity<T>,
     /// `d²S/dt²`.
-    pub second_derivative: Motor<T>,
+    pub second_derivative: Even<T>,
     /// `dΨ/dt`.
-    pub indicatrix_derivative: Motor<T>,
+    pub indicatrix_derivative: Even<T>,
 }
 
 /// [`Acceleration`] of a motion at `t`.
@@ -438,17 +473,17 @@ pub struct Acceleration<T: Ring> {
 /// // Constant-rate rotation: dΩ/dt = 0.
 /// let m = MultiplicativeBezier::new(vec![Pose::<f64>::identity(), Pose::rotation(&[0.0, 0.0, 1.0], &1.0).unwrap()]).unwrap();
 /// let a = acceleration(&m, &0.4).unwrap();
-/// assert!(a.twist_derivative().angular.iter().all(|x| x.abs() < 1e-15));
+/// assert!(a.twist_derivative().angular.to_array().iter().all(|x| x.abs() < 1e-15));
 /// ```
-pub fn acceleration<T: Real, M: Motion<T>>(motion: &M, t: &T) -> Result<Acceleration<T>, CurveError> {
+pub fn acceleration<T: Real, M: MapScalar<T, Jet<Jet<T>>>>(motion: &M, t: &T) -> Result<Acceleration<T>, CurveError> {
     let s = evaluate2(motion, t)?;
-    let (value, derivative) = split_jet(&s.0);
-    let psi = indicatrix_from_derivative(&Pose(value.clone()), &derivative)?;
+    let (value, derivative) = split_jet(&s);
+    let psi = indicatrix_from_derivative(&value, &derivative)?;
     let (pose, ds) = split_jet(&value);
     let (_, dds) = split_jet(&derivative);
     let (indicatrix, indicatrix_derivative) = split_jet(&psi);
     Ok(Acceleration {
-        velocity: Velocity { pose: Pose(pose), derivative: ds, indicatrix },
+        velocity: Velocity { pose, derivative: ds, indicatrix },
         second_derivative: dds,
         indicatrix_derivative,
     })
@@ -476,7 +511,7 @@ impl<T: Real> Acceleration<T> {
     /// let m = AdditiveBezier::new(vec![Pose::<f64>::identity(), Pose::identity(), Pose::translation(&[0.0, 0.0, 2.0])]).unwrap();
     /// assert_eq!(acceleration(&m, &0.0).unwrap().nu_derivative().e3inf, 4.0); // ν = 4t e3inf
     /// ```
-    pub fn nu_derivative(&self) -> Motor<T> {
+    pub fn nu_derivative(&self) -> Bivector<T> {
         split_indicatrix(&self.indicatrix_derivative).1
     }
 
@@ -524,7 +559,7 @@ pub struct PointKinematics<T> {
 /// let k = body_point_kinematics(&m, &0.0, &[1.0, 0.0, 0.0]).unwrap();
 /// assert!((k.velocity[1] - 1.0).abs() < 1e-15 && (k.acceleration[0] + 1.0).abs() < 1e-15);
 /// ```
-pub fn body_point_kinematics<T: Real, M: Motion<T>>(
+pub fn body_point_kinematics<T: Real, M: MapScalar<T, Jet<Jet<T>>>>(
     motion: &M,
     t: &T,
     p: &[T; 3],

@@ -10,14 +10,14 @@ use algebra_core::Real;
 use algebra_core::rational::{Q, q, ratio};
 use common::*;
 use motion::{
-    AdditiveBSpline, AdditiveBezier, AnyMotion, CurveError, Motion, Motor, MultiplicativeBSpline, MultiplicativeBezier,
+    AdditiveBSpline, AdditiveBezier, AnyMotion, CurveError, Even, Motion, MultiplicativeBSpline, MultiplicativeBezier,
     Piecewise, Pose, Reparametrized,
 };
 use proptest::prelude::*;
 
 fn qpose(c: [i64; 8]) -> Pose<Q> {
     let [a, b, cc, d, e, f, g, h] = c.map(q);
-    Pose(Motor::new(a, b, cc, d, e, f, g, h))
+    Pose::new(a, b, cc, d, e, f, g, h)
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -53,10 +53,10 @@ proptest! {
         coeffs in prop::collection::vec(prop::array::uniform8(-10.0f64..10.0), 1..9),
         t in -0.5f64..1.5,
     ) {
-        let poses: Vec<Pose<f64>> = coeffs.iter().map(|c| Pose(Motor::new(c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7]))).collect();
+        let poses: Vec<Pose<f64>> = coeffs.iter().map(|c| Pose::new(c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7])).collect();
         let m = AdditiveBezier::new(poses.clone()).unwrap();
-        let scale = poses.iter().map(|p| size(&p.0)).fold(1.0, f64::max) * 4f64.powi(m.degree() as i32);
-        prop_assert!(diff(&m.bernstein(&t).0, &m.de_casteljau(&t).0) <= 1e-14 * scale);
+        let scale = poses.iter().map(size).fold(1.0, f64::max) * 4f64.powi(m.degree() as i32);
+        prop_assert!(diff(&m.bernstein(&t), &m.de_casteljau(&t)) <= 1e-14 * scale);
     }
 
     /// The multiplicative tableau of unit poses stays unitary and is symmetric under reversal.
@@ -65,7 +65,7 @@ proptest! {
         let m = MultiplicativeBezier::new(unit_poses(n)).unwrap();
         let s = m.pose(&t).unwrap();
         prop_assert!(s.is_unitary(&1e-13));
-        prop_assert!(diff(&s.0, &m.reversed().pose(&(1.0 - t)).unwrap().0) < 1e-12);
+        prop_assert!(diff(&s, &m.reversed().pose(&(1.0 - t)).unwrap()) < 1e-12);
     }
 }
 
@@ -110,14 +110,14 @@ fn multiplicative_cubic_matches_figure_2() {
     let p = non_unit(&unit_poses(3));
     let m = MultiplicativeBezier::new(p.clone()).unwrap();
     let t = 0.37;
-    let phi = |a: &Pose<f64>, b: &Pose<f64>| a * &(&a.reverse() * b).power(&t).unwrap();
+    let phi = |a: &Pose<f64>, b: &Pose<f64>| a * (a.reverse() * b).power(&t).unwrap();
     let (s01, s12, s23) = (phi(&p[0], &p[1]), phi(&p[1], &p[2]), phi(&p[2], &p[3]));
     let (s012, s123) = (phi(&s01, &s12), phi(&s12, &s23));
     let s = phi(&s012, &s123);
-    assert!(diff(&m.pose(&t).unwrap().0, &s.0) < 1e-12 * size(&s.0));
+    assert!(diff(&m.pose(&t).unwrap(), &s) < 1e-12 * size(&s));
     let tab = m.tableau(&t).unwrap();
-    assert!(diff(&tab[1][1].0, &s12.0) < 1e-13 * size(&s12.0));
-    assert!(diff(&tab[2][0].0, &s012.0) < 1e-12 * size(&s012.0));
+    assert!(diff(&tab[1][1], &s12) < 1e-13 * size(&s12));
+    assert!(diff(&tab[2][0], &s012) < 1e-12 * size(&s012));
 }
 
 /// Unit control poses: the reversal `S_{0..n}(t) = S_{n..0}(1 - t)` holds (degrees 1..5). Non-unit
@@ -132,11 +132,11 @@ fn multiplicative_reversal_needs_unit_poses() {
         for t in [0.0, 0.2, 0.5, 0.9, 1.0] {
             let a = unit.pose(&t).unwrap();
             let b = unit.reversed().pose(&(1.0 - t)).unwrap();
-            assert!(diff(&a.0, &b.0) < 1e-12, "unit, degree {n}, t = {t}");
+            assert!(diff(&a, &b) < 1e-12, "unit, degree {n}, t = {t}");
 
             let a = raw.pose(&t).unwrap();
             let b = raw.reversed().pose(&(1.0 - t)).unwrap();
-            assert!(diff(&a.0, &b.0) > 1e-2, "non-unit, degree {n}, t = {t}: unexpectedly equal");
+            assert!(diff(&a, &b) > 1e-2, "non-unit, degree {n}, t = {t}: unexpectedly equal");
             assert!(a.is_equivalent(&b, &1e-11).unwrap(), "non-unit, degree {n}, t = {t}: not equivalent");
         }
     }
@@ -154,11 +154,11 @@ fn lemma_4_1_equivalent_control_poses() {
         assert!(u.is_equivalent(&r, &1e-11).unwrap());
         let p = [0.3, -1.2, 2.0];
         assert!(diff_n(&u.transform_point(&p).unwrap(), &r.transform_point(&p).unwrap()) < 1e-11);
-        assert!(diff(&u.0, &unitized.pose(&t).unwrap().0) < 1e-12);
+        assert!(diff(&u, &unitized.pose(&t).unwrap()) < 1e-12);
     }
-    assert!(diff(&raw.pose(&0.0).unwrap().0, &raw.poses()[0].0) < 1e-15);
-    assert!(diff(&raw.pose(&1.0).unwrap().0, &raw.poses()[4].0) > 0.1); // only equivalent
-    assert!(diff(&unitized.pose(&1.0).unwrap().0, &unit.poses()[4].0) < 1e-12);
+    assert!(diff(&raw.pose(&0.0).unwrap(), &raw.poses()[0]) < 1e-15);
+    assert!(diff(&raw.pose(&1.0).unwrap(), &raw.poses()[4]) > 0.1); // only equivalent
+    assert!(diff(&unitized.pose(&1.0).unwrap(), &unit.poses()[4]) < 1e-12);
 }
 
 /// With all control poses on one screw (powers of one element), the multiplicative motion of
@@ -170,7 +170,7 @@ fn multiplicative_motion_of_collinear_screw_poses() {
         let poses = (0..=n).map(|i| g.power(&(i as f64 / n as f64)).unwrap()).collect();
         let m = MultiplicativeBezier::new(poses).unwrap();
         for t in [0.1, 0.45, 0.8] {
-            assert!(diff(&m.pose(&t).unwrap().0, &g.power(&t).unwrap().0) < 1e-13, "degree {n}");
+            assert!(diff(&m.pose(&t).unwrap(), &g.power(&t).unwrap()) < 1e-13, "degree {n}");
         }
     }
 }
@@ -183,7 +183,7 @@ fn bezier_errors() {
     assert!(matches!(m.pose(&-0.01), Err(CurveError::OutOfDomain { .. })));
     assert!(matches!(m.pose(&f64::NAN), Err(CurveError::OutOfDomain { .. })));
     assert!(m.evaluate(&1.2).is_ok()); // the continuation is available unchecked
-    let singular = Pose(Motor::new(0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0));
+    let singular = Pose::new(0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0);
     let bad = MultiplicativeBezier::new(vec![Pose::identity(), singular]).unwrap();
     assert!(matches!(bad.pose(&0.5), Err(CurveError::Pose(motion::MotionError::Singular { .. }))));
     let e = CurveError::OutOfDomain { t: "2".into(), start: "0".into(), end: "1".into() };
@@ -230,13 +230,13 @@ fn additive_bspline_de_boor_equals_basis_sum() {
         let last = (p..poses.len()).rev().find(|&k| knots[k] < knots[k + 1]).unwrap();
         for k in 0..=20 {
             let t = a + (b - a) * f64::from(k) / 20.0;
-            let mut sum = Motor::zero();
+            let mut sum = Even::zero();
             for (i, s) in poses.iter().enumerate() {
                 let w = basis(&knots, i, p, t, last);
-                sum += s.0.scale(&w);
+                sum += s.scale(&w);
             }
             let got = m.pose(&t).unwrap();
-            assert!(diff(&got.0, &sum) < 1e-12 * size(&sum), "degree {p}, t = {t}");
+            assert!(diff(&got, &sum) < 1e-12 * size(&sum), "degree {p}, t = {t}");
         }
     }
 }
@@ -300,8 +300,8 @@ fn multiplicative_bspline_properties() {
     for k in 0..=10 {
         assert!(m.pose(&(f64::from(k) / 10.0)).unwrap().is_unitary(&1e-13));
     }
-    let constant = MultiplicativeBSpline::clamped_uniform(2, vec![poses[2].clone(); 5]).unwrap();
-    assert!(diff(&constant.pose(&0.61).unwrap().0, &poses[2].0) < 1e-14);
+    let constant = MultiplicativeBSpline::clamped_uniform(2, vec![poses[2]; 5]).unwrap();
+    assert!(diff(&constant.pose(&0.61).unwrap(), &poses[2]) < 1e-14);
     // Move S_0: the spans from u_4 = 1/4 on are unaffected (S_0 acts on [u_0, u_4)).
     let mut moved = poses.clone();
     moved[0] = Pose::translation(&[5.0, 5.0, 5.0]);
@@ -310,7 +310,7 @@ fn multiplicative_bspline_properties() {
     for t in [0.25, 0.5, 0.7, 1.0] {
         assert_eq!(m.pose(&t).unwrap(), m2.pose(&t).unwrap());
     }
-    assert!(diff(&m.pose(&0.2).unwrap().0, &m2.pose(&0.2).unwrap().0) > 1e-3);
+    assert!(diff(&m.pose(&0.2).unwrap(), &m2.pose(&0.2).unwrap()) > 1e-3);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -321,8 +321,8 @@ fn multiplicative_bspline_properties() {
 #[test]
 fn piecewise_motion() {
     let u = unit_poses(3);
-    let first = AdditiveBezier::new(vec![u[0].clone(), u[1].clone()]).unwrap();
-    let second = AdditiveBezier::new(vec![u[1].clone(), u[2].clone(), u[3].clone()]).unwrap();
+    let first = AdditiveBezier::new(vec![u[0], u[1]]).unwrap();
+    let second = AdditiveBezier::new(vec![u[1], u[2], u[3]]).unwrap();
     let m = Piecewise::new(vec![1.0, 1.5, 3.5], vec![first.clone(), second.clone()]).unwrap();
     assert_eq!(m.domain(), [1.0, 3.5]);
     assert_eq!(m.segment_index(&1.5).unwrap(), 1);
@@ -374,7 +374,7 @@ fn piecewise_of_mixed_kinds() {
 fn additive_bezier_map_ring_to_f64() {
     let m = AdditiveBezier::new(vec![qpose([1, 0, 0, 0, 2, 0, 0, 0]), qpose([0, 1, 0, 0, 0, 0, 0, 3])]).unwrap();
     let f = m.map_ring(&algebra_core::rational::rational_to_f64);
-    assert_eq!(f.pose(&0.5).unwrap(), Pose(Motor::new(0.5, 0.5, 0.0, 0.0, 1.0, 0.0, 0.0, 1.5)));
+    assert_eq!(f.pose(&0.5).unwrap(), Pose::new(0.5, 0.5, 0.0, 0.0, 1.0, 0.0, 0.0, 1.5));
 }
 
 /// Generic code over any motion.

@@ -8,23 +8,23 @@ mod common;
 
 use algebra_core::{Jet, MpFloat, PrecisionGuard, Real, Ring};
 use common::*;
-use motion::{MotionError, Motor, Pose, Pseudoscalar};
+use motion::{Even, MotionError, Pose, Pseudoscalar};
 use num_dual::Dual64;
 use proptest::prelude::*;
 use std::f64::consts::PI;
 
 /// A generator `σ + (φ/2)(n e123) + c einf + pω` from an axis n (normalised), a half-angle and
 /// the rest.
-fn generator<T: Real>(axis: [T; 3], half: T, c: [T; 3], sigma: T, p: T) -> Motor<T> {
+fn generator<T: Real>(axis: [T; 3], half: T, c: [T; 3], sigma: T, p: T) -> Even<T> {
     let n2 = axis[0].mul_ref(&axis[0]) + axis[1].mul_ref(&axis[1]) + axis[2].mul_ref(&axis[2]);
     let k = if n2 > T::zero() { half.div_ref(&Real::sqrt(&n2)) } else { T::zero() };
     let a = axis.map(|x| x.mul_ref(&k));
     let [c1, c2, c3] = c;
-    Motor::new(sigma, a[2].clone(), a[1].neg_ref(), a[0].clone(), c1, c2, c3, p)
+    Even::new(sigma, a[2].clone(), a[1].neg_ref(), a[0].clone(), c1, c2, c3, p)
 }
 
 /// The f64 edge cases: (axis, half-angle θ, translation part c, σ, p).
-fn edge_generators() -> Vec<(&'static str, Motor<f64>)> {
+fn edge_generators() -> Vec<(&'static str, Even<f64>)> {
     let z = [0.0; 3];
     vec![
         ("identity", generator([0.0, 0.0, 1.0], 0.0, z, 0.0, 0.0)),
@@ -45,7 +45,7 @@ fn edge_generators() -> Vec<(&'static str, Motor<f64>)> {
     ]
 }
 
-fn rel(x: &Motor<f64>) -> f64 {
+fn rel(x: &Even<f64>) -> f64 {
     size(x).max(1.0)
 }
 
@@ -56,7 +56,7 @@ fn exp_log_round_trips_f64() {
         let l = s.log().unwrap();
         assert!(diff(&l, &b) < 1e-12 * rel(&b), "{name}: log(exp B) = {l} vs {b}");
         let back = Pose::exp(&l).unwrap();
-        assert!(diff(back.as_motor(), s.as_motor()) < 1e-12 * rel(s.as_motor()), "{name}: exp(log S)");
+        assert!(diff(&back, &s) < 1e-12 * rel(&s), "{name}: exp(log S)");
     }
 }
 
@@ -65,16 +65,16 @@ fn exp_is_r_times_t_and_pure_cases_are_exact() {
     // exp(½ v einf) = 1 + ½ v einf, log back exactly.
     let t = Pose::translation(&[1e6, -3.0, 0.25]);
     let l = t.log().unwrap();
-    assert_eq!(l, Motor::new(0.0, 0.0, 0.0, 0.0, 5e5, -1.5, 0.125, 0.0));
+    assert_eq!(l, Even::new(0.0, 0.0, 0.0, 0.0, 5e5, -1.5, 0.125, 0.0));
     assert_eq!(Pose::exp(&l).unwrap(), t);
-    assert_eq!(Pose::<f64>::identity().log().unwrap(), Motor::zero());
-    assert_eq!(Pose::exp(&Motor::<f64>::zero()).unwrap(), Pose::identity());
+    assert_eq!(Pose::<f64>::identity().log().unwrap(), Even::zero());
+    assert_eq!(Pose::exp(&Even::<f64>::zero()).unwrap(), Pose::identity());
     // A screw along its axis n = (1, 2, 2)/3: exp((φ/2) n e123 + (d/2) n einf) = R T (they commute).
     for (phi, d) in [(0.7, 1), (PI, 2), (1e-9, 5), (5.0, -1), (0.0, 3)] {
         let df = d as f64;
         let b = generator([1.0, 2.0, 2.0], phi / 2.0, [df / 6.0, df / 3.0, df / 3.0], 0.0, 0.0);
         let rt = screw([1, 2, 2], phi, [d, 2 * d, 2 * d], 3);
-        assert!(diff(Pose::exp(&b).unwrap().as_motor(), rt.as_motor()) < 1e-15, "{phi} {d}");
+        assert!(diff(&Pose::exp(&b).unwrap(), &rt) < 1e-15, "{phi} {d}");
     }
 }
 
@@ -85,13 +85,13 @@ fn two_pi_rotation_and_minus_one() {
     let minus_t = -Pose::translation(&[2.0, 0.0, 0.0]);
     let l = minus_t.log().unwrap();
     assert!((l.e23 + PI).abs() < 1e-15 && (l.e1inf - 1.0).abs() < 1e-15, "{l}");
-    assert!(diff(Pose::exp(&l).unwrap().as_motor(), minus_t.as_motor()) < 1e-15);
+    assert!(diff(&Pose::exp(&l).unwrap(), &minus_t) < 1e-15);
     let minus_one = Pose::<f64>::identity().scale(&-1.0);
     let l = minus_one.log().unwrap();
     assert!((l.e12 - PI).abs() < 1e-15);
-    assert!(diff(Pose::exp(&l).unwrap().as_motor(), minus_one.as_motor()) < 1e-15);
+    assert!(diff(&Pose::exp(&l).unwrap(), &minus_one) < 1e-15);
     // log_shortest picks +1: the identity transform, rotation angle 0.
-    assert_eq!(minus_one.log_shortest().unwrap(), Motor::zero());
+    assert_eq!(minus_one.log_shortest().unwrap(), Even::zero());
 }
 
 #[test]
@@ -102,7 +102,7 @@ fn log_shortest_has_rotation_angle_at_most_pi() {
         let half = (l.e12 * l.e12 + l.e13 * l.e13 + l.e23 * l.e23).sqrt();
         assert!(half <= PI / 2.0 + 1e-15, "{name}: {half}");
         let back = Pose::exp(&l).unwrap();
-        let w = (&back * &s.reverse()).0;
+        let w = back * s.reverse();
         assert!(back.is_equivalent(&s, &(1e-14 * rel(&b))).unwrap(), "{name}: {w}");
     }
 }
@@ -115,10 +115,10 @@ fn agrees_with_runtime_multivector_exp_log() {
         }
         let mine = Pose::exp(&b).unwrap();
         let runtime = b.to_multivector().exp().unwrap();
-        assert!(diff(mine.as_motor(), &Motor::project(&runtime)) < 1e-13, "{name}: exp");
+        assert!(diff(&mine, &Even::project(&runtime)) < 1e-13, "{name}: exp");
         let l_runtime = runtime.log().unwrap();
         let l_mine = mine.log().unwrap();
-        assert!(diff(&l_mine, &Motor::project(&l_runtime)) < 1e-10, "{name}: log {l_mine} vs {l_runtime}");
+        assert!(diff(&l_mine, &Even::project(&l_runtime)) < 1e-10, "{name}: log {l_mine} vs {l_runtime}");
     }
 }
 
@@ -129,9 +129,9 @@ fn agrees_with_runtime_at_256_bits() {
     let b = generator([m(1, 1), m(2, 1), m(-2, 1)], m(7, 10), [m(3, 10), m(-1, 2), m(1, 5)], m(1, 10), m(-1, 3));
     let mine = Pose::exp(&b).unwrap();
     let runtime = b.to_multivector().exp().unwrap();
-    assert!(diff(mine.as_motor(), &Motor::project(&runtime)) < 1e-70);
+    assert!(diff(&mine, &Even::project(&runtime)) < 1e-70);
     let l = runtime.log().unwrap();
-    assert!(diff(&mine.log().unwrap(), &Motor::project(&l)) < 1e-65);
+    assert!(diff(&mine.log().unwrap(), &Even::project(&l)) < 1e-65);
 }
 
 /// The edge cases at 256 bits, to 1e-70.
@@ -144,7 +144,7 @@ fn exp_log_round_trips_at_256_bits() {
     let tiny = MpFloat::from_f64(1e-9);
     let tinier = MpFloat::from_f64(1e-30);
     let z = || [m(0, 1), m(0, 1), m(0, 1)];
-    let cases: Vec<(&str, Motor<MpFloat>)> = vec![
+    let cases: Vec<(&str, Even<MpFloat>)> = vec![
         ("identity", generator([m(0, 1), m(0, 1), m(1, 1)], m(0, 1), z(), m(0, 1), m(0, 1))),
         (
             "pure translation",
@@ -192,7 +192,7 @@ fn exp_log_round_trips_at_256_bits() {
         let scale = size(&b).max(1.0);
         assert!(diff(&l, &b) < 1e-70 * scale, "{name}: {}", diff(&l, &b));
         let back = Pose::exp(&l).unwrap();
-        assert!(diff(back.as_motor(), s.as_motor()) < 1e-70 * size(s.as_motor()).max(1.0), "{name}");
+        assert!(diff(&back, &s) < 1e-70 * size(&s).max(1.0), "{name}");
     }
 }
 
@@ -207,9 +207,9 @@ fn derivative_of_exp_from_dual_numbers() {
     ];
     for b in &bs {
         for t0 in [0.0, 1e-9, 0.6, 2.5] {
-            let expected = b * Pose::exp(&b.scale(&t0)).unwrap().0;
+            let expected = b * Pose::exp(&b.scale(&t0)).unwrap();
             let lift = |x: &f64| Dual64::from(*x);
-            let bd = Motor::new(
+            let bd = Even::new(
                 lift(&b.scalar),
                 lift(&b.e12),
                 lift(&b.e13),
@@ -220,19 +220,19 @@ fn derivative_of_exp_from_dual_numbers() {
                 lift(&b.e123inf),
             );
             let e = Pose::exp(&bd.scale(&Dual64::new(t0, 1.0))).unwrap();
-            let got = Motor::new(
-                e.0.scalar.eps,
-                e.0.e12.eps,
-                e.0.e13.eps,
-                e.0.e23.eps,
-                e.0.e1inf.eps,
-                e.0.e2inf.eps,
-                e.0.e3inf.eps,
-                e.0.e123inf.eps,
+            let got = Even::new(
+                e.scalar.eps,
+                e.e12.eps,
+                e.e13.eps,
+                e.e23.eps,
+                e.e1inf.eps,
+                e.e2inf.eps,
+                e.e3inf.eps,
+                e.e123inf.eps,
             );
             assert!(diff(&got, &expected) < 1e-13, "t0 {t0}: {got} vs {expected}");
             let liftj = |x: &f64| Jet::constant(*x);
-            let bj = Motor::new(
+            let bj = Even::new(
                 liftj(&b.scalar),
                 liftj(&b.e12),
                 liftj(&b.e13),
@@ -243,15 +243,15 @@ fn derivative_of_exp_from_dual_numbers() {
                 liftj(&b.e123inf),
             );
             let ej = Pose::exp(&bj.scale(&Jet::variable(t0))).unwrap();
-            let gotj = Motor::new(
-                ej.0.scalar.eps,
-                ej.0.e12.eps,
-                ej.0.e13.eps,
-                ej.0.e23.eps,
-                ej.0.e1inf.eps,
-                ej.0.e2inf.eps,
-                ej.0.e3inf.eps,
-                ej.0.e123inf.eps,
+            let gotj = Even::new(
+                ej.scalar.eps,
+                ej.e12.eps,
+                ej.e13.eps,
+                ej.e23.eps,
+                ej.e1inf.eps,
+                ej.e2inf.eps,
+                ej.e3inf.eps,
+                ej.e123inf.eps,
             );
             assert!(diff(&gotj, &expected) < 1e-13, "jet t0 {t0}");
         }
@@ -265,7 +265,7 @@ fn derivative_of_log_from_dual_numbers() {
     let b = generator([1.0, 2.0, 3.0], 1.0, [0.3, 0.1, -0.4], 0.0, 0.0);
     for t0 in [0.0, 1e-9, 0.3, 1.0, 2.0, 3.0] {
         let lift = |x: &f64| Dual64::from(*x);
-        let bd = Motor::new(
+        let bd = Even::new(
             lift(&b.scalar),
             lift(&b.e12),
             lift(&b.e13),
@@ -276,7 +276,7 @@ fn derivative_of_log_from_dual_numbers() {
             lift(&b.e123inf),
         );
         let l = Pose::exp(&bd.scale(&Dual64::new(t0, 1.0))).unwrap().log().unwrap();
-        let got = Motor::new(
+        let got = Even::new(
             l.scalar.eps,
             l.e12.eps,
             l.e13.eps,
@@ -302,26 +302,26 @@ fn derivative_of_exp_at_256_bits() {
     let m = |n: i64, d: i64| MpFloat::from_ratio(n, d);
     let b = generator([m(1, 1), m(2, 1), m(-2, 1)], m(7, 10), [m(3, 10), m(-1, 2), m(1, 5)], m(0, 1), m(1, 3));
     let t0 = m(3, 4);
-    let expected = &b * &Pose::exp(&b.scale(&t0)).unwrap().0;
+    let expected = &b * &Pose::exp(&b.scale(&t0)).unwrap();
     let j = |x: &MpFloat| Jet::constant(x.clone());
     let bj =
-        Motor::new(j(&b.scalar), j(&b.e12), j(&b.e13), j(&b.e23), j(&b.e1inf), j(&b.e2inf), j(&b.e3inf), j(&b.e123inf));
-    let e = Pose::exp(&bj.scale(&Jet::variable(t0))).unwrap().0;
+        Even::new(j(&b.scalar), j(&b.e12), j(&b.e13), j(&b.e23), j(&b.e1inf), j(&b.e2inf), j(&b.e3inf), j(&b.e123inf));
+    let e = Pose::exp(&bj.scale(&Jet::variable(t0))).unwrap();
     let got =
-        Motor::new(e.scalar.eps, e.e12.eps, e.e13.eps, e.e23.eps, e.e1inf.eps, e.e2inf.eps, e.e3inf.eps, e.e123inf.eps);
+        Even::new(e.scalar.eps, e.e12.eps, e.e13.eps, e.e23.eps, e.e1inf.eps, e.e2inf.eps, e.e3inf.eps, e.e123inf.eps);
     assert!(diff(&got, &expected) < 1e-70);
 }
 
 #[test]
 fn singular_and_non_finite_input_are_typed_errors() {
-    let sing = Pose(Motor::new(0.0, 0.0, 0.0, 0.0, 1.0, 2.0, 3.0, 4.0));
+    let sing = Pose::new(0.0, 0.0, 0.0, 0.0, 1.0, 2.0, 3.0, 4.0);
     assert!(matches!(sing.log(), Err(MotionError::Singular { .. })));
     assert!(matches!(sing.power(&0.5), Err(MotionError::Singular { .. })));
-    let nan = Pose(Motor::new(f64::NAN, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0));
+    let nan = Pose::new(f64::NAN, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     assert!(matches!(nan.log(), Err(MotionError::NotFinite { .. })));
-    assert!(matches!(Pose::exp(&nan.0), Err(MotionError::NotFinite { .. })));
+    assert!(matches!(Pose::exp(&nan), Err(MotionError::NotFinite { .. })));
     assert!(matches!(
-        Pose::exp(&Motor::new(1e4, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)),
+        Pose::exp(&Even::new(1e4, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)),
         Err(MotionError::NotFinite { .. })
     ));
     // A pseudoscalar multiple: log|S| is exact.
@@ -330,7 +330,7 @@ fn singular_and_non_finite_input_are_typed_errors() {
     assert!((l.scalar - 3f64.ln()).abs() < 1e-15 && (l.e123inf - 0.5 / 3.0).abs() < 1e-15);
 }
 
-fn arb_generator() -> impl Strategy<Value = Motor<f64>> {
+fn arb_generator() -> impl Strategy<Value = Even<f64>> {
     (prop::array::uniform3(-1.0f64..1.0), 0.0f64..3.1, prop::array::uniform3(-5.0f64..5.0), -1.0f64..1.0, -1.0f64..1.0)
         .prop_map(|(axis, half, c, sigma, p)| generator(axis, half, c, sigma, p))
 }
@@ -343,12 +343,12 @@ proptest! {
         // Ill-conditioned only near the 2π rotation (half-angle near π).
         let half = (b.e12 * b.e12 + b.e13 * b.e13 + b.e23 * b.e23).sqrt();
         prop_assert!(diff(&l, &b) < 1e-11 / (std::f64::consts::PI - half).min(1.0), "{} vs {}", l, b);
-        prop_assert!(diff(&Pose::exp(&l).unwrap().0, &s.0) < 1e-12 * size(&s.0).max(1.0));
+        prop_assert!(diff(&Pose::exp(&l).unwrap(), &s) < 1e-12 * size(&s).max(1.0));
     }
 
     #[test]
     fn prop_exp_matches_runtime(b in arb_generator()) {
-        let runtime = Motor::project(&b.to_multivector().exp().unwrap());
-        prop_assert!(diff(&Pose::exp(&b).unwrap().0, &runtime) < 1e-12 * size(&runtime).max(1.0));
+        let runtime = Even::project(&b.to_multivector().exp().unwrap());
+        prop_assert!(diff(&Pose::exp(&b).unwrap(), &runtime) < 1e-12 * size(&runtime).max(1.0));
     }
 }

@@ -11,7 +11,7 @@ use common::{bernstein, de_casteljau, diff, size, value_and_derivative};
 use motion::hermite::{self, HermiteSegment, HermiteShapes};
 use motion::joins;
 use motion::paper::jaklic;
-use motion::{Continuity, EndCondition, JoinError, Motor, Pose, Pseudoscalar, SegmentKind, Shape};
+use motion::{Continuity, EndCondition, Even, JoinError, Pose, Pseudoscalar, SegmentKind, Shape};
 use num_dual::Dual64;
 
 const KINDS: [SegmentKind; 2] = [SegmentKind::Additive, SegmentKind::Multiplicative];
@@ -25,14 +25,14 @@ fn evaluate(seg: &HermiteSegment<f64>, t: Dual64) -> Pose<Dual64> {
 }
 
 /// `(S(t), Ψ(t) = 2 S⁻¹ S')` of a segment at `t` by a dual number.
-fn pose_and_indicatrix(seg: &HermiteSegment<f64>, t: f64) -> (Pose<f64>, Motor<f64>) {
+fn pose_and_indicatrix(seg: &HermiteSegment<f64>, t: f64) -> (Pose<f64>, Even<f64>) {
     let (s, ds) = value_and_derivative(&evaluate(seg, Dual64::new(t, 1.0)));
-    let psi = (s.inverse().unwrap().0 * ds).scale(&2.0);
+    let psi = (s.try_inverse().unwrap() * ds).scale(&2.0);
     (s, psi)
 }
 
-fn bivector(m: &Motor<f64>) -> Motor<f64> {
-    Motor::new(0.0, m.e12, m.e13, m.e23, m.e1inf, m.e2inf, m.e3inf, 0.0)
+fn bivector(m: &Even<f64>) -> Even<f64> {
+    Even::new(0.0, m.e12, m.e13, m.e23, m.e1inf, m.e2inf, m.e3inf, 0.0)
 }
 
 /// The end conditions of the example are those of the Jaklič motion itself: its dual-number
@@ -45,9 +45,9 @@ fn jaklic_end_conditions_match_the_motion() {
         let t = (k + 1) as f64;
         let (s, ds) = value_and_derivative(&jaklic::pose(&Dual64::new(t, 1.0)).unwrap());
         assert!(s.is_unitary(&1e-14));
-        let psi = (s.reverse().0 * ds).scale(&2.0);
+        let psi = (s.reverse() * ds).scale(&2.0);
         assert!(diff(&psi, &cond.velocity_bivector()) < 1e-13, "t = {t}: {psi} vs {}", cond.velocity_bivector());
-        assert!(diff(&s.0, &cond.pose.0) < 1e-15);
+        assert!(diff(&s, &cond.pose) < 1e-15);
         // The reference point is where the body origin goes.
         let origin = s.transform_point(&[0.0; 3]).unwrap();
         assert!(common::diff_n(&origin, &cond.position) < 1e-14);
@@ -68,8 +68,8 @@ fn jaklic_segments_are_c1_for_every_common_shape() {
                 assert_eq!(seg.degree(), 3);
                 let (s0, psi0) = pose_and_indicatrix(seg, 0.0);
                 let (s1, psi1) = pose_and_indicatrix(seg, 1.0);
-                assert!(diff(&s0.0, &poses[k].pose.0) < 1e-14, "{kind} λ = {lambda} segment {k}");
-                assert!(diff(&s1.0, &poses[k + 1].pose.0) < 1e-12, "{kind} λ = {lambda} segment {k}");
+                assert!(diff(&s0, &poses[k].pose) < 1e-14, "{kind} λ = {lambda} segment {k}");
+                assert!(diff(&s1, &poses[k + 1].pose) < 1e-12, "{kind} λ = {lambda} segment {k}");
                 let want0 = poses[k].velocity_bivector().scale(&lambda);
                 let want1 = poses[k + 1].velocity_bivector().scale(&lambda);
                 let tol = 1e-12 * (1.0 + size(&want0).max(size(&want1)));
@@ -110,7 +110,7 @@ fn jaklic_mixed_segments_are_g1() {
         for (k, seg) in segs.iter().enumerate() {
             let common = &jaklic::segments(kind, cases[k % 3]).unwrap()[k];
             for (a, b) in seg.control_poses.iter().zip(&common.control_poses) {
-                assert!(diff(&a.0, &b.0) < 1e-15);
+                assert!(diff(a, b) < 1e-15);
             }
         }
         for (k, pair) in segs.windows(2).enumerate() {
@@ -197,7 +197,7 @@ fn higher_degrees() {
             assert_eq!(seg.degree(), n);
             let (s0, psi0) = pose_and_indicatrix(&seg, 0.0);
             let (s1, psi1) = pose_and_indicatrix(&seg, 1.0);
-            assert!(diff(&s0.0, &a.pose.0) < 1e-14 && diff(&s1.0, &b.pose.0) < 1e-12, "{kind} n = {n}");
+            assert!(diff(&s0, &a.pose) < 1e-14 && diff(&s1, &b.pose) < 1e-12, "{kind} n = {n}");
             let want0 = shape0.indicatrix(&a.velocity_bivector());
             let want1 = shape1.indicatrix(&b.velocity_bivector());
             assert!(diff(&psi0, &want0) < 1e-11, "{kind} n = {n}: {psi0} vs {want0}");
@@ -209,7 +209,7 @@ fn higher_degrees() {
                     SegmentKind::Additive => Pose::lerp(&c[1], &c[n - 1], &t),
                     SegmentKind::Multiplicative => Pose::slerp(&c[1], &c[n - 1], &t).unwrap(),
                 };
-                assert!(diff(&c[i].0, &want.0) < 1e-14);
+                assert!(diff(&c[i], &want) < 1e-14);
             }
         }
     }
@@ -234,8 +234,7 @@ fn input_errors() {
     }
     // A singular precision pose (the zero transform) still gives control poses; the end
     // indicatrices (Corollary 4.6), which need its inverse, report it as an error.
-    let singular =
-        EndCondition::new(Pose(Motor::new(0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0)), [0.0; 3], [1.0; 3], [0.0; 3]);
+    let singular = EndCondition::new(Pose::new(0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0), [0.0; 3], [1.0; 3], [0.0; 3]);
     let seg = hermite::hermite_segment(SegmentKind::Additive, 3, &poses[0], &singular, &Shape::unit(), &Shape::unit());
     let seg = seg.unwrap();
     assert!(joins::end_indicatrices(SegmentKind::Additive, &seg.control_poses).is_err());

@@ -5,8 +5,8 @@
 //! Run with `cargo test -p motion --features nalgebra --test nalgebra_conv`.
 #![cfg(feature = "nalgebra")]
 
-use gam_algebras::g123inf::{Motor, Pseudoscalar};
 use motion::Pose;
+use motion::Pseudoscalar;
 use nalgebra::{Isometry3, Point3, UnitDualQuaternion, UnitQuaternion, Vector3};
 use std::f64::consts::PI;
 
@@ -228,7 +228,7 @@ fn composition_order_matches() {
 
 #[test]
 fn singular_and_non_finite_poses_are_rejected() {
-    let singular = Pose(Motor::new(0.0, 0.0, 0.0, 0.0, 1.0, 2.0, 3.0, 4.0));
+    let singular = Pose::new(0.0, 0.0, 0.0, 0.0, 1.0, 2.0, 3.0, 4.0);
     assert!(singular.to_isometry().is_err());
     assert!(singular.to_unit_dual_quaternion().is_err());
     let nan = Pose::translation(&[f64::NAN, 0.0, 0.0]);

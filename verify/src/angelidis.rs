@@ -28,7 +28,7 @@
 
 use crate::{Checker, Method, Paper, Statement};
 use algebra_core::{Field, MpFloat, Poly, PrecisionGuard, Real, Ring};
-use motion::{Motor, Pose};
+use motion::{Even, Pose};
 use std::fmt::Display;
 
 /// The statements of this paper, in paper order.
@@ -228,7 +228,7 @@ fn library_pose<T: Real>(w: &V3<T>, m: &V3<T>) -> Result<Pose<T>, motion::Motion
     let h = T::from_ratio(1, 2);
     let [w1, w2, w3] = vscale(&h, w);
     let [m1, m2, m3] = vscale(&h, m);
-    Pose::exp(&Motor::new(T::zero(), w3, w2.neg_ref(), w1, m1, m2, m3, T::zero()))
+    Pose::exp(&Even::new(T::zero(), w3, w2.neg_ref(), w1, m1, m2, m3, T::zero()))
 }
 
 /// Sample hexanions, all dyadic (exact in binary, so ω·m = 0 is exact for the rotations).

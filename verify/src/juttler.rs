@@ -28,7 +28,6 @@ use algebra_core::rational::{Q, q, ratio};
 use algebra_core::{Poly, Ring};
 use gam_algebras::DualQuaternion;
 use gam_algebras::dual_quaternion::Quaternion;
-use motion::Pose;
 
 /// The statements of this paper, in paper order.
 pub const STATEMENTS: &[Statement] = &[
@@ -335,7 +334,7 @@ fn eq_12(c: &mut Checker) {
         } else {
             c.fail(format!("instance {k}: transform_point returned None"));
         }
-        let pose = Pose(good.to_pose());
+        let pose = motion::Pose::from_motor(good.to_pose());
         if let Some(lib) = c.ok(format!("instance {k}: Pose::transform_point"), pose.transform_point(&x)) {
             c.equal(format!("instance {k}: (12) = Pose::transform_point of the same motion"), &ours, &lib);
         }

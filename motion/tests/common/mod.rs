@@ -4,11 +4,29 @@
 
 use algebra_core::{Real, Ring};
 use gam_algebras::cga_null;
-use motion::{Motor, Pose, Pseudoscalar};
+use motion::{Bivector, Even, Pose, Pseudoscalar};
+
+/// Even elements and bivectors, compared through their embedding in G_{123inf}^+.
+pub trait AsEven<T> {
+    /// The element as an even element.
+    fn to_even(&self) -> Even<T>;
+}
+
+impl<T: Ring> AsEven<T> for Even<T> {
+    fn to_even(&self) -> Even<T> {
+        self.clone()
+    }
+}
+
+impl<T: Ring> AsEven<T> for Bivector<T> {
+    fn to_even(&self) -> Even<T> {
+        Even::from(self)
+    }
+}
 
 /// The largest component of `a - b`.
-pub fn diff<T: Ring>(a: &Motor<T>, b: &Motor<T>) -> f64 {
-    let d = a - b;
+pub fn diff<T: Ring, A: AsEven<T>, B: AsEven<T>>(a: &A, b: &B) -> f64 {
+    let d = &a.to_even() - &b.to_even();
     [&d.scalar, &d.e12, &d.e13, &d.e23, &d.e1inf, &d.e2inf, &d.e3inf, &d.e123inf]
         .into_iter()
         .map(Ring::magnitude)
@@ -16,8 +34,8 @@ pub fn diff<T: Ring>(a: &Motor<T>, b: &Motor<T>) -> f64 {
 }
 
 /// The largest component of `a`.
-pub fn size<T: Ring>(a: &Motor<T>) -> f64 {
-    diff(a, &Motor::zero())
+pub fn size<T: Ring, A: AsEven<T>>(a: &A) -> f64 {
+    diff(&a.to_even(), &Even::zero())
 }
 
 /// The largest entry of `a - b` for arrays.
@@ -48,7 +66,7 @@ pub fn rodrigues(axis: [f64; 3], phi: f64, v: [f64; 3], p: [f64; 3]) -> [f64; 3]
 /// `F_S(p)` computed independently: the generated G_{0123inf} (product basis) sandwich
 /// `rev(S)(e0 + p)S`, then P (divide e1, e2, e3 by e0). Also returns the e0 coefficient.
 pub fn cga_null_action<T: algebra_core::Field>(s: &Pose<T>, p: &[T; 3]) -> ([T; 3], T) {
-    let m = s.as_motor().clone();
+    let m = s.clone();
     let big = cga_null::Motor::new(m.scalar, m.e12, m.e13, m.e23, m.e1inf, m.e2inf, m.e3inf, m.e123inf);
     let x = cga_null::Vector::new(T::one(), p[0].clone(), p[1].clone(), p[2].clone(), T::zero());
     let y = big.sandwich(&x);
@@ -69,7 +87,7 @@ pub fn sample_poses() -> Vec<Pose<f64>> {
         ([1.0, 0.0, 0.0], 6.0, [0.1, 0.2, 0.3]),
     ] {
         let s = Pose::from_axis_angle_translation(&axis, &phi, &t).unwrap();
-        out.push(s.clone());
+        out.push(s);
         out.push(s.scale_pseudoscalar(&motion::Pseudoscalar::new(-1.7, 0.4)));
     }
     out
@@ -109,17 +127,17 @@ pub fn lift(s: &Pose<f64>) -> Pose<num_dual::Dual64> {
 }
 
 /// The value and the derivative (ε part) of a pose over dual numbers.
-pub fn value_and_derivative(s: &Pose<num_dual::Dual64>) -> (Pose<f64>, Motor<f64>) {
-    let m = s.as_motor();
+pub fn value_and_derivative(s: &Pose<num_dual::Dual64>) -> (Pose<f64>, Even<f64>) {
+    let m = s;
     let parts = [&m.scalar, &m.e12, &m.e13, &m.e23, &m.e1inf, &m.e2inf, &m.e3inf, &m.e123inf];
-    let mk = |c: [f64; 8]| Motor::new(c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7]);
-    (Pose(mk(parts.map(|x| x.re))), mk(parts.map(|x| x.eps)))
+    let mk = |c: [f64; 8]| Even::new(c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7]);
+    ((mk(parts.map(|x| x.re))), mk(parts.map(|x| x.eps)))
 }
 
 /// `Ψ(t) = 2 S(t)⁻¹ S'(t)` of a pose evaluated over a dual number `t + ε`.
-pub fn indicatrix(s: &Pose<num_dual::Dual64>) -> Motor<f64> {
+pub fn indicatrix(s: &Pose<num_dual::Dual64>) -> Even<f64> {
     let (value, derivative) = value_and_derivative(s);
-    (value.inverse().unwrap().0 * derivative).scale(&2.0)
+    (value.try_inverse().unwrap() * derivative).scale(&2.0)
 }
 
 /// The binomial coefficient as a float.
@@ -132,12 +150,12 @@ pub fn bernstein(controls: &[Pose<f64>], t: &num_dual::Dual64) -> Pose<num_dual:
     use num_dual::DualNum;
     let n = controls.len() - 1;
     let one_minus = num_dual::Dual64::from(1.0) - *t;
-    let mut sum = Motor::<num_dual::Dual64>::zero();
+    let mut sum = Even::<num_dual::Dual64>::zero();
     for (i, c) in controls.iter().enumerate() {
         let w = one_minus.powi((n - i) as i32) * t.powi(i as i32) * binomial(n, i);
-        sum += lift(c).0.scale(&w);
+        sum += lift(c).scale(&w);
     }
-    Pose(sum)
+    sum
 }
 
 /// The multiplicative Bézier motion by its de Casteljau tableau of slerps (Fig. 2).

@@ -21,8 +21,8 @@ use crate::{Checker, Method, Paper, Statement};
 use algebra_core::rational::{Q, ratio};
 use algebra_core::{Algebra, Basis, Field, Jet, MpFloat, Multivector, Poly, PrecisionGuard, Real, Ring};
 use motion::velocity::{bivector_from_point_velocity, split_indicatrix, velocity};
-use motion::{AdditiveBezier, Motion, MultiplicativeBezier, Pose};
-use motion::{Motor, Pseudoscalar};
+use motion::{AdditiveBezier, MapScalar, Motion, MultiplicativeBezier, Pose};
+use motion::{Bivector, Even, Pseudoscalar};
 use std::sync::Arc;
 
 /// The statements of Section 3, in paper order.
@@ -79,8 +79,8 @@ pub(super) fn mp(n: i64, d: i64) -> MpFloat {
 }
 
 /// The eight coefficients of an even element, for [`Checker::close`].
-pub(super) fn comps(m: &Motor<MpFloat>) -> Vec<MpFloat> {
-    Pose(m.clone()).components().into_iter().cloned().collect()
+pub(super) fn comps(m: &Even<MpFloat>) -> Vec<MpFloat> {
+    (m.clone()).components().into_iter().cloned().collect()
 }
 
 /// A unit pose: rotation by `angle` about `axis` (normalised here), then translation.
@@ -185,7 +185,7 @@ fn lemma_3_1(c: &mut Checker) {
 
 /// `(Ω, u)` from `ν = Ω e123 + u einf`, read with runtime multivectors of G_{123inf}:
 /// `Ω = -(ν_rot e123)` (`e123² = -1`), `u_i` = the `e_i einf` coefficients.
-fn omega_u(nu: &Motor<MpFloat>) -> Option<([MpFloat; 3], [MpFloat; 3])> {
+fn omega_u(nu: &Bivector<MpFloat>) -> Option<([MpFloat; 3], [MpFloat; 3])> {
     let m = nu.to_multivector();
     let alg = m.algebra().clone();
     let get = |n: &str| m.coeff_by_name(n).ok().cloned();
@@ -212,7 +212,7 @@ fn vector(alg: &Arc<Algebra>, x: &[MpFloat; 3]) -> Option<Multivector<MpFloat>> 
 
 /// Current position and velocity of the body point `p`, by differentiating its trajectory
 /// `F_{S(t)}(p)` over dual numbers.
-fn trajectory<M: Motion<MpFloat>>(
+fn trajectory<M: MapScalar<MpFloat, Jet<MpFloat>>>(
     m: &M,
     t: &MpFloat,
     p: &[MpFloat; 3],
@@ -247,15 +247,15 @@ fn on_sample_motions(
 
 /// `(Ψ, ν, position, velocity)` of body point `p`, and the body point at the origin.
 struct Sample {
-    psi: Motor<MpFloat>,
-    nu: Motor<MpFloat>,
+    psi: Even<MpFloat>,
+    nu: Bivector<MpFloat>,
     gamma: Pseudoscalar<MpFloat>,
     q: [MpFloat; 3],
     v: [MpFloat; 3],
     at_origin_velocity: [MpFloat; 3],
 }
 
-fn sample<M: Motion<MpFloat>>(m: &M, t: &MpFloat, p: &[MpFloat; 3]) -> Result<Sample, String> {
+fn sample<M: MapScalar<MpFloat, Jet<MpFloat>>>(m: &M, t: &MpFloat, p: &[MpFloat; 3]) -> Result<Sample, String> {
     let vel = velocity(m, t).map_err(|e| e.to_string())?;
     let (gamma, nu) = split_indicatrix(&vel.indicatrix);
     let (q, v) = trajectory(m, t, p)?;
@@ -267,11 +267,11 @@ fn sample<M: Motion<MpFloat>>(m: &M, t: &MpFloat, p: &[MpFloat; 3]) -> Result<Sa
 
 fn theorem_3_2(c: &mut Checker) {
     let _g = PrecisionGuard::new(256);
-    let alg = Motor::<MpFloat>::zero().to_multivector().algebra().clone();
+    let alg = Even::<MpFloat>::zero().to_multivector().algebra().clone();
     on_sample_motions(c, |c, what, run| {
         for p in body_points() {
             let Some(s) = c.ok(what, run(&p)) else { return };
-            let g = Motor::new(
+            let g = Even::new(
                 s.gamma.scalar.clone(),
                 mp(0, 1),
                 mp(0, 1),
@@ -281,7 +281,7 @@ fn theorem_3_2(c: &mut Checker) {
                 mp(0, 1),
                 s.gamma.e123inf.clone(),
             );
-            c.close(format!("{what}: Ψ = γ + ν"), &comps(&s.psi), &comps(&(&g + &s.nu)), 70);
+            c.close(format!("{what}: Ψ = γ + ν"), &comps(&s.psi), &comps(&(&g + &Even::from(&s.nu))), 70);
             let Some((omega, u)) = omega_u(&s.nu) else {
                 c.fail(format!("{what}: reading Ω, u"));
                 return;
@@ -302,7 +302,7 @@ fn theorem_3_2(c: &mut Checker) {
 
 fn corollary_3_3(c: &mut Checker) {
     let _g = PrecisionGuard::new(256);
-    let alg = Motor::<MpFloat>::zero().to_multivector().algebra().clone();
+    let alg = Even::<MpFloat>::zero().to_multivector().algebra().clone();
     on_sample_motions(c, |c, what, run| {
         for p in body_points() {
             let Some(s) = c.ok(what, run(&p)) else { return };
@@ -324,8 +324,8 @@ fn corollary_3_3(c: &mut Checker) {
             let motion_crate = bivector_from_point_velocity(&omega, &s.q, &s.v);
             c.close(
                 format!("{what}: motion::bivector_from_point_velocity agrees"),
-                &comps(&motion_crate),
-                &comps(&s.nu),
+                &comps(&Even::from(&motion_crate)),
+                &comps(&Even::from(&s.nu)),
                 70,
             );
         }
@@ -340,7 +340,7 @@ fn lemma_3_4(c: &mut Checker) {
         let one = Jet::constant(Q::one());
         let den = one.add_ref(&t.mul_ref(&t));
         let z = Jet::<Q>::zero;
-        let rot = Motor::new(
+        let rot = Even::new(
             one.sub_ref(&t.mul_ref(&t)).div_ref(&den),
             t.add_ref(&t).div_ref(&den),
             z(),
@@ -351,15 +351,15 @@ fn lemma_3_4(c: &mut Checker) {
             z(),
         );
         let tr = Pose::translation(&[t.clone(), t.mul_ref(&t), one.clone()]);
-        let s = Pose(&rot * &tr.0);
-        let n2 = s.norm_squared();
+        let s = &rot * &tr;
+        let n2 = s.pseudo_norm_squared();
         let unit = n2.scalar.re == Q::one()
             && n2.scalar.eps.is_exact_zero()
             && n2.e123inf.re.is_exact_zero()
             && n2.e123inf.eps.is_exact_zero();
         c.check(format!("t = {n}/{d}: rev(S) S = 1 (and its derivative 0)"), unit);
-        let (value, deriv) = motion::velocity::split_jet(&s.0);
-        let Some(psi) = c.ok("Ψ", motion::velocity::indicatrix_from_derivative(&Pose(value.clone()), &deriv)) else {
+        let (value, deriv) = motion::velocity::split_jet(&s);
+        let Some(psi) = c.ok("Ψ", motion::velocity::indicatrix_from_derivative(&(value.clone()), &deriv)) else {
             return;
         };
         let (gamma, _) = split_indicatrix(&psi);
@@ -373,7 +373,7 @@ fn lemma_3_4(c: &mut Checker) {
     let zero = vec![mp(0, 1), mp(0, 1)];
     for t in [mp(0, 1), mp(1, 4), mp(7, 10), mp(1, 1)] {
         let Some(vel) = c.ok("velocity", velocity(&mul, &t)) else { return };
-        let n2 = vel.pose.norm_squared();
+        let n2 = vel.pose.pseudo_norm_squared();
         c.close("unit multiplicative Bezier: rev(S) S = 1", &[n2.scalar, n2.e123inf], &[mp(1, 1), mp(0, 1)], 70);
         let g = vel.gamma();
         c.close(format!("unit multiplicative Bezier, t = {}: γ = 0", t.to_f64()), &[g.scalar, g.e123inf], &zero, 70);

@@ -23,7 +23,7 @@ use crate::{Checker, Method, Paper, Statement};
 use algebra_core::rational::Q;
 use algebra_core::{Field, Jet, MpFloat, Poly, PrecisionGuard, Real, Ring};
 use motion::velocity::{indicatrix_from_derivative, pose_derivative, split_jet, velocity_indicatrix};
-use motion::{AdditiveBezier, Motion, Motor, MultiplicativeBezier, Pose, Pseudoscalar, pseudoscalar};
+use motion::{AdditiveBezier, Even, Motion, MultiplicativeBezier, Pose, Pseudoscalar, pseudoscalar};
 
 /// The statements of Section 4, in paper order.
 pub const STATEMENTS: &[Statement] = &[
@@ -129,13 +129,13 @@ fn s<E: std::fmt::Display>(r: Result<Pose<MpFloat>, E>) -> Result<Pose<MpFloat>,
 }
 
 /// `X^t` typed in with the runtime multivector exp/log (a second implementation).
-fn runtime_power(x: &Motor<MpFloat>, t: &MpFloat) -> Result<Motor<MpFloat>, String> {
+fn runtime_power(x: &Even<MpFloat>, t: &MpFloat) -> Result<Even<MpFloat>, String> {
     let l = x.to_multivector().log().map_err(|e| e.to_string())?;
     let p = l.scale(t).exp().map_err(|e| e.to_string())?;
-    Motor::try_from(&p).map_err(|e| e.to_string())
+    Even::try_from(&p).map_err(|e| e.to_string())
 }
 
-fn agree(a: &Motor<MpFloat>, b: &Motor<MpFloat>) -> bool {
+fn agree(a: &Even<MpFloat>, b: &Even<MpFloat>) -> bool {
     Checker::new().close("", &comps(a), &comps(b), 70)
 }
 
@@ -145,30 +145,30 @@ fn eq_15(c: &mut Checker) {
     for (a, b) in [(&unit[0], &unit[1]), (&unit[1], &unit[2]), (&non_unit[0], &non_unit[1])] {
         for t in [mp(0, 1), mp(1, 3), mp(9, 10), mp(1, 1)] {
             let Some(phi) = c.ok("slerp", s(Pose::slerp(a, b, &t))) else { return };
-            let rel = &a.reverse().0 * &b.0;
+            let rel = &a.reverse() * b;
             if let Some(p) = c.ok("runtime power", runtime_power(&rel, &t)) {
-                c.close("Pose::slerp = A (rev(A) B)^t with runtime exp/log", &comps(&phi.0), &comps(&(&a.0 * &p)), 70);
+                c.close("Pose::slerp = A (rev(A) B)^t with runtime exp/log", &comps(&phi), &comps(&(a * &p)), 70);
             }
         }
         let Some(at0) = c.ok("slerp", s(Pose::slerp(a, b, &mp(0, 1)))) else { return };
-        c.close("Φ(0) = A", &comps(&at0.0), &comps(&a.0), 70);
+        c.close("Φ(0) = A", &comps(&at0), &comps(a), 70);
         let Some(at1) = c.ok("slerp", s(Pose::slerp(a, b, &mp(1, 1)))) else { return };
-        let n2 = a.norm_squared();
-        c.close("Φ(1) = |A|² B", &comps(&at1.0), &comps(&b.scale_pseudoscalar(&n2).0), 70);
+        let n2 = a.pseudo_norm_squared();
+        c.close("Φ(1) = |A|² B", &comps(&at1), &comps(&b.scale_pseudoscalar(&n2)), 70);
     }
     for t in [mp(1, 3), mp(1, 1)] {
         let Some(phi) = c.ok("slerp", s(Pose::slerp(&unit[0], &unit[2], &t))) else { return };
-        let n2 = phi.norm_squared();
+        let n2 = phi.pseudo_norm_squared();
         c.close("unit A, B: Φ(t) unitary", &[n2.scalar, n2.e123inf], &[mp(1, 1), mp(0, 1)], 70);
     }
     let Some(at1) = c.ok("slerp", s(Pose::slerp(&unit[0], &unit[2], &mp(1, 1)))) else { return };
-    c.close("unit A, B: Φ(1) = B", &comps(&at1.0), &comps(&unit[2].0), 70);
+    c.close("unit A, B: Φ(1) = B", &comps(&at1), &comps(&unit[2]), 70);
     let two = Pose::identity().scale(&mp(2, 1));
     if let Some(end) = c.ok("slerp", s(Pose::slerp(&two, &Pose::identity(), &mp(1, 1)))) {
         c.counterexample(
             "Φ(A, B; 1) = B without unit poses",
-            agree(&end.0, &Motor::one()),
-            format!("A = 2, B = 1: Φ(1) = {}", end.0.scalar.to_f64()),
+            agree(&end, &Even::one()),
+            format!("A = 2, B = 1: Φ(1) = {}", end.scalar.to_f64()),
         );
     }
 }
@@ -196,12 +196,12 @@ fn eq_16(c: &mut Checker) {
             };
             c.close(
                 "α^{1+t} = α α^t",
-                &comps(&Pose::identity().scale_pseudoscalar(&a1t).0),
-                &comps(&Pose::identity().scale_pseudoscalar(&(&alpha * &at)).0),
+                &comps(&Pose::identity().scale_pseudoscalar(&a1t)),
+                &comps(&Pose::identity().scale_pseudoscalar(&(&alpha * &at))),
                 70,
             );
             let rhs = phi.scale_pseudoscalar(&(&a1t * &bt));
-            c.close("Φ(αA, βB; t) = α^{1+t} β^t Φ(A, B; t)", &comps(&lhs.0), &comps(&rhs.0), 70);
+            c.close("Φ(αA, βB; t) = α^{1+t} β^t Φ(A, B; t)", &comps(&lhs), &comps(&rhs), 70);
         }
     }
     // β = -1 (same transform as B): the slerp is not a pseudoscalar multiple of Φ(A, B; t).
@@ -256,12 +256,12 @@ fn lemma_4_1(c: &mut Checker) {
 }
 
 /// `n + 1` fully symbolic control poses `Si_*` and the additive Bezier over `Poly` at `t`.
-fn symbolic_bezier(n: usize) -> (Vec<Pose<Poly>>, Motor<Poly>) {
+fn symbolic_bezier(n: usize) -> (Vec<Pose<Poly>>, Even<Poly>) {
     let names = ["s", "s12", "s13", "s23", "s1i", "s2i", "s3i", "sw"];
     let poses: Vec<Pose<Poly>> = (0..=n)
         .map(|i| {
             let v: Vec<Poly> = names.iter().map(|x| Poly::var(&format!("S{i}{x}"))).collect();
-            Pose(Motor::new(
+            Even::new(
                 v[0].clone(),
                 v[1].clone(),
                 v[2].clone(),
@@ -270,22 +270,22 @@ fn symbolic_bezier(n: usize) -> (Vec<Pose<Poly>>, Motor<Poly>) {
                 v[5].clone(),
                 v[6].clone(),
                 v[7].clone(),
-            ))
+            )
         })
         .collect();
     let m =
-        AdditiveBezier::new(poses.clone()).map(|b| b.de_casteljau(&Poly::var("t")).0).unwrap_or_else(|_| Motor::zero());
+        AdditiveBezier::new(poses.clone()).map(|b| b.de_casteljau(&Poly::var("t"))).unwrap_or_else(|_| Even::zero());
     (poses, m)
 }
 
-fn map_motor(m: &Motor<Poly>, f: impl Fn(&Poly) -> Poly) -> Motor<Poly> {
-    let p = Pose(m.clone());
+fn map_motor(m: &Even<Poly>, f: impl Fn(&Poly) -> Poly) -> Even<Poly> {
+    let p = m.clone();
     let c = p.components().map(f);
     let [a, b, d, e, g, h, i, j] = c;
-    Motor::new(a, b, d, e, g, h, i, j)
+    Even::new(a, b, d, e, g, h, i, j)
 }
 
-fn at(m: &Motor<Poly>, t: i64) -> Motor<Poly> {
+fn at(m: &Even<Poly>, t: i64) -> Even<Poly> {
     map_motor(m, |x| x.substitute("t", &Poly::from_i64(t)))
 }
 
@@ -294,23 +294,23 @@ fn lemma_4_2(c: &mut Checker) {
         let (poses, m) = symbolic_bezier(n);
         let dm = map_motor(&m, |x| x.derivative("t"));
         let nn = Poly::from_i64(n as i64);
-        let expected = (&poses[1].0 - &poses[0].0).scale(&nn);
-        c.equal(format!("n = {n}: S(0) = S0"), &at(&m, 0), &poses[0].0);
+        let expected = (&poses[1] - &poses[0]).scale(&nn);
+        c.equal(format!("n = {n}: S(0) = S0"), &at(&m, 0), &poses[0]);
         c.equal(format!("n = {n}: Ṡ(0) = n(S1 - S0)"), &at(&dm, 0), &expected);
         // Remainder R = S(t) - S0 - nt(S1 - S0): R(0) = R'(0) = 0, so R = t² Q(t).
-        let r = &(&m - &poses[0].0) - &expected.scale(&Poly::var("t"));
+        let r = &(&m - &poses[0]) - &expected.scale(&Poly::var("t"));
         let dr = map_motor(&r, |x| x.derivative("t"));
         c.equal(
             format!("n = {n}: remainder and its derivative vanish at 0 (O(t²))"),
             &(at(&r, 0), at(&dr, 0)),
-            &(Motor::zero(), Motor::zero()),
+            &(Even::zero(), Even::zero()),
         );
     }
 }
 
 /// `df/dt` at `t0` by the 6th-order central difference at 512 bits with h = 1e-20.
 fn finite_difference(
-    f: &dyn Fn(&MpFloat) -> Result<Motor<MpFloat>, String>,
+    f: &dyn Fn(&MpFloat) -> Result<Even<MpFloat>, String>,
     t0: &MpFloat,
 ) -> Result<Vec<MpFloat>, String> {
     let _g = PrecisionGuard::new(512);
@@ -338,14 +338,14 @@ fn lemma_4_3(c: &mut Checker) {
         let (xj, yj) = (lift(x), lift(y));
         let base = &xj + &yj.scale(&t);
         let Some(f) = c.ok("power", base.power(&t)) else { return };
-        let (value, deriv) = split_jet(&f.0);
+        let (value, deriv) = split_jet(&f);
         let (f0, _) = split_jet(&value);
         let (f1, f2) = split_jet(&deriv);
         let Some(lx) = c.ok("log X", x.log()) else { return };
-        c.close("[X + tY]^t at t = 0 is 1", &comps(&f0), &comps(&Motor::one()), 70);
+        c.close("[X + tY]^t at t = 0 is 1", &comps(&f0), &comps(&Even::one()), 70);
         c.close("d/dt [X + tY]^t at 0 = log X", &comps(&f1), &comps(&lx), 70);
         c.check("second derivative finite: the remainder is O(t²)", comps(&f2).iter().all(Real::is_finite));
-        let fx = |tt: &MpFloat| s(Pose(&x.0 + &y.0.scale(tt)).power(tt)).map(|p| p.0);
+        let fx = |tt: &MpFloat| s((x + &y.scale(tt)).power(tt));
         if let Some(fd) = c.ok("finite difference", finite_difference(&fx, &MpFloat::zero())) {
             c.close("finite difference at 512 bits: d/dt [X + tY]^t at 0 = log X", &fd, &comps(&lx), 70);
         }
@@ -358,10 +358,10 @@ fn mul_end_checks(c: &mut Checker, poses: &[Pose<MpFloat>], ends: bool) {
     let Some(m) = c.ok("bezier", MultiplicativeBezier::new(poses.to_vec())) else { return };
     let Some((s0, d0)) = c.ok("derivative", pose_derivative(&m, &MpFloat::zero())) else { return };
     let Some(l0) = c.ok("log", (&poses[0].reverse() * &poses[1]).log()) else { return };
-    let formula0 = (&poses[0].0 * &l0).scale(&nn);
-    c.close(format!("n = {n}: S(0) = S0"), &comps(&s0.0), &comps(&poses[0].0), 70);
+    let formula0 = (&poses[0] * &l0).scale(&nn);
+    c.close(format!("n = {n}: S(0) = S0"), &comps(&s0), &comps(&poses[0]), 70);
     c.close(format!("n = {n}: Ṡ(0) = n S0 log(rev(S0) S1) (dual numbers)"), &comps(&d0), &comps(&formula0), 70);
-    let f = |t: &MpFloat| m.evaluate(t).map(|p| p.0).map_err(|e| e.to_string());
+    let f = |t: &MpFloat| m.evaluate(t).map_err(|e| e.to_string());
     if let Some(fd) = c.ok("finite difference", finite_difference(&f, &MpFloat::zero())) {
         c.close(format!("n = {n}: Ṡ(0) by finite differences"), &fd, &comps(&formula0), 70);
     }
@@ -370,7 +370,7 @@ fn mul_end_checks(c: &mut Checker, poses: &[Pose<MpFloat>], ends: bool) {
     }
     let Some((_, d1)) = c.ok("derivative", pose_derivative(&m, &MpFloat::one())) else { return };
     let Some(l1) = c.ok("log", (&poses[n].reverse() * &poses[n - 1]).log()) else { return };
-    let formula1 = (&poses[n].0 * &l1).scale(&nn.neg_ref());
+    let formula1 = (&poses[n] * &l1).scale(&nn.neg_ref());
     c.close(format!("n = {n}: Ṡ(1) = -n Sn log(rev(Sn) Sn-1) (dual numbers)"), &comps(&d1), &comps(&formula1), 70);
     if let Some(fd) = c.ok("finite difference", finite_difference(&f, &MpFloat::one())) {
         c.close(format!("n = {n}: Ṡ(1) by finite differences"), &fd, &comps(&formula1), 70);
@@ -380,7 +380,7 @@ fn mul_end_checks(c: &mut Checker, poses: &[Pose<MpFloat>], ends: bool) {
         let (Some(a), Some(b)) = (c.ok("pose", m.pose(&t)), c.ok("pose", r.pose(&MpFloat::one().sub_ref(&t)))) else {
             return;
         };
-        c.close(format!("n = {n}: S_(0..n)(t) = S_(n..0)(1 - t)"), &comps(&a.0), &comps(&b.0), 70);
+        c.close(format!("n = {n}: S_(0..n)(t) = S_(n..0)(1 - t)"), &comps(&a), &comps(&b), 70);
     }
 }
 
@@ -409,7 +409,7 @@ fn theorem_4_5_multiplicative(c: &mut Checker) {
     let Some(m) = c.ok("bezier", MultiplicativeBezier::new(poses.clone())) else { return };
     let Some((_, d1)) = c.ok("derivative", pose_derivative(&m, &MpFloat::one())) else { return };
     let Some(l1) = c.ok("log", (&poses[1].reverse() * &poses[0]).log()) else { return };
-    let formula1 = (&poses[1].0 * &l1).scale(&mp(-1, 1));
+    let formula1 = (&poses[1] * &l1).scale(&mp(-1, 1));
     c.counterexample(
         "Ṡ(1) = -n Sn log(rev(Sn) Sn-1) for non-unit poses",
         agree(&d1, &formula1),
@@ -420,8 +420,8 @@ fn theorem_4_5_multiplicative(c: &mut Checker) {
     };
     c.counterexample(
         "S_(0..n)(t) = S_(n..0)(1 - t) for non-unit poses",
-        agree(&a.0, &b.0),
-        format!("S0 = 2, S1 = 1, t = 1/4: 2^(5/4) = {} against 2^(3/4) = {}", a.0.scalar.to_f64(), b.0.scalar.to_f64()),
+        agree(&a, &b),
+        format!("S0 = 2, S1 = 1, t = 1/4: 2^(5/4) = {} against 2^(3/4) = {}", a.scalar.to_f64(), b.scalar.to_f64()),
     );
 }
 
@@ -430,11 +430,11 @@ fn theorem_4_5_additive(c: &mut Checker) {
         let (poses, m) = symbolic_bezier(n);
         let dm = map_motor(&m, |x| x.derivative("t"));
         let nn = Poly::from_i64(n as i64);
-        c.equal(format!("n = {n}: Ṡ(0) = n(S1 - S0)"), &at(&dm, 0), &(&poses[1].0 - &poses[0].0).scale(&nn));
-        c.equal(format!("n = {n}: Ṡ(1) = n(Sn - Sn-1)"), &at(&dm, 1), &(&poses[n].0 - &poses[n - 1].0).scale(&nn));
+        c.equal(format!("n = {n}: Ṡ(0) = n(S1 - S0)"), &at(&dm, 0), &(&poses[1] - &poses[0]).scale(&nn));
+        c.equal(format!("n = {n}: Ṡ(1) = n(Sn - Sn-1)"), &at(&dm, 1), &(&poses[n] - &poses[n - 1]).scale(&nn));
         let rev = AdditiveBezier::new(poses.iter().rev().cloned().collect())
-            .map(|b| b.de_casteljau(&Poly::one().sub_ref(&Poly::var("t"))).0)
-            .unwrap_or_else(|_| Motor::zero());
+            .map(|b| b.de_casteljau(&Poly::one().sub_ref(&Poly::var("t"))))
+            .unwrap_or_else(|_| Even::zero());
         c.equal(format!("n = {n}: S_(0..n)(t) = S_(n..0)(1 - t)"), &m, &rev);
     }
     // The motion crate's dual-number derivative agrees (256 bits, non-unit poses).
@@ -444,14 +444,14 @@ fn theorem_4_5_additive(c: &mut Checker) {
     let three = MpFloat::from_i64(3);
     for (t, a, b) in [(0, 0, 1), (1, 2, 3)] {
         let Some((_, d)) = c.ok("derivative", pose_derivative(&m, &MpFloat::from_i64(t))) else { return };
-        let f = (&non_unit[b].0 - &non_unit[a].0).scale(&three);
+        let f = (&non_unit[b] - &non_unit[a]).scale(&three);
         c.close(format!("dual numbers, n = 3, t = {t}"), &comps(&d), &comps(&f), 70);
     }
 }
 
 fn q_pose(v: [i64; 8]) -> Pose<Q> {
     let [a, b, d, e, f, g, h, i] = v.map(Q::from_i64);
-    Pose(Motor::new(a, b, d, e, f, g, h, i))
+    Even::new(a, b, d, e, f, g, h, i)
 }
 
 fn corollary_4_6_additive(c: &mut Checker) {
@@ -469,10 +469,10 @@ fn corollary_4_6_additive(c: &mut Checker) {
         let two_n = Q::from_i64(2 * n as i64);
         for (t, s, a, b) in [(0, 0, 0, 1), (1, n, n - 1, n)] {
             let sj = lifted.de_casteljau(&Jet::variable(Q::from_i64(t as i64)));
-            let (sv, sd) = split_jet(&sj.0);
-            let Some(psi) = c.ok("Ψ", indicatrix_from_derivative(&Pose(sv), &sd)) else { return };
+            let (sv, sd) = split_jet(&sj);
+            let Some(psi) = c.ok("Ψ", indicatrix_from_derivative(&(sv), &sd)) else { return };
             let Some(inv) = c.ok("inverse", ps[s].inverse()) else { return };
-            let formula = (&inv.0 * &(&ps[b].0 - &ps[a].0)).scale(&two_n);
+            let formula = (&inv * &(&ps[b] - &ps[a])).scale(&two_n);
             c.equal(format!("n = {n}: Ψ({t}) = 2n S{s}⁻¹ (S{b} - S{a}) exactly"), &psi, &formula);
         }
     }
@@ -483,7 +483,7 @@ fn corollary_4_6_additive(c: &mut Checker) {
     for (t, s, a, b) in [(0, 0, 0, 1), (1, 3, 2, 3)] {
         let Some(psi) = c.ok("Ψ", velocity_indicatrix(&m, &MpFloat::from_i64(t))) else { return };
         let Some(inv) = c.ok("inverse", non_unit[s].inverse()) else { return };
-        let formula = (&inv.0 * &(&non_unit[b].0 - &non_unit[a].0)).scale(&MpFloat::from_i64(6));
+        let formula = (&inv * &(&non_unit[b] - &non_unit[a])).scale(&MpFloat::from_i64(6));
         c.close(format!("velocity_indicatrix, n = 3, t = {t}"), &comps(&psi), &comps(&formula), 70);
     }
 }
