@@ -262,7 +262,7 @@ fn type_items(plan: &Plan, names: &Names, i: usize) -> TokenStream {
             /// The same element as a runtime multivector of [`algebra()`].
             pub fn to_multivector(&self) -> ::algebra_core::Multivector<T> {
                 let mut m = ::algebra_core::Multivector::zero(&algebra(), BASIS);
-                #(*m.coeff_mut(#masks) = ::core::clone::Clone::clone(&self.#fields);)*
+                #(m.coeffs_mut()[#masks as usize] = ::core::clone::Clone::clone(&self.#fields);)*
                 m
             }
 
@@ -270,7 +270,7 @@ fn type_items(plan: &Plan, names: &Names, i: usize) -> TokenStream {
             /// type's basis elements (in [`BASIS`]); every other coefficient is dropped.
             pub fn project(m: &::algebra_core::Multivector<T>) -> Self {
                 let m = m.in_basis(BASIS);
-                #ty { #(#fields: ::core::clone::Clone::clone(m.coeff(#masks))),* }
+                #ty { #(#fields: ::core::clone::Clone::clone(&m.coeffs()[#masks as usize])),* }
             }
 
             /// The sandwich `f_S(x) = rev(S) x S` of the main paper (eq. 3); a fused kernel typed

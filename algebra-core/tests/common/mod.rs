@@ -77,7 +77,7 @@ pub fn vector_coeffs(v: &Mv) -> Vec<Q> {
     for (m, c) in v.coeffs().iter().enumerate() {
         assert!(m.count_ones() == 1 || *c == q(0), "not a vector: {v}");
     }
-    (0..n).map(|i| v.coeff(1 << i).clone()).collect()
+    (0..n).map(|i| v.coeff(1 << i).unwrap().clone()).collect()
 }
 
 /// `B(u, v)` computed straight from the Gram matrix.
