@@ -3,8 +3,8 @@
 //!
 //! The limit is [`DEFAULT_WORK_BUDGET`] units of work; the environment variable
 //! `GAM_WORK_BUDGET` raises (or lowers) it for one run, e.g. `GAM_WORK_BUDGET=1e10 gam ...`.
-//! Commands call [`check`] with their estimate; `gam sample` and `gam plot` estimate
-//! `samples × (degree + 1)²` (a multiplicative segment's de Casteljau tableau has
+//! Commands call [`check`] with their estimate; `gam sample`, `gam plot` and `gam interpolate`
+//! (per body point) estimate `samples × (degree + 1)²` (a multiplicative segment's de Casteljau tableau has
 //! `(degree + 1)(degree + 2)/2` slerps per sample, each a dual-number evaluation); every
 //! command that loads an algebra checks the work of its product tables ([`algebra`]), and
 //! `gam eval` checks every `poly` product's term products before forming them.

@@ -271,7 +271,15 @@ fn finite3(v: &[f64; 3]) -> bool {
 }
 
 /// The samples of a built spec at `n` evenly spaced times over `[t_0, t_m]`.
+/// The work of sampling is checked against the budget first: `n × (degree + 1)²` per body
+/// point (as for `gam sample`), with the largest segment degree.
 fn samples(b: &Built, n: usize) -> Result<Vec<TrajectorySample<f64>>, CliError> {
+    let degree = b.trajectory.segments().iter().map(|s| s.degree()).max().unwrap_or(0);
+    let points = b.body_points.len().max(1);
+    crate::budget::check(
+        &format!("sampling {points} body points of degree-{degree} segments at {n} values"),
+        crate::budget::sampling_work(degree, n) * points as f64,
+    )?;
     let out = b.trajectory.sample_evenly(n, &b.body_points).map_err(|e| CliError::math(e.to_string()))?;
     for s in &out {
         let ok =

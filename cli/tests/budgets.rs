@@ -65,3 +65,25 @@ fn a_large_poly_product_is_refused_then_allowed_by_the_budget() {
     // 4 coefficient pairs x 1.6e5 term products x 20 units = 1.28e7 > 1e6
     assert!(String::from_utf8_lossy(&out.stderr).contains("1.28e7"), "{}", String::from_utf8_lossy(&out.stderr));
 }
+
+#[test]
+fn gam_interpolate_checks_the_sampling_work() {
+    let poses = r#"[{"position": [0, 0, 0], "axis": [0, 0, 1], "angle": 0}, {"position": [1, 2, 3], "axis": [0, 1, 0], "angle": 1}]"#;
+    // 1e6 samples of a cubic x 20 body points = 3.2e8 units: over the default budget
+    let points = vec!["[0, 0, 0]"; 20].join(", ");
+    let spec =
+        format!(r#"{{"method": "ccm-additive", "poses": {poses}, "samples": 1000000, "body_points": [{points}]}}"#);
+    let f = TempFile::new("interp-budget.json", &spec);
+    for json in [false, true] {
+        let mut args = vec!["interpolate", f.path()];
+        if json {
+            args.insert(1, "--json");
+        }
+        let line = fails(&args, 2);
+        assert!(line.contains("sampling 20 body points") && line.contains("GAM_WORK_BUDGET"), "{line}");
+    }
+    // one body point at 11 samples is well within the budget
+    let spec = format!(r#"{{"method": "ccm-additive", "poses": {poses}, "samples": 11}}"#);
+    let f = TempFile::new("interp-small.json", &spec);
+    assert_eq!(ok(&["interpolate", f.path()]).lines().filter(|l| l.starts_with("t = ")).count(), 11);
+}
