@@ -14,7 +14,7 @@
 use crate::error::CliError;
 use crate::hermite::strip_comments;
 use crate::output::{mv_human, mv_json};
-use crate::sample::{MAX_SAMPLES, Sample, Sampled};
+use crate::sample::{MAX_SAMPLES, Sample, Sampler, checked};
 use crate::scalar::format_f64;
 use motion::method::Method;
 use motion::trajectory::{Trajectory, TrajectoryError, TrajectorySample, Velocities};
@@ -270,16 +270,21 @@ fn finite3(v: &[f64; 3]) -> bool {
     v.iter().all(|x| x.is_finite())
 }
 
-/// The samples of a built spec at `n` evenly spaced times over `[t_0, t_m]`.
-/// The work of sampling is checked against the budget first: `n × (degree + 1)²` per body
-/// point (as for `gam sample`), with the largest segment degree.
-fn samples(b: &Built, n: usize) -> Result<Vec<TrajectorySample<f64>>, CliError> {
+/// The work of sampling `n` values: `n × (degree + 1)²` per body point (as for `gam sample`),
+/// with the largest segment degree, checked against the budget.
+fn check_work(b: &Built, n: usize) -> Result<(), CliError> {
     let degree = b.trajectory.segments().iter().map(|s| s.degree()).max().unwrap_or(0);
     let points = b.body_points.len().max(1);
     crate::budget::check(
         &format!("sampling {points} body points of degree-{degree} segments at {n} values"),
         crate::budget::sampling_work(degree, n) * points as f64,
-    )?;
+    )
+}
+
+/// The samples of a built spec at `n` evenly spaced times over `[t_0, t_m]`, after
+/// [`check_work`].
+fn samples(b: &Built, n: usize) -> Result<Vec<TrajectorySample<f64>>, CliError> {
+    check_work(b, n)?;
     let out = b.trajectory.sample_evenly(n, &b.body_points).map_err(|e| CliError::math(e.to_string()))?;
     for s in &out {
         let ok =
@@ -337,28 +342,26 @@ pub fn interpolate(path: &str, json: bool) -> Result<String, CliError> {
 }
 
 /// `gam sample` / `gam plot` on a `gam interpolate` spec: `Ok(None)` when the file is not one.
-/// The body point is the first of `body_points`.
-pub(crate) fn sampled(path: &str, n: usize) -> Result<Option<Sampled>, CliError> {
+/// The body point is the first of `body_points`; sample `i` is at `t_0 + (t_m - t_0) i/(n-1)`.
+pub(crate) fn sampler(path: &str, n: usize) -> Result<Option<Sampler>, CliError> {
     let Some(spec) = read(path)? else { return Ok(None) };
     let b = build(path, &spec)?;
     let body_point = b.body_points.first().copied().unwrap_or([0.0; 3]);
     let one = Built { body_points: vec![body_point], ..b };
+    check_work(&one, n)?;
     let norm = |v: &[f64; 3]| v.iter().map(|x| x * x).sum::<f64>().sqrt();
-    let samples = samples(&one, n)?
-        .into_iter()
-        .map(|s| Sample {
+    let (kind, segments) = (one.method.kind(), one.trajectory.segments().len());
+    let (t0, t1) = (one.times[0], one.times[one.times.len() - 1]);
+    let at = move |i: usize| {
+        let t = if i + 1 == n { t1 } else { t0 + (t1 - t0) * (i as f64 / (n - 1) as f64) };
+        let s = one.trajectory.sample(&t, &one.body_points).map_err(|e| CliError::math(e.to_string()))?;
+        checked(Sample {
             t: s.t,
             linear_speed: norm(&s.points[0].velocity),
             angular_speed: norm(&s.space_twist.angular),
             position: s.points[0].position,
             pose: s.pose,
         })
-        .collect();
-    Ok(Some(Sampled {
-        kind: one.method.kind(),
-        degree: 3,
-        segments: one.trajectory.segments().len(),
-        body_point,
-        samples,
-    }))
+    };
+    Ok(Some(Sampler { kind, degree: 3, segments, body_point, n, at: Box::new(at) }))
 }
