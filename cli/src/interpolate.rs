@@ -281,50 +281,86 @@ fn check_work(b: &Built, n: usize) -> Result<(), CliError> {
     )
 }
 
+/// Sample `i` of `n` evenly spaced times over `[t_0, t_m]` (as `Trajectory::sample_evenly`),
+/// checked finite.
+fn sample_at(b: &Built, n: usize, i: usize) -> Result<TrajectorySample<f64>, CliError> {
+    let (t0, t1) = (b.times[0], b.times[b.times.len() - 1]);
+    let t = if i + 1 == n { t1 } else { t0 + (t1 - t0) * (i as f64 / (n - 1) as f64) };
+    let s = b.trajectory.sample(&t, &b.body_points).map_err(|e| CliError::math(e.to_string()))?;
+    let ok = s.points.iter().all(|p| finite3(&p.position) && finite3(&p.velocity)) && finite3(&s.space_twist.angular);
+    if !ok {
+        return Err(CliError::math(format!("the result at t = {} is not finite (overflow)", format_f64(s.t))));
+    }
+    Ok(s)
+}
+
 /// The samples of a built spec at `n` evenly spaced times over `[t_0, t_m]`, after
 /// [`check_work`].
 fn samples(b: &Built, n: usize) -> Result<Vec<TrajectorySample<f64>>, CliError> {
     check_work(b, n)?;
-    let out = b.trajectory.sample_evenly(n, &b.body_points).map_err(|e| CliError::math(e.to_string()))?;
-    for s in &out {
-        let ok =
-            s.points.iter().all(|p| finite3(&p.position) && finite3(&p.velocity)) && finite3(&s.space_twist.angular);
-        if !ok {
-            return Err(CliError::math(format!("the result at t = {} is not finite (overflow)", format_f64(s.t))));
-        }
+    (0..n).map(|i| sample_at(b, n, i)).collect()
+}
+
+/// One sample as a JSON object of `gam interpolate --json`.
+fn sample_json(s: &TrajectorySample<f64>) -> Result<Value, CliError> {
+    let matrix = s.pose.unitize().and_then(|u| u.to_matrix()).map_err(|e| CliError::math(e.to_string()))?;
+    // `x + 0.0` prints -0.0 as 0.0.
+    let v3 = |v: &[f64; 3]| v.map(|x| x + 0.0);
+    Ok(json!({"t": s.t, "matrix": matrix.map(|r| r.map(|x| x + 0.0)),
+        "points": s.points.iter().map(|p| v3(&p.position)).collect::<Vec<_>>(),
+        "velocities": s.points.iter().map(|p| v3(&p.velocity)).collect::<Vec<_>>(),
+        "angular_velocity": v3(&s.space_twist.angular)}))
+}
+
+/// `gam interpolate --json`, streamed in bounded memory like `gam sample --json`: the header
+/// (method, parameters, segments), then a first pass that computes every sample and discards
+/// it (a failure leaves stdout empty), then a second that writes them one by one.
+fn stream_json(b: &Built) -> Result<String, CliError> {
+    use crate::sample::write_error;
+    use std::io::Write;
+    let n = if b.samples >= 2 { b.samples } else { 0 };
+    if n > 0 {
+        check_work(b, n)?;
     }
-    Ok(out)
+    for i in 0..n {
+        sample_json(&sample_at(b, n, i)?)?;
+    }
+    let segs: Vec<Value> = b
+        .trajectory
+        .segments()
+        .iter()
+        .enumerate()
+        .map(|(k, seg)| {
+            json!({"t0": b.times[k], "t1": b.times[k + 1], "representation": b.method.representation(),
+                   "degree": seg.degree(),
+                   "control_poses": seg.control_poses.iter().map(|s| mv_json(&s.as_motor().to_multivector())).collect::<Vec<_>>()})
+        })
+        .collect();
+    let head = json!({"method": b.method.name(), "parameters": b.times, "segments": segs}).to_string();
+    let mut out = std::io::BufWriter::new(std::io::stdout().lock());
+    out.write_all(head.strip_suffix('}').unwrap_or(&head).as_bytes()).map_err(write_error)?;
+    out.write_all(b",\"samples\":[").map_err(write_error)?;
+    for i in 0..n {
+        if i > 0 {
+            out.write_all(b",").map_err(write_error)?;
+        }
+        serde_json::to_writer(&mut out, &sample_json(&sample_at(b, n, i)?)?).map_err(|e| write_error(e.into()))?;
+    }
+    out.write_all(b"]}").map_err(write_error)?;
+    out.flush().map_err(write_error)?;
+    Ok(String::new())
 }
 
 /// Runs `gam interpolate`.
 pub fn interpolate(path: &str, json: bool) -> Result<String, CliError> {
     let spec = read(path)?.ok_or_else(|| usage(path, "invalid spec: missing field `method`"))?;
     let b = build(path, &spec)?;
+    if json {
+        return stream_json(&b);
+    }
     let sampled = if b.samples >= 2 { samples(&b, b.samples)? } else { Vec::new() };
     let name = b.method.name();
     let segments = b.trajectory.segments();
-    if json {
-        let segs: Vec<Value> = segments
-            .iter()
-            .enumerate()
-            .map(|(k, seg)| {
-                json!({"t0": b.times[k], "t1": b.times[k + 1], "representation": b.method.representation(),
-                       "degree": seg.degree(),
-                       "control_poses": seg.control_poses.iter().map(|s| mv_json(&s.as_motor().to_multivector())).collect::<Vec<_>>()})
-            })
-            .collect();
-        let mut out = Vec::with_capacity(sampled.len());
-        for s in &sampled {
-            let matrix = s.pose.unitize().and_then(|u| u.to_matrix()).map_err(|e| CliError::math(e.to_string()))?;
-            // `x + 0.0` prints -0.0 as 0.0.
-            let v3 = |v: &[f64; 3]| v.map(|x| x + 0.0);
-            out.push(json!({"t": s.t, "matrix": matrix.map(|r| r.map(|x| x + 0.0)),
-                "points": s.points.iter().map(|p| v3(&p.position)).collect::<Vec<_>>(),
-                "velocities": s.points.iter().map(|p| v3(&p.velocity)).collect::<Vec<_>>(),
-                "angular_velocity": v3(&s.space_twist.angular)}));
-        }
-        return Ok(json!({"method": name, "parameters": b.times, "segments": segs, "samples": out}).to_string());
-    }
     let t = b.times.iter().map(|x| format_f64(*x)).collect::<Vec<_>>().join(", ");
     let mut lines = vec![format!("{name}: {} segments through {} poses at t = [{t}]", segments.len(), b.times.len())];
     for (k, seg) in segments.iter().enumerate() {
@@ -351,10 +387,8 @@ pub(crate) fn sampler(path: &str, n: usize) -> Result<Option<Sampler>, CliError>
     check_work(&one, n)?;
     let norm = |v: &[f64; 3]| v.iter().map(|x| x * x).sum::<f64>().sqrt();
     let (kind, segments) = (one.method.kind(), one.trajectory.segments().len());
-    let (t0, t1) = (one.times[0], one.times[one.times.len() - 1]);
     let at = move |i: usize| {
-        let t = if i + 1 == n { t1 } else { t0 + (t1 - t0) * (i as f64 / (n - 1) as f64) };
-        let s = one.trajectory.sample(&t, &one.body_points).map_err(|e| CliError::math(e.to_string()))?;
+        let s = sample_at(&one, n, i)?;
         checked(Sample {
             t: s.t,
             linear_speed: norm(&s.points[0].velocity),

@@ -178,7 +178,7 @@ pub fn stream_json(path: &str, n: usize) -> Result<String, CliError> {
 
 /// A failed write of streamed output: a closed pipe (`gam sample --json ... | head`) ends the
 /// run successfully, as `main` does for buffered output; anything else is an error line.
-fn write_error(e: std::io::Error) -> CliError {
+pub(crate) fn write_error(e: std::io::Error) -> CliError {
     if e.kind() == std::io::ErrorKind::BrokenPipe {
         std::process::exit(0);
     }
