@@ -13,6 +13,7 @@
 //!   "by subset size" in the multivector's own basis. They equal the true ones in the blade
 //!   basis and for orthogonal generators, but not in the product basis of G_{0123inf}.
 
+mod blocks;
 pub mod display;
 mod exp_log;
 mod general;
