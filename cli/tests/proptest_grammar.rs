@@ -89,6 +89,15 @@ fn interpolate_spec() -> impl Strategy<Value = String> {
         })
 }
 
+/// `args` with `--json` appended when `json`.
+fn with_json<'a>(args: &[&'a str], json: bool) -> Vec<&'a str> {
+    let mut v = args.to_vec();
+    if json {
+        v.push("--json");
+    }
+    v
+}
+
 proptest! {
     #![proptest_config(ProptestConfig { cases: 48, ..ProptestConfig::default() })]
 
@@ -105,26 +114,14 @@ proptest! {
     #[test]
     fn hermite_and_sample_specs_keep_the_contract(spec in hermite_spec(), json in any::<bool>()) {
         let f = TempFile::new("prop-hermite.json", &spec);
-        let mut args = vec!["hermite", f.path()];
-        if json {
-            args.insert(1, "--json");
-        }
-        prop_assert!(run_contract(&args, b"") <= 2);
-        let mut args = vec!["sample", f.path(), "--samples", "5"];
-        if json {
-            args.push("--json");
-        }
-        prop_assert!(run_contract(&args, b"") <= 2);
+        prop_assert!(run_contract(&with_json(&["hermite", f.path()], json), b"") <= 2);
+        prop_assert!(run_contract(&with_json(&["sample", f.path(), "--samples", "5"], json), b"") <= 2);
     }
 
     #[test]
     fn interpolate_specs_keep_the_contract(spec in interpolate_spec(), json in any::<bool>()) {
         let f = TempFile::new("prop-interpolate.json", &spec);
-        let mut args = vec!["interpolate", f.path()];
-        if json {
-            args.insert(1, "--json");
-        }
-        prop_assert!(run_contract(&args, b"") <= 2);
+        prop_assert!(run_contract(&with_json(&["interpolate", f.path()], json), b"") <= 2);
         prop_assert!(run_contract(&["sample", f.path(), "--samples", "4", "--json"], b"") <= 2);
     }
 }
