@@ -272,7 +272,7 @@ fn build(
     let (na, nb) = (spec.types[left].elements.len(), spec.types[right].elements.len());
     let vars: Vec<String> = (0..na).map(|i| format!("a{i}")).chain((0..nb).map(|i| format!("b{i}"))).collect();
     let outputs: Vec<(u32, Poly)> = (0..spec.algebra.dim() as u32)
-        .map(|m| (m, product.coeff(m).clone()))
+        .map(|m| (m, product.coeffs()[m as usize].clone()))
         .filter(|(_, p)| !p.is_exact_zero())
         .collect();
     // Gröbner bases under a few variable orders: every normal form is a representative of the

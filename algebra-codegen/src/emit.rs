@@ -241,7 +241,7 @@ fn type_items(plan: &Plan, names: &Names, i: usize) -> TokenStream {
     let to_runtime: Vec<TokenStream> =
         fields.iter().zip(&names.signs[i]).map(|(f, &s)| Names::signed(quote!(self.#f), s)).collect();
     let from_runtime: Vec<TokenStream> =
-        masks.iter().zip(&names.signs[i]).map(|(m, &s)| Names::signed(quote!(*m.coeff(#m)), s)).collect();
+        masks.iter().zip(&names.signs[i]).map(|(m, &s)| Names::signed(quote!(m.coeffs()[#m as usize]), s)).collect();
     let basis_doc = format!(
         "Basis elements ({} basis): {}.",
         plan.spec.basis,
@@ -294,7 +294,7 @@ fn type_items(plan: &Plan, names: &Names, i: usize) -> TokenStream {
             /// The same element as a runtime multivector of [`algebra()`].
             pub fn to_multivector(&self) -> ::algebra_core::Multivector<T> {
                 let mut m = ::algebra_core::Multivector::zero(&algebra(), BASIS);
-                #(*m.coeff_mut(#masks) = #to_runtime;)*
+                #(m.coeffs_mut()[#masks as usize] = #to_runtime;)*
                 m
             }
 

@@ -320,7 +320,7 @@ fn norm_terms(
     basis: Basis,
     elements: &[u32],
 ) -> Result<Vec<Term>, CodegenError> {
-    let e = |m: u32| Multivector::<Q>::from_mask(alg, basis, m);
+    let e = |m: u32| Multivector::<Q>::from_mask(alg, basis, m).expect("a type's masks are below 2^n");
     let mut terms = Vec::new();
     for (i, &mi) in elements.iter().enumerate() {
         for (j, &mj) in elements.iter().enumerate().skip(i) {

@@ -265,6 +265,35 @@ impl Poly {
         Poly { terms: self.terms.iter().map(|(m, k)| (m.clone(), Rational::from(k * c))).collect() }
     }
 
+    /// The number of (non-zero) terms.
+    ///
+    /// ```
+    /// use algebra_core::{Poly, Ring};
+    /// assert_eq!((Poly::var("x") + Poly::var("y") + Poly::from_ratio(1, 2)).term_count(), 3);
+    /// assert_eq!(Poly::zero().term_count(), 0);
+    /// ```
+    pub fn term_count(&self) -> usize {
+        self.terms.len()
+    }
+
+    /// `self * rhs`, or [`TermBudget`] *before any work* when the product would form more
+    /// than `max_terms` term products (`terms(self) × terms(rhs)`, which bounds both the
+    /// time and the number of terms of the result).
+    ///
+    /// ```
+    /// use algebra_core::{Poly, Ring, poly::TermBudget};
+    /// let s = (0..100).map(|i| Poly::var(&format!("x{i}"))).fold(Poly::zero(), |a, b| a + b);
+    /// assert_eq!(s.checked_mul(&s, 10_000).unwrap().term_count(), 5050);
+    /// assert_eq!(s.checked_mul(&s, 9_999), Err(TermBudget { estimate: 10_000, budget: 9_999 }));
+    /// ```
+    pub fn checked_mul(&self, rhs: &Poly, max_terms: u64) -> Result<Poly, TermBudget> {
+        let estimate = self.terms.len() as u128 * rhs.terms.len() as u128;
+        if estimate > u128::from(max_terms) {
+            return Err(TermBudget { estimate, budget: max_terms });
+        }
+        Ok(self.product(rhs))
+    }
+
     fn add_term(&mut self, m: Monomial, c: Rational) {
         if c == 0 {
             return;
@@ -301,6 +330,24 @@ impl Poly {
         out
     }
 }
+
+/// A polynomial product refused before any work: it would form `estimate` term products,
+/// more than the `budget` (see [`Poly::checked_mul`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct TermBudget {
+    /// `terms(a) × terms(b)` (summed over the table entries for a multivector product).
+    pub estimate: u128,
+    /// The allowed number of term products.
+    pub budget: u64,
+}
+
+impl fmt::Display for TermBudget {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "the product needs {} term products, more than the budget of {}", self.estimate, self.budget)
+    }
+}
+
+impl std::error::Error for TermBudget {}
 
 impl fmt::Display for Poly {
     /// `2*S*S1inf - S12**2 + 1/2*x`; `0` for the zero polynomial.

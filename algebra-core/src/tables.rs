@@ -315,6 +315,24 @@ impl Tables {
         }
     }
 
+    /// An estimate of the work of building one product table for `metric`, in units of one
+    /// exact multiply-add, so that a caller can refuse a metric *before* the (lazy) tables are
+    /// built: `4^n · 2^m`, where `m` counts the generators with a non-zero off-diagonal metric
+    /// entry (a blade product then expands into up to `2^m` terms). A diagonal metric costs
+    /// `4^n`; a dense one `8^n`.
+    ///
+    /// ```
+    /// use algebra_core::{Algebra, Tables};
+    /// assert_eq!(Tables::build_work(Algebra::builtin("g3").unwrap().metric()), 64.0);
+    /// // cga-null: e0 and einf meet off the diagonal
+    /// assert_eq!(Tables::build_work(Algebra::builtin("cga-null").unwrap().metric()), 4096.0);
+    /// ```
+    pub fn build_work(metric: &Metric) -> f64 {
+        let n = metric.dimension();
+        let coupled = (0..n).filter(|&i| (0..n).any(|j| j != i && !metric.gram(i, j).is_zero())).count();
+        4f64.powi(n as i32) * 2f64.powi(coupled as i32)
+    }
+
     /// The number of basis elements, `2^n`.
     pub fn dim(&self) -> usize {
         self.dim

@@ -285,7 +285,7 @@ proptest! {
             let full = (alg.dim() - 1) as u32;
             let (ab, bb) = (a.in_basis(Basis::Blade), b.in_basis(Basis::Blade));
             let pairing: Q = ab.coeffs().iter().zip(bb.coeffs()).map(|(x, y)| x * y).sum();
-            let top = |x: &Mv| x.in_basis(Basis::Blade).coeff(full).clone();
+            let top = |x: &Mv| x.in_basis(Basis::Blade).coeff(full).unwrap().clone();
             prop_assert_eq!(top(&(&a ^ &b.dual())), pairing.clone(), "top coefficient of a ^ dual(b)");
             prop_assert_eq!(top(&(&b.undual() ^ &a)), pairing, "top coefficient of undual(b) ^ a");
             Ok(())

@@ -562,8 +562,8 @@ fn spot_check_8(alg: &Arc<Algebra>, rng: &mut Lcg) {
         }
     }
     let (a, b) = (0b1011_0101, 0b0110_1110);
-    let x = Multivector::<Q>::from_mask(alg, Basis::Product, a);
-    let y = Multivector::<Q>::from_mask(alg, Basis::Product, b);
+    let x = Multivector::<Q>::from_mask(alg, Basis::Product, a).unwrap();
+    let y = Multivector::<Q>::from_mask(alg, Basis::Product, b).unwrap();
     let direct = sparse(r.combine(&sparse((&x * &y).coeffs().to_vec()), &r.p_in_f));
     assert_eq!(direct, r.product_gp_in_f(a, b), "{}: P_A P_B through Multivector", alg.name());
 }

@@ -35,7 +35,7 @@ macro_rules! value {
 /// The coefficient of the pseudoscalar (the top blade) of a runtime multivector.
 fn top(m: &Mv<Q>) -> Q {
     let n = m.algebra().generators();
-    m.coeff((1u32 << n) - 1).clone()
+    m.coeff((1u32 << n) - 1).expect("the top blade is in range").clone()
 }
 
 mod join {
@@ -79,7 +79,7 @@ mod join {
             let (x, y) = (value!(g3::Multivector, a), value!(g3::Multivector, b));
             let (xm, ym) = (x.to_multivector(), y.to_multivector());
             let alg = xm.algebra().clone();
-            let i = Mv::<Q>::from_mask(&alg, xm.basis(), 0b111);
+            let i = Mv::<Q>::from_mask(&alg, xm.basis(), 0b111).expect("e123 is in g3");
             let i_inv = i.inverse().unwrap();
             let metric = ((xm.reverse() * &i).op(&(ym.reverse() * &i)) * &i_inv).reverse();
             prop_assert_eq!((&x & &y).to_multivector(), metric);

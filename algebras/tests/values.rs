@@ -14,7 +14,7 @@ fn arrays_index_and_iteration_follow_elements() {
     assert_eq!(v.clone().into_array(), a);
     for (i, c) in v.iter().enumerate() {
         assert_eq!(&v[i], c);
-        assert_eq!(c, v.to_multivector().coeff(cga::Vector::<Q>::MASKS[i]));
+        assert_eq!(c, v.to_multivector().coeff(cga::Vector::<Q>::MASKS[i]).unwrap());
     }
     assert_eq!(v.clone().into_iter().collect::<Vec<_>>(), a.to_vec());
     assert_eq!((&v).into_iter().count(), cga::Vector::<Q>::LEN);

@@ -3,10 +3,11 @@
 //!
 //! The limit is [`DEFAULT_WORK_BUDGET`] units of work; the environment variable
 //! `GAM_WORK_BUDGET` raises (or lowers) it for one run, e.g. `GAM_WORK_BUDGET=1e10 gam ...`.
-//! Commands call [`check`] with their estimate; `gam sample` and `gam plot` estimate
-//! `samples × (degree + 1)²` (a multiplicative segment's de Casteljau tableau has
-//! `(degree + 1)(degree + 2)/2` slerps per sample, each a dual-number evaluation), and other
-//! commands (`gam interpolate`, `gam eval` products) can call the same helper.
+//! Commands call [`check`] with their estimate; `gam sample`, `gam plot` and `gam interpolate`
+//! (per body point) estimate `samples × (degree + 1)²` (a multiplicative segment's de Casteljau tableau has
+//! `(degree + 1)(degree + 2)/2` slerps per sample, each a dual-number evaluation); every
+//! command that loads an algebra checks the work of its product tables ([`algebra`]), and
+//! `gam eval` checks every `poly` product's term products before forming them.
 
 use crate::error::CliError;
 
@@ -38,6 +39,22 @@ pub fn check(what: &str, estimate: f64) -> Result<(), CliError> {
             "{what} needs about {estimate:.2e} units of work, more than the budget of {max:.2e} (set {BUDGET_VAR} to raise it)"
         )))
     }
+}
+
+/// Work units per coefficient term product of a `--scalar poly` product (an exact rational
+/// multiply and a monomial merge cost about 20 table units).
+pub const UNITS_PER_TERM_PRODUCT: f64 = 20.0;
+
+/// Work units per exact multiply-add of the product tables ([`algebra_core::Tables::build_work`]).
+pub const UNITS_PER_TABLE_TERM: f64 = 10.0;
+
+/// The algebra named `arg` (a built-in name or a TOML file), refused before its product tables
+/// are built when their work exceeds the budget (a dense metric costs `8^n`).
+pub fn algebra(arg: &str) -> Result<std::sync::Arc<algebra_core::Algebra>, CliError> {
+    let alg = algebra_codegen::metric_toml::algebra_from_name_or_path(arg)?;
+    let work = algebra_core::Tables::build_work(alg.metric()) * UNITS_PER_TABLE_TERM;
+    check(&format!("building the product tables of {} generators", alg.generators()), work)?;
+    Ok(alg)
 }
 
 /// The estimate for sampling a Bezier segment of `degree` at `samples` parameter values.

@@ -4,7 +4,6 @@
 
 use crate::error::CliError;
 use algebra_codegen::constraint::{ConstrainedKernel, Constraint, ConstraintKind, constrained_action};
-use algebra_codegen::metric_toml::algebra_from_name_or_path;
 use algebra_codegen::versor::{Convention, is_versor_type};
 use algebra_codegen::{CodegenError, ModuleSpec, plan::Plan};
 use algebra_core::Basis;
@@ -42,7 +41,7 @@ pub struct CodegenArgs {
 
 /// Runs `gam codegen`.
 pub fn codegen(args: &CodegenArgs) -> Result<String, CliError> {
-    let alg = algebra_from_name_or_path(&args.algebra)?;
+    let alg = crate::budget::algebra(&args.algebra)?;
     let module = args.module.clone().unwrap_or_else(|| {
         let stem = std::path::Path::new(alg.name()).file_stem().and_then(|s| s.to_str()).unwrap_or("generated");
         stem.chars().map(|c| if c.is_ascii_alphanumeric() { c.to_ascii_lowercase() } else { '_' }).collect()

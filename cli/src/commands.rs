@@ -6,7 +6,6 @@ use crate::eval::Evaluator;
 use crate::expr;
 use crate::output::{mv_human, mv_json, text_table};
 use crate::scalar::{CliScalar, ScalarKind};
-use algebra_codegen::metric_toml::algebra_from_name_or_path;
 use algebra_core::rational::{Q, format_rational};
 use algebra_core::{Basis, MpFloat, Multivector, Poly, PrecisionGuard, Product, algebra::BUILTINS};
 use serde_json::{Value, json};
@@ -28,7 +27,7 @@ fn description(name: &str) -> &'static str {
 pub fn algebras(names: &[String], json: bool) -> Result<String, CliError> {
     let names: Vec<String> =
         if names.is_empty() { BUILTINS.iter().map(|s| s.to_string()).collect() } else { names.to_vec() };
-    let algs = names.iter().map(|n| algebra_from_name_or_path(n)).collect::<Result<Vec<_>, _>>()?;
+    let algs = names.iter().map(|n| crate::budget::algebra(n)).collect::<Result<Vec<_>, _>>()?;
     if json {
         let list: Vec<Value> = algs
             .iter()
@@ -79,7 +78,7 @@ pub struct EvalArgs {
 
 /// `gam eval`: parse, evaluate over the chosen scalar, print in the chosen basis.
 pub fn eval(args: &EvalArgs) -> Result<String, CliError> {
-    let alg = algebra_from_name_or_path(&args.algebra)?;
+    let alg = crate::budget::algebra(&args.algebra)?;
     let text = expression_text(&args.expr)?;
     let ast = expr::parse(&text)?;
     let ev = Evaluator::new(&alg, args.basis);
@@ -129,13 +128,13 @@ fn render<T: CliScalar>(x: &Multivector<T>, json: bool) -> Result<String, CliErr
 
 /// `gam table`: the product table of `product` on the basis elements of `basis`.
 pub fn table(algebra: &str, basis: Basis, product: Product, json: bool) -> Result<String, CliError> {
-    let alg = algebra_from_name_or_path(algebra)?;
+    let alg = crate::budget::algebra(algebra)?;
     let order = alg.basis_order();
     let tab = alg.tables().product(basis, product);
     let entry = |a: u32, b: u32| -> Multivector<Q> {
         let mut m = Multivector::zero(&alg, basis);
         for (k, c) in tab.get(a, b) {
-            *m.coeff_mut(*k) = c.clone();
+            m.coeffs_mut()[*k as usize] = c.clone();
         }
         m
     };

@@ -80,8 +80,8 @@ impl<'a> Evaluator<'a> {
                     acc = match op {
                         BinOp::Add => &acc + &y,
                         BinOp::Sub => &acc - &y,
-                        BinOp::Mul => &acc * &y,
-                        BinOp::Wedge => &acc ^ &y,
+                        BinOp::Mul => self.product(&acc, &y, Product::Geometric, *col)?,
+                        BinOp::Wedge => self.product(&acc, &y, Product::Outer, *col)?,
                         BinOp::Div => self.divide(&acc, &y, "division", *col)?,
                     };
                 }
@@ -98,7 +98,7 @@ impl<'a> Evaluator<'a> {
             return Ok(v.clone());
         }
         if let Ok(mask) = self.algebra.mask_of(name) {
-            return Ok(Multivector::from_mask(self.algebra, self.basis, mask));
+            return Multivector::from_mask(self.algebra, self.basis, mask).map_err(|e| CliError::usage(e.to_string()));
         }
         if Func::from_name(name).is_some() {
             return Err(CliError::usage(format!("`{name}` at column {col} is a function: call it as {name}(...)")));
@@ -116,10 +116,16 @@ impl<'a> Evaluator<'a> {
         )))
     }
 
+    /// `product(x, y)` at column `col`, after checking its work against the budget.
+    fn product<T: CliScalar>(&self, x: &Mv<T>, y: &Mv<T>, product: Product, col: usize) -> Result<Mv<T>, CliError> {
+        crate::budget::check(&format!("the product at column {col}"), T::product_work(x, y, product))?;
+        x.try_product(y, product).map_err(|e| CliError::usage(e.to_string()))
+    }
+
     /// `x / d`: by a scalar coefficient-wise, otherwise times the inverse of `d`.
     fn divide<T: CliScalar>(&self, x: &Mv<T>, d: &Mv<T>, what: &str, col: usize) -> Result<Mv<T>, CliError> {
         if d.coeffs().iter().skip(1).all(algebra_core::Ring::is_exact_zero) {
-            let s = d.coeff(0);
+            let s = &d.coeffs()[0];
             let coeffs = x
                 .coeffs()
                 .iter()
@@ -139,7 +145,7 @@ impl<'a> Evaluator<'a> {
             return crate::prove::differentiate(&self.value::<T>(&args[0])?, &args[1], col);
         }
         let vals = args.iter().map(|a| self.value::<T>(a)).collect::<Result<Vec<_>, _>>()?;
-        let binary = |p: Product| vals[0].try_product(&vals[1], p).map_err(|e| CliError::usage(e.to_string()));
+        let binary = |p: Product| self.product(&vals[0], &vals[1], p, col);
         let elementary = |f: Elementary| T::elementary(f, &vals[0]).map_err(|e| failed(name, col, T::NAME, e));
         match func {
             Func::Rev => Ok(vals[0].reverse()),

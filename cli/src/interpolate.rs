@@ -14,7 +14,7 @@
 use crate::error::CliError;
 use crate::hermite::strip_comments;
 use crate::output::{mv_human, mv_json};
-use crate::sample::{MAX_SAMPLES, Sample, Sampled};
+use crate::sample::{MAX_SAMPLES, Sample, Sampler, checked};
 use crate::scalar::format_f64;
 use motion::method::Method;
 use motion::trajectory::{Trajectory, TrajectoryError, TrajectorySample, Velocities};
@@ -266,48 +266,98 @@ fn finite3(v: &[f64; 3]) -> bool {
     v.iter().all(|x| x.is_finite())
 }
 
-/// The samples of a built spec at `n` evenly spaced times over `[t_0, t_m]`.
-fn samples(b: &Built, n: usize) -> Result<Vec<TrajectorySample<f64>>, CliError> {
-    let out = b.trajectory.sample_evenly(n, &b.body_points).map_err(|e| CliError::math(e.to_string()))?;
-    for s in &out {
-        let ok = s.points.iter().all(|p| finite3(&p.position) && finite3(&p.velocity))
-            && finite3(&s.space_twist.angular.to_array());
-        if !ok {
-            return Err(CliError::math(format!("the result at t = {} is not finite (overflow)", format_f64(s.t))));
-        }
+/// The work of sampling `n` values: `n × (degree + 1)²` per body point (as for `gam sample`),
+/// with the largest segment degree, checked against the budget.
+fn check_work(b: &Built, n: usize) -> Result<(), CliError> {
+    let degree = b.trajectory.segments().iter().map(|s| s.degree()).max().unwrap_or(0);
+    let points = b.body_points.len().max(1);
+    crate::budget::check(
+        &format!("sampling {points} body points of degree-{degree} segments at {n} values"),
+        crate::budget::sampling_work(degree, n) * points as f64,
+    )
+}
+
+/// Sample `i` of `n` evenly spaced times over `[t_0, t_m]` (as `Trajectory::sample_evenly`),
+/// checked finite.
+fn sample_at(b: &Built, n: usize, i: usize) -> Result<TrajectorySample<f64>, CliError> {
+    let (t0, t1) = (b.times[0], b.times[b.times.len() - 1]);
+    let t = if i + 1 == n { t1 } else { t0 + (t1 - t0) * (i as f64 / (n - 1) as f64) };
+    let s = b.trajectory.sample(&t, &b.body_points).map_err(|e| CliError::math(e.to_string()))?;
+    let ok = s.points.iter().all(|p| finite3(&p.position) && finite3(&p.velocity))
+        && finite3(&s.space_twist.angular.to_array());
+    if !ok {
+        return Err(CliError::math(format!("the result at t = {} is not finite (overflow)", format_f64(s.t))));
     }
-    Ok(out)
+    Ok(s)
+}
+
+/// The samples of a built spec at `n` evenly spaced times over `[t_0, t_m]`, after
+/// [`check_work`].
+fn samples(b: &Built, n: usize) -> Result<Vec<TrajectorySample<f64>>, CliError> {
+    check_work(b, n)?;
+    (0..n).map(|i| sample_at(b, n, i)).collect()
+}
+
+/// One sample as a JSON object of `gam interpolate --json`.
+fn sample_json(s: &TrajectorySample<f64>) -> Result<Value, CliError> {
+    let matrix = s.pose.unitize().and_then(|u| u.to_matrix()).map_err(|e| CliError::math(e.to_string()))?;
+    // `x + 0.0` prints -0.0 as 0.0.
+    let v3 = |v: &[f64; 3]| v.map(|x| x + 0.0);
+    Ok(json!({"t": s.t, "matrix": matrix.map(|r| r.map(|x| x + 0.0)),
+        "points": s.points.iter().map(|p| v3(&p.position)).collect::<Vec<_>>(),
+        "velocities": s.points.iter().map(|p| v3(&p.velocity)).collect::<Vec<_>>(),
+        "angular_velocity": v3(&s.space_twist.angular.to_array())}))
+}
+
+/// `gam interpolate --json`, streamed in bounded memory like `gam sample --json`: the header
+/// (method, parameters, segments), then a first pass that computes every sample and discards
+/// it (a failure leaves stdout empty), then a second that writes them one by one.
+fn stream_json(b: &Built) -> Result<String, CliError> {
+    use crate::sample::write_error;
+    use std::io::Write;
+    let n = if b.samples >= 2 { b.samples } else { 0 };
+    if n > 0 {
+        check_work(b, n)?;
+    }
+    for i in 0..n {
+        sample_json(&sample_at(b, n, i)?)?;
+    }
+    let segs: Vec<Value> = b
+        .trajectory
+        .segments()
+        .iter()
+        .enumerate()
+        .map(|(k, seg)| {
+            json!({"t0": b.times[k], "t1": b.times[k + 1], "representation": b.method.representation(),
+                   "degree": seg.degree(),
+                   "control_poses": seg.control_poses.iter().map(|s| mv_json(&s.to_multivector())).collect::<Vec<_>>()})
+        })
+        .collect();
+    let head = json!({"method": b.method.name(), "parameters": b.times, "segments": segs}).to_string();
+    let mut out = std::io::BufWriter::new(std::io::stdout().lock());
+    out.write_all(head.strip_suffix('}').unwrap_or(&head).as_bytes()).map_err(write_error)?;
+    out.write_all(b",\"samples\":[").map_err(write_error)?;
+    for i in 0..n {
+        if i > 0 {
+            out.write_all(b",").map_err(write_error)?;
+        }
+        serde_json::to_writer(&mut out, &sample_json(&sample_at(b, n, i)?)?).map_err(|e| write_error(e.into()))?;
+    }
+    out.write_all(b"]}").map_err(write_error)?;
+    out.flush().map_err(write_error)?;
+    Ok(String::new())
 }
 
 /// Runs `gam interpolate`.
 pub fn interpolate(path: &str, json: bool) -> Result<String, CliError> {
     let spec = read(path)?.ok_or_else(|| usage(path, "invalid spec: missing field `method`"))?;
     let b = build(path, &spec)?;
+    if json {
+        return stream_json(&b);
+    }
     let sampled = if b.samples >= 2 { samples(&b, b.samples)? } else { Vec::new() };
     let name = b.method.name();
     let segments = b.trajectory.segments();
-    if json {
-        let segs: Vec<Value> = segments
-            .iter()
-            .enumerate()
-            .map(|(k, seg)| {
-                json!({"t0": b.times[k], "t1": b.times[k + 1], "representation": b.method.representation(),
-                       "degree": seg.degree(),
-                       "control_poses": seg.control_poses.iter().map(|s| mv_json(&s.to_multivector())).collect::<Vec<_>>()})
-            })
-            .collect();
-        let mut out = Vec::with_capacity(sampled.len());
-        for s in &sampled {
-            let matrix = s.pose.unitize().and_then(|u| u.to_matrix()).map_err(|e| CliError::math(e.to_string()))?;
-            // `x + 0.0` prints -0.0 as 0.0.
-            let v3 = |v: &[f64; 3]| v.map(|x| x + 0.0);
-            out.push(json!({"t": s.t, "matrix": matrix.map(|r| r.map(|x| x + 0.0)),
-                "points": s.points.iter().map(|p| v3(&p.position)).collect::<Vec<_>>(),
-                "velocities": s.points.iter().map(|p| v3(&p.velocity)).collect::<Vec<_>>(),
-                "angular_velocity": v3(&s.space_twist.angular.to_array())}));
-        }
-        return Ok(json!({"method": name, "parameters": b.times, "segments": segs, "samples": out}).to_string());
-    }
     let t = b.times.iter().map(|x| format_f64(*x)).collect::<Vec<_>>().join(", ");
     let mut lines = vec![format!("{name}: {} segments through {} poses at t = [{t}]", segments.len(), b.times.len())];
     for (k, seg) in segments.iter().enumerate() {
@@ -325,28 +375,24 @@ pub fn interpolate(path: &str, json: bool) -> Result<String, CliError> {
 }
 
 /// `gam sample` / `gam plot` on a `gam interpolate` spec: `Ok(None)` when the file is not one.
-/// The body point is the first of `body_points`.
-pub(crate) fn sampled(path: &str, n: usize) -> Result<Option<Sampled>, CliError> {
+/// The body point is the first of `body_points`; sample `i` is at `t_0 + (t_m - t_0) i/(n-1)`.
+pub(crate) fn sampler(path: &str, n: usize) -> Result<Option<Sampler>, CliError> {
     let Some(spec) = read(path)? else { return Ok(None) };
     let b = build(path, &spec)?;
     let body_point = b.body_points.first().copied().unwrap_or([0.0; 3]);
     let one = Built { body_points: vec![body_point], ..b };
+    check_work(&one, n)?;
     let norm = |v: &[f64; 3]| v.iter().map(|x| x * x).sum::<f64>().sqrt();
-    let samples = samples(&one, n)?
-        .into_iter()
-        .map(|s| Sample {
+    let (kind, segments) = (one.method.kind(), one.trajectory.segments().len());
+    let at = move |i: usize| {
+        let s = sample_at(&one, n, i)?;
+        checked(Sample {
             t: s.t,
             linear_speed: norm(&s.points[0].velocity),
             angular_speed: norm(&s.space_twist.angular.to_array()),
             position: s.points[0].position,
             pose: s.pose,
         })
-        .collect();
-    Ok(Some(Sampled {
-        kind: one.method.kind(),
-        degree: 3,
-        segments: one.trajectory.segments().len(),
-        body_point,
-        samples,
-    }))
+    };
+    Ok(Some(Sampler { kind, degree: 3, segments, body_point, n, at: Box::new(at) }))
 }

@@ -221,7 +221,7 @@ struct Problem {
 }
 
 fn parse_problem(args: &ProveArgs) -> Result<Problem, CliError> {
-    let algebra = algebra_codegen::metric_toml::algebra_from_name_or_path(&args.algebra)?;
+    let algebra = crate::budget::algebra(&args.algebra)?;
     let mut s = Script { algebra, basis: args.basis, bindings: HashMap::new(), lets: Vec::new(), builders: 0 };
     let stmts: Vec<&str> = args.claim.split(';').map(str::trim).filter(|t| !t.is_empty()).collect();
     let Some((claim, lets)) = stmts.split_last() else {
@@ -376,7 +376,7 @@ pub fn eval_relation(
         if rel == Rel::Eq {
             return Err(CliError::usage("`=` is not an expression: compare with `==` or `!=`"));
         }
-        let alg = algebra_codegen::metric_toml::algebra_from_name_or_path(algebra)?;
+        let alg = crate::budget::algebra(algebra)?;
         let (l, r) = (expr::parse(&lhs)?, expr::parse(&rhs)?);
         let ev = Evaluator::new(&alg, basis);
         let equal = match scalar {

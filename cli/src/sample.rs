@@ -16,6 +16,7 @@ use crate::scalar::format_f64;
 use motion::velocity::velocity;
 use motion::{AnyMotion, Pose, SegmentKind};
 use serde_json::{Value, json};
+use std::io::Write;
 
 /// The most samples accepted.
 pub(crate) const MAX_SAMPLES: usize = 1_000_000;
@@ -52,12 +53,60 @@ fn norm(v: &[f64; 3]) -> f64 {
     v.iter().map(|x| x * x).sum::<f64>().sqrt()
 }
 
+/// The samples of a spec, computed one at a time: all at once for the text output and
+/// `gam plot` ([`Sampler::collect`]), or streamed for `--json` ([`stream_json`]).
+pub(crate) struct Sampler {
+    /// Additive or multiplicative.
+    pub kind: SegmentKind,
+    /// The degree of the segment(s).
+    pub degree: usize,
+    /// The number of segments (1 for a `gam hermite` spec).
+    pub segments: usize,
+    /// The body point (body coordinates).
+    pub body_point: [f64; 3],
+    /// The number of samples.
+    pub n: usize,
+    /// Sample `i` of `n`, checked finite.
+    pub at: Box<dyn Fn(usize) -> Result<Sample, CliError>>,
+}
+
+impl Sampler {
+    /// All `n` samples.
+    pub fn collect(self) -> Result<Sampled, CliError> {
+        let samples = (0..self.n).map(|i| (self.at)(i)).collect::<Result<Vec<_>, _>>()?;
+        Ok(Sampled {
+            kind: self.kind,
+            degree: self.degree,
+            segments: self.segments,
+            body_point: self.body_point,
+            samples,
+        })
+    }
+}
+
+/// A sample with every number checked finite.
+pub(crate) fn checked(sample: Sample) -> Result<Sample, CliError> {
+    let m = &sample.pose;
+    let coefficients = [m.scalar, m.e12, m.e13, m.e23, m.e1inf, m.e2inf, m.e3inf, m.e123inf];
+    let all = coefficients.iter().chain(&sample.position).chain([&sample.linear_speed, &sample.angular_speed]);
+    if all.into_iter().all(|x| x.is_finite()) {
+        Ok(sample)
+    } else {
+        Err(CliError::math(format!("the result at t = {} is not finite (overflow)", format_f64(sample.t))))
+    }
+}
+
 /// Reads the spec at `path` and samples its segment at `n` parameter values.
 pub(crate) fn sample_spec(path: &str, n: usize) -> Result<Sampled, CliError> {
+    sampler(path, n)?.collect()
+}
+
+/// Reads the spec at `path`, checks the work of `n` samples, and returns its sampler.
+pub(crate) fn sampler(path: &str, n: usize) -> Result<Sampler, CliError> {
     if !(2..=MAX_SAMPLES).contains(&n) {
         return Err(CliError::usage(format!("`--samples` must be an integer from 2 to {MAX_SAMPLES} (got {n})")));
     }
-    if let Some(s) = crate::interpolate::sampled(path, n)? {
+    if let Some(s) = crate::interpolate::sampler(path, n)? {
         return Ok(s);
     }
     let spec = read_spec(path)?;
@@ -72,53 +121,71 @@ pub(crate) fn sample_spec(path: &str, n: usize) -> Result<Sampled, CliError> {
     let curve = |e: motion::CurveError| CliError::math(e.to_string());
     let motion: AnyMotion<f64> = seg.into_motion().map_err(curve)?;
     let last = (n - 1) as f64;
-    let mut samples = Vec::with_capacity(n);
-    for i in 0..n {
+    let at = move |i: usize| {
         let t = i as f64 / last;
         let vel = velocity(&motion, &t).map_err(|e| CliError::math(format!("at t = {}: {e}", format_f64(t))))?;
         let (position, v) = vel
             .body_point_velocity(&body_point)
             .map_err(|e| CliError::math(format!("at t = {}: {e}", format_f64(t))))?;
-        let sample = Sample {
+        checked(Sample {
             t,
             linear_speed: norm(&v),
             angular_speed: norm(&vel.twist().angular.to_array()),
             position,
             pose: vel.pose,
-        };
-        let m = &sample.pose;
-        let coefficients = [m.scalar, m.e12, m.e13, m.e23, m.e1inf, m.e2inf, m.e3inf, m.e123inf];
-        let all = coefficients.iter().chain(&sample.position).chain([&sample.linear_speed, &sample.angular_speed]);
-        if !all.into_iter().all(|x| x.is_finite()) {
-            return Err(CliError::math(format!("the result at t = {} is not finite (overflow)", format_f64(t))));
-        }
-        samples.push(sample);
+        })
+    };
+    Ok(Sampler { kind, degree, segments: 1, body_point, n, at: Box::new(at) })
+}
+
+/// One sample as the JSON object of `gam sample --json`.
+fn sample_json(x: &Sample) -> Value {
+    json!({
+        "t": x.t,
+        "pose": mv_json(&x.pose.to_multivector()),
+        "position": x.position,
+        "linear_speed": x.linear_speed,
+        "angular_speed": x.angular_speed,
+    })
+}
+
+/// Runs `gam sample --json`, writing to standard output as it goes, in bounded memory: a
+/// first pass computes every sample and discards it (so that a failure leaves stdout empty,
+/// as the error contract requires), a second pass writes them one by one. Returns the empty
+/// string: the caller's final newline ends the JSON.
+pub fn stream_json(path: &str, n: usize) -> Result<String, CliError> {
+    let s = sampler(path, n)?;
+    for i in 0..s.n {
+        (s.at)(i)?;
     }
-    Ok(Sampled { kind, degree, segments: 1, body_point, samples })
+    let mut out = std::io::BufWriter::new(std::io::stdout().lock());
+    out.write_all(b"{\"samples\":[").map_err(write_error)?;
+    for i in 0..s.n {
+        if i > 0 {
+            out.write_all(b",").map_err(write_error)?;
+        }
+        serde_json::to_writer(&mut out, &sample_json(&(s.at)(i)?)).map_err(|e| write_error(e.into()))?;
+    }
+    out.write_all(b"]}").map_err(write_error)?;
+    out.flush().map_err(write_error)?;
+    Ok(String::new())
+}
+
+/// A failed write of streamed output: a closed pipe (`gam sample --json ... | head`) ends the
+/// run successfully, as `main` does for buffered output; anything else is an error line.
+pub(crate) fn write_error(e: std::io::Error) -> CliError {
+    if e.kind() == std::io::ErrorKind::BrokenPipe {
+        std::process::exit(0);
+    }
+    CliError::usage(format!("cannot write the output: {e}"))
 }
 
 /// Runs `gam sample`.
 pub fn sample(path: &str, n: usize, json: bool) -> Result<String, CliError> {
-    let s = sample_spec(path, n)?;
     if json {
-        // written sample by sample: no JSON tree of a million samples is built in memory
-        let mut out = String::from("{\"samples\":[");
-        for (i, x) in s.samples.iter().enumerate() {
-            if i > 0 {
-                out.push(',');
-            }
-            let one: Value = json!({
-                "t": x.t,
-                "pose": mv_json(&x.pose.to_multivector()),
-                "position": x.position,
-                "linear_speed": x.linear_speed,
-                "angular_speed": x.angular_speed,
-            });
-            out.push_str(&one.to_string());
-        }
-        out.push_str("]}");
-        return Ok(out);
+        return stream_json(path, n);
     }
+    let s = sample_spec(path, n)?;
     let header = ["t", "x", "y", "z", "linear speed", "angular speed", "pose"];
     let mut rows = vec![header.map(str::to_string).to_vec()];
     for x in &s.samples {

@@ -3,7 +3,7 @@
 //! scalar supports (division, inverse, exp/log/sqrt).
 
 use algebra_core::rational::{Q, format_rational, parse_rational};
-use algebra_core::{Field, MpFloat, MpRational, Multivector, MvError, Poly, Real, Ring};
+use algebra_core::{Field, MpFloat, MpRational, Multivector, MvError, Poly, Product, Real, Ring};
 use num_traits::Zero;
 use std::str::FromStr;
 
@@ -92,6 +92,12 @@ pub trait CliScalar: Ring + 'static {
         Err(Failure::Unsupported("it needs --scalar poly".to_string()))
     }
 
+    /// The work units of `product(a, b)` beyond the table lookups: zero for fixed-size
+    /// scalars, the term products of a `poly` product (see [`crate::budget`]).
+    fn product_work(_a: &Multivector<Self>, _b: &Multivector<Self>, _product: Product) -> f64 {
+        0.0
+    }
+
     /// `exp`, `log` or `sqrt` of a multivector.
     fn elementary(_f: Elementary, _x: &Multivector<Self>) -> Result<Multivector<Self>, Failure> {
         Err(Failure::Unsupported("it needs --scalar f64 or mpfr:BITS".to_string()))
@@ -139,6 +145,10 @@ impl CliScalar for Poly {
     }
     fn variable(name: &str) -> Option<Self> {
         Some(Poly::var(name))
+    }
+    fn product_work(a: &Multivector<Self>, b: &Multivector<Self>, product: Product) -> f64 {
+        // an algebra mismatch is reported by the product itself
+        a.product_terms(b, product).map_or(0.0, |t| t as f64 * crate::budget::UNITS_PER_TERM_PRODUCT)
     }
     fn derivative(&self, var: &str) -> Result<Self, Failure> {
         Ok(Poly::derivative(self, var))
@@ -228,7 +238,7 @@ impl CliScalar for MpFloat {
 fn real_elementary<T: Real + CliScalar>(f: Elementary, x: &Multivector<T>) -> Result<Multivector<T>, Failure> {
     let is_scalar = x.coeffs().iter().skip(1).all(Ring::is_exact_zero);
     let out = if is_scalar {
-        let a = x.coeff(0);
+        let a = &x.coeffs()[0];
         let zero = T::zero();
         let value = match f {
             Elementary::Exp => Real::exp(a),

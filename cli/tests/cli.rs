@@ -237,3 +237,10 @@ fn help_and_version_succeed() {
     assert!(ok(&["eval", "--help"]).contains("--scalar"));
     assert!(ok(&["--version"]).starts_with("gam "));
 }
+
+#[test]
+fn an_overflowing_f64_literal_is_not_finite_not_inf() {
+    let big = format!("1{}*e1", "0".repeat(400));
+    let line = fails(&["eval", "--algebra", "g3", "--scalar", "f64", big.as_str()], 1);
+    assert!(line.contains("not finite (overflow)"), "{line}");
+}

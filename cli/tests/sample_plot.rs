@@ -229,3 +229,19 @@ fn plot_to_a_bad_path_is_exit_2() {
     fails(&["plot", spec.path(), "--out", dir.to_str().unwrap()], 2);
     fails(&["plot", spec.path()], 2);
 }
+
+#[test]
+fn streamed_json_writes_nothing_when_a_later_sample_fails() {
+    // t = 0 is finite, t = 0.01 overflows: the streamed output must not have started
+    let text = CONTRACT_EXAMPLE.replace("[8,10,12]", "[1e306,10,12]").replace("[0,0,0]", "[-1e306,0,0]");
+    let spec = TempFile::new("stream-overflow.json", &text);
+    let line = fails(&["sample", spec.path(), "--samples", "101", "--json"], 1);
+    assert!(line.contains("at t = 0.01 is not finite"), "{line}");
+    // and the streamed JSON of a good spec is the same as the text table's values
+    let good = TempFile::new("stream-good.json", CONTRACT_EXAMPLE);
+    let json: Value = serde_json::from_str(&ok(&["sample", good.path(), "--samples", "3", "--json"])).unwrap();
+    let table = ok(&["sample", good.path(), "--samples", "3"]);
+    let last_row: Vec<&str> = table.lines().last().unwrap().split_whitespace().collect();
+    let x = json["samples"][2]["position"][0].as_f64().unwrap();
+    assert_eq!((last_row[2].parse::<f64>().unwrap(), x), (8.0, 8.0)); // the spec's end position
+}

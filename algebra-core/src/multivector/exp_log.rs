@@ -97,7 +97,18 @@ impl<T: Real> Multivector<T> {
             out.coeffs[0] = c.mul_ref(&ea);
             return out.check_finite("exp", self, "the result overflows");
         }
-        let (eb, log2_err) = b.exp_scaled(self)?;
+        let general = b.exp_scaled(self);
+        let refused = match &general {
+            Ok((_, log2_err)) => self.fixed_precision() && *log2_err > F64_GENERAL_BOUND.log2(),
+            Err(_) => true,
+        };
+        if refused && self.fixed_precision() {
+            // large non-simple bivectors: closed forms per commuting block (super::blocks)
+            if let Some(eb) = b.exp_by_blocks() {
+                return eb.scale(&ea).check_finite("exp", self, "the result overflows");
+            }
+        }
+        let (eb, log2_err) = general?;
         if self.fixed_precision() && log2_err > F64_GENERAL_BOUND.log2() {
             return Err(self.undefined("exp", Self::ill_conditioned(log2_err)));
         }

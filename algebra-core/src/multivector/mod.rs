@@ -13,6 +13,7 @@
 //!   "by subset size" in the multivector's own basis. They equal the true ones in the blade
 //!   basis and for orthogonal generators, but not in the product basis of G_{0123inf}.
 
+mod blocks;
 pub mod display;
 mod exp_log;
 mod general;
@@ -64,6 +65,10 @@ pub enum MvError {
     },
     /// The element has no inverse (it is a zero divisor).
     NotInvertible(String),
+    /// A polynomial product refused before any work: too many term products
+    /// ([`Multivector::checked_product`]).
+    #[cfg(feature = "rug")]
+    TooManyTerms(crate::poly::TermBudget),
     /// No real logarithm or square root exists, or the iteration for it did not converge.
     Undefined {
         /// `log`, `sqrt`, `exp`.
@@ -91,6 +96,8 @@ impl std::fmt::Display for MvError {
             }
             MvError::NotInvertible(x) => write!(f, "{x} is not invertible"),
             MvError::Undefined { op, value, why } => write!(f, "{op} is not defined for {value}: {why}"),
+            #[cfg(feature = "rug")]
+            MvError::TooManyTerms(b) => b.fmt(f),
         }
     }
 }
@@ -163,55 +170,26 @@ impl<T: Ring> Multivector<T> {
     /// assert!(Multivector::<Q>::basis_element(&alg, Basis::Product, "e9").is_err());
     /// ```
     pub fn basis_element(algebra: &Arc<Algebra>, basis: Basis, name: &str) -> Result<Self, MvError> {
-        let mask = algebra.mask_of(name)?;
-        Ok(Self::from_mask(algebra, basis, mask))
-    }
-
-    /// The basis element with this bitmask.
-    ///
-    /// # Panics
-    /// When `mask` has a bit at or above the number of generators; see
-    /// [`Multivector::try_from_mask`] for the checked form.
-    ///
-    /// ```
-    /// use algebra_core::{Algebra, Basis, Multivector};
-    /// let alg = Algebra::builtin("g3").unwrap();
-    /// assert_eq!(Multivector::<f64>::from_mask(&alg, Basis::Blade, 0b011).to_string(), "e12");
-    /// ```
-    pub fn from_mask(algebra: &Arc<Algebra>, basis: Basis, mask: u32) -> Self {
-        let mut m = Self::zero(algebra, basis);
-        m.coeffs[mask as usize] = T::one();
-        m
+        Self::from_mask(algebra, basis, algebra.mask_of(name)?)
     }
 
     /// The basis element with this bitmask, or [`MvError::MaskOutOfRange`] for a mask with a
-    /// bit at or above the number of generators (the checked form of
-    /// [`Multivector::from_mask`]).
+    /// bit at or above the number of generators.
     ///
     /// ```
-    /// use algebra_core::{Algebra, Basis, Multivector};
+    /// use algebra_core::{Algebra, Basis, Multivector, MvError};
     /// let alg = Algebra::builtin("g3").unwrap();
-    /// assert!(Multivector::<f64>::try_from_mask(&alg, Basis::Blade, 0b111).is_ok());
-    /// assert!(Multivector::<f64>::try_from_mask(&alg, Basis::Blade, 0b1000).is_err());
+    /// assert_eq!(Multivector::<f64>::from_mask(&alg, Basis::Blade, 0b011).unwrap().to_string(), "e12");
+    /// assert!(matches!(
+    ///     Multivector::<f64>::from_mask(&alg, Basis::Blade, 0b1000),
+    ///     Err(MvError::MaskOutOfRange { mask: 8, generators: 3 })
+    /// ));
     /// ```
-    pub fn try_from_mask(algebra: &Arc<Algebra>, basis: Basis, mask: u32) -> Result<Self, MvError> {
+    pub fn from_mask(algebra: &Arc<Algebra>, basis: Basis, mask: u32) -> Result<Self, MvError> {
         check_mask(algebra, mask)?;
-        Ok(Self::from_mask(algebra, basis, mask))
-    }
-
-    /// The coefficient of the basis element `mask`, or [`MvError::MaskOutOfRange`] (the
-    /// checked form of [`Multivector::coeff`]).
-    ///
-    /// ```
-    /// use algebra_core::{Algebra, Basis, Multivector};
-    /// let alg = Algebra::builtin("g3").unwrap();
-    /// let v = Multivector::from_terms(&alg, Basis::Blade, [("e2", 4.0)]).unwrap();
-    /// assert_eq!(v.try_coeff(0b010), Ok(&4.0));
-    /// assert!(v.try_coeff(u32::MAX).is_err());
-    /// ```
-    pub fn try_coeff(&self, mask: u32) -> Result<&T, MvError> {
-        check_mask(&self.algebra, mask)?;
-        Ok(&self.coeffs[mask as usize])
+        let mut m = Self::zero(algebra, basis);
+        m.coeffs[mask as usize] = T::one();
+        Ok(m)
     }
 
     /// A multivector from its coefficients, indexed by mask.
@@ -265,12 +243,19 @@ impl<T: Ring> Multivector<T> {
         &self.coeffs
     }
 
-    /// The coefficient of the basis element `mask` (in this multivector's basis).
+    /// The coefficient of the basis element `mask` (in this multivector's basis), or
+    /// [`MvError::MaskOutOfRange`] for a mask with a bit at or above the number of generators.
     ///
-    /// # Panics
-    /// When `mask` is out of range; see [`Multivector::try_coeff`] for the checked form.
-    pub fn coeff(&self, mask: u32) -> &T {
-        &self.coeffs[mask as usize]
+    /// ```
+    /// use algebra_core::{Algebra, Basis, Multivector};
+    /// let alg = Algebra::builtin("g3").unwrap();
+    /// let v = Multivector::from_terms(&alg, Basis::Blade, [("e2", 4.0)]).unwrap();
+    /// assert_eq!(v.coeff(0b010), Ok(&4.0));
+    /// assert!(v.coeff(u32::MAX).is_err());
+    /// ```
+    pub fn coeff(&self, mask: u32) -> Result<&T, MvError> {
+        check_mask(&self.algebra, mask)?;
+        Ok(&self.coeffs[mask as usize])
     }
 
     /// The coefficient of a basis element by name.
@@ -285,9 +270,33 @@ impl<T: Ring> Multivector<T> {
         Ok(&self.coeffs[self.algebra.mask_of(name)? as usize])
     }
 
-    /// Mutable access to a coefficient.
-    pub fn coeff_mut(&mut self, mask: u32) -> &mut T {
-        &mut self.coeffs[mask as usize]
+    /// Mutable access to a coefficient, or [`MvError::MaskOutOfRange`].
+    ///
+    /// ```
+    /// use algebra_core::{Algebra, Basis, Multivector};
+    /// let alg = Algebra::builtin("g3").unwrap();
+    /// let mut v = Multivector::<f64>::zero(&alg, Basis::Blade);
+    /// *v.coeff_mut(0b100).unwrap() = 2.0;
+    /// assert_eq!(v.to_string(), "2*e3");
+    /// assert!(v.coeff_mut(0b1000).is_err());
+    /// ```
+    pub fn coeff_mut(&mut self, mask: u32) -> Result<&mut T, MvError> {
+        check_mask(&self.algebra, mask)?;
+        Ok(&mut self.coeffs[mask as usize])
+    }
+
+    /// All coefficients, indexed by mask, for in-place writing (the slice has `2^n` entries;
+    /// generated code writes its own constant masks through it).
+    ///
+    /// ```
+    /// use algebra_core::{Algebra, Basis, Multivector};
+    /// let alg = Algebra::builtin("g3").unwrap();
+    /// let mut v = Multivector::<f64>::zero(&alg, Basis::Blade);
+    /// v.coeffs_mut()[0b011] = -1.0;
+    /// assert_eq!(v.to_string(), "-e12");
+    /// ```
+    pub fn coeffs_mut(&mut self) -> &mut [T] {
+        &mut self.coeffs
     }
 
     /// The non-zero terms `(mask, name, coefficient)` in basis order.

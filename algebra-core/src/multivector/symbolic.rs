@@ -6,8 +6,9 @@
 use super::{Multivector, MvError};
 use crate::algebra::Algebra;
 use crate::basis::Basis;
-use crate::poly::Poly;
+use crate::poly::{Poly, TermBudget};
 use crate::scalar::Ring;
+use crate::tables::Product;
 use std::sync::Arc;
 
 /// Which basis elements a symbolic element has a coefficient on. Grades count generators in the
@@ -85,7 +86,7 @@ impl Multivector<Poly> {
                 .collect(),
         };
         for m in masks {
-            *out.coeff_mut(m) = Poly::var(&coefficient_symbol(prefix, algebra.name_of(m)));
+            out.coeffs_mut()[m as usize] = Poly::var(&coefficient_symbol(prefix, algebra.name_of(m)));
         }
         Ok(out)
     }
@@ -105,5 +106,51 @@ impl Multivector<Poly> {
     /// ```
     pub fn components(&self) -> Vec<(String, Poly)> {
         self.terms().filter(|(_, _, c)| !c.is_exact_zero()).map(|(_, n, c)| (n.to_string(), c.clone())).collect()
+    }
+
+    /// The number of coefficient term products `rhs`'s `product` with `self` would form:
+    /// `Σ terms(a_i) · terms(b_j) · |table(i, j)|` over the table entries (in `self`'s basis).
+    /// It bounds the work and the number of terms of the result, and costs one pass over the
+    /// table.
+    ///
+    /// ```
+    /// use algebra_core::{Algebra, Basis, Multivector, Poly, Product};
+    /// use algebra_core::multivector::symbolic::Part;
+    /// let alg = Algebra::builtin("g3").unwrap();
+    /// let v = Multivector::symbolic(&alg, Basis::Blade, "a", &Part::Grade(1)).unwrap();
+    /// // v v: each of the 3 x 3 pairs of one-term coefficients meets one table entry
+    /// assert_eq!(v.product_terms(&v, Product::Geometric).unwrap(), 9);
+    /// ```
+    pub fn product_terms(&self, rhs: &Self, product: Product) -> Result<u128, MvError> {
+        self.same_algebra(rhs)?;
+        let rhs = rhs.in_basis(self.basis);
+        let table = self.algebra.tables().product(self.basis, product);
+        let mut total = 0u128;
+        for (a, x) in self.coeffs.iter().enumerate().filter(|(_, x)| !x.is_exact_zero()) {
+            for (b, y) in rhs.coeffs.iter().enumerate().filter(|(_, y)| !y.is_exact_zero()) {
+                let entries = table.get(a as u32, b as u32).len() as u128;
+                total += entries * x.term_count() as u128 * y.term_count() as u128;
+            }
+        }
+        Ok(total)
+    }
+
+    /// `product` of `self` and `rhs`, or [`MvError::TooManyTerms`] *before any work* when
+    /// [`Multivector::product_terms`] exceeds `max_terms`.
+    ///
+    /// ```
+    /// use algebra_core::{Algebra, Basis, Multivector, MvError, Product};
+    /// use algebra_core::multivector::symbolic::Part;
+    /// let alg = Algebra::builtin("g3").unwrap();
+    /// let v = Multivector::symbolic(&alg, Basis::Blade, "a", &Part::Grade(1)).unwrap();
+    /// assert!(v.checked_product(&v, Product::Geometric, 9).is_ok());
+    /// assert!(matches!(v.checked_product(&v, Product::Geometric, 8), Err(MvError::TooManyTerms(_))));
+    /// ```
+    pub fn checked_product(&self, rhs: &Self, product: Product, max_terms: u64) -> Result<Self, MvError> {
+        let estimate = self.product_terms(rhs, product)?;
+        if estimate > u128::from(max_terms) {
+            return Err(MvError::TooManyTerms(TermBudget { estimate, budget: max_terms }));
+        }
+        self.try_product(rhs, product)
     }
 }

@@ -77,7 +77,7 @@ pub fn vector_coeffs(v: &Mv) -> Vec<Q> {
     for (m, c) in v.coeffs().iter().enumerate() {
         assert!(m.count_ones() == 1 || *c == q(0), "not a vector: {v}");
     }
-    (0..n).map(|i| v.coeff(1 << i).clone()).collect()
+    (0..n).map(|i| v.coeff(1 << i).unwrap().clone()).collect()
 }
 
 /// `B(u, v)` computed straight from the Gram matrix.
@@ -148,4 +148,17 @@ pub fn reorder_sign(a: u32, b: u32) -> i64 {
         }
     }
     if swaps.is_multiple_of(2) { 1 } else { -1 }
+}
+
+/// A xorshift64 generator for deterministic random instances outside proptest.
+pub struct Xorshift(pub u64);
+
+impl Xorshift {
+    /// Uniform in `[0, 1)`.
+    pub fn unit(&mut self) -> f64 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 7;
+        self.0 ^= self.0 << 17;
+        (self.0 >> 11) as f64 / (1u64 << 53) as f64
+    }
 }

@@ -67,9 +67,9 @@ pub mod g3_vendored {
         /// The same element as a runtime multivector of [`algebra()`].
         pub fn to_multivector(&self) -> ::algebra_core::Multivector<T> {
             let mut m = ::algebra_core::Multivector::zero(&algebra(), BASIS);
-            *m.coeff_mut(1u32) = ::core::clone::Clone::clone(&self.e1);
-            *m.coeff_mut(2u32) = ::core::clone::Clone::clone(&self.e2);
-            *m.coeff_mut(4u32) = ::core::clone::Clone::clone(&self.e3);
+            m.coeffs_mut()[1u32 as usize] = ::core::clone::Clone::clone(&self.e1);
+            m.coeffs_mut()[2u32 as usize] = ::core::clone::Clone::clone(&self.e2);
+            m.coeffs_mut()[4u32 as usize] = ::core::clone::Clone::clone(&self.e3);
             m
         }
         /// The projection of a runtime multivector onto this type: its coefficients on this
@@ -77,9 +77,9 @@ pub mod g3_vendored {
         pub fn project(m: &::algebra_core::Multivector<T>) -> Self {
             let m = m.in_basis(BASIS);
             Vector {
-                e1: ::core::clone::Clone::clone(&*m.coeff(1u32)),
-                e2: ::core::clone::Clone::clone(&*m.coeff(2u32)),
-                e3: ::core::clone::Clone::clone(&*m.coeff(4u32)),
+                e1: ::core::clone::Clone::clone(&m.coeffs()[1u32 as usize]),
+                e2: ::core::clone::Clone::clone(&m.coeffs()[2u32 as usize]),
+                e3: ::core::clone::Clone::clone(&m.coeffs()[4u32 as usize]),
             }
         }
         /// A general element with symbolic coefficients named `prefix` + the basis label
@@ -610,10 +610,10 @@ pub mod g3_vendored {
         /// The same element as a runtime multivector of [`algebra()`].
         pub fn to_multivector(&self) -> ::algebra_core::Multivector<T> {
             let mut m = ::algebra_core::Multivector::zero(&algebra(), BASIS);
-            *m.coeff_mut(0u32) = ::core::clone::Clone::clone(&self.scalar);
-            *m.coeff_mut(3u32) = ::core::clone::Clone::clone(&self.e12);
-            *m.coeff_mut(5u32) = ::core::clone::Clone::clone(&self.e13);
-            *m.coeff_mut(6u32) = ::core::clone::Clone::clone(&self.e23);
+            m.coeffs_mut()[0u32 as usize] = ::core::clone::Clone::clone(&self.scalar);
+            m.coeffs_mut()[3u32 as usize] = ::core::clone::Clone::clone(&self.e12);
+            m.coeffs_mut()[5u32 as usize] = ::core::clone::Clone::clone(&self.e13);
+            m.coeffs_mut()[6u32 as usize] = ::core::clone::Clone::clone(&self.e23);
             m
         }
         /// The projection of a runtime multivector onto this type: its coefficients on this
@@ -621,10 +621,10 @@ pub mod g3_vendored {
         pub fn project(m: &::algebra_core::Multivector<T>) -> Self {
             let m = m.in_basis(BASIS);
             Rotor {
-                scalar: ::core::clone::Clone::clone(&*m.coeff(0u32)),
-                e12: ::core::clone::Clone::clone(&*m.coeff(3u32)),
-                e13: ::core::clone::Clone::clone(&*m.coeff(5u32)),
-                e23: ::core::clone::Clone::clone(&*m.coeff(6u32)),
+                scalar: ::core::clone::Clone::clone(&m.coeffs()[0u32 as usize]),
+                e12: ::core::clone::Clone::clone(&m.coeffs()[3u32 as usize]),
+                e13: ::core::clone::Clone::clone(&m.coeffs()[5u32 as usize]),
+                e23: ::core::clone::Clone::clone(&m.coeffs()[6u32 as usize]),
             }
         }
         /// A general element with symbolic coefficients named `prefix` + the basis label
@@ -1210,10 +1210,10 @@ pub mod g3_vendored {
         /// The same element as a runtime multivector of [`algebra()`].
         pub fn to_multivector(&self) -> ::algebra_core::Multivector<T> {
             let mut m = ::algebra_core::Multivector::zero(&algebra(), BASIS);
-            *m.coeff_mut(1u32) = ::core::clone::Clone::clone(&self.e1);
-            *m.coeff_mut(2u32) = ::core::clone::Clone::clone(&self.e2);
-            *m.coeff_mut(4u32) = ::core::clone::Clone::clone(&self.e3);
-            *m.coeff_mut(7u32) = ::core::clone::Clone::clone(&self.e123);
+            m.coeffs_mut()[1u32 as usize] = ::core::clone::Clone::clone(&self.e1);
+            m.coeffs_mut()[2u32 as usize] = ::core::clone::Clone::clone(&self.e2);
+            m.coeffs_mut()[4u32 as usize] = ::core::clone::Clone::clone(&self.e3);
+            m.coeffs_mut()[7u32 as usize] = ::core::clone::Clone::clone(&self.e123);
             m
         }
         /// The projection of a runtime multivector onto this type: its coefficients on this
@@ -1221,10 +1221,10 @@ pub mod g3_vendored {
         pub fn project(m: &::algebra_core::Multivector<T>) -> Self {
             let m = m.in_basis(BASIS);
             Odd {
-                e1: ::core::clone::Clone::clone(&*m.coeff(1u32)),
-                e2: ::core::clone::Clone::clone(&*m.coeff(2u32)),
-                e3: ::core::clone::Clone::clone(&*m.coeff(4u32)),
-                e123: ::core::clone::Clone::clone(&*m.coeff(7u32)),
+                e1: ::core::clone::Clone::clone(&m.coeffs()[1u32 as usize]),
+                e2: ::core::clone::Clone::clone(&m.coeffs()[2u32 as usize]),
+                e3: ::core::clone::Clone::clone(&m.coeffs()[4u32 as usize]),
+                e123: ::core::clone::Clone::clone(&m.coeffs()[7u32 as usize]),
             }
         }
         /// A general element with symbolic coefficients named `prefix` + the basis label
@@ -1847,14 +1847,14 @@ pub mod g3_vendored {
         /// The same element as a runtime multivector of [`algebra()`].
         pub fn to_multivector(&self) -> ::algebra_core::Multivector<T> {
             let mut m = ::algebra_core::Multivector::zero(&algebra(), BASIS);
-            *m.coeff_mut(0u32) = ::core::clone::Clone::clone(&self.scalar);
-            *m.coeff_mut(1u32) = ::core::clone::Clone::clone(&self.e1);
-            *m.coeff_mut(2u32) = ::core::clone::Clone::clone(&self.e2);
-            *m.coeff_mut(4u32) = ::core::clone::Clone::clone(&self.e3);
-            *m.coeff_mut(3u32) = ::core::clone::Clone::clone(&self.e12);
-            *m.coeff_mut(5u32) = ::core::clone::Clone::clone(&self.e13);
-            *m.coeff_mut(6u32) = ::core::clone::Clone::clone(&self.e23);
-            *m.coeff_mut(7u32) = ::core::clone::Clone::clone(&self.e123);
+            m.coeffs_mut()[0u32 as usize] = ::core::clone::Clone::clone(&self.scalar);
+            m.coeffs_mut()[1u32 as usize] = ::core::clone::Clone::clone(&self.e1);
+            m.coeffs_mut()[2u32 as usize] = ::core::clone::Clone::clone(&self.e2);
+            m.coeffs_mut()[4u32 as usize] = ::core::clone::Clone::clone(&self.e3);
+            m.coeffs_mut()[3u32 as usize] = ::core::clone::Clone::clone(&self.e12);
+            m.coeffs_mut()[5u32 as usize] = ::core::clone::Clone::clone(&self.e13);
+            m.coeffs_mut()[6u32 as usize] = ::core::clone::Clone::clone(&self.e23);
+            m.coeffs_mut()[7u32 as usize] = ::core::clone::Clone::clone(&self.e123);
             m
         }
         /// The projection of a runtime multivector onto this type: its coefficients on this
@@ -1862,14 +1862,14 @@ pub mod g3_vendored {
         pub fn project(m: &::algebra_core::Multivector<T>) -> Self {
             let m = m.in_basis(BASIS);
             Multivector {
-                scalar: ::core::clone::Clone::clone(&*m.coeff(0u32)),
-                e1: ::core::clone::Clone::clone(&*m.coeff(1u32)),
-                e2: ::core::clone::Clone::clone(&*m.coeff(2u32)),
-                e3: ::core::clone::Clone::clone(&*m.coeff(4u32)),
-                e12: ::core::clone::Clone::clone(&*m.coeff(3u32)),
-                e13: ::core::clone::Clone::clone(&*m.coeff(5u32)),
-                e23: ::core::clone::Clone::clone(&*m.coeff(6u32)),
-                e123: ::core::clone::Clone::clone(&*m.coeff(7u32)),
+                scalar: ::core::clone::Clone::clone(&m.coeffs()[0u32 as usize]),
+                e1: ::core::clone::Clone::clone(&m.coeffs()[1u32 as usize]),
+                e2: ::core::clone::Clone::clone(&m.coeffs()[2u32 as usize]),
+                e3: ::core::clone::Clone::clone(&m.coeffs()[4u32 as usize]),
+                e12: ::core::clone::Clone::clone(&m.coeffs()[3u32 as usize]),
+                e13: ::core::clone::Clone::clone(&m.coeffs()[5u32 as usize]),
+                e23: ::core::clone::Clone::clone(&m.coeffs()[6u32 as usize]),
+                e123: ::core::clone::Clone::clone(&m.coeffs()[7u32 as usize]),
             }
         }
         /// A general element with symbolic coefficients named `prefix` + the basis label

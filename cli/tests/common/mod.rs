@@ -3,8 +3,10 @@
 //! `error:` line), and temporary input files.
 #![allow(dead_code)] // each test binary uses its own subset
 
+use std::io::Write;
 use std::path::PathBuf;
-use std::process::{Command, Output};
+use std::process::{Command, Output, Stdio};
+use std::time::{Duration, Instant};
 
 /// The example of shared/cli.md, verbatim (with its `//` comment).
 pub const CONTRACT_EXAMPLE: &str = r#"{
@@ -79,4 +81,49 @@ impl Drop for TempFile {
     fn drop(&mut self) {
         let _ = std::fs::remove_file(&self.0);
     }
+}
+
+/// How long one fuzzed run may take before it counts as a hang.
+pub const TIMEOUT: std::time::Duration = std::time::Duration::from_secs(30);
+
+/// Runs gam with a timeout and checks the contract; returns the exit code. Output goes to
+/// files (a full pipe would block the child while this thread waits on it).
+pub fn run_contract(args: &[&str], stdin: &[u8]) -> i32 {
+    static COUNTER: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let k = COUNTER.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let (out_file, err_file) = (TempFile::empty(&format!("fuzz-out-{k}")), TempFile::empty(&format!("fuzz-err-{k}")));
+    let mut child = Command::new(env!("CARGO_BIN_EXE_gam"))
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(std::fs::File::create(out_file.path()).expect("stdout file"))
+        .stderr(std::fs::File::create(err_file.path()).expect("stderr file"))
+        .spawn()
+        .expect("run gam");
+    let mut input = child.stdin.take().expect("stdin");
+    let _ = input.write_all(stdin);
+    drop(input);
+    let start = Instant::now();
+    let status = loop {
+        if let Some(status) = child.try_wait().expect("wait") {
+            break status;
+        }
+        if start.elapsed() > TIMEOUT {
+            let _ = child.kill();
+            let files: Vec<String> = args.iter().filter_map(|a| std::fs::read_to_string(a).ok()).collect();
+            panic!("gam {args:?} timed out after {TIMEOUT:?}; input files: {files:?}");
+        }
+        std::thread::sleep(Duration::from_millis(2));
+    };
+    let stdout = std::fs::read(out_file.path()).expect("stdout");
+    let stderr = std::fs::read_to_string(err_file.path()).expect("stderr");
+    let code = status.code().unwrap_or_else(|| panic!("gam {args:?} was killed by a signal: {stderr}"));
+    match code {
+        0 => assert!(!stderr.contains("panicked"), "{stderr}"),
+        1 | 2 => {
+            one_error_line(args, &stderr);
+            assert!(stdout.is_empty(), "gam {args:?} failed but printed to stdout");
+        }
+        _ => panic!("gam {args:?}: exit {code}: {stderr}"),
+    }
+    code
 }

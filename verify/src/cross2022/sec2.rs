@@ -328,7 +328,7 @@ fn lemma_2_2_iii(c: &mut Checker) {
     let sigma_def = element::<Q>(&alg, "e0").anticommutator(&element(&alg, "e123inf"));
     c.equal_mv("σ = e0 · ω = -e123 + e0123inf", &sigma_def, &sigma(&alg));
     for m in 0..alg.dim() as u32 {
-        let x = Multivector::from_mask(&alg, Basis::Product, m);
+        let x = Multivector::from_mask(&alg, Basis::Product, m).expect("m < dim");
         c.equal_mv(format!("σ {0} = {0} σ", alg.name_of(m)), &(&sigma_def * &x), &(&x * &sigma_def));
         c.check(format!("σ ∧ {} = 0 (commutator)", alg.name_of(m)), sigma_def.commutator(&x).is_zero());
     }
@@ -482,7 +482,7 @@ fn lemma_2_6(c: &mut Checker) {
         let mut s_q = r.even(&alg);
         for (name, m) in [("1", 1), ("e12", 2), ("e13", 2), ("e23", 4)] {
             let mask = alg.mask_of(name).expect("name");
-            *s_q.coeff_mut(mask) = q(k * m);
+            *s_q.coeff_mut(mask).expect("mask of a name") = q(k * m);
         }
         let ss_q = &s_q.reverse() * &s_q;
         let (a, b) = (ss_q.scalar_part(), ss_q.coeff_by_name("e123inf").expect("name").clone());
@@ -596,10 +596,10 @@ fn appendix_1_reverse(c: &mut Checker) {
     let g = builtin("g123inf");
     let mut all = true;
     for i in 0..g.dim() as u32 {
-        let x = Multivector::<Q>::from_mask(&g, Basis::Product, i);
+        let x = Multivector::<Q>::from_mask(&g, Basis::Product, i).expect("i < dim");
         all &= x.basis_reverse() == x.reverse();
         for j in 0..g.dim() as u32 {
-            let y = Multivector::<Q>::from_mask(&g, Basis::Product, j);
+            let y = Multivector::<Q>::from_mask(&g, Basis::Product, j).expect("j < dim");
             all &= (&x * &y).basis_reverse() == &y.basis_reverse() * &x.basis_reverse();
         }
     }

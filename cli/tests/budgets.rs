@@ -1,0 +1,89 @@
+//! Budgets before work in the CLI: a dense-metric algebra whose product tables would take
+//! too long and a `poly` product with too many term products are one `error:` line (exit 2)
+//! naming `GAM_WORK_BUDGET`, before any of the work; raising the budget lets them run.
+
+mod common;
+
+use common::{TempFile, fails, ok, one_error_line};
+use std::process::Command;
+
+fn dense_toml(n: usize) -> String {
+    let labels: Vec<String> = (0..n).map(|i| format!("\"a{i}\"")).collect();
+    let rows: Vec<String> = (0..n)
+        .map(|i| format!("[{}]", (0..n).map(|j| if i == j { "2" } else { "1" }).collect::<Vec<_>>().join(", ")))
+        .collect();
+    format!("generators = [{}]\ngram = [{}]\n", labels.join(", "), rows.join(", "))
+}
+
+fn sum(prefix: &str, n: usize) -> String {
+    (0..n).map(|i| format!("{prefix}{i}")).collect::<Vec<_>>().join(" + ")
+}
+
+#[test]
+fn a_dense_ten_generator_metric_is_refused_before_building_tables() {
+    let f = TempFile::new("dense10.toml", &dense_toml(10));
+    for args in [vec!["eval", "--algebra", f.path(), "ea0"], vec!["table", "--algebra", f.path()]] {
+        let line = fails(&args, 2);
+        assert!(line.contains("product tables of 10 generators") && line.contains("GAM_WORK_BUDGET"), "{line}");
+    }
+}
+
+#[test]
+fn a_small_dense_metric_runs() {
+    // a_i . a_j = 1 (i != j), a_i^2 = 2: a0 a1 = a0 . a1 + a0 ^ a1 = 1 + a0a1 (blade basis)
+    let f = TempFile::new("dense3.toml", &dense_toml(3));
+    assert_eq!(ok(&["eval", "--algebra", f.path(), "ea0*ea1"]), "1 + ea0a1");
+    assert_eq!(ok(&["eval", "--algebra", f.path(), "ea0*ea0"]), "2");
+}
+
+#[test]
+fn a_large_poly_product_is_refused_then_allowed_by_the_budget() {
+    // (x0 + ... + x399)(y0 + ... + y399)(z0 + ... + z399): 1.6e5 then 6.4e7 term products
+    let expr = format!("({})*({})*({})", sum("x", 400), sum("y", 400), sum("z", 400));
+    let args = ["eval", "--algebra", "g3", "--scalar", "poly", expr.as_str()];
+    let line = fails(&args, 2);
+    assert!(line.contains("the product at column") && line.contains("GAM_WORK_BUDGET"), "{line}");
+    // the first product alone (1.6e5 term products) is within the default budget
+    let two = format!("({})*({})", sum("x", 400), sum("y", 400));
+    let out = ok(&["eval", "--algebra", "g3", "--scalar", "poly", two.as_str()]);
+    assert_eq!(out.matches(" + ").count() + 1, 160_000);
+    // a budget below it refuses the first product too, and a bad budget is a usage error
+    let run = |budget: &str, args: &[&str]| {
+        Command::new(env!("CARGO_BIN_EXE_gam")).env("GAM_WORK_BUDGET", budget).args(args).output().unwrap()
+    };
+    let small = ["eval", "--algebra", "g3", "--scalar", "poly", two.as_str()];
+    for budget in ["1e5", "-1", "lots"] {
+        let out = run(budget, &small);
+        assert_eq!(out.status.code(), Some(2), "{budget}");
+        assert!(out.stdout.is_empty());
+        one_error_line(&small, &String::from_utf8_lossy(&out.stderr));
+    }
+    // a product of multivectors counts every table entry: (v)(v) in g3 with 400-term coefficients
+    let v = format!("({})*e1 + ({})*e2", sum("x", 400), sum("y", 400));
+    let vv = format!("({v})*({v})");
+    let out = run("1e6", &["eval", "--algebra", "g3", "--scalar", "poly", vv.as_str()]);
+    // 4 coefficient pairs x 1.6e5 term products x 20 units = 1.28e7 > 1e6
+    assert!(String::from_utf8_lossy(&out.stderr).contains("1.28e7"), "{}", String::from_utf8_lossy(&out.stderr));
+}
+
+#[test]
+fn gam_interpolate_checks_the_sampling_work() {
+    let poses = r#"[{"position": [0, 0, 0], "axis": [0, 0, 1], "angle": 0}, {"position": [1, 2, 3], "axis": [0, 1, 0], "angle": 1}]"#;
+    // 1e6 samples of a cubic x 20 body points = 3.2e8 units: over the default budget
+    let points = vec!["[0, 0, 0]"; 20].join(", ");
+    let spec =
+        format!(r#"{{"method": "ccm-additive", "poses": {poses}, "samples": 1000000, "body_points": [{points}]}}"#);
+    let f = TempFile::new("interp-budget.json", &spec);
+    for json in [false, true] {
+        let mut args = vec!["interpolate", f.path()];
+        if json {
+            args.insert(1, "--json");
+        }
+        let line = fails(&args, 2);
+        assert!(line.contains("sampling 20 body points") && line.contains("GAM_WORK_BUDGET"), "{line}");
+    }
+    // one body point at 11 samples is well within the budget
+    let spec = format!(r#"{{"method": "ccm-additive", "poses": {poses}, "samples": 11}}"#);
+    let f = TempFile::new("interp-small.json", &spec);
+    assert_eq!(ok(&["interpolate", f.path()]).lines().filter(|l| l.starts_with("t = ")).count(), 11);
+}
