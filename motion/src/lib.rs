@@ -32,6 +32,7 @@
 //! | [`trajectory`] | [`trajectory::Trajectory`]: a C1 motion through key poses at times in one call, velocity estimate, sampler |
 //! | [`jacobian`] | [`jacobian::JetN`] (multi-directional duals), derivatives of a sampled body point and twist w.r.t. every key pose and time |
 //! | [`method`] | the methods of `gam interpolate` by name ([`method::Method`]) |
+//! | [`repr`] | the other papers' pose representations: quaternion, Jüttler's dual quaternions, Angelidis' hexanions, screw, signs |
 //! | [`paper`] | the paper's worked examples (Secs. 4, 5.1, 5.2, 5.3 Jaklič), once |
 //!
 //! ```
@@ -63,6 +64,7 @@ pub mod paper;
 pub mod piecewise;
 pub mod pose;
 pub mod pseudoscalar;
+pub mod repr;
 mod scaled;
 mod series;
 pub mod spec;
