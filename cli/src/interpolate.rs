@@ -3,8 +3,8 @@
 //! `ccm-additive` and `ccm-multiplicative`, main paper Sec. 5.3: `motion::trajectory`); the
 //! other names of the contract are recognised and refused with "not implemented yet".
 //!
-//! Pose objects: position + axis + angle, position + quaternion, matrix, motor. The
-//! `dual_quaternion` and `hexanion` forms come with issue 10 and are refused (exit 2).
+//! Pose objects: position + axis + angle, position + quaternion, matrix, motor, and the
+//! `dual_quaternion` and `hexanion` forms (`crate::pose::extra_form`).
 //! Parameters: `uniform` (default) or an explicit increasing list; the Jüttler rules of eq. (15)
 //! come with issue 11 and are refused (exit 2). Velocities, when left out, are estimated
 //! (docs/cli.md): zero at the ends, the weighted mean of the neighbouring screw twists inside.
@@ -82,17 +82,18 @@ fn array3(path: &str, where_: &str, v: &Value) -> Result<[f64; 3], CliError> {
     serde_json::from_value(v.clone()).map_err(|_| usage(path, format!("`{where_}` must be a list of 3 numbers")))
 }
 
-/// One pose object (the contract's forms that exist today).
+/// One pose object of the spec.
 fn pose(path: &str, i: usize, v: &Value) -> Result<Pose<f64>, CliError> {
-    let at = |key: &str| format!("poses[{i}].{key}");
-    let obj = v.as_object().ok_or_else(|| usage(path, format!("`poses[{i}]` must be a pose object")))?;
-    for later in ["dual_quaternion", "hexanion"] {
-        if obj.contains_key(later) {
-            return Err(usage(
-                path,
-                format!("`poses[{i}]`: the `{later}` pose form is not implemented yet (it comes with issue 10)"),
-            ));
-        }
+    pose_in(path, &format!("poses[{i}]"), v)
+}
+
+/// One pose object (every form of the contract), named `name` in messages (also `gam pose`).
+pub(crate) fn pose_in(path: &str, name: &str, v: &Value) -> Result<Pose<f64>, CliError> {
+    let i = name;
+    let at = |key: &str| format!("{i}.{key}");
+    let obj = v.as_object().ok_or_else(|| usage(path, format!("`{i}` must be a pose object")))?;
+    if let Some(parsed) = crate::pose::extra_form(obj, name) {
+        return parsed.map_err(|e| usage(path, e));
     }
     let allowed: &[&str] = if obj.contains_key("motor") {
         &["motor"]
@@ -104,9 +105,9 @@ fn pose(path: &str, i: usize, v: &Value) -> Result<Pose<f64>, CliError> {
         &["position", "axis", "angle"]
     };
     if let Some(k) = obj.keys().find(|k| !allowed.contains(&k.as_str())) {
-        return Err(usage(path, format!("`poses[{i}]`: unexpected key `{k}` (this pose form has {allowed:?})")));
+        return Err(usage(path, format!("`{i}`: unexpected key `{k}` (this pose form has {allowed:?})")));
     }
-    let math = |e: motion::MotionError| usage(path, format!("`poses[{i}]`: {e}"));
+    let math = |e: motion::MotionError| usage(path, format!("`{i}`: {e}"));
     if let Some(m) = obj.get("motor") {
         let mv = m.as_object().ok_or_else(|| usage(path, format!("`{}` must be a multivector object", at("motor"))))?;
         let mut c = [0.0; 8];
@@ -156,7 +157,7 @@ fn pose(path: &str, i: usize, v: &Value) -> Result<Pose<f64>, CliError> {
             Pose::from_axis_angle_translation(&axis, &angle, &position)
                 .map_err(|e| usage(path, format!("`{}`: {e}", at("axis"))))
         }
-        _ => Err(usage(path, format!("`poses[{i}]`: `axis` and `angle` go together"))),
+        _ => Err(usage(path, format!("`{i}`: `axis` and `angle` go together"))),
     }
 }
 
@@ -295,9 +296,13 @@ pub fn interpolate(path: &str, json: bool) -> Result<String, CliError> {
             .iter()
             .enumerate()
             .map(|(k, seg)| {
-                json!({"t0": b.times[k], "t1": b.times[k + 1], "representation": b.method.representation(),
+                let mut seg_json = json!({"t0": b.times[k], "t1": b.times[k + 1], "representation": b.method.representation(),
                        "degree": seg.degree(),
-                       "control_poses": seg.control_poses.iter().map(|s| mv_json(&s.as_motor().to_multivector())).collect::<Vec<_>>()})
+                       "control_poses": seg.control_poses.iter().map(|s| mv_json(&s.as_motor().to_multivector())).collect::<Vec<_>>()});
+                if b.method == Method::CcmAdditive {
+                    seg_json["dual_quaternions"] = json!(crate::pose::dual_quaternions(&seg.control_poses));
+                }
+                seg_json
             })
             .collect();
         let mut out = Vec::with_capacity(sampled.len());

@@ -24,8 +24,8 @@ use crate::repr::ReprError;
 use crate::repr::bridge::pose_to_array;
 use crate::{Motor, Pose};
 use algebra_core::{Field, Real, Ring};
-use gam_algebras::DualQuaternion;
-use gam_algebras::dual_quaternion::Quaternion;
+pub use gam_algebras::DualQuaternion;
+pub use gam_algebras::dual_quaternion::Quaternion;
 
 /// Plücker's (Study's) relation (8): `Du(Q Q̃) = q⁰ q^ε + q⁰·q^ε`, zero for a rigid motion.
 ///
