@@ -7,7 +7,7 @@
 //! | [`dual_quaternion`] | dual quaternions in Jüttler's conventions, the pose map | Jüttler Sec. 1, main paper App. 2 |
 //! | [`hexanion`] | Angelidis' hexanions `<ω, m>` | Angelidis Secs. 2-7 |
 //! | [`screw`] | the screw (Chasles) decomposition; Jüttler's dist, dist*, angle | Jüttler Sec. 2 |
-//! | [`sign`] | unique signs, sign alignment (24), short-way slerp | Jüttler (24) |
+//! | [`sign`] | unique signs, short-way slerp (alignment (24): `trajectory::align_signs`) | Jüttler (24) |
 //!
 //! The 4x4 matrix is [`Pose::to_matrix`](crate::Pose::to_matrix) /
 //! [`Pose::from_matrix`](crate::Pose::from_matrix).

@@ -1,52 +1,21 @@
 //! Signs. A pose `S` and `-S` are the same rigid motion (as are `q` and `-q` for quaternions);
-//! this file fixes the sign where a representation must be unique (`gam pose`), aligns the
-//! signs of a sequence the short way (Jüttler's rule (24)), and gives the short-way slerp.
+//! this file fixes the sign where a representation must be unique (`gam pose`) and gives the
+//! short-way slerp. The sign alignment of a sequence (Jüttler's rule (24)) is
+//! [`crate::trajectory::align_signs`].
 //!
 //! ```
-//! use motion::{Pose, repr::sign::align_signs};
-//! let a = Pose::rotation(&[0.0, 0.0, 1.0], &3.0).unwrap();
+//! use motion::{Pose, repr::sign::canonical_pose};
 //! let b = Pose::rotation(&[0.0, 0.0, 1.0], &3.5).unwrap(); // scalar part cos(1.75) < 0
-//! let aligned = align_signs(&[a.clone(), -&b]);
-//! assert_eq!(aligned, vec![a, b]);
+//! assert_eq!(canonical_pose(&b), -&b);
 //! ```
 
 use crate::repr::bridge::{pose_from_array, pose_to_array};
 use crate::{MotionError, Pose};
 use algebra_core::{Real, Ring};
 
-/// `S∅ R∅ + S12 R12 + S13 R13 + S23 R23`: the 4-space inner product of the rotational parts
-/// (Jüttler's quaternions `R_i^(0)` up to positive factors).
-fn rotational_dot<T: Ring>(a: &[T; 8], b: &[T; 8]) -> T {
-    (0..4).fold(T::zero(), |s, i| s.add_ref(&a[i].mul_ref(&b[i])))
-}
-
-/// Jüttler's sign rule (24) on a sequence: the first pose is kept, every later one takes the
-/// sign (`±S_i`, the same motion) whose rotational part is nearer its (already aligned)
-/// predecessor's, i.e. a non-negative inner product; a tie (inner product exactly zero) keeps
-/// the sign as given. Exact over rationals.
-///
-/// ```
-/// use algebra_core::rational::q;
-/// use motion::{Pose, repr::sign::align_signs};
-/// let a = Pose::<algebra_core::rational::Q>::rotor_from_parts(&q(1), &q(1), &[q(0), q(0), q(1)]);
-/// let b = Pose::rotor_from_parts(&q(-1), &q(1), &[q(0), q(0), q(-1)]);
-/// assert_eq!(align_signs(&[a.clone(), b.clone()])[1], -&b);
-/// ```
-pub fn align_signs<T: Ring + PartialOrd>(poses: &[Pose<T>]) -> Vec<Pose<T>> {
-    let mut out: Vec<Pose<T>> = Vec::with_capacity(poses.len());
-    for p in poses {
-        let flip = match out.last() {
-            Some(prev) => rotational_dot(&pose_to_array(prev), &pose_to_array(p)) < T::zero(),
-            None => false,
-        };
-        out.push(if flip { -p } else { p.clone() });
-    }
-    out
-}
-
 /// The slerp of eq. (15) the short way: with `b` replaced by `-b` (the same pose) when the
-/// rotational parts of `a` and `b` have a negative inner product (the `q0·q1 ≥ 0` rule), so the
-/// rotation angle of the motion is at most π.
+/// rotational parts of `a` and `b` have a negative inner product (the `q0·q1 ≥ 0` rule, by
+/// [`crate::trajectory::align_signs`]), so the rotation angle of the motion is at most π.
 ///
 /// ```
 /// use motion::{Pose, repr::sign::slerp_short};
@@ -56,8 +25,9 @@ pub fn align_signs<T: Ring + PartialOrd>(poses: &[Pose<T>]) -> Vec<Pose<T>> {
 /// assert!(mid.is_equivalent(&Pose::rotation(&[0.0, 0.0, 1.0], &0.5).unwrap(), &1e-15).unwrap());
 /// ```
 pub fn slerp_short<T: Real>(a: &Pose<T>, b: &Pose<T>, t: &T) -> Result<Pose<T>, MotionError> {
-    let aligned = align_signs(&[a.clone(), b.clone()]);
-    Pose::slerp(a, &aligned[1], t)
+    let mut pair = [a.clone(), b.clone()];
+    crate::trajectory::align_signs(&mut pair);
+    Pose::slerp(a, &pair[1], t)
 }
 
 /// `±c` with the first non-zero entry of `c[lead..]`'s sign rule: `c[0] > 0`, or at `c[0] = 0`
