@@ -330,3 +330,31 @@ fn bad_input_is_a_typed_error() {
     assert!(Hexanion::new([f64::NAN, 0.0, 0.0], [0.0; 3]).to_pose().is_err());
     assert!(from_quaternion_position(&[0.0; 4], &[0.0; 3]).is_err());
 }
+
+#[test]
+fn hexanion_motions_have_dual_number_velocities() {
+    // velocities of HexanionLinear and Decoupled through the Motion trait (dual numbers),
+    // against central differences of the point trajectory
+    let poses = [
+        Pose::<f64>::identity(),
+        Pose::from_axis_angle_translation(&[0.2, 0.1, 1.0], &1.4, &[1.0, -0.5, 0.25]).unwrap(),
+    ];
+    let lin = HexanionLinear::through(&poses, &[0.0, 2.0]).unwrap();
+    let dec = Decoupled { omega: [0.3, -0.4, 1.1], m: [1.0, 2.0, -0.5], centre: [0.5, 0.5, 0.0] };
+    let p = [0.4, -0.3, 1.2];
+    let h = 1e-6;
+    let check = |pose_at: &dyn Fn(f64) -> Pose<f64>, v: motion::velocity::Velocity<f64>, t: f64| {
+        let q = pose_at(t).transform_point(&p).unwrap();
+        let fd: [f64; 3] = std::array::from_fn(|i| {
+            (pose_at(t + h).transform_point(&p).unwrap()[i] - pose_at(t - h).transform_point(&p).unwrap()[i])
+                / (2.0 * h)
+        });
+        assert!(diff_n(&v.point_velocity(&q), &fd) < 1e-8, "t = {t}");
+    };
+    for t in [0.3, 1.0, 1.7] {
+        check(&|s| lin.pose(&s).unwrap(), motion::velocity::velocity(&lin, &t).unwrap(), t);
+    }
+    for u in [0.2, 0.5, 0.9] {
+        check(&|s| dec.pose(&s).unwrap(), motion::velocity::velocity(&dec, &u).unwrap(), u);
+    }
+}
