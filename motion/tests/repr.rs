@@ -181,16 +181,7 @@ fn exact_over_rationals() {
     assert!(Hexanion::new([q(0), q(0), q(0)], [q(1), q(0), q(0)]).rot_trs().is_none());
     // a non-unit rotor (1 + e12 scaled) and a translation, exactly
     let s = Pose::<Q>::rotor_from_parts(&q(1), &q(2), &[q(0), q(1), q(0)]) * Pose::translation(&[q(1), q(2), q(3)]);
-    let d = DualQuaternion::from_pose(&motion::Motor::new(
-        pose_to_array(&s)[0].clone(),
-        pose_to_array(&s)[1].clone(),
-        pose_to_array(&s)[2].clone(),
-        pose_to_array(&s)[3].clone(),
-        pose_to_array(&s)[4].clone(),
-        pose_to_array(&s)[5].clone(),
-        pose_to_array(&s)[6].clone(),
-        pose_to_array(&s)[7].clone(),
-    ));
+    let d = dq::to_dual_quaternion_exact(&s);
     assert_eq!(dq::study_residual(&d), q(0));
     for p in [[q(1), q(0), q(0)], [q(2), q(-3), q(5)]] {
         let y = dq::point_image(&d, &[q(1), p[0].clone(), p[1].clone(), p[2].clone()]);
@@ -202,6 +193,17 @@ fn exact_over_rationals() {
                 / m[0][0].clone()
         });
         assert_eq!(via_m, img);
+    }
+    // pose <-> dual quaternion and Jüttler's M (10) against the pose's matrix, exactly
+    assert_eq!(dq::from_dual_quaternion_exact(&d).unwrap(), s);
+    assert!(matches!(
+        dq::from_dual_quaternion_exact(&DualQuaternion::from_coeffs([q(1), q(0), q(0), q(0), q(1), q(0), q(0), q(0)])),
+        Err(ReprError::OffStudyQuadric { .. })
+    ));
+    let (jm, sm) = (dq::matrix_m(&d), s.to_matrix().unwrap());
+    for i in 0..3 {
+        let row: [Q; 4] = std::array::from_fn(|j| jm[i + 1][(j + 1) % 4].clone() / jm[0][0].clone());
+        assert_eq!(row, sm[i]);
     }
     let tr = dq::trans(&d);
     assert_eq!(tr.real.vector(), [q(0), q(0), q(0)]);

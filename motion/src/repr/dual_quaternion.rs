@@ -223,6 +223,44 @@ pub fn to_dual_quaternion<T: Real>(s: &Pose<T>) -> Result<DualQuaternion<T>, Rep
     Ok(DualQuaternion::from_pose(&Motor::new(a, b, c, d, e, f, g, h)))
 }
 
+/// The dual quaternion of a pose without normalising (the pose map of the module docs applied
+/// to the coefficients): exact over rationals, linear, and on the Study quadric exactly when
+/// `rev(S) S` has no `ω` part.
+///
+/// ```
+/// use algebra_core::rational::q;
+/// use motion::{Pose, repr::dual_quaternion::{study_residual, to_dual_quaternion_exact}};
+/// let s = Pose::rotor_from_parts(&q(1), &q(2), &[q(0), q(1), q(0)]) * Pose::translation(&[q(1), q(2), q(3)]);
+/// assert_eq!(study_residual(&to_dual_quaternion_exact(&s)), q(0));
+/// ```
+pub fn to_dual_quaternion_exact<T: Ring>(s: &Pose<T>) -> DualQuaternion<T> {
+    let [a, b, c, d, e, f, g, h] = pose_to_array(s);
+    DualQuaternion::from_pose(&Motor::new(a, b, c, d, e, f, g, h))
+}
+
+/// The pose of a dual quaternion on the Study quadric, exactly (over rationals): Plücker's
+/// relation (8) must hold exactly and the real part be non-zero; the inverse of
+/// [`to_dual_quaternion_exact`].
+///
+/// ```
+/// use algebra_core::rational::q;
+/// use motion::{Pose, repr::dual_quaternion::{from_dual_quaternion_exact, to_dual_quaternion_exact}};
+/// let s = Pose::rotor_from_parts(&q(1), &q(2), &[q(0), q(1), q(0)]) * Pose::translation(&[q(1), q(2), q(3)]);
+/// assert_eq!(from_dual_quaternion_exact(&to_dual_quaternion_exact(&s)).unwrap(), s);
+/// ```
+pub fn from_dual_quaternion_exact<T: Field>(q: &DualQuaternion<T>) -> Result<Pose<T>, ReprError> {
+    if q.real.norm_squared().is_exact_zero() {
+        return Err(ReprError::ZeroRealPart);
+    }
+    let residual = study_residual(q);
+    if !residual.is_exact_zero() {
+        // |cosine| in f64, for the message
+        let den = (q.real.norm_squared().magnitude() * q.dual.norm_squared().magnitude()).sqrt();
+        return Err(ReprError::OffStudyQuadric { cosine: residual.magnitude() / den });
+    }
+    Ok(Pose::from_motor(q.to_pose()))
+}
+
 /// The pose of a dual quaternion acting by (12) (module docs): any `Q` with a non-zero real
 /// part on the Study quadric, to `tol` in [`study_cosine`]; proportional `Q` give equivalent
 /// poses (the result is `Q`'s image, not unitized).
