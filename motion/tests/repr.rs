@@ -116,6 +116,18 @@ fn round_trips<T: Real>(tol: f64, digits: i32) {
         let y = dq::point_image(&d, &[T::one(), p[0].clone(), p[1].clone(), p[2].clone()]);
         let y3: [T; 3] = std::array::from_fn(|i| y[i + 1].div_ref(&y[0]));
         assert!(diff_n(&y3, &sp) <= tol * sz, "{name}: (12)");
+        // Jüttler's (6) and (11) against the pose's rotation block
+        let (axis, phi) = dq::axis_angle(&d.real).unwrap();
+        let u = dq::matrix_u(&d.real);
+        let rot = if phi.is_exact_zero() { Pose::identity() } else { Pose::rotation(&axis, &phi).unwrap() };
+        let rm = rot.to_matrix().unwrap();
+        for i in 0..3 {
+            assert!(
+                diff_n(&u[i], &[mat[i][0].clone(), mat[i][1].clone(), mat[i][2].clone()]) <= tol * 4.0,
+                "{name}: (11)"
+            );
+            assert!(diff_n(&[rm[i][0].clone(), rm[i][1].clone(), rm[i][2].clone()], &u[i]) <= tol * 4.0, "{name}: (6)");
+        }
         // Jüttler's (10) against the pose's matrix (weight first)
         let jm = dq::matrix_m(&d);
         for i in 0..3 {
