@@ -86,6 +86,13 @@ fn representations(s: &Pose<f64>) -> Result<Value, CliError> {
     }
     let h = Hexanion::from_pose(&u).map_err(|e| math(&e))?;
     let sc = Screw::of_hexanion(&h);
+    let all = [matrix.iter().flatten().copied().collect(), position.to_vec(), d.coeffs().to_vec(), h.omega.to_vec()]
+        .into_iter()
+        .chain([h.m.to_vec(), sc.point.to_vec(), vec![sc.translation, sc.pitch.unwrap_or(0.0), angle]])
+        .collect::<Vec<Vec<f64>>>();
+    if !all.iter().flatten().all(|x| x.is_finite()) {
+        return Err(CliError::math("the pose's representations overflow (a translation near the largest f64)"));
+    }
     Ok(json!({
         "matrix": matrix.map(z),
         "position": z(position),

@@ -164,6 +164,12 @@ fn bad_input_is_one_error_line_with_exit_2() {
 }
 
 #[test]
+fn overflow_is_an_error_not_null() {
+    let e = fails(&["pose", "--json", r#"{"dual_quaternion": [1,0,0,0, 0,1e308,1e308,0]}"#], 1);
+    assert!(e.contains("overflow"), "{e}");
+}
+
+#[test]
 fn interpolate_accepts_the_new_forms_and_prints_dual_quaternions() {
     let reference = pose(&axis_angle_json());
     let spec = format!(
