@@ -33,6 +33,7 @@
 //! | [`jacobian`] | [`jacobian::JetN`] (multi-directional duals), derivatives of a sampled body point and twist w.r.t. every key pose and time |
 //! | [`method`] | the methods of `gam interpolate` by name ([`method::Method`]) |
 //! | [`paper`] | the paper's worked examples (Secs. 4, 5.1, 5.2, 5.3 Jaklič), once |
+//! | [`wareham_lasenby`] | Wareham–Lasenby in `cga`: exp (Thm 3), log (Thm 9), rotor ↔ pose, helix (Sec. 4.1), interpolation (Sec. 3) |
 //!
 //! ```
 //! use motion::Pose;
@@ -69,6 +70,7 @@ pub mod spec;
 mod stable_slerp;
 pub mod trajectory;
 pub mod velocity;
+pub mod wareham_lasenby;
 
 pub use algebra_core;
 pub use bezier::{AdditiveBezier, CurveError, Motion, MultiplicativeBezier};
