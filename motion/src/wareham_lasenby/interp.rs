@@ -7,9 +7,10 @@
 //! | [`WlBivectorLinear`] | Sec. 3.3 | `exp((1 - λ) ℓ(R_i) + λ ℓ(R_{i+1}))` |
 //! | [`WlQuadratic`] | Sec. 3.2 | `exp(Q(t))`, `Q` the quadratic through `(t_i, ℓ(R_i))` (3 poses), smoothed for more |
 //!
-//! `R_i` is the displacement rotor of `P_i` ([`super::from_pose`]); consecutive rotors are first
-//! sign-aligned the short way (`R_i ↦ -R_i` when `<R_i rev(R_{i-1})>_0 < 0`: Jüttler's rule
-//! (24), the contract's rule), so the relative rotors turn by at most π.
+//! `R_i` is the displacement rotor of `P_i` ([`super::from_pose`]) after the key poses are
+//! sign-aligned the short way ([`crate::trajectory::align_signs`], Jüttler's rule (24), the
+//! contract's rule; for displacement rotors it is `<R_i rev(R_{i-1})>_0 ≥ 0`), so the relative
+//! rotors turn by at most π.
 //!
 //! **Smoothed quadratic (more than 3 poses).** The paper points to Cendes–Wong's C1 quadratic
 //! interpolation, which is made for scattered data over triangulations. For a sequence we use
@@ -31,6 +32,7 @@
 //! ```
 
 use super::{Generator, WlError, from_pose, log, to_pose};
+use crate::trajectory::align_signs;
 use crate::{CurveError, Motion, MotionError, Pose};
 use algebra_core::{Real, Ring};
 use gam_algebras::cga::Motor;
@@ -59,16 +61,9 @@ impl<T: Real> Keys<T> {
                 return Err(CurveError::BreaksNotIncreasing { index, value: t.to_string(), previous }.into());
             }
         }
-        let mut rotors: Vec<Motor<T>> = Vec::with_capacity(poses.len());
-        for p in poses {
-            let mut r = from_pose(p)?;
-            if let Some(prev) = rotors.last()
-                && (&r * &prev.reverse()).scalar < T::zero()
-            {
-                r = -r;
-            }
-            rotors.push(r);
-        }
+        let mut aligned = poses.to_vec();
+        align_signs(&mut aligned);
+        let rotors = aligned.iter().map(from_pose).collect::<Result<_, _>>()?;
         Ok(Keys { times: times.to_vec(), rotors })
     }
 
@@ -327,5 +322,43 @@ impl<T: Real> Motion<T> for WlQuadratic<T> {
     }
     fn map_scalar<U: Real>(&self, f: &dyn Fn(&T) -> U) -> WlQuadratic<U> {
         WlQuadratic { keys: self.keys.map_scalar(f), logs: self.logs.iter().map(|g| g.map_scalar(f)).collect() }
+    }
+}
+
+/// The motion of a W-L method of `gam interpolate` ([`crate::method::Method::wl_motion`]).
+///
+/// ```
+/// use motion::{Motion, Pose, wareham_lasenby::{WlLinear, WlMotion}};
+/// let poses = [Pose::<f64>::identity(), Pose::translation(&[2.0, 0.0, 0.0])];
+/// let m = WlMotion::Linear(WlLinear::new(&poses, &[0.0, 1.0]).unwrap());
+/// assert_eq!(m.domain(), [0.0, 1.0]);
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub enum WlMotion<T: Ring> {
+    /// `wl-linear` (Sec. 3.1).
+    Linear(WlLinear<T>),
+    /// `wl-quadratic` (Sec. 3.2, smoothed for more than 3 poses).
+    Quadratic(WlQuadratic<T>),
+}
+
+impl<T: Real> Motion<T> for WlMotion<T> {
+    type Mapped<U: Real> = WlMotion<U>;
+    fn evaluate(&self, t: &T) -> Result<Pose<T>, CurveError> {
+        match self {
+            WlMotion::Linear(m) => m.evaluate(t),
+            WlMotion::Quadratic(m) => m.evaluate(t),
+        }
+    }
+    fn domain(&self) -> [T; 2] {
+        match self {
+            WlMotion::Linear(m) => m.domain(),
+            WlMotion::Quadratic(m) => m.domain(),
+        }
+    }
+    fn map_scalar<U: Real>(&self, f: &dyn Fn(&T) -> U) -> WlMotion<U> {
+        match self {
+            WlMotion::Linear(m) => WlMotion::Linear(m.map_scalar(f)),
+            WlMotion::Quadratic(m) => WlMotion::Quadratic(m.map_scalar(f)),
+        }
     }
 }

@@ -34,7 +34,7 @@ pub mod log;
 pub use convert::{from_pose, to_pose};
 pub use generator::{Generator, GeneratorParts};
 pub use helix::helix_point;
-pub use interp::{WlBivectorLinear, WlLinear, WlQuadratic};
+pub use interp::{WlBivectorLinear, WlLinear, WlMotion, WlQuadratic};
 pub use log::log;
 
 use crate::{CurveError, MotionError};
