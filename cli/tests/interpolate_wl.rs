@@ -5,22 +5,8 @@
 
 mod common;
 
-use common::{TempFile, fails, ok};
+use common::{TempFile, fails, ok, rodrigues};
 use serde_json::Value;
-
-/// `R x + t` as a 4x4 matrix from axis, angle, position (Rodrigues).
-fn rodrigues(axis: [f64; 3], phi: f64, t: [f64; 3]) -> [[f64; 4]; 4] {
-    let n = (axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]).sqrt();
-    let [x, y, z] = axis.map(|a| a / n);
-    let (s, c) = phi.sin_cos();
-    let k = 1.0 - c;
-    [
-        [c + x * x * k, x * y * k - z * s, x * z * k + y * s, t[0]],
-        [y * x * k + z * s, c + y * y * k, y * z * k - x * s, t[1]],
-        [z * x * k - y * s, z * y * k + x * s, c + z * z * k, t[2]],
-        [0.0, 0.0, 0.0, 1.0],
-    ]
-}
 
 const KEYS: [([f64; 3], f64, [f64; 3]); 4] = [
     ([0.0, 0.0, 1.0], 0.0, [0.0, 0.0, 0.0]),
@@ -111,4 +97,20 @@ fn errors() {
     assert!(e.contains("wl-quadratic") && e.contains("at least 3"), "{e}");
     let e = run("times", &spec("wl-linear", 0, r#", "parameters": [0, 1, 1, 2]"#));
     assert!(e.contains("breakpoint"), "{e}");
+}
+
+/// `gam sample` accepts a W-L spec: the positions are those of `gam interpolate`.
+#[test]
+fn gam_sample_accepts_a_wl_spec() {
+    let text = spec("wl-quadratic", 5, "");
+    let v = run_json("sample-ref", &text);
+    let file = TempFile::new("interp-wl-sample.json", &text);
+    let out: Value = serde_json::from_str(&ok(&["sample", file.path(), "--samples", "5", "--json"])).expect("JSON");
+    let got = out["samples"].as_array().unwrap();
+    assert_eq!(got.len(), 5);
+    for (s, r) in got.iter().zip(v["samples"].as_array().unwrap()) {
+        let p: [f64; 3] = serde_json::from_value(s["position"].clone()).unwrap();
+        let q: Vec<[f64; 3]> = serde_json::from_value(r["points"].clone()).unwrap();
+        assert!((0..3).all(|k| (p[k] - q[0][k]).abs() < 1e-15), "{p:?} vs {:?}", q[0]);
+    }
 }

@@ -377,3 +377,27 @@ fn bad_input_is_a_typed_error() {
     let m = WlLinear::new(&p[..2], &[0.0, 1.0]).unwrap();
     assert!(m.pose(&2.0).is_err() && m.pose(&f64::NAN).is_err());
 }
+
+/// The parts without square roots are exact over the rationals: F, its inverse, translators,
+/// the rotor of a rational rotation, the rotor -> pose conversion.
+#[test]
+fn exact_over_rationals() {
+    use algebra_core::rational::{Q, q as qi, ratio};
+    use motion::wareham_lasenby::cga::{n, nbar, plane};
+    let x = [ratio(1, 3), qi(-2), ratio(5, 7)];
+    let a = [ratio(1, 2), qi(3), ratio(-4, 9)];
+    assert_eq!(embed_inverse(&(embed(&x) * ratio(3, 2))).unwrap(), x);
+    let moved = translator(&a).apply(&embed(&x));
+    assert_eq!(moved, embed(&std::array::from_fn(|i| x[i].clone() + a[i].clone())));
+    // F(x)·n = -1 and n·n̄ = 2, from the geometric product's scalar part
+    assert_eq!((embed(&x) * n::<Q>() + n::<Q>() * embed(&x)).scalar, qi(-2));
+    assert_eq!((n::<Q>() * nbar::<Q>()).scalar, qi(2));
+    // the rational rotation cos = 3/5, sin = 4/5 about e3, then the translation a
+    let mut rot = Motor::<Q>::one() * ratio(3, 5);
+    let p = plane(&[qi(0), qi(0), qi(1)]);
+    (rot.e12, rot.e13, rot.e23) = (p.e12 * ratio(4, 5), p.e13 * ratio(4, 5), p.e23 * ratio(4, 5));
+    let r = translator(&a) * rot;
+    let s = to_pose(&r);
+    let image = embed_inverse(&r.apply(&embed(&x))).unwrap();
+    assert_eq!(s.transform_point(&x).unwrap(), image);
+}
