@@ -401,3 +401,36 @@ fn exact_over_rationals() {
     let image = embed_inverse(&r.apply(&embed(&x))).unwrap();
     assert_eq!(s.transform_point(&x).unwrap(), image);
 }
+
+/// The interpolations over 256-bit floats pass through their key poses to 1e-70.
+#[test]
+fn interpolations_pass_through_key_poses_mpfr_256() {
+    let _g = PrecisionGuard::new(256);
+    let p = poses::<MpFloat>();
+    let keys = [p[5].clone(), p[2].clone(), p[3].clone(), p[1].clone()];
+    let times: Vec<MpFloat> = (0..4).map(|i| q::<MpFloat>(i, 3)).collect();
+    let quad = WlQuadratic::new(&keys, &times).unwrap();
+    let lin = WlLinear::new(&keys, &times).unwrap();
+    for (k, t) in keys.iter().zip(&times) {
+        let scale = 1.0 + k.components().iter().map(|c| Real::abs(*c).to_f64()).fold(0.0, f64::max);
+        let u = k.unitize().unwrap();
+        for got in [quad.pose(t).unwrap(), lin.pose(t).unwrap()] {
+            // the same rigid motion: equal up to sign
+            let (d1, d2) = (pose_diff(&got, &u), pose_diff(&got, &-&u));
+            assert!(d1.min(d2) < 1e-70 * scale, "{d1} {d2}");
+        }
+    }
+}
+
+/// `canonical_sign` keeps the displacement and makes the scalar part non-negative.
+#[test]
+fn canonical_sign_is_the_same_displacement() {
+    use motion::wareham_lasenby::convert::canonical_sign;
+    for s in poses::<f64>() {
+        let r = from_pose(&-&s).unwrap();
+        let c = canonical_sign(r);
+        assert!(c.scalar >= 0.0);
+        let scale = 1.0 + s.components().iter().map(|c| c.abs()).fold(0.0, f64::max);
+        assert!(to_pose(&c).is_equivalent(&s, &(1e-12 * scale)).unwrap());
+    }
+}

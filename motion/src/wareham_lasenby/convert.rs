@@ -64,3 +64,21 @@ pub fn to_pose<T: Field>(r: &Motor<T>) -> Pose<T> {
         pose_from_array([rot.scalar, rot.e12.neg_ref(), rot.e13.neg_ref(), rot.e23.neg_ref(), z(), z(), z(), z()]);
     &main * &Pose::translation(&v)
 }
+
+/// The sign the contract prints (`gam pose`'s `cga_rotor`): `R` or `-R` (the same
+/// displacement), whichever has scalar part `> 0`; at scalar part `0`, the one whose first
+/// non-zero coefficient in basis order (`1, e12, e13, e23, e14, ...`) is positive.
+///
+/// ```
+/// use motion::wareham_lasenby::{cga::rotor, convert::canonical_sign};
+/// let half_turn = rotor(&[0.0, 0.0, 1.0], &std::f64::consts::PI).unwrap(); // 0 - e12 (+ rounding)
+/// let mut r = half_turn;
+/// r.scalar = 0.0;
+/// assert_eq!(canonical_sign(r).e12, 1.0);
+/// assert_eq!(canonical_sign(-rotor(&[1.0, 0.0, 0.0], &0.5).unwrap()).scalar, (0.25f64).cos());
+/// ```
+pub fn canonical_sign<T: Real>(r: Motor<T>) -> Motor<T> {
+    let zero = T::zero();
+    let first = r.iter().find(|x| **x != zero).cloned().unwrap_or_else(T::zero);
+    if first < zero { -r } else { r }
+}
