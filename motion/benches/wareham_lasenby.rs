@@ -13,12 +13,13 @@
 //! Run with `cargo bench -p motion --bench wareham_lasenby -- --warm-up-time 1 --measurement-time 3`.
 #![allow(missing_docs)]
 
-use criterion::{Criterion, Throughput, criterion_group};
+mod interleaved;
+
+use criterion::{Criterion, criterion_group};
 use gam_algebras::cga;
 use motion::wareham_lasenby::{Generator, log, to_pose};
 use motion::{Motor, Pose};
 use std::hint::black_box;
-use std::time::Instant;
 
 const N: usize = 64;
 
@@ -56,39 +57,17 @@ const KERNELS: [(&str, Kernel); 5] = [
 ];
 
 fn closed_forms(c: &mut Criterion) {
-    let d = data();
-    let mut g = c.benchmark_group("wareham_lasenby");
-    g.throughput(Throughput::Elements(N as u64));
-    for (name, kernel) in KERNELS {
-        g.bench_function(name, |b| b.iter(|| kernel(black_box(&d))));
-    }
-    g.finish();
+    interleaved::group(c, "wareham_lasenby", &KERNELS, &data(), N);
 }
 
 /// Median per-evaluation times, every kernel back to back in each round, and the median
 /// per-round ratios against the pose exp / log.
 fn interleaved_report(rounds: usize) {
-    let d = data();
-    let mut times: Vec<Vec<f64>> = vec![Vec::with_capacity(rounds); KERNELS.len()];
-    for round in 0..rounds {
-        for j in 0..KERNELS.len() {
-            let i = (j + round) % KERNELS.len();
-            let start = Instant::now();
-            black_box(KERNELS[i].1(black_box(&d)));
-            times[i].push(start.elapsed().as_secs_f64() / N as f64);
-        }
-    }
-    let median = |mut v: Vec<f64>| {
-        v.sort_by(f64::total_cmp);
-        v[v.len() / 2]
-    };
+    let times = interleaved::times(&KERNELS, &data(), rounds, N);
     println!("\ninterleaved ({rounds} rounds, median per evaluation, f64):");
-    for (i, (name, _)) in KERNELS.iter().enumerate() {
-        println!("  {name:<12} {:>9.1} ns", median(times[i].clone()) * 1e9);
-    }
+    interleaved::print_medians(&KERNELS, &times);
     for (what, a, b) in [("wl/exp / pose/exp", 0, 1), ("runtime/exp / wl/exp", 2, 0), ("wl/log / pose/log", 3, 4)] {
-        let ratios: Vec<f64> = times[a].iter().zip(&times[b]).map(|(x, y)| x / y).collect();
-        println!("  {what} = {:.2}", median(ratios));
+        println!("  {what} = {:.2}", interleaved::ratio(&times, a, b));
     }
 }
 
