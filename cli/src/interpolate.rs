@@ -1,7 +1,9 @@
 //! `gam interpolate [--json] SPEC.json`: a motion through key poses by a named method, exactly as
 //! in the Wave 2 contract (shared/cli.md). The methods are `motion::method::Method` (today
-//! `ccm-additive` and `ccm-multiplicative`, main paper Sec. 5.3: `motion::trajectory`); the
-//! other names of the contract are recognised and refused with "not implemented yet".
+//! `ccm-additive` and `ccm-multiplicative`, main paper Sec. 5.3: `motion::trajectory`; and
+//! `wl-linear`, `wl-quadratic`, Wareham–Lasenby Sec. 3: `motion::wareham_lasenby`, built by
+//! `wl_build`); the other names of the contract are recognised and refused with "not
+//! implemented yet".
 //!
 //! Pose objects: position + axis + angle, position + quaternion, matrix, motor, and the
 //! `dual_quaternion` and `hexanion` forms (`crate::pose::extra_form`).
@@ -287,6 +289,9 @@ fn samples(b: &Built, n: usize) -> Result<Vec<TrajectorySample<f64>>, CliError> 
 /// Runs `gam interpolate`.
 pub fn interpolate(path: &str, json: bool) -> Result<String, CliError> {
     let spec = read(path)?.ok_or_else(|| usage(path, "invalid spec: missing field `method`"))?;
+    if let Some(w) = wl_build(path, &spec)? {
+        return wl_output(&w, json);
+    }
     let b = build(path, &spec)?;
     let sampled = if b.samples >= 2 { samples(&b, b.samples)? } else { Vec::new() };
     let name = b.method.name();
@@ -337,6 +342,9 @@ pub fn interpolate(path: &str, json: bool) -> Result<String, CliError> {
 /// The body point is the first of `body_points`.
 pub(crate) fn sampled(path: &str, n: usize) -> Result<Option<Sampled>, CliError> {
     let Some(spec) = read(path)? else { return Ok(None) };
+    if let Some(w) = wl_build(path, &spec)? {
+        return wl_sampled(&w, n).map(Some);
+    }
     let b = build(path, &spec)?;
     let body_point = b.body_points.first().copied().unwrap_or([0.0; 3]);
     let one = Built { body_points: vec![body_point], ..b };
@@ -358,4 +366,149 @@ pub(crate) fn sampled(path: &str, n: usize) -> Result<Option<Sampled>, CliError>
         body_point,
         samples,
     }))
+}
+
+/// A built spec of a Wareham–Lasenby method (`wl-linear`, `wl-quadratic`): a
+/// [`motion::wareham_lasenby::WlMotion`], not a Hermite trajectory.
+struct WlBuilt {
+    method: Method,
+    times: Vec<f64>,
+    poses: Vec<Pose<f64>>,
+    motion: motion::wareham_lasenby::WlMotion<f64>,
+    body_points: Vec<[f64; 3]>,
+    samples: usize,
+}
+
+/// `Ok(None)` unless the spec names a W-L method; the Hermite-only keys are refused.
+fn wl_build(path: &str, spec: &Spec) -> Result<Option<WlBuilt>, CliError> {
+    let Ok(method) = spec.method.parse::<Method>() else { return Ok(None) };
+    if !method.wl() {
+        return Ok(None);
+    }
+    let name = method.name();
+    for (key, given) in [
+        ("velocities", spec.velocities.is_some()),
+        ("shape", spec.shape.is_some()),
+        ("gamma", spec.gamma.is_some()),
+        ("l1", spec.l1.is_some()),
+    ] {
+        if given {
+            return Err(usage(path, format!("`{key}` is not used by `{name}` (it interpolates the key poses only)")));
+        }
+    }
+    let m = spec.poses.len();
+    if m < 2 {
+        return Err(usage(path, format!("at least two poses are needed (got {m})")));
+    }
+    let mut poses = spec.poses.iter().enumerate().map(|(i, v)| pose(path, i, v)).collect::<Result<Vec<_>, _>>()?;
+    motion::trajectory::align_signs(&mut poses);
+    let times = times(path, spec, m)?;
+    if spec.samples == 1 || spec.samples > MAX_SAMPLES {
+        return Err(usage(path, format!("`samples` must be 0 or from 2 to {MAX_SAMPLES} (got {})", spec.samples)));
+    }
+    let motion = match method.wl_motion(&poses, &times) {
+        Some(Ok(m)) => m,
+        Some(Err(motion::wareham_lasenby::WlError::Curve(e))) => return Err(usage(path, format!("{name}: {e}"))),
+        Some(Err(e)) => return Err(CliError::math(format!("{name}: {e}"))),
+        None => return Ok(None),
+    };
+    let body_points = spec.body_points.clone().unwrap_or_else(|| vec![[0.0; 3]]);
+    Ok(Some(WlBuilt { method, times, poses, motion, body_points, samples: spec.samples }))
+}
+
+/// The key poses segment `k` depends on and its degree in `t` (of the generator before exp).
+fn wl_segment(w: &WlBuilt, k: usize) -> (std::ops::RangeInclusive<usize>, usize) {
+    let last = w.poses.len() - 1;
+    match w.method {
+        Method::WlQuadratic if last == 2 => (0..=2, 2),
+        Method::WlQuadratic => {
+            let (lo, hi) = (k.saturating_sub(1), (k + 2).min(last));
+            (lo..=hi, if hi - lo == 3 { 3 } else { 2 })
+        }
+        _ => (k..=k + 1, 1),
+    }
+}
+
+/// A sample of a W-L motion: the pose, the images and velocities of the body points, `Ω`.
+type WlSample = (Pose<f64>, Vec<[f64; 3]>, Vec<[f64; 3]>, [f64; 3]);
+
+/// One sample of a W-L motion ([`WlSample`]).
+fn wl_sample(w: &WlBuilt, t: f64, points: &[[f64; 3]]) -> Result<WlSample, CliError> {
+    let math = |e: &dyn std::fmt::Display| CliError::math(format!("{} at t = {}: {e}", w.method.name(), format_f64(t)));
+    let v = motion::velocity::velocity(&w.motion, &t).map_err(|e| math(&e))?;
+    let twist = v.twist();
+    let mut pos = Vec::with_capacity(points.len());
+    let mut vel = Vec::with_capacity(points.len());
+    for p in points {
+        let q = v.pose.transform_point(p).map_err(|e| math(&e))?;
+        vel.push(twist.point_velocity(&q));
+        pos.push(q);
+    }
+    if !(pos.iter().chain(&vel).all(finite3) && finite3(&twist.angular)) {
+        return Err(CliError::math(format!("the result at t = {} is not finite (overflow)", format_f64(t))));
+    }
+    Ok((v.pose, pos, vel, twist.angular))
+}
+
+fn wl_times(w: &WlBuilt, n: usize) -> Vec<f64> {
+    let (t0, t1) = (w.times[0], w.times[w.times.len() - 1]);
+    (0..n).map(|i| if i + 1 == n { t1 } else { t0 + (t1 - t0) * i as f64 / (n - 1) as f64 }).collect()
+}
+
+/// `gam interpolate` output for a W-L method (the contract's keys; `control_poses` are the
+/// sign-aligned key poses each segment depends on).
+fn wl_output(w: &WlBuilt, json: bool) -> Result<String, CliError> {
+    let name = w.method.name();
+    let segs = w.times.len() - 1;
+    if json {
+        let segments: Vec<Value> = (0..segs)
+            .map(|k| {
+                let (range, degree) = wl_segment(w, k);
+                json!({"t0": w.times[k], "t1": w.times[k + 1], "representation": w.method.representation(),
+                       "degree": degree,
+                       "control_poses": w.poses[range].iter().map(|s| mv_json(&s.as_motor().to_multivector())).collect::<Vec<_>>()})
+            })
+            .collect();
+        let mut out = Vec::new();
+        if w.samples >= 2 {
+            for t in wl_times(w, w.samples) {
+                let (pose, pos, vel, omega) = wl_sample(w, t, &w.body_points)?;
+                let matrix = pose.unitize().and_then(|u| u.to_matrix()).map_err(|e| CliError::math(e.to_string()))?;
+                let v3 = |v: &[f64; 3]| v.map(|x| x + 0.0);
+                out.push(json!({"t": t, "matrix": matrix.map(|r| r.map(|x| x + 0.0)),
+                    "points": pos.iter().map(v3).collect::<Vec<_>>(),
+                    "velocities": vel.iter().map(v3).collect::<Vec<_>>(),
+                    "angular_velocity": v3(&omega)}));
+            }
+        }
+        return Ok(json!({"method": name, "parameters": w.times, "segments": segments, "samples": out}).to_string());
+    }
+    let t = w.times.iter().map(|x| format_f64(*x)).collect::<Vec<_>>().join(", ");
+    let mut lines = vec![format!("{name}: {segs} segments through {} poses at t = [{t}]", w.times.len())];
+    for (i, s) in w.poses.iter().enumerate() {
+        lines.push(format!("  P{i} = {}", mv_human(&s.as_motor().to_multivector())));
+    }
+    if w.samples >= 2 {
+        for t in wl_times(w, w.samples) {
+            let (_, pos, _, _) = wl_sample(w, t, &w.body_points)?;
+            let pts: Vec<String> = pos.iter().map(|p| format!("[{}]", p.map(format_f64).join(", "))).collect();
+            lines.push(format!("t = {}: points {}", format_f64(t), pts.join(" ")));
+        }
+    }
+    Ok(lines.join("\n"))
+}
+
+/// `gam sample` / `gam plot` on a W-L spec.
+fn wl_sampled(w: &WlBuilt, n: usize) -> Result<Sampled, CliError> {
+    let body_point = w.body_points.first().copied().unwrap_or([0.0; 3]);
+    let norm = |v: &[f64; 3]| v.iter().map(|x| x * x).sum::<f64>().sqrt();
+    let samples = wl_times(w, n)
+        .into_iter()
+        .map(|t| {
+            let (pose, pos, vel, omega) = wl_sample(w, t, &[body_point])?;
+            Ok(Sample { t, linear_speed: norm(&vel[0]), angular_speed: norm(&omega), position: pos[0], pose })
+        })
+        .collect::<Result<Vec<_>, CliError>>()?;
+    let degree = (0..w.times.len() - 1).map(|k| wl_segment(w, k).1).max().unwrap_or(1);
+    Ok(Sampled { kind: w.method.kind(), degree, segments: w.times.len() - 1, body_point, samples })
 }

@@ -120,7 +120,7 @@ enum Command {
         #[arg(value_name = "SPEC.json")]
         spec: String,
     },
-    /// A motion through key poses by a named method (ccm-additive, ccm-multiplicative).
+    /// A motion through key poses by a named method (ccm-additive, ccm-multiplicative, wl-linear, wl-quadratic).
     Interpolate {
         /// Print one JSON object: {"method", "parameters", "segments", "samples"}.
         #[arg(long)]

@@ -6,22 +6,8 @@
 
 mod common;
 
-use common::{TempFile, fails, ok};
+use common::{TempFile, fails, ok, rodrigues};
 use serde_json::Value;
-
-/// `R x + t` as a 4x4 matrix from axis, angle, position (Rodrigues).
-fn rodrigues(axis: [f64; 3], phi: f64, t: [f64; 3]) -> [[f64; 4]; 4] {
-    let n = (axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]).sqrt();
-    let [x, y, z] = axis.map(|a| a / n);
-    let (s, c) = phi.sin_cos();
-    let k = 1.0 - c;
-    [
-        [c + x * x * k, x * y * k - z * s, x * z * k + y * s, t[0]],
-        [y * x * k + z * s, c + y * y * k, y * z * k - x * s, t[1]],
-        [z * x * k - y * s, z * y * k + x * s, c + z * z * k, t[2]],
-        [0.0, 0.0, 0.0, 1.0],
-    ]
-}
 
 /// The rotation matrix of a unit quaternion `[w, x, y, z]`, with translation `t`.
 fn quaternion_matrix(q: [f64; 4], t: [f64; 3]) -> [[f64; 4]; 4] {

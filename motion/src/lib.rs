@@ -34,6 +34,7 @@
 //! | [`method`] | the methods of `gam interpolate` by name ([`method::Method`]) |
 //! | [`repr`] | the other papers' pose representations: quaternion, Jüttler's dual quaternions, Angelidis' hexanions, screw, signs |
 //! | [`paper`] | the paper's worked examples (Secs. 4, 5.1, 5.2, 5.3 Jaklič), once |
+//! | [`wareham_lasenby`] | Wareham–Lasenby in `cga`: exp (Thm 3), log (Thm 9), rotor ↔ pose, helix (Sec. 4.1), interpolation (Sec. 3) |
 //!
 //! ```
 //! use motion::Pose;
@@ -71,6 +72,7 @@ pub mod spec;
 mod stable_slerp;
 pub mod trajectory;
 pub mod velocity;
+pub mod wareham_lasenby;
 
 pub use algebra_core;
 pub use bezier::{AdditiveBezier, CurveError, Motion, MultiplicativeBezier};

@@ -30,36 +30,40 @@ pub enum Method {
     CcmAdditive,
     /// Main paper Sec. 5.3: multiplicative cubic Bezier segments (Fig. 2) with C1 joins (eq. 23).
     CcmMultiplicative,
+    /// Wareham–Lasenby Sec. 3.1: piecewise interpolation of the relative rotor
+    /// ([`crate::wareham_lasenby::WlLinear`]).
+    WlLinear,
+    /// Wareham–Lasenby Sec. 3.2: quadratic in the bivectors `ℓ(R_i)`, smoothed for more than
+    /// three poses ([`crate::wareham_lasenby::WlQuadratic`]).
+    WlQuadratic,
 }
 
 /// The methods the contract names that come with later issues (name, issue).
-pub const LATER: [(&str, u32); 7] = [
+pub const LATER: [(&str, u32); 5] = [
     ("juttler-q-motion", 11),
     ("juttler-trt", 11),
     ("juttler-minimal", 11),
     ("juttler-spline", 11),
-    ("wl-linear", 10),
-    ("wl-quadratic", 10),
     ("hexanion-linear", 10),
 ];
 
 /// Why a method name was not accepted.
 ///
 /// ```
-/// let e = "wl-linear".parse::<motion::method::Method>().unwrap_err();
+/// let e = "juttler-trt".parse::<motion::method::Method>().unwrap_err();
 /// assert!(e.to_string().contains("not implemented yet"));
 /// ```
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 pub enum MethodError {
     /// Not a method of the contract.
-    #[error("unknown method `{name}` (implemented: ccm-additive, ccm-multiplicative)")]
+    #[error("unknown method `{name}` (implemented: ccm-additive, ccm-multiplicative, wl-linear, wl-quadratic)")]
     Unknown {
         /// The name given.
         name: String,
     },
     /// A method of the contract that is not implemented yet.
     #[error(
-        "method `{name}` is not implemented yet (it comes with issue {issue}; implemented: ccm-additive, ccm-multiplicative)"
+        "method `{name}` is not implemented yet (it comes with issue {issue}; implemented: ccm-additive, ccm-multiplicative, wl-linear, wl-quadratic)"
     )]
     NotYet {
         /// The name given.
@@ -75,6 +79,8 @@ impl std::str::FromStr for Method {
         match s {
             "ccm-additive" => Ok(Method::CcmAdditive),
             "ccm-multiplicative" => Ok(Method::CcmMultiplicative),
+            "wl-linear" => Ok(Method::WlLinear),
+            "wl-quadratic" => Ok(Method::WlQuadratic),
             _ => Err(match LATER.iter().find(|(n, _)| *n == s) {
                 Some((_, issue)) => MethodError::NotYet { name: s.to_string(), issue: *issue },
                 None => MethodError::Unknown { name: s.to_string() },
@@ -93,10 +99,13 @@ impl Method {
         match self {
             Method::CcmAdditive => "ccm-additive",
             Method::CcmMultiplicative => "ccm-multiplicative",
+            Method::WlLinear => "wl-linear",
+            Method::WlQuadratic => "wl-quadratic",
         }
     }
 
-    /// The segment kind of a `ccm-*` method.
+    /// The segment kind of a `ccm-*` method; the W-L methods (exp of generators) count as
+    /// multiplicative.
     ///
     /// ```
     /// assert_eq!(motion::method::Method::CcmAdditive.kind(), motion::SegmentKind::Additive);
@@ -104,7 +113,7 @@ impl Method {
     pub fn kind(self) -> SegmentKind {
         match self {
             Method::CcmAdditive => SegmentKind::Additive,
-            Method::CcmMultiplicative => SegmentKind::Multiplicative,
+            Method::CcmMultiplicative | Method::WlLinear | Method::WlQuadratic => SegmentKind::Multiplicative,
         }
     }
 
@@ -117,10 +126,13 @@ impl Method {
         match self {
             Method::CcmAdditive => "additive-bezier",
             Method::CcmMultiplicative => "multiplicative-bezier",
+            Method::WlLinear => "wl-relative-rotor",
+            Method::WlQuadratic => "wl-bivector-quadratic",
         }
     }
 
-    /// The motion through `poses` at `times` ([`Trajectory::through`] for the `ccm-*` methods).
+    /// The motion through `poses` at `times` ([`Trajectory::through`] for the `ccm-*` methods;
+    /// the W-L methods are not Hermite trajectories: [`Method::wl_motion`], an input error here).
     ///
     /// ```
     /// use motion::{HermiteShapes, Pose, method::Method, trajectory::Velocities};
@@ -136,6 +148,44 @@ impl Method {
         velocities: &Velocities<T>,
         shapes: &HermiteShapes<T>,
     ) -> Result<Trajectory<T>, TrajectoryError> {
+        if self.wl() {
+            return Err(TrajectoryError::Input(format!(
+                "`{}` is not a Hermite trajectory (Method::wl_motion)",
+                self.name()
+            )));
+        }
         Trajectory::through(poses, times, velocities, self.kind(), shapes)
+    }
+
+    /// True for the Wareham–Lasenby methods (built by [`Method::wl_motion`]).
+    ///
+    /// ```
+    /// assert!(motion::method::Method::WlQuadratic.wl() && !motion::method::Method::CcmAdditive.wl());
+    /// ```
+    pub fn wl(self) -> bool {
+        matches!(self, Method::WlLinear | Method::WlQuadratic)
+    }
+
+    /// The Wareham–Lasenby motion through `poses` at `times` (`None` for the other methods).
+    ///
+    /// ```
+    /// use motion::{Motion, Pose, method::Method};
+    /// let poses = [Pose::<f64>::identity(), Pose::translation(&[1.0, 0.0, 0.0])];
+    /// let m = Method::WlLinear.wl_motion(&poses, &[0.0, 1.0]).unwrap()?;
+    /// assert!(m.pose(&1.0)?.is_equivalent(&poses[1], &1e-15)?);
+    /// assert!(Method::WlQuadratic.wl_motion(&poses, &[0.0, 1.0]).unwrap().is_err()); // needs 3 poses
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn wl_motion<T: Real>(
+        self,
+        poses: &[Pose<T>],
+        times: &[T],
+    ) -> Option<Result<crate::wareham_lasenby::WlMotion<T>, crate::wareham_lasenby::WlError>> {
+        use crate::wareham_lasenby::{WlLinear, WlMotion, WlQuadratic};
+        match self {
+            Method::WlLinear => Some(WlLinear::new(poses, times).map(WlMotion::Linear)),
+            Method::WlQuadratic => Some(WlQuadratic::new(poses, times).map(WlMotion::Quadratic)),
+            _ => None,
+        }
     }
 }
