@@ -1,8 +1,9 @@
 //! `gam interpolate [--json] SPEC.json`: a motion through key poses by a named method, exactly as
 //! in the Wave 2 contract (shared/cli.md). The methods are `motion::method::Method` (today
 //! `ccm-additive` and `ccm-multiplicative`, main paper Sec. 5.3: `motion::trajectory`; and
-//! `wl-linear`, `wl-quadratic`, Wareham–Lasenby Sec. 3: `motion::wareham_lasenby`, built by
-//! `wl_build`); the other names of the contract are recognised and refused with "not
+//! `wl-linear`, `wl-quadratic`, Wareham–Lasenby Sec. 3: `motion::wareham_lasenby`, and
+//! `hexanion-linear`, Angelidis (56): `motion::repr::hexanion::blend::HexanionLinear`, the
+//! methods through the key poses only, built by `wl_build`); the other names of the contract are recognised and refused with "not
 //! implemented yet".
 //!
 //! Pose objects: position + axis + angle, position + quaternion, matrix, motor, and the
@@ -368,21 +369,21 @@ pub(crate) fn sampled(path: &str, n: usize) -> Result<Option<Sampled>, CliError>
     }))
 }
 
-/// A built spec of a Wareham–Lasenby method (`wl-linear`, `wl-quadratic`): a
-/// [`motion::wareham_lasenby::WlMotion`], not a Hermite trajectory.
+/// A built spec of a method through the key poses only (`wl-linear`, `wl-quadratic`,
+/// `hexanion-linear`): a [`motion::method::KeyMotion`], not a Hermite trajectory.
 struct WlBuilt {
     method: Method,
     times: Vec<f64>,
     poses: Vec<Pose<f64>>,
-    motion: motion::wareham_lasenby::WlMotion<f64>,
+    motion: motion::method::KeyMotion<f64>,
     body_points: Vec<[f64; 3]>,
     samples: usize,
 }
 
-/// `Ok(None)` unless the spec names a W-L method; the Hermite-only keys are refused.
+/// `Ok(None)` unless the spec names a W-L or hexanion method; the Hermite-only keys are refused.
 fn wl_build(path: &str, spec: &Spec) -> Result<Option<WlBuilt>, CliError> {
     let Ok(method) = spec.method.parse::<Method>() else { return Ok(None) };
-    if !method.wl() {
+    if !method.through_keys() {
         return Ok(None);
     }
     let name = method.name();
@@ -406,9 +407,9 @@ fn wl_build(path: &str, spec: &Spec) -> Result<Option<WlBuilt>, CliError> {
     if spec.samples == 1 || spec.samples > MAX_SAMPLES {
         return Err(usage(path, format!("`samples` must be 0 or from 2 to {MAX_SAMPLES} (got {})", spec.samples)));
     }
-    let motion = match method.wl_motion(&poses, &times) {
+    let motion = match method.key_motion(&poses, &times) {
         Some(Ok(m)) => m,
-        Some(Err(motion::wareham_lasenby::WlError::Curve(e))) => return Err(usage(path, format!("{name}: {e}"))),
+        Some(Err(e)) if e.is_input() => return Err(usage(path, format!("{name}: {e}"))),
         Some(Err(e)) => return Err(CliError::math(format!("{name}: {e}"))),
         None => return Ok(None),
     };
@@ -464,9 +465,14 @@ fn wl_output(w: &WlBuilt, json: bool) -> Result<String, CliError> {
         let segments: Vec<Value> = (0..segs)
             .map(|k| {
                 let (range, degree) = wl_segment(w, k);
-                json!({"t0": w.times[k], "t1": w.times[k + 1], "representation": w.method.representation(),
+                let mut seg = json!({"t0": w.times[k], "t1": w.times[k + 1], "representation": w.method.representation(),
                        "degree": degree,
-                       "control_poses": w.poses[range].iter().map(|s| mv_json(&s.as_motor().to_multivector())).collect::<Vec<_>>()})
+                       "control_poses": w.poses[range].iter().map(|s| mv_json(&s.as_motor().to_multivector())).collect::<Vec<_>>()});
+                if let motion::method::KeyMotion::Hexanion(h) = &w.motion {
+                    let hex = |x: &motion::repr::hexanion::Hexanion<f64>| json!({"omega": x.omega.map(|c| c + 0.0), "m": x.m.map(|c| c + 0.0)});
+                    seg["hexanions"] = json!([hex(&h.hexanions()[k]), hex(&h.hexanions()[k + 1])]);
+                }
+                seg
             })
             .collect();
         let mut out = Vec::new();
