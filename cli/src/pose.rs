@@ -1,7 +1,8 @@
 //! `gam pose [--json] POSE_JSON`: one pose in every representation of the Wave 2 contract
 //! (shared/cli.md): matrix, position + quaternion, axis + angle, motor, dual quaternion
-//! (Jüttler's eq. (12) action), hexanion (Angelidis, principal logarithm) and screw. The
-//! `cga_rotor` key (Wareham–Lasenby) comes with the `cga` conversions of issue 10's second part.
+//! (Jüttler's eq. (12) action), hexanion (Angelidis, principal logarithm), screw and the
+//! Wareham–Lasenby `cga_rotor` (`motion::wareham_lasenby::from_pose`, signed by
+//! `motion::wareham_lasenby::convert::canonical_sign`).
 //!
 //! Also the two pose input forms of issue 10, `dual_quaternion` and `hexanion`, for the shared
 //! pose parser of `gam interpolate` ([`extra_form`]).
@@ -15,6 +16,7 @@ use motion::repr::hexanion::Hexanion;
 use motion::repr::quaternion::to_quaternion_position;
 use motion::repr::screw::Screw;
 use motion::repr::sign::canonical_pose;
+use motion::wareham_lasenby::{convert::canonical_sign, from_pose as cga_rotor};
 use motion::{Motor, Pose};
 use serde_json::{Map, Value, json};
 
@@ -86,9 +88,11 @@ fn representations(s: &Pose<f64>) -> Result<Value, CliError> {
     }
     let h = Hexanion::from_pose(&u).map_err(|e| math(&e))?;
     let sc = Screw::of_hexanion(&h);
+    let rotor = canonical_sign(cga_rotor(&u).map_err(|e| math(&e))?);
     let all = [matrix.iter().flatten().copied().collect(), position.to_vec(), d.coeffs().to_vec(), h.omega.to_vec()]
         .into_iter()
         .chain([h.m.to_vec(), sc.point.to_vec(), vec![sc.translation, sc.pitch.unwrap_or(0.0), angle]])
+        .chain([rotor.iter().copied().collect()])
         .collect::<Vec<Vec<f64>>>();
     if !all.iter().flatten().all(|x| x.is_finite()) {
         return Err(CliError::math("the pose's representations overflow (a translation near the largest f64)"));
@@ -104,6 +108,7 @@ fn representations(s: &Pose<f64>) -> Result<Value, CliError> {
         "hexanion": {"omega": z(h.omega), "m": z(h.m)},
         "screw": {"axis": z(sc.axis), "angle": sc.angle, "translation": sc.translation + 0.0,
                   "point": z(sc.point), "pitch": sc.pitch.map(|p| p + 0.0)},
+        "cga_rotor": mv_json(&rotor.to_multivector()),
     }))
 }
 
@@ -161,6 +166,16 @@ pub fn pose(arg: &str, json: bool) -> Result<String, CliError> {
             f(&sc["translation"]),
             sub(&sc["point"]),
             f(&sc["pitch"])
+        ),
+        format!(
+            "cga_rotor: {}",
+            mv_human(
+                &canonical_sign(
+                    cga_rotor(&s.unitize().map_err(|e| CliError::math(e.to_string()))?)
+                        .map_err(|e| CliError::math(e.to_string()))?
+                )
+                .to_multivector()
+            )
         ),
     ]
     .join("\n"))
