@@ -5,7 +5,7 @@
 
 mod common;
 
-use common::{TempFile, fails, ok, rodrigues};
+use common::{TempFile, assert_velocities_match_differences, fails, ok, rodrigues};
 use serde_json::Value;
 
 const KEYS: [([f64; 3], f64, [f64; 3]); 4] = [
@@ -66,22 +66,7 @@ fn velocities_match_differences_of_points() {
         let n = 3001; // step 1/3000
         let v = run_json(&format!("{method}-fd"), &spec(method, n, ""));
         let samples = v["samples"].as_array().unwrap();
-        let h = 1.0 / (n - 1) as f64;
-        for k in [200, 700, 1300, 2600] {
-            let p = |j: usize| -> Vec<[f64; 3]> { serde_json::from_value(samples[j]["points"].clone()).unwrap() };
-            let vel: Vec<[f64; 3]> = serde_json::from_value(samples[k]["velocities"].clone()).unwrap();
-            let (a, b) = (p(k + 1), p(k - 1));
-            for (q, v) in vel.iter().enumerate() {
-                for r in 0..3 {
-                    let fd = (a[q][r] - b[q][r]) / (2.0 * h);
-                    assert!(
-                        (fd - v[r]).abs() < 1e-4 * (1.0 + v[r].abs()),
-                        "{method} sample {k} point {q}: {fd} vs {}",
-                        v[r]
-                    );
-                }
-            }
-        }
+        assert_velocities_match_differences(method, samples, 1.0 / (n - 1) as f64, &[200, 700, 1300, 2600]);
     }
 }
 
