@@ -1,10 +1,13 @@
 //! `gam interpolate [--json] SPEC.json`: a motion through key poses by a named method, exactly as
 //! in the Wave 2 contract (shared/cli.md). The methods are `motion::method::Method` (today
-//! `ccm-additive` and `ccm-multiplicative`, main paper Sec. 5.3: `motion::trajectory`); the
-//! other names of the contract are recognised and refused with "not implemented yet".
+//! `ccm-additive` and `ccm-multiplicative`, main paper Sec. 5.3: `motion::trajectory`; and
+//! `wl-linear`, `wl-quadratic`, Wareham–Lasenby Sec. 3: `motion::wareham_lasenby`, and
+//! `hexanion-linear`, Angelidis (56): `motion::repr::hexanion::blend::HexanionLinear`, the
+//! methods through the key poses only, built by `wl_build`); the other names of the contract are recognised and refused with "not
+//! implemented yet".
 //!
-//! Pose objects: position + axis + angle, position + quaternion, matrix, motor. The
-//! `dual_quaternion` and `hexanion` forms come with issue 10 and are refused (exit 2).
+//! Pose objects: position + axis + angle, position + quaternion, matrix, motor, and the
+//! `dual_quaternion` and `hexanion` forms (`crate::pose::extra_form`).
 //! Parameters: `uniform` (default) or an explicit increasing list; the Jüttler rules of eq. (15)
 //! come with issue 11 and are refused (exit 2). Velocities, when left out, are estimated
 //! (docs/cli.md): zero at the ends, the weighted mean of the neighbouring screw twists inside.
@@ -82,17 +85,18 @@ fn array3(path: &str, where_: &str, v: &Value) -> Result<[f64; 3], CliError> {
     serde_json::from_value(v.clone()).map_err(|_| usage(path, format!("`{where_}` must be a list of 3 numbers")))
 }
 
-/// One pose object (the contract's forms that exist today).
+/// One pose object of the spec.
 fn pose(path: &str, i: usize, v: &Value) -> Result<Pose<f64>, CliError> {
-    let at = |key: &str| format!("poses[{i}].{key}");
-    let obj = v.as_object().ok_or_else(|| usage(path, format!("`poses[{i}]` must be a pose object")))?;
-    for later in ["dual_quaternion", "hexanion"] {
-        if obj.contains_key(later) {
-            return Err(usage(
-                path,
-                format!("`poses[{i}]`: the `{later}` pose form is not implemented yet (it comes with issue 10)"),
-            ));
-        }
+    pose_in(path, &format!("poses[{i}]"), v)
+}
+
+/// One pose object (every form of the contract), named `name` in messages (also `gam pose`).
+pub(crate) fn pose_in(path: &str, name: &str, v: &Value) -> Result<Pose<f64>, CliError> {
+    let i = name;
+    let at = |key: &str| format!("{i}.{key}");
+    let obj = v.as_object().ok_or_else(|| usage(path, format!("`{i}` must be a pose object")))?;
+    if let Some(parsed) = crate::pose::extra_form(obj, name) {
+        return parsed.map_err(|e| usage(path, e));
     }
     let allowed: &[&str] = if obj.contains_key("motor") {
         &["motor"]
@@ -104,9 +108,9 @@ fn pose(path: &str, i: usize, v: &Value) -> Result<Pose<f64>, CliError> {
         &["position", "axis", "angle"]
     };
     if let Some(k) = obj.keys().find(|k| !allowed.contains(&k.as_str())) {
-        return Err(usage(path, format!("`poses[{i}]`: unexpected key `{k}` (this pose form has {allowed:?})")));
+        return Err(usage(path, format!("`{i}`: unexpected key `{k}` (this pose form has {allowed:?})")));
     }
-    let math = |e: motion::MotionError| usage(path, format!("`poses[{i}]`: {e}"));
+    let math = |e: motion::MotionError| usage(path, format!("`{i}`: {e}"));
     if let Some(m) = obj.get("motor") {
         let mv = m.as_object().ok_or_else(|| usage(path, format!("`{}` must be a multivector object", at("motor"))))?;
         let mut c = [0.0; 8];
@@ -152,7 +156,7 @@ fn pose(path: &str, i: usize, v: &Value) -> Result<Pose<f64>, CliError> {
             Pose::from_axis_angle_translation(&axis, &angle, &position)
                 .map_err(|e| usage(path, format!("`{}`: {e}", at("axis"))))
         }
-        _ => Err(usage(path, format!("`poses[{i}]`: `axis` and `angle` go together"))),
+        _ => Err(usage(path, format!("`{i}`: `axis` and `angle` go together"))),
     }
 }
 
@@ -328,9 +332,13 @@ fn stream_json(b: &Built) -> Result<String, CliError> {
         .iter()
         .enumerate()
         .map(|(k, seg)| {
-            json!({"t0": b.times[k], "t1": b.times[k + 1], "representation": b.method.representation(),
+            let mut seg_json = json!({"t0": b.times[k], "t1": b.times[k + 1], "representation": b.method.representation(),
                    "degree": seg.degree(),
-                   "control_poses": seg.control_poses.iter().map(|s| mv_json(&s.to_multivector())).collect::<Vec<_>>()})
+                   "control_poses": seg.control_poses.iter().map(|s| mv_json(&s.to_multivector())).collect::<Vec<_>>()});
+            if b.method == Method::CcmAdditive {
+                seg_json["dual_quaternions"] = json!(crate::pose::dual_quaternions(&seg.control_poses));
+            }
+            seg_json
         })
         .collect();
     let head = json!({"method": b.method.name(), "parameters": b.times, "segments": segs}).to_string();
@@ -351,6 +359,9 @@ fn stream_json(b: &Built) -> Result<String, CliError> {
 /// Runs `gam interpolate`.
 pub fn interpolate(path: &str, json: bool) -> Result<String, CliError> {
     let spec = read(path)?.ok_or_else(|| usage(path, "invalid spec: missing field `method`"))?;
+    if let Some(w) = wl_build(path, &spec)? {
+        return wl_output(&w, json);
+    }
     let b = build(path, &spec)?;
     if json {
         return stream_json(&b);
@@ -378,6 +389,9 @@ pub fn interpolate(path: &str, json: bool) -> Result<String, CliError> {
 /// The body point is the first of `body_points`; sample `i` is at `t_0 + (t_m - t_0) i/(n-1)`.
 pub(crate) fn sampler(path: &str, n: usize) -> Result<Option<Sampler>, CliError> {
     let Some(spec) = read(path)? else { return Ok(None) };
+    if let Some(w) = wl_build(path, &spec)? {
+        return wl_sampled(w, n).map(Some);
+    }
     let b = build(path, &spec)?;
     let body_point = b.body_points.first().copied().unwrap_or([0.0; 3]);
     let one = Built { body_points: vec![body_point], ..b };
@@ -395,4 +409,168 @@ pub(crate) fn sampler(path: &str, n: usize) -> Result<Option<Sampler>, CliError>
         })
     };
     Ok(Some(Sampler { kind, degree: 3, segments, body_point, n, at: Box::new(at) }))
+}
+
+/// A built spec of a method through the key poses only (`wl-linear`, `wl-quadratic`,
+/// `hexanion-linear`): a [`motion::method::KeyMotion`], not a Hermite trajectory.
+struct WlBuilt {
+    method: Method,
+    times: Vec<f64>,
+    poses: Vec<Pose<f64>>,
+    motion: motion::method::KeyMotion<f64>,
+    body_points: Vec<[f64; 3]>,
+    samples: usize,
+}
+
+/// `Ok(None)` unless the spec names a W-L or hexanion method; the Hermite-only keys are refused.
+fn wl_build(path: &str, spec: &Spec) -> Result<Option<WlBuilt>, CliError> {
+    let Ok(method) = spec.method.parse::<Method>() else { return Ok(None) };
+    if !method.through_keys() {
+        return Ok(None);
+    }
+    let name = method.name();
+    for (key, given) in [
+        ("velocities", spec.velocities.is_some()),
+        ("shape", spec.shape.is_some()),
+        ("gamma", spec.gamma.is_some()),
+        ("l1", spec.l1.is_some()),
+    ] {
+        if given {
+            return Err(usage(path, format!("`{key}` is not used by `{name}` (it interpolates the key poses only)")));
+        }
+    }
+    let m = spec.poses.len();
+    if m < 2 {
+        return Err(usage(path, format!("at least two poses are needed (got {m})")));
+    }
+    let mut poses = spec.poses.iter().enumerate().map(|(i, v)| pose(path, i, v)).collect::<Result<Vec<_>, _>>()?;
+    motion::trajectory::align_signs(&mut poses);
+    let times = times(path, spec, m)?;
+    if spec.samples == 1 || spec.samples > MAX_SAMPLES {
+        return Err(usage(path, format!("`samples` must be 0 or from 2 to {MAX_SAMPLES} (got {})", spec.samples)));
+    }
+    let motion = match method.key_motion(&poses, &times) {
+        Some(Ok(m)) => m,
+        Some(Err(e)) if e.is_input() => return Err(usage(path, format!("{name}: {e}"))),
+        Some(Err(e)) => return Err(CliError::math(format!("{name}: {e}"))),
+        None => return Ok(None),
+    };
+    let body_points = spec.body_points.clone().unwrap_or_else(|| vec![[0.0; 3]]);
+    Ok(Some(WlBuilt { method, times, poses, motion, body_points, samples: spec.samples }))
+}
+
+/// The key poses segment `k` depends on and its degree in `t` (of the generator before exp).
+fn wl_segment(w: &WlBuilt, k: usize) -> (std::ops::RangeInclusive<usize>, usize) {
+    let last = w.poses.len() - 1;
+    match w.method {
+        Method::WlQuadratic if last == 2 => (0..=2, 2),
+        Method::WlQuadratic => {
+            let (lo, hi) = (k.saturating_sub(1), (k + 2).min(last));
+            (lo..=hi, if hi - lo == 3 { 3 } else { 2 })
+        }
+        _ => (k..=k + 1, 1),
+    }
+}
+
+/// A sample of a W-L motion: the pose, the images and velocities of the body points, `Ω`.
+type WlSample = (Pose<f64>, Vec<[f64; 3]>, Vec<[f64; 3]>, [f64; 3]);
+
+/// One sample of a W-L motion ([`WlSample`]).
+fn wl_sample(w: &WlBuilt, t: f64, points: &[[f64; 3]]) -> Result<WlSample, CliError> {
+    let math = |e: &dyn std::fmt::Display| CliError::math(format!("{} at t = {}: {e}", w.method.name(), format_f64(t)));
+    let v = motion::velocity::velocity(&w.motion, &t).map_err(|e| math(&e))?;
+    let twist = v.twist();
+    let mut pos = Vec::with_capacity(points.len());
+    let mut vel = Vec::with_capacity(points.len());
+    for p in points {
+        let q = v.pose.transform_point(p).map_err(|e| math(&e))?;
+        vel.push(twist.point_velocity(&q).to_array());
+        pos.push(q);
+    }
+    let angular = twist.angular.to_array();
+    if !(pos.iter().chain(&vel).all(finite3) && finite3(&angular)) {
+        return Err(CliError::math(format!("the result at t = {} is not finite (overflow)", format_f64(t))));
+    }
+    Ok((v.pose, pos, vel, angular))
+}
+
+fn wl_times(w: &WlBuilt, n: usize) -> Vec<f64> {
+    let (t0, t1) = (w.times[0], w.times[w.times.len() - 1]);
+    (0..n).map(|i| if i + 1 == n { t1 } else { t0 + (t1 - t0) * i as f64 / (n - 1) as f64 }).collect()
+}
+
+/// `gam interpolate` output for a W-L method (the contract's keys; `control_poses` are the
+/// sign-aligned key poses each segment depends on).
+fn wl_output(w: &WlBuilt, json: bool) -> Result<String, CliError> {
+    let name = w.method.name();
+    let segs = w.times.len() - 1;
+    if json {
+        let segments: Vec<Value> = (0..segs)
+            .map(|k| {
+                let (range, degree) = wl_segment(w, k);
+                let mut seg = json!({"t0": w.times[k], "t1": w.times[k + 1], "representation": w.method.representation(),
+                       "degree": degree,
+                       "control_poses": w.poses[range].iter().map(|s| mv_json(&s.to_multivector())).collect::<Vec<_>>()});
+                if let motion::method::KeyMotion::Hexanion(h) = &w.motion {
+                    let hex = |x: &motion::repr::hexanion::Hexanion<f64>| json!({"omega": x.omega.map(|c| c + 0.0), "m": x.m.map(|c| c + 0.0)});
+                    seg["hexanions"] = json!([hex(&h.hexanions()[k]), hex(&h.hexanions()[k + 1])]);
+                }
+                seg
+            })
+            .collect();
+        let mut out = Vec::new();
+        if w.samples >= 2 {
+            wl_check_work(w, w.samples, w.body_points.len())?;
+            for t in wl_times(w, w.samples) {
+                let (pose, pos, vel, omega) = wl_sample(w, t, &w.body_points)?;
+                let matrix = pose.unitize().and_then(|u| u.to_matrix()).map_err(|e| CliError::math(e.to_string()))?;
+                let v3 = |v: &[f64; 3]| v.map(|x| x + 0.0);
+                out.push(json!({"t": t, "matrix": matrix.map(|r| r.map(|x| x + 0.0)),
+                    "points": pos.iter().map(v3).collect::<Vec<_>>(),
+                    "velocities": vel.iter().map(v3).collect::<Vec<_>>(),
+                    "angular_velocity": v3(&omega)}));
+            }
+        }
+        return Ok(json!({"method": name, "parameters": w.times, "segments": segments, "samples": out}).to_string());
+    }
+    let t = w.times.iter().map(|x| format_f64(*x)).collect::<Vec<_>>().join(", ");
+    let mut lines = vec![format!("{name}: {segs} segments through {} poses at t = [{t}]", w.times.len())];
+    for (i, s) in w.poses.iter().enumerate() {
+        lines.push(format!("  P{i} = {}", mv_human(&s.to_multivector())));
+    }
+    if w.samples >= 2 {
+        wl_check_work(w, w.samples, w.body_points.len())?;
+        for t in wl_times(w, w.samples) {
+            let (_, pos, _, _) = wl_sample(w, t, &w.body_points)?;
+            let pts: Vec<String> = pos.iter().map(|p| format!("[{}]", p.map(format_f64).join(", "))).collect();
+            lines.push(format!("t = {}: points {}", format_f64(t), pts.join(" ")));
+        }
+    }
+    Ok(lines.join("\n"))
+}
+
+/// The largest segment degree of a W-L / hexanion spec and the budget check of sampling
+/// `points` body points at `n` values.
+fn wl_check_work(w: &WlBuilt, n: usize, points: usize) -> Result<usize, CliError> {
+    let degree = (0..w.times.len() - 1).map(|k| wl_segment(w, k).1).max().unwrap_or(1);
+    crate::budget::check(
+        &format!("sampling {points} body points of degree-{degree} segments at {n} values"),
+        crate::budget::sampling_work(degree, n) * points.max(1) as f64,
+    )?;
+    Ok(degree)
+}
+
+/// `gam sample` / `gam plot` on a W-L or hexanion spec.
+fn wl_sampled(w: WlBuilt, n: usize) -> Result<Sampler, CliError> {
+    let body_point = w.body_points.first().copied().unwrap_or([0.0; 3]);
+    let degree = wl_check_work(&w, n, 1)?;
+    let norm = |v: &[f64; 3]| v.iter().map(|x| x * x).sum::<f64>().sqrt();
+    let (kind, segments) = (w.method.kind(), w.times.len() - 1);
+    let times = wl_times(&w, n);
+    let at = move |i: usize| {
+        let t = times[i];
+        let (pose, pos, vel, omega) = wl_sample(&w, t, &[body_point])?;
+        checked(Sample { t, linear_speed: norm(&vel[0]), angular_speed: norm(&omega), position: pos[0], pose })
+    };
+    Ok(Sampler { kind, degree, segments, body_point, n, at: Box::new(at) })
 }

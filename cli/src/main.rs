@@ -14,6 +14,7 @@ mod hermite;
 mod interpolate;
 mod output;
 mod plot;
+mod pose;
 mod prove;
 mod sample;
 mod scalar;
@@ -124,7 +125,7 @@ enum Command {
         #[arg(value_name = "SPEC.json")]
         spec: String,
     },
-    /// A motion through key poses by a named method (ccm-additive, ccm-multiplicative).
+    /// A motion through key poses by a named method (ccm-additive, ccm-multiplicative, wl-linear, wl-quadratic).
     Interpolate {
         /// Print one JSON object: {"method", "parameters", "segments", "samples"}.
         #[arg(long)]
@@ -133,6 +134,16 @@ enum Command {
         /// body_points (see docs/cli.md).
         #[arg(value_name = "SPEC.json")]
         spec: String,
+    },
+    /// One pose in every representation: matrix, quaternion, axis-angle, motor, dual quaternion,
+    /// hexanion, screw.
+    Pose {
+        /// Print one JSON object with the keys of docs/cli.md.
+        #[arg(long)]
+        json: bool,
+        /// A pose object (JSON, any form of `gam interpolate`'s poses), or @FILE.
+        #[arg(value_name = "POSE_JSON", allow_hyphen_values = true)]
+        pose: String,
     },
     /// Sample a `gam hermite` segment: pose, body point position, linear and angular speed.
     Sample {
@@ -209,6 +220,7 @@ fn run(command: Command) -> Result<(String, Option<CliError>), CliError> {
         }
         Command::Hermite { json, spec } => hermite::hermite(&spec, json),
         Command::Interpolate { json, spec } => interpolate::interpolate(&spec, json),
+        Command::Pose { json, pose } => pose::pose(&pose, json),
         Command::Sample { samples, json, spec } => sample::sample(&spec, samples, json),
         Command::Plot { out, samples, spec } => plot::plot(&spec, &out, samples),
         Command::Prove { algebra, basis, assume, timeout, json, claim } => {
@@ -230,7 +242,7 @@ fn clap_failure(e: clap::Error) -> ExitCode {
     let text = e.render().to_string();
     let line = match e.kind() {
         ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand | ErrorKind::MissingSubcommand => {
-            "error: a subcommand is required: algebras, eval, table, codegen, hermite, interpolate, sample, plot, prove or verify (see gam --help)"
+            "error: a subcommand is required: algebras, eval, table, codegen, hermite, interpolate, pose, sample, plot, prove or verify (see gam --help)"
                 .to_string()
         }
         _ => first_error_line(&text),

@@ -16,11 +16,13 @@
 //! Run with `cargo bench -p motion --bench motions`.
 #![allow(missing_docs)]
 
-use criterion::{Criterion, Throughput, criterion_group};
+mod interleaved;
+
+use criterion::{Criterion, criterion_group};
 use motion::velocity::velocity_indicatrix;
 use motion::{AdditiveBezier, Motion, MultiplicativeBezier, Pose};
 use std::hint::black_box;
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 /// Parameter values per iteration.
 const N: usize = 64;
@@ -68,45 +70,20 @@ const KERNELS: [(&str, Kernel); 4] = [
 ];
 
 fn cubic_motions(c: &mut Criterion) {
-    let d = data();
-    let mut g = c.benchmark_group("cubic_motion");
-    g.throughput(Throughput::Elements(N as u64));
-    for (name, kernel) in KERNELS {
-        g.bench_function(name, |b| b.iter(|| kernel(black_box(&d))));
-    }
-    g.finish();
-}
-
-fn median(mut v: Vec<f64>) -> f64 {
-    v.sort_by(f64::total_cmp);
-    v[v.len() / 2]
+    interleaved::group(c, "cubic_motion", &KERNELS, &data(), N);
 }
 
 /// Times every kernel back to back in each round and reports the median time per evaluation and
 /// the median per-round ratios multiplicative / additive.
 fn interleaved_report(rounds: usize) {
-    let d = data();
-    let mut times: Vec<Vec<f64>> = vec![Vec::with_capacity(rounds); KERNELS.len()];
-    for round in 0..rounds {
-        for j in 0..KERNELS.len() {
-            let i = (j + round) % KERNELS.len();
-            let start = Instant::now();
-            black_box(KERNELS[i].1(black_box(&d)));
-            times[i].push(start.elapsed().as_secs_f64() / N as f64);
-        }
-    }
+    let times = interleaved::times(&KERNELS, &data(), rounds, N);
     println!("\ninterleaved ({rounds} rounds, median per evaluation, f64, cubic, {N} parameter values):");
-    for (i, (name, _)) in KERNELS.iter().enumerate() {
-        println!("  {name:<22} {:>9.1} ns", median(times[i].clone()) * 1e9);
-    }
+    interleaved::print_medians(&KERNELS, &times);
     for (what, a, m) in [("pose", 0, 1), ("psi", 2, 3)] {
-        let ratios: Vec<f64> = times[m].iter().zip(&times[a]).map(|(x, y)| x / y).collect();
-        println!("  {what}: multiplicative / additive = {:.2}", median(ratios));
+        println!("  {what}: multiplicative / additive = {:.2}", interleaved::ratio(&times, m, a));
     }
-    let ratios: Vec<f64> = times[2].iter().zip(&times[0]).map(|(x, y)| x / y).collect();
-    println!("  additive: psi / pose = {:.2}", median(ratios));
-    let ratios: Vec<f64> = times[3].iter().zip(&times[1]).map(|(x, y)| x / y).collect();
-    println!("  multiplicative: psi / pose = {:.2}", median(ratios));
+    println!("  additive: psi / pose = {:.2}", interleaved::ratio(&times, 2, 0));
+    println!("  multiplicative: psi / pose = {:.2}", interleaved::ratio(&times, 3, 1));
 }
 
 fn config() -> Criterion {

@@ -35,7 +35,9 @@
 //! | [`trajectory`] | [`trajectory::Trajectory`]: a C1 motion through key poses at times in one call, velocity estimate, sampler |
 //! | [`jacobian`] | [`jacobian::JetN`] (multi-directional duals), derivatives of a sampled body point and twist w.r.t. every key pose and time |
 //! | [`method`] | the methods of `gam interpolate` by name ([`method::Method`]) |
+//! | [`repr`] | the other papers' pose representations: quaternion, Jüttler's dual quaternions, Angelidis' hexanions, screw, signs |
 //! | [`paper`] | the paper's worked examples (Secs. 4, 5.1, 5.2, 5.3 Jaklič), once |
+//! | [`wareham_lasenby`] | Wareham–Lasenby in `cga`: exp (Thm 3), log (Thm 9), rotor ↔ pose, helix (Sec. 4.1), interpolation (Sec. 3) |
 //!
 //! ```
 //! use motion::Pose;
@@ -68,6 +70,7 @@ pub mod paper;
 pub mod piecewise;
 pub mod pose;
 pub mod pseudoscalar;
+pub mod repr;
 mod scaled;
 mod series;
 pub mod spec;
@@ -75,6 +78,7 @@ mod stable_slerp;
 pub mod trajectory;
 pub mod vec3;
 pub mod velocity;
+pub mod wareham_lasenby;
 
 pub use algebra_core;
 pub use bezier::{AdditiveBezier, Bezier, CurveError, MapScalar, Motion, MultiplicativeBezier};

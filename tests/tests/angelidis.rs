@@ -7,6 +7,8 @@ use gam_verify::Paper;
 
 const IDS: &[&str] = &[
     "angelidis/eq-14",
+    "angelidis/eq-22",
+    "angelidis/eq-27",
     "angelidis/eq-29",
     "angelidis/eq-30",
     "angelidis/eq-35",
@@ -14,6 +16,8 @@ const IDS: &[&str] = &[
     "angelidis/eq-37",
     "angelidis/eq-38",
     "angelidis/eq-39",
+    "angelidis/eq-41",
+    "angelidis/sec-6",
     // symbolic-under-hypotheses (tests in tests/tests/under_hypotheses.rs)
     "angelidis/eq-14-symbolic",
 ];
@@ -68,4 +72,24 @@ fn eq_38() {
 #[test]
 fn eq_39() {
     assert_holds("angelidis/eq-39");
+}
+
+#[test]
+fn eq_22() {
+    assert_holds("angelidis/eq-22");
+}
+
+#[test]
+fn eq_27() {
+    assert_holds("angelidis/eq-27");
+}
+
+#[test]
+fn eq_41() {
+    has_counterexample(&assert_holds("angelidis/eq-41"), "|ω| > π");
+}
+
+#[test]
+fn sec_6() {
+    assert_holds("angelidis/sec-6");
 }

@@ -26,6 +26,8 @@
 //! * `angelidis/eq-37`, `-38`, `-39`: the cube, Rot via the cube, Rot² = M²: symbolic
 //!   polynomial identities (denominators |ω|² cleared), including Rot + Trs = <ω, m> of (32)-(33).
 
+mod library;
+
 use crate::{Checker, Method, Paper, Statement};
 use algebra_core::{Field, MpFloat, Poly, PrecisionGuard, Real, Ring};
 use motion::{Even, Pose};
@@ -43,6 +45,24 @@ pub const STATEMENTS: &[Statement] = &[
         method: Method::MpFloat,
         hypotheses: "(66) needs ω != 0; the second case of (14) needs ω·m = 0 (counterexample recorded)",
         check: eq_14,
+    },
+    Statement {
+        id: "angelidis/eq-22",
+        paper: Paper::Angelidis,
+        label: "Eq. (22)",
+        statement: "the inverse of <ω, m> is <-ω, -m>: <-ω, -m> * (<ω, m> * p) = p",
+        method: Method::MpFloat,
+        hypotheses: "none (library Hexanion::inverse/transform_point against the series)",
+        check: library::eq_22,
+    },
+    Statement {
+        id: "angelidis/eq-27",
+        paper: Paper::Angelidis,
+        label: "Eq. (27)",
+        statement: "a rotation hexanion <ω, c × ω> has centre c = ω × m/|ω|², angle θ = |ω|, axis n = ω/|ω|",
+        method: Method::MpFloat,
+        hypotheses: "ω != 0, ω·m = 0 (library Hexanion::classify against fixed points and the trace of the series)",
+        check: library::eq_27,
     },
     Statement {
         id: "angelidis/eq-29",
@@ -109,6 +129,25 @@ pub const STATEMENTS: &[Statement] = &[
         method: Method::Symbolic,
         hypotheses: "ω != 0 (denominators cleared: (|ω|² Rot)² = |ω|⁴ (ω, m)²)",
         check: eq_39,
+    },
+    Statement {
+        id: "angelidis/eq-41",
+        paper: Paper::Angelidis,
+        label: "Eq. (41)",
+        statement: "d/dh M^h at h = 0 is (ω, m), for M = exp(ω, m)",
+        method: Method::MpFloat,
+        hypotheses: "|ω| < π, M^h by the principal logarithm (counterexample recorded for |ω| > π)",
+        check: library::eq_41,
+    },
+    Statement {
+        id: "angelidis/sec-6",
+        paper: Paper::Angelidis,
+        label: "Sec. 6, eqs. (43)-(53)",
+        statement: "the matrix -> hexanion conversion: n from (46)-(47), t = o·n (49), c from (50)-(51), θ from \
+                    (52)-(53), <θ n, θ c × n + t n> (44)",
+        method: Method::MpFloat,
+        hypotheses: "θ is only defined mod 2π: the principal branch θ ∈ [0, π] recovers <ω, m> when |ω| < π",
+        check: library::sec_6,
     },
 ];
 

@@ -127,3 +127,38 @@ pub fn run_contract(args: &[&str], stdin: &[u8]) -> i32 {
     }
     code
 }
+
+/// `R x + t` as a 4x4 matrix from axis, angle, position (Rodrigues).
+pub fn rodrigues(axis: [f64; 3], phi: f64, t: [f64; 3]) -> [[f64; 4]; 4] {
+    let n = (axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]).sqrt();
+    let [x, y, z] = axis.map(|a| a / n);
+    let (s, c) = phi.sin_cos();
+    let k = 1.0 - c;
+    [
+        [c + x * x * k, x * y * k - z * s, x * z * k + y * s, t[0]],
+        [y * x * k + z * s, c + y * y * k, y * z * k - x * s, t[1]],
+        [z * x * k - y * s, z * y * k + x * s, c + z * z * k, t[2]],
+        [0.0, 0.0, 0.0, 1.0],
+    ]
+}
+
+/// Checks the `velocities` of `gam interpolate --json` samples (evenly spaced, step `h`)
+/// against central differences of their `points`, at the sample indices `ks` (each with
+/// neighbours), to `1e-4` relative: the velocities come from dual numbers in the library.
+pub fn assert_velocities_match_differences(label: &str, samples: &[serde_json::Value], h: f64, ks: &[usize]) {
+    let p = |j: usize| -> Vec<[f64; 3]> { serde_json::from_value(samples[j]["points"].clone()).unwrap() };
+    for &k in ks {
+        let vel: Vec<[f64; 3]> = serde_json::from_value(samples[k]["velocities"].clone()).unwrap();
+        let (a, b) = (p(k + 1), p(k - 1));
+        for (q, v) in vel.iter().enumerate() {
+            for r in 0..3 {
+                let fd = (a[q][r] - b[q][r]) / (2.0 * h);
+                assert!(
+                    (fd - v[r]).abs() < 1e-4 * (1.0 + v[r].abs()),
+                    "{label} sample {k} point {q}: {fd} vs {}",
+                    v[r]
+                );
+            }
+        }
+    }
+}

@@ -29,8 +29,12 @@
 //!   counterexample to Theorem 8 for the non-Euclidean P = e14.
 //! * `theorem-9` (mpfr-256): ℓ(R) from the paper's formulas against B, exp(ℓ(R)) = R and the
 //!   runtime log; counterexamples at ||ab|| = 0 and π.
+//! * The library (`motion::wareham_lasenby`, library.rs) against these typed-in formulas in
+//!   `theorem-3` (exp), `theorem-9` (log, and its edge cases by the runtime exp) and `lemma-6`
+//!   (rotor of a pose, the Sec. 4.1 helix by the runtime exp).
 
 mod common;
+mod library;
 mod motion;
 pub(crate) mod powers;
 

@@ -200,6 +200,7 @@ pub(super) fn lemma_6(c: &mut Checker) {
         c.close_mv(format!("X = 1 + n t'_par/2, {label}"), &x, &(&onef + &(&nf * &tp).scale(&h)), 70);
         c.close_mv(format!("t'_par is a vector, {label}"), &tp.grade(1), &tp, 70);
     }
+    super::library::rotor_and_helix(c, &alg);
 }
 
 /// Theorem 3's closed form with symbolic cos = c, sin = s0 N, σ = sinc, P = P_u/N,
@@ -341,5 +342,6 @@ pub(super) fn theorem_9(c: &mut Checker) {
             ),
         );
     }
+    super::library::theorem_9(c, &alg, ell);
     c.note("hypothesis: 0 < ||ab|| < π (<R>_0 in (-1, 1)); at ||ab|| = 0 (pure translation) ℓ(R) = <R>_2 is the limit; '·e' is with the basis vector e (e² = 1, n·e = 1)");
 }

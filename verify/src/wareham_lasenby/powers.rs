@@ -251,5 +251,6 @@ pub(super) fn theorem_3(c: &mut Checker) {
             70,
         );
     }
+    super::library::theorem_3(c, &alg);
     c.note("the statement says 'of the form given in theorem 1': the form is that of Lemma 1 (numbering typo)");
 }

@@ -1,0 +1,130 @@
+//! `gam interpolate` with Angelidis' `hexanion-linear` (eq. 56): the contract's JSON keys, the
+//! motion through every key pose (matrices by Rodrigues' formula and by the power series of
+//! the hexanion matrix (4), both here, not by the library), the segment midpoints as the
+//! series exponential of the averaged hexanions, point velocities against central differences
+//! of the sampled points, and the error contract (exit 2).
+
+mod common;
+
+use common::{TempFile, assert_velocities_match_differences, fails, ok, rodrigues};
+use serde_json::Value;
+
+type M4 = [[f64; 4]; 4];
+
+/// Key hexanions `<ω, m>` with `|ω| < π` (so they are the principal ones the method uses).
+const HEX: [([f64; 3], [f64; 3]); 3] =
+    [([0.0, 0.0, 0.0], [0.0, 0.0, 0.0]), ([0.3, -0.2, 1.1], [1.0, 0.5, -0.25]), ([-0.4, 1.3, 0.2], [2.0, -1.0, 0.75])];
+
+/// A fourth key as axis + angle + position.
+const LAST: ([f64; 3], f64, [f64; 3]) = ([1.0, 1.0, 1.0], -0.7, [2.0, 2.0, -1.0]);
+
+fn spec(samples: usize, extra: &str) -> String {
+    let mut poses: Vec<String> =
+        HEX.iter().map(|(w, m)| format!(r#"{{"hexanion": {{"omega": {w:?}, "m": {m:?}}}}}"#)).collect();
+    let (a, phi, t) = LAST;
+    poses.push(format!(r#"{{"position": {t:?}, "axis": {a:?}, "angle": {phi}}}"#));
+    format!(
+        r#"{{"method": "hexanion-linear", "poses": [{}], "samples": {samples}, "body_points": [[0, 0, 0], [0.5, -1, 2]]{extra}}}"#,
+        poses.join(", ")
+    )
+}
+
+fn run_json(name: &str, text: &str) -> Value {
+    let spec = TempFile::new(&format!("interp-hex-{name}.json"), text);
+    serde_json::from_str(&ok(&["interpolate", "--json", spec.path()])).expect("JSON")
+}
+
+/// `exp` of the matrix form (4) of `<ω, m>` by its power series (eq. 13), 60 terms.
+fn series_exp(w: [f64; 3], m: [f64; 3]) -> M4 {
+    let a: M4 = [[0.0, -w[2], w[1], m[0]], [w[2], 0.0, -w[0], m[1]], [-w[1], w[0], 0.0, m[2]], [0.0; 4]];
+    let mut sum: M4 = std::array::from_fn(|i| std::array::from_fn(|j| if i == j { 1.0 } else { 0.0 }));
+    let mut term = sum;
+    for k in 1..60 {
+        term = std::array::from_fn(|i| {
+            std::array::from_fn(|j| (0..4).map(|l| term[i][l] * a[l][j]).sum::<f64>() / k as f64)
+        });
+        for i in 0..4 {
+            for j in 0..4 {
+                sum[i][j] += term[i][j];
+            }
+        }
+    }
+    sum
+}
+
+fn max_diff(a: &M4, b: &M4) -> f64 {
+    (0..4).flat_map(|r| (0..4).map(move |c| (a[r][c] - b[r][c]).abs())).fold(0.0, f64::max)
+}
+
+fn vec3(v: &Value) -> [f64; 3] {
+    serde_json::from_value(v.clone()).unwrap()
+}
+
+#[test]
+fn output_keys_key_poses_and_midpoints() {
+    let v = run_json("keys", &spec(7, ""));
+    let keys: Vec<&String> = v.as_object().unwrap().keys().collect();
+    assert_eq!(keys, ["method", "parameters", "segments", "samples"]);
+    assert_eq!(v["method"], "hexanion-linear");
+    let segs = v["segments"].as_array().unwrap();
+    assert_eq!(segs.len(), 3);
+    let samples = v["samples"].as_array().unwrap();
+    assert_eq!(samples.len(), 7); // t = 0, 1/6, ..., 1: even ones are key poses, odd ones midpoints
+    let matrix = |k: usize| -> M4 { serde_json::from_value(samples[k]["matrix"].clone()).unwrap() };
+    for (k, s) in segs.iter().enumerate() {
+        assert_eq!(s["representation"], "hexanion-linear");
+        assert_eq!(s["degree"], 1);
+        assert_eq!(s["control_poses"].as_array().unwrap().len(), 2);
+        let h = s["hexanions"].as_array().unwrap();
+        assert_eq!(h.len(), 2);
+        let (w0, m0, w1, m1) = (vec3(&h[0]["omega"]), vec3(&h[0]["m"]), vec3(&h[1]["omega"]), vec3(&h[1]["m"]));
+        // principal branch, and each printed hexanion is its key pose (series exp)
+        for (w, m, key) in [(w0, m0, 2 * k), (w1, m1, 2 * k + 2)] {
+            assert!(w.iter().map(|x| x * x).sum::<f64>().sqrt() <= std::f64::consts::PI);
+            let d = max_diff(&series_exp(w, m), &matrix(key));
+            assert!(d < 1e-13, "segment {k}: hexanion of key {key} off by {d}");
+        }
+        // the midpoint of the segment is exp of the averaged hexanions (eq. 56 at u = 1/2)
+        let avg = |a: [f64; 3], b: [f64; 3]| std::array::from_fn(|i| 0.5 * (a[i] + b[i]));
+        let d = max_diff(&series_exp(avg(w0, w1), avg(m0, m1)), &matrix(2 * k + 1));
+        assert!(d < 1e-13, "segment {k}: midpoint off by {d}");
+    }
+    // the given hexanions come back unchanged (they are principal), and the keys are the poses
+    for (i, (w, m)) in HEX.iter().enumerate() {
+        let h = &segs[i]["hexanions"][0];
+        let close = |a: [f64; 3], b: &[f64; 3]| (0..3).all(|r| (a[r] - b[r]).abs() < 1e-14);
+        assert!(close(vec3(&h["omega"]), w) && close(vec3(&h["m"]), m), "key {i}: {h}");
+        assert!(max_diff(&matrix(2 * i), &series_exp(*w, *m)) < 1e-13, "key {i}");
+    }
+    let (a, phi, t) = LAST;
+    let d = max_diff(&matrix(6), &rodrigues(a, phi, t));
+    assert!(d < 1e-13, "last key pose off by {d}");
+}
+
+/// Velocities (dual numbers in the library) against central differences of sampled points.
+#[test]
+fn velocities_match_differences_of_points() {
+    let n = 3001; // step 1/3000
+    let v = run_json("fd", &spec(n, ""));
+    let samples = v["samples"].as_array().unwrap();
+    assert_velocities_match_differences("hexanion-linear", samples, 1.0 / (n - 1) as f64, &[200, 700, 1300, 2600]);
+}
+
+#[test]
+fn errors() {
+    let run = |name: &str, text: &str| {
+        let spec = TempFile::new(&format!("interp-hex-err-{name}.json"), text);
+        fails(&["interpolate", "--json", spec.path()], 2)
+    };
+    let e = run("velocities", &spec(0, r#", "velocities": []"#));
+    assert!(e.contains("`velocities` is not used by `hexanion-linear`"), "{e}");
+    let e = run("one", r#"{"method": "hexanion-linear", "poses": [{"position": [0, 0, 0]}]}"#);
+    assert!(e.contains("at least two poses"), "{e}");
+    let e = run("times", &spec(0, r#", "parameters": [0, 1, 1, 2]"#));
+    assert!(e.contains("time 2 is not larger than time 1"), "{e}");
+    let e = run(
+        "matrix",
+        r#"{"method": "hexanion-linear", "poses": [{"position": [0, 0, 0]}, {"matrix": [[2,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1]]}]}"#,
+    );
+    assert!(e.contains("poses[1]"), "{e}");
+}
