@@ -5,16 +5,21 @@
 //! | module | contents | paper |
 //! |---|---|---|
 //! | [`parametrisation`] | parameters `t_i` of the given positions: chordal, `*`-chordal, equidistant, centripetal, angular, angle + distance, explicit | eq. (15) |
+//! | [`q_motion`] | [`QMotion`]: Bézier curves of dual quaternions on the Study quadric; de Casteljau, degree elevation, product formula (29), the Study condition as a polynomial; a [`crate::Motion`] | eqs. (13), (29), (8) |
 //!
 //! The parametrisations that take square roots or angles need [`algebra_core::Real`]; the
 //! rest is exact over [`algebra_core::rational::Q`].
 
 pub mod parametrisation;
+pub mod q_motion;
 
 pub use parametrisation::{Parametrisation, parameters};
+pub use q_motion::QMotion;
 
 use crate::MotionError;
 use crate::repr::ReprError;
+use algebra_core::Ring;
+use algebra_core::rational::{Q, q};
 
 /// Why a construction of this module failed.
 ///
@@ -68,4 +73,70 @@ pub enum JuttlerError {
     /// A dual quaternion <-> pose conversion failed.
     #[error(transparent)]
     Repr(#[from] ReprError),
+}
+
+/// `C(n, k)` as an exact rational.
+fn binomial(n: usize, k: usize) -> Q {
+    (0..k).fold(q(1), |acc, i| acc * q((n - i) as i64) / q((i + 1) as i64))
+}
+
+/// The factor of the product formula (29): `b_i^k b_j^l = C(k,i) C(l,j)/C(k+l,i+j) b_{i+j}^{k+l}`,
+/// exact.
+///
+/// ```
+/// use algebra_core::rational::ratio;
+/// // b_0^1 b_1^1 = (1-t) t = ½ b_1^2
+/// assert_eq!(motion::juttler::product_factor::<algebra_core::rational::Q>(1, 0, 1, 1), ratio(1, 2));
+/// ```
+pub fn product_factor<T: Ring>(k: usize, i: usize, l: usize, j: usize) -> T {
+    T::from_rational(&(binomial(k, i) * binomial(l, j) / binomial(k + l, i + j)))
+}
+
+/// The Bernstein coefficients of a product of two Bézier polynomials (29): `c_m = Σ_{i+j=m}
+/// factor(i, j) mul(a_i, b_j)`, for any bilinear `mul`.
+pub(crate) fn bernstein_product<A, B, C: Clone, T: Ring>(
+    a: &[A],
+    b: &[B],
+    zero: C,
+    mul: impl Fn(&A, &B) -> C,
+    add_scaled: impl Fn(&C, &C, &T) -> C,
+) -> Vec<C> {
+    let (k, l) = (a.len() - 1, b.len() - 1);
+    let mut out = vec![zero; k + l + 1];
+    for (i, ai) in a.iter().enumerate() {
+        for (j, bj) in b.iter().enumerate() {
+            let f = product_factor::<T>(k, i, l, j);
+            out[i + j] = add_scaled(&out[i + j], &mul(ai, bj), &f);
+        }
+    }
+    out
+}
+
+/// Degree elevation of Bernstein coefficients: `c'_i = i/(n+1) c_{i-1} + (1 - i/(n+1)) c_i`.
+pub(crate) fn elevate_with<C: Clone, T: Ring>(c: &[C], combine: impl Fn(&C, &T, &C, &T) -> C) -> Vec<C> {
+    let n = c.len() - 1;
+    let d = (n + 1) as i64;
+    (0..=n + 1)
+        .map(|i| {
+            if i == 0 {
+                c[0].clone()
+            } else if i == n + 1 {
+                c[n].clone()
+            } else {
+                let a = T::from_ratio(i as i64, d);
+                let b = T::from_ratio(d - i as i64, d);
+                combine(&c[i - 1], &a, &c[i], &b)
+            }
+        })
+        .collect()
+}
+
+/// De Casteljau's algorithm on Bernstein coefficients with `lerp(a, b, 1 - t, t)`.
+pub(crate) fn de_casteljau_with<C: Clone, T: Ring>(c: &[C], t: &T, lerp: impl Fn(&C, &C, &T, &T) -> C) -> C {
+    let s = T::one().sub_ref(t);
+    let mut col = c.to_vec();
+    while col.len() > 1 {
+        col = col.windows(2).map(|w| lerp(&w[0], &w[1], &s, t)).collect();
+    }
+    col.pop().expect("non-empty control polygon")
 }
