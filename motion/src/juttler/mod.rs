@@ -6,20 +6,36 @@
 //! |---|---|---|
 //! | [`parametrisation`] | parameters `t_i` of the given positions: chordal, `*`-chordal, equidistant, centripetal, angular, angle + distance, explicit | eq. (15) |
 //! | [`q_motion`] | [`QMotion`]: Bézier curves of dual quaternions on the Study quadric; de Casteljau, degree elevation, product formula (29), the Study condition as a polynomial; a [`crate::Motion`] | eqs. (13), (29), (8) |
+//! | [`rational_trajectory`] | [`RationalBezier`]: the trajectory of a body point as a rational Bézier curve of degree `2n`; evaluation, derivative, degree elevation | eq. (12), Sec. 1 |
 //!
 //! The parametrisations that take square roots or angles need [`algebra_core::Real`]; the
 //! rest is exact over [`algebra_core::rational::Q`].
+//!
+//! ```
+//! use algebra_core::rational::{q, ratio};
+//! use gam_algebras::DualQuaternion;
+//! use motion::juttler::QMotion;
+//! // Q(t) = 2 + ε t (0, 0, 2): the translation from (0, 0, 0) to (0, 0, 2), degree 1
+//! let m = QMotion::new_exact(vec![
+//!     DualQuaternion::from_coeffs([q(2), q(0), q(0), q(0), q(0), q(0), q(0), q(0)]),
+//!     DualQuaternion::from_coeffs([q(2), q(0), q(0), q(0), q(0), q(0), q(0), q(2)]),
+//! ]).unwrap();
+//! let path = m.trajectory(&[q(0), q(0), q(0)]);
+//! assert_eq!(path.point(&ratio(1, 2)).unwrap(), [q(0), q(0), q(1)]);
+//! ```
 
 pub mod parametrisation;
 pub mod q_motion;
+pub mod rational_trajectory;
 
 pub use parametrisation::{Parametrisation, parameters};
 pub use q_motion::QMotion;
+pub use rational_trajectory::RationalBezier;
 
 use crate::MotionError;
 use crate::repr::ReprError;
-use algebra_core::Ring;
 use algebra_core::rational::{Q, q};
+use algebra_core::{Field, Ring};
 
 /// Why a construction of this module failed.
 ///
@@ -139,4 +155,9 @@ pub(crate) fn de_casteljau_with<C: Clone, T: Ring>(c: &[C], t: &T, lerp: impl Fn
         col = col.windows(2).map(|w| lerp(&w[0], &w[1], &s, t)).collect();
     }
     col.pop().expect("non-empty control polygon")
+}
+
+/// `1/x` or [`JuttlerError::ZeroWeight`].
+pub(crate) fn recip_or<T: Field>(x: &T, what: impl FnOnce() -> String) -> Result<T, JuttlerError> {
+    x.try_recip().ok_or_else(|| JuttlerError::ZeroWeight { what: what() })
 }
