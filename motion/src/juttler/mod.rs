@@ -7,6 +7,8 @@
 //! | [`parametrisation`] | parameters `t_i` of the given positions: chordal, `*`-chordal, equidistant, centripetal, angular, angle + distance, explicit | eq. (15) |
 //! | [`q_motion`] | [`QMotion`]: Bézier curves of dual quaternions on the Study quadric; de Casteljau, degree elevation, product formula (29), the Study condition as a polynomial; a [`crate::Motion`] | eqs. (13), (29), (8) |
 //! | [`rational_trajectory`] | [`RationalBezier`]: the trajectory of a body point as a rational Bézier curve of degree `2n`; evaluation, derivative, degree elevation | eq. (12), Sec. 1 |
+//! | [`rotational`] | interpolation of the rotational parts: affine (19)-(21), elliptic (22)-(25) with the sign rule (24) | Props. 1, 2 |
+//! | [`tr`] | the TR method (30)-(31) and Algorithm 1 (elliptic + TR, degree `2m`) | Prop. 4, Algorithm 1 |
 //!
 //! The parametrisations that take square roots or angles need [`algebra_core::Real`]; the
 //! rest is exact over [`algebra_core::rational::Q`].
@@ -27,6 +29,8 @@
 pub mod parametrisation;
 pub mod q_motion;
 pub mod rational_trajectory;
+pub mod rotational;
+pub mod tr;
 
 pub use parametrisation::{Parametrisation, parameters};
 pub use q_motion::QMotion;
@@ -83,6 +87,18 @@ pub enum JuttlerError {
         /// Where: "control point i" or "t = ...".
         what: String,
     },
+    /// A rotation with `r_{i,0} = 0` (a half turn), at infinity for the affine method (19)-(21).
+    #[error("rotation {index} is a half turn (zero scalar part): at infinity for the affine method")]
+    AtInfinity {
+        /// Its index.
+        index: usize,
+    },
+    /// A zero quaternion where a rotation was expected.
+    #[error("rotation {index} is the zero quaternion")]
+    ZeroQuaternion {
+        /// Its index.
+        index: usize,
+    },
     /// A pose operation failed.
     #[error(transparent)]
     Motion(#[from] MotionError),
@@ -92,7 +108,7 @@ pub enum JuttlerError {
 }
 
 /// `C(n, k)` as an exact rational.
-fn binomial(n: usize, k: usize) -> Q {
+pub(crate) fn binomial(n: usize, k: usize) -> Q {
     (0..k).fold(q(1), |acc, i| acc * q((n - i) as i64) / q((i + 1) as i64))
 }
 
