@@ -166,11 +166,14 @@ pub(crate) fn elevate_with<C: Clone, T: Ring>(c: &[C], combine: impl Fn(&C, &T, 
 /// De Casteljau's algorithm on Bernstein coefficients with `lerp(a, b, 1 - t, t)`.
 pub(crate) fn de_casteljau_with<C: Clone, T: Ring>(c: &[C], t: &T, lerp: impl Fn(&C, &C, &T, &T) -> C) -> C {
     let s = T::one().sub_ref(t);
+    // one column, overwritten in place level by level
     let mut col = c.to_vec();
-    while col.len() > 1 {
-        col = col.windows(2).map(|w| lerp(&w[0], &w[1], &s, t)).collect();
+    for len in (1..col.len()).rev() {
+        for i in 0..len {
+            col[i] = lerp(&col[i], &col[i + 1], &s, t);
+        }
     }
-    col.pop().expect("non-empty control polygon")
+    col.swap_remove(0)
 }
 
 /// `1/x` or [`JuttlerError::ZeroWeight`].
