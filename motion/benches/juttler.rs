@@ -3,8 +3,8 @@
 //! degree-8 motion through 5 positions) against transforming the point through the sampled
 //! motion (`Motion::pose` + `Pose::transform_point`, the peer), on 256 parameters.
 //!
-//! After the criterion group the bench prints the ratio to the peer measured interleaved
-//! (every kernel back to back in each round; median of the per-round ratios).
+//! The ratios in docs/performance.md are of criterion's medians, all measured in this one
+//! process.
 //!
 //! Run with `cargo bench -p motion --bench juttler -- --warm-up-time 1 --measurement-time 3`.
 #![allow(missing_docs)]
@@ -14,22 +14,19 @@ use motion::juttler::tr::algorithm1;
 use motion::juttler::{QMotion, RationalBezier};
 use motion::{Motion, Pose};
 use std::hint::black_box;
-use std::time::Instant;
 
 const N: usize = 256;
 const X: [f64; 3] = [0.3, -1.0, 2.0];
 
+/// Algorithm 1 through 5 generic positions at uneven parameters: degree 8.
 fn motion() -> QMotion<f64> {
-    let p: Vec<Pose<f64>> = [
-        ([0.0, 0.0, 1.0], 0.0, [0.0, 0.0, 0.0]),
-        ([0.0, 1.0, 1.0], 1.0, [1.0, 2.0, 0.5]),
-        ([1.0, 0.0, 0.0], 2.5, [2.0, -1.0, 1.0]),
-        ([1.0, 2.0, 3.0], -3.0, [4.0, 0.0, 0.0]),
-        ([0.0, 0.0, 1.0], 0.3, [5.0, 1.0, -2.0]),
-    ]
-    .iter()
-    .map(|(a, phi, t)| Pose::from_axis_angle_translation(a, phi, t).unwrap())
-    .collect();
+    let p: Vec<Pose<f64>> = (0..5)
+        .map(|i| {
+            let x = i as f64;
+            let axis = [0.2 + x, 1.0 - 0.3 * x, 0.5 * x * x - 1.0];
+            Pose::from_axis_angle_translation(&axis, &(0.7 * x - 1.1), &[x, 2.0 - x * x, 0.4 * x]).unwrap()
+        })
+        .collect();
     algorithm1(&p, &[0.0, 0.2, 0.45, 0.7, 1.0]).unwrap()
 }
 
@@ -71,38 +68,9 @@ fn bench(c: &mut Criterion) {
     g.finish();
 }
 
-/// Interleaved ratios kernel / peer (the first kernel), median over rounds.
-fn ratios() {
-    let m = motion();
-    let path = m.trajectory(&X);
-    let ts = params();
-    let ks = kernels(&m, &path, &ts);
-    let mut per: Vec<Vec<f64>> = vec![Vec::new(); ks.len()];
-    for _ in 0..100 {
-        let times: Vec<f64> = ks
-            .iter()
-            .map(|(_, k)| {
-                let t = Instant::now();
-                for _ in 0..5 {
-                    black_box(k());
-                }
-                t.elapsed().as_secs_f64()
-            })
-            .collect();
-        for (i, t) in times.iter().enumerate() {
-            per[i].push(t / times[0]);
-        }
-    }
-    for ((name, _), mut r) in ks.iter().zip(per) {
-        r.sort_by(f64::total_cmp);
-        println!("ratio {name} / {}: {:.2}", ks[0].0, r[r.len() / 2]);
-    }
-}
-
 criterion_group!(benches, bench);
 
 fn main() {
     benches();
     Criterion::default().configure_from_args().final_summary();
-    ratios();
 }
