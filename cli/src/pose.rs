@@ -10,7 +10,6 @@
 use crate::error::CliError;
 use crate::output::{mv_human, mv_json};
 use crate::scalar::format_f64;
-use motion::repr::bridge::pose_to_array;
 use motion::repr::dual_quaternion::{DualQuaternion, from_dual_quaternion, to_dual_quaternion};
 use motion::repr::hexanion::Hexanion;
 use motion::repr::quaternion::to_quaternion_position;
@@ -67,7 +66,7 @@ fn z<const N: usize>(v: [f64; N]) -> [f64; N] {
 }
 
 fn motor_of(s: &Pose<f64>) -> Motor<f64> {
-    let [a, b, c, d, e, f, g, h] = pose_to_array(s);
+    let [a, b, c, d, e, f, g, h] = s.to_array();
     Motor::new(a, b, c, d, e, f, g, h)
 }
 

@@ -42,10 +42,7 @@ fn kernels<'a>(hs: &'a [Hexanion<f64>], gens: &'a [Pose<f64>], mats: &'a [Matrix
             Box::new(move || gens.iter().map(|g| Pose::exp(g).unwrap().to_matrix().unwrap()[0][3]).sum()),
         ),
         ("hexanion exp_matrix (66)", Box::new(move || hs.iter().map(|h| h.exp_matrix()[0][3]).sum())),
-        (
-            "hexanion to_pose",
-            Box::new(move || hs.iter().map(|h| motion::repr::bridge::pose_to_array(&h.to_pose().unwrap())[4]).sum()),
-        ),
+        ("hexanion to_pose", Box::new(move || hs.iter().map(|h| h.to_pose().unwrap().to_array()[4]).sum())),
     ];
     let log: Vec<Kernel<'a>> = vec![
         (

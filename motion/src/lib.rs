@@ -58,6 +58,7 @@ pub mod hermite;
 pub mod interpolation;
 pub mod jacobian;
 pub mod joins;
+pub mod juttler;
 pub mod matrix;
 pub mod method;
 #[cfg(feature = "nalgebra")]

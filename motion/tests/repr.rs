@@ -11,13 +11,13 @@ use algebra_core::rational::{Q, q};
 use algebra_core::{MpFloat, PrecisionGuard, Real, Ring};
 use common::diff_n;
 use gam_algebras::DualQuaternion;
+use motion::repr::ReprError;
 use motion::repr::dual_quaternion as dq;
 use motion::repr::hexanion::blend::{Decoupled, HexanionLinear};
 use motion::repr::hexanion::{Hexanion, Kind};
 use motion::repr::quaternion::{from_quaternion_position, to_quaternion_position};
 use motion::repr::screw::{Screw, angle, dist, dist_star};
 use motion::repr::sign::{canonical_pose, slerp_short};
-use motion::repr::{ReprError, bridge::pose_to_array};
 use motion::{Matrix4, Motion, Pose};
 
 type M4<T> = Matrix4<T>;
@@ -325,9 +325,9 @@ fn signs() {
     let long = Pose::slerp(&a, &b, &0.5).unwrap();
     assert!(!long.is_equivalent(&mid, &1e-6).unwrap());
     same("long slerp", &long, &Pose::rotation(&[0.0, 0.0, 1.0], &(3.2 + std::f64::consts::PI)).unwrap(), 1e-14);
-    assert!(pose_to_array(&canonical_pose(&-&a))[0] >= 0.0);
+    assert!((canonical_pose(&-&a)).to_array()[0] >= 0.0);
     let zero_scalar = canonical_pose(&-&Pose::rotation(&[0.0, 0.0, 1.0], &std::f64::consts::PI).unwrap());
-    assert!(pose_to_array(&zero_scalar)[1] > 0.0);
+    assert!(zero_scalar.to_array()[1] > 0.0);
 }
 
 #[test]

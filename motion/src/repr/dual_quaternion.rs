@@ -21,7 +21,6 @@
 //! ```
 
 use crate::repr::ReprError;
-use crate::repr::bridge::pose_to_array;
 use crate::{Motor, Pose};
 use algebra_core::{Field, Real, Ring};
 pub use gam_algebras::DualQuaternion;
@@ -219,7 +218,7 @@ pub fn point_image<T: Ring>(q: &DualQuaternion<T>, x: &[T; 4]) -> [T; 4] {
 /// assert_eq!(q.coeffs(), [1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0]);
 /// ```
 pub fn to_dual_quaternion<T: Real>(s: &Pose<T>) -> Result<DualQuaternion<T>, ReprError> {
-    let [a, b, c, d, e, f, g, h] = pose_to_array(&s.unitize()?);
+    let [a, b, c, d, e, f, g, h] = (s.unitize()?).to_array();
     Ok(DualQuaternion::from_pose(&Motor::new(a, b, c, d, e, f, g, h)))
 }
 
@@ -234,7 +233,7 @@ pub fn to_dual_quaternion<T: Real>(s: &Pose<T>) -> Result<DualQuaternion<T>, Rep
 /// assert_eq!(study_residual(&to_dual_quaternion_exact(&s)), q(0));
 /// ```
 pub fn to_dual_quaternion_exact<T: Ring>(s: &Pose<T>) -> DualQuaternion<T> {
-    let [a, b, c, d, e, f, g, h] = pose_to_array(s);
+    let [a, b, c, d, e, f, g, h] = s.to_array();
     DualQuaternion::from_pose(&Motor::new(a, b, c, d, e, f, g, h))
 }
 

@@ -2,7 +2,6 @@
 //!
 //! | module | representation | paper |
 //! |---|---|---|
-//! | [`bridge`] | the pose's eight coefficients `[S∅, S12, S13, S23, S1∞, S2∞, S3∞, Sω]` | main paper eq. (4) |
 //! | [`quaternion`] | unit quaternion + position | — |
 //! | [`dual_quaternion`] | dual quaternions in Jüttler's conventions, the pose map | Jüttler Sec. 1, main paper App. 2 |
 //! | [`hexanion`] | Angelidis' hexanions `<ω, m>` | Angelidis Secs. 2-7 |
@@ -19,7 +18,6 @@
 //! assert!((Screw::of_hexanion(&h).angle - 0.5).abs() < 1e-15);
 //! ```
 
-pub mod bridge;
 pub mod dual_quaternion;
 pub mod hexanion;
 pub mod quaternion;

@@ -10,7 +10,6 @@
 //! assert!(from_quaternion_position(&q, &t).unwrap().is_equivalent(&s, &1e-15).unwrap());
 //! ```
 
-use crate::repr::bridge::pose_to_array;
 use crate::repr::sign::canonical_quaternion;
 use crate::{MotionError, Pose};
 use algebra_core::Real;
@@ -25,7 +24,7 @@ use algebra_core::Real;
 /// ```
 pub fn to_quaternion_position<T: Real>(s: &Pose<T>) -> Result<([T; 4], [T; 3]), MotionError> {
     let u = s.unitize()?;
-    let [w, b12, b13, b23, ..] = pose_to_array(&u);
+    let [w, b12, b13, b23, ..] = u.to_array();
     let q = canonical_quaternion([w, b23, b13.neg_ref(), b12]);
     Ok((q, u.transform_point(&crate::repr::vec3::zero())?))
 }

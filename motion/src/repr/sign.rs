@@ -9,7 +9,6 @@
 //! assert_eq!(canonical_pose(&b), -&b);
 //! ```
 
-use crate::repr::bridge::{pose_from_array, pose_to_array};
 use crate::{MotionError, Pose};
 use algebra_core::{Real, Ring};
 
@@ -49,7 +48,7 @@ fn canonical_sign<T: Ring + PartialOrd, const N: usize>(c: [T; N]) -> [T; N] {
 /// assert_eq!(canonical_pose(&s), Pose::identity());
 /// ```
 pub fn canonical_pose<T: Ring + PartialOrd>(s: &Pose<T>) -> Pose<T> {
-    pose_from_array(canonical_sign(pose_to_array(s)))
+    Pose::from_array(canonical_sign(s.to_array()))
 }
 
 /// The sign of `gam pose`'s `quaternion` `[w, x, y, z]`: `w ≥ 0`, at `w = 0` the first

@@ -16,7 +16,6 @@
 //! ```
 
 use super::WlError;
-use super::bridge::{pose_from_array, pose_to_array};
 use super::cga::translator;
 use crate::Pose;
 use algebra_core::{Field, Real};
@@ -32,7 +31,7 @@ use gam_algebras::cga::Motor;
 pub fn from_pose<T: Real>(s: &Pose<T>) -> Result<Motor<T>, WlError> {
     let u = s.unitize()?;
     let v = u.transform_point(&[T::zero(), T::zero(), T::zero()])?;
-    let [c, b12, b13, b23, ..] = pose_to_array(&u);
+    let [c, b12, b13, b23, ..] = u.to_array();
     let mut rot = Motor::zero();
     (rot.scalar, rot.e12, rot.e13, rot.e23) = (c, b12.neg_ref(), b13.neg_ref(), b23.neg_ref());
     Ok(&translator(&v) * &rot)
@@ -61,7 +60,7 @@ pub fn to_pose<T: Field>(r: &Motor<T>) -> Pose<T> {
     let v = [tr.e14.mul_ref(&k), tr.e24.mul_ref(&k), tr.e34.mul_ref(&k)];
     let z = T::zero;
     let main =
-        pose_from_array([rot.scalar, rot.e12.neg_ref(), rot.e13.neg_ref(), rot.e23.neg_ref(), z(), z(), z(), z()]);
+        Pose::from_array([rot.scalar, rot.e12.neg_ref(), rot.e13.neg_ref(), rot.e23.neg_ref(), z(), z(), z(), z()]);
     &main * &Pose::translation(&v)
 }
 

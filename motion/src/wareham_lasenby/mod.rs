@@ -9,7 +9,6 @@
 //! | [`convert`] | displacement rotor ↔ the main paper's [`Pose`](crate::Pose), both ways |
 //! | [`helix`] | the closed-form screw path of a body point under `exp(λB)` (Sec. 4.1) |
 //! | [`interp`] | the interpolation schemes of Sec. 3 as [`Motion`](crate::Motion)s |
-//! | [`bridge`] | the one place that reads a pose's coefficients |
 //!
 //! Rotors act by `X ↦ R X rev(R)`; a displacement rotor `R` of the pose `x ↦ Rot x + v`
 //! satisfies `R F(x) rev(R) = F(Rot x + v)`.
@@ -23,7 +22,6 @@
 //! assert!(back.is_equivalent(&s, &1e-14).unwrap());
 //! ```
 
-pub mod bridge;
 pub mod cga;
 pub mod convert;
 pub mod generator;

@@ -22,7 +22,6 @@
 //! ```
 
 use super::Hexanion;
-use crate::repr::bridge::pose_to_array;
 use crate::repr::vec3::{cross, dot, norm, scale, sub};
 use crate::{Matrix4, MotionError, Pose};
 use algebra_core::Real;
@@ -39,8 +38,8 @@ impl<T: Real> Hexanion<T> {
     /// assert!((h.omega[2] - 0.5).abs() < 1e-15 && (h.m[2] - 2.0).abs() < 1e-15);
     /// ```
     pub fn from_pose(s: &Pose<T>) -> Result<Self, MotionError> {
-        // the log is an even element; read its coefficients through the bridge
-        let l = pose_to_array(&s.log_shortest()?);
+        // the log is an even element (the same generated type as the pose)
+        let l = (s.log_shortest()?).to_array();
         let two = T::from_i64(2);
         let [_, b12, b13, b23, c1, c2, c3, _] = l;
         Ok(Hexanion::new(scale(&two, &[b23, b13.neg_ref(), b12]), scale(&two, &[c1, c2, c3])))

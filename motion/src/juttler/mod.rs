@@ -1,0 +1,182 @@
+//! Jüttler's rational motions ("Visualization of moving objects using dual quaternion
+//! curves", Secs. 2-5; issue 11), on the dual quaternions of [`crate::repr::dual_quaternion`]
+//! (his conventions, the pose map stated there).
+//!
+//! | module | contents | paper |
+//! |---|---|---|
+//! | [`parametrisation`] | parameters `t_i` of the given positions: chordal, `*`-chordal, equidistant, centripetal, angular, angle + distance, explicit | eq. (15) |
+//! | [`q_motion`] | [`QMotion`]: Bézier curves of dual quaternions on the Study quadric; de Casteljau, degree elevation, product formula (29), the Study condition as a polynomial; a [`crate::Motion`] | eqs. (13), (29), (8) |
+//! | [`rational_trajectory`] | [`RationalBezier`]: the trajectory of a body point as a rational Bézier curve of degree `2n`; evaluation, derivative, degree elevation | eq. (12), Sec. 1 |
+//! | [`rotational`] | interpolation of the rotational parts: affine (19)-(21), elliptic (22)-(25) with the sign rule (24) | Props. 1, 2 |
+//! | [`tr`] | the TR method (30)-(31) and Algorithm 1 (elliptic + TR, degree `2m`) | Prop. 4, Algorithm 1 |
+//!
+//! The parametrisations that take square roots or angles need [`algebra_core::Real`]; the
+//! rest is exact over [`algebra_core::rational::Q`].
+//!
+//! ```
+//! use algebra_core::rational::{q, ratio};
+//! use gam_algebras::DualQuaternion;
+//! use motion::juttler::QMotion;
+//! // Q(t) = 2 + ε t (0, 0, 2): the translation from (0, 0, 0) to (0, 0, 2), degree 1
+//! let m = QMotion::new_exact(vec![
+//!     DualQuaternion::from_coeffs([q(2), q(0), q(0), q(0), q(0), q(0), q(0), q(0)]),
+//!     DualQuaternion::from_coeffs([q(2), q(0), q(0), q(0), q(0), q(0), q(0), q(2)]),
+//! ]).unwrap();
+//! let path = m.trajectory(&[q(0), q(0), q(0)]);
+//! assert_eq!(path.point(&ratio(1, 2)).unwrap(), [q(0), q(0), q(1)]);
+//! ```
+
+pub mod parametrisation;
+pub mod q_motion;
+pub mod rational_trajectory;
+pub mod rotational;
+pub mod tr;
+
+pub use parametrisation::{Parametrisation, parameters};
+pub use q_motion::QMotion;
+pub use rational_trajectory::RationalBezier;
+
+use crate::MotionError;
+use crate::repr::ReprError;
+use algebra_core::rational::{Q, q};
+use algebra_core::{Field, Ring};
+
+/// Why a construction of this module failed.
+///
+/// ```
+/// let e = motion::juttler::JuttlerError::TooFewPositions { need: 2, got: 1 };
+/// assert_eq!(e.to_string(), "needs at least 2 positions, got 1");
+/// ```
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum JuttlerError {
+    /// Fewer positions (or control points) than the construction needs.
+    #[error("needs at least {need} positions, got {got}")]
+    TooFewPositions {
+        /// The minimum.
+        need: usize,
+        /// What was given.
+        got: usize,
+    },
+    /// Parameters that are not `m + 1` finite, strictly increasing values.
+    #[error("parameters: {why}")]
+    Parameters {
+        /// What is wrong.
+        why: String,
+    },
+    /// A parametrisation step `Δt_i` of (15) that is zero or negative (e.g. two positions
+    /// with the same origin under the chordal parametrisation).
+    #[error("the parameter step between positions {index} and {} is {value}, not positive", index + 1)]
+    ZeroStep {
+        /// The index `i` of `Δt_i`.
+        index: usize,
+        /// The step, printed.
+        value: String,
+    },
+    /// A dual-quaternion Bézier curve off the Study quadric: the Bernstein coefficient
+    /// `index` of the Study polynomial `Scal(Q⁰ Q̃^ε)` is not (close to) zero.
+    #[error("not a Q-motion: Plücker's relation (8) fails, Study polynomial coefficient {index} is {value}")]
+    NotQMotion {
+        /// The Bernstein index of the offending coefficient.
+        index: usize,
+        /// Its value, printed.
+        value: String,
+    },
+    /// A trajectory control point (or point of the curve) with weight zero (at infinity).
+    #[error("the rational Bézier curve has weight zero at {what}")]
+    ZeroWeight {
+        /// Where: "control point i" or "t = ...".
+        what: String,
+    },
+    /// A rotation with `r_{i,0} = 0` (a half turn), at infinity for the affine method (19)-(21).
+    #[error("rotation {index} is a half turn (zero scalar part): at infinity for the affine method")]
+    AtInfinity {
+        /// Its index.
+        index: usize,
+    },
+    /// A zero quaternion where a rotation was expected.
+    #[error("rotation {index} is the zero quaternion")]
+    ZeroQuaternion {
+        /// Its index.
+        index: usize,
+    },
+    /// A pose operation failed.
+    #[error(transparent)]
+    Motion(#[from] MotionError),
+    /// A dual quaternion <-> pose conversion failed.
+    #[error(transparent)]
+    Repr(#[from] ReprError),
+}
+
+/// `C(n, k)` as an exact rational.
+pub(crate) fn binomial(n: usize, k: usize) -> Q {
+    (0..k).fold(q(1), |acc, i| acc * q((n - i) as i64) / q((i + 1) as i64))
+}
+
+/// The factor of the product formula (29): `b_i^k b_j^l = C(k,i) C(l,j)/C(k+l,i+j) b_{i+j}^{k+l}`,
+/// exact.
+///
+/// ```
+/// use algebra_core::rational::ratio;
+/// // b_0^1 b_1^1 = (1-t) t = ½ b_1^2
+/// assert_eq!(motion::juttler::product_factor::<algebra_core::rational::Q>(1, 0, 1, 1), ratio(1, 2));
+/// ```
+pub fn product_factor<T: Ring>(k: usize, i: usize, l: usize, j: usize) -> T {
+    T::from_rational(&(binomial(k, i) * binomial(l, j) / binomial(k + l, i + j)))
+}
+
+/// The Bernstein coefficients of a product of two Bézier polynomials (29): `c_m = Σ_{i+j=m}
+/// factor(i, j) mul(a_i, b_j)`, for any bilinear `mul`.
+pub(crate) fn bernstein_product<A, B, C: Clone, T: Ring>(
+    a: &[A],
+    b: &[B],
+    zero: C,
+    mul: impl Fn(&A, &B) -> C,
+    add_scaled: impl Fn(&C, &C, &T) -> C,
+) -> Vec<C> {
+    let (k, l) = (a.len() - 1, b.len() - 1);
+    let mut out = vec![zero; k + l + 1];
+    for (i, ai) in a.iter().enumerate() {
+        for (j, bj) in b.iter().enumerate() {
+            let f = product_factor::<T>(k, i, l, j);
+            out[i + j] = add_scaled(&out[i + j], &mul(ai, bj), &f);
+        }
+    }
+    out
+}
+
+/// Degree elevation of Bernstein coefficients: `c'_i = i/(n+1) c_{i-1} + (1 - i/(n+1)) c_i`.
+pub(crate) fn elevate_with<C: Clone, T: Ring>(c: &[C], combine: impl Fn(&C, &T, &C, &T) -> C) -> Vec<C> {
+    let n = c.len() - 1;
+    let d = (n + 1) as i64;
+    (0..=n + 1)
+        .map(|i| {
+            if i == 0 {
+                c[0].clone()
+            } else if i == n + 1 {
+                c[n].clone()
+            } else {
+                let a = T::from_ratio(i as i64, d);
+                let b = T::from_ratio(d - i as i64, d);
+                combine(&c[i - 1], &a, &c[i], &b)
+            }
+        })
+        .collect()
+}
+
+/// De Casteljau's algorithm on Bernstein coefficients with `lerp(a, b, 1 - t, t)`.
+pub(crate) fn de_casteljau_with<C: Clone, T: Ring>(c: &[C], t: &T, lerp: impl Fn(&C, &C, &T, &T) -> C) -> C {
+    let s = T::one().sub_ref(t);
+    // one column, overwritten in place level by level
+    let mut col = c.to_vec();
+    for len in (1..col.len()).rev() {
+        for i in 0..len {
+            col[i] = lerp(&col[i], &col[i + 1], &s, t);
+        }
+    }
+    col.swap_remove(0)
+}
+
+/// `1/x` or [`JuttlerError::ZeroWeight`].
+pub(crate) fn recip_or<T: Field>(x: &T, what: impl FnOnce() -> String) -> Result<T, JuttlerError> {
+    x.try_recip().ok_or_else(|| JuttlerError::ZeroWeight { what: what() })
+}
