@@ -50,7 +50,7 @@ pub const STATEMENTS: &[Statement] = &[
                     α2_k φ² PtnP + α3_k φ tnP + α4_k tn with α1_k = -φ² α2_(k-1), α2_k = α1_(k-1), α3_k = α4_(k-1), \
                     α4_k = φ^(k-1) P^(k-1) - φ² α3_(k-1), all α_0 = 0",
         method: Method::Symbolic,
-        hypotheses: "P must be Euclidean (P ∧ n = 0, from Sec. 2.3), not just P² = -1: fails for P = e1 e; the α's \
+        hypotheses: "P must be Euclidean (P n = n P, from Sec. 2.3), not just P² = -1: fails for P = e1 e; the α's \
                      are multivector-valued (left factors)",
         check: powers::lemma_1,
     },
@@ -109,7 +109,7 @@ pub const STATEMENTS: &[Statement] = &[
         label: "Theorem 8",
         statement: "R = exp(B), B of the form of Lemma 1, satisfies R n rev(R) = n",
         method: Method::Symbolic,
-        hypotheses: "P Euclidean (P ∧ n = 0): fails for P = e1 e although P² = -1",
+        hypotheses: "P Euclidean (P n = n P): fails for P = e1 e although P² = -1",
         check: motion::theorem_8,
     },
     Statement {

@@ -245,7 +245,7 @@ pub(super) fn theorem_8(c: &mut Checker) {
     let nn = n::<Poly>(&alg);
     c.equal_mv("R n = n R (symbolic)", &(&r * &nn), &(&nn * &r));
     c.equal_mv("R n rev(R) = (cos² + sin²) n (symbolic)", &(&(&r * &nn) * &r.reverse()), &nn.scale(&norm));
-    // Without P ∧ n = 0: P = e1 e = e14 (P² = -1), R = cos φ + sin φ P exactly (rational point).
+    // Without P n = n P: P = e1 e = e14 (P² = -1), R = cos φ + sin φ P exactly (rational point).
     let (cs, ss) = circle(Q::from_ratio(1, 2));
     let rq = mv(&alg, vec![("1", cs), ("e14", ss)]);
     let nq = n::<Q>(&alg);

@@ -76,7 +76,7 @@ pub(super) fn lemma_1(c: &mut Checker) {
     for (k, (bk, rhs)) in lemma_1_pairs(&alg, &s.q, &s.phi2, &s.tn, K_MAX).into_iter().enumerate() {
         c.equal_mv(format!("B^{k} = Lemma 1's form (symbolic φ, P, t)"), &bk, &rhs);
     }
-    // Without the hypothesis that P is Euclidean (P ∧ n = 0): P = e1 e (= e14) also has P² = -1.
+    // Without the hypothesis that P is Euclidean (P n = n P): P = e1 e (= e14) also has P² = -1.
     let phi = Poly::var("phi");
     let q = mv(&alg, vec![("e14", phi.clone())]);
     c.equal_mv("e14² = -1", &(&q * &q), &scalar(&alg, phi.mul_ref(&phi).neg_ref()));
@@ -86,7 +86,7 @@ pub(super) fn lemma_1(c: &mut Checker) {
         "Lemma 1 for a 2-blade P with P² = -1 that is not Euclidean",
         first_bad.is_none(),
         format!(
-            "P = e1 e (e14): B^{} differs from the formula; the hypothesis P ∧ n = 0 (P built from \
+            "P = e1 e (e14): B^{} differs from the formula; the hypothesis P n = n P (P built from \
              vectors of R^3, Section 2.3) is needed so that P commutes with n",
             first_bad.unwrap_or(0)
         ),
