@@ -632,7 +632,7 @@ pub fn check_join<T: Real>(
 /// let left = hermite::hermite_segment(SegmentKind::Additive, 3, &a, &b, &Shape::unit(), &Shape::unit())?;
 /// let right = hermite::hermite_segment(SegmentKind::Additive, 3, &b, &d, &Shape::factor(2.0), &Shape::unit())?;
 /// let j = motion::joins::check_segment_join(
-///     (SegmentKind::Additive, &left.control_poses), (SegmentKind::Additive, &right.control_poses), &1e-12)?;
+///     (SegmentKind::Additive, left.control_poses()), (SegmentKind::Additive, right.control_poses()), &1e-12)?;
 /// assert!(matches!(j.continuity, Continuity::G1 { factor } if (factor - 2.0).abs() < 1e-12));
 /// # Ok::<(), motion::joins::JoinError>(())
 /// ```
