@@ -8,8 +8,8 @@
 
 use crate::error::CliError;
 use crate::output::{mv_human, mv_json};
+use motion::AnyHermiteSegment;
 use motion::Even;
-use motion::HermiteSegment;
 pub(crate) use motion::spec::HermiteSpec as Spec;
 use motion::spec::SpecError;
 use serde_json::{Value, json};
@@ -93,7 +93,7 @@ fn mv_list<'a>(list: impl Iterator<Item = &'a Even<f64>>) -> Value {
 }
 
 /// The segment of a checked spec (shared with `gam sample` and `gam plot`).
-pub(crate) fn build_segment(spec: &Spec) -> Result<HermiteSegment<f64>, CliError> {
+pub(crate) fn build_segment(spec: &Spec) -> Result<AnyHermiteSegment<f64>, CliError> {
     spec.segment()
         .map_err(|e| if e.is_input() { CliError::usage(e.to_string()) } else { CliError::math(e.to_string()) })
 }
@@ -105,15 +105,15 @@ pub fn hermite(path: &str, json: bool) -> Result<String, CliError> {
         return Err(CliError::usage(format!("`{path}`: `body_point` is only used by `gam sample` and `gam plot`")));
     }
     let seg = build_segment(&spec)?;
-    let kind = seg.kind;
+    let kind = seg.kind();
     let degree = seg.degree();
-    let poses: Vec<&Even<f64>> = seg.control_poses.iter().collect();
-    let nus: Vec<Even<f64>> = seg.velocity_bivectors.iter().map(Even::from).collect();
+    let poses: Vec<&Even<f64>> = seg.control_poses().iter().collect();
+    let nus: Vec<Even<f64>> = seg.velocity_bivectors().iter().map(Even::from).collect();
     if json {
         let out = json!({
             "control_poses": mv_list(poses.iter().copied()),
             "velocity_bivectors": mv_list(nus.iter()),
-            "velocity_indicatrices": mv_list(seg.velocity_indicatrices.iter()),
+            "velocity_indicatrices": mv_list(seg.velocity_indicatrices().iter()),
         });
         return Ok(out.to_string());
     }
@@ -127,7 +127,7 @@ pub fn hermite(path: &str, json: bool) -> Result<String, CliError> {
         lines.push(format!("  nu{i} = {}", mv_human(&m.to_multivector())));
     }
     lines.push("velocity indicatrices (Psi = shape (nu + gamma)):".to_string());
-    for (i, m) in [0, n].into_iter().zip(&seg.velocity_indicatrices) {
+    for (i, m) in [0, n].into_iter().zip(seg.velocity_indicatrices()) {
         lines.push(format!("  Psi{i} = {}", mv_human(&m.to_multivector())));
     }
     Ok(lines.join("\n"))

@@ -334,9 +334,9 @@ fn stream_json(b: &Built) -> Result<String, CliError> {
         .map(|(k, seg)| {
             let mut seg_json = json!({"t0": b.times[k], "t1": b.times[k + 1], "representation": b.method.representation(),
                    "degree": seg.degree(),
-                   "control_poses": seg.control_poses.iter().map(|s| mv_json(&s.to_multivector())).collect::<Vec<_>>()});
+                   "control_poses": seg.control_poses().iter().map(|s| mv_json(&s.to_multivector())).collect::<Vec<_>>()});
             if b.method == Method::CcmAdditive {
-                seg_json["dual_quaternions"] = json!(crate::pose::dual_quaternions(&seg.control_poses));
+                seg_json["dual_quaternions"] = json!(crate::pose::dual_quaternions(seg.control_poses()));
             }
             seg_json
         })
@@ -373,7 +373,7 @@ pub fn interpolate(path: &str, json: bool) -> Result<String, CliError> {
     let mut lines = vec![format!("{name}: {} segments through {} poses at t = [{t}]", segments.len(), b.times.len())];
     for (k, seg) in segments.iter().enumerate() {
         lines.push(format!("segment {k} (t = {} .. {}):", format_f64(b.times[k]), format_f64(b.times[k + 1])));
-        for (i, s) in seg.control_poses.iter().enumerate() {
+        for (i, s) in seg.control_poses().iter().enumerate() {
             lines.push(format!("  S{i} = {}", mv_human(&s.to_multivector())));
         }
     }

@@ -115,7 +115,7 @@ pub(crate) fn sampler(path: &str, n: usize) -> Result<Sampler, CliError> {
         return Err(CliError::usage(format!("`{path}`: `body_point` must be finite")));
     }
     let seg = build_segment(&spec)?;
-    let (kind, degree) = (seg.kind, seg.degree());
+    let (kind, degree) = (seg.kind(), seg.degree());
     // building the segment is O(degree); sampling it is O(samples x degree^2)
     crate::budget::check(&format!("sampling degree {degree} at {n} values"), crate::budget::sampling_work(degree, n))?;
     let curve = |e: motion::CurveError| CliError::math(e.to_string());

@@ -146,7 +146,7 @@ fn output_is_the_library_result() {
             .unwrap();
             let poses = list(&v, "control_poses");
             assert_eq!(poses.len(), degree + 1);
-            for (got, want) in poses.iter().zip(&seg.control_poses) {
+            for (got, want) in poses.iter().zip(seg.control_poses()) {
                 assert_eq!(got.to_vec(), want.components().map(|x| *x).to_vec());
             }
             // Shortest round-trip strings: re-printing the parsed value gives the same text.

@@ -117,7 +117,7 @@ fn body_point_samples_agree_with_the_library() {
     let [g0, g3] = paper::sec_5_2::gammas();
     let seg =
         hermite_segment(SegmentKind::Multiplicative, 3, &a, &b, &Shape::new(4.0, g0), &Shape::new(1.0, g3)).unwrap();
-    let m = MultiplicativeBezier::new(seg.control_poses).unwrap();
+    let m = MultiplicativeBezier::new(seg.control_poses().to_vec()).unwrap();
     for x in &s {
         let v = velocity(&m, &x.t).unwrap();
         let (q, qv) = v.body_point_velocity(&body).unwrap();
@@ -132,7 +132,7 @@ fn body_point_samples_agree_with_the_library() {
     // The additive kind too: the contract example with the same body point, 5 samples.
     let (a, b) = paper::sec_5_1::end_conditions(paper::sec_5_1::PRINTED_ANGLE, paper::sec_5_1::AXIS);
     let seg = hermite_segment(SegmentKind::Additive, 3, &a, &b, &Shape::unit(), &Shape::unit()).unwrap();
-    let m = AdditiveBezier::new(seg.control_poses).unwrap();
+    let m = AdditiveBezier::new(seg.control_poses().to_vec()).unwrap();
     let text = CONTRACT_EXAMPLE.replace("\"degree\": 3,", "\"degree\": 3, \"body_point\": [1, -2, 0.5],");
     let s = sample_json("contract-body.json", &text, 5);
     for x in &s {

@@ -63,15 +63,15 @@ fn main() {
     println!("Jaklič et al. motion, t = 1..9: {} {kind} cubic segments, common shape factor λ = {lambda}", segs.len());
     for (k, seg) in segs.iter().enumerate() {
         println!("\nsegment {} (t = {} .. {})", k + 1, k + 1, k + 2);
-        for (i, s) in seg.control_poses.iter().enumerate() {
+        for (i, s) in seg.control_poses().iter().enumerate() {
             println!("  S{i} = {}", format_pose(s));
         }
     }
     println!();
     for (k, pair) in segs.windows(2).enumerate() {
         let check = joins::check_segment_join(
-            (pair[0].kind, &pair[0].control_poses),
-            (pair[1].kind, &pair[1].control_poses),
+            (pair[0].kind(), pair[0].control_poses()),
+            (pair[1].kind(), pair[1].control_poses()),
             &1e-9,
         )
         .expect("non-singular control poses");

@@ -8,7 +8,7 @@
 //!   `Φ(A, B; t) = A (rev(A) B)^t` (eq. 15) as the pairwise combination.
 //!
 //! A motion is evaluated at a parameter of its scalar type; to differentiate, lift the control
-//! poses to dual numbers with [`Motion::map_scalar`] and run the *same* evaluation code at
+//! poses to dual numbers with [`MapScalar::map_scalar`] and run the *same* evaluation code at
 //! `t + ε` (see [`crate::velocity`]): no derivative formula is written by hand.
 //!
 //! ```

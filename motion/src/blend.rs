@@ -63,6 +63,20 @@ pub trait Blend<T: Ring>: Copy + std::fmt::Debug + PartialEq + Default + 'static
     /// ```
     fn end_control_pose(sn: &Pose<T>, psin: &Even<T>, degree: usize) -> Result<Pose<T>, JoinError>;
 
+    /// A control pose strictly inside a Hermite segment of degree `n > 3`: the point
+    /// `Φ(S1, S_{n-1}; t)` of the way from `S1` to `S_{n-1}` (eq. 17, or eq. 15 in its direct
+    /// form `A (rev(A) B)^t`), see [`crate::hermite`].
+    ///
+    /// ```
+    /// use algebra_core::rational::{q, ratio, Q};
+    /// use motion::{Additive, Blend, Pose};
+    /// let b = Pose::translation(&[q(3), q(0), q(0)]);
+    /// let third = Additive::inner_control_pose(&Pose::<Q>::identity(), &b, &ratio(1, 3))?;
+    /// assert_eq!(third, Pose::translation(&[q(1), q(0), q(0)]));
+    /// # Ok::<(), motion::MotionError>(())
+    /// ```
+    fn inner_control_pose(s1: &Pose<T>, sm: &Pose<T>, t: &T) -> Result<Pose<T>, MotionError>;
+
     /// The end indicatrices `[Ψ(0), Ψ(1)]` of a Bezier segment from its control poses
     /// (eq. 20 or 21, see [`joins::end_indicatrices`]).
     ///
@@ -117,6 +131,10 @@ impl<T: Ring> Blend<T> for Additive {
         joins::additive_end(sn, psin, degree)
     }
 
+    fn inner_control_pose(s1: &Pose<T>, sm: &Pose<T>, t: &T) -> Result<Pose<T>, MotionError> {
+        Ok(Pose::lerp(s1, sm, t))
+    }
+
     fn end_indicatrices(controls: &[Pose<T>]) -> Result<[Even<T>; 2], JoinError>
     where
         T: Field,
@@ -141,6 +159,10 @@ impl<T: Real> Blend<T> for Multiplicative {
 
     fn end_control_pose(sn: &Pose<T>, psin: &Even<T>, degree: usize) -> Result<Pose<T>, JoinError> {
         joins::multiplicative_end(sn, psin, degree)
+    }
+
+    fn inner_control_pose(s1: &Pose<T>, sm: &Pose<T>, t: &T) -> Result<Pose<T>, MotionError> {
+        Pose::slerp(s1, sm, t)
     }
 
     fn end_indicatrices(controls: &[Pose<T>]) -> Result<[Even<T>; 2], JoinError>

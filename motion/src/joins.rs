@@ -42,7 +42,7 @@
 //! # Ok::<(), motion::joins::JoinError>(())
 //! ```
 
-use crate::blend::{Additive, Blend, Multiplicative};
+use crate::blend::Blend;
 use crate::pose::is_positive;
 use crate::{Bivector, Even, Pseudoscalar, Vec3};
 use crate::{MotionError, Pose};
@@ -437,10 +437,7 @@ pub fn start_control_pose<T: Real>(
     psi0: &Even<T>,
     degree: usize,
 ) -> Result<Pose<T>, JoinError> {
-    match kind {
-        SegmentKind::Additive => Additive::start_control_pose(s0, psi0, degree),
-        SegmentKind::Multiplicative => Multiplicative::start_control_pose(s0, psi0, degree),
-    }
+    crate::with_blend!(kind, B => B::start_control_pose(s0, psi0, degree))
 }
 
 /// The control pose `S_{n-1}` next to the end `Sn` of a degree-`n` segment of the given kind
@@ -460,10 +457,7 @@ pub fn end_control_pose<T: Real>(
     psin: &Even<T>,
     degree: usize,
 ) -> Result<Pose<T>, JoinError> {
-    match kind {
-        SegmentKind::Additive => Additive::end_control_pose(sn, psin, degree),
-        SegmentKind::Multiplicative => Multiplicative::end_control_pose(sn, psin, degree),
-    }
+    crate::with_blend!(kind, B => B::end_control_pose(sn, psin, degree))
 }
 
 /// The velocity indicatrices `[Ψ(0), Ψ(1)]` at the ends of a Bezier segment from its control
@@ -481,10 +475,7 @@ pub fn end_control_pose<T: Real>(
 /// # Ok::<(), motion::joins::JoinError>(())
 /// ```
 pub fn end_indicatrices<T: Real>(kind: SegmentKind, controls: &[Pose<T>]) -> Result<[Even<T>; 2], JoinError> {
-    match kind {
-        SegmentKind::Additive => Additive::end_indicatrices(controls),
-        SegmentKind::Multiplicative => Multiplicative::end_indicatrices(controls),
-    }
+    crate::with_blend!(kind, B => B::end_indicatrices(controls))
 }
 
 /// How two segments meet at a join (the classification of [`check_join`]).
@@ -632,7 +623,7 @@ pub fn check_join<T: Real>(
 /// let left = hermite::hermite_segment(SegmentKind::Additive, 3, &a, &b, &Shape::unit(), &Shape::unit())?;
 /// let right = hermite::hermite_segment(SegmentKind::Additive, 3, &b, &d, &Shape::factor(2.0), &Shape::unit())?;
 /// let j = motion::joins::check_segment_join(
-///     (SegmentKind::Additive, &left.control_poses), (SegmentKind::Additive, &right.control_poses), &1e-12)?;
+///     (SegmentKind::Additive, left.control_poses()), (SegmentKind::Additive, right.control_poses()), &1e-12)?;
 /// assert!(matches!(j.continuity, Continuity::G1 { factor } if (factor - 2.0).abs() < 1e-12));
 /// # Ok::<(), motion::joins::JoinError>(())
 /// ```

@@ -49,6 +49,7 @@
 //! ```
 
 pub mod action;
+mod any_segment;
 pub mod bezier;
 pub mod blend;
 pub mod bspline;
@@ -87,7 +88,7 @@ pub use blend::{Additive, Blend, Multiplicative};
 pub use bspline::{AdditiveBSpline, BSpline, MultiplicativeBSpline};
 pub use error::MotionError;
 pub use gam_algebras::g123inf::Motor;
-pub use hermite::{HermiteSegment, HermiteShapes};
+pub use hermite::{AnyHermiteSegment, HermiteSegment, HermiteShapes};
 pub use joins::{Continuity, EndCondition, JoinCheck, JoinError, SegmentKind, Shape};
 pub use matrix::Matrix4;
 pub use piecewise::{AnyMotion, Piecewise, Reparametrized};

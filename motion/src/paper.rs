@@ -15,7 +15,7 @@
 //! use motion::paper::sec_5_1;
 //! use motion::spec::SpecKind;
 //! let seg = sec_5_1::spec(SpecKind::Additive, sec_5_1::PRINTED_ANGLE).segment()?;
-//! assert_eq!(format!("{:.3}", seg.control_poses[1].e12), sec_5_1::ADDITIVE[0][1]);
+//! assert_eq!(format!("{:.3}", seg.control_poses()[1].e12), sec_5_1::ADDITIVE[0][1]);
 //! # Ok::<(), motion::spec::SpecError>(())
 //! ```
 
@@ -273,7 +273,7 @@ pub mod sec_5_2 {
 /// point is `c'(t)` and the angular velocity `Ω(t)` is read off `2 R⁻¹ R' = Ω e123`, both by
 /// dual numbers ([`algebra_core::Jet`]). Precision poses at `t = 1, ..., 9`.
 pub mod jaklic {
-    use crate::hermite::{self, HermiteSegment, HermiteShapes};
+    use crate::hermite::{self, AnyHermiteSegment, HermiteShapes};
     use crate::joins::JoinError;
     use crate::{EndCondition, MotionError, Motor, Pose, SegmentKind, Shape};
     use algebra_core::{Jet, Real};
@@ -355,7 +355,7 @@ pub mod jaklic {
     /// assert_eq!(segs.len(), 8);
     /// # Ok::<(), motion::joins::JoinError>(())
     /// ```
-    pub fn segments(kind: SegmentKind, lambda: f64) -> Result<Vec<HermiteSegment<f64>>, JoinError> {
+    pub fn segments(kind: SegmentKind, lambda: f64) -> Result<Vec<AnyHermiteSegment<f64>>, JoinError> {
         hermite::hermite(kind, 3, &precision_poses()?, &HermiteShapes::Common(Shape::factor(lambda)))
     }
 }

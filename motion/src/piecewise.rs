@@ -27,7 +27,7 @@
 use crate::Pose;
 use crate::bezier::{AdditiveBezier, CurveError, MapScalar, Motion, MultiplicativeBezier, check_domain};
 use crate::bspline::{AdditiveBSpline, MultiplicativeBSpline};
-use algebra_core::{Real, Ring};
+use algebra_core::{Field, Real, Ring};
 
 /// A motion `M` on `[a, b]` run over the interval `[t_0, t_1]`:
 /// `R(t) = M(a + (t - t_0)/(t_1 - t_0) · (b - a))` (`t_0 < t_1`).
@@ -45,7 +45,7 @@ pub struct Reparametrized<T, M> {
     inner: M,
 }
 
-impl<T: Real, M: Motion<T>> Reparametrized<T, M> {
+impl<T: Field + PartialOrd, M: Motion<T>> Reparametrized<T, M> {
     /// `inner` run over `interval` (finite, `interval[0] < interval[1]`).
     ///
     /// ```
@@ -82,7 +82,7 @@ impl<T: Real, M: Motion<T>> Reparametrized<T, M> {
     }
 }
 
-impl<T: Real, M: Motion<T>> Motion<T> for Reparametrized<T, M> {
+impl<T: Field + PartialOrd, M: Motion<T>> Motion<T> for Reparametrized<T, M> {
     /// `inner` at the mapped parameter, by [`Motion::evaluate`]: an end of the interval that
     /// rounding maps a few ulps outside the inner domain is no error.
     fn evaluate(&self, t: &T) -> Result<Pose<T>, CurveError> {
@@ -94,7 +94,7 @@ impl<T: Real, M: Motion<T>> Motion<T> for Reparametrized<T, M> {
     }
 }
 
-impl<T: Real, U: Real, M: MapScalar<T, U>> MapScalar<T, U> for Reparametrized<T, M> {
+impl<T: Field + PartialOrd, U: Field + PartialOrd, M: MapScalar<T, U>> MapScalar<T, U> for Reparametrized<T, M> {
     type Mapped = Reparametrized<U, M::Mapped>;
 
     fn map_scalar(&self, f: &dyn Fn(&T) -> U) -> Self::Mapped {
@@ -122,7 +122,7 @@ pub struct Piecewise<T, M> {
     segments: Vec<M>,
 }
 
-impl<T: Real, M: Motion<T>> Piecewise<T, M> {
+impl<T: Field + PartialOrd, M: Motion<T>> Piecewise<T, M> {
     /// Segments with breakpoints `t_0 < t_1 < ... < t_m` (`m` = number of segments ≥ 1;
     /// finite, strictly increasing). Typed errors otherwise.
     ///
@@ -217,7 +217,7 @@ impl<T: Real, M: Motion<T>> Piecewise<T, M> {
     }
 }
 
-impl<T: Real, M: Motion<T>> Motion<T> for Piecewise<T, M> {
+impl<T: Field + PartialOrd, M: Motion<T>> Motion<T> for Piecewise<T, M> {
     /// The segment with `t_k ≤ t < t_{k+1}` (the first below `t_0`, the last from `t_m` on),
     /// at its reparametrised parameter.
     fn evaluate(&self, t: &T) -> Result<Pose<T>, CurveError> {
@@ -231,7 +231,7 @@ impl<T: Real, M: Motion<T>> Motion<T> for Piecewise<T, M> {
     }
 }
 
-impl<T: Real, U: Real, M: MapScalar<T, U>> MapScalar<T, U> for Piecewise<T, M> {
+impl<T: Field + PartialOrd, U: Field + PartialOrd, M: MapScalar<T, U>> MapScalar<T, U> for Piecewise<T, M> {
     type Mapped = Piecewise<U, M::Mapped>;
 
     fn map_scalar(&self, f: &dyn Fn(&T) -> U) -> Self::Mapped {
@@ -243,7 +243,7 @@ impl<T: Real, U: Real, M: MapScalar<T, U>> MapScalar<T, U> for Piecewise<T, M> {
 }
 
 /// `a + (t - t_0)/(t_1 - t_0) · (b - a)`: the parameter on `[a, b]` for `t` on `[t_0, t_1]`.
-fn inner_parameter<T: Real>(interval: &[T; 2], domain: &[T; 2], t: &T) -> T {
+fn inner_parameter<T: Field>(interval: &[T; 2], domain: &[T; 2], t: &T) -> T {
     let [t0, t1] = interval;
     let [a, b] = domain;
     let s = t.sub_ref(t0).div_ref(&t1.sub_ref(t0));
@@ -251,9 +251,9 @@ fn inner_parameter<T: Real>(interval: &[T; 2], domain: &[T; 2], t: &T) -> T {
 }
 
 /// Finite and strictly increasing.
-fn check_breaks<T: Real>(breaks: &[T]) -> Result<(), CurveError> {
+fn check_breaks<T: Ring + PartialOrd>(breaks: &[T]) -> Result<(), CurveError> {
     for (index, t) in breaks.iter().enumerate() {
-        if !t.is_finite() {
+        if !t.is_finite_value() {
             return Err(CurveError::NotFiniteParameter { what: "breakpoint", index, value: t.to_string() });
         }
         if index > 0 && *t <= breaks[index - 1] {

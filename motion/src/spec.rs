@@ -20,11 +20,11 @@
 //! let end = EndSpec::new([3.0, 0.0, 0.0], [0.0, 0.0, 1.0], 0.0, [3.0, 0.0, 0.0], [0.0; 3]);
 //! let spec = HermiteSpec::new(SpecKind::Additive, 3, start, end);
 //! let seg = spec.segment()?;
-//! assert_eq!(seg.control_poses[1], motion::Pose::translation(&[1.0, 0.0, 0.0]));
+//! assert_eq!(seg.control_poses()[1], motion::Pose::translation(&[1.0, 0.0, 0.0]));
 //! # Ok::<(), motion::spec::SpecError>(())
 //! ```
 
-use crate::hermite::{HermiteSegment, hermite_segment};
+use crate::hermite::{AnyHermiteSegment, hermite_segment};
 use crate::joins::{EndCondition, JoinError, SegmentKind, Shape};
 use crate::{MotionError, Pose, Pseudoscalar};
 
@@ -229,10 +229,10 @@ impl HermiteSpec {
     /// use motion::spec::{EndSpec, HermiteSpec, SpecKind};
     /// let a = EndSpec::new([0.0; 3], [0.0, 0.0, 1.0], 0.0, [1.0, 0.0, 0.0], [0.0; 3]);
     /// let seg = HermiteSpec::new(SpecKind::Additive, 3, a.clone(), a).segment()?;
-    /// assert_eq!(seg.velocity_bivectors[0].e1inf, 1.0);
+    /// assert_eq!(seg.velocity_bivectors()[0].e1inf, 1.0);
     /// # Ok::<(), motion::spec::SpecError>(())
     /// ```
-    pub fn segment(&self) -> Result<HermiteSegment<f64>, SpecError> {
+    pub fn segment(&self) -> Result<AnyHermiteSegment<f64>, SpecError> {
         self.check()?;
         let degree = self.degree as usize; // 3..=MAX_DEGREE
         let (start, start_shape) = self.start.end_condition("start")?;
@@ -242,8 +242,8 @@ impl HermiteSpec {
                 JoinError::Motion(m) => SpecError::Motion { end: None, source: m },
                 other => SpecError::Join(other),
             })?;
-        let nus = seg.velocity_bivectors.iter().map(Pose::from);
-        let mut all = seg.control_poses.iter().cloned().chain(nus).chain(seg.velocity_indicatrices.iter().cloned());
+        let nus = seg.velocity_bivectors().iter().map(Pose::from);
+        let mut all = seg.control_poses().iter().cloned().chain(nus).chain(seg.velocity_indicatrices().iter().cloned());
         if !all.all(|m| m.is_finite()) {
             return Err(SpecError::NotFinite { end: "result", value: f64::INFINITY });
         }

@@ -40,7 +40,7 @@
 //! ```
 
 use crate::bezier::{CurveError, Motion};
-use crate::hermite::{HermiteSegment, HermiteShapes, hermite_with_parameters};
+use crate::hermite::{AnyHermiteSegment, HermiteShapes, hermite_with_parameters};
 use crate::joins::{EndCondition, JoinError, SegmentKind};
 use crate::piecewise::{AnyMotion, Piecewise};
 use crate::pose::is_positive;
@@ -189,7 +189,7 @@ pub struct Trajectory<T: Ring> {
     kind: SegmentKind,
     poses: Vec<Pose<T>>,
     twists: Vec<Twist<T>>,
-    segments: Vec<HermiteSegment<T>>,
+    segments: Vec<AnyHermiteSegment<T>>,
     motion: Piecewise<T, AnyMotion<T>>,
 }
 
@@ -275,10 +275,10 @@ impl<T: Real> Trajectory<T> {
     /// # use motion::{HermiteShapes, Pose, SegmentKind};
     /// let tr = Trajectory::through(&[Pose::<f64>::identity(), Pose::translation(&[1.0, 0.0, 0.0])], &[0.0, 1.0],
     ///     &Velocities::Zero, SegmentKind::Additive, &HermiteShapes::unit())?;
-    /// assert_eq!(tr.segments()[0].control_poses[1], Pose::identity()); // at rest: S1 = S0
+    /// assert_eq!(tr.segments()[0].control_poses()[1], Pose::identity()); // at rest: S1 = S0
     /// # Ok::<(), motion::trajectory::TrajectoryError>(())
     /// ```
-    pub fn segments(&self) -> &[HermiteSegment<T>] {
+    pub fn segments(&self) -> &[AnyHermiteSegment<T>] {
         &self.segments
     }
 

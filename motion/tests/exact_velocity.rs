@@ -48,3 +48,22 @@ fn degree_elevation_keeps_the_exact_indicatrix() {
         assert_eq!(velocity_indicatrix(&m, &t).unwrap(), expected_psi(&t), "t = {t}");
     }
 }
+
+#[test]
+fn piecewise_additive_motion_over_rationals_is_exact() {
+    use motion::Piecewise;
+    // segment 0: translation 0 -> 4 e1 over [0, 1/2]; segment 1: 4 e1 -> 4 e1 + 6 e2 over [1/2, 2]
+    let tr = |x: i64, y: i64| Pose::translation(&[q(x), q(y), q(0)]);
+    let a = AdditiveBezier::new(vec![tr(0, 0), tr(4, 0)]).unwrap();
+    let b = AdditiveBezier::new(vec![tr(4, 0), tr(4, 6)]).unwrap();
+    let m = Piecewise::new(vec![q(0), ratio(1, 2), q(2)], vec![a, b]).unwrap();
+    assert_eq!(m.domain(), [q(0), q(2)]);
+    // t = 1/8: a quarter through segment 0; t = 1: a third through segment 1 (both by hand)
+    assert_eq!(m.pose(&ratio(1, 8)).unwrap(), tr(1, 0));
+    assert_eq!(m.pose(&q(1)).unwrap(), tr(4, 2));
+    assert_eq!(m.pose(&ratio(1, 2)).unwrap(), tr(4, 0));
+    assert!(m.pose(&ratio(9, 4)).is_err());
+    // breakpoints must increase: a typed error over Q as over floats
+    let c = AdditiveBezier::new(vec![tr(0, 0), tr(1, 0)]).unwrap();
+    assert!(Piecewise::new(vec![q(1), q(1)], vec![c]).is_err());
+}

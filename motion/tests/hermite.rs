@@ -8,7 +8,7 @@ mod common;
 
 use algebra_core::{MpFloat, PrecisionGuard, Real};
 use common::{bernstein, de_casteljau, diff, size, value_and_derivative};
-use motion::hermite::{self, HermiteSegment, HermiteShapes};
+use motion::hermite::{self, AnyHermiteSegment, HermiteShapes};
 use motion::joins;
 use motion::paper::jaklic;
 use motion::{Continuity, EndCondition, Even, JoinError, Pose, Pseudoscalar, SegmentKind, Shape};
@@ -17,15 +17,15 @@ use num_dual::Dual64;
 const KINDS: [SegmentKind; 2] = [SegmentKind::Additive, SegmentKind::Multiplicative];
 
 /// A segment evaluated at a dual parameter: Bernstein sum (eq. 18) or slerp tableau (Fig. 2).
-fn evaluate(seg: &HermiteSegment<f64>, t: Dual64) -> Pose<Dual64> {
-    match seg.kind {
-        SegmentKind::Additive => bernstein(&seg.control_poses, &t),
-        SegmentKind::Multiplicative => de_casteljau(&seg.control_poses, &t),
+fn evaluate(seg: &AnyHermiteSegment<f64>, t: Dual64) -> Pose<Dual64> {
+    match seg.kind() {
+        SegmentKind::Additive => bernstein(seg.control_poses(), &t),
+        SegmentKind::Multiplicative => de_casteljau(seg.control_poses(), &t),
     }
 }
 
 /// `(S(t), Ψ(t) = 2 S⁻¹ S')` of a segment at `t` by a dual number.
-fn pose_and_indicatrix(seg: &HermiteSegment<f64>, t: f64) -> (Pose<f64>, Even<f64>) {
+fn pose_and_indicatrix(seg: &AnyHermiteSegment<f64>, t: f64) -> (Pose<f64>, Even<f64>) {
     let (s, ds) = value_and_derivative(&evaluate(seg, Dual64::new(t, 1.0)));
     let psi = (s.try_inverse().unwrap() * ds).scale(&2.0);
     (s, psi)
@@ -84,8 +84,8 @@ fn jaklic_segments_are_c1_for_every_common_shape() {
                 assert!(size(&check.nu_jump) < 1e-11 * (1.0 + size(&left_psi)), "{kind} λ = {lambda} join {k}");
                 assert!(size(&check.pose_jump) < 1e-12);
                 let by_controls = joins::check_segment_join(
-                    (pair[0].kind, &pair[0].control_poses),
-                    (pair[1].kind, &pair[1].control_poses),
+                    (pair[0].kind(), pair[0].control_poses()),
+                    (pair[1].kind(), pair[1].control_poses()),
                     &1e-10,
                 )
                 .unwrap();
@@ -109,7 +109,7 @@ fn jaklic_mixed_segments_are_g1() {
         // The same segments as taking segment k from the common-λ case k mod 3.
         for (k, seg) in segs.iter().enumerate() {
             let common = &jaklic::segments(kind, cases[k % 3]).unwrap()[k];
-            for (a, b) in seg.control_poses.iter().zip(&common.control_poses) {
+            for (a, b) in seg.control_poses().iter().zip(common.control_poses()) {
                 assert!(diff(a, b) < 1e-15);
             }
         }
@@ -172,7 +172,7 @@ fn non_uniform_parameters() {
                     diff(&psi.scale(&(1.0 / h)), &want) < 1e-11 * (1.0 + size(&want)),
                     "{kind} segment {k} end {end}"
                 );
-                assert_eq!(seg.velocity_bivectors[end], want);
+                assert_eq!(seg.velocity_bivectors()[end], want);
             }
         }
     }
@@ -202,7 +202,7 @@ fn higher_degrees() {
             let want1 = shape1.indicatrix(&b.velocity_bivector());
             assert!(diff(&psi0, &want0) < 1e-11, "{kind} n = {n}: {psi0} vs {want0}");
             assert!(diff(&psi1, &want1) < 1e-11, "{kind} n = {n}: {psi1} vs {want1}");
-            let c = &seg.control_poses;
+            let c = seg.control_poses();
             for i in 2..n - 1 {
                 let t = (i - 1) as f64 / (n - 2) as f64;
                 let want = match kind {
@@ -237,7 +237,7 @@ fn input_errors() {
     let singular = EndCondition::new(Pose::new(0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0), [0.0; 3], [1.0; 3], [0.0; 3]);
     let seg = hermite::hermite_segment(SegmentKind::Additive, 3, &poses[0], &singular, &Shape::unit(), &Shape::unit());
     let seg = seg.unwrap();
-    assert!(joins::end_indicatrices(SegmentKind::Additive, &seg.control_poses).is_err());
+    assert!(joins::end_indicatrices(SegmentKind::Additive, seg.control_poses()).is_err());
 }
 
 /// The construction is generic: over 256-bit floats it agrees with f64 and the additive end
@@ -281,15 +281,15 @@ fn multiple_precision() {
             &Shape::new(4.0, Pseudoscalar::new(1.0, -0.5)),
         )
         .unwrap();
-        for (x, y) in seg.control_poses.iter().zip(&seg64.control_poses) {
+        for (x, y) in seg.control_poses().iter().zip(seg64.control_poses()) {
             let xs = x.components().map(Real::to_f64);
             let ys = y.components().map(|v| *v);
             assert!(common::diff_n(&xs, &ys) < 1e-13, "{kind}: {x} vs {y}");
         }
         if kind == SegmentKind::Additive {
-            let [p0, p1] = joins::end_indicatrices(kind, &seg.control_poses).unwrap();
-            let e0 = &p0 - &seg.velocity_indicatrices[0];
-            let e1 = &p1 - &seg.velocity_indicatrices[1];
+            let [p0, p1] = joins::end_indicatrices(kind, seg.control_poses()).unwrap();
+            let e0 = &p0 - &seg.velocity_indicatrices()[0];
+            let e1 = &p1 - &seg.velocity_indicatrices()[1];
             assert!(common::size(&e0) < 1e-70 && common::size(&e1) < 1e-70, "{e0} {e1}");
         }
     }

@@ -36,14 +36,14 @@ fn sec_5_1_mismatches(theta3: f64, axis3: [f64; 3]) -> Vec<(&'static str, &'stat
     let add = motion::hermite::hermite_segment(SegmentKind::Additive, 3, &a, &b, &unit, &unit).unwrap();
     let mut out = Vec::new();
     for (name, pose, printed) in [
-        ("S0", &mult.control_poses[0], &S0_51),
-        ("multiplicative S1", &mult.control_poses[1], &MULT_51[0]),
-        ("multiplicative S2", &mult.control_poses[2], &MULT_51[1]),
-        ("S3", &mult.control_poses[3], &S3_51),
-        ("additive S0", &add.control_poses[0], &S0_51),
-        ("additive S1", &add.control_poses[1], &ADD_51[0]),
-        ("additive S2", &add.control_poses[2], &ADD_51[1]),
-        ("additive S3", &add.control_poses[3], &S3_51),
+        ("S0", &mult.control_poses()[0], &S0_51),
+        ("multiplicative S1", &mult.control_poses()[1], &MULT_51[0]),
+        ("multiplicative S2", &mult.control_poses()[2], &MULT_51[1]),
+        ("S3", &mult.control_poses()[3], &S3_51),
+        ("additive S0", &add.control_poses()[0], &S0_51),
+        ("additive S1", &add.control_poses()[1], &ADD_51[0]),
+        ("additive S2", &add.control_poses()[2], &ADD_51[1]),
+        ("additive S3", &add.control_poses()[3], &S3_51),
     ] {
         out.extend(mismatches(pose, printed).into_iter().map(|b| (name, b)));
     }
@@ -72,8 +72,8 @@ fn sec_5_1_at_the_printed_angle() {
     let (a, b) = sec_5_1(PRINTED_ANGLE, AXIS);
     let add =
         motion::hermite::hermite_segment(SegmentKind::Additive, 3, &a, &b, &Shape::unit(), &Shape::unit()).unwrap();
-    let s2 = &add.control_poses[2];
-    let s3 = &add.control_poses[3];
+    let s2 = &add.control_poses()[2];
+    let s3 = &add.control_poses()[3];
     // 7.1003 printed 7.101; 6.8777 printed 6.877; 4.7064 printed 4.707.
     assert!((s3.e123inf - 7.101).abs() < 1e-3 && (s2.e3inf - 6.877).abs() < 1e-3 && (s2.e123inf - 4.707).abs() < 1e-3);
 }
@@ -218,10 +218,10 @@ fn end_indicatrices_by_dual_numbers() {
     for (case, (a, b, sa, sb)) in cases.iter().enumerate() {
         for kind in [SegmentKind::Additive, SegmentKind::Multiplicative] {
             let seg = motion::hermite::hermite_segment(kind, 3, a, b, sa, sb).unwrap();
-            let [want0, want1] = seg.velocity_indicatrices;
-            let [got0, got1] = end_indicatrices_by_duals(kind, &seg.control_poses);
+            let [want0, want1] = *seg.velocity_indicatrices();
+            let [got0, got1] = end_indicatrices_by_duals(kind, seg.control_poses());
             // Corollary 4.6 (the library's route, from the control poses).
-            let [cor0, cor1] = joins::end_indicatrices(kind, &seg.control_poses).unwrap();
+            let [cor0, cor1] = joins::end_indicatrices(kind, seg.control_poses()).unwrap();
             let tol = 1e-12 * (1.0 + common::size(&want0).max(common::size(&want1)));
             assert!(diff(&got0, &want0) < tol, "case {case} {kind} start: {got0} vs {want0}");
             assert!(diff(&cor0, &want0) < tol, "case {case} {kind} start (Cor. 4.6)");
@@ -252,8 +252,8 @@ fn multiplicative_gamma_changes_only_the_pseudoscalar() {
         motion::hermite::hermite_segment(kind, 3, &a, &b, &Shape::new(1.0, g0), &Shape::new(1.0, g3)).unwrap()
     };
     let mult = with(SegmentKind::Multiplicative, gamma0(), gamma3());
-    let end = value_and_derivative(&de_casteljau(&mult.control_poses, &Dual64::new(1.0, 1.0))).0;
-    let s3 = &mult.control_poses[3];
+    let end = value_and_derivative(&de_casteljau(mult.control_poses(), &Dual64::new(1.0, 1.0))).0;
+    let s3 = &mult.control_poses()[3];
     assert!(diff(&end, s3) > 1.0);
     assert!(end.is_equivalent(s3, &1e-14).unwrap());
     // a1 = γ0/6, a2 = -γ3/6: 12 a1 + 6 a2 = (1 + ω) - (1 - ω/2) = 1.5 ω.
@@ -264,11 +264,11 @@ fn multiplicative_gamma_changes_only_the_pseudoscalar() {
     let add = with(SegmentKind::Additive, gamma0(), gamma3());
     for t in [0.2, 0.5, 0.9] {
         let t = Dual64::from(t);
-        let m1 = value_and_derivative(&de_casteljau(&mult.control_poses, &t)).0;
-        let m0 = value_and_derivative(&de_casteljau(&plain.control_poses, &t)).0;
+        let m1 = value_and_derivative(&de_casteljau(mult.control_poses(), &t)).0;
+        let m0 = value_and_derivative(&de_casteljau(plain.control_poses(), &t)).0;
         assert!(m1.is_equivalent(&m0, &1e-13).unwrap());
-        let a1 = value_and_derivative(&bernstein(&add.control_poses, &t)).0;
-        let a0 = value_and_derivative(&bernstein(&add_plain.control_poses, &t)).0;
+        let a1 = value_and_derivative(&bernstein(add.control_poses(), &t)).0;
+        let a0 = value_and_derivative(&bernstein(add_plain.control_poses(), &t)).0;
         assert!(!a1.is_equivalent(&a0, &1e-3).unwrap());
     }
 }
@@ -344,10 +344,10 @@ fn c1_and_g1_joins_by_dual_numbers() {
         ] {
             let left = motion::hermite::hermite_segment(kind, 3, &a, &b, &Shape::unit(), &left_end).unwrap();
             let right = motion::hermite::hermite_segment(kind, 3, &b, &c, &right_start, &Shape::unit()).unwrap();
-            let [_, psi_left] = end_indicatrices_by_duals(kind, &left.control_poses);
-            let [psi_right, _] = end_indicatrices_by_duals(kind, &right.control_poses);
+            let [_, psi_left] = end_indicatrices_by_duals(kind, left.control_poses());
+            let [psi_right, _] = end_indicatrices_by_duals(kind, right.control_poses());
             let check =
-                joins::check_join(&left.control_poses[3], &psi_left, &right.control_poses[0], &psi_right, &1e-10)
+                joins::check_join(&left.control_poses()[3], &psi_left, &right.control_poses()[0], &psi_right, &1e-10)
                     .unwrap();
             assert_eq!(common::size(&check.pose_jump), 0.0);
             match (&check.continuity, &expect) {
@@ -366,7 +366,7 @@ fn c1_and_g1_joins_by_dual_numbers() {
             }
             // The Corollary 4.6 route classifies the same way.
             let by_controls =
-                joins::check_segment_join((kind, &left.control_poses), (kind, &right.control_poses), &1e-10).unwrap();
+                joins::check_segment_join((kind, left.control_poses()), (kind, right.control_poses()), &1e-10).unwrap();
             assert_eq!(by_controls.continuity.is_c1(), check.continuity.is_c1(), "{kind}");
             assert!(by_controls.continuity.is_g1());
         }
