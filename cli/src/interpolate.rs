@@ -317,14 +317,9 @@ fn sample_json(s: &TrajectorySample<f64>) -> Result<Value, CliError> {
 /// (method, parameters, segments), then a first pass that computes every sample and discards
 /// it (a failure leaves stdout empty), then a second that writes them one by one.
 fn stream_json(b: &Built) -> Result<String, CliError> {
-    use crate::sample::write_error;
-    use std::io::Write;
     let n = if b.samples >= 2 { b.samples } else { 0 };
     if n > 0 {
         check_work(b, n)?;
-    }
-    for i in 0..n {
-        sample_json(&sample_at(b, n, i)?)?;
     }
     let segs: Vec<Value> = b
         .trajectory
@@ -341,7 +336,25 @@ fn stream_json(b: &Built) -> Result<String, CliError> {
             seg_json
         })
         .collect();
-    let head = json!({"method": b.method.name(), "parameters": b.times, "segments": segs}).to_string();
+    let head = json!({"method": b.method.name(), "parameters": b.times, "segments": segs});
+    write_streamed(&head, n, &|i| sample_json(&sample_at(b, n, i)?))
+}
+
+/// Writes `head` with a `samples` array of `n` objects appended, sample by sample in bounded
+/// memory, after a first pass that computes every sample and discards it (so a failure
+/// leaves stdout empty, as the error contract requires). Returns the empty string: the
+/// caller's final newline ends the JSON.
+fn write_streamed(
+    head: &Value,
+    n: usize,
+    sample: &dyn Fn(usize) -> Result<Value, CliError>,
+) -> Result<String, CliError> {
+    use crate::sample::write_error;
+    use std::io::Write;
+    for i in 0..n {
+        sample(i)?;
+    }
+    let head = head.to_string();
     let mut out = std::io::BufWriter::new(std::io::stdout().lock());
     out.write_all(head.strip_suffix('}').unwrap_or(&head).as_bytes()).map_err(write_error)?;
     out.write_all(b",\"samples\":[").map_err(write_error)?;
@@ -349,7 +362,7 @@ fn stream_json(b: &Built) -> Result<String, CliError> {
         if i > 0 {
             out.write_all(b",").map_err(write_error)?;
         }
-        serde_json::to_writer(&mut out, &sample_json(&sample_at(b, n, i)?)?).map_err(|e| write_error(e.into()))?;
+        serde_json::to_writer(&mut out, &sample(i)?).map_err(|e| write_error(e.into()))?;
     }
     out.write_all(b"]}").map_err(write_error)?;
     out.flush().map_err(write_error)?;
@@ -518,20 +531,25 @@ fn wl_output(w: &WlBuilt, json: bool) -> Result<String, CliError> {
                 seg
             })
             .collect();
-        let mut out = Vec::new();
-        if w.samples >= 2 {
-            wl_check_work(w, w.samples, w.body_points.len())?;
-            for t in wl_times(w, w.samples) {
-                let (pose, pos, vel, omega) = wl_sample(w, t, &w.body_points)?;
-                let matrix = pose.unitize().and_then(|u| u.to_matrix()).map_err(|e| CliError::math(e.to_string()))?;
-                let v3 = |v: &[f64; 3]| v.map(|x| x + 0.0);
-                out.push(json!({"t": t, "matrix": matrix.map(|r| r.map(|x| x + 0.0)),
-                    "points": pos.iter().map(v3).collect::<Vec<_>>(),
-                    "velocities": vel.iter().map(v3).collect::<Vec<_>>(),
-                    "angular_velocity": v3(&omega)}));
-            }
-        }
-        return Ok(json!({"method": name, "parameters": w.times, "segments": segments, "samples": out}).to_string());
+        let n = if w.samples >= 2 { w.samples } else { 0 };
+        let times = if n > 0 {
+            wl_check_work(w, n, w.body_points.len())?;
+            wl_times(w, n)
+        } else {
+            Vec::new()
+        };
+        let sample = |i: usize| -> Result<Value, CliError> {
+            let t = times[i];
+            let (pose, pos, vel, omega) = wl_sample(w, t, &w.body_points)?;
+            let matrix = pose.unitize().and_then(|u| u.to_matrix()).map_err(|e| CliError::math(e.to_string()))?;
+            let v3 = |v: &[f64; 3]| v.map(|x| x + 0.0);
+            Ok(json!({"t": t, "matrix": matrix.map(|r| r.map(|x| x + 0.0)),
+                "points": pos.iter().map(v3).collect::<Vec<_>>(),
+                "velocities": vel.iter().map(v3).collect::<Vec<_>>(),
+                "angular_velocity": v3(&omega)}))
+        };
+        let head = json!({"method": name, "parameters": w.times, "segments": segments});
+        return write_streamed(&head, n, &sample);
     }
     let t = w.times.iter().map(|x| format_f64(*x)).collect::<Vec<_>>().join(", ");
     let mut lines = vec![format!("{name}: {segs} segments through {} poses at t = [{t}]", w.times.len())];
