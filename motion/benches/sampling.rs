@@ -15,12 +15,13 @@
 //! Run with `cargo bench -p motion --bench sampling -- --warm-up-time 1 --measurement-time 3`.
 #![allow(missing_docs)]
 
-use criterion::{Criterion, Throughput, criterion_group};
+use criterion::{Criterion, criterion_group};
 use motion::trajectory::{Trajectory, Velocities};
 use motion::velocity::{body_point_kinematics, velocity};
 use motion::{HermiteShapes, Pose, SegmentKind};
 use std::hint::black_box;
-use std::time::Instant;
+
+mod interleaved;
 
 const SAMPLES: usize = 100;
 const TOOL: [f64; 3] = [0.1, 0.0, 0.3];
@@ -65,50 +66,27 @@ fn by_kinematics(tr: &Trajectory<f64>, ts: &[f64]) -> f64 {
 }
 
 fn bench(c: &mut Criterion) {
-    let ts = ts();
     for kind in [SegmentKind::Additive, SegmentKind::Multiplicative] {
-        let tr = trajectory(kind);
-        let mut g = c.benchmark_group(format!("sampling/{kind}"));
-        g.throughput(Throughput::Elements(SAMPLES as u64));
-        g.bench_function("sample", |b| b.iter(|| by_sampler(&tr, &ts)));
-        g.bench_function("velocity+kinematics", |b| b.iter(|| by_kinematics(&tr, &ts)));
-        g.finish();
+        interleaved::group(c, &format!("sampling/{kind}"), &KERNELS, &(trajectory(kind), ts()), SAMPLES);
     }
 }
 
-fn median(mut v: Vec<f64>) -> f64 {
-    v.sort_by(f64::total_cmp);
-    v[v.len() / 2]
-}
+/// What both paths sample: the trajectory and the sample times.
+type Data = (Trajectory<f64>, Vec<f64>);
 
-/// Both paths back to back in every round (alternating order), median of the per-round ratios:
+/// The two paths as interleaved kernels, sampler first.
+const KERNELS: [(&str, interleaved::Kernel<Data>); 2] =
+    [("sample", |d| by_sampler(&d.0, &d.1)), ("velocity+kinematics", |d| by_kinematics(&d.0, &d.1))];
+
+/// Both paths back to back in every round (rotating order), median of the per-round ratios:
 /// robust to the load changing between criterion groups on a shared machine.
 fn interleaved_report(rounds: usize) {
-    let ts = ts();
     println!("\ninterleaved ({rounds} rounds, median per sample):");
     for kind in [SegmentKind::Additive, SegmentKind::Multiplicative] {
-        let tr = trajectory(kind);
-        let (mut a, mut b) = (Vec::with_capacity(rounds), Vec::with_capacity(rounds));
-        for round in 0..rounds {
-            let time = |f: fn(&Trajectory<f64>, &[f64]) -> f64| {
-                let start = Instant::now();
-                black_box(f(&tr, &ts));
-                start.elapsed().as_secs_f64() / SAMPLES as f64
-            };
-            if round % 2 == 0 {
-                a.push(time(by_sampler));
-                b.push(time(by_kinematics));
-            } else {
-                b.push(time(by_kinematics));
-                a.push(time(by_sampler));
-            }
-        }
-        let ratio = median(b.iter().zip(&a).map(|(x, y)| x / y).collect());
-        println!(
-            "  {kind:<15} sample {:>8.2} µs, velocity+kinematics {:>8.2} µs, ratio {ratio:.2}",
-            median(a) * 1e6,
-            median(b) * 1e6
-        );
+        let times = interleaved::times(&KERNELS, &(trajectory(kind), ts()), rounds, SAMPLES);
+        println!(" {kind}:");
+        interleaved::print_medians(&KERNELS, &times);
+        println!("  ratio (velocity+kinematics) / sample = {:.2}", interleaved::ratio(&times, 1, 0));
     }
 }
 
