@@ -274,7 +274,13 @@ fn finite3(v: &[f64; 3]) -> bool {
 /// with the largest segment degree, checked against the budget.
 fn check_work(b: &Built, n: usize) -> Result<(), CliError> {
     let degree = b.trajectory.segments().iter().map(|s| s.degree()).max().unwrap_or(0);
-    let points = b.body_points.len().max(1);
+    check_sampling_work(b.body_points.len(), degree, n)
+}
+
+/// The budget check of sampling `points` body points (at least one: the pose itself is
+/// sampled) on segments of degree at most `degree` at `n` values, for every method.
+fn check_sampling_work(points: usize, degree: usize, n: usize) -> Result<(), CliError> {
+    let points = points.max(1);
     crate::budget::check(
         &format!("sampling {points} body points of degree-{degree} segments at {n} values"),
         crate::budget::sampling_work(degree, n) * points as f64,
@@ -571,10 +577,7 @@ fn wl_output(w: &WlBuilt, json: bool) -> Result<String, CliError> {
 /// `points` body points at `n` values.
 fn wl_check_work(w: &WlBuilt, n: usize, points: usize) -> Result<usize, CliError> {
     let degree = (0..w.times.len() - 1).map(|k| wl_segment(w, k).1).max().unwrap_or(1);
-    crate::budget::check(
-        &format!("sampling {points} body points of degree-{degree} segments at {n} values"),
-        crate::budget::sampling_work(degree, n) * points.max(1) as f64,
-    )?;
+    check_sampling_work(points, degree, n)?;
     Ok(degree)
 }
 
