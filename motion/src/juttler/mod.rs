@@ -34,7 +34,7 @@ pub mod tr;
 
 pub use parametrisation::{Parametrisation, parameters};
 pub use q_motion::QMotion;
-pub use rational_trajectory::RationalBezier;
+pub use rational_trajectory::{RationalBezier, RationalMotion};
 
 use crate::MotionError;
 use crate::repr::ReprError;

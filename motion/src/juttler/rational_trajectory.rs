@@ -197,3 +197,28 @@ impl<T: Ring> QMotion<T> {
         RationalBezier { control }
     }
 }
+
+/// A motion whose body-point trajectories are rational Bézier curves (Jüttler's point of
+/// view, Sec. 1): Q-motions (degree `2n`), his minimal-order motions (degree `2m`), the main
+/// paper's additive Bézier motions (degree `2n` for a Bézier motion of degree `n`). One
+/// segment, in its own parameter on `[0, 1]`; piecewise motions expose their segments.
+///
+/// ```
+/// use algebra_core::rational::{q, ratio};
+/// use gam_algebras::DualQuaternion;
+/// use motion::juttler::{QMotion, RationalMotion};
+/// let d = |c: [i64; 8]| DualQuaternion::from_coeffs(c.map(q));
+/// let m = QMotion::new_exact(vec![d([1, 0, 0, 0, 0, 0, 0, 0]), d([1, 0, 0, 1, 0, 0, 0, 0])]).unwrap();
+/// let path = m.rational_trajectory(&[q(1), q(0), q(0)]).unwrap();
+/// assert_eq!(path.point(&q(1)).unwrap(), [q(0), q(1), q(0)]);
+/// ```
+pub trait RationalMotion<T: Ring> {
+    /// The trajectory of the body point `x` as a rational Bézier curve on `[0, 1]`.
+    fn rational_trajectory(&self, x: &[T; 3]) -> Result<RationalBezier<T>, JuttlerError>;
+}
+
+impl<T: Ring> RationalMotion<T> for QMotion<T> {
+    fn rational_trajectory(&self, x: &[T; 3]) -> Result<RationalBezier<T>, JuttlerError> {
+        Ok(self.trajectory(x))
+    }
+}
