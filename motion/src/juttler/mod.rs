@@ -10,6 +10,7 @@
 //! | [`rotational`] | interpolation of the rotational parts: affine (19)-(21), elliptic (22)-(25) with the sign rule (24) | Props. 1, 2 |
 //! | [`projective`] | the projective method (27)-(28): the null space of a homogeneous system, degree `3m/4`, unique up to a real factor | Prop. 3 |
 //! | [`tr`] | the TR method (30)-(31) and Algorithm 1 (elliptic + TR, degree `2m`) | Prop. 4, Algorithm 1 |
+//! | [`trt`] | the TRT method (32)-(34): translations on both sides, split `l1 + l2 = m - 1`, independent of the moving origin | Result 5 |
 //!
 //! The parametrisations that take square roots or angles need [`algebra_core::Real`]; the
 //! rest is exact over [`algebra_core::rational::Q`].
@@ -33,6 +34,7 @@ pub mod q_motion;
 pub mod rational_trajectory;
 pub mod rotational;
 pub mod tr;
+pub mod trt;
 
 pub use parametrisation::{Parametrisation, parameters};
 pub use q_motion::QMotion;

@@ -98,6 +98,12 @@ impl<T: Ring> QMotion<T> {
         Self::new(control, 0.0)
     }
 
+    /// The curve with these control points, without the Study check: for sums and products of
+    /// Q-motions that lie on the quadric by construction.
+    pub(crate) fn from_control_unchecked(control: Vec<DualQuaternion<T>>) -> Self {
+        QMotion { control }
+    }
+
     /// The control points `B_0, …, B_n`.
     ///
     /// ```
