@@ -2,52 +2,17 @@
 //! split l1 + l2 = m - 1, independence of the moving origin (TRT) against the dependence of
 //! the TR method (Prop. 4), both exactly on a random rational instance; typed errors.
 
-use algebra_core::rational::{Q, q, ratio};
+use algebra_core::rational::{q, ratio};
 use gam_algebras::DualQuaternion;
 use gam_algebras::dual_quaternion::Quaternion;
-use motion::juttler::rotational::{affine, elliptic_normalised};
-use motion::juttler::tr::{rotation_translation, tr_method};
+mod juttler_common;
+
+use juttler_common::{instance, position, rot_of};
+use motion::juttler::JuttlerError;
+use motion::juttler::rotational::elliptic_normalised;
+use motion::juttler::tr::tr_method;
 use motion::juttler::trt::{trt, trt_method};
-use motion::juttler::{JuttlerError, QMotion};
-use motion::repr::dual_quaternion::from_dual_quaternion_exact;
 use motion::{Motion, Pose};
-
-/// A small deterministic generator of integers in `[-5, 5]`.
-struct Rng(u64);
-
-impl Rng {
-    fn int(&mut self) -> i64 {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 7;
-        self.0 ^= self.0 << 17;
-        (self.0 % 11) as i64 - 5
-    }
-}
-
-/// The position `(2 + ε s) * R` (14) as a pose.
-fn position(r: &Quaternion<Q>, s: &[Q; 3]) -> Pose<Q> {
-    let dq = DualQuaternion::new(r.clone(), &Quaternion::pure(s).scale(&ratio(1, 2)) * r);
-    from_dual_quaternion_exact(&dq).unwrap()
-}
-
-/// `m + 1` random rational positions (rotations with non-zero scalar part) and parameters.
-fn instance(seed: u64, m: usize) -> (Vec<Pose<Q>>, Vec<Q>) {
-    let mut g = Rng(seed);
-    let poses = (0..=m)
-        .map(|_| {
-            let w = g.int().abs() + 1;
-            let r = Quaternion::new(q(w), q(g.int()), q(g.int()), q(g.int()));
-            position(&r, &[ratio(g.int(), 2), q(g.int()), ratio(g.int(), 3)])
-        })
-        .collect();
-    let t = (0..=m).map(|i| ratio(i as i64 * i as i64 + i as i64, (m * m + m) as i64)).collect();
-    (poses, t)
-}
-
-fn rot_of(poses: &[Pose<Q>], t: &[Q]) -> QMotion<Q> {
-    let rots: Vec<_> = poses.iter().map(|p| rotation_translation(p).unwrap().0).collect();
-    affine(&rots, t).unwrap()
-}
 
 #[test]
 fn trt_interpolates_exactly_for_every_split() {

@@ -4,6 +4,7 @@
 //!
 //! | module | contents | paper |
 //! |---|---|---|
+//! | [`minimal`] | [`minimal::MinimalMotion`]: rational motions of order `n` (35)-(36); interpolation (37)-(39), order `2m` | Thm. 6, Sec. 5 |
 //! | [`parametrisation`] | parameters `t_i` of the given positions: chordal, `*`-chordal, equidistant, centripetal, angular, angle + distance, explicit | eq. (15) |
 //! | [`q_motion`] | [`QMotion`]: Bézier curves of dual quaternions on the Study quadric; de Casteljau, degree elevation, product formula (29), the Study condition as a polynomial; a [`crate::Motion`] | eqs. (13), (29), (8) |
 //! | [`rational_trajectory`] | [`RationalBezier`]: the trajectory of a body point as a rational Bézier curve of degree `2n`; evaluation, derivative, degree elevation | eq. (12), Sec. 1 |
@@ -28,6 +29,7 @@
 //! assert_eq!(path.point(&ratio(1, 2)).unwrap(), [q(0), q(0), q(1)]);
 //! ```
 
+pub mod minimal;
 pub mod parametrisation;
 pub mod projective;
 pub mod q_motion;
