@@ -3,14 +3,15 @@
 //! the motion and with the (higher-degree) trajectories of the Q-motion (36), the matrix (35)
 //! against the trajectory; a general w0*; f64 through the elliptic method.
 
+mod common;
 mod juttler_common;
 
 use algebra_core::rational::{Q, q, ratio};
 use gam_algebras::dual_quaternion::Quaternion;
-use juttler_common::{Rng, instance, rot_of};
+use juttler_common::{Rng, f64_poses, instance, int, rot_of};
+use motion::Motion;
 use motion::juttler::minimal::{MinimalMotion, minimal, minimal_method};
 use motion::juttler::{JuttlerError, RationalMotion};
-use motion::{Motion, Pose};
 
 /// `(1, x)` mapped by the 4x4 matrix `m`.
 fn apply(m: &[[Q; 4]; 4], x: &[Q; 3]) -> [Q; 4] {
@@ -51,9 +52,11 @@ fn minimal_order_interpolates_exactly_with_order_2m() {
 fn theorem_6_general_w0() {
     // random w0* (degree n - 2k), w (degree n), D (degree k) with n = 5, k = 2
     let mut g = Rng(21);
-    let w0: Vec<Q> = (0..2).map(|_| q(g.int().abs() + 1)).collect();
-    let w: Vec<[Q; 3]> = (0..6).map(|_| [q(g.int()), q(g.int()), q(g.int())]).collect();
-    let d: Vec<_> = (0..3).map(|_| Quaternion::new(q(g.int().abs() + 1), q(g.int()), q(g.int()), q(g.int()))).collect();
+    let w0: Vec<Q> = (0..2).map(|_| q(int(&mut g).abs() + 1)).collect();
+    let w: Vec<[Q; 3]> = (0..6).map(|_| [q(int(&mut g)), q(int(&mut g)), q(int(&mut g))]).collect();
+    let d: Vec<_> = (0..3)
+        .map(|_| Quaternion::new(q(int(&mut g).abs() + 1), q(int(&mut g)), q(int(&mut g)), q(int(&mut g))))
+        .collect();
     let m = MinimalMotion::new(w0, w, d).unwrap();
     assert_eq!(m.order(), 5);
     let qm = m.q_motion();
@@ -85,13 +88,9 @@ fn minimal_errors_are_typed() {
 
 #[test]
 fn minimal_in_f64_through_the_elliptic_method() {
-    let poses = [
-        Pose::<f64>::identity(),
-        Pose::from_axis_angle_translation(&[0.0, 0.0, 1.0], &1.2, &[1.0, 2.0, 0.0]).unwrap(),
-        Pose::from_axis_angle_translation(&[1.0, 1.0, 0.0], &0.7, &[3.0, 0.0, 1.0]).unwrap(),
-    ];
+    let poses = &f64_poses()[..3];
     let t = [0.0, 0.45, 1.0];
-    let m = minimal(&poses, &t).unwrap();
+    let m = minimal(poses, &t).unwrap();
     assert_eq!(m.order(), 4);
     for (p, ti) in poses.iter().zip(&t) {
         assert!(m.pose(ti).unwrap().is_equivalent(p, &1e-12).unwrap());

@@ -5,9 +5,10 @@
 use algebra_core::rational::{q, ratio};
 use gam_algebras::DualQuaternion;
 use gam_algebras::dual_quaternion::Quaternion;
+mod common;
 mod juttler_common;
 
-use juttler_common::{instance, position, rot_of};
+use juttler_common::{f64_poses, instance, position, rot_of};
 use motion::juttler::JuttlerError;
 use motion::juttler::rotational::elliptic_normalised;
 use motion::juttler::tr::tr_method;
@@ -110,12 +111,7 @@ fn trt_errors_are_typed() {
 
 #[test]
 fn trt_in_f64_interpolates() {
-    let poses = [
-        Pose::<f64>::identity(),
-        Pose::from_axis_angle_translation(&[0.0, 0.0, 1.0], &1.2, &[1.0, 2.0, 0.0]).unwrap(),
-        Pose::from_axis_angle_translation(&[1.0, 1.0, 0.0], &0.7, &[3.0, 0.0, 1.0]).unwrap(),
-        Pose::from_axis_angle_translation(&[0.0, 1.0, 0.0], &-0.4, &[2.0, -1.0, 2.0]).unwrap(),
-    ];
+    let poses = f64_poses();
     let t = [0.0, 0.3, 0.6, 1.0];
     for l1 in 0..3 {
         let m = trt(&poses, &t, l1).unwrap();
