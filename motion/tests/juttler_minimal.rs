@@ -104,3 +104,11 @@ fn minimal_in_f64_through_the_elliptic_method() {
         assert!((0..3).all(|k| (y[k] - z[k]).abs() < 1e-12), "{s}");
     }
 }
+
+#[test]
+fn minimal_refuses_nan() {
+    let poses = f64_poses();
+    assert!(matches!(minimal(&poses[..3], &[0.0, 0.5, 0.5]), Err(JuttlerError::Parameters { .. })));
+    let nan = MinimalMotion::new(vec![f64::NAN], vec![[0.0; 3]], vec![Quaternion::one()]);
+    assert!(matches!(nan, Err(JuttlerError::Parameters { .. })));
+}

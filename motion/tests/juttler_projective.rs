@@ -130,3 +130,15 @@ fn projective_in_f64_interpolates() {
         assert!((1.0 - cos2).abs() < 1e-12, "{cos2}");
     }
 }
+
+#[test]
+fn projective_refuses_nan_and_equal_parameters() {
+    let r: Vec<Quaternion<f64>> = (0..5).map(|i| Quaternion::new(1.0, f64::from(i), 0.5, -0.25)).collect();
+    let t = [0.0, 0.25, 0.5, 0.75, 1.0];
+    let mut bad = r.clone();
+    bad[1].y = f64::NAN;
+    assert!(matches!(projective(&bad, &t), Err(JuttlerError::Parameters { .. })));
+    assert!(matches!(projective(&r, &[0.0, 0.25, f64::NAN, 0.75, 1.0]), Err(JuttlerError::Parameters { .. })));
+    let e = projective(&r, &[0.0, 0.25, 0.25, 0.75, 1.0]).unwrap_err();
+    assert_eq!(e.to_string(), "parameters: parameters 1 and 2 are equal");
+}

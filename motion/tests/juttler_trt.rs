@@ -120,3 +120,18 @@ fn trt_in_f64_interpolates() {
         }
     }
 }
+
+#[test]
+fn trt_refuses_nan_and_equal_parameters() {
+    let mut poses = f64_poses();
+    let t = [0.0, 0.3, 0.6, 1.0];
+    assert!(matches!(trt(&poses, &[0.0, 0.3, 0.3, 1.0], 1), Err(JuttlerError::Parameters { .. })));
+    assert!(matches!(trt(&poses, &[0.0, f64::NAN, 0.6, 1.0], 1), Err(JuttlerError::Parameters { .. })));
+    let rot = motion::juttler::rotational::elliptic(
+        &poses.iter().map(|p| motion::juttler::tr::rotation_translation(p).unwrap().0).collect::<Vec<_>>(),
+        &t,
+    )
+    .unwrap();
+    poses[2] = Pose::translation(&[f64::NAN, 0.0, 0.0]);
+    assert!(matches!(trt_method(&rot, &poses, &t, 1), Err(JuttlerError::Parameters { .. })));
+}

@@ -1,6 +1,6 @@
 //! Jüttler, "Visualization of moving objects using dual quaternion curves", statement by
 //! statement. The paper's formulas are typed in below (an independent reference) and compared
-//! with GAM's [`DualQuaternion`] / [`Pose`] and with a second computation:
+//! with GAM's [`DualQuaternion`] / [`Pose`](motion::Pose) and with a second computation:
 //!
 //! * `juttler/eq-8` (Plücker's relation): for the dual quaternion `Q = (2v0 + εv)(d0 + d)` of
 //!   eq. (7), with all eight parameters symbolic (`Poly`): the library product equals the

@@ -38,7 +38,8 @@ use super::rotational::{check_count, elliptic, solve_bernstein};
 use super::tr::rotation_translation;
 use super::trt::rotation_curve;
 use super::{
-    JuttlerError, QMotion, RationalBezier, RationalMotion, bernstein_product, de_casteljau_with, elevate_with,
+    JuttlerError, QMotion, RationalBezier, RationalMotion, bernstein_product, check_finite_distinct, de_casteljau_with,
+    elevate_with,
 };
 use crate::repr::dual_quaternion::{DualQuaternion, Quaternion, from_dual_quaternion_exact, matrix_u};
 use crate::{CurveError, MapScalar, Motion, Pose};
@@ -85,6 +86,10 @@ impl<T: Ring> MinimalMotion<T> {
         let bad = |why: String| Err(JuttlerError::Parameters { why });
         if w.is_empty() || d.is_empty() {
             return bad("(35) needs w and D (at least one coefficient each)".into());
+        }
+        let coefficients = w0.iter().chain(w.iter().flatten()).chain(d.iter().flat_map(|r| [&r.w, &r.x, &r.y, &r.z]));
+        if coefficients.into_iter().any(|x| !x.is_finite_value()) {
+            return bad("(35) has a coefficient that is not finite".into());
         }
         let (n, k) = (w.len() - 1, d.len() - 1);
         if 2 * k > n {
@@ -297,6 +302,7 @@ pub fn minimal_method<T: Field>(
 ) -> Result<MinimalMotion<T>, JuttlerError> {
     check_count(poses.len(), params)?;
     rotation_curve(rot)?;
+    check_finite_distinct(params, poses.iter().flat_map(Pose::components))?;
     let rhs = poses
         .iter()
         .zip(params)

@@ -248,3 +248,25 @@ pub(crate) fn de_casteljau_with<C: Clone, T: Ring>(c: &[C], t: &T, lerp: impl Fn
 pub(crate) fn recip_or<T: Field>(x: &T, what: impl FnOnce() -> String) -> Result<T, JuttlerError> {
     x.try_recip().ok_or_else(|| JuttlerError::ZeroWeight { what: what() })
 }
+
+/// Fails ([`JuttlerError::Parameters`]) unless every value and parameter is finite and the
+/// parameters are pairwise distinct (for the methods whose systems would otherwise fail with
+/// a less telling reason, or silently produce NaN).
+pub(crate) fn check_finite_distinct<'a, T: Ring + 'a>(
+    params: &[T],
+    values: impl IntoIterator<Item = &'a T>,
+) -> Result<(), JuttlerError> {
+    let why = |why: String| Err(JuttlerError::Parameters { why });
+    if let Some(i) = params.iter().position(|t| !t.is_finite_value()) {
+        return why(format!("parameter {i} is not finite"));
+    }
+    if values.into_iter().any(|x| !x.is_finite_value()) {
+        return why("a position has a coefficient that is not finite".into());
+    }
+    for (i, a) in params.iter().enumerate() {
+        if let Some(j) = params[..i].iter().position(|b| b == a) {
+            return why(format!("parameters {j} and {i} are equal"));
+        }
+    }
+    Ok(())
+}

@@ -33,7 +33,7 @@
 //! ```
 
 use super::rotational::{check_count, rotational};
-use super::{JuttlerError, QMotion, bernstein_values};
+use super::{JuttlerError, QMotion, bernstein_values, check_finite_distinct};
 use crate::repr::dual_quaternion::Quaternion;
 use algebra_core::Field;
 
@@ -170,6 +170,7 @@ pub fn projective_with_degree<T: Field>(
     k: usize,
 ) -> Result<QMotion<T>, JuttlerError> {
     check_count(rotations.len(), params)?;
+    check_finite_distinct(params, rotations.iter().flat_map(|r| [&r.w, &r.x, &r.y, &r.z]))?;
     let a = system(rotations, params, k)?;
     let mut basis = null_space(&a, 4 * (k + 1));
     let x = match basis.len() {

@@ -29,7 +29,7 @@
 use super::projective::null_space;
 use super::rotational::{check_count, elliptic};
 use super::tr::rotation_translation;
-use super::{JuttlerError, QMotion, bernstein_values};
+use super::{JuttlerError, QMotion, bernstein_values, check_finite_distinct};
 use crate::Pose;
 use crate::repr::dual_quaternion::{DualQuaternion, Quaternion, matrix_u};
 use algebra_core::linalg::solve;
@@ -96,6 +96,7 @@ pub fn trt_method<T: Field>(
         return Err(JuttlerError::Split { l1, max: m - 1 });
     }
     rotation_curve(rot)?;
+    check_finite_distinct(params, poses.iter().flat_map(Pose::components))?;
     let l2 = m - 1 - l1;
     let s = poses.iter().map(|p| Ok(rotation_translation(p)?.1)).collect::<Result<Vec<_>, JuttlerError>>()?;
     // unknowns: p^(1)_0 .. p^(1)_l1, then p^(2)_0 .. p^(2)_l2, three coordinates each
