@@ -112,3 +112,24 @@ fn minimal_refuses_nan() {
     let nan = MinimalMotion::new(vec![f64::NAN], vec![[0.0; 3]], vec![Quaternion::one()]);
     assert!(matches!(nan, Err(JuttlerError::Parameters { .. })));
 }
+
+#[test]
+fn point_velocities_through_the_motion_vocabulary_match_the_trajectory_derivative() {
+    // velocity() lifts the motion to dual numbers (MapScalar) and differentiates the pose; the
+    // rational trajectory is differentiated by its hodograph: two independent routes
+    let poses = f64_poses();
+    let t = [0.0, 0.3, 0.6, 1.0];
+    let m = minimal(&poses, &t).unwrap();
+    let trt = motion::juttler::trt::trt(&poses, &t, 2).unwrap();
+    let x = [0.4, -1.0, 0.7];
+    for s in [0.05, 0.3, 0.55, 0.9] {
+        for (v, path) in [
+            (motion::velocity::velocity(&m, &s).unwrap(), m.trajectory(&x)),
+            (motion::velocity::velocity(&trt, &s).unwrap(), trt.trajectory(&x)),
+        ] {
+            let (q, dq) = v.body_point_velocity(&x).unwrap();
+            let (p, dp) = (path.point(&s).unwrap(), path.derivative(&s).unwrap());
+            assert!((0..3).all(|k| (q[k] - p[k]).abs() < 1e-12 && (dq[k] - dp[k]).abs() < 1e-10), "{s}: {dq:?} {dp:?}");
+        }
+    }
+}
