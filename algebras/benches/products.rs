@@ -120,7 +120,7 @@ fn data() -> &'static Data {
         let mut table = Vec::new();
         for a in 0..32u32 {
             for b in 0..32u32 {
-                for (k, coeff) in gp.get(a, b) {
+                for (k, coeff) in gp.get(a, b).expect("a, b < 32") {
                     table.push(Entry { a: a as u8, b: b as u8, k: *k as u8, sign: f64::from_rational(coeff) });
                 }
             }

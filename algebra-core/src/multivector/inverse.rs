@@ -37,7 +37,7 @@ impl<T: Field> Multivector<T> {
                 continue;
             }
             for j in 0..dim {
-                for (k, c) in table.get(a as u32, j as u32) {
+                for (k, c) in table.at(a as u32, j as u32) {
                     l[*k as usize][j].add_assign_ref(&x.scale_rational(c));
                 }
             }

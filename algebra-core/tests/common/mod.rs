@@ -85,7 +85,7 @@ pub fn bilinear(alg: &Algebra, u: &[Q], v: &[Q]) -> Q {
     let mut s = q(0);
     for (i, ui) in u.iter().enumerate() {
         for (j, vj) in v.iter().enumerate() {
-            s += ui * vj * alg.metric().gram(i, j);
+            s += ui * vj * alg.metric().gram(i, j).unwrap();
         }
     }
     s
