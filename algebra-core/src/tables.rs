@@ -396,7 +396,7 @@ impl Tables {
     /// use algebra_core::{Algebra, Basis, Product, rational::q};
     /// let alg = Algebra::builtin("cga-null").unwrap();
     /// let op = alg.tables().product(Basis::Blade, Product::Outer);
-    /// assert_eq!(op.get(0b10000, 0b00001), &[(0b10001, q(-1))]); // einf ^ e0 = -e0inf
+    /// assert_eq!(op.get(0b10000, 0b00001).unwrap(), &[(0b10001, q(-1))]); // einf ^ e0 = -e0inf
     /// ```
     pub fn product(&self, basis: Basis, product: Product) -> &ProductTable {
         self.products[basis_index(basis)][product.index()].get_or_init(|| match (basis, product) {
@@ -417,7 +417,7 @@ impl Tables {
     /// let alg = Algebra::builtin("cga-null").unwrap();
     /// // the true reverse of product-basis e0inf is einf e0 = -2 - e0inf
     /// let rev = alg.tables().unary(Basis::Product, Unary::Reverse);
-    /// assert_eq!(rev.image(0b10001), &[(0, q(-2)), (0b10001, q(-1))]);
+    /// assert_eq!(rev.image(0b10001).unwrap(), &[(0, q(-2)), (0b10001, q(-1))]);
     /// ```
     pub fn unary(&self, basis: Basis, op: Unary) -> &LinearMap {
         self.unaries[basis_index(basis)][op.index()].get_or_init(|| {
@@ -453,7 +453,7 @@ impl Tables {
     /// let alg = Algebra::builtin("cga-null").unwrap();
     /// // <e0inf>_0 = -1 for the product-basis element e0 einf
     /// let g0 = alg.tables().grade_projection(Basis::Product, 0);
-    /// assert_eq!(g0.image(0b10001), &[(0, q(-1))]);
+    /// assert_eq!(g0.image(0b10001).unwrap(), &[(0, q(-1))]);
     /// ```
     pub fn grade_projection(&self, basis: Basis, k: usize) -> &LinearMap {
         let n = self.metric.dimension();
