@@ -131,7 +131,12 @@ impl Names {
             .map(|t| {
                 t.elements
                     .iter()
-                    .map(|m| t.renamed.get(m).map_or_else(|| alg.name_of(*m).to_string(), |(n, _)| n.clone()))
+                    .map(|m| {
+                        t.renamed.get(m).map_or_else(
+                            || alg.name_of(*m).expect("a mask of the spec's algebra").to_string(),
+                            |(n, _)| n.clone(),
+                        )
+                    })
                     .collect()
             })
             .collect();
@@ -183,7 +188,8 @@ pub fn module_items(plan: &Plan) -> TokenStream {
     let n = labels.len();
     let gram: Vec<TokenStream> = (0..n)
         .map(|i| {
-            let row: Vec<String> = (0..n).map(|j| format_rational(alg.metric().gram(i, j))).collect();
+            let row: Vec<String> =
+                (0..n).map(|j| format_rational(alg.metric().gram(i, j).expect("i, j < n"))).collect();
             quote!(&[#(#row),*])
         })
         .collect();
@@ -300,9 +306,36 @@ fn type_items(plan: &Plan, names: &Names, i: usize) -> TokenStream {
 
             /// The projection of a runtime multivector onto this type: its coefficients on this
             /// type's basis elements (in [`BASIS`]); every other coefficient is dropped.
+            ///
+            /// # Panics
+            /// When `m` belongs to an algebra with fewer basis elements than [`algebra()`]; use
+            /// [`Self::try_project`] for multivectors of unknown origin.
             pub fn project(m: &::algebra_core::Multivector<T>) -> Self {
                 let m = m.in_basis(BASIS);
                 #ty { #(#fields: #from_runtime),* }
+            }
+
+            /// [`Self::project`] after checking that `m` belongs to [`algebra()`] (same metric):
+            /// `MvError::AlgebraMismatch` otherwise, so a multivector of another (smaller or
+            /// larger) algebra is refused instead of indexed.
+            pub fn try_project(
+                m: &::algebra_core::Multivector<T>,
+            ) -> ::core::result::Result<Self, ::algebra_core::MvError> {
+                Self::check_algebra(m)?;
+                Ok(Self::project(m))
+            }
+
+            /// `Ok` when `m` belongs to [`algebra()`] (the same metric).
+            fn check_algebra(m: &::algebra_core::Multivector<T>) -> ::core::result::Result<(), ::algebra_core::MvError> {
+                let own = algebra();
+                if ::std::sync::Arc::ptr_eq(m.algebra(), &own) || m.algebra().metric() == own.metric() {
+                    Ok(())
+                } else {
+                    Err(::algebra_core::MvError::AlgebraMismatch {
+                        left: ::std::string::String::from(m.algebra().name()),
+                        right: ::std::string::String::from(own.name()),
+                    })
+                }
             }
 
             /// A general element with symbolic coefficients named `prefix` + the basis label
@@ -389,6 +422,7 @@ fn type_items(plan: &Plan, names: &Names, i: usize) -> TokenStream {
             type Error = ::algebra_core::MvError;
             /// Exact conversion: fails if the multivector has a non-zero coefficient outside this type.
             fn try_from(m: &::algebra_core::Multivector<T>) -> ::core::result::Result<Self, Self::Error> {
+                Self::check_algebra(m)?;
                 let converted = m.in_basis(BASIS);
                 for (mask, name, _) in converted.terms() {
                     if !Self::MASKS.contains(&mask) {

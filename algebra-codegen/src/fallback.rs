@@ -31,7 +31,11 @@ fn homeless_supports(spec: &ModuleSpec) -> Vec<BTreeSet<u32>> {
                 let support: BTreeSet<u32> = a
                     .elements
                     .iter()
-                    .flat_map(|&ma| b.elements.iter().flat_map(move |&mb| table.get(ma, mb).iter().map(|(k, _)| *k)))
+                    .flat_map(|&ma| {
+                        b.elements.iter().flat_map(move |&mb| {
+                            table.get(ma, mb).expect("a mask of the spec's algebra").iter().map(|(k, _)| *k)
+                        })
+                    })
                     .collect();
                 if homeless(&support) {
                     out.push(support);
@@ -42,8 +46,11 @@ fn homeless_supports(spec: &ModuleSpec) -> Vec<BTreeSet<u32>> {
     for op in UNARY_OPS {
         let map = tables.unary(spec.basis, op);
         for t in &spec.types {
-            let support: BTreeSet<u32> =
-                t.elements.iter().flat_map(|&m| map.image(m).iter().map(|(k, _)| *k)).collect();
+            let support: BTreeSet<u32> = t
+                .elements
+                .iter()
+                .flat_map(|&m| map.image(m).expect("a mask of the spec's algebra").iter().map(|(k, _)| *k))
+                .collect();
             if homeless(&support) {
                 out.push(support);
             }

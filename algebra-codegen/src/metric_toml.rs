@@ -33,7 +33,7 @@ use std::sync::Arc;
 ///     "<string>",
 /// ).unwrap();
 /// assert_eq!(name.as_deref(), Some("h"));
-/// assert_eq!(m.gram(1, 0), &algebra_core::rational::ratio(1, 2));
+/// assert_eq!(m.gram(1, 0).unwrap(), &algebra_core::rational::ratio(1, 2));
 /// ```
 pub fn metric_from_toml_str(text: &str, path: &str) -> Result<(Option<String>, Metric), MetricError> {
     let err = |message: String| MetricError::Toml { path: path.to_string(), message };

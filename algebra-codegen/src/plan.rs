@@ -161,7 +161,7 @@ impl Plan {
                     let mut raw: Vec<(u32, Term)> = Vec::new();
                     for (a, &ma) in lt.elements.iter().enumerate() {
                         for (b, &mb) in rt.elements.iter().enumerate() {
-                            for (k, c) in table.get(ma, mb) {
+                            for (k, c) in table.get(ma, mb).expect("a mask of the spec's algebra") {
                                 raw.push((*k, Term { lhs: a, rhs: b, coef: to_ratio(c)? }));
                             }
                         }
@@ -190,7 +190,7 @@ impl Plan {
             for (ti, t) in spec.types.iter().enumerate() {
                 let mut raw: Vec<(u32, usize, Ratio)> = Vec::new();
                 for (a, &ma) in t.elements.iter().enumerate() {
-                    for (k, c) in map.image(ma) {
+                    for (k, c) in map.image(ma).expect("a mask of the spec's algebra") {
                         raw.push((*k, a, to_ratio(c)?));
                     }
                 }

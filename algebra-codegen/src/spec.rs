@@ -143,7 +143,7 @@ impl TypeSpec {
                 if masks.contains(&m) {
                     return Err(CodegenError::DuplicateElement { ty: name.to_string(), element: el.to_string() });
                 }
-                if el != algebra.name_of(m) {
+                if algebra.name_of(m).is_ok_and(|name| el != name) {
                     renamed.insert(m, (el.to_string(), sign));
                 }
                 masks.push(m);

@@ -102,7 +102,11 @@ fn action(spec: &ModuleSpec, convention: Convention, v: usize, x: usize) -> Resu
     let (vm, xm) = (&spec.types[v].elements, &spec.types[x].elements);
     // the versor's field `a` as a sum of basis elements, reversed or not
     let image = |a: usize, reversed: bool| -> Vec<(u32, Q)> {
-        if reversed { rev.image(vm[a]).to_vec() } else { vec![(vm[a], Q::from_integer(1.into()))] }
+        if reversed {
+            rev.image(vm[a]).expect("a mask of the spec's algebra").to_vec()
+        } else {
+            vec![(vm[a], Q::from_integer(1.into()))]
+        }
     };
     let (left_rev, right_rev) = match convention {
         Convention::Sandwich => (true, false),
@@ -113,7 +117,7 @@ fn action(spec: &ModuleSpec, convention: Convention, v: usize, x: usize) -> Resu
     for a in 0..vm.len() {
         for (m, r) in image(a, left_rev) {
             for (b, &mb) in xm.iter().enumerate() {
-                for (k, c) in gp.get(m, mb) {
+                for (k, c) in gp.get(m, mb).expect("a mask of the spec's algebra") {
                     *t.entry(*k).or_default().entry((a, b)).or_insert_with(Q::zero) += &r * c;
                 }
             }
@@ -126,7 +130,7 @@ fn action(spec: &ModuleSpec, convention: Convention, v: usize, x: usize) -> Resu
     for &k in t.keys() {
         for a in 0..vm.len() {
             for (m, r) in image(a, right_rev) {
-                for (j, c) in gp.get(k, m) {
+                for (j, c) in gp.get(k, m).expect("a mask of the spec's algebra") {
                     if xm.contains(j) {
                         *o.entry(*j).or_default().entry((k, a)).or_insert_with(Q::zero) += &r * c;
                     }

@@ -2,6 +2,7 @@
 
 use crate::basis::{self, BasisError};
 use crate::metric::{Metric, MetricError};
+use crate::multivector::MvError;
 use crate::rational::{Q, q};
 use crate::tables::Tables;
 use std::collections::HashMap;
@@ -155,7 +156,7 @@ impl Algebra {
     ///
     /// ```
     /// use algebra_core::{Algebra, MetricError};
-    /// assert!(Algebra::builtin("cga-null").unwrap().metric().gram(0, 4) < &algebra_core::rational::q(0));
+    /// assert!(Algebra::builtin("cga-null").unwrap().metric().gram(0, 4).unwrap() < &algebra_core::rational::q(0));
     /// assert!(matches!(Algebra::builtin("nope"), Err(MetricError::UnknownAlgebra(_))));
     /// ```
     pub fn builtin(name: &str) -> Result<Arc<Self>, MetricError> {
@@ -191,13 +192,23 @@ impl Algebra {
         &self.tables
     }
 
-    /// The name of a basis element.
+    /// The name of a basis element; [`MvError::MaskOutOfRange`] for a mask with a bit at or
+    /// above the number of generators.
     ///
     /// ```
     /// let alg = algebra_core::Algebra::builtin("cga-null").unwrap();
-    /// assert_eq!(alg.name_of(0b11111), "e0123inf");
+    /// assert_eq!(alg.name_of(0b11111).unwrap(), "e0123inf");
+    /// assert!(alg.name_of(0b100000).is_err());
     /// ```
-    pub fn name_of(&self, mask: u32) -> &str {
+    pub fn name_of(&self, mask: u32) -> Result<&str, MvError> {
+        self.names
+            .get(mask as usize)
+            .map(String::as_str)
+            .ok_or(MvError::MaskOutOfRange { mask, generators: self.metric.dimension() })
+    }
+
+    /// The name of a basis element of this algebra (a mask the crate produced itself).
+    pub(crate) fn name_at(&self, mask: u32) -> &str {
         &self.names[mask as usize]
     }
 
@@ -231,11 +242,12 @@ impl Algebra {
         let l = m.labels();
         let n = m.dimension();
         let fmt = |x: &Q| crate::rational::format_rational(x);
-        let mut parts: Vec<String> = (0..n).map(|i| format!("e{}.e{} = {}", l[i], l[i], fmt(m.gram(i, i)))).collect();
+        let mut parts: Vec<String> =
+            (0..n).map(|i| format!("e{}.e{} = {}", l[i], l[i], fmt(m.gram_at(i, i)))).collect();
         for i in 0..n {
             for j in i + 1..n {
-                if *m.gram(i, j) != q(0) {
-                    parts.push(format!("e{}.e{} = {}", l[i], l[j], fmt(m.gram(i, j))));
+                if *m.gram_at(i, j) != q(0) {
+                    parts.push(format!("e{}.e{} = {}", l[i], l[j], fmt(m.gram_at(i, j))));
                 }
             }
         }

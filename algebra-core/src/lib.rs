@@ -29,6 +29,8 @@ pub mod rational;
 pub mod scalar;
 pub mod symbol;
 pub mod tables;
+#[cfg(feature = "test-support")]
+pub mod test_support;
 
 pub use algebra::Algebra;
 pub use basis::{Basis, BasisError};

@@ -51,6 +51,13 @@ pub enum MetricError {
     },
     /// A metric entry names a label that is not a generator.
     UnknownLabel(String),
+    /// A generator index at or above the number of generators.
+    IndexOutOfRange {
+        /// The index asked for.
+        index: usize,
+        /// The number of generators.
+        generators: usize,
+    },
     /// No built-in algebra of that name.
     UnknownAlgebra(String),
     /// A TOML description that could not be read or understood.
@@ -81,6 +88,9 @@ impl std::fmt::Display for MetricError {
                 write!(f, "the Gram matrix is not symmetric: B({a}, {b}) = {ab} but B({b}, {a}) = {ba}")
             }
             MetricError::UnknownLabel(x) => write!(f, "metric entry names unknown generator `{x}`"),
+            MetricError::IndexOutOfRange { index, generators } => {
+                write!(f, "generator index {index} is out of range for {generators} generators")
+            }
             MetricError::UnknownAlgebra(x) => write!(
                 f,
                 "unknown algebra `{x}` (built-ins: {names}; or a path to a .toml file)",
@@ -101,7 +111,7 @@ impl std::error::Error for MetricError {}
 ///     vec!["0".into(), "inf".into()],
 ///     vec![vec![q(0), q(-1)], vec![q(-1), q(0)]],
 /// ).unwrap();
-/// assert_eq!(m.gram(0, 1), &q(-1));
+/// assert_eq!(m.gram(0, 1).unwrap(), &q(-1));
 /// assert!(!m.is_diagonal());
 /// ```
 #[derive(Debug, Clone, PartialEq)]
@@ -163,7 +173,7 @@ impl Metric {
     /// ```
     /// use algebra_core::{Metric, rational::q};
     /// let m = Metric::from_strs(&["0", "inf"], &[&["0", "-1"], &["-1", "0"]]).unwrap();
-    /// assert_eq!(m.gram(1, 0), &q(-1));
+    /// assert_eq!(m.gram(1, 0).unwrap(), &q(-1));
     /// ```
     pub fn from_strs(labels: &[&str], gram: &[&[&str]]) -> Result<Self, MetricError> {
         let parse = |s: &str| {
@@ -179,7 +189,7 @@ impl Metric {
     /// ```
     /// use algebra_core::{Metric, rational::q};
     /// let m = Metric::diagonal(4, 1, 0).unwrap();
-    /// assert_eq!(m.gram(4, 4), &q(-1));
+    /// assert_eq!(m.gram(4, 4).unwrap(), &q(-1));
     /// assert_eq!(m.labels()[4], "5");
     /// ```
     pub fn diagonal(p: usize, q_: usize, r: usize) -> Result<Self, MetricError> {
@@ -224,13 +234,22 @@ impl Metric {
         &self.labels
     }
 
-    /// `B(e_i, e_j)`.
+    /// `B(e_i, e_j)`; [`MetricError::IndexOutOfRange`] when `i` or `j` is not a generator index.
     ///
     /// ```
     /// use algebra_core::{Metric, rational::q};
-    /// assert_eq!(Metric::diagonal(1, 1, 0).unwrap().gram(1, 1), &q(-1));
+    /// let m = Metric::diagonal(1, 1, 0).unwrap();
+    /// assert_eq!(m.gram(1, 1).unwrap(), &q(-1));
+    /// assert!(m.gram(0, 2).is_err());
     /// ```
-    pub fn gram(&self, i: usize, j: usize) -> &Q {
+    pub fn gram(&self, i: usize, j: usize) -> Result<&Q, MetricError> {
+        let generators = self.dimension();
+        let index = if i >= generators { i } else { j };
+        self.gram.get(i).and_then(|row| row.get(j)).ok_or(MetricError::IndexOutOfRange { index, generators })
+    }
+
+    /// `B(e_i, e_j)` for indices the crate produced itself (`i, j < n`).
+    pub(crate) fn gram_at(&self, i: usize, j: usize) -> &Q {
         &self.gram[i][j]
     }
 

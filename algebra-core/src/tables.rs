@@ -27,6 +27,7 @@
 
 use crate::basis::{Basis, grade, parity_sign, wedge_sign};
 use crate::metric::Metric;
+use crate::multivector::MvError;
 use crate::rational::{Q, q, ratio};
 use num_traits::Zero;
 use std::fmt;
@@ -171,9 +172,19 @@ impl ProductTable {
     /// let alg = Algebra::builtin("cga-null").unwrap();
     /// let gp = alg.tables().product(Basis::Product, Product::Geometric);
     /// // einf e0 = -2 - e0inf (product basis; e0 is bit 0, einf bit 4)
-    /// assert_eq!(gp.get(0b10000, 0b00001), &[(0, q(-2)), (0b10001, q(-1))]);
+    /// assert_eq!(gp.get(0b10000, 0b00001).unwrap(), &[(0, q(-2)), (0b10001, q(-1))]);
+    /// assert!(gp.get(0b100000, 0).is_err());
     /// ```
-    pub fn get(&self, a: u32, b: u32) -> &[(u32, Q)] {
+    ///
+    /// [`MvError::MaskOutOfRange`] when `a` or `b` is not a mask of the algebra.
+    pub fn get(&self, a: u32, b: u32) -> Result<&[(u32, Q)], MvError> {
+        mask_in_range(a, self.dim)?;
+        mask_in_range(b, self.dim)?;
+        Ok(self.at(a, b))
+    }
+
+    /// The entry for masks the crate produced itself (`a, b < dim`).
+    pub(crate) fn at(&self, a: u32, b: u32) -> &[(u32, Q)] {
         &self.entries[a as usize * self.dim + b as usize]
     }
 
@@ -185,6 +196,15 @@ impl ProductTable {
     /// How many entries are non-zero (a measure of sparsity).
     pub fn nonzero_entries(&self) -> usize {
         self.entries.iter().filter(|e| !e.is_empty()).count()
+    }
+}
+
+/// `Ok` when `mask` indexes a basis of `dim = 2^n` elements, else [`MvError::MaskOutOfRange`].
+fn mask_in_range(mask: u32, dim: usize) -> Result<(), MvError> {
+    if (mask as usize) < dim {
+        Ok(())
+    } else {
+        Err(MvError::MaskOutOfRange { mask, generators: dim.trailing_zeros() as usize })
     }
 }
 
@@ -201,9 +221,18 @@ impl LinearMap {
     /// use algebra_core::{Algebra, rational::q};
     /// let alg = Algebra::builtin("cga-null").unwrap();
     /// // product-basis e0inf in blade coordinates: -1 + e0^einf
-    /// assert_eq!(alg.tables().to_blade().image(0b10001), &[(0, q(-1)), (0b10001, q(1))]);
+    /// assert_eq!(alg.tables().to_blade().image(0b10001).unwrap(), &[(0, q(-1)), (0b10001, q(1))]);
+    /// assert!(alg.tables().to_blade().image(0b100000).is_err());
     /// ```
-    pub fn image(&self, a: u32) -> &[(u32, Q)] {
+    ///
+    /// [`MvError::MaskOutOfRange`] when `a` is not a mask of the algebra.
+    pub fn image(&self, a: u32) -> Result<&[(u32, Q)], MvError> {
+        mask_in_range(a, self.images.len())?;
+        Ok(self.image_at(a))
+    }
+
+    /// The image for a mask the crate produced itself (`a < dim`).
+    pub(crate) fn image_at(&self, a: u32) -> &[(u32, Q)] {
         &self.images[a as usize]
     }
 
@@ -211,7 +240,7 @@ impl LinearMap {
     pub fn apply(&self, x: &[(u32, Q)]) -> Sparse {
         let mut acc = Acc::new(self.images.len());
         for (m, c) in x {
-            acc.add_scaled(self.image(*m), c);
+            acc.add_scaled(self.image_at(*m), c);
         }
         acc.take()
     }
@@ -329,7 +358,7 @@ impl Tables {
     /// ```
     pub fn build_work(metric: &Metric) -> f64 {
         let n = metric.dimension();
-        let coupled = (0..n).filter(|&i| (0..n).any(|j| j != i && !metric.gram(i, j).is_zero())).count();
+        let coupled = (0..n).filter(|&i| (0..n).any(|j| j != i && !metric.gram_at(i, j).is_zero())).count();
         4f64.powi(n as i32) * 2f64.powi(coupled as i32)
     }
 
@@ -367,7 +396,7 @@ impl Tables {
     /// use algebra_core::{Algebra, Basis, Product, rational::q};
     /// let alg = Algebra::builtin("cga-null").unwrap();
     /// let op = alg.tables().product(Basis::Blade, Product::Outer);
-    /// assert_eq!(op.get(0b10000, 0b00001), &[(0b10001, q(-1))]); // einf ^ e0 = -e0inf
+    /// assert_eq!(op.get(0b10000, 0b00001).unwrap(), &[(0b10001, q(-1))]); // einf ^ e0 = -e0inf
     /// ```
     pub fn product(&self, basis: Basis, product: Product) -> &ProductTable {
         self.products[basis_index(basis)][product.index()].get_or_init(|| match (basis, product) {
@@ -388,7 +417,7 @@ impl Tables {
     /// let alg = Algebra::builtin("cga-null").unwrap();
     /// // the true reverse of product-basis e0inf is einf e0 = -2 - e0inf
     /// let rev = alg.tables().unary(Basis::Product, Unary::Reverse);
-    /// assert_eq!(rev.image(0b10001), &[(0, q(-2)), (0b10001, q(-1))]);
+    /// assert_eq!(rev.image(0b10001).unwrap(), &[(0, q(-2)), (0b10001, q(-1))]);
     /// ```
     pub fn unary(&self, basis: Basis, op: Unary) -> &LinearMap {
         self.unaries[basis_index(basis)][op.index()].get_or_init(|| {
@@ -424,7 +453,7 @@ impl Tables {
     /// let alg = Algebra::builtin("cga-null").unwrap();
     /// // <e0inf>_0 = -1 for the product-basis element e0 einf
     /// let g0 = alg.tables().grade_projection(Basis::Product, 0);
-    /// assert_eq!(g0.image(0b10001), &[(0, q(-1))]);
+    /// assert_eq!(g0.image(0b10001).unwrap(), &[(0, q(-1))]);
     /// ```
     pub fn grade_projection(&self, basis: Basis, k: usize) -> &LinearMap {
         let n = self.metric.dimension();
@@ -475,7 +504,7 @@ impl Tables {
             // P_S = E_S + Σ c_U E_U with |U| < |S|, so E_S = P_S - Σ c_U E_U.
             for s in crate::basis::basis_order(self.metric.dimension()) {
                 acc.add(s, q(1));
-                for (u, c) in to.image(s) {
+                for (u, c) in to.image_at(s) {
                     if *u != s {
                         acc.add_scaled(&images[*u as usize], &-c);
                     }
@@ -511,7 +540,7 @@ impl Tables {
         let dim = self.dim;
         let select = |a: u32, b: u32, k: Option<usize>| -> Sparse {
             match k {
-                Some(k) => gp.get(a, b).iter().filter(|(m, _)| grade(*m) == k).cloned().collect(),
+                Some(k) => gp.at(a, b).iter().filter(|(m, _)| grade(*m) == k).cloned().collect(),
                 None => Vec::new(),
             }
         };
@@ -522,13 +551,13 @@ impl Tables {
             for b in 0..dim as u32 {
                 let (ka, kb) = (grade(a), grade(b));
                 entries.push(match product {
-                    Product::Geometric => gp.get(a, b).to_vec(),
+                    Product::Geometric => gp.at(a, b).to_vec(),
                     Product::Outer => wedge_sign(a, b).map(|s| vec![(a | b, q(s))]).unwrap_or_default(),
                     Product::LeftContraction => select(a, b, kb.checked_sub(ka)),
                     Product::RightContraction => select(a, b, ka.checked_sub(kb)),
                     Product::Scalar => select(a, b, Some(0)),
                     Product::Regressive => {
-                        let (da, db) = (&dual.image(a)[0], &dual.image(b)[0]);
+                        let (da, db) = (&dual.image_at(a)[0], &dual.image_at(b)[0]);
                         match wedge_sign(da.0, db.0) {
                             Some(s) => undual.apply(&[(da.0 | db.0, &da.1 * &db.1 * q(s))]),
                             None => Vec::new(),
@@ -556,14 +585,14 @@ impl Tables {
             // row[j] = P_a ∘ E_j in blade coordinates
             let row: Vec<Sparse> = (0..self.dim as u32)
                 .map(|j| {
-                    for (i, ci) in to.image(a) {
-                        acc.add_scaled(blade.get(*i, j), ci);
+                    for (i, ci) in to.image_at(a) {
+                        acc.add_scaled(blade.at(*i, j), ci);
                     }
                     acc.take()
                 })
                 .collect();
             for b in 0..self.dim as u32 {
-                for (j, cj) in to.image(b) {
+                for (j, cj) in to.image_at(b) {
                     acc.add_scaled(&row[*j as usize], cj);
                 }
                 entries.push(from.apply(&acc.take()));
@@ -590,8 +619,8 @@ fn symmetrize(gp: &ProductTable, product: Product) -> ProductTable {
     let mut entries = Vec::with_capacity(gp.dim * gp.dim);
     for a in 0..gp.dim as u32 {
         for b in 0..gp.dim as u32 {
-            acc.add_scaled(gp.get(a, b), &half);
-            acc.add_scaled(gp.get(b, a), &(&half * q(sign)));
+            acc.add_scaled(gp.at(a, b), &half);
+            acc.add_scaled(gp.at(b, a), &(&half * q(sign)));
             entries.push(acc.take());
         }
     }
@@ -604,7 +633,7 @@ fn vec_times_blade(metric: &Metric, n: usize, i: usize, t: u32, c: &Q, acc: &mut
     let mut pos = 0;
     for j in 0..n {
         if t >> j & 1 == 1 {
-            let b = metric.gram(i, j);
+            let b = metric.gram_at(i, j);
             if !b.is_zero() {
                 acc.add(t ^ (1 << j), c * b * q(parity_sign(pos)));
             }
@@ -644,7 +673,7 @@ fn build_blade_gp(metric: &Metric) -> ProductTable {
         }
         // - e_i ⌋ E_{S'} = - Σ_pos (-1)^pos B(e_i, e_j) E_{S' \ j}
         for (pos, j) in (0..n).filter(|&j| s1 >> j & 1 == 1).enumerate() {
-            let b = metric.gram(i, j);
+            let b = metric.gram_at(i, j);
             if !b.is_zero() {
                 acc.add_scaled(&rows[(s1 ^ (1 << j)) as usize][t], &-(b * q(parity_sign(pos))));
             }
@@ -661,13 +690,13 @@ fn vec_times_product(metric: &Metric, i: usize, t: u32) -> Sparse {
     let t1 = t.trailing_zeros() as usize;
     let rest = t ^ (1 << t1);
     if i == t1 {
-        let b = metric.gram(i, i);
+        let b = metric.gram_at(i, i);
         return if b.is_zero() { vec![] } else { vec![(rest, b.clone())] };
     }
     // e_i e_t1 P_rest = 2 B(i, t1) P_rest - e_t1 (e_i P_rest); every index of e_i P_rest
     // exceeds t1, so e_t1 just prepends.
     let mut out: Sparse = vec![];
-    let b = metric.gram(i, t1);
+    let b = metric.gram_at(i, t1);
     if !b.is_zero() {
         out.push((rest, b * q(2)));
     }

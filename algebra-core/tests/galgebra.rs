@@ -61,7 +61,7 @@ fn check_file(file: &str, text: &str, algebra: &str, basis: Basis) -> usize {
                     got.coeff(m).unwrap(),
                     expected.coeff(m).unwrap(),
                     "{file} case {i} key {key}: coefficient of {}\n  a = {a}\n  b = {b}\n  GAM:      {got}\n  galgebra: {expected}",
-                    alg.name_of(m)
+                    alg.name_of(m).unwrap()
                 );
             }
         }

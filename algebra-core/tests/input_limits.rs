@@ -2,7 +2,7 @@
 //! before any digits are built), contradictory TOML metric entries (in algebra-codegen/tests/metric_toml.rs).
 
 use algebra_core::rational::{MAX_DECIMAL_EXPONENT, RationalParseError, parse_rational, ratio};
-use algebra_core::{Algebra, Basis, Multivector, MvError};
+use algebra_core::{Algebra, Basis, MetricError, Multivector, MvError, Product, Unary};
 
 #[test]
 fn masks_out_of_range_are_errors() {
@@ -15,6 +15,35 @@ fn masks_out_of_range_are_errors() {
     for mask in 0..32 {
         assert_eq!(Multivector::<f64>::from_mask(&alg, Basis::Product, mask).unwrap().coeff(mask), Ok(&1.0));
     }
+}
+
+#[test]
+fn table_and_name_lookups_check_their_masks() {
+    let alg = Algebra::builtin("cga").unwrap();
+    let gp = alg.tables().product(Basis::Blade, Product::Geometric);
+    let rev = alg.tables().unary(Basis::Blade, Unary::Reverse);
+    for bad in [32, 33, 1 << 20, u32::MAX] {
+        let out = Err(MvError::MaskOutOfRange { mask: bad, generators: 5 });
+        assert_eq!(alg.name_of(bad), out.clone().map(|()| ""));
+        assert_eq!(gp.get(bad, 0), out.clone().map(|()| &[][..]));
+        assert_eq!(gp.get(1, bad), out.clone().map(|()| &[][..]));
+        assert_eq!(rev.image(bad), out.map(|()| &[][..]));
+    }
+    // in range: e1 e1 = 1, e12 reversed = -e12, the top element's name
+    assert_eq!(gp.get(1, 1).unwrap(), &[(0, ratio(1, 1))]);
+    assert_eq!(rev.image(0b11).unwrap(), &[(0b11, ratio(-1, 1))]);
+    assert_eq!(alg.name_of(0b11111).unwrap(), "e12345");
+}
+
+#[test]
+fn gram_checks_its_indices() {
+    let m = Algebra::builtin("cga").unwrap().metric().clone();
+    for (i, j) in [(5, 0), (0, 5), (usize::MAX, usize::MAX)] {
+        let index = if i >= 5 { i } else { j };
+        assert_eq!(m.gram(i, j), Err(MetricError::IndexOutOfRange { index, generators: 5 }));
+    }
+    assert_eq!(m.gram(4, 4).unwrap(), &ratio(-1, 1));
+    assert_eq!(m.gram(3, 3).unwrap(), &ratio(1, 1));
 }
 
 #[test]

@@ -26,6 +26,7 @@
 //! Run with `cargo bench -p gam-algebras --bench products`.
 #![allow(missing_docs)]
 
+use algebra_core::test_support::Xorshift;
 use algebra_core::{Algebra, Multivector, Product, Ring};
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group};
 use gam_algebras::{DualQuaternion, cga, cga_null, g123inf, pga3};
@@ -38,17 +39,6 @@ use std::time::{Duration, Instant};
 const BATCH: usize = 1024;
 /// Products per criterion iteration for the (much slower) runtime reference.
 const RUNTIME_BATCH: usize = 64;
-
-/// A small deterministic generator (xorshift) of floats in [-1, 1).
-struct Rng(u64);
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 7;
-        self.0 ^= self.0 << 17;
-        (self.0 >> 11) as f64 / (1u64 << 52) as f64 - 1.0
-    }
-}
 
 /// One non-zero entry of a flat geometric-product table: `out[k] += sign * x[a] * y[b]`.
 #[derive(Clone, Copy)]
@@ -100,8 +90,8 @@ struct Versor {
 fn data() -> &'static Data {
     static DATA: OnceLock<Data> = OnceLock::new();
     DATA.get_or_init(|| {
-        let mut rng = Rng(0x9e37_79b9_7f4a_7c15);
-        let coeffs: Vec<[f64; 8]> = (0..2 * BATCH).map(|_| [(); 8].map(|_| rng.next())).collect();
+        let mut rng = Xorshift(0x9e37_79b9_7f4a_7c15);
+        let coeffs: Vec<[f64; 8]> = (0..2 * BATCH).map(|_| [(); 8].map(|_| rng.symmetric())).collect();
         let motors =
             coeffs.iter().map(|&[s, a, b, c, d, e, f, w]| g123inf::Motor::new(s, a, b, c, d, e, f, w)).collect();
         let ours = coeffs.iter().map(|&c| DualQuaternion::from_coeffs(c)).collect();
@@ -120,12 +110,12 @@ fn data() -> &'static Data {
         let mut table = Vec::new();
         for a in 0..32u32 {
             for b in 0..32u32 {
-                for (k, coeff) in gp.get(a, b) {
+                for (k, coeff) in gp.get(a, b).expect("a, b < 32") {
                     table.push(Entry { a: a as u8, b: b as u8, k: *k as u8, sign: f64::from_rational(coeff) });
                 }
             }
         }
-        let dense: Vec<[f64; 32]> = (0..2 * BATCH).map(|_| [(); 32].map(|_| rng.next())).collect();
+        let dense: Vec<[f64; 32]> = (0..2 * BATCH).map(|_| [(); 32].map(|_| rng.symmetric())).collect();
         let runtime: Vec<Multivector<f64>> = dense
             .iter()
             .map(|c| Multivector::from_coeffs(&alg, cga::BASIS, c.to_vec()).expect("32 coefficients"))
@@ -145,7 +135,7 @@ fn data() -> &'static Data {
 }
 
 fn versor_data() -> Versor {
-    let mut rng = Rng(0x2545_f491_4f6c_dd1d);
+    let mut rng = Xorshift(0x2545_f491_4f6c_dd1d);
     let mut d = Versor {
         cn_motors: Vec::new(),
         cn_points: Vec::new(),
@@ -162,8 +152,8 @@ fn versor_data() -> Versor {
         points: Vec::new(),
     };
     for _ in 0..2 * BATCH {
-        let c = [(); 8].map(|_| rng.next());
-        let p = [(); 3].map(|_| rng.next());
+        let c = [(); 8].map(|_| rng.symmetric());
+        let p = [(); 3].map(|_| rng.symmetric());
         d.cn_motors.push(cga_null::Motor::from_array(c));
         let p2 = p.iter().map(|x| x * x).sum::<f64>() / 2.0;
         d.cn_points.push(cga_null::Vector::new(1.0, p[0], p[1], p[2], p2));

@@ -15,6 +15,12 @@
 //! reference is the runtime series ([`algebra_core::Multivector::exp`]), which the tests compare
 //! against.
 //!
+//! Non-finite input (docs/robustness.md): `exp` is an unchecked kernel, NaN in, NaN out, like
+//! the generated products; `try_exp` is the checked entry point and returns
+//! `MvError::Undefined` ("coefficients are not finite") for a NaN or infinite coefficient, as
+//! the runtime `exp` does. `normalize`, `log`, `log_unit`, `sqrt` and `pow` already return a
+//! `Result`, and refuse non-finite input (and a non-finite `t`) with the same error.
+//!
 //! ```
 //! use gam_algebras::g123inf::{Bivector, Motor};
 //! // a quarter turn about e12 with a translation along e3inf
@@ -75,6 +81,15 @@ fn undefined(op: &'static str, value: String, why: &str) -> MvError {
     MvError::Undefined { op, value, why: why.to_string() }
 }
 
+/// `Ok` when every coefficient is finite, else the runtime's "coefficients are not finite".
+fn check_finite<'a, T: Real + 'a>(
+    op: &'static str,
+    value: &dyn std::fmt::Display,
+    mut coeffs: impl Iterator<Item = &'a T>,
+) -> Result<(), MvError> {
+    if coeffs.all(T::is_finite) { Ok(()) } else { Err(undefined(op, value.to_string(), "coefficients are not finite")) }
+}
+
 /// The closed forms for one module: the pseudoscalar field `$ps`, the Euclidean bivector
 /// fields `e12, e13, e23` and the ideal ones `$i1, $i2, $i3` with `I e23 = -$i1`,
 /// `I e13 = $i2`, `I e12 = -$i3` (the same pattern in both algebras).
@@ -90,7 +105,26 @@ macro_rules! closed_form {
                 out
             }
 
-            /// The exponential in closed form (see [`crate::closed_form`]): a unit motor.
+            /// [`Self::exp`] after checking that every coefficient is finite:
+            /// `MvError::Undefined` ("coefficients are not finite") otherwise, and "the result is
+            /// not finite" when a finite bivector is too large for the scalar (the unchecked
+            /// kernel would return NaN).
+            pub fn try_exp(&self) -> Result<crate::$m::Motor<T>, MvError> {
+                check_finite("exp", self, self.iter())?;
+                let out = self.exp();
+                check_finite("exp", self, out.iter()).map_err(|_| {
+                    undefined(
+                        "exp",
+                        self.to_string(),
+                        "the result is not finite (the bivector is too large for this scalar)",
+                    )
+                })?;
+                Ok(out)
+            }
+
+            /// The exponential in closed form (see [`crate::closed_form`]): a unit motor. An
+            /// unchecked kernel: a NaN or infinite coefficient gives NaN coefficients (use
+            /// [`Self::try_exp`] for input of unknown origin).
             pub fn exp(&self) -> crate::$m::Motor<T> {
                 let theta2 = self.e12.mul_ref(&self.e12) + self.e13.mul_ref(&self.e13) + self.e23.mul_ref(&self.e23);
                 // B² = -θ² + c I, c = 2 (b12 i3 - b13 i2 + b23 i1)
@@ -109,6 +143,7 @@ macro_rules! closed_form {
             /// form: a unit motor (`m rev(m) = 1`) when `self` satisfies the Study condition
             /// (every product of unit motors does). Fails when `α <= 0`.
             pub fn normalize(&self) -> Result<Self, MvError> {
+                check_finite("normalize", self, self.iter())?;
                 let alpha = self.norm_squared();
                 if alpha.to_f64().is_nan() || alpha.to_f64() <= 0.0 {
                     return Err(undefined("normalize", self.to_string(), "the norm self rev(self) is not positive"));
@@ -143,6 +178,7 @@ macro_rules! closed_form {
             /// motor that is not unit the result is not a logarithm of anything; use
             /// [`Self::log`]. Fails for a full turn.
             pub fn log_unit(&self) -> Result<crate::$m::Bivector<T>, MvError> {
+                check_finite("log", self, self.iter())?;
                 let n = self;
                 let sin = (n.e12.mul_ref(&n.e12) + n.e13.mul_ref(&n.e13) + n.e23.mul_ref(&n.e23)).sqrt();
                 if sin.to_f64() == 0.0 && n.scalar.to_f64() < 0.0 {
@@ -163,6 +199,7 @@ macro_rules! closed_form {
 
             /// `normalize(self)^t = exp(t log(self))`.
             pub fn pow(&self, t: &T) -> Result<Self, MvError> {
+                check_finite("pow", t, std::iter::once(t))?;
                 Ok((self.log()? * t.clone()).exp())
             }
         }

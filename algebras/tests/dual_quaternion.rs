@@ -4,6 +4,7 @@
 //! standard unit dual quaternion of a rigid motion and against nalgebra.
 
 use algebra_core::rational::{Q, q, ratio};
+use algebra_core::test_support::Xorshift;
 use algebra_core::{Algebra, Basis, Field, Multivector, Ring};
 use g123inf::Motor;
 use gam_algebras::dual_quaternion::Quaternion;
@@ -196,23 +197,11 @@ proptest! {
 // ---------------------------------------------------------------------------------------------
 // Floats: the standard unit dual quaternion of a rigid motion, and nalgebra.
 
-/// A small deterministic generator (xorshift) for float samples in [-1, 1).
-struct Rng(u64);
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 7;
-        self.0 ^= self.0 << 17;
-        (self.0 >> 11) as f64 / (1u64 << 52) as f64 - 1.0
-    }
-    fn vec3(&mut self) -> [f64; 3] {
-        [self.next(), self.next(), self.next()]
-    }
-    fn unit3(&mut self) -> [f64; 3] {
-        let v = self.vec3();
-        let n = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
-        v.map(|x| x / n)
-    }
+/// A random unit vector (a normalised [`Xorshift::vec3`]).
+fn unit3(rng: &mut Xorshift) -> [f64; 3] {
+    let v = rng.vec3();
+    let n = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+    v.map(|x| x / n)
 }
 
 fn close(a: &[f64], b: &[f64], tol: f64) -> bool {
@@ -245,9 +234,9 @@ fn rotate_then_translate(axis: [f64; 3], phi: f64, v: [f64; 3], p: [f64; 3]) -> 
 /// `r p r* + t` and by Rodrigues' formula agree to 1e-12.
 #[test]
 fn rotation_and_translation_map_to_the_standard_unit_dual_quaternion() {
-    let mut rng = Rng(0x9e37_79b9_7f4a_7c15);
+    let mut rng = Xorshift(0x9e37_79b9_7f4a_7c15);
     for _ in 0..200 {
-        let (axis, phi, v, p) = (rng.unit3(), 3.0 * rng.next(), rng.vec3().map(|x| 4.0 * x), rng.vec3());
+        let (axis, phi, v, p) = (unit3(&mut rng), 3.0 * rng.symmetric(), rng.vec3().map(|x| 4.0 * x), rng.vec3());
         let s = paper_rotation(axis, phi) * paper_translation(v);
         let qdq = DualQuaternion::from_pose(&s);
         // the textbook construction
@@ -291,10 +280,10 @@ fn nalgebra_coeffs(d: &nalgebra::DualQuaternion<f64>) -> [f64; 8] {
 /// `DualQuaternion` product, for random values.
 #[test]
 fn product_matches_nalgebra() {
-    let mut rng = Rng(0x2545_f491_4f6c_dd1d);
+    let mut rng = Xorshift(0x2545_f491_4f6c_dd1d);
     for _ in 0..1000 {
-        let a = DualQuaternion::from_coeffs([(); 8].map(|_| rng.next()));
-        let b = DualQuaternion::from_coeffs([(); 8].map(|_| rng.next()));
+        let a = DualQuaternion::from_coeffs([(); 8].map(|_| rng.symmetric()));
+        let b = DualQuaternion::from_coeffs([(); 8].map(|_| rng.symmetric()));
         let ours = (&a * &b).coeffs();
         let theirs = nalgebra_coeffs(&(to_nalgebra(&a) * to_nalgebra(&b)));
         assert!(close(&ours, &theirs, 1e-12), "{ours:?} vs {theirs:?}");
@@ -310,9 +299,9 @@ fn product_matches_nalgebra() {
 #[test]
 fn pose_matches_nalgebra_unit_dual_quaternion() {
     use nalgebra::{Point3, Translation3, UnitDualQuaternion, UnitQuaternion, Vector3};
-    let mut rng = Rng(0x0123_4567_89ab_cdef);
+    let mut rng = Xorshift(0x0123_4567_89ab_cdef);
     for _ in 0..200 {
-        let (axis, phi, v, p) = (rng.unit3(), 3.0 * rng.next(), rng.vec3(), rng.vec3());
+        let (axis, phi, v, p) = (unit3(&mut rng), 3.0 * rng.symmetric(), rng.vec3(), rng.vec3());
         let s = paper_rotation(axis, phi) * paper_translation(v);
         let rotation = UnitQuaternion::from_axis_angle(&nalgebra::Unit::new_normalize(Vector3::from(axis)), phi);
         let theirs = UnitDualQuaternion::from_parts(Translation3::from(Vector3::from(v)), rotation);

@@ -35,7 +35,7 @@ pub fn algebras(names: &[String], json: bool) -> Result<String, CliError> {
                 let m = a.metric();
                 let gram: Vec<Vec<String>> =
                     m.gram_matrix().iter().map(|row| row.iter().map(format_rational).collect()).collect();
-                let basis: Vec<&str> = a.basis_order().iter().map(|&k| a.name_of(k)).collect();
+                let basis: Vec<&str> = a.basis_order().iter().filter_map(|&k| a.name_of(k).ok()).collect();
                 json!({
                     "name": a.name(),
                     "description": description(a.name()),
@@ -131,27 +131,30 @@ pub fn table(algebra: &str, basis: Basis, product: Product, json: bool) -> Resul
     let alg = crate::budget::algebra(algebra)?;
     let order = alg.basis_order();
     let tab = alg.tables().product(basis, product);
-    let entry = |a: u32, b: u32| -> Multivector<Q> {
+    // every mask below comes from the algebra's own basis order, so these never fail
+    let name = |a: u32| alg.name_of(a).map_err(|e| CliError::usage(e.to_string()));
+    let entry = |a: u32, b: u32| -> Result<Multivector<Q>, CliError> {
         let mut m = Multivector::zero(&alg, basis);
-        for (k, c) in tab.get(a, b) {
+        for (k, c) in tab.get(a, b).map_err(|e| CliError::usage(e.to_string()))? {
             m.coeffs_mut()[*k as usize] = c.clone();
         }
-        m
+        Ok(m)
     };
     if json {
         let mut list = Vec::with_capacity(order.len() * order.len());
         for &a in order {
             for &b in order {
-                list.push(json!({"a": alg.name_of(a), "b": alg.name_of(b), "result": mv_json(&entry(a, b))}));
+                list.push(json!({"a": name(a)?, "b": name(b)?, "result": mv_json(&entry(a, b)?)}));
             }
         }
         return Ok(Value::Array(list).to_string());
     }
     let mut rows: Vec<Vec<String>> = Vec::with_capacity(order.len() + 1);
-    rows.push(std::iter::once(String::new()).chain(order.iter().map(|&b| alg.name_of(b).to_string())).collect());
+    let header = order.iter().map(|&b| name(b).map(str::to_string)).collect::<Result<Vec<_>, _>>()?;
+    rows.push(std::iter::once(String::new()).chain(header).collect());
     for &a in order {
-        let cells = order.iter().map(|&b| mv_human(&entry(a, b)));
-        rows.push(std::iter::once(alg.name_of(a).to_string()).chain(cells).collect());
+        let cells = order.iter().map(|&b| entry(a, b).map(|m| mv_human(&m))).collect::<Result<Vec<_>, _>>()?;
+        rows.push(std::iter::once(name(a)?.to_string()).chain(cells).collect());
     }
     let title = format!(
         "{} table of {} in the {basis} basis: cell = {}(row, column)",

@@ -107,7 +107,7 @@ impl<'a> Evaluator<'a> {
             return Ok(self.scalar(v));
         }
         let labels = self.algebra.metric().labels();
-        let example = self.algebra.name_of(self.algebra.basis_order().last().copied().unwrap_or(0));
+        let example = self.algebra.name_of(self.algebra.basis_order().last().copied().unwrap_or(0)).unwrap_or("e1");
         Err(CliError::usage(format!(
             "unknown basis element `{name}` at column {col}: algebra {} has generators {} \
              (basis names are e + labels in declaration order, e.g. {example}; variables need --scalar poly)",

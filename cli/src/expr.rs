@@ -11,8 +11,9 @@
 //! sum     := product (('+' | '-') product)*
 //! ```
 //!
-//! NUMBER is `digits` or `digits.digits` (no exponent, so `2e1` is never a number; products
-//! need an explicit `*`). IDENT is a letter followed by letters, digits or `_`. Chains of a
+//! NUMBER is `digits`, `digits.digits` or `.digits`, optionally followed by an exponent `e` or
+//! `E`, an optional sign and digits (`6e-17`, `2.5E3`): so `2e1` is the number 20, and the
+//! product of 2 and `e1` needs an explicit `*` as every product does. IDENT is a letter followed by letters, digits or `_`. Chains of a
 //! left-associative operator are kept flat ([`Node::Chain`]) so that long sums do not make
 //! deep trees; nesting (parentheses, prefixes, calls) is limited to [`MAX_DEPTH`].
 
@@ -204,6 +205,17 @@ fn describe(t: &Tok) -> String {
     }
 }
 
+/// The length of an exponent `e[+-]digits` / `E[+-]digits` at the start of `rest`, or 0 when
+/// there is none (then an `e` after a number starts a name, as before: `2einf` is an error).
+fn exponent_len(rest: &[char]) -> usize {
+    if !matches!(rest.first(), Some('e' | 'E')) {
+        return 0;
+    }
+    let sign = usize::from(matches!(rest.get(1), Some('+' | '-')));
+    let digits = rest[1 + sign..].iter().take_while(|c| c.is_ascii_digit()).count();
+    if digits == 0 { 0 } else { 1 + sign + digits }
+}
+
 fn tokenize(src: &str) -> Result<Vec<Token>, CliError> {
     let chars: Vec<char> = src.chars().collect();
     let mut out = Vec::new();
@@ -227,6 +239,7 @@ fn tokenize(src: &str) -> Result<Vec<Token>, CliError> {
                     i += 1;
                 }
             }
+            i += exponent_len(&chars[i..]);
             out.push(Token { tok: Tok::Num(chars[start..i].iter().collect()), col });
         } else if c.is_ascii_alphabetic() {
             let start = i;

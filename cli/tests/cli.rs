@@ -197,7 +197,8 @@ fn usage_errors_exit_2() {
     fails(&["eval", "grade(e1, e2)"], 2);
     fails(&["eval", "exp(e1)"], 2);
     fails(&["eval", "rev"], 2);
-    fails(&["eval", "2e1"], 2);
+    fails(&["eval", "2 e1"], 2);
+    fails(&["eval", "2einf"], 2);
     fails(&["eval", "x"], 2);
     fails(&["eval"], 2);
     fails(&["eval", "e1", "e2"], 2);
@@ -236,6 +237,39 @@ fn help_and_version_succeed() {
     assert!(ok(&["--help"]).contains("eval"));
     assert!(ok(&["eval", "--help"]).contains("--scalar"));
     assert!(ok(&["--version"]).starts_with("gam "));
+}
+
+#[test]
+fn numbers_take_an_exponent() {
+    let g3 = |scalar, e| ok(&["eval", "--algebra", "g3", "--scalar", scalar, e]);
+    // exact under rational: 2.5E3 = 2500, 6e-17 = 6/10^17, 1e+3 = 1000
+    assert_eq!(g3("rational", "2.5E3*e1"), "2500*e1");
+    assert_eq!(g3("rational", "6e-17"), "3/50000000000000000");
+    assert_eq!(g3("rational", "1e+3 - 1000"), "0");
+    assert_eq!(g3("rational", ".5e1"), "5");
+    // 2e1 is the number 20; the product with e1 needs its `*`
+    assert_eq!(g3("rational", "2e1"), "20");
+    assert_eq!(g3("rational", "2*e1"), "2*e1");
+    assert_eq!(g3("rational", "2e1*e1"), "20*e1");
+    // f64: the literal as Rust (and C) read it
+    assert_eq!(g3("f64", "6e-17*e2"), "6e-17*e2");
+    assert_eq!(g3("f64", "2.5e2*e1"), "250*e1");
+    // the exponent cap of exact literals, and an f64 literal that overflows
+    assert!(fails(&["eval", "--scalar", "rational", "1e100001"], 2).contains("exponent"));
+    assert!(fails(&["eval", "--algebra", "g3", "--scalar", "f64", "1e400*e1"], 1).contains("not finite"));
+    // an `e` without digits starts a name: still an error, not a number
+    fails(&["eval", "--algebra", "g3", "2e"], 2);
+    fails(&["eval", "--algebra", "g3", "2e+"], 2);
+}
+
+#[test]
+fn exp_refusals_say_why() {
+    // a rotor angle of 1e300: θ² overflows (the unit rotor itself cannot)
+    let line = fails(&["eval", "--algebra", "g3", "--scalar", "f64", "exp(1e300*e12)"], 1);
+    assert!(line.contains("the rotation angle is too large for this scalar"), "{line}");
+    // e^1000 (cos 1 + e12 sin 1) does overflow
+    let line = fails(&["eval", "--algebra", "g3", "--scalar", "f64", "exp(1000 + e12)"], 1);
+    assert!(line.contains("the result overflows"), "{line}");
 }
 
 #[test]

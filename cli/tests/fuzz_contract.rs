@@ -11,23 +11,9 @@ mod common;
 
 use common::{TempFile, run_contract as run};
 
-struct Rng(u64);
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 7;
-        self.0 ^= self.0 << 17;
-        self.0
-    }
-    fn below(&mut self, n: usize) -> usize {
-        (self.next() % n as u64) as usize
-    }
-    fn pick<'a>(&mut self, xs: &[&'a str]) -> &'a str {
-        xs[self.below(xs.len())]
-    }
-}
+use algebra_core::test_support::Xorshift;
 
-fn expression(rng: &mut Rng, depth: usize) -> String {
+fn expression(rng: &mut Xorshift, depth: usize) -> String {
     let atoms = ["e0", "e1", "e2", "e3", "einf", "e0inf", "e12", "1", "0", "2", "0.5", "3/4", "x", "e9", "1e5"];
     if depth == 0 || rng.below(3) == 0 {
         return rng.pick(&atoms).to_string();
@@ -47,8 +33,8 @@ fn expression(rng: &mut Rng, depth: usize) -> String {
     }
 }
 
-fn raw_bytes(rng: &mut Rng, len: usize) -> Vec<u8> {
-    (0..len).map(|_| rng.next() as u8).collect()
+fn raw_bytes(rng: &mut Xorshift, len: usize) -> Vec<u8> {
+    (0..len).map(|_| rng.next_u64() as u8).collect()
 }
 
 #[test]
@@ -59,7 +45,7 @@ fn overflow_checks_are_on_in_this_profile() {
 
 #[test]
 fn fuzz_expression_parser() {
-    let mut rng = Rng(0x1234_5678_9abc_def1);
+    let mut rng = Xorshift(0x1234_5678_9abc_def1);
     let scalars = ["rational", "f64", "mpfr:64", "rational", "f64"];
     let mut counts = [0usize; 3];
     let n = 120;
@@ -90,7 +76,7 @@ fn fuzz_expression_parser() {
 
 #[test]
 fn fuzz_toml_algebras() {
-    let mut rng = Rng(0x0ddc_0ffe_e0dd_f00d);
+    let mut rng = Xorshift(0x0ddc_0ffe_e0dd_f00d);
     let labels = ["a", "b", "c", "1", "inf", "a", "", "é"];
     let values = ["1", "-1", "0", "\"1/2\"", "\"1e2147483648\"", "2.5", "\"x\"", "\"3/0\"", "[1]"];
     let file = TempFile::empty("fuzz.toml");
@@ -118,18 +104,18 @@ fn fuzz_toml_algebras() {
 
 #[test]
 fn fuzz_json_specs() {
-    let mut rng = Rng(0xfeed_beef_cafe_1234);
+    let mut rng = Xorshift(0xfeed_beef_cafe_1234);
     let good = ["0", "1", "-1", "2.5", "3", "0.25"];
     let bad = ["1e308", "1e-320", "\"x\"", "null", "1e400", "[]"];
-    let num = |rng: &mut Rng| if rng.below(12) == 0 { rng.pick(&bad) } else { rng.pick(&good) };
-    let vec3 = |rng: &mut Rng| format!("[{}, {}, {}]", num(rng), num(rng), num(rng));
+    let num = |rng: &mut Xorshift| if rng.below(12) == 0 { rng.pick(&bad) } else { rng.pick(&good) };
+    let vec3 = |rng: &mut Xorshift| format!("[{}, {}, {}]", num(rng), num(rng), num(rng));
     let file = TempFile::empty("fuzz.json");
     let mut counts = [0usize; 3];
     let n = 60;
     for i in 0..n {
         let kind = rng.pick(&["additive", "multiplicative", "additive", "multiplicative", "other"]);
         let degree = rng.pick(&["3", "4", "5", "3", "2", "10000", "1099511627776", "-1", "3.5"]);
-        let end = |rng: &mut Rng| {
+        let end = |rng: &mut Xorshift| {
             format!(
                 "{{\"position\": {}, \"axis\": {}, \"angle\": {}, \"velocity\": {}, \"angular_velocity\": {}}}",
                 vec3(rng),

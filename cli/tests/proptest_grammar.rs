@@ -20,6 +20,17 @@ fn atom() -> impl Strategy<Value = String> {
         (-1000i64..1000).prop_map(|n| n.to_string()),
         prop::sample::select(vec!["0.5", "3/4", "1e5", "1e-9", "2.5E3", "1e100000", "1/0", "0.0", "1e308"])
             .prop_map(str::to_string),
+        // exponent notation: mantissa, optional sign, digits (and near misses such as `2e`)
+        (
+            0u32..1000,
+            prop::sample::select(vec!["", ".5", ".25"]),
+            prop::sample::select(vec!["e", "E", "e+", "e-", "E-"])
+        )
+            .prop_flat_map(|(m, frac, e)| (
+                Just(format!("{m}{frac}{e}")),
+                prop::sample::select(vec!["", "0", "7", "17", "308", "400"])
+            ))
+            .prop_map(|(head, exp)| format!("{head}{exp}")),
     ]
 }
 

@@ -258,6 +258,18 @@ fn at_least_one<T>(poses: &[T]) -> Result<(), CurveError> {
     if poses.is_empty() { Err(CurveError::TooFewPoses { need: 1, got: 0 }) } else { Ok(()) }
 }
 
+/// [`MotionError::NotFinite`] (operation `op`) for the first pose with a NaN or infinite
+/// coefficient.
+pub(crate) fn finite_poses<'a, T: Ring + 'a>(
+    op: &'static str,
+    poses: impl IntoIterator<Item = &'a Pose<T>>,
+) -> Result<(), MotionError> {
+    match poses.into_iter().find(|p| !p.iter().all(Ring::is_finite_value)) {
+        Some(p) => Err(MotionError::NotFinite { op, value: p.to_string() }),
+        None => Ok(()),
+    }
+}
+
 /// The de Casteljau tableau with a pairwise combination: column 0 is the control poses,
 /// column `k` holds `S_{i..i+k}(t)`, the last column the single pose `S(t)`.
 pub(crate) fn tableau_with<T: Ring, E>(
@@ -348,14 +360,19 @@ pub type AdditiveBezier<T> = Bezier<T, Additive>;
 pub type MultiplicativeBezier<T> = Bezier<T, Multiplicative>;
 
 impl<T: Ring, B: Default> Bezier<T, B> {
-    /// The motion with control poses `S_0, ..., S_n` (at least one).
+    /// The motion with control poses `S_0, ..., S_n` (at least one, every coefficient finite:
+    /// [`MotionError::NotFinite`] otherwise).
     ///
     /// ```
-    /// let m = motion::AdditiveBezier::new(vec![motion::Pose::<f64>::identity(); 4]).unwrap();
+    /// use motion::{AdditiveBezier, CurveError, MotionError, Pose};
+    /// let m = AdditiveBezier::new(vec![Pose::<f64>::identity(); 4]).unwrap();
     /// assert_eq!(m.degree(), 3);
+    /// let nan = Pose::translation(&[f64::NAN, 0.0, 0.0]);
+    /// assert!(matches!(AdditiveBezier::new(vec![nan]), Err(CurveError::Pose(MotionError::NotFinite { .. }))));
     /// ```
     pub fn new(poses: Vec<Pose<T>>) -> Result<Self, CurveError> {
         at_least_one(&poses)?;
+        finite_poses("control pose", &poses)?;
         Ok(Bezier { poses, blend: B::default() })
     }
 

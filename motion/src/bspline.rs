@@ -55,6 +55,7 @@ impl<T: Real> Spline<T> {
                 return Err(CurveError::NotFiniteParameter { what: "knot", index, value: u.to_string() });
             }
         }
+        crate::bezier::finite_poses("control pose", &poses)?;
         let mut multiplicity = 1;
         for index in 1..knots.len() {
             let (previous, value) = (&knots[index - 1], &knots[index]);

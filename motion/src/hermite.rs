@@ -211,7 +211,8 @@ impl<T: Real, B: Blend<T>> HermiteSegment<T, B> {
     /// `S1` and `S_{n-1}` from the end indicatrices `Ψ0 = λ0(ν0 + γ0)` and `Ψn = λn(νn + γn)`
     /// by eq. (22) or (23) ([`Blend::start_control_pose`], [`Blend::end_control_pose`]); for
     /// `n > 3` the poses in between by [`Blend::inner_control_pose`] (module docs). This is
-    /// what `gam hermite` computes.
+    /// what `gam hermite` computes. A NaN or infinite value in the end conditions or shapes is
+    /// [`crate::MotionError::NotFinite`] (wrapped in [`JoinError::Motion`]).
     ///
     /// ```
     /// use motion::{Additive, EndCondition, HermiteSegment, Pseudoscalar, Shape};
@@ -239,6 +240,7 @@ impl<T: Real, B: Blend<T>> HermiteSegment<T, B> {
         if degree > MAX_SEGMENT_DEGREE {
             return Err(JoinError::DegreeTooLarge { degree, max: MAX_SEGMENT_DEGREE });
         }
+        check_finite_inputs([start, end], [start_shape, end_shape])?;
         let nu = [start.velocity_bivector(), end.velocity_bivector()];
         let psi = [start_shape.indicatrix(&nu[0]), end_shape.indicatrix(&nu[1])];
         let s1 = B::start_control_pose(&start.pose, &psi[0], degree)?;
@@ -424,4 +426,21 @@ impl<T: Ring, B: std::fmt::Debug + Default> std::fmt::Debug for HermiteSegment<T
             .field("velocity_indicatrices", &self.velocity_indicatrices)
             .finish()
     }
+}
+
+/// [`crate::MotionError::NotFinite`] unless every value of the end conditions and shapes is finite
+/// (the fields are public, so [`EndCondition::new`] and [`Shape::new`] take anything).
+fn check_finite_inputs<T: Real>(ends: [&EndCondition<T>; 2], shapes: [&Shape<T>; 2]) -> Result<(), JoinError> {
+    crate::bezier::finite_poses("end condition", ends.map(|c| &c.pose))?;
+    for c in ends {
+        for x in c.position.iter().chain(&c.velocity).chain(&c.angular_velocity) {
+            crate::pose::check_finite_scalar("end condition", x)?;
+        }
+    }
+    for s in shapes {
+        for x in [&s.lambda, &s.gamma.scalar, &s.gamma.e123inf] {
+            crate::pose::check_finite_scalar("shape", x)?;
+        }
+    }
+    Ok(())
 }

@@ -83,6 +83,9 @@ impl Pose<f64> {
     /// let q = UnitDualQuaternion::from_parts(Translation3::new(1.0, 2.0, 3.0), UnitQuaternion::identity());
     /// assert!(Pose::from_unit_dual_quaternion(&q).is_equivalent(&Pose::translation(&[1.0, 2.0, 3.0]), &1e-15).unwrap());
     /// ```
+    ///
+    /// Unchecked: a NaN or infinite dual quaternion gives a non-finite pose;
+    /// [`Pose::try_from_unit_dual_quaternion`] refuses it.
     pub fn from_unit_dual_quaternion(q: &UnitDualQuaternion<f64>) -> Self {
         let q = q.as_ref();
         Pose::from_motor(DualQuaternion::new(from_na(&q.real), from_na(&q.dual)).to_pose())
@@ -113,6 +116,43 @@ impl Pose<f64> {
     /// ```
     pub fn from_isometry(iso: &Isometry3<f64>) -> Self {
         Pose::from_na_isometry(iso)
+    }
+
+    /// [`Pose::from_unit_dual_quaternion`] of a finite dual quaternion:
+    /// [`MotionError::NotFinite`] when a component is NaN or infinite.
+    ///
+    /// ```
+    /// use motion::{MotionError, Pose};
+    /// use nalgebra::{DualQuaternion, Quaternion, UnitDualQuaternion};
+    /// let ok = UnitDualQuaternion::<f64>::identity();
+    /// assert_eq!(Pose::try_from_unit_dual_quaternion(&ok)?, Pose::identity());
+    /// let nan = Quaternion::new(f64::NAN, 0.0, 0.0, 0.0);
+    /// let bad = UnitDualQuaternion::new_unchecked(DualQuaternion::from_real_and_dual(nan, Quaternion::identity()));
+    /// assert!(matches!(Pose::try_from_unit_dual_quaternion(&bad), Err(MotionError::NotFinite { .. })));
+    /// # Ok::<(), MotionError>(())
+    /// ```
+    pub fn try_from_unit_dual_quaternion(q: &UnitDualQuaternion<f64>) -> Result<Self, MotionError> {
+        let d = q.as_ref();
+        if d.real.coords.iter().chain(d.dual.coords.iter()).all(|x| x.is_finite()) {
+            Ok(Pose::from_unit_dual_quaternion(q))
+        } else {
+            Err(MotionError::NotFinite {
+                op: "unit dual quaternion",
+                value: format!("{:?} + ε {:?}", d.real.coords.as_slice(), d.dual.coords.as_slice()),
+            })
+        }
+    }
+
+    /// [`Pose::try_from_na_isometry`] at `f64`: [`MotionError::NotFinite`] for a NaN or
+    /// infinite isometry.
+    ///
+    /// ```
+    /// use motion::Pose;
+    /// use nalgebra::{Isometry3, Vector3};
+    /// assert!(Pose::try_from_isometry(&Isometry3::new(Vector3::new(f64::INFINITY, 0.0, 0.0), Vector3::zeros())).is_err());
+    /// ```
+    pub fn try_from_isometry(iso: &Isometry3<f64>) -> Result<Self, MotionError> {
+        Pose::try_from_na_isometry(iso)
     }
 }
 

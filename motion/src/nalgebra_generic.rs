@@ -25,7 +25,9 @@ use algebra_core::{Real, Ring};
 use nalgebra::{Isometry3, Quaternion, RealField, Translation3, UnitQuaternion};
 
 impl<T: Real + RealField> Pose<T> {
-    /// The pose `S = R T` of the isometry `x ↦ R x + t`.
+    /// The pose `S = R T` of the isometry `x ↦ R x + t`. Unchecked: a NaN or infinite
+    /// isometry gives a non-finite pose (which every fallible pose operation then refuses with
+    /// [`MotionError::NotFinite`]); [`Pose::try_from_na_isometry`] refuses it here.
     ///
     /// ```
     /// use nalgebra::{Isometry3, Vector3};
@@ -40,6 +42,27 @@ impl<T: Real + RealField> Pose<T> {
         let r = Pose::rotor_from_parts(&q.w, &<T as Ring>::one(), &[q.i.clone(), q.j.clone(), q.k.clone()]);
         let v = &iso.translation.vector;
         &r * &Pose::translation(&[v[0].clone(), v[1].clone(), v[2].clone()])
+    }
+
+    /// [`Pose::from_na_isometry`] of a finite isometry: [`MotionError::NotFinite`] when a
+    /// rotation or translation component is NaN or infinite.
+    ///
+    /// ```
+    /// use nalgebra::{Isometry3, Vector3};
+    /// use motion::{MotionError, Pose};
+    /// let ok = Isometry3::new(Vector3::new(1.0f64, 2.0, 3.0), Vector3::new(0.0, 0.0, 1.0));
+    /// assert_eq!(Pose::try_from_na_isometry(&ok)?, Pose::from_na_isometry(&ok));
+    /// let bad = Isometry3::new(Vector3::new(f64::NAN, 0.0, 0.0), Vector3::zeros());
+    /// assert!(matches!(Pose::try_from_na_isometry(&bad), Err(MotionError::NotFinite { .. })));
+    /// # Ok::<(), MotionError>(())
+    /// ```
+    pub fn try_from_na_isometry(iso: &Isometry3<T>) -> Result<Self, MotionError> {
+        let q = iso.rotation.quaternion();
+        let v = &iso.translation.vector;
+        for x in [&q.w, &q.i, &q.j, &q.k, &v[0], &v[1], &v[2]] {
+            crate::pose::check_finite_scalar("isometry", x)?;
+        }
+        Ok(Self::from_na_isometry(iso))
     }
 
     /// The isometry of the same rigid motion (a non-unit pose is unitized first). Fails for

@@ -211,6 +211,11 @@ impl<T: PartialEq> PartialEq<[T; 3]> for Vec3<T> {
 
 impl<T> std::ops::Index<usize> for Vec3<T> {
     type Output = T;
+    /// Component `i` (0, 1, 2 for x, y, z).
+    ///
+    /// # Panics
+    /// For `i > 2`, like indexing a `[T; 3]` (use [`Vec3::to_array`] and `get` for a checked
+    /// lookup).
     fn index(&self, i: usize) -> &T {
         match i {
             0 => &self.x,

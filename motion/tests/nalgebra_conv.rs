@@ -5,6 +5,7 @@
 //! Run with `cargo test -p motion --features nalgebra --test nalgebra_conv`.
 #![cfg(feature = "nalgebra")]
 
+use algebra_core::test_support::Xorshift;
 use motion::Pose;
 use motion::Pseudoscalar;
 use nalgebra::{Isometry3, Point3, UnitDualQuaternion, UnitQuaternion, Vector3};
@@ -12,25 +13,16 @@ use std::f64::consts::PI;
 
 const TOL: f64 = 1e-12;
 
-/// A small deterministic generator (xorshift) of floats in [-1, 1).
-struct Rng(u64);
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 7;
-        self.0 ^= self.0 << 17;
-        (self.0 >> 11) as f64 / (1u64 << 52) as f64 - 1.0
-    }
-    fn vec(&mut self, scale: f64) -> [f64; 3] {
-        [self.next() * scale, self.next() * scale, self.next() * scale]
-    }
+/// Three values in [-scale, scale).
+fn vec(rng: &mut Xorshift, scale: f64) -> [f64; 3] {
+    rng.vec3().map(|x| x * scale)
 }
 
 /// Unit poses (random screws plus the edge cases: identity, pure translation, pure rotation,
 /// rotation by π) and non-unit ones (`γ S` for non-singular pseudoscalars `γ`, negative scalar
 /// parts included).
 fn poses() -> Vec<Pose<f64>> {
-    let mut rng = Rng(0x9e37_79b9_7f4a_7c15);
+    let mut rng = Xorshift(0x9e37_79b9_7f4a_7c15);
     let mut out = vec![
         Pose::identity(),
         Pose::translation(&[1.0, -2.0, 3.0]),
@@ -39,30 +31,30 @@ fn poses() -> Vec<Pose<f64>> {
         Pose::from_axis_angle_translation(&[1.0, 2.0, -1.0], &-PI, &[-4.0, 0.5, 2.0]).unwrap(),
     ];
     for _ in 0..200 {
-        let axis = rng.vec(1.0);
-        let angle = rng.next() * PI;
-        let t = rng.vec(10.0);
+        let axis = vec(&mut rng, 1.0);
+        let angle = rng.symmetric() * PI;
+        let t = vec(&mut rng, 10.0);
         out.push(Pose::from_axis_angle_translation(&axis, &angle, &t).unwrap());
     }
     let unit = out.clone();
     for (i, s) in unit.iter().enumerate() {
-        let a = 0.2 + 3.0 * (rng.next() + 1.0);
+        let a = 0.2 + 3.0 * (rng.symmetric() + 1.0);
         let a = if i % 2 == 0 { a } else { -a };
-        out.push(s.scale_pseudoscalar(&Pseudoscalar::new(a, 5.0 * rng.next())));
+        out.push(s.scale_pseudoscalar(&Pseudoscalar::new(a, 5.0 * rng.symmetric())));
     }
     out
 }
 
 fn isometries() -> Vec<Isometry3<f64>> {
-    let mut rng = Rng(0x2545_f491_4f6c_dd1d);
+    let mut rng = Xorshift(0x2545_f491_4f6c_dd1d);
     let mut out = vec![
         Isometry3::identity(),
         Isometry3::translation(1.0, 2.0, 3.0),
         Isometry3::rotation(Vector3::new(0.0, PI, 0.0)),
     ];
     for _ in 0..200 {
-        let [x, y, z] = rng.vec(10.0);
-        let [a, b, c] = rng.vec(PI / 3f64.sqrt());
+        let [x, y, z] = vec(&mut rng, 10.0);
+        let [a, b, c] = vec(&mut rng, PI / 3f64.sqrt());
         out.push(Isometry3::new(Vector3::new(x, y, z), Vector3::new(a, b, c)));
     }
     out
@@ -81,9 +73,9 @@ fn unit_dual_quaternions() -> Vec<UnitDualQuaternion<f64>> {
 }
 
 fn points() -> Vec<[f64; 3]> {
-    let mut rng = Rng(0xdead_beef_cafe_f00d);
+    let mut rng = Xorshift(0xdead_beef_cafe_f00d);
     let mut out = vec![[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
-    out.extend((0..8).map(|_| rng.vec(5.0)));
+    out.extend((0..8).map(|_| vec(&mut rng, 5.0)));
     out
 }
 

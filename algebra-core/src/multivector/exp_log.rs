@@ -55,6 +55,12 @@ impl<T: Real> Multivector<T> {
         if self.all_finite() { Ok(self) } else { Err(arg.undefined(op, why)) }
     }
 
+    /// The result of `exp` if finite, else "the result overflows" (`exp(1000)`, `exp(1000 e1)`
+    /// with `e1² = 1`).
+    fn exp_result(self, arg: &Self) -> Result<Self, MvError> {
+        if self.all_finite() { Ok(self) } else { Err(arg.undefined("exp", "the result overflows")) }
+    }
+
     pub(super) fn all_finite(&self) -> bool {
         self.coeffs.iter().all(Real::is_finite)
     }
@@ -84,6 +90,11 @@ impl<T: Real> Multivector<T> {
         let (a, b, beta) = self.scalar_square_split();
         let ea = Real::exp(&a);
         if let Some(beta) = beta.filter(Self::closed_form_applies) {
+            if beta < T::zero() && !beta.is_finite() {
+                // `1e300·e12`: a unit rotor cannot overflow, but θ² does, and cos θ of an
+                // infinite angle is NaN (an angle that large is meaningless in this precision)
+                return Err(self.undefined("exp", "the rotation angle is too large for this scalar (θ² overflows)"));
+            }
             let (c, s_over) = if beta.is_exact_zero() {
                 (T::one(), T::one())
             } else if beta < T::zero() {
@@ -95,7 +106,7 @@ impl<T: Real> Multivector<T> {
             };
             let mut out = b.scale(&s_over.mul_ref(&ea));
             out.coeffs[0] = c.mul_ref(&ea);
-            return out.check_finite("exp", self, "the result overflows");
+            return out.exp_result(self);
         }
         let general = b.exp_scaled(self);
         let refused = match &general {
@@ -105,14 +116,14 @@ impl<T: Real> Multivector<T> {
         if refused && self.fixed_precision() {
             // large non-simple bivectors: closed forms per commuting block (super::blocks)
             if let Some(eb) = b.exp_by_blocks() {
-                return eb.scale(&ea).check_finite("exp", self, "the result overflows");
+                return eb.scale(&ea).exp_result(self);
             }
         }
         let (eb, log2_err) = general?;
         if self.fixed_precision() && log2_err > F64_GENERAL_BOUND.log2() {
             return Err(self.undefined("exp", Self::ill_conditioned(log2_err)));
         }
-        eb.scale(&ea).check_finite("exp", self, "the result overflows")
+        eb.scale(&ea).exp_result(self)
     }
 
     /// The principal square root: closed form when `x = a + B` with `B²` scalar, else the

@@ -2,7 +2,7 @@
 //! multiplication, so it works for every metric (degenerate too) without closed forms.
 
 use super::{Multivector, MvError};
-use crate::scalar::Field;
+use crate::scalar::{Field, Ring};
 
 use crate::tables::Product;
 
@@ -28,6 +28,11 @@ impl<T: Field> Multivector<T> {
     /// ```
     #[allow(clippy::needless_range_loop)] // matrix assembly reads clearest with indices
     pub fn inverse(&self) -> Result<Self, MvError> {
+        if !self.coeffs.iter().all(Ring::is_finite_value) {
+            // a NaN pivot would otherwise be reported as "not invertible"
+            let (value, why) = (self.to_string(), "coefficients are not finite".to_string());
+            return Err(MvError::Undefined { op: "inverse", value, why });
+        }
         let dim = self.algebra.dim();
         let table = self.algebra.tables().product(self.basis, Product::Geometric);
         // column j of L = self * e_j
@@ -37,7 +42,7 @@ impl<T: Field> Multivector<T> {
                 continue;
             }
             for j in 0..dim {
-                for (k, c) in table.get(a as u32, j as u32) {
+                for (k, c) in table.at(a as u32, j as u32) {
                     l[*k as usize][j].add_assign_ref(&x.scale_rational(c));
                 }
             }

@@ -313,7 +313,7 @@ impl<T: Ring> Multivector<T> {
             .basis_order()
             .iter()
             .filter(|&&m| !self.coeffs[m as usize].is_exact_zero())
-            .map(|&m| (m, self.algebra.name_of(m), &self.coeffs[m as usize]))
+            .map(|&m| (m, self.algebra.name_at(m), &self.coeffs[m as usize]))
     }
 
     /// True when every coefficient is exactly zero.
@@ -345,7 +345,7 @@ impl<T: Ring> Multivector<T> {
             if c.is_exact_zero() {
                 continue;
             }
-            for (m, f) in map.image(k as u32) {
+            for (m, f) in map.image_at(k as u32) {
                 out.coeffs[*m as usize].add_assign_ref(&c.scale_rational(f));
             }
         }

@@ -35,7 +35,7 @@ impl<T: Ring> Multivector<T> {
                 if y.is_exact_zero() {
                     continue;
                 }
-                let entry = table.get(a as u32, b as u32);
+                let entry = table.at(a as u32, b as u32);
                 if entry.is_empty() {
                     continue;
                 }

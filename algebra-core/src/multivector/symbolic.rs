@@ -86,7 +86,7 @@ impl Multivector<Poly> {
                 .collect(),
         };
         for m in masks {
-            out.coeffs_mut()[m as usize] = Poly::var(&coefficient_symbol(prefix, algebra.name_of(m)));
+            out.coeffs_mut()[m as usize] = Poly::var(&coefficient_symbol(prefix, algebra.name_at(m)));
         }
         Ok(out)
     }
@@ -128,7 +128,7 @@ impl Multivector<Poly> {
         let mut total = 0u128;
         for (a, x) in self.coeffs.iter().enumerate().filter(|(_, x)| !x.is_exact_zero()) {
             for (b, y) in rhs.coeffs.iter().enumerate().filter(|(_, y)| !y.is_exact_zero()) {
-                let entries = table.get(a as u32, b as u32).len() as u128;
+                let entries = table.at(a as u32, b as u32).len() as u128;
                 total += entries * x.term_count() as u128 * y.term_count() as u128;
             }
         }

@@ -85,7 +85,7 @@ pub fn bilinear(alg: &Algebra, u: &[Q], v: &[Q]) -> Q {
     let mut s = q(0);
     for (i, ui) in u.iter().enumerate() {
         for (j, vj) in v.iter().enumerate() {
-            s += ui * vj * alg.metric().gram(i, j);
+            s += ui * vj * alg.metric().gram(i, j).unwrap();
         }
     }
     s
@@ -150,15 +150,6 @@ pub fn reorder_sign(a: u32, b: u32) -> i64 {
     if swaps.is_multiple_of(2) { 1 } else { -1 }
 }
 
-/// A xorshift64 generator for deterministic random instances outside proptest.
-pub struct Xorshift(pub u64);
-
-impl Xorshift {
-    /// Uniform in `[0, 1)`.
-    pub fn unit(&mut self) -> f64 {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 7;
-        self.0 ^= self.0 << 17;
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64
-    }
-}
+/// The workspace's deterministic generator for random instances outside proptest.
+#[allow(unused_imports)] // not every test file of this crate draws random instances
+pub use algebra_core::test_support::Xorshift;

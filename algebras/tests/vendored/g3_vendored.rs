@@ -74,12 +74,41 @@ pub mod g3_vendored {
         }
         /// The projection of a runtime multivector onto this type: its coefficients on this
         /// type's basis elements (in [`BASIS`]); every other coefficient is dropped.
+        ///
+        /// # Panics
+        /// When `m` belongs to an algebra with fewer basis elements than [`algebra()`]; use
+        /// [`Self::try_project`] for multivectors of unknown origin.
         pub fn project(m: &::algebra_core::Multivector<T>) -> Self {
             let m = m.in_basis(BASIS);
             Vector {
                 e1: ::core::clone::Clone::clone(&m.coeffs()[1u32 as usize]),
                 e2: ::core::clone::Clone::clone(&m.coeffs()[2u32 as usize]),
                 e3: ::core::clone::Clone::clone(&m.coeffs()[4u32 as usize]),
+            }
+        }
+        /// [`Self::project`] after checking that `m` belongs to [`algebra()`] (same metric):
+        /// `MvError::AlgebraMismatch` otherwise, so a multivector of another (smaller or
+        /// larger) algebra is refused instead of indexed.
+        pub fn try_project(
+            m: &::algebra_core::Multivector<T>,
+        ) -> ::core::result::Result<Self, ::algebra_core::MvError> {
+            Self::check_algebra(m)?;
+            Ok(Self::project(m))
+        }
+        /// `Ok` when `m` belongs to [`algebra()`] (the same metric).
+        fn check_algebra(
+            m: &::algebra_core::Multivector<T>,
+        ) -> ::core::result::Result<(), ::algebra_core::MvError> {
+            let own = algebra();
+            if ::std::sync::Arc::ptr_eq(m.algebra(), &own)
+                || m.algebra().metric() == own.metric()
+            {
+                Ok(())
+            } else {
+                Err(::algebra_core::MvError::AlgebraMismatch {
+                    left: ::std::string::String::from(m.algebra().name()),
+                    right: ::std::string::String::from(own.name()),
+                })
             }
         }
         /// A general element with symbolic coefficients named `prefix` + the basis label
@@ -455,6 +484,7 @@ pub mod g3_vendored {
         fn try_from(
             m: &::algebra_core::Multivector<T>,
         ) -> ::core::result::Result<Self, Self::Error> {
+            Self::check_algebra(m)?;
             let converted = m.in_basis(BASIS);
             for (mask, name, _) in converted.terms() {
                 if !Self::MASKS.contains(&mask) {
@@ -618,6 +648,10 @@ pub mod g3_vendored {
         }
         /// The projection of a runtime multivector onto this type: its coefficients on this
         /// type's basis elements (in [`BASIS`]); every other coefficient is dropped.
+        ///
+        /// # Panics
+        /// When `m` belongs to an algebra with fewer basis elements than [`algebra()`]; use
+        /// [`Self::try_project`] for multivectors of unknown origin.
         pub fn project(m: &::algebra_core::Multivector<T>) -> Self {
             let m = m.in_basis(BASIS);
             Rotor {
@@ -625,6 +659,31 @@ pub mod g3_vendored {
                 e12: ::core::clone::Clone::clone(&m.coeffs()[3u32 as usize]),
                 e13: ::core::clone::Clone::clone(&m.coeffs()[5u32 as usize]),
                 e23: ::core::clone::Clone::clone(&m.coeffs()[6u32 as usize]),
+            }
+        }
+        /// [`Self::project`] after checking that `m` belongs to [`algebra()`] (same metric):
+        /// `MvError::AlgebraMismatch` otherwise, so a multivector of another (smaller or
+        /// larger) algebra is refused instead of indexed.
+        pub fn try_project(
+            m: &::algebra_core::Multivector<T>,
+        ) -> ::core::result::Result<Self, ::algebra_core::MvError> {
+            Self::check_algebra(m)?;
+            Ok(Self::project(m))
+        }
+        /// `Ok` when `m` belongs to [`algebra()`] (the same metric).
+        fn check_algebra(
+            m: &::algebra_core::Multivector<T>,
+        ) -> ::core::result::Result<(), ::algebra_core::MvError> {
+            let own = algebra();
+            if ::std::sync::Arc::ptr_eq(m.algebra(), &own)
+                || m.algebra().metric() == own.metric()
+            {
+                Ok(())
+            } else {
+                Err(::algebra_core::MvError::AlgebraMismatch {
+                    left: ::std::string::String::from(m.algebra().name()),
+                    right: ::std::string::String::from(own.name()),
+                })
             }
         }
         /// A general element with symbolic coefficients named `prefix` + the basis label
@@ -1052,6 +1111,7 @@ pub mod g3_vendored {
         fn try_from(
             m: &::algebra_core::Multivector<T>,
         ) -> ::core::result::Result<Self, Self::Error> {
+            Self::check_algebra(m)?;
             let converted = m.in_basis(BASIS);
             for (mask, name, _) in converted.terms() {
                 if !Self::MASKS.contains(&mask) {
@@ -1218,6 +1278,10 @@ pub mod g3_vendored {
         }
         /// The projection of a runtime multivector onto this type: its coefficients on this
         /// type's basis elements (in [`BASIS`]); every other coefficient is dropped.
+        ///
+        /// # Panics
+        /// When `m` belongs to an algebra with fewer basis elements than [`algebra()`]; use
+        /// [`Self::try_project`] for multivectors of unknown origin.
         pub fn project(m: &::algebra_core::Multivector<T>) -> Self {
             let m = m.in_basis(BASIS);
             Odd {
@@ -1225,6 +1289,31 @@ pub mod g3_vendored {
                 e2: ::core::clone::Clone::clone(&m.coeffs()[2u32 as usize]),
                 e3: ::core::clone::Clone::clone(&m.coeffs()[4u32 as usize]),
                 e123: ::core::clone::Clone::clone(&m.coeffs()[7u32 as usize]),
+            }
+        }
+        /// [`Self::project`] after checking that `m` belongs to [`algebra()`] (same metric):
+        /// `MvError::AlgebraMismatch` otherwise, so a multivector of another (smaller or
+        /// larger) algebra is refused instead of indexed.
+        pub fn try_project(
+            m: &::algebra_core::Multivector<T>,
+        ) -> ::core::result::Result<Self, ::algebra_core::MvError> {
+            Self::check_algebra(m)?;
+            Ok(Self::project(m))
+        }
+        /// `Ok` when `m` belongs to [`algebra()`] (the same metric).
+        fn check_algebra(
+            m: &::algebra_core::Multivector<T>,
+        ) -> ::core::result::Result<(), ::algebra_core::MvError> {
+            let own = algebra();
+            if ::std::sync::Arc::ptr_eq(m.algebra(), &own)
+                || m.algebra().metric() == own.metric()
+            {
+                Ok(())
+            } else {
+                Err(::algebra_core::MvError::AlgebraMismatch {
+                    left: ::std::string::String::from(m.algebra().name()),
+                    right: ::std::string::String::from(own.name()),
+                })
             }
         }
         /// A general element with symbolic coefficients named `prefix` + the basis label
@@ -1631,6 +1720,7 @@ pub mod g3_vendored {
         fn try_from(
             m: &::algebra_core::Multivector<T>,
         ) -> ::core::result::Result<Self, Self::Error> {
+            Self::check_algebra(m)?;
             let converted = m.in_basis(BASIS);
             for (mask, name, _) in converted.terms() {
                 if !Self::MASKS.contains(&mask) {
@@ -1859,6 +1949,10 @@ pub mod g3_vendored {
         }
         /// The projection of a runtime multivector onto this type: its coefficients on this
         /// type's basis elements (in [`BASIS`]); every other coefficient is dropped.
+        ///
+        /// # Panics
+        /// When `m` belongs to an algebra with fewer basis elements than [`algebra()`]; use
+        /// [`Self::try_project`] for multivectors of unknown origin.
         pub fn project(m: &::algebra_core::Multivector<T>) -> Self {
             let m = m.in_basis(BASIS);
             Multivector {
@@ -1870,6 +1964,31 @@ pub mod g3_vendored {
                 e13: ::core::clone::Clone::clone(&m.coeffs()[5u32 as usize]),
                 e23: ::core::clone::Clone::clone(&m.coeffs()[6u32 as usize]),
                 e123: ::core::clone::Clone::clone(&m.coeffs()[7u32 as usize]),
+            }
+        }
+        /// [`Self::project`] after checking that `m` belongs to [`algebra()`] (same metric):
+        /// `MvError::AlgebraMismatch` otherwise, so a multivector of another (smaller or
+        /// larger) algebra is refused instead of indexed.
+        pub fn try_project(
+            m: &::algebra_core::Multivector<T>,
+        ) -> ::core::result::Result<Self, ::algebra_core::MvError> {
+            Self::check_algebra(m)?;
+            Ok(Self::project(m))
+        }
+        /// `Ok` when `m` belongs to [`algebra()`] (the same metric).
+        fn check_algebra(
+            m: &::algebra_core::Multivector<T>,
+        ) -> ::core::result::Result<(), ::algebra_core::MvError> {
+            let own = algebra();
+            if ::std::sync::Arc::ptr_eq(m.algebra(), &own)
+                || m.algebra().metric() == own.metric()
+            {
+                Ok(())
+            } else {
+                Err(::algebra_core::MvError::AlgebraMismatch {
+                    left: ::std::string::String::from(m.algebra().name()),
+                    right: ::std::string::String::from(own.name()),
+                })
             }
         }
         /// A general element with symbolic coefficients named `prefix` + the basis label
@@ -2535,6 +2654,7 @@ pub mod g3_vendored {
         fn try_from(
             m: &::algebra_core::Multivector<T>,
         ) -> ::core::result::Result<Self, Self::Error> {
+            Self::check_algebra(m)?;
             let converted = m.in_basis(BASIS);
             for (mask, name, _) in converted.terms() {
                 if !Self::MASKS.contains(&mask) {
@@ -10092,4 +10212,3 @@ pub mod g3_vendored {
         }
     }
 }
-

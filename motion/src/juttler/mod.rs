@@ -162,6 +162,18 @@ pub enum JuttlerError {
     Repr(#[from] ReprError),
 }
 
+/// [`MotionError::NotFinite`] (operation `op`) for the first control point with a NaN or
+/// infinite coordinate.
+pub(crate) fn check_finite<T: Ring, const N: usize>(
+    op: &'static str,
+    mut points: impl Iterator<Item = [T; N]>,
+) -> Result<(), JuttlerError> {
+    match points.find(|p| !p.iter().all(Ring::is_finite_value)) {
+        Some(p) => Err(MotionError::NotFinite { op, value: format!("{p:?}") }.into()),
+        None => Ok(()),
+    }
+}
+
 /// `C(n, k)` as an exact rational.
 pub(crate) fn binomial(n: usize, k: usize) -> Q {
     (0..k).fold(q(1), |acc, i| acc * q((n - i) as i64) / q((i + 1) as i64))

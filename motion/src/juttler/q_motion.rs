@@ -69,6 +69,7 @@ impl<T: Ring> QMotion<T> {
         if control.is_empty() {
             return Err(JuttlerError::TooFewPositions { need: 1, got: 0 });
         }
+        super::check_finite("Q-motion control point", control.iter().map(DualQuaternion::coeffs))?;
         let m = QMotion { control };
         let max = |f: &dyn Fn(&DualQuaternion<T>) -> f64| m.control.iter().map(f).fold(0.0, f64::max);
         let scale = (max(&|b| b.real.norm_squared().magnitude()) * max(&|b| b.dual.norm_squared().magnitude())).sqrt();

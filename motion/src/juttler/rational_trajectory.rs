@@ -51,6 +51,7 @@ impl<T: Ring> RationalBezier<T> {
         if control.is_empty() {
             return Err(JuttlerError::TooFewPositions { need: 1, got: 0 });
         }
+        super::check_finite("rational Bézier control point", control.iter().cloned())?;
         Ok(RationalBezier { control })
     }
 

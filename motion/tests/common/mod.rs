@@ -167,14 +167,12 @@ pub fn de_casteljau(controls: &[Pose<f64>], t: &num_dual::Dual64) -> Pose<num_du
     level.pop().unwrap()
 }
 
-/// A small deterministic generator (xorshift) of floats in [-0.5, 0.5).
-pub struct Rng(pub u64);
-impl Rng {
-    /// The next value in [-0.5, 0.5).
-    pub fn next(&mut self) -> f64 {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 7;
-        self.0 ^= self.0 << 17;
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64 - 0.5
-    }
+/// The workspace's deterministic generator (`algebra_core::test_support`).
+#[allow(unused_imports)] // not every test file of this crate draws random instances
+pub use algebra_core::test_support::Xorshift;
+
+/// The next value of `rng` in [-0.5, 0.5).
+#[allow(dead_code)] // not every test file of this crate draws random instances
+pub fn centered(rng: &mut Xorshift) -> f64 {
+    rng.unit() - 0.5
 }

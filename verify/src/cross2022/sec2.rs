@@ -329,8 +329,9 @@ fn lemma_2_2_iii(c: &mut Checker) {
     c.equal_mv("σ = e0 · ω = -e123 + e0123inf", &sigma_def, &sigma(&alg));
     for m in 0..alg.dim() as u32 {
         let x = Multivector::from_mask(&alg, Basis::Product, m).expect("m < dim");
-        c.equal_mv(format!("σ {0} = {0} σ", alg.name_of(m)), &(&sigma_def * &x), &(&x * &sigma_def));
-        c.check(format!("σ ∧ {} = 0 (commutator)", alg.name_of(m)), sigma_def.commutator(&x).is_zero());
+        let name = alg.name_of(m).expect("m < dim");
+        c.equal_mv(format!("σ {name} = {name} σ"), &(&sigma_def * &x), &(&x * &sigma_def));
+        c.check(format!("σ ∧ {name} = 0 (commutator)"), sigma_def.commutator(&x).is_zero());
     }
     c.counterexample(
         "σ ^ x = 0 for the outer product of blades",
