@@ -9,6 +9,8 @@
 //! | [`rational_trajectory`] | [`RationalBezier`]: the trajectory of a body point as a rational Bézier curve of degree `2n`; evaluation, derivative, degree elevation | eq. (12), Sec. 1 |
 //! | [`rotational`] | interpolation of the rotational parts: affine (19)-(21), elliptic (22)-(25) with the sign rule (24) | Props. 1, 2 |
 //! | [`tr`] | the TR method (30)-(31) and Algorithm 1 (elliptic + TR, degree `2m`) | Prop. 4, Algorithm 1 |
+//! | [`velocity`] | [`KeyVelocity`] (`v⃗_i`, `ω⃗_i`) and step 1 of Algorithm 2: velocities estimated from the connecting translations and rotations (Bessel) | Algorithm 2, (42) |
+//! | [`spline`] | [`SplineQMotion`]: Algorithm 2, the C1 spline Q-motion (40)-(44); a [`crate::Motion`] | Sec. 6, Algorithm 2 |
 //!
 //! The parametrisations that take square roots or angles need [`algebra_core::Real`]; the
 //! rest is exact over [`algebra_core::rational::Q`].
@@ -30,11 +32,15 @@ pub mod parametrisation;
 pub mod q_motion;
 pub mod rational_trajectory;
 pub mod rotational;
+pub mod spline;
 pub mod tr;
+pub mod velocity;
 
 pub use parametrisation::{Parametrisation, parameters};
 pub use q_motion::QMotion;
 pub use rational_trajectory::{RationalBezier, RationalMotion};
+pub use spline::SplineQMotion;
+pub use velocity::KeyVelocity;
 
 use crate::MotionError;
 use crate::repr::ReprError;
