@@ -7,6 +7,7 @@
 //! | [`parametrisation`] | parameters `t_i` of the given positions: chordal, `*`-chordal, equidistant, centripetal, angular, angle + distance, explicit | eq. (15) |
 //! | [`q_motion`] | [`QMotion`]: Bézier curves of dual quaternions on the Study quadric; de Casteljau, degree elevation, product formula (29), the Study condition as a polynomial; a [`crate::Motion`] | eqs. (13), (29), (8) |
 //! | [`rational_trajectory`] | [`RationalBezier`]: the trajectory of a body point as a rational Bézier curve of degree `2n`; evaluation, derivative, degree elevation | eq. (12), Sec. 1 |
+//! | [`additive_trajectory`] | trajectories of the main paper's additive Bézier motions ([`crate::AdditiveBezier`], a [`RationalMotion`]): degree `2n` | main paper (18), (6)-(9); (29) |
 //! | [`rotational`] | interpolation of the rotational parts: affine (19)-(21), elliptic (22)-(25) with the sign rule (24) | Props. 1, 2 |
 //! | [`tr`] | the TR method (30)-(31) and Algorithm 1 (elliptic + TR, degree `2m`) | Prop. 4, Algorithm 1 |
 //! | [`velocity`] | [`KeyVelocity`] (`v⃗_i`, `ω⃗_i`) and step 1 of Algorithm 2: velocities estimated from the connecting translations and rotations (Bessel) | Algorithm 2, (42) |
@@ -28,6 +29,7 @@
 //! assert_eq!(path.point(&ratio(1, 2)).unwrap(), [q(0), q(0), q(1)]);
 //! ```
 
+pub mod additive_trajectory;
 pub mod parametrisation;
 pub mod q_motion;
 pub mod rational_trajectory;
