@@ -133,9 +133,10 @@ fn bessel_reproduces_a_parabola_exactly() {
     let f = |t: &Q| q(2) - t.clone() + q(3) * t.clone() * t.clone();
     let d: Vec<[Q; 1]> = t.windows(2).map(|w| [(f(&w[1]) - f(&w[0])) / (w[1].clone() - w[0].clone())]).collect();
     let want: Vec<[Q; 1]> = t.iter().map(|t| [q(6) * t.clone() - q(1)]).collect();
-    assert_eq!(bessel(&t, &d), want);
+    assert_eq!(bessel(&t, &d).unwrap(), want);
     // two parameters: the chord for both
-    assert_eq!(bessel(&t[..2], &d[..1]), vec![d[0].clone(), d[0].clone()]);
+    assert_eq!(bessel(&t[..2], &d[..1]).unwrap(), vec![d[0].clone(), d[0].clone()]);
+    assert!(bessel(&t[..2], &d).is_err());
 }
 
 fn generic_poses() -> Vec<Pose<f64>> {
