@@ -103,6 +103,20 @@ fn exact_over_rationals_through_the_poses_and_c1_with_the_given_velocities() {
 }
 
 #[test]
+fn segment_trajectories_are_exact() {
+    let m = SplineQMotion::hermite(&poses(), &params(), &velocities()).unwrap();
+    let x = [ratio(1, 2), q(-3), q(2)];
+    let paths = m.trajectories(&x);
+    assert_eq!(paths.len(), 3);
+    for k in 0..=40 {
+        let t = ratio(k, 20);
+        let (i, u) = m.local(&t);
+        assert_eq!(paths[i].degree(), 12);
+        assert_eq!(paths[i].point(&u).unwrap(), m.pose_exact(&t).unwrap().transform_point(&x).unwrap(), "t = {t}");
+    }
+}
+
+#[test]
 fn estimate_is_exact_on_quadratic_translations_and_rotation_angles() {
     // s(t) = (1, -2, 3) + (2, 0, 1) t + (1, 3, -1) t², θ(t) = 0.3 + 0.5 t - 0.2 t² about a fixed axis
     let ts = [0.0, 0.25, 1.0, 1.5, 2.75];
