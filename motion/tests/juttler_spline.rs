@@ -153,14 +153,18 @@ fn bessel_reproduces_a_parabola_exactly() {
     assert!(bessel(&t[..2], &d).is_err());
 }
 
+/// Five generic poses: screws about tilted axes, angles from -0.9 to 1.9.
 fn generic_poses() -> Vec<Pose<f64>> {
-    (0..5)
-        .map(|i| {
-            let x = i as f64;
-            let axis = [0.2 + x, 1.0 - 0.3 * x, 0.5 * x * x - 1.0];
-            Pose::from_axis_angle_translation(&axis, &(0.7 * x - 1.1), &[x, 2.0 - x * x, 0.4 * x]).unwrap()
-        })
-        .collect()
+    [
+        ([0.5, -0.2, 0.8], -0.9, [0.0, 0.3, -0.1]),
+        ([0.1, 0.9, 0.4], 0.3, [0.7, 1.1, 0.5]),
+        ([-0.6, 0.2, 0.7], 1.1, [1.9, 0.4, 1.3]),
+        ([0.3, 0.3, -0.9], 1.9, [2.2, -0.8, 2.0]),
+        ([0.9, -0.4, 0.1], 0.6, [3.1, -0.2, 2.6]),
+    ]
+    .iter()
+    .map(|(axis, angle, t)| Pose::from_axis_angle_translation(axis, angle, t).unwrap())
+    .collect()
 }
 
 #[test]
