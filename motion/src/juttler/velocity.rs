@@ -15,7 +15,7 @@
 //!   `d_k = θ_k a_k / Δt_k`;
 //!
 //! and combine the two quotients next to `t_i` by Bessel's rule ([`bessel`], Hoschek–Lasser,
-//! Jüttler's ref. [7]): the derivative at `t_i` of the parabola through the three neighbouring
+//! Jüttler's ref. \[7\]): the derivative at `t_i` of the parabola through the three neighbouring
 //! values. It reproduces the velocities of every motion whose translation and rotation vector
 //! (about a fixed axis) are quadratic in `t` (tests `juttler_spline.rs`). With two positions
 //! both velocities are `d_0`.
