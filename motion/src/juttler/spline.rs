@@ -59,6 +59,12 @@ pub struct SplineQMotion<T> {
 }
 
 impl<T: Ring> SplineQMotion<T> {
+    /// Segments with their breaks (`breaks.len() = segments.len() + 1`, strictly increasing:
+    /// the caller's invariant).
+    pub(crate) fn from_pieces(breaks: Vec<T>, segments: Vec<QMotion<T>>) -> Self {
+        SplineQMotion { breaks, segments }
+    }
+
     /// The parameters `t_0 < … < t_m` (the segment ends).
     ///
     /// ```
