@@ -137,3 +137,40 @@ fn off_the_quadric_and_bad_knots_are_typed_errors() {
     let nan = BSplineQMotion::new(0, vec![0.0, f64::NAN], vec![DualQuaternion::one()], 1e-12);
     assert!(matches!(nan, Err(JuttlerError::Parameters { .. })));
 }
+
+#[test]
+fn product_is_the_pointwise_product_with_the_expected_knots() {
+    // the rotational cubic (knots 1/3 simple, 1/2 double) times a translational quadratic
+    // (knots 1/4, 1/2 simple): degree 5, multiplicities 4 at 1/4 (C1), 3 at 1/3 (C2), 4 at 1/2 (C1)
+    let rot = {
+        let c = cubic();
+        let strip = c.control().iter().map(|b| DualQuaternion::from_real(b.real.clone())).collect();
+        BSplineQMotion::new_exact(3, c.knots().to_vec(), strip).unwrap()
+    };
+    let p = [[0, 0, 0], [1, 2, 0], [3, -1, 1], [2, 2, 2], [0, 1, 4]];
+    let tr_control = p
+        .iter()
+        .map(|v| DualQuaternion::new(Quaternion::new(q(2), q(0), q(0), q(0)), Quaternion::pure(&v.map(q))))
+        .collect();
+    let tr =
+        BSplineQMotion::new_exact(2, vec![q(0), q(0), q(0), ratio(1, 4), ratio(1, 2), q(1), q(1), q(1)], tr_control)
+            .unwrap();
+    let m = tr.product(&rot).unwrap();
+    assert_eq!(m.degree(), 5);
+    let want: Vec<Q> = [(q(0), 6), (ratio(1, 4), 4), (ratio(1, 3), 3), (ratio(1, 2), 4), (q(1), 6)]
+        .iter()
+        .flat_map(|(x, n)| vec![x.clone(); *n])
+        .collect();
+    assert_eq!(m.knots(), want);
+    for k in 0..=40 {
+        let t = ratio(k, 40);
+        assert_eq!(m.eval(&t), &tr.eval(&t) * &rot.eval(&t), "t = {t}");
+    }
+    // value and first derivative continuous across the pieces at 1/4 and 1/3
+    let s = m.pieces();
+    assert_eq!(s.segment_jet(0, &ratio(1, 4)), s.segment_jet(1, &ratio(1, 4)));
+    assert_eq!(s.segment_jet(1, &ratio(1, 3)), s.segment_jet(2, &ratio(1, 3)));
+    // different domains are a typed error
+    let other = BSplineQMotion::new_exact(0, vec![q(0), q(2)], vec![d([1, 0, 0, 0, 0, 0, 0, 0])]).unwrap();
+    assert!(matches!(m.product(&other), Err(JuttlerError::Parameters { .. })));
+}

@@ -7,9 +7,11 @@
 //! (`b_i = Q[u_k^{p-i}, u_{k+1}^i]` on the span `[u_k, u_{k+1}]`), which gives the Study
 //! condition exactly (every piece's Study polynomial, [`QMotion::study_polynomial`]), the
 //! [`crate::Motion`], and the trajectories (one rational Bézier curve of degree `2p` per span)
-//! through a [`SplineQMotion`]. Not here: Jüttler's interpolation methods with B-spline
-//! Q-motions, which need the product formulae for B-splines (his ref. \[10\], Mørken) in place
-//! of (29).
+//! through a [`SplineQMotion`]. The product of two B-spline Q-motions
+//! ([`BSplineQMotion::product`], Jüttler's "product formulae for B-spline basis functions")
+//! goes through the pieces as well: (29) on each span, then the control points as blossoms,
+//! instead of Mørken's formulae (his ref. \[10\]). Not here: Jüttler's interpolation methods
+//! generalised to B-spline Q-motions (choice of knots, Schoenberg–Whitney collocation).
 //!
 //! ```
 //! use algebra_core::rational::{q, ratio};
@@ -23,7 +25,7 @@
 //! assert_eq!(m.eval(&ratio(1, 2)), m.pieces().eval(&ratio(1, 2)));
 //! ```
 
-use super::{JuttlerError, QMotion, SplineQMotion};
+use super::{JuttlerError, QMotion, SplineQMotion, bernstein_product};
 use crate::repr::dual_quaternion::DualQuaternion;
 use crate::{CurveError, MapScalar, Motion, Pose};
 use algebra_core::{Field, Real, Ring};
@@ -145,6 +147,69 @@ impl<T: Field + PartialOrd> BSplineQMotion<T> {
         d.swap_remove(p)
     }
 
+    /// The product `Q(t) = self(t) * other(t)` as a B-spline Q-motion of degree `p + q` on the
+    /// common domain (clamped knots; at an interior knot the multiplicity `p + q - c`, `c` the
+    /// lower continuity order of the two factors there), exact over rationals: each control
+    /// point `c_j` is the blossom at `u_{j+1}, …, u_{j+p+q}` of the product piece on a span of
+    /// its support, the piece by the product formula (29) of the two factors restricted to that
+    /// span. Applies `other`'s displacement first, as [`QMotion::product`]. Fails for different
+    /// domains.
+    ///
+    /// ```
+    /// use algebra_core::rational::{q, ratio};
+    /// use gam_algebras::DualQuaternion;
+    /// use motion::juttler::bspline::BSplineQMotion;
+    /// let d = |c: [i64; 8]| DualQuaternion::from_coeffs(c.map(q));
+    /// let k = vec![q(0), q(0), ratio(1, 2), q(1), q(1)];
+    /// let rot = BSplineQMotion::new_exact(1, k.clone(), vec![d([1, 0, 0, 0, 0, 0, 0, 0]), d([1, 0, 0, 1, 0, 0, 0, 0]), d([0, 0, 0, 1, 0, 0, 0, 0])]).unwrap();
+    /// let tr = BSplineQMotion::new_exact(1, k, vec![d([2, 0, 0, 0, 0, 0, 0, 0]), d([2, 0, 0, 0, 0, 1, 0, 0]), d([2, 0, 0, 0, 0, 1, 1, 0])]).unwrap();
+    /// let m = tr.product(&rot).unwrap();
+    /// assert_eq!(m.degree(), 2);
+    /// assert_eq!(m.eval(&ratio(1, 3)), &tr.eval(&ratio(1, 3)) * &rot.eval(&ratio(1, 3)));
+    /// ```
+    pub fn product(&self, other: &Self) -> Result<Self, JuttlerError> {
+        let dom = self.domain_interval();
+        if dom != other.domain_interval() {
+            return Err(knot_error("the factors of a B-spline product need the same domain".into()));
+        }
+        let d = self.degree + other.degree;
+        let mut inner: Vec<T> =
+            self.knots.iter().chain(&other.knots).filter(|u| dom[0] < **u && **u < dom[1]).cloned().collect();
+        inner.sort_by(|a, b| a.partial_cmp(b).unwrap_or(Ordering::Equal));
+        inner.dedup();
+        // continuity order at x: p - multiplicity (or none for a knot of the other factor only)
+        let order = |m: &Self, x: &T| match m.knots.iter().filter(|u| *u == x).count() {
+            0 => usize::MAX,
+            k => (m.degree + 1).saturating_sub(k),
+        };
+        let mut knots = vec![dom[0].clone(); d + 1];
+        for x in &inner {
+            // multiplicity d - c with c = min order - 1 (order counts from C^-1 = 0)
+            let c = order(self, x).min(order(other, x));
+            knots.extend(std::iter::repeat_n(x.clone(), (d + 1).saturating_sub(c).max(1)));
+        }
+        knots.extend(std::iter::repeat_n(dom[1].clone(), d + 1));
+        let n1 = knots.len() - d - 1;
+        let control = (0..n1)
+            .map(|j| {
+                let k = (j.max(d)..=(j + d).min(n1 - 1)).find(|&k| knots[k] < knots[k + 1]).unwrap_or(d);
+                let (a, b) = (&knots[k], &knots[k + 1]);
+                let piece = bernstein_product(
+                    &restrict(&self.pieces, a, b),
+                    &restrict(&other.pieces, a, b),
+                    DualQuaternion::zero(),
+                    |x, y| x * y,
+                    |acc, x, f: &T| acc + &x.scale(f),
+                );
+                let inv = b.sub_ref(a).try_recip().unwrap_or_else(T::zero);
+                let args: Vec<T> = knots[j + 1..=j + d].iter().map(|u| u.sub_ref(a).mul_ref(&inv)).collect();
+                bezier_blossom(&piece, &args)
+            })
+            .collect();
+        // a product of Q-motions is one: tol = 1 bounds every Study coefficient (see QMotion::new)
+        Self::new(d, knots, control, 1.0)
+    }
+
     /// `Q(t) = Σ N_j^p(t) B_j` by de Boor's algorithm on the span of `t` (the right one at an
     /// interior knot; the first or last one outside the domain); exact over rationals.
     ///
@@ -162,6 +227,34 @@ impl<T: Field + PartialOrd> BSplineQMotion<T> {
         let k = spans.rev().find(|&k| u[k] <= *t).unwrap_or(first);
         self.blossom(k, &vec![t.clone(); p])
     }
+}
+
+/// The blossom of the Bézier polynomial with `control` (local parameter) at `args`, one per
+/// level of de Casteljau's triangle.
+fn bezier_blossom<T: Ring>(control: &[DualQuaternion<T>], args: &[T]) -> DualQuaternion<T> {
+    let mut col = control.to_vec();
+    for (len, x) in (1..col.len()).rev().zip(args) {
+        let s = T::one().sub_ref(x);
+        for i in 0..len {
+            col[i] = &col[i].scale(&s) + &col[i + 1].scale(x);
+        }
+    }
+    col.swap_remove(0)
+}
+
+/// The Bézier control points, on `[a, b]`, of the piece of `pieces` containing that interval.
+fn restrict<T: Field + PartialOrd>(pieces: &SplineQMotion<T>, a: &T, b: &T) -> Vec<DualQuaternion<T>> {
+    let (i, a_local) = pieces.local(a);
+    let (lo, hi) = (&pieces.breaks()[i], &pieces.breaks()[i + 1]);
+    let b_local = b.sub_ref(lo).mul_ref(&hi.sub_ref(lo).try_recip().unwrap_or_else(T::zero));
+    let c = pieces.segments()[i].control();
+    let n = c.len() - 1;
+    (0..=n)
+        .map(|r| {
+            let args: Vec<T> = (0..n).map(|l| if l < n - r { a_local.clone() } else { b_local.clone() }).collect();
+            bezier_blossom(c, &args)
+        })
+        .collect()
 }
 
 impl<T: Ring> BSplineQMotion<T> {
