@@ -174,3 +174,48 @@ fn product_is_the_pointwise_product_with_the_expected_knots() {
     let other = BSplineQMotion::new_exact(0, vec![q(0), q(2)], vec![d([1, 0, 0, 0, 0, 0, 0, 0])]).unwrap();
     assert!(matches!(m.product(&other), Err(JuttlerError::Parameters { .. })));
 }
+
+/// Rational poses: unit rotations from Pythagorean quadruples `(a² + b² + c² + d² = e²)` after
+/// translations.
+fn unit_poses() -> Vec<Pose<Q>> {
+    let data = [
+        ([1, 0, 0, 0], 1, [0, 0, 0]),
+        ([1, 2, 2, 4], 5, [1, 2, -1]),
+        ([2, 3, 6, 0], 7, [3, 0, 2]),
+        ([6, 2, 3, 0], 7, [4, -2, 1]),
+        ([1, 4, 8, 0], 9, [5, 1, 0]),
+        ([2, 6, 9, 0], 11, [6, 3, 2]),
+    ];
+    data.iter()
+        .map(|([w, x, y, z], e, t)| {
+            let r = Pose::rotor_from_parts(&ratio(*w, *e), &q(1), &[ratio(*x, *e), ratio(*y, *e), ratio(*z, *e)]);
+            r * Pose::translation(&t.map(q))
+        })
+        .collect()
+}
+
+#[test]
+fn bspline_tr_interpolates_exactly_and_is_the_tr_method_for_bezier_knots() {
+    use motion::juttler::bspline_tr::bspline_tr;
+    use motion::juttler::rotational::elliptic_normalised;
+    use motion::juttler::tr::{rotation_translation, tr_method};
+    let poses = unit_poses();
+    let params = [q(0), ratio(1, 7), ratio(2, 7), ratio(1, 2), ratio(4, 5), q(1)];
+    for p in [1, 2, 3] {
+        let m = bspline_tr(&poses, &params, p).unwrap();
+        assert_eq!(m.degree(), 2 * p);
+        for (i, t) in params.iter().enumerate() {
+            assert!(m.pieces().pose_exact(t).unwrap().is_equivalent_exact(&poses[i]), "p = {p}, t_{i}");
+        }
+    }
+    // p = m: Bézier knots, the TR method on the elliptic interpolant of the unit rotations
+    let m = bspline_tr(&poses, &params, 5).unwrap();
+    let rots: Vec<_> = poses.iter().map(|p| rotation_translation(p).unwrap().0).collect();
+    let tr = tr_method(&elliptic_normalised(&rots, &params).unwrap(), &poses, &params).unwrap();
+    for k in 0..=20 {
+        assert_eq!(m.eval(&ratio(k, 20)), tr.eval(&ratio(k, 20)));
+    }
+    // degree out of range
+    assert!(matches!(bspline_tr(&poses, &params, 0), Err(JuttlerError::Parameters { .. })));
+    assert!(matches!(bspline_tr(&poses, &params, 6), Err(JuttlerError::Parameters { .. })));
+}

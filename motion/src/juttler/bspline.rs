@@ -221,12 +221,18 @@ impl<T: Field + PartialOrd> BSplineQMotion<T> {
     /// assert_eq!(m.eval(&ratio(1, 2)), d(2));
     /// ```
     pub fn eval(&self, t: &T) -> DualQuaternion<T> {
-        let (p, u) = (self.degree, &self.knots);
-        let mut spans = (p..self.control.len()).filter(|&k| u[k] < u[k + 1]);
-        let first = spans.next().unwrap_or(p);
-        let k = spans.rev().find(|&k| u[k] <= *t).unwrap_or(first);
-        self.blossom(k, &vec![t.clone(); p])
+        let k = span(&self.knots, self.degree, self.control.len(), t);
+        self.blossom(k, &vec![t.clone(); self.degree])
     }
+}
+
+/// The span `k` used at `t` (`u_k ≤ t < u_{k+1}`, non-empty, `p ≤ k ≤ n`): the right one at an
+/// interior knot, the first or last one outside the domain (valid knots for `n + 1` control
+/// points of degree `p`).
+pub(crate) fn span<T: PartialOrd>(u: &[T], p: usize, n1: usize, t: &T) -> usize {
+    let mut spans = (p..n1).filter(|&k| u[k] < u[k + 1]);
+    let first = spans.next().unwrap_or(p);
+    spans.rev().find(|&k| u[k] <= *t).unwrap_or(first)
 }
 
 /// The blossom of the Bézier polynomial with `control` (local parameter) at `args`, one per

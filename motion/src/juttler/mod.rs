@@ -10,6 +10,7 @@
 //! | [`additive_trajectory`] | trajectories of the main paper's additive Bézier motions ([`crate::AdditiveBezier`], a [`RationalMotion`]): degree `2n` | main paper (18), (6)-(9); (29) |
 //! | [`rotational`] | interpolation of the rotational parts: affine (19)-(21), elliptic (22)-(25) with the sign rule (24) | Props. 1, 2 |
 //! | [`bspline`] | [`bspline::BSplineQMotion`]: B-spline Q-motions (de Boor, pieces by blossoming, the Study condition per piece); a [`crate::Motion`] | Sec. 6 |
+//! | [`bspline_tr`] | the TR method with B-spline Q-motions (averaged knots, collocation, product) | Secs. 4.1, 6 |
 //! | [`surface`] | [`surface::RationalBezierSurface`]: the kinematic (sweeping) surface `y(t, v) = M(t) x(v)` of a rational Bézier curve as a rational tensor-product Bézier surface | Sec. 5, Fig. 5b |
 //! | [`tr`] | the TR method (30)-(31) and Algorithm 1 (elliptic + TR, degree `2m`) | Prop. 4, Algorithm 1 |
 //! | [`velocity`] | [`KeyVelocity`] (`v⃗_i`, `ω⃗_i`) and step 1 of Algorithm 2: velocities estimated from the connecting translations and rotations (Bessel) | Algorithm 2, (42) |
@@ -33,6 +34,7 @@
 
 pub mod additive_trajectory;
 pub mod bspline;
+pub mod bspline_tr;
 pub mod parametrisation;
 pub mod q_motion;
 pub mod rational_trajectory;
