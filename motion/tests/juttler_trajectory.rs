@@ -9,6 +9,7 @@ use gam_algebras::dual_quaternion::Quaternion;
 use motion::Motion;
 use motion::juttler::{JuttlerError, QMotion, RationalBezier};
 
+mod common;
 mod juttler_common;
 use juttler_common::worst_at_1000;
 
