@@ -12,17 +12,24 @@ use motion::juttler::tr::{rotation_translation, tr_method};
 use motion::juttler::{JuttlerError, QMotion, RationalBezier};
 use motion::{AdditiveBezier, Motion, Pose};
 
-/// The TR method (30)-(31) on the affine rotational interpolant (19)-(21) through three rational
-/// poses: a Q-motion of degree 4, exact.
-fn q_motion() -> QMotion<Q> {
+/// Three rational poses at equidistant parameters and the affine rotational interpolant
+/// (19)-(21) of their rotational parts (degree 2).
+fn keys() -> (Vec<Pose<Q>>, [Q; 3], QMotion<Q>) {
     let poses: Vec<Pose<Q>> =
         [(1, 0, [0, 0, 1], [0, 0, 0]), (2, 1, [1, -1, 2], [3, -1, 1]), (3, -2, [0, 1, 1], [1, 4, 2])]
             .iter()
             .map(|(c, s, a, t)| Pose::rotor_from_parts(&q(*c), &q(*s), &a.map(q)) * Pose::translation(&t.map(q)))
             .collect();
-    let params = [q(0), ratio(2, 5), q(1)];
+    let params = [q(0), ratio(1, 2), q(1)];
     let rots: Vec<_> = poses.iter().map(|p| rotation_translation(p).unwrap().0).collect();
-    tr_method(&affine(&rots, &params).unwrap(), &poses, &params).unwrap()
+    let rot = affine(&rots, &params).unwrap();
+    (poses, params, rot)
+}
+
+/// The TR method (30)-(31) on [`keys`]: a Q-motion of degree 4, exact.
+fn q_motion() -> QMotion<Q> {
+    let (poses, params, rot) = keys();
+    tr_method(&rot, &poses, &params).unwrap()
 }
 
 /// A parabola of the moving space (Fig. 5): `(v, v², 1)` for `v ∈ [-1, 1]` as a quadratic.
@@ -93,4 +100,16 @@ fn bad_nets_and_zero_weights_are_typed_errors() {
     let c = vec![DualQuaternion::from_real(one.clone()), DualQuaternion::from_real(one.scale(&q(-1)))];
     let s = RationalBezierSurface::kinematic(&QMotion::new_exact(c).unwrap(), &parabola()).unwrap();
     assert!(matches!(s.point(&ratio(1, 2), &q(0)), Err(JuttlerError::ZeroWeight { .. })));
+}
+
+#[test]
+fn fig_5b_a_minimal_order_motion_sweeps_a_parabola_exactly() {
+    // Fig. 5: a rational motion of order 4 through 3 positions at equidistant parameters
+    use motion::juttler::minimal::minimal_method;
+    let (poses, params, rot) = keys();
+    let m = minimal_method(&rot, &poses, &params).unwrap();
+    assert_eq!(m.order(), 4);
+    let s = RationalBezierSurface::kinematic(&m, &parabola()).unwrap();
+    assert_eq!(s.degrees(), (4, 2));
+    check(&s, &parabola(), |t| m.pose_exact(t).unwrap());
 }
