@@ -1,4 +1,5 @@
-//! Random rational instances for the Jüttler interpolation tests (TRT, minimal order).
+//! Helpers shared by the Jüttler tests: random rational instances (TRT, minimal order), one
+//! f64 pose set, the 1000-parameter trajectory check.
 #![allow(dead_code)]
 
 pub use super::common::Rng;
@@ -50,4 +51,16 @@ pub fn f64_poses() -> Vec<Pose<f64>> {
         turn([1.0, 1.0, 0.0], 0.7, [3.0, 0.0, 1.0]),
         turn([0.0, 1.0, 0.0], -0.4, [2.0, -1.0, 2.0]),
     ]
+}
+
+/// The largest component-wise distance between a trajectory's point and the reference point
+/// (the point's image under the sampled motion) at 1000 parameters evenly over `[0, 1]`.
+pub fn worst_at_1000(path: impl Fn(&f64) -> [f64; 3], reference: impl Fn(&f64) -> [f64; 3]) -> f64 {
+    (0..1000)
+        .map(|k| {
+            let t = k as f64 / 999.0;
+            let (a, b) = (path(&t), reference(&t));
+            (0..3).map(|i| (a[i] - b[i]).abs()).fold(0.0, f64::max)
+        })
+        .fold(0.0, f64::max)
 }
