@@ -11,9 +11,10 @@
 //! sum     := product (('+' | '-') product)*
 //! ```
 //!
-//! NUMBER is `digits`, `digits.digits` or `.digits`, optionally followed by an exponent `e` or
-//! `E`, an optional sign and digits (`6e-17`, `2.5E3`): so `2e1` is the number 20, and the
-//! product of 2 and `e1` needs an explicit `*` as every product does. IDENT is a letter followed by letters, digits or `_`. Chains of a
+//! NUMBER is `digits`, `digits.digits` or `.digits`, optionally followed by an exponent: `e`
+//! with a sign and digits, or `E` with an optional sign and digits (`6e-17`, `1e+3`, `2.5E3`).
+//! A lowercase `e` directly followed by digits (`2e1`) is refused as ambiguous, because `e1`
+//! is a basis element in every predefined algebra: write `2*e1` or `2e+1`. IDENT is a letter followed by letters, digits or `_`. Chains of a
 //! left-associative operator are kept flat ([`Node::Chain`]) so that long sums do not make
 //! deep trees; nesting (parentheses, prefixes, calls) is limited to [`MAX_DEPTH`].
 
@@ -238,6 +239,16 @@ fn tokenize(src: &str) -> Result<Vec<Token>, CliError> {
                 while i < chars.len() && chars[i].is_ascii_digit() {
                     i += 1;
                 }
+            }
+            if chars.get(i) == Some(&'e') && chars.get(i + 1).is_some_and(char::is_ascii_digit) {
+                let digits: String = chars[i + 1..].iter().take_while(|c| c.is_ascii_digit()).collect();
+                let number: String = chars[start..i].iter().collect();
+                return Err(parse_error(
+                    col,
+                    format!(
+                        "`{number}e{digits}` is ambiguous: write `{number}*e{digits}` for a multiple of the basis element `e{digits}`, or `{number}e+{digits}` / `{number}E{digits}` for the number"
+                    ),
+                ));
             }
             i += exponent_len(&chars[i..]);
             out.push(Token { tok: Tok::Num(chars[start..i].iter().collect()), col });

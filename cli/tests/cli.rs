@@ -246,17 +246,20 @@ fn numbers_take_an_exponent() {
     assert_eq!(g3("rational", "2.5E3*e1"), "2500*e1");
     assert_eq!(g3("rational", "6e-17"), "3/50000000000000000");
     assert_eq!(g3("rational", "1e+3 - 1000"), "0");
-    assert_eq!(g3("rational", ".5e1"), "5");
-    // 2e1 is the number 20; the product with e1 needs its `*`
-    assert_eq!(g3("rational", "2e1"), "20");
+    assert_eq!(g3("rational", ".5E1"), "5");
+    // `2e1` could mean 2*e1 or 20: refused as ambiguous, the message offers both spellings
+    let msg = fails(&["eval", "--algebra", "g3", "2e1"], 2);
+    assert!(msg.contains("ambiguous") && msg.contains("`2*e1`") && msg.contains("`2e+1`"), "{msg}");
+    fails(&["eval", "--algebra", "cga", "--scalar", "f64", "3.5e5"], 2);
+    assert_eq!(g3("rational", "2e+1"), "20");
     assert_eq!(g3("rational", "2*e1"), "2*e1");
-    assert_eq!(g3("rational", "2e1*e1"), "20*e1");
+    assert_eq!(g3("rational", "2E1*e1"), "20*e1");
     // f64: the literal as Rust (and C) read it
     assert_eq!(g3("f64", "6e-17*e2"), "6e-17*e2");
-    assert_eq!(g3("f64", "2.5e2*e1"), "250*e1");
+    assert_eq!(g3("f64", "2.5e+2*e1"), "250*e1");
     // the exponent cap of exact literals, and an f64 literal that overflows
-    assert!(fails(&["eval", "--scalar", "rational", "1e100001"], 2).contains("exponent"));
-    assert!(fails(&["eval", "--algebra", "g3", "--scalar", "f64", "1e400*e1"], 1).contains("not finite"));
+    assert!(fails(&["eval", "--scalar", "rational", "1e+100001"], 2).contains("exponent"));
+    assert!(fails(&["eval", "--algebra", "g3", "--scalar", "f64", "1E400*e1"], 1).contains("not finite"));
     // an `e` without digits starts a name: still an error, not a number
     fails(&["eval", "--algebra", "g3", "2e"], 2);
     fails(&["eval", "--algebra", "g3", "2e+"], 2);
@@ -265,7 +268,7 @@ fn numbers_take_an_exponent() {
 #[test]
 fn exp_refusals_say_why() {
     // a rotor angle of 1e300: θ² overflows (the unit rotor itself cannot)
-    let line = fails(&["eval", "--algebra", "g3", "--scalar", "f64", "exp(1e300*e12)"], 1);
+    let line = fails(&["eval", "--algebra", "g3", "--scalar", "f64", "exp(1e+300*e12)"], 1);
     assert!(line.contains("the rotation angle is too large for this scalar"), "{line}");
     // e^1000 (cos 1 + e12 sin 1) does overflow
     let line = fails(&["eval", "--algebra", "g3", "--scalar", "f64", "exp(1000 + e12)"], 1);
