@@ -198,11 +198,13 @@ pub fn module_items(plan: &Plan) -> TokenStream {
     let conversions = conversion_items(&names);
     let actions = super::versor::module_items(plan, &names);
     let matrices = super::matrix::module_items(plan, &names);
+    let units = super::unit::module_items(plan, &names);
     quote! {
         pub use ::algebra_core::ops::{
             ActionMatrix, AnticommutatorProduct, Apply, CommutatorProduct, GeometricProduct, GeometricProductInto,
             LeftContraction, OuterProduct, RegressiveProduct, RightContraction, Sandwich, ScalarProduct,
         };
+        pub use ::algebra_core::ops::UnitAction;
         pub use ::algebra_core::{Field, Ring};
 
         /// The basis the types' fields refer to.
@@ -228,6 +230,7 @@ pub fn module_items(plan: &Plan) -> TokenStream {
         #conversions
         #actions
         #matrices
+        #units
     }
 }
 
@@ -330,6 +333,23 @@ fn type_items(plan: &Plan, names: &Names, i: usize) -> TokenStream {
                 Self: ::algebra_core::ops::Apply<X>,
             {
                 ::algebra_core::ops::Apply::apply(self, x)
+            }
+
+            /// `self x rev(self)` for a unit versor (`self rev(self) = 1`), cheaper than
+            /// [`Self::apply`]: `x + (self x - x self) rev(self)`. Not the action otherwise.
+            pub fn apply_unit<X>(&self, x: &X) -> X
+            where
+                Self: ::algebra_core::ops::UnitAction<X>,
+            {
+                ::algebra_core::ops::UnitAction::apply_unit(self, x)
+            }
+
+            /// `rev(self) x self` for a unit versor, as `x + (rev(self) x - x rev(self)) self`.
+            pub fn sandwich_unit<X>(&self, x: &X) -> X
+            where
+                Self: ::algebra_core::ops::UnitAction<X>,
+            {
+                ::algebra_core::ops::UnitAction::sandwich_unit(self, x)
             }
 
             /// The matrix of the action `x ↦ self x rev(self)` on `X` (see `ActionMatrix`):

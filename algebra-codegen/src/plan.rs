@@ -298,6 +298,16 @@ impl Plan {
                 add,
             });
         }
+        // the unit-versor kernels (`apply_unit`, `sandwich_unit`; [`super::unit`])
+        for u in super::unit::plan_unit_actions(&self.spec, self.full).unwrap_or_default() {
+            let (mul, add) = u.counts();
+            let op = match u.kernel.convention {
+                super::versor::Convention::Sandwich => "sandwich_unit",
+                super::versor::Convention::Apply => "apply_unit",
+            };
+            let (v, x) = (u.kernel.versor, u.kernel.operand);
+            out.push(KernelStats { op: op.to_string(), lhs: name(v), rhs: Some(name(x)), out: name(x), mul, add });
+        }
         out
     }
 }

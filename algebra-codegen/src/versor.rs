@@ -96,6 +96,18 @@ pub fn plan_actions(spec: &ModuleSpec, full: usize) -> Result<Vec<ActionKernel>,
 }
 
 fn action(spec: &ModuleSpec, convention: Convention, v: usize, x: usize) -> Result<ActionKernel, CodegenError> {
+    action_kernel(spec, convention, v, x, false)
+}
+
+/// The two stages of an action; with `commutator`, stage 1 is `L(S) x - x L(S)` instead of
+/// `L(S) x` (the unit-versor form of [`super::unit`]).
+pub(super) fn action_kernel(
+    spec: &ModuleSpec,
+    convention: Convention,
+    v: usize,
+    x: usize,
+    commutator: bool,
+) -> Result<ActionKernel, CodegenError> {
     let tables = spec.algebra.tables();
     let gp = tables.product(spec.basis, Product::Geometric);
     let rev = tables.unary(spec.basis, Unary::Reverse);
@@ -115,6 +127,11 @@ fn action(spec: &ModuleSpec, convention: Convention, v: usize, x: usize) -> Resu
             for (b, &mb) in xm.iter().enumerate() {
                 for (k, c) in gp.get(m, mb) {
                     *t.entry(*k).or_default().entry((a, b)).or_insert_with(Q::zero) += &r * c;
+                }
+                if commutator {
+                    for (k, c) in gp.get(mb, m) {
+                        *t.entry(*k).or_default().entry((a, b)).or_insert_with(Q::zero) -= &r * c;
+                    }
                 }
             }
         }

@@ -19,7 +19,8 @@
 //!   and the composed `(rev(S) x) S` relative to `cga_null` `Motor * Motor`; `pga3` `apply` on a
 //!   trivector point at f32 relative to the f32 motor product; against nalgebra (f64):
 //!   `g123inf` `Motor * Motor` vs `DualQuaternion *`, a pose applied to a point (`pga3` `apply`
-//!   on a trivector) vs `UnitDualQuaternion::transform_point` and `Isometry3::transform_point`,
+//!   on a trivector, and `apply_unit` on unit motors) vs `UnitDualQuaternion::transform_point` and
+//!   `Isometry3::transform_point`,
 //!   and a batch of points by one pose; closed-form `g123inf` `Bivector::exp` and `Motor::log`
 //!   relative to `Motor * Motor`.
 //!
@@ -87,6 +88,7 @@ struct Versor {
     pga_motors32: Vec<pga3::Motor<f32>>,
     pga_points32: Vec<pga3::Trivector<f32>>,
     pga_motors: Vec<pga3::Motor<f64>>,
+    pga_units: Vec<pga3::Motor<f64>>,
     pga_points: Vec<pga3::Trivector<f64>>,
     motors: Vec<g123inf::Motor<f64>>,
     bivectors: Vec<g123inf::Bivector<f64>>,
@@ -152,6 +154,7 @@ fn versor_data() -> Versor {
         pga_motors32: Vec::new(),
         pga_points32: Vec::new(),
         pga_motors: Vec::new(),
+        pga_units: Vec::new(),
         pga_points: Vec::new(),
         motors: Vec::new(),
         bivectors: Vec::new(),
@@ -173,7 +176,11 @@ fn versor_data() -> Versor {
         d.pga_points32.push(pga3::Trivector::new(p[0] as f32, p[1] as f32, p[2] as f32, 1.0));
         d.motors.push(g123inf::Motor::from_array(c));
         let b = g123inf::Bivector::from_array([c[1], c[2], c[4], c[3], c[5], c[6]]);
-        d.units.push(b.exp());
+        let unit = b.exp();
+        // the same unit motor in pga3 (einf -> e0: e_i einf = -e0i, e123inf = -e0123)
+        let [s0, b12, b13, b23, t1, t2, t3, w] = unit.to_array();
+        d.pga_units.push(pga3::Motor::new(s0, -t1, -t2, -t3, b12, b13, b23, -w));
+        d.units.push(unit);
         d.bivectors.push(b);
         let (r, t) = (Quaternion::new(c[0], c[1], c[2], c[3]), Quaternion::new(c[4], c[5], c[6], c[7]));
         d.dq.push(nalgebra::DualQuaternion::from_real_and_dual(r, t));
@@ -183,6 +190,9 @@ fn versor_data() -> Versor {
         d.iso.push(Isometry3::from_parts(tr, rot));
         d.points.push(Point3::from(Vector3::new(p[0], p[1], p[2])));
     }
+    // sanity: the unit kernel agrees with the general one on the unit motors
+    let (u, p) = (&d.pga_units[0], &d.pga_points[0]);
+    assert!(u.apply_unit(p).iter().zip(u.apply(p).iter()).all(|(a, b)| (a - b).abs() < 1e-12));
     // sanity: the fused action is the projected composed one
     let (s, x) = (&d.cn_motors[0], &d.cn_points[0]);
     let composed = cga_null::Vector::project(&((s.reverse() * x) * s).to_multivector());
@@ -255,6 +265,7 @@ pairs!(pga32_apply_point, pga_motors32, pga_points32, |s, p| s.apply(p));
 pairs!(g123_motor_product, motors, motors, |x, y| x * y);
 pairs!(na_dq_product, dq, dq, |x, y| *x * *y);
 pairs!(pga_apply_point, pga_motors, pga_points, |s, p| s.apply(p));
+pairs!(pga_apply_unit_point, pga_units, pga_points, |s, p| s.apply_unit(p));
 pairs!(na_unit_dq_point, unit_dq, points, |s, p| s.transform_point(p));
 pairs!(na_iso_point, iso, points, |s, p| s.transform_point(p));
 
@@ -399,6 +410,7 @@ const VERSOR_GROUPS: [(&str, &[(&str, Kernel)]); 5] = [
             ("g123inf Motor * Motor", g123_motor_product),
             ("nalgebra UnitDualQuaternion::transform_point", na_unit_dq_point),
             ("pga3 Motor.apply(Trivector point)", pga_apply_point),
+            ("pga3 Motor.apply_unit(Trivector point)", pga_apply_unit_point),
             ("nalgebra Isometry3::transform_point", na_iso_point),
         ],
     ),
