@@ -136,7 +136,9 @@ impl Plan {
         let full = match spec.types.iter().position(|t| t.elements.len() == alg.dim()) {
             Some(i) => i,
             None => {
-                super::fallback::add_parity_types(&mut spec)?;
+                if spec.parity_types {
+                    super::fallback::add_parity_types(&mut spec)?;
+                }
                 let name =
                     if spec.types.iter().any(|t| t.name == "Multivector") { "FullMultivector" } else { "Multivector" };
                 let mut t = TypeSpec::new(name, order.clone())?;

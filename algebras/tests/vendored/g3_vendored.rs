@@ -7,6 +7,7 @@ pub mod g3_vendored {
         GeometricProductInto, LeftContraction, OuterProduct, RegressiveProduct,
         RightContraction, Sandwich, ScalarProduct,
     };
+    pub use ::algebra_core::ops::UnitAction;
     pub use ::algebra_core::{Field, Ring};
     /// The basis the types' fields refer to.
     pub const BASIS: ::algebra_core::Basis = ::algebra_core::Basis::Blade;
@@ -112,6 +113,21 @@ pub mod g3_vendored {
             Self: ::algebra_core::ops::Apply<X>,
         {
             ::algebra_core::ops::Apply::apply(self, x)
+        }
+        /// `self x rev(self)` for a unit versor (`self rev(self) = 1`), cheaper than
+        /// [`Self::apply`]: `x + (self x - x self) rev(self)`. Not the action otherwise.
+        pub fn apply_unit<X>(&self, x: &X) -> X
+        where
+            Self: ::algebra_core::ops::UnitAction<X>,
+        {
+            ::algebra_core::ops::UnitAction::apply_unit(self, x)
+        }
+        /// `rev(self) x self` for a unit versor, as `x + (rev(self) x - x rev(self)) self`.
+        pub fn sandwich_unit<X>(&self, x: &X) -> X
+        where
+            Self: ::algebra_core::ops::UnitAction<X>,
+        {
+            ::algebra_core::ops::UnitAction::sandwich_unit(self, x)
         }
         /// The matrix of the action `x ↦ self x rev(self)` on `X` (see `ActionMatrix`):
         /// `let m = motor.apply_matrix::<Point<f64>>();` then `Motor::transform(&m, &p)`
@@ -658,6 +674,21 @@ pub mod g3_vendored {
             Self: ::algebra_core::ops::Apply<X>,
         {
             ::algebra_core::ops::Apply::apply(self, x)
+        }
+        /// `self x rev(self)` for a unit versor (`self rev(self) = 1`), cheaper than
+        /// [`Self::apply`]: `x + (self x - x self) rev(self)`. Not the action otherwise.
+        pub fn apply_unit<X>(&self, x: &X) -> X
+        where
+            Self: ::algebra_core::ops::UnitAction<X>,
+        {
+            ::algebra_core::ops::UnitAction::apply_unit(self, x)
+        }
+        /// `rev(self) x self` for a unit versor, as `x + (rev(self) x - x rev(self)) self`.
+        pub fn sandwich_unit<X>(&self, x: &X) -> X
+        where
+            Self: ::algebra_core::ops::UnitAction<X>,
+        {
+            ::algebra_core::ops::UnitAction::sandwich_unit(self, x)
         }
         /// The matrix of the action `x ↦ self x rev(self)` on `X` (see `ActionMatrix`):
         /// `let m = motor.apply_matrix::<Point<f64>>();` then `Motor::transform(&m, &p)`
@@ -1258,6 +1289,21 @@ pub mod g3_vendored {
             Self: ::algebra_core::ops::Apply<X>,
         {
             ::algebra_core::ops::Apply::apply(self, x)
+        }
+        /// `self x rev(self)` for a unit versor (`self rev(self) = 1`), cheaper than
+        /// [`Self::apply`]: `x + (self x - x self) rev(self)`. Not the action otherwise.
+        pub fn apply_unit<X>(&self, x: &X) -> X
+        where
+            Self: ::algebra_core::ops::UnitAction<X>,
+        {
+            ::algebra_core::ops::UnitAction::apply_unit(self, x)
+        }
+        /// `rev(self) x self` for a unit versor, as `x + (rev(self) x - x rev(self)) self`.
+        pub fn sandwich_unit<X>(&self, x: &X) -> X
+        where
+            Self: ::algebra_core::ops::UnitAction<X>,
+        {
+            ::algebra_core::ops::UnitAction::sandwich_unit(self, x)
         }
         /// The matrix of the action `x ↦ self x rev(self)` on `X` (see `ActionMatrix`):
         /// `let m = motor.apply_matrix::<Point<f64>>();` then `Motor::transform(&m, &p)`
@@ -1907,6 +1953,21 @@ pub mod g3_vendored {
             Self: ::algebra_core::ops::Apply<X>,
         {
             ::algebra_core::ops::Apply::apply(self, x)
+        }
+        /// `self x rev(self)` for a unit versor (`self rev(self) = 1`), cheaper than
+        /// [`Self::apply`]: `x + (self x - x self) rev(self)`. Not the action otherwise.
+        pub fn apply_unit<X>(&self, x: &X) -> X
+        where
+            Self: ::algebra_core::ops::UnitAction<X>,
+        {
+            ::algebra_core::ops::UnitAction::apply_unit(self, x)
+        }
+        /// `rev(self) x self` for a unit versor, as `x + (rev(self) x - x rev(self)) self`.
+        pub fn sandwich_unit<X>(&self, x: &X) -> X
+        where
+            Self: ::algebra_core::ops::UnitAction<X>,
+        {
+            ::algebra_core::ops::UnitAction::sandwich_unit(self, x)
         }
         /// The matrix of the action `x ↦ self x rev(self)` on `X` (see `ActionMatrix`):
         /// `let m = motor.apply_matrix::<Point<f64>>();` then `Motor::transform(&m, &p)`
@@ -10088,6 +10149,466 @@ pub mod g3_vendored {
                     + &(m[2usize][1usize].mul_ref(&x.e2))
                     + &(m[2usize][2usize].mul_ref(&x.e3)),
                 e123: (m[3usize][3usize].mul_ref(&x.e123)),
+            }
+        }
+    }
+    impl<T: ::algebra_core::Ring> ::algebra_core::ops::UnitAction<Vector<T>>
+    for Vector<T> {
+        /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
+        #[inline]
+        fn sandwich_unit(&self, x: &Vector<T>) -> Vector<T> {
+            let t0 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1));
+            let t1 = (self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1));
+            let t2 = (self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2));
+            Vector {
+                e1: {
+                    let y = (t0.mul_ref(&self.e2)) + &(t1.mul_ref(&self.e3));
+                    x.e1.add_ref(&y) + &y
+                },
+                e2: {
+                    let y = (t2.mul_ref(&self.e3)) - &(t0.mul_ref(&self.e1));
+                    x.e2.add_ref(&y) + &y
+                },
+                e3: {
+                    let y = ::algebra_core::Ring::neg_ref(&(t1.mul_ref(&self.e1)))
+                        - &(t2.mul_ref(&self.e2));
+                    x.e3.add_ref(&y) + &y
+                },
+            }
+        }
+        /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
+        #[inline]
+        fn apply_unit(&self, x: &Vector<T>) -> Vector<T> {
+            let t0 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1));
+            let t1 = (self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1));
+            let t2 = (self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2));
+            Vector {
+                e1: {
+                    let y = (t0.mul_ref(&self.e2)) + &(t1.mul_ref(&self.e3));
+                    x.e1.add_ref(&y) + &y
+                },
+                e2: {
+                    let y = (t2.mul_ref(&self.e3)) - &(t0.mul_ref(&self.e1));
+                    x.e2.add_ref(&y) + &y
+                },
+                e3: {
+                    let y = ::algebra_core::Ring::neg_ref(&(t1.mul_ref(&self.e1)))
+                        - &(t2.mul_ref(&self.e2));
+                    x.e3.add_ref(&y) + &y
+                },
+            }
+        }
+    }
+    impl<T: ::algebra_core::Ring> ::algebra_core::ops::UnitAction<Rotor<T>>
+    for Vector<T> {
+        /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
+        #[inline]
+        fn sandwich_unit(&self, x: &Rotor<T>) -> Rotor<T> {
+            let t0 = ::algebra_core::Ring::neg_ref(&(self.e2.mul_ref(&x.e12)))
+                - &(self.e3.mul_ref(&x.e13));
+            let t1 = (self.e1.mul_ref(&x.e12)) - &(self.e3.mul_ref(&x.e23));
+            let t2 = (self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23));
+            Rotor {
+                scalar: ::core::clone::Clone::clone(&x.scalar),
+                e12: {
+                    let y = (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1));
+                    x.e12.add_ref(&y) + &y
+                },
+                e13: {
+                    let y = (t0.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e1));
+                    x.e13.add_ref(&y) + &y
+                },
+                e23: {
+                    let y = (t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e2));
+                    x.e23.add_ref(&y) + &y
+                },
+            }
+        }
+        /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
+        #[inline]
+        fn apply_unit(&self, x: &Rotor<T>) -> Rotor<T> {
+            let t0 = ::algebra_core::Ring::neg_ref(&(self.e2.mul_ref(&x.e12)))
+                - &(self.e3.mul_ref(&x.e13));
+            let t1 = (self.e1.mul_ref(&x.e12)) - &(self.e3.mul_ref(&x.e23));
+            let t2 = (self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23));
+            Rotor {
+                scalar: ::core::clone::Clone::clone(&x.scalar),
+                e12: {
+                    let y = (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1));
+                    x.e12.add_ref(&y) + &y
+                },
+                e13: {
+                    let y = (t0.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e1));
+                    x.e13.add_ref(&y) + &y
+                },
+                e23: {
+                    let y = (t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e2));
+                    x.e23.add_ref(&y) + &y
+                },
+            }
+        }
+    }
+    impl<T: ::algebra_core::Ring> ::algebra_core::ops::UnitAction<Odd<T>> for Vector<T> {
+        /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
+        #[inline]
+        fn sandwich_unit(&self, x: &Odd<T>) -> Odd<T> {
+            let t0 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1));
+            let t1 = (self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1));
+            let t2 = (self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2));
+            Odd {
+                e1: {
+                    let y = (t0.mul_ref(&self.e2)) + &(t1.mul_ref(&self.e3));
+                    x.e1.add_ref(&y) + &y
+                },
+                e2: {
+                    let y = (t2.mul_ref(&self.e3)) - &(t0.mul_ref(&self.e1));
+                    x.e2.add_ref(&y) + &y
+                },
+                e3: {
+                    let y = ::algebra_core::Ring::neg_ref(&(t1.mul_ref(&self.e1)))
+                        - &(t2.mul_ref(&self.e2));
+                    x.e3.add_ref(&y) + &y
+                },
+                e123: ::core::clone::Clone::clone(&x.e123),
+            }
+        }
+        /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
+        #[inline]
+        fn apply_unit(&self, x: &Odd<T>) -> Odd<T> {
+            let t0 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1));
+            let t1 = (self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1));
+            let t2 = (self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2));
+            Odd {
+                e1: {
+                    let y = (t0.mul_ref(&self.e2)) + &(t1.mul_ref(&self.e3));
+                    x.e1.add_ref(&y) + &y
+                },
+                e2: {
+                    let y = (t2.mul_ref(&self.e3)) - &(t0.mul_ref(&self.e1));
+                    x.e2.add_ref(&y) + &y
+                },
+                e3: {
+                    let y = ::algebra_core::Ring::neg_ref(&(t1.mul_ref(&self.e1)))
+                        - &(t2.mul_ref(&self.e2));
+                    x.e3.add_ref(&y) + &y
+                },
+                e123: ::core::clone::Clone::clone(&x.e123),
+            }
+        }
+    }
+    impl<T: ::algebra_core::Ring> ::algebra_core::ops::UnitAction<Vector<T>>
+    for Rotor<T> {
+        /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
+        #[inline]
+        fn sandwich_unit(&self, x: &Vector<T>) -> Vector<T> {
+            let t0 = ::algebra_core::Ring::neg_ref(&(self.e12.mul_ref(&x.e2)))
+                - &(self.e13.mul_ref(&x.e3));
+            let t1 = (self.e12.mul_ref(&x.e1)) - &(self.e23.mul_ref(&x.e3));
+            let t2 = (self.e13.mul_ref(&x.e1)) + &(self.e23.mul_ref(&x.e2));
+            Vector {
+                e1: {
+                    let y = (t0.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e12))
+                        - &(t2.mul_ref(&self.e13));
+                    x.e1.add_ref(&y) + &y
+                },
+                e2: {
+                    let y = (t0.mul_ref(&self.e12)) + &(t1.mul_ref(&self.scalar))
+                        - &(t2.mul_ref(&self.e23));
+                    x.e2.add_ref(&y) + &y
+                },
+                e3: {
+                    let y = (t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23))
+                        + &(t2.mul_ref(&self.scalar));
+                    x.e3.add_ref(&y) + &y
+                },
+            }
+        }
+        /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
+        #[inline]
+        fn apply_unit(&self, x: &Vector<T>) -> Vector<T> {
+            let t0 = (self.e12.mul_ref(&x.e2)) + &(self.e13.mul_ref(&x.e3));
+            let t1 = (self.e23.mul_ref(&x.e3)) - &(self.e12.mul_ref(&x.e1));
+            let t2 = ::algebra_core::Ring::neg_ref(&(self.e13.mul_ref(&x.e1)))
+                - &(self.e23.mul_ref(&x.e2));
+            Vector {
+                e1: {
+                    let y = (t0.mul_ref(&self.scalar)) + &(t1.mul_ref(&self.e12))
+                        + &(t2.mul_ref(&self.e13));
+                    x.e1.add_ref(&y) + &y
+                },
+                e2: {
+                    let y = (t1.mul_ref(&self.scalar)) - &(t0.mul_ref(&self.e12))
+                        + &(t2.mul_ref(&self.e23));
+                    x.e2.add_ref(&y) + &y
+                },
+                e3: {
+                    let y = (t2.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e23))
+                        - &(t0.mul_ref(&self.e13));
+                    x.e3.add_ref(&y) + &y
+                },
+            }
+        }
+    }
+    impl<T: ::algebra_core::Ring> ::algebra_core::ops::UnitAction<Rotor<T>>
+    for Rotor<T> {
+        /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
+        #[inline]
+        fn sandwich_unit(&self, x: &Rotor<T>) -> Rotor<T> {
+            let t0 = (self.e13.mul_ref(&x.e23)) - &(self.e23.mul_ref(&x.e13));
+            let t1 = (self.e23.mul_ref(&x.e12)) - &(self.e12.mul_ref(&x.e23));
+            let t2 = (self.e12.mul_ref(&x.e13)) - &(self.e13.mul_ref(&x.e12));
+            Rotor {
+                scalar: ::core::clone::Clone::clone(&x.scalar),
+                e12: {
+                    let y = (t0.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e23))
+                        + &(t2.mul_ref(&self.e13));
+                    x.e12.add_ref(&y) + &y
+                },
+                e13: {
+                    let y = (t0.mul_ref(&self.e23)) + &(t1.mul_ref(&self.scalar))
+                        - &(t2.mul_ref(&self.e12));
+                    x.e13.add_ref(&y) + &y
+                },
+                e23: {
+                    let y = (t1.mul_ref(&self.e12)) - &(t0.mul_ref(&self.e13))
+                        + &(t2.mul_ref(&self.scalar));
+                    x.e23.add_ref(&y) + &y
+                },
+            }
+        }
+        /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
+        #[inline]
+        fn apply_unit(&self, x: &Rotor<T>) -> Rotor<T> {
+            let t0 = (self.e23.mul_ref(&x.e13)) - &(self.e13.mul_ref(&x.e23));
+            let t1 = (self.e12.mul_ref(&x.e23)) - &(self.e23.mul_ref(&x.e12));
+            let t2 = (self.e13.mul_ref(&x.e12)) - &(self.e12.mul_ref(&x.e13));
+            Rotor {
+                scalar: ::core::clone::Clone::clone(&x.scalar),
+                e12: {
+                    let y = (t0.mul_ref(&self.scalar)) + &(t1.mul_ref(&self.e23))
+                        - &(t2.mul_ref(&self.e13));
+                    x.e12.add_ref(&y) + &y
+                },
+                e13: {
+                    let y = (t1.mul_ref(&self.scalar)) - &(t0.mul_ref(&self.e23))
+                        + &(t2.mul_ref(&self.e12));
+                    x.e13.add_ref(&y) + &y
+                },
+                e23: {
+                    let y = (t0.mul_ref(&self.e13)) - &(t1.mul_ref(&self.e12))
+                        + &(t2.mul_ref(&self.scalar));
+                    x.e23.add_ref(&y) + &y
+                },
+            }
+        }
+    }
+    impl<T: ::algebra_core::Ring> ::algebra_core::ops::UnitAction<Odd<T>> for Rotor<T> {
+        /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
+        #[inline]
+        fn sandwich_unit(&self, x: &Odd<T>) -> Odd<T> {
+            let t0 = ::algebra_core::Ring::neg_ref(&(self.e12.mul_ref(&x.e2)))
+                - &(self.e13.mul_ref(&x.e3));
+            let t1 = (self.e12.mul_ref(&x.e1)) - &(self.e23.mul_ref(&x.e3));
+            let t2 = (self.e13.mul_ref(&x.e1)) + &(self.e23.mul_ref(&x.e2));
+            Odd {
+                e1: {
+                    let y = (t0.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e12))
+                        - &(t2.mul_ref(&self.e13));
+                    x.e1.add_ref(&y) + &y
+                },
+                e2: {
+                    let y = (t0.mul_ref(&self.e12)) + &(t1.mul_ref(&self.scalar))
+                        - &(t2.mul_ref(&self.e23));
+                    x.e2.add_ref(&y) + &y
+                },
+                e3: {
+                    let y = (t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23))
+                        + &(t2.mul_ref(&self.scalar));
+                    x.e3.add_ref(&y) + &y
+                },
+                e123: ::core::clone::Clone::clone(&x.e123),
+            }
+        }
+        /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
+        #[inline]
+        fn apply_unit(&self, x: &Odd<T>) -> Odd<T> {
+            let t0 = (self.e12.mul_ref(&x.e2)) + &(self.e13.mul_ref(&x.e3));
+            let t1 = (self.e23.mul_ref(&x.e3)) - &(self.e12.mul_ref(&x.e1));
+            let t2 = ::algebra_core::Ring::neg_ref(&(self.e13.mul_ref(&x.e1)))
+                - &(self.e23.mul_ref(&x.e2));
+            Odd {
+                e1: {
+                    let y = (t0.mul_ref(&self.scalar)) + &(t1.mul_ref(&self.e12))
+                        + &(t2.mul_ref(&self.e13));
+                    x.e1.add_ref(&y) + &y
+                },
+                e2: {
+                    let y = (t1.mul_ref(&self.scalar)) - &(t0.mul_ref(&self.e12))
+                        + &(t2.mul_ref(&self.e23));
+                    x.e2.add_ref(&y) + &y
+                },
+                e3: {
+                    let y = (t2.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e23))
+                        - &(t0.mul_ref(&self.e13));
+                    x.e3.add_ref(&y) + &y
+                },
+                e123: ::core::clone::Clone::clone(&x.e123),
+            }
+        }
+    }
+    impl<T: ::algebra_core::Ring> ::algebra_core::ops::UnitAction<Vector<T>> for Odd<T> {
+        /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
+        #[inline]
+        fn sandwich_unit(&self, x: &Vector<T>) -> Vector<T> {
+            let t0 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1));
+            let t1 = (self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1));
+            let t2 = (self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2));
+            Vector {
+                e1: {
+                    let y = (t0.mul_ref(&self.e2)) + &(t1.mul_ref(&self.e3))
+                        - &(t2.mul_ref(&self.e123));
+                    x.e1.add_ref(&y) + &y
+                },
+                e2: {
+                    let y = (t1.mul_ref(&self.e123)) - &(t0.mul_ref(&self.e1))
+                        + &(t2.mul_ref(&self.e3));
+                    x.e2.add_ref(&y) + &y
+                },
+                e3: {
+                    let y = ::algebra_core::Ring::neg_ref(&(t0.mul_ref(&self.e123)))
+                        - &(t1.mul_ref(&self.e1)) - &(t2.mul_ref(&self.e2));
+                    x.e3.add_ref(&y) + &y
+                },
+            }
+        }
+        /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
+        #[inline]
+        fn apply_unit(&self, x: &Vector<T>) -> Vector<T> {
+            let t0 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1));
+            let t1 = (self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1));
+            let t2 = (self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2));
+            Vector {
+                e1: {
+                    let y = (t0.mul_ref(&self.e2)) + &(t1.mul_ref(&self.e3))
+                        + &(t2.mul_ref(&self.e123));
+                    x.e1.add_ref(&y) + &y
+                },
+                e2: {
+                    let y = (t2.mul_ref(&self.e3)) - &(t1.mul_ref(&self.e123))
+                        - &(t0.mul_ref(&self.e1));
+                    x.e2.add_ref(&y) + &y
+                },
+                e3: {
+                    let y = (t0.mul_ref(&self.e123)) - &(t1.mul_ref(&self.e1))
+                        - &(t2.mul_ref(&self.e2));
+                    x.e3.add_ref(&y) + &y
+                },
+            }
+        }
+    }
+    impl<T: ::algebra_core::Ring> ::algebra_core::ops::UnitAction<Rotor<T>> for Odd<T> {
+        /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
+        #[inline]
+        fn sandwich_unit(&self, x: &Rotor<T>) -> Rotor<T> {
+            let t0 = ::algebra_core::Ring::neg_ref(&(self.e2.mul_ref(&x.e12)))
+                - &(self.e3.mul_ref(&x.e13));
+            let t1 = (self.e1.mul_ref(&x.e12)) - &(self.e3.mul_ref(&x.e23));
+            let t2 = (self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23));
+            Rotor {
+                scalar: ::core::clone::Clone::clone(&x.scalar),
+                e12: {
+                    let y = (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
+                        + &(t2.mul_ref(&self.e123));
+                    x.e12.add_ref(&y) + &y
+                },
+                e13: {
+                    let y = (t0.mul_ref(&self.e3)) - &(t1.mul_ref(&self.e123))
+                        - &(t2.mul_ref(&self.e1));
+                    x.e13.add_ref(&y) + &y
+                },
+                e23: {
+                    let y = (t0.mul_ref(&self.e123)) + &(t1.mul_ref(&self.e3))
+                        - &(t2.mul_ref(&self.e2));
+                    x.e23.add_ref(&y) + &y
+                },
+            }
+        }
+        /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
+        #[inline]
+        fn apply_unit(&self, x: &Rotor<T>) -> Rotor<T> {
+            let t0 = ::algebra_core::Ring::neg_ref(&(self.e2.mul_ref(&x.e12)))
+                - &(self.e3.mul_ref(&x.e13));
+            let t1 = (self.e1.mul_ref(&x.e12)) - &(self.e3.mul_ref(&x.e23));
+            let t2 = (self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23));
+            Rotor {
+                scalar: ::core::clone::Clone::clone(&x.scalar),
+                e12: {
+                    let y = (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
+                        - &(t2.mul_ref(&self.e123));
+                    x.e12.add_ref(&y) + &y
+                },
+                e13: {
+                    let y = (t0.mul_ref(&self.e3)) + &(t1.mul_ref(&self.e123))
+                        - &(t2.mul_ref(&self.e1));
+                    x.e13.add_ref(&y) + &y
+                },
+                e23: {
+                    let y = (t1.mul_ref(&self.e3)) - &(t0.mul_ref(&self.e123))
+                        - &(t2.mul_ref(&self.e2));
+                    x.e23.add_ref(&y) + &y
+                },
+            }
+        }
+    }
+    impl<T: ::algebra_core::Ring> ::algebra_core::ops::UnitAction<Odd<T>> for Odd<T> {
+        /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
+        #[inline]
+        fn sandwich_unit(&self, x: &Odd<T>) -> Odd<T> {
+            let t0 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1));
+            let t1 = (self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1));
+            let t2 = (self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2));
+            Odd {
+                e1: {
+                    let y = (t0.mul_ref(&self.e2)) + &(t1.mul_ref(&self.e3))
+                        - &(t2.mul_ref(&self.e123));
+                    x.e1.add_ref(&y) + &y
+                },
+                e2: {
+                    let y = (t1.mul_ref(&self.e123)) - &(t0.mul_ref(&self.e1))
+                        + &(t2.mul_ref(&self.e3));
+                    x.e2.add_ref(&y) + &y
+                },
+                e3: {
+                    let y = ::algebra_core::Ring::neg_ref(&(t0.mul_ref(&self.e123)))
+                        - &(t1.mul_ref(&self.e1)) - &(t2.mul_ref(&self.e2));
+                    x.e3.add_ref(&y) + &y
+                },
+                e123: ::core::clone::Clone::clone(&x.e123),
+            }
+        }
+        /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
+        #[inline]
+        fn apply_unit(&self, x: &Odd<T>) -> Odd<T> {
+            let t0 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1));
+            let t1 = (self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1));
+            let t2 = (self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2));
+            Odd {
+                e1: {
+                    let y = (t0.mul_ref(&self.e2)) + &(t1.mul_ref(&self.e3))
+                        + &(t2.mul_ref(&self.e123));
+                    x.e1.add_ref(&y) + &y
+                },
+                e2: {
+                    let y = (t2.mul_ref(&self.e3)) - &(t1.mul_ref(&self.e123))
+                        - &(t0.mul_ref(&self.e1));
+                    x.e2.add_ref(&y) + &y
+                },
+                e3: {
+                    let y = (t0.mul_ref(&self.e123)) - &(t1.mul_ref(&self.e1))
+                        - &(t2.mul_ref(&self.e2));
+                    x.e3.add_ref(&y) + &y
+                },
+                e123: ::core::clone::Clone::clone(&x.e123),
             }
         }
     }
