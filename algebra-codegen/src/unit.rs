@@ -14,7 +14,7 @@
 //! are identities over any ring once `S rev(S) = 1` holds exactly; for a non-unit versor the
 //! result is not the action (use `apply`/`sandwich`).
 
-use super::emit::{Names, SumTerm, sum};
+use super::emit::{Names, SumTerm, tree_sum as sum};
 use super::plan::Ratio;
 use super::versor::{ActionKernel, Convention, action_kernel};
 use super::{CodegenError, ModuleSpec};

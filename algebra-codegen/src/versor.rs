@@ -13,7 +13,7 @@
 //! Versor types are the declared types (other than the full multivector) whose basis elements
 //! all have the same parity; every other pair keeps the composed full product.
 
-use super::emit::{Names, SumTerm, sum};
+use super::emit::{Names, SumTerm, tree_sum as sum};
 use super::plan::{Ratio, to_ratio};
 use super::{CodegenError, ModuleSpec};
 use algebra_core::rational::Q;

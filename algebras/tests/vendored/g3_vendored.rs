@@ -8733,18 +8733,18 @@ pub mod g3_vendored {
         ///`rev(self) x self` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
         #[inline]
         fn sandwich(&self, x: &Vector<T>) -> Vector<T> {
-            let t0 = (self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2))
-                + &(self.e3.mul_ref(&x.e3));
-            let t1 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1));
-            let t2 = (self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1));
-            let t3 = (self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2));
+            let t0 = ((self.e1.mul_ref(&x.e1))
+                + &((self.e2.mul_ref(&x.e2)) + &(self.e3.mul_ref(&x.e3))));
+            let t1 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
+            let t2 = ((self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1)));
+            let t3 = ((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2)));
             Vector {
-                e1: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
-                    + &(t2.mul_ref(&self.e3)),
-                e2: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
-                    + &(t3.mul_ref(&self.e3)),
-                e3: (t0.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e1))
-                    - &(t3.mul_ref(&self.e2)),
+                e1: ((t0.mul_ref(&self.e1))
+                    + &((t1.mul_ref(&self.e2)) + &(t2.mul_ref(&self.e3)))),
+                e2: ((t0.mul_ref(&self.e2))
+                    - &((t1.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e3)))),
+                e3: ((t0.mul_ref(&self.e3))
+                    - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
             }
         }
     }
@@ -8753,18 +8753,18 @@ pub mod g3_vendored {
         ///`self x rev(self)` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
         #[inline]
         fn apply(&self, x: &Vector<T>) -> Vector<T> {
-            let t0 = (self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2))
-                + &(self.e3.mul_ref(&x.e3));
-            let t1 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1));
-            let t2 = (self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1));
-            let t3 = (self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2));
+            let t0 = ((self.e1.mul_ref(&x.e1))
+                + &((self.e2.mul_ref(&x.e2)) + &(self.e3.mul_ref(&x.e3))));
+            let t1 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
+            let t2 = ((self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1)));
+            let t3 = ((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2)));
             Vector {
-                e1: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
-                    + &(t2.mul_ref(&self.e3)),
-                e2: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
-                    + &(t3.mul_ref(&self.e3)),
-                e3: (t0.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e1))
-                    - &(t3.mul_ref(&self.e2)),
+                e1: ((t0.mul_ref(&self.e1))
+                    + &((t1.mul_ref(&self.e2)) + &(t2.mul_ref(&self.e3)))),
+                e2: ((t0.mul_ref(&self.e2))
+                    - &((t1.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e3)))),
+                e3: ((t0.mul_ref(&self.e3))
+                    - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
             }
         }
     }
@@ -8773,23 +8773,23 @@ pub mod g3_vendored {
         ///`rev(self) x self` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
         #[inline]
         fn sandwich(&self, x: &Rotor<T>) -> Rotor<T> {
-            let t0 = (self.e1.mul_ref(&x.scalar)) - &(self.e2.mul_ref(&x.e12))
-                - &(self.e3.mul_ref(&x.e13));
-            let t1 = (self.e1.mul_ref(&x.e12)) + &(self.e2.mul_ref(&x.scalar))
-                - &(self.e3.mul_ref(&x.e23));
-            let t2 = (self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23))
-                + &(self.e3.mul_ref(&x.scalar));
-            let t3 = (self.e1.mul_ref(&x.e23)) - &(self.e2.mul_ref(&x.e13))
-                + &(self.e3.mul_ref(&x.e12));
+            let t0 = ((self.e1.mul_ref(&x.scalar))
+                - &((self.e2.mul_ref(&x.e12)) + &(self.e3.mul_ref(&x.e13))));
+            let t1 = ((self.e1.mul_ref(&x.e12))
+                + &((self.e2.mul_ref(&x.scalar)) - &(self.e3.mul_ref(&x.e23))));
+            let t2 = ((self.e1.mul_ref(&x.e13))
+                + &((self.e2.mul_ref(&x.e23)) + &(self.e3.mul_ref(&x.scalar))));
+            let t3 = ((self.e1.mul_ref(&x.e23))
+                - &((self.e2.mul_ref(&x.e13)) - &(self.e3.mul_ref(&x.e12))));
             Rotor {
-                scalar: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
-                    + &(t2.mul_ref(&self.e3)),
-                e12: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
-                    + &(t3.mul_ref(&self.e3)),
-                e13: (t0.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e1))
-                    - &(t3.mul_ref(&self.e2)),
-                e23: (t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e2))
-                    + &(t3.mul_ref(&self.e1)),
+                scalar: ((t0.mul_ref(&self.e1))
+                    + &((t1.mul_ref(&self.e2)) + &(t2.mul_ref(&self.e3)))),
+                e12: ((t0.mul_ref(&self.e2))
+                    - &((t1.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e3)))),
+                e13: ((t0.mul_ref(&self.e3))
+                    - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
+                e23: ((t1.mul_ref(&self.e3))
+                    - &((t2.mul_ref(&self.e2)) - &(t3.mul_ref(&self.e1)))),
             }
         }
     }
@@ -8798,23 +8798,23 @@ pub mod g3_vendored {
         ///`self x rev(self)` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
         #[inline]
         fn apply(&self, x: &Rotor<T>) -> Rotor<T> {
-            let t0 = (self.e1.mul_ref(&x.scalar)) - &(self.e2.mul_ref(&x.e12))
-                - &(self.e3.mul_ref(&x.e13));
-            let t1 = (self.e1.mul_ref(&x.e12)) + &(self.e2.mul_ref(&x.scalar))
-                - &(self.e3.mul_ref(&x.e23));
-            let t2 = (self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23))
-                + &(self.e3.mul_ref(&x.scalar));
-            let t3 = (self.e1.mul_ref(&x.e23)) - &(self.e2.mul_ref(&x.e13))
-                + &(self.e3.mul_ref(&x.e12));
+            let t0 = ((self.e1.mul_ref(&x.scalar))
+                - &((self.e2.mul_ref(&x.e12)) + &(self.e3.mul_ref(&x.e13))));
+            let t1 = ((self.e1.mul_ref(&x.e12))
+                + &((self.e2.mul_ref(&x.scalar)) - &(self.e3.mul_ref(&x.e23))));
+            let t2 = ((self.e1.mul_ref(&x.e13))
+                + &((self.e2.mul_ref(&x.e23)) + &(self.e3.mul_ref(&x.scalar))));
+            let t3 = ((self.e1.mul_ref(&x.e23))
+                - &((self.e2.mul_ref(&x.e13)) - &(self.e3.mul_ref(&x.e12))));
             Rotor {
-                scalar: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
-                    + &(t2.mul_ref(&self.e3)),
-                e12: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
-                    + &(t3.mul_ref(&self.e3)),
-                e13: (t0.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e1))
-                    - &(t3.mul_ref(&self.e2)),
-                e23: (t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e2))
-                    + &(t3.mul_ref(&self.e1)),
+                scalar: ((t0.mul_ref(&self.e1))
+                    + &((t1.mul_ref(&self.e2)) + &(t2.mul_ref(&self.e3)))),
+                e12: ((t0.mul_ref(&self.e2))
+                    - &((t1.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e3)))),
+                e13: ((t0.mul_ref(&self.e3))
+                    - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
+                e23: ((t1.mul_ref(&self.e3))
+                    - &((t2.mul_ref(&self.e2)) - &(t3.mul_ref(&self.e1)))),
             }
         }
     }
@@ -8823,23 +8823,23 @@ pub mod g3_vendored {
         ///`rev(self) x self` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
         #[inline]
         fn sandwich(&self, x: &Odd<T>) -> Odd<T> {
-            let t0 = (self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2))
-                + &(self.e3.mul_ref(&x.e3));
-            let t1 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1))
-                + &(self.e3.mul_ref(&x.e123));
-            let t2 = (self.e1.mul_ref(&x.e3)) - &(self.e2.mul_ref(&x.e123))
-                - &(self.e3.mul_ref(&x.e1));
-            let t3 = (self.e1.mul_ref(&x.e123)) + &(self.e2.mul_ref(&x.e3))
-                - &(self.e3.mul_ref(&x.e2));
+            let t0 = ((self.e1.mul_ref(&x.e1))
+                + &((self.e2.mul_ref(&x.e2)) + &(self.e3.mul_ref(&x.e3))));
+            let t1 = ((self.e1.mul_ref(&x.e2))
+                - &((self.e2.mul_ref(&x.e1)) - &(self.e3.mul_ref(&x.e123))));
+            let t2 = ((self.e1.mul_ref(&x.e3))
+                - &((self.e2.mul_ref(&x.e123)) + &(self.e3.mul_ref(&x.e1))));
+            let t3 = ((self.e1.mul_ref(&x.e123))
+                + &((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2))));
             Odd {
-                e1: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
-                    + &(t2.mul_ref(&self.e3)),
-                e2: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
-                    + &(t3.mul_ref(&self.e3)),
-                e3: (t0.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e1))
-                    - &(t3.mul_ref(&self.e2)),
-                e123: (t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e2))
-                    + &(t3.mul_ref(&self.e1)),
+                e1: ((t0.mul_ref(&self.e1))
+                    + &((t1.mul_ref(&self.e2)) + &(t2.mul_ref(&self.e3)))),
+                e2: ((t0.mul_ref(&self.e2))
+                    - &((t1.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e3)))),
+                e3: ((t0.mul_ref(&self.e3))
+                    - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
+                e123: ((t1.mul_ref(&self.e3))
+                    - &((t2.mul_ref(&self.e2)) - &(t3.mul_ref(&self.e1)))),
             }
         }
     }
@@ -8848,23 +8848,23 @@ pub mod g3_vendored {
         ///`self x rev(self)` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
         #[inline]
         fn apply(&self, x: &Odd<T>) -> Odd<T> {
-            let t0 = (self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2))
-                + &(self.e3.mul_ref(&x.e3));
-            let t1 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1))
-                + &(self.e3.mul_ref(&x.e123));
-            let t2 = (self.e1.mul_ref(&x.e3)) - &(self.e2.mul_ref(&x.e123))
-                - &(self.e3.mul_ref(&x.e1));
-            let t3 = (self.e1.mul_ref(&x.e123)) + &(self.e2.mul_ref(&x.e3))
-                - &(self.e3.mul_ref(&x.e2));
+            let t0 = ((self.e1.mul_ref(&x.e1))
+                + &((self.e2.mul_ref(&x.e2)) + &(self.e3.mul_ref(&x.e3))));
+            let t1 = ((self.e1.mul_ref(&x.e2))
+                - &((self.e2.mul_ref(&x.e1)) - &(self.e3.mul_ref(&x.e123))));
+            let t2 = ((self.e1.mul_ref(&x.e3))
+                - &((self.e2.mul_ref(&x.e123)) + &(self.e3.mul_ref(&x.e1))));
+            let t3 = ((self.e1.mul_ref(&x.e123))
+                + &((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2))));
             Odd {
-                e1: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
-                    + &(t2.mul_ref(&self.e3)),
-                e2: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
-                    + &(t3.mul_ref(&self.e3)),
-                e3: (t0.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e1))
-                    - &(t3.mul_ref(&self.e2)),
-                e123: (t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e2))
-                    + &(t3.mul_ref(&self.e1)),
+                e1: ((t0.mul_ref(&self.e1))
+                    + &((t1.mul_ref(&self.e2)) + &(t2.mul_ref(&self.e3)))),
+                e2: ((t0.mul_ref(&self.e2))
+                    - &((t1.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e3)))),
+                e3: ((t0.mul_ref(&self.e3))
+                    - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
+                e123: ((t1.mul_ref(&self.e3))
+                    - &((t2.mul_ref(&self.e2)) - &(t3.mul_ref(&self.e1)))),
             }
         }
     }
@@ -8873,21 +8873,23 @@ pub mod g3_vendored {
         ///`rev(self) x self` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
         #[inline]
         fn sandwich(&self, x: &Vector<T>) -> Vector<T> {
-            let t0 = (self.scalar.mul_ref(&x.e1)) - &(self.e12.mul_ref(&x.e2))
-                - &(self.e13.mul_ref(&x.e3));
-            let t1 = (self.scalar.mul_ref(&x.e2)) + &(self.e12.mul_ref(&x.e1))
-                - &(self.e23.mul_ref(&x.e3));
-            let t2 = (self.scalar.mul_ref(&x.e3)) + &(self.e13.mul_ref(&x.e1))
-                + &(self.e23.mul_ref(&x.e2));
-            let t3 = (self.e13.mul_ref(&x.e2)) - &(self.e12.mul_ref(&x.e3))
-                - &(self.e23.mul_ref(&x.e1));
+            let t0 = ((self.scalar.mul_ref(&x.e1))
+                - &((self.e12.mul_ref(&x.e2)) + &(self.e13.mul_ref(&x.e3))));
+            let t1 = ((self.scalar.mul_ref(&x.e2))
+                + &((self.e12.mul_ref(&x.e1)) - &(self.e23.mul_ref(&x.e3))));
+            let t2 = ((self.scalar.mul_ref(&x.e3))
+                + &((self.e13.mul_ref(&x.e1)) + &(self.e23.mul_ref(&x.e2))));
+            let t3 = ::algebra_core::Ring::neg_ref(
+                &((self.e12.mul_ref(&x.e3))
+                    - &((self.e13.mul_ref(&x.e2)) - &(self.e23.mul_ref(&x.e1)))),
+            );
             Vector {
-                e1: (t0.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e12))
-                    - &(t2.mul_ref(&self.e13)) - &(t3.mul_ref(&self.e23)),
-                e2: (t0.mul_ref(&self.e12)) + &(t1.mul_ref(&self.scalar))
-                    - &(t2.mul_ref(&self.e23)) + &(t3.mul_ref(&self.e13)),
-                e3: (t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23))
-                    + &(t2.mul_ref(&self.scalar)) - &(t3.mul_ref(&self.e12)),
+                e1: (((t0.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e12)))
+                    - &((t2.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e23)))),
+                e2: (((t0.mul_ref(&self.e12)) + &(t1.mul_ref(&self.scalar)))
+                    - &((t2.mul_ref(&self.e23)) - &(t3.mul_ref(&self.e13)))),
+                e3: (((t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23)))
+                    + &((t2.mul_ref(&self.scalar)) - &(t3.mul_ref(&self.e12)))),
             }
         }
     }
@@ -8896,21 +8898,25 @@ pub mod g3_vendored {
         ///`self x rev(self)` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
         #[inline]
         fn apply(&self, x: &Vector<T>) -> Vector<T> {
-            let t0 = (self.scalar.mul_ref(&x.e1)) + &(self.e12.mul_ref(&x.e2))
-                + &(self.e13.mul_ref(&x.e3));
-            let t1 = (self.scalar.mul_ref(&x.e2)) - &(self.e12.mul_ref(&x.e1))
-                + &(self.e23.mul_ref(&x.e3));
-            let t2 = (self.scalar.mul_ref(&x.e3)) - &(self.e13.mul_ref(&x.e1))
-                - &(self.e23.mul_ref(&x.e2));
-            let t3 = (self.e12.mul_ref(&x.e3)) - &(self.e13.mul_ref(&x.e2))
-                + &(self.e23.mul_ref(&x.e1));
+            let t0 = ((self.scalar.mul_ref(&x.e1))
+                + &((self.e12.mul_ref(&x.e2)) + &(self.e13.mul_ref(&x.e3))));
+            let t1 = ((self.scalar.mul_ref(&x.e2))
+                - &((self.e12.mul_ref(&x.e1)) - &(self.e23.mul_ref(&x.e3))));
+            let t2 = ((self.scalar.mul_ref(&x.e3))
+                - &((self.e13.mul_ref(&x.e1)) + &(self.e23.mul_ref(&x.e2))));
+            let t3 = ((self.e12.mul_ref(&x.e3))
+                - &((self.e13.mul_ref(&x.e2)) - &(self.e23.mul_ref(&x.e1))));
             Vector {
-                e1: (t0.mul_ref(&self.scalar)) + &(t1.mul_ref(&self.e12))
-                    + &(t2.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e23)),
-                e2: (t1.mul_ref(&self.scalar)) - &(t0.mul_ref(&self.e12))
-                    + &(t2.mul_ref(&self.e23)) - &(t3.mul_ref(&self.e13)),
-                e3: (t2.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e23))
-                    - &(t0.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e12)),
+                e1: (((t0.mul_ref(&self.scalar)) + &(t1.mul_ref(&self.e12)))
+                    + &((t2.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e23)))),
+                e2: ::algebra_core::Ring::neg_ref(
+                    &(((t0.mul_ref(&self.e12)) - &(t1.mul_ref(&self.scalar)))
+                        - &((t2.mul_ref(&self.e23)) - &(t3.mul_ref(&self.e13)))),
+                ),
+                e3: ::algebra_core::Ring::neg_ref(
+                    &(((t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23)))
+                        - &((t2.mul_ref(&self.scalar)) + &(t3.mul_ref(&self.e12)))),
+                ),
             }
         }
     }
@@ -8919,23 +8925,23 @@ pub mod g3_vendored {
         ///`rev(self) x self` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
         #[inline]
         fn sandwich(&self, x: &Rotor<T>) -> Rotor<T> {
-            let t0 = (self.scalar.mul_ref(&x.scalar)) + &(self.e12.mul_ref(&x.e12))
-                + &(self.e13.mul_ref(&x.e13)) + &(self.e23.mul_ref(&x.e23));
-            let t1 = (self.scalar.mul_ref(&x.e12)) - &(self.e12.mul_ref(&x.scalar))
-                + &(self.e13.mul_ref(&x.e23)) - &(self.e23.mul_ref(&x.e13));
-            let t2 = (self.scalar.mul_ref(&x.e13)) - &(self.e12.mul_ref(&x.e23))
-                - &(self.e13.mul_ref(&x.scalar)) + &(self.e23.mul_ref(&x.e12));
-            let t3 = (self.scalar.mul_ref(&x.e23)) + &(self.e12.mul_ref(&x.e13))
-                - &(self.e13.mul_ref(&x.e12)) - &(self.e23.mul_ref(&x.scalar));
+            let t0 = (((self.scalar.mul_ref(&x.scalar)) + &(self.e12.mul_ref(&x.e12)))
+                + &((self.e13.mul_ref(&x.e13)) + &(self.e23.mul_ref(&x.e23))));
+            let t1 = (((self.scalar.mul_ref(&x.e12)) - &(self.e12.mul_ref(&x.scalar)))
+                + &((self.e13.mul_ref(&x.e23)) - &(self.e23.mul_ref(&x.e13))));
+            let t2 = (((self.scalar.mul_ref(&x.e13)) - &(self.e12.mul_ref(&x.e23)))
+                - &((self.e13.mul_ref(&x.scalar)) - &(self.e23.mul_ref(&x.e12))));
+            let t3 = (((self.scalar.mul_ref(&x.e23)) + &(self.e12.mul_ref(&x.e13)))
+                - &((self.e13.mul_ref(&x.e12)) + &(self.e23.mul_ref(&x.scalar))));
             Rotor {
-                scalar: (t0.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e12))
-                    - &(t2.mul_ref(&self.e13)) - &(t3.mul_ref(&self.e23)),
-                e12: (t0.mul_ref(&self.e12)) + &(t1.mul_ref(&self.scalar))
-                    - &(t2.mul_ref(&self.e23)) + &(t3.mul_ref(&self.e13)),
-                e13: (t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23))
-                    + &(t2.mul_ref(&self.scalar)) - &(t3.mul_ref(&self.e12)),
-                e23: (t0.mul_ref(&self.e23)) - &(t1.mul_ref(&self.e13))
-                    + &(t2.mul_ref(&self.e12)) + &(t3.mul_ref(&self.scalar)),
+                scalar: (((t0.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e12)))
+                    - &((t2.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e23)))),
+                e12: (((t0.mul_ref(&self.e12)) + &(t1.mul_ref(&self.scalar)))
+                    - &((t2.mul_ref(&self.e23)) - &(t3.mul_ref(&self.e13)))),
+                e13: (((t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23)))
+                    + &((t2.mul_ref(&self.scalar)) - &(t3.mul_ref(&self.e12)))),
+                e23: (((t0.mul_ref(&self.e23)) - &(t1.mul_ref(&self.e13)))
+                    + &((t2.mul_ref(&self.e12)) + &(t3.mul_ref(&self.scalar)))),
             }
         }
     }
@@ -8944,23 +8950,29 @@ pub mod g3_vendored {
         ///`self x rev(self)` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
         #[inline]
         fn apply(&self, x: &Rotor<T>) -> Rotor<T> {
-            let t0 = (self.scalar.mul_ref(&x.scalar)) - &(self.e12.mul_ref(&x.e12))
-                - &(self.e13.mul_ref(&x.e13)) - &(self.e23.mul_ref(&x.e23));
-            let t1 = (self.scalar.mul_ref(&x.e12)) + &(self.e12.mul_ref(&x.scalar))
-                - &(self.e13.mul_ref(&x.e23)) + &(self.e23.mul_ref(&x.e13));
-            let t2 = (self.scalar.mul_ref(&x.e13)) + &(self.e12.mul_ref(&x.e23))
-                + &(self.e13.mul_ref(&x.scalar)) - &(self.e23.mul_ref(&x.e12));
-            let t3 = (self.scalar.mul_ref(&x.e23)) - &(self.e12.mul_ref(&x.e13))
-                + &(self.e13.mul_ref(&x.e12)) + &(self.e23.mul_ref(&x.scalar));
+            let t0 = (((self.scalar.mul_ref(&x.scalar)) - &(self.e12.mul_ref(&x.e12)))
+                - &((self.e13.mul_ref(&x.e13)) + &(self.e23.mul_ref(&x.e23))));
+            let t1 = (((self.scalar.mul_ref(&x.e12)) + &(self.e12.mul_ref(&x.scalar)))
+                - &((self.e13.mul_ref(&x.e23)) - &(self.e23.mul_ref(&x.e13))));
+            let t2 = (((self.scalar.mul_ref(&x.e13)) + &(self.e12.mul_ref(&x.e23)))
+                + &((self.e13.mul_ref(&x.scalar)) - &(self.e23.mul_ref(&x.e12))));
+            let t3 = (((self.scalar.mul_ref(&x.e23)) - &(self.e12.mul_ref(&x.e13)))
+                + &((self.e13.mul_ref(&x.e12)) + &(self.e23.mul_ref(&x.scalar))));
             Rotor {
-                scalar: (t0.mul_ref(&self.scalar)) + &(t1.mul_ref(&self.e12))
-                    + &(t2.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e23)),
-                e12: (t1.mul_ref(&self.scalar)) - &(t0.mul_ref(&self.e12))
-                    + &(t2.mul_ref(&self.e23)) - &(t3.mul_ref(&self.e13)),
-                e13: (t2.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e23))
-                    - &(t0.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e12)),
-                e23: (t1.mul_ref(&self.e13)) - &(t0.mul_ref(&self.e23))
-                    - &(t2.mul_ref(&self.e12)) + &(t3.mul_ref(&self.scalar)),
+                scalar: (((t0.mul_ref(&self.scalar)) + &(t1.mul_ref(&self.e12)))
+                    + &((t2.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e23)))),
+                e12: ::algebra_core::Ring::neg_ref(
+                    &(((t0.mul_ref(&self.e12)) - &(t1.mul_ref(&self.scalar)))
+                        - &((t2.mul_ref(&self.e23)) - &(t3.mul_ref(&self.e13)))),
+                ),
+                e13: ::algebra_core::Ring::neg_ref(
+                    &(((t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23)))
+                        - &((t2.mul_ref(&self.scalar)) + &(t3.mul_ref(&self.e12)))),
+                ),
+                e23: ::algebra_core::Ring::neg_ref(
+                    &(((t0.mul_ref(&self.e23)) - &(t1.mul_ref(&self.e13)))
+                        + &((t2.mul_ref(&self.e12)) - &(t3.mul_ref(&self.scalar)))),
+                ),
             }
         }
     }
@@ -8969,23 +8981,23 @@ pub mod g3_vendored {
         ///`rev(self) x self` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
         #[inline]
         fn sandwich(&self, x: &Odd<T>) -> Odd<T> {
-            let t0 = (self.scalar.mul_ref(&x.e1)) - &(self.e12.mul_ref(&x.e2))
-                - &(self.e13.mul_ref(&x.e3)) + &(self.e23.mul_ref(&x.e123));
-            let t1 = (self.scalar.mul_ref(&x.e2)) + &(self.e12.mul_ref(&x.e1))
-                - &(self.e13.mul_ref(&x.e123)) - &(self.e23.mul_ref(&x.e3));
-            let t2 = (self.scalar.mul_ref(&x.e3)) + &(self.e12.mul_ref(&x.e123))
-                + &(self.e13.mul_ref(&x.e1)) + &(self.e23.mul_ref(&x.e2));
-            let t3 = (self.scalar.mul_ref(&x.e123)) - &(self.e12.mul_ref(&x.e3))
-                + &(self.e13.mul_ref(&x.e2)) - &(self.e23.mul_ref(&x.e1));
+            let t0 = (((self.scalar.mul_ref(&x.e1)) - &(self.e12.mul_ref(&x.e2)))
+                - &((self.e13.mul_ref(&x.e3)) - &(self.e23.mul_ref(&x.e123))));
+            let t1 = (((self.scalar.mul_ref(&x.e2)) + &(self.e12.mul_ref(&x.e1)))
+                - &((self.e13.mul_ref(&x.e123)) + &(self.e23.mul_ref(&x.e3))));
+            let t2 = (((self.scalar.mul_ref(&x.e3)) + &(self.e12.mul_ref(&x.e123)))
+                + &((self.e13.mul_ref(&x.e1)) + &(self.e23.mul_ref(&x.e2))));
+            let t3 = (((self.scalar.mul_ref(&x.e123)) - &(self.e12.mul_ref(&x.e3)))
+                + &((self.e13.mul_ref(&x.e2)) - &(self.e23.mul_ref(&x.e1))));
             Odd {
-                e1: (t0.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e12))
-                    - &(t2.mul_ref(&self.e13)) - &(t3.mul_ref(&self.e23)),
-                e2: (t0.mul_ref(&self.e12)) + &(t1.mul_ref(&self.scalar))
-                    - &(t2.mul_ref(&self.e23)) + &(t3.mul_ref(&self.e13)),
-                e3: (t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23))
-                    + &(t2.mul_ref(&self.scalar)) - &(t3.mul_ref(&self.e12)),
-                e123: (t0.mul_ref(&self.e23)) - &(t1.mul_ref(&self.e13))
-                    + &(t2.mul_ref(&self.e12)) + &(t3.mul_ref(&self.scalar)),
+                e1: (((t0.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e12)))
+                    - &((t2.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e23)))),
+                e2: (((t0.mul_ref(&self.e12)) + &(t1.mul_ref(&self.scalar)))
+                    - &((t2.mul_ref(&self.e23)) - &(t3.mul_ref(&self.e13)))),
+                e3: (((t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23)))
+                    + &((t2.mul_ref(&self.scalar)) - &(t3.mul_ref(&self.e12)))),
+                e123: (((t0.mul_ref(&self.e23)) - &(t1.mul_ref(&self.e13)))
+                    + &((t2.mul_ref(&self.e12)) + &(t3.mul_ref(&self.scalar)))),
             }
         }
     }
@@ -8994,23 +9006,29 @@ pub mod g3_vendored {
         ///`self x rev(self)` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
         #[inline]
         fn apply(&self, x: &Odd<T>) -> Odd<T> {
-            let t0 = (self.scalar.mul_ref(&x.e1)) + &(self.e12.mul_ref(&x.e2))
-                + &(self.e13.mul_ref(&x.e3)) - &(self.e23.mul_ref(&x.e123));
-            let t1 = (self.scalar.mul_ref(&x.e2)) - &(self.e12.mul_ref(&x.e1))
-                + &(self.e13.mul_ref(&x.e123)) + &(self.e23.mul_ref(&x.e3));
-            let t2 = (self.scalar.mul_ref(&x.e3)) - &(self.e12.mul_ref(&x.e123))
-                - &(self.e13.mul_ref(&x.e1)) - &(self.e23.mul_ref(&x.e2));
-            let t3 = (self.scalar.mul_ref(&x.e123)) + &(self.e12.mul_ref(&x.e3))
-                - &(self.e13.mul_ref(&x.e2)) + &(self.e23.mul_ref(&x.e1));
+            let t0 = (((self.scalar.mul_ref(&x.e1)) + &(self.e12.mul_ref(&x.e2)))
+                + &((self.e13.mul_ref(&x.e3)) - &(self.e23.mul_ref(&x.e123))));
+            let t1 = (((self.scalar.mul_ref(&x.e2)) - &(self.e12.mul_ref(&x.e1)))
+                + &((self.e13.mul_ref(&x.e123)) + &(self.e23.mul_ref(&x.e3))));
+            let t2 = (((self.scalar.mul_ref(&x.e3)) - &(self.e12.mul_ref(&x.e123)))
+                - &((self.e13.mul_ref(&x.e1)) + &(self.e23.mul_ref(&x.e2))));
+            let t3 = (((self.scalar.mul_ref(&x.e123)) + &(self.e12.mul_ref(&x.e3)))
+                - &((self.e13.mul_ref(&x.e2)) - &(self.e23.mul_ref(&x.e1))));
             Odd {
-                e1: (t0.mul_ref(&self.scalar)) + &(t1.mul_ref(&self.e12))
-                    + &(t2.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e23)),
-                e2: (t1.mul_ref(&self.scalar)) - &(t0.mul_ref(&self.e12))
-                    + &(t2.mul_ref(&self.e23)) - &(t3.mul_ref(&self.e13)),
-                e3: (t2.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e23))
-                    - &(t0.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e12)),
-                e123: (t1.mul_ref(&self.e13)) - &(t0.mul_ref(&self.e23))
-                    - &(t2.mul_ref(&self.e12)) + &(t3.mul_ref(&self.scalar)),
+                e1: (((t0.mul_ref(&self.scalar)) + &(t1.mul_ref(&self.e12)))
+                    + &((t2.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e23)))),
+                e2: ::algebra_core::Ring::neg_ref(
+                    &(((t0.mul_ref(&self.e12)) - &(t1.mul_ref(&self.scalar)))
+                        - &((t2.mul_ref(&self.e23)) - &(t3.mul_ref(&self.e13)))),
+                ),
+                e3: ::algebra_core::Ring::neg_ref(
+                    &(((t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23)))
+                        - &((t2.mul_ref(&self.scalar)) + &(t3.mul_ref(&self.e12)))),
+                ),
+                e123: ::algebra_core::Ring::neg_ref(
+                    &(((t0.mul_ref(&self.e23)) - &(t1.mul_ref(&self.e13)))
+                        + &((t2.mul_ref(&self.e12)) - &(t3.mul_ref(&self.scalar)))),
+                ),
             }
         }
     }
@@ -9019,21 +9037,21 @@ pub mod g3_vendored {
         ///`rev(self) x self` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
         #[inline]
         fn sandwich(&self, x: &Vector<T>) -> Vector<T> {
-            let t0 = (self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2))
-                + &(self.e3.mul_ref(&x.e3));
-            let t1 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1))
-                - &(self.e123.mul_ref(&x.e3));
-            let t2 = (self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1))
-                + &(self.e123.mul_ref(&x.e2));
-            let t3 = (self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2))
-                - &(self.e123.mul_ref(&x.e1));
+            let t0 = ((self.e1.mul_ref(&x.e1))
+                + &((self.e2.mul_ref(&x.e2)) + &(self.e3.mul_ref(&x.e3))));
+            let t1 = ((self.e1.mul_ref(&x.e2))
+                - &((self.e2.mul_ref(&x.e1)) + &(self.e123.mul_ref(&x.e3))));
+            let t2 = ((self.e1.mul_ref(&x.e3))
+                - &((self.e3.mul_ref(&x.e1)) - &(self.e123.mul_ref(&x.e2))));
+            let t3 = ((self.e2.mul_ref(&x.e3))
+                - &((self.e3.mul_ref(&x.e2)) + &(self.e123.mul_ref(&x.e1))));
             Vector {
-                e1: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
-                    + &(t2.mul_ref(&self.e3)) - &(t3.mul_ref(&self.e123)),
-                e2: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
-                    + &(t2.mul_ref(&self.e123)) + &(t3.mul_ref(&self.e3)),
-                e3: (t0.mul_ref(&self.e3)) - &(t1.mul_ref(&self.e123))
-                    - &(t2.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e2)),
+                e1: (((t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2)))
+                    + &((t2.mul_ref(&self.e3)) - &(t3.mul_ref(&self.e123)))),
+                e2: (((t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1)))
+                    + &((t2.mul_ref(&self.e123)) + &(t3.mul_ref(&self.e3)))),
+                e3: (((t0.mul_ref(&self.e3)) - &(t1.mul_ref(&self.e123)))
+                    - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
             }
         }
     }
@@ -9042,21 +9060,21 @@ pub mod g3_vendored {
         ///`self x rev(self)` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
         #[inline]
         fn apply(&self, x: &Vector<T>) -> Vector<T> {
-            let t0 = (self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2))
-                + &(self.e3.mul_ref(&x.e3));
-            let t1 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1))
-                + &(self.e123.mul_ref(&x.e3));
-            let t2 = (self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1))
-                - &(self.e123.mul_ref(&x.e2));
-            let t3 = (self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2))
-                + &(self.e123.mul_ref(&x.e1));
+            let t0 = ((self.e1.mul_ref(&x.e1))
+                + &((self.e2.mul_ref(&x.e2)) + &(self.e3.mul_ref(&x.e3))));
+            let t1 = ((self.e1.mul_ref(&x.e2))
+                - &((self.e2.mul_ref(&x.e1)) - &(self.e123.mul_ref(&x.e3))));
+            let t2 = ((self.e1.mul_ref(&x.e3))
+                - &((self.e3.mul_ref(&x.e1)) + &(self.e123.mul_ref(&x.e2))));
+            let t3 = ((self.e2.mul_ref(&x.e3))
+                - &((self.e3.mul_ref(&x.e2)) - &(self.e123.mul_ref(&x.e1))));
             Vector {
-                e1: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
-                    + &(t2.mul_ref(&self.e3)) + &(t3.mul_ref(&self.e123)),
-                e2: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
-                    - &(t2.mul_ref(&self.e123)) + &(t3.mul_ref(&self.e3)),
-                e3: (t0.mul_ref(&self.e3)) + &(t1.mul_ref(&self.e123))
-                    - &(t2.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e2)),
+                e1: (((t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2)))
+                    + &((t2.mul_ref(&self.e3)) + &(t3.mul_ref(&self.e123)))),
+                e2: (((t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1)))
+                    - &((t2.mul_ref(&self.e123)) - &(t3.mul_ref(&self.e3)))),
+                e3: (((t0.mul_ref(&self.e3)) + &(t1.mul_ref(&self.e123)))
+                    - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
             }
         }
     }
@@ -9065,23 +9083,23 @@ pub mod g3_vendored {
         ///`rev(self) x self` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
         #[inline]
         fn sandwich(&self, x: &Rotor<T>) -> Rotor<T> {
-            let t0 = (self.e1.mul_ref(&x.scalar)) - &(self.e2.mul_ref(&x.e12))
-                - &(self.e3.mul_ref(&x.e13)) + &(self.e123.mul_ref(&x.e23));
-            let t1 = (self.e1.mul_ref(&x.e12)) + &(self.e2.mul_ref(&x.scalar))
-                - &(self.e3.mul_ref(&x.e23)) - &(self.e123.mul_ref(&x.e13));
-            let t2 = (self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23))
-                + &(self.e3.mul_ref(&x.scalar)) + &(self.e123.mul_ref(&x.e12));
-            let t3 = (self.e1.mul_ref(&x.e23)) - &(self.e2.mul_ref(&x.e13))
-                + &(self.e3.mul_ref(&x.e12)) - &(self.e123.mul_ref(&x.scalar));
+            let t0 = (((self.e1.mul_ref(&x.scalar)) - &(self.e2.mul_ref(&x.e12)))
+                - &((self.e3.mul_ref(&x.e13)) - &(self.e123.mul_ref(&x.e23))));
+            let t1 = (((self.e1.mul_ref(&x.e12)) + &(self.e2.mul_ref(&x.scalar)))
+                - &((self.e3.mul_ref(&x.e23)) + &(self.e123.mul_ref(&x.e13))));
+            let t2 = (((self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23)))
+                + &((self.e3.mul_ref(&x.scalar)) + &(self.e123.mul_ref(&x.e12))));
+            let t3 = (((self.e1.mul_ref(&x.e23)) - &(self.e2.mul_ref(&x.e13)))
+                + &((self.e3.mul_ref(&x.e12)) - &(self.e123.mul_ref(&x.scalar))));
             Rotor {
-                scalar: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
-                    + &(t2.mul_ref(&self.e3)) - &(t3.mul_ref(&self.e123)),
-                e12: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
-                    + &(t2.mul_ref(&self.e123)) + &(t3.mul_ref(&self.e3)),
-                e13: (t0.mul_ref(&self.e3)) - &(t1.mul_ref(&self.e123))
-                    - &(t2.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e2)),
-                e23: (t0.mul_ref(&self.e123)) + &(t1.mul_ref(&self.e3))
-                    - &(t2.mul_ref(&self.e2)) + &(t3.mul_ref(&self.e1)),
+                scalar: (((t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2)))
+                    + &((t2.mul_ref(&self.e3)) - &(t3.mul_ref(&self.e123)))),
+                e12: (((t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1)))
+                    + &((t2.mul_ref(&self.e123)) + &(t3.mul_ref(&self.e3)))),
+                e13: (((t0.mul_ref(&self.e3)) - &(t1.mul_ref(&self.e123)))
+                    - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
+                e23: (((t0.mul_ref(&self.e123)) + &(t1.mul_ref(&self.e3)))
+                    - &((t2.mul_ref(&self.e2)) - &(t3.mul_ref(&self.e1)))),
             }
         }
     }
@@ -9090,23 +9108,25 @@ pub mod g3_vendored {
         ///`self x rev(self)` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
         #[inline]
         fn apply(&self, x: &Rotor<T>) -> Rotor<T> {
-            let t0 = (self.e1.mul_ref(&x.scalar)) - &(self.e2.mul_ref(&x.e12))
-                - &(self.e3.mul_ref(&x.e13)) - &(self.e123.mul_ref(&x.e23));
-            let t1 = (self.e1.mul_ref(&x.e12)) + &(self.e2.mul_ref(&x.scalar))
-                - &(self.e3.mul_ref(&x.e23)) + &(self.e123.mul_ref(&x.e13));
-            let t2 = (self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23))
-                + &(self.e3.mul_ref(&x.scalar)) - &(self.e123.mul_ref(&x.e12));
-            let t3 = (self.e1.mul_ref(&x.e23)) - &(self.e2.mul_ref(&x.e13))
-                + &(self.e3.mul_ref(&x.e12)) + &(self.e123.mul_ref(&x.scalar));
+            let t0 = (((self.e1.mul_ref(&x.scalar)) - &(self.e2.mul_ref(&x.e12)))
+                - &((self.e3.mul_ref(&x.e13)) + &(self.e123.mul_ref(&x.e23))));
+            let t1 = (((self.e1.mul_ref(&x.e12)) + &(self.e2.mul_ref(&x.scalar)))
+                - &((self.e3.mul_ref(&x.e23)) - &(self.e123.mul_ref(&x.e13))));
+            let t2 = (((self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23)))
+                + &((self.e3.mul_ref(&x.scalar)) - &(self.e123.mul_ref(&x.e12))));
+            let t3 = (((self.e1.mul_ref(&x.e23)) - &(self.e2.mul_ref(&x.e13)))
+                + &((self.e3.mul_ref(&x.e12)) + &(self.e123.mul_ref(&x.scalar))));
             Rotor {
-                scalar: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
-                    + &(t2.mul_ref(&self.e3)) + &(t3.mul_ref(&self.e123)),
-                e12: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
-                    - &(t2.mul_ref(&self.e123)) + &(t3.mul_ref(&self.e3)),
-                e13: (t0.mul_ref(&self.e3)) + &(t1.mul_ref(&self.e123))
-                    - &(t2.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e2)),
-                e23: (t1.mul_ref(&self.e3)) - &(t0.mul_ref(&self.e123))
-                    - &(t2.mul_ref(&self.e2)) + &(t3.mul_ref(&self.e1)),
+                scalar: (((t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2)))
+                    + &((t2.mul_ref(&self.e3)) + &(t3.mul_ref(&self.e123)))),
+                e12: (((t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1)))
+                    - &((t2.mul_ref(&self.e123)) - &(t3.mul_ref(&self.e3)))),
+                e13: (((t0.mul_ref(&self.e3)) + &(t1.mul_ref(&self.e123)))
+                    - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
+                e23: ::algebra_core::Ring::neg_ref(
+                    &(((t0.mul_ref(&self.e123)) - &(t1.mul_ref(&self.e3)))
+                        + &((t2.mul_ref(&self.e2)) - &(t3.mul_ref(&self.e1)))),
+                ),
             }
         }
     }
@@ -9115,23 +9135,23 @@ pub mod g3_vendored {
         ///`rev(self) x self` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
         #[inline]
         fn sandwich(&self, x: &Odd<T>) -> Odd<T> {
-            let t0 = (self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2))
-                + &(self.e3.mul_ref(&x.e3)) + &(self.e123.mul_ref(&x.e123));
-            let t1 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1))
-                + &(self.e3.mul_ref(&x.e123)) - &(self.e123.mul_ref(&x.e3));
-            let t2 = (self.e1.mul_ref(&x.e3)) - &(self.e2.mul_ref(&x.e123))
-                - &(self.e3.mul_ref(&x.e1)) + &(self.e123.mul_ref(&x.e2));
-            let t3 = (self.e1.mul_ref(&x.e123)) + &(self.e2.mul_ref(&x.e3))
-                - &(self.e3.mul_ref(&x.e2)) - &(self.e123.mul_ref(&x.e1));
+            let t0 = (((self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2)))
+                + &((self.e3.mul_ref(&x.e3)) + &(self.e123.mul_ref(&x.e123))));
+            let t1 = (((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)))
+                + &((self.e3.mul_ref(&x.e123)) - &(self.e123.mul_ref(&x.e3))));
+            let t2 = (((self.e1.mul_ref(&x.e3)) - &(self.e2.mul_ref(&x.e123)))
+                - &((self.e3.mul_ref(&x.e1)) - &(self.e123.mul_ref(&x.e2))));
+            let t3 = (((self.e1.mul_ref(&x.e123)) + &(self.e2.mul_ref(&x.e3)))
+                - &((self.e3.mul_ref(&x.e2)) + &(self.e123.mul_ref(&x.e1))));
             Odd {
-                e1: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
-                    + &(t2.mul_ref(&self.e3)) - &(t3.mul_ref(&self.e123)),
-                e2: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
-                    + &(t2.mul_ref(&self.e123)) + &(t3.mul_ref(&self.e3)),
-                e3: (t0.mul_ref(&self.e3)) - &(t1.mul_ref(&self.e123))
-                    - &(t2.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e2)),
-                e123: (t0.mul_ref(&self.e123)) + &(t1.mul_ref(&self.e3))
-                    - &(t2.mul_ref(&self.e2)) + &(t3.mul_ref(&self.e1)),
+                e1: (((t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2)))
+                    + &((t2.mul_ref(&self.e3)) - &(t3.mul_ref(&self.e123)))),
+                e2: (((t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1)))
+                    + &((t2.mul_ref(&self.e123)) + &(t3.mul_ref(&self.e3)))),
+                e3: (((t0.mul_ref(&self.e3)) - &(t1.mul_ref(&self.e123)))
+                    - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
+                e123: (((t0.mul_ref(&self.e123)) + &(t1.mul_ref(&self.e3)))
+                    - &((t2.mul_ref(&self.e2)) - &(t3.mul_ref(&self.e1)))),
             }
         }
     }
@@ -9140,23 +9160,25 @@ pub mod g3_vendored {
         ///`self x rev(self)` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
         #[inline]
         fn apply(&self, x: &Odd<T>) -> Odd<T> {
-            let t0 = (self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2))
-                + &(self.e3.mul_ref(&x.e3)) - &(self.e123.mul_ref(&x.e123));
-            let t1 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1))
-                + &(self.e3.mul_ref(&x.e123)) + &(self.e123.mul_ref(&x.e3));
-            let t2 = (self.e1.mul_ref(&x.e3)) - &(self.e2.mul_ref(&x.e123))
-                - &(self.e3.mul_ref(&x.e1)) - &(self.e123.mul_ref(&x.e2));
-            let t3 = (self.e1.mul_ref(&x.e123)) + &(self.e2.mul_ref(&x.e3))
-                - &(self.e3.mul_ref(&x.e2)) + &(self.e123.mul_ref(&x.e1));
+            let t0 = (((self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2)))
+                + &((self.e3.mul_ref(&x.e3)) - &(self.e123.mul_ref(&x.e123))));
+            let t1 = (((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)))
+                + &((self.e3.mul_ref(&x.e123)) + &(self.e123.mul_ref(&x.e3))));
+            let t2 = (((self.e1.mul_ref(&x.e3)) - &(self.e2.mul_ref(&x.e123)))
+                - &((self.e3.mul_ref(&x.e1)) + &(self.e123.mul_ref(&x.e2))));
+            let t3 = (((self.e1.mul_ref(&x.e123)) + &(self.e2.mul_ref(&x.e3)))
+                - &((self.e3.mul_ref(&x.e2)) - &(self.e123.mul_ref(&x.e1))));
             Odd {
-                e1: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
-                    + &(t2.mul_ref(&self.e3)) + &(t3.mul_ref(&self.e123)),
-                e2: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
-                    - &(t2.mul_ref(&self.e123)) + &(t3.mul_ref(&self.e3)),
-                e3: (t0.mul_ref(&self.e3)) + &(t1.mul_ref(&self.e123))
-                    - &(t2.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e2)),
-                e123: (t1.mul_ref(&self.e3)) - &(t0.mul_ref(&self.e123))
-                    - &(t2.mul_ref(&self.e2)) + &(t3.mul_ref(&self.e1)),
+                e1: (((t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2)))
+                    + &((t2.mul_ref(&self.e3)) + &(t3.mul_ref(&self.e123)))),
+                e2: (((t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1)))
+                    - &((t2.mul_ref(&self.e123)) - &(t3.mul_ref(&self.e3)))),
+                e3: (((t0.mul_ref(&self.e3)) + &(t1.mul_ref(&self.e123)))
+                    - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
+                e123: ::algebra_core::Ring::neg_ref(
+                    &(((t0.mul_ref(&self.e123)) - &(t1.mul_ref(&self.e3)))
+                        + &((t2.mul_ref(&self.e2)) - &(t3.mul_ref(&self.e1)))),
+                ),
             }
         }
     }
@@ -10157,21 +10179,24 @@ pub mod g3_vendored {
         /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
         #[inline]
         fn sandwich_unit(&self, x: &Vector<T>) -> Vector<T> {
-            let t0 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1));
-            let t1 = (self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1));
-            let t2 = (self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2));
+            let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
+            let t1 = ((self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1)));
+            let t2 = ((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2)));
             Vector {
                 e1: {
-                    let y = (t0.mul_ref(&self.e2)) + &(t1.mul_ref(&self.e3));
+                    let y = ((t0.mul_ref(&self.e2)) + &(t1.mul_ref(&self.e3)));
                     x.e1.add_ref(&y) + &y
                 },
                 e2: {
-                    let y = (t2.mul_ref(&self.e3)) - &(t0.mul_ref(&self.e1));
+                    let y = ::algebra_core::Ring::neg_ref(
+                        &((t0.mul_ref(&self.e1)) - &(t2.mul_ref(&self.e3))),
+                    );
                     x.e2.add_ref(&y) + &y
                 },
                 e3: {
-                    let y = ::algebra_core::Ring::neg_ref(&(t1.mul_ref(&self.e1)))
-                        - &(t2.mul_ref(&self.e2));
+                    let y = ::algebra_core::Ring::neg_ref(
+                        &((t1.mul_ref(&self.e1)) + &(t2.mul_ref(&self.e2))),
+                    );
                     x.e3.add_ref(&y) + &y
                 },
             }
@@ -10179,21 +10204,24 @@ pub mod g3_vendored {
         /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
         #[inline]
         fn apply_unit(&self, x: &Vector<T>) -> Vector<T> {
-            let t0 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1));
-            let t1 = (self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1));
-            let t2 = (self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2));
+            let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
+            let t1 = ((self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1)));
+            let t2 = ((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2)));
             Vector {
                 e1: {
-                    let y = (t0.mul_ref(&self.e2)) + &(t1.mul_ref(&self.e3));
+                    let y = ((t0.mul_ref(&self.e2)) + &(t1.mul_ref(&self.e3)));
                     x.e1.add_ref(&y) + &y
                 },
                 e2: {
-                    let y = (t2.mul_ref(&self.e3)) - &(t0.mul_ref(&self.e1));
+                    let y = ::algebra_core::Ring::neg_ref(
+                        &((t0.mul_ref(&self.e1)) - &(t2.mul_ref(&self.e3))),
+                    );
                     x.e2.add_ref(&y) + &y
                 },
                 e3: {
-                    let y = ::algebra_core::Ring::neg_ref(&(t1.mul_ref(&self.e1)))
-                        - &(t2.mul_ref(&self.e2));
+                    let y = ::algebra_core::Ring::neg_ref(
+                        &((t1.mul_ref(&self.e1)) + &(t2.mul_ref(&self.e2))),
+                    );
                     x.e3.add_ref(&y) + &y
                 },
             }
@@ -10204,22 +10232,23 @@ pub mod g3_vendored {
         /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
         #[inline]
         fn sandwich_unit(&self, x: &Rotor<T>) -> Rotor<T> {
-            let t0 = ::algebra_core::Ring::neg_ref(&(self.e2.mul_ref(&x.e12)))
-                - &(self.e3.mul_ref(&x.e13));
-            let t1 = (self.e1.mul_ref(&x.e12)) - &(self.e3.mul_ref(&x.e23));
-            let t2 = (self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23));
+            let t0 = ::algebra_core::Ring::neg_ref(
+                &((self.e2.mul_ref(&x.e12)) + &(self.e3.mul_ref(&x.e13))),
+            );
+            let t1 = ((self.e1.mul_ref(&x.e12)) - &(self.e3.mul_ref(&x.e23)));
+            let t2 = ((self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23)));
             Rotor {
                 scalar: ::core::clone::Clone::clone(&x.scalar),
                 e12: {
-                    let y = (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1));
+                    let y = ((t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1)));
                     x.e12.add_ref(&y) + &y
                 },
                 e13: {
-                    let y = (t0.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e1));
+                    let y = ((t0.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e1)));
                     x.e13.add_ref(&y) + &y
                 },
                 e23: {
-                    let y = (t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e2));
+                    let y = ((t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e2)));
                     x.e23.add_ref(&y) + &y
                 },
             }
@@ -10227,22 +10256,23 @@ pub mod g3_vendored {
         /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
         #[inline]
         fn apply_unit(&self, x: &Rotor<T>) -> Rotor<T> {
-            let t0 = ::algebra_core::Ring::neg_ref(&(self.e2.mul_ref(&x.e12)))
-                - &(self.e3.mul_ref(&x.e13));
-            let t1 = (self.e1.mul_ref(&x.e12)) - &(self.e3.mul_ref(&x.e23));
-            let t2 = (self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23));
+            let t0 = ::algebra_core::Ring::neg_ref(
+                &((self.e2.mul_ref(&x.e12)) + &(self.e3.mul_ref(&x.e13))),
+            );
+            let t1 = ((self.e1.mul_ref(&x.e12)) - &(self.e3.mul_ref(&x.e23)));
+            let t2 = ((self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23)));
             Rotor {
                 scalar: ::core::clone::Clone::clone(&x.scalar),
                 e12: {
-                    let y = (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1));
+                    let y = ((t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1)));
                     x.e12.add_ref(&y) + &y
                 },
                 e13: {
-                    let y = (t0.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e1));
+                    let y = ((t0.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e1)));
                     x.e13.add_ref(&y) + &y
                 },
                 e23: {
-                    let y = (t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e2));
+                    let y = ((t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e2)));
                     x.e23.add_ref(&y) + &y
                 },
             }
@@ -10252,21 +10282,24 @@ pub mod g3_vendored {
         /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
         #[inline]
         fn sandwich_unit(&self, x: &Odd<T>) -> Odd<T> {
-            let t0 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1));
-            let t1 = (self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1));
-            let t2 = (self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2));
+            let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
+            let t1 = ((self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1)));
+            let t2 = ((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2)));
             Odd {
                 e1: {
-                    let y = (t0.mul_ref(&self.e2)) + &(t1.mul_ref(&self.e3));
+                    let y = ((t0.mul_ref(&self.e2)) + &(t1.mul_ref(&self.e3)));
                     x.e1.add_ref(&y) + &y
                 },
                 e2: {
-                    let y = (t2.mul_ref(&self.e3)) - &(t0.mul_ref(&self.e1));
+                    let y = ::algebra_core::Ring::neg_ref(
+                        &((t0.mul_ref(&self.e1)) - &(t2.mul_ref(&self.e3))),
+                    );
                     x.e2.add_ref(&y) + &y
                 },
                 e3: {
-                    let y = ::algebra_core::Ring::neg_ref(&(t1.mul_ref(&self.e1)))
-                        - &(t2.mul_ref(&self.e2));
+                    let y = ::algebra_core::Ring::neg_ref(
+                        &((t1.mul_ref(&self.e1)) + &(t2.mul_ref(&self.e2))),
+                    );
                     x.e3.add_ref(&y) + &y
                 },
                 e123: ::core::clone::Clone::clone(&x.e123),
@@ -10275,21 +10308,24 @@ pub mod g3_vendored {
         /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
         #[inline]
         fn apply_unit(&self, x: &Odd<T>) -> Odd<T> {
-            let t0 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1));
-            let t1 = (self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1));
-            let t2 = (self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2));
+            let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
+            let t1 = ((self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1)));
+            let t2 = ((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2)));
             Odd {
                 e1: {
-                    let y = (t0.mul_ref(&self.e2)) + &(t1.mul_ref(&self.e3));
+                    let y = ((t0.mul_ref(&self.e2)) + &(t1.mul_ref(&self.e3)));
                     x.e1.add_ref(&y) + &y
                 },
                 e2: {
-                    let y = (t2.mul_ref(&self.e3)) - &(t0.mul_ref(&self.e1));
+                    let y = ::algebra_core::Ring::neg_ref(
+                        &((t0.mul_ref(&self.e1)) - &(t2.mul_ref(&self.e3))),
+                    );
                     x.e2.add_ref(&y) + &y
                 },
                 e3: {
-                    let y = ::algebra_core::Ring::neg_ref(&(t1.mul_ref(&self.e1)))
-                        - &(t2.mul_ref(&self.e2));
+                    let y = ::algebra_core::Ring::neg_ref(
+                        &((t1.mul_ref(&self.e1)) + &(t2.mul_ref(&self.e2))),
+                    );
                     x.e3.add_ref(&y) + &y
                 },
                 e123: ::core::clone::Clone::clone(&x.e123),
@@ -10301,24 +10337,25 @@ pub mod g3_vendored {
         /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
         #[inline]
         fn sandwich_unit(&self, x: &Vector<T>) -> Vector<T> {
-            let t0 = ::algebra_core::Ring::neg_ref(&(self.e12.mul_ref(&x.e2)))
-                - &(self.e13.mul_ref(&x.e3));
-            let t1 = (self.e12.mul_ref(&x.e1)) - &(self.e23.mul_ref(&x.e3));
-            let t2 = (self.e13.mul_ref(&x.e1)) + &(self.e23.mul_ref(&x.e2));
+            let t0 = ::algebra_core::Ring::neg_ref(
+                &((self.e12.mul_ref(&x.e2)) + &(self.e13.mul_ref(&x.e3))),
+            );
+            let t1 = ((self.e12.mul_ref(&x.e1)) - &(self.e23.mul_ref(&x.e3)));
+            let t2 = ((self.e13.mul_ref(&x.e1)) + &(self.e23.mul_ref(&x.e2)));
             Vector {
                 e1: {
-                    let y = (t0.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e12))
-                        - &(t2.mul_ref(&self.e13));
+                    let y = ((t0.mul_ref(&self.scalar))
+                        - &((t1.mul_ref(&self.e12)) + &(t2.mul_ref(&self.e13))));
                     x.e1.add_ref(&y) + &y
                 },
                 e2: {
-                    let y = (t0.mul_ref(&self.e12)) + &(t1.mul_ref(&self.scalar))
-                        - &(t2.mul_ref(&self.e23));
+                    let y = ((t0.mul_ref(&self.e12))
+                        + &((t1.mul_ref(&self.scalar)) - &(t2.mul_ref(&self.e23))));
                     x.e2.add_ref(&y) + &y
                 },
                 e3: {
-                    let y = (t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23))
-                        + &(t2.mul_ref(&self.scalar));
+                    let y = ((t0.mul_ref(&self.e13))
+                        + &((t1.mul_ref(&self.e23)) + &(t2.mul_ref(&self.scalar))));
                     x.e3.add_ref(&y) + &y
                 },
             }
@@ -10326,24 +10363,31 @@ pub mod g3_vendored {
         /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
         #[inline]
         fn apply_unit(&self, x: &Vector<T>) -> Vector<T> {
-            let t0 = (self.e12.mul_ref(&x.e2)) + &(self.e13.mul_ref(&x.e3));
-            let t1 = (self.e23.mul_ref(&x.e3)) - &(self.e12.mul_ref(&x.e1));
-            let t2 = ::algebra_core::Ring::neg_ref(&(self.e13.mul_ref(&x.e1)))
-                - &(self.e23.mul_ref(&x.e2));
+            let t0 = ((self.e12.mul_ref(&x.e2)) + &(self.e13.mul_ref(&x.e3)));
+            let t1 = ::algebra_core::Ring::neg_ref(
+                &((self.e12.mul_ref(&x.e1)) - &(self.e23.mul_ref(&x.e3))),
+            );
+            let t2 = ::algebra_core::Ring::neg_ref(
+                &((self.e13.mul_ref(&x.e1)) + &(self.e23.mul_ref(&x.e2))),
+            );
             Vector {
                 e1: {
-                    let y = (t0.mul_ref(&self.scalar)) + &(t1.mul_ref(&self.e12))
-                        + &(t2.mul_ref(&self.e13));
+                    let y = ((t0.mul_ref(&self.scalar))
+                        + &((t1.mul_ref(&self.e12)) + &(t2.mul_ref(&self.e13))));
                     x.e1.add_ref(&y) + &y
                 },
                 e2: {
-                    let y = (t1.mul_ref(&self.scalar)) - &(t0.mul_ref(&self.e12))
-                        + &(t2.mul_ref(&self.e23));
+                    let y = ::algebra_core::Ring::neg_ref(
+                        &((t0.mul_ref(&self.e12))
+                            - &((t1.mul_ref(&self.scalar)) + &(t2.mul_ref(&self.e23)))),
+                    );
                     x.e2.add_ref(&y) + &y
                 },
                 e3: {
-                    let y = (t2.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e23))
-                        - &(t0.mul_ref(&self.e13));
+                    let y = ::algebra_core::Ring::neg_ref(
+                        &((t0.mul_ref(&self.e13))
+                            + &((t1.mul_ref(&self.e23)) - &(t2.mul_ref(&self.scalar)))),
+                    );
                     x.e3.add_ref(&y) + &y
                 },
             }
@@ -10354,24 +10398,28 @@ pub mod g3_vendored {
         /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
         #[inline]
         fn sandwich_unit(&self, x: &Rotor<T>) -> Rotor<T> {
-            let t0 = (self.e13.mul_ref(&x.e23)) - &(self.e23.mul_ref(&x.e13));
-            let t1 = (self.e23.mul_ref(&x.e12)) - &(self.e12.mul_ref(&x.e23));
-            let t2 = (self.e12.mul_ref(&x.e13)) - &(self.e13.mul_ref(&x.e12));
+            let t0 = ((self.e13.mul_ref(&x.e23)) - &(self.e23.mul_ref(&x.e13)));
+            let t1 = ::algebra_core::Ring::neg_ref(
+                &((self.e12.mul_ref(&x.e23)) - &(self.e23.mul_ref(&x.e12))),
+            );
+            let t2 = ((self.e12.mul_ref(&x.e13)) - &(self.e13.mul_ref(&x.e12)));
             Rotor {
                 scalar: ::core::clone::Clone::clone(&x.scalar),
                 e12: {
-                    let y = (t0.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e23))
-                        + &(t2.mul_ref(&self.e13));
+                    let y = ((t0.mul_ref(&self.scalar))
+                        - &((t1.mul_ref(&self.e23)) - &(t2.mul_ref(&self.e13))));
                     x.e12.add_ref(&y) + &y
                 },
                 e13: {
-                    let y = (t0.mul_ref(&self.e23)) + &(t1.mul_ref(&self.scalar))
-                        - &(t2.mul_ref(&self.e12));
+                    let y = ((t0.mul_ref(&self.e23))
+                        + &((t1.mul_ref(&self.scalar)) - &(t2.mul_ref(&self.e12))));
                     x.e13.add_ref(&y) + &y
                 },
                 e23: {
-                    let y = (t1.mul_ref(&self.e12)) - &(t0.mul_ref(&self.e13))
-                        + &(t2.mul_ref(&self.scalar));
+                    let y = ::algebra_core::Ring::neg_ref(
+                        &((t0.mul_ref(&self.e13))
+                            - &((t1.mul_ref(&self.e12)) + &(t2.mul_ref(&self.scalar)))),
+                    );
                     x.e23.add_ref(&y) + &y
                 },
             }
@@ -10379,24 +10427,30 @@ pub mod g3_vendored {
         /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
         #[inline]
         fn apply_unit(&self, x: &Rotor<T>) -> Rotor<T> {
-            let t0 = (self.e23.mul_ref(&x.e13)) - &(self.e13.mul_ref(&x.e23));
-            let t1 = (self.e12.mul_ref(&x.e23)) - &(self.e23.mul_ref(&x.e12));
-            let t2 = (self.e13.mul_ref(&x.e12)) - &(self.e12.mul_ref(&x.e13));
+            let t0 = ::algebra_core::Ring::neg_ref(
+                &((self.e13.mul_ref(&x.e23)) - &(self.e23.mul_ref(&x.e13))),
+            );
+            let t1 = ((self.e12.mul_ref(&x.e23)) - &(self.e23.mul_ref(&x.e12)));
+            let t2 = ::algebra_core::Ring::neg_ref(
+                &((self.e12.mul_ref(&x.e13)) - &(self.e13.mul_ref(&x.e12))),
+            );
             Rotor {
                 scalar: ::core::clone::Clone::clone(&x.scalar),
                 e12: {
-                    let y = (t0.mul_ref(&self.scalar)) + &(t1.mul_ref(&self.e23))
-                        - &(t2.mul_ref(&self.e13));
+                    let y = ((t0.mul_ref(&self.scalar))
+                        + &((t1.mul_ref(&self.e23)) - &(t2.mul_ref(&self.e13))));
                     x.e12.add_ref(&y) + &y
                 },
                 e13: {
-                    let y = (t1.mul_ref(&self.scalar)) - &(t0.mul_ref(&self.e23))
-                        + &(t2.mul_ref(&self.e12));
+                    let y = ::algebra_core::Ring::neg_ref(
+                        &((t0.mul_ref(&self.e23))
+                            - &((t1.mul_ref(&self.scalar)) + &(t2.mul_ref(&self.e12)))),
+                    );
                     x.e13.add_ref(&y) + &y
                 },
                 e23: {
-                    let y = (t0.mul_ref(&self.e13)) - &(t1.mul_ref(&self.e12))
-                        + &(t2.mul_ref(&self.scalar));
+                    let y = ((t0.mul_ref(&self.e13))
+                        - &((t1.mul_ref(&self.e12)) - &(t2.mul_ref(&self.scalar))));
                     x.e23.add_ref(&y) + &y
                 },
             }
@@ -10406,24 +10460,25 @@ pub mod g3_vendored {
         /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
         #[inline]
         fn sandwich_unit(&self, x: &Odd<T>) -> Odd<T> {
-            let t0 = ::algebra_core::Ring::neg_ref(&(self.e12.mul_ref(&x.e2)))
-                - &(self.e13.mul_ref(&x.e3));
-            let t1 = (self.e12.mul_ref(&x.e1)) - &(self.e23.mul_ref(&x.e3));
-            let t2 = (self.e13.mul_ref(&x.e1)) + &(self.e23.mul_ref(&x.e2));
+            let t0 = ::algebra_core::Ring::neg_ref(
+                &((self.e12.mul_ref(&x.e2)) + &(self.e13.mul_ref(&x.e3))),
+            );
+            let t1 = ((self.e12.mul_ref(&x.e1)) - &(self.e23.mul_ref(&x.e3)));
+            let t2 = ((self.e13.mul_ref(&x.e1)) + &(self.e23.mul_ref(&x.e2)));
             Odd {
                 e1: {
-                    let y = (t0.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e12))
-                        - &(t2.mul_ref(&self.e13));
+                    let y = ((t0.mul_ref(&self.scalar))
+                        - &((t1.mul_ref(&self.e12)) + &(t2.mul_ref(&self.e13))));
                     x.e1.add_ref(&y) + &y
                 },
                 e2: {
-                    let y = (t0.mul_ref(&self.e12)) + &(t1.mul_ref(&self.scalar))
-                        - &(t2.mul_ref(&self.e23));
+                    let y = ((t0.mul_ref(&self.e12))
+                        + &((t1.mul_ref(&self.scalar)) - &(t2.mul_ref(&self.e23))));
                     x.e2.add_ref(&y) + &y
                 },
                 e3: {
-                    let y = (t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23))
-                        + &(t2.mul_ref(&self.scalar));
+                    let y = ((t0.mul_ref(&self.e13))
+                        + &((t1.mul_ref(&self.e23)) + &(t2.mul_ref(&self.scalar))));
                     x.e3.add_ref(&y) + &y
                 },
                 e123: ::core::clone::Clone::clone(&x.e123),
@@ -10432,24 +10487,31 @@ pub mod g3_vendored {
         /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
         #[inline]
         fn apply_unit(&self, x: &Odd<T>) -> Odd<T> {
-            let t0 = (self.e12.mul_ref(&x.e2)) + &(self.e13.mul_ref(&x.e3));
-            let t1 = (self.e23.mul_ref(&x.e3)) - &(self.e12.mul_ref(&x.e1));
-            let t2 = ::algebra_core::Ring::neg_ref(&(self.e13.mul_ref(&x.e1)))
-                - &(self.e23.mul_ref(&x.e2));
+            let t0 = ((self.e12.mul_ref(&x.e2)) + &(self.e13.mul_ref(&x.e3)));
+            let t1 = ::algebra_core::Ring::neg_ref(
+                &((self.e12.mul_ref(&x.e1)) - &(self.e23.mul_ref(&x.e3))),
+            );
+            let t2 = ::algebra_core::Ring::neg_ref(
+                &((self.e13.mul_ref(&x.e1)) + &(self.e23.mul_ref(&x.e2))),
+            );
             Odd {
                 e1: {
-                    let y = (t0.mul_ref(&self.scalar)) + &(t1.mul_ref(&self.e12))
-                        + &(t2.mul_ref(&self.e13));
+                    let y = ((t0.mul_ref(&self.scalar))
+                        + &((t1.mul_ref(&self.e12)) + &(t2.mul_ref(&self.e13))));
                     x.e1.add_ref(&y) + &y
                 },
                 e2: {
-                    let y = (t1.mul_ref(&self.scalar)) - &(t0.mul_ref(&self.e12))
-                        + &(t2.mul_ref(&self.e23));
+                    let y = ::algebra_core::Ring::neg_ref(
+                        &((t0.mul_ref(&self.e12))
+                            - &((t1.mul_ref(&self.scalar)) + &(t2.mul_ref(&self.e23)))),
+                    );
                     x.e2.add_ref(&y) + &y
                 },
                 e3: {
-                    let y = (t2.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e23))
-                        - &(t0.mul_ref(&self.e13));
+                    let y = ::algebra_core::Ring::neg_ref(
+                        &((t0.mul_ref(&self.e13))
+                            + &((t1.mul_ref(&self.e23)) - &(t2.mul_ref(&self.scalar)))),
+                    );
                     x.e3.add_ref(&y) + &y
                 },
                 e123: ::core::clone::Clone::clone(&x.e123),
@@ -10460,23 +10522,27 @@ pub mod g3_vendored {
         /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
         #[inline]
         fn sandwich_unit(&self, x: &Vector<T>) -> Vector<T> {
-            let t0 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1));
-            let t1 = (self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1));
-            let t2 = (self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2));
+            let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
+            let t1 = ((self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1)));
+            let t2 = ((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2)));
             Vector {
                 e1: {
-                    let y = (t0.mul_ref(&self.e2)) + &(t1.mul_ref(&self.e3))
-                        - &(t2.mul_ref(&self.e123));
+                    let y = ((t0.mul_ref(&self.e2))
+                        + &((t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e123))));
                     x.e1.add_ref(&y) + &y
                 },
                 e2: {
-                    let y = (t1.mul_ref(&self.e123)) - &(t0.mul_ref(&self.e1))
-                        + &(t2.mul_ref(&self.e3));
+                    let y = ::algebra_core::Ring::neg_ref(
+                        &((t0.mul_ref(&self.e1))
+                            - &((t1.mul_ref(&self.e123)) + &(t2.mul_ref(&self.e3)))),
+                    );
                     x.e2.add_ref(&y) + &y
                 },
                 e3: {
-                    let y = ::algebra_core::Ring::neg_ref(&(t0.mul_ref(&self.e123)))
-                        - &(t1.mul_ref(&self.e1)) - &(t2.mul_ref(&self.e2));
+                    let y = ::algebra_core::Ring::neg_ref(
+                        &((t0.mul_ref(&self.e123))
+                            + &((t1.mul_ref(&self.e1)) + &(t2.mul_ref(&self.e2)))),
+                    );
                     x.e3.add_ref(&y) + &y
                 },
             }
@@ -10484,23 +10550,25 @@ pub mod g3_vendored {
         /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
         #[inline]
         fn apply_unit(&self, x: &Vector<T>) -> Vector<T> {
-            let t0 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1));
-            let t1 = (self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1));
-            let t2 = (self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2));
+            let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
+            let t1 = ((self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1)));
+            let t2 = ((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2)));
             Vector {
                 e1: {
-                    let y = (t0.mul_ref(&self.e2)) + &(t1.mul_ref(&self.e3))
-                        + &(t2.mul_ref(&self.e123));
+                    let y = ((t0.mul_ref(&self.e2))
+                        + &((t1.mul_ref(&self.e3)) + &(t2.mul_ref(&self.e123))));
                     x.e1.add_ref(&y) + &y
                 },
                 e2: {
-                    let y = (t2.mul_ref(&self.e3)) - &(t1.mul_ref(&self.e123))
-                        - &(t0.mul_ref(&self.e1));
+                    let y = ::algebra_core::Ring::neg_ref(
+                        &((t0.mul_ref(&self.e1))
+                            + &((t1.mul_ref(&self.e123)) - &(t2.mul_ref(&self.e3)))),
+                    );
                     x.e2.add_ref(&y) + &y
                 },
                 e3: {
-                    let y = (t0.mul_ref(&self.e123)) - &(t1.mul_ref(&self.e1))
-                        - &(t2.mul_ref(&self.e2));
+                    let y = ((t0.mul_ref(&self.e123))
+                        - &((t1.mul_ref(&self.e1)) + &(t2.mul_ref(&self.e2))));
                     x.e3.add_ref(&y) + &y
                 },
             }
@@ -10510,25 +10578,26 @@ pub mod g3_vendored {
         /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
         #[inline]
         fn sandwich_unit(&self, x: &Rotor<T>) -> Rotor<T> {
-            let t0 = ::algebra_core::Ring::neg_ref(&(self.e2.mul_ref(&x.e12)))
-                - &(self.e3.mul_ref(&x.e13));
-            let t1 = (self.e1.mul_ref(&x.e12)) - &(self.e3.mul_ref(&x.e23));
-            let t2 = (self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23));
+            let t0 = ::algebra_core::Ring::neg_ref(
+                &((self.e2.mul_ref(&x.e12)) + &(self.e3.mul_ref(&x.e13))),
+            );
+            let t1 = ((self.e1.mul_ref(&x.e12)) - &(self.e3.mul_ref(&x.e23)));
+            let t2 = ((self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23)));
             Rotor {
                 scalar: ::core::clone::Clone::clone(&x.scalar),
                 e12: {
-                    let y = (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
-                        + &(t2.mul_ref(&self.e123));
+                    let y = ((t0.mul_ref(&self.e2))
+                        - &((t1.mul_ref(&self.e1)) - &(t2.mul_ref(&self.e123))));
                     x.e12.add_ref(&y) + &y
                 },
                 e13: {
-                    let y = (t0.mul_ref(&self.e3)) - &(t1.mul_ref(&self.e123))
-                        - &(t2.mul_ref(&self.e1));
+                    let y = ((t0.mul_ref(&self.e3))
+                        - &((t1.mul_ref(&self.e123)) + &(t2.mul_ref(&self.e1))));
                     x.e13.add_ref(&y) + &y
                 },
                 e23: {
-                    let y = (t0.mul_ref(&self.e123)) + &(t1.mul_ref(&self.e3))
-                        - &(t2.mul_ref(&self.e2));
+                    let y = ((t0.mul_ref(&self.e123))
+                        + &((t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e2))));
                     x.e23.add_ref(&y) + &y
                 },
             }
@@ -10536,25 +10605,28 @@ pub mod g3_vendored {
         /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
         #[inline]
         fn apply_unit(&self, x: &Rotor<T>) -> Rotor<T> {
-            let t0 = ::algebra_core::Ring::neg_ref(&(self.e2.mul_ref(&x.e12)))
-                - &(self.e3.mul_ref(&x.e13));
-            let t1 = (self.e1.mul_ref(&x.e12)) - &(self.e3.mul_ref(&x.e23));
-            let t2 = (self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23));
+            let t0 = ::algebra_core::Ring::neg_ref(
+                &((self.e2.mul_ref(&x.e12)) + &(self.e3.mul_ref(&x.e13))),
+            );
+            let t1 = ((self.e1.mul_ref(&x.e12)) - &(self.e3.mul_ref(&x.e23)));
+            let t2 = ((self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23)));
             Rotor {
                 scalar: ::core::clone::Clone::clone(&x.scalar),
                 e12: {
-                    let y = (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
-                        - &(t2.mul_ref(&self.e123));
+                    let y = ((t0.mul_ref(&self.e2))
+                        - &((t1.mul_ref(&self.e1)) + &(t2.mul_ref(&self.e123))));
                     x.e12.add_ref(&y) + &y
                 },
                 e13: {
-                    let y = (t0.mul_ref(&self.e3)) + &(t1.mul_ref(&self.e123))
-                        - &(t2.mul_ref(&self.e1));
+                    let y = ((t0.mul_ref(&self.e3))
+                        + &((t1.mul_ref(&self.e123)) - &(t2.mul_ref(&self.e1))));
                     x.e13.add_ref(&y) + &y
                 },
                 e23: {
-                    let y = (t1.mul_ref(&self.e3)) - &(t0.mul_ref(&self.e123))
-                        - &(t2.mul_ref(&self.e2));
+                    let y = ::algebra_core::Ring::neg_ref(
+                        &((t0.mul_ref(&self.e123))
+                            - &((t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e2)))),
+                    );
                     x.e23.add_ref(&y) + &y
                 },
             }
@@ -10564,23 +10636,27 @@ pub mod g3_vendored {
         /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
         #[inline]
         fn sandwich_unit(&self, x: &Odd<T>) -> Odd<T> {
-            let t0 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1));
-            let t1 = (self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1));
-            let t2 = (self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2));
+            let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
+            let t1 = ((self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1)));
+            let t2 = ((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2)));
             Odd {
                 e1: {
-                    let y = (t0.mul_ref(&self.e2)) + &(t1.mul_ref(&self.e3))
-                        - &(t2.mul_ref(&self.e123));
+                    let y = ((t0.mul_ref(&self.e2))
+                        + &((t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e123))));
                     x.e1.add_ref(&y) + &y
                 },
                 e2: {
-                    let y = (t1.mul_ref(&self.e123)) - &(t0.mul_ref(&self.e1))
-                        + &(t2.mul_ref(&self.e3));
+                    let y = ::algebra_core::Ring::neg_ref(
+                        &((t0.mul_ref(&self.e1))
+                            - &((t1.mul_ref(&self.e123)) + &(t2.mul_ref(&self.e3)))),
+                    );
                     x.e2.add_ref(&y) + &y
                 },
                 e3: {
-                    let y = ::algebra_core::Ring::neg_ref(&(t0.mul_ref(&self.e123)))
-                        - &(t1.mul_ref(&self.e1)) - &(t2.mul_ref(&self.e2));
+                    let y = ::algebra_core::Ring::neg_ref(
+                        &((t0.mul_ref(&self.e123))
+                            + &((t1.mul_ref(&self.e1)) + &(t2.mul_ref(&self.e2)))),
+                    );
                     x.e3.add_ref(&y) + &y
                 },
                 e123: ::core::clone::Clone::clone(&x.e123),
@@ -10589,23 +10665,25 @@ pub mod g3_vendored {
         /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
         #[inline]
         fn apply_unit(&self, x: &Odd<T>) -> Odd<T> {
-            let t0 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1));
-            let t1 = (self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1));
-            let t2 = (self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2));
+            let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
+            let t1 = ((self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1)));
+            let t2 = ((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2)));
             Odd {
                 e1: {
-                    let y = (t0.mul_ref(&self.e2)) + &(t1.mul_ref(&self.e3))
-                        + &(t2.mul_ref(&self.e123));
+                    let y = ((t0.mul_ref(&self.e2))
+                        + &((t1.mul_ref(&self.e3)) + &(t2.mul_ref(&self.e123))));
                     x.e1.add_ref(&y) + &y
                 },
                 e2: {
-                    let y = (t2.mul_ref(&self.e3)) - &(t1.mul_ref(&self.e123))
-                        - &(t0.mul_ref(&self.e1));
+                    let y = ::algebra_core::Ring::neg_ref(
+                        &((t0.mul_ref(&self.e1))
+                            + &((t1.mul_ref(&self.e123)) - &(t2.mul_ref(&self.e3)))),
+                    );
                     x.e2.add_ref(&y) + &y
                 },
                 e3: {
-                    let y = (t0.mul_ref(&self.e123)) - &(t1.mul_ref(&self.e1))
-                        - &(t2.mul_ref(&self.e2));
+                    let y = ((t0.mul_ref(&self.e123))
+                        - &((t1.mul_ref(&self.e1)) + &(t2.mul_ref(&self.e2))));
                     x.e3.add_ref(&y) + &y
                 },
                 e123: ::core::clone::Clone::clone(&x.e123),
