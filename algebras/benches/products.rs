@@ -89,6 +89,8 @@ struct Versor {
     pga_points32: Vec<pga3::Trivector<f32>>,
     pga_motors: Vec<pga3::Motor<f64>>,
     pga_units: Vec<pga3::Motor<f64>>,
+    cn_bivectors: Vec<cga_null::PoseBivector<f64>>,
+    cn_units: Vec<cga_null::Motor<f64>>,
     pga_points: Vec<pga3::Trivector<f64>>,
     motors: Vec<g123inf::Motor<f64>>,
     bivectors: Vec<g123inf::Bivector<f64>>,
@@ -155,6 +157,8 @@ fn versor_data() -> Versor {
         pga_points32: Vec::new(),
         pga_motors: Vec::new(),
         pga_units: Vec::new(),
+        cn_bivectors: Vec::new(),
+        cn_units: Vec::new(),
         pga_points: Vec::new(),
         motors: Vec::new(),
         bivectors: Vec::new(),
@@ -177,10 +181,15 @@ fn versor_data() -> Versor {
         d.motors.push(g123inf::Motor::from_array(c));
         let b = g123inf::Bivector::from_array([c[1], c[2], c[4], c[3], c[5], c[6]]);
         let unit = b.exp();
-        // the same unit motor in pga3 (einf -> e0: e_i einf = -e0i, e123inf = -e0123)
+        // the same unit motor in pga3 (einf -> e0: e_i einf = -e0i, e123inf = -e0123; pga3's
+        // field order is 1, e01, e02, e12, e03, e13, e23, e0123)
         let [s0, b12, b13, b23, t1, t2, t3, w] = unit.to_array();
-        d.pga_units.push(pga3::Motor::new(s0, -t1, -t2, -t3, b12, b13, b23, -w));
+        d.pga_units.push(pga3::Motor::new(s0, -t1, -t2, b12, -t3, b13, b23, -w));
         d.units.push(unit);
+        let mut nb = cga_null::PoseBivector::zero();
+        (nb.e12, nb.e13, nb.e23, nb.e1inf, nb.e2inf, nb.e3inf) = (c[1], c[2], c[3], c[4], c[5], c[6]);
+        d.cn_units.push(nb.exp());
+        d.cn_bivectors.push(nb);
         d.bivectors.push(b);
         let (r, t) = (Quaternion::new(c[0], c[1], c[2], c[3]), Quaternion::new(c[4], c[5], c[6], c[7]));
         d.dq.push(nalgebra::DualQuaternion::from_real_and_dual(r, t));
@@ -287,6 +296,18 @@ fn motor_log_unit(d: &Data, n: usize) {
     }
 }
 
+fn cn_exp(d: &Data, n: usize) {
+    for b in &d.versor.cn_bivectors[..n] {
+        black_box(black_box(b).exp());
+    }
+}
+
+fn cn_log_unit(d: &Data, n: usize) {
+    for m in &d.versor.cn_units[..n] {
+        black_box(black_box(m).log_unit().ok());
+    }
+}
+
 /// One pose, a batch of points.
 fn pga_batch(d: &Data, n: usize) {
     let s = black_box(&d.versor.pga_motors[0]);
@@ -387,7 +408,7 @@ fn interleaved_report() {
 }
 
 /// The versor-action, nalgebra and closed-form groups (docs/performance.md).
-const VERSOR_GROUPS: [(&str, &[(&str, Kernel)]); 5] = [
+const VERSOR_GROUPS: [(&str, &[(&str, Kernel)]); 6] = [
     (
         "conformal point (cga_null, f64)",
         &[
@@ -421,6 +442,14 @@ const VERSOR_GROUPS: [(&str, &[(&str, Kernel)]); 5] = [
             ("g123inf Bivector::exp", motor_exp),
             ("g123inf Motor::log (unit motors)", motor_log),
             ("g123inf Motor::log_unit", motor_log_unit),
+        ],
+    ),
+    (
+        "closed-form pose exp and log in G_{0123inf} (cga_null, f64)",
+        &[
+            ("cga_null Motor * Motor", cn_motor_product),
+            ("cga_null PoseBivector::exp", cn_exp),
+            ("cga_null Motor::log_unit", cn_log_unit),
         ],
     ),
     (
