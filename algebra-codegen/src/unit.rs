@@ -14,7 +14,7 @@
 //! are identities over any ring once `S rev(S) = 1` holds exactly; for a non-unit versor the
 //! result is not the action (use `apply`/`sandwich`).
 
-use super::emit::{Names, SumTerm, tree_sum as sum};
+use super::emit::{Names, tree_sum as sum};
 use super::plan::Ratio;
 use super::versor::{ActionKernel, Convention, action_kernel};
 use super::{CodegenError, ModuleSpec};
@@ -139,17 +139,7 @@ fn unit_items(names: &Names, sandwich: &UnitKernel, apply: &UnitKernel) -> Token
 fn unrolled_body(names: &Names, u: &UnitKernel) -> TokenStream {
     let k = &u.kernel;
     let (xt, vf, xf) = (&names.types[k.operand], &names.fields[k.versor], &names.fields[k.operand]);
-    let binds = k.stage1.iter().enumerate().map(|(i, terms)| {
-        let summands: Vec<SumTerm> = terms
-            .iter()
-            .map(|&(a, b, c)| {
-                let (fa, fb) = (&vf[a], &xf[b]);
-                (c, quote!((self.#fa.mul_ref(&x.#fb))), true)
-            })
-            .collect();
-        let (ti, e) = (format_ident!("t{}", i), sum(summands));
-        quote!(let #ti = #e;)
-    });
+    let binds = super::versor::stage1_binds(names, k);
     let outs = k.stage2.iter().zip(xf).map(|(terms, f)| {
         if terms.is_empty() {
             return quote!(::core::clone::Clone::clone(&x.#f));

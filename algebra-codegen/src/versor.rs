@@ -231,9 +231,9 @@ fn table_body(names: &Names, k: &ActionKernel) -> TokenStream {
     }
 }
 
-/// The two stages as straight-line code.
-fn unrolled_body(names: &Names, k: &ActionKernel) -> TokenStream {
-    let (xt, vf, xf) = (&names.types[k.operand], &names.fields[k.versor], &names.fields[k.operand]);
+/// The first stage as bindings `let t0 = ...;` (sums of `self` fields times `x` fields).
+pub(super) fn stage1_binds(names: &Names, k: &ActionKernel) -> Vec<TokenStream> {
+    let (vf, xf) = (&names.fields[k.versor], &names.fields[k.operand]);
     let mut binds = Vec::new();
     for (i, terms) in k.stage1.iter().enumerate() {
         let summands: Vec<SumTerm> = terms
@@ -247,6 +247,13 @@ fn unrolled_body(names: &Names, k: &ActionKernel) -> TokenStream {
         let e = sum(summands);
         binds.push(quote!(let #ti = #e;));
     }
+    binds
+}
+
+/// The two stages as straight-line code.
+fn unrolled_body(names: &Names, k: &ActionKernel) -> TokenStream {
+    let (xt, vf, xf) = (&names.types[k.operand], &names.fields[k.versor], &names.fields[k.operand]);
+    let binds = stage1_binds(names, k);
     let outs = k.stage2.iter().map(|terms| {
         sum(terms
             .iter()
