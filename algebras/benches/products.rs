@@ -22,7 +22,8 @@
 //!   on a trivector, and `apply_unit` on unit motors) vs `UnitDualQuaternion::transform_point` and
 //!   `Isometry3::transform_point`,
 //!   and a batch of points by one pose; closed-form `g123inf` `Bivector::exp` and `Motor::log`
-//!   relative to `Motor * Motor`.
+//!   relative to `Motor * Motor`, and `cga_null` `PoseBivector::exp` and `Motor::log_unit`
+//!   relative to the `cga_null` motor product.
 //!
 //! Run with `cargo bench -p gam-algebras --bench products`.
 #![allow(missing_docs)]
