@@ -40,6 +40,7 @@ pub mod plan;
 pub mod size;
 pub mod spec;
 pub mod standalone;
+pub mod unit;
 mod value;
 pub mod versor;
 

@@ -136,7 +136,9 @@ impl Plan {
         let full = match spec.types.iter().position(|t| t.elements.len() == alg.dim()) {
             Some(i) => i,
             None => {
-                super::fallback::add_parity_types(&mut spec)?;
+                if spec.parity_types {
+                    super::fallback::add_parity_types(&mut spec)?;
+                }
                 let name =
                     if spec.types.iter().any(|t| t.name == "Multivector") { "FullMultivector" } else { "Multivector" };
                 let mut t = TypeSpec::new(name, order.clone())?;
@@ -297,6 +299,16 @@ impl Plan {
                 mul,
                 add,
             });
+        }
+        // the unit-versor kernels (`apply_unit`, `sandwich_unit`; [`super::unit`])
+        for u in super::unit::plan_unit_actions(&self.spec, self.full).unwrap_or_default() {
+            let (mul, add) = u.counts();
+            let op = match u.kernel.convention {
+                super::versor::Convention::Sandwich => "sandwich_unit",
+                super::versor::Convention::Apply => "apply_unit",
+            };
+            let (v, x) = (u.kernel.versor, u.kernel.operand);
+            out.push(KernelStats { op: op.to_string(), lhs: name(v), rhs: Some(name(x)), out: name(x), mul, add });
         }
         out
     }

@@ -193,6 +193,10 @@ pub struct ModuleSpec {
     /// `#[cfg_attr(feature = "serde", ...)]` (the declaring crate then has a `serde` feature
     /// enabling its `serde` dependency).
     pub serde: bool,
+    /// Whether a module without the full multivector gets the automatic `Even`/`Odd` output
+    /// types ([`crate::fallback`]); `false` sends every product landing outside the declared
+    /// types to the full multivector (the DSL's `fallback full;`). Default `true`.
+    pub parity_types: bool,
 }
 
 impl ModuleSpec {
@@ -227,7 +231,15 @@ impl ModuleSpec {
                 }
             }
         }
-        Ok(ModuleSpec { name: name.to_string(), doc: Vec::new(), algebra, basis, types, serde: false })
+        Ok(ModuleSpec {
+            name: name.to_string(),
+            doc: Vec::new(),
+            algebra,
+            basis,
+            types,
+            serde: false,
+            parity_types: true,
+        })
     }
 
     /// Parses the `gam codegen --types` syntax: `Motor=1,e12,e13;Vector=grade1`.

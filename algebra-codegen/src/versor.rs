@@ -13,7 +13,7 @@
 //! Versor types are the declared types (other than the full multivector) whose basis elements
 //! all have the same parity; every other pair keeps the composed full product.
 
-use super::emit::{Names, SumTerm, sum};
+use super::emit::{Names, SumTerm, tree_sum as sum};
 use super::plan::{Ratio, to_ratio};
 use super::{CodegenError, ModuleSpec};
 use algebra_core::rational::Q;
@@ -96,6 +96,18 @@ pub fn plan_actions(spec: &ModuleSpec, full: usize) -> Result<Vec<ActionKernel>,
 }
 
 fn action(spec: &ModuleSpec, convention: Convention, v: usize, x: usize) -> Result<ActionKernel, CodegenError> {
+    action_kernel(spec, convention, v, x, false)
+}
+
+/// The two stages of an action; with `commutator`, stage 1 is `L(S) x - x L(S)` instead of
+/// `L(S) x` (the unit-versor form of [`super::unit`]).
+pub(super) fn action_kernel(
+    spec: &ModuleSpec,
+    convention: Convention,
+    v: usize,
+    x: usize,
+    commutator: bool,
+) -> Result<ActionKernel, CodegenError> {
     let tables = spec.algebra.tables();
     let gp = tables.product(spec.basis, Product::Geometric);
     let rev = tables.unary(spec.basis, Unary::Reverse);
@@ -119,6 +131,11 @@ fn action(spec: &ModuleSpec, convention: Convention, v: usize, x: usize) -> Resu
             for (b, &mb) in xm.iter().enumerate() {
                 for (k, c) in gp.get(m, mb).expect("a mask of the spec's algebra") {
                     *t.entry(*k).or_default().entry((a, b)).or_insert_with(Q::zero) += &r * c;
+                }
+                if commutator {
+                    for (k, c) in gp.get(mb, m) {
+                        *t.entry(*k).or_default().entry((a, b)).or_insert_with(Q::zero) -= &r * c;
+                    }
                 }
             }
         }
@@ -218,9 +235,9 @@ fn table_body(names: &Names, k: &ActionKernel) -> TokenStream {
     }
 }
 
-/// The two stages as straight-line code.
-fn unrolled_body(names: &Names, k: &ActionKernel) -> TokenStream {
-    let (xt, vf, xf) = (&names.types[k.operand], &names.fields[k.versor], &names.fields[k.operand]);
+/// The first stage as bindings `let t0 = ...;` (sums of `self` fields times `x` fields).
+pub(super) fn stage1_binds(names: &Names, k: &ActionKernel) -> Vec<TokenStream> {
+    let (vf, xf) = (&names.fields[k.versor], &names.fields[k.operand]);
     let mut binds = Vec::new();
     for (i, terms) in k.stage1.iter().enumerate() {
         let summands: Vec<SumTerm> = terms
@@ -234,6 +251,13 @@ fn unrolled_body(names: &Names, k: &ActionKernel) -> TokenStream {
         let e = sum(summands);
         binds.push(quote!(let #ti = #e;));
     }
+    binds
+}
+
+/// The two stages as straight-line code.
+fn unrolled_body(names: &Names, k: &ActionKernel) -> TokenStream {
+    let (xt, vf, xf) = (&names.types[k.operand], &names.fields[k.versor], &names.fields[k.operand]);
+    let binds = stage1_binds(names, k);
     let outs = k.stage2.iter().map(|terms| {
         sum(terms
             .iter()

@@ -116,3 +116,16 @@ pub trait ActionMatrix<X> {
     /// The matrix applied to `x` (skipping entries that are structurally zero).
     fn transform(m: &Self::Matrix, x: &X) -> X;
 }
+
+/// The versor action for *unit* versors (`S rev(S) = 1`), typed and fused as [`Apply`] and
+/// [`Sandwich`] but cheaper: since `x S rev(S) = x`, the action is `x + (S x - x S) rev(S)`,
+/// and the commutator drops every part of `S` that commutes with `x`. Exact over any ring when
+/// `S rev(S) = 1` holds exactly; for other versors the result is not the action. Generated for
+/// every pair with a fused kernel (`apply_unit`/`sandwich_unit`; an example is in `gam_algebras`'
+/// crate docs).
+pub trait UnitAction<X> {
+    /// `rev(self) x self` ([`Sandwich`]) for a unit `self`.
+    fn sandwich_unit(&self, x: &X) -> X;
+    /// `self x rev(self)` ([`Apply`]) for a unit `self`.
+    fn apply_unit(&self, x: &X) -> X;
+}

@@ -23,6 +23,9 @@
 //! - `metric { (a, b) = v, ... }`: the symmetric bilinear form; unlisted pairs are 0; `v` is an
 //!   integer or a ratio `p/q`, optionally negative. Alternatively `metric builtin "cga-null";`.
 //! - `basis blade;` (default) or `basis product;`: what the type fields' names mean.
+//! - `fallback parity;` (default) or `fallback full;`: when no type is the full multivector,
+//!   a result outside every declared type lands in an automatic `Even`/`Odd` type if it has one
+//!   parity (`parity`), or always in the full multivector (`full`: no automatic types).
 //! - `types { Name = selector; ... }` with selectors `grade K`, `even`, `odd`, `all`, or a
 //!   list `[1, e12, ...]`; doc comments on types are kept.
 //! - optionally, before the module, `crate PATH;`: where the generated code finds the engine
@@ -75,6 +78,7 @@ struct Decl {
     basis: Basis,
     types: Vec<TypeDecl>,
     serde: bool,
+    parity_types: bool,
 }
 
 fn parse_value(input: ParseStream) -> syn::Result<Q> {
@@ -112,7 +116,7 @@ impl Parse for Decl {
         let body;
         braced!(body in input);
         let (mut generators, mut metric, mut basis, mut types) = (None, None, Basis::Blade, None);
-        let mut serde = false;
+        let (mut serde, mut parity_types) = (false, true);
         let mut metric_span = proc_macro2::Span::call_site();
         while !body.is_empty() {
             let key: Ident = body.parse()?;
@@ -160,6 +164,15 @@ impl Parse for Decl {
                         return Err(syn::Error::new(d.span(), "expected `serde` (the only optional derive)"));
                     }
                     serde = true;
+                    body.parse::<Token![;]>()?;
+                }
+                "fallback" => {
+                    let f: Ident = body.parse()?;
+                    parity_types = match f.to_string().as_str() {
+                        "parity" => true,
+                        "full" => false,
+                        _ => return Err(syn::Error::new(f.span(), "expected `parity` or `full`")),
+                    };
                     body.parse::<Token![;]>()?;
                 }
                 "basis" => {
@@ -215,7 +228,9 @@ impl Parse for Decl {
                 other => {
                     return Err(syn::Error::new(
                         key.span(),
-                        format!("unknown section `{other}` (expected generators, metric, basis, derive or types)"),
+                        format!(
+                            "unknown section `{other}` (expected generators, metric, basis, fallback, derive or types)"
+                        ),
                     ));
                 }
             }
@@ -231,7 +246,7 @@ impl Parse for Decl {
             (MetricDecl::Builtin(_), None) => Vec::new(),
             (MetricDecl::Pairs(_), None) => return Err(missing("generators")),
         };
-        Ok(Decl { engine, attrs, vis, name, generators, metric, metric_span, basis, types, serde })
+        Ok(Decl { engine, attrs, vis, name, generators, metric, metric_span, basis, types, serde, parity_types })
     }
 }
 
@@ -311,6 +326,7 @@ fn expand(decl: Decl) -> syn::Result<proc_macro2::TokenStream> {
         syn::Error::new(span, e)
     })?;
     spec.serde = decl.serde;
+    spec.parity_types = decl.parity_types;
     let plan = Plan::new(spec).map_err(|e| syn::Error::new(decl.name.span(), e))?;
     let mut items = algebra_codegen::emit::module_items(&plan);
     if let Some(engine) = &decl.engine {

@@ -19,9 +19,11 @@
 //!   and the composed `(rev(S) x) S` relative to `cga_null` `Motor * Motor`; `pga3` `apply` on a
 //!   trivector point at f32 relative to the f32 motor product; against nalgebra (f64):
 //!   `g123inf` `Motor * Motor` vs `DualQuaternion *`, a pose applied to a point (`pga3` `apply`
-//!   on a trivector) vs `UnitDualQuaternion::transform_point` and `Isometry3::transform_point`,
+//!   on a trivector, and `apply_unit` on unit motors) vs `UnitDualQuaternion::transform_point` and
+//!   `Isometry3::transform_point`,
 //!   and a batch of points by one pose; closed-form `g123inf` `Bivector::exp` and `Motor::log`
-//!   relative to `Motor * Motor`.
+//!   relative to `Motor * Motor`, and `cga_null` `PoseBivector::exp` and `Motor::log_unit`
+//!   relative to the `cga_null` motor product.
 //!
 //! Run with `cargo bench -p gam-algebras --bench products`.
 #![allow(missing_docs)]
@@ -77,6 +79,9 @@ struct Versor {
     pga_motors32: Vec<pga3::Motor<f32>>,
     pga_points32: Vec<pga3::Trivector<f32>>,
     pga_motors: Vec<pga3::Motor<f64>>,
+    pga_units: Vec<pga3::Motor<f64>>,
+    cn_bivectors: Vec<cga_null::PoseBivector<f64>>,
+    cn_units: Vec<cga_null::Motor<f64>>,
     pga_points: Vec<pga3::Trivector<f64>>,
     motors: Vec<g123inf::Motor<f64>>,
     bivectors: Vec<g123inf::Bivector<f64>>,
@@ -142,6 +147,9 @@ fn versor_data() -> Versor {
         pga_motors32: Vec::new(),
         pga_points32: Vec::new(),
         pga_motors: Vec::new(),
+        pga_units: Vec::new(),
+        cn_bivectors: Vec::new(),
+        cn_units: Vec::new(),
         pga_points: Vec::new(),
         motors: Vec::new(),
         bivectors: Vec::new(),
@@ -163,7 +171,16 @@ fn versor_data() -> Versor {
         d.pga_points32.push(pga3::Trivector::new(p[0] as f32, p[1] as f32, p[2] as f32, 1.0));
         d.motors.push(g123inf::Motor::from_array(c));
         let b = g123inf::Bivector::from_array([c[1], c[2], c[4], c[3], c[5], c[6]]);
-        d.units.push(b.exp());
+        let unit = b.exp();
+        // the same unit motor in pga3 (einf -> e0: e_i einf = -e0i, e123inf = -e0123; pga3's
+        // field order is 1, e01, e02, e12, e03, e13, e23, e0123)
+        let [s0, b12, b13, b23, t1, t2, t3, w] = unit.to_array();
+        d.pga_units.push(pga3::Motor::new(s0, -t1, -t2, b12, -t3, b13, b23, -w));
+        d.units.push(unit);
+        let mut nb = cga_null::PoseBivector::zero();
+        (nb.e12, nb.e13, nb.e23, nb.e1inf, nb.e2inf, nb.e3inf) = (c[1], c[2], c[3], c[4], c[5], c[6]);
+        d.cn_units.push(nb.exp());
+        d.cn_bivectors.push(nb);
         d.bivectors.push(b);
         let (r, t) = (Quaternion::new(c[0], c[1], c[2], c[3]), Quaternion::new(c[4], c[5], c[6], c[7]));
         d.dq.push(nalgebra::DualQuaternion::from_real_and_dual(r, t));
@@ -173,6 +190,9 @@ fn versor_data() -> Versor {
         d.iso.push(Isometry3::from_parts(tr, rot));
         d.points.push(Point3::from(Vector3::new(p[0], p[1], p[2])));
     }
+    // sanity: the unit kernel agrees with the general one on the unit motors
+    let (u, p) = (&d.pga_units[0], &d.pga_points[0]);
+    assert!(u.apply_unit(p).iter().zip(u.apply(p).iter()).all(|(a, b)| (a - b).abs() < 1e-12));
     // sanity: the fused action is the projected composed one
     let (s, x) = (&d.cn_motors[0], &d.cn_points[0]);
     let composed = cga_null::Vector::project(&((s.reverse() * x) * s).to_multivector());
@@ -245,6 +265,7 @@ pairs!(pga32_apply_point, pga_motors32, pga_points32, |s, p| s.apply(p));
 pairs!(g123_motor_product, motors, motors, |x, y| x * y);
 pairs!(na_dq_product, dq, dq, |x, y| *x * *y);
 pairs!(pga_apply_point, pga_motors, pga_points, |s, p| s.apply(p));
+pairs!(pga_apply_unit_point, pga_units, pga_points, |s, p| s.apply_unit(p));
 pairs!(na_unit_dq_point, unit_dq, points, |s, p| s.transform_point(p));
 pairs!(na_iso_point, iso, points, |s, p| s.transform_point(p));
 
@@ -262,6 +283,18 @@ fn motor_log(d: &Data, n: usize) {
 
 fn motor_log_unit(d: &Data, n: usize) {
     for m in &d.versor.units[..n] {
+        black_box(black_box(m).log_unit().ok());
+    }
+}
+
+fn cn_exp(d: &Data, n: usize) {
+    for b in &d.versor.cn_bivectors[..n] {
+        black_box(black_box(b).exp());
+    }
+}
+
+fn cn_log_unit(d: &Data, n: usize) {
+    for m in &d.versor.cn_units[..n] {
         black_box(black_box(m).log_unit().ok());
     }
 }
@@ -366,7 +399,7 @@ fn interleaved_report() {
 }
 
 /// The versor-action, nalgebra and closed-form groups (docs/performance.md).
-const VERSOR_GROUPS: [(&str, &[(&str, Kernel)]); 5] = [
+const VERSOR_GROUPS: [(&str, &[(&str, Kernel)]); 6] = [
     (
         "conformal point (cga_null, f64)",
         &[
@@ -389,6 +422,7 @@ const VERSOR_GROUPS: [(&str, &[(&str, Kernel)]); 5] = [
             ("g123inf Motor * Motor", g123_motor_product),
             ("nalgebra UnitDualQuaternion::transform_point", na_unit_dq_point),
             ("pga3 Motor.apply(Trivector point)", pga_apply_point),
+            ("pga3 Motor.apply_unit(Trivector point)", pga_apply_unit_point),
             ("nalgebra Isometry3::transform_point", na_iso_point),
         ],
     ),
@@ -399,6 +433,14 @@ const VERSOR_GROUPS: [(&str, &[(&str, Kernel)]); 5] = [
             ("g123inf Bivector::exp", motor_exp),
             ("g123inf Motor::log (unit motors)", motor_log),
             ("g123inf Motor::log_unit", motor_log_unit),
+        ],
+    ),
+    (
+        "closed-form pose exp and log in G_{0123inf} (cga_null, f64)",
+        &[
+            ("cga_null Motor * Motor", cn_motor_product),
+            ("cga_null PoseBivector::exp", cn_exp),
+            ("cga_null Motor::log_unit", cn_log_unit),
         ],
     ),
     (

@@ -1,6 +1,8 @@
-//! Closed-form `exp`, `log`, `normalize`, `sqrt` and `pow` on the motors of the two predefined
-//! algebras whose even subalgebra is the dual quaternions: the main paper's `G_{123inf}`
-//! ([`crate::g123inf`], Appendix 2) and PGA `R^{3,0,1}` ([`crate::pga3`]).
+//! Closed-form `exp`, `log`, `normalize`, `sqrt` and `pow` on the motors of the predefined
+//! algebras whose motors are the dual quaternions: the main paper's `G_{123inf}`
+//! ([`crate::g123inf`], Appendix 2), PGA `R^{3,0,1}` ([`crate::pga3`]) and the poses
+//! `G_{123inf}^+` inside the main paper's `G_{0123inf}` ([`crate::cga_null`]: `Motor` and
+//! `PoseBivector`).
 //!
 //! Hand-written (not emitted), because the closed form depends on the algebra's structure, not
 //! only on its tables: in both algebras a bivector `B` squares to a *dual number*
@@ -94,8 +96,8 @@ fn check_finite<'a, T: Real + 'a>(
 /// fields `e12, e13, e23` and the ideal ones `$i1, $i2, $i3` with `I e23 = -$i1`,
 /// `I e13 = $i2`, `I e12 = -$i3` (the same pattern in both algebras).
 macro_rules! closed_form {
-    ($m:ident, $ps:ident, [$i1:ident, $i2:ident, $i3:ident]) => {
-        impl<T: Real> crate::$m::Bivector<T> {
+    ($m:ident, $b:ident, $proj:ident, $ps:ident, [$i1:ident, $i2:ident, $i3:ident]) => {
+        impl<T: Real> crate::$m::$b<T> {
             /// `I self` (only the Euclidean part contributes, since `I² = 0`).
             fn i_times(&self) -> Self {
                 let mut out = Self::zero();
@@ -155,7 +157,7 @@ macro_rules! closed_form {
                 // 1/sqrt(α + βI) = u + w I with u = 1/√α, w = -β/(2α√α)
                 let u = T::one() / alpha.sqrt();
                 let w = -(half_beta * u.clone()) / alpha;
-                let b = self.project_to_bivector();
+                let b = self.$proj();
                 let ib = b.i_times();
                 let mut out = self.scale(&u);
                 out.$ps = out.$ps.clone() + self.scalar.mul_ref(&w);
@@ -168,7 +170,7 @@ macro_rules! closed_form {
             /// The logarithm of `normalize(self)` in closed form: the bivector `B` with
             /// `exp(B) = normalize(self)` and rotation half-angle `θ ∈ [0, π)`. Fails when
             /// `normalize` does, and for a rotation by a full turn (`θ = π`, no unique axis).
-            pub fn log(&self) -> Result<crate::$m::Bivector<T>, MvError> {
+            pub fn log(&self) -> Result<crate::$m::$b<T>, MvError> {
                 self.normalize()?.log_unit()
             }
 
@@ -177,7 +179,7 @@ macro_rules! closed_form {
             /// normalisation (one square root, a division and 24 multiplications fewer). For a
             /// motor that is not unit the result is not a logarithm of anything; use
             /// [`Self::log`]. Fails for a full turn.
-            pub fn log_unit(&self) -> Result<crate::$m::Bivector<T>, MvError> {
+            pub fn log_unit(&self) -> Result<crate::$m::$b<T>, MvError> {
                 check_finite("log", self, self.iter())?;
                 let n = self;
                 let sin = (n.e12.mul_ref(&n.e12) + n.e13.mul_ref(&n.e13) + n.e23.mul_ref(&n.e23)).sqrt();
@@ -185,7 +187,7 @@ macro_rules! closed_form {
                     return Err(undefined("log", self.to_string(), "a full turn has no unique rotation axis"));
                 }
                 let (sinc, k) = log_factors(&sin, &n.scalar);
-                let b = n.project_to_bivector();
+                let b = n.$proj();
                 let inv = T::one() / sinc;
                 let ib = b.i_times().scale(&(n.$ps.mul_ref(&k) * inv.clone() * inv.clone()));
                 Ok(b.scale(&inv) + ib)
@@ -206,5 +208,8 @@ macro_rules! closed_form {
     };
 }
 
-closed_form!(g123inf, e123inf, [e1inf, e2inf, e3inf]);
-closed_form!(pga3, e0123, [e01, e02, e03]);
+closed_form!(g123inf, Bivector, project_to_bivector, e123inf, [e1inf, e2inf, e3inf]);
+closed_form!(pga3, Bivector, project_to_bivector, e0123, [e01, e02, e03]);
+// the poses inside the main paper's G_{0123inf}: the same subalgebra, product basis elements of
+// orthogonal generators (so the same coefficients as g123inf's blades)
+closed_form!(cga_null, PoseBivector, project_to_pose_bivector, e123inf, [e1inf, e2inf, e3inf]);

@@ -99,6 +99,9 @@ algebra! {
             Vector = grade 1;
             /// Poses of G_{123inf}^+ inside G_{0123inf}.
             Motor = [1, e12, e13, e23, e1inf, e2inf, e3inf, e123inf];
+            /// The bivectors of the poses, `Omega e123 + u einf` (the Lie algebra of `Motor`:
+            /// `PoseBivector::exp` is a `Motor`, `Motor::log` a `PoseBivector`).
+            PoseBivector = [e12, e13, e23, e1inf, e2inf, e3inf];
             /// Every element.
             Multivector = all;
         }

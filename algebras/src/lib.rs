@@ -45,6 +45,27 @@
 //! assert_eq!(core::mem::size_of::<Motor<f32>>(), 8 * 4); // repr(C): the 8 coefficients
 //! ```
 
+//!
+//! # Unit versors
+//!
+//! `apply_unit` / `sandwich_unit` (the `UnitAction` trait) compute the action of a *unit*
+//! versor (`m rev(m) = 1`) with fewer operations than `apply` / `sandwich`, exactly over any
+//! scalar as long as the versor is exactly unit:
+//!
+//! ```
+//! use gam_algebras::pga3::{Motor, Trivector};
+//! // a rotation by 90 degrees in the e12 plane, then a translation: a unit motor
+//! let h = 0.5f64.sqrt();
+//! let mut r = Motor::<f64>::zero();
+//! (r.scalar, r.e12) = (h, h);
+//! let mut t = Motor::<f64>::one();
+//! (t.e01, t.e02, t.e03) = (0.5, -1.0, 0.25);
+//! let (m, p) = (t * r, Trivector::new(1.0, 2.0, 3.0, 1.0));
+//! let (fast, general) = (m.apply_unit(&p), m.apply(&p));
+//! assert!(fast.iter().zip(general.iter()).all(|(a, b)| (a - b).abs() < 1e-12));
+//! assert_eq!(fast.e123, 1.0); // the weight is copied, not recomputed
+//! ```
+
 pub mod generated;
 
 pub use generated::{cga, cga_null, g3, g123inf, pga3};

@@ -1,4 +1,5 @@
-//! The closed-form motor `exp`, `log`, `normalize`, `sqrt`, `pow` of `g123inf` and `pga3`
+//! The closed-form motor `exp`, `log`, `normalize`, `sqrt`, `pow` of `g123inf`, `pga3` and
+//! `cga_null` (its `Motor` and `PoseBivector`)
 //! against the runtime series (`algebra_core::Multivector::exp`/`log`, an independent
 //! algorithm), over random bivectors including the small-angle series branch.
 
@@ -23,10 +24,10 @@ fn coeffs() -> impl Strategy<Value = [f64; 6]> {
 }
 
 macro_rules! closed_form_tests {
-    ($m:ident, $ps:ident, [$i1:ident, $i2:ident, $i3:ident]) => {
+    ($m:ident, $b:ident, $ps:ident, [$i1:ident, $i2:ident, $i3:ident]) => {
         mod $m {
             use super::*;
-            use gam_algebras::$m::{Bivector, Motor};
+            use gam_algebras::$m::{$b as Bivector, Motor};
 
             fn bivector(c: [f64; 6]) -> Bivector<f64> {
                 let mut b = Bivector::zero();
@@ -97,5 +98,6 @@ macro_rules! closed_form_tests {
     };
 }
 
-closed_form_tests!(g123inf, e123inf, [e1inf, e2inf, e3inf]);
-closed_form_tests!(pga3, e0123, [e01, e02, e03]);
+closed_form_tests!(g123inf, Bivector, e123inf, [e1inf, e2inf, e3inf]);
+closed_form_tests!(pga3, Bivector, e0123, [e01, e02, e03]);
+closed_form_tests!(cga_null, PoseBivector, e123inf, [e1inf, e2inf, e3inf]);

@@ -225,3 +225,35 @@ mod fallback {
         }
     }
 }
+
+algebra_macros::algebra! {
+    /// The same user module with the automatic parity types turned off.
+    pub mod pga_user_full {
+        metric builtin "pga3";
+        fallback full;
+        types {
+            /// Planes.
+            Plane = grade 1;
+            /// Points.
+            Point = grade 3;
+        }
+    }
+}
+
+mod fallback_full {
+    use super::pga_user_full::{Multivector, Plane, Point};
+    use super::*;
+
+    /// With `fallback full;` the module declares no `Even`/`Odd`: products of planes and
+    /// points land in the full multivector (checked by the annotated types).
+    #[test]
+    fn products_land_in_the_full_multivector() {
+        let (mut p, mut x) = (Plane::<Q>::zero(), Point::<Q>::zero());
+        (p.e1, p.e0, x.e123, x.e012) = (q(2), q(-1), q(1), ratio(1, 3));
+        let m: Multivector<Q> = &p * &x;
+        assert_eq!(m.to_multivector(), p.to_multivector() * x.to_multivector());
+        let j: Multivector<Q> = &p & &x;
+        assert_eq!(j.to_multivector(), p.to_multivector().regressive(&x.to_multivector()));
+        assert_eq!(Multivector::<Q>::LEN, 16);
+    }
+}

@@ -474,8 +474,8 @@ module_tests!(
 module_tests!(
     cga_null,
     ones [Motor, Multivector],
-    actions [(Vector, vector), (Motor, motor)],
-    types [(Vector, vector), (Motor, motor), (Multivector, multivector)]
+    actions [(Vector, vector), (Motor, motor), (PoseBivector, pose_bivector)],
+    types [(Vector, vector), (Motor, motor), (PoseBivector, pose_bivector), (Multivector, multivector)]
 );
 
 /// Every declared type of every module is covered above (a type added to `generated.rs` must
@@ -488,7 +488,7 @@ fn every_declared_type_is_listed() {
         ("g123inf", &["Vector", "Bivector", "Pseudoscalar", "Motor", "Multivector"]),
         ("pga3", &["Vector", "Bivector", "Trivector", "Motor", "Multivector"]),
         ("cga", &["Vector", "Bivector", "Motor", "OddVersor", "Multivector"]),
-        ("cga_null", &["Vector", "Motor", "Multivector"]),
+        ("cga_null", &["Vector", "Motor", "PoseBivector", "Multivector"]),
     ];
     let source = include_str!("../src/generated.rs");
     for (module, types) in listed {

@@ -115,6 +115,10 @@ enum Command {
         /// kernels reduced modulo the constraints (the vanishing outputs proven and dropped).
         #[arg(long, value_name = "TYPE=KIND")]
         constrain: Vec<String>,
+        /// Where a result outside every declared type lands when no type is the full
+        /// multivector: parity (automatic Even/Odd types) or full (the full multivector).
+        #[arg(long, value_enum, value_name = "KIND", default_value = "parity")]
+        fallback: codegen::Fallback,
     },
     /// Control poses of a motion segment from its end conditions (Secs. 4-5 of the main paper).
     Hermite {
@@ -215,8 +219,10 @@ fn run(command: Command) -> Result<(String, Option<CliError>), CliError> {
             commands::eval(&commands::EvalArgs { algebra, basis, scalar, json, expr })
         }
         Command::Table { algebra, basis, product, json } => commands::table(&algebra, basis, product, json),
-        Command::Codegen { algebra, types, basis, emit, module, json, standalone, constrain } => {
-            codegen::codegen(&codegen::CodegenArgs { algebra, types, basis, emit, module, json, standalone, constrain })
+        Command::Codegen { algebra, types, basis, emit, module, json, standalone, constrain, fallback } => {
+            let args =
+                codegen::CodegenArgs { algebra, types, basis, emit, module, json, standalone, constrain, fallback };
+            codegen::codegen(&args)
         }
         Command::Hermite { json, spec } => hermite::hermite(&spec, json),
         Command::Interpolate { json, spec } => interpolate::interpolate(&spec, json),

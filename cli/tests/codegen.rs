@@ -105,3 +105,27 @@ fn constrained_unit_motor_on_a_point_is_a_point_with_fewer_multiplications() {
         assert!(err.starts_with("error: --constrain") && err.lines().count() == 1, "{err}");
     }
 }
+
+#[test]
+fn fallback_full_turns_the_parity_types_off() {
+    let out_of = |extra: &[&str]| {
+        let mut args = vec!["codegen", "--algebra", "pga3", "--types", "Plane=grade1;Point=grade3", "--emit", "stats"];
+        args.extend_from_slice(extra);
+        args.push("--json");
+        let out = gam(&args);
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        let rows: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        let row =
+            rows.as_array().unwrap().iter().find(|s| s["op"] == "gp" && s["lhs"] == "Plane" && s["rhs"] == "Point");
+        row.unwrap()["out"].as_str().unwrap().to_string()
+    };
+    assert_eq!(out_of(&[]), "Even");
+    assert_eq!(out_of(&["--fallback", "parity"]), "Even");
+    assert_eq!(out_of(&["--fallback", "full"]), "Multivector");
+    // the regeneration command in the header keeps the switch
+    let out = gam(&["codegen", "--algebra", "pga3", "--types", "Point=grade3", "--fallback", "full"]);
+    let source = String::from_utf8(out.stdout).unwrap();
+    assert!(source.contains("--fallback full") && !source.contains("pub struct Even"));
+    let bad = gam(&["codegen", "--algebra", "pga3", "--types", "Point=grade3", "--fallback", "odd"]);
+    assert!(!bad.status.success());
+}

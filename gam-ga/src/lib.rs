@@ -46,7 +46,7 @@
 
 pub use algebra_core::ops::{
     ActionMatrix, AnticommutatorProduct, CommutatorProduct, GeometricProduct, GeometricProductInto, LeftContraction,
-    OuterProduct, RegressiveProduct, RightContraction, ScalarProduct,
+    OuterProduct, RegressiveProduct, RightContraction, ScalarProduct, UnitAction,
 };
 pub use algebra_core::{
     Algebra, Basis, BasisError, Field, Jet, Metric, MetricError, Multivector, MvError, Product, Real, Ring, Unary, ops,

@@ -7,6 +7,7 @@ pub mod g3_vendored {
         GeometricProductInto, LeftContraction, OuterProduct, RegressiveProduct,
         RightContraction, Sandwich, ScalarProduct,
     };
+    pub use ::algebra_core::ops::UnitAction;
     pub use ::algebra_core::{Field, Ring};
     /// The basis the types' fields refer to.
     pub const BASIS: ::algebra_core::Basis = ::algebra_core::Basis::Blade;
@@ -141,6 +142,21 @@ pub mod g3_vendored {
             Self: ::algebra_core::ops::Apply<X>,
         {
             ::algebra_core::ops::Apply::apply(self, x)
+        }
+        /// `self x rev(self)` for a unit versor (`self rev(self) = 1`), cheaper than
+        /// [`Self::apply`]: `x + (self x - x self) rev(self)`. Not the action otherwise.
+        pub fn apply_unit<X>(&self, x: &X) -> X
+        where
+            Self: ::algebra_core::ops::UnitAction<X>,
+        {
+            ::algebra_core::ops::UnitAction::apply_unit(self, x)
+        }
+        /// `rev(self) x self` for a unit versor, as `x + (rev(self) x - x rev(self)) self`.
+        pub fn sandwich_unit<X>(&self, x: &X) -> X
+        where
+            Self: ::algebra_core::ops::UnitAction<X>,
+        {
+            ::algebra_core::ops::UnitAction::sandwich_unit(self, x)
         }
         /// The matrix of the action `x ↦ self x rev(self)` on `X` (see `ActionMatrix`):
         /// `let m = motor.apply_matrix::<Point<f64>>();` then `Motor::transform(&m, &p)`
@@ -717,6 +733,21 @@ pub mod g3_vendored {
             Self: ::algebra_core::ops::Apply<X>,
         {
             ::algebra_core::ops::Apply::apply(self, x)
+        }
+        /// `self x rev(self)` for a unit versor (`self rev(self) = 1`), cheaper than
+        /// [`Self::apply`]: `x + (self x - x self) rev(self)`. Not the action otherwise.
+        pub fn apply_unit<X>(&self, x: &X) -> X
+        where
+            Self: ::algebra_core::ops::UnitAction<X>,
+        {
+            ::algebra_core::ops::UnitAction::apply_unit(self, x)
+        }
+        /// `rev(self) x self` for a unit versor, as `x + (rev(self) x - x rev(self)) self`.
+        pub fn sandwich_unit<X>(&self, x: &X) -> X
+        where
+            Self: ::algebra_core::ops::UnitAction<X>,
+        {
+            ::algebra_core::ops::UnitAction::sandwich_unit(self, x)
         }
         /// The matrix of the action `x ↦ self x rev(self)` on `X` (see `ActionMatrix`):
         /// `let m = motor.apply_matrix::<Point<f64>>();` then `Motor::transform(&m, &p)`
@@ -1347,6 +1378,21 @@ pub mod g3_vendored {
             Self: ::algebra_core::ops::Apply<X>,
         {
             ::algebra_core::ops::Apply::apply(self, x)
+        }
+        /// `self x rev(self)` for a unit versor (`self rev(self) = 1`), cheaper than
+        /// [`Self::apply`]: `x + (self x - x self) rev(self)`. Not the action otherwise.
+        pub fn apply_unit<X>(&self, x: &X) -> X
+        where
+            Self: ::algebra_core::ops::UnitAction<X>,
+        {
+            ::algebra_core::ops::UnitAction::apply_unit(self, x)
+        }
+        /// `rev(self) x self` for a unit versor, as `x + (rev(self) x - x rev(self)) self`.
+        pub fn sandwich_unit<X>(&self, x: &X) -> X
+        where
+            Self: ::algebra_core::ops::UnitAction<X>,
+        {
+            ::algebra_core::ops::UnitAction::sandwich_unit(self, x)
         }
         /// The matrix of the action `x ↦ self x rev(self)` on `X` (see `ActionMatrix`):
         /// `let m = motor.apply_matrix::<Point<f64>>();` then `Motor::transform(&m, &p)`
@@ -2026,6 +2072,21 @@ pub mod g3_vendored {
             Self: ::algebra_core::ops::Apply<X>,
         {
             ::algebra_core::ops::Apply::apply(self, x)
+        }
+        /// `self x rev(self)` for a unit versor (`self rev(self) = 1`), cheaper than
+        /// [`Self::apply`]: `x + (self x - x self) rev(self)`. Not the action otherwise.
+        pub fn apply_unit<X>(&self, x: &X) -> X
+        where
+            Self: ::algebra_core::ops::UnitAction<X>,
+        {
+            ::algebra_core::ops::UnitAction::apply_unit(self, x)
+        }
+        /// `rev(self) x self` for a unit versor, as `x + (rev(self) x - x rev(self)) self`.
+        pub fn sandwich_unit<X>(&self, x: &X) -> X
+        where
+            Self: ::algebra_core::ops::UnitAction<X>,
+        {
+            ::algebra_core::ops::UnitAction::sandwich_unit(self, x)
         }
         /// The matrix of the action `x ↦ self x rev(self)` on `X` (see `ActionMatrix`):
         /// `let m = motor.apply_matrix::<Point<f64>>();` then `Motor::transform(&m, &p)`
@@ -8792,18 +8853,18 @@ pub mod g3_vendored {
         ///`rev(self) x self` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
         #[inline]
         fn sandwich(&self, x: &Vector<T>) -> Vector<T> {
-            let t0 = (self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2))
-                + &(self.e3.mul_ref(&x.e3));
-            let t1 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1));
-            let t2 = (self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1));
-            let t3 = (self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2));
+            let t0 = ((self.e1.mul_ref(&x.e1))
+                + &((self.e2.mul_ref(&x.e2)) + &(self.e3.mul_ref(&x.e3))));
+            let t1 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
+            let t2 = ((self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1)));
+            let t3 = ((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2)));
             Vector {
-                e1: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
-                    + &(t2.mul_ref(&self.e3)),
-                e2: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
-                    + &(t3.mul_ref(&self.e3)),
-                e3: (t0.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e1))
-                    - &(t3.mul_ref(&self.e2)),
+                e1: ((t0.mul_ref(&self.e1))
+                    + &((t1.mul_ref(&self.e2)) + &(t2.mul_ref(&self.e3)))),
+                e2: ((t0.mul_ref(&self.e2))
+                    - &((t1.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e3)))),
+                e3: ((t0.mul_ref(&self.e3))
+                    - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
             }
         }
     }
@@ -8812,18 +8873,18 @@ pub mod g3_vendored {
         ///`self x rev(self)` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
         #[inline]
         fn apply(&self, x: &Vector<T>) -> Vector<T> {
-            let t0 = (self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2))
-                + &(self.e3.mul_ref(&x.e3));
-            let t1 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1));
-            let t2 = (self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1));
-            let t3 = (self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2));
+            let t0 = ((self.e1.mul_ref(&x.e1))
+                + &((self.e2.mul_ref(&x.e2)) + &(self.e3.mul_ref(&x.e3))));
+            let t1 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
+            let t2 = ((self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1)));
+            let t3 = ((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2)));
             Vector {
-                e1: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
-                    + &(t2.mul_ref(&self.e3)),
-                e2: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
-                    + &(t3.mul_ref(&self.e3)),
-                e3: (t0.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e1))
-                    - &(t3.mul_ref(&self.e2)),
+                e1: ((t0.mul_ref(&self.e1))
+                    + &((t1.mul_ref(&self.e2)) + &(t2.mul_ref(&self.e3)))),
+                e2: ((t0.mul_ref(&self.e2))
+                    - &((t1.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e3)))),
+                e3: ((t0.mul_ref(&self.e3))
+                    - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
             }
         }
     }
@@ -8832,23 +8893,23 @@ pub mod g3_vendored {
         ///`rev(self) x self` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
         #[inline]
         fn sandwich(&self, x: &Rotor<T>) -> Rotor<T> {
-            let t0 = (self.e1.mul_ref(&x.scalar)) - &(self.e2.mul_ref(&x.e12))
-                - &(self.e3.mul_ref(&x.e13));
-            let t1 = (self.e1.mul_ref(&x.e12)) + &(self.e2.mul_ref(&x.scalar))
-                - &(self.e3.mul_ref(&x.e23));
-            let t2 = (self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23))
-                + &(self.e3.mul_ref(&x.scalar));
-            let t3 = (self.e1.mul_ref(&x.e23)) - &(self.e2.mul_ref(&x.e13))
-                + &(self.e3.mul_ref(&x.e12));
+            let t0 = ((self.e1.mul_ref(&x.scalar))
+                - &((self.e2.mul_ref(&x.e12)) + &(self.e3.mul_ref(&x.e13))));
+            let t1 = ((self.e1.mul_ref(&x.e12))
+                + &((self.e2.mul_ref(&x.scalar)) - &(self.e3.mul_ref(&x.e23))));
+            let t2 = ((self.e1.mul_ref(&x.e13))
+                + &((self.e2.mul_ref(&x.e23)) + &(self.e3.mul_ref(&x.scalar))));
+            let t3 = ((self.e1.mul_ref(&x.e23))
+                - &((self.e2.mul_ref(&x.e13)) - &(self.e3.mul_ref(&x.e12))));
             Rotor {
-                scalar: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
-                    + &(t2.mul_ref(&self.e3)),
-                e12: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
-                    + &(t3.mul_ref(&self.e3)),
-                e13: (t0.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e1))
-                    - &(t3.mul_ref(&self.e2)),
-                e23: (t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e2))
-                    + &(t3.mul_ref(&self.e1)),
+                scalar: ((t0.mul_ref(&self.e1))
+                    + &((t1.mul_ref(&self.e2)) + &(t2.mul_ref(&self.e3)))),
+                e12: ((t0.mul_ref(&self.e2))
+                    - &((t1.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e3)))),
+                e13: ((t0.mul_ref(&self.e3))
+                    - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
+                e23: ((t1.mul_ref(&self.e3))
+                    - &((t2.mul_ref(&self.e2)) - &(t3.mul_ref(&self.e1)))),
             }
         }
     }
@@ -8857,23 +8918,23 @@ pub mod g3_vendored {
         ///`self x rev(self)` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
         #[inline]
         fn apply(&self, x: &Rotor<T>) -> Rotor<T> {
-            let t0 = (self.e1.mul_ref(&x.scalar)) - &(self.e2.mul_ref(&x.e12))
-                - &(self.e3.mul_ref(&x.e13));
-            let t1 = (self.e1.mul_ref(&x.e12)) + &(self.e2.mul_ref(&x.scalar))
-                - &(self.e3.mul_ref(&x.e23));
-            let t2 = (self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23))
-                + &(self.e3.mul_ref(&x.scalar));
-            let t3 = (self.e1.mul_ref(&x.e23)) - &(self.e2.mul_ref(&x.e13))
-                + &(self.e3.mul_ref(&x.e12));
+            let t0 = ((self.e1.mul_ref(&x.scalar))
+                - &((self.e2.mul_ref(&x.e12)) + &(self.e3.mul_ref(&x.e13))));
+            let t1 = ((self.e1.mul_ref(&x.e12))
+                + &((self.e2.mul_ref(&x.scalar)) - &(self.e3.mul_ref(&x.e23))));
+            let t2 = ((self.e1.mul_ref(&x.e13))
+                + &((self.e2.mul_ref(&x.e23)) + &(self.e3.mul_ref(&x.scalar))));
+            let t3 = ((self.e1.mul_ref(&x.e23))
+                - &((self.e2.mul_ref(&x.e13)) - &(self.e3.mul_ref(&x.e12))));
             Rotor {
-                scalar: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
-                    + &(t2.mul_ref(&self.e3)),
-                e12: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
-                    + &(t3.mul_ref(&self.e3)),
-                e13: (t0.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e1))
-                    - &(t3.mul_ref(&self.e2)),
-                e23: (t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e2))
-                    + &(t3.mul_ref(&self.e1)),
+                scalar: ((t0.mul_ref(&self.e1))
+                    + &((t1.mul_ref(&self.e2)) + &(t2.mul_ref(&self.e3)))),
+                e12: ((t0.mul_ref(&self.e2))
+                    - &((t1.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e3)))),
+                e13: ((t0.mul_ref(&self.e3))
+                    - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
+                e23: ((t1.mul_ref(&self.e3))
+                    - &((t2.mul_ref(&self.e2)) - &(t3.mul_ref(&self.e1)))),
             }
         }
     }
@@ -8882,23 +8943,23 @@ pub mod g3_vendored {
         ///`rev(self) x self` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
         #[inline]
         fn sandwich(&self, x: &Odd<T>) -> Odd<T> {
-            let t0 = (self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2))
-                + &(self.e3.mul_ref(&x.e3));
-            let t1 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1))
-                + &(self.e3.mul_ref(&x.e123));
-            let t2 = (self.e1.mul_ref(&x.e3)) - &(self.e2.mul_ref(&x.e123))
-                - &(self.e3.mul_ref(&x.e1));
-            let t3 = (self.e1.mul_ref(&x.e123)) + &(self.e2.mul_ref(&x.e3))
-                - &(self.e3.mul_ref(&x.e2));
+            let t0 = ((self.e1.mul_ref(&x.e1))
+                + &((self.e2.mul_ref(&x.e2)) + &(self.e3.mul_ref(&x.e3))));
+            let t1 = ((self.e1.mul_ref(&x.e2))
+                - &((self.e2.mul_ref(&x.e1)) - &(self.e3.mul_ref(&x.e123))));
+            let t2 = ((self.e1.mul_ref(&x.e3))
+                - &((self.e2.mul_ref(&x.e123)) + &(self.e3.mul_ref(&x.e1))));
+            let t3 = ((self.e1.mul_ref(&x.e123))
+                + &((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2))));
             Odd {
-                e1: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
-                    + &(t2.mul_ref(&self.e3)),
-                e2: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
-                    + &(t3.mul_ref(&self.e3)),
-                e3: (t0.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e1))
-                    - &(t3.mul_ref(&self.e2)),
-                e123: (t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e2))
-                    + &(t3.mul_ref(&self.e1)),
+                e1: ((t0.mul_ref(&self.e1))
+                    + &((t1.mul_ref(&self.e2)) + &(t2.mul_ref(&self.e3)))),
+                e2: ((t0.mul_ref(&self.e2))
+                    - &((t1.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e3)))),
+                e3: ((t0.mul_ref(&self.e3))
+                    - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
+                e123: ((t1.mul_ref(&self.e3))
+                    - &((t2.mul_ref(&self.e2)) - &(t3.mul_ref(&self.e1)))),
             }
         }
     }
@@ -8907,23 +8968,23 @@ pub mod g3_vendored {
         ///`self x rev(self)` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
         #[inline]
         fn apply(&self, x: &Odd<T>) -> Odd<T> {
-            let t0 = (self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2))
-                + &(self.e3.mul_ref(&x.e3));
-            let t1 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1))
-                + &(self.e3.mul_ref(&x.e123));
-            let t2 = (self.e1.mul_ref(&x.e3)) - &(self.e2.mul_ref(&x.e123))
-                - &(self.e3.mul_ref(&x.e1));
-            let t3 = (self.e1.mul_ref(&x.e123)) + &(self.e2.mul_ref(&x.e3))
-                - &(self.e3.mul_ref(&x.e2));
+            let t0 = ((self.e1.mul_ref(&x.e1))
+                + &((self.e2.mul_ref(&x.e2)) + &(self.e3.mul_ref(&x.e3))));
+            let t1 = ((self.e1.mul_ref(&x.e2))
+                - &((self.e2.mul_ref(&x.e1)) - &(self.e3.mul_ref(&x.e123))));
+            let t2 = ((self.e1.mul_ref(&x.e3))
+                - &((self.e2.mul_ref(&x.e123)) + &(self.e3.mul_ref(&x.e1))));
+            let t3 = ((self.e1.mul_ref(&x.e123))
+                + &((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2))));
             Odd {
-                e1: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
-                    + &(t2.mul_ref(&self.e3)),
-                e2: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
-                    + &(t3.mul_ref(&self.e3)),
-                e3: (t0.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e1))
-                    - &(t3.mul_ref(&self.e2)),
-                e123: (t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e2))
-                    + &(t3.mul_ref(&self.e1)),
+                e1: ((t0.mul_ref(&self.e1))
+                    + &((t1.mul_ref(&self.e2)) + &(t2.mul_ref(&self.e3)))),
+                e2: ((t0.mul_ref(&self.e2))
+                    - &((t1.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e3)))),
+                e3: ((t0.mul_ref(&self.e3))
+                    - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
+                e123: ((t1.mul_ref(&self.e3))
+                    - &((t2.mul_ref(&self.e2)) - &(t3.mul_ref(&self.e1)))),
             }
         }
     }
@@ -8932,21 +8993,23 @@ pub mod g3_vendored {
         ///`rev(self) x self` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
         #[inline]
         fn sandwich(&self, x: &Vector<T>) -> Vector<T> {
-            let t0 = (self.scalar.mul_ref(&x.e1)) - &(self.e12.mul_ref(&x.e2))
-                - &(self.e13.mul_ref(&x.e3));
-            let t1 = (self.scalar.mul_ref(&x.e2)) + &(self.e12.mul_ref(&x.e1))
-                - &(self.e23.mul_ref(&x.e3));
-            let t2 = (self.scalar.mul_ref(&x.e3)) + &(self.e13.mul_ref(&x.e1))
-                + &(self.e23.mul_ref(&x.e2));
-            let t3 = (self.e13.mul_ref(&x.e2)) - &(self.e12.mul_ref(&x.e3))
-                - &(self.e23.mul_ref(&x.e1));
+            let t0 = ((self.scalar.mul_ref(&x.e1))
+                - &((self.e12.mul_ref(&x.e2)) + &(self.e13.mul_ref(&x.e3))));
+            let t1 = ((self.scalar.mul_ref(&x.e2))
+                + &((self.e12.mul_ref(&x.e1)) - &(self.e23.mul_ref(&x.e3))));
+            let t2 = ((self.scalar.mul_ref(&x.e3))
+                + &((self.e13.mul_ref(&x.e1)) + &(self.e23.mul_ref(&x.e2))));
+            let t3 = ::algebra_core::Ring::neg_ref(
+                &((self.e12.mul_ref(&x.e3))
+                    - &((self.e13.mul_ref(&x.e2)) - &(self.e23.mul_ref(&x.e1)))),
+            );
             Vector {
-                e1: (t0.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e12))
-                    - &(t2.mul_ref(&self.e13)) - &(t3.mul_ref(&self.e23)),
-                e2: (t0.mul_ref(&self.e12)) + &(t1.mul_ref(&self.scalar))
-                    - &(t2.mul_ref(&self.e23)) + &(t3.mul_ref(&self.e13)),
-                e3: (t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23))
-                    + &(t2.mul_ref(&self.scalar)) - &(t3.mul_ref(&self.e12)),
+                e1: (((t0.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e12)))
+                    - &((t2.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e23)))),
+                e2: (((t0.mul_ref(&self.e12)) + &(t1.mul_ref(&self.scalar)))
+                    - &((t2.mul_ref(&self.e23)) - &(t3.mul_ref(&self.e13)))),
+                e3: (((t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23)))
+                    + &((t2.mul_ref(&self.scalar)) - &(t3.mul_ref(&self.e12)))),
             }
         }
     }
@@ -8955,21 +9018,25 @@ pub mod g3_vendored {
         ///`self x rev(self)` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
         #[inline]
         fn apply(&self, x: &Vector<T>) -> Vector<T> {
-            let t0 = (self.scalar.mul_ref(&x.e1)) + &(self.e12.mul_ref(&x.e2))
-                + &(self.e13.mul_ref(&x.e3));
-            let t1 = (self.scalar.mul_ref(&x.e2)) - &(self.e12.mul_ref(&x.e1))
-                + &(self.e23.mul_ref(&x.e3));
-            let t2 = (self.scalar.mul_ref(&x.e3)) - &(self.e13.mul_ref(&x.e1))
-                - &(self.e23.mul_ref(&x.e2));
-            let t3 = (self.e12.mul_ref(&x.e3)) - &(self.e13.mul_ref(&x.e2))
-                + &(self.e23.mul_ref(&x.e1));
+            let t0 = ((self.scalar.mul_ref(&x.e1))
+                + &((self.e12.mul_ref(&x.e2)) + &(self.e13.mul_ref(&x.e3))));
+            let t1 = ((self.scalar.mul_ref(&x.e2))
+                - &((self.e12.mul_ref(&x.e1)) - &(self.e23.mul_ref(&x.e3))));
+            let t2 = ((self.scalar.mul_ref(&x.e3))
+                - &((self.e13.mul_ref(&x.e1)) + &(self.e23.mul_ref(&x.e2))));
+            let t3 = ((self.e12.mul_ref(&x.e3))
+                - &((self.e13.mul_ref(&x.e2)) - &(self.e23.mul_ref(&x.e1))));
             Vector {
-                e1: (t0.mul_ref(&self.scalar)) + &(t1.mul_ref(&self.e12))
-                    + &(t2.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e23)),
-                e2: (t1.mul_ref(&self.scalar)) - &(t0.mul_ref(&self.e12))
-                    + &(t2.mul_ref(&self.e23)) - &(t3.mul_ref(&self.e13)),
-                e3: (t2.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e23))
-                    - &(t0.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e12)),
+                e1: (((t0.mul_ref(&self.scalar)) + &(t1.mul_ref(&self.e12)))
+                    + &((t2.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e23)))),
+                e2: ::algebra_core::Ring::neg_ref(
+                    &(((t0.mul_ref(&self.e12)) - &(t1.mul_ref(&self.scalar)))
+                        - &((t2.mul_ref(&self.e23)) - &(t3.mul_ref(&self.e13)))),
+                ),
+                e3: ::algebra_core::Ring::neg_ref(
+                    &(((t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23)))
+                        - &((t2.mul_ref(&self.scalar)) + &(t3.mul_ref(&self.e12)))),
+                ),
             }
         }
     }
@@ -8978,23 +9045,23 @@ pub mod g3_vendored {
         ///`rev(self) x self` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
         #[inline]
         fn sandwich(&self, x: &Rotor<T>) -> Rotor<T> {
-            let t0 = (self.scalar.mul_ref(&x.scalar)) + &(self.e12.mul_ref(&x.e12))
-                + &(self.e13.mul_ref(&x.e13)) + &(self.e23.mul_ref(&x.e23));
-            let t1 = (self.scalar.mul_ref(&x.e12)) - &(self.e12.mul_ref(&x.scalar))
-                + &(self.e13.mul_ref(&x.e23)) - &(self.e23.mul_ref(&x.e13));
-            let t2 = (self.scalar.mul_ref(&x.e13)) - &(self.e12.mul_ref(&x.e23))
-                - &(self.e13.mul_ref(&x.scalar)) + &(self.e23.mul_ref(&x.e12));
-            let t3 = (self.scalar.mul_ref(&x.e23)) + &(self.e12.mul_ref(&x.e13))
-                - &(self.e13.mul_ref(&x.e12)) - &(self.e23.mul_ref(&x.scalar));
+            let t0 = (((self.scalar.mul_ref(&x.scalar)) + &(self.e12.mul_ref(&x.e12)))
+                + &((self.e13.mul_ref(&x.e13)) + &(self.e23.mul_ref(&x.e23))));
+            let t1 = (((self.scalar.mul_ref(&x.e12)) - &(self.e12.mul_ref(&x.scalar)))
+                + &((self.e13.mul_ref(&x.e23)) - &(self.e23.mul_ref(&x.e13))));
+            let t2 = (((self.scalar.mul_ref(&x.e13)) - &(self.e12.mul_ref(&x.e23)))
+                - &((self.e13.mul_ref(&x.scalar)) - &(self.e23.mul_ref(&x.e12))));
+            let t3 = (((self.scalar.mul_ref(&x.e23)) + &(self.e12.mul_ref(&x.e13)))
+                - &((self.e13.mul_ref(&x.e12)) + &(self.e23.mul_ref(&x.scalar))));
             Rotor {
-                scalar: (t0.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e12))
-                    - &(t2.mul_ref(&self.e13)) - &(t3.mul_ref(&self.e23)),
-                e12: (t0.mul_ref(&self.e12)) + &(t1.mul_ref(&self.scalar))
-                    - &(t2.mul_ref(&self.e23)) + &(t3.mul_ref(&self.e13)),
-                e13: (t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23))
-                    + &(t2.mul_ref(&self.scalar)) - &(t3.mul_ref(&self.e12)),
-                e23: (t0.mul_ref(&self.e23)) - &(t1.mul_ref(&self.e13))
-                    + &(t2.mul_ref(&self.e12)) + &(t3.mul_ref(&self.scalar)),
+                scalar: (((t0.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e12)))
+                    - &((t2.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e23)))),
+                e12: (((t0.mul_ref(&self.e12)) + &(t1.mul_ref(&self.scalar)))
+                    - &((t2.mul_ref(&self.e23)) - &(t3.mul_ref(&self.e13)))),
+                e13: (((t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23)))
+                    + &((t2.mul_ref(&self.scalar)) - &(t3.mul_ref(&self.e12)))),
+                e23: (((t0.mul_ref(&self.e23)) - &(t1.mul_ref(&self.e13)))
+                    + &((t2.mul_ref(&self.e12)) + &(t3.mul_ref(&self.scalar)))),
             }
         }
     }
@@ -9003,23 +9070,29 @@ pub mod g3_vendored {
         ///`self x rev(self)` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
         #[inline]
         fn apply(&self, x: &Rotor<T>) -> Rotor<T> {
-            let t0 = (self.scalar.mul_ref(&x.scalar)) - &(self.e12.mul_ref(&x.e12))
-                - &(self.e13.mul_ref(&x.e13)) - &(self.e23.mul_ref(&x.e23));
-            let t1 = (self.scalar.mul_ref(&x.e12)) + &(self.e12.mul_ref(&x.scalar))
-                - &(self.e13.mul_ref(&x.e23)) + &(self.e23.mul_ref(&x.e13));
-            let t2 = (self.scalar.mul_ref(&x.e13)) + &(self.e12.mul_ref(&x.e23))
-                + &(self.e13.mul_ref(&x.scalar)) - &(self.e23.mul_ref(&x.e12));
-            let t3 = (self.scalar.mul_ref(&x.e23)) - &(self.e12.mul_ref(&x.e13))
-                + &(self.e13.mul_ref(&x.e12)) + &(self.e23.mul_ref(&x.scalar));
+            let t0 = (((self.scalar.mul_ref(&x.scalar)) - &(self.e12.mul_ref(&x.e12)))
+                - &((self.e13.mul_ref(&x.e13)) + &(self.e23.mul_ref(&x.e23))));
+            let t1 = (((self.scalar.mul_ref(&x.e12)) + &(self.e12.mul_ref(&x.scalar)))
+                - &((self.e13.mul_ref(&x.e23)) - &(self.e23.mul_ref(&x.e13))));
+            let t2 = (((self.scalar.mul_ref(&x.e13)) + &(self.e12.mul_ref(&x.e23)))
+                + &((self.e13.mul_ref(&x.scalar)) - &(self.e23.mul_ref(&x.e12))));
+            let t3 = (((self.scalar.mul_ref(&x.e23)) - &(self.e12.mul_ref(&x.e13)))
+                + &((self.e13.mul_ref(&x.e12)) + &(self.e23.mul_ref(&x.scalar))));
             Rotor {
-                scalar: (t0.mul_ref(&self.scalar)) + &(t1.mul_ref(&self.e12))
-                    + &(t2.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e23)),
-                e12: (t1.mul_ref(&self.scalar)) - &(t0.mul_ref(&self.e12))
-                    + &(t2.mul_ref(&self.e23)) - &(t3.mul_ref(&self.e13)),
-                e13: (t2.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e23))
-                    - &(t0.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e12)),
-                e23: (t1.mul_ref(&self.e13)) - &(t0.mul_ref(&self.e23))
-                    - &(t2.mul_ref(&self.e12)) + &(t3.mul_ref(&self.scalar)),
+                scalar: (((t0.mul_ref(&self.scalar)) + &(t1.mul_ref(&self.e12)))
+                    + &((t2.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e23)))),
+                e12: ::algebra_core::Ring::neg_ref(
+                    &(((t0.mul_ref(&self.e12)) - &(t1.mul_ref(&self.scalar)))
+                        - &((t2.mul_ref(&self.e23)) - &(t3.mul_ref(&self.e13)))),
+                ),
+                e13: ::algebra_core::Ring::neg_ref(
+                    &(((t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23)))
+                        - &((t2.mul_ref(&self.scalar)) + &(t3.mul_ref(&self.e12)))),
+                ),
+                e23: ::algebra_core::Ring::neg_ref(
+                    &(((t0.mul_ref(&self.e23)) - &(t1.mul_ref(&self.e13)))
+                        + &((t2.mul_ref(&self.e12)) - &(t3.mul_ref(&self.scalar)))),
+                ),
             }
         }
     }
@@ -9028,23 +9101,23 @@ pub mod g3_vendored {
         ///`rev(self) x self` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
         #[inline]
         fn sandwich(&self, x: &Odd<T>) -> Odd<T> {
-            let t0 = (self.scalar.mul_ref(&x.e1)) - &(self.e12.mul_ref(&x.e2))
-                - &(self.e13.mul_ref(&x.e3)) + &(self.e23.mul_ref(&x.e123));
-            let t1 = (self.scalar.mul_ref(&x.e2)) + &(self.e12.mul_ref(&x.e1))
-                - &(self.e13.mul_ref(&x.e123)) - &(self.e23.mul_ref(&x.e3));
-            let t2 = (self.scalar.mul_ref(&x.e3)) + &(self.e12.mul_ref(&x.e123))
-                + &(self.e13.mul_ref(&x.e1)) + &(self.e23.mul_ref(&x.e2));
-            let t3 = (self.scalar.mul_ref(&x.e123)) - &(self.e12.mul_ref(&x.e3))
-                + &(self.e13.mul_ref(&x.e2)) - &(self.e23.mul_ref(&x.e1));
+            let t0 = (((self.scalar.mul_ref(&x.e1)) - &(self.e12.mul_ref(&x.e2)))
+                - &((self.e13.mul_ref(&x.e3)) - &(self.e23.mul_ref(&x.e123))));
+            let t1 = (((self.scalar.mul_ref(&x.e2)) + &(self.e12.mul_ref(&x.e1)))
+                - &((self.e13.mul_ref(&x.e123)) + &(self.e23.mul_ref(&x.e3))));
+            let t2 = (((self.scalar.mul_ref(&x.e3)) + &(self.e12.mul_ref(&x.e123)))
+                + &((self.e13.mul_ref(&x.e1)) + &(self.e23.mul_ref(&x.e2))));
+            let t3 = (((self.scalar.mul_ref(&x.e123)) - &(self.e12.mul_ref(&x.e3)))
+                + &((self.e13.mul_ref(&x.e2)) - &(self.e23.mul_ref(&x.e1))));
             Odd {
-                e1: (t0.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e12))
-                    - &(t2.mul_ref(&self.e13)) - &(t3.mul_ref(&self.e23)),
-                e2: (t0.mul_ref(&self.e12)) + &(t1.mul_ref(&self.scalar))
-                    - &(t2.mul_ref(&self.e23)) + &(t3.mul_ref(&self.e13)),
-                e3: (t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23))
-                    + &(t2.mul_ref(&self.scalar)) - &(t3.mul_ref(&self.e12)),
-                e123: (t0.mul_ref(&self.e23)) - &(t1.mul_ref(&self.e13))
-                    + &(t2.mul_ref(&self.e12)) + &(t3.mul_ref(&self.scalar)),
+                e1: (((t0.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e12)))
+                    - &((t2.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e23)))),
+                e2: (((t0.mul_ref(&self.e12)) + &(t1.mul_ref(&self.scalar)))
+                    - &((t2.mul_ref(&self.e23)) - &(t3.mul_ref(&self.e13)))),
+                e3: (((t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23)))
+                    + &((t2.mul_ref(&self.scalar)) - &(t3.mul_ref(&self.e12)))),
+                e123: (((t0.mul_ref(&self.e23)) - &(t1.mul_ref(&self.e13)))
+                    + &((t2.mul_ref(&self.e12)) + &(t3.mul_ref(&self.scalar)))),
             }
         }
     }
@@ -9053,23 +9126,29 @@ pub mod g3_vendored {
         ///`self x rev(self)` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
         #[inline]
         fn apply(&self, x: &Odd<T>) -> Odd<T> {
-            let t0 = (self.scalar.mul_ref(&x.e1)) + &(self.e12.mul_ref(&x.e2))
-                + &(self.e13.mul_ref(&x.e3)) - &(self.e23.mul_ref(&x.e123));
-            let t1 = (self.scalar.mul_ref(&x.e2)) - &(self.e12.mul_ref(&x.e1))
-                + &(self.e13.mul_ref(&x.e123)) + &(self.e23.mul_ref(&x.e3));
-            let t2 = (self.scalar.mul_ref(&x.e3)) - &(self.e12.mul_ref(&x.e123))
-                - &(self.e13.mul_ref(&x.e1)) - &(self.e23.mul_ref(&x.e2));
-            let t3 = (self.scalar.mul_ref(&x.e123)) + &(self.e12.mul_ref(&x.e3))
-                - &(self.e13.mul_ref(&x.e2)) + &(self.e23.mul_ref(&x.e1));
+            let t0 = (((self.scalar.mul_ref(&x.e1)) + &(self.e12.mul_ref(&x.e2)))
+                + &((self.e13.mul_ref(&x.e3)) - &(self.e23.mul_ref(&x.e123))));
+            let t1 = (((self.scalar.mul_ref(&x.e2)) - &(self.e12.mul_ref(&x.e1)))
+                + &((self.e13.mul_ref(&x.e123)) + &(self.e23.mul_ref(&x.e3))));
+            let t2 = (((self.scalar.mul_ref(&x.e3)) - &(self.e12.mul_ref(&x.e123)))
+                - &((self.e13.mul_ref(&x.e1)) + &(self.e23.mul_ref(&x.e2))));
+            let t3 = (((self.scalar.mul_ref(&x.e123)) + &(self.e12.mul_ref(&x.e3)))
+                - &((self.e13.mul_ref(&x.e2)) - &(self.e23.mul_ref(&x.e1))));
             Odd {
-                e1: (t0.mul_ref(&self.scalar)) + &(t1.mul_ref(&self.e12))
-                    + &(t2.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e23)),
-                e2: (t1.mul_ref(&self.scalar)) - &(t0.mul_ref(&self.e12))
-                    + &(t2.mul_ref(&self.e23)) - &(t3.mul_ref(&self.e13)),
-                e3: (t2.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e23))
-                    - &(t0.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e12)),
-                e123: (t1.mul_ref(&self.e13)) - &(t0.mul_ref(&self.e23))
-                    - &(t2.mul_ref(&self.e12)) + &(t3.mul_ref(&self.scalar)),
+                e1: (((t0.mul_ref(&self.scalar)) + &(t1.mul_ref(&self.e12)))
+                    + &((t2.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e23)))),
+                e2: ::algebra_core::Ring::neg_ref(
+                    &(((t0.mul_ref(&self.e12)) - &(t1.mul_ref(&self.scalar)))
+                        - &((t2.mul_ref(&self.e23)) - &(t3.mul_ref(&self.e13)))),
+                ),
+                e3: ::algebra_core::Ring::neg_ref(
+                    &(((t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23)))
+                        - &((t2.mul_ref(&self.scalar)) + &(t3.mul_ref(&self.e12)))),
+                ),
+                e123: ::algebra_core::Ring::neg_ref(
+                    &(((t0.mul_ref(&self.e23)) - &(t1.mul_ref(&self.e13)))
+                        + &((t2.mul_ref(&self.e12)) - &(t3.mul_ref(&self.scalar)))),
+                ),
             }
         }
     }
@@ -9078,21 +9157,21 @@ pub mod g3_vendored {
         ///`rev(self) x self` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
         #[inline]
         fn sandwich(&self, x: &Vector<T>) -> Vector<T> {
-            let t0 = (self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2))
-                + &(self.e3.mul_ref(&x.e3));
-            let t1 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1))
-                - &(self.e123.mul_ref(&x.e3));
-            let t2 = (self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1))
-                + &(self.e123.mul_ref(&x.e2));
-            let t3 = (self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2))
-                - &(self.e123.mul_ref(&x.e1));
+            let t0 = ((self.e1.mul_ref(&x.e1))
+                + &((self.e2.mul_ref(&x.e2)) + &(self.e3.mul_ref(&x.e3))));
+            let t1 = ((self.e1.mul_ref(&x.e2))
+                - &((self.e2.mul_ref(&x.e1)) + &(self.e123.mul_ref(&x.e3))));
+            let t2 = ((self.e1.mul_ref(&x.e3))
+                - &((self.e3.mul_ref(&x.e1)) - &(self.e123.mul_ref(&x.e2))));
+            let t3 = ((self.e2.mul_ref(&x.e3))
+                - &((self.e3.mul_ref(&x.e2)) + &(self.e123.mul_ref(&x.e1))));
             Vector {
-                e1: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
-                    + &(t2.mul_ref(&self.e3)) - &(t3.mul_ref(&self.e123)),
-                e2: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
-                    + &(t2.mul_ref(&self.e123)) + &(t3.mul_ref(&self.e3)),
-                e3: (t0.mul_ref(&self.e3)) - &(t1.mul_ref(&self.e123))
-                    - &(t2.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e2)),
+                e1: (((t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2)))
+                    + &((t2.mul_ref(&self.e3)) - &(t3.mul_ref(&self.e123)))),
+                e2: (((t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1)))
+                    + &((t2.mul_ref(&self.e123)) + &(t3.mul_ref(&self.e3)))),
+                e3: (((t0.mul_ref(&self.e3)) - &(t1.mul_ref(&self.e123)))
+                    - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
             }
         }
     }
@@ -9101,21 +9180,21 @@ pub mod g3_vendored {
         ///`self x rev(self)` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
         #[inline]
         fn apply(&self, x: &Vector<T>) -> Vector<T> {
-            let t0 = (self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2))
-                + &(self.e3.mul_ref(&x.e3));
-            let t1 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1))
-                + &(self.e123.mul_ref(&x.e3));
-            let t2 = (self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1))
-                - &(self.e123.mul_ref(&x.e2));
-            let t3 = (self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2))
-                + &(self.e123.mul_ref(&x.e1));
+            let t0 = ((self.e1.mul_ref(&x.e1))
+                + &((self.e2.mul_ref(&x.e2)) + &(self.e3.mul_ref(&x.e3))));
+            let t1 = ((self.e1.mul_ref(&x.e2))
+                - &((self.e2.mul_ref(&x.e1)) - &(self.e123.mul_ref(&x.e3))));
+            let t2 = ((self.e1.mul_ref(&x.e3))
+                - &((self.e3.mul_ref(&x.e1)) + &(self.e123.mul_ref(&x.e2))));
+            let t3 = ((self.e2.mul_ref(&x.e3))
+                - &((self.e3.mul_ref(&x.e2)) - &(self.e123.mul_ref(&x.e1))));
             Vector {
-                e1: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
-                    + &(t2.mul_ref(&self.e3)) + &(t3.mul_ref(&self.e123)),
-                e2: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
-                    - &(t2.mul_ref(&self.e123)) + &(t3.mul_ref(&self.e3)),
-                e3: (t0.mul_ref(&self.e3)) + &(t1.mul_ref(&self.e123))
-                    - &(t2.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e2)),
+                e1: (((t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2)))
+                    + &((t2.mul_ref(&self.e3)) + &(t3.mul_ref(&self.e123)))),
+                e2: (((t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1)))
+                    - &((t2.mul_ref(&self.e123)) - &(t3.mul_ref(&self.e3)))),
+                e3: (((t0.mul_ref(&self.e3)) + &(t1.mul_ref(&self.e123)))
+                    - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
             }
         }
     }
@@ -9124,23 +9203,23 @@ pub mod g3_vendored {
         ///`rev(self) x self` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
         #[inline]
         fn sandwich(&self, x: &Rotor<T>) -> Rotor<T> {
-            let t0 = (self.e1.mul_ref(&x.scalar)) - &(self.e2.mul_ref(&x.e12))
-                - &(self.e3.mul_ref(&x.e13)) + &(self.e123.mul_ref(&x.e23));
-            let t1 = (self.e1.mul_ref(&x.e12)) + &(self.e2.mul_ref(&x.scalar))
-                - &(self.e3.mul_ref(&x.e23)) - &(self.e123.mul_ref(&x.e13));
-            let t2 = (self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23))
-                + &(self.e3.mul_ref(&x.scalar)) + &(self.e123.mul_ref(&x.e12));
-            let t3 = (self.e1.mul_ref(&x.e23)) - &(self.e2.mul_ref(&x.e13))
-                + &(self.e3.mul_ref(&x.e12)) - &(self.e123.mul_ref(&x.scalar));
+            let t0 = (((self.e1.mul_ref(&x.scalar)) - &(self.e2.mul_ref(&x.e12)))
+                - &((self.e3.mul_ref(&x.e13)) - &(self.e123.mul_ref(&x.e23))));
+            let t1 = (((self.e1.mul_ref(&x.e12)) + &(self.e2.mul_ref(&x.scalar)))
+                - &((self.e3.mul_ref(&x.e23)) + &(self.e123.mul_ref(&x.e13))));
+            let t2 = (((self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23)))
+                + &((self.e3.mul_ref(&x.scalar)) + &(self.e123.mul_ref(&x.e12))));
+            let t3 = (((self.e1.mul_ref(&x.e23)) - &(self.e2.mul_ref(&x.e13)))
+                + &((self.e3.mul_ref(&x.e12)) - &(self.e123.mul_ref(&x.scalar))));
             Rotor {
-                scalar: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
-                    + &(t2.mul_ref(&self.e3)) - &(t3.mul_ref(&self.e123)),
-                e12: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
-                    + &(t2.mul_ref(&self.e123)) + &(t3.mul_ref(&self.e3)),
-                e13: (t0.mul_ref(&self.e3)) - &(t1.mul_ref(&self.e123))
-                    - &(t2.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e2)),
-                e23: (t0.mul_ref(&self.e123)) + &(t1.mul_ref(&self.e3))
-                    - &(t2.mul_ref(&self.e2)) + &(t3.mul_ref(&self.e1)),
+                scalar: (((t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2)))
+                    + &((t2.mul_ref(&self.e3)) - &(t3.mul_ref(&self.e123)))),
+                e12: (((t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1)))
+                    + &((t2.mul_ref(&self.e123)) + &(t3.mul_ref(&self.e3)))),
+                e13: (((t0.mul_ref(&self.e3)) - &(t1.mul_ref(&self.e123)))
+                    - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
+                e23: (((t0.mul_ref(&self.e123)) + &(t1.mul_ref(&self.e3)))
+                    - &((t2.mul_ref(&self.e2)) - &(t3.mul_ref(&self.e1)))),
             }
         }
     }
@@ -9149,23 +9228,25 @@ pub mod g3_vendored {
         ///`self x rev(self)` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
         #[inline]
         fn apply(&self, x: &Rotor<T>) -> Rotor<T> {
-            let t0 = (self.e1.mul_ref(&x.scalar)) - &(self.e2.mul_ref(&x.e12))
-                - &(self.e3.mul_ref(&x.e13)) - &(self.e123.mul_ref(&x.e23));
-            let t1 = (self.e1.mul_ref(&x.e12)) + &(self.e2.mul_ref(&x.scalar))
-                - &(self.e3.mul_ref(&x.e23)) + &(self.e123.mul_ref(&x.e13));
-            let t2 = (self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23))
-                + &(self.e3.mul_ref(&x.scalar)) - &(self.e123.mul_ref(&x.e12));
-            let t3 = (self.e1.mul_ref(&x.e23)) - &(self.e2.mul_ref(&x.e13))
-                + &(self.e3.mul_ref(&x.e12)) + &(self.e123.mul_ref(&x.scalar));
+            let t0 = (((self.e1.mul_ref(&x.scalar)) - &(self.e2.mul_ref(&x.e12)))
+                - &((self.e3.mul_ref(&x.e13)) + &(self.e123.mul_ref(&x.e23))));
+            let t1 = (((self.e1.mul_ref(&x.e12)) + &(self.e2.mul_ref(&x.scalar)))
+                - &((self.e3.mul_ref(&x.e23)) - &(self.e123.mul_ref(&x.e13))));
+            let t2 = (((self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23)))
+                + &((self.e3.mul_ref(&x.scalar)) - &(self.e123.mul_ref(&x.e12))));
+            let t3 = (((self.e1.mul_ref(&x.e23)) - &(self.e2.mul_ref(&x.e13)))
+                + &((self.e3.mul_ref(&x.e12)) + &(self.e123.mul_ref(&x.scalar))));
             Rotor {
-                scalar: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
-                    + &(t2.mul_ref(&self.e3)) + &(t3.mul_ref(&self.e123)),
-                e12: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
-                    - &(t2.mul_ref(&self.e123)) + &(t3.mul_ref(&self.e3)),
-                e13: (t0.mul_ref(&self.e3)) + &(t1.mul_ref(&self.e123))
-                    - &(t2.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e2)),
-                e23: (t1.mul_ref(&self.e3)) - &(t0.mul_ref(&self.e123))
-                    - &(t2.mul_ref(&self.e2)) + &(t3.mul_ref(&self.e1)),
+                scalar: (((t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2)))
+                    + &((t2.mul_ref(&self.e3)) + &(t3.mul_ref(&self.e123)))),
+                e12: (((t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1)))
+                    - &((t2.mul_ref(&self.e123)) - &(t3.mul_ref(&self.e3)))),
+                e13: (((t0.mul_ref(&self.e3)) + &(t1.mul_ref(&self.e123)))
+                    - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
+                e23: ::algebra_core::Ring::neg_ref(
+                    &(((t0.mul_ref(&self.e123)) - &(t1.mul_ref(&self.e3)))
+                        + &((t2.mul_ref(&self.e2)) - &(t3.mul_ref(&self.e1)))),
+                ),
             }
         }
     }
@@ -9174,23 +9255,23 @@ pub mod g3_vendored {
         ///`rev(self) x self` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
         #[inline]
         fn sandwich(&self, x: &Odd<T>) -> Odd<T> {
-            let t0 = (self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2))
-                + &(self.e3.mul_ref(&x.e3)) + &(self.e123.mul_ref(&x.e123));
-            let t1 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1))
-                + &(self.e3.mul_ref(&x.e123)) - &(self.e123.mul_ref(&x.e3));
-            let t2 = (self.e1.mul_ref(&x.e3)) - &(self.e2.mul_ref(&x.e123))
-                - &(self.e3.mul_ref(&x.e1)) + &(self.e123.mul_ref(&x.e2));
-            let t3 = (self.e1.mul_ref(&x.e123)) + &(self.e2.mul_ref(&x.e3))
-                - &(self.e3.mul_ref(&x.e2)) - &(self.e123.mul_ref(&x.e1));
+            let t0 = (((self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2)))
+                + &((self.e3.mul_ref(&x.e3)) + &(self.e123.mul_ref(&x.e123))));
+            let t1 = (((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)))
+                + &((self.e3.mul_ref(&x.e123)) - &(self.e123.mul_ref(&x.e3))));
+            let t2 = (((self.e1.mul_ref(&x.e3)) - &(self.e2.mul_ref(&x.e123)))
+                - &((self.e3.mul_ref(&x.e1)) - &(self.e123.mul_ref(&x.e2))));
+            let t3 = (((self.e1.mul_ref(&x.e123)) + &(self.e2.mul_ref(&x.e3)))
+                - &((self.e3.mul_ref(&x.e2)) + &(self.e123.mul_ref(&x.e1))));
             Odd {
-                e1: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
-                    + &(t2.mul_ref(&self.e3)) - &(t3.mul_ref(&self.e123)),
-                e2: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
-                    + &(t2.mul_ref(&self.e123)) + &(t3.mul_ref(&self.e3)),
-                e3: (t0.mul_ref(&self.e3)) - &(t1.mul_ref(&self.e123))
-                    - &(t2.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e2)),
-                e123: (t0.mul_ref(&self.e123)) + &(t1.mul_ref(&self.e3))
-                    - &(t2.mul_ref(&self.e2)) + &(t3.mul_ref(&self.e1)),
+                e1: (((t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2)))
+                    + &((t2.mul_ref(&self.e3)) - &(t3.mul_ref(&self.e123)))),
+                e2: (((t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1)))
+                    + &((t2.mul_ref(&self.e123)) + &(t3.mul_ref(&self.e3)))),
+                e3: (((t0.mul_ref(&self.e3)) - &(t1.mul_ref(&self.e123)))
+                    - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
+                e123: (((t0.mul_ref(&self.e123)) + &(t1.mul_ref(&self.e3)))
+                    - &((t2.mul_ref(&self.e2)) - &(t3.mul_ref(&self.e1)))),
             }
         }
     }
@@ -9199,23 +9280,25 @@ pub mod g3_vendored {
         ///`self x rev(self)` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
         #[inline]
         fn apply(&self, x: &Odd<T>) -> Odd<T> {
-            let t0 = (self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2))
-                + &(self.e3.mul_ref(&x.e3)) - &(self.e123.mul_ref(&x.e123));
-            let t1 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1))
-                + &(self.e3.mul_ref(&x.e123)) + &(self.e123.mul_ref(&x.e3));
-            let t2 = (self.e1.mul_ref(&x.e3)) - &(self.e2.mul_ref(&x.e123))
-                - &(self.e3.mul_ref(&x.e1)) - &(self.e123.mul_ref(&x.e2));
-            let t3 = (self.e1.mul_ref(&x.e123)) + &(self.e2.mul_ref(&x.e3))
-                - &(self.e3.mul_ref(&x.e2)) + &(self.e123.mul_ref(&x.e1));
+            let t0 = (((self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2)))
+                + &((self.e3.mul_ref(&x.e3)) - &(self.e123.mul_ref(&x.e123))));
+            let t1 = (((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)))
+                + &((self.e3.mul_ref(&x.e123)) + &(self.e123.mul_ref(&x.e3))));
+            let t2 = (((self.e1.mul_ref(&x.e3)) - &(self.e2.mul_ref(&x.e123)))
+                - &((self.e3.mul_ref(&x.e1)) + &(self.e123.mul_ref(&x.e2))));
+            let t3 = (((self.e1.mul_ref(&x.e123)) + &(self.e2.mul_ref(&x.e3)))
+                - &((self.e3.mul_ref(&x.e2)) - &(self.e123.mul_ref(&x.e1))));
             Odd {
-                e1: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
-                    + &(t2.mul_ref(&self.e3)) + &(t3.mul_ref(&self.e123)),
-                e2: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
-                    - &(t2.mul_ref(&self.e123)) + &(t3.mul_ref(&self.e3)),
-                e3: (t0.mul_ref(&self.e3)) + &(t1.mul_ref(&self.e123))
-                    - &(t2.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e2)),
-                e123: (t1.mul_ref(&self.e3)) - &(t0.mul_ref(&self.e123))
-                    - &(t2.mul_ref(&self.e2)) + &(t3.mul_ref(&self.e1)),
+                e1: (((t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2)))
+                    + &((t2.mul_ref(&self.e3)) + &(t3.mul_ref(&self.e123)))),
+                e2: (((t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1)))
+                    - &((t2.mul_ref(&self.e123)) - &(t3.mul_ref(&self.e3)))),
+                e3: (((t0.mul_ref(&self.e3)) + &(t1.mul_ref(&self.e123)))
+                    - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
+                e123: ::algebra_core::Ring::neg_ref(
+                    &(((t0.mul_ref(&self.e123)) - &(t1.mul_ref(&self.e3)))
+                        + &((t2.mul_ref(&self.e2)) - &(t3.mul_ref(&self.e1)))),
+                ),
             }
         }
     }
@@ -10208,6 +10291,522 @@ pub mod g3_vendored {
                     + &(m[2usize][1usize].mul_ref(&x.e2))
                     + &(m[2usize][2usize].mul_ref(&x.e3)),
                 e123: (m[3usize][3usize].mul_ref(&x.e123)),
+            }
+        }
+    }
+    impl<T: ::algebra_core::Ring> ::algebra_core::ops::UnitAction<Vector<T>>
+    for Vector<T> {
+        /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
+        #[inline]
+        fn sandwich_unit(&self, x: &Vector<T>) -> Vector<T> {
+            let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
+            let t1 = ((self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1)));
+            let t2 = ((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2)));
+            Vector {
+                e1: {
+                    let y = ((t0.mul_ref(&self.e2)) + &(t1.mul_ref(&self.e3)));
+                    x.e1.add_ref(&y) + &y
+                },
+                e2: {
+                    let y = ::algebra_core::Ring::neg_ref(
+                        &((t0.mul_ref(&self.e1)) - &(t2.mul_ref(&self.e3))),
+                    );
+                    x.e2.add_ref(&y) + &y
+                },
+                e3: {
+                    let y = ::algebra_core::Ring::neg_ref(
+                        &((t1.mul_ref(&self.e1)) + &(t2.mul_ref(&self.e2))),
+                    );
+                    x.e3.add_ref(&y) + &y
+                },
+            }
+        }
+        /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
+        #[inline]
+        fn apply_unit(&self, x: &Vector<T>) -> Vector<T> {
+            let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
+            let t1 = ((self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1)));
+            let t2 = ((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2)));
+            Vector {
+                e1: {
+                    let y = ((t0.mul_ref(&self.e2)) + &(t1.mul_ref(&self.e3)));
+                    x.e1.add_ref(&y) + &y
+                },
+                e2: {
+                    let y = ::algebra_core::Ring::neg_ref(
+                        &((t0.mul_ref(&self.e1)) - &(t2.mul_ref(&self.e3))),
+                    );
+                    x.e2.add_ref(&y) + &y
+                },
+                e3: {
+                    let y = ::algebra_core::Ring::neg_ref(
+                        &((t1.mul_ref(&self.e1)) + &(t2.mul_ref(&self.e2))),
+                    );
+                    x.e3.add_ref(&y) + &y
+                },
+            }
+        }
+    }
+    impl<T: ::algebra_core::Ring> ::algebra_core::ops::UnitAction<Rotor<T>>
+    for Vector<T> {
+        /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
+        #[inline]
+        fn sandwich_unit(&self, x: &Rotor<T>) -> Rotor<T> {
+            let t0 = ::algebra_core::Ring::neg_ref(
+                &((self.e2.mul_ref(&x.e12)) + &(self.e3.mul_ref(&x.e13))),
+            );
+            let t1 = ((self.e1.mul_ref(&x.e12)) - &(self.e3.mul_ref(&x.e23)));
+            let t2 = ((self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23)));
+            Rotor {
+                scalar: ::core::clone::Clone::clone(&x.scalar),
+                e12: {
+                    let y = ((t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1)));
+                    x.e12.add_ref(&y) + &y
+                },
+                e13: {
+                    let y = ((t0.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e1)));
+                    x.e13.add_ref(&y) + &y
+                },
+                e23: {
+                    let y = ((t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e2)));
+                    x.e23.add_ref(&y) + &y
+                },
+            }
+        }
+        /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
+        #[inline]
+        fn apply_unit(&self, x: &Rotor<T>) -> Rotor<T> {
+            let t0 = ::algebra_core::Ring::neg_ref(
+                &((self.e2.mul_ref(&x.e12)) + &(self.e3.mul_ref(&x.e13))),
+            );
+            let t1 = ((self.e1.mul_ref(&x.e12)) - &(self.e3.mul_ref(&x.e23)));
+            let t2 = ((self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23)));
+            Rotor {
+                scalar: ::core::clone::Clone::clone(&x.scalar),
+                e12: {
+                    let y = ((t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1)));
+                    x.e12.add_ref(&y) + &y
+                },
+                e13: {
+                    let y = ((t0.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e1)));
+                    x.e13.add_ref(&y) + &y
+                },
+                e23: {
+                    let y = ((t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e2)));
+                    x.e23.add_ref(&y) + &y
+                },
+            }
+        }
+    }
+    impl<T: ::algebra_core::Ring> ::algebra_core::ops::UnitAction<Odd<T>> for Vector<T> {
+        /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
+        #[inline]
+        fn sandwich_unit(&self, x: &Odd<T>) -> Odd<T> {
+            let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
+            let t1 = ((self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1)));
+            let t2 = ((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2)));
+            Odd {
+                e1: {
+                    let y = ((t0.mul_ref(&self.e2)) + &(t1.mul_ref(&self.e3)));
+                    x.e1.add_ref(&y) + &y
+                },
+                e2: {
+                    let y = ::algebra_core::Ring::neg_ref(
+                        &((t0.mul_ref(&self.e1)) - &(t2.mul_ref(&self.e3))),
+                    );
+                    x.e2.add_ref(&y) + &y
+                },
+                e3: {
+                    let y = ::algebra_core::Ring::neg_ref(
+                        &((t1.mul_ref(&self.e1)) + &(t2.mul_ref(&self.e2))),
+                    );
+                    x.e3.add_ref(&y) + &y
+                },
+                e123: ::core::clone::Clone::clone(&x.e123),
+            }
+        }
+        /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
+        #[inline]
+        fn apply_unit(&self, x: &Odd<T>) -> Odd<T> {
+            let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
+            let t1 = ((self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1)));
+            let t2 = ((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2)));
+            Odd {
+                e1: {
+                    let y = ((t0.mul_ref(&self.e2)) + &(t1.mul_ref(&self.e3)));
+                    x.e1.add_ref(&y) + &y
+                },
+                e2: {
+                    let y = ::algebra_core::Ring::neg_ref(
+                        &((t0.mul_ref(&self.e1)) - &(t2.mul_ref(&self.e3))),
+                    );
+                    x.e2.add_ref(&y) + &y
+                },
+                e3: {
+                    let y = ::algebra_core::Ring::neg_ref(
+                        &((t1.mul_ref(&self.e1)) + &(t2.mul_ref(&self.e2))),
+                    );
+                    x.e3.add_ref(&y) + &y
+                },
+                e123: ::core::clone::Clone::clone(&x.e123),
+            }
+        }
+    }
+    impl<T: ::algebra_core::Ring> ::algebra_core::ops::UnitAction<Vector<T>>
+    for Rotor<T> {
+        /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
+        #[inline]
+        fn sandwich_unit(&self, x: &Vector<T>) -> Vector<T> {
+            let t0 = ::algebra_core::Ring::neg_ref(
+                &((self.e12.mul_ref(&x.e2)) + &(self.e13.mul_ref(&x.e3))),
+            );
+            let t1 = ((self.e12.mul_ref(&x.e1)) - &(self.e23.mul_ref(&x.e3)));
+            let t2 = ((self.e13.mul_ref(&x.e1)) + &(self.e23.mul_ref(&x.e2)));
+            Vector {
+                e1: {
+                    let y = ((t0.mul_ref(&self.scalar))
+                        - &((t1.mul_ref(&self.e12)) + &(t2.mul_ref(&self.e13))));
+                    x.e1.add_ref(&y) + &y
+                },
+                e2: {
+                    let y = ((t0.mul_ref(&self.e12))
+                        + &((t1.mul_ref(&self.scalar)) - &(t2.mul_ref(&self.e23))));
+                    x.e2.add_ref(&y) + &y
+                },
+                e3: {
+                    let y = ((t0.mul_ref(&self.e13))
+                        + &((t1.mul_ref(&self.e23)) + &(t2.mul_ref(&self.scalar))));
+                    x.e3.add_ref(&y) + &y
+                },
+            }
+        }
+        /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
+        #[inline]
+        fn apply_unit(&self, x: &Vector<T>) -> Vector<T> {
+            let t0 = ((self.e12.mul_ref(&x.e2)) + &(self.e13.mul_ref(&x.e3)));
+            let t1 = ::algebra_core::Ring::neg_ref(
+                &((self.e12.mul_ref(&x.e1)) - &(self.e23.mul_ref(&x.e3))),
+            );
+            let t2 = ::algebra_core::Ring::neg_ref(
+                &((self.e13.mul_ref(&x.e1)) + &(self.e23.mul_ref(&x.e2))),
+            );
+            Vector {
+                e1: {
+                    let y = ((t0.mul_ref(&self.scalar))
+                        + &((t1.mul_ref(&self.e12)) + &(t2.mul_ref(&self.e13))));
+                    x.e1.add_ref(&y) + &y
+                },
+                e2: {
+                    let y = ::algebra_core::Ring::neg_ref(
+                        &((t0.mul_ref(&self.e12))
+                            - &((t1.mul_ref(&self.scalar)) + &(t2.mul_ref(&self.e23)))),
+                    );
+                    x.e2.add_ref(&y) + &y
+                },
+                e3: {
+                    let y = ::algebra_core::Ring::neg_ref(
+                        &((t0.mul_ref(&self.e13))
+                            + &((t1.mul_ref(&self.e23)) - &(t2.mul_ref(&self.scalar)))),
+                    );
+                    x.e3.add_ref(&y) + &y
+                },
+            }
+        }
+    }
+    impl<T: ::algebra_core::Ring> ::algebra_core::ops::UnitAction<Rotor<T>>
+    for Rotor<T> {
+        /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
+        #[inline]
+        fn sandwich_unit(&self, x: &Rotor<T>) -> Rotor<T> {
+            let t0 = ((self.e13.mul_ref(&x.e23)) - &(self.e23.mul_ref(&x.e13)));
+            let t1 = ::algebra_core::Ring::neg_ref(
+                &((self.e12.mul_ref(&x.e23)) - &(self.e23.mul_ref(&x.e12))),
+            );
+            let t2 = ((self.e12.mul_ref(&x.e13)) - &(self.e13.mul_ref(&x.e12)));
+            Rotor {
+                scalar: ::core::clone::Clone::clone(&x.scalar),
+                e12: {
+                    let y = ((t0.mul_ref(&self.scalar))
+                        - &((t1.mul_ref(&self.e23)) - &(t2.mul_ref(&self.e13))));
+                    x.e12.add_ref(&y) + &y
+                },
+                e13: {
+                    let y = ((t0.mul_ref(&self.e23))
+                        + &((t1.mul_ref(&self.scalar)) - &(t2.mul_ref(&self.e12))));
+                    x.e13.add_ref(&y) + &y
+                },
+                e23: {
+                    let y = ::algebra_core::Ring::neg_ref(
+                        &((t0.mul_ref(&self.e13))
+                            - &((t1.mul_ref(&self.e12)) + &(t2.mul_ref(&self.scalar)))),
+                    );
+                    x.e23.add_ref(&y) + &y
+                },
+            }
+        }
+        /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
+        #[inline]
+        fn apply_unit(&self, x: &Rotor<T>) -> Rotor<T> {
+            let t0 = ::algebra_core::Ring::neg_ref(
+                &((self.e13.mul_ref(&x.e23)) - &(self.e23.mul_ref(&x.e13))),
+            );
+            let t1 = ((self.e12.mul_ref(&x.e23)) - &(self.e23.mul_ref(&x.e12)));
+            let t2 = ::algebra_core::Ring::neg_ref(
+                &((self.e12.mul_ref(&x.e13)) - &(self.e13.mul_ref(&x.e12))),
+            );
+            Rotor {
+                scalar: ::core::clone::Clone::clone(&x.scalar),
+                e12: {
+                    let y = ((t0.mul_ref(&self.scalar))
+                        + &((t1.mul_ref(&self.e23)) - &(t2.mul_ref(&self.e13))));
+                    x.e12.add_ref(&y) + &y
+                },
+                e13: {
+                    let y = ::algebra_core::Ring::neg_ref(
+                        &((t0.mul_ref(&self.e23))
+                            - &((t1.mul_ref(&self.scalar)) + &(t2.mul_ref(&self.e12)))),
+                    );
+                    x.e13.add_ref(&y) + &y
+                },
+                e23: {
+                    let y = ((t0.mul_ref(&self.e13))
+                        - &((t1.mul_ref(&self.e12)) - &(t2.mul_ref(&self.scalar))));
+                    x.e23.add_ref(&y) + &y
+                },
+            }
+        }
+    }
+    impl<T: ::algebra_core::Ring> ::algebra_core::ops::UnitAction<Odd<T>> for Rotor<T> {
+        /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
+        #[inline]
+        fn sandwich_unit(&self, x: &Odd<T>) -> Odd<T> {
+            let t0 = ::algebra_core::Ring::neg_ref(
+                &((self.e12.mul_ref(&x.e2)) + &(self.e13.mul_ref(&x.e3))),
+            );
+            let t1 = ((self.e12.mul_ref(&x.e1)) - &(self.e23.mul_ref(&x.e3)));
+            let t2 = ((self.e13.mul_ref(&x.e1)) + &(self.e23.mul_ref(&x.e2)));
+            Odd {
+                e1: {
+                    let y = ((t0.mul_ref(&self.scalar))
+                        - &((t1.mul_ref(&self.e12)) + &(t2.mul_ref(&self.e13))));
+                    x.e1.add_ref(&y) + &y
+                },
+                e2: {
+                    let y = ((t0.mul_ref(&self.e12))
+                        + &((t1.mul_ref(&self.scalar)) - &(t2.mul_ref(&self.e23))));
+                    x.e2.add_ref(&y) + &y
+                },
+                e3: {
+                    let y = ((t0.mul_ref(&self.e13))
+                        + &((t1.mul_ref(&self.e23)) + &(t2.mul_ref(&self.scalar))));
+                    x.e3.add_ref(&y) + &y
+                },
+                e123: ::core::clone::Clone::clone(&x.e123),
+            }
+        }
+        /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
+        #[inline]
+        fn apply_unit(&self, x: &Odd<T>) -> Odd<T> {
+            let t0 = ((self.e12.mul_ref(&x.e2)) + &(self.e13.mul_ref(&x.e3)));
+            let t1 = ::algebra_core::Ring::neg_ref(
+                &((self.e12.mul_ref(&x.e1)) - &(self.e23.mul_ref(&x.e3))),
+            );
+            let t2 = ::algebra_core::Ring::neg_ref(
+                &((self.e13.mul_ref(&x.e1)) + &(self.e23.mul_ref(&x.e2))),
+            );
+            Odd {
+                e1: {
+                    let y = ((t0.mul_ref(&self.scalar))
+                        + &((t1.mul_ref(&self.e12)) + &(t2.mul_ref(&self.e13))));
+                    x.e1.add_ref(&y) + &y
+                },
+                e2: {
+                    let y = ::algebra_core::Ring::neg_ref(
+                        &((t0.mul_ref(&self.e12))
+                            - &((t1.mul_ref(&self.scalar)) + &(t2.mul_ref(&self.e23)))),
+                    );
+                    x.e2.add_ref(&y) + &y
+                },
+                e3: {
+                    let y = ::algebra_core::Ring::neg_ref(
+                        &((t0.mul_ref(&self.e13))
+                            + &((t1.mul_ref(&self.e23)) - &(t2.mul_ref(&self.scalar)))),
+                    );
+                    x.e3.add_ref(&y) + &y
+                },
+                e123: ::core::clone::Clone::clone(&x.e123),
+            }
+        }
+    }
+    impl<T: ::algebra_core::Ring> ::algebra_core::ops::UnitAction<Vector<T>> for Odd<T> {
+        /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
+        #[inline]
+        fn sandwich_unit(&self, x: &Vector<T>) -> Vector<T> {
+            let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
+            let t1 = ((self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1)));
+            let t2 = ((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2)));
+            Vector {
+                e1: {
+                    let y = ((t0.mul_ref(&self.e2))
+                        + &((t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e123))));
+                    x.e1.add_ref(&y) + &y
+                },
+                e2: {
+                    let y = ::algebra_core::Ring::neg_ref(
+                        &((t0.mul_ref(&self.e1))
+                            - &((t1.mul_ref(&self.e123)) + &(t2.mul_ref(&self.e3)))),
+                    );
+                    x.e2.add_ref(&y) + &y
+                },
+                e3: {
+                    let y = ::algebra_core::Ring::neg_ref(
+                        &((t0.mul_ref(&self.e123))
+                            + &((t1.mul_ref(&self.e1)) + &(t2.mul_ref(&self.e2)))),
+                    );
+                    x.e3.add_ref(&y) + &y
+                },
+            }
+        }
+        /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
+        #[inline]
+        fn apply_unit(&self, x: &Vector<T>) -> Vector<T> {
+            let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
+            let t1 = ((self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1)));
+            let t2 = ((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2)));
+            Vector {
+                e1: {
+                    let y = ((t0.mul_ref(&self.e2))
+                        + &((t1.mul_ref(&self.e3)) + &(t2.mul_ref(&self.e123))));
+                    x.e1.add_ref(&y) + &y
+                },
+                e2: {
+                    let y = ::algebra_core::Ring::neg_ref(
+                        &((t0.mul_ref(&self.e1))
+                            + &((t1.mul_ref(&self.e123)) - &(t2.mul_ref(&self.e3)))),
+                    );
+                    x.e2.add_ref(&y) + &y
+                },
+                e3: {
+                    let y = ((t0.mul_ref(&self.e123))
+                        - &((t1.mul_ref(&self.e1)) + &(t2.mul_ref(&self.e2))));
+                    x.e3.add_ref(&y) + &y
+                },
+            }
+        }
+    }
+    impl<T: ::algebra_core::Ring> ::algebra_core::ops::UnitAction<Rotor<T>> for Odd<T> {
+        /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
+        #[inline]
+        fn sandwich_unit(&self, x: &Rotor<T>) -> Rotor<T> {
+            let t0 = ::algebra_core::Ring::neg_ref(
+                &((self.e2.mul_ref(&x.e12)) + &(self.e3.mul_ref(&x.e13))),
+            );
+            let t1 = ((self.e1.mul_ref(&x.e12)) - &(self.e3.mul_ref(&x.e23)));
+            let t2 = ((self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23)));
+            Rotor {
+                scalar: ::core::clone::Clone::clone(&x.scalar),
+                e12: {
+                    let y = ((t0.mul_ref(&self.e2))
+                        - &((t1.mul_ref(&self.e1)) - &(t2.mul_ref(&self.e123))));
+                    x.e12.add_ref(&y) + &y
+                },
+                e13: {
+                    let y = ((t0.mul_ref(&self.e3))
+                        - &((t1.mul_ref(&self.e123)) + &(t2.mul_ref(&self.e1))));
+                    x.e13.add_ref(&y) + &y
+                },
+                e23: {
+                    let y = ((t0.mul_ref(&self.e123))
+                        + &((t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e2))));
+                    x.e23.add_ref(&y) + &y
+                },
+            }
+        }
+        /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
+        #[inline]
+        fn apply_unit(&self, x: &Rotor<T>) -> Rotor<T> {
+            let t0 = ::algebra_core::Ring::neg_ref(
+                &((self.e2.mul_ref(&x.e12)) + &(self.e3.mul_ref(&x.e13))),
+            );
+            let t1 = ((self.e1.mul_ref(&x.e12)) - &(self.e3.mul_ref(&x.e23)));
+            let t2 = ((self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23)));
+            Rotor {
+                scalar: ::core::clone::Clone::clone(&x.scalar),
+                e12: {
+                    let y = ((t0.mul_ref(&self.e2))
+                        - &((t1.mul_ref(&self.e1)) + &(t2.mul_ref(&self.e123))));
+                    x.e12.add_ref(&y) + &y
+                },
+                e13: {
+                    let y = ((t0.mul_ref(&self.e3))
+                        + &((t1.mul_ref(&self.e123)) - &(t2.mul_ref(&self.e1))));
+                    x.e13.add_ref(&y) + &y
+                },
+                e23: {
+                    let y = ::algebra_core::Ring::neg_ref(
+                        &((t0.mul_ref(&self.e123))
+                            - &((t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e2)))),
+                    );
+                    x.e23.add_ref(&y) + &y
+                },
+            }
+        }
+    }
+    impl<T: ::algebra_core::Ring> ::algebra_core::ops::UnitAction<Odd<T>> for Odd<T> {
+        /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
+        #[inline]
+        fn sandwich_unit(&self, x: &Odd<T>) -> Odd<T> {
+            let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
+            let t1 = ((self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1)));
+            let t2 = ((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2)));
+            Odd {
+                e1: {
+                    let y = ((t0.mul_ref(&self.e2))
+                        + &((t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e123))));
+                    x.e1.add_ref(&y) + &y
+                },
+                e2: {
+                    let y = ::algebra_core::Ring::neg_ref(
+                        &((t0.mul_ref(&self.e1))
+                            - &((t1.mul_ref(&self.e123)) + &(t2.mul_ref(&self.e3)))),
+                    );
+                    x.e2.add_ref(&y) + &y
+                },
+                e3: {
+                    let y = ::algebra_core::Ring::neg_ref(
+                        &((t0.mul_ref(&self.e123))
+                            + &((t1.mul_ref(&self.e1)) + &(t2.mul_ref(&self.e2)))),
+                    );
+                    x.e3.add_ref(&y) + &y
+                },
+                e123: ::core::clone::Clone::clone(&x.e123),
+            }
+        }
+        /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
+        #[inline]
+        fn apply_unit(&self, x: &Odd<T>) -> Odd<T> {
+            let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
+            let t1 = ((self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1)));
+            let t2 = ((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2)));
+            Odd {
+                e1: {
+                    let y = ((t0.mul_ref(&self.e2))
+                        + &((t1.mul_ref(&self.e3)) + &(t2.mul_ref(&self.e123))));
+                    x.e1.add_ref(&y) + &y
+                },
+                e2: {
+                    let y = ::algebra_core::Ring::neg_ref(
+                        &((t0.mul_ref(&self.e1))
+                            + &((t1.mul_ref(&self.e123)) - &(t2.mul_ref(&self.e3)))),
+                    );
+                    x.e2.add_ref(&y) + &y
+                },
+                e3: {
+                    let y = ((t0.mul_ref(&self.e123))
+                        - &((t1.mul_ref(&self.e1)) + &(t2.mul_ref(&self.e2))));
+                    x.e3.add_ref(&y) + &y
+                },
+                e123: ::core::clone::Clone::clone(&x.e123),
             }
         }
     }

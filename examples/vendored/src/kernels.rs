@@ -63,6 +63,21 @@ impl<T: self::Ring> Vector<T> {
     {
         self::Apply::apply(self, x)
     }
+    /// `self x rev(self)` for a unit versor (`self rev(self) = 1`), cheaper than
+    /// [`Self::apply`]: `x + (self x - x self) rev(self)`. Not the action otherwise.
+    pub fn apply_unit<X>(&self, x: &X) -> X
+    where
+        Self: self::UnitAction<X>,
+    {
+        self::UnitAction::apply_unit(self, x)
+    }
+    /// `rev(self) x self` for a unit versor, as `x + (rev(self) x - x rev(self)) self`.
+    pub fn sandwich_unit<X>(&self, x: &X) -> X
+    where
+        Self: self::UnitAction<X>,
+    {
+        self::UnitAction::sandwich_unit(self, x)
+    }
     /// The matrix of the action `x ↦ self x rev(self)` on `X` (see `ActionMatrix`):
     /// `let m = motor.apply_matrix::<Point<f64>>();` then `Motor::transform(&m, &p)`
     /// per point equals `motor.apply(&p)`.
@@ -525,6 +540,21 @@ impl<T: self::Ring> Rotor<T> {
         Self: self::Apply<X>,
     {
         self::Apply::apply(self, x)
+    }
+    /// `self x rev(self)` for a unit versor (`self rev(self) = 1`), cheaper than
+    /// [`Self::apply`]: `x + (self x - x self) rev(self)`. Not the action otherwise.
+    pub fn apply_unit<X>(&self, x: &X) -> X
+    where
+        Self: self::UnitAction<X>,
+    {
+        self::UnitAction::apply_unit(self, x)
+    }
+    /// `rev(self) x self` for a unit versor, as `x + (rev(self) x - x rev(self)) self`.
+    pub fn sandwich_unit<X>(&self, x: &X) -> X
+    where
+        Self: self::UnitAction<X>,
+    {
+        self::UnitAction::sandwich_unit(self, x)
     }
     /// The matrix of the action `x ↦ self x rev(self)` on `X` (see `ActionMatrix`):
     /// `let m = motor.apply_matrix::<Point<f64>>();` then `Motor::transform(&m, &p)`
@@ -1050,6 +1080,21 @@ impl<T: self::Ring> Odd<T> {
         Self: self::Apply<X>,
     {
         self::Apply::apply(self, x)
+    }
+    /// `self x rev(self)` for a unit versor (`self rev(self) = 1`), cheaper than
+    /// [`Self::apply`]: `x + (self x - x self) rev(self)`. Not the action otherwise.
+    pub fn apply_unit<X>(&self, x: &X) -> X
+    where
+        Self: self::UnitAction<X>,
+    {
+        self::UnitAction::apply_unit(self, x)
+    }
+    /// `rev(self) x self` for a unit versor, as `x + (rev(self) x - x rev(self)) self`.
+    pub fn sandwich_unit<X>(&self, x: &X) -> X
+    where
+        Self: self::UnitAction<X>,
+    {
+        self::UnitAction::sandwich_unit(self, x)
     }
     /// The matrix of the action `x ↦ self x rev(self)` on `X` (see `ActionMatrix`):
     /// `let m = motor.apply_matrix::<Point<f64>>();` then `Motor::transform(&m, &p)`
@@ -1593,6 +1638,21 @@ impl<T: self::Ring> Multivector<T> {
         Self: self::Apply<X>,
     {
         self::Apply::apply(self, x)
+    }
+    /// `self x rev(self)` for a unit versor (`self rev(self) = 1`), cheaper than
+    /// [`Self::apply`]: `x + (self x - x self) rev(self)`. Not the action otherwise.
+    pub fn apply_unit<X>(&self, x: &X) -> X
+    where
+        Self: self::UnitAction<X>,
+    {
+        self::UnitAction::apply_unit(self, x)
+    }
+    /// `rev(self) x self` for a unit versor, as `x + (rev(self) x - x rev(self)) self`.
+    pub fn sandwich_unit<X>(&self, x: &X) -> X
+    where
+        Self: self::UnitAction<X>,
+    {
+        self::UnitAction::sandwich_unit(self, x)
     }
     /// The matrix of the action `x ↦ self x rev(self)` on `X` (see `ActionMatrix`):
     /// `let m = motor.apply_matrix::<Point<f64>>();` then `Motor::transform(&m, &p)`
@@ -8065,18 +8125,18 @@ impl<T: self::Ring> self::Sandwich<Vector<T>> for Vector<T> {
     ///`rev(self) x self` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
     #[inline]
     fn sandwich(&self, x: &Vector<T>) -> Vector<T> {
-        let t0 = (self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2))
-            + &(self.e3.mul_ref(&x.e3));
-        let t1 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1));
-        let t2 = (self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1));
-        let t3 = (self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2));
+        let t0 = ((self.e1.mul_ref(&x.e1))
+            + &((self.e2.mul_ref(&x.e2)) + &(self.e3.mul_ref(&x.e3))));
+        let t1 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
+        let t2 = ((self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1)));
+        let t3 = ((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2)));
         Vector {
-            e1: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
-                + &(t2.mul_ref(&self.e3)),
-            e2: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
-                + &(t3.mul_ref(&self.e3)),
-            e3: (t0.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e1))
-                - &(t3.mul_ref(&self.e2)),
+            e1: ((t0.mul_ref(&self.e1))
+                + &((t1.mul_ref(&self.e2)) + &(t2.mul_ref(&self.e3)))),
+            e2: ((t0.mul_ref(&self.e2))
+                - &((t1.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e3)))),
+            e3: ((t0.mul_ref(&self.e3))
+                - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
         }
     }
 }
@@ -8085,18 +8145,18 @@ impl<T: self::Ring> self::Apply<Vector<T>> for Vector<T> {
     ///`self x rev(self)` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
     #[inline]
     fn apply(&self, x: &Vector<T>) -> Vector<T> {
-        let t0 = (self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2))
-            + &(self.e3.mul_ref(&x.e3));
-        let t1 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1));
-        let t2 = (self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1));
-        let t3 = (self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2));
+        let t0 = ((self.e1.mul_ref(&x.e1))
+            + &((self.e2.mul_ref(&x.e2)) + &(self.e3.mul_ref(&x.e3))));
+        let t1 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
+        let t2 = ((self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1)));
+        let t3 = ((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2)));
         Vector {
-            e1: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
-                + &(t2.mul_ref(&self.e3)),
-            e2: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
-                + &(t3.mul_ref(&self.e3)),
-            e3: (t0.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e1))
-                - &(t3.mul_ref(&self.e2)),
+            e1: ((t0.mul_ref(&self.e1))
+                + &((t1.mul_ref(&self.e2)) + &(t2.mul_ref(&self.e3)))),
+            e2: ((t0.mul_ref(&self.e2))
+                - &((t1.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e3)))),
+            e3: ((t0.mul_ref(&self.e3))
+                - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
         }
     }
 }
@@ -8105,23 +8165,23 @@ impl<T: self::Ring> self::Sandwich<Rotor<T>> for Vector<T> {
     ///`rev(self) x self` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
     #[inline]
     fn sandwich(&self, x: &Rotor<T>) -> Rotor<T> {
-        let t0 = (self.e1.mul_ref(&x.scalar)) - &(self.e2.mul_ref(&x.e12))
-            - &(self.e3.mul_ref(&x.e13));
-        let t1 = (self.e1.mul_ref(&x.e12)) + &(self.e2.mul_ref(&x.scalar))
-            - &(self.e3.mul_ref(&x.e23));
-        let t2 = (self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23))
-            + &(self.e3.mul_ref(&x.scalar));
-        let t3 = (self.e1.mul_ref(&x.e23)) - &(self.e2.mul_ref(&x.e13))
-            + &(self.e3.mul_ref(&x.e12));
+        let t0 = ((self.e1.mul_ref(&x.scalar))
+            - &((self.e2.mul_ref(&x.e12)) + &(self.e3.mul_ref(&x.e13))));
+        let t1 = ((self.e1.mul_ref(&x.e12))
+            + &((self.e2.mul_ref(&x.scalar)) - &(self.e3.mul_ref(&x.e23))));
+        let t2 = ((self.e1.mul_ref(&x.e13))
+            + &((self.e2.mul_ref(&x.e23)) + &(self.e3.mul_ref(&x.scalar))));
+        let t3 = ((self.e1.mul_ref(&x.e23))
+            - &((self.e2.mul_ref(&x.e13)) - &(self.e3.mul_ref(&x.e12))));
         Rotor {
-            scalar: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
-                + &(t2.mul_ref(&self.e3)),
-            e12: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
-                + &(t3.mul_ref(&self.e3)),
-            e13: (t0.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e1))
-                - &(t3.mul_ref(&self.e2)),
-            e23: (t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e2))
-                + &(t3.mul_ref(&self.e1)),
+            scalar: ((t0.mul_ref(&self.e1))
+                + &((t1.mul_ref(&self.e2)) + &(t2.mul_ref(&self.e3)))),
+            e12: ((t0.mul_ref(&self.e2))
+                - &((t1.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e3)))),
+            e13: ((t0.mul_ref(&self.e3))
+                - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
+            e23: ((t1.mul_ref(&self.e3))
+                - &((t2.mul_ref(&self.e2)) - &(t3.mul_ref(&self.e1)))),
         }
     }
 }
@@ -8130,23 +8190,23 @@ impl<T: self::Ring> self::Apply<Rotor<T>> for Vector<T> {
     ///`self x rev(self)` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
     #[inline]
     fn apply(&self, x: &Rotor<T>) -> Rotor<T> {
-        let t0 = (self.e1.mul_ref(&x.scalar)) - &(self.e2.mul_ref(&x.e12))
-            - &(self.e3.mul_ref(&x.e13));
-        let t1 = (self.e1.mul_ref(&x.e12)) + &(self.e2.mul_ref(&x.scalar))
-            - &(self.e3.mul_ref(&x.e23));
-        let t2 = (self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23))
-            + &(self.e3.mul_ref(&x.scalar));
-        let t3 = (self.e1.mul_ref(&x.e23)) - &(self.e2.mul_ref(&x.e13))
-            + &(self.e3.mul_ref(&x.e12));
+        let t0 = ((self.e1.mul_ref(&x.scalar))
+            - &((self.e2.mul_ref(&x.e12)) + &(self.e3.mul_ref(&x.e13))));
+        let t1 = ((self.e1.mul_ref(&x.e12))
+            + &((self.e2.mul_ref(&x.scalar)) - &(self.e3.mul_ref(&x.e23))));
+        let t2 = ((self.e1.mul_ref(&x.e13))
+            + &((self.e2.mul_ref(&x.e23)) + &(self.e3.mul_ref(&x.scalar))));
+        let t3 = ((self.e1.mul_ref(&x.e23))
+            - &((self.e2.mul_ref(&x.e13)) - &(self.e3.mul_ref(&x.e12))));
         Rotor {
-            scalar: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
-                + &(t2.mul_ref(&self.e3)),
-            e12: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
-                + &(t3.mul_ref(&self.e3)),
-            e13: (t0.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e1))
-                - &(t3.mul_ref(&self.e2)),
-            e23: (t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e2))
-                + &(t3.mul_ref(&self.e1)),
+            scalar: ((t0.mul_ref(&self.e1))
+                + &((t1.mul_ref(&self.e2)) + &(t2.mul_ref(&self.e3)))),
+            e12: ((t0.mul_ref(&self.e2))
+                - &((t1.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e3)))),
+            e13: ((t0.mul_ref(&self.e3))
+                - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
+            e23: ((t1.mul_ref(&self.e3))
+                - &((t2.mul_ref(&self.e2)) - &(t3.mul_ref(&self.e1)))),
         }
     }
 }
@@ -8155,23 +8215,23 @@ impl<T: self::Ring> self::Sandwich<Odd<T>> for Vector<T> {
     ///`rev(self) x self` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
     #[inline]
     fn sandwich(&self, x: &Odd<T>) -> Odd<T> {
-        let t0 = (self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2))
-            + &(self.e3.mul_ref(&x.e3));
-        let t1 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1))
-            + &(self.e3.mul_ref(&x.e123));
-        let t2 = (self.e1.mul_ref(&x.e3)) - &(self.e2.mul_ref(&x.e123))
-            - &(self.e3.mul_ref(&x.e1));
-        let t3 = (self.e1.mul_ref(&x.e123)) + &(self.e2.mul_ref(&x.e3))
-            - &(self.e3.mul_ref(&x.e2));
+        let t0 = ((self.e1.mul_ref(&x.e1))
+            + &((self.e2.mul_ref(&x.e2)) + &(self.e3.mul_ref(&x.e3))));
+        let t1 = ((self.e1.mul_ref(&x.e2))
+            - &((self.e2.mul_ref(&x.e1)) - &(self.e3.mul_ref(&x.e123))));
+        let t2 = ((self.e1.mul_ref(&x.e3))
+            - &((self.e2.mul_ref(&x.e123)) + &(self.e3.mul_ref(&x.e1))));
+        let t3 = ((self.e1.mul_ref(&x.e123))
+            + &((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2))));
         Odd {
-            e1: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
-                + &(t2.mul_ref(&self.e3)),
-            e2: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
-                + &(t3.mul_ref(&self.e3)),
-            e3: (t0.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e1))
-                - &(t3.mul_ref(&self.e2)),
-            e123: (t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e2))
-                + &(t3.mul_ref(&self.e1)),
+            e1: ((t0.mul_ref(&self.e1))
+                + &((t1.mul_ref(&self.e2)) + &(t2.mul_ref(&self.e3)))),
+            e2: ((t0.mul_ref(&self.e2))
+                - &((t1.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e3)))),
+            e3: ((t0.mul_ref(&self.e3))
+                - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
+            e123: ((t1.mul_ref(&self.e3))
+                - &((t2.mul_ref(&self.e2)) - &(t3.mul_ref(&self.e1)))),
         }
     }
 }
@@ -8180,23 +8240,23 @@ impl<T: self::Ring> self::Apply<Odd<T>> for Vector<T> {
     ///`self x rev(self)` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
     #[inline]
     fn apply(&self, x: &Odd<T>) -> Odd<T> {
-        let t0 = (self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2))
-            + &(self.e3.mul_ref(&x.e3));
-        let t1 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1))
-            + &(self.e3.mul_ref(&x.e123));
-        let t2 = (self.e1.mul_ref(&x.e3)) - &(self.e2.mul_ref(&x.e123))
-            - &(self.e3.mul_ref(&x.e1));
-        let t3 = (self.e1.mul_ref(&x.e123)) + &(self.e2.mul_ref(&x.e3))
-            - &(self.e3.mul_ref(&x.e2));
+        let t0 = ((self.e1.mul_ref(&x.e1))
+            + &((self.e2.mul_ref(&x.e2)) + &(self.e3.mul_ref(&x.e3))));
+        let t1 = ((self.e1.mul_ref(&x.e2))
+            - &((self.e2.mul_ref(&x.e1)) - &(self.e3.mul_ref(&x.e123))));
+        let t2 = ((self.e1.mul_ref(&x.e3))
+            - &((self.e2.mul_ref(&x.e123)) + &(self.e3.mul_ref(&x.e1))));
+        let t3 = ((self.e1.mul_ref(&x.e123))
+            + &((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2))));
         Odd {
-            e1: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
-                + &(t2.mul_ref(&self.e3)),
-            e2: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
-                + &(t3.mul_ref(&self.e3)),
-            e3: (t0.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e1))
-                - &(t3.mul_ref(&self.e2)),
-            e123: (t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e2))
-                + &(t3.mul_ref(&self.e1)),
+            e1: ((t0.mul_ref(&self.e1))
+                + &((t1.mul_ref(&self.e2)) + &(t2.mul_ref(&self.e3)))),
+            e2: ((t0.mul_ref(&self.e2))
+                - &((t1.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e3)))),
+            e3: ((t0.mul_ref(&self.e3))
+                - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
+            e123: ((t1.mul_ref(&self.e3))
+                - &((t2.mul_ref(&self.e2)) - &(t3.mul_ref(&self.e1)))),
         }
     }
 }
@@ -8205,21 +8265,23 @@ impl<T: self::Ring> self::Sandwich<Vector<T>> for Rotor<T> {
     ///`rev(self) x self` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
     #[inline]
     fn sandwich(&self, x: &Vector<T>) -> Vector<T> {
-        let t0 = (self.scalar.mul_ref(&x.e1)) - &(self.e12.mul_ref(&x.e2))
-            - &(self.e13.mul_ref(&x.e3));
-        let t1 = (self.scalar.mul_ref(&x.e2)) + &(self.e12.mul_ref(&x.e1))
-            - &(self.e23.mul_ref(&x.e3));
-        let t2 = (self.scalar.mul_ref(&x.e3)) + &(self.e13.mul_ref(&x.e1))
-            + &(self.e23.mul_ref(&x.e2));
-        let t3 = (self.e13.mul_ref(&x.e2)) - &(self.e12.mul_ref(&x.e3))
-            - &(self.e23.mul_ref(&x.e1));
+        let t0 = ((self.scalar.mul_ref(&x.e1))
+            - &((self.e12.mul_ref(&x.e2)) + &(self.e13.mul_ref(&x.e3))));
+        let t1 = ((self.scalar.mul_ref(&x.e2))
+            + &((self.e12.mul_ref(&x.e1)) - &(self.e23.mul_ref(&x.e3))));
+        let t2 = ((self.scalar.mul_ref(&x.e3))
+            + &((self.e13.mul_ref(&x.e1)) + &(self.e23.mul_ref(&x.e2))));
+        let t3 = self::Ring::neg_ref(
+            &((self.e12.mul_ref(&x.e3))
+                - &((self.e13.mul_ref(&x.e2)) - &(self.e23.mul_ref(&x.e1)))),
+        );
         Vector {
-            e1: (t0.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e12))
-                - &(t2.mul_ref(&self.e13)) - &(t3.mul_ref(&self.e23)),
-            e2: (t0.mul_ref(&self.e12)) + &(t1.mul_ref(&self.scalar))
-                - &(t2.mul_ref(&self.e23)) + &(t3.mul_ref(&self.e13)),
-            e3: (t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23))
-                + &(t2.mul_ref(&self.scalar)) - &(t3.mul_ref(&self.e12)),
+            e1: (((t0.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e12)))
+                - &((t2.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e23)))),
+            e2: (((t0.mul_ref(&self.e12)) + &(t1.mul_ref(&self.scalar)))
+                - &((t2.mul_ref(&self.e23)) - &(t3.mul_ref(&self.e13)))),
+            e3: (((t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23)))
+                + &((t2.mul_ref(&self.scalar)) - &(t3.mul_ref(&self.e12)))),
         }
     }
 }
@@ -8228,21 +8290,25 @@ impl<T: self::Ring> self::Apply<Vector<T>> for Rotor<T> {
     ///`self x rev(self)` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
     #[inline]
     fn apply(&self, x: &Vector<T>) -> Vector<T> {
-        let t0 = (self.scalar.mul_ref(&x.e1)) + &(self.e12.mul_ref(&x.e2))
-            + &(self.e13.mul_ref(&x.e3));
-        let t1 = (self.scalar.mul_ref(&x.e2)) - &(self.e12.mul_ref(&x.e1))
-            + &(self.e23.mul_ref(&x.e3));
-        let t2 = (self.scalar.mul_ref(&x.e3)) - &(self.e13.mul_ref(&x.e1))
-            - &(self.e23.mul_ref(&x.e2));
-        let t3 = (self.e12.mul_ref(&x.e3)) - &(self.e13.mul_ref(&x.e2))
-            + &(self.e23.mul_ref(&x.e1));
+        let t0 = ((self.scalar.mul_ref(&x.e1))
+            + &((self.e12.mul_ref(&x.e2)) + &(self.e13.mul_ref(&x.e3))));
+        let t1 = ((self.scalar.mul_ref(&x.e2))
+            - &((self.e12.mul_ref(&x.e1)) - &(self.e23.mul_ref(&x.e3))));
+        let t2 = ((self.scalar.mul_ref(&x.e3))
+            - &((self.e13.mul_ref(&x.e1)) + &(self.e23.mul_ref(&x.e2))));
+        let t3 = ((self.e12.mul_ref(&x.e3))
+            - &((self.e13.mul_ref(&x.e2)) - &(self.e23.mul_ref(&x.e1))));
         Vector {
-            e1: (t0.mul_ref(&self.scalar)) + &(t1.mul_ref(&self.e12))
-                + &(t2.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e23)),
-            e2: (t1.mul_ref(&self.scalar)) - &(t0.mul_ref(&self.e12))
-                + &(t2.mul_ref(&self.e23)) - &(t3.mul_ref(&self.e13)),
-            e3: (t2.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e23))
-                - &(t0.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e12)),
+            e1: (((t0.mul_ref(&self.scalar)) + &(t1.mul_ref(&self.e12)))
+                + &((t2.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e23)))),
+            e2: self::Ring::neg_ref(
+                &(((t0.mul_ref(&self.e12)) - &(t1.mul_ref(&self.scalar)))
+                    - &((t2.mul_ref(&self.e23)) - &(t3.mul_ref(&self.e13)))),
+            ),
+            e3: self::Ring::neg_ref(
+                &(((t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23)))
+                    - &((t2.mul_ref(&self.scalar)) + &(t3.mul_ref(&self.e12)))),
+            ),
         }
     }
 }
@@ -8251,23 +8317,23 @@ impl<T: self::Ring> self::Sandwich<Rotor<T>> for Rotor<T> {
     ///`rev(self) x self` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
     #[inline]
     fn sandwich(&self, x: &Rotor<T>) -> Rotor<T> {
-        let t0 = (self.scalar.mul_ref(&x.scalar)) + &(self.e12.mul_ref(&x.e12))
-            + &(self.e13.mul_ref(&x.e13)) + &(self.e23.mul_ref(&x.e23));
-        let t1 = (self.scalar.mul_ref(&x.e12)) - &(self.e12.mul_ref(&x.scalar))
-            + &(self.e13.mul_ref(&x.e23)) - &(self.e23.mul_ref(&x.e13));
-        let t2 = (self.scalar.mul_ref(&x.e13)) - &(self.e12.mul_ref(&x.e23))
-            - &(self.e13.mul_ref(&x.scalar)) + &(self.e23.mul_ref(&x.e12));
-        let t3 = (self.scalar.mul_ref(&x.e23)) + &(self.e12.mul_ref(&x.e13))
-            - &(self.e13.mul_ref(&x.e12)) - &(self.e23.mul_ref(&x.scalar));
+        let t0 = (((self.scalar.mul_ref(&x.scalar)) + &(self.e12.mul_ref(&x.e12)))
+            + &((self.e13.mul_ref(&x.e13)) + &(self.e23.mul_ref(&x.e23))));
+        let t1 = (((self.scalar.mul_ref(&x.e12)) - &(self.e12.mul_ref(&x.scalar)))
+            + &((self.e13.mul_ref(&x.e23)) - &(self.e23.mul_ref(&x.e13))));
+        let t2 = (((self.scalar.mul_ref(&x.e13)) - &(self.e12.mul_ref(&x.e23)))
+            - &((self.e13.mul_ref(&x.scalar)) - &(self.e23.mul_ref(&x.e12))));
+        let t3 = (((self.scalar.mul_ref(&x.e23)) + &(self.e12.mul_ref(&x.e13)))
+            - &((self.e13.mul_ref(&x.e12)) + &(self.e23.mul_ref(&x.scalar))));
         Rotor {
-            scalar: (t0.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e12))
-                - &(t2.mul_ref(&self.e13)) - &(t3.mul_ref(&self.e23)),
-            e12: (t0.mul_ref(&self.e12)) + &(t1.mul_ref(&self.scalar))
-                - &(t2.mul_ref(&self.e23)) + &(t3.mul_ref(&self.e13)),
-            e13: (t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23))
-                + &(t2.mul_ref(&self.scalar)) - &(t3.mul_ref(&self.e12)),
-            e23: (t0.mul_ref(&self.e23)) - &(t1.mul_ref(&self.e13))
-                + &(t2.mul_ref(&self.e12)) + &(t3.mul_ref(&self.scalar)),
+            scalar: (((t0.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e12)))
+                - &((t2.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e23)))),
+            e12: (((t0.mul_ref(&self.e12)) + &(t1.mul_ref(&self.scalar)))
+                - &((t2.mul_ref(&self.e23)) - &(t3.mul_ref(&self.e13)))),
+            e13: (((t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23)))
+                + &((t2.mul_ref(&self.scalar)) - &(t3.mul_ref(&self.e12)))),
+            e23: (((t0.mul_ref(&self.e23)) - &(t1.mul_ref(&self.e13)))
+                + &((t2.mul_ref(&self.e12)) + &(t3.mul_ref(&self.scalar)))),
         }
     }
 }
@@ -8276,23 +8342,29 @@ impl<T: self::Ring> self::Apply<Rotor<T>> for Rotor<T> {
     ///`self x rev(self)` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
     #[inline]
     fn apply(&self, x: &Rotor<T>) -> Rotor<T> {
-        let t0 = (self.scalar.mul_ref(&x.scalar)) - &(self.e12.mul_ref(&x.e12))
-            - &(self.e13.mul_ref(&x.e13)) - &(self.e23.mul_ref(&x.e23));
-        let t1 = (self.scalar.mul_ref(&x.e12)) + &(self.e12.mul_ref(&x.scalar))
-            - &(self.e13.mul_ref(&x.e23)) + &(self.e23.mul_ref(&x.e13));
-        let t2 = (self.scalar.mul_ref(&x.e13)) + &(self.e12.mul_ref(&x.e23))
-            + &(self.e13.mul_ref(&x.scalar)) - &(self.e23.mul_ref(&x.e12));
-        let t3 = (self.scalar.mul_ref(&x.e23)) - &(self.e12.mul_ref(&x.e13))
-            + &(self.e13.mul_ref(&x.e12)) + &(self.e23.mul_ref(&x.scalar));
+        let t0 = (((self.scalar.mul_ref(&x.scalar)) - &(self.e12.mul_ref(&x.e12)))
+            - &((self.e13.mul_ref(&x.e13)) + &(self.e23.mul_ref(&x.e23))));
+        let t1 = (((self.scalar.mul_ref(&x.e12)) + &(self.e12.mul_ref(&x.scalar)))
+            - &((self.e13.mul_ref(&x.e23)) - &(self.e23.mul_ref(&x.e13))));
+        let t2 = (((self.scalar.mul_ref(&x.e13)) + &(self.e12.mul_ref(&x.e23)))
+            + &((self.e13.mul_ref(&x.scalar)) - &(self.e23.mul_ref(&x.e12))));
+        let t3 = (((self.scalar.mul_ref(&x.e23)) - &(self.e12.mul_ref(&x.e13)))
+            + &((self.e13.mul_ref(&x.e12)) + &(self.e23.mul_ref(&x.scalar))));
         Rotor {
-            scalar: (t0.mul_ref(&self.scalar)) + &(t1.mul_ref(&self.e12))
-                + &(t2.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e23)),
-            e12: (t1.mul_ref(&self.scalar)) - &(t0.mul_ref(&self.e12))
-                + &(t2.mul_ref(&self.e23)) - &(t3.mul_ref(&self.e13)),
-            e13: (t2.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e23))
-                - &(t0.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e12)),
-            e23: (t1.mul_ref(&self.e13)) - &(t0.mul_ref(&self.e23))
-                - &(t2.mul_ref(&self.e12)) + &(t3.mul_ref(&self.scalar)),
+            scalar: (((t0.mul_ref(&self.scalar)) + &(t1.mul_ref(&self.e12)))
+                + &((t2.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e23)))),
+            e12: self::Ring::neg_ref(
+                &(((t0.mul_ref(&self.e12)) - &(t1.mul_ref(&self.scalar)))
+                    - &((t2.mul_ref(&self.e23)) - &(t3.mul_ref(&self.e13)))),
+            ),
+            e13: self::Ring::neg_ref(
+                &(((t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23)))
+                    - &((t2.mul_ref(&self.scalar)) + &(t3.mul_ref(&self.e12)))),
+            ),
+            e23: self::Ring::neg_ref(
+                &(((t0.mul_ref(&self.e23)) - &(t1.mul_ref(&self.e13)))
+                    + &((t2.mul_ref(&self.e12)) - &(t3.mul_ref(&self.scalar)))),
+            ),
         }
     }
 }
@@ -8301,23 +8373,23 @@ impl<T: self::Ring> self::Sandwich<Odd<T>> for Rotor<T> {
     ///`rev(self) x self` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
     #[inline]
     fn sandwich(&self, x: &Odd<T>) -> Odd<T> {
-        let t0 = (self.scalar.mul_ref(&x.e1)) - &(self.e12.mul_ref(&x.e2))
-            - &(self.e13.mul_ref(&x.e3)) + &(self.e23.mul_ref(&x.e123));
-        let t1 = (self.scalar.mul_ref(&x.e2)) + &(self.e12.mul_ref(&x.e1))
-            - &(self.e13.mul_ref(&x.e123)) - &(self.e23.mul_ref(&x.e3));
-        let t2 = (self.scalar.mul_ref(&x.e3)) + &(self.e12.mul_ref(&x.e123))
-            + &(self.e13.mul_ref(&x.e1)) + &(self.e23.mul_ref(&x.e2));
-        let t3 = (self.scalar.mul_ref(&x.e123)) - &(self.e12.mul_ref(&x.e3))
-            + &(self.e13.mul_ref(&x.e2)) - &(self.e23.mul_ref(&x.e1));
+        let t0 = (((self.scalar.mul_ref(&x.e1)) - &(self.e12.mul_ref(&x.e2)))
+            - &((self.e13.mul_ref(&x.e3)) - &(self.e23.mul_ref(&x.e123))));
+        let t1 = (((self.scalar.mul_ref(&x.e2)) + &(self.e12.mul_ref(&x.e1)))
+            - &((self.e13.mul_ref(&x.e123)) + &(self.e23.mul_ref(&x.e3))));
+        let t2 = (((self.scalar.mul_ref(&x.e3)) + &(self.e12.mul_ref(&x.e123)))
+            + &((self.e13.mul_ref(&x.e1)) + &(self.e23.mul_ref(&x.e2))));
+        let t3 = (((self.scalar.mul_ref(&x.e123)) - &(self.e12.mul_ref(&x.e3)))
+            + &((self.e13.mul_ref(&x.e2)) - &(self.e23.mul_ref(&x.e1))));
         Odd {
-            e1: (t0.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e12))
-                - &(t2.mul_ref(&self.e13)) - &(t3.mul_ref(&self.e23)),
-            e2: (t0.mul_ref(&self.e12)) + &(t1.mul_ref(&self.scalar))
-                - &(t2.mul_ref(&self.e23)) + &(t3.mul_ref(&self.e13)),
-            e3: (t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23))
-                + &(t2.mul_ref(&self.scalar)) - &(t3.mul_ref(&self.e12)),
-            e123: (t0.mul_ref(&self.e23)) - &(t1.mul_ref(&self.e13))
-                + &(t2.mul_ref(&self.e12)) + &(t3.mul_ref(&self.scalar)),
+            e1: (((t0.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e12)))
+                - &((t2.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e23)))),
+            e2: (((t0.mul_ref(&self.e12)) + &(t1.mul_ref(&self.scalar)))
+                - &((t2.mul_ref(&self.e23)) - &(t3.mul_ref(&self.e13)))),
+            e3: (((t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23)))
+                + &((t2.mul_ref(&self.scalar)) - &(t3.mul_ref(&self.e12)))),
+            e123: (((t0.mul_ref(&self.e23)) - &(t1.mul_ref(&self.e13)))
+                + &((t2.mul_ref(&self.e12)) + &(t3.mul_ref(&self.scalar)))),
         }
     }
 }
@@ -8326,23 +8398,29 @@ impl<T: self::Ring> self::Apply<Odd<T>> for Rotor<T> {
     ///`self x rev(self)` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
     #[inline]
     fn apply(&self, x: &Odd<T>) -> Odd<T> {
-        let t0 = (self.scalar.mul_ref(&x.e1)) + &(self.e12.mul_ref(&x.e2))
-            + &(self.e13.mul_ref(&x.e3)) - &(self.e23.mul_ref(&x.e123));
-        let t1 = (self.scalar.mul_ref(&x.e2)) - &(self.e12.mul_ref(&x.e1))
-            + &(self.e13.mul_ref(&x.e123)) + &(self.e23.mul_ref(&x.e3));
-        let t2 = (self.scalar.mul_ref(&x.e3)) - &(self.e12.mul_ref(&x.e123))
-            - &(self.e13.mul_ref(&x.e1)) - &(self.e23.mul_ref(&x.e2));
-        let t3 = (self.scalar.mul_ref(&x.e123)) + &(self.e12.mul_ref(&x.e3))
-            - &(self.e13.mul_ref(&x.e2)) + &(self.e23.mul_ref(&x.e1));
+        let t0 = (((self.scalar.mul_ref(&x.e1)) + &(self.e12.mul_ref(&x.e2)))
+            + &((self.e13.mul_ref(&x.e3)) - &(self.e23.mul_ref(&x.e123))));
+        let t1 = (((self.scalar.mul_ref(&x.e2)) - &(self.e12.mul_ref(&x.e1)))
+            + &((self.e13.mul_ref(&x.e123)) + &(self.e23.mul_ref(&x.e3))));
+        let t2 = (((self.scalar.mul_ref(&x.e3)) - &(self.e12.mul_ref(&x.e123)))
+            - &((self.e13.mul_ref(&x.e1)) + &(self.e23.mul_ref(&x.e2))));
+        let t3 = (((self.scalar.mul_ref(&x.e123)) + &(self.e12.mul_ref(&x.e3)))
+            - &((self.e13.mul_ref(&x.e2)) - &(self.e23.mul_ref(&x.e1))));
         Odd {
-            e1: (t0.mul_ref(&self.scalar)) + &(t1.mul_ref(&self.e12))
-                + &(t2.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e23)),
-            e2: (t1.mul_ref(&self.scalar)) - &(t0.mul_ref(&self.e12))
-                + &(t2.mul_ref(&self.e23)) - &(t3.mul_ref(&self.e13)),
-            e3: (t2.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e23))
-                - &(t0.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e12)),
-            e123: (t1.mul_ref(&self.e13)) - &(t0.mul_ref(&self.e23))
-                - &(t2.mul_ref(&self.e12)) + &(t3.mul_ref(&self.scalar)),
+            e1: (((t0.mul_ref(&self.scalar)) + &(t1.mul_ref(&self.e12)))
+                + &((t2.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e23)))),
+            e2: self::Ring::neg_ref(
+                &(((t0.mul_ref(&self.e12)) - &(t1.mul_ref(&self.scalar)))
+                    - &((t2.mul_ref(&self.e23)) - &(t3.mul_ref(&self.e13)))),
+            ),
+            e3: self::Ring::neg_ref(
+                &(((t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23)))
+                    - &((t2.mul_ref(&self.scalar)) + &(t3.mul_ref(&self.e12)))),
+            ),
+            e123: self::Ring::neg_ref(
+                &(((t0.mul_ref(&self.e23)) - &(t1.mul_ref(&self.e13)))
+                    + &((t2.mul_ref(&self.e12)) - &(t3.mul_ref(&self.scalar)))),
+            ),
         }
     }
 }
@@ -8351,21 +8429,21 @@ impl<T: self::Ring> self::Sandwich<Vector<T>> for Odd<T> {
     ///`rev(self) x self` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
     #[inline]
     fn sandwich(&self, x: &Vector<T>) -> Vector<T> {
-        let t0 = (self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2))
-            + &(self.e3.mul_ref(&x.e3));
-        let t1 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1))
-            - &(self.e123.mul_ref(&x.e3));
-        let t2 = (self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1))
-            + &(self.e123.mul_ref(&x.e2));
-        let t3 = (self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2))
-            - &(self.e123.mul_ref(&x.e1));
+        let t0 = ((self.e1.mul_ref(&x.e1))
+            + &((self.e2.mul_ref(&x.e2)) + &(self.e3.mul_ref(&x.e3))));
+        let t1 = ((self.e1.mul_ref(&x.e2))
+            - &((self.e2.mul_ref(&x.e1)) + &(self.e123.mul_ref(&x.e3))));
+        let t2 = ((self.e1.mul_ref(&x.e3))
+            - &((self.e3.mul_ref(&x.e1)) - &(self.e123.mul_ref(&x.e2))));
+        let t3 = ((self.e2.mul_ref(&x.e3))
+            - &((self.e3.mul_ref(&x.e2)) + &(self.e123.mul_ref(&x.e1))));
         Vector {
-            e1: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
-                + &(t2.mul_ref(&self.e3)) - &(t3.mul_ref(&self.e123)),
-            e2: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
-                + &(t2.mul_ref(&self.e123)) + &(t3.mul_ref(&self.e3)),
-            e3: (t0.mul_ref(&self.e3)) - &(t1.mul_ref(&self.e123))
-                - &(t2.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e2)),
+            e1: (((t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2)))
+                + &((t2.mul_ref(&self.e3)) - &(t3.mul_ref(&self.e123)))),
+            e2: (((t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1)))
+                + &((t2.mul_ref(&self.e123)) + &(t3.mul_ref(&self.e3)))),
+            e3: (((t0.mul_ref(&self.e3)) - &(t1.mul_ref(&self.e123)))
+                - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
         }
     }
 }
@@ -8374,21 +8452,21 @@ impl<T: self::Ring> self::Apply<Vector<T>> for Odd<T> {
     ///`self x rev(self)` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
     #[inline]
     fn apply(&self, x: &Vector<T>) -> Vector<T> {
-        let t0 = (self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2))
-            + &(self.e3.mul_ref(&x.e3));
-        let t1 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1))
-            + &(self.e123.mul_ref(&x.e3));
-        let t2 = (self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1))
-            - &(self.e123.mul_ref(&x.e2));
-        let t3 = (self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2))
-            + &(self.e123.mul_ref(&x.e1));
+        let t0 = ((self.e1.mul_ref(&x.e1))
+            + &((self.e2.mul_ref(&x.e2)) + &(self.e3.mul_ref(&x.e3))));
+        let t1 = ((self.e1.mul_ref(&x.e2))
+            - &((self.e2.mul_ref(&x.e1)) - &(self.e123.mul_ref(&x.e3))));
+        let t2 = ((self.e1.mul_ref(&x.e3))
+            - &((self.e3.mul_ref(&x.e1)) + &(self.e123.mul_ref(&x.e2))));
+        let t3 = ((self.e2.mul_ref(&x.e3))
+            - &((self.e3.mul_ref(&x.e2)) - &(self.e123.mul_ref(&x.e1))));
         Vector {
-            e1: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
-                + &(t2.mul_ref(&self.e3)) + &(t3.mul_ref(&self.e123)),
-            e2: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
-                - &(t2.mul_ref(&self.e123)) + &(t3.mul_ref(&self.e3)),
-            e3: (t0.mul_ref(&self.e3)) + &(t1.mul_ref(&self.e123))
-                - &(t2.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e2)),
+            e1: (((t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2)))
+                + &((t2.mul_ref(&self.e3)) + &(t3.mul_ref(&self.e123)))),
+            e2: (((t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1)))
+                - &((t2.mul_ref(&self.e123)) - &(t3.mul_ref(&self.e3)))),
+            e3: (((t0.mul_ref(&self.e3)) + &(t1.mul_ref(&self.e123)))
+                - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
         }
     }
 }
@@ -8397,23 +8475,23 @@ impl<T: self::Ring> self::Sandwich<Rotor<T>> for Odd<T> {
     ///`rev(self) x self` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
     #[inline]
     fn sandwich(&self, x: &Rotor<T>) -> Rotor<T> {
-        let t0 = (self.e1.mul_ref(&x.scalar)) - &(self.e2.mul_ref(&x.e12))
-            - &(self.e3.mul_ref(&x.e13)) + &(self.e123.mul_ref(&x.e23));
-        let t1 = (self.e1.mul_ref(&x.e12)) + &(self.e2.mul_ref(&x.scalar))
-            - &(self.e3.mul_ref(&x.e23)) - &(self.e123.mul_ref(&x.e13));
-        let t2 = (self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23))
-            + &(self.e3.mul_ref(&x.scalar)) + &(self.e123.mul_ref(&x.e12));
-        let t3 = (self.e1.mul_ref(&x.e23)) - &(self.e2.mul_ref(&x.e13))
-            + &(self.e3.mul_ref(&x.e12)) - &(self.e123.mul_ref(&x.scalar));
+        let t0 = (((self.e1.mul_ref(&x.scalar)) - &(self.e2.mul_ref(&x.e12)))
+            - &((self.e3.mul_ref(&x.e13)) - &(self.e123.mul_ref(&x.e23))));
+        let t1 = (((self.e1.mul_ref(&x.e12)) + &(self.e2.mul_ref(&x.scalar)))
+            - &((self.e3.mul_ref(&x.e23)) + &(self.e123.mul_ref(&x.e13))));
+        let t2 = (((self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23)))
+            + &((self.e3.mul_ref(&x.scalar)) + &(self.e123.mul_ref(&x.e12))));
+        let t3 = (((self.e1.mul_ref(&x.e23)) - &(self.e2.mul_ref(&x.e13)))
+            + &((self.e3.mul_ref(&x.e12)) - &(self.e123.mul_ref(&x.scalar))));
         Rotor {
-            scalar: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
-                + &(t2.mul_ref(&self.e3)) - &(t3.mul_ref(&self.e123)),
-            e12: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
-                + &(t2.mul_ref(&self.e123)) + &(t3.mul_ref(&self.e3)),
-            e13: (t0.mul_ref(&self.e3)) - &(t1.mul_ref(&self.e123))
-                - &(t2.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e2)),
-            e23: (t0.mul_ref(&self.e123)) + &(t1.mul_ref(&self.e3))
-                - &(t2.mul_ref(&self.e2)) + &(t3.mul_ref(&self.e1)),
+            scalar: (((t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2)))
+                + &((t2.mul_ref(&self.e3)) - &(t3.mul_ref(&self.e123)))),
+            e12: (((t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1)))
+                + &((t2.mul_ref(&self.e123)) + &(t3.mul_ref(&self.e3)))),
+            e13: (((t0.mul_ref(&self.e3)) - &(t1.mul_ref(&self.e123)))
+                - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
+            e23: (((t0.mul_ref(&self.e123)) + &(t1.mul_ref(&self.e3)))
+                - &((t2.mul_ref(&self.e2)) - &(t3.mul_ref(&self.e1)))),
         }
     }
 }
@@ -8422,23 +8500,25 @@ impl<T: self::Ring> self::Apply<Rotor<T>> for Odd<T> {
     ///`self x rev(self)` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
     #[inline]
     fn apply(&self, x: &Rotor<T>) -> Rotor<T> {
-        let t0 = (self.e1.mul_ref(&x.scalar)) - &(self.e2.mul_ref(&x.e12))
-            - &(self.e3.mul_ref(&x.e13)) - &(self.e123.mul_ref(&x.e23));
-        let t1 = (self.e1.mul_ref(&x.e12)) + &(self.e2.mul_ref(&x.scalar))
-            - &(self.e3.mul_ref(&x.e23)) + &(self.e123.mul_ref(&x.e13));
-        let t2 = (self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23))
-            + &(self.e3.mul_ref(&x.scalar)) - &(self.e123.mul_ref(&x.e12));
-        let t3 = (self.e1.mul_ref(&x.e23)) - &(self.e2.mul_ref(&x.e13))
-            + &(self.e3.mul_ref(&x.e12)) + &(self.e123.mul_ref(&x.scalar));
+        let t0 = (((self.e1.mul_ref(&x.scalar)) - &(self.e2.mul_ref(&x.e12)))
+            - &((self.e3.mul_ref(&x.e13)) + &(self.e123.mul_ref(&x.e23))));
+        let t1 = (((self.e1.mul_ref(&x.e12)) + &(self.e2.mul_ref(&x.scalar)))
+            - &((self.e3.mul_ref(&x.e23)) - &(self.e123.mul_ref(&x.e13))));
+        let t2 = (((self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23)))
+            + &((self.e3.mul_ref(&x.scalar)) - &(self.e123.mul_ref(&x.e12))));
+        let t3 = (((self.e1.mul_ref(&x.e23)) - &(self.e2.mul_ref(&x.e13)))
+            + &((self.e3.mul_ref(&x.e12)) + &(self.e123.mul_ref(&x.scalar))));
         Rotor {
-            scalar: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
-                + &(t2.mul_ref(&self.e3)) + &(t3.mul_ref(&self.e123)),
-            e12: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
-                - &(t2.mul_ref(&self.e123)) + &(t3.mul_ref(&self.e3)),
-            e13: (t0.mul_ref(&self.e3)) + &(t1.mul_ref(&self.e123))
-                - &(t2.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e2)),
-            e23: (t1.mul_ref(&self.e3)) - &(t0.mul_ref(&self.e123))
-                - &(t2.mul_ref(&self.e2)) + &(t3.mul_ref(&self.e1)),
+            scalar: (((t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2)))
+                + &((t2.mul_ref(&self.e3)) + &(t3.mul_ref(&self.e123)))),
+            e12: (((t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1)))
+                - &((t2.mul_ref(&self.e123)) - &(t3.mul_ref(&self.e3)))),
+            e13: (((t0.mul_ref(&self.e3)) + &(t1.mul_ref(&self.e123)))
+                - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
+            e23: self::Ring::neg_ref(
+                &(((t0.mul_ref(&self.e123)) - &(t1.mul_ref(&self.e3)))
+                    + &((t2.mul_ref(&self.e2)) - &(t3.mul_ref(&self.e1)))),
+            ),
         }
     }
 }
@@ -8447,23 +8527,23 @@ impl<T: self::Ring> self::Sandwich<Odd<T>> for Odd<T> {
     ///`rev(self) x self` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
     #[inline]
     fn sandwich(&self, x: &Odd<T>) -> Odd<T> {
-        let t0 = (self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2))
-            + &(self.e3.mul_ref(&x.e3)) + &(self.e123.mul_ref(&x.e123));
-        let t1 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1))
-            + &(self.e3.mul_ref(&x.e123)) - &(self.e123.mul_ref(&x.e3));
-        let t2 = (self.e1.mul_ref(&x.e3)) - &(self.e2.mul_ref(&x.e123))
-            - &(self.e3.mul_ref(&x.e1)) + &(self.e123.mul_ref(&x.e2));
-        let t3 = (self.e1.mul_ref(&x.e123)) + &(self.e2.mul_ref(&x.e3))
-            - &(self.e3.mul_ref(&x.e2)) - &(self.e123.mul_ref(&x.e1));
+        let t0 = (((self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2)))
+            + &((self.e3.mul_ref(&x.e3)) + &(self.e123.mul_ref(&x.e123))));
+        let t1 = (((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)))
+            + &((self.e3.mul_ref(&x.e123)) - &(self.e123.mul_ref(&x.e3))));
+        let t2 = (((self.e1.mul_ref(&x.e3)) - &(self.e2.mul_ref(&x.e123)))
+            - &((self.e3.mul_ref(&x.e1)) - &(self.e123.mul_ref(&x.e2))));
+        let t3 = (((self.e1.mul_ref(&x.e123)) + &(self.e2.mul_ref(&x.e3)))
+            - &((self.e3.mul_ref(&x.e2)) + &(self.e123.mul_ref(&x.e1))));
         Odd {
-            e1: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
-                + &(t2.mul_ref(&self.e3)) - &(t3.mul_ref(&self.e123)),
-            e2: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
-                + &(t2.mul_ref(&self.e123)) + &(t3.mul_ref(&self.e3)),
-            e3: (t0.mul_ref(&self.e3)) - &(t1.mul_ref(&self.e123))
-                - &(t2.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e2)),
-            e123: (t0.mul_ref(&self.e123)) + &(t1.mul_ref(&self.e3))
-                - &(t2.mul_ref(&self.e2)) + &(t3.mul_ref(&self.e1)),
+            e1: (((t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2)))
+                + &((t2.mul_ref(&self.e3)) - &(t3.mul_ref(&self.e123)))),
+            e2: (((t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1)))
+                + &((t2.mul_ref(&self.e123)) + &(t3.mul_ref(&self.e3)))),
+            e3: (((t0.mul_ref(&self.e3)) - &(t1.mul_ref(&self.e123)))
+                - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
+            e123: (((t0.mul_ref(&self.e123)) + &(t1.mul_ref(&self.e3)))
+                - &((t2.mul_ref(&self.e2)) - &(t3.mul_ref(&self.e1)))),
         }
     }
 }
@@ -8472,23 +8552,25 @@ impl<T: self::Ring> self::Apply<Odd<T>> for Odd<T> {
     ///`self x rev(self)` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
     #[inline]
     fn apply(&self, x: &Odd<T>) -> Odd<T> {
-        let t0 = (self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2))
-            + &(self.e3.mul_ref(&x.e3)) - &(self.e123.mul_ref(&x.e123));
-        let t1 = (self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1))
-            + &(self.e3.mul_ref(&x.e123)) + &(self.e123.mul_ref(&x.e3));
-        let t2 = (self.e1.mul_ref(&x.e3)) - &(self.e2.mul_ref(&x.e123))
-            - &(self.e3.mul_ref(&x.e1)) - &(self.e123.mul_ref(&x.e2));
-        let t3 = (self.e1.mul_ref(&x.e123)) + &(self.e2.mul_ref(&x.e3))
-            - &(self.e3.mul_ref(&x.e2)) + &(self.e123.mul_ref(&x.e1));
+        let t0 = (((self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2)))
+            + &((self.e3.mul_ref(&x.e3)) - &(self.e123.mul_ref(&x.e123))));
+        let t1 = (((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)))
+            + &((self.e3.mul_ref(&x.e123)) + &(self.e123.mul_ref(&x.e3))));
+        let t2 = (((self.e1.mul_ref(&x.e3)) - &(self.e2.mul_ref(&x.e123)))
+            - &((self.e3.mul_ref(&x.e1)) + &(self.e123.mul_ref(&x.e2))));
+        let t3 = (((self.e1.mul_ref(&x.e123)) + &(self.e2.mul_ref(&x.e3)))
+            - &((self.e3.mul_ref(&x.e2)) - &(self.e123.mul_ref(&x.e1))));
         Odd {
-            e1: (t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2))
-                + &(t2.mul_ref(&self.e3)) + &(t3.mul_ref(&self.e123)),
-            e2: (t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1))
-                - &(t2.mul_ref(&self.e123)) + &(t3.mul_ref(&self.e3)),
-            e3: (t0.mul_ref(&self.e3)) + &(t1.mul_ref(&self.e123))
-                - &(t2.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e2)),
-            e123: (t1.mul_ref(&self.e3)) - &(t0.mul_ref(&self.e123))
-                - &(t2.mul_ref(&self.e2)) + &(t3.mul_ref(&self.e1)),
+            e1: (((t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2)))
+                + &((t2.mul_ref(&self.e3)) + &(t3.mul_ref(&self.e123)))),
+            e2: (((t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1)))
+                - &((t2.mul_ref(&self.e123)) - &(t3.mul_ref(&self.e3)))),
+            e3: (((t0.mul_ref(&self.e3)) + &(t1.mul_ref(&self.e123)))
+                - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
+            e123: self::Ring::neg_ref(
+                &(((t0.mul_ref(&self.e123)) - &(t1.mul_ref(&self.e3)))
+                    + &((t2.mul_ref(&self.e2)) - &(t3.mul_ref(&self.e1)))),
+            ),
         }
     }
 }
@@ -9346,6 +9428,518 @@ impl<T: self::Ring> self::ActionMatrix<Odd<T>> for Odd<T> {
         }
     }
 }
+impl<T: self::Ring> self::UnitAction<Vector<T>> for Vector<T> {
+    /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
+    #[inline]
+    fn sandwich_unit(&self, x: &Vector<T>) -> Vector<T> {
+        let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
+        let t1 = ((self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1)));
+        let t2 = ((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2)));
+        Vector {
+            e1: {
+                let y = ((t0.mul_ref(&self.e2)) + &(t1.mul_ref(&self.e3)));
+                x.e1.add_ref(&y) + &y
+            },
+            e2: {
+                let y = self::Ring::neg_ref(
+                    &((t0.mul_ref(&self.e1)) - &(t2.mul_ref(&self.e3))),
+                );
+                x.e2.add_ref(&y) + &y
+            },
+            e3: {
+                let y = self::Ring::neg_ref(
+                    &((t1.mul_ref(&self.e1)) + &(t2.mul_ref(&self.e2))),
+                );
+                x.e3.add_ref(&y) + &y
+            },
+        }
+    }
+    /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
+    #[inline]
+    fn apply_unit(&self, x: &Vector<T>) -> Vector<T> {
+        let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
+        let t1 = ((self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1)));
+        let t2 = ((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2)));
+        Vector {
+            e1: {
+                let y = ((t0.mul_ref(&self.e2)) + &(t1.mul_ref(&self.e3)));
+                x.e1.add_ref(&y) + &y
+            },
+            e2: {
+                let y = self::Ring::neg_ref(
+                    &((t0.mul_ref(&self.e1)) - &(t2.mul_ref(&self.e3))),
+                );
+                x.e2.add_ref(&y) + &y
+            },
+            e3: {
+                let y = self::Ring::neg_ref(
+                    &((t1.mul_ref(&self.e1)) + &(t2.mul_ref(&self.e2))),
+                );
+                x.e3.add_ref(&y) + &y
+            },
+        }
+    }
+}
+impl<T: self::Ring> self::UnitAction<Rotor<T>> for Vector<T> {
+    /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
+    #[inline]
+    fn sandwich_unit(&self, x: &Rotor<T>) -> Rotor<T> {
+        let t0 = self::Ring::neg_ref(
+            &((self.e2.mul_ref(&x.e12)) + &(self.e3.mul_ref(&x.e13))),
+        );
+        let t1 = ((self.e1.mul_ref(&x.e12)) - &(self.e3.mul_ref(&x.e23)));
+        let t2 = ((self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23)));
+        Rotor {
+            scalar: ::core::clone::Clone::clone(&x.scalar),
+            e12: {
+                let y = ((t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1)));
+                x.e12.add_ref(&y) + &y
+            },
+            e13: {
+                let y = ((t0.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e1)));
+                x.e13.add_ref(&y) + &y
+            },
+            e23: {
+                let y = ((t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e2)));
+                x.e23.add_ref(&y) + &y
+            },
+        }
+    }
+    /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
+    #[inline]
+    fn apply_unit(&self, x: &Rotor<T>) -> Rotor<T> {
+        let t0 = self::Ring::neg_ref(
+            &((self.e2.mul_ref(&x.e12)) + &(self.e3.mul_ref(&x.e13))),
+        );
+        let t1 = ((self.e1.mul_ref(&x.e12)) - &(self.e3.mul_ref(&x.e23)));
+        let t2 = ((self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23)));
+        Rotor {
+            scalar: ::core::clone::Clone::clone(&x.scalar),
+            e12: {
+                let y = ((t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1)));
+                x.e12.add_ref(&y) + &y
+            },
+            e13: {
+                let y = ((t0.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e1)));
+                x.e13.add_ref(&y) + &y
+            },
+            e23: {
+                let y = ((t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e2)));
+                x.e23.add_ref(&y) + &y
+            },
+        }
+    }
+}
+impl<T: self::Ring> self::UnitAction<Odd<T>> for Vector<T> {
+    /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
+    #[inline]
+    fn sandwich_unit(&self, x: &Odd<T>) -> Odd<T> {
+        let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
+        let t1 = ((self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1)));
+        let t2 = ((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2)));
+        Odd {
+            e1: {
+                let y = ((t0.mul_ref(&self.e2)) + &(t1.mul_ref(&self.e3)));
+                x.e1.add_ref(&y) + &y
+            },
+            e2: {
+                let y = self::Ring::neg_ref(
+                    &((t0.mul_ref(&self.e1)) - &(t2.mul_ref(&self.e3))),
+                );
+                x.e2.add_ref(&y) + &y
+            },
+            e3: {
+                let y = self::Ring::neg_ref(
+                    &((t1.mul_ref(&self.e1)) + &(t2.mul_ref(&self.e2))),
+                );
+                x.e3.add_ref(&y) + &y
+            },
+            e123: ::core::clone::Clone::clone(&x.e123),
+        }
+    }
+    /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
+    #[inline]
+    fn apply_unit(&self, x: &Odd<T>) -> Odd<T> {
+        let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
+        let t1 = ((self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1)));
+        let t2 = ((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2)));
+        Odd {
+            e1: {
+                let y = ((t0.mul_ref(&self.e2)) + &(t1.mul_ref(&self.e3)));
+                x.e1.add_ref(&y) + &y
+            },
+            e2: {
+                let y = self::Ring::neg_ref(
+                    &((t0.mul_ref(&self.e1)) - &(t2.mul_ref(&self.e3))),
+                );
+                x.e2.add_ref(&y) + &y
+            },
+            e3: {
+                let y = self::Ring::neg_ref(
+                    &((t1.mul_ref(&self.e1)) + &(t2.mul_ref(&self.e2))),
+                );
+                x.e3.add_ref(&y) + &y
+            },
+            e123: ::core::clone::Clone::clone(&x.e123),
+        }
+    }
+}
+impl<T: self::Ring> self::UnitAction<Vector<T>> for Rotor<T> {
+    /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
+    #[inline]
+    fn sandwich_unit(&self, x: &Vector<T>) -> Vector<T> {
+        let t0 = self::Ring::neg_ref(
+            &((self.e12.mul_ref(&x.e2)) + &(self.e13.mul_ref(&x.e3))),
+        );
+        let t1 = ((self.e12.mul_ref(&x.e1)) - &(self.e23.mul_ref(&x.e3)));
+        let t2 = ((self.e13.mul_ref(&x.e1)) + &(self.e23.mul_ref(&x.e2)));
+        Vector {
+            e1: {
+                let y = ((t0.mul_ref(&self.scalar))
+                    - &((t1.mul_ref(&self.e12)) + &(t2.mul_ref(&self.e13))));
+                x.e1.add_ref(&y) + &y
+            },
+            e2: {
+                let y = ((t0.mul_ref(&self.e12))
+                    + &((t1.mul_ref(&self.scalar)) - &(t2.mul_ref(&self.e23))));
+                x.e2.add_ref(&y) + &y
+            },
+            e3: {
+                let y = ((t0.mul_ref(&self.e13))
+                    + &((t1.mul_ref(&self.e23)) + &(t2.mul_ref(&self.scalar))));
+                x.e3.add_ref(&y) + &y
+            },
+        }
+    }
+    /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
+    #[inline]
+    fn apply_unit(&self, x: &Vector<T>) -> Vector<T> {
+        let t0 = ((self.e12.mul_ref(&x.e2)) + &(self.e13.mul_ref(&x.e3)));
+        let t1 = self::Ring::neg_ref(
+            &((self.e12.mul_ref(&x.e1)) - &(self.e23.mul_ref(&x.e3))),
+        );
+        let t2 = self::Ring::neg_ref(
+            &((self.e13.mul_ref(&x.e1)) + &(self.e23.mul_ref(&x.e2))),
+        );
+        Vector {
+            e1: {
+                let y = ((t0.mul_ref(&self.scalar))
+                    + &((t1.mul_ref(&self.e12)) + &(t2.mul_ref(&self.e13))));
+                x.e1.add_ref(&y) + &y
+            },
+            e2: {
+                let y = self::Ring::neg_ref(
+                    &((t0.mul_ref(&self.e12))
+                        - &((t1.mul_ref(&self.scalar)) + &(t2.mul_ref(&self.e23)))),
+                );
+                x.e2.add_ref(&y) + &y
+            },
+            e3: {
+                let y = self::Ring::neg_ref(
+                    &((t0.mul_ref(&self.e13))
+                        + &((t1.mul_ref(&self.e23)) - &(t2.mul_ref(&self.scalar)))),
+                );
+                x.e3.add_ref(&y) + &y
+            },
+        }
+    }
+}
+impl<T: self::Ring> self::UnitAction<Rotor<T>> for Rotor<T> {
+    /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
+    #[inline]
+    fn sandwich_unit(&self, x: &Rotor<T>) -> Rotor<T> {
+        let t0 = ((self.e13.mul_ref(&x.e23)) - &(self.e23.mul_ref(&x.e13)));
+        let t1 = self::Ring::neg_ref(
+            &((self.e12.mul_ref(&x.e23)) - &(self.e23.mul_ref(&x.e12))),
+        );
+        let t2 = ((self.e12.mul_ref(&x.e13)) - &(self.e13.mul_ref(&x.e12)));
+        Rotor {
+            scalar: ::core::clone::Clone::clone(&x.scalar),
+            e12: {
+                let y = ((t0.mul_ref(&self.scalar))
+                    - &((t1.mul_ref(&self.e23)) - &(t2.mul_ref(&self.e13))));
+                x.e12.add_ref(&y) + &y
+            },
+            e13: {
+                let y = ((t0.mul_ref(&self.e23))
+                    + &((t1.mul_ref(&self.scalar)) - &(t2.mul_ref(&self.e12))));
+                x.e13.add_ref(&y) + &y
+            },
+            e23: {
+                let y = self::Ring::neg_ref(
+                    &((t0.mul_ref(&self.e13))
+                        - &((t1.mul_ref(&self.e12)) + &(t2.mul_ref(&self.scalar)))),
+                );
+                x.e23.add_ref(&y) + &y
+            },
+        }
+    }
+    /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
+    #[inline]
+    fn apply_unit(&self, x: &Rotor<T>) -> Rotor<T> {
+        let t0 = self::Ring::neg_ref(
+            &((self.e13.mul_ref(&x.e23)) - &(self.e23.mul_ref(&x.e13))),
+        );
+        let t1 = ((self.e12.mul_ref(&x.e23)) - &(self.e23.mul_ref(&x.e12)));
+        let t2 = self::Ring::neg_ref(
+            &((self.e12.mul_ref(&x.e13)) - &(self.e13.mul_ref(&x.e12))),
+        );
+        Rotor {
+            scalar: ::core::clone::Clone::clone(&x.scalar),
+            e12: {
+                let y = ((t0.mul_ref(&self.scalar))
+                    + &((t1.mul_ref(&self.e23)) - &(t2.mul_ref(&self.e13))));
+                x.e12.add_ref(&y) + &y
+            },
+            e13: {
+                let y = self::Ring::neg_ref(
+                    &((t0.mul_ref(&self.e23))
+                        - &((t1.mul_ref(&self.scalar)) + &(t2.mul_ref(&self.e12)))),
+                );
+                x.e13.add_ref(&y) + &y
+            },
+            e23: {
+                let y = ((t0.mul_ref(&self.e13))
+                    - &((t1.mul_ref(&self.e12)) - &(t2.mul_ref(&self.scalar))));
+                x.e23.add_ref(&y) + &y
+            },
+        }
+    }
+}
+impl<T: self::Ring> self::UnitAction<Odd<T>> for Rotor<T> {
+    /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
+    #[inline]
+    fn sandwich_unit(&self, x: &Odd<T>) -> Odd<T> {
+        let t0 = self::Ring::neg_ref(
+            &((self.e12.mul_ref(&x.e2)) + &(self.e13.mul_ref(&x.e3))),
+        );
+        let t1 = ((self.e12.mul_ref(&x.e1)) - &(self.e23.mul_ref(&x.e3)));
+        let t2 = ((self.e13.mul_ref(&x.e1)) + &(self.e23.mul_ref(&x.e2)));
+        Odd {
+            e1: {
+                let y = ((t0.mul_ref(&self.scalar))
+                    - &((t1.mul_ref(&self.e12)) + &(t2.mul_ref(&self.e13))));
+                x.e1.add_ref(&y) + &y
+            },
+            e2: {
+                let y = ((t0.mul_ref(&self.e12))
+                    + &((t1.mul_ref(&self.scalar)) - &(t2.mul_ref(&self.e23))));
+                x.e2.add_ref(&y) + &y
+            },
+            e3: {
+                let y = ((t0.mul_ref(&self.e13))
+                    + &((t1.mul_ref(&self.e23)) + &(t2.mul_ref(&self.scalar))));
+                x.e3.add_ref(&y) + &y
+            },
+            e123: ::core::clone::Clone::clone(&x.e123),
+        }
+    }
+    /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
+    #[inline]
+    fn apply_unit(&self, x: &Odd<T>) -> Odd<T> {
+        let t0 = ((self.e12.mul_ref(&x.e2)) + &(self.e13.mul_ref(&x.e3)));
+        let t1 = self::Ring::neg_ref(
+            &((self.e12.mul_ref(&x.e1)) - &(self.e23.mul_ref(&x.e3))),
+        );
+        let t2 = self::Ring::neg_ref(
+            &((self.e13.mul_ref(&x.e1)) + &(self.e23.mul_ref(&x.e2))),
+        );
+        Odd {
+            e1: {
+                let y = ((t0.mul_ref(&self.scalar))
+                    + &((t1.mul_ref(&self.e12)) + &(t2.mul_ref(&self.e13))));
+                x.e1.add_ref(&y) + &y
+            },
+            e2: {
+                let y = self::Ring::neg_ref(
+                    &((t0.mul_ref(&self.e12))
+                        - &((t1.mul_ref(&self.scalar)) + &(t2.mul_ref(&self.e23)))),
+                );
+                x.e2.add_ref(&y) + &y
+            },
+            e3: {
+                let y = self::Ring::neg_ref(
+                    &((t0.mul_ref(&self.e13))
+                        + &((t1.mul_ref(&self.e23)) - &(t2.mul_ref(&self.scalar)))),
+                );
+                x.e3.add_ref(&y) + &y
+            },
+            e123: ::core::clone::Clone::clone(&x.e123),
+        }
+    }
+}
+impl<T: self::Ring> self::UnitAction<Vector<T>> for Odd<T> {
+    /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
+    #[inline]
+    fn sandwich_unit(&self, x: &Vector<T>) -> Vector<T> {
+        let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
+        let t1 = ((self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1)));
+        let t2 = ((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2)));
+        Vector {
+            e1: {
+                let y = ((t0.mul_ref(&self.e2))
+                    + &((t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e123))));
+                x.e1.add_ref(&y) + &y
+            },
+            e2: {
+                let y = self::Ring::neg_ref(
+                    &((t0.mul_ref(&self.e1))
+                        - &((t1.mul_ref(&self.e123)) + &(t2.mul_ref(&self.e3)))),
+                );
+                x.e2.add_ref(&y) + &y
+            },
+            e3: {
+                let y = self::Ring::neg_ref(
+                    &((t0.mul_ref(&self.e123))
+                        + &((t1.mul_ref(&self.e1)) + &(t2.mul_ref(&self.e2)))),
+                );
+                x.e3.add_ref(&y) + &y
+            },
+        }
+    }
+    /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
+    #[inline]
+    fn apply_unit(&self, x: &Vector<T>) -> Vector<T> {
+        let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
+        let t1 = ((self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1)));
+        let t2 = ((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2)));
+        Vector {
+            e1: {
+                let y = ((t0.mul_ref(&self.e2))
+                    + &((t1.mul_ref(&self.e3)) + &(t2.mul_ref(&self.e123))));
+                x.e1.add_ref(&y) + &y
+            },
+            e2: {
+                let y = self::Ring::neg_ref(
+                    &((t0.mul_ref(&self.e1))
+                        + &((t1.mul_ref(&self.e123)) - &(t2.mul_ref(&self.e3)))),
+                );
+                x.e2.add_ref(&y) + &y
+            },
+            e3: {
+                let y = ((t0.mul_ref(&self.e123))
+                    - &((t1.mul_ref(&self.e1)) + &(t2.mul_ref(&self.e2))));
+                x.e3.add_ref(&y) + &y
+            },
+        }
+    }
+}
+impl<T: self::Ring> self::UnitAction<Rotor<T>> for Odd<T> {
+    /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
+    #[inline]
+    fn sandwich_unit(&self, x: &Rotor<T>) -> Rotor<T> {
+        let t0 = self::Ring::neg_ref(
+            &((self.e2.mul_ref(&x.e12)) + &(self.e3.mul_ref(&x.e13))),
+        );
+        let t1 = ((self.e1.mul_ref(&x.e12)) - &(self.e3.mul_ref(&x.e23)));
+        let t2 = ((self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23)));
+        Rotor {
+            scalar: ::core::clone::Clone::clone(&x.scalar),
+            e12: {
+                let y = ((t0.mul_ref(&self.e2))
+                    - &((t1.mul_ref(&self.e1)) - &(t2.mul_ref(&self.e123))));
+                x.e12.add_ref(&y) + &y
+            },
+            e13: {
+                let y = ((t0.mul_ref(&self.e3))
+                    - &((t1.mul_ref(&self.e123)) + &(t2.mul_ref(&self.e1))));
+                x.e13.add_ref(&y) + &y
+            },
+            e23: {
+                let y = ((t0.mul_ref(&self.e123))
+                    + &((t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e2))));
+                x.e23.add_ref(&y) + &y
+            },
+        }
+    }
+    /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
+    #[inline]
+    fn apply_unit(&self, x: &Rotor<T>) -> Rotor<T> {
+        let t0 = self::Ring::neg_ref(
+            &((self.e2.mul_ref(&x.e12)) + &(self.e3.mul_ref(&x.e13))),
+        );
+        let t1 = ((self.e1.mul_ref(&x.e12)) - &(self.e3.mul_ref(&x.e23)));
+        let t2 = ((self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23)));
+        Rotor {
+            scalar: ::core::clone::Clone::clone(&x.scalar),
+            e12: {
+                let y = ((t0.mul_ref(&self.e2))
+                    - &((t1.mul_ref(&self.e1)) + &(t2.mul_ref(&self.e123))));
+                x.e12.add_ref(&y) + &y
+            },
+            e13: {
+                let y = ((t0.mul_ref(&self.e3))
+                    + &((t1.mul_ref(&self.e123)) - &(t2.mul_ref(&self.e1))));
+                x.e13.add_ref(&y) + &y
+            },
+            e23: {
+                let y = self::Ring::neg_ref(
+                    &((t0.mul_ref(&self.e123))
+                        - &((t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e2)))),
+                );
+                x.e23.add_ref(&y) + &y
+            },
+        }
+    }
+}
+impl<T: self::Ring> self::UnitAction<Odd<T>> for Odd<T> {
+    /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
+    #[inline]
+    fn sandwich_unit(&self, x: &Odd<T>) -> Odd<T> {
+        let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
+        let t1 = ((self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1)));
+        let t2 = ((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2)));
+        Odd {
+            e1: {
+                let y = ((t0.mul_ref(&self.e2))
+                    + &((t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e123))));
+                x.e1.add_ref(&y) + &y
+            },
+            e2: {
+                let y = self::Ring::neg_ref(
+                    &((t0.mul_ref(&self.e1))
+                        - &((t1.mul_ref(&self.e123)) + &(t2.mul_ref(&self.e3)))),
+                );
+                x.e2.add_ref(&y) + &y
+            },
+            e3: {
+                let y = self::Ring::neg_ref(
+                    &((t0.mul_ref(&self.e123))
+                        + &((t1.mul_ref(&self.e1)) + &(t2.mul_ref(&self.e2)))),
+                );
+                x.e3.add_ref(&y) + &y
+            },
+            e123: ::core::clone::Clone::clone(&x.e123),
+        }
+    }
+    /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
+    #[inline]
+    fn apply_unit(&self, x: &Odd<T>) -> Odd<T> {
+        let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
+        let t1 = ((self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1)));
+        let t2 = ((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2)));
+        Odd {
+            e1: {
+                let y = ((t0.mul_ref(&self.e2))
+                    + &((t1.mul_ref(&self.e3)) + &(t2.mul_ref(&self.e123))));
+                x.e1.add_ref(&y) + &y
+            },
+            e2: {
+                let y = self::Ring::neg_ref(
+                    &((t0.mul_ref(&self.e1))
+                        + &((t1.mul_ref(&self.e123)) - &(t2.mul_ref(&self.e3)))),
+                );
+                x.e2.add_ref(&y) + &y
+            },
+            e3: {
+                let y = ((t0.mul_ref(&self.e123))
+                    - &((t1.mul_ref(&self.e1)) + &(t2.mul_ref(&self.e2))));
+                x.e3.add_ref(&y) + &y
+            },
+            e123: ::core::clone::Clone::clone(&x.e123),
+        }
+    }
+}
 /// The geometric product `self * rhs`.
 pub trait GeometricProduct<Rhs: ?Sized> {
     /// The smallest declared type holding the result.
@@ -9447,6 +10041,18 @@ pub trait ActionMatrix<X> {
     fn apply_matrix(&self) -> Self::Matrix;
     /// The matrix applied to `x` (skipping entries that are structurally zero).
     fn transform(m: &Self::Matrix, x: &X) -> X;
+}
+/// The versor action for *unit* versors (`S rev(S) = 1`), typed and fused as [`Apply`] and
+/// [`Sandwich`] but cheaper: since `x S rev(S) = x`, the action is `x + (S x - x S) rev(S)`,
+/// and the commutator drops every part of `S` that commutes with `x`. Exact over any ring when
+/// `S rev(S) = 1` holds exactly; for other versors the result is not the action. Generated for
+/// every pair with a fused kernel (`apply_unit`/`sandwich_unit`; an example is in `gam_algebras`'
+/// crate docs).
+pub trait UnitAction<X> {
+    /// `rev(self) x self` ([`Sandwich`]) for a unit `self`.
+    fn sandwich_unit(&self, x: &X) -> X;
+    /// `self x rev(self)` ([`Apply`]) for a unit `self`.
+    fn apply_unit(&self, x: &X) -> X;
 }
 /// algebra-core's `Ring`, reduced to the methods the kernels call; implemented below for `f32` and `f64`.
 pub trait Ring: Clone + Debug + Display + PartialEq + Add<

@@ -1,0 +1,177 @@
+//! The versor action specialised to *unit* versors (`S rev(S) = 1`): `apply_unit` and
+//! `sandwich_unit`.
+//!
+//! For a unit versor `x S rev(S) = x`, so
+//!
+//! - `S x rev(S) = x + (S x - x S) rev(S)` (`apply_unit`), and
+//! - `rev(S) x S = x + (rev(S) x - x rev(S)) S` (`sandwich_unit`).
+//!
+//! The commutator `S x - x S` drops every term of `S` that commutes with `x` (the scalar
+//! always, the pseudoscalar of an odd-dimensional algebra, ...), and output components whose
+//! correction expands to the zero polynomial are copied from `x` (the weight of a PGA point).
+//! This is the structural form of Rodrigues' `v + 2 w (q × v) + 2 q × (q × v)`: for the pose
+//! on a PGA point it needs 22 multiplications instead of the general kernel's 48. Both forms
+//! are identities over any ring once `S rev(S) = 1` holds exactly; for a non-unit versor the
+//! result is not the action (use `apply`/`sandwich`).
+
+use super::emit::{Names, tree_sum as sum};
+use super::plan::Ratio;
+use super::versor::{ActionKernel, Convention, action_kernel};
+use super::{CodegenError, ModuleSpec};
+use algebra_core::rational::Q;
+use num_traits::{One, Zero};
+use proc_macro2::TokenStream;
+use quote::{format_ident, quote};
+use std::collections::BTreeMap;
+
+/// One unit-versor action kernel: `out_j = x_j + scale · Σ_(k, a, c) c · t_k · s_a`, with
+/// `t_k = Σ_(a, b, c) c · s_a · x_b` (the commutator divided by `scale`).
+#[derive(Debug, Clone)]
+pub struct UnitKernel {
+    /// The two stages (stage 1 the scaled commutator; an empty stage-2 row means `out_j = x_j`).
+    pub kernel: ActionKernel,
+    /// The common factor taken out of stage 1 (2 for rotors and motors).
+    pub scale: Ratio,
+}
+
+impl UnitKernel {
+    /// Multiplications and additions, counted as [`ActionKernel::counts`] does plus one
+    /// addition per corrected output and the scale (an addition when it is 2).
+    ///
+    /// ```
+    /// use algebra_core::{Algebra, Basis};
+    /// use algebra_codegen::{ModuleSpec, unit::plan_unit_actions, versor::Convention};
+    /// let alg = Algebra::builtin("pga3").unwrap();
+    /// let types = ModuleSpec::parse_types("Motor=even;Point=grade3", &alg).unwrap();
+    /// let spec = ModuleSpec::new("pga", alg.metric().clone(), Basis::Blade, types).unwrap();
+    /// let k = plan_unit_actions(&spec, usize::MAX).unwrap();
+    /// let k = k.iter().find(|k| (k.kernel.versor, k.kernel.operand, k.kernel.convention) == (0, 1, Convention::Apply)).unwrap();
+    /// // the general fused kernel needs 48 multiplications; the point's weight is copied
+    /// assert_eq!(k.counts(), (22, 21));
+    /// assert!(k.kernel.stage2[3].is_empty());
+    /// ```
+    pub fn counts(&self) -> (usize, usize) {
+        let (m, a) = self.kernel.counts();
+        let corrected = self.kernel.stage2.iter().filter(|r| !r.is_empty()).count();
+        match self.scale {
+            (1, 1) => (m, a + corrected),
+            (2, 1) => (m, a + 2 * corrected),
+            _ => (m + corrected, a + corrected),
+        }
+    }
+}
+
+/// The unit-versor kernels of every fused (versor type, operand type) pair of the module
+/// (those [`super::versor::plan_actions`] plans), in both conventions.
+pub fn plan_unit_actions(spec: &ModuleSpec, full: usize) -> Result<Vec<UnitKernel>, CodegenError> {
+    let mut out = Vec::new();
+    for v in (0..spec.types.len()).filter(|&v| super::versor::is_versor_type(spec, full, v)) {
+        for x in (0..spec.types.len()).filter(|&x| x != full) {
+            for convention in [Convention::Sandwich, Convention::Apply] {
+                out.push(unit_kernel(spec, convention, v, x)?);
+            }
+        }
+    }
+    Ok(out)
+}
+
+fn q(c: Ratio) -> Q {
+    Q::new(c.0.into(), c.1.into())
+}
+
+fn gcd(a: i64, b: i64) -> i64 {
+    if b == 0 { a.abs() } else { gcd(b, a % b) }
+}
+
+fn unit_kernel(spec: &ModuleSpec, convention: Convention, v: usize, x: usize) -> Result<UnitKernel, CodegenError> {
+    let mut k = action_kernel(spec, convention, v, x, true)?;
+    // an output whose correction expands to zero is x's own component
+    for row in &mut k.stage2 {
+        let mut poly: BTreeMap<(usize, usize, usize), Q> = BTreeMap::new();
+        for &(t, a, c) in row.iter() {
+            for &(a1, b, c1) in &k.stage1[t] {
+                *poly.entry((a.min(a1), a.max(a1), b)).or_insert_with(Q::zero) += q(c) * q(c1);
+            }
+        }
+        if poly.values().all(Zero::is_zero) {
+            row.clear();
+        }
+    }
+    // the common factor of stage 1: gcd of the numerators over the lcm of the denominators
+    let all = k.stage1.iter().flatten();
+    let (num, den) = all.fold((0, 1), |(n, d), &(_, _, (cn, cd))| (gcd(n, cn), d / gcd(d, cd) * cd));
+    let scale = if num == 0 { (1, 1) } else { (num, den) };
+    let factor = Q::one() / q(scale);
+    for row in &mut k.stage1 {
+        for term in row.iter_mut() {
+            let c = q(term.2) * &factor;
+            term.2 = super::plan::to_ratio(&c)?;
+        }
+    }
+    Ok(UnitKernel { kernel: k, scale })
+}
+
+/// The `UnitAction` impl of one (versor, operand) pair, from its two unit kernels.
+fn unit_items(names: &Names, sandwich: &UnitKernel, apply: &UnitKernel) -> TokenStream {
+    let (vt, xt) = (&names.types[sandwich.kernel.versor], &names.types[sandwich.kernel.operand]);
+    let large = |u: &UnitKernel| super::size::is_large(u.kernel.stage1.iter().chain(&u.kernel.stage2).map(Vec::len));
+    let body = |u: &UnitKernel, general: TokenStream| {
+        if large(u) { quote!(::algebra_core::ops::#general(self, x)) } else { unrolled_body(names, u) }
+    };
+    let (s_body, a_body) = (body(sandwich, quote!(Sandwich::sandwich)), body(apply, quote!(Apply::apply)));
+    quote! {
+        impl<T: ::algebra_core::Ring> ::algebra_core::ops::UnitAction<#xt<T>> for #vt<T> {
+            /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
+            #[inline]
+            fn sandwich_unit(&self, x: &#xt<T>) -> #xt<T> {
+                #s_body
+            }
+            /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
+            #[inline]
+            fn apply_unit(&self, x: &#xt<T>) -> #xt<T> {
+                #a_body
+            }
+        }
+    }
+}
+
+/// Straight-line code: the scaled commutator, then `x_j + scale · correction_j`.
+fn unrolled_body(names: &Names, u: &UnitKernel) -> TokenStream {
+    let k = &u.kernel;
+    let (xt, vf, xf) = (&names.types[k.operand], &names.fields[k.versor], &names.fields[k.operand]);
+    let binds = super::versor::stage1_binds(names, k);
+    let outs = k.stage2.iter().zip(xf).map(|(terms, f)| {
+        if terms.is_empty() {
+            return quote!(::core::clone::Clone::clone(&x.#f));
+        }
+        let y = sum(terms
+            .iter()
+            .map(|&(i, a, c)| {
+                let (ti, fa) = (format_ident!("t{}", i), &vf[a]);
+                (c, quote!((#ti.mul_ref(&self.#fa))), true)
+            })
+            .collect());
+        match u.scale {
+            (1, 1) => quote!({ x.#f.add_ref(&(#y)) }),
+            (2, 1) => quote!({ let y = #y; x.#f.add_ref(&y) + &y }),
+            (n, d) => quote!({ x.#f.add_ref(&(T::from_ratio(#n, #d) * &(#y))) }),
+        }
+    });
+    quote! {
+        #(#binds)*
+        #xt { #(#xf: #outs),* }
+    }
+}
+
+/// Every `UnitAction` impl of the module (one per fused pair).
+pub(super) fn module_items(plan: &super::plan::Plan, names: &Names) -> TokenStream {
+    let kernels = match plan_unit_actions(&plan.spec, plan.full) {
+        Ok(k) => k,
+        Err(e) => {
+            let msg = e.to_string();
+            return quote!(compile_error!(#msg););
+        }
+    };
+    let items = kernels.chunks(2).map(|pair| unit_items(names, &pair[0], &pair[1]));
+    quote!(#(#items)*)
+}
