@@ -134,7 +134,7 @@ impl fmt::Display for ConstraintError {
             ConstraintError::Ideal(e) => write!(f, "constraint ideal: {e}"),
             ConstraintError::NotPrecomputed(what) => write!(
                 f,
-                "the constrained kernel {what} is not precomputed; turn on the `constraints` feature of algebra-macros (it pulls GMP) or generate the module with `gam codegen`"
+                "the constrained kernel {what} is not precomputed; turn on the `constraints` feature of algebra-macros (it pulls GMP), generate the module with `gam codegen`, or add it to algebra-codegen's table (tests/constraint_table.rs, BLESS=1)"
             ),
             ConstraintError::BadTable(e) => write!(f, "precomputed constraint table: {e}"),
             ConstraintError::Algebra(e) => write!(f, "constraint: {e}"),
@@ -244,6 +244,24 @@ fn degree(m: &[(usize, u32)]) -> usize {
 }
 
 impl ConstrainedKernel {
+    /// No outputs, no constraints, zero counts (filled in by the reduction or the table).
+    pub(crate) fn empty() -> ConstrainedKernel {
+        ConstrainedKernel {
+            left: 0,
+            right: 0,
+            relies_on: Vec::new(),
+            left_monomials: Vec::new(),
+            outputs: Vec::new(),
+            vanishing: Vec::new(),
+            output_type: None,
+            full: Box::new(ConstrainedKernelFull {
+                masks: Vec::new(),
+                output_type: None,
+                counts: Counts { outputs: 0, terms: 0, mul: 0, setup_mul: 0, apply_mul: 0, add: 0 },
+            }),
+        }
+    }
+
     /// Operation counts in the matrix layout.
     ///
     /// ```

@@ -21,15 +21,33 @@ use std::hint::black_box;
 /// Actions per criterion iteration.
 const BATCH: usize = 1024;
 
-/// A small deterministic generator (xorshift) of floats in [-1, 1).
+/// Deterministic floats in [-1, 1): the golden-ratio sequence `frac(k φ)`, spread to [-1, 1).
 struct Rng(u64);
 impl Rng {
     fn next(&mut self) -> f64 {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 7;
-        self.0 ^= self.0 << 17;
-        (self.0 >> 11) as f64 / (1u64 << 52) as f64 - 1.0
+        self.0 += 1;
+        2.0 * (self.0 as f64 * 0.618_033_988_749_895).fract() - 1.0
     }
+}
+
+/// One criterion group timing `constrained` and `generic` on the same (motor, operand) pairs.
+fn pair<M, X, A, B>(
+    c: &mut Criterion,
+    title: &str,
+    data: (&[M], &[X]),
+    constrained: fn(&M, &X) -> A,
+    generic: fn(&M, &X) -> B,
+) {
+    let (motors, xs) = data;
+    let mut g = c.benchmark_group(title);
+    g.throughput(Throughput::Elements(motors.len() as u64));
+    g.bench_function("constrained method", |b| {
+        b.iter(|| motors.iter().zip(xs).for_each(|(m, x)| drop(black_box(constrained(black_box(m), black_box(x))))))
+    });
+    g.bench_function("generic sandwich (fused)", |b| {
+        b.iter(|| motors.iter().zip(xs).for_each(|(m, x)| drop(black_box(generic(black_box(m), black_box(x))))))
+    });
+    g.finish();
 }
 
 /// Unit motor coefficients `[1, e12, e13, e23, e1inf, e2inf, e3inf, e123inf]` (the same order
@@ -64,23 +82,13 @@ fn cga_null_point_action(c: &mut Criterion) {
             a.to_multivector().coeffs().iter().zip(b.to_multivector().coeffs()).all(|(p, q)| (p - q).abs() < 1e-12)
         );
     }
-    let mut g = c.benchmark_group("cga_null unit motor on a point (f64)");
-    g.throughput(Throughput::Elements(BATCH as u64));
-    g.bench_function("sandwich_unit_vector (constrained)", |b| {
-        b.iter(|| {
-            for (m, x) in motors.iter().zip(&points) {
-                black_box(black_box(m).sandwich_unit_vector(black_box(x)));
-            }
-        })
-    });
-    g.bench_function("sandwich (generic, fused)", |b| {
-        b.iter(|| {
-            for (m, x) in motors.iter().zip(&points) {
-                black_box(black_box(m).sandwich(black_box(x)));
-            }
-        })
-    });
-    g.finish();
+    pair(
+        c,
+        "cga_null unit motor on a point (f64)",
+        (&motors, &points),
+        cga_null::Motor::sandwich_unit_vector,
+        cga_null::Motor::sandwich,
+    );
 }
 
 /// Actions per iteration over exact rationals.
@@ -132,23 +140,13 @@ fn cga_null_point_action_exact(c: &mut Criterion) {
         assert!((&rm.reverse() * &rm).coeffs().iter().enumerate().all(|(i, v)| *v == Q::from_i64(i64::from(i == 0))));
         assert_eq!(m.sandwich_unit_vector(x), m.sandwich(x));
     }
-    let mut g = c.benchmark_group("cga_null unit motor on a point (exact rationals)");
-    g.throughput(Throughput::Elements(Q_BATCH as u64));
-    g.bench_function("sandwich_unit_vector (constrained)", |b| {
-        b.iter(|| {
-            for (m, x) in motors.iter().zip(&points) {
-                black_box(black_box(m).sandwich_unit_vector(black_box(x)));
-            }
-        })
-    });
-    g.bench_function("sandwich (generic, fused)", |b| {
-        b.iter(|| {
-            for (m, x) in motors.iter().zip(&points) {
-                black_box(black_box(m).sandwich(black_box(x)));
-            }
-        })
-    });
-    g.finish();
+    pair(
+        c,
+        "cga_null unit motor on a point (exact rationals)",
+        (&motors, &points),
+        cga_null::Motor::sandwich_unit_vector,
+        cga_null::Motor::sandwich,
+    );
 }
 
 fn g123inf_pseudoscalar_action(c: &mut Criterion) {
@@ -165,23 +163,13 @@ fn g123inf_pseudoscalar_action(c: &mut Criterion) {
         let (a, b) = (m.sandwich_unit_pseudoscalar(p), m.sandwich(p));
         assert!((a.scalar - b.scalar).abs() < 1e-12 && (a.e123inf - b.e123inf).abs() < 1e-12);
     }
-    let mut g = c.benchmark_group("g123inf unit motor on a pseudoscalar (f64)");
-    g.throughput(Throughput::Elements(BATCH as u64));
-    g.bench_function("sandwich_unit_pseudoscalar (constrained)", |b| {
-        b.iter(|| {
-            for (m, p) in motors.iter().zip(&ps) {
-                black_box(black_box(m).sandwich_unit_pseudoscalar(black_box(p)));
-            }
-        })
-    });
-    g.bench_function("sandwich (generic, fused)", |b| {
-        b.iter(|| {
-            for (m, p) in motors.iter().zip(&ps) {
-                black_box(black_box(m).sandwich(black_box(p)));
-            }
-        })
-    });
-    g.finish();
+    pair(
+        c,
+        "g123inf unit motor on a pseudoscalar (f64)",
+        (&motors, &ps),
+        g123inf::Motor::sandwich_unit_pseudoscalar,
+        g123inf::Motor::sandwich,
+    );
 }
 
 criterion_group!(benches, cga_null_point_action, cga_null_point_action_exact, g123inf_pseudoscalar_action);

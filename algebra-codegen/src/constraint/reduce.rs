@@ -230,18 +230,5 @@ fn layout(outputs: &[(u32, Poly)]) -> Result<ConstrainedKernel, ConstraintError>
     for (mono, i) in monos {
         left_monomials[i] = mono;
     }
-    Ok(ConstrainedKernel {
-        left: 0,
-        right: 0,
-        relies_on: Vec::new(),
-        left_monomials,
-        outputs: out,
-        vanishing: Vec::new(),
-        output_type: None,
-        full: Box::new(ConstrainedKernelFull {
-            masks: Vec::new(),
-            output_type: None,
-            counts: Counts { outputs: 0, terms: 0, mul: 0, setup_mul: 0, apply_mul: 0, add: 0 },
-        }),
-    })
+    Ok(ConstrainedKernel { left_monomials, outputs: out, ..ConstrainedKernel::empty() })
 }

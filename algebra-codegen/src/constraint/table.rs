@@ -16,7 +16,7 @@
 //! ```
 
 use super::methods::Request;
-use super::{ConstrainedKernel, ConstrainedKernelFull, ConstraintError, Counts, KTerm, Monomial};
+use super::{ConstrainedKernel, ConstraintError, Counts, KTerm, Monomial};
 use crate::ModuleSpec;
 use algebra_core::rational::format_rational;
 use std::fmt::Write;
@@ -123,20 +123,7 @@ fn parse_term(s: &str) -> Result<KTerm, ConstraintError> {
 
 /// Parses one entry's lines after `kernel <key>` (up to `end`).
 fn parse_entry<'a>(lines: &mut impl Iterator<Item = &'a str>) -> Result<ConstrainedKernel, ConstraintError> {
-    let mut k = ConstrainedKernel {
-        left: 0,
-        right: 0,
-        relies_on: Vec::new(),
-        left_monomials: Vec::new(),
-        outputs: Vec::new(),
-        vanishing: Vec::new(),
-        output_type: None,
-        full: Box::new(ConstrainedKernelFull {
-            masks: Vec::new(),
-            output_type: None,
-            counts: Counts { outputs: 0, terms: 0, mul: 0, setup_mul: 0, apply_mul: 0, add: 0 },
-        }),
-    };
+    let mut k = ConstrainedKernel::empty();
     for line in lines.by_ref() {
         let mut words = line.split_whitespace();
         match words.next() {
