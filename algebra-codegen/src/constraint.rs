@@ -14,9 +14,15 @@
 //! measures what the constraint saves. The kernel is valid only on inputs that satisfy the
 //! constraint; [`ConstrainedKernel::doc`] records which.
 //!
-//! Behind the `constraints` feature (it needs `algebra-core`'s `rug` for `Poly` and ideals).
+//! Declared in the `algebra!` DSL (`Motor = even where unit;`) or in `--types`
+//! (`Motor=even where unit`): [`TypeSpec::constraint`](crate::TypeSpec::constraint). The
+//! reduction ([`constrained_action`], [`constrained_product`]) needs `algebra-core`'s `rug`
+//! (`Poly`, ideals) and is behind the `constraints` feature. The proc macro stays GMP-free: it
+//! reads the kernels of the predefined modules from a committed table of reduced term lists
+//! ([`table`]), and computes others only when its own `constraints` feature is on.
 //!
 //! ```
+//! # #[cfg(feature = "constraints")] {
 //! use algebra_core::{Algebra, Basis};
 //! use algebra_codegen::ModuleSpec;
 //! use algebra_codegen::constraint::{Constraint, ConstraintKind, constrained_action};
@@ -28,16 +34,25 @@
 //! let k = constrained_action(&spec, Convention::Sandwich, 0, 1, &unit).unwrap();
 //! assert_eq!(k.output_type, Some(1)); // proven: a unit motor maps a vector to a vector
 //! assert!(k.stats().mul < k.full.stats().mul);
+//! # }
 //! ```
 
 use crate::ModuleSpec;
-use crate::versor::Convention;
-use algebra_core::ideal::{Budget, GroebnerBasis, IdealError, MonomialOrder, PolyRing};
-use algebra_core::{Multivector, MvError, Poly, Ring};
-use std::collections::{BTreeMap, BTreeSet};
+#[cfg(feature = "constraints")]
+use algebra_core::ideal::IdealError;
+use algebra_core::{MvError, Ring};
+use std::collections::BTreeSet;
 use std::fmt;
 
+mod methods;
+#[cfg(feature = "constraints")]
+mod reduce;
+pub mod table;
 mod tokens;
+
+pub use methods::{KernelOp, Request, compute, kernel, method_name, methods, requests};
+#[cfg(feature = "constraints")]
+pub use reduce::{constrained_action, constrained_product};
 
 /// The polynomial constraints a type may declare.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -48,6 +63,28 @@ pub enum ConstraintKind {
     Null,
     /// `x ∧ x = 0` (a simple bivector: the Plücker condition of a line).
     Simple,
+}
+
+impl ConstraintKind {
+    /// The DSL keyword (`unit`, `null`, `simple`).
+    ///
+    /// ```
+    /// use algebra_codegen::constraint::ConstraintKind;
+    /// assert_eq!(ConstraintKind::parse("simple"), Some(ConstraintKind::Simple));
+    /// assert_eq!(ConstraintKind::Unit.keyword(), "unit");
+    /// ```
+    pub fn keyword(self) -> &'static str {
+        match self {
+            ConstraintKind::Unit => "unit",
+            ConstraintKind::Null => "null",
+            ConstraintKind::Simple => "simple",
+        }
+    }
+
+    /// The kind of a DSL keyword, if it is one.
+    pub fn parse(word: &str) -> Option<ConstraintKind> {
+        [ConstraintKind::Unit, ConstraintKind::Null, ConstraintKind::Simple].into_iter().find(|k| k.keyword() == word)
+    }
 }
 
 /// A constraint on the declared type `ty` (an index into [`ModuleSpec::types`]).
@@ -73,7 +110,13 @@ impl fmt::Display for ConstraintKind {
 #[derive(Debug, Clone, PartialEq)]
 pub enum ConstraintError {
     /// The Gröbner basis or a normal form ran out of budget.
+    #[cfg(feature = "constraints")]
     Ideal(IdealError),
+    /// A kernel is neither in the precomputed table nor computable (the crate was built
+    /// without its `constraints` feature): says which.
+    NotPrecomputed(String),
+    /// A precomputed table entry does not parse (line and reason).
+    BadTable(String),
     /// A type's elements are not elements of the algebra.
     Algebra(MvError),
     /// A type index is out of range.
@@ -87,7 +130,13 @@ pub enum ConstraintError {
 impl fmt::Display for ConstraintError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
+            #[cfg(feature = "constraints")]
             ConstraintError::Ideal(e) => write!(f, "constraint ideal: {e}"),
+            ConstraintError::NotPrecomputed(what) => write!(
+                f,
+                "the constrained kernel {what} is not precomputed; turn on the `constraints` feature of algebra-macros (it pulls GMP), generate the module with `gam codegen`, or add it to algebra-codegen's table (tests/constraint_table.rs, BLESS=1)"
+            ),
+            ConstraintError::BadTable(e) => write!(f, "precomputed constraint table: {e}"),
             ConstraintError::Algebra(e) => write!(f, "constraint: {e}"),
             ConstraintError::NoType(i) => write!(f, "constraint on type #{i}, which is not declared"),
             ConstraintError::CoefficientTooLarge(c) => write!(f, "reduced coefficient {c} does not fit i64/i64"),
@@ -98,6 +147,7 @@ impl fmt::Display for ConstraintError {
 
 impl std::error::Error for ConstraintError {}
 
+#[cfg(feature = "constraints")]
 impl From<IdealError> for ConstraintError {
     fn from(e: IdealError) -> Self {
         ConstraintError::Ideal(e)
@@ -167,6 +217,8 @@ pub struct ConstrainedKernel {
 /// The unconstrained counterpart of a [`ConstrainedKernel`] (for its statistics).
 #[derive(Debug, Clone, PartialEq)]
 pub struct ConstrainedKernelFull {
+    /// Its structurally non-zero output masks.
+    pub masks: Vec<u32>,
     /// Its output type.
     pub output_type: Option<usize>,
     /// Its counts.
@@ -180,226 +232,11 @@ impl ConstrainedKernelFull {
     }
 }
 
-/// The versor action `rev(S) x S` (or `S x rev(S)`) of type `versor` on type `operand` with the
-/// given constraints (those on other types are ignored).
-///
-/// # Errors
-/// Budget exhausted, inconsistent constraints, unknown types, or huge coefficients.
-pub fn constrained_action(
-    spec: &ModuleSpec,
-    convention: Convention,
-    versor: usize,
-    operand: usize,
-    constraints: &[Constraint],
-) -> Result<ConstrainedKernel, ConstraintError> {
-    let (s, x) = (symbolic(spec, versor, "a")?, symbolic(spec, operand, "b")?);
-    let product = match convention {
-        Convention::Sandwich => &(&s.reverse() * &x) * &s,
-        Convention::Apply => &(&s * &x) * &s.reverse(),
-    };
-    build(spec, versor, operand, &s, &x, &product, constraints)
-}
-
-/// The geometric product `a b` of types `lhs` and `rhs` with the given constraints.
-///
-/// ```
-/// use algebra_core::{Algebra, Basis};
-/// use algebra_codegen::ModuleSpec;
-/// use algebra_codegen::constraint::{Constraint, ConstraintKind, constrained_product};
-/// let alg = Algebra::builtin("g3").unwrap();
-/// let types = ModuleSpec::parse_types("Rotor=even;Vector=grade1", &alg).unwrap();
-/// let spec = ModuleSpec::new("g3", alg.metric().clone(), Basis::Blade, types).unwrap();
-/// let unit = [Constraint { ty: 0, kind: ConstraintKind::Unit }];
-/// // unit rotors R1, R2: every output of R1 R2 is kept (their product is again a rotor)
-/// let k = constrained_product(&spec, 0, 0, &unit).unwrap();
-/// assert_eq!((k.output_type, k.stats().outputs), (Some(0), 4));
-/// assert_eq!(k.relies_on, ["Rotor: rev(x) x = 1"]);
-/// ```
-///
-/// # Errors
-/// As [`constrained_action`].
-pub fn constrained_product(
-    spec: &ModuleSpec,
-    lhs: usize,
-    rhs: usize,
-    constraints: &[Constraint],
-) -> Result<ConstrainedKernel, ConstraintError> {
-    let (a, b) = (symbolic(spec, lhs, "a")?, symbolic(spec, rhs, "b")?);
-    build(spec, lhs, rhs, &a, &b, &(&a * &b), constraints)
-}
-
-/// A general element of type `ty` with coefficients `{prefix}{field}`.
-fn symbolic(spec: &ModuleSpec, ty: usize, prefix: &str) -> Result<Multivector<Poly>, ConstraintError> {
-    let t = spec.types.get(ty).ok_or(ConstraintError::NoType(ty))?;
-    let mut coeffs = vec![Poly::zero(); spec.algebra.dim()];
-    for (i, &m) in t.elements.iter().enumerate() {
-        coeffs[m as usize] = Poly::var(&format!("{prefix}{i}"));
-    }
-    Ok(Multivector::from_coeffs(&spec.algebra, spec.basis, coeffs)?)
-}
-
-fn equations(kind: ConstraintKind, x: &Multivector<Poly>) -> Vec<Poly> {
-    let m = match kind {
-        ConstraintKind::Unit => &(&x.reverse() * x) - &Multivector::scalar(x.algebra(), x.basis(), Poly::one()),
-        ConstraintKind::Null => x * x,
-        ConstraintKind::Simple => x.op(x),
-    };
-    m.coeffs().iter().filter(|p| !p.is_exact_zero()).cloned().collect()
-}
-
-fn build(
-    spec: &ModuleSpec,
-    left: usize,
-    right: usize,
-    a: &Multivector<Poly>,
-    b: &Multivector<Poly>,
-    product: &Multivector<Poly>,
-    constraints: &[Constraint],
-) -> Result<ConstrainedKernel, ConstraintError> {
-    let mut gens = Vec::new();
-    let mut relies_on = Vec::new();
-    for c in constraints {
-        let t = spec.types.get(c.ty).ok_or(ConstraintError::NoType(c.ty))?;
-        for (ty, x) in [(left, a), (right, b)] {
-            if c.ty == ty {
-                gens.extend(equations(c.kind, x));
-            }
-        }
-        if c.ty == left || c.ty == right {
-            relies_on.push(format!("{}: {}", t.name, c.kind));
-        }
-    }
-    let (na, nb) = (spec.types[left].elements.len(), spec.types[right].elements.len());
-    let vars: Vec<String> = (0..na).map(|i| format!("a{i}")).chain((0..nb).map(|i| format!("b{i}"))).collect();
-    let outputs: Vec<(u32, Poly)> = (0..spec.algebra.dim() as u32)
-        .map(|m| (m, product.coeffs()[m as usize].clone()))
-        .filter(|(_, p)| !p.is_exact_zero())
-        .collect();
-    // Gröbner bases under a few variable orders: every normal form is a representative of the
-    // same residue class; the cheapest is kept per output.
-    let budget = Budget::default();
-    let mut bases: Vec<GroebnerBasis> = Vec::new();
-    if !gens.is_empty() {
-        for rot in 0..na.max(1) {
-            let order: Vec<&String> = vars[rot..na].iter().chain(&vars[..rot]).chain(&vars[na..]).collect();
-            let g = PolyRing::new(order, MonomialOrder::GrevLex).groebner(&gens, &budget)?;
-            if g.is_unit() {
-                return Err(ConstraintError::Inconsistent);
-            }
-            bases.push(g);
-        }
-    }
-    // Candidate representative sets: the unreduced outputs, each basis's normal forms, and the
-    // per-output cheapest mix; the cheapest set as a whole wins (shared monomials count once).
-    let mut vanishing = Vec::new();
-    let mut per_basis: Vec<Vec<(u32, Poly)>> = vec![Vec::new(); bases.len()];
-    let mut unreduced = Vec::new();
-    let mut mixed = Vec::new();
-    for (m, p) in &outputs {
-        let forms = bases.iter().map(|g| g.normal_form_within(p, &budget)).collect::<Result<Vec<_>, _>>()?;
-        if forms.iter().any(Poly::is_exact_zero) {
-            vanishing.push(*m);
-            continue;
-        }
-        let best = forms.iter().chain([p]).min_by_key(|r| cost(r)).expect("non-empty").clone();
-        mixed.push((*m, best));
-        unreduced.push((*m, p.clone()));
-        for (set, r) in per_basis.iter_mut().zip(forms) {
-            set.push((*m, r));
-        }
-    }
-    let mut reduced = unreduced;
-    for candidate in per_basis.into_iter().chain([mixed]) {
-        let (c, r) = (layout(&candidate)?.stats(), layout(&reduced)?.stats());
-        if (c.mul, c.terms) < (r.mul, r.terms) {
-            reduced = candidate;
-        }
-    }
-    let full_masks: Vec<u32> = outputs.iter().map(|(m, _)| *m).collect();
-    let kept: Vec<u32> = reduced.iter().map(|(m, _)| *m).collect();
-    let full_kernel = layout(&outputs)?;
-    let mut kernel = layout(&reduced)?;
-    kernel.left = left;
-    kernel.right = right;
-    kernel.relies_on = relies_on;
-    kernel.vanishing = vanishing;
-    kernel.output_type = smallest_type(spec, &kept);
-    kernel.full =
-        Box::new(ConstrainedKernelFull { output_type: smallest_type(spec, &full_masks), counts: full_kernel.stats() });
-    Ok(kernel)
-}
-
 /// The smallest declared type whose elements include every mask.
-fn smallest_type(spec: &ModuleSpec, masks: &[u32]) -> Option<usize> {
+pub(crate) fn smallest_type(spec: &ModuleSpec, masks: &[u32]) -> Option<usize> {
     (0..spec.types.len())
         .filter(|&t| masks.iter().all(|m| spec.types[t].elements.contains(m)))
         .min_by_key(|&t| spec.types[t].elements.len())
-}
-
-/// Splits a monomial into its left (`a{i}`) and right (`b{i}`) parts.
-fn split(mono: &[(String, u32)]) -> (Monomial, Monomial) {
-    let (mut l, mut r) = (Vec::new(), Vec::new());
-    for (name, e) in mono {
-        let idx: usize = name[1..].parse().expect("variables are a{i} / b{i}");
-        if name.starts_with('a') { l.push((idx, *e)) } else { r.push((idx, *e)) }
-    }
-    (l, r)
-}
-
-/// The multiplications of one polynomial in the matrix layout (monomials not shared).
-fn cost(p: &Poly) -> (usize, usize) {
-    let k = layout(&[(0, p.clone())]).map(|k| k.stats()).unwrap_or(Counts {
-        outputs: 0,
-        terms: 0,
-        mul: usize::MAX,
-        setup_mul: 0,
-        apply_mul: 0,
-        add: 0,
-    });
-    (k.mul, k.terms)
-}
-
-fn small(c: &rug::Rational) -> Result<(i64, i64), ConstraintError> {
-    match (c.numer().to_i64(), c.denom().to_i64()) {
-        (Some(n), Some(d)) => Ok((n, d)),
-        _ => Err(ConstraintError::CoefficientTooLarge(c.to_string())),
-    }
-}
-
-fn layout(outputs: &[(u32, Poly)]) -> Result<ConstrainedKernel, ConstraintError> {
-    let mut monos: BTreeMap<Monomial, usize> = BTreeMap::new();
-    let mut out = Vec::new();
-    for (m, p) in outputs {
-        let mut terms = Vec::new();
-        for (c, mono) in p.terms() {
-            let (l, r) = split(&mono);
-            let left = if l.is_empty() {
-                None
-            } else {
-                let n = monos.len();
-                Some(*monos.entry(l).or_insert(n))
-            };
-            terms.push(KTerm { coeff: small(c)?, left, right: r });
-        }
-        out.push((*m, terms));
-    }
-    let mut left_monomials = vec![Vec::new(); monos.len()];
-    for (mono, i) in monos {
-        left_monomials[i] = mono;
-    }
-    Ok(ConstrainedKernel {
-        left: 0,
-        right: 0,
-        relies_on: Vec::new(),
-        left_monomials,
-        outputs: out,
-        vanishing: Vec::new(),
-        output_type: None,
-        full: Box::new(ConstrainedKernelFull {
-            output_type: None,
-            counts: Counts { outputs: 0, terms: 0, mul: 0, setup_mul: 0, apply_mul: 0, add: 0 },
-        }),
-    })
 }
 
 fn degree(m: &[(usize, u32)]) -> usize {
@@ -407,9 +244,28 @@ fn degree(m: &[(usize, u32)]) -> usize {
 }
 
 impl ConstrainedKernel {
+    /// No outputs, no constraints, zero counts (filled in by the reduction or the table).
+    pub(crate) fn empty() -> ConstrainedKernel {
+        ConstrainedKernel {
+            left: 0,
+            right: 0,
+            relies_on: Vec::new(),
+            left_monomials: Vec::new(),
+            outputs: Vec::new(),
+            vanishing: Vec::new(),
+            output_type: None,
+            full: Box::new(ConstrainedKernelFull {
+                masks: Vec::new(),
+                output_type: None,
+                counts: Counts { outputs: 0, terms: 0, mul: 0, setup_mul: 0, apply_mul: 0, add: 0 },
+            }),
+        }
+    }
+
     /// Operation counts in the matrix layout.
     ///
     /// ```
+    /// # #[cfg(feature = "constraints")] {
     /// use algebra_core::{Algebra, Basis};
     /// use algebra_codegen::ModuleSpec;
     /// use algebra_codegen::constraint::{Constraint, ConstraintKind, constrained_product};
@@ -421,6 +277,7 @@ impl ConstrainedKernel {
     /// let c = k.stats();
     /// assert_eq!(c.mul, c.setup_mul + c.apply_mul);
     /// assert!(c.mul <= k.full.stats().mul);
+    /// # }
     /// ```
     pub fn stats(&self) -> Counts {
         let mut setup: usize = self.left_monomials.iter().map(|m| degree(m).saturating_sub(1)).sum();
@@ -451,6 +308,7 @@ impl ConstrainedKernel {
     /// satisfying [`ConstrainedKernel::relies_on`].
     ///
     /// ```
+    /// # #[cfg(feature = "constraints")] {
     /// use algebra_core::{Algebra, Basis};
     /// use algebra_codegen::ModuleSpec;
     /// use algebra_codegen::constraint::{Constraint, ConstraintKind, constrained_product};
@@ -464,6 +322,7 @@ impl ConstrainedKernel {
     /// let r = [ratio(3, 5), ratio(4, 5), ratio(0, 1), ratio(0, 1)];
     /// let out = k.eval(&r, &[ratio(1, 1), ratio(0, 1), ratio(0, 1)]);
     /// assert!(out.contains(&(0b001, ratio(3, 5))) && out.contains(&(0b010, ratio(-4, 5))));
+    /// # }
     /// ```
     pub fn eval<T: Ring>(&self, a: &[T], b: &[T]) -> Vec<(u32, T)> {
         let pow = |x: &[T], m: &[(usize, u32)]| {
@@ -490,6 +349,7 @@ impl ConstrainedKernel {
     /// Doc lines for the generated kernel: the constraints it relies on and what they saved.
     ///
     /// ```
+    /// # #[cfg(feature = "constraints")] {
     /// use algebra_core::{Algebra, Basis};
     /// use algebra_codegen::ModuleSpec;
     /// use algebra_codegen::constraint::{Constraint, ConstraintKind, constrained_product};
@@ -499,6 +359,7 @@ impl ConstrainedKernel {
     /// let unit = [Constraint { ty: 0, kind: ConstraintKind::Unit }];
     /// let k = constrained_product(&spec, 0, 1, &unit).unwrap();
     /// assert!(k.doc()[0].starts_with(" Valid only for inputs satisfying Rotor: rev(x) x = 1"));
+    /// # }
     /// ```
     pub fn doc(&self) -> Vec<String> {
         let (c, f) = (self.stats(), self.full.stats());

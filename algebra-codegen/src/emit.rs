@@ -47,7 +47,7 @@ pub(super) fn ident(s: &str) -> Ident {
     Ident::new(s, Span::call_site())
 }
 
-fn snake(name: &str) -> String {
+pub(crate) fn snake(name: &str) -> String {
     let mut out = String::new();
     for (i, c) in name.chars().enumerate() {
         if c.is_ascii_uppercase() {
@@ -227,9 +227,14 @@ impl Names {
 /// assert!(code.contains("pub struct Rotor"));
 /// ```
 pub fn module(plan: &Plan) -> TokenStream {
+    module_with(plan, module_items(plan))
+}
+
+/// `pub mod NAME { ... }` around the given items (the module's, plus e.g. the constrained
+/// methods of [`crate::constraint::methods`]).
+pub fn module_with(plan: &Plan, items: TokenStream) -> TokenStream {
     let name = ident(&plan.spec.name);
     let docs = plan.spec.doc.iter().map(|d| quote!(#![doc = #d]));
-    let items = module_items(plan);
     quote! {
         #[allow(clippy::all, unused_parens, unused_mut, unused_variables, non_snake_case)]
         pub mod #name {

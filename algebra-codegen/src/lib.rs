@@ -27,7 +27,6 @@
 //! assert!(emit::module(&plan).to_string().contains("struct Motor"));
 //! ```
 
-#[cfg(feature = "constraints")]
 pub mod constraint;
 pub mod emit;
 pub mod fallback;

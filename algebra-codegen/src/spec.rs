@@ -1,6 +1,7 @@
 //! Step 1 of the pipeline: the typed module specification ([`ModuleSpec`], [`TypeSpec`]) and
 //! its validation ([`CodegenError`]).
 
+use crate::constraint::ConstraintKind;
 use algebra_core::algebra::Algebra;
 use algebra_core::basis::{Basis, grade};
 use algebra_core::metric::Metric;
@@ -69,6 +70,14 @@ pub enum CodegenError {
         /// The reordered name.
         element: String,
     },
+    /// A `where` clause naming no known constraint.
+    #[error("type `{ty}`: unknown constraint `{word}` (expected `where unit`, `where null` or `where simple`)")]
+    UnknownConstraint {
+        /// The type.
+        ty: String,
+        /// The word after `where`.
+        word: String,
+    },
     /// A table coefficient that does not fit the `i64` ratio of `T::from_ratio`.
     #[error("a table coefficient ({0}) is too large for T::from_ratio(i64, i64)")]
     CoefficientTooLarge(String),
@@ -86,6 +95,10 @@ pub struct TypeSpec {
     /// Elements listed in a non-canonical orientation (`e20` for `e02`): mask → (the name
     /// as written, `-1` or `1`). The field holds the coefficient in that orientation.
     pub renamed: BTreeMap<u32, (String, i64)>,
+    /// A polynomial constraint every value of the type is declared to satisfy (`where unit`:
+    /// `rev(x) x = 1`; `where null`: `x x = 0`; `where simple`: `x ∧ x = 0`). The generator
+    /// then emits constrained kernels as methods ([`crate::constraint::methods`]).
+    pub constraint: Option<ConstraintKind>,
 }
 
 impl TypeSpec {
@@ -102,8 +115,21 @@ impl TypeSpec {
     /// assert_eq!(v.elements.len(), 4);
     /// let m = TypeSpec::parse("Motor", "1,e12,e13,e23,e1inf,e2inf,e3inf,e123inf", &alg).unwrap();
     /// assert_eq!(m.elements, TypeSpec::parse("Motor", "even", &alg).unwrap().elements);
+    /// // a declared constraint follows the selector
+    /// let unit = TypeSpec::parse("Motor", "even where unit", &alg).unwrap();
+    /// assert_eq!(unit.constraint, Some(algebra_codegen::constraint::ConstraintKind::Unit));
+    /// assert!(TypeSpec::parse("Motor", "even where round", &alg).is_err());
     /// ```
     pub fn parse(name: &str, selector: &str, algebra: &Algebra) -> Result<TypeSpec, CodegenError> {
+        if let Some((sel, word)) = selector.split_once(" where ") {
+            let kind = ConstraintKind::parse(word.trim()).ok_or_else(|| CodegenError::UnknownConstraint {
+                ty: name.to_string(),
+                word: word.trim().to_string(),
+            })?;
+            let mut t = TypeSpec::parse(name, sel, algebra)?;
+            t.constraint = Some(kind);
+            return Ok(t);
+        }
         let n = algebra.generators();
         let sel = selector.trim();
         let by_grades = |grades: &[usize]| -> Result<Vec<u32>, CodegenError> {
@@ -172,7 +198,7 @@ impl TypeSpec {
         if elements.is_empty() {
             return Err(CodegenError::EmptyType(name.to_string()));
         }
-        Ok(TypeSpec { name: name.to_string(), doc: Vec::new(), elements, renamed: BTreeMap::new() })
+        Ok(TypeSpec { name: name.to_string(), doc: Vec::new(), elements, renamed: BTreeMap::new(), constraint: None })
     }
 }
 

@@ -27,12 +27,21 @@
 //!   a result outside every declared type lands in an automatic `Even`/`Odd` type if it has one
 //!   parity (`parity`), or always in the full multivector (`full`: no automatic types).
 //! - `types { Name = selector; ... }` with selectors `grade K`, `even`, `odd`, `all`, or a
-//!   list `[1, e12, ...]`; doc comments on types are kept.
+//!   list `[1, e12, ...]`; doc comments on types are kept. A type may declare a polynomial
+//!   constraint after its selector: `Motor = even where unit;` (`rev(x) x = 1`),
+//!   `Point = grade 1 where null;` (`x x = 0`), `Line = grade 2 where simple;` (`x ∧ x = 0`,
+//!   the Plücker condition). The generator then adds constrained kernels as methods —
+//!   `sandwich_unit_<operand>`, `apply_unit_<operand>`, `square_null`/`square_simple` — with the
+//!   outputs that vanish under the constraint proven (by ideal membership) and dropped (see
+//!   `algebra_codegen::constraint`). Kernels of the predefined modules are precomputed, so the
+//!   macro needs no GMP; for other modules turn on this crate's `constraints` feature (it
+//!   computes them with `rug`) or vendor the module with `gam codegen`.
 //! - optionally, before the module, `crate PATH;`: where the generated code finds the engine
 //!   (`algebra-core`). The default is `::algebra_core`, for crates that depend on algebra-core
 //!   directly (the workspace's `gam-algebras`, `motion`); the front door `gam_ga::algebra!`
 //!   passes `crate $crate::__engine;`, so its users need no other dependency.
 
+use algebra_codegen::constraint::ConstraintKind;
 use algebra_codegen::{ModuleSpec, TypeSpec, plan::Plan};
 use algebra_core::rational::{Q, q};
 use algebra_core::{Algebra, Basis, Metric};
@@ -60,6 +69,7 @@ struct TypeDecl {
     attrs: Vec<Attribute>,
     name: Ident,
     selector: Selector,
+    constraint: Option<ConstraintKind>,
 }
 
 enum Selector {
@@ -220,8 +230,17 @@ impl Parse for Decl {
                             };
                             Selector::Text(text, span)
                         };
+                        let constraint = if t.peek(Token![where]) {
+                            t.parse::<Token![where]>()?;
+                            let kind: Ident = t.parse()?;
+                            Some(ConstraintKind::parse(&kind.to_string()).ok_or_else(|| {
+                                syn::Error::new(kind.span(), "expected a constraint: `unit`, `null` or `simple`")
+                            })?)
+                        } else {
+                            None
+                        };
                         t.parse::<Token![;]>()?;
-                        list.push(TypeDecl { attrs, name, selector });
+                        list.push(TypeDecl { attrs, name, selector, constraint });
                     }
                     types = Some(list);
                 }
@@ -319,6 +338,7 @@ fn expand(decl: Decl) -> syn::Result<proc_macro2::TokenStream> {
             }
         };
         spec.doc = doc_lines(&t.attrs);
+        spec.constraint = t.constraint;
         types.push(spec);
     }
     let mut spec = ModuleSpec::new(&decl.name.to_string(), metric, decl.basis, types).map_err(|e| {
@@ -329,6 +349,7 @@ fn expand(decl: Decl) -> syn::Result<proc_macro2::TokenStream> {
     spec.parity_types = decl.parity_types;
     let plan = Plan::new(spec).map_err(|e| syn::Error::new(decl.name.span(), e))?;
     let mut items = algebra_codegen::emit::module_items(&plan);
+    items.extend(algebra_codegen::constraint::methods(&plan).map_err(|e| syn::Error::new(decl.name.span(), e))?);
     if let Some(engine) = &decl.engine {
         items = algebra_codegen::paths::with_engine_path(items, engine);
     }

@@ -38,8 +38,9 @@ algebra! {
             Bivector = grade 2;
             /// Pseudoscalars `alpha + beta omega` (omega = e123inf), eq. (5).
             Pseudoscalar = [1, e123inf];
-            /// Poses: the even subalgebra G_{123inf}^+ in the paper's order (eq. 4).
-            Motor = [1, e12, e13, e23, e1inf, e2inf, e3inf, e123inf];
+            /// Poses: the even subalgebra G_{123inf}^+ in the paper's order (eq. 4). `where unit`
+            /// adds the `*_unit_*` kernels, valid for unit poses only (rev(S) S = 1).
+            Motor = [1, e12, e13, e23, e1inf, e2inf, e3inf, e123inf] where unit;
             /// Every element.
             Multivector = all;
         }
@@ -58,8 +59,9 @@ algebra! {
             Bivector = grade 2;
             /// Trivectors (points).
             Trivector = grade 3;
-            /// Motors: the even subalgebra.
-            Motor = even;
+            /// Motors: the even subalgebra. `where unit` adds the `*_unit_*` kernels, valid for
+            /// unit motors only (rev(M) M = 1).
+            Motor = even where unit;
             /// Every element.
             Multivector = all;
         }
@@ -97,7 +99,9 @@ algebra! {
         types {
             /// Vectors.
             Vector = grade 1;
-            /// Poses of G_{123inf}^+ inside G_{0123inf}.
+            /// Poses of G_{123inf}^+ inside G_{0123inf}. `where unit` adds the `*_unit_*`
+            /// kernels, valid for unit poses only (rev(S) S = 1).
+            Motor = [1, e12, e13, e23, e1inf, e2inf, e3inf, e123inf] where unit;
             Motor = [1, e12, e13, e23, e1inf, e2inf, e3inf, e123inf];
             /// The bivectors of the poses, `Omega e123 + u einf` (the Lie algebra of `Motor`:
             /// `PoseBivector::exp` is a `Motor`, `Motor::log` a `PoseBivector`).

@@ -3,8 +3,7 @@
 //! operation counts of every kernel.
 
 use crate::error::CliError;
-use algebra_codegen::constraint::{ConstrainedKernel, Constraint, ConstraintKind, constrained_action};
-use algebra_codegen::versor::{Convention, is_versor_type};
+use algebra_codegen::constraint::{ConstrainedKernel, Constraint, ConstraintKind, Request, kernel, requests};
 use algebra_codegen::{CodegenError, ModuleSpec, plan::Plan};
 use algebra_core::Basis;
 use serde_json::{Value, json};
@@ -73,25 +72,41 @@ pub fn codegen(args: &CodegenArgs) -> Result<String, CliError> {
         ),
         format!("Metric: {}. Do not edit: regenerate instead.", alg.describe_metric()),
     ];
-    let plan = Plan::new(spec).map_err(bad)?;
+    let mut plan = Plan::new(spec).map_err(bad)?;
     let constraints = parse_constraints(&args.constrain, &plan)?;
     if !constraints.is_empty() && args.emit != Emit::Stats {
         return Err(CliError::usage("--constrain is only used with --emit stats".to_string()));
     }
+    // `--constrain TYPE=KIND` is `TYPE=... where KIND` in --types
+    for c in &constraints {
+        plan.spec.types[c.ty].constraint = Some(c.kind);
+    }
+    let declared = plan.spec.types.iter().any(|t| t.constraint.is_some());
     match args.emit {
         Emit::Rust => {
             let internal = |e: syn::Error| CliError::usage(format!("internal: generated code does not parse: {e}"));
             let source = if args.standalone {
+                if declared {
+                    return Err(CliError::usage(
+                        "--standalone does not support `where` constraints yet (drop --standalone)".to_string(),
+                    ));
+                }
                 standalone_source(args, &plan).map_err(internal)?
             } else {
-                let file: syn::File = syn::parse2(algebra_codegen::emit::module(&plan)).map_err(internal)?;
+                let mut items = algebra_codegen::emit::module_items(&plan);
+                items.extend(
+                    algebra_codegen::constraint::methods(&plan)
+                        .map_err(|e| CliError::usage(format!("--types: {e}")))?,
+                );
+                let file: syn::File =
+                    syn::parse2(algebra_codegen::emit::module_with(&plan, items)).map_err(internal)?;
                 prettyplease::unparse(&file)
             };
             Ok(if args.json { json!({ "module": module, "source": source }).to_string() } else { source })
         }
         Emit::Stats => {
             let stats = plan.stats();
-            let constrained = constrained_rows(&plan, &constraints)?;
+            let constrained = constrained_rows(&plan)?;
             if args.json {
                 let list: Vec<Value> = stats
                     .iter()
@@ -162,8 +177,9 @@ fn parse_constraints(list: &[String], plan: &Plan) -> Result<Vec<Constraint>, Cl
         .collect()
 }
 
-/// One `--emit stats` row of a constrained sandwich kernel.
+/// One `--emit stats` row of a constrained kernel.
 struct ConstrainedRow {
+    op: &'static str,
     lhs: String,
     rhs: String,
     kernel: ConstrainedKernel,
@@ -173,9 +189,15 @@ struct ConstrainedRow {
 
 impl ConstrainedRow {
     fn text(&self) -> Vec<String> {
-        let c = self.kernel.stats();
+        let (c, f) = (self.kernel.stats(), self.kernel.full.stats());
         vec![
-            format!("sandwich [{}]", self.kernel.relies_on.join(", ")),
+            format!(
+                "{} [{}] saves {} mul, {} terms",
+                self.op,
+                self.kernel.relies_on.join(", "),
+                f.mul.saturating_sub(c.mul),
+                f.terms.saturating_sub(c.terms)
+            ),
             self.lhs.clone(),
             self.rhs.clone(),
             self.out.clone(),
@@ -186,31 +208,31 @@ impl ConstrainedRow {
 
     fn json(&self) -> Value {
         let (c, f) = (self.kernel.stats(), self.kernel.full.stats());
-        json!({"op": "sandwich", "lhs": self.lhs, "rhs": self.rhs, "out": self.out, "mul": c.mul, "add": c.add,
+        json!({"op": self.op, "lhs": self.lhs, "rhs": self.rhs, "out": self.out, "mul": c.mul, "add": c.add,
                "constraints": self.kernel.relies_on, "terms": c.terms, "setup_mul": c.setup_mul, "apply_mul": c.apply_mul,
+               "saved": {"mul": f.mul.saturating_sub(c.mul), "terms": f.terms.saturating_sub(c.terms)},
                "unconstrained": {"out": self.unconstrained_out, "mul": f.mul, "add": f.add, "terms": f.terms}})
     }
 }
 
-/// The constrained `rev(S) x S` of every constrained versor type on every other non-full type.
-fn constrained_rows(plan: &Plan, constraints: &[Constraint]) -> Result<Vec<ConstrainedRow>, CliError> {
+/// Every constrained kernel the declared constraints call for (`where` in --types or
+/// --constrain): the unit versors' sandwich and apply on every other non-full type, the squares
+/// of null and simple types.
+fn constrained_rows(plan: &Plan) -> Result<Vec<ConstrainedRow>, CliError> {
     let spec = &plan.spec;
     let name = |t: Option<usize>| t.map_or_else(|| "-".to_string(), |t| spec.types[t].name.clone());
-    let mut rows = Vec::new();
-    let mut versors: Vec<usize> = constraints.iter().map(|c| c.ty).collect();
-    versors.dedup();
-    for v in versors.into_iter().filter(|&v| is_versor_type(spec, plan.full, v)) {
-        for x in (0..spec.types.len()).filter(|&x| x != plan.full) {
-            let kernel = constrained_action(spec, Convention::Sandwich, v, x, constraints)
-                .map_err(|e| CliError::usage(format!("--constrain: {e}")))?;
-            rows.push(ConstrainedRow {
-                lhs: spec.types[v].name.clone(),
-                rhs: spec.types[x].name.clone(),
+    requests(spec, plan.full)
+        .into_iter()
+        .map(|r: Request| {
+            let kernel = kernel(spec, r).map_err(|e| CliError::usage(format!("constraints: {e}")))?;
+            Ok(ConstrainedRow {
+                op: r.op.name(),
+                lhs: spec.types[r.left].name.clone(),
+                rhs: spec.types[r.right].name.clone(),
                 out: name(kernel.output_type),
                 unconstrained_out: name(kernel.full.output_type),
                 kernel,
-            });
-        }
-    }
-    Ok(rows)
+            })
+        })
+        .collect()
 }

@@ -89,7 +89,8 @@ enum Command {
         #[arg(long, value_name = "NAME", default_value = "cga-null", help = algebra_help())]
         algebra: String,
         /// The types: "Name=selector;..." with selectors `grade K`, `even`, `odd`, `all` or a
-        /// comma list of basis names, e.g. "Motor=1,e12,e13,e23,e1inf,e2inf,e3inf,e123inf;Vector=grade1".
+        /// comma list of basis names, e.g. "Motor=1,e12,e13,e23,e1inf,e2inf,e3inf,e123inf;Vector=grade1";
+        /// a selector may end in `where unit|null|simple` (constrained kernels as methods).
         #[arg(long, value_name = "TYPES")]
         types: String,
         /// The basis the element names refer to: blade or product.
@@ -111,8 +112,9 @@ enum Command {
         #[arg(long)]
         standalone: bool,
         /// With --emit stats: a polynomial constraint TYPE=unit (rev(x) x = 1), TYPE=null
-        /// (x x = 0) or TYPE=simple (x ∧ x = 0), repeatable; adds rows for the sandwich
-        /// kernels reduced modulo the constraints (the vanishing outputs proven and dropped).
+        /// (x x = 0) or TYPE=simple (x ∧ x = 0), repeatable, as `TYPE=... where KIND` in
+        /// --types; adds rows for the kernels reduced modulo the constraints (the vanishing
+        /// outputs proven and dropped) with what each saves.
         #[arg(long, value_name = "TYPE=KIND")]
         constrain: Vec<String>,
         /// Where a result outside every declared type lands when no type is the full

@@ -129,3 +129,43 @@ fn fallback_full_turns_the_parity_types_off() {
     let bad = gam(&["codegen", "--algebra", "pga3", "--types", "Point=grade3", "--fallback", "odd"]);
     assert!(!bad.status.success());
 }
+
+/// `where unit` in --types declares the constraint in the module: `--emit stats` shows the
+/// constrained kernels with what they save (the same as `--constrain`), `--emit rust` emits
+/// them as methods; an unknown constraint is a usage error.
+#[test]
+fn declared_constraints_in_types_show_savings_and_emit_methods() {
+    let types = "Motor=1,e12,e13,e23,e1inf,e2inf,e3inf,e123inf where unit;Vector=grade1;Multivector=all";
+    let out =
+        gam(&["codegen", "--algebra", "cga-null", "--basis", "product", "--types", types, "--emit", "stats", "--json"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let rows: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let find = |op: &str| {
+        rows.as_array()
+            .unwrap()
+            .iter()
+            .find(|r| r["constraints"].is_array() && r["op"] == op && r["rhs"] == "Vector")
+            .cloned()
+            .expect("a constrained row")
+    };
+    for op in ["sandwich", "apply"] {
+        let row = find(op);
+        assert_eq!(row["out"], "Vector");
+        assert_eq!(row["saved"], serde_json::json!({"mul": 8, "terms": 17}), "{row}");
+    }
+    let text = gam(&["codegen", "--algebra", "cga-null", "--basis", "product", "--types", types, "--emit", "stats"]);
+    let text = String::from_utf8(text.stdout).unwrap();
+    assert!(text.contains("sandwich [Motor: rev(x) x = 1] saves 8 mul, 17 terms"), "{text}");
+    let rust = gam(&["codegen", "--algebra", "cga-null", "--basis", "product", "--types", types]);
+    assert!(rust.status.success());
+    let rust = String::from_utf8(rust.stdout).unwrap();
+    assert!(rust.contains("pub fn sandwich_unit_vector(&self, x: &Vector<T>) -> Vector<T>"));
+    assert!(rust.contains("Valid only for inputs satisfying Motor: rev(x) x = 1"));
+    let bad = gam(&["codegen", "--algebra", "cga-null", "--types", "Motor=even where round"]);
+    assert_eq!(bad.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&bad.stderr);
+    assert!(
+        err.starts_with("error: ") && err.contains("unknown constraint `round`") && err.lines().count() == 1,
+        "{err}"
+    );
+}

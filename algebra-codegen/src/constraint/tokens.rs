@@ -13,6 +13,7 @@ impl ConstrainedKernel {
     /// docs. It needs `algebra_core::Ring` in scope.
     ///
     /// ```
+    /// # #[cfg(feature = "constraints")] {
     /// use algebra_core::{Algebra, Basis};
     /// use algebra_codegen::ModuleSpec;
     /// use algebra_codegen::constraint::{Constraint, ConstraintKind, constrained_product};
@@ -23,10 +24,26 @@ impl ConstrainedKernel {
     /// let k = constrained_product(&spec, 0, 1, &unit).unwrap();
     /// let f: syn::ItemFn = syn::parse2(k.tokens("rotor_times_vector", 4, 3)).unwrap();
     /// assert_eq!((f.sig.ident.to_string(), f.sig.inputs.len()), ("rotor_times_vector".to_string(), 2));
+    /// # }
     /// ```
     pub fn tokens(&self, name: &str, left_len: usize, right_len: usize) -> TokenStream {
         let f = format_ident!("{}", name);
         let doc = self.doc();
+        let body = self.body();
+        let (na, nb, n_out) = (
+            Literal::usize_unsuffixed(left_len),
+            Literal::usize_unsuffixed(right_len),
+            Literal::usize_unsuffixed(self.outputs.len()),
+        );
+        quote! {
+            #(#[doc = #doc])*
+            pub fn #f<T: Ring>(a: &[T; #na], b: &[T; #nb]) -> [T; #n_out] #body
+        }
+    }
+
+    /// The kernel's block over coefficient arrays `a` and `b` (of a type `T` bound by `Ring`):
+    /// the shared left monomials, then the array of the computed outputs.
+    pub(crate) fn body(&self) -> TokenStream {
         let shared = self.left_monomials.iter().enumerate().map(|(i, m)| {
             let id = format_ident!("m{}", i);
             let p = owned(product("a", m));
@@ -37,14 +54,8 @@ impl ConstrainedKernel {
                 group(ts).into_iter().map(|(right, inner)| group_expr(&right, &inner)).collect();
             owned(signed_sum(&groups))
         });
-        let (na, nb, n_out) = (
-            Literal::usize_unsuffixed(left_len),
-            Literal::usize_unsuffixed(right_len),
-            Literal::usize_unsuffixed(self.outputs.len()),
-        );
         quote! {
-            #(#[doc = #doc])*
-            pub fn #f<T: Ring>(a: &[T; #na], b: &[T; #nb]) -> [T; #n_out] {
+            {
                 #(#shared)*
                 [#(#outs),*]
             }
