@@ -133,7 +133,7 @@ pub(super) fn action_kernel(
                     *t.entry(*k).or_default().entry((a, b)).or_insert_with(Q::zero) += &r * c;
                 }
                 if commutator {
-                    for (k, c) in gp.get(mb, m) {
+                    for (k, c) in gp.get(mb, m).expect("a mask of the spec's algebra") {
                         *t.entry(*k).or_default().entry((a, b)).or_insert_with(Q::zero) -= &r * c;
                     }
                 }
