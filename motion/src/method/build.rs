@@ -1,0 +1,563 @@
+//! One build path for every method of `gam interpolate`: [`super::Method::build`] takes the
+//! key poses and the optional inputs ([`MethodInput`]) and returns a [`BuiltMotion`], a
+//! [`Motion`] over `[t_0, t_m]` that knows its segments ([`MethodSegment`]: the contract's
+//! `segments[]`), samples itself ([`BuiltMotion::sample`]) and gives the rational Bézier
+//! trajectories of body points where the method's motions are rational
+//! ([`BuiltMotion::rational_trajectories`], `gam trajectory`).
+//!
+//! ```
+//! use motion::{Motion, Pose, method::{Method, MethodInput}};
+//! let poses = vec![Pose::<f64>::identity(), Pose::translation(&[1.0, 0.0, 0.0]), Pose::translation(&[1.0, 1.0, 0.0])];
+//! for method in [Method::CcmAdditive, Method::WlLinear, Method::JuttlerQMotion] {
+//!     let m = method.build(&MethodInput::new(poses.clone()))?;
+//!     assert_eq!(m.times(), [0.0, 0.5, 1.0]);
+//!     let p = m.pose(&0.5)?.transform_point(&[0.0; 3])?;
+//!     assert!((p[0] - 1.0).abs() < 1e-14 && p[1].abs() < 1e-14, "{method}");
+//! }
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+
+use super::Method;
+use crate::juttler::parametrisation::normalise;
+use crate::juttler::tr::algorithm1;
+use crate::juttler::{JuttlerError, Parametrisation, QMotion, RationalBezier, RationalMotion, parameters};
+use crate::repr::ReprError;
+use crate::repr::dual_quaternion::{DualQuaternion, to_dual_quaternion_exact};
+use crate::repr::hexanion::Hexanion;
+use crate::repr::hexanion::blend::HexanionLinear;
+use crate::trajectory::{Trajectory, TrajectoryError, TrajectorySample, Velocities, align_signs, sample_motion};
+use crate::velocity::Twist;
+use crate::wareham_lasenby::{WlError, WlLinear, WlMotion, WlQuadratic};
+use crate::{AnyMotion, CurveError, HermiteShapes, JoinError, MapScalar, Motion, Piecewise, Pose};
+use algebra_core::{Real, Ring};
+
+/// The parameters `t_i` of the key poses (`parameters` of the contract).
+///
+/// ```
+/// use motion::{Pose, juttler::Parametrisation, method::{Method, MethodInput, Parameters}};
+/// let poses = [[0.0, 0.0, 0.0], [3.0, 0.0, 0.0], [3.0, 4.0, 0.0]].map(|t| Pose::<f64>::translation(&t)).to_vec();
+/// let input = MethodInput { parameters: Parameters::Rule(Parametrisation::Chordal), ..MethodInput::new(poses) };
+/// assert_eq!(Method::CcmAdditive.build(&input)?.times(), [0.0, 3.0 / 7.0, 1.0]);
+/// # Ok::<(), motion::method::BuildError>(())
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub enum Parameters<T> {
+    /// `t_i = i/m` (the default).
+    Uniform,
+    /// A rule of Jüttler's eq. (15), normalised to `[0, 1]` ([`crate::juttler::parameters`],
+    /// measured on the sign-aligned key poses).
+    Rule(Parametrisation<T>),
+    /// One value per key pose, used as given (strictly increasing; checked by the method).
+    Given(Vec<T>),
+}
+
+/// What a method is built from: the key poses and the optional inputs of the contract. An
+/// input the method does not read ([`Method::inputs`]) is refused, never ignored.
+///
+/// ```
+/// use motion::{Pose, method::{MethodInput, Parameters}};
+/// let input = MethodInput::new(vec![Pose::<f64>::identity(), Pose::translation(&[1.0, 0.0, 0.0])]);
+/// assert_eq!(input.parameters, Parameters::Uniform);
+/// assert!(input.velocities.is_none() && input.shapes.is_none() && input.l1.is_none());
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct MethodInput<T: Ring> {
+    /// The key poses `S_0, ..., S_m` (sign-aligned by the build, rule (24)).
+    pub poses: Vec<Pose<T>>,
+    /// Their parameters.
+    pub parameters: Parameters<T>,
+    /// The space twists at the key poses per unit of `t` (`None`: the method estimates them).
+    pub velocities: Option<Vec<Twist<T>>>,
+    /// The `ccm-*` shapes (`shape`, `gamma`; `None`: unit shape, `γ = 0`).
+    pub shapes: Option<HermiteShapes<T>>,
+    /// The TRT split `l1` (`juttler-trt`).
+    pub l1: Option<usize>,
+}
+
+impl<T: Ring> MethodInput<T> {
+    /// `poses` with uniform parameters and nothing else given.
+    ///
+    /// ```
+    /// let input = motion::method::MethodInput::new(vec![motion::Pose::<f64>::identity()]);
+    /// assert_eq!(input.poses.len(), 1);
+    /// ```
+    pub fn new(poses: Vec<Pose<T>>) -> Self {
+        MethodInput { poses, parameters: Parameters::Uniform, velocities: None, shapes: None, l1: None }
+    }
+}
+
+/// One segment of a built motion over `[t0, t1]` (`segments[]` of the contract).
+///
+/// ```
+/// use motion::{Pose, method::{Method, MethodInput}};
+/// let poses = vec![Pose::<f64>::identity(), Pose::translation(&[1.0, 0.0, 0.0])];
+/// let m = Method::JuttlerQMotion.build(&MethodInput::new(poses))?;
+/// let s = &m.segments()[0];
+/// assert_eq!((s.t0, s.t1, s.representation, s.degree), (0.0, 1.0, "dual-quaternion-bezier", 2));
+/// assert_eq!(s.control_poses.len(), 3);
+/// # Ok::<(), motion::method::BuildError>(())
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct MethodSegment<T: Ring> {
+    /// Start of the segment's parameter interval.
+    pub t0: T,
+    /// End of the segment's parameter interval.
+    pub t1: T,
+    /// What the control data mean ([`Method::representation`]).
+    pub representation: &'static str,
+    /// The degree in `t` (of the Bézier curve, or of the generator before exp).
+    pub degree: usize,
+    /// The control data as poses (g123inf motors acting by `F_S`): Bézier control poses, or
+    /// the key poses the segment depends on (W-L, hexanion).
+    pub control_poses: Vec<Pose<T>>,
+    /// The same control data as dual quaternions acting by Jüttler's (12), where they describe
+    /// the same motion (additive combinations: `ccm-additive`, Q-motions); the map is the one
+    /// `gam pose` uses ([`to_dual_quaternion_exact`], linear).
+    pub dual_quaternions: Option<Vec<DualQuaternion<T>>>,
+    /// `hexanion-linear`: the segment's two end hexanions.
+    pub hexanions: Option<[Hexanion<T>; 2]>,
+}
+
+/// The trajectory of a body point over one segment `[t0, t1]` of a rational method, as a
+/// rational Bézier curve in the segment's local parameter `u = (t - t0)/(t1 - t0)` on `[0, 1]`.
+///
+/// ```
+/// use motion::{Pose, method::{Method, MethodInput}};
+/// let poses = vec![Pose::<f64>::identity(), Pose::translation(&[2.0, 0.0, 0.0])];
+/// let m = Method::JuttlerQMotion.build(&MethodInput::new(poses))?;
+/// let seg = &m.rational_trajectories(&[0.0, 0.0, 0.0])?[0];
+/// assert_eq!((seg.t0, seg.t1, seg.curve.degree()), (0.0, 1.0, 4));
+/// assert!((seg.curve.point(&0.5)?[0] - 1.0).abs() < 1e-15);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct RationalSegment<T> {
+    /// Start of the segment's parameter interval.
+    pub t0: T,
+    /// End of the segment's parameter interval.
+    pub t1: T,
+    /// The trajectory on `[0, 1]`.
+    pub curve: RationalBezier<T>,
+}
+
+/// The motion a method builds, one variant per family of motions; a [`Motion`] over
+/// `[t_0, t_m]` (what [`BuiltMotion`]'s `map_scalar` returns).
+///
+/// ```
+/// use motion::{Motion, Pose, method::{Method, MethodInput, MethodMotion}};
+/// let poses = vec![Pose::<f64>::identity(), Pose::translation(&[1.0, 0.0, 0.0])];
+/// let m = Method::HexanionLinear.build(&MethodInput::new(poses))?;
+/// assert!(matches!(m.motion(), MethodMotion::Hexanion(_)));
+/// assert_eq!(m.motion().domain(), [0.0, 1.0]);
+/// # Ok::<(), motion::method::BuildError>(())
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub enum MethodMotion<T: Ring> {
+    /// `ccm-additive`, `ccm-multiplicative`: Bézier segments at the breakpoints `t_i`.
+    Bezier(Piecewise<T, AnyMotion<T>>),
+    /// `wl-linear`, `wl-quadratic`.
+    Wl(WlMotion<T>),
+    /// `hexanion-linear`.
+    Hexanion(HexanionLinear<T>),
+    /// The Jüttler methods: Q-motions (eq. 13) at their breakpoints (one segment for
+    /// Algorithm 1).
+    QMotions(Piecewise<T, QMotion<T>>),
+}
+
+impl<T: Real> Motion<T> for MethodMotion<T> {
+    fn evaluate(&self, t: &T) -> Result<Pose<T>, CurveError> {
+        match self {
+            MethodMotion::Bezier(m) => m.evaluate(t),
+            MethodMotion::Wl(m) => m.evaluate(t),
+            MethodMotion::Hexanion(m) => m.evaluate(t),
+            MethodMotion::QMotions(m) => m.evaluate(t),
+        }
+    }
+
+    fn domain(&self) -> [T; 2] {
+        match self {
+            MethodMotion::Bezier(m) => m.domain(),
+            MethodMotion::Wl(m) => m.domain(),
+            MethodMotion::Hexanion(m) => m.domain(),
+            MethodMotion::QMotions(m) => m.domain(),
+        }
+    }
+}
+
+impl<T: Real, U: Real> MapScalar<T, U> for MethodMotion<T> {
+    type Mapped = MethodMotion<U>;
+    fn map_scalar(&self, f: &dyn Fn(&T) -> U) -> MethodMotion<U> {
+        match self {
+            MethodMotion::Bezier(m) => MethodMotion::Bezier(m.map_scalar(f)),
+            MethodMotion::Wl(m) => MethodMotion::Wl(m.map_scalar(f)),
+            MethodMotion::Hexanion(m) => MethodMotion::Hexanion(m.map_scalar(f)),
+            MethodMotion::QMotions(m) => MethodMotion::QMotions(m.map_scalar(f)),
+        }
+    }
+}
+
+/// The motion of a method through key poses ([`Method::build`]): the method, the parameters
+/// `t_0 < ... < t_m`, the sign-aligned key poses, the segments and the motion itself.
+///
+/// ```
+/// use motion::{Motion, Pose, method::{Method, MethodInput}};
+/// let poses = vec![Pose::<f64>::identity(), Pose::translation(&[1.0, 0.0, 0.0]), Pose::translation(&[1.0, 1.0, 0.0])];
+/// let m = Method::WlQuadratic.build(&MethodInput::new(poses))?;
+/// assert_eq!((m.method(), m.segments().len(), m.max_degree()), (Method::WlQuadratic, 2, 2));
+/// let s = m.sample(&1.0, &[[0.0; 3]])?;
+/// assert!((s.points[0].position[1] - 1.0).abs() < 1e-14);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct BuiltMotion<T: Ring> {
+    method: Method,
+    times: Vec<T>,
+    key_poses: Vec<Pose<T>>,
+    segments: Vec<MethodSegment<T>>,
+    motion: MethodMotion<T>,
+}
+
+impl<T: Real> BuiltMotion<T> {
+    /// The method that built it.
+    pub fn method(&self) -> Method {
+        self.method
+    }
+
+    /// The parameters `t_0 < ... < t_m` of the key poses.
+    pub fn times(&self) -> &[T] {
+        &self.times
+    }
+
+    /// The key poses after sign alignment.
+    pub fn key_poses(&self) -> &[Pose<T>] {
+        &self.key_poses
+    }
+
+    /// The segments, in order.
+    pub fn segments(&self) -> &[MethodSegment<T>] {
+        &self.segments
+    }
+
+    /// The largest segment degree (the sampling work of `gam interpolate` is counted with it).
+    pub fn max_degree(&self) -> usize {
+        self.segments.iter().map(|s| s.degree).max().unwrap_or(0)
+    }
+
+    /// The motion.
+    pub fn motion(&self) -> &MethodMotion<T> {
+        &self.motion
+    }
+
+    /// Pose, twists, twist rate and the kinematics of `body_points` at `t`
+    /// ([`sample_motion`]: one evaluation over second-order dual numbers).
+    pub fn sample(&self, t: &T, body_points: &[[T; 3]]) -> Result<TrajectorySample<T>, TrajectoryError> {
+        sample_motion(&self.motion, t, body_points)
+    }
+
+    /// The trajectory of the body point `x` (body coordinates) as one rational Bézier curve
+    /// per segment (through [`RationalMotion`]); [`BuildError::NotRational`] for the methods
+    /// whose motions are not rational ([`Method::is_rational`]).
+    ///
+    /// ```
+    /// use motion::{Pose, method::{BuildError, Method, MethodInput}};
+    /// let poses = vec![Pose::<f64>::identity(), Pose::translation(&[1.0, 0.0, 0.0])];
+    /// let m = Method::CcmMultiplicative.build(&MethodInput::new(poses))?;
+    /// assert!(matches!(m.rational_trajectories(&[0.0; 3]), Err(BuildError::NotRational { .. })));
+    /// # Ok::<(), BuildError>(())
+    /// ```
+    pub fn rational_trajectories(&self, x: &[T; 3]) -> Result<Vec<RationalSegment<T>>, BuildError> {
+        let method = self.method.name();
+        match &self.motion {
+            MethodMotion::QMotions(p) => rational_segments(p, x),
+            _ if self.method.is_rational() => Err(BuildError::RationalNotYet { method }),
+            _ => Err(BuildError::NotRational { method }),
+        }
+    }
+}
+
+/// The rational trajectories of `x` under the segments of a piecewise rational motion.
+fn rational_segments<T: Real, M: RationalMotion<T> + Motion<T>>(
+    p: &Piecewise<T, M>,
+    x: &[T; 3],
+) -> Result<Vec<RationalSegment<T>>, BuildError> {
+    p.segments()
+        .iter()
+        .zip(p.breaks().windows(2))
+        .map(|(m, w)| Ok(RationalSegment { t0: w[0].clone(), t1: w[1].clone(), curve: m.rational_trajectory(x)? }))
+        .collect()
+}
+
+impl<T: Real> Motion<T> for BuiltMotion<T> {
+    fn evaluate(&self, t: &T) -> Result<Pose<T>, CurveError> {
+        self.motion.evaluate(t)
+    }
+
+    fn domain(&self) -> [T; 2] {
+        self.motion.domain()
+    }
+}
+
+impl<T: Real, U: Real> MapScalar<T, U> for BuiltMotion<T> {
+    type Mapped = MethodMotion<U>;
+    fn map_scalar(&self, f: &dyn Fn(&T) -> U) -> MethodMotion<U> {
+        self.motion.map_scalar(f)
+    }
+}
+
+/// Why [`Method::build`] (or a rational trajectory of a built motion) failed.
+///
+/// ```
+/// use motion::{Pose, method::{BuildError, Method, MethodInput}};
+/// let e = Method::CcmAdditive.build(&MethodInput::new(vec![Pose::<f64>::identity()])).unwrap_err();
+/// assert!(matches!(e, BuildError::TooFewPoses { got: 1 }) && e.is_input());
+/// ```
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum BuildError {
+    /// An optional input the method does not read.
+    #[error("`{key}` is not used by `{method}` ({})", uses(*method))]
+    Unused {
+        /// The input's spec key.
+        key: &'static str,
+        /// The method.
+        method: Method,
+    },
+    /// Fewer than two key poses.
+    #[error("at least two poses are needed (got {got})")]
+    TooFewPoses {
+        /// How many were given.
+        got: usize,
+    },
+    /// Given parameters, not one per key pose.
+    #[error("`parameters` has {got} values for {poses} poses")]
+    ParameterCount {
+        /// How many were given.
+        got: usize,
+        /// The number of key poses.
+        poses: usize,
+    },
+    /// From a `ccm-*` method.
+    #[error(transparent)]
+    Trajectory(TrajectoryError),
+    /// From a W-L method.
+    #[error(transparent)]
+    Wl(WlError),
+    /// From `hexanion-linear`.
+    #[error(transparent)]
+    Repr(ReprError),
+    /// From a Jüttler method or a parametrisation rule of eq. (15).
+    #[error(transparent)]
+    Juttler(JuttlerError),
+    /// From joining segments.
+    #[error(transparent)]
+    Curve(CurveError),
+    /// A rational trajectory asked of a method whose motions are not rational.
+    #[error(
+        "the motions of `{method}` are not rational (their point trajectories are not rational curves; rational: ccm-additive and the juttler-* methods)"
+    )]
+    NotRational {
+        /// The method.
+        method: &'static str,
+    },
+    /// A rational trajectory of a rational method whose trajectories are not implemented yet.
+    #[error("the rational trajectories of `{method}` are not implemented yet (issue 11)")]
+    RationalNotYet {
+        /// The method.
+        method: &'static str,
+    },
+}
+
+/// The end of the [`BuildError::Unused`] message.
+fn uses(method: Method) -> String {
+    match method.inputs() {
+        [] => "it interpolates the key poses only".to_string(),
+        keys => format!("it uses {}", keys.join(", ")),
+    }
+}
+
+impl BuildError {
+    /// True when the input is bad (a key the method does not use, too few poses, parameters
+    /// not increasing or not one per pose, a parametrisation step of zero), false for a
+    /// numerical failure (a singular pose, a join that is not C1, overflow).
+    ///
+    /// ```
+    /// use motion::method::{BuildError, Method};
+    /// assert!(BuildError::Unused { key: "l1", method: Method::WlLinear }.is_input());
+    /// ```
+    pub fn is_input(&self) -> bool {
+        match self {
+            BuildError::Unused { .. }
+            | BuildError::TooFewPoses { .. }
+            | BuildError::ParameterCount { .. }
+            | BuildError::NotRational { .. }
+            | BuildError::RationalNotYet { .. }
+            | BuildError::Curve(_) => true,
+            BuildError::Trajectory(e) => {
+                matches!(e, TrajectoryError::Input(_) | TrajectoryError::Join(JoinError::Input(_)))
+            }
+            BuildError::Wl(e) => matches!(e, WlError::Curve(_)),
+            BuildError::Repr(e) => matches!(e, ReprError::Curve(_) | ReprError::Times { .. }),
+            BuildError::Juttler(e) => matches!(
+                e,
+                JuttlerError::TooFewPositions { .. } | JuttlerError::Parameters { .. } | JuttlerError::ZeroStep { .. }
+            ),
+        }
+    }
+}
+
+macro_rules! build_error_from {
+    ($($variant:ident($ty:ty)),*) => {$(
+        impl From<$ty> for BuildError {
+            fn from(e: $ty) -> Self {
+                BuildError::$variant(e)
+            }
+        }
+    )*};
+}
+
+build_error_from!(Trajectory(TrajectoryError), Wl(WlError), Repr(ReprError), Juttler(JuttlerError), Curve(CurveError));
+
+impl<T: Real> Parameters<T> {
+    /// The values `t_0, ..., t_m` for the (sign-aligned) key poses.
+    fn values(&self, poses: &[Pose<T>]) -> Result<Vec<T>, BuildError> {
+        let m = poses.len();
+        match self {
+            Parameters::Uniform => Ok((0..m).map(|i| T::from_ratio(i as i64, m as i64 - 1)).collect()),
+            Parameters::Rule(rule) => Ok(parameters(poses, rule)?),
+            Parameters::Given(t) if t.len() != m => Err(BuildError::ParameterCount { got: t.len(), poses: m }),
+            Parameters::Given(t) => Ok(t.clone()),
+        }
+    }
+}
+
+impl Method {
+    /// The motion of this method through `input.poses` (module docs of [`crate::method`]):
+    /// the key poses are sign-aligned (rule (24)), their parameters computed, and the method
+    /// run. Typed errors for inputs the method does not read, too few poses, bad parameters
+    /// and the method's own failures ([`BuildError::is_input`] tells bad input from a
+    /// numerical failure).
+    ///
+    /// ```
+    /// use motion::{Motion, Pose, method::{BuildError, Method, MethodInput}};
+    /// let poses = vec![Pose::<f64>::identity(), Pose::rotation(&[0.0, 0.0, 1.0], &1.0)?];
+    /// let m = Method::JuttlerQMotion.build(&MethodInput::new(poses.clone()))?;
+    /// assert!(m.pose(&1.0)?.is_equivalent(&poses[1], &1e-15)?);
+    /// let with_l1 = MethodInput { l1: Some(0), ..MethodInput::new(poses) };
+    /// assert!(matches!(Method::JuttlerQMotion.build(&with_l1), Err(BuildError::Unused { key: "l1", .. })));
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn build<T: Real>(self, input: &MethodInput<T>) -> Result<BuiltMotion<T>, BuildError> {
+        let given =
+            [("velocities", input.velocities.is_some()), ("shape", input.shapes.is_some()), ("l1", input.l1.is_some())];
+        if let Some((key, _)) = given.into_iter().find(|(key, given)| *given && !self.inputs().contains(key)) {
+            return Err(BuildError::Unused { key, method: self });
+        }
+        let m = input.poses.len();
+        if m < 2 {
+            return Err(BuildError::TooFewPoses { got: m });
+        }
+        let mut poses = input.poses.clone();
+        align_signs(&mut poses);
+        let times = input.parameters.values(&poses)?;
+        let (segments, motion) = match self {
+            Method::CcmAdditive | Method::CcmMultiplicative => self.hermite(input, &poses, &times)?,
+            Method::WlLinear | Method::WlQuadratic => {
+                let wl = match self {
+                    Method::WlLinear => WlMotion::Linear(WlLinear::new(&poses, &times)?),
+                    _ => WlMotion::Quadratic(WlQuadratic::new(&poses, &times)?),
+                };
+                let segments = (0..m - 1).map(|k| self.key_pose_segment(&poses, &times, k, None)).collect();
+                (segments, MethodMotion::Wl(wl))
+            }
+            Method::HexanionLinear => {
+                let h = HexanionLinear::through(&poses, &times)?;
+                let segments = (0..m - 1)
+                    .map(|k| {
+                        let ends = [h.hexanions()[k].clone(), h.hexanions()[k + 1].clone()];
+                        self.key_pose_segment(&poses, &times, k, Some(ends))
+                    })
+                    .collect();
+                (segments, MethodMotion::Hexanion(h))
+            }
+            Method::JuttlerQMotion => {
+                let q = algorithm1(&poses, &normalise(&times, m)?)?;
+                let breaks = vec![times[0].clone(), times[m - 1].clone()];
+                let segments = vec![self.q_motion_segment(&q, &breaks)];
+                (segments, MethodMotion::QMotions(Piecewise::new(breaks, vec![q])?))
+            }
+        };
+        Ok(BuiltMotion { method: self, times, key_poses: poses, segments, motion })
+    }
+
+    /// The `ccm-*` methods: [`Trajectory::through`] with the given or estimated velocities.
+    fn hermite<T: Real>(
+        self,
+        input: &MethodInput<T>,
+        poses: &[Pose<T>],
+        times: &[T],
+    ) -> Result<(Vec<MethodSegment<T>>, MethodMotion<T>), BuildError> {
+        let velocities = match &input.velocities {
+            Some(v) => Velocities::Given(v.clone()),
+            None => Velocities::CatmullRom,
+        };
+        let shapes = input.shapes.clone().unwrap_or_else(HermiteShapes::unit);
+        let tr = Trajectory::through(poses, times, &velocities, self.kind(), &shapes)?;
+        let segments = tr
+            .segments()
+            .iter()
+            .enumerate()
+            .map(|(k, seg)| MethodSegment {
+                t0: times[k].clone(),
+                t1: times[k + 1].clone(),
+                representation: self.representation(),
+                degree: seg.degree(),
+                control_poses: seg.control_poses().to_vec(),
+                dual_quaternions: (self == Method::CcmAdditive)
+                    .then(|| seg.control_poses().iter().map(to_dual_quaternion_exact).collect()),
+                hexanions: None,
+            })
+            .collect();
+        Ok((segments, MethodMotion::Bezier(tr.motion().clone())))
+    }
+
+    /// Segment `k` of a method through the key poses only (W-L, hexanion): the key poses it
+    /// depends on and the degree in `t` of the generator before exp.
+    fn key_pose_segment<T: Real>(
+        self,
+        poses: &[Pose<T>],
+        times: &[T],
+        k: usize,
+        hexanions: Option<[Hexanion<T>; 2]>,
+    ) -> MethodSegment<T> {
+        let last = poses.len() - 1;
+        let (range, degree) = match self {
+            Method::WlQuadratic if last == 2 => (0..=2, 2),
+            Method::WlQuadratic => {
+                let (lo, hi) = (k.saturating_sub(1), (k + 2).min(last));
+                (lo..=hi, if hi - lo == 3 { 3 } else { 2 })
+            }
+            _ => (k..=k + 1, 1),
+        };
+        MethodSegment {
+            t0: times[k].clone(),
+            t1: times[k + 1].clone(),
+            representation: self.representation(),
+            degree,
+            control_poses: poses[range].to_vec(),
+            dual_quaternions: None,
+            hexanions,
+        }
+    }
+
+    /// A Q-motion over `[t0, t1]`: its control dual quaternions, and the same as motors.
+    fn q_motion_segment<T: Real>(self, q: &QMotion<T>, breaks: &[T]) -> MethodSegment<T> {
+        MethodSegment {
+            t0: breaks[0].clone(),
+            t1: breaks[1].clone(),
+            representation: self.representation(),
+            degree: q.degree(),
+            control_poses: q.control().iter().map(|b| Pose::from_motor(b.to_pose())).collect(),
+            dual_quaternions: Some(q.control().to_vec()),
+            hexanions: None,
+        }
+    }
+}
