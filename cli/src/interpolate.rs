@@ -19,6 +19,7 @@ use crate::hermite::strip_comments;
 use crate::output::{mv_human, mv_json};
 use crate::sample::{MAX_SAMPLES, Sample, Sampler, checked};
 use crate::scalar::format_f64;
+use motion::juttler::Parametrisation;
 use motion::method::{BuildError, BuiltMotion, Method, MethodInput, Parameters};
 use motion::trajectory::TrajectorySample;
 use motion::velocity::Twist;
@@ -160,16 +161,16 @@ pub(crate) fn pose_in(path: &str, name: &str, v: &Value) -> Result<Pose<f64>, Cl
 
 /// `parameters` of the spec.
 fn parameters(path: &str, spec: &Spec) -> Result<Parameters<f64>, CliError> {
+    let rule = |r| Ok(Parameters::Rule(r));
     match &spec.parameters {
         None => Ok(Parameters::Uniform),
         Some(Value::String(s)) => match s.as_str() {
             "uniform" => Ok(Parameters::Uniform),
-            "chordal" | "star-chordal" | "centripetal" | "angular" | "angular-chordal" => Err(usage(
-                path,
-                format!(
-                    "`parameters`: `{s}` (Jüttler's eq. (15)) is not implemented yet (it comes with issue 11); use `uniform` or a list"
-                ),
-            )),
+            "chordal" => rule(Parametrisation::Chordal),
+            "star-chordal" => rule(Parametrisation::StarChordal),
+            "centripetal" => rule(Parametrisation::Centripetal),
+            "angular" => rule(Parametrisation::Angular),
+            "angular-chordal" => rule(Parametrisation::AngleDistance),
             _ => Err(usage(
                 path,
                 format!(

@@ -166,8 +166,9 @@ fn errors() {
         2,
     );
     assert!(e.contains("`poses[0].dual_quaternion`") && e.contains("Study quadric"), "{e}");
-    let e = run("chordal", &with(r#", "parameters": "chordal""#), 2);
-    assert!(e.contains("chordal") && e.contains("issue 11"), "{e}");
+    // Jüttler's rules of eq. (15) apply to every method: two pure translations have no angle
+    let e = run("angular", &with(r#", "parameters": "angular""#), 2);
+    assert!(e.contains("step between positions 0 and 1 is 0"), "{e}");
     let e = run("params", &with(r#", "parameters": [0, 0]"#), 2);
     assert!(e.contains("strictly increasing"), "{e}");
     let e = run("params-count", &with(r#", "parameters": [0, 1, 2]"#), 2);

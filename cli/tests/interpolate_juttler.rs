@@ -1,0 +1,228 @@
+//! `gam interpolate` with Jüttler's `juttler-q-motion` (Algorithm 1): the contract's JSON keys,
+//! the motion through every key pose (matrices by Rodrigues' formula here, not by the
+//! library), the segment's dual quaternions checked by evaluating their Bézier curve and
+//! Jüttler's point map (12) in this file, the motor <-> dual quaternion correspondence of
+//! `gam pose`, the parametrisation rules of eq. (15) against hand-computed values, sign
+//! alignment, point velocities against differences, and the error contract.
+
+mod common;
+
+use common::{TempFile, assert_velocities_match_differences, fails, ok, rodrigues};
+use serde_json::Value;
+
+/// (axis, angle, position) of four key poses.
+const KEYS: [([f64; 3], f64, [f64; 3]); 4] = [
+    ([0.0, 0.0, 1.0], 0.0, [0.0, 0.0, 0.0]),
+    ([0.0, 0.0, 1.0], 1.2, [1.0, 0.0, 0.5]),
+    ([0.0, 1.0, 0.0], 0.5, [2.0, 1.0, 0.0]),
+    ([1.0, 1.0, 1.0], -0.7, [2.0, 2.0, -1.0]),
+];
+
+fn poses() -> String {
+    let p: Vec<String> =
+        KEYS.iter().map(|(a, phi, t)| format!(r#"{{"position": {t:?}, "axis": {a:?}, "angle": {phi}}}"#)).collect();
+    format!("[{}]", p.join(", "))
+}
+
+fn run_json(name: &str, text: &str) -> Value {
+    let spec = TempFile::new(&format!("interp-jq-{name}.json"), text);
+    serde_json::from_str(&ok(&["interpolate", "--json", spec.path()])).expect("JSON")
+}
+
+fn max_diff(a: &[[f64; 4]; 4], b: &[[f64; 4]; 4]) -> f64 {
+    (0..4).flat_map(|i| (0..4).map(move |j| (a[i][j] - b[i][j]).abs())).fold(0.0, f64::max)
+}
+
+/// Hamilton product of quaternions `[w, x, y, z]`.
+fn qmul(a: [f64; 4], b: [f64; 4]) -> [f64; 4] {
+    [
+        a[0] * b[0] - a[1] * b[1] - a[2] * b[2] - a[3] * b[3],
+        a[0] * b[1] + a[1] * b[0] + a[2] * b[3] - a[3] * b[2],
+        a[0] * b[2] - a[1] * b[3] + a[2] * b[0] + a[3] * b[1],
+        a[0] * b[3] + a[1] * b[2] - a[2] * b[1] + a[3] * b[0],
+    ]
+}
+
+/// The image of `x` under the dual quaternion `q = r + ε d` by Jüttler's (12):
+/// `y = Du(q (2 + ε x) conj(r)) / |r|²`, with `Du(q (2 + ε x) conj(r)) = 2 d conj(r) + r x conj(r)`.
+fn jut_image(q: &[f64; 8], x: [f64; 3]) -> [f64; 3] {
+    let r = [q[0], q[1], q[2], q[3]];
+    let d = [q[4], q[5], q[6], q[7]];
+    let rc = [r[0], -r[1], -r[2], -r[3]];
+    let a = qmul(d, rc);
+    let b = qmul(qmul(r, [0.0, x[0], x[1], x[2]]), rc);
+    let n = r.iter().map(|c| c * c).sum::<f64>();
+    std::array::from_fn(|k| (2.0 * a[k + 1] + b[k + 1]) / n)
+}
+
+/// The Bézier curve of `control` at `u` (de Casteljau).
+fn bezier(control: &[[f64; 8]], u: f64) -> [f64; 8] {
+    let mut col = control.to_vec();
+    for len in (1..col.len()).rev() {
+        for i in 0..len {
+            col[i] = std::array::from_fn(|k| (1.0 - u) * col[i][k] + u * col[i + 1][k]);
+        }
+    }
+    col[0]
+}
+
+#[test]
+fn output_keys_key_poses_and_dual_quaternions() {
+    // explicit parameters, used as given: samples at t = 0, 0.5, ..., 5 hit every key
+    let text = format!(
+        r#"{{"method": "juttler-q-motion", "poses": {}, "parameters": [0, 1, 2.5, 5], "samples": 11,
+  "body_points": [[0, 0, 0], [0.5, -1, 2]]}}"#,
+        poses()
+    );
+    let v = run_json("keys", &text);
+    let keys: Vec<&String> = v.as_object().unwrap().keys().collect();
+    assert_eq!(keys, ["method", "parameters", "segments", "samples"]);
+    assert_eq!(v["method"], "juttler-q-motion");
+    assert_eq!(v["parameters"], serde_json::json!([0.0, 1.0, 2.5, 5.0]));
+    let segs = v["segments"].as_array().unwrap();
+    assert_eq!(segs.len(), 1);
+    let s = &segs[0];
+    let keys: Vec<&String> = s.as_object().unwrap().keys().collect();
+    assert_eq!(keys, ["t0", "t1", "representation", "degree", "control_poses", "dual_quaternions"]);
+    assert_eq!((s["t0"].as_f64(), s["t1"].as_f64()), (Some(0.0), Some(5.0)));
+    assert_eq!(s["representation"], "dual-quaternion-bezier");
+    assert_eq!(s["degree"], 6); // 2m for m + 1 = 4 poses
+    assert_eq!(s["control_poses"].as_array().unwrap().len(), 7);
+    let dq: Vec<[f64; 8]> = serde_json::from_value(s["dual_quaternions"].clone()).unwrap();
+    assert_eq!(dq.len(), 7);
+
+    let samples = v["samples"].as_array().unwrap();
+    assert_eq!(samples.len(), 11);
+    let body = [[0.0, 0.0, 0.0], [0.5, -1.0, 2.0]];
+    for s in samples {
+        let keys: Vec<&String> = s.as_object().unwrap().keys().collect();
+        assert_eq!(keys, ["t", "matrix", "points", "velocities", "angular_velocity"]);
+        // the points are the images of the body points under the curve of the printed dual
+        // quaternions (local parameter u = t/5), by (12) computed here
+        let t = s["t"].as_f64().unwrap();
+        let q = bezier(&dq, t / 5.0);
+        let pts: Vec<[f64; 3]> = serde_json::from_value(s["points"].clone()).unwrap();
+        for (p, x) in pts.iter().zip(body) {
+            let want = jut_image(&q, x);
+            assert!((0..3).all(|k| (p[k] - want[k]).abs() < 1e-12), "t = {t}: {p:?} vs {want:?}");
+        }
+    }
+    // through every key pose, as a rigid motion
+    for ((axis, phi, pos), t) in KEYS.iter().zip([0.0, 1.0, 2.5, 5.0]) {
+        let s = samples.iter().find(|s| s["t"].as_f64() == Some(t)).expect("a sample at the key's parameter");
+        let got: [[f64; 4]; 4] = serde_json::from_value(s["matrix"].clone()).unwrap();
+        let want = rodrigues(*axis, *phi, *pos);
+        assert!(max_diff(&got, &want) < 1e-13, "t = {t}: {got:?} vs {want:?}");
+    }
+}
+
+/// `control_poses` and `dual_quaternions` are the same control data under `gam pose`'s map
+/// (r = S + S23 i - S13 j + S12 k, d = -S123inf + S1inf i + S2inf j + S3inf k): checked
+/// coefficient by coefficient, and the end control points (the key poses up to a factor)
+/// against `gam pose`'s `dual_quaternion`.
+#[test]
+fn control_poses_and_dual_quaternions_agree() {
+    let v = run_json("map", &format!(r#"{{"method": "juttler-q-motion", "poses": {}}}"#, poses()));
+    let s = &v["segments"][0];
+    let dq: Vec<[f64; 8]> = serde_json::from_value(s["dual_quaternions"].clone()).unwrap();
+    let motors = s["control_poses"].as_array().unwrap();
+    let c = |m: &Value, k: &str| m.get(k).map_or(0.0, |x| x.as_str().unwrap().parse::<f64>().unwrap());
+    for (m, d) in motors.iter().zip(&dq) {
+        let want = [
+            c(m, "1"),
+            c(m, "e23"),
+            -c(m, "e13"),
+            c(m, "e12"),
+            -c(m, "e123inf"),
+            c(m, "e1inf"),
+            c(m, "e2inf"),
+            c(m, "e3inf"),
+        ];
+        assert!((0..8).all(|k| (d[k] - want[k]).abs() < 1e-15), "{m} vs {d:?}");
+    }
+    for (motor, d) in [(&motors[0], dq[0]), (&motors[motors.len() - 1], dq[dq.len() - 1])] {
+        let pose: Value =
+            serde_json::from_str(&ok(&["pose", "--json", &format!(r#"{{"motor": {motor}}}"#)])).expect("JSON");
+        let unit: [f64; 8] = serde_json::from_value(pose["dual_quaternion"].clone()).unwrap();
+        let scale = d[0] / unit[0];
+        assert!((0..8).all(|k| (d[k] - scale * unit[k]).abs() < 1e-14), "{d:?} vs {scale} {unit:?}");
+    }
+}
+
+/// The rules of eq. (15) on three translations (distances 3 and 4): chordal, *-chordal and
+/// angle + distance give t_1 = 3/7, centripetal √3/(√3 + 2); angular has a zero step (exit 2).
+#[test]
+fn parametrisation_rules() {
+    let poses = r#"[{"position": [0, 0, 0]}, {"position": [3, 0, 0]}, {"position": [3, 4, 0]}]"#;
+    let r3 = 3f64.sqrt();
+    for (rule, t1) in [
+        ("chordal", 3.0 / 7.0),
+        ("star-chordal", 3.0 / 7.0),
+        ("angular-chordal", 3.0 / 7.0),
+        ("centripetal", r3 / (r3 + 2.0)),
+    ] {
+        for method in ["juttler-q-motion", "ccm-additive"] {
+            let text = format!(r#"{{"method": "{method}", "poses": {poses}, "parameters": "{rule}", "samples": 2}}"#);
+            let v = run_json(&format!("{rule}-{method}"), &text);
+            let t: Vec<f64> = serde_json::from_value(v["parameters"].clone()).unwrap();
+            assert!(t[0] == 0.0 && t[2] == 1.0 && (t[1] - t1).abs() < 1e-15, "{rule} {method}: {t:?}");
+        }
+    }
+    let spec = TempFile::new(
+        "interp-jq-angular.json",
+        &format!(r#"{{"method": "juttler-q-motion", "poses": {poses}, "parameters": "angular"}}"#),
+    );
+    let e = fails(&["interpolate", spec.path()], 2);
+    assert!(e.contains("juttler-q-motion") && e.contains("step between positions 0 and 1 is 0"), "{e}");
+}
+
+/// Negating a key pose (the same rigid motion) gives the same motion (rule (24)).
+#[test]
+fn sign_alignment_keeps_the_motion() {
+    let a = r#"[{"motor": {"1": 1}}, {"motor": {"1": "0.8", "e12": "0.6", "e1inf": 1}}, {"motor": {"1": "0.6", "e12": "0.8"}}]"#;
+    let b = r#"[{"motor": {"1": 1}}, {"motor": {"1": "-0.8", "e12": "-0.6", "e1inf": -1}}, {"motor": {"1": "0.6", "e12": "0.8"}}]"#;
+    let spec = |p: &str| format!(r#"{{"method": "juttler-q-motion", "poses": {p}, "samples": 5}}"#);
+    let (va, vb) = (run_json("sign-a", &spec(a)), run_json("sign-b", &spec(b)));
+    assert_eq!(va["segments"], vb["segments"]);
+    assert_eq!(va["samples"], vb["samples"]);
+}
+
+/// Velocities (dual numbers) against central differences of the sampled points; `gam sample`
+/// gives the same positions.
+#[test]
+fn velocities_and_gam_sample() {
+    let n = 3001;
+    let text = format!(
+        r#"{{"method": "juttler-q-motion", "poses": {}, "samples": {n}, "body_points": [[0, 0, 0], [0.5, -1, 2]]}}"#,
+        poses()
+    );
+    let v = run_json("fd", &text);
+    let samples = v["samples"].as_array().unwrap();
+    assert_velocities_match_differences("juttler-q-motion", samples, 1.0 / (n - 1) as f64, &[200, 1000, 1500, 2900]);
+    let spec = TempFile::new("interp-jq-sample.json", &text);
+    let out: Value = serde_json::from_str(&ok(&["sample", spec.path(), "--samples", "3001", "--json"])).unwrap();
+    for k in [0, 1000, 3000] {
+        let p: [f64; 3] = serde_json::from_value(out["samples"][k]["position"].clone()).unwrap();
+        let q: Vec<[f64; 3]> = serde_json::from_value(samples[k]["points"].clone()).unwrap();
+        assert_eq!(p, q[0]);
+    }
+}
+
+#[test]
+fn errors() {
+    let run = |name: &str, extra: &str| {
+        let text = format!(r#"{{"method": "juttler-q-motion", "poses": {}{extra}}}"#, poses());
+        let spec = TempFile::new(&format!("interp-jq-err-{name}.json"), &text);
+        fails(&["interpolate", "--json", spec.path()], 2)
+    };
+    let e = run("velocities", r#", "velocities": []"#);
+    assert!(e.contains("`velocities` is not used by `juttler-q-motion`"), "{e}");
+    let e = run("l1", r#", "l1": 1"#);
+    assert!(e.contains("`l1` is not used by `juttler-q-motion`"), "{e}");
+    let e = run("shape", r#", "shape": 2"#);
+    assert!(e.contains("`shape` is not used"), "{e}");
+    let e = run("params", r#", "parameters": [0, 1, 1, 2]"#);
+    assert!(e.contains("juttler-q-motion") && e.contains("not larger than"), "{e}");
+    let e = run("rule", r#", "parameters": "chordial""#);
+    assert!(e.contains("unknown rule `chordial`"), "{e}");
+}
