@@ -4,11 +4,14 @@
 //!
 //! | module | contents | paper |
 //! |---|---|---|
+//! | [`minimal`] | [`minimal::MinimalMotion`]: rational motions of order `n` (35)-(36); interpolation (37)-(39), order `2m` | Thm. 6, Sec. 5 |
 //! | [`parametrisation`] | parameters `t_i` of the given positions: chordal, `*`-chordal, equidistant, centripetal, angular, angle + distance, explicit | eq. (15) |
 //! | [`q_motion`] | [`QMotion`]: Bézier curves of dual quaternions on the Study quadric; de Casteljau, degree elevation, product formula (29), the Study condition as a polynomial; a [`crate::Motion`] | eqs. (13), (29), (8) |
 //! | [`rational_trajectory`] | [`RationalBezier`]: the trajectory of a body point as a rational Bézier curve of degree `2n`; evaluation, derivative, degree elevation | eq. (12), Sec. 1 |
 //! | [`rotational`] | interpolation of the rotational parts: affine (19)-(21), elliptic (22)-(25) with the sign rule (24) | Props. 1, 2 |
+//! | [`projective`] | the projective method (27)-(28): the null space of a homogeneous system, degree `3m/4`, unique up to a real factor | Prop. 3 |
 //! | [`tr`] | the TR method (30)-(31) and Algorithm 1 (elliptic + TR, degree `2m`) | Prop. 4, Algorithm 1 |
+//! | [`trt`] | the TRT method (32)-(34): translations on both sides, split `l1 + l2 = m - 1`, independent of the moving origin | Result 5 |
 //!
 //! The parametrisations that take square roots or angles need [`algebra_core::Real`]; the
 //! rest is exact over [`algebra_core::rational::Q`].
@@ -26,11 +29,14 @@
 //! assert_eq!(path.point(&ratio(1, 2)).unwrap(), [q(0), q(0), q(1)]);
 //! ```
 
+pub mod minimal;
 pub mod parametrisation;
+pub mod projective;
 pub mod q_motion;
 pub mod rational_trajectory;
 pub mod rotational;
 pub mod tr;
+pub mod trt;
 
 pub use parametrisation::{Parametrisation, parameters};
 pub use q_motion::QMotion;
@@ -99,6 +105,55 @@ pub enum JuttlerError {
         /// Its index.
         index: usize,
     },
+    /// The projective method (28) with `k = 3m/4` needs `m` divisible by 4 (`m + 1` positions).
+    #[error("the projective method needs m + 1 positions with m divisible by 4 (k = 3m/4), got {positions}")]
+    ProjectiveCount {
+        /// The number of positions given.
+        positions: usize,
+    },
+    /// A homogeneous system (28) whose solutions form a space of dimension `dimension > 1`:
+    /// the interpolant is not unique up to a real factor.
+    #[error("the homogeneous system (28) has a {dimension}-dimensional solution space: not unique up to a real factor")]
+    NotUnique {
+        /// The dimension of the null space.
+        dimension: usize,
+    },
+    /// A homogeneous system (28) with only the trivial solution `C_j = 0`.
+    #[error("the homogeneous system (28) has only the trivial solution")]
+    OnlyTrivial,
+    /// A position that the projective method cannot reach: `Q_rot(t_i) = 0` (Jüttler: "inaccessible").
+    #[error("position {index} is inaccessible: the projective interpolant vanishes at its parameter")]
+    Inaccessible {
+        /// Its index.
+        index: usize,
+    },
+    /// A singular linear system of an interpolation method (e.g. TRT's (34) when positions
+    /// share an orientation).
+    #[error("the linear system {system} is singular (rank {rank} of {unknowns} unknowns): {why}")]
+    SingularSystem {
+        /// The paper's equation number, e.g. "(34)".
+        system: &'static str,
+        /// The rank found.
+        rank: usize,
+        /// The number of unknowns.
+        unknowns: usize,
+        /// The likely reason.
+        why: &'static str,
+    },
+    /// A split `l1 + l2 = m - 1` of the TRT method with `l1 > m - 1`.
+    #[error("TRT split: l1 = {l1} exceeds m - 1 = {max}")]
+    Split {
+        /// The given `l1`.
+        l1: usize,
+        /// `m - 1`.
+        max: usize,
+    },
+    /// A rotational motion with a non-zero dual part where a pure rotation `Q_rot` (17) was expected.
+    #[error("the rotational motion has a non-zero dual part at control point {index}")]
+    NotRotational {
+        /// The first offending control point.
+        index: usize,
+    },
     /// A pose operation failed.
     #[error(transparent)]
     Motion(#[from] MotionError),
@@ -110,6 +165,19 @@ pub enum JuttlerError {
 /// `C(n, k)` as an exact rational.
 pub(crate) fn binomial(n: usize, k: usize) -> Q {
     (0..k).fold(q(1), |acc, i| acc * q((n - i) as i64) / q((i + 1) as i64))
+}
+
+/// The Bernstein polynomials `b_0^k(t), …, b_k^k(t)` at `t` (exact over rationals).
+///
+/// ```
+/// use algebra_core::rational::{q, ratio};
+/// let b = motion::juttler::bernstein_values(2, &ratio(1, 2));
+/// assert_eq!(b, [ratio(1, 4), ratio(1, 2), ratio(1, 4)]);
+/// ```
+pub fn bernstein_values<T: Ring>(k: usize, t: &T) -> Vec<T> {
+    let pow = |x: &T, e: usize| (0..e).fold(T::one(), |acc, _| acc.mul_ref(x));
+    let s = T::one().sub_ref(t);
+    (0..=k).map(|j| T::from_rational(&binomial(k, j)).mul_ref(&pow(t, j)).mul_ref(&pow(&s, k - j))).collect()
 }
 
 /// The factor of the product formula (29): `b_i^k b_j^l = C(k,i) C(l,j)/C(k+l,i+j) b_{i+j}^{k+l}`,

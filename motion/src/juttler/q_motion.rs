@@ -98,6 +98,12 @@ impl<T: Ring> QMotion<T> {
         Self::new(control, 0.0)
     }
 
+    /// The curve with these control points, without the Study check: for sums and products of
+    /// Q-motions that lie on the quadric by construction.
+    pub(crate) fn from_control_unchecked(control: Vec<DualQuaternion<T>>) -> Self {
+        QMotion { control }
+    }
+
     /// The control points `B_0, …, B_n`.
     ///
     /// ```
@@ -227,21 +233,24 @@ impl<T: Field> QMotion<T> {
     }
 }
 
+/// The pose of a dual quaternion of a curve on the Study quadric (checked as a polynomial, so
+/// the pointwise check is off); a pole (`Q⁰ = 0`) is [`MotionError::Singular`].
+pub(crate) fn pose_of<T: Real>(q: &DualQuaternion<T>) -> Result<Pose<T>, CurveError> {
+    from_dual_quaternion(q, &T::one()).map_err(|e| match e {
+        ReprError::Motion(m) => CurveError::Pose(m),
+        ReprError::Curve(c) => c,
+        ReprError::NotFinite => CurveError::Pose(MotionError::NotFinite { op: "Q-motion", value: q.to_string() }),
+        _ => CurveError::Pose(MotionError::Singular { op: "Q-motion (pole, zero real part)", value: q.to_string() }),
+    })
+}
+
 /// A Q-motion is a [`Motion`] on `[0, 1]`: the pose of `Q(t)` by the map of
 /// [`crate::repr::dual_quaternion`]. The Study condition was checked as a polynomial when the
 /// motion was built, so the pointwise check is off (`tol = 1` bounds every cosine); a pole
 /// (`Q⁰(t) = 0`) is [`MotionError::Singular`].
 impl<T: Real> Motion<T> for QMotion<T> {
     fn evaluate(&self, t: &T) -> Result<Pose<T>, CurveError> {
-        let q = self.eval(t);
-        from_dual_quaternion(&q, &T::one()).map_err(|e| match e {
-            ReprError::Motion(m) => CurveError::Pose(m),
-            ReprError::Curve(c) => c,
-            ReprError::NotFinite => CurveError::Pose(MotionError::NotFinite { op: "Q-motion", value: q.to_string() }),
-            _ => {
-                CurveError::Pose(MotionError::Singular { op: "Q-motion (pole, zero real part)", value: q.to_string() })
-            }
-        })
+        pose_of(&self.eval(t))
     }
 
     fn domain(&self) -> [T; 2] {

@@ -54,6 +54,11 @@ impl<T: Ring> RationalBezier<T> {
         Ok(RationalBezier { control })
     }
 
+    /// The curve with these (non-empty) homogeneous control points, unchecked.
+    pub(crate) fn from_control_unchecked(control: Vec<[T; 4]>) -> Self {
+        RationalBezier { control }
+    }
+
     /// The homogeneous control points `(w_i, w_i p_i)`.
     ///
     /// ```

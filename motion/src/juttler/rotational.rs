@@ -12,22 +12,14 @@
 //! assert_eq!(rot.eval(&ratio(1, 2)).real, Quaternion::new(q(1), q(0), q(0), ratio(1, 2)));
 //! ```
 
-use super::{JuttlerError, QMotion, binomial};
+use super::{JuttlerError, QMotion};
 use crate::repr::dual_quaternion::{DualQuaternion, Quaternion};
 use algebra_core::linalg::solve;
 use algebra_core::{Field, Real, Ring};
 
 /// The Bernstein collocation matrix `A[i][j] = b_j^m(t_i)` (`m + 1` parameters, degree `m`).
 fn collocation<T: Ring>(params: &[T]) -> Vec<Vec<T>> {
-    let m = params.len() - 1;
-    let pow = |x: &T, e: usize| (0..e).fold(T::one(), |acc, _| acc.mul_ref(x));
-    params
-        .iter()
-        .map(|t| {
-            let s = T::one().sub_ref(t);
-            (0..=m).map(|j| T::from_rational(&binomial(m, j)).mul_ref(&pow(t, j)).mul_ref(&pow(&s, m - j))).collect()
-        })
-        .collect()
+    params.iter().map(|t| super::bernstein_values(params.len() - 1, t)).collect()
 }
 
 /// Solves `Σ_j b_j^m(t_i) c_j = rhs_i` for `N` components at once (exact over rationals).
@@ -57,7 +49,7 @@ pub(crate) fn check_count<T>(positions: usize, params: &[T]) -> Result<(), Juttl
     Ok(())
 }
 
-fn rotational<T: Ring>(c: Vec<[T; 4]>) -> Result<QMotion<T>, JuttlerError> {
+pub(crate) fn rotational<T: Ring>(c: Vec<[T; 4]>) -> Result<QMotion<T>, JuttlerError> {
     let [w, x, y, z] = [0, 1, 2, 3];
     QMotion::new_exact(
         c.into_iter()
