@@ -8,10 +8,14 @@
 //! | [`parametrisation`] | parameters `t_i` of the given positions: chordal, `*`-chordal, equidistant, centripetal, angular, angle + distance, explicit | eq. (15) |
 //! | [`q_motion`] | [`QMotion`]: Bézier curves of dual quaternions on the Study quadric; de Casteljau, degree elevation, product formula (29), the Study condition as a polynomial; a [`crate::Motion`] | eqs. (13), (29), (8) |
 //! | [`rational_trajectory`] | [`RationalBezier`]: the trajectory of a body point as a rational Bézier curve of degree `2n`; evaluation, derivative, degree elevation | eq. (12), Sec. 1 |
+//! | [`additive_trajectory`] | trajectories of the main paper's additive Bézier motions ([`crate::AdditiveBezier`], a [`RationalMotion`]): degree `2n` | main paper (18), (6)-(9); (29) |
 //! | [`rotational`] | interpolation of the rotational parts: affine (19)-(21), elliptic (22)-(25) with the sign rule (24) | Props. 1, 2 |
 //! | [`projective`] | the projective method (27)-(28): the null space of a homogeneous system, degree `3m/4`, unique up to a real factor | Prop. 3 |
 //! | [`tr`] | the TR method (30)-(31) and Algorithm 1 (elliptic + TR, degree `2m`) | Prop. 4, Algorithm 1 |
 //! | [`trt`] | the TRT method (32)-(34): translations on both sides, split `l1 + l2 = m - 1`, independent of the moving origin | Result 5 |
+//! | [`surface`] | [`surface::RationalBezierSurface`]: the kinematic (sweeping) surface `y(t, v) = M(t) x(v)` of a rational Bézier curve as a rational tensor-product Bézier surface | Sec. 5, Fig. 5b |
+//! | [`velocity`] | [`KeyVelocity`] (`v⃗_i`, `ω⃗_i`) and step 1 of Algorithm 2: velocities estimated from the connecting translations and rotations (Bessel) | Algorithm 2, (42) |
+//! | [`spline`] | [`SplineQMotion`]: Algorithm 2, the C1 spline Q-motion (40)-(44); a [`crate::Motion`] | Sec. 6, Algorithm 2 |
 //!
 //! The parametrisations that take square roots or angles need [`algebra_core::Real`]; the
 //! rest is exact over [`algebra_core::rational::Q`].
@@ -29,18 +33,24 @@
 //! assert_eq!(path.point(&ratio(1, 2)).unwrap(), [q(0), q(0), q(1)]);
 //! ```
 
+pub mod additive_trajectory;
 pub mod minimal;
 pub mod parametrisation;
 pub mod projective;
 pub mod q_motion;
 pub mod rational_trajectory;
 pub mod rotational;
+pub mod spline;
+pub mod surface;
 pub mod tr;
 pub mod trt;
+pub mod velocity;
 
 pub use parametrisation::{Parametrisation, parameters};
 pub use q_motion::QMotion;
 pub use rational_trajectory::{RationalBezier, RationalMotion};
+pub use spline::SplineQMotion;
+pub use velocity::KeyVelocity;
 
 use crate::MotionError;
 use crate::repr::ReprError;

@@ -35,7 +35,7 @@ pub struct RationalBezier<T> {
     control: Vec<[T; 4]>,
 }
 
-fn lerp4<T: Ring>(a: &[T; 4], b: &[T; 4], s: &T, t: &T) -> [T; 4] {
+pub(crate) fn lerp4<T: Ring>(a: &[T; 4], b: &[T; 4], s: &T, t: &T) -> [T; 4] {
     std::array::from_fn(|k| a[k].mul_ref(s).add_ref(&b[k].mul_ref(t)))
 }
 
@@ -159,7 +159,7 @@ impl<T: Field> RationalBezier<T> {
 }
 
 /// `(w, w p) ↦ p`, or [`JuttlerError::ZeroWeight`].
-fn affine<T: Field>(h: &[T; 4], what: impl FnOnce() -> String) -> Result<[T; 3], JuttlerError> {
+pub(crate) fn affine<T: Field>(h: &[T; 4], what: impl FnOnce() -> String) -> Result<[T; 3], JuttlerError> {
     let inv = super::recip_or(&h[0], what)?;
     Ok([h[1].mul_ref(&inv), h[2].mul_ref(&inv), h[3].mul_ref(&inv)])
 }
