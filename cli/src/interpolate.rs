@@ -265,7 +265,11 @@ fn build(path: &str, spec: &Spec) -> Result<Built, CliError> {
         ),
     };
     let shapes = if spec.shape.is_some() || spec.gamma.is_some() { Some(shapes(path, spec, m)?) } else { None };
-    let input = MethodInput { parameters: parameters(path, spec)?, velocities, shapes, ..MethodInput::new(poses) };
+    let l1 = match spec.l1 {
+        None => None,
+        Some(k) => Some(usize::try_from(k).map_err(|_| usage(path, format!("`l1` must be 0 or more (got {k})")))?),
+    };
+    let input = MethodInput { parameters: parameters(path, spec)?, velocities, shapes, l1, ..MethodInput::new(poses) };
     if spec.samples == 1 || spec.samples > MAX_SAMPLES {
         return Err(usage(path, format!("`samples` must be 0 or from 2 to {MAX_SAMPLES} (got {})", spec.samples)));
     }

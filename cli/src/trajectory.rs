@@ -28,7 +28,7 @@ pub fn trajectory(path: &str, point_text: &str, json: bool) -> Result<String, Cl
     let b = built(path)?;
     let method = b.motion.method();
     let segments = b.motion.rational_trajectories(&x).map_err(|e| match e {
-        BuildError::NotRational { .. } | BuildError::RationalNotYet { .. } => usage(path, e),
+        BuildError::NotRational { .. } => usage(path, e),
         e => CliError::math(format!("{method}: {e}")),
     })?;
     let mut out = Vec::with_capacity(segments.len());

@@ -158,8 +158,8 @@ fn errors() {
     let with = |extra: &str| format!(r#"{{"method": "ccm-additive", "poses": {two}{extra}}}"#);
     let e = run("unknown", &format!(r#"{{"method": "spline", "poses": {two}}}"#), 2);
     assert!(e.contains("unknown method `spline`"), "{e}");
-    let e = run("later", &format!(r#"{{"method": "juttler-spline", "poses": {two}}}"#), 2);
-    assert!(e.contains("not implemented yet") && e.contains("issue 11"), "{e}");
+    let e = run("unused", &format!(r#"{{"method": "juttler-spline", "poses": {two}, "shape": 1}}"#), 2);
+    assert!(e.contains("`shape` is not used by `juttler-spline`"), "{e}");
     let e = run(
         "dq",
         r#"{"method": "ccm-additive", "poses": [{"dual_quaternion": [1,0,0,0,1,0,0,0]}, {"position": [1,0,0]}]}"#,

@@ -1,9 +1,12 @@
-//! `gam interpolate` with Jüttler's `juttler-q-motion` (Algorithm 1): the contract's JSON keys,
-//! the motion through every key pose (matrices by Rodrigues' formula here, not by the
-//! library), the segment's dual quaternions checked by evaluating their Bézier curve and
-//! Jüttler's point map (12) in this file, the motor <-> dual quaternion correspondence of
-//! `gam pose`, the parametrisation rules of eq. (15) against hand-computed values, sign
-//! alignment, point velocities against differences, and the error contract.
+//! `gam interpolate` with Jüttler's methods `juttler-q-motion` (Algorithm 1), `juttler-trt`,
+//! `juttler-minimal` and `juttler-spline` (Algorithm 2): the contract's JSON keys and the
+//! papers' degrees, the motion through every key pose (matrices by Rodrigues' formula here,
+//! not by the library), the segments' dual quaternions checked by evaluating their Bézier
+//! curves and Jüttler's point map (12) in this file, the motor <-> dual quaternion
+//! correspondence of `gam pose`, the parametrisation rules of eq. (15) against hand-computed
+//! values, sign alignment, point velocities against differences (across the spline's knots:
+//! C1), given spline velocities reproduced, TRT's split and singular system, and the error
+//! contract.
 
 mod common;
 
@@ -66,54 +69,130 @@ fn bezier(control: &[[f64; 8]], u: f64) -> [f64; 8] {
     col[0]
 }
 
+/// The segment of `segs` holding `t` and the local parameter there.
+fn segment_at(segs: &[Value], t: f64) -> (&Value, f64) {
+    let seg = segs
+        .iter()
+        .find(|g| g["t0"].as_f64().unwrap() <= t && t <= g["t1"].as_f64().unwrap())
+        .expect("a segment holds t");
+    let (t0, t1) = (seg["t0"].as_f64().unwrap(), seg["t1"].as_f64().unwrap());
+    (seg, (t - t0) / (t1 - t0))
+}
+
+/// (method, extra spec keys, segments, degree of each segment's control data) for the four
+/// key poses (m = 3): 2m; TRT max(l1, l2) + m; the minimal motion's Q-motion (36) of degree
+/// k + n = m + 2m; the spline's segments 6.
+const METHODS: [(&str, &str, usize, u64); 5] = [
+    ("juttler-q-motion", "", 1, 6),
+    ("juttler-trt", "", 1, 5),
+    ("juttler-trt", r#", "l1": 1"#, 1, 4),
+    ("juttler-minimal", "", 1, 9),
+    ("juttler-spline", "", 3, 6),
+];
+
 #[test]
 fn output_keys_key_poses_and_dual_quaternions() {
-    // explicit parameters, used as given: samples at t = 0, 0.5, ..., 5 hit every key
-    let text = format!(
-        r#"{{"method": "juttler-q-motion", "poses": {}, "parameters": [0, 1, 2.5, 5], "samples": 11,
-  "body_points": [[0, 0, 0], [0.5, -1, 2]]}}"#,
-        poses()
-    );
-    let v = run_json("keys", &text);
-    let keys: Vec<&String> = v.as_object().unwrap().keys().collect();
-    assert_eq!(keys, ["method", "parameters", "segments", "samples"]);
-    assert_eq!(v["method"], "juttler-q-motion");
-    assert_eq!(v["parameters"], serde_json::json!([0.0, 1.0, 2.5, 5.0]));
-    let segs = v["segments"].as_array().unwrap();
-    assert_eq!(segs.len(), 1);
-    let s = &segs[0];
-    let keys: Vec<&String> = s.as_object().unwrap().keys().collect();
-    assert_eq!(keys, ["t0", "t1", "representation", "degree", "control_poses", "dual_quaternions"]);
-    assert_eq!((s["t0"].as_f64(), s["t1"].as_f64()), (Some(0.0), Some(5.0)));
-    assert_eq!(s["representation"], "dual-quaternion-bezier");
-    assert_eq!(s["degree"], 6); // 2m for m + 1 = 4 poses
-    assert_eq!(s["control_poses"].as_array().unwrap().len(), 7);
-    let dq: Vec<[f64; 8]> = serde_json::from_value(s["dual_quaternions"].clone()).unwrap();
-    assert_eq!(dq.len(), 7);
-
-    let samples = v["samples"].as_array().unwrap();
-    assert_eq!(samples.len(), 11);
-    let body = [[0.0, 0.0, 0.0], [0.5, -1.0, 2.0]];
-    for s in samples {
-        let keys: Vec<&String> = s.as_object().unwrap().keys().collect();
-        assert_eq!(keys, ["t", "matrix", "points", "velocities", "angular_velocity"]);
-        // the points are the images of the body points under the curve of the printed dual
-        // quaternions (local parameter u = t/5), by (12) computed here
-        let t = s["t"].as_f64().unwrap();
-        let q = bezier(&dq, t / 5.0);
-        let pts: Vec<[f64; 3]> = serde_json::from_value(s["points"].clone()).unwrap();
-        for (p, x) in pts.iter().zip(body) {
-            let want = jut_image(&q, x);
-            assert!((0..3).all(|k| (p[k] - want[k]).abs() < 1e-12), "t = {t}: {p:?} vs {want:?}");
+    for (method, extra, nseg, degree) in METHODS {
+        // explicit parameters, used as given: samples at t = 0, 0.5, ..., 5 hit every key
+        let text = format!(
+            r#"{{"method": "{method}", "poses": {}, "parameters": [0, 1, 2.5, 5], "samples": 11,
+  "body_points": [[0, 0, 0], [0.5, -1, 2]]{extra}}}"#,
+            poses()
+        );
+        let v = run_json(&format!("keys-{method}{}", extra.len()), &text);
+        let keys: Vec<&String> = v.as_object().unwrap().keys().collect();
+        assert_eq!(keys, ["method", "parameters", "segments", "samples"]);
+        assert_eq!(v["method"], method);
+        assert_eq!(v["parameters"], serde_json::json!([0.0, 1.0, 2.5, 5.0]));
+        let segs = v["segments"].as_array().unwrap();
+        assert_eq!(segs.len(), nseg, "{method}");
+        let mut dqs = Vec::new();
+        for (k, s) in segs.iter().enumerate() {
+            let keys: Vec<&String> = s.as_object().unwrap().keys().collect();
+            assert_eq!(keys, ["t0", "t1", "representation", "degree", "control_poses", "dual_quaternions"]);
+            let ends = if nseg == 1 { (0.0, 5.0) } else { ([0.0, 1.0, 2.5][k], [1.0, 2.5, 5.0][k]) };
+            assert_eq!((s["t0"].as_f64().unwrap(), s["t1"].as_f64().unwrap()), ends);
+            assert_eq!(s["representation"], "dual-quaternion-bezier");
+            assert_eq!(s["degree"], degree, "{method}{extra}");
+            assert_eq!(s["control_poses"].as_array().unwrap().len(), degree as usize + 1);
+            let dq: Vec<[f64; 8]> = serde_json::from_value(s["dual_quaternions"].clone()).unwrap();
+            assert_eq!(dq.len(), degree as usize + 1);
+            dqs.push(dq);
+        }
+        let samples = v["samples"].as_array().unwrap();
+        assert_eq!(samples.len(), 11);
+        let body = [[0.0, 0.0, 0.0], [0.5, -1.0, 2.0]];
+        for s in samples {
+            let keys: Vec<&String> = s.as_object().unwrap().keys().collect();
+            assert_eq!(keys, ["t", "matrix", "points", "velocities", "angular_velocity"]);
+            // the points are the images of the body points under the curve of the printed dual
+            // quaternions (local parameter u), by (12) computed here
+            let t = s["t"].as_f64().unwrap();
+            let (seg, u) = segment_at(segs, t);
+            let k = segs.iter().position(|g| g == seg).unwrap();
+            let q = bezier(&dqs[k], u);
+            let pts: Vec<[f64; 3]> = serde_json::from_value(s["points"].clone()).unwrap();
+            for (p, x) in pts.iter().zip(body) {
+                let want = jut_image(&q, x);
+                assert!((0..3).all(|k| (p[k] - want[k]).abs() < 1e-12), "{method} t = {t}: {p:?} vs {want:?}");
+            }
+        }
+        // through every key pose, as a rigid motion
+        for ((axis, phi, pos), t) in KEYS.iter().zip([0.0, 1.0, 2.5, 5.0]) {
+            let s = samples.iter().find(|s| s["t"].as_f64() == Some(t)).expect("a sample at the key's parameter");
+            let got: [[f64; 4]; 4] = serde_json::from_value(s["matrix"].clone()).unwrap();
+            let want = rodrigues(*axis, *phi, *pos);
+            assert!(max_diff(&got, &want) < 1e-13, "{method} t = {t}: {got:?} vs {want:?}");
         }
     }
-    // through every key pose, as a rigid motion
-    for ((axis, phi, pos), t) in KEYS.iter().zip([0.0, 1.0, 2.5, 5.0]) {
-        let s = samples.iter().find(|s| s["t"].as_f64() == Some(t)).expect("a sample at the key's parameter");
-        let got: [[f64; 4]; 4] = serde_json::from_value(s["matrix"].clone()).unwrap();
-        let want = rodrigues(*axis, *phi, *pos);
-        assert!(max_diff(&got, &want) < 1e-13, "t = {t}: {got:?} vs {want:?}");
+}
+
+/// Given velocities (body origin, fixed frame, per unit of t) are the spline's at the key
+/// poses, with explicit non-uniform parameters.
+#[test]
+fn spline_reproduces_given_velocities() {
+    let given = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [-1.0, 0.5, 0.0]];
+    let omega = [[0.0, 0.0, 0.5], [0.1, 0.0, 0.5], [0.0, 0.2, 0.0], [0.0, 0.0, -0.5]];
+    let v: Vec<String> =
+        given.iter().zip(&omega).map(|(v, w)| format!(r#"{{"velocity": {v:?}, "angular_velocity": {w:?}}}"#)).collect();
+    let text = format!(
+        r#"{{"method": "juttler-spline", "poses": {}, "parameters": [0, 1, 2.5, 5], "velocities": [{}], "samples": 11}}"#,
+        poses(),
+        v.join(", ")
+    );
+    let out = run_json("spline-given", &text);
+    let samples = out["samples"].as_array().unwrap();
+    for (i, t) in [0.0, 1.0, 2.5, 5.0].into_iter().enumerate() {
+        let s = samples.iter().find(|s| s["t"].as_f64() == Some(t)).unwrap();
+        let vel: Vec<[f64; 3]> = serde_json::from_value(s["velocities"].clone()).unwrap();
+        let w: [f64; 3] = serde_json::from_value(s["angular_velocity"].clone()).unwrap();
+        assert!((0..3).all(|k| (vel[0][k] - given[i][k]).abs() < 1e-12 && (w[k] - omega[i][k]).abs() < 1e-12), "{s}");
     }
+}
+
+/// TRT: every split l1 = 0, 1, 2 passes through the key poses with degree max(l1, l2) + m;
+/// l1 > m - 1 is bad input; two positions make (34) singular: exit 1 naming the method.
+#[test]
+fn trt_splits_and_singular_system() {
+    for l1 in 0..3 {
+        let text = format!(r#"{{"method": "juttler-trt", "poses": {}, "l1": {l1}, "samples": 4}}"#, poses());
+        let v = run_json(&format!("trt-{l1}"), &text);
+        assert_eq!(v["segments"][0]["degree"], l1.max(2 - l1) + 3);
+        for (s, (axis, phi, pos)) in v["samples"].as_array().unwrap().iter().zip(KEYS) {
+            let got: [[f64; 4]; 4] = serde_json::from_value(s["matrix"].clone()).unwrap();
+            assert!(max_diff(&got, &rodrigues(axis, phi, pos)) < 1e-13, "l1 = {l1}: {got:?}");
+        }
+    }
+    let spec = TempFile::new(
+        "interp-jq-trt-split.json",
+        &format!(r#"{{"method": "juttler-trt", "poses": {}, "l1": 3}}"#, poses()),
+    );
+    let e = fails(&["interpolate", spec.path()], 2);
+    assert!(e.contains("juttler-trt") && e.contains("l1 = 3 exceeds m - 1 = 2"), "{e}");
+    let two = r#"[{"position": [0, 0, 0]}, {"position": [1, 0, 0], "axis": [0, 0, 1], "angle": 1}]"#;
+    let spec = TempFile::new("interp-jq-trt-two.json", &format!(r#"{{"method": "juttler-trt", "poses": {two}}}"#));
+    let e = fails(&["interpolate", "--json", spec.path()], 1);
+    assert!(e.contains("juttler-trt") && e.contains("(34) is singular"), "{e}");
 }
 
 /// `control_poses` and `dual_quaternions` are the same control data under `gam pose`'s map
@@ -189,22 +268,39 @@ fn sign_alignment_keeps_the_motion() {
 
 /// Velocities (dual numbers) against central differences of the sampled points; `gam sample`
 /// gives the same positions.
+/// At the spline's inner knots t = 1/3, 2/3 (k = 1000, 2000) the velocity from the left and
+/// from the right (second-order one-sided differences of the sampled points, each within one
+/// segment) both equal the sampled velocity: C1.
 #[test]
 fn velocities_and_gam_sample() {
     let n = 3001;
-    let text = format!(
-        r#"{{"method": "juttler-q-motion", "poses": {}, "samples": {n}, "body_points": [[0, 0, 0], [0.5, -1, 2]]}}"#,
-        poses()
-    );
-    let v = run_json("fd", &text);
-    let samples = v["samples"].as_array().unwrap();
-    assert_velocities_match_differences("juttler-q-motion", samples, 1.0 / (n - 1) as f64, &[200, 1000, 1500, 2900]);
-    let spec = TempFile::new("interp-jq-sample.json", &text);
-    let out: Value = serde_json::from_str(&ok(&["sample", spec.path(), "--samples", "3001", "--json"])).unwrap();
-    for k in [0, 1000, 3000] {
-        let p: [f64; 3] = serde_json::from_value(out["samples"][k]["position"].clone()).unwrap();
-        let q: Vec<[f64; 3]> = serde_json::from_value(samples[k]["points"].clone()).unwrap();
-        assert_eq!(p, q[0]);
+    for method in ["juttler-q-motion", "juttler-trt", "juttler-minimal", "juttler-spline"] {
+        let text = format!(
+            r#"{{"method": "{method}", "poses": {}, "samples": {n}, "body_points": [[0, 0, 0], [0.5, -1, 2]]}}"#,
+            poses()
+        );
+        let v = run_json(&format!("fd-{method}"), &text);
+        let samples = v["samples"].as_array().unwrap();
+        let h = 1.0 / (n - 1) as f64;
+        assert_velocities_match_differences(method, samples, h, &[200, 1500, 2900]);
+        for k in [1000, 2000] {
+            let p = |j: usize| -> Vec<[f64; 3]> { serde_json::from_value(samples[j]["points"].clone()).unwrap() };
+            let vel: Vec<[f64; 3]> = serde_json::from_value(samples[k]["velocities"].clone()).unwrap();
+            let (a, b, c, d, e) = (p(k - 2), p(k - 1), p(k), p(k + 1), p(k + 2));
+            for (q, v) in vel.iter().enumerate() {
+                let left: [f64; 3] = std::array::from_fn(|r| (3.0 * c[q][r] - 4.0 * b[q][r] + a[q][r]) / (2.0 * h));
+                let right: [f64; 3] = std::array::from_fn(|r| (-3.0 * c[q][r] + 4.0 * d[q][r] - e[q][r]) / (2.0 * h));
+                let close = |x: &[f64; 3]| (0..3).all(|r| (x[r] - v[r]).abs() < 1e-5 * (1.0 + v[r].abs()));
+                assert!(close(&left) && close(&right), "{method} knot {k}: {left:?} {right:?} vs {v:?}");
+            }
+        }
+        let spec = TempFile::new(&format!("interp-jq-sample-{method}.json"), &text);
+        let out: Value = serde_json::from_str(&ok(&["sample", spec.path(), "--samples", "3001", "--json"])).unwrap();
+        for k in [0, 1000, 3000] {
+            let p: [f64; 3] = serde_json::from_value(out["samples"][k]["position"].clone()).unwrap();
+            let q: Vec<[f64; 3]> = serde_json::from_value(samples[k]["points"].clone()).unwrap();
+            assert_eq!(p, q[0], "{method}");
+        }
     }
 }
 
@@ -225,4 +321,19 @@ fn errors() {
     assert!(e.contains("juttler-q-motion") && e.contains("not larger than"), "{e}");
     let e = run("rule", r#", "parameters": "chordial""#);
     assert!(e.contains("unknown rule `chordial`"), "{e}");
+    let run = |name: &str, method: &str, extra: &str| {
+        let text = format!(r#"{{"method": "{method}", "poses": {}{extra}}}"#, poses());
+        let spec = TempFile::new(&format!("interp-jq-err-{name}.json"), &text);
+        fails(&["interpolate", spec.path()], 2)
+    };
+    let e = run("trt-negative", "juttler-trt", r#", "l1": -1"#);
+    assert!(e.contains("`l1` must be 0 or more"), "{e}");
+    let e = run("spline-l1", "juttler-spline", r#", "l1": 1"#);
+    assert!(e.contains("`l1` is not used by `juttler-spline` (it uses velocities)"), "{e}");
+    let e = run("minimal-velocities", "juttler-minimal", r#", "velocities": []"#);
+    assert!(e.contains("`velocities` is not used by `juttler-minimal`"), "{e}");
+    let e = run("spline-velocities", "juttler-spline", r#", "velocities": []"#);
+    assert!(e.contains("`velocities` has 0 entries for 4 poses"), "{e}");
+    let e = run("spline-params", "juttler-spline", r#", "parameters": [0, 2, 1, 3]"#);
+    assert!(e.contains("juttler-spline") && e.contains("not strictly increasing"), "{e}");
 }

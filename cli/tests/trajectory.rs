@@ -34,24 +34,44 @@ fn evaluate(seg: &Value, u: f64) -> [f64; 3] {
     std::array::from_fn(|k| (0..=d).map(|j| b(j) * w[j] * p[j][k]).sum::<f64>() / den)
 }
 
+/// (method, segments, degree of the trajectories): 2n for the Q-motions (n = 2m = 6; TRT
+/// n = max(l1, l2) + m = 5; the spline's n = 6), 2m for the minimal-order motion, 2n = 6 for
+/// the additive cubics.
+const RATIONAL: [(&str, usize, u64); 5] = [
+    ("juttler-q-motion", 1, 12),
+    ("juttler-trt", 1, 10),
+    ("juttler-minimal", 1, 6),
+    ("juttler-spline", 3, 12),
+    ("ccm-additive", 3, 6),
+];
+
 #[test]
 fn curves_equal_the_sampled_points() {
-    for (name, params, x) in
-        [("uniform", "", [0.5, -1.0, 2.0]), ("explicit", r#", "parameters": [0, 1, 2.5, 5]"#, [-1.0, 2.0, 0.25])]
+    for (method, nseg, degree) in RATIONAL {
+        for (name, params, x) in
+            [("uniform", "", [0.5, -1.0, 2.0]), ("explicit", r#", "parameters": [0, 1, 2.5, 5]"#, [-1.0, 2.0, 0.25])]
+        {
+            curves_equal_points(method, nseg, degree, name, params, x);
+        }
+    }
+}
+
+fn curves_equal_points(method: &str, nseg: usize, degree: u64, name: &str, params: &str, x: [f64; 3]) {
     {
-        let text = spec("juttler-q-motion", &format!(r#"{params}, "samples": 101, "body_points": [{x:?}]"#));
-        let file = TempFile::new(&format!("traj-{name}.json"), &text);
+        let text = spec(method, &format!(r#"{params}, "samples": 101, "body_points": [{x:?}]"#));
+        let file = TempFile::new(&format!("traj-{method}-{name}.json"), &text);
         let point = format!("{},{},{}", x[0], x[1], x[2]);
         let curves: Value =
             serde_json::from_str(&ok(&["trajectory", "--json", file.path(), "--point", &point])).expect("JSON");
         let keys: Vec<&String> = curves.as_object().unwrap().keys().collect();
         assert_eq!(keys, ["segments"]);
         let segs = curves["segments"].as_array().unwrap();
-        assert_eq!(segs.len(), 1);
-        let keys: Vec<&String> = segs[0].as_object().unwrap().keys().collect();
-        assert_eq!(keys, ["t0", "t1", "degree", "weights", "points"]);
-        // 2n for the Q-motion of degree n = 2m = 6
-        assert!(segs[0]["degree"].as_u64().unwrap() <= 12, "{}", segs[0]["degree"]);
+        assert_eq!(segs.len(), nseg, "{method}");
+        for s in segs {
+            let keys: Vec<&String> = s.as_object().unwrap().keys().collect();
+            assert_eq!(keys, ["t0", "t1", "degree", "weights", "points"]);
+            assert_eq!(s["degree"].as_u64().unwrap(), degree, "{method}");
+        }
         let sampled: Value = serde_json::from_str(&ok(&["interpolate", "--json", file.path()])).expect("JSON");
         for s in sampled["samples"].as_array().unwrap() {
             let t = s["t"].as_f64().unwrap();
@@ -62,11 +82,12 @@ fn curves_equal_the_sampled_points() {
             let (t0, t1) = (seg["t0"].as_f64().unwrap(), seg["t1"].as_f64().unwrap());
             let got = evaluate(seg, (t - t0) / (t1 - t0));
             let want: [f64; 3] = serde_json::from_value(s["points"][0].clone()).unwrap();
-            assert!((0..3).all(|k| (got[k] - want[k]).abs() < 1e-12), "{name} t = {t}: {got:?} vs {want:?}");
+            assert!((0..3).all(|k| (got[k] - want[k]).abs() < 1e-12), "{method} {name} t = {t}: {got:?} vs {want:?}");
         }
-        // the text form lists the same degree + 1 control points
+        // the text form lists the same control points
         let text = ok(&["trajectory", file.path(), "--point", &point]);
-        assert_eq!(text.lines().filter(|l| l.trim_start().starts_with('w')).count(), 13, "{text}");
+        let count = text.lines().filter(|l| l.trim_start().starts_with('w')).count();
+        assert_eq!(count, nseg * (degree as usize + 1), "{text}");
     }
 }
 
@@ -95,7 +116,7 @@ fn errors() {
     fails(&["trajectory", file.path()], 2); // --point is required
     let e = fails(&["trajectory", "/nonexistent/spec.json", "--point", "0,0,0"], 2);
     assert!(e.contains("cannot read"), "{e}");
-    let later = TempFile::new("traj-later.json", &spec("juttler-spline", ""));
-    let e = fails(&["trajectory", later.path(), "--point", "0,0,0"], 2);
-    assert!(e.contains("not implemented yet"), "{e}");
+    let unknown = TempFile::new("traj-unknown.json", &spec("juttler-slerp", ""));
+    let e = fails(&["trajectory", unknown.path(), "--point", "0,0,0"], 2);
+    assert!(e.contains("unknown method `juttler-slerp`"), "{e}");
 }

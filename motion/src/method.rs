@@ -5,15 +5,16 @@
 //! its rational point trajectories where the method's motions are rational, and is sampled
 //! by one function ([`BuiltMotion::sample`]).
 //!
-//! Built today: the main paper's two C1 Hermite methods (Sec. 5.3), Wareham–Lasenby's
-//! `wl-linear` and `wl-quadratic`, Angelidis' `hexanion-linear` and Jüttler's Algorithm 1
-//! (`juttler-q-motion`). The names of the other Jüttler methods are known, so asking for one
-//! is a clear "not yet" instead of "unknown".
+//! Built: the main paper's two C1 Hermite methods (Sec. 5.3), Wareham–Lasenby's `wl-linear`
+//! and `wl-quadratic`, Angelidis' `hexanion-linear`, and Jüttler's Algorithm 1
+//! (`juttler-q-motion`), TRT (`juttler-trt`), minimal order (`juttler-minimal`) and
+//! Algorithm 2 (`juttler-spline`): every method of the contract. A name of the contract that
+//! is not implemented would be a clear "not yet" ([`LATER`], empty today) instead of "unknown".
 //!
 //! ```
 //! use motion::method::{Method, MethodError};
 //! assert_eq!("ccm-additive".parse::<Method>(), Ok(Method::CcmAdditive));
-//! assert!(matches!("juttler-spline".parse::<Method>(), Err(MethodError::NotYet { .. })));
+//! assert_eq!("juttler-spline".parse::<Method>(), Ok(Method::JuttlerSpline));
 //! assert!(matches!("spline".parse::<Method>(), Err(MethodError::Unknown { .. })));
 //! ```
 
@@ -49,20 +50,28 @@ pub enum Method {
     /// elliptic rotation (23)-(25) composed with the TR translation (30)-(31)
     /// ([`crate::juttler::tr::algorithm1`]).
     JuttlerQMotion,
+    /// Jüttler Sec. 4.2: the elliptic rotation (22)-(25) with the TRT translations (32)-(34),
+    /// split `l1 + l2 = m - 1` ([`crate::juttler::trt::trt`]).
+    JuttlerTrt,
+    /// Jüttler Sec. 5: the rational motion of minimal order `2m` (37)-(39) on the elliptic
+    /// rotation ([`crate::juttler::minimal::minimal`]).
+    JuttlerMinimal,
+    /// Jüttler's Algorithm 2: the C1 spline Q-motion (40)-(44), velocities given or estimated
+    /// by step 1 ([`crate::juttler::spline::algorithm2`]).
+    JuttlerSpline,
 }
 
-/// The methods the contract names that come with later issues (name, issue).
-pub const LATER: [(&str, u32); 3] = [("juttler-trt", 11), ("juttler-minimal", 11), ("juttler-spline", 11)];
+/// The methods the contract names that come with later issues (name, issue): none today.
+pub const LATER: [(&str, u32); 0] = [];
 
 /// The implemented methods, as listed in messages.
-const IMPLEMENTED: &str =
-    "ccm-additive, ccm-multiplicative, wl-linear, wl-quadratic, hexanion-linear, juttler-q-motion";
+const IMPLEMENTED: &str = "ccm-additive, ccm-multiplicative, wl-linear, wl-quadratic, hexanion-linear, juttler-q-motion, juttler-trt, juttler-minimal, juttler-spline";
 
 /// Why a method name was not accepted.
 ///
 /// ```
-/// let e = "juttler-trt".parse::<motion::method::Method>().unwrap_err();
-/// assert!(e.to_string().contains("not implemented yet"));
+/// let e = "juttler-slerp".parse::<motion::method::Method>().unwrap_err();
+/// assert!(e.to_string().contains("unknown method `juttler-slerp`"));
 /// ```
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 pub enum MethodError {
@@ -98,7 +107,10 @@ crate::names::named!("motion::method::Method", Method {
     WlLinear => "wl-linear",
     WlQuadratic => "wl-quadratic",
     HexanionLinear => "hexanion-linear",
-    JuttlerQMotion => "juttler-q-motion"
+    JuttlerQMotion => "juttler-q-motion",
+    JuttlerTrt => "juttler-trt",
+    JuttlerMinimal => "juttler-minimal",
+    JuttlerSpline => "juttler-spline"
 });
 
 impl Method {
@@ -114,7 +126,11 @@ impl Method {
     /// ```
     pub fn kind(self) -> SegmentKind {
         match self {
-            Method::CcmAdditive | Method::JuttlerQMotion => SegmentKind::Additive,
+            Method::CcmAdditive
+            | Method::JuttlerQMotion
+            | Method::JuttlerTrt
+            | Method::JuttlerMinimal
+            | Method::JuttlerSpline => SegmentKind::Additive,
             Method::CcmMultiplicative | Method::WlLinear | Method::WlQuadratic | Method::HexanionLinear => {
                 SegmentKind::Multiplicative
             }
@@ -135,7 +151,9 @@ impl Method {
             Method::WlLinear => "wl-relative-rotor",
             Method::WlQuadratic => "wl-bivector-quadratic",
             Method::HexanionLinear => "hexanion-linear",
-            Method::JuttlerQMotion => "dual-quaternion-bezier",
+            Method::JuttlerQMotion | Method::JuttlerTrt | Method::JuttlerMinimal | Method::JuttlerSpline => {
+                "dual-quaternion-bezier"
+            }
         }
     }
 
@@ -147,11 +165,18 @@ impl Method {
     /// use motion::method::Method;
     /// assert_eq!(Method::CcmAdditive.inputs(), ["velocities", "shape", "gamma"]);
     /// assert!(Method::WlLinear.inputs().is_empty() && Method::JuttlerQMotion.inputs().is_empty());
+    /// assert_eq!(Method::JuttlerTrt.inputs(), ["l1"]);
     /// ```
     pub fn inputs(self) -> &'static [&'static str] {
         match self {
             Method::CcmAdditive | Method::CcmMultiplicative => &["velocities", "shape", "gamma"],
-            Method::WlLinear | Method::WlQuadratic | Method::HexanionLinear | Method::JuttlerQMotion => &[],
+            Method::JuttlerTrt => &["l1"],
+            Method::JuttlerSpline => &["velocities"],
+            Method::WlLinear
+            | Method::WlQuadratic
+            | Method::HexanionLinear
+            | Method::JuttlerQMotion
+            | Method::JuttlerMinimal => &[],
         }
     }
 
@@ -165,6 +190,6 @@ impl Method {
     /// assert!(Method::JuttlerQMotion.is_rational() && !Method::WlLinear.is_rational());
     /// ```
     pub fn is_rational(self) -> bool {
-        matches!(self, Method::CcmAdditive | Method::JuttlerQMotion)
+        !matches!(self, Method::CcmMultiplicative | Method::WlLinear | Method::WlQuadratic | Method::HexanionLinear)
     }
 }

@@ -18,9 +18,12 @@
 //! ```
 
 use super::Method;
+use crate::juttler::minimal::{MinimalMotion, minimal};
 use crate::juttler::parametrisation::normalise;
+use crate::juttler::spline::algorithm2;
 use crate::juttler::tr::algorithm1;
-use crate::juttler::{JuttlerError, Parametrisation, QMotion, RationalBezier, RationalMotion, parameters};
+use crate::juttler::trt::trt;
+use crate::juttler::{JuttlerError, KeyVelocity, Parametrisation, QMotion, RationalBezier, RationalMotion, parameters};
 use crate::repr::ReprError;
 use crate::repr::dual_quaternion::{DualQuaternion, to_dual_quaternion_exact};
 use crate::repr::hexanion::Hexanion;
@@ -159,9 +162,11 @@ pub enum MethodMotion<T: Ring> {
     Wl(WlMotion<T>),
     /// `hexanion-linear`.
     Hexanion(HexanionLinear<T>),
-    /// The Jüttler methods: Q-motions (eq. 13) at their breakpoints (one segment for
-    /// Algorithm 1).
+    /// `juttler-q-motion`, `juttler-trt`, `juttler-spline`: Q-motions (eq. 13) at their
+    /// breakpoints (one segment for Algorithm 1 and TRT, one per interval for Algorithm 2).
     QMotions(Piecewise<T, QMotion<T>>),
+    /// `juttler-minimal`: the rational motion of minimal order (35) over `[t_0, t_m]`.
+    Minimal(Piecewise<T, MinimalMotion<T>>),
 }
 
 impl<T: Real> Motion<T> for MethodMotion<T> {
@@ -171,6 +176,7 @@ impl<T: Real> Motion<T> for MethodMotion<T> {
             MethodMotion::Wl(m) => m.evaluate(t),
             MethodMotion::Hexanion(m) => m.evaluate(t),
             MethodMotion::QMotions(m) => m.evaluate(t),
+            MethodMotion::Minimal(m) => m.evaluate(t),
         }
     }
 
@@ -180,6 +186,7 @@ impl<T: Real> Motion<T> for MethodMotion<T> {
             MethodMotion::Wl(m) => m.domain(),
             MethodMotion::Hexanion(m) => m.domain(),
             MethodMotion::QMotions(m) => m.domain(),
+            MethodMotion::Minimal(m) => m.domain(),
         }
     }
 }
@@ -192,6 +199,7 @@ impl<T: Real, U: Real> MapScalar<T, U> for MethodMotion<T> {
             MethodMotion::Wl(m) => MethodMotion::Wl(m.map_scalar(f)),
             MethodMotion::Hexanion(m) => MethodMotion::Hexanion(m.map_scalar(f)),
             MethodMotion::QMotions(m) => MethodMotion::QMotions(m.map_scalar(f)),
+            MethodMotion::Minimal(m) => MethodMotion::Minimal(m.map_scalar(f)),
         }
     }
 }
@@ -266,11 +274,22 @@ impl<T: Real> BuiltMotion<T> {
     /// # Ok::<(), BuildError>(())
     /// ```
     pub fn rational_trajectories(&self, x: &[T; 3]) -> Result<Vec<RationalSegment<T>>, BuildError> {
-        let method = self.method.name();
+        let not_rational = || BuildError::NotRational { method: self.method.name() };
         match &self.motion {
             MethodMotion::QMotions(p) => rational_segments(p, x),
-            _ if self.method.is_rational() => Err(BuildError::RationalNotYet { method }),
-            _ => Err(BuildError::NotRational { method }),
+            MethodMotion::Minimal(p) => rational_segments(p, x),
+            MethodMotion::Bezier(p) if self.method.is_rational() => p
+                .segments()
+                .iter()
+                .zip(p.breaks().windows(2))
+                .map(|(m, w)| match m {
+                    AnyMotion::AdditiveBezier(b) => {
+                        Ok(RationalSegment { t0: w[0].clone(), t1: w[1].clone(), curve: b.rational_trajectory(x)? })
+                    }
+                    _ => Err(not_rational()),
+                })
+                .collect(),
+            _ => Err(not_rational()),
         }
     }
 }
@@ -358,12 +377,6 @@ pub enum BuildError {
         /// The method.
         method: &'static str,
     },
-    /// A rational trajectory of a rational method whose trajectories are not implemented yet.
-    #[error("the rational trajectories of `{method}` are not implemented yet (issue 11)")]
-    RationalNotYet {
-        /// The method.
-        method: &'static str,
-    },
 }
 
 /// The end of the [`BuildError::Unused`] message.
@@ -389,7 +402,6 @@ impl BuildError {
             | BuildError::TooFewPoses { .. }
             | BuildError::ParameterCount { .. }
             | BuildError::NotRational { .. }
-            | BuildError::RationalNotYet { .. }
             | BuildError::Curve(_) => true,
             BuildError::Trajectory(e) => {
                 matches!(e, TrajectoryError::Input(_) | TrajectoryError::Join(JoinError::Input(_)))
@@ -398,7 +410,10 @@ impl BuildError {
             BuildError::Repr(e) => matches!(e, ReprError::Curve(_) | ReprError::Times { .. }),
             BuildError::Juttler(e) => matches!(
                 e,
-                JuttlerError::TooFewPositions { .. } | JuttlerError::Parameters { .. } | JuttlerError::ZeroStep { .. }
+                JuttlerError::TooFewPositions { .. }
+                    | JuttlerError::Parameters { .. }
+                    | JuttlerError::ZeroStep { .. }
+                    | JuttlerError::Split { .. }
             ),
         }
     }
@@ -427,6 +442,20 @@ impl<T: Real> Parameters<T> {
             Parameters::Given(t) => Ok(t.clone()),
         }
     }
+}
+
+/// Space twists (`u` the velocity of the body point at the global origin) as Jüttler's
+/// `v⃗_i`, `ω⃗_i` (the velocity of the moving origin, at the key pose's position `p_i`):
+/// `v⃗_i = u + Ω × p_i`.
+fn key_velocities<T: Real>(poses: &[Pose<T>], twists: &[Twist<T>]) -> Result<Vec<KeyVelocity<T>>, BuildError> {
+    poses
+        .iter()
+        .zip(twists)
+        .map(|(s, w)| {
+            let p = s.transform_point(&[T::zero(), T::zero(), T::zero()]).map_err(JuttlerError::from)?;
+            Ok(KeyVelocity::new(w.point_velocity(&p).into(), w.angular.to_array()))
+        })
+        .collect()
 }
 
 impl Method {
@@ -478,11 +507,42 @@ impl Method {
                     .collect();
                 (segments, MethodMotion::Hexanion(h))
             }
-            Method::JuttlerQMotion => {
-                let q = algorithm1(&poses, &normalise(&times, m)?)?;
+            Method::JuttlerQMotion | Method::JuttlerTrt => {
+                let u = normalise(&times, m)?;
+                let q = if self == Method::JuttlerQMotion {
+                    algorithm1(&poses, &u)?
+                } else {
+                    // default l1 = m - 1 for m + 1 poses (l2 = 0)
+                    trt(&poses, &u, input.l1.unwrap_or(m - 2))?
+                };
                 let breaks = vec![times[0].clone(), times[m - 1].clone()];
                 let segments = vec![self.q_motion_segment(&q, &breaks)];
                 (segments, MethodMotion::QMotions(Piecewise::new(breaks, vec![q])?))
+            }
+            Method::JuttlerMinimal => {
+                let motion = minimal(&poses, &normalise(&times, m)?)?;
+                let breaks = vec![times[0].clone(), times[m - 1].clone()];
+                // the control data: its Q-motion (36), the same motion
+                let segments = vec![self.q_motion_segment(&motion.q_motion(), &breaks)];
+                (segments, MethodMotion::Minimal(Piecewise::new(breaks, vec![motion])?))
+            }
+            Method::JuttlerSpline => {
+                let velocities = match &input.velocities {
+                    None => None,
+                    Some(v) if v.len() != m => {
+                        let why = format!("{} velocities for {m} poses", v.len());
+                        return Err(JuttlerError::Parameters { why }.into());
+                    }
+                    Some(v) => Some(key_velocities(&poses, v)?),
+                };
+                let spline = algorithm2(&poses, &times, velocities.as_deref())?;
+                let segments = spline
+                    .segments()
+                    .iter()
+                    .zip(spline.breaks().windows(2))
+                    .map(|(q, w)| self.q_motion_segment(q, w))
+                    .collect();
+                (segments, MethodMotion::QMotions(Piecewise::new(times.clone(), spline.segments().to_vec())?))
             }
         };
         Ok(BuiltMotion { method: self, times, key_poses: poses, segments, motion })
