@@ -10,6 +10,12 @@ const IDS: &[&str] = &[
     "juttler/eq-9",
     "juttler/eq-12",
     "juttler/eq-29",
+    "juttler/proposition-1",
+    "juttler/proposition-2",
+    "juttler/proposition-3",
+    "juttler/proposition-4",
+    "juttler/result-5",
+    "juttler/theorem-6",
     // symbolic-under-hypotheses (tests in tests/tests/under_hypotheses.rs)
     "juttler/eq-9-symbolic",
 ];
@@ -39,4 +45,46 @@ fn eq_12() {
 #[test]
 fn eq_29() {
     assert_holds("juttler/eq-29");
+}
+
+#[test]
+fn proposition_1() {
+    // every comparison ran (no early return on a failed construction)
+    assert_eq!(assert_holds("juttler/proposition-1").checks, 8);
+}
+
+#[test]
+fn proposition_2() {
+    // every comparison ran (no early return on a failed construction)
+    assert_eq!(assert_holds("juttler/proposition-2").checks, 11);
+}
+
+#[test]
+fn proposition_3() {
+    let out = assert_holds("juttler/proposition-3");
+    assert_eq!(out.checks, 14);
+    assert!(out.notes.iter().any(|n| n.starts_with("counterexample") && n.contains("rank 1")), "{:?}", out.notes);
+}
+
+#[test]
+fn proposition_4() {
+    // every comparison ran (no early return on a failed construction)
+    assert_eq!(assert_holds("juttler/proposition-4").checks, 5);
+}
+
+#[test]
+fn result_5() {
+    let out = assert_holds("juttler/result-5");
+    assert_eq!(out.checks, 17);
+    assert!(
+        out.notes.iter().any(|n| n.starts_with("counterexample") && n.contains("two positions")),
+        "{:?}",
+        out.notes
+    );
+}
+
+#[test]
+fn theorem_6() {
+    // every comparison ran (no early return on a failed construction)
+    assert_eq!(assert_holds("juttler/theorem-6").checks, 10);
 }

@@ -22,6 +22,11 @@
 //!   `k, l <= 4`; and the TR product `Q_trans(t) Q_rot(t)` of Bézier dual quaternion curves
 //!   (rational control points) equals the Bézier curve whose control points are obtained with
 //!   (29), and satisfies (8) identically in `t`.
+//!
+//! Propositions 1-4, Result 5 and Theorem 6 (the interpolation methods of Secs. 3-5) are in
+//! [`interpolation`].
+
+pub mod interpolation;
 
 use crate::{Checker, Method, Paper, Statement};
 use algebra_core::rational::{Q, q, ratio};
@@ -180,10 +185,10 @@ fn eq_8(c: &mut Checker) {
 }
 
 /// A small deterministic rational generator for exact instances.
-struct Lcg(u64);
+pub(crate) struct Lcg(pub(crate) u64);
 
 impl Lcg {
-    fn next(&mut self) -> Q {
+    pub(crate) fn next(&mut self) -> Q {
         self.0 = self.0.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
         let n = ((self.0 >> 33) % 19) as i64 - 9;
         let d = ((self.0 >> 20) % 5) as i64 + 1;
@@ -272,7 +277,7 @@ fn image12<T: Ring>(qq: &Dq<T>, x0: &T, x: &[T; 3]) -> (T, [T; 3]) {
 }
 
 /// U of eq. (11), typed in.
-fn u11<T: Ring>(d0: &T, d: &[T; 3]) -> [[T; 3]; 3] {
+pub(crate) fn u11<T: Ring>(d0: &T, d: &[T; 3]) -> [[T; 3]; 3] {
     let two = |x: T| x.add_ref(&x);
     let (s0, s1, s2, s3) = (d0.mul_ref(d0), d[0].mul_ref(&d[0]), d[1].mul_ref(&d[1]), d[2].mul_ref(&d[2]));
     let m = |a: &T, b: &T| a.mul_ref(b);
@@ -341,11 +346,11 @@ fn eq_12(c: &mut Checker) {
     }
 }
 
-fn binom(n: u32, k: u32) -> i64 {
+pub(crate) fn binom(n: u32, k: u32) -> i64 {
     (0..k).fold(1i64, |acc, i| acc * i64::from(n - i) / i64::from(i + 1))
 }
 
-fn bernstein(n: u32, i: u32, t: &Poly) -> Poly {
+pub(crate) fn bernstein(n: u32, i: u32, t: &Poly) -> Poly {
     let one_minus = Poly::one().sub_ref(t);
     Poly::from_i64(binom(n, i)).mul_ref(&t.pow_u32(i)).mul_ref(&one_minus.pow_u32(n - i))
 }

@@ -57,6 +57,7 @@ pub fn statements() -> impl Iterator<Item = &'static Statement> {
         .chain(wareham_lasenby::STATEMENTS)
         .chain(under_hypotheses::wareham_lasenby::STATEMENTS)
         .chain(juttler::STATEMENTS)
+        .chain(juttler::interpolation::STATEMENTS)
         .chain(under_hypotheses::juttler::STATEMENTS)
         .chain(angelidis::STATEMENTS)
         .chain(under_hypotheses::angelidis::STATEMENTS)
