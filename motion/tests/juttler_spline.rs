@@ -103,6 +103,20 @@ fn exact_over_rationals_through_the_poses_and_c1_with_the_given_velocities() {
 }
 
 #[test]
+fn segment_trajectories_are_exact() {
+    let m = SplineQMotion::hermite(&poses(), &params(), &velocities()).unwrap();
+    let x = [ratio(1, 2), q(-3), q(2)];
+    let paths = m.trajectories(&x);
+    assert_eq!(paths.len(), 3);
+    for k in 0..=40 {
+        let t = ratio(k, 20);
+        let (i, u) = m.local(&t);
+        assert_eq!(paths[i].degree(), 12);
+        assert_eq!(paths[i].point(&u).unwrap(), m.pose_exact(&t).unwrap().transform_point(&x).unwrap(), "t = {t}");
+    }
+}
+
+#[test]
 fn estimate_is_exact_on_quadratic_translations_and_rotation_angles() {
     // s(t) = (1, -2, 3) + (2, 0, 1) t + (1, 3, -1) t², θ(t) = 0.3 + 0.5 t - 0.2 t² about a fixed axis
     let ts = [0.0, 0.25, 1.0, 1.5, 2.75];
@@ -133,19 +147,24 @@ fn bessel_reproduces_a_parabola_exactly() {
     let f = |t: &Q| q(2) - t.clone() + q(3) * t.clone() * t.clone();
     let d: Vec<[Q; 1]> = t.windows(2).map(|w| [(f(&w[1]) - f(&w[0])) / (w[1].clone() - w[0].clone())]).collect();
     let want: Vec<[Q; 1]> = t.iter().map(|t| [q(6) * t.clone() - q(1)]).collect();
-    assert_eq!(bessel(&t, &d), want);
+    assert_eq!(bessel(&t, &d).unwrap(), want);
     // two parameters: the chord for both
-    assert_eq!(bessel(&t[..2], &d[..1]), vec![d[0].clone(), d[0].clone()]);
+    assert_eq!(bessel(&t[..2], &d[..1]).unwrap(), vec![d[0].clone(), d[0].clone()]);
+    assert!(bessel(&t[..2], &d).is_err());
 }
 
+/// Five generic poses: screws about tilted axes, angles from -0.9 to 1.9.
 fn generic_poses() -> Vec<Pose<f64>> {
-    (0..5)
-        .map(|i| {
-            let x = i as f64;
-            let axis = [0.2 + x, 1.0 - 0.3 * x, 0.5 * x * x - 1.0];
-            Pose::from_axis_angle_translation(&axis, &(0.7 * x - 1.1), &[x, 2.0 - x * x, 0.4 * x]).unwrap()
-        })
-        .collect()
+    [
+        ([0.5, -0.2, 0.8], -0.9, [0.0, 0.3, -0.1]),
+        ([0.1, 0.9, 0.4], 0.3, [0.7, 1.1, 0.5]),
+        ([-0.6, 0.2, 0.7], 1.1, [1.9, 0.4, 1.3]),
+        ([0.3, 0.3, -0.9], 1.9, [2.2, -0.8, 2.0]),
+        ([0.9, -0.4, 0.1], 0.6, [3.1, -0.2, 2.6]),
+    ]
+    .iter()
+    .map(|(axis, angle, t)| Pose::from_axis_angle_translation(axis, angle, t).unwrap())
+    .collect()
 }
 
 #[test]

@@ -6,22 +6,23 @@
 use algebra_core::rational::{Q, q, ratio};
 use gam_algebras::DualQuaternion;
 use gam_algebras::dual_quaternion::Quaternion;
+use motion::juttler::rotational::affine;
 use motion::juttler::surface::RationalBezierSurface;
+use motion::juttler::tr::{rotation_translation, tr_method};
 use motion::juttler::{JuttlerError, QMotion, RationalBezier};
 use motion::{AdditiveBezier, Motion, Pose};
 
-fn quat(c: [i64; 4]) -> Quaternion<Q> {
-    let [w, x, y, z] = c.map(q);
-    Quaternion::new(w, x, y, z)
-}
-
-/// `(2 + ε Σ b_j p_j) * Σ b_j C_j`: a Q-motion of degree 4 (TR form (30)).
+/// The TR method (30)-(31) on the affine rotational interpolant (19)-(21) through three rational
+/// poses: a Q-motion of degree 4, exact.
 fn q_motion() -> QMotion<Q> {
-    let rot = [[1, 0, 0, 0], [2, 1, -1, 3], [1, 2, 0, -1]];
-    let rot = QMotion::new_exact(rot.iter().map(|c| DualQuaternion::from_real(quat(*c))).collect()).unwrap();
-    let p = [[q(0), q(0), q(0)], [q(3), ratio(-1, 2), q(1)], [q(1), q(4), ratio(2, 3)]];
-    let tr = p.iter().map(|p| DualQuaternion::new(quat([2, 0, 0, 0]), Quaternion::pure(p))).collect();
-    QMotion::new_exact(tr).unwrap().product(&rot)
+    let poses: Vec<Pose<Q>> =
+        [(1, 0, [0, 0, 1], [0, 0, 0]), (2, 1, [1, -1, 2], [3, -1, 1]), (3, -2, [0, 1, 1], [1, 4, 2])]
+            .iter()
+            .map(|(c, s, a, t)| Pose::rotor_from_parts(&q(*c), &q(*s), &a.map(q)) * Pose::translation(&t.map(q)))
+            .collect();
+    let params = [q(0), ratio(2, 5), q(1)];
+    let rots: Vec<_> = poses.iter().map(|p| rotation_translation(p).unwrap().0).collect();
+    tr_method(&affine(&rots, &params).unwrap(), &poses, &params).unwrap()
 }
 
 /// A parabola of the moving space (Fig. 5): `(v, v², 1)` for `v ∈ [-1, 1]` as a quadratic.
@@ -88,7 +89,8 @@ fn bad_nets_and_zero_weights_are_typed_errors() {
     let ragged = RationalBezierSurface::new(vec![row.clone(), row[..1].to_vec()]);
     assert!(matches!(ragged, Err(JuttlerError::Parameters { .. })));
     // a rotation R(t) = (1 - t) - t through zero at t = 1/2: the surface has a pole there
-    let c = vec![DualQuaternion::from_real(quat([1, 0, 0, 0])), DualQuaternion::from_real(quat([-1, 0, 0, 0]))];
+    let one = Quaternion::new(q(1), q(0), q(0), q(0));
+    let c = vec![DualQuaternion::from_real(one.clone()), DualQuaternion::from_real(one.scale(&q(-1)))];
     let s = RationalBezierSurface::kinematic(&QMotion::new_exact(c).unwrap(), &parabola()).unwrap();
     assert!(matches!(s.point(&ratio(1, 2), &q(0)), Err(JuttlerError::ZeroWeight { .. })));
 }

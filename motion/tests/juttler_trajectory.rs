@@ -9,6 +9,9 @@ use gam_algebras::dual_quaternion::Quaternion;
 use motion::Motion;
 use motion::juttler::{JuttlerError, QMotion, RationalBezier};
 
+mod juttler_common;
+use juttler_common::worst_at_1000;
+
 fn quat(c: [i64; 4]) -> Quaternion<Q> {
     let [w, x, y, z] = c.map(q);
     Quaternion::new(w, x, y, z)
@@ -49,13 +52,7 @@ fn f64_at_1000_parameters_matches_the_motion_to_1e_12() {
     let m = motion().map_ring(&rational_to_f64);
     let x = body_point().map(|c| rational_to_f64(&c));
     let path = m.trajectory(&x);
-    let mut worst = 0.0f64;
-    for k in 0..1000 {
-        let t = k as f64 / 999.0;
-        let a = path.point(&t).unwrap();
-        let b = m.pose(&t).unwrap().transform_point(&x).unwrap();
-        worst = (0..3).map(|i| (a[i] - b[i]).abs()).fold(worst, f64::max);
-    }
+    let worst = worst_at_1000(|t| path.point(t).unwrap(), |t| m.pose(t).unwrap().transform_point(&x).unwrap());
     assert!(worst < 1e-12, "{worst:e}");
 }
 

@@ -34,7 +34,7 @@
 
 use super::tr::rotation_translation;
 use super::velocity::{KeyVelocity, check_finite_velocities, check_spline_parameters, estimate_velocities, hodograph};
-use super::{JuttlerError, QMotion};
+use super::{JuttlerError, QMotion, RationalBezier};
 use crate::repr::dual_quaternion::{DualQuaternion, Quaternion};
 use crate::{CurveError, MapScalar, Motion, Pose};
 use algebra_core::{Field, Real, Ring};
@@ -80,6 +80,26 @@ impl<T: Ring> SplineQMotion<T> {
     /// ```
     pub fn segments(&self) -> &[QMotion<T>] {
         &self.segments
+    }
+
+    /// The trajectory of the body point `x` as one rational Bézier curve per segment (degree
+    /// 12), segment `i` in its local parameter `u ∈ [0, 1]` over `[t_i, t_{i+1}]` (Algorithm 3,
+    /// step 2); exact over rationals.
+    ///
+    /// ```
+    /// use algebra_core::rational::{q, ratio};
+    /// use motion::{Pose, juttler::{KeyVelocity, SplineQMotion}};
+    /// let p = [Pose::translation(&[q(0), q(0), q(0)]), Pose::translation(&[q(1), q(0), q(0)]), Pose::translation(&[q(1), q(1), q(0)])];
+    /// let v = vec![KeyVelocity::new([q(1), q(0), q(0)], [q(0), q(0), q(1)]); 3];
+    /// let m = SplineQMotion::hermite(&p, &[q(0), q(1), q(3)], &v).unwrap();
+    /// let x = [q(1), q(2), q(0)];
+    /// let paths = m.trajectories(&x);
+    /// assert_eq!(paths[1].degree(), 12);
+    /// // t = 2 is u = 1/2 in segment 1
+    /// assert_eq!(paths[1].point(&ratio(1, 2)).unwrap(), m.pose_exact(&q(2)).unwrap().transform_point(&x).unwrap());
+    /// ```
+    pub fn trajectories(&self, x: &[T; 3]) -> Vec<RationalBezier<T>> {
+        self.segments.iter().map(|s| s.trajectory(x)).collect()
     }
 
     /// The same spline over the scalar `U`, each coefficient and parameter mapped by `f`.

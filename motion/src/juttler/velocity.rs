@@ -15,7 +15,7 @@
 //!   `d_k = θ_k a_k / Δt_k`;
 //!
 //! and combine the two quotients next to `t_i` by Bessel's rule ([`bessel`], Hoschek–Lasser,
-//! Jüttler's ref. [7]): the derivative at `t_i` of the parabola through the three neighbouring
+//! Jüttler's ref. \[7\]): the derivative at `t_i` of the parabola through the three neighbouring
 //! values. It reproduces the velocities of every motion whose translation and rotation vector
 //! (about a fixed axis) are quadratic in `t` (tests `juttler_spline.rs`). With two positions
 //! both velocities are `d_0`.
@@ -66,23 +66,25 @@ impl<T> KeyVelocity<T> {
 /// intervals `[t_k, t_{k+1}]` (`m` of them): at `t_i` the derivative of the parabola through
 /// the three neighbouring values, i.e. `(Δt_i d_{i-1} + Δt_{i-1} d_i)/(Δt_{i-1} + Δt_i)`
 /// inside, `((2Δt_0 + Δt_1) d_0 - Δt_0 d_1)/(Δt_0 + Δt_1)` at `t_0` (and mirrored at `t_m`);
-/// `d_0` at both ends for one interval. Exact over rationals; `params` must be strictly
-/// increasing (not checked here) and one longer than `diffs` (else the result is empty).
+/// `d_0` at both ends for one interval. Exact over rationals. Fails unless `params` are
+/// strictly increasing and one more than `diffs` (at least two).
 ///
 /// ```
 /// use algebra_core::rational::{q, ratio};
 /// use motion::juttler::velocity::bessel;
 /// // s(t) = t² at t = 0, 1, 3: quotients 1 and 4; s'(t) = 2t exactly
-/// let v = bessel(&[q(0), q(1), q(3)], &[[q(1)], [q(4)]]);
+/// let v = bessel(&[q(0), q(1), q(3)], &[[q(1)], [q(4)]]).unwrap();
 /// assert_eq!(v, [[q(0)], [q(2)], [q(6)]]);
+/// assert!(bessel(&[q(0), q(0), q(3)], &[[q(1)], [q(4)]]).is_err());
 /// ```
-pub fn bessel<T: Field, const N: usize>(params: &[T], diffs: &[[T; N]]) -> Vec<[T; N]> {
+pub fn bessel<T: Field + PartialOrd, const N: usize>(
+    params: &[T],
+    diffs: &[[T; N]],
+) -> Result<Vec<[T; N]>, JuttlerError> {
     let m = diffs.len();
-    if m == 0 || params.len() != m + 1 {
-        return Vec::new();
-    }
+    check_spline_parameters(m + 1, params)?;
     if m == 1 {
-        return vec![diffs[0].clone(), diffs[0].clone()];
+        return Ok(vec![diffs[0].clone(), diffs[0].clone()]);
     }
     let dt: Vec<T> = params.windows(2).map(|w| w[1].sub_ref(&w[0])).collect();
     // (a d_j + b d_k)/(a + b)
@@ -98,7 +100,7 @@ pub fn bessel<T: Field, const N: usize>(params: &[T], diffs: &[[T; N]]) -> Vec<[
     }
     let (a, b) = (&dt[m - 2], &dt[m - 1]);
     out.push(mix(two(b).add_ref(a), m - 1, b.neg_ref(), m - 2, &a.add_ref(b)));
-    out
+    Ok(out)
 }
 
 /// The rotation vector `θ a` (angle `θ ∈ [0, π]` times the unit axis) of the rotation of the
@@ -143,7 +145,7 @@ pub fn estimate_velocities<T: Real>(poses: &[Pose<T>], params: &[T]) -> Result<V
         let d = &w[1].0 * &w[0].0.conjugate();
         rot.push(rotation_vector(&d).map(|x| x.mul_ref(&inv)));
     }
-    let (v, w) = (bessel(params, &trans), bessel(params, &rot));
+    let (v, w) = (bessel(params, &trans)?, bessel(params, &rot)?);
     Ok(v.into_iter().zip(w).map(|(v, w)| KeyVelocity::new(v, w)).collect())
 }
 

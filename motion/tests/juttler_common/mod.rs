@@ -1,4 +1,5 @@
-//! Random rational instances for the Jüttler interpolation tests (TRT, minimal order).
+//! Helpers shared by the Jüttler tests: random rational instances (TRT, minimal order) and the
+//! 1000-parameter comparison of trajectories.
 #![allow(dead_code)]
 
 use algebra_core::rational::{Q, q, ratio};
@@ -45,4 +46,16 @@ pub fn instance(seed: u64, m: usize) -> (Vec<Pose<Q>>, Vec<Q>) {
 pub fn rot_of(poses: &[Pose<Q>], t: &[Q]) -> QMotion<Q> {
     let rots: Vec<_> = poses.iter().map(|p| rotation_translation(p).unwrap().0).collect();
     affine(&rots, t).unwrap()
+}
+
+/// The largest component-wise distance between a trajectory's point and the reference point
+/// (the point's image under the sampled motion) at 1000 parameters evenly over `[0, 1]`.
+pub fn worst_at_1000(path: impl Fn(&f64) -> [f64; 3], reference: impl Fn(&f64) -> [f64; 3]) -> f64 {
+    (0..1000)
+        .map(|k| {
+            let t = k as f64 / 999.0;
+            let (a, b) = (path(&t), reference(&t));
+            (0..3).map(|i| (a[i] - b[i]).abs()).fold(0.0, f64::max)
+        })
+        .fold(0.0, f64::max)
 }
