@@ -19,8 +19,10 @@
 //! ```
 
 mod build;
+mod built;
 
-pub use build::{BuildError, BuiltMotion, MethodInput, MethodMotion, MethodSegment, Parameters, RationalSegment};
+pub use build::{BuildError, MethodInput, Parameters};
+pub use built::{BuiltMotion, MethodMotion, MethodSegment, RationalSegment};
 
 use crate::joins::SegmentKind;
 
