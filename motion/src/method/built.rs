@@ -42,7 +42,7 @@ pub struct MethodSegment<T: Ring> {
     pub control_poses: Vec<Pose<T>>,
     /// The same control data as dual quaternions acting by Jüttler's (12), where they describe
     /// the same motion (additive combinations: `ccm-additive`, Q-motions); the map is the one
-    /// `gam pose` uses ([`to_dual_quaternion_exact`], linear).
+    /// `gam pose` uses ([`crate::repr::dual_quaternion::to_dual_quaternion_exact`], linear).
     pub dual_quaternions: Option<Vec<DualQuaternion<T>>>,
     /// `hexanion-linear`: the segment's two end hexanions.
     pub hexanions: Option<[Hexanion<T>; 2]>,
