@@ -220,7 +220,14 @@ fn shapes(path: &str, spec: &Spec, m: usize) -> Result<HermiteShapes<f64>, CliEr
 /// A failure of [`Method::build`]: exit 2 for bad input, 1 for a numerical failure (singular
 /// system, pose or join), naming the method where the failure is the method's own.
 fn build_error(path: &str, method: Method, e: BuildError) -> CliError {
-    let own = matches!(e, BuildError::Trajectory(_) | BuildError::Wl(_) | BuildError::Repr(_) | BuildError::Juttler(_));
+    let own = matches!(
+        e,
+        BuildError::Trajectory(_)
+            | BuildError::Wl(_)
+            | BuildError::Repr(_)
+            | BuildError::Juttler(_)
+            | BuildError::Unstable { .. }
+    );
     let message = if own { format!("{}: {e}", method.name()) } else { e.to_string() };
     if e.is_input() { usage(path, message) } else { CliError::math(message) }
 }

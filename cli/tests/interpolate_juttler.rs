@@ -337,3 +337,41 @@ fn errors() {
     let e = run("spline-params", "juttler-spline", r#", "parameters": [0, 2, 1, 3]"#);
     assert!(e.contains("juttler-spline") && e.contains("not strictly increasing"), "{e}");
 }
+
+/// One global interpolant of high degree is ill-conditioned in f64: with these 20 poses the
+/// Q-motion (degree 38) and TRT methods refuse (exit 1, "numerically unstable") instead of
+/// printing a motion that misses its key poses (the minimal-order motion still meets the
+/// key-pose check here); the spline (local, degree 6) passes through all 20.
+#[test]
+fn many_poses_global_methods_refuse_the_spline_interpolates() {
+    let keys: Vec<([f64; 3], f64, [f64; 3])> = (0..20)
+        .map(|i| {
+            let x = i as f64;
+            ([x.sin(), x.cos(), 0.5], 0.1 * x - 1.0, [x, (0.7 * x).sin() * 3.0, (0.3 * x).cos()])
+        })
+        .collect();
+    let poses: Vec<String> =
+        keys.iter().map(|(a, phi, t)| format!(r#"{{"position": {t:?}, "axis": {a:?}, "angle": {phi}}}"#)).collect();
+    let spec = |method: &str| {
+        format!(r#"{{"method": "{method}", "poses": [{}], "parameters": "chordal", "samples": 0}}"#, poses.join(", "))
+    };
+    for method in ["juttler-q-motion", "juttler-trt"] {
+        let file = TempFile::new(&format!("interp-jq-many-{method}.json"), &spec(method));
+        let e = fails(&["interpolate", "--json", file.path()], 1);
+        assert!(e.contains(method) && e.contains("numerically unstable with 20 poses"), "{e}");
+    }
+    let v = run_json("many-spline", &spec("juttler-spline"));
+    let segs = v["segments"].as_array().unwrap();
+    assert_eq!(segs.len(), 19);
+    for (i, (axis, phi, pos)) in keys.iter().enumerate().skip(1) {
+        // the end control dual quaternion of segment i - 1 is λ P_i: its image of the origin
+        // and of the unit points are the key pose's
+        let dq: Vec<[f64; 8]> = serde_json::from_value(segs[i - 1]["dual_quaternions"].clone()).unwrap();
+        let want = rodrigues(*axis, *phi, *pos);
+        for x in [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]] {
+            let got = jut_image(dq.last().unwrap(), x);
+            let w: [f64; 3] = std::array::from_fn(|r| (0..3).map(|c| want[r][c] * x[c]).sum::<f64>() + want[r][3]);
+            assert!((0..3).all(|k| (got[k] - w[k]).abs() < 1e-12), "key {i}: {got:?} vs {w:?}");
+        }
+    }
+}

@@ -28,7 +28,7 @@ use crate::repr::hexanion::blend::HexanionLinear;
 use crate::trajectory::{Trajectory, TrajectoryError, Velocities, align_signs};
 use crate::velocity::Twist;
 use crate::wareham_lasenby::{WlError, WlLinear, WlMotion, WlQuadratic};
-use crate::{CurveError, HermiteShapes, JoinError, Piecewise, Pose};
+use crate::{CurveError, HermiteShapes, JoinError, Motion, Piecewise, Pose};
 use algebra_core::{Real, Ring};
 
 /// The parameters `t_i` of the key poses (`parameters` of the contract).
@@ -132,6 +132,17 @@ pub enum BuildError {
     /// From joining segments.
     #[error(transparent)]
     Curve(CurveError),
+    /// A global Jüttler interpolant (Algorithm 1, TRT, minimal order) that floating point
+    /// cannot compute for this many poses (its collocation is ill-conditioned).
+    #[error(
+        "numerically unstable with {poses} poses: {why} (one interpolant of high degree: use fewer poses, or juttler-spline)"
+    )]
+    Unstable {
+        /// The number of key poses.
+        poses: usize,
+        /// What went wrong.
+        why: String,
+    },
     /// A rational trajectory asked of a method whose motions are not rational.
     #[error(
         "the motions of `{method}` are not rational (their point trajectories are not rational curves; rational: ccm-additive and the juttler-* methods)"
@@ -166,6 +177,7 @@ impl BuildError {
             | BuildError::ParameterCount { .. }
             | BuildError::NotRational { .. }
             | BuildError::Curve(_) => true,
+            BuildError::Unstable { .. } => false,
             BuildError::Trajectory(e) => {
                 matches!(e, TrajectoryError::Input(_) | TrajectoryError::Join(JoinError::Input(_)))
             }
@@ -270,24 +282,8 @@ impl Method {
                     .collect();
                 (segments, MethodMotion::Hexanion(h))
             }
-            Method::JuttlerQMotion | Method::JuttlerTrt => {
-                let u = normalise(&times, m)?;
-                let q = if self == Method::JuttlerQMotion {
-                    algorithm1(&poses, &u)?
-                } else {
-                    // default l1 = m - 1 for m + 1 poses (l2 = 0)
-                    trt(&poses, &u, input.l1.unwrap_or(m - 2))?
-                };
-                let breaks = vec![times[0].clone(), times[m - 1].clone()];
-                let segments = vec![self.q_motion_segment(&q, &breaks)];
-                (segments, MethodMotion::QMotions(Piecewise::new(breaks, vec![q])?))
-            }
-            Method::JuttlerMinimal => {
-                let motion = minimal(&poses, &normalise(&times, m)?)?;
-                let breaks = vec![times[0].clone(), times[m - 1].clone()];
-                // the control data: its Q-motion (36), the same motion
-                let segments = vec![self.q_motion_segment(&motion.q_motion(), &breaks)];
-                (segments, MethodMotion::Minimal(Piecewise::new(breaks, vec![motion])?))
+            Method::JuttlerQMotion | Method::JuttlerTrt | Method::JuttlerMinimal => {
+                self.global(input, &poses, &times)?
             }
             Method::JuttlerSpline => {
                 let velocities = match &input.velocities {
@@ -309,6 +305,66 @@ impl Method {
             }
         };
         Ok(BuiltMotion { method: self, times, key_poses: poses, segments, motion })
+    }
+
+    /// The Jüttler methods with one interpolant over `[t_0, t_m]` (Algorithm 1, TRT, minimal
+    /// order), built on the parameters mapped onto `[0, 1]`. Their Bernstein collocation of
+    /// degree `m` is ill-conditioned in floating point (with 20 random poses f64 misses the
+    /// key poses by 1e-3, with 40 by far more), so the result must reproduce every key pose
+    /// (Theorem 2.8 to `1e-8 (1 + L)`, `L` the largest key position) or the build fails with
+    /// [`BuildError::Unstable`]; a collocation matrix found singular for distinct parameters
+    /// is the same failure.
+    fn global<T: Real>(
+        self,
+        input: &MethodInput<T>,
+        poses: &[Pose<T>],
+        times: &[T],
+    ) -> Result<(Vec<MethodSegment<T>>, MethodMotion<T>), BuildError> {
+        let m = poses.len();
+        let u = normalise(times, m)?;
+        let unstable = |why: String| BuildError::Unstable { poses: m, why };
+        let singular = |e: JuttlerError| match e {
+            JuttlerError::Parameters { .. } => unstable("its collocation matrix is numerically singular".into()),
+            e => e.into(),
+        };
+        let breaks = vec![times[0].clone(), times[m - 1].clone()];
+        let (segment, motion) = match self {
+            Method::JuttlerMinimal => {
+                let motion = minimal(poses, &u).map_err(singular)?;
+                // the control data: its Q-motion (36), the same motion
+                let segment = self.q_motion_segment(&motion.q_motion(), &breaks);
+                (segment, MethodMotion::Minimal(Piecewise::new(breaks, vec![motion])?))
+            }
+            _ => {
+                let q = if self == Method::JuttlerQMotion {
+                    algorithm1(poses, &u).map_err(singular)?
+                } else {
+                    // default l1 = m - 1 for m + 1 poses (l2 = 0)
+                    trt(poses, &u, input.l1.unwrap_or(m - 2)).map_err(singular)?
+                };
+                (self.q_motion_segment(&q, &breaks), MethodMotion::QMotions(Piecewise::new(breaks, vec![q])?))
+            }
+        };
+        let origin = [T::zero(), T::zero(), T::zero()];
+        let mut size = T::zero();
+        for p in poses {
+            for x in p.transform_point(&origin).map_err(JuttlerError::from)? {
+                if Real::abs(&x) > size {
+                    size = Real::abs(&x);
+                }
+            }
+        }
+        let tol = T::from_f64(1e-8).mul_ref(&T::one().add_ref(&size));
+        for (i, (p, t)) in poses.iter().zip(times).enumerate() {
+            let hit = motion.pose(t).ok().and_then(|s| s.is_equivalent(p, &tol).ok()).unwrap_or(false);
+            if !hit {
+                let degree = segment.degree;
+                return Err(unstable(format!(
+                    "the interpolant of degree {degree} misses key pose {i} in floating point"
+                )));
+            }
+        }
+        Ok((vec![segment], motion))
     }
 
     /// The `ccm-*` methods: [`Trajectory::through`] with the given or estimated velocities.
