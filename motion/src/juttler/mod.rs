@@ -11,6 +11,8 @@
 //! | [`additive_trajectory`] | trajectories of the main paper's additive Bézier motions ([`crate::AdditiveBezier`], a [`RationalMotion`]): degree `2n` | main paper (18), (6)-(9); (29) |
 //! | [`rotational`] | interpolation of the rotational parts: affine (19)-(21), elliptic (22)-(25) with the sign rule (24) | Props. 1, 2 |
 //! | [`projective`] | the projective method (27)-(28): the null space of a homogeneous system, degree `3m/4`, unique up to a real factor | Prop. 3 |
+//! | [`bspline`] | [`bspline::BSplineQMotion`]: B-spline Q-motions (de Boor, pieces by blossoming, the Study condition per piece); a [`crate::Motion`] | Sec. 6 |
+//! | [`bspline_tr`] | the TR method with B-spline Q-motions (averaged knots, collocation, product) | Secs. 4.1, 6 |
 //! | [`tr`] | the TR method (30)-(31) and Algorithm 1 (elliptic + TR, degree `2m`) | Prop. 4, Algorithm 1 |
 //! | [`trt`] | the TRT method (32)-(34): translations on both sides, split `l1 + l2 = m - 1`, independent of the moving origin | Result 5 |
 //! | [`surface`] | [`surface::RationalBezierSurface`]: the kinematic (sweeping) surface `y(t, v) = M(t) x(v)` of a rational Bézier curve as a rational tensor-product Bézier surface | Sec. 5, Fig. 5b |
@@ -34,6 +36,8 @@
 //! ```
 
 pub mod additive_trajectory;
+pub mod bspline;
+pub mod bspline_tr;
 pub mod minimal;
 pub mod parametrisation;
 pub mod projective;

@@ -59,6 +59,12 @@ pub struct SplineQMotion<T> {
 }
 
 impl<T: Ring> SplineQMotion<T> {
+    /// Segments with their breaks (`breaks.len() = segments.len() + 1`, strictly increasing:
+    /// the caller's invariant).
+    pub(crate) fn from_pieces(breaks: Vec<T>, segments: Vec<QMotion<T>>) -> Self {
+        SplineQMotion { breaks, segments }
+    }
+
     /// The parameters `t_0 < … < t_m` (the segment ends).
     ///
     /// ```
@@ -142,15 +148,7 @@ impl<T: Field + PartialOrd> SplineQMotion<T> {
                 why: format!("{} velocities for {} positions", velocities.len(), poses.len()),
             });
         }
-        let mut parts: Vec<(Quaternion<T>, [T; 3])> = Vec::with_capacity(poses.len());
-        for p in poses {
-            let (mut r, s) = rotation_translation(p)?;
-            // (24): the sign nearer the predecessor
-            if parts.last().is_some_and(|(prev, _)| prev.dot(&r) < T::zero()) {
-                r = r.scale(&T::one().neg_ref());
-            }
-            parts.push((r, s));
-        }
+        let parts = aligned_parts(poses)?;
         let segments = (0..poses.len() - 1)
             .map(|i| {
                 segment(
@@ -234,13 +232,26 @@ impl<T: Field + PartialOrd> SplineQMotion<T> {
     }
 }
 
+/// A rotational part `R_i` and a translation `s_i` of a position (14).
+pub(crate) type Parts<T> = (Quaternion<T>, [T; 3]);
+
+/// The rotational parts `R_i` (at the poses' own scale, signs by (24): each nearer its
+/// predecessor) and translations `s_i` of the poses (14).
+pub(crate) fn aligned_parts<T: Field + PartialOrd>(poses: &[Pose<T>]) -> Result<Vec<Parts<T>>, JuttlerError> {
+    let mut parts: Vec<Parts<T>> = Vec::with_capacity(poses.len());
+    for p in poses {
+        let (mut r, s) = rotation_translation(p)?;
+        if parts.last().is_some_and(|(prev, _)| prev.dot(&r) < T::zero()) {
+            r = r.scale(&T::one().neg_ref());
+        }
+        parts.push((r, s));
+    }
+    Ok(parts)
+}
+
 /// Segment `i` of (40) from `Δt_i`, the rotational parts and translations at both ends and
 /// the velocities there.
-fn segment<T: Field>(
-    dt: T,
-    ends: [&(Quaternion<T>, [T; 3]); 2],
-    vel: [&KeyVelocity<T>; 2],
-) -> Result<QMotion<T>, JuttlerError> {
+fn segment<T: Field>(dt: T, ends: [&Parts<T>; 2], vel: [&KeyVelocity<T>; 2]) -> Result<QMotion<T>, JuttlerError> {
     let third = dt.mul_ref(&T::from_ratio(1, 3));
     let sixth = dt.mul_ref(&T::from_ratio(1, 6));
     let [(r0, s0), (r1, s1)] = ends;
