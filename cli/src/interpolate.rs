@@ -1,16 +1,16 @@
 //! `gam interpolate [--json] SPEC.json`: a motion through key poses by a named method, exactly as
-//! in the Wave 2 contract (shared/cli.md). The methods are `motion::method::Method` (today
-//! `ccm-additive` and `ccm-multiplicative`, main paper Sec. 5.3: `motion::trajectory`; and
-//! `wl-linear`, `wl-quadratic`, Wareham–Lasenby Sec. 3: `motion::wareham_lasenby`, and
-//! `hexanion-linear`, Angelidis (56): `motion::repr::hexanion::blend::HexanionLinear`, the
-//! methods through the key poses only, built by `wl_build`); the other names of the contract are recognised and refused with "not
-//! implemented yet".
+//! in the Wave 2 contract (shared/cli.md). Every method goes through ONE build path,
+//! `motion::method::Method::build`, which returns a `motion::method::BuiltMotion` (the motion,
+//! its segments, its sampler); this file reads the spec into a `MethodInput` and writes the
+//! segments and samples, the same way for every method. Names of the contract that are not
+//! implemented yet are recognised and refused with "not implemented yet".
 //!
 //! Pose objects: position + axis + angle, position + quaternion, matrix, motor, and the
 //! `dual_quaternion` and `hexanion` forms (`crate::pose::extra_form`).
-//! Parameters: `uniform` (default) or an explicit increasing list; the Jüttler rules of eq. (15)
-//! come with issue 11 and are refused (exit 2). Velocities, when left out, are estimated
-//! (docs/cli.md): zero at the ends, the weighted mean of the neighbouring screw twists inside.
+//! Parameters: `uniform` (default), a rule of Jüttler's eq. (15) (`chordal`, `star-chordal`,
+//! `centripetal`, `angular`, `angular-chordal`, normalised to [0, 1]) or an explicit
+//! increasing list (used as given). Velocities, when left out, are estimated by the method
+//! (docs/cli.md).
 //!
 //! A spec of this command is also accepted by `gam sample` and `gam plot` ([`sampled`]).
 
@@ -19,10 +19,11 @@ use crate::hermite::strip_comments;
 use crate::output::{mv_human, mv_json};
 use crate::sample::{MAX_SAMPLES, Sample, Sampler, checked};
 use crate::scalar::format_f64;
-use motion::method::Method;
-use motion::trajectory::{Trajectory, TrajectoryError, TrajectorySample, Velocities};
+use motion::juttler::Parametrisation;
+use motion::method::{BuildError, BuiltMotion, Method, MethodInput, Parameters};
+use motion::trajectory::TrajectorySample;
 use motion::velocity::Twist;
-use motion::{HermiteShapes, JoinError, Pose, Pseudoscalar, Shape, Vec3};
+use motion::{HermiteShapes, Pose, Pseudoscalar, Shape, Vec3};
 use serde::Deserialize;
 use serde_json::{Value, json};
 
@@ -56,16 +57,14 @@ struct VelocitySpec {
     angular_velocity: [f64; 3],
 }
 
-/// A built spec.
+/// A built spec: the motion of its method, the body points and the number of samples.
 pub(crate) struct Built {
-    method: Method,
-    times: Vec<f64>,
-    trajectory: Trajectory<f64>,
+    pub(crate) motion: BuiltMotion<f64>,
     body_points: Vec<[f64; 3]>,
     samples: usize,
 }
 
-fn usage(path: &str, what: impl std::fmt::Display) -> CliError {
+pub(crate) fn usage(path: &str, what: impl std::fmt::Display) -> CliError {
     CliError::usage(format!("`{path}`: {what}"))
 }
 
@@ -160,30 +159,29 @@ pub(crate) fn pose_in(path: &str, name: &str, v: &Value) -> Result<Pose<f64>, Cl
     }
 }
 
-/// `t_i` from `parameters`.
-fn times(path: &str, spec: &Spec, m: usize) -> Result<Vec<f64>, CliError> {
+/// `parameters` of the spec.
+fn parameters(path: &str, spec: &Spec) -> Result<Parameters<f64>, CliError> {
+    let rule = |r| Ok(Parameters::Rule(r));
     match &spec.parameters {
-        None => Ok((0..m).map(|i| i as f64 / (m - 1) as f64).collect()),
-        Some(Value::String(s)) if s == "uniform" => Ok((0..m).map(|i| i as f64 / (m - 1) as f64).collect()),
-        Some(Value::String(s))
-            if ["chordal", "star-chordal", "centripetal", "angular", "angular-chordal"].contains(&s.as_str()) =>
-        {
-            Err(usage(
+        None => Ok(Parameters::Uniform),
+        Some(Value::String(s)) => match s.as_str() {
+            "uniform" => Ok(Parameters::Uniform),
+            "chordal" => rule(Parametrisation::Chordal),
+            "star-chordal" => rule(Parametrisation::StarChordal),
+            "centripetal" => rule(Parametrisation::Centripetal),
+            "angular" => rule(Parametrisation::Angular),
+            "angular-chordal" => rule(Parametrisation::AngleDistance),
+            _ => Err(usage(
                 path,
                 format!(
-                    "`parameters`: `{s}` (Jüttler's eq. (15)) is not implemented yet (it comes with issue 11); use `uniform` or a list"
+                    "`parameters`: unknown rule `{s}` (uniform, chordal, star-chordal, centripetal, angular, angular-chordal, or a list)"
                 ),
-            ))
-        }
-        Some(Value::Array(list)) => {
-            let t: Vec<f64> = serde_json::from_value(Value::Array(list.clone()))
-                .map_err(|_| usage(path, "`parameters` must be a list of numbers"))?;
-            if t.len() != m {
-                return Err(usage(path, format!("`parameters` has {} values for {m} poses", t.len())));
-            }
-            Ok(t)
-        }
-        Some(other) => Err(usage(path, format!("`parameters` must be `uniform` or a list (got {other})"))),
+            )),
+        },
+        Some(Value::Array(list)) => serde_json::from_value(Value::Array(list.clone()))
+            .map(Parameters::Given)
+            .map_err(|_| usage(path, "`parameters` must be a list of numbers")),
+        Some(other) => Err(usage(path, format!("`parameters` must be a rule name or a list (got {other})"))),
     }
 }
 
@@ -219,31 +217,48 @@ fn shapes(path: &str, spec: &Spec, m: usize) -> Result<HermiteShapes<f64>, CliEr
     })
 }
 
-fn trajectory_error(path: &str, method: Method, e: TrajectoryError) -> CliError {
-    match e {
-        TrajectoryError::Input(m) | TrajectoryError::Join(JoinError::Input(m)) => usage(path, m),
-        other => CliError::math(format!("{}: {other}", method.name())),
-    }
+/// A failure of [`Method::build`]: exit 2 for bad input, 1 for a numerical failure (singular
+/// system, pose or join), naming the method where the failure is the method's own.
+fn build_error(path: &str, method: Method, e: BuildError) -> CliError {
+    let own = matches!(
+        e,
+        BuildError::Trajectory(_)
+            | BuildError::Wl(_)
+            | BuildError::Repr(_)
+            | BuildError::Juttler(_)
+            | BuildError::Unstable { .. }
+    );
+    let message = if own { format!("{}: {e}", method.name()) } else { e.to_string() };
+    if e.is_input() { usage(path, message) } else { CliError::math(message) }
+}
+
+/// The optional spec keys that are given.
+fn given_keys(spec: &Spec) -> [(&'static str, bool); 4] {
+    [
+        ("velocities", spec.velocities.is_some()),
+        ("shape", spec.shape.is_some()),
+        ("gamma", spec.gamma.is_some()),
+        ("l1", spec.l1.is_some()),
+    ]
 }
 
 /// Checks and builds a spec.
 fn build(path: &str, spec: &Spec) -> Result<Built, CliError> {
     let method: Method = spec.method.parse().map_err(|e| usage(path, e))?;
-    if spec.l1.is_some() {
-        return Err(usage(path, format!("`l1` is only used by `juttler-trt`, not `{}`", method.name())));
+    if let Some((key, _)) = given_keys(spec).into_iter().find(|(k, given)| *given && !method.inputs().contains(k)) {
+        return Err(usage(path, BuildError::Unused { key, method }));
     }
     let m = spec.poses.len();
     if m < 2 {
-        return Err(usage(path, format!("at least two poses are needed (got {m})")));
+        return Err(usage(path, BuildError::TooFewPoses { got: m }));
     }
     let poses = spec.poses.iter().enumerate().map(|(i, v)| pose(path, i, v)).collect::<Result<Vec<_>, _>>()?;
-    let times = times(path, spec, m)?;
     let velocities = match &spec.velocities {
-        None => Velocities::CatmullRom,
+        None => None,
         Some(v) if v.len() != m => {
             return Err(usage(path, format!("`velocities` has {} entries for {m} poses", v.len())));
         }
-        Some(v) => Velocities::Given(
+        Some(v) => Some(
             v.iter()
                 .zip(&poses)
                 .map(|(w, s)| {
@@ -256,14 +271,24 @@ fn build(path: &str, spec: &Spec) -> Result<Built, CliError> {
                 .collect::<Result<Vec<_>, CliError>>()?,
         ),
     };
-    let shapes = shapes(path, spec, m)?;
+    let shapes = if spec.shape.is_some() || spec.gamma.is_some() { Some(shapes(path, spec, m)?) } else { None };
+    let l1 = match spec.l1 {
+        None => None,
+        Some(k) => Some(usize::try_from(k).map_err(|_| usage(path, format!("`l1` must be 0 or more (got {k})")))?),
+    };
+    let input = MethodInput { parameters: parameters(path, spec)?, velocities, shapes, l1, ..MethodInput::new(poses) };
     if spec.samples == 1 || spec.samples > MAX_SAMPLES {
         return Err(usage(path, format!("`samples` must be 0 or from 2 to {MAX_SAMPLES} (got {})", spec.samples)));
     }
     let body_points = spec.body_points.clone().unwrap_or_else(|| vec![[0.0; 3]]);
-    let trajectory =
-        method.interpolate(&poses, &times, &velocities, &shapes).map_err(|e| trajectory_error(path, method, e))?;
-    Ok(Built { method, times, trajectory, body_points, samples: spec.samples })
+    let motion = method.build(&input).map_err(|e| build_error(path, method, e))?;
+    Ok(Built { motion, body_points, samples: spec.samples })
+}
+
+/// Reads and builds a `gam interpolate` spec (also for `gam trajectory`).
+pub(crate) fn built(path: &str) -> Result<Built, CliError> {
+    let spec = read(path)?.ok_or_else(|| usage(path, "invalid spec: missing field `method`"))?;
+    build(path, &spec)
 }
 
 fn finite3(v: &[f64; 3]) -> bool {
@@ -273,14 +298,7 @@ fn finite3(v: &[f64; 3]) -> bool {
 /// The work of sampling `n` values: `n × (degree + 1)²` per body point (as for `gam sample`),
 /// with the largest segment degree, checked against the budget.
 fn check_work(b: &Built, n: usize) -> Result<(), CliError> {
-    let degree = b.trajectory.segments().iter().map(|s| s.degree()).max().unwrap_or(0);
-    check_sampling_work(b.body_points.len(), degree, n)
-}
-
-/// The budget check of sampling `points` body points (at least one: the pose itself is
-/// sampled) on segments of degree at most `degree` at `n` values, for every method.
-fn check_sampling_work(points: usize, degree: usize, n: usize) -> Result<(), CliError> {
-    let points = points.max(1);
+    let (points, degree) = (b.body_points.len().max(1), b.motion.max_degree());
     crate::budget::check(
         &format!("sampling {points} body points of degree-{degree} segments at {n} values"),
         crate::budget::sampling_work(degree, n) * points as f64,
@@ -290,22 +308,16 @@ fn check_sampling_work(points: usize, degree: usize, n: usize) -> Result<(), Cli
 /// Sample `i` of `n` evenly spaced times over `[t_0, t_m]` (as `Trajectory::sample_evenly`),
 /// checked finite.
 fn sample_at(b: &Built, n: usize, i: usize) -> Result<TrajectorySample<f64>, CliError> {
-    let (t0, t1) = (b.times[0], b.times[b.times.len() - 1]);
+    let times = b.motion.times();
+    let (t0, t1) = (times[0], times[times.len() - 1]);
     let t = if i + 1 == n { t1 } else { t0 + (t1 - t0) * (i as f64 / (n - 1) as f64) };
-    let s = b.trajectory.sample(&t, &b.body_points).map_err(|e| CliError::math(e.to_string()))?;
+    let s = b.motion.sample(&t, &b.body_points).map_err(|e| CliError::math(e.to_string()))?;
     let ok = s.points.iter().all(|p| finite3(&p.position) && finite3(&p.velocity))
         && finite3(&s.space_twist.angular.to_array());
     if !ok {
         return Err(CliError::math(format!("the result at t = {} is not finite (overflow)", format_f64(s.t))));
     }
     Ok(s)
-}
-
-/// The samples of a built spec at `n` evenly spaced times over `[t_0, t_m]`, after
-/// [`check_work`].
-fn samples(b: &Built, n: usize) -> Result<Vec<TrajectorySample<f64>>, CliError> {
-    check_work(b, n)?;
-    (0..n).map(|i| sample_at(b, n, i)).collect()
 }
 
 /// One sample as a JSON object of `gam interpolate --json`.
@@ -319,6 +331,27 @@ fn sample_json(s: &TrajectorySample<f64>) -> Result<Value, CliError> {
         "angular_velocity": v3(&s.space_twist.angular.to_array())}))
 }
 
+/// The contract's `segments` array.
+fn segments_json(b: &Built) -> Vec<Value> {
+    let z = |x: &f64| x + 0.0;
+    b.motion
+        .segments()
+        .iter()
+        .map(|seg| {
+            let mut v = json!({"t0": seg.t0, "t1": seg.t1, "representation": seg.representation, "degree": seg.degree,
+                "control_poses": seg.control_poses.iter().map(|s| mv_json(&s.to_multivector())).collect::<Vec<_>>()});
+            if let Some(d) = &seg.dual_quaternions {
+                v["dual_quaternions"] = json!(d.iter().map(|d| d.coeffs().map(|x| z(&x))).collect::<Vec<_>>());
+            }
+            if let Some(h) = &seg.hexanions {
+                let hex = |x: &motion::repr::hexanion::Hexanion<f64>| json!({"omega": x.omega.map(|c| z(&c)), "m": x.m.map(|c| z(&c))});
+                v["hexanions"] = json!([hex(&h[0]), hex(&h[1])]);
+            }
+            v
+        })
+        .collect()
+}
+
 /// `gam interpolate --json`, streamed in bounded memory like `gam sample --json`: the header
 /// (method, parameters, segments), then a first pass that computes every sample and discards
 /// it (a failure leaves stdout empty), then a second that writes them one by one.
@@ -327,22 +360,8 @@ fn stream_json(b: &Built) -> Result<String, CliError> {
     if n > 0 {
         check_work(b, n)?;
     }
-    let segs: Vec<Value> = b
-        .trajectory
-        .segments()
-        .iter()
-        .enumerate()
-        .map(|(k, seg)| {
-            let mut seg_json = json!({"t0": b.times[k], "t1": b.times[k + 1], "representation": b.method.representation(),
-                   "degree": seg.degree(),
-                   "control_poses": seg.control_poses().iter().map(|s| mv_json(&s.to_multivector())).collect::<Vec<_>>()});
-            if b.method == Method::CcmAdditive {
-                seg_json["dual_quaternions"] = json!(crate::pose::dual_quaternions(seg.control_poses()));
-            }
-            seg_json
-        })
-        .collect();
-    let head = json!({"method": b.method.name(), "parameters": b.times, "segments": segs});
+    let head =
+        json!({"method": b.motion.method().name(), "parameters": b.motion.times(), "segments": segments_json(b)});
     write_streamed(&head, n, &|i| sample_json(&sample_at(b, n, i)?))
 }
 
@@ -377,26 +396,34 @@ fn write_streamed(
 
 /// Runs `gam interpolate`.
 pub fn interpolate(path: &str, json: bool) -> Result<String, CliError> {
-    let spec = read(path)?.ok_or_else(|| usage(path, "invalid spec: missing field `method`"))?;
-    if let Some(w) = wl_build(path, &spec)? {
-        return wl_output(&w, json);
-    }
-    let b = build(path, &spec)?;
+    let b = built(path)?;
     if json {
         return stream_json(&b);
     }
-    let sampled = if b.samples >= 2 { samples(&b, b.samples)? } else { Vec::new() };
-    let name = b.method.name();
-    let segments = b.trajectory.segments();
-    let t = b.times.iter().map(|x| format_f64(*x)).collect::<Vec<_>>().join(", ");
-    let mut lines = vec![format!("{name}: {} segments through {} poses at t = [{t}]", segments.len(), b.times.len())];
-    for (k, seg) in segments.iter().enumerate() {
-        lines.push(format!("segment {k} (t = {} .. {}):", format_f64(b.times[k]), format_f64(b.times[k + 1])));
-        for (i, s) in seg.control_poses().iter().enumerate() {
-            lines.push(format!("  S{i} = {}", mv_human(&s.to_multivector())));
+    let n = if b.samples >= 2 { b.samples } else { 0 };
+    if n > 0 {
+        check_work(&b, n)?;
+    }
+    let method = b.motion.method();
+    let times = b.motion.times();
+    let t = times.iter().map(|x| format_f64(*x)).collect::<Vec<_>>().join(", ");
+    let segments = b.motion.segments();
+    let mut lines = vec![format!("{method}: {} segments through {} poses at t = [{t}]", segments.len(), times.len())];
+    if matches!(method, Method::WlLinear | Method::WlQuadratic | Method::HexanionLinear) {
+        // their segments' control poses are key poses: each once
+        for (i, s) in b.motion.key_poses().iter().enumerate() {
+            lines.push(format!("  P{i} = {}", mv_human(&s.to_multivector())));
+        }
+    } else {
+        for (k, seg) in segments.iter().enumerate() {
+            lines.push(format!("segment {k} (t = {} .. {}):", format_f64(seg.t0), format_f64(seg.t1)));
+            for (i, s) in seg.control_poses.iter().enumerate() {
+                lines.push(format!("  S{i} = {}", mv_human(&s.to_multivector())));
+            }
         }
     }
-    for s in &sampled {
+    for i in 0..n {
+        let s = sample_at(&b, n, i)?;
         let pts: Vec<String> =
             s.points.iter().map(|p| format!("[{}]", p.position.map(format_f64).join(", "))).collect();
         lines.push(format!("t = {}: points {}", format_f64(s.t), pts.join(" ")));
@@ -408,15 +435,12 @@ pub fn interpolate(path: &str, json: bool) -> Result<String, CliError> {
 /// The body point is the first of `body_points`; sample `i` is at `t_0 + (t_m - t_0) i/(n-1)`.
 pub(crate) fn sampler(path: &str, n: usize) -> Result<Option<Sampler>, CliError> {
     let Some(spec) = read(path)? else { return Ok(None) };
-    if let Some(w) = wl_build(path, &spec)? {
-        return wl_sampled(w, n).map(Some);
-    }
     let b = build(path, &spec)?;
     let body_point = b.body_points.first().copied().unwrap_or([0.0; 3]);
     let one = Built { body_points: vec![body_point], ..b };
     check_work(&one, n)?;
     let norm = |v: &[f64; 3]| v.iter().map(|x| x * x).sum::<f64>().sqrt();
-    let (kind, segments) = (one.method.kind(), one.trajectory.segments().len());
+    let (kind, degree, segments) = (one.motion.method().kind(), one.motion.max_degree(), one.motion.segments().len());
     let at = move |i: usize| {
         let s = sample_at(&one, n, i)?;
         checked(Sample {
@@ -427,171 +451,5 @@ pub(crate) fn sampler(path: &str, n: usize) -> Result<Option<Sampler>, CliError>
             pose: s.pose,
         })
     };
-    Ok(Some(Sampler { kind, degree: 3, segments, body_point, n, at: Box::new(at) }))
-}
-
-/// A built spec of a method through the key poses only (`wl-linear`, `wl-quadratic`,
-/// `hexanion-linear`): a [`motion::method::KeyMotion`], not a Hermite trajectory.
-struct WlBuilt {
-    method: Method,
-    times: Vec<f64>,
-    poses: Vec<Pose<f64>>,
-    motion: motion::method::KeyMotion<f64>,
-    body_points: Vec<[f64; 3]>,
-    samples: usize,
-}
-
-/// `Ok(None)` unless the spec names a W-L or hexanion method; the Hermite-only keys are refused.
-fn wl_build(path: &str, spec: &Spec) -> Result<Option<WlBuilt>, CliError> {
-    let Ok(method) = spec.method.parse::<Method>() else { return Ok(None) };
-    if !method.through_keys() {
-        return Ok(None);
-    }
-    let name = method.name();
-    for (key, given) in [
-        ("velocities", spec.velocities.is_some()),
-        ("shape", spec.shape.is_some()),
-        ("gamma", spec.gamma.is_some()),
-        ("l1", spec.l1.is_some()),
-    ] {
-        if given {
-            return Err(usage(path, format!("`{key}` is not used by `{name}` (it interpolates the key poses only)")));
-        }
-    }
-    let m = spec.poses.len();
-    if m < 2 {
-        return Err(usage(path, format!("at least two poses are needed (got {m})")));
-    }
-    let mut poses = spec.poses.iter().enumerate().map(|(i, v)| pose(path, i, v)).collect::<Result<Vec<_>, _>>()?;
-    motion::trajectory::align_signs(&mut poses);
-    let times = times(path, spec, m)?;
-    if spec.samples == 1 || spec.samples > MAX_SAMPLES {
-        return Err(usage(path, format!("`samples` must be 0 or from 2 to {MAX_SAMPLES} (got {})", spec.samples)));
-    }
-    let motion = match method.key_motion(&poses, &times) {
-        Some(Ok(m)) => m,
-        Some(Err(e)) if e.is_input() => return Err(usage(path, format!("{name}: {e}"))),
-        Some(Err(e)) => return Err(CliError::math(format!("{name}: {e}"))),
-        None => return Ok(None),
-    };
-    let body_points = spec.body_points.clone().unwrap_or_else(|| vec![[0.0; 3]]);
-    Ok(Some(WlBuilt { method, times, poses, motion, body_points, samples: spec.samples }))
-}
-
-/// The key poses segment `k` depends on and its degree in `t` (of the generator before exp).
-fn wl_segment(w: &WlBuilt, k: usize) -> (std::ops::RangeInclusive<usize>, usize) {
-    let last = w.poses.len() - 1;
-    match w.method {
-        Method::WlQuadratic if last == 2 => (0..=2, 2),
-        Method::WlQuadratic => {
-            let (lo, hi) = (k.saturating_sub(1), (k + 2).min(last));
-            (lo..=hi, if hi - lo == 3 { 3 } else { 2 })
-        }
-        _ => (k..=k + 1, 1),
-    }
-}
-
-/// A sample of a W-L motion: the pose, the images and velocities of the body points, `Ω`.
-type WlSample = (Pose<f64>, Vec<[f64; 3]>, Vec<[f64; 3]>, [f64; 3]);
-
-/// One sample of a W-L motion ([`WlSample`]).
-fn wl_sample(w: &WlBuilt, t: f64, points: &[[f64; 3]]) -> Result<WlSample, CliError> {
-    let math = |e: &dyn std::fmt::Display| CliError::math(format!("{} at t = {}: {e}", w.method.name(), format_f64(t)));
-    let v = motion::velocity::velocity(&w.motion, &t).map_err(|e| math(&e))?;
-    let twist = v.twist();
-    let mut pos = Vec::with_capacity(points.len());
-    let mut vel = Vec::with_capacity(points.len());
-    for p in points {
-        let q = v.pose.transform_point(p).map_err(|e| math(&e))?;
-        vel.push(twist.point_velocity(&q).to_array());
-        pos.push(q);
-    }
-    let angular = twist.angular.to_array();
-    if !(pos.iter().chain(&vel).all(finite3) && finite3(&angular)) {
-        return Err(CliError::math(format!("the result at t = {} is not finite (overflow)", format_f64(t))));
-    }
-    Ok((v.pose, pos, vel, angular))
-}
-
-fn wl_times(w: &WlBuilt, n: usize) -> Vec<f64> {
-    let (t0, t1) = (w.times[0], w.times[w.times.len() - 1]);
-    (0..n).map(|i| if i + 1 == n { t1 } else { t0 + (t1 - t0) * i as f64 / (n - 1) as f64 }).collect()
-}
-
-/// `gam interpolate` output for a W-L method (the contract's keys; `control_poses` are the
-/// sign-aligned key poses each segment depends on).
-fn wl_output(w: &WlBuilt, json: bool) -> Result<String, CliError> {
-    let name = w.method.name();
-    let segs = w.times.len() - 1;
-    if json {
-        let segments: Vec<Value> = (0..segs)
-            .map(|k| {
-                let (range, degree) = wl_segment(w, k);
-                let mut seg = json!({"t0": w.times[k], "t1": w.times[k + 1], "representation": w.method.representation(),
-                       "degree": degree,
-                       "control_poses": w.poses[range].iter().map(|s| mv_json(&s.to_multivector())).collect::<Vec<_>>()});
-                if let motion::method::KeyMotion::Hexanion(h) = &w.motion {
-                    let hex = |x: &motion::repr::hexanion::Hexanion<f64>| json!({"omega": x.omega.map(|c| c + 0.0), "m": x.m.map(|c| c + 0.0)});
-                    seg["hexanions"] = json!([hex(&h.hexanions()[k]), hex(&h.hexanions()[k + 1])]);
-                }
-                seg
-            })
-            .collect();
-        let n = if w.samples >= 2 { w.samples } else { 0 };
-        let times = if n > 0 {
-            wl_check_work(w, n, w.body_points.len())?;
-            wl_times(w, n)
-        } else {
-            Vec::new()
-        };
-        let sample = |i: usize| -> Result<Value, CliError> {
-            let t = times[i];
-            let (pose, pos, vel, omega) = wl_sample(w, t, &w.body_points)?;
-            let matrix = pose.unitize().and_then(|u| u.to_matrix()).map_err(|e| CliError::math(e.to_string()))?;
-            let v3 = |v: &[f64; 3]| v.map(|x| x + 0.0);
-            Ok(json!({"t": t, "matrix": matrix.map(|r| r.map(|x| x + 0.0)),
-                "points": pos.iter().map(v3).collect::<Vec<_>>(),
-                "velocities": vel.iter().map(v3).collect::<Vec<_>>(),
-                "angular_velocity": v3(&omega)}))
-        };
-        let head = json!({"method": name, "parameters": w.times, "segments": segments});
-        return write_streamed(&head, n, &sample);
-    }
-    let t = w.times.iter().map(|x| format_f64(*x)).collect::<Vec<_>>().join(", ");
-    let mut lines = vec![format!("{name}: {segs} segments through {} poses at t = [{t}]", w.times.len())];
-    for (i, s) in w.poses.iter().enumerate() {
-        lines.push(format!("  P{i} = {}", mv_human(&s.to_multivector())));
-    }
-    if w.samples >= 2 {
-        wl_check_work(w, w.samples, w.body_points.len())?;
-        for t in wl_times(w, w.samples) {
-            let (_, pos, _, _) = wl_sample(w, t, &w.body_points)?;
-            let pts: Vec<String> = pos.iter().map(|p| format!("[{}]", p.map(format_f64).join(", "))).collect();
-            lines.push(format!("t = {}: points {}", format_f64(t), pts.join(" ")));
-        }
-    }
-    Ok(lines.join("\n"))
-}
-
-/// The largest segment degree of a W-L / hexanion spec and the budget check of sampling
-/// `points` body points at `n` values.
-fn wl_check_work(w: &WlBuilt, n: usize, points: usize) -> Result<usize, CliError> {
-    let degree = (0..w.times.len() - 1).map(|k| wl_segment(w, k).1).max().unwrap_or(1);
-    check_sampling_work(points, degree, n)?;
-    Ok(degree)
-}
-
-/// `gam sample` / `gam plot` on a W-L or hexanion spec.
-fn wl_sampled(w: WlBuilt, n: usize) -> Result<Sampler, CliError> {
-    let body_point = w.body_points.first().copied().unwrap_or([0.0; 3]);
-    let degree = wl_check_work(&w, n, 1)?;
-    let norm = |v: &[f64; 3]| v.iter().map(|x| x * x).sum::<f64>().sqrt();
-    let (kind, segments) = (w.method.kind(), w.times.len() - 1);
-    let times = wl_times(&w, n);
-    let at = move |i: usize| {
-        let t = times[i];
-        let (pose, pos, vel, omega) = wl_sample(&w, t, &[body_point])?;
-        checked(Sample { t, linear_speed: norm(&vel[0]), angular_speed: norm(&omega), position: pos[0], pose })
-    };
-    Ok(Sampler { kind, degree, segments, body_point, n, at: Box::new(at) })
+    Ok(Some(Sampler { kind, degree, segments, body_point, n, at: Box::new(at) }))
 }

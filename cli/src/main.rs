@@ -18,6 +18,7 @@ mod pose;
 mod prove;
 mod sample;
 mod scalar;
+mod trajectory;
 mod verify;
 
 use algebra_core::{Basis, Product};
@@ -131,7 +132,8 @@ enum Command {
         #[arg(value_name = "SPEC.json")]
         spec: String,
     },
-    /// A motion through key poses by a named method (ccm-additive, ccm-multiplicative, wl-linear, wl-quadratic).
+    /// A motion through key poses by a named method (ccm-additive, ccm-multiplicative, wl-linear,
+    /// wl-quadratic, hexanion-linear, juttler-q-motion).
     Interpolate {
         /// Print one JSON object: {"method", "parameters", "segments", "samples"}.
         #[arg(long)]
@@ -140,6 +142,19 @@ enum Command {
         /// body_points (see docs/cli.md).
         #[arg(value_name = "SPEC.json")]
         spec: String,
+    },
+    /// The trajectory of a body point under a `gam interpolate` spec's motion as rational Bézier
+    /// curves, one per segment (rational methods only: ccm-additive, juttler-*).
+    Trajectory {
+        /// Print one JSON object: {"segments": [{"t0", "t1", "degree", "weights", "points"}]}.
+        #[arg(long)]
+        json: bool,
+        /// The JSON spec of `gam interpolate`.
+        #[arg(value_name = "SPEC.json")]
+        spec: String,
+        /// The body point, in body coordinates.
+        #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true)]
+        point: String,
     },
     /// One pose in every representation: matrix, quaternion, axis-angle, motor, dual quaternion,
     /// hexanion, screw.
@@ -228,6 +243,7 @@ fn run(command: Command) -> Result<(String, Option<CliError>), CliError> {
         }
         Command::Hermite { json, spec } => hermite::hermite(&spec, json),
         Command::Interpolate { json, spec } => interpolate::interpolate(&spec, json),
+        Command::Trajectory { json, spec, point } => trajectory::trajectory(&spec, &point, json),
         Command::Pose { json, pose } => pose::pose(&pose, json),
         Command::Sample { samples, json, spec } => sample::sample(&spec, samples, json),
         Command::Plot { out, samples, spec } => plot::plot(&spec, &out, samples),
@@ -250,7 +266,7 @@ fn clap_failure(e: clap::Error) -> ExitCode {
     let text = e.render().to_string();
     let line = match e.kind() {
         ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand | ErrorKind::MissingSubcommand => {
-            "error: a subcommand is required: algebras, eval, table, codegen, hermite, interpolate, pose, sample, plot, prove or verify (see gam --help)"
+            "error: a subcommand is required: algebras, eval, table, codegen, hermite, interpolate, trajectory, pose, sample, plot, prove or verify (see gam --help)"
                 .to_string()
         }
         _ => first_error_line(&text),

@@ -52,14 +52,6 @@ fn hexanion(v: &Value, at: &str) -> Result<Pose<f64>, String> {
     Hexanion::new(h.omega, h.m).to_pose().map_err(|e| format!("`{at}.hexanion`: {e}"))
 }
 
-/// Control poses as dual quaternions by the pose map of `gam pose` (`DualQuaternion::from_pose`,
-/// linear, not normalised): an additive combination of motors acting by `F_S` is the same
-/// combination of dual quaternions acting by Jüttler's (12) (a pseudoscalar factor of a motor
-/// becomes a dual-number factor, which (12) ignores).
-pub(crate) fn dual_quaternions(poses: &[Pose<f64>]) -> Vec<[f64; 8]> {
-    poses.iter().map(|s| z(DualQuaternion::from_pose(&motor_of(s)).coeffs())).collect()
-}
-
 /// `x + 0.0` prints -0.0 as 0.0.
 fn z<const N: usize>(v: [f64; N]) -> [f64; N] {
     v.map(|x| x + 0.0)

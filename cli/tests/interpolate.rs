@@ -158,16 +158,17 @@ fn errors() {
     let with = |extra: &str| format!(r#"{{"method": "ccm-additive", "poses": {two}{extra}}}"#);
     let e = run("unknown", &format!(r#"{{"method": "spline", "poses": {two}}}"#), 2);
     assert!(e.contains("unknown method `spline`"), "{e}");
-    let e = run("later", &format!(r#"{{"method": "juttler-spline", "poses": {two}}}"#), 2);
-    assert!(e.contains("not implemented yet") && e.contains("issue 11"), "{e}");
+    let e = run("unused", &format!(r#"{{"method": "juttler-spline", "poses": {two}, "shape": 1}}"#), 2);
+    assert!(e.contains("`shape` is not used by `juttler-spline`"), "{e}");
     let e = run(
         "dq",
         r#"{"method": "ccm-additive", "poses": [{"dual_quaternion": [1,0,0,0,1,0,0,0]}, {"position": [1,0,0]}]}"#,
         2,
     );
     assert!(e.contains("`poses[0].dual_quaternion`") && e.contains("Study quadric"), "{e}");
-    let e = run("chordal", &with(r#", "parameters": "chordal""#), 2);
-    assert!(e.contains("chordal") && e.contains("issue 11"), "{e}");
+    // Jüttler's rules of eq. (15) apply to every method: two pure translations have no angle
+    let e = run("angular", &with(r#", "parameters": "angular""#), 2);
+    assert!(e.contains("step between positions 0 and 1 is 0"), "{e}");
     let e = run("params", &with(r#", "parameters": [0, 0]"#), 2);
     assert!(e.contains("strictly increasing"), "{e}");
     let e = run("params-count", &with(r#", "parameters": [0, 1, 2]"#), 2);

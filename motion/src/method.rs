@@ -1,27 +1,30 @@
 //! The interpolation methods of `gam interpolate`, by name: one registry that the CLI (and any
-//! caller) asks for a motion through key poses. Built today: the main paper's two C1 Hermite
-//! methods (Sec. 5.3, [`Method::interpolate`]), and the methods through the key poses only
-//! ([`Method::key_motion`]): Wareham–Lasenby's `wl-linear` and `wl-quadratic` and Angelidis'
-//! `hexanion-linear`. The names of the other papers' methods are known, so asking for one is a
-//! clear "not yet" instead of "unknown" (each comes with its own issue and plugs in here as a
-//! new variant returning its segments).
+//! caller) asks for a motion through key poses, and ONE build path for all of them,
+//! [`Method::build`], returning a [`BuiltMotion`]: a [`crate::Motion`] that also knows its
+//! segments (parameter interval, representation, degree, control poses / dual quaternions),
+//! its rational point trajectories where the method's motions are rational, and is sampled
+//! by one function ([`BuiltMotion::sample`]).
+//!
+//! Built: the main paper's two C1 Hermite methods (Sec. 5.3), Wareham–Lasenby's `wl-linear`
+//! and `wl-quadratic`, Angelidis' `hexanion-linear`, and Jüttler's Algorithm 1
+//! (`juttler-q-motion`), TRT (`juttler-trt`), minimal order (`juttler-minimal`) and
+//! Algorithm 2 (`juttler-spline`): every method of the contract. A name of the contract that
+//! is not implemented would be a clear "not yet" ([`LATER`], empty today) instead of "unknown".
 //!
 //! ```
 //! use motion::method::{Method, MethodError};
 //! assert_eq!("ccm-additive".parse::<Method>(), Ok(Method::CcmAdditive));
-//! assert!(matches!("juttler-spline".parse::<Method>(), Err(MethodError::NotYet { .. })));
+//! assert_eq!("juttler-spline".parse::<Method>(), Ok(Method::JuttlerSpline));
 //! assert!(matches!("spline".parse::<Method>(), Err(MethodError::Unknown { .. })));
 //! ```
 
-use crate::Pose;
-use crate::hermite::HermiteShapes;
+mod build;
+mod built;
+
+pub use build::{BuildError, MethodInput, Parameters};
+pub use built::{BuiltMotion, MethodMotion, MethodSegment, RationalSegment};
+
 use crate::joins::SegmentKind;
-use crate::repr::ReprError;
-use crate::repr::hexanion::blend::HexanionLinear;
-use crate::trajectory::{Trajectory, TrajectoryError, Velocities};
-use crate::wareham_lasenby::{WlError, WlMotion};
-use crate::{CurveError, MapScalar, Motion};
-use algebra_core::Real;
 
 /// A method of `gam interpolate` that is implemented.
 ///
@@ -45,32 +48,43 @@ pub enum Method {
     /// Angelidis (56): piecewise linear interpolation of the key poses' principal hexanions,
     /// then exp ([`crate::repr::hexanion::blend::HexanionLinear`]).
     HexanionLinear,
+    /// Jüttler's Algorithm 1: one Q-motion of degree `2m` through the `m + 1` key poses, the
+    /// elliptic rotation (23)-(25) composed with the TR translation (30)-(31)
+    /// ([`crate::juttler::tr::algorithm1`]).
+    JuttlerQMotion,
+    /// Jüttler Sec. 4.2: the elliptic rotation (22)-(25) with the TRT translations (32)-(34),
+    /// split `l1 + l2 = m - 1` ([`crate::juttler::trt::trt`]).
+    JuttlerTrt,
+    /// Jüttler Sec. 5: the rational motion of minimal order `2m` (37)-(39) on the elliptic
+    /// rotation ([`crate::juttler::minimal::minimal`]).
+    JuttlerMinimal,
+    /// Jüttler's Algorithm 2: the C1 spline Q-motion (40)-(44), velocities given or estimated
+    /// by step 1 ([`crate::juttler::spline::algorithm2`]).
+    JuttlerSpline,
 }
 
-/// The methods the contract names that come with later issues (name, issue).
-pub const LATER: [(&str, u32); 4] =
-    [("juttler-q-motion", 11), ("juttler-trt", 11), ("juttler-minimal", 11), ("juttler-spline", 11)];
+/// The methods the contract names that come with later issues (name, issue): none today.
+pub const LATER: [(&str, u32); 0] = [];
+
+/// The implemented methods, as listed in messages.
+const IMPLEMENTED: &str = "ccm-additive, ccm-multiplicative, wl-linear, wl-quadratic, hexanion-linear, juttler-q-motion, juttler-trt, juttler-minimal, juttler-spline";
 
 /// Why a method name was not accepted.
 ///
 /// ```
-/// let e = "juttler-trt".parse::<motion::method::Method>().unwrap_err();
-/// assert!(e.to_string().contains("not implemented yet"));
+/// let e = "juttler-slerp".parse::<motion::method::Method>().unwrap_err();
+/// assert!(e.to_string().contains("unknown method `juttler-slerp`"));
 /// ```
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 pub enum MethodError {
     /// Not a method of the contract.
-    #[error(
-        "unknown method `{name}` (implemented: ccm-additive, ccm-multiplicative, wl-linear, wl-quadratic, hexanion-linear)"
-    )]
+    #[error("unknown method `{name}` (implemented: {IMPLEMENTED})")]
     Unknown {
         /// The name given.
         name: String,
     },
     /// A method of the contract that is not implemented yet.
-    #[error(
-        "method `{name}` is not implemented yet (it comes with issue {issue}; implemented: ccm-additive, ccm-multiplicative, wl-linear, wl-quadratic, hexanion-linear)"
-    )]
+    #[error("method `{name}` is not implemented yet (it comes with issue {issue}; implemented: {IMPLEMENTED})")]
     NotYet {
         /// The name given.
         name: String,
@@ -94,19 +108,31 @@ crate::names::named!("motion::method::Method", Method {
     CcmMultiplicative => "ccm-multiplicative",
     WlLinear => "wl-linear",
     WlQuadratic => "wl-quadratic",
-    HexanionLinear => "hexanion-linear"
+    HexanionLinear => "hexanion-linear",
+    JuttlerQMotion => "juttler-q-motion",
+    JuttlerTrt => "juttler-trt",
+    JuttlerMinimal => "juttler-minimal",
+    JuttlerSpline => "juttler-spline"
 });
 
 impl Method {
-    /// The segment kind of a `ccm-*` method; the W-L and hexanion methods (exp of generators)
-    /// count as multiplicative.
+    /// The segment kind: additive for `ccm-additive` and the Jüttler methods (a Q-motion
+    /// `Σ b_i(t) B_i` is the additive Bézier motion of the motors of its control dual
+    /// quaternions: the map between them is linear), multiplicative for `ccm-multiplicative`;
+    /// the W-L and hexanion methods (exp of generators) count as multiplicative.
     ///
     /// ```
-    /// assert_eq!(motion::method::Method::CcmAdditive.kind(), motion::SegmentKind::Additive);
+    /// use motion::{SegmentKind, method::Method};
+    /// assert_eq!(Method::CcmAdditive.kind(), SegmentKind::Additive);
+    /// assert_eq!(Method::JuttlerQMotion.kind(), SegmentKind::Additive);
     /// ```
     pub fn kind(self) -> SegmentKind {
         match self {
-            Method::CcmAdditive => SegmentKind::Additive,
+            Method::CcmAdditive
+            | Method::JuttlerQMotion
+            | Method::JuttlerTrt
+            | Method::JuttlerMinimal
+            | Method::JuttlerSpline => SegmentKind::Additive,
             Method::CcmMultiplicative | Method::WlLinear | Method::WlQuadratic | Method::HexanionLinear => {
                 SegmentKind::Multiplicative
             }
@@ -116,7 +142,9 @@ impl Method {
     /// What the control data of each segment mean (`segments[].representation` of the contract).
     ///
     /// ```
-    /// assert_eq!(motion::method::Method::CcmAdditive.representation(), "additive-bezier");
+    /// use motion::method::Method;
+    /// assert_eq!(Method::CcmAdditive.representation(), "additive-bezier");
+    /// assert_eq!(Method::JuttlerQMotion.representation(), "dual-quaternion-bezier");
     /// ```
     pub fn representation(self) -> &'static str {
         match self {
@@ -125,174 +153,45 @@ impl Method {
             Method::WlLinear => "wl-relative-rotor",
             Method::WlQuadratic => "wl-bivector-quadratic",
             Method::HexanionLinear => "hexanion-linear",
+            Method::JuttlerQMotion | Method::JuttlerTrt | Method::JuttlerMinimal | Method::JuttlerSpline => {
+                "dual-quaternion-bezier"
+            }
         }
     }
 
-    /// The motion through `poses` at `times` ([`Trajectory::through`] for the `ccm-*` methods;
-    /// the W-L and hexanion methods are not Hermite trajectories: [`Method::key_motion`], an
-    /// input error here).
-    ///
-    /// ```
-    /// use motion::{HermiteShapes, Pose, method::Method, trajectory::Velocities};
-    /// let poses = [Pose::<f64>::identity(), Pose::translation(&[1.0, 0.0, 0.0])];
-    /// let tr = Method::CcmAdditive.interpolate(&poses, &[0.0, 1.0], &Velocities::CatmullRom, &HermiteShapes::unit())?;
-    /// assert_eq!(tr.segments().len(), 1);
-    /// # Ok::<(), motion::trajectory::TrajectoryError>(())
-    /// ```
-    pub fn interpolate<T: Real>(
-        self,
-        poses: &[Pose<T>],
-        times: &[T],
-        velocities: &Velocities<T>,
-        shapes: &HermiteShapes<T>,
-    ) -> Result<Trajectory<T>, TrajectoryError> {
-        if self.through_keys() {
-            return Err(TrajectoryError::Input(format!(
-                "`{}` is not a Hermite trajectory (Method::key_motion)",
-                self.name()
-            )));
-        }
-        Trajectory::through(poses, times, velocities, self.kind(), shapes)
-    }
-
-    /// True for the Wareham–Lasenby methods (built by [`Method::wl_motion`]).
-    ///
-    /// ```
-    /// assert!(motion::method::Method::WlQuadratic.wl() && !motion::method::Method::CcmAdditive.wl());
-    /// ```
-    pub fn wl(self) -> bool {
-        matches!(self, Method::WlLinear | Method::WlQuadratic)
-    }
-
-    /// The Wareham–Lasenby motion through `poses` at `times` (`None` for the other methods).
-    ///
-    /// ```
-    /// use motion::{Motion, Pose, method::Method};
-    /// let poses = [Pose::<f64>::identity(), Pose::translation(&[1.0, 0.0, 0.0])];
-    /// let m = Method::WlLinear.wl_motion(&poses, &[0.0, 1.0]).unwrap()?;
-    /// assert!(m.pose(&1.0)?.is_equivalent(&poses[1], &1e-15)?);
-    /// assert!(Method::WlQuadratic.wl_motion(&poses, &[0.0, 1.0]).unwrap().is_err()); // needs 3 poses
-    /// # Ok::<(), Box<dyn std::error::Error>>(())
-    /// ```
-    pub fn wl_motion<T: Real>(
-        self,
-        poses: &[Pose<T>],
-        times: &[T],
-    ) -> Option<Result<crate::wareham_lasenby::WlMotion<T>, crate::wareham_lasenby::WlError>> {
-        use crate::wareham_lasenby::{WlLinear, WlMotion, WlQuadratic};
-        match self {
-            Method::WlLinear => Some(WlLinear::new(poses, times).map(WlMotion::Linear)),
-            Method::WlQuadratic => Some(WlQuadratic::new(poses, times).map(WlMotion::Quadratic)),
-            _ => None,
-        }
-    }
-}
-
-impl Method {
-    /// True for the methods that interpolate the key poses only (no velocities or shapes):
-    /// the W-L methods and `hexanion-linear`, built by [`Method::key_motion`].
+    /// The optional inputs the method reads besides the key poses and their parameters, by
+    /// their `gam interpolate` spec keys (`velocities`, `shape`, `gamma`, `l1`); an input
+    /// given to a method that does not read it is refused ([`BuildError::Unused`]).
     ///
     /// ```
     /// use motion::method::Method;
-    /// assert!(Method::HexanionLinear.through_keys() && Method::WlLinear.through_keys());
-    /// assert!(!Method::CcmAdditive.through_keys());
+    /// assert_eq!(Method::CcmAdditive.inputs(), ["velocities", "shape", "gamma"]);
+    /// assert!(Method::WlLinear.inputs().is_empty() && Method::JuttlerQMotion.inputs().is_empty());
+    /// assert_eq!(Method::JuttlerTrt.inputs(), ["l1"]);
     /// ```
-    pub fn through_keys(self) -> bool {
-        self.wl() || self == Method::HexanionLinear
+    pub fn inputs(self) -> &'static [&'static str] {
+        match self {
+            Method::CcmAdditive | Method::CcmMultiplicative => &["velocities", "shape", "gamma"],
+            Method::JuttlerTrt => &["l1"],
+            Method::JuttlerSpline => &["velocities"],
+            Method::WlLinear
+            | Method::WlQuadratic
+            | Method::HexanionLinear
+            | Method::JuttlerQMotion
+            | Method::JuttlerMinimal => &[],
+        }
     }
 
-    /// The motion of a [`Method::through_keys`] method through `poses` at `times` (`None` for
-    /// the Hermite methods).
+    /// True when every motion of the method has rational point trajectories (`gam trajectory`
+    /// accepts it): `ccm-additive` (an additive Bézier motion of degree `n` moves points on
+    /// rational curves of degree `2n`) and the Jüttler methods; not the multiplicative, W-L
+    /// and hexanion methods (exp of generators).
     ///
     /// ```
-    /// use motion::{Motion, Pose, method::Method};
-    /// let poses = [Pose::<f64>::identity(), Pose::translation(&[2.0, 0.0, 0.0])];
-    /// let m = Method::HexanionLinear.key_motion(&poses, &[0.0, 1.0]).unwrap()?;
-    /// let p = m.pose(&0.5)?.transform_point(&[0.0; 3])?;
-    /// assert!((p[0] - 1.0).abs() < 1e-15);
-    /// assert!(Method::CcmAdditive.key_motion(&poses, &[0.0, 1.0]).is_none());
-    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// use motion::method::Method;
+    /// assert!(Method::JuttlerQMotion.is_rational() && !Method::WlLinear.is_rational());
     /// ```
-    pub fn key_motion<T: Real>(self, poses: &[Pose<T>], times: &[T]) -> Option<Result<KeyMotion<T>, KeyMotionError>> {
-        if self == Method::HexanionLinear {
-            return Some(HexanionLinear::through(poses, times).map(KeyMotion::Hexanion).map_err(KeyMotionError::Repr));
-        }
-        self.wl_motion(poses, times).map(|r| r.map(KeyMotion::Wl).map_err(KeyMotionError::Wl))
-    }
-}
-
-/// The motion of a method that interpolates key poses only ([`Method::key_motion`]).
-///
-/// ```
-/// use motion::{Motion, Pose, method::{KeyMotion, Method}};
-/// let poses = [Pose::<f64>::identity(), Pose::translation(&[1.0, 0.0, 0.0])];
-/// let m = Method::WlLinear.key_motion(&poses, &[0.0, 2.0]).unwrap().unwrap();
-/// assert!(matches!(m, KeyMotion::Wl(_)));
-/// assert_eq!(m.domain(), [0.0, 2.0]);
-/// ```
-#[derive(Debug, Clone, PartialEq)]
-pub enum KeyMotion<T: Real> {
-    /// `wl-linear`, `wl-quadratic`.
-    Wl(WlMotion<T>),
-    /// `hexanion-linear`.
-    Hexanion(HexanionLinear<T>),
-}
-
-/// Why [`Method::key_motion`] failed.
-///
-/// ```
-/// use motion::{Pose, method::{KeyMotionError, Method}};
-/// let p = [Pose::<f64>::identity(), Pose::identity()];
-/// let e = Method::HexanionLinear.key_motion(&p, &[1.0, 1.0]).unwrap().unwrap_err();
-/// assert!(e.is_input());
-/// ```
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum KeyMotionError {
-    /// From a W-L method.
-    #[error(transparent)]
-    Wl(WlError),
-    /// From `hexanion-linear`.
-    #[error(transparent)]
-    Repr(ReprError),
-}
-
-impl KeyMotionError {
-    /// True when the key poses or times are bad input (too few poses, times not increasing),
-    /// false for a numerical failure (a singular or non-finite pose).
-    ///
-    /// ```
-    /// use motion::{CurveError, method::KeyMotionError, wareham_lasenby::WlError};
-    /// assert!(KeyMotionError::Wl(WlError::Curve(CurveError::TooFewPoses { need: 3, got: 2 })).is_input());
-    /// ```
-    pub fn is_input(&self) -> bool {
-        matches!(
-            self,
-            KeyMotionError::Wl(WlError::Curve(_)) | KeyMotionError::Repr(ReprError::Curve(_) | ReprError::Times { .. })
-        )
-    }
-}
-
-impl<T: Real> Motion<T> for KeyMotion<T> {
-    fn evaluate(&self, t: &T) -> Result<Pose<T>, CurveError> {
-        match self {
-            KeyMotion::Wl(m) => m.evaluate(t),
-            KeyMotion::Hexanion(m) => m.evaluate(t),
-        }
-    }
-    fn domain(&self) -> [T; 2] {
-        match self {
-            KeyMotion::Wl(m) => m.domain(),
-            KeyMotion::Hexanion(m) => m.domain(),
-        }
-    }
-}
-
-impl<T: Real, U: Real> MapScalar<T, U> for KeyMotion<T> {
-    type Mapped = KeyMotion<U>;
-    fn map_scalar(&self, f: &dyn Fn(&T) -> U) -> KeyMotion<U> {
-        match self {
-            KeyMotion::Wl(m) => KeyMotion::Wl(m.map_scalar(f)),
-            KeyMotion::Hexanion(m) => KeyMotion::Hexanion(m.map_scalar(f)),
-        }
+    pub fn is_rational(self) -> bool {
+        !matches!(self, Method::CcmMultiplicative | Method::WlLinear | Method::WlQuadratic | Method::HexanionLinear)
     }
 }

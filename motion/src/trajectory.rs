@@ -39,13 +39,14 @@
 //! # Ok::<(), motion::trajectory::TrajectoryError>(())
 //! ```
 
-use crate::bezier::{CurveError, Motion};
+use crate::bezier::{CurveError, MapScalar, Motion};
 use crate::hermite::{AnyHermiteSegment, HermiteShapes, hermite_with_parameters};
 use crate::joins::{EndCondition, JoinError, SegmentKind};
 use crate::piecewise::{AnyMotion, Piecewise};
 use crate::pose::is_positive;
 use crate::velocity::{PointKinematics, Twist, acceleration, velocity};
 use crate::{MotionError, Pose, Vec3};
+use algebra_core::Jet;
 use algebra_core::{Real, Ring};
 
 /// How the velocities at the key poses are chosen (module docs).
@@ -373,30 +374,7 @@ impl<T: Real> Trajectory<T> {
     /// # Ok::<(), motion::trajectory::TrajectoryError>(())
     /// ```
     pub fn sample(&self, t: &T, body_points: &[[T; 3]]) -> Result<TrajectorySample<T>, TrajectoryError> {
-        let acc = acceleration(&self.motion, t)?;
-        let space = acc.velocity.twist();
-        let rate = acc.twist_derivative();
-        let body_twist = acc.velocity.body_twist()?;
-        let pose = acc.velocity.pose;
-        let points = body_points
-            .iter()
-            .map(|p| {
-                let q = pose.transform_point(p)?;
-                let v = space.point_velocity(&q);
-                // d/dt (u + Ω × q) = du/dt + dΩ/dt × q + Ω × dq/dt.
-                let a1 = rate.point_velocity(&q);
-                let a = a1.add(&space.angular.cross(&v));
-                Ok(PointKinematics { position: q, velocity: v.into(), acceleration: a.into() })
-            })
-            .collect::<Result<Vec<_>, MotionError>>()?;
-        Ok(TrajectorySample {
-            t: t.clone(),
-            pose,
-            space_twist: space,
-            body_twist,
-            space_twist_derivative: rate,
-            points,
-        })
+        sample_motion(&self.motion, t, body_points)
     }
 
     /// [`Trajectory::sample`] at `n ≥ 2` evenly spaced times from `t_0` to `t_m` (both ends).
@@ -484,4 +462,41 @@ fn catmull_rom<T: Real>(poses: &[Pose<T>], times: &[T]) -> Result<Vec<Twist<T>>,
     }
     out.push(zero_twist());
     Ok(out)
+}
+
+/// [`Trajectory::sample`] for any motion: the pose, twists, twist rate and body-point
+/// kinematics at `t` (body points in body coordinates), from one second-order dual-number
+/// evaluation ([`acceleration`]). Every method of `gam interpolate` is sampled by it
+/// ([`crate::method::BuiltMotion::sample`]).
+///
+/// ```
+/// use motion::{MultiplicativeBezier, Pose, trajectory::sample_motion};
+/// let m = MultiplicativeBezier::new(vec![Pose::<f64>::identity(), Pose::translation(&[2.0, 0.0, 0.0])])?;
+/// let s = sample_motion(&m, &0.5, &[[0.0, 1.0, 0.0]])?;
+/// assert_eq!(s.points[0].position, [1.0, 1.0, 0.0]);
+/// assert_eq!(s.points[0].velocity, [2.0, 0.0, 0.0]);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn sample_motion<T: Real, M: MapScalar<T, Jet<Jet<T>>>>(
+    motion: &M,
+    t: &T,
+    body_points: &[[T; 3]],
+) -> Result<TrajectorySample<T>, TrajectoryError> {
+    let acc = acceleration(motion, t)?;
+    let space = acc.velocity.twist();
+    let rate = acc.twist_derivative();
+    let body_twist = acc.velocity.body_twist()?;
+    let pose = acc.velocity.pose;
+    let points = body_points
+        .iter()
+        .map(|p| {
+            let q = pose.transform_point(p)?;
+            let v = space.point_velocity(&q);
+            // d/dt (u + Ω × q) = du/dt + dΩ/dt × q + Ω × dq/dt.
+            let a1 = rate.point_velocity(&q);
+            let a = a1.add(&space.angular.cross(&v));
+            Ok(PointKinematics { position: q, velocity: v.into(), acceleration: a.into() })
+        })
+        .collect::<Result<Vec<_>, MotionError>>()?;
+    Ok(TrajectorySample { t: t.clone(), pose, space_twist: space, body_twist, space_twist_derivative: rate, points })
 }

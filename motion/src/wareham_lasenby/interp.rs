@@ -334,7 +334,7 @@ impl<T: Real, U: Real> MapScalar<T, U> for WlQuadratic<T> {
     }
 }
 
-/// The motion of a W-L method of `gam interpolate` ([`crate::method::Method::wl_motion`]).
+/// The motion of a W-L method of `gam interpolate` ([`crate::method::Method::build`]).
 ///
 /// ```
 /// use motion::{Motion, Pose, wareham_lasenby::{WlLinear, WlMotion}};

@@ -2,7 +2,7 @@
 //! f64 pose set, the 1000-parameter trajectory check.
 #![allow(dead_code)]
 
-pub use super::common::Rng;
+pub use super::common::Xorshift as Rng;
 use algebra_core::rational::{Q, q, ratio};
 use gam_algebras::DualQuaternion;
 use gam_algebras::dual_quaternion::Quaternion;
@@ -14,7 +14,7 @@ use motion::repr::dual_quaternion::from_dual_quaternion_exact;
 
 /// Integers in `[-5, 5]` from the motion tests' shared generator.
 pub fn int(g: &mut Rng) -> i64 {
-    ((g.next() + 0.5) * 11.0).floor() as i64 - 5
+    (g.unit() * 11.0).floor() as i64 - 5
 }
 
 /// The position `(2 + ε s) * R` (14) as a pose.
