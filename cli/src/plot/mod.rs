@@ -1,117 +1,92 @@
-//! `gam plot SPEC.json --out FILE.svg [--samples N]`: an SVG of the sampled segment (see
-//! [`crate::sample`]) with two panels, like the paper's Figs. 3-5: the linear speed of the body
-//! point and the angular speed against `t`, and the path of the body point projected on the
-//! x-y plane. Drawn with `plotters` into a string, then written to FILE (so an unwritable
-//! path is one `error:` line, exit 2, and nothing is left half written by the backend).
+//! `gam plot SPEC.json... --out FILE.svg [--samples N] [--view xy|xz|yz|3d] [--frames K]
+//! [--json]`: an SVG of one or more specs, like the paper's Figs. 3-5, with two panels: the
+//! linear speed of every body point and the angular speed against `t` with the joins marked,
+//! and the paths of the body points (projected on a coordinate plane, or in a 3-D view) with
+//! the key points and, with `--frames K`, the moved body's coordinate frames at `K` evenly
+//! spaced parameters. Several specs are overlaid in one figure with a legend.
+//!
+//! A spec is a `gam interpolate` spec (it has a `method` key: every segment over the whole
+//! parameter range, every `body_points` entry) or a `gam hermite` spec (one segment over
+//! `[0, 1]`, its `body_point`). The data are computed first ([`data::Series`], printed by
+//! `--json`), then drawn ([`draw::render`]) into a string, then written to FILE (so an
+//! unwritable path is one `error:` line, exit 2, and nothing is left half written).
+
+pub(crate) mod data;
+pub(crate) mod draw;
 
 use crate::error::CliError;
-use crate::sample::{Sampled, sample_spec};
+use crate::sample::Sampled;
 use crate::scalar::format_f64;
-use plotters::prelude::*;
+use data::Series;
+pub use draw::View;
 
 /// The default number of samples of `gam plot`.
 pub const DEFAULT_SAMPLES: usize = 201;
 
-/// `[lo, hi]` covering `values`, padded by 5% (and widened when all values are equal).
-fn range(values: impl Iterator<Item = f64>) -> (f64, f64) {
-    let (mut lo, mut hi) = values.fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), x| (l.min(x), h.max(x)));
-    if !lo.is_finite() || !hi.is_finite() {
-        return (0.0, 1.0);
-    }
-    let span = hi - lo;
-    let pad = if span > 0.0 { 0.05 * span } else { 0.5 * lo.abs().max(1.0) };
-    lo -= pad;
-    hi += pad;
-    (lo, hi)
-}
+/// The most body frames `--frames` draws.
+pub const MAX_FRAMES: usize = 1000;
 
-/// The title of the figure.
+/// The title of a sampled Hermite segment (also `gam sample`).
 pub(crate) fn title(s: &Sampled) -> String {
-    let p = s.body_point.map(format_f64);
-    let what = if s.segments == 1 {
-        format!("{} segment of degree {}", s.kind, s.degree)
+    one_title(&s.kind.to_string(), s.segments, s.degree, &[s.body_point])
+}
+
+/// "KIND segment of degree D" or "KIND motion of N segments of degree D", and the body points.
+fn one_title(method: &str, segments: usize, degree: usize, points: &[[f64; 3]]) -> String {
+    let what = if segments == 1 {
+        format!("{method} segment of degree {degree}")
     } else {
-        format!("{} motion of {} segments of degree {}", s.kind, s.segments, s.degree)
+        format!("{method} motion of {segments} segments of degree {degree}")
     };
-    format!("{what}, body point [{}, {}, {}]", p[0], p[1], p[2])
+    let p: Vec<String> = points.iter().map(|p| format!("[{}]", p.map(format_f64).join(", "))).collect();
+    let noun = if p.len() == 1 { "body point" } else { "body points" };
+    format!("{what}, {noun} {}", p.join(" "))
 }
 
-fn draw_error<E: std::fmt::Display>(e: E) -> CliError {
-    CliError::math(format!("cannot draw the plot: {e}"))
-}
-
-/// Renders the SVG text of a sampled segment.
-pub(crate) fn render(s: &Sampled) -> Result<String, CliError> {
-    let mut svg = String::new();
-    {
-        let root = SVGBackend::with_string(&mut svg, (1200, 560)).into_drawing_area();
-        root.fill(&WHITE).map_err(draw_error)?;
-        let root = root.titled(&title(s), ("sans-serif", 22)).map_err(draw_error)?;
-        let (left, right) = root.split_horizontally(600);
-
-        // Panel 1: speeds against t.
-        let t_range = match (s.samples.first(), s.samples.last()) {
-            (Some(a), Some(b)) if b.t > a.t => (a.t, b.t),
-            _ => (0.0, 1.0),
-        };
-        let (_, speed_hi) =
-            range(s.samples.iter().flat_map(|x| [x.linear_speed, x.angular_speed]).chain(std::iter::once(0.0)));
-        let mut chart = ChartBuilder::on(&left)
-            .caption("linear and angular speed", ("sans-serif", 18))
-            .margin(15)
-            .x_label_area_size(40)
-            .y_label_area_size(60)
-            .build_cartesian_2d(t_range.0..t_range.1, 0.0..speed_hi)
-            .map_err(draw_error)?;
-        chart.configure_mesh().x_desc("t").y_desc("speed (per unit t)").draw().map_err(draw_error)?;
-        chart
-            .draw_series(LineSeries::new(s.samples.iter().map(|x| (x.t, x.linear_speed)), BLUE.stroke_width(2)))
-            .map_err(draw_error)?
-            .label("linear speed |v|")
-            .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], BLUE.stroke_width(2)));
-        chart
-            .draw_series(LineSeries::new(s.samples.iter().map(|x| (x.t, x.angular_speed)), RED.stroke_width(2)))
-            .map_err(draw_error)?
-            .label("angular speed |Omega|")
-            .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], RED.stroke_width(2)));
-        chart
-            .configure_series_labels()
-            .background_style(WHITE.mix(0.8))
-            .border_style(BLACK)
-            .position(SeriesLabelPosition::UpperRight)
-            .draw()
-            .map_err(draw_error)?;
-
-        // Panel 2: the path of the body point, x-y projection.
-        let (x_lo, x_hi) = range(s.samples.iter().map(|x| x.position[0]));
-        let (y_lo, y_hi) = range(s.samples.iter().map(|x| x.position[1]));
-        let mut path = ChartBuilder::on(&right)
-            .caption("path of the body point (x-y projection)", ("sans-serif", 18))
-            .margin(15)
-            .x_label_area_size(40)
-            .y_label_area_size(60)
-            .build_cartesian_2d(x_lo..x_hi, y_lo..y_hi)
-            .map_err(draw_error)?;
-        path.configure_mesh().x_desc("x").y_desc("y").draw().map_err(draw_error)?;
-        path.draw_series(LineSeries::new(
-            s.samples.iter().map(|x| (x.position[0], x.position[1])),
-            BLUE.stroke_width(2),
-        ))
-        .map_err(draw_error)?;
-        let ends = [s.samples.first(), s.samples.last()];
-        path.draw_series(
-            ends.into_iter().flatten().map(|x| Circle::new((x.position[0], x.position[1]), 4, BLACK.filled())),
-        )
-        .map_err(draw_error)?;
-        root.present().map_err(draw_error)?;
+/// The title of a figure of `all`.
+fn figure_title(all: &[Series]) -> String {
+    match all {
+        [s] => one_title(&s.method, s.segments, s.degree, &s.body_points),
+        _ => format!("{} motions: {}", all.len(), all.iter().map(|s| s.method.as_str()).collect::<Vec<_>>().join(", ")),
     }
-    Ok(svg)
 }
 
-/// Runs `gam plot`: writes the SVG to `out` and reports what was written.
-pub fn plot(path: &str, out: &str, n: usize) -> Result<String, CliError> {
-    let sampled = sample_spec(path, n)?;
-    let svg = render(&sampled)?;
+/// What `gam plot` draws.
+pub struct PlotArgs<'a> {
+    /// The spec files (at least one).
+    pub specs: &'a [String],
+    /// The SVG file to write.
+    pub out: &'a str,
+    /// Samples per spec (at least 2).
+    pub samples: usize,
+    /// The path panel's view.
+    pub view: View,
+    /// Body frames per spec.
+    pub frames: usize,
+    /// Print the data of the figure as JSON instead of the one-line report.
+    pub json: bool,
+}
+
+/// Runs `gam plot`: writes the SVG to `out` and reports what was written (or prints the data).
+pub fn plot(a: &PlotArgs) -> Result<String, CliError> {
+    if a.specs.is_empty() {
+        return Err(CliError::usage("`gam plot` needs at least one SPEC.json"));
+    }
+    if a.frames > MAX_FRAMES {
+        return Err(CliError::usage(format!("`--frames` must be at most {MAX_FRAMES} (got {})", a.frames)));
+    }
+    if a.samples < 2 || a.samples > crate::sample::MAX_SAMPLES {
+        let max = crate::sample::MAX_SAMPLES;
+        return Err(CliError::usage(format!("`--samples` must be an integer from 2 to {max} (got {})", a.samples)));
+    }
+    let all = a.specs.iter().map(|p| data::series(p, a.samples, a.frames)).collect::<Result<Vec<_>, _>>()?;
+    let title = figure_title(&all);
+    let svg = draw::render(&all, a.view, &title)?;
+    let out = a.out;
     std::fs::write(out, svg).map_err(|e| CliError::usage(format!("cannot write `{out}`: {e}")))?;
-    Ok(format!("wrote {out}: {} ({} samples)", title(&sampled), sampled.samples.len()))
+    if a.json {
+        return serde_json::to_string(&serde_json::json!({"title": title, "series": all}))
+            .map_err(|e| CliError::math(format!("cannot print the plot data: {e}")));
+    }
+    Ok(format!("wrote {out}: {title} ({} samples)", a.samples))
 }
