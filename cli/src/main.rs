@@ -10,6 +10,7 @@ mod commands;
 mod error;
 mod eval;
 mod expr;
+mod figures;
 mod hermite;
 mod interpolate;
 mod output;
@@ -195,6 +196,15 @@ enum Command {
         #[arg(value_name = "SPEC.json", required = true)]
         specs: Vec<String>,
     },
+    /// Regenerate the main paper's Figs. 3-5 as SVG files in DIR.
+    Figures {
+        /// The directory to write fig3.svg, fig4.svg, fig5.svg into.
+        #[arg(long, value_name = "DIR")]
+        out: String,
+        /// Also print the data of the figures as one JSON object keyed by file name.
+        #[arg(long)]
+        json: bool,
+    },
     /// Decide a polynomial identity symbolically under hypotheses (ideal membership over Q).
     Prove {
         /// A built-in algebra (g3, g123inf, pga3, cga, cga-null) or a path to a TOML file.
@@ -252,6 +262,7 @@ fn run(command: Command) -> Result<(String, Option<CliError>), CliError> {
         Command::Plot { out, samples, view, frames, json, specs } => {
             plot::plot(&plot::PlotArgs { specs: &specs, out: &out, samples, view, frames, json })
         }
+        Command::Figures { out, json } => figures::figures(&out, json),
         Command::Prove { algebra, basis, assume, timeout, json, claim } => {
             return prove::prove(&prove::ProveArgs { algebra, basis, assume, timeout, json, claim });
         }
@@ -271,7 +282,7 @@ fn clap_failure(e: clap::Error) -> ExitCode {
     let text = e.render().to_string();
     let line = match e.kind() {
         ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand | ErrorKind::MissingSubcommand => {
-            "error: a subcommand is required: algebras, eval, table, codegen, hermite, interpolate, trajectory, pose, sample, plot, prove or verify (see gam --help)"
+            "error: a subcommand is required: algebras, eval, table, codegen, hermite, interpolate, trajectory, pose, sample, plot, figures, prove or verify (see gam --help)"
                 .to_string()
         }
         _ => first_error_line(&text),

@@ -264,3 +264,67 @@ fn the_svg_checker_rejects_malformed_svg() {
         assert!(caught.is_err(), "{bad:?} was accepted");
     }
 }
+
+/// `gam figures --out DIR --json` into a temporary directory: the data of each figure and
+/// its SVG, after checking the SVG well-formed with one series per line of the data.
+fn figures() -> Vec<(String, Value)> {
+    let dir = std::env::temp_dir().join(format!("gam-cli-test-{}-figures", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("a temp directory");
+    let data: Value = serde_json::from_str(&ok(&["figures", "--json", "--out", dir.to_str().unwrap()])).unwrap();
+    let mut out = Vec::new();
+    for (file, fig) in data.as_object().expect("an object") {
+        let svg = std::fs::read_to_string(dir.join(file)).expect("the figure was written");
+        assert_eq!(check_svg(&svg), expected_series(fig), "{file}");
+        out.push((file.clone(), fig.clone()));
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+    out
+}
+
+/// The series of figure `file`.
+fn figure(all: &[(String, Value)], file: &str) -> Vec<Value> {
+    let fig = all.iter().find(|(f, _)| f == file).unwrap_or_else(|| panic!("no {file}"));
+    fig.1["series"].as_array().unwrap().clone()
+}
+
+#[test]
+#[allow(clippy::approx_constant)] // the paper's printed values
+fn paper_figures_3_to_5() {
+    let all = figures();
+    assert_eq!(all.iter().map(|(f, _)| f.as_str()).collect::<Vec<_>>(), ["fig3.svg", "fig4.svg", "fig5.svg"]);
+    // Fig. 3: the speeds jump at the join t = 1 (samples every 0.005). Just before it, the
+    // printed Ψ at the end of the arc: |v| = 5.6569, |Ω| = 1.4142 (Sec. 4); on the line, the
+    // printed V_i translate by 2 (2 + 1.0472 3t): |v| = 6.2832 exactly, |Ω| = 0.
+    let f3 = &figure(&all, "fig3.svg")[0];
+    assert_eq!(nums(&f3["joins"]), [1.0]);
+    let (v, w) = (nums(&f3["speeds"][0]), nums(&f3["angular_speed"]));
+    assert!((v[199] - 5.6569).abs() < 0.03 && (w[199] - 1.4142).abs() < 0.01, "{} {}", v[199], w[199]);
+    for i in 201..v.len() {
+        assert!((v[i] - 6.2832).abs() < 1e-9 && w[i] == 0.0, "t = {}: {} {}", 0.005 * i as f64, v[i], w[i]);
+    }
+    // Fig. 4: real γ keeps the motion planar; γ = 0 makes the speed continuous at the join.
+    let f4 = figure(&all, "fig4.svg");
+    assert_eq!(f4.len(), 5);
+    for s in &f4 {
+        assert!(s["paths"][0].as_array().unwrap().iter().all(|p| point(p)[2].abs() < 1e-12), "{}", s["label"]);
+    }
+    let v0 = nums(&f4[0]["speeds"][0]);
+    assert!((v0[199] - v0[201]).abs() < 0.05, "{} vs {}", v0[199], v0[201]);
+    // Fig. 5: γ = ±20ω, ±40ω take the path out of the plane, symmetrically; seen along z it
+    // is the γ = 0 path, the angular speed is that of γ = 0, the linear speed is larger.
+    let f5 = figure(&all, "fig5.svg");
+    let path = |s: &Value| s["paths"][0].as_array().unwrap().iter().map(point).collect::<Vec<_>>();
+    let base = path(&f5[0]);
+    assert!(base.iter().all(|p| p[2] == 0.0));
+    for s in &f5[1..] {
+        let p = path(s);
+        let lift = p.iter().map(|q| q[2].abs()).fold(0.0, f64::max);
+        assert!(lift > 0.25, "{}: {lift}", s["label"]);
+        assert!(p.iter().zip(&base).all(|(a, b)| (a[0] - b[0]).abs() < 1e-12 && (a[1] - b[1]).abs() < 1e-12));
+        assert_eq!(nums(&s["angular_speed"]), nums(&f5[0]["angular_speed"]));
+        let (v, v0) = (nums(&s["speeds"][0]), nums(&f5[0]["speeds"][0]));
+        assert!(v.iter().zip(&v0).all(|(a, b)| a >= &(b - 1e-12)) && v.iter().zip(&v0).any(|(a, b)| a > &(b + 0.1)));
+    }
+    let (plus, minus) = (path(&f5[1]), path(&f5[2]));
+    assert!(plus.iter().zip(&minus).all(|(a, b)| (a[2] + b[2]).abs() < 1e-12), "±20ω mirror each other");
+}

@@ -12,7 +12,9 @@ use crate::hermite::strip_comments;
 use crate::interpolate::{built, usage};
 use crate::sample::sample_spec;
 use crate::scalar::format_f64;
-use motion::Pose;
+use motion::algebra_core::Jet;
+use motion::trajectory::sample_motion;
+use motion::{MapScalar, Pose};
 use serde::Serialize;
 use serde_json::Value;
 
@@ -113,16 +115,53 @@ fn interpolated(path: &str, n: usize, k: usize) -> Result<Series, CliError> {
         None => vec![[0.0; 3]],
     };
     let m = &b.motion;
-    let (segments, degree) = (m.segments().len(), m.max_degree());
+    let method = m.method().name().to_string();
+    let shape = Shape {
+        label: format!("{}: {method}", file_name(path)),
+        method,
+        segments: m.segments().len(),
+        degree: m.max_degree(),
+        key_times: m.times().to_vec(),
+        joins: m.segments().iter().skip(1).map(|s| s.t0).collect(),
+    };
+    of_motion(shape, m.motion(), body_points, n, k)
+}
+
+/// What [`of_motion`] is told about a motion besides the motion itself.
+pub(crate) struct Shape {
+    /// [`Series::label`].
+    pub label: String,
+    /// [`Series::method`].
+    pub method: String,
+    /// [`Series::segments`].
+    pub segments: usize,
+    /// [`Series::degree`].
+    pub degree: usize,
+    /// [`Series::key_times`] (the first and last are the parameter range).
+    pub key_times: Vec<f64>,
+    /// [`Series::joins`].
+    pub joins: Vec<f64>,
+}
+
+/// The series of `motion` (sampled by `motion::trajectory::sample_motion`, one evaluation
+/// over second-order dual numbers per parameter) at `n` evenly spaced parameters over the
+/// range of `shape.key_times`, with `k` frames.
+pub(crate) fn of_motion<M: MapScalar<f64, Jet<Jet<f64>>>>(
+    shape: Shape,
+    motion: &M,
+    body_points: Vec<[f64; 3]>,
+    n: usize,
+    k: usize,
+) -> Result<Series, CliError> {
+    let degree = shape.degree;
     crate::budget::check(
         &format!("plotting {} body points of degree-{degree} segments at {n} values", body_points.len()),
         crate::budget::sampling_work(degree, n + k) * body_points.len().max(1) as f64,
     )?;
-    let key_times = m.times().to_vec();
+    let key_times = shape.key_times;
     let (t0, t1) = (key_times[0], key_times[key_times.len() - 1]);
-    let joins = m.segments().iter().skip(1).map(|s| s.t0).collect();
     let sample = |t: f64| {
-        let s = m.sample(&t, &body_points).map_err(|e| CliError::math(e.to_string()))?;
+        let s = sample_motion(motion, &t, &body_points).map_err(|e| CliError::math(e.to_string()))?;
         let ok = s.points.iter().all(|p| finite(&p.position) && finite(&p.velocity))
             && finite(&s.space_twist.angular.to_array());
         if !ok {
@@ -147,15 +186,14 @@ fn interpolated(path: &str, n: usize, k: usize) -> Result<Series, CliError> {
         .map(|tk| Ok(sample(*tk)?.points.iter().map(|p| p.position).collect()))
         .collect::<Result<_, CliError>>()?;
     let frames = evenly(t0, t1, k).into_iter().map(|tf| frame(tf, &sample(tf)?.pose)).collect::<Result<_, _>>()?;
-    let method = m.method().name().to_string();
     Ok(Series {
-        label: format!("{}: {method}", file_name(path)),
-        method,
-        segments,
+        label: shape.label,
+        method: shape.method,
+        segments: shape.segments,
         degree,
         body_points,
         key_times,
-        joins,
+        joins: shape.joins,
         t,
         paths,
         speeds,

@@ -57,7 +57,7 @@ pub(crate) fn range(values: impl Iterator<Item = f64>) -> (f64, f64) {
 
 /// The colour of line `i`.
 fn colour(i: usize) -> RGBColor {
-    const C: [RGBColor; 8] = [
+    const C: [RGBColor; 10] = [
         RGBColor(31, 119, 180),
         RGBColor(214, 39, 40),
         RGBColor(44, 160, 44),
@@ -66,6 +66,8 @@ fn colour(i: usize) -> RGBColor {
         RGBColor(140, 86, 75),
         RGBColor(227, 119, 194),
         RGBColor(23, 190, 207),
+        RGBColor(188, 189, 34),
+        RGBColor(255, 187, 120),
     ];
     C[i % C.len()]
 }
