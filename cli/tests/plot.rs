@@ -265,8 +265,9 @@ fn the_svg_checker_rejects_malformed_svg() {
     }
 }
 
-/// `gam figures --out DIR --json` into a temporary directory: the data of each figure and
-/// its SVG, after checking the SVG well-formed with one series per line of the data.
+/// `gam figures --out DIR --json` into a temporary directory: the data of each figure, after
+/// checking its SVG well-formed with one series per line of the data and equal to the one
+/// committed in the gallery (docs/figures/).
 fn figures() -> Vec<(String, Value)> {
     let dir = std::env::temp_dir().join(format!("gam-cli-test-{}-figures", std::process::id()));
     std::fs::create_dir_all(&dir).expect("a temp directory");
@@ -275,6 +276,9 @@ fn figures() -> Vec<(String, Value)> {
     for (file, fig) in data.as_object().expect("an object") {
         let svg = std::fs::read_to_string(dir.join(file)).expect("the figure was written");
         assert_eq!(check_svg(&svg), expected_series(fig), "{file}");
+        let committed = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../docs/figures").join(file);
+        let committed = std::fs::read_to_string(&committed).expect("the gallery has the figure");
+        assert!(committed == svg, "docs/figures/{file} is stale: run `gam figures --out docs/figures`");
         out.push((file.clone(), fig.clone()));
     }
     let _ = std::fs::remove_dir_all(&dir);
