@@ -332,3 +332,10 @@ fn paper_figures_3_to_5() {
     let (plus, minus) = (path(&f5[1]), path(&f5[2]));
     assert!(plus.iter().zip(&minus).all(|(a, b)| (a[2] + b[2]).abs() < 1e-12), "±20ω mirror each other");
 }
+
+#[test]
+fn figures_into_a_missing_directory_is_exit_2() {
+    let line = fails(&["figures", "--out", "/nonexistent-dir/gam-figures"], 2);
+    assert!(line.contains("cannot write `/nonexistent-dir/gam-figures/fig3.svg`"), "{line}");
+    fails(&["figures"], 2);
+}
