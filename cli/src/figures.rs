@@ -7,7 +7,7 @@
 
 use crate::error::CliError;
 use crate::plot::data::{Series, Shape, of_motion};
-use crate::plot::draw::{View, render};
+use crate::plot::draw::{Body, View, render};
 use motion::paper::sec_4;
 use motion::{AdditiveBezier, Piecewise, Pose};
 use serde_json::{Value, json};
@@ -70,7 +70,7 @@ pub fn figures(dir: &str, json: bool) -> Result<String, CliError> {
     let mut lines = Vec::new();
     let mut data = serde_json::Map::new();
     for (file, title, view, series) in all()? {
-        let svg = render(&series, view, &title)?;
+        let svg = render(&series, view, Body::Frames, &title)?;
         let path = std::path::Path::new(dir).join(file);
         let shown = path.display().to_string();
         std::fs::write(&path, svg).map_err(|e| CliError::usage(format!("cannot write `{shown}`: {e}")))?;

@@ -188,6 +188,9 @@ enum Command {
         /// Draw the moved body's coordinate frames at K evenly spaced parameters.
         #[arg(long, value_name = "K", default_value_t = 0)]
         frames: usize,
+        /// How the body is drawn at the frames: its coordinate frame or the unit cube.
+        #[arg(long, value_name = "BODY", value_enum, default_value = "frames")]
+        body: plot::Body,
         /// Also print the data of the figure as one JSON object {"title", "series": [...]}.
         #[arg(long)]
         json: bool,
@@ -259,8 +262,8 @@ fn run(command: Command) -> Result<(String, Option<CliError>), CliError> {
         Command::Trajectory { json, spec, point } => trajectory::trajectory(&spec, &point, json),
         Command::Pose { json, pose } => pose::pose(&pose, json),
         Command::Sample { samples, json, spec } => sample::sample(&spec, samples, json),
-        Command::Plot { out, samples, view, frames, json, specs } => {
-            plot::plot(&plot::PlotArgs { specs: &specs, out: &out, samples, view, frames, json })
+        Command::Plot { out, samples, view, frames, body, json, specs } => {
+            plot::plot(&plot::PlotArgs { specs: &specs, out: &out, samples, view, frames, body, json })
         }
         Command::Figures { out, json } => figures::figures(&out, json),
         Command::Prove { algebra, basis, assume, timeout, json, claim } => {

@@ -339,3 +339,21 @@ fn figures_into_a_missing_directory_is_exit_2() {
     assert!(line.contains("cannot write `/nonexistent-dir/gam-figures/fig3.svg`"), "{line}");
     fails(&["figures"], 2);
 }
+
+#[test]
+fn the_unit_cube_at_the_frames() {
+    // Frames at t = 0, 1.5, 3 of the spec with parameters 0, 1, 3: at t = 3 the last key pose
+    // carries the corner (i, j, k) of [0, 1]³ (index i + 2j + 4k) to R (i, j, k) + p.
+    let file = TempFile::new("plot-cube.json", &spec("juttler-spline", true));
+    let (data, svg) = plot("plot-cube", &[file.path(), "--frames", "3", "--body", "cube", "--view", "3d"]);
+    let s = &data["series"][0];
+    let last = &s["frames"][2];
+    assert_eq!(num(&last["t"]), 3.0);
+    for c in 0..8 {
+        let corner = [(c & 1) as f64, ((c >> 1) & 1) as f64, ((c >> 2) & 1) as f64];
+        let (got, want) = (point(&last["cube"][c]), key_point(2, &corner));
+        assert!(dist(&got, &want) < 1e-12, "corner {c}: {got:?} vs {want:?}");
+    }
+    // 12 edges per frame instead of 3 axes.
+    assert_eq!(check_svg(&svg), expected_series(&data) + 9 * 3);
+}

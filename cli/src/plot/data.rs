@@ -18,8 +18,8 @@ use motion::{MapScalar, Pose};
 use serde::Serialize;
 use serde_json::Value;
 
-/// The moved body's coordinate frame at one parameter: where the body origin and the tips of
-/// the body's unit axes `e1, e2, e3` are (world coordinates).
+/// The moved body at one parameter: where the body origin, the tips of the body's unit axes
+/// `e1, e2, e3` and the corners of the unit cube `[0, 1]³` are (world coordinates).
 #[derive(Debug, Clone, Serialize)]
 pub(crate) struct Frame {
     /// The parameter.
@@ -28,6 +28,8 @@ pub(crate) struct Frame {
     pub origin: [f64; 3],
     /// The images of the body points `e1`, `e2`, `e3`.
     pub axes: [[f64; 3]; 3],
+    /// The images of the unit cube's corners `(i, j, k) ∈ {0, 1}³`, corner `i + 2j + 4k`.
+    pub cube: [[f64; 3]; 8],
 }
 
 /// Everything drawn for one spec.
@@ -86,7 +88,12 @@ fn frame(t: f64, pose: &Pose<f64>) -> Result<Frame, CliError> {
             .filter(finite)
             .ok_or_else(|| CliError::math(format!("the body frame at t = {} is not finite", format_f64(t))))
     };
-    Ok(Frame { t, origin: at([0.0; 3])?, axes: [at([1.0, 0.0, 0.0])?, at([0.0, 1.0, 0.0])?, at([0.0, 0.0, 1.0])?] })
+    let mut cube = [[0.0; 3]; 8];
+    for (c, corner) in cube.iter_mut().enumerate() {
+        *corner = at([(c & 1) as f64, ((c >> 1) & 1) as f64, ((c >> 2) & 1) as f64])?;
+    }
+    let axes = [at([1.0, 0.0, 0.0])?, at([0.0, 1.0, 0.0])?, at([0.0, 0.0, 1.0])?];
+    Ok(Frame { t, origin: at([0.0; 3])?, axes, cube })
 }
 
 /// The file name of `path` (for legends).

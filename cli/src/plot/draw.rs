@@ -6,13 +6,44 @@
 //!
 //! Every data line is one SVG `<polyline>` and every legend mark a `<rect>`, so a test can
 //! count the series of a figure (the polylines not in black, which are the axes): per series, one speed line and one path per body point, one
-//! angular speed line, one line per join and three per frame.
+//! angular speed line, one line per join and three per frame (twelve with `--body cube`).
 
 use super::data::Series;
 use crate::error::CliError;
 use crate::scalar::format_f64;
 use plotters::coord::Shift;
 use plotters::prelude::*;
+
+/// How the moved body is drawn at the frame parameters.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Body {
+    /// Its coordinate frame: `e1` red, `e2` green, `e3` blue, a tenth of the paths' extent.
+    Frames,
+    /// The unit cube `[0, 1]³` (Jüttler's figures), its 12 edges in grey.
+    Cube,
+}
+
+/// The colour of the cube's edges.
+const CUBE: RGBColor = RGBColor(90, 90, 90);
+
+/// The 12 edges of the unit cube as pairs of corner indices `i + 2j + 4k`.
+const EDGES: [(usize, usize); 12] =
+    [(0, 1), (2, 3), (4, 5), (6, 7), (0, 2), (1, 3), (4, 6), (5, 7), (0, 4), (1, 5), (2, 6), (3, 7)];
+
+/// The segments drawing frame `f` as `body` (frame axes of length `l`).
+fn body_lines(f: &super::data::Frame, body: Body, l: f64) -> Vec<([f64; 3], [f64; 3], RGBColor)> {
+    match body {
+        Body::Frames => (0..3).map(|k| (f.origin, tip(f, k, l), AXIS_COLOURS[k])).collect(),
+        Body::Cube => EDGES.iter().map(|(a, b)| (f.cube[*a], f.cube[*b], CUBE)).collect(),
+    }
+}
+
+/// The points the path panel must show: the paths, and the cubes when they are drawn.
+fn shown_points(all: &[Series], body: Body) -> Vec<[f64; 3]> {
+    let paths = all.iter().flat_map(|s| s.paths.iter().flatten().copied());
+    let cubes = all.iter().flat_map(|s| s.frames.iter().flat_map(|f| f.cube)).filter(|_| body == Body::Cube);
+    paths.chain(cubes).collect()
+}
 
 /// The path panel's view: a projection on a coordinate plane or a 3-D view.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
@@ -158,9 +189,16 @@ fn speeds(area: &DrawingArea<SVGBackend, Shift>, all: &[Series]) -> Result<(), C
 }
 
 /// The path panel projected on the coordinates `(a, b)`.
-fn paths_2d(area: &DrawingArea<SVGBackend, Shift>, all: &[Series], a: usize, b: usize) -> Result<(), CliError> {
+fn paths_2d(
+    area: &DrawingArea<SVGBackend, Shift>,
+    all: &[Series],
+    body: Body,
+    a: usize,
+    b: usize,
+) -> Result<(), CliError> {
     let names = ["x", "y", "z"];
-    let pts = || all.iter().flat_map(|s| s.paths.iter().flatten());
+    let shown = shown_points(all, body);
+    let pts = || shown.iter();
     let (a_lo, a_hi) = range(pts().map(|p| p[a]));
     let (b_lo, b_hi) = range(pts().map(|p| p[b]));
     let mut chart = ChartBuilder::on(area)
@@ -184,11 +222,9 @@ fn paths_2d(area: &DrawingArea<SVGBackend, Shift>, all: &[Series], a: usize, b: 
         let dots = s.key_points.iter().flatten().map(|p| Circle::new((p[a], p[b]), 4, BLACK.filled()));
         chart.draw_series(dots).map_err(draw_error)?;
         for f in &s.frames {
-            let axes = (0..3).map(|k| {
-                let t = tip(f, k, l);
-                PathElement::new(vec![(f.origin[a], f.origin[b]), (t[a], t[b])], AXIS_COLOURS[k].stroke_width(2))
-            });
-            chart.draw_series(axes).map_err(draw_error)?;
+            let lines = body_lines(f, body, l).into_iter();
+            let lines = lines.map(|(p, q, c)| PathElement::new(vec![(p[a], p[b]), (q[a], q[b])], c.stroke_width(2)));
+            chart.draw_series(lines).map_err(draw_error)?;
         }
     }
     if all.len() > 1 {
@@ -199,8 +235,9 @@ fn paths_2d(area: &DrawingArea<SVGBackend, Shift>, all: &[Series], a: usize, b: 
 }
 
 /// The path panel as a 3-D view (z up: plotters' vertical axis is its second).
-fn paths_3d(area: &DrawingArea<SVGBackend, Shift>, all: &[Series]) -> Result<(), CliError> {
-    let pts = || all.iter().flat_map(|s| s.paths.iter().flatten());
+fn paths_3d(area: &DrawingArea<SVGBackend, Shift>, all: &[Series], body: Body) -> Result<(), CliError> {
+    let shown = shown_points(all, body);
+    let pts = || shown.iter();
     let (x, y, z) = (range(pts().map(|p| p[0])), range(pts().map(|p| p[1])), range(pts().map(|p| p[2])));
     let mut chart = ChartBuilder::on(area)
         .caption("path of the body points (3-D view, z up)", ("sans-serif", 18))
@@ -222,9 +259,9 @@ fn paths_3d(area: &DrawingArea<SVGBackend, Shift>, all: &[Series]) -> Result<(),
         let dots = s.key_points.iter().flatten().map(|p| Circle::new(to(p), 4, BLACK.filled()));
         chart.draw_series(dots).map_err(draw_error)?;
         for f in &s.frames {
-            let axes = (0..3)
-                .map(|k| PathElement::new(vec![to(&f.origin), to(&tip(f, k, l))], AXIS_COLOURS[k].stroke_width(2)));
-            chart.draw_series(axes).map_err(draw_error)?;
+            let lines = body_lines(f, body, l).into_iter();
+            let lines = lines.map(|(p, q, c)| PathElement::new(vec![to(&p), to(&q)], c.stroke_width(2)));
+            chart.draw_series(lines).map_err(draw_error)?;
         }
     }
     if all.len() > 1 {
@@ -234,8 +271,9 @@ fn paths_3d(area: &DrawingArea<SVGBackend, Shift>, all: &[Series]) -> Result<(),
     Ok(())
 }
 
-/// Renders the SVG text of the figure of `all` (one or more series) titled `title`.
-pub(crate) fn render(all: &[Series], view: View, title: &str) -> Result<String, CliError> {
+/// Renders the SVG text of the figure of `all` (one or more series) titled `title`, the body
+/// drawn as `body` at the frames.
+pub(crate) fn render(all: &[Series], view: View, body: Body, title: &str) -> Result<String, CliError> {
     let mut svg = String::new();
     {
         let root = SVGBackend::with_string(&mut svg, (1200, 560)).into_drawing_area();
@@ -244,8 +282,8 @@ pub(crate) fn render(all: &[Series], view: View, title: &str) -> Result<String, 
         let (left, right) = root.split_horizontally(600);
         speeds(&left, all)?;
         match view.axes() {
-            Some((a, b)) => paths_2d(&right, all, a, b)?,
-            None => paths_3d(&right, all)?,
+            Some((a, b)) => paths_2d(&right, all, body, a, b)?,
+            None => paths_3d(&right, all, body)?,
         }
         root.present().map_err(draw_error)?;
     }

@@ -1,9 +1,10 @@
 //! `gam plot SPEC.json... --out FILE.svg [--samples N] [--view xy|xz|yz|3d] [--frames K]
-//! [--json]`: an SVG of one or more specs, like the paper's Figs. 3-5, with two panels: the
-//! linear speed of every body point and the angular speed against `t` with the joins marked,
-//! and the paths of the body points (projected on a coordinate plane, or in a 3-D view) with
-//! the key points and, with `--frames K`, the moved body's coordinate frames at `K` evenly
-//! spaced parameters. Several specs are overlaid in one figure with a legend.
+//! [--body frames|cube] [--json]`: an SVG of one or more specs, like the paper's Figs. 3-5,
+//! with two panels: the linear speed of every body point and the angular speed against `t`
+//! with the joins marked, and the paths of the body points (projected on a coordinate plane,
+//! or in a 3-D view) with the key points and, with `--frames K`, the moved body's coordinate
+//! frames (or, with `--body cube`, the unit cube) at `K` evenly spaced parameters. Several
+//! specs are overlaid in one figure with a legend.
 //!
 //! A spec is a `gam interpolate` spec (it has a `method` key: every segment over the whole
 //! parameter range, every `body_points` entry) or a `gam hermite` spec (one segment over
@@ -18,7 +19,7 @@ use crate::error::CliError;
 use crate::sample::Sampled;
 use crate::scalar::format_f64;
 use data::Series;
-pub use draw::View;
+pub use draw::{Body, View};
 
 /// The default number of samples of `gam plot`.
 pub const DEFAULT_SAMPLES: usize = 201;
@@ -63,6 +64,8 @@ pub struct PlotArgs<'a> {
     pub view: View,
     /// Body frames per spec.
     pub frames: usize,
+    /// How the body is drawn at the frames.
+    pub body: Body,
     /// Print the data of the figure as JSON instead of the one-line report.
     pub json: bool,
 }
@@ -81,7 +84,7 @@ pub fn plot(a: &PlotArgs) -> Result<String, CliError> {
     }
     let all = a.specs.iter().map(|p| data::series(p, a.samples, a.frames)).collect::<Result<Vec<_>, _>>()?;
     let title = figure_title(&all);
-    let svg = draw::render(&all, a.view, &title)?;
+    let svg = draw::render(&all, a.view, a.body, &title)?;
     let out = a.out;
     std::fs::write(out, svg).map_err(|e| CliError::usage(format!("cannot write `{out}`: {e}")))?;
     if a.json {
