@@ -10,6 +10,7 @@ mod commands;
 mod error;
 mod eval;
 mod expr;
+mod figures;
 mod hermite;
 mod interpolate;
 mod output;
@@ -178,17 +179,40 @@ enum Command {
         #[arg(value_name = "SPEC.json")]
         spec: String,
     },
-    /// Plot a `gam hermite` segment to SVG: speeds against t and the path of the body point.
+    /// Plot specs to SVG: speeds against t with the joins marked, and the paths of the body
+    /// points (several specs are overlaid with a legend).
     Plot {
         /// The SVG file to write.
         #[arg(long, value_name = "FILE.svg")]
         out: String,
-        /// The number of evenly spaced parameter values t = 0..1 (at least 2).
+        /// The number of evenly spaced parameter values over each spec's range (at least 2).
         #[arg(long, value_name = "N", default_value_t = plot::DEFAULT_SAMPLES)]
         samples: usize,
-        /// The JSON spec of `gam hermite`, plus an optional "body_point": [x, y, z].
-        #[arg(value_name = "SPEC.json")]
-        spec: String,
+        /// The path panel: a projection on the x-y, x-z or y-z plane, or a 3-D view.
+        #[arg(long, value_name = "VIEW", value_enum, default_value = "xy")]
+        view: plot::View,
+        /// Draw the moved body's coordinate frames at K evenly spaced parameters.
+        #[arg(long, value_name = "K", default_value_t = 0)]
+        frames: usize,
+        /// How the body is drawn at the frames: its coordinate frame or the unit cube.
+        #[arg(long, value_name = "BODY", value_enum, default_value = "frames")]
+        body: plot::Body,
+        /// Also print the data of the figure as one JSON object {"title", "series": [...]}.
+        #[arg(long)]
+        json: bool,
+        /// `gam interpolate` specs (with "method") or `gam hermite` specs (with an optional
+        /// "body_point": [x, y, z]).
+        #[arg(value_name = "SPEC.json", required = true)]
+        specs: Vec<String>,
+    },
+    /// Regenerate the main paper's Figs. 3-5 as SVG files in DIR.
+    Figures {
+        /// The directory to write fig3.svg, fig4.svg, fig5.svg into.
+        #[arg(long, value_name = "DIR")]
+        out: String,
+        /// Also print the data of the figures as one JSON object keyed by file name.
+        #[arg(long)]
+        json: bool,
     },
     /// Decide a polynomial identity symbolically under hypotheses (ideal membership over Q).
     Prove {
@@ -246,7 +270,10 @@ fn run(command: Command) -> Result<(String, Option<CliError>), CliError> {
         Command::Trajectory { json, spec, point } => trajectory::trajectory(&spec, &point, json),
         Command::Pose { json, pose } => pose::pose(&pose, json),
         Command::Sample { samples, json, spec } => sample::sample(&spec, samples, json),
-        Command::Plot { out, samples, spec } => plot::plot(&spec, &out, samples),
+        Command::Plot { out, samples, view, frames, body, json, specs } => {
+            plot::plot(&plot::PlotArgs { specs: &specs, out: &out, samples, view, frames, body, json })
+        }
+        Command::Figures { out, json } => figures::figures(&out, json),
         Command::Prove { algebra, basis, assume, timeout, json, claim } => {
             return prove::prove(&prove::ProveArgs { algebra, basis, assume, timeout, json, claim });
         }
@@ -266,7 +293,7 @@ fn clap_failure(e: clap::Error) -> ExitCode {
     let text = e.render().to_string();
     let line = match e.kind() {
         ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand | ErrorKind::MissingSubcommand => {
-            "error: a subcommand is required: algebras, eval, table, codegen, hermite, interpolate, trajectory, pose, sample, plot, prove or verify (see gam --help)"
+            "error: a subcommand is required: algebras, eval, table, codegen, hermite, interpolate, trajectory, pose, sample, plot, figures, prove or verify (see gam --help)"
                 .to_string()
         }
         _ => first_error_line(&text),

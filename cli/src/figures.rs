@@ -1,0 +1,85 @@
+//! `gam figures --out DIR [--json]`: the main paper's Figs. 3-5 (Sec. 4) redrawn from the
+//! paper module's data (`motion::paper::sec_4`) by the drawing of `gam plot`
+//! ([`crate::plot::draw::render`]): the two-segment additive motion (a quadrant, then a line)
+//! of Fig. 3, its variants with `V_1 = V_0 [1 + (Ψ + γ)/6]` for real `γ = 0, ±5, ±10`
+//! (Fig. 4, planar) and for `γ = 0, ±20ω, ±40ω` with `ω = e123inf` (Fig. 5, out of the
+//! plane, viewed along the y-axis). The body point is the body origin (the block's centre).
+
+use crate::error::CliError;
+use crate::plot::data::{Series, Shape, of_motion};
+use crate::plot::draw::{Body, View, render};
+use motion::paper::sec_4;
+use motion::{AdditiveBezier, Piecewise, Pose};
+use serde_json::{Value, json};
+
+/// Samples per curve.
+const SAMPLES: usize = 401;
+
+/// The Sec. 4 motion over `[0, 2]` with the line's `V_1` replaced by `V_0 [1 + (Ψ + γ)/6]`
+/// (`γ = g + w ω`) when `gamma` is given, as a series labelled `label`.
+fn sec4(label: &str, gamma: Option<[f64; 2]>) -> Result<Series, CliError> {
+    let mut line = sec_4::printed_line();
+    if let Some([g, w]) = gamma {
+        let psi = sec_4::PRINTED_PSI_END_OF_ARC;
+        let step = Pose::new(1.0 + (psi[0] + g) / 6.0, psi[1] / 6.0, 0.0, 0.0, 0.0, psi[2] / 6.0, 0.0, w / 6.0);
+        line[1] = line[0].then(&step);
+    }
+    let bad = |e: motion::CurveError| CliError::math(format!("the Sec. 4 motion: {e}"));
+    let segments =
+        vec![AdditiveBezier::new(sec_4::printed_arc()).map_err(bad)?, AdditiveBezier::new(line).map_err(bad)?];
+    let motion = Piecewise::new(vec![0.0, 1.0, 2.0], segments).map_err(bad)?;
+    let shape = Shape {
+        label: label.to_string(),
+        method: label.to_string(),
+        segments: 2,
+        degree: 3,
+        key_times: vec![0.0, 1.0, 2.0],
+        joins: vec![1.0],
+    };
+    of_motion(shape, &motion, vec![[0.0; 3]], SAMPLES, 0)
+}
+
+/// One figure: file name, title, view, series.
+type Figure = (&'static str, String, View, Vec<Series>);
+
+/// The figures.
+fn all() -> Result<Vec<Figure>, CliError> {
+    let fig3 = vec![sec4("quadrant then line", None)?];
+    let fig4 = [0.0, 5.0, -5.0, 10.0, -10.0]
+        .iter()
+        .map(|g| sec4(&format!("gamma = {g}"), Some([*g, 0.0])))
+        .collect::<Result<Vec<_>, _>>()?;
+    let fig5 = [0.0, 20.0, -20.0, 40.0, -40.0]
+        .iter()
+        .map(|w| sec4(&format!("gamma = {w} omega"), Some([0.0, *w])))
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(vec![
+        (
+            "fig3.svg",
+            "Fig. 3: quadrant and straight line (additive cubics), speeds jump at the join".into(),
+            View::Xy,
+            fig3,
+        ),
+        ("fig4.svg", "Fig. 4: V1 = V0[1 + (Psi + gamma)/6], gamma real: planar".into(), View::Xy, fig4),
+        ("fig5.svg", "Fig. 5: gamma a multiple of omega = e123inf: out of the plane (x-z view)".into(), View::Xz, fig5),
+    ])
+}
+
+/// Runs `gam figures`: writes the SVGs into `dir` and reports them (or prints their data).
+pub fn figures(dir: &str, json: bool) -> Result<String, CliError> {
+    let mut lines = Vec::new();
+    let mut data = serde_json::Map::new();
+    for (file, title, view, series) in all()? {
+        let svg = render(&series, view, Body::Frames, &title)?;
+        let path = std::path::Path::new(dir).join(file);
+        let shown = path.display().to_string();
+        std::fs::write(&path, svg).map_err(|e| CliError::usage(format!("cannot write `{shown}`: {e}")))?;
+        lines.push(format!("wrote {shown}: {title}"));
+        data.insert(file.to_string(), json!({"title": title, "series": series}));
+    }
+    if json {
+        return serde_json::to_string(&Value::Object(data))
+            .map_err(|e| CliError::math(format!("cannot print the figure data: {e}")));
+    }
+    Ok(lines.join("\n"))
+}

@@ -1,0 +1,237 @@
+//! The data behind a `gam plot` figure, computed before anything is drawn ([`super::draw`]):
+//! one [`Series`] per spec file, a plain struct of sampled values. `gam plot --json` prints
+//! it, so the tests check the numbers the figure shows, not the pixels.
+//!
+//! A `gam interpolate` spec (it has a `method` key) is built by the one build path of `gam
+//! interpolate` ([`crate::interpolate::built`]) and sampled over its whole parameter range
+//! `[t_0, t_m]`, every `body_points` entry at once; a `gam hermite` spec is one segment over
+//! `[0, 1]` sampled by [`crate::sample::sample_spec`] with its `body_point`.
+
+use crate::error::CliError;
+use crate::hermite::strip_comments;
+use crate::interpolate::{built, usage};
+use crate::sample::sample_spec;
+use crate::scalar::format_f64;
+use motion::algebra_core::Jet;
+use motion::trajectory::sample_motion;
+use motion::{MapScalar, Pose};
+use serde::Serialize;
+use serde_json::Value;
+
+/// The moved body at one parameter: where the body origin, the tips of the body's unit axes
+/// `e1, e2, e3` and the corners of the unit cube `[0, 1]³` are (world coordinates).
+#[derive(Debug, Clone, Serialize)]
+pub(crate) struct Frame {
+    /// The parameter.
+    pub t: f64,
+    /// The image of the body origin.
+    pub origin: [f64; 3],
+    /// The images of the body points `e1`, `e2`, `e3`.
+    pub axes: [[f64; 3]; 3],
+    /// The images of the unit cube's corners `(i, j, k) ∈ {0, 1}³`, corner `i + 2j + 4k`.
+    pub cube: [[f64; 3]; 8],
+}
+
+/// Everything drawn for one spec.
+#[derive(Debug, Clone, Serialize)]
+pub(crate) struct Series {
+    /// The legend label: the file name and the method (or the segment kind).
+    pub label: String,
+    /// `method` of a `gam interpolate` spec, or `additive`/`multiplicative` for `gam hermite`.
+    pub method: String,
+    /// The number of segments.
+    pub segments: usize,
+    /// The largest segment degree.
+    pub degree: usize,
+    /// The body points (body coordinates).
+    pub body_points: Vec<[f64; 3]>,
+    /// The parameters of the key poses (`[0, 1]` for a Hermite segment).
+    pub key_times: Vec<f64>,
+    /// The joins: the segment boundaries strictly inside the parameter range.
+    pub joins: Vec<f64>,
+    /// The sample parameters, evenly spaced over the whole range, both ends included.
+    pub t: Vec<f64>,
+    /// `paths[j][i]`: body point `j` at `t[i]` (world coordinates).
+    pub paths: Vec<Vec<[f64; 3]>>,
+    /// `speeds[j][i]`: `|v|` of body point `j` at `t[i]` (per unit of `t`).
+    pub speeds: Vec<Vec<f64>>,
+    /// `|Ω|` at `t[i]`.
+    pub angular_speed: Vec<f64>,
+    /// `key_points[k][j]`: body point `j` at the key parameter `key_times[k]`.
+    pub key_points: Vec<Vec<[f64; 3]>>,
+    /// The body frames at the `--frames K` evenly spaced parameters.
+    pub frames: Vec<Frame>,
+}
+
+fn norm(v: &[f64; 3]) -> f64 {
+    v.iter().map(|x| x * x).sum::<f64>().sqrt()
+}
+
+fn finite(p: &[f64; 3]) -> bool {
+    p.iter().all(|x| x.is_finite())
+}
+
+/// `k` evenly spaced parameters over `[a, b]` (both ends; the middle one for `k = 1`).
+pub(crate) fn evenly(a: f64, b: f64, k: usize) -> Vec<f64> {
+    match k {
+        0 => vec![],
+        1 => vec![0.5 * (a + b)],
+        _ => (0..k).map(|i| if i + 1 == k { b } else { a + (b - a) * (i as f64 / (k - 1) as f64) }).collect(),
+    }
+}
+
+/// The frame of `pose` at `t`.
+fn frame(t: f64, pose: &Pose<f64>) -> Result<Frame, CliError> {
+    let at = |p: [f64; 3]| {
+        pose.transform_point(&p)
+            .ok()
+            .filter(finite)
+            .ok_or_else(|| CliError::math(format!("the body frame at t = {} is not finite", format_f64(t))))
+    };
+    let mut cube = [[0.0; 3]; 8];
+    for (c, corner) in cube.iter_mut().enumerate() {
+        *corner = at([(c & 1) as f64, ((c >> 1) & 1) as f64, ((c >> 2) & 1) as f64])?;
+    }
+    let axes = [at([1.0, 0.0, 0.0])?, at([0.0, 1.0, 0.0])?, at([0.0, 0.0, 1.0])?];
+    Ok(Frame { t, origin: at([0.0; 3])?, axes, cube })
+}
+
+/// The file name of `path` (for legends).
+fn file_name(path: &str) -> &str {
+    std::path::Path::new(path).file_name().and_then(|s| s.to_str()).unwrap_or(path)
+}
+
+/// Whether `path` holds a `gam interpolate` spec (a top-level `method` key), and its JSON.
+fn read_json(path: &str) -> Result<Value, CliError> {
+    let text = std::fs::read_to_string(path).map_err(|e| CliError::usage(format!("cannot read `{path}`: {e}")))?;
+    serde_json::from_str(&strip_comments(&text)).map_err(|e| usage(path, format!("invalid JSON: {e}")))
+}
+
+/// The series of the spec at `path`: `n ≥ 2` samples and `frames` body frames.
+pub(crate) fn series(path: &str, n: usize, frames: usize) -> Result<Series, CliError> {
+    if read_json(path)?.get("method").is_some() { interpolated(path, n, frames) } else { hermite(path, n, frames) }
+}
+
+/// A `gam interpolate` spec over `[t_0, t_m]`.
+fn interpolated(path: &str, n: usize, k: usize) -> Result<Series, CliError> {
+    let b = built(path)?;
+    let body_points: Vec<[f64; 3]> = match read_json(path)?.get("body_points") {
+        Some(v) => {
+            serde_json::from_value(v.clone()).map_err(|_| usage(path, "`body_points` must be a list of [x, y, z]"))?
+        }
+        None => vec![[0.0; 3]],
+    };
+    let m = &b.motion;
+    let method = m.method().name().to_string();
+    let shape = Shape {
+        label: format!("{}: {method}", file_name(path)),
+        method,
+        segments: m.segments().len(),
+        degree: m.max_degree(),
+        key_times: m.times().to_vec(),
+        joins: m.segments().iter().skip(1).map(|s| s.t0).collect(),
+    };
+    of_motion(shape, m.motion(), body_points, n, k)
+}
+
+/// What [`of_motion`] is told about a motion besides the motion itself.
+pub(crate) struct Shape {
+    /// [`Series::label`].
+    pub label: String,
+    /// [`Series::method`].
+    pub method: String,
+    /// [`Series::segments`].
+    pub segments: usize,
+    /// [`Series::degree`].
+    pub degree: usize,
+    /// [`Series::key_times`] (the first and last are the parameter range).
+    pub key_times: Vec<f64>,
+    /// [`Series::joins`].
+    pub joins: Vec<f64>,
+}
+
+/// The series of `motion` (sampled by `motion::trajectory::sample_motion`, one evaluation
+/// over second-order dual numbers per parameter) at `n` evenly spaced parameters over the
+/// range of `shape.key_times`, with `k` frames.
+pub(crate) fn of_motion<M: MapScalar<f64, Jet<Jet<f64>>>>(
+    shape: Shape,
+    motion: &M,
+    body_points: Vec<[f64; 3]>,
+    n: usize,
+    k: usize,
+) -> Result<Series, CliError> {
+    let degree = shape.degree;
+    crate::budget::check(
+        &format!("plotting {} body points of degree-{degree} segments at {n} values", body_points.len()),
+        crate::budget::sampling_work(degree, n + k) * body_points.len().max(1) as f64,
+    )?;
+    let key_times = shape.key_times;
+    let (t0, t1) = (key_times[0], key_times[key_times.len() - 1]);
+    let sample = |t: f64| {
+        let s = sample_motion(motion, &t, &body_points).map_err(|e| CliError::math(e.to_string()))?;
+        let ok = s.points.iter().all(|p| finite(&p.position) && finite(&p.velocity))
+            && finite(&s.space_twist.angular.to_array());
+        if !ok {
+            return Err(CliError::math(format!("the motion at t = {} is not finite (overflow)", format_f64(t))));
+        }
+        Ok(s)
+    };
+    let t = evenly(t0, t1, n);
+    let mut paths = vec![Vec::with_capacity(n); body_points.len()];
+    let mut speeds = vec![Vec::with_capacity(n); body_points.len()];
+    let mut angular_speed = Vec::with_capacity(n);
+    for ti in &t {
+        let s = sample(*ti)?;
+        for (j, p) in s.points.iter().enumerate() {
+            paths[j].push(p.position);
+            speeds[j].push(norm(&p.velocity));
+        }
+        angular_speed.push(norm(&s.space_twist.angular.to_array()));
+    }
+    let key_points = key_times
+        .iter()
+        .map(|tk| Ok(sample(*tk)?.points.iter().map(|p| p.position).collect()))
+        .collect::<Result<_, CliError>>()?;
+    let frames = evenly(t0, t1, k).into_iter().map(|tf| frame(tf, &sample(tf)?.pose)).collect::<Result<_, _>>()?;
+    Ok(Series {
+        label: shape.label,
+        method: shape.method,
+        segments: shape.segments,
+        degree,
+        body_points,
+        key_times,
+        joins: shape.joins,
+        t,
+        paths,
+        speeds,
+        angular_speed,
+        key_points,
+        frames,
+    })
+}
+
+/// A `gam hermite` spec: one segment over `[0, 1]`; its frames are at the nearest samples.
+fn hermite(path: &str, n: usize, k: usize) -> Result<Series, CliError> {
+    let s = sample_spec(path, n)?;
+    let t: Vec<f64> = s.samples.iter().map(|x| x.t).collect();
+    let nearest = |tf: f64| s.samples.iter().min_by(|a, b| (a.t - tf).abs().total_cmp(&(b.t - tf).abs()));
+    let frames =
+        evenly(0.0, 1.0, k).into_iter().filter_map(nearest).map(|x| frame(x.t, &x.pose)).collect::<Result<_, _>>()?;
+    let ends = [s.samples.first(), s.samples.last()];
+    let method = s.kind.to_string();
+    Ok(Series {
+        label: format!("{}: {method}", file_name(path)),
+        method,
+        segments: s.segments,
+        degree: s.degree,
+        body_points: vec![s.body_point],
+        key_times: vec![0.0, 1.0],
+        joins: vec![],
+        key_points: ends.into_iter().flatten().map(|x| vec![x.position]).collect(),
+        paths: vec![s.samples.iter().map(|x| x.position).collect()],
+        speeds: vec![s.samples.iter().map(|x| x.linear_speed).collect()],
+        angular_speed: s.samples.iter().map(|x| x.angular_speed).collect(),
+        t,
+        frames,
+    })
+}

@@ -1,0 +1,359 @@
+//! `gam plot` on `gam interpolate` specs: the data behind the figure (`--json`) checked
+//! numerically against independent references (key poses by Rodrigues' formula, speeds by
+//! central differences of the path), every SVG checked well-formed with the expected number
+//! of series, every method of `gam interpolate` plotted in every view, overlays, and the
+//! error rules.
+
+mod common;
+
+use common::{TempFile, fails, ok};
+use serde_json::Value;
+
+/// Three key poses at the parameters 0, 1, 3 (position, axis, angle).
+const KEYS: [([f64; 3], [f64; 3], f64); 3] = [
+    ([0.0, 0.0, 0.0], [0.0, 0.0, 1.0], 0.0),
+    ([1.0, 1.0, 0.0], [0.0, 0.0, 1.0], 1.0),
+    ([2.0, 0.0, 1.0], [1.0, 0.0, 0.0], 0.5),
+];
+
+/// The body points of the specs.
+const POINTS: [[f64; 3]; 2] = [[0.0, 0.0, 0.0], [0.5, -1.0, 2.0]];
+
+/// A spec of `method` through [`KEYS`] with [`POINTS`] (`parameters` given when `given`).
+fn spec(method: &str, given: bool) -> String {
+    let poses: Vec<String> =
+        KEYS.iter().map(|(p, a, phi)| format!(r#"{{"position": {p:?}, "axis": {a:?}, "angle": {phi}}}"#)).collect();
+    let parameters = if given { r#", "parameters": [0, 1, 3]"# } else { "" };
+    format!(r#"{{"method": "{method}", "poses": [{}]{parameters}, "body_points": {POINTS:?}}}"#, poses.join(", "))
+}
+
+/// `R x + p` of a key pose, by Rodrigues' formula (independent of the `motion` crate).
+fn key_point(k: usize, x: &[f64; 3]) -> [f64; 3] {
+    let (p, a, phi) = KEYS[k];
+    let n = (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]).sqrt();
+    let u = a.map(|c| c / n);
+    let (c, s) = (phi.cos(), phi.sin());
+    let dot = u[0] * x[0] + u[1] * x[1] + u[2] * x[2];
+    let cross = [u[1] * x[2] - u[2] * x[1], u[2] * x[0] - u[0] * x[2], u[0] * x[1] - u[1] * x[0]];
+    std::array::from_fn(|i| x[i] * c + cross[i] * s + u[i] * dot * (1.0 - c) + p[i])
+}
+
+fn num(v: &Value) -> f64 {
+    v.as_f64().unwrap_or_else(|| panic!("not a number: {v}"))
+}
+
+fn nums(v: &Value) -> Vec<f64> {
+    v.as_array().expect("a list").iter().map(num).collect()
+}
+
+fn point(v: &Value) -> [f64; 3] {
+    let v = nums(v);
+    [v[0], v[1], v[2]]
+}
+
+fn dist(a: &[f64; 3], b: &[f64; 3]) -> f64 {
+    (0..3).map(|i| (a[i] - b[i]).powi(2)).sum::<f64>().sqrt()
+}
+
+/// `gam plot --json ARGS...` into a temporary SVG: the data and the SVG text.
+fn plot(name: &str, args: &[&str]) -> (Value, String) {
+    let out = TempFile::empty(&format!("{name}.svg"));
+    let mut all = vec!["plot", "--json", "--out", out.path()];
+    all.extend_from_slice(args);
+    let data: Value = serde_json::from_str(&ok(&all)).expect("--json prints JSON");
+    let svg = std::fs::read_to_string(out.path()).expect("the SVG was written");
+    (data, svg)
+}
+
+/// Checks that `svg` is well-formed XML (every tag closed in order, attributes quoted, no
+/// stray `<` or `&`) and returns the number of `<polyline>` elements not drawn in black
+/// (black ones are the axes and the mesh).
+fn check_svg(svg: &str) -> usize {
+    let mut stack: Vec<String> = Vec::new();
+    let (mut rest, mut series, mut roots) = (svg.trim(), 0, 0);
+    while let Some(open) = rest.find('<') {
+        let text = &rest[..open];
+        assert!(!text.contains('>'), "a stray `>` in {text:?}");
+        for (i, _) in text.match_indices('&') {
+            let entity = &text[i..text[i..].find(';').map_or(text.len(), |e| i + e + 1)];
+            assert!(["&amp;", "&lt;", "&gt;", "&quot;", "&apos;"].contains(&entity), "bad entity {entity:?}");
+        }
+        let close = rest[open..].find('>').expect("an unclosed tag") + open;
+        let tag = &rest[open + 1..close];
+        rest = &rest[close + 1..];
+        if tag.starts_with('?') || tag.starts_with('!') {
+            continue;
+        }
+        assert_eq!(tag.matches('"').count() % 2, 0, "unbalanced quotes in <{tag}>");
+        if let Some(name) = tag.strip_prefix('/') {
+            assert_eq!(stack.pop().as_deref(), Some(name.trim()), "</{name}> closes the wrong element");
+            continue;
+        }
+        let name = tag.split_whitespace().next().expect("a tag name").trim_end_matches('/').to_string();
+        assert!(name.chars().all(|c| c.is_ascii_alphanumeric()), "bad tag name {name:?}");
+        if stack.is_empty() {
+            roots += 1;
+        }
+        if name == "polyline" && !tag.contains(r##"stroke="#000000""##) {
+            series += 1;
+        }
+        if !tag.ends_with('/') {
+            stack.push(name);
+        }
+    }
+    assert!(rest.trim().is_empty(), "text after the root element: {rest:?}");
+    assert!(stack.is_empty(), "unclosed elements {stack:?}");
+    assert_eq!(roots, 1, "one root element");
+    series
+}
+
+/// The series the figure of `data` must have: per spec, a speed line and a path per body
+/// point, an angular speed line, a line per join, three per frame.
+fn expected_series(data: &Value) -> usize {
+    let series = data["series"].as_array().expect("series");
+    let len = |s: &Value, key: &str| s[key].as_array().expect(key).len();
+    series.iter().map(|s| 2 * len(s, "body_points") + 1 + len(s, "joins") + 3 * len(s, "frames")).sum()
+}
+
+#[test]
+fn two_segment_multiplicative_data() {
+    let file = TempFile::new("plot-ccm.json", &spec("ccm-multiplicative", true));
+    let (data, svg) = plot("plot-ccm", &[file.path(), "--samples", "31", "--frames", "4"]);
+    assert_eq!(check_svg(&svg), expected_series(&data));
+    assert_eq!(expected_series(&data), 2 * 2 + 1 + 1 + 3 * 4);
+    let s = &data["series"][0];
+    assert_eq!(s["method"], "ccm-multiplicative");
+    assert_eq!((s["segments"].as_u64(), s["degree"].as_u64()), (Some(2), Some(3)));
+    // The join is marked at the middle key parameter, the range is the whole [0, 3].
+    assert_eq!(nums(&s["joins"]), [1.0]);
+    assert_eq!(nums(&s["key_times"]), [0.0, 1.0, 3.0]);
+    let t = nums(&s["t"]);
+    assert_eq!(t.len(), 31);
+    for (i, ti) in t.iter().enumerate() {
+        assert!((ti - 0.1 * i as f64).abs() < 1e-14, "t[{i}] = {ti}");
+    }
+    // The path passes through the key poses' body points (sample 10 is t = 1).
+    for (j, x) in POINTS.iter().enumerate() {
+        for (k, i) in [(0, 0), (1, 10), (2, 30)] {
+            let want = key_point(k, x);
+            let got = point(&s["key_points"][k][j]);
+            assert!(dist(&got, &want) < 1e-12, "key {k} point {j}: {got:?} vs {want:?}");
+            let on_path = point(&s["paths"][j][i]);
+            assert!(dist(&on_path, &want) < 1e-12, "path {j} at t = {}: {on_path:?} vs {want:?}", t[i]);
+        }
+    }
+    // The frames at t = 0, 1, 2, 3: at a key pose, the images of the origin and of e1, e2, e3.
+    let frames = s["frames"].as_array().expect("frames");
+    assert_eq!(frames.iter().map(|f| num(&f["t"])).collect::<Vec<_>>(), [0.0, 1.0, 2.0, 3.0]);
+    for (f, k) in [(0, 0), (1, 1), (3, 2)] {
+        let frame = &frames[f];
+        assert!(dist(&point(&frame["origin"]), &key_point(k, &[0.0; 3])) < 1e-12);
+        for (a, e) in [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]].iter().enumerate() {
+            let (got, want) = (point(&frame["axes"][a]), key_point(k, e));
+            assert!(dist(&got, &want) < 1e-12, "frame {f} axis {a}: {got:?} vs {want:?}");
+        }
+    }
+}
+
+#[test]
+fn speeds_match_central_differences_of_the_path() {
+    // A rigid motion: |v| of each body point is |d/dt| of its path, and the frame's axes stay
+    // orthonormal; checked away from the join, where the difference quotient straddles it.
+    let file = TempFile::new("plot-fd.json", &spec("ccm-multiplicative", true));
+    let (data, _) = plot("plot-fd", &[file.path(), "--samples", "3001"]);
+    let s = &data["series"][0];
+    let t = nums(&s["t"]);
+    let h = t[1] - t[0];
+    for j in 0..POINTS.len() {
+        let speeds = nums(&s["speeds"][j]);
+        let path: Vec<[f64; 3]> = s["paths"][j].as_array().unwrap().iter().map(point).collect();
+        let mut worst: f64 = 0.0;
+        for i in 1..t.len() - 1 {
+            if (t[i] - 1.0).abs() < 2.0 * h {
+                continue;
+            }
+            let fd = dist(&path[i + 1], &path[i - 1]) / (2.0 * h);
+            worst = worst.max((fd - speeds[i]).abs() / speeds[i].max(1.0));
+        }
+        assert!(worst < 1e-4, "body point {j}: worst relative difference {worst}");
+    }
+}
+
+#[test]
+fn every_method_plots_in_every_view() {
+    let methods = [
+        "ccm-additive",
+        "ccm-multiplicative",
+        "wl-linear",
+        "wl-quadratic",
+        "hexanion-linear",
+        "juttler-q-motion",
+        "juttler-trt",
+        "juttler-minimal",
+        "juttler-spline",
+    ];
+    for method in methods {
+        let file = TempFile::new(&format!("plot-{method}.json"), &spec(method, false));
+        for view in ["xy", "xz", "yz", "3d"] {
+            let (data, svg) = plot(&format!("plot-{method}-{view}"), &[file.path(), "--view", view, "--frames", "3"]);
+            let s = &data["series"][0];
+            assert_eq!(s["method"], method);
+            let segments = s["segments"].as_u64().unwrap() as usize;
+            assert_eq!(s["joins"].as_array().unwrap().len(), segments - 1, "{method}");
+            assert_eq!(check_svg(&svg), expected_series(&data), "{method} {view}");
+            // Every method interpolates: the path passes through the key points, which are
+            // the first and last samples.
+            let paths = &s["paths"][1];
+            let last = paths.as_array().unwrap().len() - 1;
+            assert!(dist(&point(&paths[0]), &key_point(0, &POINTS[1])) < 1e-9, "{method}");
+            assert!(dist(&point(&paths[last]), &key_point(2, &POINTS[1])) < 1e-9, "{method}");
+        }
+    }
+}
+
+#[test]
+fn overlays_have_a_legend_and_every_series() {
+    let a = TempFile::new("plot-over-a.json", &spec("ccm-additive", false));
+    let b = TempFile::new("plot-over-b.json", &spec("juttler-spline", false));
+    let (data, svg) = plot("plot-over", &[a.path(), b.path(), "--view", "xz", "--frames", "2"]);
+    let series = data["series"].as_array().unwrap();
+    assert_eq!(series.len(), 2);
+    assert_eq!(check_svg(&svg), expected_series(&data));
+    assert_eq!(data["title"], "2 motions: ccm-additive, juttler-spline");
+    for label in ["plot-over-a.json: ccm-additive", "plot-over-b.json: juttler-spline"] {
+        assert!(series.iter().any(|s| s["label"].as_str().unwrap().ends_with(label)), "{label}");
+        assert!(svg.contains(label), "the legend lacks {label:?}");
+    }
+    assert!(svg.contains("x-z projection"));
+}
+
+#[test]
+fn hermite_specs_plot_with_frames() {
+    let file = TempFile::new("plot-hermite.json", common::CONTRACT_EXAMPLE);
+    let (data, svg) = plot("plot-hermite", &[file.path(), "--samples", "11", "--frames", "3", "--view", "3d"]);
+    let s = &data["series"][0];
+    assert_eq!(s["method"], "additive");
+    assert_eq!(nums(&s["key_times"]), [0.0, 1.0]);
+    assert!(s["joins"].as_array().unwrap().is_empty());
+    // The contract example starts at the origin and ends at [8, 10, 12].
+    assert!(dist(&point(&s["key_points"][1][0]), &[8.0, 10.0, 12.0]) < 1e-12);
+    assert_eq!(s["frames"].as_array().unwrap().iter().map(|f| num(&f["t"])).collect::<Vec<_>>(), [0.0, 0.5, 1.0]);
+    assert_eq!(check_svg(&svg), expected_series(&data));
+}
+
+#[test]
+fn bad_plot_arguments_are_one_error_line() {
+    let file = TempFile::new("plot-bad-args.json", &spec("ccm-additive", false));
+    let out = TempFile::empty("plot-bad-args.svg");
+    let line = fails(&["plot", file.path(), "--out", out.path(), "--view", "xw"], 2);
+    assert!(line.contains("xw"), "{line}");
+    let line = fails(&["plot", file.path(), "--out", out.path(), "--frames", "1001"], 2);
+    assert!(line.contains("--frames"), "{line}");
+    fails(&["plot", "--out", out.path()], 2);
+    let line = fails(&["plot", file.path(), "/nonexistent/spec.json", "--out", out.path()], 2);
+    assert!(line.contains("/nonexistent/spec.json"), "{line}");
+    let bad = TempFile::new("plot-bad-points.json", &spec("ccm-additive", false).replace("[0.5, -1.0, 2.0]", "[1, 2]"));
+    fails(&["plot", bad.path(), "--out", out.path()], 2);
+}
+
+#[test]
+fn the_svg_checker_rejects_malformed_svg() {
+    assert_eq!(check_svg(r##"<svg><polyline stroke="#1F77B4"/><polyline stroke="#000000"/></svg>"##), 1);
+    for bad in ["<svg><g></svg></g>", "<svg><g></svg>", "<svg/><svg/>", "<svg a=\"1></svg>", "<svg>&x;</svg>"] {
+        let caught = std::panic::catch_unwind(|| check_svg(bad));
+        assert!(caught.is_err(), "{bad:?} was accepted");
+    }
+}
+
+/// `gam figures --out DIR --json` into a temporary directory: the data of each figure, after
+/// checking its SVG well-formed with one series per line of the data and equal to the one
+/// committed in the gallery (docs/figures/).
+fn figures() -> Vec<(String, Value)> {
+    let dir = std::env::temp_dir().join(format!("gam-cli-test-{}-figures", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("a temp directory");
+    let data: Value = serde_json::from_str(&ok(&["figures", "--json", "--out", dir.to_str().unwrap()])).unwrap();
+    let mut out = Vec::new();
+    for (file, fig) in data.as_object().expect("an object") {
+        let svg = std::fs::read_to_string(dir.join(file)).expect("the figure was written");
+        assert_eq!(check_svg(&svg), expected_series(fig), "{file}");
+        let committed = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../docs/figures").join(file);
+        let committed = std::fs::read_to_string(&committed).expect("the gallery has the figure");
+        assert!(committed == svg, "docs/figures/{file} is stale: run `gam figures --out docs/figures`");
+        out.push((file.clone(), fig.clone()));
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+    out
+}
+
+/// The series of figure `file`.
+fn figure(all: &[(String, Value)], file: &str) -> Vec<Value> {
+    let fig = all.iter().find(|(f, _)| f == file).unwrap_or_else(|| panic!("no {file}"));
+    fig.1["series"].as_array().unwrap().clone()
+}
+
+#[test]
+#[allow(clippy::approx_constant)] // the paper's printed values
+fn paper_figures_3_to_5() {
+    let all = figures();
+    assert_eq!(all.iter().map(|(f, _)| f.as_str()).collect::<Vec<_>>(), ["fig3.svg", "fig4.svg", "fig5.svg"]);
+    // Fig. 3: the speeds jump at the join t = 1 (samples every 0.005). Just before it, the
+    // printed Ψ at the end of the arc: |v| = 5.6569, |Ω| = 1.4142 (Sec. 4); on the line, the
+    // printed V_i translate by 2 (2 + 1.0472 3t): |v| = 6.2832 exactly, |Ω| = 0.
+    let f3 = &figure(&all, "fig3.svg")[0];
+    assert_eq!(nums(&f3["joins"]), [1.0]);
+    let (v, w) = (nums(&f3["speeds"][0]), nums(&f3["angular_speed"]));
+    assert!((v[199] - 5.6569).abs() < 0.03 && (w[199] - 1.4142).abs() < 0.01, "{} {}", v[199], w[199]);
+    for i in 201..v.len() {
+        assert!((v[i] - 6.2832).abs() < 1e-9 && w[i] == 0.0, "t = {}: {} {}", 0.005 * i as f64, v[i], w[i]);
+    }
+    // Fig. 4: real γ keeps the motion planar; γ = 0 makes the speed continuous at the join.
+    let f4 = figure(&all, "fig4.svg");
+    assert_eq!(f4.len(), 5);
+    for s in &f4 {
+        assert!(s["paths"][0].as_array().unwrap().iter().all(|p| point(p)[2].abs() < 1e-12), "{}", s["label"]);
+    }
+    let v0 = nums(&f4[0]["speeds"][0]);
+    assert!((v0[199] - v0[201]).abs() < 0.05, "{} vs {}", v0[199], v0[201]);
+    // Fig. 5: γ = ±20ω, ±40ω take the path out of the plane, symmetrically; seen along z it
+    // is the γ = 0 path, the angular speed is that of γ = 0, the linear speed is larger.
+    let f5 = figure(&all, "fig5.svg");
+    let path = |s: &Value| s["paths"][0].as_array().unwrap().iter().map(point).collect::<Vec<_>>();
+    let base = path(&f5[0]);
+    assert!(base.iter().all(|p| p[2] == 0.0));
+    for s in &f5[1..] {
+        let p = path(s);
+        let lift = p.iter().map(|q| q[2].abs()).fold(0.0, f64::max);
+        assert!(lift > 0.25, "{}: {lift}", s["label"]);
+        assert!(p.iter().zip(&base).all(|(a, b)| (a[0] - b[0]).abs() < 1e-12 && (a[1] - b[1]).abs() < 1e-12));
+        assert_eq!(nums(&s["angular_speed"]), nums(&f5[0]["angular_speed"]));
+        let (v, v0) = (nums(&s["speeds"][0]), nums(&f5[0]["speeds"][0]));
+        assert!(v.iter().zip(&v0).all(|(a, b)| a >= &(b - 1e-12)) && v.iter().zip(&v0).any(|(a, b)| a > &(b + 0.1)));
+    }
+    let (plus, minus) = (path(&f5[1]), path(&f5[2]));
+    assert!(plus.iter().zip(&minus).all(|(a, b)| (a[2] + b[2]).abs() < 1e-12), "±20ω mirror each other");
+}
+
+#[test]
+fn figures_into_a_missing_directory_is_exit_2() {
+    let line = fails(&["figures", "--out", "/nonexistent-dir/gam-figures"], 2);
+    assert!(line.contains("cannot write `/nonexistent-dir/gam-figures/fig3.svg`"), "{line}");
+    fails(&["figures"], 2);
+}
+
+#[test]
+fn the_unit_cube_at_the_frames() {
+    // Frames at t = 0, 1.5, 3 of the spec with parameters 0, 1, 3: at t = 3 the last key pose
+    // carries the corner (i, j, k) of [0, 1]³ (index i + 2j + 4k) to R (i, j, k) + p.
+    let file = TempFile::new("plot-cube.json", &spec("juttler-spline", true));
+    let (data, svg) = plot("plot-cube", &[file.path(), "--frames", "3", "--body", "cube", "--view", "3d"]);
+    let s = &data["series"][0];
+    let last = &s["frames"][2];
+    assert_eq!(num(&last["t"]), 3.0);
+    for c in 0..8 {
+        let corner = [(c & 1) as f64, ((c >> 1) & 1) as f64, ((c >> 2) & 1) as f64];
+        let (got, want) = (point(&last["cube"][c]), key_point(2, &corner));
+        assert!(dist(&got, &want) < 1e-12, "corner {c}: {got:?} vs {want:?}");
+    }
+    // 12 edges per frame instead of 3 axes.
+    assert_eq!(check_svg(&svg), expected_series(&data) + 9 * 3);
+}
