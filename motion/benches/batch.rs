@@ -1,0 +1,2 @@
+//! Placeholder, replaced by the batch benchmark.
+fn main() {}
