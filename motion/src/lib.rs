@@ -22,6 +22,7 @@
 //! | `ops` (private) | [`Pose::then`], [`Pose::after`], `From` with gam-algebras' [`Motor`] |
 //! | [`pseudoscalar`] | `a + bω`: inverse, square root, exp, ln, pow (Lemma 2.4) |
 //! | [`exp_log`] | closed-form exp and log ("dual angle") |
+//! | [`branch_free`] | exp, log, power, slerp with `select` instead of branches, over SIMD lanes (`LaneReal`) |
 //! | [`interpolation`] | power, slerp (eq. 15), additive interpolation (eq. 17) |
 //! | [`bezier`] | the [`Motion`] and [`MapScalar`] traits, [`CurveError`], [`Bezier`] motions: additive (eq. 18) and multiplicative (Fig. 2) |
 //! | [`blend`] | [`Blend`]: [`Additive`] (eq. 17) or [`Multiplicative`] (eq. 15) as a type parameter, with the join rules (eqs. 20-23) |
@@ -54,6 +55,7 @@ mod any_segment;
 pub mod batch;
 pub mod bezier;
 pub mod blend;
+pub mod branch_free;
 pub mod bspline;
 pub mod error;
 pub mod exp_log;

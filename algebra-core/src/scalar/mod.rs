@@ -11,6 +11,12 @@
 //! | [`Field`] | division, checked reciprocal | all but polynomials |
 //! | [`Real`] | `sqrt`, `exp`, `ln`, trig, ordering, precision-aware epsilon | `f32`, `f64`, num-dual types, [`Jet`], [`MpFloat`](crate::MpFloat) |
 //!
+//! Beside them, the layer for code that must also run over SIMD lanes (module `decide`):
+//! [`Elementary`] (the functions without an ordering), [`Select`] and [`Mask`] (decisions as
+//! data), [`Diagnostics`] (sizes a lane type can give honestly) and [`LaneReal`] (all three).
+//! Every [`Real`] has them by blanket impl; the lane types [`F32x4`], [`F32x8`], [`F64x2`],
+//! [`F64x4`] (feature `lanes`) and [`LaneDual`] implement them and are never [`Real`].
+//!
 //! Reference arithmetic (`&a * &b`) cannot be a supertrait bound that Rust elaborates at use
 //! sites, so the trait offers it as methods ([`Ring::mul_ref`], ...) with efficient overrides
 //! for types whose clones are expensive.
@@ -34,16 +40,24 @@ macro_rules! native_ref_ops {
     };
 }
 
+mod decide;
 mod dual;
 mod exact;
 mod float;
 mod jet;
+mod lane_dual;
+#[cfg(feature = "lanes")]
+mod lanes;
 #[cfg(feature = "rug")]
 mod mpfloat;
 #[cfg(feature = "rug")]
 pub(crate) mod mprational;
 
+pub use decide::{Diagnostics, Elementary, LaneReal, Mask, Select};
 pub use jet::Jet;
+pub use lane_dual::LaneDual;
+#[cfg(feature = "lanes")]
+pub use lanes::{F32x4, F32x8, F64x2, F64x4, MaskF32x4, MaskF32x8, MaskF64x2, MaskF64x4};
 #[cfg(feature = "rug")]
 pub use mpfloat::{MpFloat, PrecisionGuard, default_precision, set_default_precision};
 #[cfg(feature = "rug")]
