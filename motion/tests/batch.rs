@@ -410,3 +410,72 @@ fn sampling_reports_a_singular_sample() {
     let s = sample_many::<X4, _>(&[m], &[0.0, 0.25, 0.5, 1.0]).unwrap();
     assert!(matches!(s.indicatrices(), Err(BatchError::Pose { index: 2, source: MotionError::Singular { .. } })));
 }
+
+/// The batch kernels over a SIMD lane type `L` against the scalar loop over its element type,
+/// bit for bit, at every length (remainders included), serial and parallel.
+fn check_simd<L: Lanes>(to_elem: impl Fn(f64) -> L::Elem)
+where
+    L::Elem: algebra_core::Real + PartialOrd + Copy,
+{
+    let conv_pose = |s: &Pose<f64>| s.map_scalar(&|x: &f64| to_elem(*x));
+    let conv_point = |p: &[f64; 3]| p.map(&to_elem);
+    let t = to_elem(0.3);
+    for n in LENGTHS {
+        let (a, b, c) = (poses(n, 101), poses(n, 102), cloud(n, 103));
+        let a: Vec<Pose<L::Elem>> = a.iter().map(conv_pose).collect();
+        let b: Vec<Pose<L::Elem>> = b.iter().map(conv_pose).collect();
+        let c: Vec<[L::Elem; 3]> = c.iter().map(conv_point).collect();
+        let one: Vec<[L::Elem; 3]> = c.iter().map(|p| a[0].transform_point(p).unwrap()).collect();
+        let each: Vec<[L::Elem; 3]> = a.iter().zip(&c).map(|(s, p)| s.transform_point(p).unwrap()).collect();
+        let product: Vec<Pose<L::Elem>> = a.iter().zip(&b).map(|(x, y)| x * y).collect();
+        let lerp: Vec<Pose<L::Elem>> = a.iter().zip(&b).map(|(x, y)| Pose::lerp(x, y, &t)).collect();
+        let (pa, pb, pc) =
+            (Poses::from_poses(&a).unwrap(), Poses::from_poses(&b).unwrap(), Points::from_points(&c).unwrap());
+        if n > 0 {
+            assert_eq!(pc.transform::<L>(&a[0]).unwrap().to_vec(), one, "n = {n}");
+            assert_eq!(pc.par_transform::<L>(&a[0]).unwrap().to_vec(), one, "n = {n}");
+        }
+        assert_eq!(pa.transform_points::<L>(&pc).unwrap().to_vec(), each, "n = {n}");
+        assert_eq!(pa.par_transform_points::<L>(&pc).unwrap().to_vec(), each, "n = {n}");
+        assert_eq!(pa.compose::<L>(&pb).unwrap().to_vec(), product, "n = {n}");
+        assert_eq!(pa.par_lerp::<L>(&pb, &t).unwrap().to_vec(), lerp, "n = {n}");
+        assert_eq!(pc.pack::<L>().unpack_points(), pc);
+        assert_eq!(pa.pack::<L>().unpack_poses(), pa);
+    }
+    let motions: Vec<AdditiveBezier<L::Elem>> = cubic_motions(5, 111)
+        .iter()
+        .map(|m| AdditiveBezier::new(m.poses().iter().map(conv_pose).collect()).unwrap())
+        .collect();
+    for nt in [1, 3, 10] {
+        let ts: Vec<L::Elem> = parameters(nt).into_iter().map(&to_elem).collect();
+        let s = motion::batch::par_sample_many::<L, _>(&motions, &ts).unwrap();
+        for (m, motion) in motions.iter().enumerate() {
+            for (k, t) in ts.iter().enumerate() {
+                let (p, dp) = pose_derivative(motion, t).unwrap();
+                assert_eq!((s.pose(m, k), s.derivative(m, k)), (Some(p), Some(dp)));
+            }
+        }
+    }
+}
+
+#[test]
+fn simd_lane_types_equal_the_scalar_loop_bit_for_bit() {
+    use algebra_core::scalar::{F32x4, F32x8, F64x2, F64x4};
+    check_simd::<F64x2>(|x| x);
+    check_simd::<F64x4>(|x| x);
+    check_simd::<F32x4>(|x| x as f32);
+    check_simd::<F32x8>(|x| x as f32);
+}
+
+#[test]
+fn simd_lanes_name_the_singular_lane() {
+    use algebra_core::scalar::F64x4;
+    let singular = Pose::new(0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0);
+    for i in [0, 1, 2, 3, 6, 9] {
+        let mut s = poses(10, 121);
+        s[i] = singular;
+        let (s, p) = (Poses::from_poses(&s).unwrap(), Points::from_points(&cloud(10, 122)).unwrap());
+        let err = s.transform_points::<F64x4>(&p).unwrap_err();
+        assert!(matches!(err, BatchError::Pose { index, .. } if index == i), "{err}");
+    }
+}

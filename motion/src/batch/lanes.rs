@@ -6,7 +6,9 @@
 //! values of each column into one `L`, runs the ordinary generic pose code (generated products,
 //! [`Pose::action_rows`], Bezier evaluation over [`Jet`](algebra_core::Jet)) on `L`, and stores
 //! the lanes back. A plain scalar is a lane type of width 1 (`f64`, `f32`, the exact [`Q`]), so
-//! the same kernel is the scalar loop. The last chunk of a column whose length is not a multiple
+//! the same kernel is the scalar loop; with the feature `lanes` (on by default) algebra-core's
+//! SIMD scalars `F64x2`, `F64x4` (elements `f64`) and `F32x4`, `F32x8` (elements `f32`) are lane
+//! types too. The last chunk of a column whose length is not a multiple
 //! of the width is padded (zeros for points, the identity for poses) and only its real lanes
 //! are stored.
 //!
@@ -102,6 +104,41 @@ macro_rules! width_one {
 }
 
 width_one!(f64, f32, Q);
+
+/// algebra-core's SIMD lane scalars (feature `lanes`): arithmetic lane by lane (IEEE per lane).
+#[cfg(feature = "lanes")]
+macro_rules! simd {
+    ($($t:ident: $e:ty, $n:literal;)*) => {$(
+        impl Lanes for algebra_core::scalar::$t {
+            type Elem = $e;
+            const WIDTH: usize = $n;
+            fn splat(x: &$e) -> Self {
+                Self::splat(*x)
+            }
+            fn load(xs: &[$e]) -> Self {
+                let lanes: [$e; $n] = xs.try_into().expect("a full chunk");
+                Self::from(lanes)
+            }
+            fn store(&self, out: &mut [$e]) {
+                let k = out.len().min($n);
+                out[..k].copy_from_slice(&self.to_array()[..k]);
+            }
+            fn recip_lanes(&self) -> Result<Self, usize> {
+                self.try_recip().ok_or_else(|| {
+                    self.to_array().iter().position(|x| x.try_recip().is_none()).unwrap_or(0)
+                })
+            }
+        }
+    )*};
+}
+
+#[cfg(feature = "lanes")]
+simd! {
+    F64x2: f64, 2;
+    F64x4: f64, 4;
+    F32x4: f32, 4;
+    F32x8: f32, 8;
+}
 
 /// `xs` loaded into one lane value, padded with `pad` when `xs` is shorter than the width (the
 /// remainder of a column).
