@@ -479,3 +479,36 @@ fn simd_lanes_name_the_singular_lane() {
         assert!(matches!(err, BatchError::Pose { index, .. } if index == i), "{err}");
     }
 }
+
+#[test]
+fn slerp_over_lanes_agrees_with_the_scalar_slerp_with_mixed_edge_cases() {
+    use algebra_core::scalar::{F64x2, F64x4};
+    // Generic pairs, with every third pair an edge case: equal poses (zero relative angle), a
+    // pure translation, a relative half turn minus a little.
+    let n = 8192 + 7;
+    let (a, mut b) = (poses(n, 131), poses(n, 132));
+    for i in (0..n).step_by(3) {
+        match (i / 3) % 3 {
+            0 => b[i] = a[i],
+            1 => b[i] = a[i] * Pose::translation(&[1.0, -2.0, 0.5]),
+            _ => b[i] = a[i] * Pose::rotation(&[0.0, 1.0, 0.0], &(std::f64::consts::PI - 1e-6)).unwrap(),
+        }
+    }
+    let want: Vec<Pose<f64>> = a.iter().zip(&b).map(|(x, y)| Pose::slerp(x, y, &0.3).unwrap()).collect();
+    let (pa, pb) = (Poses::from_poses(&a).unwrap(), Poses::from_poses(&b).unwrap());
+    for got in [
+        pa.slerp_lanes::<f64>(&pb, &0.3).unwrap(),
+        pa.slerp_lanes::<F64x2>(&pb, &0.3).unwrap(),
+        pa.par_slerp_lanes::<F64x4>(&pb, &0.3).unwrap(),
+    ] {
+        for (i, w) in want.iter().enumerate() {
+            let g = got.get(i).unwrap();
+            assert!(common::diff(&g, w) <= 1e-12 * common::size(w).max(1.0), "{i}: {g} vs {w}");
+        }
+    }
+    b[4_001] = Pose::new(0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0);
+    let pb = Poses::from_poses(&b).unwrap();
+    for err in [pa.slerp_lanes::<F64x4>(&pb, &0.3).unwrap_err(), pa.par_slerp_lanes::<F64x2>(&pb, &0.3).unwrap_err()] {
+        assert!(matches!(err, BatchError::Pose { index: 4_001, .. }), "{err}");
+    }
+}

@@ -19,7 +19,8 @@
 //! | pose `i` on point `i` | [`Poses::transform_points`] | [`Poses::par_transform_points`] |
 //! | `a[i] * b[i]` | [`Poses::compose`] | [`Poses::par_compose`] |
 //! | `(1 - t) a[i] + t b[i]` (eq. 17) | [`Poses::lerp`] | [`Poses::par_lerp`] |
-//! | slerp (eq. 15, scalar only) | [`Poses::slerp`] | [`Poses::par_slerp`] |
+//! | slerp (eq. 15), bit for bit [`Pose::slerp`](crate::Pose::slerp), scalar only | [`Poses::slerp`] | [`Poses::par_slerp`] |
+//! | slerp, branch-free over lanes ([`Pose::slerp_branch_free`](crate::Pose::slerp_branch_free)) | [`Poses::slerp_lanes`] | [`Poses::par_slerp_lanes`] |
 //! | one motion at many parameters | [`sample`] | |
 //! | many motions at many parameters, with `dS/dt` | [`sample_many`] | [`par_sample_many`] |
 //!
