@@ -16,6 +16,7 @@
 //! Run with `cargo bench -p motion --bench batch -- --warm-up-time 1 --measurement-time 3`.
 #![allow(missing_docs)]
 
+use algebra_core::scalar::{F64x2, F64x4};
 use criterion::{Criterion, criterion_group};
 use motion::batch::{Points, par_sample_many, sample_many};
 use motion::velocity::pose_derivative;
@@ -53,10 +54,14 @@ fn cloud_transform_point(d: &Cloud) -> f64 {
     out[0][0] + out[out.len() / 2][1] + out[out.len() - 1][2]
 }
 
-const CLOUD: [(&str, interleaved::Kernel<Cloud>); 3] = [
+const CLOUD: [(&str, interleaved::Kernel<Cloud>); 7] = [
     ("transform_point loop", cloud_transform_point),
     ("batch f64, 1 core", |d| checksum(&d.soa.transform::<f64>(&d.pose).unwrap())),
     ("batch f64, par", |d| checksum(&d.soa.par_transform::<f64>(&d.pose).unwrap())),
+    ("batch F64x2, 1 core", |d| checksum(&d.soa.transform::<F64x2>(&d.pose).unwrap())),
+    ("batch F64x2, par", |d| checksum(&d.soa.par_transform::<F64x2>(&d.pose).unwrap())),
+    ("batch F64x4, 1 core", |d| checksum(&d.soa.transform::<F64x4>(&d.pose).unwrap())),
+    ("batch F64x4, par", |d| checksum(&d.soa.par_transform::<F64x4>(&d.pose).unwrap())),
 ];
 
 struct Sampling {
@@ -85,10 +90,13 @@ fn samples_checksum(s: &motion::batch::Samples<f64>) -> f64 {
     s.poses().column(0)[0] + s.derivatives().column(1)[s.poses().len() - 1]
 }
 
-const SAMPLING: [(&str, interleaved::Kernel<Sampling>); 3] = [
+const SAMPLING: [(&str, interleaved::Kernel<Sampling>); 6] = [
     ("pose_derivative loop", sampling_pose_derivative),
     ("sample_many f64, 1 core", |d| samples_checksum(&sample_many::<f64, _>(&d.motions, &d.ts).unwrap())),
     ("sample_many f64, par", |d| samples_checksum(&par_sample_many::<f64, _>(&d.motions, &d.ts).unwrap())),
+    ("sample_many F64x4, 1 core", |d| samples_checksum(&sample_many::<F64x4, _>(&d.motions, &d.ts).unwrap())),
+    ("sample_many F64x4, par", |d| samples_checksum(&par_sample_many::<F64x4, _>(&d.motions, &d.ts).unwrap())),
+    ("sample_many F64x2, par", |d| samples_checksum(&par_sample_many::<F64x2, _>(&d.motions, &d.ts).unwrap())),
 ];
 
 fn sizes() -> (usize, usize, usize) {
