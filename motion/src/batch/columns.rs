@@ -43,6 +43,23 @@ impl<T: Clone, const N: usize> Columns<T, N> {
     }
 }
 
+impl<T: algebra_core::Ring, const N: usize> Columns<T, N> {
+    /// `Ok` when every value is finite, else [`BatchError::NotFinite`](super::BatchError) for the
+    /// first row that is not, printed by `show`.
+    pub(crate) fn check_finite(
+        &self,
+        what: &'static str,
+        show: impl Fn([T; N]) -> String,
+    ) -> Result<(), super::BatchError> {
+        match (0..self.len()).find(|&i| !self.cols.iter().all(|c| c[i].is_finite_value())) {
+            Some(index) => {
+                Err(super::BatchError::NotFinite { what, index, value: show(self.row(index).expect("index < len")) })
+            }
+            None => Ok(()),
+        }
+    }
+}
+
 /// The first column whose length differs from `n`: `(column, its length)`.
 pub(crate) fn first_mismatch<T, const N: usize>(cols: &[Vec<T>; N], n: usize) -> Option<(usize, usize)> {
     cols.iter().enumerate().map(|(c, v)| (c, v.len())).find(|&(_, len)| len != n)

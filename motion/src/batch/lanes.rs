@@ -112,16 +112,24 @@ macro_rules! simd {
         impl Lanes for algebra_core::scalar::$t {
             type Elem = $e;
             const WIDTH: usize = $n;
+            #[inline]
             fn splat(x: &$e) -> Self {
                 Self::splat(*x)
             }
+            #[inline]
             fn load(xs: &[$e]) -> Self {
                 let lanes: [$e; $n] = xs.try_into().expect("a full chunk");
                 Self::from(lanes)
             }
+            #[inline]
             fn store(&self, out: &mut [$e]) {
-                let k = out.len().min($n);
-                out[..k].copy_from_slice(&self.to_array()[..k]);
+                let lanes = self.to_array();
+                match <&mut [$e; $n]>::try_from(&mut *out) {
+                    Ok(full) => *full = lanes,
+                    // the remainder chunk: element by element (a `copy_from_slice` of a
+                    // runtime length is a `memcpy` call on every chunk)
+                    Err(_) => out.iter_mut().zip(lanes).for_each(|(o, x)| *o = x),
+                }
             }
             fn recip_lanes(&self) -> Result<Self, usize> {
                 self.try_recip().ok_or_else(|| {
@@ -142,12 +150,14 @@ simd! {
 
 /// `xs` loaded into one lane value, padded with `pad` when `xs` is shorter than the width (the
 /// remainder of a column).
+#[inline]
 pub(crate) fn load_padded<L: Lanes>(xs: &[L::Elem], pad: &L::Elem) -> L {
-    if xs.len() == L::WIDTH {
-        L::load(xs)
-    } else {
-        let mut full = xs.to_vec();
-        full.resize(L::WIDTH, pad.clone());
-        L::load(&full)
-    }
+    if xs.len() == L::WIDTH { L::load(xs) } else { load_remainder(xs, pad) }
+}
+
+#[cold]
+fn load_remainder<L: Lanes>(xs: &[L::Elem], pad: &L::Elem) -> L {
+    let mut full = xs.to_vec();
+    full.resize(L::WIDTH, pad.clone());
+    L::load(&full)
 }

@@ -50,14 +50,8 @@ impl<T: Ring> Points<T> {
     }
 
     fn checked(cols: Columns<T, 3>) -> Result<Self, BatchError> {
-        let bad = (0..cols.len()).find(|&i| !cols.cols.iter().all(|c| c[i].is_finite_value()));
-        match bad {
-            Some(index) => {
-                let value = format!("{:?}", cols.row(index).expect("index < len"));
-                Err(BatchError::NotFinite { what: "point", index, value })
-            }
-            None => Ok(Points { cols }),
-        }
+        cols.check_finite("point", |p| format!("{p:?}"))?;
+        Ok(Points { cols })
     }
 
     /// The number of points.

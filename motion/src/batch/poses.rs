@@ -53,14 +53,8 @@ impl<T: Ring> Poses<T> {
     }
 
     fn checked(cols: Columns<T, 8>) -> Result<Self, BatchError> {
-        let bad = (0..cols.len()).find(|&i| !cols.cols.iter().all(|c| c[i].is_finite_value()));
-        match bad {
-            Some(index) => {
-                let value = Pose::from_array(cols.row(index).expect("index < len")).to_string();
-                Err(BatchError::NotFinite { what: "pose", index, value })
-            }
-            None => Ok(Poses { cols }),
-        }
+        cols.check_finite("pose", |c| Pose::from_array(c).to_string())?;
+        Ok(Poses { cols })
     }
 
     /// The number of poses.
@@ -132,16 +126,7 @@ impl<T: Ring> Poses<T> {
 
 /// A pose from eight lane values in the paper's order.
 fn pose_of<L: Ring>(c: &[L]) -> Pose<L> {
-    Pose::new(
-        c[0].clone(),
-        c[1].clone(),
-        c[2].clone(),
-        c[3].clone(),
-        c[4].clone(),
-        c[5].clone(),
-        c[6].clone(),
-        c[7].clone(),
-    )
+    Pose::from_array(std::array::from_fn(|k| c[k].clone()))
 }
 
 /// The padding rows of a pairwise kernel: two identities.
