@@ -29,7 +29,9 @@
 //! assert!((l - g).components().iter().all(|x| x.abs() < 1e-14f64));
 //! ```
 
+use crate::exp_log::{assemble, dot, exp_with_kernel, split};
 use crate::scaled::require_finite;
+use crate::series::{exp_series, log_series};
 use crate::{Even, MotionError, Pose, Pseudoscalar};
 use algebra_core::Ring;
 use algebra_core::scalar::{LaneReal, Mask};
@@ -40,22 +42,6 @@ use algebra_core::scalar::{LaneReal, Mask};
 fn terms<T: Ring>(bound: impl Fn(i64) -> f64) -> i64 {
     let target = T::relative_epsilon() / 64.0;
     (1..2000).find(|&k| bound(k) < target).unwrap_or(2000)
-}
-
-fn dot<T: Ring>(x: &[T; 3], y: &[T; 3]) -> T {
-    x[0].mul_ref(&y[0]) + x[1].mul_ref(&y[1]) + x[2].mul_ref(&y[2])
-}
-
-/// `a` (with `a e123` the rotational bivector part) and `c` (the einf part), as in `exp_log`.
-fn split<T: Ring>(m: &Even<T>) -> ([T; 3], [T; 3]) {
-    ([m.e23.clone(), m.e13.neg_ref(), m.e12.clone()], [m.e1inf.clone(), m.e2inf.clone(), m.e3inf.clone()])
-}
-
-/// The even element `σ + a e123 + c einf + pω`.
-fn assemble<T: Ring>(sigma: T, a: [T; 3], c: [T; 3], p: T) -> Even<T> {
-    let [a1, a2, a3] = a;
-    let [c1, c2, c3] = c;
-    Even::new(sigma, a3, a2.neg_ref(), a1, c1, c2, c3, p)
 }
 
 fn select3<T: LaneReal>(m: &T::Mask, x: &[T; 3], y: &[T; 3]) -> [T; 3] {
@@ -76,41 +62,15 @@ fn exp_kernel<T: LaneReal>(u: &T) -> [T; 3] {
     let one = T::one();
     let small = u.le_mask(&one);
     let us = T::select(&small, u, &T::zero());
-    let neg_u = us.neg_ref();
-    let (mut tc, mut ts, mut tt) = (T::one(), T::one(), T::from_ratio(1, 3));
-    let (mut c, mut s, mut t) = (tc.clone(), ts.clone(), tt.clone());
     // the k-th terms are at most 1/(2k)! for u ≤ 1
-    for k in 1..=terms::<T>(|k| (1..=2 * k).map(|j| j as f64).product::<f64>().recip()) {
-        tc = tc.mul_ref(&neg_u).mul_ref(&T::from_ratio(1, (2 * k - 1) * (2 * k)));
-        ts = ts.mul_ref(&neg_u).mul_ref(&T::from_ratio(1, (2 * k) * (2 * k + 1)));
-        tt = tt.mul_ref(&neg_u).mul_ref(&T::from_ratio(1, (2 * k) * (2 * k + 3)));
-        c.add_assign_ref(&tc);
-        s.add_assign_ref(&ts);
-        t.add_assign_ref(&tt);
-    }
+    let n = terms::<T>(|k| (1..=2 * k).map(|j| j as f64).product::<f64>().recip());
+    let [c, s, t] = exp_series(&us, |k, _| k >= n);
     let ub = T::select(&small, &T::from_i64(2), u);
     let th = ub.sqrt();
     let cc = th.cos();
     let sc = th.sin().div_ref(&th);
     let tc = sc.sub_ref(&cc).div_ref(&ub);
     [T::select(&small, &c, &cc), T::select(&small, &s, &sc), T::select(&small, &t, &tc)]
-}
-
-/// `[asin(s)/s, (d/ds)(asin(s)/s)/s]` for `x = s² ≤ 1/4` (the series of `series::log_kernel`,
-/// a fixed number of terms).
-fn log_series<T: LaneReal>(x: &T) -> [T; 2] {
-    let mut ck = T::one();
-    let mut xk = T::one();
-    let mut f = T::one();
-    let mut h = T::zero();
-    // c_k ≤ 1, so for x ≤ 1/4 the k-th terms are at most 2k 4^(1-k)
-    for k in 1..=terms::<T>(|k| (2 * k) as f64 * 0.25f64.powi(k as i32 - 1)) {
-        ck = ck.mul_ref(&T::from_ratio((2 * k - 1) * (2 * k - 1), (2 * k) * (2 * k + 1)));
-        h.add_assign_ref(&ck.mul_ref(&xk).mul_ref(&T::from_i64(2 * k)));
-        xk = xk.mul_ref(x);
-        f.add_assign_ref(&ck.mul_ref(&xk));
-    }
-    [f, h]
 }
 
 /// `c / |c|` per lane, e3 where `c = 0` (scaled by the largest component first, as
@@ -137,7 +97,9 @@ fn unit_log<T: LaneReal>(u: &Even<T>) -> Even<T> {
     let zero = T::zero();
     // rotation up to π (u0 ≥ 0): series for x ≤ 1/4, closed form above
     let series = x.le_mask(&T::from_ratio(1, 4));
-    let [fs, hs] = log_series(&T::select(&series, &x, &zero));
+    // c_k ≤ 1, so for x ≤ 1/4 the k-th terms are at most 2k 4^(1-k)
+    let n = terms::<T>(|k| (2 * k) as f64 * 0.25f64.powi(k as i32 - 1));
+    let [fs, hs] = log_series(&T::select(&series, &x, &zero), |k, _, _| k >= n);
     let positive = x.gt_mask(&zero);
     let xb = T::select(&positive, &x, &T::one());
     let s = xb.sqrt();
@@ -178,17 +140,7 @@ impl<T: LaneReal> Pose<T> {
     pub fn exp_branch_free(generator: &Even<T>) -> Result<Self, MotionError> {
         let g = generator;
         require_finite("exp", g, [])?;
-        let (a, c) = split(g);
-        let (u, w) = (dot(&a, &a), dot(&a, &c));
-        let [cc, ss, tt] = exp_kernel(&u);
-        let p = &g.e123inf;
-        let es = g.scalar.exp();
-        let ess = es.mul_ref(&ss);
-        let k = w.mul_ref(&tt).add_ref(&p.mul_ref(&ss)).mul_ref(&es);
-        let c_out: [T; 3] = std::array::from_fn(|i| c[i].mul_ref(&ess).sub_ref(&a[i].mul_ref(&k)));
-        let a_out = a.map(|x| x.mul_ref(&ess));
-        let omega = w.mul_ref(&ess).add_ref(&p.mul_ref(&cc).mul_ref(&es));
-        let out = assemble(es.mul_ref(&cc), a_out, c_out, omega);
+        let out = exp_with_kernel(g, exp_kernel);
         require_finite("exp", &out, []).map_err(|_| MotionError::NotFinite { op: "exp", value: g.to_string() })?;
         Ok(out)
     }

@@ -51,19 +51,20 @@ use crate::pose::is_positive;
 use crate::series::{exp_kernel, log_kernel};
 use crate::{Even, Pseudoscalar};
 use crate::{MotionError, Pose};
+use algebra_core::scalar::{Elementary, LaneReal};
 use algebra_core::{Real, Ring};
 
 /// `a` (with `a e123` = the rotational bivector part) and `c` (the einf part) of an even element.
-fn split<T: Ring>(m: &Even<T>) -> ([T; 3], [T; 3]) {
+pub(crate) fn split<T: Ring>(m: &Even<T>) -> ([T; 3], [T; 3]) {
     ([m.e23.clone(), m.e13.neg_ref(), m.e12.clone()], [m.e1inf.clone(), m.e2inf.clone(), m.e3inf.clone()])
 }
 
-fn dot<T: Ring>(x: &[T; 3], y: &[T; 3]) -> T {
+pub(crate) fn dot<T: Ring>(x: &[T; 3], y: &[T; 3]) -> T {
     x[0].mul_ref(&y[0]) + x[1].mul_ref(&y[1]) + x[2].mul_ref(&y[2])
 }
 
 /// The even element `σ + a e123 + c einf + pω`.
-fn assemble<T: Ring>(sigma: T, a: [T; 3], c: [T; 3], p: T) -> Even<T> {
+pub(crate) fn assemble<T: Ring>(sigma: T, a: [T; 3], c: [T; 3], p: T) -> Even<T> {
     let [a1, a2, a3] = a;
     let [c1, c2, c3] = c;
     Even::new(sigma, a3, a2.neg_ref(), a1, c1, c2, c3, p)
@@ -95,18 +96,7 @@ impl<T: Real> Pose<T> {
         {
             return Err(not_finite("exp", g));
         }
-        let (a, c) = split(g);
-        let (u, w) = (dot(&a, &a), dot(&a, &c));
-        let [cc, ss, tt] = exp_kernel(&u);
-        let p = &g.e123inf;
-        let es = Real::exp(&g.scalar);
-        let ess = es.mul_ref(&ss);
-        // einf part: e^σ (S c - (wT + pS) a)
-        let k = w.mul_ref(&tt).add_ref(&p.mul_ref(&ss)).mul_ref(&es);
-        let c_out: [T; 3] = std::array::from_fn(|i| c[i].mul_ref(&ess).sub_ref(&a[i].mul_ref(&k)));
-        let a_out = a.map(|x| x.mul_ref(&ess));
-        let omega = w.mul_ref(&ess).add_ref(&p.mul_ref(&cc).mul_ref(&es));
-        let out = assemble(es.mul_ref(&cc), a_out, c_out, omega);
+        let out = exp_with_kernel(g, exp_kernel);
         out.check_finite("exp").map_err(|_| not_finite("exp", g))?;
         Ok(out)
     }
@@ -164,6 +154,23 @@ impl<T: Real> Pose<T> {
     pub fn log_shortest(&self) -> Result<Even<T>, MotionError> {
         if self.scalar < T::zero() { (-self).log() } else { self.log() }
     }
+}
+
+/// `exp(σ + a e123 + c einf + pω)` (module docs) from the kernel `[C, S, T]` at `u = |a|²`:
+/// shared by [`Pose::exp`] and the branch-free [`Pose::exp_branch_free`].
+pub(crate) fn exp_with_kernel<T: LaneReal>(g: &Even<T>, kernel: impl FnOnce(&T) -> [T; 3]) -> Even<T> {
+    let (a, c) = split(g);
+    let (u, w) = (dot(&a, &a), dot(&a, &c));
+    let [cc, ss, tt] = kernel(&u);
+    let p = &g.e123inf;
+    let es = Elementary::exp(&g.scalar);
+    let ess = es.mul_ref(&ss);
+    // einf part: e^σ (S c - (wT + pS) a)
+    let k = w.mul_ref(&tt).add_ref(&p.mul_ref(&ss)).mul_ref(&es);
+    let c_out: [T; 3] = std::array::from_fn(|i| c[i].mul_ref(&ess).sub_ref(&a[i].mul_ref(&k)));
+    let a_out = a.map(|x| x.mul_ref(&ess));
+    let omega = w.mul_ref(&ess).add_ref(&p.mul_ref(&cc).mul_ref(&es));
+    assemble(es.mul_ref(&cc), a_out, c_out, omega)
 }
 
 /// The logarithm (a bivector) of a unitary even element (module docs for the three cases).

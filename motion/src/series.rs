@@ -26,6 +26,13 @@ pub(crate) fn exp_kernel<T: Real>(u: &T) -> [T; 3] {
         let t = s.sub_ref(&c).div_ref(u);
         return [c, s, t];
     }
+    exp_series(u, |_, terms| terms.iter().all(negligible))
+}
+
+/// The power series of the exp kernel `[C, S, T]` at `u`, summed until `done(k, terms)` holds
+/// after the `k`-th terms (or `MAX_TERMS`): the `Real` kernel stops at negligible terms, the
+/// branch-free one ([`crate::branch_free`]) after a number of terms fixed by the type.
+pub(crate) fn exp_series<T: Ring>(u: &T, mut done: impl FnMut(i64, &[T; 3]) -> bool) -> [T; 3] {
     let neg_u = u.neg_ref();
     let (mut tc, mut ts, mut tt) = (T::one(), T::one(), T::from_ratio(1, 3));
     let (mut c, mut s, mut t) = (tc.clone(), ts.clone(), tt.clone());
@@ -36,9 +43,11 @@ pub(crate) fn exp_kernel<T: Real>(u: &T) -> [T; 3] {
         c.add_assign_ref(&tc);
         s.add_assign_ref(&ts);
         t.add_assign_ref(&tt);
-        if negligible(&tc) && negligible(&ts) && negligible(&tt) {
+        let terms = [tc, ts, tt];
+        if done(k, &terms) {
             break;
         }
+        [tc, ts, tt] = terms;
     }
     [c, s, t]
 }
@@ -47,6 +56,12 @@ pub(crate) fn exp_kernel<T: Real>(u: &T) -> [T; 3] {
 /// zero rotation. `f = Σ c_k x^k`, `h = Σ_{k≥1} 2k c_k x^{k-1}` with `c_0 = 1`,
 /// `c_k = c_{k-1} (2k-1)²/(2k(2k+1))`.
 pub(crate) fn log_kernel<T: Real>(x: &T) -> [T; 2] {
+    log_series(x, |_, f_term, h_term| negligible(f_term) && negligible(h_term))
+}
+
+/// The series of the log kernel `[f, h]` at `x`, summed until `done(k, f_term, h_term)` holds
+/// after the `k`-th terms (or `MAX_TERMS`), as [`exp_series`].
+pub(crate) fn log_series<T: Ring>(x: &T, mut done: impl FnMut(i64, &T, &T) -> bool) -> [T; 2] {
     let mut ck = T::one();
     let mut xk = T::one(); // x^(k-1) at the top of the loop
     let mut f = T::one();
@@ -58,7 +73,7 @@ pub(crate) fn log_kernel<T: Real>(x: &T) -> [T; 2] {
         let f_term = ck.mul_ref(&xk);
         f.add_assign_ref(&f_term);
         h.add_assign_ref(&h_term);
-        if negligible(&f_term) && negligible(&h_term) {
+        if done(k, &f_term, &h_term) {
             break;
         }
     }

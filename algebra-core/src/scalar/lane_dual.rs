@@ -65,54 +65,28 @@ impl<L: LaneReal> fmt::Display for LaneDual<L> {
     }
 }
 
-impl<L: LaneReal> Add for LaneDual<L> {
-    type Output = Self;
-    fn add(self, rhs: Self) -> Self {
-        self.add_ref(&rhs)
-    }
+/// `Op<Self>` and `Op<&Self>` through the `Ring`/`Field` reference method.
+macro_rules! dual_binop {
+    ($tr:ident, $f:ident, $by_ref:ident) => {
+        impl<L: LaneReal> $tr for LaneDual<L> {
+            type Output = Self;
+            fn $f(self, rhs: Self) -> Self {
+                self.$by_ref(&rhs)
+            }
+        }
+        impl<'a, L: LaneReal> $tr<&'a LaneDual<L>> for LaneDual<L> {
+            type Output = Self;
+            fn $f(self, rhs: &'a Self) -> Self {
+                self.$by_ref(rhs)
+            }
+        }
+    };
 }
-impl<'a, L: LaneReal> Add<&'a LaneDual<L>> for LaneDual<L> {
-    type Output = Self;
-    fn add(self, rhs: &'a Self) -> Self {
-        self.add_ref(rhs)
-    }
-}
-impl<L: LaneReal> Sub for LaneDual<L> {
-    type Output = Self;
-    fn sub(self, rhs: Self) -> Self {
-        self.sub_ref(&rhs)
-    }
-}
-impl<'a, L: LaneReal> Sub<&'a LaneDual<L>> for LaneDual<L> {
-    type Output = Self;
-    fn sub(self, rhs: &'a Self) -> Self {
-        self.sub_ref(rhs)
-    }
-}
-impl<L: LaneReal> Mul for LaneDual<L> {
-    type Output = Self;
-    fn mul(self, rhs: Self) -> Self {
-        self.mul_ref(&rhs)
-    }
-}
-impl<'a, L: LaneReal> Mul<&'a LaneDual<L>> for LaneDual<L> {
-    type Output = Self;
-    fn mul(self, rhs: &'a Self) -> Self {
-        self.mul_ref(rhs)
-    }
-}
-impl<L: LaneReal> Div for LaneDual<L> {
-    type Output = Self;
-    fn div(self, rhs: Self) -> Self {
-        self.div_ref(&rhs)
-    }
-}
-impl<'a, L: LaneReal> Div<&'a LaneDual<L>> for LaneDual<L> {
-    type Output = Self;
-    fn div(self, rhs: &'a Self) -> Self {
-        self.div_ref(rhs)
-    }
-}
+dual_binop!(Add, add, add_ref);
+dual_binop!(Sub, sub, sub_ref);
+dual_binop!(Mul, mul, mul_ref);
+dual_binop!(Div, div, div_ref);
+
 impl<L: LaneReal> Neg for LaneDual<L> {
     type Output = Self;
     fn neg(self) -> Self {

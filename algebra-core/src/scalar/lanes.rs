@@ -58,34 +58,41 @@ macro_rules! lane_type {
             /// How many lanes.
             pub const LANES: usize = $n;
             /// `x` in every lane.
+            #[inline]
             pub fn splat(x: $elem) -> Self {
                 Self(wide::$wide::splat(x))
             }
             /// The lanes as an array.
+            #[inline]
             pub fn to_array(self) -> [$elem; $n] {
                 self.0.to_array()
             }
             /// Lane `i` (`i < LANES`).
+            #[inline]
             pub fn lane(self, i: usize) -> $elem {
                 self.0.to_array()[i]
             }
             /// The value whose lane `i` is `f(i)`.
+            #[inline]
             pub fn from_fn(f: impl FnMut(usize) -> $elem) -> Self {
                 Self::from(std::array::from_fn::<$elem, $n, _>(f))
             }
             /// `f` applied lane by lane.
+            #[inline]
             pub fn map(self, mut f: impl FnMut($elem) -> $elem) -> Self {
                 Self::from(self.to_array().map(&mut f))
             }
         }
 
         impl From<[$elem; $n]> for $name {
+            #[inline]
             fn from(lanes: [$elem; $n]) -> Self {
                 Self(wide::$wide::from(lanes))
             }
         }
 
         impl From<$name> for [$elem; $n] {
+            #[inline]
             fn from(x: $name) -> Self {
                 x.to_array()
             }
@@ -93,12 +100,14 @@ macro_rules! lane_type {
 
         impl $mask {
             /// The mask as one bool per lane.
+            #[inline]
             pub fn to_array(self) -> [bool; $n] {
                 self.0.to_array().map(|x| x.to_bits() != 0)
             }
         }
 
         impl From<[bool; $n]> for $mask {
+            #[inline]
             fn from(lanes: [bool; $n]) -> Self {
                 let bits = lanes.map(|b| $elem::from_bits(if b { !0 } else { 0 }));
                 Self(wide::$wide::from(bits))
@@ -106,6 +115,7 @@ macro_rules! lane_type {
         }
 
         impl PartialEq for $mask {
+            #[inline]
             fn eq(&self, other: &Self) -> bool {
                 self.to_array() == other.to_array()
             }
@@ -113,30 +123,36 @@ macro_rules! lane_type {
 
         impl BitAnd for $mask {
             type Output = Self;
+            #[inline]
             fn bitand(self, rhs: Self) -> Self {
                 Self(self.0 & rhs.0)
             }
         }
         impl BitOr for $mask {
             type Output = Self;
+            #[inline]
             fn bitor(self, rhs: Self) -> Self {
                 Self(self.0 | rhs.0)
             }
         }
         impl Not for $mask {
             type Output = Self;
+            #[inline]
             fn not(self) -> Self {
                 Self(!self.0)
             }
         }
 
         impl Mask for $mask {
+            #[inline]
             fn splat(value: bool) -> Self {
                 Self::from([value; $n])
             }
+            #[inline]
             fn all(&self) -> bool {
                 self.0.all()
             }
+            #[inline]
             fn any(&self) -> bool {
                 self.0.any()
             }
@@ -144,6 +160,7 @@ macro_rules! lane_type {
 
         /// True when equal in every lane (NaN lanes are unequal).
         impl PartialEq for $name {
+            #[inline]
             fn eq(&self, other: &Self) -> bool {
                 self.to_array() == other.to_array()
             }
@@ -170,57 +187,73 @@ macro_rules! lane_type {
 
         impl Neg for $name {
             type Output = Self;
+            #[inline]
             fn neg(self) -> Self {
                 Self(-self.0)
             }
         }
 
         impl Ring for $name {
+            #[inline]
             fn zero() -> Self {
                 Self::splat(0.0)
             }
+            #[inline]
             fn one() -> Self {
                 Self::splat(1.0)
             }
+            #[inline]
             fn from_i64(n: i64) -> Self {
                 Self::splat(n as $elem)
             }
+            #[inline]
             fn from_ratio(num: i64, den: i64) -> Self {
                 Self::splat((num as f64 / den as f64) as $elem)
             }
+            #[inline]
             fn from_rational(q: &Q) -> Self {
                 Self::splat(rational_to_f64(q) as $elem)
             }
             /// Every lane is zero.
+            #[inline]
             fn is_exact_zero(&self) -> bool {
                 self.to_array().iter().all(|x| *x == 0.0)
             }
             /// The largest lane's `|x|` (NaN when a lane is NaN).
+            #[inline]
             fn magnitude(&self) -> f64 {
                 self.abs().max_to_f64()
             }
+            #[inline]
             fn relative_epsilon() -> f64 {
                 f64::from($elem::EPSILON)
             }
             /// Every lane is finite.
+            #[inline]
             fn is_finite_value(&self) -> bool {
                 self.0.is_finite().all()
             }
+            #[inline]
             fn add_ref(&self, rhs: &Self) -> Self {
                 *self + *rhs
             }
+            #[inline]
             fn sub_ref(&self, rhs: &Self) -> Self {
                 *self - *rhs
             }
+            #[inline]
             fn mul_ref(&self, rhs: &Self) -> Self {
                 *self * *rhs
             }
+            #[inline]
             fn neg_ref(&self) -> Self {
                 -*self
             }
+            #[inline]
             fn add_assign_ref(&mut self, rhs: &Self) {
                 *self = *self + *rhs;
             }
+            #[inline]
             fn sub_assign_ref(&mut self, rhs: &Self) {
                 *self = *self - *rhs;
             }
@@ -228,41 +261,52 @@ macro_rules! lane_type {
 
         impl Field for $name {
             /// `None` when any lane is zero or has a non-finite reciprocal.
+            #[inline]
             fn try_recip(&self) -> Option<Self> {
                 let r = Self::one() / *self;
                 let zero = self.0.simd_eq(wide::$wide::ZERO).any();
                 (!zero && r.0.is_finite().all()).then_some(r)
             }
+            #[inline]
             fn div_ref(&self, rhs: &Self) -> Self {
                 *self / *rhs
             }
         }
 
         impl Elementary for $name {
+            #[inline]
             fn sqrt(&self) -> Self {
                 Self(self.0.sqrt())
             }
+            #[inline]
             fn exp(&self) -> Self {
                 Self(self.0.exp())
             }
+            #[inline]
             fn ln(&self) -> Self {
                 Self(self.0.ln())
             }
+            #[inline]
             fn sin(&self) -> Self {
                 Self(self.0.sin())
             }
+            #[inline]
             fn cos(&self) -> Self {
                 Self(self.0.cos())
             }
+            #[inline]
             fn atan2(&self, x: &Self) -> Self {
                 Self(self.0.atan2(x.0))
             }
+            #[inline]
             fn abs(&self) -> Self {
                 Self(self.0.abs())
             }
+            #[inline]
             fn from_f64(x: f64) -> Self {
                 Self::splat(x as $elem)
             }
+            #[inline]
             fn pi() -> Self {
                 Self::splat(std::f64::consts::PI as $elem)
             }
@@ -270,18 +314,23 @@ macro_rules! lane_type {
 
         impl Select for $name {
             type Mask = $mask;
+            #[inline]
             fn select(mask: &$mask, if_true: &Self, if_false: &Self) -> Self {
                 Self(mask.0.select(if_true.0, if_false.0))
             }
+            #[inline]
             fn lt_mask(&self, other: &Self) -> $mask {
                 $mask(self.0.simd_lt(other.0))
             }
+            #[inline]
             fn le_mask(&self, other: &Self) -> $mask {
                 $mask(self.0.simd_le(other.0))
             }
+            #[inline]
             fn eq_mask(&self, other: &Self) -> $mask {
                 $mask(self.0.simd_eq(other.0))
             }
+            #[inline]
             fn finite_mask(&self) -> $mask {
                 $mask(self.0.is_finite())
             }
@@ -289,6 +338,7 @@ macro_rules! lane_type {
 
         impl Diagnostics for $name {
             const LANES: usize = $n;
+            #[inline]
             fn lane_to_f64(&self, lane: usize) -> Option<f64> {
                 self.to_array().get(lane).map(|x| f64::from(*x))
             }
@@ -301,12 +351,14 @@ macro_rules! lane_binop {
     ($name:ident, $tr:ident, $f:ident) => {
         impl $tr for $name {
             type Output = Self;
+            #[inline]
             fn $f(self, rhs: Self) -> Self {
                 Self($tr::$f(self.0, rhs.0))
             }
         }
         impl<'a> $tr<&'a $name> for $name {
             type Output = Self;
+            #[inline]
             fn $f(self, rhs: &'a Self) -> Self {
                 Self($tr::$f(self.0, rhs.0))
             }
