@@ -37,6 +37,7 @@
 //! | [`jacobian`] | [`jacobian::JetN`] (multi-directional duals), derivatives of a sampled body point and twist w.r.t. every key pose and time |
 //! | [`method`] | the methods of `gam interpolate` by name ([`method::Method`]) |
 //! | [`repr`] | the other papers' pose representations: quaternion, Jüttler's dual quaternions, Angelidis' hexanions, screw, signs |
+//! | [`batch`] | [`batch::Points`], [`batch::Poses`]: many points and poses at once over SIMD lanes ([`batch::Lanes`]) and cores |
 //! | [`paper`] | the paper's worked examples (Secs. 4, 5.1, 5.2, 5.3 Jaklič), once |
 //! | [`wareham_lasenby`] | Wareham–Lasenby in `cga`: exp (Thm 3), log (Thm 9), rotor ↔ pose, helix (Sec. 4.1), interpolation (Sec. 3) |
 //!
@@ -51,6 +52,7 @@
 
 pub mod action;
 mod any_segment;
+pub mod batch;
 pub mod bezier;
 pub mod blend;
 pub mod branch_free;
