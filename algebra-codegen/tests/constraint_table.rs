@@ -15,7 +15,7 @@ const MODULES: &[(&str, Basis, &str)] = &[
     (
         "cga-null",
         Basis::Product,
-        "Vector=grade1;Motor=1,e12,e13,e23,e1inf,e2inf,e3inf,e123inf where unit;Multivector=all",
+        "Vector=grade1;Motor=1,e12,e13,e23,e1inf,e2inf,e3inf,e123inf where unit;PoseBivector=e12,e13,e23,e1inf,e2inf,e3inf;Multivector=all",
     ),
     ("pga3", Basis::Blade, "Vector=grade1;Bivector=grade2;Trivector=grade3;Motor=even where unit;Multivector=all"),
     (

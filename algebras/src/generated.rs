@@ -102,7 +102,6 @@ algebra! {
             /// Poses of G_{123inf}^+ inside G_{0123inf}. `where unit` adds the `*_unit_*`
             /// kernels, valid for unit poses only (rev(S) S = 1).
             Motor = [1, e12, e13, e23, e1inf, e2inf, e3inf, e123inf] where unit;
-            Motor = [1, e12, e13, e23, e1inf, e2inf, e3inf, e123inf];
             /// The bivectors of the poses, `Omega e123 + u einf` (the Lie algebra of `Motor`:
             /// `PoseBivector::exp` is a `Motor`, `Motor::log` a `PoseBivector`).
             PoseBivector = [e12, e13, e23, e1inf, e2inf, e3inf];

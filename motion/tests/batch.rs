@@ -7,7 +7,7 @@ mod common;
 
 use algebra_core::rational::{Q, q, ratio};
 use algebra_core::{Field, Ring};
-use common::Rng;
+use common::{Xorshift as Rng, centered};
 use motion::batch::{BatchError, Lanes, Points, Poses, Samples, sample, sample_many};
 use motion::velocity::{pose_derivative, velocity_indicatrix};
 use motion::{AdditiveBezier, Motion, MotionError, MultiplicativeBezier, Pose};
@@ -117,7 +117,7 @@ const LENGTHS: [usize; 7] = [0, 1, 3, 4, 5, 1027, 8192 * 2 + 3];
 
 fn cloud(n: usize, seed: u64) -> Vec<[f64; 3]> {
     let mut rng = Rng(seed);
-    (0..n).map(|_| [rng.next() * 20.0, rng.next() * 20.0, rng.next() * 20.0]).collect()
+    (0..n).map(|_| [centered(&mut rng) * 20.0, centered(&mut rng) * 20.0, centered(&mut rng) * 20.0]).collect()
 }
 
 /// Non-unit poses (generic screws scaled by a pseudoscalar), `n` of them.
@@ -125,10 +125,13 @@ fn poses(n: usize, seed: u64) -> Vec<Pose<f64>> {
     let mut rng = Rng(seed);
     (0..n)
         .map(|_| {
-            let axis = [rng.next(), rng.next(), rng.next() + 0.7];
-            let s =
-                Pose::from_axis_angle_translation(&axis, &(rng.next() * 6.0), &[rng.next(), rng.next(), rng.next()]);
-            s.unwrap().scale_pseudoscalar(&motion::Pseudoscalar::new(1.5 + rng.next(), rng.next()))
+            let axis = [centered(&mut rng), centered(&mut rng), centered(&mut rng) + 0.7];
+            let s = Pose::from_axis_angle_translation(
+                &axis,
+                &(centered(&mut rng) * 6.0),
+                &[centered(&mut rng), centered(&mut rng), centered(&mut rng)],
+            );
+            s.unwrap().scale_pseudoscalar(&motion::Pseudoscalar::new(1.5 + centered(&mut rng), centered(&mut rng)))
         })
         .collect()
 }

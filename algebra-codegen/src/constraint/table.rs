@@ -40,8 +40,14 @@ pub const PRECOMPUTED: &str = include_str!("precomputed.txt");
 pub fn key(spec: &ModuleSpec, r: Request) -> String {
     let metric = spec.algebra.metric();
     let n = metric.labels().len();
-    let gram: Vec<String> =
-        (0..n).map(|i| (0..n).map(|j| format_rational(metric.gram(i, j).expect("indices below the metric's size"))).collect::<Vec<_>>().join(",")).collect();
+    let gram: Vec<String> = (0..n)
+        .map(|i| {
+            (0..n)
+                .map(|j| format_rational(metric.gram(i, j).expect("indices below the metric's size")))
+                .collect::<Vec<_>>()
+                .join(",")
+        })
+        .collect();
     let ty = |t: usize| {
         let els: Vec<String> = spec.types[t].elements.iter().map(u32::to_string).collect();
         format!("{}:{}", els.join(","), spec.types[t].constraint.map_or("-", |k| k.keyword()))
