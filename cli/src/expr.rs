@@ -475,7 +475,8 @@ mod tests {
         assert_eq!(err("(e1 + e2"), "parse error at column 9: expected `)`, found end of input");
         assert_eq!(err("e1 $ e2"), "parse error at column 4: unexpected character `$`");
         assert_eq!(err("e1)"), "parse error at column 3: unmatched `)`");
-        assert!(err("2e1").contains("column 2"));
+        assert!(err("2e1").starts_with("parse error at column 1: `2e1` is ambiguous"));
+        assert!(err("2 e1").contains("column 3"));
         assert!(err("1.").contains("column 3"));
         assert!(err("foo(e1)").starts_with("unknown function `foo` at column 1"));
         assert!(err("x + grade(e1)").starts_with("`grade` at column 5 takes 2 arguments"));
