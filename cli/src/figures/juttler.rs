@@ -68,6 +68,12 @@ pub(crate) fn parabola() -> Result<RationalBezier<f64>, CliError> {
         .map_err(|e| CliError::math(format!("the parabola of Fig. 5: {e}")))
 }
 
+/// The points `x(0), x(1/2), x(1)` of the [`parabola`] (the body points of Fig. 5a).
+fn on_parabola() -> Result<Vec<[f64; 3]>, CliError> {
+    let x = parabola()?;
+    [0.0, 0.5, 1.0].iter().map(|v| x.point(v).map_err(bad("Fig. 5"))).collect()
+}
+
 fn poses(keys: &[Key]) -> Result<Vec<Pose<f64>>, CliError> {
     let mut p = keys
         .iter()
@@ -186,14 +192,7 @@ pub(crate) fn all() -> Result<Vec<(&'static str, String, String, Value)>, CliErr
         (
             "juttler_fig5a.svg",
             "Juttler Fig. 5a: rational motion of order 4 through 3 positions, parabola points",
-            built(
-                "minimal",
-                Method::JuttlerMinimal,
-                &THREE,
-                uniform(),
-                None,
-                parabola()?.points().map_err(bad("Fig. 5"))?,
-            )?,
+            built("minimal", Method::JuttlerMinimal, &THREE, uniform(), None, on_parabola()?)?,
         ),
         (
             "juttler_fig6.svg",
