@@ -240,3 +240,24 @@ fn the_projective_method_somersaults_and_the_surface_is_swept_by_x_of_v() {
         }
     }
 }
+
+#[test]
+fn the_spline_of_fig_6_has_continuous_speeds_at_its_joins() {
+    let all = figures("joins");
+    let s = &all["juttler_fig6.svg"]["series"][0];
+    let (t, joins) = (nums(&s["t"]), nums(&s["joins"]));
+    assert_eq!(joins.len(), 4);
+    for curve in [nums(&s["speeds"][0]), nums(&s["speeds"][1]), nums(&s["angular_speed"])] {
+        for j in &joins {
+            let i = t.iter().position(|x| (x - j).abs() < 1e-12).expect("a join is a sample");
+            // the value at the join extrapolated linearly from each side (a C1 motion: no jump; the
+            // speeds have kinks there, worth about 0.11 at this sampling)
+            let (left, right) = (2.0 * curve[i - 1] - curve[i - 2], 2.0 * curve[i + 1] - curve[i + 2]);
+            assert!(
+                (left - right).abs() < 0.2 && (left - curve[i]).abs() < 0.2,
+                "t = {j}: {left} {} {right}",
+                curve[i]
+            );
+        }
+    }
+}

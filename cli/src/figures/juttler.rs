@@ -164,7 +164,7 @@ pub(crate) fn all() -> Result<Vec<(&'static str, String, String, Value)>, CliErr
         label: "projective".into(),
         method: "projective + TR".into(),
         segments: 1,
-        degree: 2 * proj.degree(),
+        degree: proj.degree(),
         key_times: t,
         joins: vec![],
     };
