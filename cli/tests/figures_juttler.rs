@@ -1,6 +1,6 @@
 //! Jüttler's Figs. 1-6 in `gam figures` (cli/src/figures/juttler.rs): the committed SVGs are
 //! what `gam figures` writes and have the expected number of lines; the unit cubes sit at the
-//! key poses (Rodrigues matrices of the chosen axes and angles, written out here); the
+//! key poses (Rodrigues matrices of the axes, angles and translations each figure reports as `keys`); the
 //! trajectories equal `gam trajectory`'s rational Bézier curves of the same spec; the
 //! projective method (Fig. 2) makes one extra turn that the elliptic one (Fig. 1) does not;
 //! the kinematic surface's iso-curves at `v` fixed are the trajectories of `x(v)`.
@@ -12,37 +12,20 @@ use serde_json::Value;
 
 type Key = ([f64; 3], f64, [f64; 3]);
 
-/// The positions of docs/figures.md (Figs. 1-4, Fig. 5, Fig. 6).
-const FIVE: [Key; 5] = [
-    ([0.0, 0.0, 1.0], 0.0, [0.0, 0.0, 0.0]),
-    ([0.0, 0.0, 1.0], 0.8, [3.0, 1.0, 0.0]),
-    ([1.0, 0.0, 0.0], 1.2, [6.0, 0.0, 1.0]),
-    ([0.0, 1.0, 1.0], 1.6, [8.0, 2.0, 0.0]),
-    ([1.0, 1.0, 0.0], 2.0, [12.0, 0.0, 0.0]),
-];
-const THREE: [Key; 3] = [
-    ([0.0, 0.0, 1.0], 0.0, [0.0, 0.0, 0.0]),
-    ([1.0, 0.0, 0.0], 1.0, [3.0, 1.0, 1.0]),
-    ([0.0, 1.0, 0.0], 1.5, [6.0, 0.0, 0.0]),
-];
-const SIX: [Key; 6] = [
-    ([0.0, 0.0, 1.0], 0.0, [0.0, 0.0, 0.0]),
-    ([0.0, 0.0, 1.0], 1.0, [2.5, 1.5, 0.0]),
-    ([1.0, 0.0, 0.0], 1.0, [5.0, 0.0, 1.0]),
-    ([0.0, 1.0, 0.0], 1.0, [7.5, 1.5, 0.0]),
-    ([1.0, 1.0, 1.0], 1.5, [10.0, 0.0, 1.0]),
-    ([0.0, 0.0, 1.0], 0.5, [12.5, 1.5, 0.0]),
+/// (file, `gam interpolate` spec keys of the same motion; None for Fig. 2).
+const FIGURES: [(&str, Option<&str>); 6] = [
+    ("juttler_fig1.svg", Some(r#""method": "juttler-q-motion""#)),
+    ("juttler_fig2.svg", None),
+    ("juttler_fig3.svg", Some(r#""method": "juttler-q-motion", "parameters": "centripetal""#)),
+    ("juttler_fig4.svg", Some(r#""method": "juttler-trt", "parameters": "angular-chordal", "l1": 3"#)),
+    ("juttler_fig5a.svg", Some(r#""method": "juttler-minimal""#)),
+    ("juttler_fig6.svg", Some(r#""method": "juttler-spline""#)),
 ];
 
-/// (file, key poses, `gam interpolate` spec keys of the same motion; None for Fig. 2).
-const FIGURES: [(&str, &[Key], Option<&str>); 6] = [
-    ("juttler_fig1.svg", &FIVE, Some(r#""method": "juttler-q-motion""#)),
-    ("juttler_fig2.svg", &FIVE, None),
-    ("juttler_fig3.svg", &FIVE, Some(r#""method": "juttler-q-motion", "parameters": "centripetal""#)),
-    ("juttler_fig4.svg", &FIVE, Some(r#""method": "juttler-trt", "parameters": "angular-chordal", "l1": 3"#)),
-    ("juttler_fig5a.svg", &THREE, Some(r#""method": "juttler-minimal""#)),
-    ("juttler_fig6.svg", &SIX, Some(r#""method": "juttler-spline""#)),
-];
+/// The key poses `[axis, angle, translation]` a figure reports (`keys`).
+fn keys(fig: &Value) -> Vec<Key> {
+    serde_json::from_value(fig["keys"].clone()).expect("the key poses")
+}
 
 fn nums(v: &Value) -> Vec<f64> {
     v.as_array().expect("an array").iter().map(|x| x.as_f64().expect("a number")).collect()
@@ -141,7 +124,8 @@ fn spec(keys: &[Key], extra: &str) -> String {
 #[test]
 fn cubes_at_key_poses_and_trajectories_equal_gam_trajectory() {
     let all = figures("cubes");
-    for (file, keys, extra) in FIGURES {
+    for (file, extra) in FIGURES {
+        let keys = &keys(&all[file]);
         let s = &all[file]["series"][0];
         let times = nums(&s["key_times"]);
         assert_eq!(times.len(), keys.len(), "{file}");
@@ -182,12 +166,12 @@ fn key_angle(p: &Key, q: &Key) -> f64 {
 }
 
 /// The signs of `λ_i` in `Q_rot(t_i) = λ_i R_i` of the rotational interpolant `method` through
-/// the sign-aligned rotations of [`FIVE`], equidistant parameters: a sign change between `t_i`
+/// the sign-aligned rotations of `five` (Figs. 1 and 2), equidistant parameters: a sign change between `t_i`
 /// and `t_(i+1)` means the rotation goes the long way round there (a somersault).
-fn lambda_signs(proj: bool) -> Vec<bool> {
+fn lambda_signs(five: &[Key], proj: bool) -> Vec<bool> {
     use motion::juttler::{projective::projective, rotational::elliptic, tr::rotation_translation};
     let mut poses: Vec<_> =
-        FIVE.iter().map(|(a, phi, t)| motion::Pose::from_axis_angle_translation(a, phi, t).unwrap()).collect();
+        five.iter().map(|(a, phi, t)| motion::Pose::from_axis_angle_translation(a, phi, t).unwrap()).collect();
     motion::trajectory::align_signs(&mut poses);
     let rots: Vec<_> = poses.iter().map(|p| rotation_translation(p).unwrap().0).collect();
     let t = [0.0, 0.25, 0.5, 0.75, 1.0];
@@ -204,11 +188,13 @@ fn lambda_signs(proj: bool) -> Vec<bool> {
 #[test]
 fn the_projective_method_somersaults_and_the_surface_is_swept_by_x_of_v() {
     let all = figures("turns");
+    let five = keys(&all["juttler_fig2.svg"]);
+    assert_eq!(five, keys(&all["juttler_fig1.svg"]), "Figs. 1 and 2 share their key poses");
     // Fig. 1 (elliptic): no sign change; Fig. 2 (projective): exactly one, and on that span
     // the figure's cube turns at least 2π - θ (the long way), elsewhere less than 2π - θ.
     let flips = |s: &[bool]| s.windows(2).filter(|w| w[0] != w[1]).count();
-    assert_eq!(flips(&lambda_signs(false)), 0);
-    let signs = lambda_signs(true);
+    assert_eq!(flips(&lambda_signs(&five, false)), 0);
+    let signs = lambda_signs(&five, true);
     assert_eq!(flips(&signs), 1, "one somersault: {signs:?}");
     for (name, long) in
         [("juttler_fig1.svg", vec![false; 4]), ("juttler_fig2.svg", signs.windows(2).map(|w| w[0] != w[1]).collect())]
@@ -216,7 +202,7 @@ fn the_projective_method_somersaults_and_the_surface_is_swept_by_x_of_v() {
         let s = &all[name]["series"][0];
         for i in 0..4 {
             let (a, b) = (0.25 * i as f64, 0.25 * (i + 1) as f64);
-            let (turn, theta) = (turned(s, a, b), key_angle(&FIVE[i], &FIVE[i + 1]));
+            let (turn, theta) = (turned(s, a, b), key_angle(&five[i], &five[i + 1]));
             let limit = std::f64::consts::TAU - theta;
             assert_eq!(turn >= 0.99 * limit, long[i], "{name}, [{a}, {b}]: turned {turn}, θ = {theta}");
         }
@@ -224,7 +210,7 @@ fn the_projective_method_somersaults_and_the_surface_is_swept_by_x_of_v() {
     // Fig. 5b: the iso-curve at v fixed is the trajectory of x(v) = ((1 - v)² 0 + 2v(1 - v) (1/2, 0, 1) + v² (1, 0, 0))
     let surface = &all["juttler_fig5b.svg"];
     let (grid, t) = (nums(&surface["grid"]), nums(&surface["t"]));
-    let spec = spec(&THREE, r#""method": "juttler-minimal""#);
+    let spec = spec(&keys(&all["juttler_fig5a.svg"]), r#""method": "juttler-minimal""#);
     for (j, v) in grid.iter().enumerate() {
         let x = [2.0 * v * (1.0 - v) * 0.5 + v * v, 0.0, 2.0 * v * (1.0 - v)];
         on_curves(&format!("Fig. 5b, v = {v}"), &points(&surface["iso_v"][j]), &t, &trajectory(&spec, &x));

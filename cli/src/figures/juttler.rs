@@ -203,7 +203,13 @@ pub(crate) fn all() -> Result<Vec<(&'static str, String, String, Value)>, CliErr
     let mut out = Vec::new();
     for (file, title, s) in figs {
         let svg = render(std::slice::from_ref(&s), View::ThreeD, Body::Cube, title)?;
-        out.push((file, title.to_string(), svg, json!({"title": title, "series": [s]})));
+        // the key poses as [axis, angle, translation], for the reader (and the test)
+        let keys: &[Key] = match file {
+            "juttler_fig5a.svg" => &THREE,
+            "juttler_fig6.svg" => &SIX,
+            _ => &FIVE,
+        };
+        out.push((file, title.to_string(), svg, json!({"title": title, "keys": keys, "series": [s]})));
     }
     let [iso_v, iso_t] = surface_curves()?;
     let title = "Juttler Fig. 5b: the kinematic surface swept by the parabola (v = const thick, t = const thin)";
