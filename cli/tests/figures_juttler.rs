@@ -105,11 +105,11 @@ fn evaluate(curves: &[Curve], t: f64) -> [f64; 3] {
     std::array::from_fn(|k| (0..=d).map(|j| b(j) * w[j] * p[j][k]).sum::<f64>() / den)
 }
 
-/// Asserts that `path[i]` is on `curves` at `t[i]`, to `1e-12` relative to the largest
+/// Asserts that `path[i]` is `curve(t[i])`, to `1e-12` relative to the largest
 /// coordinate (the figures reach 12.5).
-fn on_curves(what: &str, path: &[[f64; 3]], t: &[f64], curves: &[Curve]) {
+fn on_curves(what: &str, path: &[[f64; 3]], t: &[f64], curve: impl Fn(f64) -> [f64; 3]) {
     for (p, ti) in path.iter().zip(t) {
-        let want = evaluate(curves, *ti);
+        let want = curve(*ti);
         let scale = 1.0 + want.iter().map(|v| v.abs()).fold(0.0, f64::max);
         assert!(dist(p, &want) < 1e-12 * scale, "{what} at t = {ti}: {p:?} vs {want:?}");
     }
@@ -143,10 +143,20 @@ fn cubes_at_key_poses_and_trajectories_equal_gam_trajectory() {
             }
         }
         // the trajectories: gam trajectory's curves at every sample parameter
-        let Some(extra) = extra else { continue };
         let t = nums(&s["t"]);
+        let Some(extra) = extra else {
+            // Fig. 2 (no `gam interpolate` method): the library's rational Bézier trajectories
+            // (Jüttler's (12) on the control points) of projective + TR, by de Casteljau
+            let m = motion::juttler::tr::tr_method(&rotational(keys, true).0, &aligned(keys), &EQUIDISTANT).unwrap();
+            for (j, x) in points(&s["body_points"]).iter().enumerate() {
+                let curve = m.trajectory(x);
+                on_curves(&format!("{file}: point {x:?}"), &points(&s["paths"][j]), &t, |ti| curve.point(&ti).unwrap());
+            }
+            continue;
+        };
         for (j, x) in points(&s["body_points"]).iter().enumerate() {
-            on_curves(&format!("{file}: point {x:?}"), &points(&s["paths"][j]), &t, &trajectory(&spec(keys, extra), x));
+            let curves = trajectory(&spec(keys, extra), x);
+            on_curves(&format!("{file}: point {x:?}"), &points(&s["paths"][j]), &t, |ti| evaluate(&curves, ti));
         }
     }
 }
@@ -165,24 +175,33 @@ fn key_angle(p: &Key, q: &Key) -> f64 {
     ((trace - 1.0) / 2.0).clamp(-1.0, 1.0).acos()
 }
 
-/// The signs of `λ_i` in `Q_rot(t_i) = λ_i R_i` of the rotational interpolant `method` through
-/// the sign-aligned rotations of `five` (Figs. 1 and 2), equidistant parameters: a sign change between `t_i`
-/// and `t_(i+1)` means the rotation goes the long way round there (a somersault).
-fn lambda_signs(five: &[Key], proj: bool) -> Vec<bool> {
-    use motion::juttler::{projective::projective, rotational::elliptic, tr::rotation_translation};
+/// The equidistant parameters of five positions.
+const EQUIDISTANT: [f64; 5] = [0.0, 0.25, 0.5, 0.75, 1.0];
+
+/// The key poses, sign-aligned (rule (24), as the figures do).
+fn aligned(keys: &[Key]) -> Vec<motion::Pose<f64>> {
     let mut poses: Vec<_> =
-        five.iter().map(|(a, phi, t)| motion::Pose::from_axis_angle_translation(a, phi, t).unwrap()).collect();
+        keys.iter().map(|(a, phi, t)| motion::Pose::from_axis_angle_translation(a, phi, t).unwrap()).collect();
     motion::trajectory::align_signs(&mut poses);
-    let rots: Vec<_> = poses.iter().map(|p| rotation_translation(p).unwrap().0).collect();
-    let t = [0.0, 0.25, 0.5, 0.75, 1.0];
-    let q = if proj { projective(&rots, &t).unwrap() } else { elliptic(&rots, &t).unwrap() };
-    rots.iter()
-        .zip(t)
+    poses
+}
+
+/// The projective (or elliptic) rotational interpolant through five key poses at
+/// [`EQUIDISTANT`], and the signs of `λ_i` in `Q_rot(t_i) = λ_i R_i`: a sign change between
+/// `t_i` and `t_(i+1)` means the rotation goes the long way round there (a somersault).
+fn rotational(five: &[Key], proj: bool) -> (motion::juttler::QMotion<f64>, Vec<bool>) {
+    use motion::juttler::{projective::projective, rotational::elliptic, tr::rotation_translation};
+    let rots: Vec<_> = aligned(five).iter().map(|p| rotation_translation(p).unwrap().0).collect();
+    let q = if proj { projective(&rots, &EQUIDISTANT).unwrap() } else { elliptic(&rots, &EQUIDISTANT).unwrap() };
+    let signs = rots
+        .iter()
+        .zip(EQUIDISTANT)
         .map(|(r, ti)| {
             let e = q.eval(&ti).real;
             e.w * r.w + e.x * r.x + e.y * r.y + e.z * r.z > 0.0
         })
-        .collect()
+        .collect();
+    (q, signs)
 }
 
 #[test]
@@ -193,8 +212,8 @@ fn the_projective_method_somersaults_and_the_surface_is_swept_by_x_of_v() {
     // Fig. 1 (elliptic): no sign change; Fig. 2 (projective): exactly one, and on that span
     // the figure's cube turns at least 2π - θ (the long way), elsewhere less than 2π - θ.
     let flips = |s: &[bool]| s.windows(2).filter(|w| w[0] != w[1]).count();
-    assert_eq!(flips(&lambda_signs(&five, false)), 0);
-    let signs = lambda_signs(&five, true);
+    assert_eq!(flips(&rotational(&five, false).1), 0);
+    let signs = rotational(&five, true).1;
     assert_eq!(flips(&signs), 1, "one somersault: {signs:?}");
     for (name, long) in
         [("juttler_fig1.svg", vec![false; 4]), ("juttler_fig2.svg", signs.windows(2).map(|w| w[0] != w[1]).collect())]
@@ -213,7 +232,8 @@ fn the_projective_method_somersaults_and_the_surface_is_swept_by_x_of_v() {
     let spec = spec(&keys(&all["juttler_fig5a.svg"]), r#""method": "juttler-minimal""#);
     for (j, v) in grid.iter().enumerate() {
         let x = [2.0 * v * (1.0 - v) * 0.5 + v * v, 0.0, 2.0 * v * (1.0 - v)];
-        on_curves(&format!("Fig. 5b, v = {v}"), &points(&surface["iso_v"][j]), &t, &trajectory(&spec, &x));
+        let curves = trajectory(&spec, &x);
+        on_curves(&format!("Fig. 5b, v = {v}"), &points(&surface["iso_v"][j]), &t, |ti| evaluate(&curves, ti));
     }
     // the iso-curves at t fixed pass through the ends of those at v fixed (one net)
     let iso_t = surface["iso_t"].as_array().unwrap();
