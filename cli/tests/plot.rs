@@ -274,6 +274,9 @@ fn figures() -> Vec<(String, Value)> {
     let data: Value = serde_json::from_str(&ok(&["figures", "--json", "--out", dir.to_str().unwrap()])).unwrap();
     let mut out = Vec::new();
     for (file, fig) in data.as_object().expect("an object") {
+        if file.starts_with("juttler_") {
+            continue; // drawn with cubes; checked by figures_juttler.rs
+        }
         let svg = std::fs::read_to_string(dir.join(file)).expect("the figure was written");
         assert_eq!(check_svg(&svg), expected_series(fig), "{file}");
         let committed = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../docs/figures").join(file);

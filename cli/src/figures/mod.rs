@@ -5,6 +5,8 @@
 //! (Fig. 4, planar) and for `γ = 0, ±20ω, ±40ω` with `ω = e123inf` (Fig. 5, out of the
 //! plane, viewed along the y-axis). The body point is the body origin (the block's centre).
 
+mod juttler;
+
 use crate::error::CliError;
 use crate::plot::data::{Series, Shape, of_motion};
 use crate::plot::draw::{Body, View, render};
@@ -76,6 +78,13 @@ pub fn figures(dir: &str, json: bool) -> Result<String, CliError> {
         std::fs::write(&path, svg).map_err(|e| CliError::usage(format!("cannot write `{shown}`: {e}")))?;
         lines.push(format!("wrote {shown}: {title}"));
         data.insert(file.to_string(), json!({"title": title, "series": series}));
+    }
+    for (file, title, svg, value) in juttler::all()? {
+        let path = std::path::Path::new(dir).join(file);
+        let shown = path.display().to_string();
+        std::fs::write(&path, svg).map_err(|e| CliError::usage(format!("cannot write `{shown}`: {e}")))?;
+        lines.push(format!("wrote {shown}: {title}"));
+        data.insert(file.to_string(), value);
     }
     if json {
         return serde_json::to_string(&Value::Object(data))

@@ -81,7 +81,7 @@ pub(crate) fn evenly(a: f64, b: f64, k: usize) -> Vec<f64> {
 }
 
 /// The frame of `pose` at `t`.
-fn frame(t: f64, pose: &Pose<f64>) -> Result<Frame, CliError> {
+pub(crate) fn frame(t: f64, pose: &Pose<f64>) -> Result<Frame, CliError> {
     let at = |p: [f64; 3]| {
         pose.transform_point(&p)
             .ok()

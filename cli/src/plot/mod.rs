@@ -14,6 +14,7 @@
 
 pub(crate) mod data;
 pub(crate) mod draw;
+pub(crate) mod surface;
 
 use crate::error::CliError;
 use crate::sample::Sampled;
