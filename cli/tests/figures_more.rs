@@ -225,3 +225,24 @@ fn wl_fig_7_is_the_helix_of_t_par_and_psi() {
     }
     assert!(nums(&s["joins"]).is_empty());
 }
+
+#[test]
+fn gam_plot_draws_the_l_block() {
+    // `--body l-block` on an interpolate spec: per frame three grey polylines, the bottom and top
+    // outlines of the L (7 points each, closed) and the zigzag up and down its 6 vertical edges
+    // (12 points).
+    let spec = r#"{"method": "ccm-multiplicative", "poses": [
+        {"position": [0, 0, 0], "axis": [0, 0, 1], "angle": 0},
+        {"position": [5, 2, 1], "axis": [0, 1, 0], "angle": 1}]}"#;
+    let file = common::TempFile::new("figures-more-l-block.json", spec);
+    let out = common::TempFile::empty("figures-more-l-block.svg");
+    ok(&["plot", "--out", out.path(), file.path(), "--frames", "4", "--body", "l-block", "--view", "3d"]);
+    let svg = std::fs::read_to_string(out.path()).expect("written");
+    let grey: Vec<usize> = svg
+        .split("<polyline")
+        .skip(1)
+        .filter(|e| e.contains(r##"stroke="#5A5A5A""##))
+        .map(|e| e.split("points=\"").nth(1).expect("points").split('"').next().unwrap().split_whitespace().count())
+        .collect();
+    assert_eq!(grey, [7, 7, 12].repeat(4));
+}

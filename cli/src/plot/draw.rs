@@ -21,9 +21,8 @@ pub enum Body {
     Frames,
     /// The unit cube `[0, 1]³` (Jüttler's figures), its 12 edges in grey.
     Cube,
-    /// The L-shaped block of the main paper's Figs. 6-10 ([`L_BLOCK`]), in grey: an L of legs
-    /// 2 (along `e1`) and 1 (along `e2`), 0.5 wide, 0.5 deep (along `e3`), its corner at the
-    /// body origin.
+    /// The L-shaped block of the main paper's Figs. 6-10, in grey: an L of legs 2 (along `e1`)
+    /// and 1 (along `e2`), 0.5 wide, 0.5 deep (along `e3`), its corner at the body origin.
     LBlock,
 }
 
