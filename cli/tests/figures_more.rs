@@ -228,8 +228,8 @@ fn wl_fig_7_is_the_helix_of_t_par_and_psi() {
 
 #[test]
 fn gam_plot_draws_the_l_block() {
-    // `--body l-block` on an interpolate spec: per frame three grey polylines, the bottom and top
-    // outlines of the L (7 points each, closed) and the zigzag up and down its 6 vertical edges
+    // `--body l-block` on an interpolate spec: per frame three grey polylines, the outlines of
+    // the two L faces (7 points each, closed) and the zigzag along the 6 edges between them
     // (12 points).
     let spec = r#"{"method": "ccm-multiplicative", "poses": [
         {"position": [0, 0, 0], "axis": [0, 0, 1], "angle": 0},

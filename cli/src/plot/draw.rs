@@ -21,28 +21,29 @@ pub enum Body {
     Frames,
     /// The unit cube `[0, 1]³` (Jüttler's figures), its 12 edges in grey.
     Cube,
-    /// The L-shaped block of the main paper's Figs. 6-10, in grey: an L of legs 2 (along `e1`)
-    /// and 1 (along `e2`), 0.5 wide, 0.5 deep (along `e3`), its corner at the body origin.
+    /// The L-shaped block of the main paper's Figs. 6-10, in grey: an L of legs 2 (along `e2`)
+    /// and 1 (along `e3`), 0.5 wide, 0.5 deep (along `e1`), its corner at the body origin.
     LBlock,
 }
 
-/// The L-shaped block's profile in the body's `e1 e2` plane (counter-clockwise, the corner of
-/// the L at the origin), extruded from `z = 0` to `z = 0.5`.
+/// The L-shaped block's profile in the body's `e2 e3` plane (counter-clockwise, the corner of
+/// the L at the origin), extruded along `e1` from `x = 0` to `x = 0.5` (so the L is seen face
+/// on in the `y-z` view of a motion turning about `e1`, as in Figs. 8 and 9).
 pub(crate) const L_BLOCK: [[f64; 2]; 6] = [[0.0, 0.0], [2.0, 0.0], [2.0, 0.5], [0.5, 0.5], [0.5, 1.0], [0.0, 1.0]];
 
-/// The L-shaped block's depth along `e3`.
+/// The L-shaped block's depth along `e1`.
 const L_DEPTH: f64 = 0.5;
 
-/// The L-shaped block moved by frame `f`: the 6 corners of its bottom face (`z = 0`) then the 6
-/// of its top face. A rigid pose is affine, so body point `x` goes to `o + Σ x_k (a_k - o)`
+/// The L-shaped block moved by frame `f`: the 6 corners of its face `x = 0` then the 6 of its
+/// face `x = 0.5`. A rigid pose is affine, so body point `x` goes to `o + Σ x_k (a_k - o)`
 /// with `o` the moved origin and `a_k` the moved `e_k`.
 pub(crate) fn l_block(f: &super::data::Frame) -> [[f64; 3]; 12] {
     let at = |x: [f64; 3]| {
         std::array::from_fn(|i| f.origin[i] + (0..3).map(|k| x[k] * (f.axes[k][i] - f.origin[i])).sum::<f64>())
     };
     std::array::from_fn(|c| {
-        let [x, y] = L_BLOCK[c % 6];
-        at([x, y, if c < 6 { 0.0 } else { L_DEPTH }])
+        let [y, z] = L_BLOCK[c % 6];
+        at([if c < 6 { 0.0 } else { L_DEPTH }, y, z])
     })
 }
 
@@ -54,7 +55,7 @@ const EDGES: [(usize, usize); 12] =
     [(0, 1), (2, 3), (4, 5), (6, 7), (0, 2), (1, 3), (4, 6), (5, 7), (0, 4), (1, 5), (2, 6), (3, 7)];
 
 /// The polylines drawing frame `f` as `body` (frame axes of length `l`). The L-shaped block is
-/// three: its bottom outline, its top outline, and a zigzag up and down its six vertical edges.
+/// three: the outlines of its two L faces and a zigzag to and fro along its six edges between them.
 fn body_lines(f: &super::data::Frame, body: Body, l: f64) -> Vec<(Vec<[f64; 3]>, RGBColor)> {
     match body {
         Body::Frames => (0..3).map(|k| (vec![f.origin, tip(f, k, l)], AXIS_COLOURS[k])).collect(),
@@ -321,4 +322,27 @@ pub(crate) fn render(all: &[Series], view: View, body: Body, title: &str) -> Res
         root.present().map_err(draw_error)?;
     }
     Ok(svg)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{L_BLOCK, L_DEPTH, l_block};
+    use crate::plot::data::Frame;
+
+    #[test]
+    fn the_l_block_moves_rigidly_with_its_frame() {
+        // The frame of x ↦ R x + p, R the quarter turn about e3 (e1 → e2, e2 → -e1, e3 → e3),
+        // p = (1, 2, 3): body point (x, y, z) goes to (1 - y, 2 + x, 3 + z).
+        let p = [1.0, 2.0, 3.0];
+        let f = Frame { t: 0.0, origin: p, axes: [[1.0, 3.0, 3.0], [0.0, 2.0, 3.0], [1.0, 2.0, 4.0]], cube: [p; 8] };
+        let b = l_block(&f);
+        for (c, got) in b.iter().enumerate() {
+            let [y, z] = L_BLOCK[c % 6];
+            let x = if c < 6 { 0.0 } else { L_DEPTH };
+            assert_eq!(*got, [1.0 - y, 2.0 + x, 3.0 + z], "corner {c}");
+        }
+        // An L: six distinct corners per face, two legs of lengths 2 and 1 from the corner.
+        assert_eq!(L_BLOCK[1], [2.0, 0.0]);
+        assert_eq!(L_BLOCK[5], [0.0, 1.0]);
+    }
 }
