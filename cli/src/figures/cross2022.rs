@@ -1,5 +1,6 @@
 //! The main paper's Figs. 6-10 (Sec. 5, Cross, Cripps and Mullineux 2022) from the paper
-//! module's data, drawn with the L-shaped block ([`Body::LBlock`]) at the frame parameters:
+//! module's data, drawn with the L-shaped block
+//! ([`Body::LBlock`](crate::plot::draw::Body::LBlock)) at the frame parameters:
 //!
 //! | file | paper | motion |
 //! |---|---|---|
