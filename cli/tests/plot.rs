@@ -298,7 +298,8 @@ fn figure(all: &[(String, Value)], file: &str) -> Vec<Value> {
 #[allow(clippy::approx_constant)] // the paper's printed values
 fn paper_figures_3_to_5() {
     let all = figures();
-    assert_eq!(all.iter().map(|(f, _)| f.as_str()).collect::<Vec<_>>(), ["fig3.svg", "fig4.svg", "fig5.svg"]);
+    let files: Vec<&str> = all.iter().map(|(f, _)| f.as_str()).collect();
+    assert!(["fig3.svg", "fig4.svg", "fig5.svg"].iter().all(|f| files.contains(f)), "{files:?}");
     // Fig. 3: the speeds jump at the join t = 1 (samples every 0.005). Just before it, the
     // printed Ψ at the end of the arc: |v| = 5.6569, |Ω| = 1.4142 (Sec. 4); on the line, the
     // printed V_i translate by 2 (2 + 1.0472 3t): |v| = 6.2832 exactly, |Ω| = 0.

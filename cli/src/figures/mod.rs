@@ -14,8 +14,11 @@ use motion::paper::sec_4;
 use motion::{AdditiveBezier, Piecewise, Pose};
 use serde_json::{Value, json};
 
+mod cross2022;
+mod wareham_lasenby;
+
 /// Samples per curve.
-const SAMPLES: usize = 401;
+pub(crate) const SAMPLES: usize = 401;
 
 /// The Sec. 4 motion over `[0, 2]` with the line's `V_1` replaced by `V_0 [1 + (Ψ + γ)/6]`
 /// (`γ = g + w ω`) when `gamma` is given, as a series labelled `label`.
@@ -42,7 +45,7 @@ fn sec4(label: &str, gamma: Option<[f64; 2]>) -> Result<Series, CliError> {
 }
 
 /// One figure: file name, title, view, series.
-type Figure = (&'static str, String, View, Vec<Series>);
+pub(crate) type Figure = (&'static str, String, View, Vec<Series>);
 
 /// The figures.
 fn all() -> Result<Vec<Figure>, CliError> {
@@ -55,7 +58,7 @@ fn all() -> Result<Vec<Figure>, CliError> {
         .iter()
         .map(|w| sec4(&format!("gamma = {w} omega"), Some([0.0, *w])))
         .collect::<Result<Vec<_>, _>>()?;
-    Ok(vec![
+    Ok([
         (
             "fig3.svg",
             "Fig. 3: quadrant and straight line (additive cubics), speeds jump at the join".into(),
@@ -64,7 +67,16 @@ fn all() -> Result<Vec<Figure>, CliError> {
         ),
         ("fig4.svg", "Fig. 4: V1 = V0[1 + (Psi + gamma)/6], gamma real: planar".into(), View::Xy, fig4),
         ("fig5.svg", "Fig. 5: gamma a multiple of omega = e123inf: out of the plane (x-z view)".into(), View::Xz, fig5),
-    ])
+    ]
+    .into_iter()
+    .chain(cross2022::figures()?)
+    .chain(wareham_lasenby::figures()?)
+    .collect())
+}
+
+/// How the body is drawn in figure `file`: the L-shaped block in the main paper's Figs. 6-10.
+fn body_of(file: &str) -> Body {
+    if cross2022::L_BLOCK_FILES.contains(&file) { Body::LBlock } else { Body::Frames }
 }
 
 /// Runs `gam figures`: writes the SVGs into `dir` and reports them (or prints their data).
@@ -72,7 +84,7 @@ pub fn figures(dir: &str, json: bool) -> Result<String, CliError> {
     let mut lines = Vec::new();
     let mut data = serde_json::Map::new();
     for (file, title, view, series) in all()? {
-        let svg = render(&series, view, Body::Frames, &title)?;
+        let svg = render(&series, view, body_of(file), &title)?;
         let path = std::path::Path::new(dir).join(file);
         let shown = path.display().to_string();
         std::fs::write(&path, svg).map_err(|e| CliError::usage(format!("cannot write `{shown}`: {e}")))?;

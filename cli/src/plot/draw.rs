@@ -21,6 +21,30 @@ pub enum Body {
     Frames,
     /// The unit cube `[0, 1]³` (Jüttler's figures), its 12 edges in grey.
     Cube,
+    /// The L-shaped block of the main paper's Figs. 6-10, in grey: an L of legs 2 (along `e2`)
+    /// and 1 (along `e3`), 0.5 wide, 0.5 deep (along `e1`), its corner at the body origin.
+    LBlock,
+}
+
+/// The L-shaped block's profile in the body's `e2 e3` plane (counter-clockwise, the corner of
+/// the L at the origin), extruded along `e1` from `x = 0` to `x = 0.5` (so the L is seen face
+/// on in the `y-z` view of a motion turning about `e1`, as in Figs. 8 and 9).
+pub(crate) const L_BLOCK: [[f64; 2]; 6] = [[0.0, 0.0], [2.0, 0.0], [2.0, 0.5], [0.5, 0.5], [0.5, 1.0], [0.0, 1.0]];
+
+/// The L-shaped block's depth along `e1`.
+const L_DEPTH: f64 = 0.5;
+
+/// The L-shaped block moved by frame `f`: the 6 corners of its face `x = 0` then the 6 of its
+/// face `x = 0.5`. A rigid pose is affine, so body point `x` goes to `o + Σ x_k (a_k - o)`
+/// with `o` the moved origin and `a_k` the moved `e_k`.
+pub(crate) fn l_block(f: &super::data::Frame) -> [[f64; 3]; 12] {
+    let at = |x: [f64; 3]| {
+        std::array::from_fn(|i| f.origin[i] + (0..3).map(|k| x[k] * (f.axes[k][i] - f.origin[i])).sum::<f64>())
+    };
+    std::array::from_fn(|c| {
+        let [y, z] = L_BLOCK[c % 6];
+        at([if c < 6 { 0.0 } else { L_DEPTH }, y, z])
+    })
 }
 
 /// The colour of the cube's edges.
@@ -30,11 +54,18 @@ const CUBE: RGBColor = RGBColor(90, 90, 90);
 const EDGES: [(usize, usize); 12] =
     [(0, 1), (2, 3), (4, 5), (6, 7), (0, 2), (1, 3), (4, 6), (5, 7), (0, 4), (1, 5), (2, 6), (3, 7)];
 
-/// The segments drawing frame `f` as `body` (frame axes of length `l`).
-fn body_lines(f: &super::data::Frame, body: Body, l: f64) -> Vec<([f64; 3], [f64; 3], RGBColor)> {
+/// The polylines drawing frame `f` as `body` (frame axes of length `l`). The L-shaped block is
+/// three: the outlines of its two L faces and a zigzag to and fro along its six edges between them.
+fn body_lines(f: &super::data::Frame, body: Body, l: f64) -> Vec<(Vec<[f64; 3]>, RGBColor)> {
     match body {
-        Body::Frames => (0..3).map(|k| (f.origin, tip(f, k, l), AXIS_COLOURS[k])).collect(),
-        Body::Cube => EDGES.iter().map(|(a, b)| (f.cube[*a], f.cube[*b], CUBE)).collect(),
+        Body::Frames => (0..3).map(|k| (vec![f.origin, tip(f, k, l)], AXIS_COLOURS[k])).collect(),
+        Body::Cube => EDGES.iter().map(|(a, b)| (vec![f.cube[*a], f.cube[*b]], CUBE)).collect(),
+        Body::LBlock => {
+            let b = l_block(f);
+            let outline = |o: usize| (0..=6).map(|c| b[o + c % 6]).collect();
+            let zigzag = [0, 6, 7, 1, 2, 8, 9, 3, 4, 10, 11, 5].iter().map(|c| b[*c]).collect();
+            vec![(outline(0), CUBE), (outline(6), CUBE), (zigzag, CUBE)]
+        }
     }
 }
 
@@ -42,7 +73,8 @@ fn body_lines(f: &super::data::Frame, body: Body, l: f64) -> Vec<([f64; 3], [f64
 fn shown_points(all: &[Series], body: Body) -> Vec<[f64; 3]> {
     let paths = all.iter().flat_map(|s| s.paths.iter().flatten().copied());
     let cubes = all.iter().flat_map(|s| s.frames.iter().flat_map(|f| f.cube)).filter(|_| body == Body::Cube);
-    paths.chain(cubes).collect()
+    let blocks = all.iter().flat_map(|s| s.frames.iter().flat_map(l_block)).filter(|_| body == Body::LBlock);
+    paths.chain(cubes).chain(blocks).collect()
 }
 
 /// The path panel's view: a projection on a coordinate plane or a 3-D view.
@@ -223,7 +255,9 @@ fn paths_2d(
         chart.draw_series(dots).map_err(draw_error)?;
         for f in &s.frames {
             let lines = body_lines(f, body, l).into_iter();
-            let lines = lines.map(|(p, q, c)| PathElement::new(vec![(p[a], p[b]), (q[a], q[b])], c.stroke_width(2)));
+            let lines = lines.map(|(ps, c)| {
+                PathElement::new(ps.iter().map(|p| (p[a], p[b])).collect::<Vec<_>>(), c.stroke_width(2))
+            });
             chart.draw_series(lines).map_err(draw_error)?;
         }
     }
@@ -260,7 +294,7 @@ fn paths_3d(area: &DrawingArea<SVGBackend, Shift>, all: &[Series], body: Body) -
         chart.draw_series(dots).map_err(draw_error)?;
         for f in &s.frames {
             let lines = body_lines(f, body, l).into_iter();
-            let lines = lines.map(|(p, q, c)| PathElement::new(vec![to(&p), to(&q)], c.stroke_width(2)));
+            let lines = lines.map(|(ps, c)| PathElement::new(ps.iter().map(to).collect::<Vec<_>>(), c.stroke_width(2)));
             chart.draw_series(lines).map_err(draw_error)?;
         }
     }
@@ -288,4 +322,27 @@ pub(crate) fn render(all: &[Series], view: View, body: Body, title: &str) -> Res
         root.present().map_err(draw_error)?;
     }
     Ok(svg)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{L_BLOCK, L_DEPTH, l_block};
+    use crate::plot::data::Frame;
+
+    #[test]
+    fn the_l_block_moves_rigidly_with_its_frame() {
+        // The frame of x ↦ R x + p, R the quarter turn about e3 (e1 → e2, e2 → -e1, e3 → e3),
+        // p = (1, 2, 3): body point (x, y, z) goes to (1 - y, 2 + x, 3 + z).
+        let p = [1.0, 2.0, 3.0];
+        let f = Frame { t: 0.0, origin: p, axes: [[1.0, 3.0, 3.0], [0.0, 2.0, 3.0], [1.0, 2.0, 4.0]], cube: [p; 8] };
+        let b = l_block(&f);
+        for (c, got) in b.iter().enumerate() {
+            let [y, z] = L_BLOCK[c % 6];
+            let x = if c < 6 { 0.0 } else { L_DEPTH };
+            assert_eq!(*got, [1.0 - y, 2.0 + x, 3.0 + z], "corner {c}");
+        }
+        // An L: six distinct corners per face, two legs of lengths 2 and 1 from the corner.
+        assert_eq!(L_BLOCK[1], [2.0, 0.0]);
+        assert_eq!(L_BLOCK[5], [0.0, 1.0]);
+    }
 }

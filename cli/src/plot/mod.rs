@@ -1,10 +1,11 @@
 //! `gam plot SPEC.json... --out FILE.svg [--samples N] [--view xy|xz|yz|3d] [--frames K]
-//! [--body frames|cube] [--json]`: an SVG of one or more specs, like the paper's Figs. 3-5,
-//! with two panels: the linear speed of every body point and the angular speed against `t`
-//! with the joins marked, and the paths of the body points (projected on a coordinate plane,
-//! or in a 3-D view) with the key points and, with `--frames K`, the moved body's coordinate
-//! frames (or, with `--body cube`, the unit cube) at `K` evenly spaced parameters. Several
-//! specs are overlaid in one figure with a legend.
+//! [--body frames|cube|l-block] [--json]`: an SVG of one or more specs, like the paper's
+//! Figs. 3-5, with two panels: the linear speed of every body point and the angular speed
+//! against `t` with the joins marked, and the paths of the body points (projected on a
+//! coordinate plane, or in a 3-D view) with the key points and, with `--frames K`, the moved
+//! body's coordinate frames (or, with `--body cube`, the unit cube; with `--body l-block`, the
+//! L-shaped block) at `K` evenly spaced parameters. Several specs are overlaid in one figure
+//! with a legend.
 //!
 //! A spec is a `gam interpolate` spec (it has a `method` key: every segment over the whole
 //! parameter range, every `body_points` entry) or a `gam hermite` spec (one segment over

@@ -1,0 +1,106 @@
+//! The main paper's Figs. 6-10 (Sec. 5, Cross, Cripps and Mullineux 2022) from the paper
+//! module's data, drawn with the L-shaped block
+//! ([`Body::LBlock`](crate::plot::draw::Body::LBlock)) at the frame parameters:
+//!
+//! | file | paper | motion |
+//! |---|---|---|
+//! | `fig6.svg` | Fig. 6 | the multiplicative cubic of Sec. 5.1 (`motion::paper::sec_5_1`) |
+//! | `fig7.svg` | Fig. 7 | the additive cubic of the same end conditions |
+//! | `fig8.svg` | Fig. 8 | the multiplicative cubic of Sec. 5.2 (`sec_5_2`) for shape factors `λ0, λ3 ∈ {1, 4}` |
+//! | `fig9.svg` | Fig. 9 | the additive cubic of Sec. 5.2, the same shape factors |
+//! | `fig10.svg` | Fig. 10 | the additive Hermite motion through the nine Jaklič poses (`jaklic`), common `λ = 1, 0.5, 1.5` |
+//!
+//! The body point is the body origin (the corner of the L), the reference point of the
+//! papers' end conditions.
+
+use super::{Figure, SAMPLES};
+use crate::error::CliError;
+use crate::plot::data::{Series, Shape, of_motion};
+use crate::plot::draw::View;
+use motion::paper::{jaklic, sec_5_1, sec_5_2};
+use motion::spec::{HermiteSpec, SpecKind};
+use motion::{Piecewise, SegmentKind};
+
+/// The files drawn with the L-shaped block.
+pub(super) const L_BLOCK_FILES: [&str; 5] = ["fig6.svg", "fig7.svg", "fig8.svg", "fig9.svg", "fig10.svg"];
+
+/// The shape factors `(λ0, λ3)` overlaid in Figs. 8 and 9.
+pub(crate) const SHAPES: [(f64, f64); 4] = [(1.0, 1.0), (4.0, 1.0), (1.0, 4.0), (4.0, 4.0)];
+
+/// The common shape factors overlaid in Fig. 10 (the first carries the blocks).
+pub(crate) const COMMON: [f64; 3] = [1.0, 0.5, 1.5];
+
+fn math<E: std::fmt::Display>(what: &str) -> impl Fn(E) -> CliError + '_ {
+    move |e| CliError::math(format!("{what}: {e}"))
+}
+
+/// One Hermite segment over `[0, 1]` from `spec`, with `frames` blocks.
+fn segment(label: String, spec: &HermiteSpec, frames: usize) -> Result<Series, CliError> {
+    let seg = spec.segment().map_err(math("the Sec. 5 segment"))?;
+    let method = seg.kind().to_string();
+    let motion = seg.into_motion().map_err(math("the Sec. 5 segment"))?;
+    let shape = Shape { label, method, segments: 1, degree: 3, key_times: vec![0.0, 1.0], joins: vec![] };
+    of_motion(shape, &motion, vec![[0.0; 3]], SAMPLES, frames)
+}
+
+/// The Jaklič motion through the nine precision poses (`t = 1..9`), additive, common shape
+/// factor `lambda`, with a block at each precision pose when `blocks`.
+fn jaklic_motion(lambda: f64, blocks: bool) -> Result<Series, CliError> {
+    let segs = jaklic::segments(SegmentKind::Additive, lambda).map_err(math("the Jaklic motion"))?;
+    let segs = segs.into_iter().map(|s| s.into_motion()).collect::<Result<Vec<_>, _>>();
+    let segs = segs.map_err(math("the Jaklic motion"))?;
+    let times: Vec<f64> = (1..=9).map(f64::from).collect();
+    let motion = Piecewise::new(times.clone(), segs).map_err(math("the Jaklic motion"))?;
+    let shape = Shape {
+        label: format!("lambda = {lambda}"),
+        method: "additive".into(),
+        segments: 8,
+        degree: 3,
+        joins: times[1..8].to_vec(),
+        key_times: times,
+    };
+    of_motion(shape, &motion, vec![[0.0; 3]], SAMPLES, if blocks { 9 } else { 0 })
+}
+
+/// Figs. 8 and 9: the Sec. 5.2 segment of `kind` for every `(λ0, λ3)` of [`SHAPES`], the
+/// blocks at the ends (common to all) on the first only.
+fn shapes(kind: SpecKind) -> Result<Vec<Series>, CliError> {
+    let one = |(i, (l0, l3)): (usize, &(f64, f64))| {
+        let label = format!("lambda0 = {l0}, lambda3 = {l3}");
+        segment(label, &sec_5_2::spec(kind, *l0, *l3), if i == 0 { 2 } else { 0 })
+    };
+    SHAPES.iter().enumerate().map(one).collect()
+}
+
+/// The figures of Sec. 5.
+pub(super) fn figures() -> Result<Vec<Figure>, CliError> {
+    let sec51 = |kind| segment(SegmentKind::from(kind).to_string(), &sec_5_1::spec(kind, sec_5_1::PRINTED_ANGLE), 6);
+    let fig10 = COMMON.iter().enumerate().map(|(i, l)| jaklic_motion(*l, i == 0)).collect::<Result<_, _>>()?;
+    Ok(vec![
+        (
+            "fig6.svg",
+            "Fig. 6: multiplicative cubic motion (Sec. 5.1)".into(),
+            View::ThreeD,
+            vec![sec51(SpecKind::Multiplicative)?],
+        ),
+        ("fig7.svg", "Fig. 7: additive cubic motion (Sec. 5.1)".into(), View::ThreeD, vec![sec51(SpecKind::Additive)?]),
+        (
+            "fig8.svg",
+            "Fig. 8: multiplicative cubic motion varying shape factors (y-z plane)".into(),
+            View::Yz,
+            shapes(SpecKind::Multiplicative)?,
+        ),
+        (
+            "fig9.svg",
+            "Fig. 9: additive cubic motion varying shape factors (y-z plane)".into(),
+            View::Yz,
+            shapes(SpecKind::Additive)?,
+        ),
+        (
+            "fig10.svg",
+            "Fig. 10: additive Hermite interpolation through nine precision poses, common shape factors".into(),
+            View::ThreeD,
+            fig10,
+        ),
+    ])
+}

@@ -1,0 +1,96 @@
+//! Wareham–Lasenby's Figs. 5 and 7 (`motion::wareham_lasenby`):
+//!
+//! | file | paper | motion |
+//! |---|---|---|
+//! | `wl_fig5.svg` | Fig. 5 | a) piecewise-linear ([`WlLinear`], Sec. 3.1) and b) quadratic ([`WlQuadratic`], Sec. 3.2) interpolation of the three poses [`FIG5_POSES`] at `t = 0, 1, 2` |
+//! | `wl_fig7.svg` | Fig. 7 | the screw path `R_λ = exp(λB)`, `0 ≤ λ ≤ 1`, of `B` with `ψ = 9π`, `t∥ = 4a + 6b`, `|t⊥| = 1` ([`fig7_generator`]) |
+//!
+//! The paper does not print its three "representative poses"; [`FIG5_POSES`] are ours.
+//! `exp(λB)` turns by `λψ`, more than π, so it is not the linear interpolation of its end poses
+//! (`ℓ` returns the generator of the smallest turn); it is drawn as the piecewise-linear
+//! interpolation of `exp(kB/10)`, `k = 0..10`, whose steps `exp(B/10)` turn by `0.9π < π`, so
+//! `ℓ(exp(B/10)) = B/10` and every piece is `exp(λB)` itself.
+
+use super::{Figure, SAMPLES};
+use crate::error::CliError;
+use crate::plot::data::{Series, Shape, of_motion};
+use crate::plot::draw::View;
+use motion::Pose;
+use motion::wareham_lasenby::{Generator, GeneratorParts, WlLinear, WlQuadratic, to_pose};
+use std::f64::consts::PI;
+
+/// The three key poses of Fig. 5 at `t = 0, 1, 2`: (position, rotation axis, angle).
+pub(crate) const FIG5_POSES: [([f64; 3], [f64; 3], f64); 3] = [
+    ([0.0, 0.0, 0.0], [0.0, 0.0, 1.0], 0.0),
+    ([4.0, 3.0, 0.0], [0.0, 0.0, 1.0], 1.5),
+    ([8.0, 0.0, 1.0], [1.0, 1.0, 1.0], 1.2),
+];
+
+/// The parts of Fig. 7's generator: `ψ = 9π` about `e3` (the plane of `P` is `e1 e2`, so
+/// `a = e1`, `b = e2`), `t∥ = 4 e1 + 6 e2`, `t⊥ = e3`.
+pub(crate) fn fig7_parts() -> GeneratorParts<f64> {
+    GeneratorParts { psi: 9.0 * PI, axis: [0.0, 0.0, 1.0], t_par: [4.0, 6.0, 0.0], t_perp: [0.0, 0.0, 1.0] }
+}
+
+/// Fig. 7's generator `B = (ψ/2) P + (t∥ + t⊥) n/2`.
+pub(crate) fn fig7_generator() -> Result<Generator<f64>, CliError> {
+    Generator::from_parts(&fig7_parts()).map_err(|e| CliError::math(format!("the W-L Fig. 7 generator: {e}")))
+}
+
+fn math<E: std::fmt::Display>(e: E) -> CliError {
+    CliError::math(format!("a Wareham-Lasenby figure: {e}"))
+}
+
+/// The series of a W-L motion through key poses at `times`, its joins the inner times when
+/// `joins` (the pieces of Fig. 7 are one smooth screw motion: no joins).
+fn series<M: motion::MapScalar<f64, motion::algebra_core::Jet<motion::algebra_core::Jet<f64>>>>(
+    label: &str,
+    motion: &M,
+    times: Vec<f64>,
+    (frames, joins): (usize, bool),
+) -> Result<Series, CliError> {
+    let shape = Shape {
+        label: label.into(),
+        method: label.into(),
+        segments: times.len() - 1,
+        degree: 0,
+        joins: if joins { times[1..times.len() - 1].to_vec() } else { vec![] },
+        key_times: times,
+    };
+    of_motion(shape, motion, vec![[0.0; 3]], SAMPLES, frames)
+}
+
+/// W-L Figs. 5 and 7.
+pub(super) fn figures() -> Result<Vec<Figure>, CliError> {
+    let poses = FIG5_POSES
+        .iter()
+        .map(|(p, a, phi)| Pose::from_axis_angle_translation(a, phi, p).map_err(math))
+        .collect::<Result<Vec<_>, _>>()?;
+    let times = vec![0.0, 1.0, 2.0];
+    let linear = WlLinear::new(&poses, &times).map_err(math)?;
+    let quadratic = WlQuadratic::new(&poses, &times).map_err(math)?;
+    let fig5 = vec![
+        series("a) piecewise linear", &linear, times.clone(), (5, true))?,
+        series("b) quadratic", &quadratic, times, (5, true))?,
+    ];
+    let b = fig7_generator()?;
+    let keys = (0..=10).map(|k| b.scale(&(f64::from(k) / 10.0)).exp().map(|r| to_pose(&r)));
+    let keys = keys.collect::<Result<Vec<_>, _>>().map_err(math)?;
+    let lambdas: Vec<f64> = (0..=10).map(|k| f64::from(k) / 10.0).collect();
+    let screw = WlLinear::new(&keys, &lambdas).map_err(math)?;
+    let fig7 = vec![series("exp(lambda B)", &screw, lambdas, (11, false))?];
+    Ok(vec![
+        (
+            "wl_fig5.svg",
+            "Wareham-Lasenby Fig. 5: a) piecewise-linear and b) quadratic interpolation of three poses".into(),
+            View::Xy,
+            fig5,
+        ),
+        (
+            "wl_fig7.svg",
+            "Wareham-Lasenby Fig. 7: the screw path of exp(lambda B), t_par = 4a + 6b, psi = 9 pi, |t_perp| = 1".into(),
+            View::ThreeD,
+            fig7,
+        ),
+    ])
+}
