@@ -205,7 +205,7 @@ enum Command {
         #[arg(value_name = "SPEC.json", required = true)]
         specs: Vec<String>,
     },
-    /// Regenerate the main paper's Figs. 3-5 as SVG files in DIR.
+    /// Regenerate the papers' figures (main paper Figs. 3-10, Wareham–Lasenby Figs. 5 and 7, Jüttler Figs. 1-6) as SVG files in DIR.
     Figures {
         /// The directory to write fig3.svg, fig4.svg, fig5.svg into.
         #[arg(long, value_name = "DIR")]

@@ -1,9 +1,11 @@
-//! `gam figures --out DIR [--json]`: the main paper's Figs. 3-5 (Sec. 4) redrawn from the
-//! paper module's data (`motion::paper::sec_4`) by the drawing of `gam plot`
-//! ([`crate::plot::draw::render`]): the two-segment additive motion (a quadrant, then a line)
-//! of Fig. 3, its variants with `V_1 = V_0 [1 + (Ψ + γ)/6]` for real `γ = 0, ±5, ±10`
-//! (Fig. 4, planar) and for `γ = 0, ±20ω, ±40ω` with `ω = e123inf` (Fig. 5, out of the
-//! plane, viewed along the y-axis). The body point is the body origin (the block's centre).
+//! `gam figures --out DIR [--json]`: the papers' figures redrawn from the library's
+//! constructions by the drawing of `gam plot` ([`crate::plot::draw::render`]), listed with what
+//! to look for in docs/figures.md. This file: the main paper's Figs. 3-5 (Sec. 4): the
+//! two-segment additive motion (a quadrant, then a line) of Fig. 3, its variants with
+//! `V_1 = V_0 [1 + (Ψ + γ)/6]` for real `γ = 0, ±5, ±10` (Fig. 4, planar) and for
+//! `γ = 0, ±20ω, ±40ω` with `ω = e123inf` (Fig. 5, out of the plane, viewed along the y-axis);
+//! the body point is the body origin (the block's centre). [`cross2022`]: Figs. 6-10;
+//! [`wareham_lasenby`]: W-L Figs. 5 and 7; [`juttler`]: Jüttler's Figs. 1-6.
 
 mod juttler;
 
@@ -79,23 +81,25 @@ fn body_of(file: &str) -> Body {
     if cross2022::L_BLOCK_FILES.contains(&file) { Body::LBlock } else { Body::Frames }
 }
 
+/// Writes one figure's SVG into `dir` and says so.
+fn write(dir: &str, file: &str, title: &str, svg: String) -> Result<String, CliError> {
+    let path = std::path::Path::new(dir).join(file);
+    let shown = path.display().to_string();
+    std::fs::write(&path, svg).map_err(|e| CliError::usage(format!("cannot write `{shown}`: {e}")))?;
+    Ok(format!("wrote {shown}: {title}"))
+}
+
 /// Runs `gam figures`: writes the SVGs into `dir` and reports them (or prints their data).
 pub fn figures(dir: &str, json: bool) -> Result<String, CliError> {
     let mut lines = Vec::new();
     let mut data = serde_json::Map::new();
     for (file, title, view, series) in all()? {
         let svg = render(&series, view, body_of(file), &title)?;
-        let path = std::path::Path::new(dir).join(file);
-        let shown = path.display().to_string();
-        std::fs::write(&path, svg).map_err(|e| CliError::usage(format!("cannot write `{shown}`: {e}")))?;
-        lines.push(format!("wrote {shown}: {title}"));
+        lines.push(write(dir, file, &title, svg)?);
         data.insert(file.to_string(), json!({"title": title, "series": series}));
     }
     for (file, title, svg, value) in juttler::all()? {
-        let path = std::path::Path::new(dir).join(file);
-        let shown = path.display().to_string();
-        std::fs::write(&path, svg).map_err(|e| CliError::usage(format!("cannot write `{shown}`: {e}")))?;
-        lines.push(format!("wrote {shown}: {title}"));
+        lines.push(write(dir, file, &title, svg)?);
         data.insert(file.to_string(), value);
     }
     if json {
