@@ -361,3 +361,68 @@ fn the_unit_cube_at_the_frames() {
     // 12 edges per frame instead of 3 axes.
     assert_eq!(check_svg(&svg), expected_series(&data) + 9 * 3);
 }
+
+/// `gam interpolate --json` of `method` with [`POINTS`] added: the control-data form.
+fn control_form(method: &str) -> String {
+    let s = TempFile::new(&format!("ctl-{method}.json"), &spec(method, true));
+    let mut out: Value = serde_json::from_str(&ok(&["interpolate", "--json", s.path()])).unwrap();
+    out["body_points"] = serde_json::json!(POINTS);
+    out.to_string()
+}
+
+/// Explicit control poses (the segments `gam interpolate --json` prints) draw the same motion
+/// as the spec they came from, and pass through the key poses (Rodrigues, independent).
+#[test]
+fn control_poses_plot_the_same_motion_as_their_spec() {
+    for method in ["ccm-additive", "ccm-multiplicative", "juttler-q-motion", "juttler-spline"] {
+        let from_spec = TempFile::new(&format!("cs-{method}.json"), &spec(method, true));
+        let from_control = TempFile::new(&format!("cc-{method}.json"), &control_form(method));
+        let (a, _) = plot(&format!("cs-{method}"), &[from_spec.path(), "--samples", "301"]);
+        let (b, svg) = plot(&format!("cc-{method}"), &[from_control.path(), "--samples", "301", "--frames", "3"]);
+        let (a, b) = (&a["series"][0], &b["series"][0]);
+        assert_eq!(nums(&a["t"]), nums(&b["t"]), "{method}");
+        for (pa, pb) in a["paths"].as_array().unwrap().iter().zip(b["paths"].as_array().unwrap()) {
+            for (x, y) in pa.as_array().unwrap().iter().zip(pb.as_array().unwrap()) {
+                assert!(dist(&point(x), &point(y)) < 1e-9, "{method}: {x} vs {y}");
+            }
+        }
+        for (k, t) in [0.0, 1.0, 3.0].iter().enumerate() {
+            let i = nums(&b["t"]).iter().position(|s| (s - t).abs() < 1e-9).expect("a sample at the key");
+            for (j, x) in POINTS.iter().enumerate() {
+                let p = point(&b["paths"][j][i]);
+                assert!(dist(&p, &key_point(k, x)) < 1e-9, "{method}: key {k}, point {j}: {p:?}");
+            }
+        }
+        assert_eq!(nums(&b["joins"]), nums(&a["joins"]), "{method}");
+        assert_eq!(check_svg(&svg), expected_series(&serde_json::json!({"series": [b]})), "{method}");
+    }
+}
+
+#[test]
+fn control_data_errors_are_one_line() {
+    // key-pose segments (W-L) cannot be redrawn from their control data
+    let wl = TempFile::new("ctl-wl.json", &control_form("wl-linear"));
+    let out = TempFile::empty("ctl-wl.svg");
+    let msg = fails(&["plot", "--out", out.path(), wl.path()], 2);
+    assert!(msg.contains("cannot be drawn from control data"), "{msg}");
+    // mixed representations, and a gap between segments
+    let motor = r#"{"1": 1}"#;
+    let seg = |t0: f64, t1: f64, r: &str| {
+        format!(r#"{{"t0": {t0}, "t1": {t1}, "representation": "{r}", "control_poses": [{motor}, {motor}]}}"#)
+    };
+    let mixed = format!(
+        r#"{{"segments": [{}, {}]}}"#,
+        seg(0.0, 1.0, "additive-bezier"),
+        seg(1.0, 2.0, "multiplicative-bezier")
+    );
+    let mixed = TempFile::new("ctl-mixed.json", &mixed);
+    assert!(fails(&["plot", "--out", out.path(), mixed.path()], 2).contains("one kind per plot"));
+    let gap =
+        format!(r#"{{"segments": [{}, {}]}}"#, seg(0.0, 1.0, "additive-bezier"), seg(1.5, 2.0, "additive-bezier"));
+    let gap = TempFile::new("ctl-gap.json", &gap);
+    assert!(fails(&["plot", "--out", out.path(), gap.path()], 2).contains("no gaps"));
+    let singular =
+        r#"{"segments": [{"t0": 0, "t1": 1, "representation": "additive-bezier", "control_poses": [{"e1inf": 1}]}]}"#;
+    let singular = TempFile::new("ctl-singular.json", singular);
+    assert!(fails(&["plot", "--out", out.path(), singular.path()], 2).contains("singular"));
+}

@@ -109,7 +109,14 @@ fn read_json(path: &str) -> Result<Value, CliError> {
 
 /// The series of the spec at `path`: `n ≥ 2` samples and `frames` body frames.
 pub(crate) fn series(path: &str, n: usize, frames: usize) -> Result<Series, CliError> {
-    if read_json(path)?.get("method").is_some() { interpolated(path, n, frames) } else { hermite(path, n, frames) }
+    let spec = read_json(path)?;
+    if spec.get("segments").is_some() {
+        super::control::series(path, &spec, file_name(path), n, frames)
+    } else if spec.get("method").is_some() {
+        interpolated(path, n, frames)
+    } else {
+        hermite(path, n, frames)
+    }
 }
 
 /// A `gam interpolate` spec over `[t_0, t_m]`.

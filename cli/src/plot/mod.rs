@@ -9,10 +9,12 @@
 //!
 //! A spec is a `gam interpolate` spec (it has a `method` key: every segment over the whole
 //! parameter range, every `body_points` entry) or a `gam hermite` spec (one segment over
-//! `[0, 1]`, its `body_point`). The data are computed first ([`data::Series`], printed by
+//! `[0, 1]`, its `body_point`), or explicit control data: a `segments` list as
+//! `gam interpolate --json` prints it ([`control`]). The data are computed first ([`data::Series`], printed by
 //! `--json`), then drawn ([`draw::render`]) into a string, then written to FILE (so an
 //! unwritable path is one `error:` line, exit 2, and nothing is left half written).
 
+pub(crate) mod control;
 pub(crate) mod data;
 pub(crate) mod draw;
 pub(crate) mod surface;
