@@ -4,13 +4,15 @@
 //! that uses the macro, or vendors the emitted file, depends on `algebra-core` (without its
 //! `rug` feature if it wants no GMP).
 
-use crate::plan::{BinaryKernel, Plan, Ratio, Term, UnaryKernel, unary_name};
+use crate::plan::{BinaryKernel, Plan, Term, UnaryKernel, unary_name};
 use algebra_core::basis::Basis;
 use algebra_core::rational::format_rational;
 use algebra_core::tables::Product;
 use proc_macro2::{Ident, Span, TokenStream};
 use quote::{format_ident, quote};
 use std::collections::BTreeMap;
+
+pub(super) use crate::sums::{SumTerm, chunked_sum, sum, tree_sum};
 
 /// The trait and method of each product.
 pub(super) fn product_trait(p: Product) -> (&'static str, &'static str) {
@@ -62,113 +64,7 @@ pub(crate) fn snake(name: &str) -> String {
     out
 }
 
-/// `T::from_ratio(n, d)`.
-fn constant(c: Ratio) -> TokenStream {
-    let (n, d) = (c.0, c.1);
-    quote!(T::from_ratio(#n, #d))
-}
-
-/// One summand: coefficient, operand expression, whether the operand may be moved.
-pub(super) type SumTerm = (Ratio, TokenStream, bool);
-
-/// A sum of `(coefficient, operand)` terms, each operand an expression of type `T` that may be
-/// used by reference (`&operand`). `movable` says the operand may be moved when it comes
-/// first with coefficient 1.
-pub(super) fn sum(mut terms: Vec<SumTerm>) -> TokenStream {
-    if terms.is_empty() {
-        return quote!(T::zero());
-    }
-    // start with a positive term if there is one, to avoid a negation
-    if let Some(p) = terms.iter().position(|(c, _, _)| c.0 > 0) {
-        terms.swap(0, p);
-    }
-    let mut it = terms.into_iter();
-    let (c, x, movable) = it.next().expect("non-empty");
-    let mut acc = match c {
-        (1, 1) if movable => x,
-        (1, 1) => quote!(::core::clone::Clone::clone(&#x)),
-        (-1, 1) => quote!(::algebra_core::Ring::neg_ref(&#x)),
-        c => {
-            let k = constant(c);
-            quote!(#k * &#x)
-        }
-    };
-    for (c, x, _) in it {
-        acc = match c {
-            (1, 1) => quote!(#acc + &#x),
-            (-1, 1) => quote!(#acc - &#x),
-            (n, d) if n < 0 => {
-                let k = constant((-n, d));
-                quote!(#acc - #k * &#x)
-            }
-            c => {
-                let k = constant(c);
-                quote!(#acc + #k * &#x)
-            }
-        };
-    }
-    acc
-}
-
-/// [`sum`] as a balanced tree (`(a + b) + (c - d)`) rather than a chain, so its dependency
-/// depth is `log2` of the term count. Used by the two-stage versor actions, whose second stage
-/// sums products of the first stage's sums: measured in the same run (docs/performance.md),
-/// the tree made the conformal point action 10% faster and the pga3 point action 12% faster,
-/// while the chain stays faster for the motor product (so binary kernels keep [`sum`]). Each
-/// partial sum carries its sign, so no term is negated on its own and the result is negated
-/// at most once.
-pub(super) fn tree_sum(terms: Vec<SumTerm>) -> TokenStream {
-    if terms.is_empty() {
-        return quote!(T::zero());
-    }
-    let part = tree(terms);
-    match (part.neg, part.owned) {
-        (true, _) => {
-            let e = part.e;
-            quote!(::algebra_core::Ring::neg_ref(&#e))
-        }
-        (false, true) => part.e,
-        (false, false) => {
-            let e = part.e;
-            quote!(::core::clone::Clone::clone(&#e))
-        }
-    }
-}
-
-/// A signed partial sum: `±e`, and whether `e` is an owned `T` (else a place to borrow).
-struct Part {
-    e: TokenStream,
-    neg: bool,
-    owned: bool,
-}
-
-fn tree(mut terms: Vec<SumTerm>) -> Part {
-    if terms.len() == 1 {
-        let (c, x, movable) = terms.pop().expect("one term");
-        return match c {
-            (1, 1) | (-1, 1) => Part { e: x, neg: c.0 < 0, owned: movable },
-            (n, d) => {
-                let k = constant((n.abs(), d));
-                Part { e: quote!((#k * &#x)), neg: n < 0, owned: true }
-            }
-        };
-    }
-    let right = terms.split_off(terms.len() / 2);
-    let (l, r) = (tree(terms), tree(right));
-    // the receiver of `+`/`-` must be owned; addition commutes, and signs travel with the parts
-    let (recv, arg) = match (l.owned, r.owned) {
-        (true, _) => (l, r),
-        (false, true) => (r, l),
-        (false, false) => {
-            let e = l.e;
-            (Part { e: quote!(::core::clone::Clone::clone(&#e)), neg: l.neg, owned: true }, r)
-        }
-    };
-    let (re, ae) = (recv.e, arg.e);
-    let e = if recv.neg == arg.neg { quote!((#re + &#ae)) } else { quote!((#re - &#ae)) };
-    Part { e, neg: recv.neg, owned: true }
-}
-
+/// The fields, element names and orientation signs of every type of a plan.
 pub(super) struct Names {
     pub(super) types: Vec<Ident>,
     pub(super) fields: Vec<Vec<Ident>>,
@@ -692,14 +588,16 @@ fn kernel_body(names: &Names, k: &BinaryKernel) -> TokenStream {
         .outputs
         .iter()
         .map(|terms| {
-            sum(terms
-                .iter()
-                .map(|t| {
-                    let p = format_ident!("p{}_{}", t.lhs, t.rhs);
-                    let movable = uses[&(t.lhs, t.rhs)] == 1 && moved.insert((t.lhs, t.rhs));
-                    (t.coef, quote!(#p), movable)
-                })
-                .collect())
+            chunked_sum(
+                terms
+                    .iter()
+                    .map(|t| {
+                        let p = format_ident!("p{}_{}", t.lhs, t.rhs);
+                        let movable = uses[&(t.lhs, t.rhs)] == 1 && moved.insert((t.lhs, t.rhs));
+                        (t.coef, quote!(#p), movable)
+                    })
+                    .collect(),
+            )
         })
         .collect();
     quote! {

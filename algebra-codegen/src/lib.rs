@@ -39,6 +39,7 @@ pub mod plan;
 pub mod size;
 pub mod spec;
 pub mod standalone;
+mod sums;
 pub mod unit;
 mod value;
 pub mod versor;

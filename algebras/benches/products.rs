@@ -82,6 +82,10 @@ struct Versor {
     pga_units: Vec<pga3::Motor<f64>>,
     cn_bivectors: Vec<cga_null::PoseBivector<f64>>,
     cn_units: Vec<cga_null::Motor<f64>>,
+    /// `cga` (R^{4,1}): general even elements, rigid-motion generators and their motors.
+    cga_motors: Vec<cga::Motor<f64>>,
+    cga_bivectors: Vec<cga::Bivector<f64>>,
+    cga_units: Vec<cga::Motor<f64>>,
     pga_points: Vec<pga3::Trivector<f64>>,
     motors: Vec<g123inf::Motor<f64>>,
     bivectors: Vec<g123inf::Bivector<f64>>,
@@ -150,6 +154,9 @@ fn versor_data() -> Versor {
         pga_units: Vec::new(),
         cn_bivectors: Vec::new(),
         cn_units: Vec::new(),
+        cga_motors: Vec::new(),
+        cga_bivectors: Vec::new(),
+        cga_units: Vec::new(),
         pga_points: Vec::new(),
         motors: Vec::new(),
         bivectors: Vec::new(),
@@ -180,6 +187,12 @@ fn versor_data() -> Versor {
         let mut nb = cga_null::PoseBivector::zero();
         (nb.e12, nb.e13, nb.e23, nb.e1inf, nb.e2inf, nb.e3inf) = (c[1], c[2], c[3], c[4], c[5], c[6]);
         d.cn_units.push(nb.exp());
+        d.cga_motors.push(cga::Motor::from_array([(); 16].map(|_| rng.symmetric())));
+        let mut gb = cga::Bivector::zero();
+        (gb.e12, gb.e13, gb.e23) = (c[1], c[2], c[3]);
+        (gb.e14, gb.e24, gb.e34, gb.e15, gb.e25, gb.e35) = (c[4], c[5], c[6], c[4], c[5], c[6]);
+        d.cga_units.push(gb.exp().expect("finite"));
+        d.cga_bivectors.push(gb);
         d.cn_bivectors.push(nb);
         d.bivectors.push(b);
         let (r, t) = (Quaternion::new(c[0], c[1], c[2], c[3]), Quaternion::new(c[4], c[5], c[6], c[7]));
@@ -268,6 +281,7 @@ pairs!(pga_apply_point, pga_motors, pga_points, |s, p| s.apply(p));
 pairs!(pga_apply_unit_point, pga_units, pga_points, |s, p| s.apply_unit(p));
 pairs!(na_unit_dq_point, unit_dq, points, |s, p| s.transform_point(p));
 pairs!(na_iso_point, iso, points, |s, p| s.transform_point(p));
+pairs!(cga_motor_product, cga_motors, cga_motors, |x, y| x * y);
 
 fn motor_exp(d: &Data, n: usize) {
     for b in &d.versor.bivectors[..n] {
@@ -296,6 +310,30 @@ fn cn_exp(d: &Data, n: usize) {
 fn cn_log_unit(d: &Data, n: usize) {
     for m in &d.versor.cn_units[..n] {
         black_box(black_box(m).log_unit().ok());
+    }
+}
+
+fn cga_exp(d: &Data, n: usize) {
+    for b in &d.versor.cga_bivectors[..n] {
+        black_box(black_box(b).exp().ok());
+    }
+}
+
+fn cga_exp_series(d: &Data, n: usize) {
+    for b in &d.versor.cga_bivectors[..n] {
+        black_box(black_box(b).to_multivector().exp().ok());
+    }
+}
+
+fn cga_log(d: &Data, n: usize) {
+    for m in &d.versor.cga_units[..n] {
+        black_box(black_box(m).log().ok());
+    }
+}
+
+fn cga_log_series(d: &Data, n: usize) {
+    for m in &d.versor.cga_units[..n] {
+        black_box(black_box(m).to_multivector().log().ok());
     }
 }
 
@@ -458,6 +496,18 @@ fn versor_report() {
         let kernels: Vec<(&str, Kernel, usize)> = kernels.iter().map(|&(n, k)| (n, k, BATCH)).collect();
         interleaved(title, &kernels, 2000, 1);
     }
+    interleaved(
+        "closed-form rigid motions in R^{4,1} (cga, f64)",
+        &[
+            ("cga Motor * Motor (16 x 16)", cga_motor_product, BATCH),
+            ("cga Bivector::exp (rigid motions)", cga_exp, BATCH),
+            ("cga runtime series exp", cga_exp_series, RUNTIME_BATCH),
+            ("cga Motor::log (rigid motions)", cga_log, BATCH),
+            ("cga runtime series log", cga_log_series, RUNTIME_BATCH),
+        ],
+        200,
+        1,
+    );
 }
 
 fn config() -> Criterion {

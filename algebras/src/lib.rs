@@ -71,5 +71,6 @@ pub mod generated;
 pub use generated::{cga, cga_null, g3, g123inf, pga3};
 
 pub mod closed_form;
+pub mod closed_form_cga;
 pub mod dual_quaternion;
 pub use dual_quaternion::DualQuaternion;

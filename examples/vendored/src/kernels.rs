@@ -3400,14 +3400,14 @@ impl<T: self::Ring> self::GeometricProduct<Multivector<T>> for Multivector<T> {
         let p7_6 = self.e123.mul_ref(&rhs.e23);
         let p7_7 = self.e123.mul_ref(&rhs.e123);
         Multivector {
-            scalar: p0_0 + &p1_1 + &p2_2 + &p3_3 - &p4_4 - &p5_5 - &p6_6 - &p7_7,
-            e1: p0_1 + &p1_0 - &p2_4 - &p3_5 + &p4_2 + &p5_3 - &p6_7 - &p7_6,
-            e2: p0_2 + &p1_4 + &p2_0 - &p3_6 - &p4_1 + &p5_7 + &p6_3 + &p7_5,
-            e3: p0_3 + &p1_5 + &p2_6 + &p3_0 - &p4_7 - &p5_1 - &p6_2 - &p7_4,
-            e12: p0_4 + &p1_2 - &p2_1 + &p3_7 + &p4_0 - &p5_6 + &p6_5 + &p7_3,
-            e13: p0_5 + &p1_3 - &p2_7 - &p3_1 + &p4_6 + &p5_0 - &p6_4 - &p7_2,
-            e23: p0_6 + &p1_7 + &p2_3 - &p3_2 - &p4_5 + &p5_4 + &p6_0 + &p7_1,
-            e123: p0_7 + &p1_6 - &p2_5 + &p3_4 + &p4_3 - &p5_2 + &p6_1 + &p7_0,
+            scalar: p0_0 + &p1_1 + &p2_2 + &p3_3 - &(p4_4 + &p5_5 + &p6_6 + &p7_7),
+            e1: p0_1 + &p1_0 - &p2_4 - &p3_5 + &(p4_2 + &p5_3 - &p6_7 - &p7_6),
+            e2: p0_2 + &p1_4 + &p2_0 - &p3_6 - &(p4_1 - &p5_7 - &p6_3 - &p7_5),
+            e3: p0_3 + &p1_5 + &p2_6 + &p3_0 - &(p4_7 + &p5_1 + &p6_2 + &p7_4),
+            e12: p0_4 + &p1_2 - &p2_1 + &p3_7 + &(p4_0 - &p5_6 + &p6_5 + &p7_3),
+            e13: p0_5 + &p1_3 - &p2_7 - &p3_1 + &(p4_6 + &p5_0 - &p6_4 - &p7_2),
+            e23: p0_6 + &p1_7 + &p2_3 - &p3_2 - &(p4_5 - &p5_4 - &p6_0 - &p7_1),
+            e123: p0_7 + &p1_6 - &p2_5 + &p3_4 + &(p4_3 - &p5_2 + &p6_1 + &p7_0),
         }
     }
 }
@@ -4180,7 +4180,7 @@ impl<T: self::Ring> self::OuterProduct<Multivector<T>> for Multivector<T> {
             e12: p0_4 + &p1_2 - &p2_1 + &p4_0,
             e13: p0_5 + &p1_3 - &p3_1 + &p5_0,
             e23: p0_6 + &p2_3 - &p3_2 + &p6_0,
-            e123: p0_7 + &p1_6 - &p2_5 + &p3_4 + &p4_3 - &p5_2 + &p6_1 + &p7_0,
+            e123: p0_7 + &p1_6 - &p2_5 + &p3_4 + &(p4_3 - &p5_2 + &p6_1 + &p7_0),
         }
     }
 }
@@ -4921,7 +4921,7 @@ impl<T: self::Ring> self::LeftContraction<Multivector<T>> for Multivector<T> {
         let p6_7 = self.e23.mul_ref(&rhs.e123);
         let p7_7 = self.e123.mul_ref(&rhs.e123);
         Multivector {
-            scalar: p0_0 + &p1_1 + &p2_2 + &p3_3 - &p4_4 - &p5_5 - &p6_6 - &p7_7,
+            scalar: p0_0 + &p1_1 + &p2_2 + &p3_3 - &(p4_4 + &p5_5 + &p6_6 + &p7_7),
             e1: p0_1 - &p2_4 - &p3_5 - &p6_7,
             e2: p0_2 + &p1_4 - &p3_6 + &p5_7,
             e3: p0_3 + &p1_5 + &p2_6 - &p4_7,
@@ -5309,7 +5309,7 @@ impl<T: self::Ring> self::RightContraction<Multivector<T>> for Multivector<T> {
         let p7_6 = self.e123.mul_ref(&rhs.e23);
         let p7_7 = self.e123.mul_ref(&rhs.e123);
         Multivector {
-            scalar: p0_0 + &p1_1 + &p2_2 + &p3_3 - &p4_4 - &p5_5 - &p6_6 - &p7_7,
+            scalar: p0_0 + &p1_1 + &p2_2 + &p3_3 - &(p4_4 + &p5_5 + &p6_6 + &p7_7),
             e1: p1_0 + &p4_2 + &p5_3 - &p7_6,
             e2: p2_0 - &p4_1 + &p6_3 + &p7_5,
             e3: p3_0 - &p5_1 - &p6_2 - &p7_4,
@@ -5548,7 +5548,7 @@ impl<T: self::Ring> self::ScalarProduct<Multivector<T>> for Multivector<T> {
         let p6_6 = self.e23.mul_ref(&rhs.e23);
         let p7_7 = self.e123.mul_ref(&rhs.e123);
         Rotor {
-            scalar: p0_0 + &p1_1 + &p2_2 + &p3_3 - &p4_4 - &p5_5 - &p6_6 - &p7_7,
+            scalar: p0_0 + &p1_1 + &p2_2 + &p3_3 - &(p4_4 + &p5_5 + &p6_6 + &p7_7),
             e12: T::zero(),
             e13: T::zero(),
             e23: T::zero(),
@@ -6252,7 +6252,7 @@ impl<T: self::Ring> self::RegressiveProduct<Multivector<T>> for Multivector<T> {
         let p7_6 = self.e123.mul_ref(&rhs.e23);
         let p7_7 = self.e123.mul_ref(&rhs.e123);
         Multivector {
-            scalar: p0_7 + &p1_6 - &p2_5 + &p3_4 + &p4_3 - &p5_2 + &p6_1 + &p7_0,
+            scalar: p0_7 + &p1_6 - &p2_5 + &p3_4 + &(p4_3 - &p5_2 + &p6_1 + &p7_0),
             e1: p1_7 + &p4_5 - &p5_4 + &p7_1,
             e2: p2_7 + &p4_6 - &p6_4 + &p7_2,
             e3: p3_7 + &p5_6 - &p6_5 + &p7_3,
@@ -7073,14 +7073,14 @@ impl<T: self::Ring> self::AnticommutatorProduct<Multivector<T>> for Multivector<
         let p7_6 = self.e123.mul_ref(&rhs.e23);
         let p7_7 = self.e123.mul_ref(&rhs.e123);
         Multivector {
-            scalar: p0_0 + &p1_1 + &p2_2 + &p3_3 - &p4_4 - &p5_5 - &p6_6 - &p7_7,
+            scalar: p0_0 + &p1_1 + &p2_2 + &p3_3 - &(p4_4 + &p5_5 + &p6_6 + &p7_7),
             e1: p0_1 + &p1_0 - &p6_7 - &p7_6,
             e2: p0_2 + &p2_0 + &p5_7 + &p7_5,
             e3: p0_3 + &p3_0 - &p4_7 - &p7_4,
             e12: p0_4 + &p3_7 + &p4_0 + &p7_3,
             e13: p0_5 - &p2_7 + &p5_0 - &p7_2,
             e23: p0_6 + &p1_7 + &p6_0 + &p7_1,
-            e123: p0_7 + &p1_6 - &p2_5 + &p3_4 + &p4_3 - &p5_2 + &p6_1 + &p7_0,
+            e123: p0_7 + &p1_6 - &p2_5 + &p3_4 + &(p4_3 - &p5_2 + &p6_1 + &p7_0),
         }
     }
 }
@@ -7885,9 +7885,9 @@ for Multivector<T> {
         let p7_5 = self.e123.mul_ref(&rhs.e13);
         let p7_6 = self.e123.mul_ref(&rhs.e23);
         Vector {
-            e1: p0_1 + &p1_0 - &p2_4 - &p3_5 + &p4_2 + &p5_3 - &p6_7 - &p7_6,
-            e2: p0_2 + &p1_4 + &p2_0 - &p3_6 - &p4_1 + &p5_7 + &p6_3 + &p7_5,
-            e3: p0_3 + &p1_5 + &p2_6 + &p3_0 - &p4_7 - &p5_1 - &p6_2 - &p7_4,
+            e1: p0_1 + &p1_0 - &p2_4 - &p3_5 + &(p4_2 + &p5_3 - &p6_7 - &p7_6),
+            e2: p0_2 + &p1_4 + &p2_0 - &p3_6 - &(p4_1 - &p5_7 - &p6_3 - &p7_5),
+            e3: p0_3 + &p1_5 + &p2_6 + &p3_0 - &(p4_7 + &p5_1 + &p6_2 + &p7_4),
         }
     }
 }
@@ -7928,10 +7928,10 @@ for Multivector<T> {
         let p7_3 = self.e123.mul_ref(&rhs.e3);
         let p7_7 = self.e123.mul_ref(&rhs.e123);
         Rotor {
-            scalar: p0_0 + &p1_1 + &p2_2 + &p3_3 - &p4_4 - &p5_5 - &p6_6 - &p7_7,
-            e12: p0_4 + &p1_2 - &p2_1 + &p3_7 + &p4_0 - &p5_6 + &p6_5 + &p7_3,
-            e13: p0_5 + &p1_3 - &p2_7 - &p3_1 + &p4_6 + &p5_0 - &p6_4 - &p7_2,
-            e23: p0_6 + &p1_7 + &p2_3 - &p3_2 - &p4_5 + &p5_4 + &p6_0 + &p7_1,
+            scalar: p0_0 + &p1_1 + &p2_2 + &p3_3 - &(p4_4 + &p5_5 + &p6_6 + &p7_7),
+            e12: p0_4 + &p1_2 - &p2_1 + &p3_7 + &(p4_0 - &p5_6 + &p6_5 + &p7_3),
+            e13: p0_5 + &p1_3 - &p2_7 - &p3_1 + &(p4_6 + &p5_0 - &p6_4 - &p7_2),
+            e23: p0_6 + &p1_7 + &p2_3 - &p3_2 - &(p4_5 - &p5_4 - &p6_0 - &p7_1),
         }
     }
 }
@@ -7972,10 +7972,10 @@ for Multivector<T> {
         let p7_5 = self.e123.mul_ref(&rhs.e13);
         let p7_6 = self.e123.mul_ref(&rhs.e23);
         Odd {
-            e1: p0_1 + &p1_0 - &p2_4 - &p3_5 + &p4_2 + &p5_3 - &p6_7 - &p7_6,
-            e2: p0_2 + &p1_4 + &p2_0 - &p3_6 - &p4_1 + &p5_7 + &p6_3 + &p7_5,
-            e3: p0_3 + &p1_5 + &p2_6 + &p3_0 - &p4_7 - &p5_1 - &p6_2 - &p7_4,
-            e123: p0_7 + &p1_6 - &p2_5 + &p3_4 + &p4_3 - &p5_2 + &p6_1 + &p7_0,
+            e1: p0_1 + &p1_0 - &p2_4 - &p3_5 + &(p4_2 + &p5_3 - &p6_7 - &p7_6),
+            e2: p0_2 + &p1_4 + &p2_0 - &p3_6 - &(p4_1 - &p5_7 - &p6_3 - &p7_5),
+            e3: p0_3 + &p1_5 + &p2_6 + &p3_0 - &(p4_7 + &p5_1 + &p6_2 + &p7_4),
+            e123: p0_7 + &p1_6 - &p2_5 + &p3_4 + &(p4_3 - &p5_2 + &p6_1 + &p7_0),
         }
     }
 }
