@@ -21,6 +21,7 @@
 mod interleaved;
 
 use algebra_core::scalar::{F32x4, F32x8, F64x2, F64x4};
+use algebra_core::test_support::Xorshift;
 use criterion::Criterion;
 use gam_algebras::g123inf::Motor;
 use interleaved::{Kernel, median, ratio, times};
@@ -41,16 +42,10 @@ struct Data {
     f64x4: Vec<Motor<F64x4>>,
 }
 
-/// A small deterministic generator (xorshift) of values in [-1, 1).
+/// `n` motors' coefficients in [-1, 1), from the workspace's test generator.
 fn values(n: usize) -> Vec<[f64; 8]> {
-    let mut s = 0x9E37_79B9_7F4A_7C15u64;
-    let mut next = move || {
-        s ^= s << 13;
-        s ^= s >> 7;
-        s ^= s << 17;
-        (s >> 11) as f64 / (1u64 << 52) as f64 - 1.0
-    };
-    (0..n).map(|_| std::array::from_fn(|_| next())).collect()
+    let mut rng = Xorshift(0x9E37_79B9_7F4A_7C15);
+    (0..n).map(|_| std::array::from_fn(|_| rng.symmetric())).collect()
 }
 
 /// Packs consecutive groups of `N` elements into lane motors.
