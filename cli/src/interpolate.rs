@@ -60,7 +60,7 @@ struct VelocitySpec {
 /// A built spec: the motion of its method, the body points and the number of samples.
 pub(crate) struct Built {
     pub(crate) motion: BuiltMotion<f64>,
-    body_points: Vec<[f64; 3]>,
+    pub(crate) body_points: Vec<[f64; 3]>,
     samples: usize,
 }
 

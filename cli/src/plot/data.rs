@@ -122,12 +122,6 @@ pub(crate) fn series(path: &str, n: usize, frames: usize) -> Result<Series, CliE
 /// A `gam interpolate` spec over `[t_0, t_m]`.
 fn interpolated(path: &str, n: usize, k: usize) -> Result<Series, CliError> {
     let b = built(path)?;
-    let body_points: Vec<[f64; 3]> = match read_json(path)?.get("body_points") {
-        Some(v) => {
-            serde_json::from_value(v.clone()).map_err(|_| usage(path, "`body_points` must be a list of [x, y, z]"))?
-        }
-        None => vec![[0.0; 3]],
-    };
     let m = &b.motion;
     let method = m.method().name().to_string();
     let shape = Shape {
@@ -138,7 +132,7 @@ fn interpolated(path: &str, n: usize, k: usize) -> Result<Series, CliError> {
         key_times: m.times().to_vec(),
         joins: m.segments().iter().skip(1).map(|s| s.t0).collect(),
     };
-    of_motion(shape, m.motion(), body_points, n, k)
+    of_motion(shape, m.motion(), b.body_points, n, k)
 }
 
 /// What [`of_motion`] is told about a motion besides the motion itself.
