@@ -22,12 +22,12 @@
 
 use super::JuttlerError;
 use super::bspline::{BSplineQMotion, span};
+use super::rotational::solve_columns;
 use super::spline::aligned_parts;
 use super::velocity::check_spline_parameters;
 use crate::Pose;
 use crate::repr::dual_quaternion::{DualQuaternion, Quaternion};
 use algebra_core::Field;
-use algebra_core::linalg::solve;
 
 /// The clamped knot vector of degree `p` for `m + 1` parameters: `t_0` and `t_m` `p + 1` times,
 /// interior knots `(t_j + … + t_{j+p-1})/p` for `j = 1, …, m - p`.
@@ -77,16 +77,7 @@ fn collocate<T: Field + PartialOrd, const N: usize>(
     rhs: &[[T; N]],
 ) -> Result<Vec<[T; N]>, JuttlerError> {
     let a: Vec<Vec<T>> = params.iter().map(|t| basis_row(knots, p, params.len(), t)).collect();
-    let mut cols: Vec<Vec<T>> = Vec::with_capacity(N);
-    for k in 0..N {
-        let b = rhs.iter().map(|r| r[k].clone()).collect();
-        cols.push(
-            solve(a.clone(), b).ok_or_else(|| JuttlerError::Parameters {
-                why: "the B-spline collocation matrix is singular".into(),
-            })?,
-        );
-    }
-    Ok((0..params.len()).map(|j| std::array::from_fn(|k| cols[k][j].clone())).collect())
+    solve_columns(&a, rhs, "the B-spline collocation matrix is singular")
 }
 
 /// The TR method with B-spline Q-motions of degree `p` (module docs): `m + 1 ≥ 2` positions

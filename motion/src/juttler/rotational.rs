@@ -27,15 +27,22 @@ pub(crate) fn solve_bernstein<T: Field, const N: usize>(
     params: &[T],
     rhs: &[[T; N]],
 ) -> Result<Vec<[T; N]>, JuttlerError> {
-    let a = collocation(params);
+    solve_columns(&collocation(params), rhs, "the Bernstein collocation matrix is singular (parameters not distinct)")
+}
+
+/// Solves `A c = rhs` for each of the `N` components of the right-hand sides (one solve per
+/// component); `singular` is the error's reason when `A` is singular.
+pub(crate) fn solve_columns<T: Field, const N: usize>(
+    a: &[Vec<T>],
+    rhs: &[[T; N]],
+    singular: &str,
+) -> Result<Vec<[T; N]>, JuttlerError> {
     let mut cols: Vec<Vec<T>> = Vec::with_capacity(N);
     for k in 0..N {
         let b = rhs.iter().map(|r| r[k].clone()).collect();
-        cols.push(solve(a.clone(), b).ok_or_else(|| JuttlerError::Parameters {
-            why: "the Bernstein collocation matrix is singular (parameters not distinct)".into(),
-        })?);
+        cols.push(solve(a.to_vec(), b).ok_or_else(|| JuttlerError::Parameters { why: singular.into() })?);
     }
-    Ok((0..params.len()).map(|j| std::array::from_fn(|k| cols[k][j].clone())).collect())
+    Ok((0..rhs.len()).map(|j| std::array::from_fn(|k| cols[k][j].clone())).collect())
 }
 
 /// `m + 1 ≥ 1` parameters for `m + 1` positions.
