@@ -6,7 +6,7 @@
 
 mod common;
 
-use common::{TempFile, fails, ok};
+use common::{TempFile, fails, ok, rodrigues};
 use serde_json::Value;
 
 /// Three key poses at the parameters 0, 1, 3 (position, axis, angle).
@@ -30,12 +30,8 @@ fn spec(method: &str, given: bool) -> String {
 /// `R x + p` of a key pose, by Rodrigues' formula (independent of the `motion` crate).
 fn key_point(k: usize, x: &[f64; 3]) -> [f64; 3] {
     let (p, a, phi) = KEYS[k];
-    let n = (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]).sqrt();
-    let u = a.map(|c| c / n);
-    let (c, s) = (phi.cos(), phi.sin());
-    let dot = u[0] * x[0] + u[1] * x[1] + u[2] * x[2];
-    let cross = [u[1] * x[2] - u[2] * x[1], u[2] * x[0] - u[0] * x[2], u[0] * x[1] - u[1] * x[0]];
-    std::array::from_fn(|i| x[i] * c + cross[i] * s + u[i] * dot * (1.0 - c) + p[i])
+    let m = rodrigues(a, phi, p);
+    std::array::from_fn(|i| m[i][0] * x[0] + m[i][1] * x[1] + m[i][2] * x[2] + m[i][3])
 }
 
 fn num(v: &Value) -> f64 {
