@@ -179,12 +179,15 @@ enum Command {
         #[arg(value_name = "SPEC.json")]
         spec: String,
     },
-    /// Plot specs to SVG: speeds against t with the joins marked, and the paths of the body
+    /// Plot specs to SVG (or PNG): speeds against t with the joins marked, and the paths of the body
     /// points (several specs are overlaid with a legend).
     Plot {
-        /// The SVG file to write.
+        /// The file to write: SVG, or PNG when its name ends in `.png` (see `--format`).
         #[arg(long, value_name = "FILE.svg")]
         out: String,
+        /// The file format (default: png for an --out ending in .png, svg otherwise).
+        #[arg(long, value_name = "FORMAT", value_enum)]
+        format: Option<plot::Format>,
         /// The number of evenly spaced parameter values over each spec's range (at least 2).
         #[arg(long, value_name = "N", default_value_t = plot::DEFAULT_SAMPLES)]
         samples: usize,
@@ -210,6 +213,9 @@ enum Command {
         /// The directory to write fig3.svg, fig4.svg, fig5.svg into.
         #[arg(long, value_name = "DIR")]
         out: String,
+        /// The file format of the figures (their names end in .svg or .png).
+        #[arg(long, value_name = "FORMAT", value_enum, default_value = "svg")]
+        format: plot::Format,
         /// Also print the data of the figures as one JSON object keyed by file name.
         #[arg(long)]
         json: bool,
@@ -270,10 +276,10 @@ fn run(command: Command) -> Result<(String, Option<CliError>), CliError> {
         Command::Trajectory { json, spec, point } => trajectory::trajectory(&spec, &point, json),
         Command::Pose { json, pose } => pose::pose(&pose, json),
         Command::Sample { samples, json, spec } => sample::sample(&spec, samples, json),
-        Command::Plot { out, samples, view, frames, body, json, specs } => {
-            plot::plot(&plot::PlotArgs { specs: &specs, out: &out, samples, view, frames, body, json })
+        Command::Plot { out, format, samples, view, frames, body, json, specs } => {
+            plot::plot(&plot::PlotArgs { specs: &specs, out: &out, format, samples, view, frames, body, json })
         }
-        Command::Figures { out, json } => figures::figures(&out, json),
+        Command::Figures { out, format, json } => figures::figures(&out, format, json),
         Command::Prove { algebra, basis, assume, timeout, json, claim } => {
             return prove::prove(&prove::ProveArgs { algebra, basis, assume, timeout, json, claim });
         }

@@ -18,6 +18,7 @@
 use crate::error::CliError;
 use crate::plot::data::{Series, Shape, evenly, frame, of_motion};
 use crate::plot::draw::{Body, View, render};
+use crate::plot::raster::Format;
 use crate::plot::surface::wireframe;
 use motion::juttler::surface::RationalBezierSurface;
 use motion::juttler::{Parametrisation, QMotion, RationalBezier, minimal, projective, tr};
@@ -155,8 +156,11 @@ fn surface_curves() -> Result<[Vec<Vec<[f64; 3]>>; 2], CliError> {
     Ok([iso_v, iso_t])
 }
 
-/// The file name, title, SVG and JSON data of each figure.
-pub(crate) fn all() -> Result<Vec<(&'static str, String, String, Value)>, CliError> {
+/// One drawn figure: file name (`.svg`), title, file bytes and JSON data.
+pub(crate) type Drawn = (&'static str, String, Vec<u8>, Value);
+
+/// The file name, title, file bytes (in `format`) and JSON data of each figure.
+pub(crate) fn all(format: Format) -> Result<Vec<Drawn>, CliError> {
     let uniform = || Parameters::Uniform;
     let pts = || POINTS.to_vec();
     let (proj, t) = projective_motion()?;
@@ -202,7 +206,7 @@ pub(crate) fn all() -> Result<Vec<(&'static str, String, String, Value)>, CliErr
     ];
     let mut out = Vec::new();
     for (file, title, s) in figs {
-        let svg = render(std::slice::from_ref(&s), View::ThreeD, Body::Cube, title)?;
+        let svg = render(std::slice::from_ref(&s), View::ThreeD, Body::Cube, title, format)?;
         // the key poses as [axis, angle, translation], for the reader (and the test)
         let keys: &[Key] = match file {
             "juttler_fig5a.svg" => &THREE,
@@ -213,7 +217,7 @@ pub(crate) fn all() -> Result<Vec<(&'static str, String, String, Value)>, CliErr
     }
     let [iso_v, iso_t] = surface_curves()?;
     let title = "Juttler Fig. 5b: the kinematic surface swept by the parabola (v = const thick, t = const thin)";
-    let svg = wireframe([&iso_v, &iso_t], title)?;
+    let svg = wireframe([&iso_v, &iso_t], title, format)?;
     let grid = evenly(0.0, 1.0, 9);
     let data = json!({"title": title, "grid": grid, "t": evenly(0.0, 1.0, SAMPLES), "iso_v": iso_v, "iso_t": iso_t});
     out.insert(5, ("juttler_fig5b.svg", title.to_string(), svg, data));

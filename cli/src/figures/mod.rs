@@ -1,4 +1,4 @@
-//! `gam figures --out DIR [--json]`: the papers' figures redrawn from the library's
+//! `gam figures --out DIR [--format svg|png] [--json]`: the papers' figures redrawn from the library's
 //! constructions by the drawing of `gam plot` ([`crate::plot::draw::render`]), listed with what
 //! to look for in docs/figures.md. This file: the main paper's Figs. 3-5 (Sec. 4): the
 //! two-segment additive motion (a quadrant, then a line) of Fig. 3, its variants with
@@ -12,6 +12,7 @@ mod juttler;
 use crate::error::CliError;
 use crate::plot::data::{Series, Shape, of_motion};
 use crate::plot::draw::{Body, View, render};
+use crate::plot::raster::Format;
 use motion::paper::sec_4;
 use motion::{AdditiveBezier, Piecewise, Pose};
 use serde_json::{Value, json};
@@ -81,26 +82,34 @@ fn body_of(file: &str) -> Body {
     if cross2022::L_BLOCK_FILES.contains(&file) { Body::LBlock } else { Body::Frames }
 }
 
-/// Writes one figure's SVG into `dir` and says so.
-fn write(dir: &str, file: &str, title: &str, svg: String) -> Result<String, CliError> {
+/// `file` (named `NAME.svg`) with the extension of `format`.
+fn named(file: &str, format: Format) -> String {
+    format!("{}.{}", file.strip_suffix(".svg").unwrap_or(file), format.extension())
+}
+
+/// Writes one figure's file into `dir` and says so.
+fn write(dir: &str, file: &str, title: &str, bytes: Vec<u8>) -> Result<String, CliError> {
     let path = std::path::Path::new(dir).join(file);
     let shown = path.display().to_string();
-    std::fs::write(&path, svg).map_err(|e| CliError::usage(format!("cannot write `{shown}`: {e}")))?;
+    std::fs::write(&path, bytes).map_err(|e| CliError::usage(format!("cannot write `{shown}`: {e}")))?;
     Ok(format!("wrote {shown}: {title}"))
 }
 
-/// Runs `gam figures`: writes the SVGs into `dir` and reports them (or prints their data).
-pub fn figures(dir: &str, json: bool) -> Result<String, CliError> {
+/// Runs `gam figures`: writes the figures into `dir` in `format` (their names end in `.svg`
+/// or `.png`) and reports them (or prints their data, keyed by the file names).
+pub fn figures(dir: &str, format: Format, json: bool) -> Result<String, CliError> {
     let mut lines = Vec::new();
     let mut data = serde_json::Map::new();
     for (file, title, view, series) in all()? {
-        let svg = render(&series, view, body_of(file), &title)?;
-        lines.push(write(dir, file, &title, svg)?);
-        data.insert(file.to_string(), json!({"title": title, "series": series}));
+        let bytes = render(&series, view, body_of(file), &title, format)?;
+        let file = named(file, format);
+        lines.push(write(dir, &file, &title, bytes)?);
+        data.insert(file, json!({"title": title, "series": series}));
     }
-    for (file, title, svg, value) in juttler::all()? {
-        lines.push(write(dir, file, &title, svg)?);
-        data.insert(file.to_string(), value);
+    for (file, title, bytes, value) in juttler::all(format)? {
+        let file = named(file, format);
+        lines.push(write(dir, &file, &title, bytes)?);
+        data.insert(file, value);
     }
     if json {
         return serde_json::to_string(&Value::Object(data))

@@ -9,6 +9,7 @@
 //! angular speed line, one line per join and three per frame (twelve with `--body cube`).
 
 use super::data::Series;
+use super::raster::{Format, Picture, encode};
 use crate::error::CliError;
 use crate::scalar::format_f64;
 use plotters::coord::Shift;
@@ -178,7 +179,7 @@ const JOIN: RGBColor = RGBColor(128, 128, 128);
 const AXIS_COLOURS: [RGBColor; 3] = [RGBColor(220, 0, 0), RGBColor(0, 160, 0), RGBColor(0, 0, 220)];
 
 /// The speed panel.
-fn speeds(area: &DrawingArea<SVGBackend, Shift>, all: &[Series]) -> Result<(), CliError> {
+fn speeds<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, all: &[Series]) -> Result<(), CliError> {
     let (t_lo, t_hi) = range(all.iter().flat_map(|s| s.t.iter().copied()));
     let values = all.iter().flat_map(|s| s.speeds.iter().flatten().chain(&s.angular_speed).copied());
     let (_, hi) = range(values.chain(std::iter::once(0.0)));
@@ -221,8 +222,8 @@ fn speeds(area: &DrawingArea<SVGBackend, Shift>, all: &[Series]) -> Result<(), C
 }
 
 /// The path panel projected on the coordinates `(a, b)`.
-fn paths_2d(
-    area: &DrawingArea<SVGBackend, Shift>,
+fn paths_2d<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
     all: &[Series],
     body: Body,
     a: usize,
@@ -269,7 +270,7 @@ fn paths_2d(
 }
 
 /// The path panel as a 3-D view (z up: plotters' vertical axis is its second).
-fn paths_3d(area: &DrawingArea<SVGBackend, Shift>, all: &[Series], body: Body) -> Result<(), CliError> {
+fn paths_3d<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, all: &[Series], body: Body) -> Result<(), CliError> {
     let shown = shown_points(all, body);
     let pts = || shown.iter();
     let (x, y, z) = (range(pts().map(|p| p[0])), range(pts().map(|p| p[1])), range(pts().map(|p| p[2])));
@@ -305,23 +306,38 @@ fn paths_3d(area: &DrawingArea<SVGBackend, Shift>, all: &[Series], body: Body) -
     Ok(())
 }
 
-/// Renders the SVG text of the figure of `all` (one or more series) titled `title`, the body
-/// drawn as `body` at the frames.
-pub(crate) fn render(all: &[Series], view: View, body: Body, title: &str) -> Result<String, CliError> {
-    let mut svg = String::new();
-    {
-        let root = SVGBackend::with_string(&mut svg, (1200, 560)).into_drawing_area();
-        root.fill(&WHITE).map_err(draw_error)?;
-        let root = root.titled(title, ("sans-serif", 22)).map_err(draw_error)?;
-        let (left, right) = root.split_horizontally(600);
-        speeds(&left, all)?;
-        match view.axes() {
-            Some((a, b)) => paths_2d(&right, all, body, a, b)?,
-            None => paths_3d(&right, all, body)?,
-        }
-        root.present().map_err(draw_error)?;
+/// The figure of `all` (one or more series) titled `title`, the body drawn as `body` at the
+/// frames, in the view `view` (1200 x 560 pixels).
+pub(crate) struct Figure<'a> {
+    /// The series.
+    pub all: &'a [Series],
+    /// The path panel's view.
+    pub view: View,
+    /// How the body is drawn.
+    pub body: Body,
+    /// The title.
+    pub title: &'a str,
+}
+
+impl Picture for Figure<'_> {
+    fn size(&self) -> (u32, u32) {
+        (1200, 560)
     }
-    Ok(svg)
+
+    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), CliError> {
+        let root = root.titled(self.title, ("sans-serif", 22)).map_err(draw_error)?;
+        let (left, right) = root.split_horizontally(600);
+        speeds(&left, self.all)?;
+        match self.view.axes() {
+            Some((a, b)) => paths_2d(&right, self.all, self.body, a, b),
+            None => paths_3d(&right, self.all, self.body),
+        }
+    }
+}
+
+/// The file bytes of the figure of `all` (see [`Figure`]) in `format`.
+pub(crate) fn render(all: &[Series], view: View, body: Body, title: &str, format: Format) -> Result<Vec<u8>, CliError> {
+    encode(&Figure { all, view, body, title }, format)
 }
 
 #[cfg(test)]

@@ -1,5 +1,6 @@
-//! `gam plot SPEC.json... --out FILE.svg [--samples N] [--view xy|xz|yz|3d] [--frames K]
-//! [--body frames|cube|l-block] [--json]`: an SVG of one or more specs, like the paper's
+//! `gam plot SPEC.json... --out FILE.svg|FILE.png [--format svg|png] [--samples N]
+//! [--view xy|xz|yz|3d] [--frames K] [--body frames|cube|l-block] [--json]`: an SVG (or a
+//! PNG, [`raster`]) of one or more specs, like the paper's
 //! Figs. 3-5, with two panels: the linear speed of every body point and the angular speed
 //! against `t` with the joins marked, and the paths of the body points (projected on a
 //! coordinate plane, or in a 3-D view) with the key points and, with `--frames K`, the moved
@@ -17,6 +18,8 @@
 pub(crate) mod control;
 pub(crate) mod data;
 pub(crate) mod draw;
+pub(crate) mod font;
+pub(crate) mod raster;
 pub(crate) mod surface;
 
 use crate::error::CliError;
@@ -24,6 +27,7 @@ use crate::sample::Sampled;
 use crate::scalar::format_f64;
 use data::Series;
 pub use draw::{Body, View};
+pub use raster::Format;
 
 /// The default number of samples of `gam plot`.
 pub const DEFAULT_SAMPLES: usize = 201;
@@ -60,8 +64,10 @@ fn figure_title(all: &[Series]) -> String {
 pub struct PlotArgs<'a> {
     /// The spec files (at least one).
     pub specs: &'a [String],
-    /// The SVG file to write.
+    /// The file to write.
     pub out: &'a str,
+    /// The file format (`None`: PNG for an `out` ending in `.png`, SVG otherwise).
+    pub format: Option<Format>,
     /// Samples per spec (at least 2).
     pub samples: usize,
     /// The path panel's view.
@@ -74,7 +80,7 @@ pub struct PlotArgs<'a> {
     pub json: bool,
 }
 
-/// Runs `gam plot`: writes the SVG to `out` and reports what was written (or prints the data).
+/// Runs `gam plot`: writes the SVG or PNG to `out` and reports what was written (or prints the data).
 pub fn plot(a: &PlotArgs) -> Result<String, CliError> {
     if a.specs.is_empty() {
         return Err(CliError::usage("`gam plot` needs at least one SPEC.json"));
@@ -88,9 +94,9 @@ pub fn plot(a: &PlotArgs) -> Result<String, CliError> {
     }
     let all = a.specs.iter().map(|p| data::series(p, a.samples, a.frames)).collect::<Result<Vec<_>, _>>()?;
     let title = figure_title(&all);
-    let svg = draw::render(&all, a.view, a.body, &title)?;
     let out = a.out;
-    std::fs::write(out, svg).map_err(|e| CliError::usage(format!("cannot write `{out}`: {e}")))?;
+    let bytes = draw::render(&all, a.view, a.body, &title, Format::of(a.format, out))?;
+    std::fs::write(out, bytes).map_err(|e| CliError::usage(format!("cannot write `{out}`: {e}")))?;
     if a.json {
         return serde_json::to_string(&serde_json::json!({"title": title, "series": all}))
             .map_err(|e| CliError::math(format!("cannot print the plot data: {e}")));
