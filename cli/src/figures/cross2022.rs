@@ -11,11 +11,13 @@
 //! | `fig10.svg` | Fig. 10 | the additive Hermite motion through the nine Jaklič poses (`jaklic`), common `λ = 1, 0.5, 1.5` |
 //!
 //! The body point is the body origin (the corner of the L), the reference point of the
-//! papers' end conditions.
+//! papers' end conditions. Every block's L faces are shaded (the paper's Fig. 10 "shaded
+//! blocks"); Fig. 8 also has the paper's dashed arcs, the paths of the middle control poses
+//! as the shape factors vary ([`control_arcs`]).
 
 use super::{Figure, SAMPLES};
 use crate::error::CliError;
-use crate::plot::data::{Series, Shape, of_motion};
+use crate::plot::data::{Mark, Series, Shape, evenly, of_motion};
 use crate::plot::draw::View;
 use motion::paper::{jaklic, sec_5_1, sec_5_2};
 use motion::spec::{HermiteSpec, SpecKind};
@@ -62,14 +64,37 @@ fn jaklic_motion(lambda: f64, blocks: bool) -> Result<Series, CliError> {
     of_motion(shape, &motion, vec![[0.0; 3]], SAMPLES, if blocks { 9 } else { 0 })
 }
 
+/// The shape factors along Fig. 8's dashed arcs: 61 values from 1 to 4.
+pub(crate) const ARC_POINTS: usize = 61;
+
+/// Fig. 8's dashed arcs: the paths of the body origin under the middle control poses `S_1`
+/// as `λ0` runs over `[1, 4]` (`λ3 = 1`; `t = 0`) and `S_2` as `λ3` does (`λ0 = 1`; `t = 1`).
+/// Each is an additive Bézier motion of degree 1 in its shape factor, so in this planar
+/// example a circular arc (the paper, Sec. 5.2).
+pub(crate) fn control_arcs(kind: SpecKind) -> Result<Vec<Mark>, CliError> {
+    let at = |l0: f64, l3: f64, i: usize| {
+        let seg = sec_5_2::spec(kind, l0, l3).segment().map_err(math("the Sec. 5.2 segment"))?;
+        seg.control_poses()[i].transform_point(&[0.0; 3]).map_err(math("a Sec. 5.2 control pose"))
+    };
+    let lambdas = evenly(1.0, 4.0, ARC_POINTS);
+    let s1 = lambdas.iter().map(|l| at(*l, 1.0, 1)).collect::<Result<_, _>>()?;
+    let s2 = lambdas.iter().map(|l| at(1.0, *l, 2)).collect::<Result<_, _>>()?;
+    Ok(vec![Mark { t: 0.0, kind: "arc", points: s1 }, Mark { t: 1.0, kind: "arc", points: s2 }])
+}
+
 /// Figs. 8 and 9: the Sec. 5.2 segment of `kind` for every `(λ0, λ3)` of [`SHAPES`], the
-/// blocks at the ends (common to all) on the first only.
-fn shapes(kind: SpecKind) -> Result<Vec<Series>, CliError> {
+/// blocks at the ends (common to all) on the first only, with the dashed arcs of the middle
+/// control poses when `arcs` (Fig. 8).
+fn shapes(kind: SpecKind, arcs: bool) -> Result<Vec<Series>, CliError> {
     let one = |(i, (l0, l3)): (usize, &(f64, f64))| {
         let label = format!("lambda0 = {l0}, lambda3 = {l3}");
         segment(label, &sec_5_2::spec(kind, *l0, *l3), if i == 0 { 2 } else { 0 })
     };
-    SHAPES.iter().enumerate().map(one).collect()
+    let mut all: Vec<Series> = SHAPES.iter().enumerate().map(one).collect::<Result<_, _>>()?;
+    if arcs {
+        all[0].marks = control_arcs(kind)?;
+    }
+    Ok(all)
 }
 
 /// The figures of Sec. 5.
@@ -88,13 +113,13 @@ pub(super) fn figures() -> Result<Vec<Figure>, CliError> {
             "fig8.svg",
             "Fig. 8: multiplicative cubic motion varying shape factors (y-z plane)".into(),
             View::Yz,
-            shapes(SpecKind::Multiplicative)?,
+            shapes(SpecKind::Multiplicative, true)?,
         ),
         (
             "fig9.svg",
             "Fig. 9: additive cubic motion varying shape factors (y-z plane)".into(),
             View::Yz,
-            shapes(SpecKind::Additive)?,
+            shapes(SpecKind::Additive, false)?,
         ),
         (
             "fig10.svg",

@@ -1,7 +1,9 @@
 //! Jüttler's Figs. 1-6 (Sec. 6 of "Visualization of moving objects using dual quaternion
 //! curves") redrawn from the library's constructions: unit cubes `[0, 1]³` of the moving space
 //! at the key poses and midway between them, the trajectories of the origin and of
-//! `(0, 0, 1)`, in a 3-D view (z up). The paper does not print its positions; the ones here
+//! `(0, 0, 1)`, in a 3-D view (z up). The cubes' three pairs of opposite faces are marked by
+//! squares, triangles and crosses as in the paper ([`face_marks`]), and Fig. 5a also draws the
+//! parabola moved with the body ([`parabola_marks`]). The paper does not print its positions; the ones here
 //! ([`FIVE`], [`THREE`], [`SIX`]) are chosen to show what each figure shows (docs/figures.md).
 //!
 //! - Fig. 1: elliptic rotations (23)-(25) composed with the TR translation (Algorithm 1),
@@ -16,7 +18,7 @@
 //! - Fig. 6: the C¹ spline Q-motion of Algorithm 2 through 6 positions (`juttler-spline`).
 
 use crate::error::CliError;
-use crate::plot::data::{Series, Shape, evenly, frame, of_motion};
+use crate::plot::data::{Frame, Mark, Series, Shape, evenly, frame, moved, of_motion};
 use crate::plot::draw::{Body, View, render};
 use crate::plot::raster::Format;
 use crate::plot::surface::wireframe;
@@ -89,8 +91,37 @@ fn bad<E: std::fmt::Display>(what: &'static str) -> impl Fn(E) -> CliError {
     move |e| CliError::math(format!("{what}: {e}"))
 }
 
+/// The face markings of the unit cube at frame `f`, as Jüttler marks "the three pairs of
+/// opposite faces": the faces `x = 0, 1` by squares, `y = 0, 1` by triangles and `z = 0, 1`
+/// by crosses (two strokes each), inside `[0.3, 0.7]²` of the face's other two coordinates
+/// `(x_{k+1}, x_{k+2})` (indices mod 3), moved with the body.
+pub(crate) fn face_marks(f: &Frame) -> Vec<Mark> {
+    const SQUARE: [[f64; 2]; 5] = [[0.3, 0.3], [0.7, 0.3], [0.7, 0.7], [0.3, 0.7], [0.3, 0.3]];
+    const TRIANGLE: [[f64; 2]; 4] = [[0.3, 0.3], [0.7, 0.3], [0.5, 0.7], [0.3, 0.3]];
+    const CROSS: [[[f64; 2]; 2]; 2] = [[[0.3, 0.3], [0.7, 0.7]], [[0.3, 0.7], [0.7, 0.3]]];
+    let mut out = Vec::new();
+    for k in 0..3 {
+        for side in [0.0, 1.0] {
+            let on = |[a, b]: [f64; 2]| {
+                let mut x = [0.0; 3];
+                (x[k], x[(k + 1) % 3], x[(k + 2) % 3]) = (side, a, b);
+                moved(f, x)
+            };
+            let shapes: Vec<(&'static str, &[[f64; 2]])> = match k {
+                0 => vec![("square", &SQUARE)],
+                1 => vec![("triangle", &TRIANGLE)],
+                _ => CROSS.iter().map(|c| ("cross", &c[..])).collect(),
+            };
+            for (kind, pts) in shapes {
+                out.push(Mark { t: f.t, kind, points: pts.iter().copied().map(on).collect() });
+            }
+        }
+    }
+    out
+}
+
 /// The series of `motion` over `key_times`: the trajectories of `points`, the unit cube at
-/// the key parameters and midway between them.
+/// the key parameters and midway between them, its faces marked ([`face_marks`]).
 fn series<M: MapScalar<f64, Jet<Jet<f64>>>>(
     shape: Shape,
     motion: &M,
@@ -106,8 +137,20 @@ fn series<M: MapScalar<f64, Jet<Jet<f64>>>>(
             let pose = sample_motion(motion, &t, &[]).map_err(bad("Jüttler's figures"))?.pose;
             frame(t, &pose)
         })
-        .collect::<Result<_, _>>()?;
+        .collect::<Result<Vec<_>, _>>()?;
+    s.marks = s.frames.iter().flat_map(face_marks).collect();
     Ok(s)
+}
+
+/// The parabola moved with the body at every frame of `s` (Fig. 5a's moving body), 33 points each.
+fn parabola_marks(s: &Series) -> Result<Vec<Mark>, CliError> {
+    let x = parabola()?;
+    let points: Vec<[f64; 3]> =
+        evenly(0.0, 1.0, 33).iter().map(|v| x.point(v).map_err(bad("Fig. 5a"))).collect::<Result<_, _>>()?;
+    Ok(s.frames
+        .iter()
+        .map(|f| Mark { t: f.t, kind: "curve", points: points.iter().map(|p| moved(f, *p)).collect() })
+        .collect())
 }
 
 /// The series of `method` through `keys` with `parameters` (and `l1`).
@@ -205,7 +248,10 @@ pub(crate) fn all(format: Format) -> Result<Vec<Drawn>, CliError> {
         ),
     ];
     let mut out = Vec::new();
-    for (file, title, s) in figs {
+    for (file, title, mut s) in figs {
+        if file == "juttler_fig5a.svg" {
+            s.marks.extend(parabola_marks(&s)?);
+        }
         let svg = render(std::slice::from_ref(&s), View::ThreeD, Body::Cube, title, format)?;
         // the key poses as [axis, angle, translation], for the reader (and the test)
         let keys: &[Key] = match file {

@@ -32,6 +32,21 @@ pub(crate) struct Frame {
     pub cube: [[f64; 3]; 8],
 }
 
+/// A drawing attached to one figure's series besides its paths, in world coordinates: the
+/// markings of the moved unit cube's faces (Jüttler's Figs. 1-4), a moved curve of the body
+/// (Jüttler's Fig. 5a parabola), the path of a middle control pose (the main paper's Fig. 8).
+#[derive(Debug, Clone, Serialize)]
+pub(crate) struct Mark {
+    /// The parameter of the body pose it is drawn at (for a control pose's path, `t0` for
+    /// the one next to the start, `t1` for the one next to the end).
+    pub t: f64,
+    /// What it is: `square`, `triangle`, `cross` (face markings; squares and triangles
+    /// filled), `curve` (a moved body curve), `arc` (a control pose's path, drawn dashed).
+    pub kind: &'static str,
+    /// The polyline.
+    pub points: Vec<[f64; 3]>,
+}
+
 /// Everything drawn for one spec.
 #[derive(Debug, Clone, Serialize)]
 pub(crate) struct Series {
@@ -61,6 +76,15 @@ pub(crate) struct Series {
     pub key_points: Vec<Vec<[f64; 3]>>,
     /// The body frames at the `--frames K` evenly spaced parameters.
     pub frames: Vec<Frame>,
+    /// Further drawings (`gam figures` only; not printed when empty).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub marks: Vec<Mark>,
+}
+
+/// Body point `x` moved by frame `f`: a rigid pose is affine, so `x` goes to
+/// `o + Σ x_k (a_k - o)` with `o` the moved origin and `a_k` the moved `e_k`.
+pub(crate) fn moved(f: &Frame, x: [f64; 3]) -> [f64; 3] {
+    std::array::from_fn(|i| f.origin[i] + (0..3).map(|k| x[k] * (f.axes[k][i] - f.origin[i])).sum::<f64>())
 }
 
 fn norm(v: &[f64; 3]) -> f64 {
@@ -208,6 +232,7 @@ pub(crate) fn of_motion<M: MapScalar<f64, Jet<Jet<f64>>>>(
         angular_speed,
         key_points,
         frames,
+        marks: vec![],
     })
 }
 
@@ -234,5 +259,6 @@ fn hermite(path: &str, n: usize, k: usize) -> Result<Series, CliError> {
         angular_speed: s.samples.iter().map(|x| x.angular_speed).collect(),
         t,
         frames,
+        marks: vec![],
     })
 }

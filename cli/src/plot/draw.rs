@@ -7,8 +7,11 @@
 //! Every data line is one SVG `<polyline>` and every legend mark a `<rect>`, so a test can
 //! count the series of a figure (the polylines not in black, which are the axes): per series, one speed line and one path per body point, one
 //! angular speed line, one line per join and three per frame (twelve with `--body cube`).
+//! Filled faces (the L-shaped block's two L faces, the filled face markings of
+//! [`Series::marks`]) are SVG `<polygon>`s; each mark's outline is one more polyline, a dashed
+//! `arc` one per dash.
 
-use super::data::Series;
+use super::data::{Mark, Series, moved};
 use super::raster::{Format, Picture, encode};
 use crate::error::CliError;
 use crate::scalar::format_f64;
@@ -39,13 +42,76 @@ const L_DEPTH: f64 = 0.5;
 /// face `x = 0.5`. A rigid pose is affine, so body point `x` goes to `o + Σ x_k (a_k - o)`
 /// with `o` the moved origin and `a_k` the moved `e_k`.
 pub(crate) fn l_block(f: &super::data::Frame) -> [[f64; 3]; 12] {
-    let at = |x: [f64; 3]| {
-        std::array::from_fn(|i| f.origin[i] + (0..3).map(|k| x[k] * (f.axes[k][i] - f.origin[i])).sum::<f64>())
-    };
     std::array::from_fn(|c| {
         let [y, z] = L_BLOCK[c % 6];
-        at([if c < 6 { 0.0 } else { L_DEPTH }, y, z])
+        moved(f, [if c < 6 { 0.0 } else { L_DEPTH }, y, z])
     })
+}
+
+/// The shading of the L-shaped block's two L faces (the paper's shaded blocks).
+const SHADE: RGBColor = RGBColor(190, 190, 190);
+
+/// The faces of `body` at frame `f` drawn filled in [`SHADE`]: the L-shaped block's two L
+/// faces (each one SVG `<polygon>`); none for the frames and the cube.
+fn body_faces(f: &super::data::Frame, body: Body) -> Vec<Vec<[f64; 3]>> {
+    match body {
+        Body::LBlock => {
+            let b = l_block(f);
+            vec![b[..6].to_vec(), b[6..].to_vec()]
+        }
+        Body::Frames | Body::Cube => vec![],
+    }
+}
+
+/// The colour of the face markings and moved body curves.
+const MARK: RGBColor = RGBColor(40, 40, 40);
+
+/// The colour of a control pose's path (dashed).
+const ARC: RGBColor = RGBColor(100, 100, 100);
+
+/// Points per dash and per gap of a dashed [`Mark`] (`arc`): dash `i` is the polyline through
+/// points `3i ..= 3i + 2`.
+pub(crate) const DASH: usize = 3;
+
+/// The filled polygons and the polylines (with their colours) drawing `m`.
+#[allow(clippy::type_complexity)]
+fn mark_shapes(m: &Mark) -> (Option<Vec<[f64; 3]>>, Vec<(Vec<[f64; 3]>, RGBColor, u32)>) {
+    match m.kind {
+        "square" | "triangle" => (Some(m.points.clone()), vec![(m.points.clone(), MARK, 1)]),
+        "arc" => {
+            let dashes = (0..m.points.len().saturating_sub(1) / DASH)
+                .map(|i| (m.points[DASH * i..(DASH * i + DASH).min(m.points.len())].to_vec(), ARC, 1));
+            (None, dashes.collect())
+        }
+        "curve" => (None, vec![(m.points.clone(), MARK, 2)]),
+        _ => (None, vec![(m.points.clone(), MARK, 1)]),
+    }
+}
+
+/// Draws the shaded faces of `body` at the frames of `s` and the marks of `s` on a chart,
+/// `to` mapping a world point to the chart's coordinates.
+fn draw_extras<DB: DrawingBackend, CT: CoordTranslate>(
+    chart: &mut ChartContext<DB, CT>,
+    s: &Series,
+    body: Body,
+    to: impl Fn(&[f64; 3]) -> CT::From,
+) -> Result<(), CliError>
+where
+    CT::From: Clone + 'static,
+{
+    let shade =
+        |ps: &Vec<[f64; 3]>, c: RGBColor| Polygon::new(ps.iter().map(&to).collect::<Vec<_>>(), c.mix(0.6).filled());
+    let faces: Vec<_> = s.frames.iter().flat_map(|f| body_faces(f, body)).collect();
+    chart.draw_series(faces.iter().map(|ps| shade(ps, SHADE))).map_err(draw_error)?;
+    for m in &s.marks {
+        let (fill, lines) = mark_shapes(m);
+        chart.draw_series(fill.iter().map(|ps| shade(ps, MARK))).map_err(draw_error)?;
+        let lines = lines
+            .into_iter()
+            .map(|(ps, c, w)| PathElement::new(ps.iter().map(&to).collect::<Vec<_>>(), c.stroke_width(w)));
+        chart.draw_series(lines).map_err(draw_error)?;
+    }
+    Ok(())
 }
 
 /// The colour of the cube's edges.
@@ -75,7 +141,8 @@ fn shown_points(all: &[Series], body: Body) -> Vec<[f64; 3]> {
     let paths = all.iter().flat_map(|s| s.paths.iter().flatten().copied());
     let cubes = all.iter().flat_map(|s| s.frames.iter().flat_map(|f| f.cube)).filter(|_| body == Body::Cube);
     let blocks = all.iter().flat_map(|s| s.frames.iter().flat_map(l_block)).filter(|_| body == Body::LBlock);
-    paths.chain(cubes).chain(blocks).collect()
+    let marks = all.iter().flat_map(|s| s.marks.iter().flat_map(|m| m.points.iter().copied()));
+    paths.chain(cubes).chain(blocks).chain(marks).collect()
 }
 
 /// The path panel's view: a projection on a coordinate plane or a 3-D view.
@@ -261,6 +328,7 @@ fn paths_2d<DB: DrawingBackend>(
             });
             chart.draw_series(lines).map_err(draw_error)?;
         }
+        draw_extras(&mut chart, s, body, |p| (p[a], p[b]))?;
     }
     if all.len() > 1 {
         let mut labels = chart.configure_series_labels();
@@ -298,6 +366,7 @@ fn paths_3d<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, all: &[Series], b
             let lines = lines.map(|(ps, c)| PathElement::new(ps.iter().map(to).collect::<Vec<_>>(), c.stroke_width(2)));
             chart.draw_series(lines).map_err(draw_error)?;
         }
+        draw_extras(&mut chart, s, body, to)?;
     }
     if all.len() > 1 {
         let mut labels = chart.configure_series_labels();
