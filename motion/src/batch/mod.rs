@@ -35,14 +35,15 @@
 
 mod columns;
 mod error;
-mod lanes;
 mod points;
 mod poses;
 mod sample;
 
+/// The lane type of every batch kernel: algebra-core's [`Lanes`](algebra_core::scalar::Lanes)
+/// (lane width and packing live in the scalar layer), re-exported here under its first path.
+pub use algebra_core::scalar::Lanes;
 pub use columns::Packed;
 pub use error::BatchError;
-pub use lanes::Lanes;
 pub use points::Points;
 pub use poses::Poses;
 #[cfg(feature = "parallel")]
