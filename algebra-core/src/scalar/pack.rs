@@ -4,8 +4,7 @@
 //!
 //! A plain scalar is a lane type of width 1 (`f64`, `f32`, the exact [`Q`]), so code written
 //! once over `L: Lanes` is also the scalar loop; with the feature `lanes` the SIMD scalars
-//! [`F64x2`](super::F64x2), [`F64x4`](super::F64x4) (elements `f64`) and
-//! [`F32x4`](super::F32x4), [`F32x8`](super::F32x8) (elements `f32`) are lane types too, their
+//! `F64x2`, `F64x4` (elements `f64`) and `F32x4`, `F32x8` (elements `f32`) are lane types too, their
 //! trait methods the inherent `splat`, `From<[T; N]>` and `to_array` (one definition each).
 //! `motion::batch` writes every batch kernel over it (and re-exports it as
 //! `motion::batch::Lanes`).
