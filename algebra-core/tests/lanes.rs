@@ -2,10 +2,11 @@
 //! and field arithmetic exactly (IEEE operations per lane), the elementary functions within a
 //! few ulps of `std`, comparisons and `select` exactly; the whole-vector answers (`==`,
 //! `is_exact_zero`, `magnitude`, `try_recip`) as documented; `LaneDual` over lanes against
-//! `Jet` over the scalar, lane by lane.
+//! `Jet` over the scalar, lane by lane; the packing of [`Lanes`] (load, store, padding, the
+//! lane without a reciprocal).
 #![cfg(feature = "lanes")]
 
-use algebra_core::scalar::{Diagnostics, Elementary, F32x4, F32x8, F64x2, F64x4, LaneDual, Mask, Select};
+use algebra_core::scalar::{Diagnostics, Elementary, F32x4, F32x8, F64x2, F64x4, LaneDual, Lanes, Mask, Select};
 use algebra_core::{Field, Jet, Real, Ring};
 use proptest::prelude::*;
 
@@ -148,6 +149,36 @@ macro_rules! lane_tests {
                 let shown = $lane::splat(1.5).to_string();
                 assert_eq!(shown, format!("[{}]", vec!["1.5"; $n].join(", ")));
             }
+
+            #[test]
+            fn packing_loads_stores_pads_and_names_the_lane_without_a_reciprocal() {
+                assert_eq!(<$lane as Lanes>::WIDTH, <$lane as Diagnostics>::LANES);
+                let xs: [$elem; $n] = std::array::from_fn(|i| i as $elem + 0.5);
+                let v = <$lane as Lanes>::load(&xs);
+                assert_eq!(v.to_array(), xs);
+                assert_eq!(<$lane as Lanes>::splat(&2.5).to_array(), [2.5; $n]);
+                // a full store, and a remainder store that leaves the rest of `out` alone
+                let mut out = [-1.0 as $elem; $n];
+                v.store(&mut out);
+                assert_eq!(out, xs);
+                let mut short = [-1.0 as $elem; $n];
+                v.store(&mut short[..$n - 1]);
+                assert_eq!(&short[..$n - 1], &xs[..$n - 1]);
+                assert_eq!(short[$n - 1], -1.0);
+                // the remainder chunk padded with `pad`
+                let padded = <$lane as Lanes>::load_padded(&xs[..1], &7.0);
+                let mut want = [7.0 as $elem; $n];
+                want[0] = xs[0];
+                assert_eq!(padded.to_array(), want);
+                assert_eq!(<$lane as Lanes>::load_padded(&xs, &7.0).to_array(), xs);
+                // per-lane reciprocals, or the first lane without one
+                assert_eq!(v.recip_lanes().unwrap().to_array(), xs.map(|x| 1.0 / x));
+                for lane in 0..$n {
+                    let mut z = xs;
+                    z[lane] = 0.0;
+                    assert_eq!($lane::from(z).recip_lanes(), Err(lane));
+                }
+            }
         }
     };
 }
@@ -170,4 +201,12 @@ fn scalars_keep_their_meaning_through_the_blanket_impls() {
     // Jet: one lane whose value is the value part.
     assert_eq!(Jet::new(2.0, 7.0).lane_to_f64(0), Some(2.0));
     assert!(<bool as Mask>::splat(true).all());
+    // the scalars are lane types of width 1; exact rationals too
+    assert_eq!((<f64 as Lanes>::WIDTH, <f32 as Lanes>::WIDTH), (1, 1));
+    let third = algebra_core::rational::ratio(1, 3);
+    assert_eq!(
+        <algebra_core::rational::Q as Lanes>::load(std::slice::from_ref(&third)).recip_lanes(),
+        Ok(algebra_core::rational::q(3))
+    );
+    assert_eq!(Lanes::recip_lanes(&algebra_core::rational::q(0)), Err(0));
 }

@@ -10,6 +10,11 @@
 //!   and `batch::sample_many::<f64>` (lifts once per motion), one core; candidates: over both
 //!   cores and over lanes.
 //!
+//!   The same with the motions across the lanes (`batch::sample_beziers`: lane `i` = motion `i`
+//!   at one parameter) against the parameters across the lanes (`sample_many`).
+//! * `pairs`: 16,384 pose pairs (in cache: 3 MB of columns), `a[i] * b[i]` (`Poses::compose`) and
+//!   pose `i` on point `i` (`Poses::transform_points`), over `f64` and the SIMD lanes, one core.
+//!
 //! After the criterion groups the kernels run interleaved (every kernel in each round, rotating
 //! order) and the report prints medians and the median per-round ratio to each peer.
 //!
@@ -18,7 +23,7 @@
 
 use algebra_core::scalar::{F64x2, F64x4};
 use criterion::{Criterion, criterion_group};
-use motion::batch::{Points, par_sample_many, sample_many};
+use motion::batch::{Points, Poses, par_sample_beziers, par_sample_many, sample_beziers, sample_many};
 use motion::velocity::pose_derivative;
 use motion::{AdditiveBezier, Pose};
 use std::hint::black_box;
@@ -90,17 +95,54 @@ fn samples_checksum(s: &motion::batch::Samples<f64>) -> f64 {
     s.poses().column(0)[0] + s.derivatives().column(1)[s.poses().len() - 1]
 }
 
-const SAMPLING: [(&str, interleaved::Kernel<Sampling>); 6] = [
+const SAMPLING: [(&str, interleaved::Kernel<Sampling>); 11] = [
     ("pose_derivative loop", sampling_pose_derivative),
     ("sample_many f64, 1 core", |d| samples_checksum(&sample_many::<f64, _>(&d.motions, &d.ts).unwrap())),
     ("sample_many f64, par", |d| samples_checksum(&par_sample_many::<f64, _>(&d.motions, &d.ts).unwrap())),
+    ("sample_many F64x2, 1 core", |d| samples_checksum(&sample_many::<F64x2, _>(&d.motions, &d.ts).unwrap())),
+    ("sample_many F64x2, par", |d| samples_checksum(&par_sample_many::<F64x2, _>(&d.motions, &d.ts).unwrap())),
     ("sample_many F64x4, 1 core", |d| samples_checksum(&sample_many::<F64x4, _>(&d.motions, &d.ts).unwrap())),
     ("sample_many F64x4, par", |d| samples_checksum(&par_sample_many::<F64x4, _>(&d.motions, &d.ts).unwrap())),
-    ("sample_many F64x2, par", |d| samples_checksum(&par_sample_many::<F64x2, _>(&d.motions, &d.ts).unwrap())),
+    ("sample_beziers F64x2, 1 core", |d| samples_checksum(&sample_beziers::<F64x2, _>(&d.motions, &d.ts).unwrap())),
+    ("sample_beziers F64x2, par", |d| samples_checksum(&par_sample_beziers::<F64x2, _>(&d.motions, &d.ts).unwrap())),
+    ("sample_beziers F64x4, 1 core", |d| samples_checksum(&sample_beziers::<F64x4, _>(&d.motions, &d.ts).unwrap())),
+    ("sample_beziers F64x4, par", |d| samples_checksum(&par_sample_beziers::<F64x4, _>(&d.motions, &d.ts).unwrap())),
+];
+
+struct Pairs {
+    a: Poses<f64>,
+    b: Poses<f64>,
+    points: Points<f64>,
+}
+
+fn pairs(n: usize) -> Pairs {
+    let s = sampling(n.div_ceil(4), 2);
+    let all: Vec<Pose<f64>> = s.motions.iter().flat_map(|m| m.poses().to_vec()).take(n).collect();
+    let rev: Vec<Pose<f64>> = all.iter().rev().cloned().collect();
+    let c = cloud(n);
+    Pairs { a: Poses::from_poses(&all).unwrap(), b: Poses::from_poses(&rev).unwrap(), points: c.soa }
+}
+
+fn poses_checksum(p: &Poses<f64>) -> f64 {
+    p.column(0)[0] + p.column(7)[p.len() - 1]
+}
+
+const PAIRS: [(&str, interleaved::Kernel<Pairs>); 6] = [
+    ("compose f64", |d| poses_checksum(&d.a.compose::<f64>(&d.b).unwrap())),
+    ("compose F64x2", |d| poses_checksum(&d.a.compose::<F64x2>(&d.b).unwrap())),
+    ("compose F64x4", |d| poses_checksum(&d.a.compose::<F64x4>(&d.b).unwrap())),
+    ("transform_points f64", |d| checksum(&d.a.transform_points::<f64>(&d.points).unwrap())),
+    ("transform_points F64x2", |d| checksum(&d.a.transform_points::<F64x2>(&d.points).unwrap())),
+    ("transform_points F64x4", |d| checksum(&d.a.transform_points::<F64x4>(&d.points).unwrap())),
 ];
 
 fn sizes() -> (usize, usize, usize) {
     if full() { (1_000_000, 10_000, 100) } else { (1_003, 10, 7) }
+}
+
+/// Pose pairs in the `pairs` group.
+fn pair_count() -> usize {
+    if full() { 16_384 } else { 1_003 }
 }
 
 fn bench(c: &mut Criterion) {
@@ -114,6 +156,7 @@ fn bench(c: &mut Criterion) {
         g.bench_function(*name, |b| b.iter(|| kernel(black_box(&d))));
     }
     g.finish();
+    interleaved::group(c, "batch/pairs", &PAIRS, &pairs(pair_count()), pair_count());
 }
 
 fn report<D>(
@@ -151,4 +194,6 @@ fn main() {
         motions * parameters,
         &[0, 1],
     );
+    let n = pair_count();
+    report("pairs: 16,384 poses, compose and pose i on point i", &PAIRS, &pairs(n), rounds * 20, n, &[0, 3]);
 }

@@ -286,17 +286,66 @@ pub(crate) fn tableau_with<T: Ring, E>(
     Ok(columns)
 }
 
-/// The apex `S(t)` of the de Casteljau tableau, keeping one column at a time.
+/// Control poses up to this many (degree ≤ 7) are evaluated in an array on the stack; more in
+/// one `Vec`.
+const STACK_POSES: usize = 8;
+
+/// The apex `S(t)` of the de Casteljau tableau, computed in place in one column: entry `i` of
+/// level `k` overwrites entry `i` of level `k - 1` once entries `i` and `i + 1` were read. The
+/// same `combine` calls on the same arguments in the same order as the tableau
+/// ([`tableau_with`]), so the apex is bit for bit the tableau's; without allocation up to
+/// [`STACK_POSES`] control poses.
 pub(crate) fn de_casteljau_with<T: Ring, E>(
     poses: &[Pose<T>],
     t: &T,
     combine: impl Fn(&Pose<T>, &Pose<T>, &T) -> Result<Pose<T>, E>,
 ) -> Result<Pose<T>, E> {
-    let mut column = poses.to_vec();
-    while column.len() > 1 {
-        column = column.windows(2).map(|w| combine(&w[0], &w[1], t)).collect::<Result<Vec<_>, E>>()?;
+    if poses.len() <= STACK_POSES {
+        let mut column: [Option<Pose<T>>; STACK_POSES] = std::array::from_fn(|i| poses.get(i).cloned());
+        apex_in_place(&mut column[..poses.len()], t, combine)
+    } else {
+        let mut column: Vec<Option<Pose<T>>> = poses.iter().cloned().map(Some).collect();
+        apex_in_place(&mut column, t, combine)
     }
-    Ok(column.pop().expect("a motion has at least one control pose"))
+}
+
+fn apex_in_place<T: Ring, E>(
+    column: &mut [Option<Pose<T>>],
+    t: &T,
+    combine: impl Fn(&Pose<T>, &Pose<T>, &T) -> Result<Pose<T>, E>,
+) -> Result<Pose<T>, E> {
+    for len in (1..column.len()).rev() {
+        for i in 0..len {
+            let (Some(a), Some(b)) = (&column[i], &column[i + 1]) else { unreachable!("entries 0..=len are set") };
+            column[i] = Some(combine(a, b, t)?);
+        }
+    }
+    Ok(column.first_mut().and_then(Option::take).expect("a motion has at least one control pose"))
+}
+
+/// The apex of the additive tableau (eq. 17 at every level) coefficient by coefficient: each
+/// of the eight coefficients is its own scalar de Casteljau in an array on the stack, with the
+/// operations of [`Pose::lerp`] (`a (1 - t) + b t`), so the result is bit for bit the pose
+/// tableau's apex while the working set is a few scalars instead of whole poses (no pose is
+/// moved or copied per level). More than [`STACK_POSES`] control poses take the pose tableau.
+pub(crate) fn additive_apex<T: Ring>(poses: &[Pose<T>], t: &T) -> Pose<T> {
+    if poses.len() > STACK_POSES {
+        let Ok(pose) = de_casteljau_with::<T, Infallible>(poses, t, |a, b, t| Ok(Pose::lerp(a, b, t)));
+        return pose;
+    }
+    let one_minus_t = T::one().sub_ref(t);
+    let [c0, c1, c2, c3, c4, c5, c6, c7] = std::array::from_fn(|c| {
+        let mut column: [T; STACK_POSES] =
+            std::array::from_fn(|i| poses.get(i).map_or_else(T::zero, |p| p.components()[c].clone()));
+        for len in (1..poses.len()).rev() {
+            for i in 0..len {
+                column[i] = column[i].mul_ref(&one_minus_t).add_ref(&column[i + 1].mul_ref(t));
+            }
+        }
+        let [apex, ..] = column;
+        apex
+    });
+    Pose::new(c0, c1, c2, c3, c4, c5, c6, c7)
 }
 
 /// A Bezier motion of degree `n` on `[0, 1]` with the pairwise combination of the blend `B`
@@ -434,10 +483,10 @@ impl<T: Ring, B: Blend<T>> Bezier<T, B> {
 }
 
 impl<T: Ring, B: Blend<T>> Motion<T> for Bezier<T, B> {
-    /// `S(t)`: the apex of the de Casteljau tableau of [`Blend::blend`] (for additive motions
-    /// the Bernstein sum agrees).
+    /// `S(t)`: the apex of the de Casteljau tableau of [`Blend::blend`] ([`Blend::apex`]; for
+    /// additive motions the Bernstein sum agrees).
     fn evaluate(&self, t: &T) -> Result<Pose<T>, CurveError> {
-        Ok(de_casteljau_with(&self.poses, t, B::blend)?)
+        Ok(B::apex(&self.poses, t)?)
     }
 
     fn domain(&self) -> [T; 2] {
@@ -494,8 +543,7 @@ impl<T: Ring> Bezier<T, Additive> {
     /// assert_eq!(m.de_casteljau(&0.25), Pose::translation(&[1.0, 0.0, 0.0]));
     /// ```
     pub fn de_casteljau(&self, t: &T) -> Pose<T> {
-        let Ok(pose) = de_casteljau_with::<T, Infallible>(&self.poses, t, |a, b, t| Ok(Pose::lerp(a, b, t)));
-        pose
+        additive_apex(&self.poses, t)
     }
 
     /// The whole de Casteljau tableau at `t`: column 0 is the control poses, column `k` holds

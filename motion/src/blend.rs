@@ -41,6 +41,20 @@ pub trait Blend<T: Ring>: Copy + std::fmt::Debug + PartialEq + Default + 'static
     /// ```
     fn blend(a: &Pose<T>, b: &Pose<T>, t: &T) -> Result<Pose<T>, MotionError>;
 
+    /// The apex `S(t)` of the de Casteljau tableau of [`Blend::blend`] over the control poses
+    /// (at least one): what [`crate::Bezier`] evaluates. Computed in place without allocation
+    /// up to eight control poses; [`Additive`] runs it coefficient by coefficient. Bit for bit
+    /// the apex of the tableau built column by column.
+    ///
+    /// ```
+    /// use motion::{Additive, Blend, Pose};
+    /// let c = [Pose::<f64>::identity(), Pose::translation(&[2.0, 0.0, 0.0]), Pose::translation(&[2.0, 2.0, 0.0])];
+    /// assert_eq!(Additive::apex(&c, &0.5).unwrap(), Pose::translation(&[1.5, 0.5, 0.0]));
+    /// ```
+    fn apex(poses: &[Pose<T>], t: &T) -> Result<Pose<T>, MotionError> {
+        crate::bezier::de_casteljau_with(poses, t, Self::blend)
+    }
+
     /// The control pose `S1` next to `S0` of a degree-`n` segment whose indicatrix at `t = 0`
     /// is `psi0` (eq. 22 or 23).
     ///
@@ -121,6 +135,10 @@ impl<T: Ring> Blend<T> for Additive {
 
     fn blend(a: &Pose<T>, b: &Pose<T>, t: &T) -> Result<Pose<T>, MotionError> {
         Ok(Pose::lerp(a, b, t))
+    }
+
+    fn apex(poses: &[Pose<T>], t: &T) -> Result<Pose<T>, MotionError> {
+        Ok(crate::bezier::additive_apex(poses, t))
     }
 
     fn start_control_pose(s0: &Pose<T>, psi0: &Even<T>, degree: usize) -> Result<Pose<T>, JoinError> {

@@ -8,7 +8,9 @@ mod common;
 use algebra_core::rational::{Q, q, ratio};
 use algebra_core::{Field, Ring};
 use common::{Xorshift as Rng, centered};
-use motion::batch::{BatchError, Lanes, Points, Poses, Samples, sample, sample_many};
+use motion::batch::{
+    BatchError, Lanes, Points, Poses, Samples, par_sample_beziers, sample, sample_beziers, sample_many,
+};
 use motion::velocity::{pose_derivative, velocity_indicatrix};
 use motion::{AdditiveBezier, Motion, MotionError, MultiplicativeBezier, Pose};
 use std::fmt;
@@ -355,6 +357,37 @@ fn sampling_many_motions_equals_pose_derivative_bit_for_bit() {
 }
 
 #[test]
+fn sampling_with_motions_across_lanes_equals_pose_derivative_bit_for_bit() {
+    // motion counts around the width 4 (a padded last group), and a group mixing degrees
+    // (cubic and quadratic: sampled motion by motion)
+    for n in [1, 3, 4, 9] {
+        let motions = cubic_motions(n, 85);
+        for nt in [1, 7] {
+            let ts = parameters(nt);
+            check_samples(&sample_beziers::<X4, _>(&motions, &ts).unwrap(), &motions, &ts);
+            check_samples(&par_sample_beziers::<X4, _>(&motions, &ts).unwrap(), &motions, &ts);
+            check_samples(&sample_beziers::<f64, _>(&motions, &ts).unwrap(), &motions, &ts);
+        }
+    }
+    let mut mixed = cubic_motions(6, 87);
+    mixed[2] = AdditiveBezier::new(poses(3, 89)).unwrap();
+    let ts = parameters(5);
+    check_samples(&sample_beziers::<X4, _>(&mixed, &ts).unwrap(), &mixed, &ts);
+    assert_eq!(sample_beziers::<X4, _>(&mixed, &[]).unwrap().poses().len(), 0);
+}
+
+#[test]
+fn sampling_with_motions_across_lanes_names_the_first_failure() {
+    let motions = cubic_motions(10, 99);
+    let ts = [0.0, 0.5, f64::NAN, 2.0];
+    for err in
+        [sample_beziers::<X4, _>(&motions, &ts).unwrap_err(), par_sample_beziers::<X4, _>(&motions, &ts).unwrap_err()]
+    {
+        assert!(matches!(err, BatchError::Curve { motion: 0, parameter: 2, .. }), "{err}");
+    }
+}
+
+#[test]
 fn sampled_derivatives_agree_with_central_differences() {
     // An independent check of dS/dt: (S(t + h) - S(t - h)) / 2h for the cubic, to h².
     let motions = cubic_motions(3, 91);
@@ -452,10 +485,12 @@ where
     for nt in [1, 3, 10] {
         let ts: Vec<L::Elem> = parameters(nt).into_iter().map(&to_elem).collect();
         let s = motion::batch::par_sample_many::<L, _>(&motions, &ts).unwrap();
+        let across = sample_beziers::<L, _>(&motions, &ts).unwrap();
         for (m, motion) in motions.iter().enumerate() {
             for (k, t) in ts.iter().enumerate() {
                 let (p, dp) = pose_derivative(motion, t).unwrap();
                 assert_eq!((s.pose(m, k), s.derivative(m, k)), (Some(p), Some(dp)));
+                assert_eq!((across.pose(m, k), across.derivative(m, k)), (Some(p), Some(dp)));
             }
         }
     }

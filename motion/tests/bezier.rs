@@ -43,6 +43,34 @@ fn additive_bernstein_equals_de_casteljau_exactly() {
     }
 }
 
+/// The in-place de Casteljau evaluation (an array on the stack up to 8 control poses, one
+/// `Vec` beyond) is bit for bit the apex of the tableau, whose columns are built separately, on
+/// both sides of the stack limit: exactly over Q (and equal to eq. 18) and in f64, additive and
+/// multiplicative.
+#[test]
+fn in_place_de_casteljau_is_the_tableau_apex_bit_for_bit() {
+    let exact: Vec<Pose<Q>> = (0..12).map(|i| qpose([2 + i, 1 - i, i * i - 5, 3, 4 - i, 2 * i, -i, i - 7])).collect();
+    let floats = non_unit(&unit_poses(12));
+    let units = unit_poses(12);
+    for n in [0, 1, 3, 7, 8, 11] {
+        let m = AdditiveBezier::new(exact[..=n].to_vec()).unwrap();
+        let t = ratio(3, 7);
+        assert_eq!(m.de_casteljau(&t), m.tableau(&t)[n][0], "degree {n}");
+        assert_eq!(m.evaluate(&t).unwrap(), m.bernstein(&t), "degree {n}");
+        let f = AdditiveBezier::new(floats[..=n].to_vec()).unwrap();
+        for t in [0.0, 0.3, 0.77, 1.0] {
+            assert_eq!(f.de_casteljau(&t), f.tableau(&t)[n][0], "degree {n}, t = {t}");
+            assert_eq!(f.evaluate(&t).unwrap(), f.de_casteljau(&t), "degree {n}, t = {t}");
+        }
+        // over dual numbers (what the velocity code evaluates)
+        let jet = f.map_ring(&|x: &f64| algebra_core::Jet::constant(*x));
+        let tj = algebra_core::Jet::variable(0.3);
+        assert_eq!(jet.de_casteljau(&tj), jet.tableau(&tj)[n][0], "degree {n}, over Jet");
+        let mul = MultiplicativeBezier::new(units[..=n].to_vec()).unwrap();
+        assert_eq!(mul.de_casteljau(&0.6).unwrap(), mul.tableau(&0.6).unwrap()[n][0], "degree {n}");
+    }
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(128))]
 

@@ -337,7 +337,7 @@ macro_rules! lane_type {
         }
 
         impl Diagnostics for $name {
-            const LANES: usize = $n;
+            const LANES: usize = Self::LANES;
             #[inline]
             fn lane_to_f64(&self, lane: usize) -> Option<f64> {
                 self.to_array().get(lane).map(|x| f64::from(*x))

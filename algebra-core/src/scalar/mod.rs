@@ -16,6 +16,8 @@
 //! data), [`Diagnostics`] (sizes a lane type can give honestly) and [`LaneReal`] (all three).
 //! Every [`Real`] has them by blanket impl; the lane types [`F32x4`], [`F32x8`], [`F64x2`],
 //! [`F64x4`] (feature `lanes`) and [`LaneDual`] implement them and are never [`Real`].
+//! [`Lanes`] (module `pack`) is the lane width and the packing of element columns into lane
+//! values and back, for `f64`, `f32`, [`Q`] (width 1) and the SIMD lane types.
 //!
 //! Reference arithmetic (`&a * &b`) cannot be a supertrait bound that Rust elaborates at use
 //! sites, so the trait offers it as methods ([`Ring::mul_ref`], ...) with efficient overrides
@@ -52,6 +54,7 @@ mod lanes;
 mod mpfloat;
 #[cfg(feature = "rug")]
 pub(crate) mod mprational;
+mod pack;
 
 pub use decide::{Diagnostics, Elementary, LaneReal, Mask, Select};
 pub use jet::Jet;
@@ -62,6 +65,7 @@ pub use lanes::{F32x4, F32x8, F64x2, F64x4, MaskF32x4, MaskF32x8, MaskF64x2, Mas
 pub use mpfloat::{MpFloat, PrecisionGuard, default_precision, set_default_precision};
 #[cfg(feature = "rug")]
 pub use mprational::MpRational;
+pub use pack::Lanes;
 
 use crate::rational::Q;
 use std::fmt::{Debug, Display};

@@ -1,7 +1,7 @@
 //! Column storage shared by [`Points`](super::Points) (3 columns) and [`Poses`](super::Poses)
 //! (8 columns), the row-wise kernel driver (serial and over cores), and [`Packed`] lane chunks.
 
-use super::lanes::{Lanes, load_padded};
+use super::Lanes;
 
 /// `N` columns of equal length.
 #[derive(Clone, Debug, PartialEq)]
@@ -78,7 +78,7 @@ pub(crate) fn map_rows<L: Lanes, const I: usize, const O: usize>(
     let mut start = 0;
     while start < n {
         let end = n.min(start + L::WIDTH);
-        let args: [L; I] = std::array::from_fn(|c| load_padded(&inputs[c][start..end], &pad[c]));
+        let args: [L; I] = std::array::from_fn(|c| L::load_padded(&inputs[c][start..end], &pad[c]));
         let values = f(args).map_err(|lane| start + lane)?;
         for (o, v) in out.iter_mut().zip(&values) {
             v.store(&mut o[start..end]);
@@ -171,7 +171,7 @@ impl<L: Lanes, const N: usize> Packed<L, N> {
         let len = views.first().map_or(0, |c| c.len());
         let chunks = (0..len).step_by(L::WIDTH).map(|start| {
             let end = len.min(start + L::WIDTH);
-            std::array::from_fn(|c| load_padded::<L>(&views[c][start..end], &pad[c]))
+            std::array::from_fn(|c| L::load_padded(&views[c][start..end], &pad[c]))
         });
         Packed { cols: Columns::from_rows(chunks), len }
     }

@@ -23,6 +23,7 @@
 //! | slerp, branch-free over lanes ([`Pose::slerp_branch_free`](crate::Pose::slerp_branch_free)) | [`Poses::slerp_lanes`] | [`Poses::par_slerp_lanes`] |
 //! | one motion at many parameters | [`sample`] | |
 //! | many motions at many parameters, with `dS/dt` | [`sample_many`] | [`par_sample_many`] |
+//! | the same for Bézier motions, motion `i` in lane `i` | [`sample_beziers`] | [`par_sample_beziers`] |
 //!
 //! ```
 //! use motion::{Pose, batch::Points};
@@ -33,16 +34,21 @@
 //! assert_eq!(q.get(7).unwrap(), s.transform_point(&cloud[7]).unwrap());
 //! ```
 
+mod beziers;
 mod columns;
 mod error;
-mod lanes;
 mod points;
 mod poses;
 mod sample;
 
+/// The lane type of every batch kernel: algebra-core's [`Lanes`](algebra_core::scalar::Lanes)
+/// (lane width and packing live in the scalar layer), re-exported here under its first path.
+pub use algebra_core::scalar::Lanes;
+#[cfg(feature = "parallel")]
+pub use beziers::par_sample_beziers;
+pub use beziers::sample_beziers;
 pub use columns::Packed;
 pub use error::BatchError;
-pub use lanes::Lanes;
 pub use points::Points;
 pub use poses::Poses;
 #[cfg(feature = "parallel")]

@@ -202,10 +202,10 @@ where
     Ok(out)
 }
 
-type Block<'a, T> = ([&'a mut [T]; 8], [&'a mut [T]; 8]);
+pub(super) type Block<'a, T> = ([&'a mut [T]; 8], [&'a mut [T]; 8]);
 
 impl<T: Ring> Samples<T> {
-    fn zeros(motions: usize, parameters: usize) -> Self {
+    pub(super) fn zeros(motions: usize, parameters: usize) -> Self {
         Samples {
             poses: Poses::zeros(motions * parameters),
             derivatives: Poses::zeros(motions * parameters),
@@ -214,7 +214,7 @@ impl<T: Ring> Samples<T> {
     }
 
     /// The output rows of each motion: `(values, derivatives)` columns.
-    fn blocks(&mut self) -> Vec<Block<'_, T>> {
+    pub(super) fn blocks(&mut self) -> Vec<Block<'_, T>> {
         let n = self.parameters.max(1);
         let values = self.poses.cols.views_mut().map(|c| c.chunks_mut(n));
         let derivatives = self.derivatives.cols.views_mut().map(|c| c.chunks_mut(n));
@@ -234,7 +234,7 @@ fn next_row<'a, T>(chunks: &mut [std::slice::ChunksMut<'a, T>; 8]) -> Option<[&'
 }
 
 /// One motion at every parameter, values and derivatives, into its block of rows.
-fn sample_one<L, M>(
+pub(super) fn sample_one<L, M>(
     index: usize,
     motion: &M,
     ts: &[L::Elem],
@@ -261,7 +261,11 @@ where
 }
 
 /// Every parameter finite and in the motion's domain, else the first that is not.
-fn check_parameters<T: Ring + PartialOrd, M: Motion<T>>(motion: &M, ts: &[T], index: usize) -> Result<(), BatchError> {
+pub(super) fn check_parameters<T: Ring + PartialOrd, M: Motion<T>>(
+    motion: &M,
+    ts: &[T],
+    index: usize,
+) -> Result<(), BatchError> {
     let domain = motion.domain();
     for (k, t) in ts.iter().enumerate() {
         check_domain(t, &domain).map_err(|source| BatchError::Curve { motion: index, parameter: k, source })?;
