@@ -76,7 +76,7 @@ pub struct ClosedForm {
 /// use algebra_core::{Algebra, Basis};
 /// use algebra_codegen::{ModuleSpec, closed::{Family, detect}, plan::Plan};
 /// let alg = Algebra::builtin("pga3").unwrap();
-/// let types = ModuleSpec::parse_types("Line=[e01,e20,e03,e12,e31,e23];Motor=even", &alg).unwrap();
+/// let types = ModuleSpec::parse_types("Line=e01,e20,e03,e12,e31,e23;Motor=even", &alg).unwrap();
 /// let plan = Plan::new(ModuleSpec::new("pga", alg.metric().clone(), Basis::Blade, types).unwrap()).unwrap();
 /// let found = detect(&plan.spec, &plan.closed).unwrap();
 /// assert_eq!((found[0].bivector, found[0].even), (0, 1));

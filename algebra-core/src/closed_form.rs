@@ -20,9 +20,10 @@
 //! let (sinc, k, cos) = exp_factors(&0.25f64); // θ = 1/2
 //! assert!((cos - 0.5f64.cos()).abs() < 1e-16 && (sinc - 0.5f64.sin() / 0.5).abs() < 1e-16);
 //! assert!((k - (cos - sinc) / 0.25).abs() < 1e-15);
-//! // log_factors inverts: θ / sin θ and (θ cos θ - sin θ) / sin³ θ
+//! // log_factors: θ / sin θ and (θ cos θ - sin θ) / sin³ θ, from sin θ and cos θ
 //! let (inv, kk) = log_factors(&0.5f64.sin(), &0.5f64.cos());
-//! assert!((inv - 1.0 / sinc).abs() < 1e-15 && (kk - k / (sinc * sinc)).abs() < 1e-15);
+//! let direct = (0.5 * 0.5f64.cos() - 0.5f64.sin()) / 0.5f64.sin().powi(3);
+//! assert!((inv - 1.0 / sinc).abs() < 1e-15 && (kk - direct).abs() < 1e-15);
 //! ```
 
 use crate::multivector::MvError;
@@ -57,9 +58,9 @@ pub fn exp_factors<T: Real>(theta2: &T) -> (T, T, T) {
     }
 }
 
-/// The factors of the logarithm from `sin θ >= 0` and `cos θ` (any scale: only their ratio
-/// and `sin` enter): `(θ / sin θ, (θ cos θ - sin θ) / sin³ θ)`, i.e. `1/sinc θ` and
-/// `k(θ)/sinc² θ`, with `θ = atan2(sin, cos) ∈ [0, π]`, one `atan2` and one division.
+/// The factors of the logarithm of a unit element from `sin θ >= 0` and `cos θ`: `(θ / sin θ, (θ cos θ - sin θ) / sin³ θ)`, i.e. `1/sinc θ` and
+/// `(cos θ - sinc θ)/(θ sin θ sinc² θ)` (the dual part of the logarithm), with
+/// `θ = atan2(sin, cos) ∈ [0, π]`, one `atan2` and one division.
 ///
 /// ```
 /// let (inv, kk) = algebra_core::closed_form::log_factors(&0.0f64, &1.0);
