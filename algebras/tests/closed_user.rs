@@ -8,17 +8,9 @@ use algebra_core::Multivector as Mv;
 use algebra_macros::algebra;
 use proptest::prelude::*;
 
-algebra! {
-    /// 2D PGA R^{2,0,1}: every bivector squares to a scalar (-e12²), translations to 0.
-    pub mod pga2 {
-        generators { e0, e1, e2 }
-        metric { (e1, e1) = 1, (e2, e2) = 1 }
-        types {
-            Line = grade 2;
-            Motor = even;
-        }
-    }
-}
+#[path = "user/pga2.rs"]
+mod user_pga2;
+use user_pga2::pga2;
 
 algebra! {
     /// 3D Euclidean rotors.
