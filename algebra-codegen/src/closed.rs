@@ -186,6 +186,11 @@ fn int(n: i64) -> Q {
     Q::from_integer(n.into())
 }
 
+/// `expr` (a `T` value), negated when `sign` is `-1` (an orientation sign).
+fn signed(expr: TokenStream, sign: i64) -> TokenStream {
+    if sign < 0 { quote!((-(#expr))) } else { expr }
+}
+
 /// `c · sign_i · sign_j` as a kernel constant.
 fn folded(c: &Q, signs: &[i64]) -> Result<Ratio, CodegenError> {
     let s: i64 = signs.iter().product();
@@ -322,7 +327,8 @@ fn items(plan: &Plan, names: &Names, c: &ClosedForm) -> Result<TokenStream, Code
         let ii = i_index.expect("I in M");
         let (fi, si) = (&mfields[ii], names.signs[mi][ii]);
         // normalize: β/2 = s p - c(B')/2; out += w (s I + I B')
-        hb = quote!(self.#scalar_field.mul_ref(&self.#fi) * T::from_ratio(#si, 1) - (#hc_m));
+        let sp = signed(quote!(self.#scalar_field.mul_ref(&self.#fi)), si);
+        hb = quote!(#sp - (#hc_m));
         let w = quote!(w);
         let corr: Vec<TokenStream> = (0..c.square.len())
             .map(|k| {
@@ -331,8 +337,9 @@ fn items(plan: &Plan, names: &Names, c: &ClosedForm) -> Result<TokenStream, Code
                 Ok(quote!(out.#f = out.#f.clone() + #v;))
             })
             .collect::<Result<_, CodegenError>>()?;
+        let sw = signed(quote!(self.#scalar_field.mul_ref(&w)), si);
         norm_extra = quote! {
-            out.#fi = out.#fi.clone() + self.#scalar_field.mul_ref(&w) * T::from_ratio(#si, 1);
+            out.#fi = out.#fi.clone() + #sw;
             #(#corr)*
         };
         log_inner = Some(i_times.clone());
@@ -345,7 +352,7 @@ fn items(plan: &Plan, names: &Names, c: &ClosedForm) -> Result<TokenStream, Code
         let v = if mask == 0 {
             quote!(::core::clone::Clone::clone(&cos))
         } else if let Some((_, si)) = i_term.filter(|(ii, _)| *ii == idx) {
-            quote!(half_c.mul_ref(&sinc) * T::from_ratio(#si, 1))
+            signed(quote!(half_c.mul_ref(&sinc)), si)
         } else {
             let k = ctx.in_m.iter().position(|&p| p == idx).expect("a field of B");
             let hk = quote!(hk);
@@ -398,7 +405,8 @@ fn items(plan: &Plan, names: &Names, c: &ClosedForm) -> Result<TokenStream, Code
     let pk = match (&c.family, i_term) {
         (Family::Dual { .. }, Some((ii, si))) => {
             let fi = &mfields[ii];
-            quote!(let pk = self.#fi.mul_ref(&kk) * T::from_ratio(#si, 1);)
+            let v = signed(quote!(self.#fi.mul_ref(&kk)), si);
+            quote!(let pk = #v;)
         }
         _ => quote!(),
     };

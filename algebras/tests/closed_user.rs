@@ -29,7 +29,7 @@ algebra! {
         metric builtin "pga3";
         types {
             Line = [e01, e20, e03, e12, e31, e23];
-            Motor = [1, e01, e02, e30, e21, e13, e23, e0123];
+            Motor = [1, e01, e02, e30, e21, e13, e23, e1023];
         }
     }
 }
@@ -200,7 +200,7 @@ fn user_orientation_matches_pga3() {
     let b = pga3::Bivector::new(0.3, 0.2, 0.7, 0.4, 0.9, 0.25); // e01 e02 e03 e12 e13 e23
     let (m, n) = (l.exp(), b.exp());
     assert!((m.e02 - n.e02).abs() < 1e-15 && (m.e30 + n.e03).abs() < 1e-15);
-    assert!((m.e21 + n.e12).abs() < 1e-15 && (m.e13 - n.e13).abs() < 1e-15 && (m.e0123 - n.e0123).abs() < 1e-15);
+    assert!((m.e21 + n.e12).abs() < 1e-15 && (m.e13 - n.e13).abs() < 1e-15 && (m.e1023 + n.e0123).abs() < 1e-15);
 }
 
 /// Hyperbolic elements: exp is cosh + sinh, -1 and a non-positive scalar part have no real
