@@ -165,6 +165,7 @@ pub fn module_items(plan: &Plan) -> TokenStream {
     let actions = super::versor::module_items(plan, &names);
     let matrices = super::matrix::module_items(plan, &names);
     let units = super::unit::module_items(plan, &names);
+    let closed = super::closed::module_items(plan, &names);
     quote! {
         pub use ::algebra_core::ops::{
             ActionMatrix, AnticommutatorProduct, Apply, CommutatorProduct, GeometricProduct, GeometricProductInto,
@@ -197,6 +198,7 @@ pub fn module_items(plan: &Plan) -> TokenStream {
         #actions
         #matrices
         #units
+        #closed
     }
 }
 

@@ -27,6 +27,7 @@
 //! assert!(emit::module(&plan).to_string().contains("struct Motor"));
 //! ```
 
+pub mod closed;
 pub mod constraint;
 pub mod emit;
 pub mod fallback;

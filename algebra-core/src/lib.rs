@@ -17,6 +17,7 @@
 
 pub mod algebra;
 pub mod basis;
+pub mod closed_form;
 #[cfg(feature = "rug")]
 pub mod ideal;
 pub mod linalg;

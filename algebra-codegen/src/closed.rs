@@ -1,0 +1,516 @@
+//! Closed-form `exp`, `log`, `log_unit`, `normalize`, `sqrt` and `pow`, detected from the exact
+//! product tables (never from the algebra's name) for a declared *bivector type* `B` (every
+//! element made of two generators, `rev(e) = -e`) and a declared *even type* `M` (a subalgebra
+//! holding `1` and `B`) with `M = 1 + B` or `M = 1 + B + I`:
+//!
+//! - [`Family::Scalar`]: every `B² = q(b)` is a scalar, `q` a diagonal quadratic form
+//!   (Euclidean rotors in 2D and 3D, 2D PGA motors, complex numbers). `exp(B) = cos θ + sinc θ B`
+//!   when `q <= 0` (`θ² = -q`), `cosh φ + (sinh φ/φ) B` when `q >= 0` (`φ² = q`); the generator
+//!   knows the sign of `q` from its coefficients ([`Sign`]) and emits a run-time choice only
+//!   when they have both signs;
+//! - [`Family::Dual`]: `B² = q(b) + c(b) I` with `q <= 0`, `I` the one further element of `M`,
+//!   central in `M`, `I² = 0`, `rev(I) = I` and `I B ⊂ B` (3D PGA, the dual quaternions
+//!   `G_{123inf}^+`, in any basis orientation):
+//!   `exp(B) = cos θ + (c/2) sinc θ I + (sinc θ - (c/2) k(θ) I) B`.
+//!
+//! The scalar factors live in `algebra_core::closed_form`; the emitted methods only assemble
+//! them. Everything is computed in canonical coefficients and the fields' orientation signs
+//! are folded into the emitted constants.
+
+use super::emit::{Names, sum};
+use super::plan::{Plan, Ratio, to_ratio};
+use super::{CodegenError, ModuleSpec};
+use algebra_core::rational::Q;
+use algebra_core::tables::{Product, Unary};
+use num_traits::{Signed, Zero};
+use proc_macro2::TokenStream;
+use quote::quote;
+
+/// The sign of the quadratic form `q` with `B² = q` (or `q + cI`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Sign {
+    /// Every coefficient `<= 0`: `q = -θ² <= 0` (trigonometric).
+    Elliptic,
+    /// Every coefficient `>= 0`, one `> 0`: `q = φ² >= 0` (hyperbolic).
+    Hyperbolic,
+    /// Both signs: chosen at run time by the sign of `q`.
+    Mixed,
+}
+
+/// `I e_b` for one field of `B`: `(field of B, coefficient)` terms.
+pub type ITimes = Vec<(usize, Q)>;
+
+/// Which closed form applies.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Family {
+    /// `M = 1 + B`, `B² = q`.
+    Scalar(Sign),
+    /// `M = 1 + B + I`, `B² = q + cI` (`q <= 0`, `I` central, `I² = 0`).
+    Dual {
+        /// The mask of `I`.
+        i: u32,
+        /// `(i, j, coefficient)` of `c/2` in `B`'s canonical coefficients (`i <= j`).
+        half_c: Vec<(usize, usize, Q)>,
+        /// Per field of `B`: `I e_b` as `(field of B, coefficient)`.
+        i_times: Vec<ITimes>,
+    },
+}
+
+/// One detected pair: `B::exp -> M`, `M::log -> B`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ClosedForm {
+    /// The bivector type's index.
+    pub bivector: usize,
+    /// The even type's index.
+    pub even: usize,
+    /// Per field of `B`: `d` with `q = Σ d b²` (canonical coefficients).
+    pub square: Vec<Q>,
+    /// The family.
+    pub family: Family,
+}
+
+/// Every (bivector type, even type) pair with a closed form, each type in at most one pair
+/// (the first declared wins).
+///
+/// ```
+/// use algebra_core::{Algebra, Basis};
+/// use algebra_codegen::{ModuleSpec, closed::{Family, detect}, plan::Plan};
+/// let alg = Algebra::builtin("pga3").unwrap();
+/// let types = ModuleSpec::parse_types("Line=e01,e20,e03,e12,e31,e23;Motor=even", &alg).unwrap();
+/// let plan = Plan::new(ModuleSpec::new("pga", alg.metric().clone(), Basis::Blade, types).unwrap()).unwrap();
+/// let found = detect(&plan.spec, &plan.closed).unwrap();
+/// assert_eq!((found[0].bivector, found[0].even), (0, 1));
+/// assert!(matches!(found[0].family, Family::Dual { i: 0b1111, .. }));
+/// ```
+pub fn detect(spec: &ModuleSpec, closed: &[bool]) -> Result<Vec<ClosedForm>, CodegenError> {
+    let mut out: Vec<ClosedForm> = Vec::new();
+    for m in (0..spec.types.len()).filter(|&m| closed[m]) {
+        for b in 0..spec.types.len() {
+            if out.iter().any(|c| c.bivector == b || c.even == m) {
+                continue;
+            }
+            if let Some(c) = pair(spec, b, m)? {
+                out.push(c);
+            }
+        }
+    }
+    Ok(out)
+}
+
+fn pair(spec: &ModuleSpec, b: usize, m: usize) -> Result<Option<ClosedForm>, CodegenError> {
+    let alg = &spec.algebra;
+    let (bm, mm) = (&spec.types[b].elements, &spec.types[m].elements);
+    if b == m || bm.is_empty() || !mm.contains(&0) || !bm.iter().all(|x| x.count_ones() == 2 && mm.contains(x)) {
+        return Ok(None);
+    }
+    let rest: Vec<u32> = mm.iter().copied().filter(|x| *x != 0 && !bm.contains(x)).collect();
+    if rest.len() > 1 {
+        return Ok(None);
+    }
+    let i = rest.first().copied();
+    let tables = alg.tables();
+    let (gp, rev) = (tables.product(spec.basis, Product::Geometric), tables.unary(spec.basis, Unary::Reverse));
+    let get = |x: u32, y: u32| gp.get(x, y).expect("masks of the spec's algebra").to_vec();
+    let q = |c: &Q| -> Q { c.clone() };
+    // rev(e_b) = -e_b, rev(I) = I
+    let reversed = |x: u32, s: i64| rev.image(x).is_ok_and(|im| im.len() == 1 && im[0].0 == x && im[0].1 == int(s));
+    if !bm.iter().all(|&x| reversed(x, -1)) || i.is_some_and(|x| !reversed(x, 1)) {
+        return Ok(None);
+    }
+    let mut square = vec![Q::zero(); bm.len()];
+    let mut half_c = Vec::new();
+    for (ia, &x) in bm.iter().enumerate() {
+        for (ib, &y) in bm.iter().enumerate().skip(ia) {
+            let mut terms = get(x, y);
+            if ia != ib {
+                terms.extend(get(y, x));
+            }
+            let mut scalar = Q::zero();
+            let mut ipart = Q::zero();
+            for (k, c) in &terms {
+                match *k {
+                    0 => scalar += q(c),
+                    k if Some(k) == i => ipart += q(c),
+                    _ => {
+                        let total: Q = terms.iter().filter(|(kk, _)| kk == k).map(|(_, c)| c.clone()).sum();
+                        if !total.is_zero() {
+                            return Ok(None);
+                        }
+                    }
+                }
+            }
+            if ia == ib {
+                square[ia] = scalar;
+            } else if !scalar.is_zero() {
+                return Ok(None); // not a diagonal form
+            }
+            if !ipart.is_zero() {
+                half_c.push((ia, ib, ipart / int(2)));
+            }
+        }
+    }
+    let sign = if square.iter().all(|d| !d.is_positive()) {
+        Sign::Elliptic
+    } else if square.iter().all(|d| !d.is_negative()) {
+        Sign::Hyperbolic
+    } else {
+        Sign::Mixed
+    };
+    let family = match i {
+        None => Family::Scalar(sign),
+        Some(i) => {
+            let nilpotent = get(i, i).iter().all(|(_, c)| c.is_zero());
+            let central = mm.iter().all(|&x| get(i, x) == get(x, i));
+            let mut i_times = Vec::new();
+            for &x in bm {
+                let mut row = Vec::new();
+                for (k, c) in get(i, x) {
+                    match bm.iter().position(|y| *y == k) {
+                        Some(pos) => row.push((pos, c)),
+                        None if c.is_zero() => {}
+                        None => return Ok(None),
+                    }
+                }
+                i_times.push(row);
+            }
+            if !nilpotent || !central || sign != Sign::Elliptic {
+                return Ok(None);
+            }
+            Family::Dual { i, half_c, i_times }
+        }
+    };
+    Ok(Some(ClosedForm { bivector: b, even: m, square, family }))
+}
+
+fn int(n: i64) -> Q {
+    Q::from_integer(n.into())
+}
+
+/// `expr` (a `T` value), negated when `sign` is `-1` (an orientation sign).
+fn signed(expr: TokenStream, sign: i64) -> TokenStream {
+    if sign < 0 { quote!((-(#expr))) } else { expr }
+}
+
+/// `c · sign_i · sign_j` as a kernel constant.
+fn folded(c: &Q, signs: &[i64]) -> Result<Ratio, CodegenError> {
+    let s: i64 = signs.iter().product();
+    to_ratio(&(c * int(s)))
+}
+
+/// Field access helpers for one closed form (canonical coefficient = sign · field).
+struct Ctx<'a> {
+    names: &'a Names,
+    c: &'a ClosedForm,
+    /// Per field of `B`: its field index in `M`.
+    in_m: Vec<usize>,
+}
+
+impl Ctx<'_> {
+    /// `Σ d x_b²` over `B`'s fields of `owner` (`self.f`), times `factor`; signs square away.
+    fn square_form(&self, owner: usize, factor: i64) -> Result<TokenStream, CodegenError> {
+        let mut terms = Vec::new();
+        for (k, d) in self.c.square.iter().enumerate() {
+            if d.is_zero() {
+                continue;
+            }
+            let f = self.field(owner, k);
+            terms.push((to_ratio(&(d * int(factor)))?, quote!((self.#f.mul_ref(&self.#f))), true));
+        }
+        Ok(sum(terms))
+    }
+
+    /// The field of `B`'s `k`-th element in `owner` (`B` or `M`) and its orientation sign.
+    fn field(&self, owner: usize, k: usize) -> &proc_macro2::Ident {
+        let idx = if owner == self.c.bivector { k } else { self.in_m[k] };
+        &self.names.fields[owner][idx]
+    }
+
+    fn sign(&self, owner: usize, k: usize) -> i64 {
+        let idx = if owner == self.c.bivector { k } else { self.in_m[k] };
+        self.names.signs[owner][idx]
+    }
+
+    /// `c/2` of `B² = q + cI` on `owner`'s `B` fields.
+    fn half_c(&self, owner: usize, half_c: &[(usize, usize, Q)]) -> Result<TokenStream, CodegenError> {
+        let mut terms = Vec::new();
+        for (a, b, c) in half_c {
+            let (fa, fb) = (self.field(owner, *a), self.field(owner, *b));
+            let k = folded(c, &[self.sign(owner, *a), self.sign(owner, *b)])?;
+            terms.push((k, quote!((self.#fa.mul_ref(&self.#fb))), true));
+        }
+        Ok(sum(terms))
+    }
+
+    /// The value of `target`'s field for `B`'s element `k`: `outer · x_k + inner · (I x)_k`,
+    /// where `x` is `owner`'s `B` part, each scaled by the named scalar.
+    fn combine(
+        &self,
+        owner: usize,
+        target: usize,
+        k: usize,
+        outer: Option<&TokenStream>,
+        inner: Option<(&TokenStream, i64, &[ITimes])>,
+    ) -> Result<TokenStream, CodegenError> {
+        let ts = self.sign(target, k);
+        let f = self.field(owner, k);
+        let mut terms = Vec::new();
+        if let Some(outer) = outer {
+            terms.push(((ts * self.sign(owner, k), 1), quote!((#outer.mul_ref(&self.#f))), true));
+        }
+        if let Some((scalar, factor, i_times)) = inner {
+            for (src, row) in i_times.iter().enumerate() {
+                for (dst, c) in row {
+                    if *dst == k {
+                        let fs = self.field(owner, src);
+                        let coef = folded(&(c * int(factor)), &[ts, self.sign(owner, src)])?;
+                        terms.push((coef, quote!((#scalar.mul_ref(&self.#fs))), true));
+                    }
+                }
+            }
+        }
+        Ok(sum(terms))
+    }
+}
+
+/// The methods of one detected pair.
+fn items(plan: &Plan, names: &Names, c: &ClosedForm) -> Result<TokenStream, CodegenError> {
+    let (bi, mi) = (c.bivector, c.even);
+    let (bt, mt) = (&names.types[bi], &names.types[mi]);
+    let in_m: Vec<usize> = plan.spec.types[bi]
+        .elements
+        .iter()
+        .map(|x| plan.spec.types[mi].elements.iter().position(|y| y == x).expect("B is inside M"))
+        .collect();
+    let ctx = Ctx { names, c, in_m };
+    let cf = quote!(::algebra_core::closed_form);
+    let mfields = &names.fields[mi];
+    let scalar_field = &mfields[plan.spec.types[mi].elements.iter().position(|x| *x == 0).expect("1 in M")];
+    let err = quote!(::core::result::Result<Self, ::algebra_core::MvError>);
+    let berr = quote!(::core::result::Result<#bt<T>, ::algebra_core::MvError>);
+    // exp: the factors, then every field of M
+    let (factors, i_index) = match &c.family {
+        Family::Dual { i, .. } => {
+            let theta2 = ctx.square_form(bi, -1)?;
+            (
+                quote!(let (sinc, k, cos) = #cf::exp_factors(&(#theta2));),
+                plan.spec.types[mi].elements.iter().position(|x| x == i),
+            )
+        }
+        Family::Scalar(sign) => {
+            let qf = ctx.square_form(bi, 1)?;
+            let choose = match sign {
+                Sign::Elliptic => {
+                    let theta2 = ctx.square_form(bi, -1)?;
+                    quote! { let (sinc, _, cos) = #cf::exp_factors(&(#theta2)); }
+                }
+                Sign::Hyperbolic => quote! { let (sinc, cos) = #cf::exp_factors_hyperbolic(&q); },
+                Sign::Mixed => quote! {
+                    let (sinc, cos) = if q.to_f64() <= 0.0 {
+                        let (s, _, c) = #cf::exp_factors(&(-q));
+                        (s, c)
+                    } else {
+                        #cf::exp_factors_hyperbolic(&q)
+                    };
+                },
+            };
+            let q = if *sign == Sign::Elliptic { quote!() } else { quote!(let q = #qf;) };
+            (quote!(#q #choose), None)
+        }
+    };
+    let mut exp_fields = Vec::new();
+    let mut hb = quote!(T::zero());
+    let mut norm_extra = quote!();
+    let mut log_inner = None;
+    let (half_c_exp, i_term) = if let Family::Dual { half_c, i_times, .. } = &c.family {
+        let hc = ctx.half_c(bi, half_c)?;
+        let hc_m = ctx.half_c(mi, half_c)?;
+        let ii = i_index.expect("I in M");
+        let (fi, si) = (&mfields[ii], names.signs[mi][ii]);
+        // normalize: β/2 = s p - c(B')/2; out += w (s I + I B')
+        let sp = signed(quote!(self.#scalar_field.mul_ref(&self.#fi)), si);
+        hb = quote!(#sp - (#hc_m));
+        let w = quote!(w);
+        let corr: Vec<TokenStream> = (0..c.square.len())
+            .map(|k| {
+                let f = ctx.field(mi, k);
+                let v = ctx.combine(mi, mi, k, None, Some((&w, 1, i_times)))?;
+                Ok(quote!(out.#f = out.#f.clone() + #v;))
+            })
+            .collect::<Result<_, CodegenError>>()?;
+        let sw = signed(quote!(self.#scalar_field.mul_ref(&w)), si);
+        norm_extra = quote! {
+            out.#fi = out.#fi.clone() + #sw;
+            #(#corr)*
+        };
+        log_inner = Some(i_times.clone());
+        (quote!(let half_c = #hc; let hk = half_c.mul_ref(&k);), Some((ii, si)))
+    } else {
+        (quote!(), None)
+    };
+    for (idx, f) in mfields.iter().enumerate() {
+        let mask = plan.spec.types[mi].elements[idx];
+        let v = if mask == 0 {
+            quote!(::core::clone::Clone::clone(&cos))
+        } else if let Some((_, si)) = i_term.filter(|(ii, _)| *ii == idx) {
+            signed(quote!(half_c.mul_ref(&sinc)), si)
+        } else {
+            let k = ctx.in_m.iter().position(|&p| p == idx).expect("a field of B");
+            let hk = quote!(hk);
+            let inner = match &c.family {
+                Family::Dual { i_times, .. } => Some((&hk, -1, i_times.as_slice())),
+                Family::Scalar(_) => None,
+            };
+            ctx.combine(bi, mi, k, Some(&quote!(sinc)), inner)?
+        };
+        exp_fields.push(quote!(#f: #v));
+    }
+    // log_unit: the factors from (sin, cos), then every field of B
+    let log_body = match &c.family {
+        Family::Dual { .. } | Family::Scalar(Sign::Elliptic) => {
+            let sin2 = ctx.square_form(mi, -1)?;
+            quote! {
+                let sin = (#sin2).sqrt();
+                if sin.to_f64() == 0.0 && self.#scalar_field.to_f64() < 0.0 {
+                    return Err(#cf::undefined("log", self.to_string(), "a full turn has no unique rotation axis"));
+                }
+                let (inv, kk) = #cf::log_factors(&sin, &self.#scalar_field);
+            }
+        }
+        Family::Scalar(sign) => {
+            let qf = ctx.square_form(mi, 1)?;
+            let hyper = quote! {
+                if self.#scalar_field.to_f64() <= 0.0 {
+                    return Err(#cf::undefined("log", self.to_string(), "no real logarithm (q = B² > 0 and the scalar part is not positive)"));
+                }
+                #cf::log_factor_hyperbolic(&q.sqrt(), &self.#scalar_field)
+            };
+            let pick = if *sign == Sign::Hyperbolic {
+                hyper
+            } else {
+                quote! {
+                    if q.to_f64() <= 0.0 {
+                        let sin = (-q).sqrt();
+                        if sin.to_f64() == 0.0 && self.#scalar_field.to_f64() < 0.0 {
+                            return Err(#cf::undefined("log", self.to_string(), "a full turn has no unique rotation axis"));
+                        }
+                        #cf::log_factors(&sin, &self.#scalar_field).0
+                    } else {
+                        #hyper
+                    }
+                }
+            };
+            quote! { let q = #qf; let inv = { #pick }; }
+        }
+    };
+    let pk = match (&c.family, i_term) {
+        (Family::Dual { .. }, Some((ii, si))) => {
+            let fi = &mfields[ii];
+            let v = signed(quote!(self.#fi.mul_ref(&kk)), si);
+            quote!(let pk = #v;)
+        }
+        _ => quote!(),
+    };
+    let pk_name = quote!(pk);
+    let log_fields = (0..c.square.len())
+        .map(|k| {
+            let f = &names.fields[bi][k];
+            let v = ctx.combine(mi, bi, k, Some(&quote!(inv)), log_inner.as_deref().map(|r| (&pk_name, 1, r)))?;
+            Ok(quote!(#f: #v))
+        })
+        .collect::<Result<Vec<_>, CodegenError>>()?;
+    let qm = ctx.square_form(mi, 1)?;
+    let norm_tail = if matches!(c.family, Family::Dual { .. }) {
+        quote! {
+            let half_beta = #hb;
+            let u = T::one() / alpha.sqrt();
+            let w = -(half_beta * u.clone()) / alpha;
+            let mut out = self.scale(&u);
+            #norm_extra
+            Ok(out)
+        }
+    } else {
+        quote!(Ok(self.scale(&(T::one() / alpha.sqrt()))))
+    };
+    let bdoc = format!(
+        " The exponential in closed form (`algebra_core::closed_form`): a unit `{mt}`. An unchecked kernel: a NaN or infinite coefficient gives NaN coefficients (use `try_exp` for input of unknown origin)."
+    );
+    Ok(quote! {
+        impl<T: ::algebra_core::Real> #bt<T> {
+            #[doc = #bdoc]
+            pub fn exp(&self) -> #mt<T> {
+                #factors
+                #half_c_exp
+                #mt { #(#exp_fields),* }
+            }
+
+            /// [`Self::exp`] after checking that every coefficient is finite:
+            /// `MvError::Undefined` ("coefficients are not finite") otherwise, and "the result is
+            /// not finite" when a finite bivector is too large for the scalar.
+            pub fn try_exp(&self) -> ::core::result::Result<#mt<T>, ::algebra_core::MvError> {
+                #cf::check_finite("exp", self, self.iter())?;
+                let out = self.exp();
+                #cf::check_finite("exp", self, out.iter()).map_err(|_| {
+                    #cf::undefined("exp", self.to_string(), "the result is not finite (the bivector is too large for this scalar)")
+                })?;
+                Ok(out)
+            }
+        }
+
+        impl<T: ::algebra_core::Real> #mt<T> {
+            /// `self / sqrt(self rev(self))`, the norm inverted in closed form: a unit element
+            /// (`m rev(m) = 1`) when `self rev(self)` has no other part than the scalar (and the
+            /// central nilpotent element, if any). Fails when the norm is not positive or a
+            /// coefficient is not finite.
+            pub fn normalize(&self) -> #err {
+                #cf::check_finite("normalize", self, self.iter())?;
+                let alpha = self.#scalar_field.mul_ref(&self.#scalar_field) - (#qm);
+                if alpha.to_f64().is_nan() || alpha.to_f64() <= 0.0 {
+                    return Err(#cf::undefined("normalize", self.to_string(), "the norm self rev(self) is not positive"));
+                }
+                #norm_tail
+            }
+
+            /// The logarithm of `normalize(self)` in closed form: the bivector `B` with
+            /// `exp(B) = normalize(self)` (rotation angle `θ ∈ [0, π)`). Fails when `normalize`
+            /// does, and for a full turn (`θ = π`, no unique axis).
+            pub fn log(&self) -> #berr {
+                self.normalize()?.log_unit()
+            }
+
+            /// The logarithm of an element that is already unit (`self rev(self) = 1`, as every
+            /// `exp` and product of unit elements is, up to rounding): [`Self::log`] without the
+            /// normalisation. For an element that is not unit the result is not a logarithm of
+            /// anything. Fails for a full turn and for non-finite input.
+            pub fn log_unit(&self) -> #berr {
+                #cf::check_finite("log", self, self.iter())?;
+                #log_body
+                #pk
+                Ok(#bt { #(#log_fields),* })
+            }
+
+            /// The square root of `normalize(self)`: `exp(log(self)/2)`.
+            pub fn sqrt(&self) -> #err {
+                Ok((self.log()? * T::from_ratio(1, 2)).exp())
+            }
+
+            /// `normalize(self)^t = exp(t log(self))`.
+            pub fn pow(&self, t: &T) -> #err {
+                #cf::check_finite("pow", t, ::core::iter::once(t))?;
+                Ok((self.log()? * t.clone()).exp())
+            }
+        }
+    })
+}
+
+/// Every closed-form impl of the module.
+pub(super) fn module_items(plan: &Plan, names: &Names) -> TokenStream {
+    let result = detect(&plan.spec, &plan.closed)
+        .and_then(|found| found.iter().map(|c| items(plan, names, c)).collect::<Result<Vec<_>, _>>());
+    match result {
+        Ok(items) => quote!(#(#items)*),
+        Err(e) => {
+            let msg = e.to_string();
+            quote!(compile_error!(#msg);)
+        }
+    }
+}

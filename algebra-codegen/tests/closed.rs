@@ -1,0 +1,80 @@
+//! Which (bivector, even) pairs `algebra_codegen::closed::detect` finds, from the tables alone,
+//! and that `--standalone` output leaves the closed forms out.
+
+use algebra_codegen::closed::{Family, Sign, detect};
+use algebra_codegen::{ModuleSpec, plan::Plan, standalone};
+use algebra_core::{Algebra, Basis, Metric};
+use std::sync::Arc;
+
+fn plan(alg: Arc<Algebra>, basis: Basis, types: &str) -> Plan {
+    let types = ModuleSpec::parse_types(types, &alg).unwrap();
+    Plan::new(ModuleSpec::new("m", alg.metric().clone(), basis, types).unwrap()).unwrap()
+}
+
+fn families(alg: Arc<Algebra>, basis: Basis, types: &str) -> Vec<(usize, usize, Family)> {
+    let p = plan(alg, basis, types);
+    detect(&p.spec, &p.closed).unwrap().into_iter().map(|c| (c.bivector, c.even, c.family)).collect()
+}
+
+fn diagonal(p: usize, q: usize, r: usize) -> Arc<Algebra> {
+    Algebra::new("test", Metric::diagonal(p, q, r).unwrap())
+}
+
+#[test]
+fn scalar_squares_by_sign() {
+    // Euclidean rotors, 2D PGA (e3² = 0 here), a boost, R^{2,1}
+    let f = |alg| families(alg, Basis::Blade, "B=grade2;M=even");
+    assert_eq!(f(diagonal(3, 0, 0)), [(0, 1, Family::Scalar(Sign::Elliptic))]);
+    assert_eq!(f(diagonal(2, 0, 1)), [(0, 1, Family::Scalar(Sign::Elliptic))]);
+    assert_eq!(f(diagonal(1, 1, 0)), [(0, 1, Family::Scalar(Sign::Hyperbolic))]);
+    assert_eq!(f(diagonal(2, 1, 0)), [(0, 1, Family::Scalar(Sign::Mixed))]);
+    // complex numbers as a sub-pair of g3
+    let g3 = Algebra::builtin("g3").unwrap();
+    assert_eq!(families(g3, Basis::Blade, "I=e12;C=1,e12"), [(0, 1, Family::Scalar(Sign::Elliptic))]);
+}
+
+#[test]
+fn dual_number_squares() {
+    for (name, basis, types) in [
+        ("pga3", Basis::Blade, "B=e01,e20,e03,e12,e31,e23;M=1,e01,e02,e30,e21,e13,e23,e0123"),
+        ("g123inf", Basis::Blade, "B=grade2;M=even"),
+        ("cga-null", Basis::Product, "B=e12,e13,e23,e1inf,e2inf,e3inf;M=1,e12,e13,e23,e1inf,e2inf,e3inf,e123inf"),
+    ] {
+        let found = families(Algebra::builtin(name).unwrap(), basis, types);
+        assert_eq!(found.len(), 1, "{name}");
+        let Family::Dual { i, half_c, i_times } = &found[0].2 else { panic!("{name}: {found:?}") };
+        assert_eq!(i.count_ones(), 4, "{name}: I is the pseudoscalar");
+        assert_eq!(half_c.len(), 3, "{name}: c/2 pairs each rotation with its translation");
+        assert_eq!(i_times.iter().filter(|r| !r.is_empty()).count(), 3, "{name}: I kills translations");
+    }
+}
+
+#[test]
+fn outside_the_families_nothing() {
+    let f = |alg, types| families(alg, Basis::Blade, types);
+    // I² = -1 (STA), I² = +1 (4D Euclidean), several grade-4 elements (R^{4,1})
+    assert!(f(diagonal(1, 3, 0), "B=grade2;M=even").is_empty());
+    assert!(f(diagonal(4, 0, 0), "B=grade2;M=even").is_empty());
+    assert!(f(Algebra::builtin("cga").unwrap(), "B=grade2;M=even").is_empty());
+    // an even type alone has no pair; a bivector type alone pairs with the automatic `Even`
+    assert!(f(diagonal(3, 0, 0), "M=even").is_empty());
+    let p = plan(diagonal(3, 0, 0), Basis::Blade, "B=grade2;V=grade1");
+    let found = detect(&p.spec, &p.closed).unwrap();
+    assert_eq!((found.len(), p.spec.types[found[0].even].name.as_str()), (1, "Even"));
+    // the product basis of G_{0123inf}: e0inf does not reverse to -e0inf
+    let cn = Algebra::builtin("cga-null").unwrap();
+    assert!(families(cn, Basis::Product, "B=grade2;M=even").is_empty());
+}
+
+#[test]
+fn emitted_in_modules_but_not_standalone() {
+    let p = plan(Algebra::builtin("pga3").unwrap(), Basis::Blade, "Line=grade2;Motor=even");
+    let module = algebra_codegen::emit::module(&p).to_string();
+    for m in ["fn exp", "fn try_exp", "fn normalize", "fn log", "fn log_unit", "fn sqrt", "fn pow"] {
+        assert!(module.contains(m), "{m}");
+    }
+    let file = standalone::file(&p, &[], None).unwrap();
+    let text = quote::ToTokens::to_token_stream(&file).to_string();
+    assert!(!text.contains("closed_form") && !text.contains("fn log_unit") && !text.contains("Real"));
+    assert!(text.contains("pub struct Motor"));
+}
