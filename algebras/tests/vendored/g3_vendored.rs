@@ -8851,7 +8851,7 @@ pub mod g3_vendored {
     for Vector<T> {
         type Output = Vector<T>;
         ///`rev(self) x self` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
-        #[inline]
+        #[inline(always)]
         fn sandwich(&self, x: &Vector<T>) -> Vector<T> {
             let t0 = ((self.e1.mul_ref(&x.e1))
                 + &((self.e2.mul_ref(&x.e2)) + &(self.e3.mul_ref(&x.e3))));
@@ -8871,7 +8871,7 @@ pub mod g3_vendored {
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Apply<Vector<T>> for Vector<T> {
         type Output = Vector<T>;
         ///`self x rev(self)` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
-        #[inline]
+        #[inline(always)]
         fn apply(&self, x: &Vector<T>) -> Vector<T> {
             let t0 = ((self.e1.mul_ref(&x.e1))
                 + &((self.e2.mul_ref(&x.e2)) + &(self.e3.mul_ref(&x.e3))));
@@ -8891,7 +8891,7 @@ pub mod g3_vendored {
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Sandwich<Rotor<T>> for Vector<T> {
         type Output = Rotor<T>;
         ///`rev(self) x self` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
-        #[inline]
+        #[inline(always)]
         fn sandwich(&self, x: &Rotor<T>) -> Rotor<T> {
             let t0 = ((self.e1.mul_ref(&x.scalar))
                 - &((self.e2.mul_ref(&x.e12)) + &(self.e3.mul_ref(&x.e13))));
@@ -8916,7 +8916,7 @@ pub mod g3_vendored {
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Apply<Rotor<T>> for Vector<T> {
         type Output = Rotor<T>;
         ///`self x rev(self)` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
-        #[inline]
+        #[inline(always)]
         fn apply(&self, x: &Rotor<T>) -> Rotor<T> {
             let t0 = ((self.e1.mul_ref(&x.scalar))
                 - &((self.e2.mul_ref(&x.e12)) + &(self.e3.mul_ref(&x.e13))));
@@ -8941,7 +8941,7 @@ pub mod g3_vendored {
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Sandwich<Odd<T>> for Vector<T> {
         type Output = Odd<T>;
         ///`rev(self) x self` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
-        #[inline]
+        #[inline(always)]
         fn sandwich(&self, x: &Odd<T>) -> Odd<T> {
             let t0 = ((self.e1.mul_ref(&x.e1))
                 + &((self.e2.mul_ref(&x.e2)) + &(self.e3.mul_ref(&x.e3))));
@@ -8966,7 +8966,7 @@ pub mod g3_vendored {
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Apply<Odd<T>> for Vector<T> {
         type Output = Odd<T>;
         ///`self x rev(self)` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
-        #[inline]
+        #[inline(always)]
         fn apply(&self, x: &Odd<T>) -> Odd<T> {
             let t0 = ((self.e1.mul_ref(&x.e1))
                 + &((self.e2.mul_ref(&x.e2)) + &(self.e3.mul_ref(&x.e3))));
@@ -8991,7 +8991,7 @@ pub mod g3_vendored {
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Sandwich<Vector<T>> for Rotor<T> {
         type Output = Vector<T>;
         ///`rev(self) x self` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
-        #[inline]
+        #[inline(always)]
         fn sandwich(&self, x: &Vector<T>) -> Vector<T> {
             let t0 = ((self.scalar.mul_ref(&x.e1))
                 - &((self.e12.mul_ref(&x.e2)) + &(self.e13.mul_ref(&x.e3))));
@@ -9016,7 +9016,7 @@ pub mod g3_vendored {
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Apply<Vector<T>> for Rotor<T> {
         type Output = Vector<T>;
         ///`self x rev(self)` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
-        #[inline]
+        #[inline(always)]
         fn apply(&self, x: &Vector<T>) -> Vector<T> {
             let t0 = ((self.scalar.mul_ref(&x.e1))
                 + &((self.e12.mul_ref(&x.e2)) + &(self.e13.mul_ref(&x.e3))));
@@ -9043,7 +9043,7 @@ pub mod g3_vendored {
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Sandwich<Rotor<T>> for Rotor<T> {
         type Output = Rotor<T>;
         ///`rev(self) x self` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
-        #[inline]
+        #[inline(always)]
         fn sandwich(&self, x: &Rotor<T>) -> Rotor<T> {
             let t0 = (((self.scalar.mul_ref(&x.scalar)) + &(self.e12.mul_ref(&x.e12)))
                 + &((self.e13.mul_ref(&x.e13)) + &(self.e23.mul_ref(&x.e23))));
@@ -9068,7 +9068,7 @@ pub mod g3_vendored {
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Apply<Rotor<T>> for Rotor<T> {
         type Output = Rotor<T>;
         ///`self x rev(self)` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
-        #[inline]
+        #[inline(always)]
         fn apply(&self, x: &Rotor<T>) -> Rotor<T> {
             let t0 = (((self.scalar.mul_ref(&x.scalar)) - &(self.e12.mul_ref(&x.e12)))
                 - &((self.e13.mul_ref(&x.e13)) + &(self.e23.mul_ref(&x.e23))));
@@ -9099,7 +9099,7 @@ pub mod g3_vendored {
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Sandwich<Odd<T>> for Rotor<T> {
         type Output = Odd<T>;
         ///`rev(self) x self` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
-        #[inline]
+        #[inline(always)]
         fn sandwich(&self, x: &Odd<T>) -> Odd<T> {
             let t0 = (((self.scalar.mul_ref(&x.e1)) - &(self.e12.mul_ref(&x.e2)))
                 - &((self.e13.mul_ref(&x.e3)) - &(self.e23.mul_ref(&x.e123))));
@@ -9124,7 +9124,7 @@ pub mod g3_vendored {
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Apply<Odd<T>> for Rotor<T> {
         type Output = Odd<T>;
         ///`self x rev(self)` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
-        #[inline]
+        #[inline(always)]
         fn apply(&self, x: &Odd<T>) -> Odd<T> {
             let t0 = (((self.scalar.mul_ref(&x.e1)) + &(self.e12.mul_ref(&x.e2)))
                 + &((self.e13.mul_ref(&x.e3)) - &(self.e23.mul_ref(&x.e123))));
@@ -9155,7 +9155,7 @@ pub mod g3_vendored {
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Sandwich<Vector<T>> for Odd<T> {
         type Output = Vector<T>;
         ///`rev(self) x self` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
-        #[inline]
+        #[inline(always)]
         fn sandwich(&self, x: &Vector<T>) -> Vector<T> {
             let t0 = ((self.e1.mul_ref(&x.e1))
                 + &((self.e2.mul_ref(&x.e2)) + &(self.e3.mul_ref(&x.e3))));
@@ -9178,7 +9178,7 @@ pub mod g3_vendored {
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Apply<Vector<T>> for Odd<T> {
         type Output = Vector<T>;
         ///`self x rev(self)` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
-        #[inline]
+        #[inline(always)]
         fn apply(&self, x: &Vector<T>) -> Vector<T> {
             let t0 = ((self.e1.mul_ref(&x.e1))
                 + &((self.e2.mul_ref(&x.e2)) + &(self.e3.mul_ref(&x.e3))));
@@ -9201,7 +9201,7 @@ pub mod g3_vendored {
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Sandwich<Rotor<T>> for Odd<T> {
         type Output = Rotor<T>;
         ///`rev(self) x self` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
-        #[inline]
+        #[inline(always)]
         fn sandwich(&self, x: &Rotor<T>) -> Rotor<T> {
             let t0 = (((self.e1.mul_ref(&x.scalar)) - &(self.e2.mul_ref(&x.e12)))
                 - &((self.e3.mul_ref(&x.e13)) - &(self.e123.mul_ref(&x.e23))));
@@ -9226,7 +9226,7 @@ pub mod g3_vendored {
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Apply<Rotor<T>> for Odd<T> {
         type Output = Rotor<T>;
         ///`self x rev(self)` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
-        #[inline]
+        #[inline(always)]
         fn apply(&self, x: &Rotor<T>) -> Rotor<T> {
             let t0 = (((self.e1.mul_ref(&x.scalar)) - &(self.e2.mul_ref(&x.e12)))
                 - &((self.e3.mul_ref(&x.e13)) + &(self.e123.mul_ref(&x.e23))));
@@ -9253,7 +9253,7 @@ pub mod g3_vendored {
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Sandwich<Odd<T>> for Odd<T> {
         type Output = Odd<T>;
         ///`rev(self) x self` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
-        #[inline]
+        #[inline(always)]
         fn sandwich(&self, x: &Odd<T>) -> Odd<T> {
             let t0 = (((self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2)))
                 + &((self.e3.mul_ref(&x.e3)) + &(self.e123.mul_ref(&x.e123))));
@@ -9278,7 +9278,7 @@ pub mod g3_vendored {
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Apply<Odd<T>> for Odd<T> {
         type Output = Odd<T>;
         ///`self x rev(self)` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
-        #[inline]
+        #[inline(always)]
         fn apply(&self, x: &Odd<T>) -> Odd<T> {
             let t0 = (((self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2)))
                 + &((self.e3.mul_ref(&x.e3)) - &(self.e123.mul_ref(&x.e123))));

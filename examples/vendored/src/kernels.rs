@@ -8123,7 +8123,7 @@ impl<T: self::Ring> Multivector<T> {
 impl<T: self::Ring> self::Sandwich<Vector<T>> for Vector<T> {
     type Output = Vector<T>;
     ///`rev(self) x self` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
-    #[inline]
+    #[inline(always)]
     fn sandwich(&self, x: &Vector<T>) -> Vector<T> {
         let t0 = ((self.e1.mul_ref(&x.e1))
             + &((self.e2.mul_ref(&x.e2)) + &(self.e3.mul_ref(&x.e3))));
@@ -8143,7 +8143,7 @@ impl<T: self::Ring> self::Sandwich<Vector<T>> for Vector<T> {
 impl<T: self::Ring> self::Apply<Vector<T>> for Vector<T> {
     type Output = Vector<T>;
     ///`self x rev(self)` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
-    #[inline]
+    #[inline(always)]
     fn apply(&self, x: &Vector<T>) -> Vector<T> {
         let t0 = ((self.e1.mul_ref(&x.e1))
             + &((self.e2.mul_ref(&x.e2)) + &(self.e3.mul_ref(&x.e3))));
@@ -8163,7 +8163,7 @@ impl<T: self::Ring> self::Apply<Vector<T>> for Vector<T> {
 impl<T: self::Ring> self::Sandwich<Rotor<T>> for Vector<T> {
     type Output = Rotor<T>;
     ///`rev(self) x self` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
-    #[inline]
+    #[inline(always)]
     fn sandwich(&self, x: &Rotor<T>) -> Rotor<T> {
         let t0 = ((self.e1.mul_ref(&x.scalar))
             - &((self.e2.mul_ref(&x.e12)) + &(self.e3.mul_ref(&x.e13))));
@@ -8188,7 +8188,7 @@ impl<T: self::Ring> self::Sandwich<Rotor<T>> for Vector<T> {
 impl<T: self::Ring> self::Apply<Rotor<T>> for Vector<T> {
     type Output = Rotor<T>;
     ///`self x rev(self)` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
-    #[inline]
+    #[inline(always)]
     fn apply(&self, x: &Rotor<T>) -> Rotor<T> {
         let t0 = ((self.e1.mul_ref(&x.scalar))
             - &((self.e2.mul_ref(&x.e12)) + &(self.e3.mul_ref(&x.e13))));
@@ -8213,7 +8213,7 @@ impl<T: self::Ring> self::Apply<Rotor<T>> for Vector<T> {
 impl<T: self::Ring> self::Sandwich<Odd<T>> for Vector<T> {
     type Output = Odd<T>;
     ///`rev(self) x self` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
-    #[inline]
+    #[inline(always)]
     fn sandwich(&self, x: &Odd<T>) -> Odd<T> {
         let t0 = ((self.e1.mul_ref(&x.e1))
             + &((self.e2.mul_ref(&x.e2)) + &(self.e3.mul_ref(&x.e3))));
@@ -8238,7 +8238,7 @@ impl<T: self::Ring> self::Sandwich<Odd<T>> for Vector<T> {
 impl<T: self::Ring> self::Apply<Odd<T>> for Vector<T> {
     type Output = Odd<T>;
     ///`self x rev(self)` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
-    #[inline]
+    #[inline(always)]
     fn apply(&self, x: &Odd<T>) -> Odd<T> {
         let t0 = ((self.e1.mul_ref(&x.e1))
             + &((self.e2.mul_ref(&x.e2)) + &(self.e3.mul_ref(&x.e3))));
@@ -8263,7 +8263,7 @@ impl<T: self::Ring> self::Apply<Odd<T>> for Vector<T> {
 impl<T: self::Ring> self::Sandwich<Vector<T>> for Rotor<T> {
     type Output = Vector<T>;
     ///`rev(self) x self` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
-    #[inline]
+    #[inline(always)]
     fn sandwich(&self, x: &Vector<T>) -> Vector<T> {
         let t0 = ((self.scalar.mul_ref(&x.e1))
             - &((self.e12.mul_ref(&x.e2)) + &(self.e13.mul_ref(&x.e3))));
@@ -8288,7 +8288,7 @@ impl<T: self::Ring> self::Sandwich<Vector<T>> for Rotor<T> {
 impl<T: self::Ring> self::Apply<Vector<T>> for Rotor<T> {
     type Output = Vector<T>;
     ///`self x rev(self)` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
-    #[inline]
+    #[inline(always)]
     fn apply(&self, x: &Vector<T>) -> Vector<T> {
         let t0 = ((self.scalar.mul_ref(&x.e1))
             + &((self.e12.mul_ref(&x.e2)) + &(self.e13.mul_ref(&x.e3))));
@@ -8315,7 +8315,7 @@ impl<T: self::Ring> self::Apply<Vector<T>> for Rotor<T> {
 impl<T: self::Ring> self::Sandwich<Rotor<T>> for Rotor<T> {
     type Output = Rotor<T>;
     ///`rev(self) x self` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
-    #[inline]
+    #[inline(always)]
     fn sandwich(&self, x: &Rotor<T>) -> Rotor<T> {
         let t0 = (((self.scalar.mul_ref(&x.scalar)) + &(self.e12.mul_ref(&x.e12)))
             + &((self.e13.mul_ref(&x.e13)) + &(self.e23.mul_ref(&x.e23))));
@@ -8340,7 +8340,7 @@ impl<T: self::Ring> self::Sandwich<Rotor<T>> for Rotor<T> {
 impl<T: self::Ring> self::Apply<Rotor<T>> for Rotor<T> {
     type Output = Rotor<T>;
     ///`self x rev(self)` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
-    #[inline]
+    #[inline(always)]
     fn apply(&self, x: &Rotor<T>) -> Rotor<T> {
         let t0 = (((self.scalar.mul_ref(&x.scalar)) - &(self.e12.mul_ref(&x.e12)))
             - &((self.e13.mul_ref(&x.e13)) + &(self.e23.mul_ref(&x.e23))));
@@ -8371,7 +8371,7 @@ impl<T: self::Ring> self::Apply<Rotor<T>> for Rotor<T> {
 impl<T: self::Ring> self::Sandwich<Odd<T>> for Rotor<T> {
     type Output = Odd<T>;
     ///`rev(self) x self` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
-    #[inline]
+    #[inline(always)]
     fn sandwich(&self, x: &Odd<T>) -> Odd<T> {
         let t0 = (((self.scalar.mul_ref(&x.e1)) - &(self.e12.mul_ref(&x.e2)))
             - &((self.e13.mul_ref(&x.e3)) - &(self.e23.mul_ref(&x.e123))));
@@ -8396,7 +8396,7 @@ impl<T: self::Ring> self::Sandwich<Odd<T>> for Rotor<T> {
 impl<T: self::Ring> self::Apply<Odd<T>> for Rotor<T> {
     type Output = Odd<T>;
     ///`self x rev(self)` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
-    #[inline]
+    #[inline(always)]
     fn apply(&self, x: &Odd<T>) -> Odd<T> {
         let t0 = (((self.scalar.mul_ref(&x.e1)) + &(self.e12.mul_ref(&x.e2)))
             + &((self.e13.mul_ref(&x.e3)) - &(self.e23.mul_ref(&x.e123))));
@@ -8427,7 +8427,7 @@ impl<T: self::Ring> self::Apply<Odd<T>> for Rotor<T> {
 impl<T: self::Ring> self::Sandwich<Vector<T>> for Odd<T> {
     type Output = Vector<T>;
     ///`rev(self) x self` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
-    #[inline]
+    #[inline(always)]
     fn sandwich(&self, x: &Vector<T>) -> Vector<T> {
         let t0 = ((self.e1.mul_ref(&x.e1))
             + &((self.e2.mul_ref(&x.e2)) + &(self.e3.mul_ref(&x.e3))));
@@ -8450,7 +8450,7 @@ impl<T: self::Ring> self::Sandwich<Vector<T>> for Odd<T> {
 impl<T: self::Ring> self::Apply<Vector<T>> for Odd<T> {
     type Output = Vector<T>;
     ///`self x rev(self)` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
-    #[inline]
+    #[inline(always)]
     fn apply(&self, x: &Vector<T>) -> Vector<T> {
         let t0 = ((self.e1.mul_ref(&x.e1))
             + &((self.e2.mul_ref(&x.e2)) + &(self.e3.mul_ref(&x.e3))));
@@ -8473,7 +8473,7 @@ impl<T: self::Ring> self::Apply<Vector<T>> for Odd<T> {
 impl<T: self::Ring> self::Sandwich<Rotor<T>> for Odd<T> {
     type Output = Rotor<T>;
     ///`rev(self) x self` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
-    #[inline]
+    #[inline(always)]
     fn sandwich(&self, x: &Rotor<T>) -> Rotor<T> {
         let t0 = (((self.e1.mul_ref(&x.scalar)) - &(self.e2.mul_ref(&x.e12)))
             - &((self.e3.mul_ref(&x.e13)) - &(self.e123.mul_ref(&x.e23))));
@@ -8498,7 +8498,7 @@ impl<T: self::Ring> self::Sandwich<Rotor<T>> for Odd<T> {
 impl<T: self::Ring> self::Apply<Rotor<T>> for Odd<T> {
     type Output = Rotor<T>;
     ///`self x rev(self)` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
-    #[inline]
+    #[inline(always)]
     fn apply(&self, x: &Rotor<T>) -> Rotor<T> {
         let t0 = (((self.e1.mul_ref(&x.scalar)) - &(self.e2.mul_ref(&x.e12)))
             - &((self.e3.mul_ref(&x.e13)) + &(self.e123.mul_ref(&x.e23))));
@@ -8525,7 +8525,7 @@ impl<T: self::Ring> self::Apply<Rotor<T>> for Odd<T> {
 impl<T: self::Ring> self::Sandwich<Odd<T>> for Odd<T> {
     type Output = Odd<T>;
     ///`rev(self) x self` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
-    #[inline]
+    #[inline(always)]
     fn sandwich(&self, x: &Odd<T>) -> Odd<T> {
         let t0 = (((self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2)))
             + &((self.e3.mul_ref(&x.e3)) + &(self.e123.mul_ref(&x.e123))));
@@ -8550,7 +8550,7 @@ impl<T: self::Ring> self::Sandwich<Odd<T>> for Odd<T> {
 impl<T: self::Ring> self::Apply<Odd<T>> for Odd<T> {
     type Output = Odd<T>;
     ///`self x rev(self)` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
-    #[inline]
+    #[inline(always)]
     fn apply(&self, x: &Odd<T>) -> Odd<T> {
         let t0 = (((self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2)))
             + &((self.e3.mul_ref(&x.e3)) - &(self.e123.mul_ref(&x.e123))));
