@@ -504,6 +504,9 @@ fn items(plan: &Plan, names: &Names, c: &ClosedForm) -> Result<TokenStream, Code
 
 /// Every closed-form impl of the module.
 pub(super) fn module_items(plan: &Plan, names: &Names) -> TokenStream {
+    if !plan.spec.closed_forms {
+        return TokenStream::new();
+    }
     let result = detect(&plan.spec, &plan.closed)
         .and_then(|found| found.iter().map(|c| items(plan, names, c)).collect::<Result<Vec<_>, _>>());
     match result {

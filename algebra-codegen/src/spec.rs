@@ -223,6 +223,10 @@ pub struct ModuleSpec {
     /// types ([`crate::fallback`]); `false` sends every product landing outside the declared
     /// types to the full multivector (the DSL's `fallback full;`). Default `true`.
     pub parity_types: bool,
+    /// Whether detected closed forms (`exp`, `log`, `normalize`, ... in [`crate::closed`]) are
+    /// emitted; `false` (the DSL's `closed_forms off;`) leaves them out, for a crate that gives
+    /// the types its own methods of those names. Default `true`.
+    pub closed_forms: bool,
 }
 
 impl ModuleSpec {
@@ -265,6 +269,7 @@ impl ModuleSpec {
             types,
             serde: false,
             parity_types: true,
+            closed_forms: true,
         })
     }
 

@@ -26,6 +26,9 @@
 //! - `fallback parity;` (default) or `fallback full;`: when no type is the full multivector,
 //!   a result outside every declared type lands in an automatic `Even`/`Odd` type if it has one
 //!   parity (`parity`), or always in the full multivector (`full`: no automatic types).
+//! - `closed_forms on;` (default) or `closed_forms off;`: whether the closed-form `exp`, `log`,
+//!   `log_unit`, `normalize`, `sqrt`, `pow` detected from the tables are emitted (`off` for a
+//!   crate that gives the types its own methods of those names, as `motion` does for `Pose`).
 //! - `types { Name = selector; ... }` with selectors `grade K`, `even`, `odd`, `all`, or a
 //!   list `[1, e12, ...]`; doc comments on types are kept. A type may declare a polynomial
 //!   constraint after its selector: `Motor = even where unit;` (`rev(x) x = 1`),
@@ -89,6 +92,7 @@ struct Decl {
     types: Vec<TypeDecl>,
     serde: bool,
     parity_types: bool,
+    closed_forms: bool,
 }
 
 fn parse_value(input: ParseStream) -> syn::Result<Q> {
@@ -126,7 +130,7 @@ impl Parse for Decl {
         let body;
         braced!(body in input);
         let (mut generators, mut metric, mut basis, mut types) = (None, None, Basis::Blade, None);
-        let (mut serde, mut parity_types) = (false, true);
+        let (mut serde, mut parity_types, mut closed_forms) = (false, true, true);
         let mut metric_span = proc_macro2::Span::call_site();
         while !body.is_empty() {
             let key: Ident = body.parse()?;
@@ -182,6 +186,15 @@ impl Parse for Decl {
                         "parity" => true,
                         "full" => false,
                         _ => return Err(syn::Error::new(f.span(), "expected `parity` or `full`")),
+                    };
+                    body.parse::<Token![;]>()?;
+                }
+                "closed_forms" => {
+                    let f: Ident = body.parse()?;
+                    closed_forms = match f.to_string().as_str() {
+                        "on" => true,
+                        "off" => false,
+                        _ => return Err(syn::Error::new(f.span(), "expected `on` or `off`")),
                     };
                     body.parse::<Token![;]>()?;
                 }
@@ -248,7 +261,7 @@ impl Parse for Decl {
                     return Err(syn::Error::new(
                         key.span(),
                         format!(
-                            "unknown section `{other}` (expected generators, metric, basis, fallback, derive or types)"
+                            "unknown section `{other}` (expected generators, metric, basis, fallback, closed_forms, derive or types)"
                         ),
                     ));
                 }
@@ -265,7 +278,7 @@ impl Parse for Decl {
             (MetricDecl::Builtin(_), None) => Vec::new(),
             (MetricDecl::Pairs(_), None) => return Err(missing("generators")),
         };
-        Ok(Decl { engine, attrs, vis, name, generators, metric, metric_span, basis, types, serde, parity_types })
+        Ok(Decl { engine, attrs, vis, name, generators, metric, metric_span, basis, types, serde, parity_types, closed_forms })
     }
 }
 
@@ -347,6 +360,7 @@ fn expand(decl: Decl) -> syn::Result<proc_macro2::TokenStream> {
     })?;
     spec.serde = decl.serde;
     spec.parity_types = decl.parity_types;
+    spec.closed_forms = decl.closed_forms;
     let plan = Plan::new(spec).map_err(|e| syn::Error::new(decl.name.span(), e))?;
     let mut items = algebra_codegen::emit::module_items(&plan);
     items.extend(algebra_codegen::constraint::methods(&plan).map_err(|e| syn::Error::new(decl.name.span(), e))?);

@@ -30,6 +30,9 @@ algebra_macros::algebra! {
     /// projections (`pose.project_to_bivector()`).
     pub mod elements {
         metric builtin "g123inf";
+        // motion's own `Pose::log`/`Pose::exp` (exp_log.rs, with `MotionError` and the paper's
+        // conventions) are the pose layer's; the generated ones stay in gam_algebras::g123inf
+        closed_forms off;
         types {
             /// The paper's pose `S`: any element of G_{123inf}^+ (eq. 4), unit or not, in the
             /// paper's order `[S∅, S12, S13, S23, S1∞, S2∞, S3∞, Sω]`. The same type carries the
