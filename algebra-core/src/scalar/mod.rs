@@ -7,9 +7,9 @@
 //!
 //! | trait | adds | implemented for |
 //! |---|---|---|
-//! | [`Ring`] | `+ - *`, exact rational constants, exact zero test | everything below, and [`Poly`](crate::Poly) |
+//! | [`Ring`] | `+ - *`, exact rational constants, exact zero test | everything below, and `Poly` (feature `rug`) |
 //! | [`Field`] | division, checked reciprocal | all but polynomials |
-//! | [`Real`] | `sqrt`, `exp`, `ln`, trig, ordering, precision-aware epsilon | `f32`, `f64`, num-dual types, [`Jet`], [`MpFloat`](crate::MpFloat) |
+//! | [`Real`] | `sqrt`, `exp`, `ln`, trig, ordering, precision-aware epsilon | `f32`, `f64`, num-dual types, [`Jet`], `MpFloat` (feature `rug`) |
 //!
 //! Beside them, the layer for code that must also run over SIMD lanes (module `decide`):
 //! [`Elementary`] (the functions without an ordering), [`Select`] and [`Mask`] (decisions as
@@ -115,7 +115,7 @@ pub trait Ring:
     fn relative_epsilon() -> f64;
 
     /// `|self|` compared with `|other|`, decided in the type's own precision and exponent
-    /// range: exactly for rationals, in MPFR for [`MpFloat`](crate::MpFloat). The default
+    /// range: exactly for rationals, in MPFR for `MpFloat` (feature `rug`). The default
     /// compares [`Ring::magnitude`] (exact for `f32`/`f64`; the largest component for dual
     /// numbers).
     ///
