@@ -14,8 +14,10 @@
 //! Beside them, the layer for code that must also run over SIMD lanes (module `decide`):
 //! [`Elementary`] (the functions without an ordering), [`Select`] and [`Mask`] (decisions as
 //! data), [`Diagnostics`] (sizes a lane type can give honestly) and [`LaneReal`] (all three).
-//! Every [`Real`] has them by blanket impl; the lane types [`F32x4`], [`F32x8`], [`F64x2`],
-//! [`F64x4`] (feature `lanes`) and [`LaneDual`] implement them and are never [`Real`].
+//! Every [`Real`] has them by blanket impl; the lane types
+#![cfg_attr(feature = "lanes", doc = "[`F32x4`], [`F32x8`], [`F64x2`], [`F64x4`]")]
+#![cfg_attr(not(feature = "lanes"), doc = "`F32x4`, `F32x8`, `F64x2`, `F64x4`")]
+//! (feature `lanes`) and [`LaneDual`] implement them and are never [`Real`].
 //!
 //! Reference arithmetic (`&a * &b`) cannot be a supertrait bound that Rust elaborates at use
 //! sites, so the trait offers it as methods ([`Ring::mul_ref`], ...) with efficient overrides
