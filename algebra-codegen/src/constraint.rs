@@ -2,7 +2,7 @@
 //! `rev(x) x = 1`; a null vector, `x x = 0`; a simple bivector such as a PGA line, `x ∧ x = 0`)
 //! lets the generator shorten the kernels that take it. Every output component of the product
 //! (or versor action) is expanded as a polynomial in the input coefficients, reduced modulo the
-//! constraint ideal (a reduced Gröbner basis, [`algebra_core::ideal`]), and the cheapest
+//! constraint ideal (a reduced Gröbner basis, `algebra_core::ideal`), and the cheapest
 //! representative of its residue class is kept. Components whose normal form is zero vanish on
 //! every constrained input — *proven* by ideal membership, not assumed — so the output type is
 //! the smallest declared type holding the rest (a unit motor acting on a point gives a point).
@@ -16,7 +16,7 @@
 //!
 //! Declared in the `algebra!` DSL (`Motor = even where unit;`) or in `--types`
 //! (`Motor=even where unit`): [`TypeSpec::constraint`](crate::TypeSpec::constraint). The
-//! reduction ([`constrained_action`], [`constrained_product`]) needs `algebra-core`'s `rug`
+//! reduction (`constrained_action`, `constrained_product`) needs `algebra-core`'s `rug`
 //! (`Poly`, ideals) and is behind the `constraints` feature. The proc macro stays GMP-free: it
 //! reads the kernels of the predefined modules from a committed table of reduced term lists
 //! ([`table`]), and computes others only when its own `constraints` feature is on.

@@ -220,6 +220,11 @@ fn type_items(plan: &Plan, names: &Names, i: usize) -> TokenStream {
     );
     let docs = t.doc.iter().map(|d| quote!(#[doc = #d]));
     let field_docs = elements.iter().map(|e| format!("Coefficient of `{e}`."));
+    let new_doc = format!(
+        " A value from its coefficients, in the order of [`Self::ELEMENTS`]: the arguments are the \
+         coefficients of {}, in this order.",
+        elements.iter().map(|e| format!("`{e}`")).collect::<Vec<_>>().join(", ")
+    );
     let one = if masks.contains(&0) {
         let vals = masks.iter().map(|&m| if m == 0 { quote!(T::one()) } else { quote!(T::zero()) });
         quote! {
@@ -250,7 +255,7 @@ fn type_items(plan: &Plan, names: &Names, i: usize) -> TokenStream {
             /// The bitmasks of the fields' basis elements, in order.
             pub const MASKS: [u32; #count] = [#(#masks),*];
 
-            /// A value from its coefficients, in the order of [`Self::ELEMENTS`].
+            #[doc = #new_doc]
             #[allow(clippy::too_many_arguments)]
             pub fn new(#(#fields: T),*) -> Self { #ty { #(#fields),* } }
 

@@ -14,7 +14,10 @@
 //! `T::from_ratio`, never compare values, and report their operation counts
 //! ([`plan::KernelStats`]).
 //!
-//! The `toml` feature adds [`metric_toml`]: algebra descriptions read from TOML files (the
+//! The `toml` feature adds
+#![cfg_attr(feature = "toml", doc = "[`metric_toml`]:")]
+#![cfg_attr(not(feature = "toml"), doc = "`metric_toml`:")]
+//! algebra descriptions read from TOML files (the
 //! CLI's `--algebra file.toml`). This crate is a build-time dependency only: kernels (from the
 //! macro or vendored) need `algebra-core` at run time, never this crate.
 //!

@@ -1,4 +1,4 @@
-//! Scalars with named symbols (today [`Poly`](crate::Poly), behind `rug`): what the generated
+//! Scalars with named symbols (today `Poly`, behind `rug`): what the generated
 //! types' `symbolic(prefix)` constructor needs to name each coefficient.
 
 use crate::scalar::Ring;

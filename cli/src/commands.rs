@@ -80,7 +80,7 @@ pub struct EvalArgs {
 pub fn eval(args: &EvalArgs) -> Result<String, CliError> {
     let alg = crate::budget::algebra(&args.algebra)?;
     let text = expression_text(&args.expr)?;
-    let ast = expr::parse(&text)?;
+    let ast = expr::parse(&text, &alg)?;
     let ev = Evaluator::new(&alg, args.basis);
     match args.scalar {
         ScalarKind::Rational => render(&ev.eval::<Q>(&ast)?, args.json),

@@ -13,12 +13,14 @@
 //!
 //! NUMBER is `digits`, `digits.digits` or `.digits`, optionally followed by an exponent: `e`
 //! with a sign and digits, or `E` with an optional sign and digits (`6e-17`, `1e+3`, `2.5E3`).
-//! A lowercase `e` directly followed by digits (`2e1`) is refused as ambiguous, because `e1`
-//! is a basis element in every predefined algebra: write `2*e1` or `2e+1`. IDENT is a letter followed by letters, digits or `_`. Chains of a
+//! A lowercase `e` directly followed by digits (`2e1`) is refused: as ambiguous when the
+//! algebra has the basis element (`e1`: write `2*e1` or `2e+1`), else with the exponent's
+//! spellings (`2e5` in g3: write `2e+5` or `2E5`). IDENT is a letter followed by letters, digits or `_`. Chains of a
 //! left-associative operator are kept flat ([`Node::Chain`]) so that long sums do not make
 //! deep trees; nesting (parentheses, prefixes, calls) is limited to [`MAX_DEPTH`].
 
 use crate::error::CliError;
+use algebra_core::Algebra;
 
 /// The deepest nesting of parentheses, prefix operators and calls accepted.
 pub const MAX_DEPTH: usize = 200;
@@ -217,7 +219,9 @@ fn exponent_len(rest: &[char]) -> usize {
     if digits == 0 { 0 } else { 1 + sign + digits }
 }
 
-fn tokenize(src: &str) -> Result<Vec<Token>, CliError> {
+/// `has_element(name)`: whether the algebra has a basis element `name` (for the wording of
+/// the `2e5` refusal).
+fn tokenize(src: &str, has_element: &dyn Fn(&str) -> bool) -> Result<Vec<Token>, CliError> {
     let chars: Vec<char> = src.chars().collect();
     let mut out = Vec::new();
     let mut i = 0;
@@ -243,12 +247,16 @@ fn tokenize(src: &str) -> Result<Vec<Token>, CliError> {
             if chars.get(i) == Some(&'e') && chars.get(i + 1).is_some_and(char::is_ascii_digit) {
                 let digits: String = chars[i + 1..].iter().take_while(|c| c.is_ascii_digit()).collect();
                 let number: String = chars[start..i].iter().collect();
-                return Err(parse_error(
-                    col,
+                let message = if has_element(&format!("e{digits}")) {
                     format!(
                         "`{number}e{digits}` is ambiguous: write `{number}*e{digits}` for a multiple of the basis element `e{digits}`, or `{number}e+{digits}` / `{number}E{digits}` for the number"
-                    ),
-                ));
+                    )
+                } else {
+                    format!(
+                        "`{number}e{digits}` is refused: write `{number}e+{digits}` or `{number}E{digits}` for the number (a lowercase `e` followed by digits names a basis element, and this algebra has no `e{digits}`)"
+                    )
+                };
+                return Err(parse_error(col, message));
             }
             i += exponent_len(&chars[i..]);
             out.push(Token { tok: Tok::Num(chars[start..i].iter().collect()), col });
@@ -269,12 +277,12 @@ fn tokenize(src: &str) -> Result<Vec<Token>, CliError> {
     Ok(out)
 }
 
-/// Parses an expression.
+/// Parses an expression for `algebra` (whose basis names word the refusal of `2e5`).
 ///
 /// Errors (exit status 2) name the column: `parse error at column 7: expected ')'`, or
 /// `unknown function `foo` at column 1 (...)`.
-pub fn parse(src: &str) -> Result<Node, CliError> {
-    let mut p = Parser { toks: tokenize(src)?, pos: 0, depth: 0 };
+pub fn parse(src: &str, algebra: &Algebra) -> Result<Node, CliError> {
+    let mut p = Parser { toks: tokenize(src, &|name| algebra.mask_of(name).is_ok())?, pos: 0, depth: 0 };
     let node = p.sum()?;
     let t = p.peek().clone();
     match t.tok {
@@ -453,6 +461,11 @@ mod tests {
         }
     }
 
+    /// [`super::parse`] in g3 (basis elements `e1`, `e2`, `e3`, `e12`, ...).
+    fn parse(src: &str) -> Result<Node, CliError> {
+        super::parse(src, &Algebra::builtin("g3").unwrap())
+    }
+
     fn err(src: &str) -> String {
         parse(src).unwrap_err().message
     }
@@ -476,6 +489,14 @@ mod tests {
         assert_eq!(err("e1 $ e2"), "parse error at column 4: unexpected character `$`");
         assert_eq!(err("e1)"), "parse error at column 3: unmatched `)`");
         assert!(err("2e1").starts_with("parse error at column 1: `2e1` is ambiguous"));
+        assert_eq!(
+            err("2e5"),
+            "parse error at column 1: `2e5` is refused: write `2e+5` or `2E5` for the number (a lowercase `e` followed by digits names a basis element, and this algebra has no `e5`)"
+        );
+        let cga = Algebra::builtin("cga").unwrap();
+        assert!(
+            super::parse("2e5", &cga).unwrap_err().message.contains("`2*e5` for a multiple of the basis element `e5`")
+        );
         assert!(err("2 e1").contains("column 3"));
         assert!(err("1.").contains("column 3"));
         assert!(err("foo(e1)").starts_with("unknown function `foo` at column 1"));

@@ -12,7 +12,7 @@
 //! increasing list (used as given). Velocities, when left out, are estimated by the method
 //! (docs/cli.md).
 //!
-//! A spec of this command is also accepted by `gam sample` and `gam plot` ([`sampled`]).
+//! A spec of this command is also accepted by `gam sample` and `gam plot` ([`sampler`]).
 
 use crate::error::CliError;
 use crate::hermite::strip_comments;

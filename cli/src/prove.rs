@@ -179,7 +179,8 @@ impl Script {
 
     fn eval(&mut self, text: &str) -> Result<Multivector<Poly>, CliError> {
         let text = self.expand_builders(text)?;
-        let ast = expr::parse(&text).map_err(|e| CliError::usage(format!("in `{}`: {}", text.trim(), e.message)))?;
+        let ast = expr::parse(&text, &self.algebra)
+            .map_err(|e| CliError::usage(format!("in `{}`: {}", text.trim(), e.message)))?;
         Evaluator::with_bindings(&self.algebra, self.basis, &self.bindings).eval::<Poly>(&ast)
     }
 
@@ -377,7 +378,7 @@ pub fn eval_relation(
             return Err(CliError::usage("`=` is not an expression: compare with `==` or `!=`"));
         }
         let alg = crate::budget::algebra(algebra)?;
-        let (l, r) = (expr::parse(&lhs)?, expr::parse(&rhs)?);
+        let (l, r) = (expr::parse(&lhs, &alg)?, expr::parse(&rhs, &alg)?);
         let ev = Evaluator::new(&alg, basis);
         let equal = match scalar {
             ScalarKind::Poly => (&ev.eval::<Poly>(&l)? - &ev.eval::<Poly>(&r)?).is_zero(),

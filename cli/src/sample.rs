@@ -1,6 +1,6 @@
 //! `gam sample SPEC.json --samples N [--json]`: the Hermite segment of a `gam hermite` spec
 //! (see [`crate::hermite`]) sampled at `N` evenly spaced parameter values `t = 0..1` (or the
-//! motion of a `gam interpolate` spec over `[t_0, t_m]`, [`crate::interpolate::sampled`]): the pose,
+//! motion of a `gam interpolate` spec over `[t_0, t_m]`, [`crate::interpolate::sampler`]): the pose,
 //! the position of a body point (`body_point` in the spec, body coordinates, default the
 //! origin), its linear speed and the angular speed of the body.
 //!

@@ -250,7 +250,12 @@ fn numbers_take_an_exponent() {
     // `2e1` could mean 2*e1 or 20: refused as ambiguous, the message offers both spellings
     let msg = fails(&["eval", "--algebra", "g3", "2e1"], 2);
     assert!(msg.contains("ambiguous") && msg.contains("`2*e1`") && msg.contains("`2e+1`"), "{msg}");
-    fails(&["eval", "--algebra", "cga", "--scalar", "f64", "3.5e5"], 2);
+    let msg = fails(&["eval", "--algebra", "cga", "--scalar", "f64", "3.5e5"], 2);
+    assert!(msg.contains("ambiguous") && msg.contains("basis element `e5`"), "{msg}");
+    // g3 has no `e5`: the refusal names only the number's spellings, not a basis element `e5`
+    let msg = fails(&["eval", "--algebra", "g3", "2e5"], 2);
+    assert!(msg.contains("`2e+5` or `2E5`") && msg.contains("this algebra has no `e5`"), "{msg}");
+    assert!(!msg.contains("ambiguous") && !msg.contains("`2*e5`"), "{msg}");
     assert_eq!(g3("rational", "2e+1"), "20");
     assert_eq!(g3("rational", "2*e1"), "2*e1");
     assert_eq!(g3("rational", "2E1*e1"), "20*e1");

@@ -16,9 +16,14 @@
 //!   ([`Ring`], [`Field`], [`Real`]), the scalars ([`Jet`], [`rational::Q`]; `f32`/`f64`
 //!   implement the traits), the runtime [`Multivector`] over an [`Algebra`] (the reference for
 //!   generated kernels, and exp/log).
-//! - features: `mpfr` (GMP/MPFR scalars [`MpFloat`], [`MpRational`], [`Poly`]; off by default
-//!   because it builds GMP/MPFR from source), `algebras` (the predefined modules
-//!   [`algebras::g3`], [`algebras::pga3`], ...), `motion` (the [`motion`] crate), `nalgebra`.
+//! - features: `mpfr` (GMP/MPFR scalars
+#![cfg_attr(feature = "mpfr", doc = "  [`MpFloat`], [`MpRational`], [`Poly`];")]
+#![cfg_attr(not(feature = "mpfr"), doc = "  `MpFloat`, `MpRational`, `Poly`;")]
+//!   off by default because it builds GMP/MPFR from source), `algebras` (the predefined modules
+#![cfg_attr(feature = "algebras", doc = "  [`algebras::g3`], [`algebras::pga3`], ...),")]
+#![cfg_attr(not(feature = "algebras"), doc = "  `algebras::g3`, `algebras::pga3`, ...),")]
+#![cfg_attr(feature = "motion", doc = "  `motion` (the [`motion`] crate), `nalgebra`.")]
+#![cfg_attr(not(feature = "motion"), doc = "  `motion` (the `motion` crate), `nalgebra`.")]
 //!
 //! The package is called `gam-ga`, not `gam`: `gam` is the command-line tool's package
 //! (`cargo run -p gam -- ...` is the documented way to run it) and stays so.

@@ -169,3 +169,27 @@ fn bad_input_is_a_typed_error() {
     assert_eq!(elliptic(&z, &[0.0, 1.0]).unwrap_err(), JuttlerError::ZeroQuaternion { index: 1 });
     assert!(matches!(algorithm1::<f64>(&[], &[]), Err(JuttlerError::TooFewPositions { .. })));
 }
+
+/// Equal parameters and a collocation matrix that is singular only in f64 get different errors:
+/// `t = [0, 1e-17, 1]` is distinct, but the second pivot `2e-17` is below f64's threshold; over
+/// Q the same (distinct) parameters solve exactly.
+#[test]
+fn equal_parameters_and_a_numerically_singular_system_are_told_apart() {
+    let r = [quat([q(1), q(0), q(0), q(0)]), quat([q(1), q(0), q(1), q(0)]), quat([q(1), q(1), q(0), q(0)])];
+    assert_eq!(
+        affine(&r, &[q(0), q(1), q(1)]).unwrap_err(),
+        JuttlerError::Parameters { why: "parameters 1 and 2 are equal".into() }
+    );
+    let tiny = ratio(1, 100_000_000_000_000_000);
+    let exact = affine(&r, &[q(0), tiny.clone(), q(1)]).unwrap();
+    assert_eq!(exact.eval(&tiny).real, r[1]);
+    let rf =
+        [Quaternion::new(1.0, 0.0, 0.0, 0.0), Quaternion::new(1.0, 0.0, 1.0, 0.0), Quaternion::new(1.0, 1.0, 0.0, 0.0)];
+    let e = affine(&rf, &[0.0, 1e-17, 1.0]).unwrap_err();
+    assert!(matches!(e, JuttlerError::NumericallySingular { unknowns: 3, .. }), "{e:?}");
+    assert!(e.to_string().contains("numerically singular: the parameters are distinct"), "{e}");
+    assert_eq!(
+        affine(&rf, &[0.0, 1.0, 1.0]).unwrap_err(),
+        JuttlerError::Parameters { why: "parameters 1 and 2 are equal".into() }
+    );
+}

@@ -95,7 +95,7 @@ pub fn requests(spec: &ModuleSpec, full: usize) -> Vec<Request> {
 /// `constraints` feature), else [`ConstraintError::NotPrecomputed`].
 ///
 /// # Errors
-/// As [`super::constrained_action`], plus the two table errors.
+/// As `constrained_action` (feature `constraints`), plus the two table errors.
 pub fn kernel(spec: &ModuleSpec, r: Request) -> Result<ConstrainedKernel, ConstraintError> {
     match table::lookup(table::PRECOMPUTED, &table::key(spec, r))? {
         Some(mut k) => {

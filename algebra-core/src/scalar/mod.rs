@@ -7,15 +7,17 @@
 //!
 //! | trait | adds | implemented for |
 //! |---|---|---|
-//! | [`Ring`] | `+ - *`, exact rational constants, exact zero test | everything below, and [`Poly`](crate::Poly) |
+//! | [`Ring`] | `+ - *`, exact rational constants, exact zero test | everything below, and `Poly` (feature `rug`) |
 //! | [`Field`] | division, checked reciprocal | all but polynomials |
-//! | [`Real`] | `sqrt`, `exp`, `ln`, trig, ordering, precision-aware epsilon | `f32`, `f64`, num-dual types, [`Jet`], [`MpFloat`](crate::MpFloat) |
+//! | [`Real`] | `sqrt`, `exp`, `ln`, trig, ordering, precision-aware epsilon | `f32`, `f64`, num-dual types, [`Jet`], `MpFloat` (feature `rug`) |
 //!
 //! Beside them, the layer for code that must also run over SIMD lanes (module `decide`):
 //! [`Elementary`] (the functions without an ordering), [`Select`] and [`Mask`] (decisions as
 //! data), [`Diagnostics`] (sizes a lane type can give honestly) and [`LaneReal`] (all three).
-//! Every [`Real`] has them by blanket impl; the lane types [`F32x4`], [`F32x8`], [`F64x2`],
-//! [`F64x4`] (feature `lanes`) and [`LaneDual`] implement them and are never [`Real`].
+//! Every [`Real`] has them by blanket impl; the lane types
+#![cfg_attr(feature = "lanes", doc = "[`F32x4`], [`F32x8`], [`F64x2`], [`F64x4`]")]
+#![cfg_attr(not(feature = "lanes"), doc = "`F32x4`, `F32x8`, `F64x2`, `F64x4`")]
+//! (feature `lanes`) and [`LaneDual`] implement them and are never [`Real`].
 //! [`Lanes`] (module `pack`) is the lane width and the packing of element columns into lane
 //! values and back, for `f64`, `f32`, [`Q`] (width 1) and the SIMD lane types.
 //!
@@ -119,7 +121,7 @@ pub trait Ring:
     fn relative_epsilon() -> f64;
 
     /// `|self|` compared with `|other|`, decided in the type's own precision and exponent
-    /// range: exactly for rationals, in MPFR for [`MpFloat`](crate::MpFloat). The default
+    /// range: exactly for rationals, in MPFR for `MpFloat` (feature `rug`). The default
     /// compares [`Ring::magnitude`] (exact for `f32`/`f64`; the largest component for dual
     /// numbers).
     ///

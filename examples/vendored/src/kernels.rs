@@ -26,7 +26,7 @@ impl<T: self::Ring> Vector<T> {
     pub const ELEMENTS: [&'static str; 3usize] = ["e1", "e2", "e3"];
     /// The bitmasks of the fields' basis elements, in order.
     pub const MASKS: [u32; 3usize] = [1u32, 2u32, 4u32];
-    /// A value from its coefficients, in the order of [`Self::ELEMENTS`].
+    /// A value from its coefficients, in the order of [`Self::ELEMENTS`]: the arguments are the coefficients of `e1`, `e2`, `e3`, in this order.
     #[allow(clippy::too_many_arguments)]
     pub fn new(e1: T, e2: T, e3: T) -> Self {
         Vector { e1, e2, e3 }
@@ -493,7 +493,7 @@ impl<T: self::Ring> Rotor<T> {
     pub const ELEMENTS: [&'static str; 4usize] = ["1", "e12", "e13", "e23"];
     /// The bitmasks of the fields' basis elements, in order.
     pub const MASKS: [u32; 4usize] = [0u32, 3u32, 5u32, 6u32];
-    /// A value from its coefficients, in the order of [`Self::ELEMENTS`].
+    /// A value from its coefficients, in the order of [`Self::ELEMENTS`]: the arguments are the coefficients of `1`, `e12`, `e13`, `e23`, in this order.
     #[allow(clippy::too_many_arguments)]
     pub fn new(scalar: T, e12: T, e13: T, e23: T) -> Self {
         Rotor { scalar, e12, e13, e23 }
@@ -1042,7 +1042,7 @@ impl<T: self::Ring> Odd<T> {
     pub const ELEMENTS: [&'static str; 4usize] = ["e1", "e2", "e3", "e123"];
     /// The bitmasks of the fields' basis elements, in order.
     pub const MASKS: [u32; 4usize] = [1u32, 2u32, 4u32, 7u32];
-    /// A value from its coefficients, in the order of [`Self::ELEMENTS`].
+    /// A value from its coefficients, in the order of [`Self::ELEMENTS`]: the arguments are the coefficients of `e1`, `e2`, `e3`, `e123`, in this order.
     #[allow(clippy::too_many_arguments)]
     pub fn new(e1: T, e2: T, e3: T, e123: T) -> Self {
         Odd { e1, e2, e3, e123 }
@@ -1570,7 +1570,7 @@ impl<T: self::Ring> Multivector<T> {
     ];
     /// The bitmasks of the fields' basis elements, in order.
     pub const MASKS: [u32; 8usize] = [0u32, 1u32, 2u32, 4u32, 3u32, 5u32, 6u32, 7u32];
-    /// A value from its coefficients, in the order of [`Self::ELEMENTS`].
+    /// A value from its coefficients, in the order of [`Self::ELEMENTS`]: the arguments are the coefficients of `1`, `e1`, `e2`, `e3`, `e12`, `e13`, `e23`, `e123`, in this order.
     #[allow(clippy::too_many_arguments)]
     pub fn new(scalar: T, e1: T, e2: T, e3: T, e12: T, e13: T, e23: T, e123: T) -> Self {
         Multivector {

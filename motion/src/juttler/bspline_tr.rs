@@ -77,7 +77,8 @@ fn collocate<T: Field + PartialOrd, const N: usize>(
     rhs: &[[T; N]],
 ) -> Result<Vec<[T; N]>, JuttlerError> {
     let a: Vec<Vec<T>> = params.iter().map(|t| basis_row(knots, p, params.len(), t)).collect();
-    solve_columns(&a, rhs, "the B-spline collocation matrix is singular")
+    solve_columns(&a, rhs)
+        .ok_or_else(|| JuttlerError::Parameters { why: "the B-spline collocation matrix is singular".into() })
 }
 
 /// The TR method with B-spline Q-motions of degree `p` (module docs): `m + 1 ≥ 2` positions

@@ -154,6 +154,18 @@ pub enum JuttlerError {
         /// The likely reason.
         why: &'static str,
     },
+    /// A linear system that is singular in the scalar's precision although its parameters are
+    /// distinct (many positions, or parameters too close: the pivots fall below the precision's
+    /// threshold); exact rationals solve it.
+    #[error(
+        "the linear system {system} ({unknowns} unknowns) is numerically singular: the parameters are distinct, but too close or too many for this precision"
+    )]
+    NumericallySingular {
+        /// The system, e.g. the Bernstein collocation `Σ_j b_j^m(t_i) C_j = R_i`.
+        system: &'static str,
+        /// The number of unknowns per component.
+        unknowns: usize,
+    },
     /// A split `l1 + l2 = m - 1` of the TRT method with `l1 > m - 1`.
     #[error("TRT split: l1 = {l1} exceeds m - 1 = {max}")]
     Split {
@@ -289,10 +301,13 @@ pub(crate) fn check_finite_distinct<'a, T: Ring + 'a>(
     if values.into_iter().any(|x| !x.is_finite_value()) {
         return why("a position has a coefficient that is not finite".into());
     }
-    for (i, a) in params.iter().enumerate() {
-        if let Some(j) = params[..i].iter().position(|b| b == a) {
-            return why(format!("parameters {j} and {i} are equal"));
-        }
+    if let Some((j, i)) = first_repeat(params) {
+        return why(format!("parameters {j} and {i} are equal"));
     }
     Ok(())
+}
+
+/// The first pair `(j, i)`, `j < i`, of equal parameters.
+pub(crate) fn first_repeat<T: PartialEq>(params: &[T]) -> Option<(usize, usize)> {
+    params.iter().enumerate().find_map(|(i, a)| params[..i].iter().position(|b| b == a).map(|j| (j, i)))
 }

@@ -12,7 +12,7 @@
 //! assert_eq!(rot.eval(&ratio(1, 2)).real, Quaternion::new(q(1), q(0), q(0), ratio(1, 2)));
 //! ```
 
-use super::{JuttlerError, QMotion};
+use super::{JuttlerError, QMotion, first_repeat};
 use crate::repr::dual_quaternion::{DualQuaternion, Quaternion};
 use algebra_core::linalg::solve;
 use algebra_core::{Field, Real, Ring};
@@ -23,26 +23,28 @@ fn collocation<T: Ring>(params: &[T]) -> Vec<Vec<T>> {
 }
 
 /// Solves `Σ_j b_j^m(t_i) c_j = rhs_i` for `N` components at once (exact over rationals).
+/// Equal parameters make the matrix singular ([`JuttlerError::Parameters`]); distinct ones
+/// can still make it singular in the scalar's precision ([`JuttlerError::NumericallySingular`]).
 pub(crate) fn solve_bernstein<T: Field, const N: usize>(
     params: &[T],
     rhs: &[[T; N]],
 ) -> Result<Vec<[T; N]>, JuttlerError> {
-    solve_columns(&collocation(params), rhs, "the Bernstein collocation matrix is singular (parameters not distinct)")
+    if let Some((j, i)) = first_repeat(params) {
+        return Err(JuttlerError::Parameters { why: format!("parameters {j} and {i} are equal") });
+    }
+    solve_columns(&collocation(params), rhs)
+        .ok_or(JuttlerError::NumericallySingular { system: "Σ_j b_j^m(t_i) C_j = R_i", unknowns: params.len() })
 }
 
 /// Solves `A c = rhs` for each of the `N` components of the right-hand sides (one solve per
-/// component); `singular` is the error's reason when `A` is singular.
-pub(crate) fn solve_columns<T: Field, const N: usize>(
-    a: &[Vec<T>],
-    rhs: &[[T; N]],
-    singular: &str,
-) -> Result<Vec<[T; N]>, JuttlerError> {
+/// component); `None` when `A` is singular.
+pub(crate) fn solve_columns<T: Field, const N: usize>(a: &[Vec<T>], rhs: &[[T; N]]) -> Option<Vec<[T; N]>> {
     let mut cols: Vec<Vec<T>> = Vec::with_capacity(N);
     for k in 0..N {
         let b = rhs.iter().map(|r| r[k].clone()).collect();
-        cols.push(solve(a.to_vec(), b).ok_or_else(|| JuttlerError::Parameters { why: singular.into() })?);
+        cols.push(solve(a.to_vec(), b)?);
     }
-    Ok((0..rhs.len()).map(|j| std::array::from_fn(|k| cols[k][j].clone())).collect())
+    Some((0..rhs.len()).map(|j| std::array::from_fn(|k| cols[k][j].clone())).collect())
 }
 
 /// `m + 1 ≥ 1` parameters for `m + 1` positions.

@@ -39,7 +39,7 @@ pub fn from_pose<T: Real>(s: &Pose<T>) -> Result<Motor<T>, WlError> {
 
 /// The pose of a displacement rotor `R = T_v R_rot` (module docs): `R_rot` is the part of `R`
 /// without `e4`, `e5`; `v_i = -2 (R rev(R_rot))_{i4} / |R_rot|²`. A unit rotor gives a unit
-/// pose. Only the displacement part of `R` is read (no check: see [`super::log`]).
+/// pose. Only the displacement part of `R` is read (no check: see [`super::log()`]).
 ///
 /// ```
 /// use motion::{Pose, wareham_lasenby::{cga::rotor, to_pose}};

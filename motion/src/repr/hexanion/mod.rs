@@ -4,12 +4,12 @@
 //! * the type, its vector-space operations (8)-(12), the matrix form (4), the inverse (22) and
 //!   the Rot/Trs split (32)-(33) and classification (27): this file;
 //! * the exponential (14)/(66) as a 4x4 matrix and as a pose, the point and normal transforms
-//!   (16)-(19), (29), (30), (35), (36): [`exp`](self::exp);
+//!   (16)-(19), (29), (30), (35), (36): [`exp`];
 //! * conversions: the pose (principal logarithm) and the matrix -> hexanion algorithm of Sec. 6
-//!   (43)-(53): [`convert`](self::convert);
+//!   (43)-(53): [`convert`];
 //! * interpolation (56), weighted blending (57) and the decoupled motion (58)-(60), and the
 //!   piecewise linear motion through key poses of `gam interpolate`'s `hexanion-linear`:
-//!   [`blend`](self::blend).
+//!   [`blend`].
 //!
 //! The hexanion `<ω, m>` is the pose `exp(½(ω e123 + m einf))` of the main paper (with
 //! `a e123 = a1 e23 - a2 e13 + a3 e12`): both are the rigid motion `p ↦ R p + V m` with `R` the
