@@ -50,6 +50,7 @@ mod reduce;
 pub mod table;
 mod tokens;
 
+pub(crate) use methods::typed_body;
 pub use methods::{KernelOp, Request, compute, kernel, method_name, methods, requests};
 #[cfg(feature = "constraints")]
 pub use reduce::{constrained_action, constrained_product};

@@ -45,6 +45,9 @@ pub struct ActionKernel {
     pub stage1: Vec<Vec<(usize, usize, Ratio)>>,
     /// Each output field: a sum of `c · t[k] · s[a]` as `(k, a, c)`.
     pub stage2: Vec<Vec<(usize, usize, Ratio)>>,
+    /// The basis masks outside the operand type where the full product is structurally
+    /// non-zero: the kernel drops them (they vanish for versors only).
+    pub outside: Vec<u32>,
 }
 
 impl ActionKernel {
@@ -148,14 +151,25 @@ pub(super) fn action_kernel(
         for a in 0..vm.len() {
             for (m, r) in image(a, right_rev) {
                 for (j, c) in gp.get(k, m).expect("a mask of the spec's algebra") {
-                    if xm.contains(j) {
-                        *o.entry(*j).or_default().entry((k, a)).or_insert_with(Q::zero) += &r * c;
-                    }
+                    *o.entry(*j).or_default().entry((k, a)).or_insert_with(Q::zero) += &r * c;
                 }
             }
         }
     }
     o.values_mut().for_each(|e| e.retain(|_, c| !c.is_zero()));
+    // a component outside X is dropped when its polynomial in (s, x) is not identically zero
+    // (`s_a s_a'` commute, so `(a, a', b)` and `(a', a, b)` are one monomial)
+    let nonzero = |e: &BTreeMap<(u32, usize), Q>| {
+        let mut poly: BTreeMap<(usize, usize, usize), Q> = BTreeMap::new();
+        for (&(k, a), c) in e {
+            for (&(a1, b), c1) in &t[&k] {
+                *poly.entry((a.min(a1), a.max(a1), b)).or_insert_with(Q::zero) += c * c1;
+            }
+        }
+        poly.values().any(|c| !c.is_zero())
+    };
+    let outside: Vec<u32> = o.iter().filter(|(j, e)| !xm.contains(j) && nonzero(e)).map(|(j, _)| *j).collect();
+    o.retain(|j, _| xm.contains(j));
     let used: Vec<u32> = t.keys().copied().filter(|k| o.values().any(|e| e.keys().any(|(kk, _)| kk == k))).collect();
     let stage1 = used
         .iter()
@@ -176,7 +190,7 @@ pub(super) fn action_kernel(
                 .unwrap_or(Ok(Vec::new()))
         })
         .collect::<Result<Vec<_>, _>>()?;
-    Ok(ActionKernel { convention, versor: v, operand: x, stage1, stage2 })
+    Ok(ActionKernel { convention, versor: v, operand: x, stage1, stage2, outside })
 }
 
 fn names_of(convention: Convention) -> (TokenStream, TokenStream) {
@@ -198,13 +212,18 @@ pub(super) fn action_items(names: &Names, k: &ActionKernel) -> TokenStream {
     } else {
         (unrolled_body(names, k), quote!(#[inline(always)]))
     };
-    let doc = match k.convention {
-        Convention::Sandwich => format!(
-            "`rev(self) x self` projected onto [`{xt}`] in one fused kernel: exact for versors whose action preserves `{xt}`."
-        ),
-        Convention::Apply => format!(
-            "`self x rev(self)` projected onto [`{xt}`] in one fused kernel: exact for versors whose action preserves `{xt}`."
-        ),
+    let product = match k.convention {
+        Convention::Sandwich => "rev(self) x self",
+        Convention::Apply => "self x rev(self)",
+    };
+    let doc = if k.outside.is_empty() {
+        format!("`{product}` in one fused kernel: every component of the full product is a [`{xt}`] component.")
+    } else {
+        format!(
+            "`{product}` projected onto [`{xt}`] in one fused kernel. The full product also has {} component(s) outside `{xt}`, dropped here: they vanish when `self` is a versor (a product of invertible vectors; for unit ones `{}_unit` is cheaper and says whether that is proven), not for every `{vt}`. The full product: `gp` twice.",
+            k.outside.len(),
+            method
+        )
     };
     quote! {
         impl<T: ::algebra_core::Ring> ::algebra_core::ops::#trait_name<#xt<T>> for #vt<T> {

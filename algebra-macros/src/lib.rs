@@ -33,8 +33,9 @@
 //!   list `[1, e12, ...]`; doc comments on types are kept. A type may declare a polynomial
 //!   constraint after its selector: `Motor = even where unit;` (`rev(x) x = 1`),
 //!   `Point = grade 1 where null;` (`x x = 0`), `Line = grade 2 where simple;` (`x ∧ x = 0`,
-//!   the Plücker condition). The generator then adds constrained kernels as methods —
-//!   `sandwich_unit_<operand>`, `apply_unit_<operand>`, `square_null`/`square_simple` — with the
+//!   the Plücker condition). The generator then uses kernels reduced modulo the constraint —
+//!   in the unit actions `sandwich_unit`/`apply_unit` (`UnitAction`, where cheaper, with the
+//!   output type proven in the rustdoc) and as `square_null`/`square_simple` methods — with the
 //!   outputs that vanish under the constraint proven (by ideal membership) and dropped (see
 //!   `algebra_codegen::constraint`). Kernels of the predefined modules are precomputed, so the
 //!   macro needs no GMP; for other modules turn on this crate's `constraints` feature (it

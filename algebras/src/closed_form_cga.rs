@@ -1,5 +1,5 @@
-//! Closed-form `exp` and `log` for the rigid-motion motors of [`crate::cga`] (`R^{4,1}`, the
-//! 16-coefficient even `Motor`).
+//! Closed-form `exp`, `log`, `normalize`, `log_unit`, `sqrt` and `pow` for the rigid-motion
+//! motors of [`crate::cga`] (`R^{4,1}`, the 16-coefficient even `Motor`).
 //!
 //! With `n = e4 + e5` (the point at infinity, `n² = 0`, as in Wareham–Lasenby), the map
 //! `e_i ↦ e_i`, `einf ↦ n` carries [`crate::g123inf`] onto the subalgebra of `R^{4,1}`
@@ -11,7 +11,8 @@
 //! transversions) `exp` and `log` fall back to the runtime series
 //! ([`algebra_core::Multivector::exp`] / `log`), which is correct for every bivector. The
 //! membership test is exact (no tolerance), so the closed form is used only where it is
-//! exactly valid.
+//! exactly valid. `normalize`, `log_unit`, `sqrt` and `pow` have no series fallback: they
+//! refuse a motor outside the displacement subalgebra with `MvError::Undefined`.
 //!
 //! ```
 //! use gam_algebras::cga::{Bivector, Motor};
@@ -67,6 +68,15 @@ fn motor_from<T: Real>(g: &g123inf::Motor<T>) -> cga::Motor<T> {
     m
 }
 
+/// The image of a `g123inf` bivector (`e_i einf ↦ e_i4 + e_i5`).
+fn bivector_from<T: Real>(b: g123inf::Bivector<T>) -> cga::Bivector<T> {
+    let mut out = cga::Bivector::zero();
+    (out.e12, out.e13, out.e23) = (b.e12, b.e13, b.e23);
+    (out.e14, out.e24, out.e34) = (b.e1inf.clone(), b.e2inf.clone(), b.e3inf.clone());
+    (out.e15, out.e25, out.e35) = (b.e1inf, b.e2inf, b.e3inf);
+    out
+}
+
 impl<T: Real> cga::Motor<T> {
     /// The `g123inf` motor this one is the image of, when it lies in the displacement
     /// subalgebra (exactly).
@@ -102,12 +112,7 @@ impl<T: Real> cga::Motor<T> {
     /// `log`.
     pub fn log(&self) -> Result<cga::Bivector<T>, MvError> {
         if let Some(g) = self.displacement() {
-            let b = g.log()?;
-            let mut out = cga::Bivector::zero();
-            (out.e12, out.e13, out.e23) = (b.e12.clone(), b.e13.clone(), b.e23.clone());
-            (out.e14, out.e24, out.e34) = (b.e1inf.clone(), b.e2inf.clone(), b.e3inf.clone());
-            (out.e15, out.e25, out.e35) = (b.e1inf, b.e2inf, b.e3inf);
-            return Ok(out);
+            return Ok(bivector_from(g.log()?));
         }
         let l = self.to_multivector().log()?;
         let b = cga::Bivector::project(&l);
@@ -120,5 +125,80 @@ impl<T: Real> cga::Motor<T> {
             });
         }
         Ok(b)
+    }
+
+    /// The `g123inf` motor of a rigid motion, or `MvError::Undefined` naming `op` for a motor
+    /// outside the displacement subalgebra (the closed forms below have no series fallback).
+    fn rigid(&self, op: &'static str) -> Result<g123inf::Motor<T>, MvError> {
+        self.displacement().ok_or_else(|| MvError::Undefined {
+            op,
+            value: self.to_string(),
+            why: "not a rigid motion: outside the displacement subalgebra (e_i4 = e_i5, e1234 = e1235, \
+                  e45 = e1245 = e1345 = e2345 = 0)"
+                .to_string(),
+        })
+    }
+
+    /// `self / sqrt(self rev(self))` for a (scaled) rigid motion, by `g123inf::Motor::normalize`
+    /// on its preimage (`einf ↦ n = e4 + e5`): a unit motor when `self` satisfies the Study
+    /// condition. Errors: `MvError::Undefined` for a motor that is not a rigid motion
+    /// ([`Self::is_displacement`]), and as `g123inf::Motor::normalize` (norm not positive,
+    /// non-finite input).
+    ///
+    /// ```
+    /// use gam_algebras::cga::Motor;
+    /// let mut m = Motor::<f64>::zero();
+    /// (m.scalar, m.e12) = (2.0, 2.0);
+    /// let n = m.normalize().unwrap();
+    /// assert!((n.scalar - 0.5f64.sqrt()).abs() < 1e-15 && (n.e12 - 0.5f64.sqrt()).abs() < 1e-15);
+    /// m.e45 = 0.5; // a dilation part: not a rigid motion
+    /// assert!(m.normalize().is_err());
+    /// ```
+    pub fn normalize(&self) -> Result<Self, MvError> {
+        Ok(motor_from(&self.rigid("normalize")?.normalize()?))
+    }
+
+    /// The logarithm of a motor that is already unit (`self rev(self) = 1`), by
+    /// `g123inf::Motor::log_unit` on its preimage: [`Self::log`] without the normalisation.
+    /// For a motor that is not unit the result is not a logarithm of anything. Errors:
+    /// `MvError::Undefined` for a motor that is not a rigid motion, a full turn, non-finite
+    /// input.
+    ///
+    /// ```
+    /// use gam_algebras::cga::{Bivector, Motor};
+    /// let b = Bivector::<f64>::e23() * 0.3;
+    /// let l = b.exp().unwrap().log_unit().unwrap();
+    /// assert!((l.e23 - 0.3).abs() < 1e-15);
+    /// ```
+    pub fn log_unit(&self) -> Result<cga::Bivector<T>, MvError> {
+        Ok(bivector_from(self.rigid("log")?.log_unit()?))
+    }
+
+    /// The square root of `normalize(self)` for a rigid motion: `exp(log(self)/2)`, by
+    /// `g123inf::Motor::sqrt` on its preimage; its square is the normalised motor. Errors as
+    /// [`Self::normalize`] and [`Self::log`] (a full turn has no unique square root).
+    ///
+    /// ```
+    /// use gam_algebras::cga::{Bivector, Motor};
+    /// let m = (Bivector::<f64>::e12() * 0.8).exp().unwrap();
+    /// let r = m.sqrt().unwrap();
+    /// let back = &r * &r;
+    /// assert!(back.iter().zip(m.iter()).all(|(a, b)| (a - b).abs() < 1e-15));
+    /// ```
+    pub fn sqrt(&self) -> Result<Self, MvError> {
+        Ok(motor_from(&self.rigid("sqrt")?.sqrt()?))
+    }
+
+    /// `normalize(self)^t = exp(t log(self))` for a rigid motion, by `g123inf::Motor::pow` on
+    /// its preimage. Errors as [`Self::sqrt`], and for a non-finite `t`.
+    ///
+    /// ```
+    /// use gam_algebras::cga::{Bivector, Motor};
+    /// let m = (Bivector::<f64>::e13() * 0.2).exp().unwrap();
+    /// let p = m.pow(&3.0).unwrap();
+    /// assert!((p.log().unwrap().e13 - 0.6).abs() < 1e-15);
+    /// ```
+    pub fn pow(&self, t: &T) -> Result<Self, MvError> {
+        Ok(motor_from(&self.rigid("pow")?.pow(t)?))
     }
 }

@@ -50,7 +50,10 @@
 //!
 //! `apply_unit` / `sandwich_unit` (the `UnitAction` trait) compute the action of a *unit*
 //! versor (`m rev(m) = 1`) with fewer operations than `apply` / `sandwich`, exactly over any
-//! scalar as long as the versor is exactly unit:
+//! scalar as long as the versor is exactly unit. It is the one unit-action family: for a type
+//! declared `where unit` each kernel is the cheaper of the commutator form and the kernel
+//! reduced modulo `rev(m) m = 1`, and its rustdoc says whether the result is proven to be the
+//! whole action (e.g. `cga_null::Motor` on a `Vector`: the σ part of Lemma 2.2 (i) vanishes):
 //!
 //! ```
 //! use gam_algebras::pga3::{Motor, Trivector};

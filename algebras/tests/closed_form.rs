@@ -1,5 +1,6 @@
 //! The closed-form motor `exp`, `log`, `normalize`, `sqrt`, `pow` of `g123inf`, `pga3` and
-//! `cga_null` (its `Motor` and `PoseBivector`), and the `cga` exp/log of rigid motions,
+//! `cga_null` (its `Motor` and `PoseBivector`), and the `cga` exp/log/normalize/sqrt/pow of
+//! rigid motions,
 //! against the runtime series (`algebra_core::Multivector::exp`/`log`, an independent
 //! algorithm), over random bivectors including the small-angle series branch.
 
@@ -156,6 +157,105 @@ mod cga {
             let back = m.log().expect("runtime log");
             close("log(exp(B))", &back.to_multivector(), &b.to_multivector(), 1e3);
         }
+    }
+
+    /// `α + β I` with `I = e1234 + e1235` (the image of g123inf's `e123inf`): central in the
+    /// displacement subalgebra, so `m (α + β I)` satisfies the Study condition.
+    fn dual_scalar(alpha: f64, beta: f64) -> Motor<f64> {
+        let mut d = Motor::<f64>::zero();
+        (d.scalar, d.e1234, d.e1235) = (alpha, beta, beta);
+        d
+    }
+
+    proptest! {
+        // each case runs the runtime series four times (unoptimised in tests)
+        #![proptest_config(ProptestConfig::with_cases(48))]
+
+        /// `normalize` removes a dual-number factor `α + β I` exactly (up to rounding): the
+        /// unit motor comes back, against the runtime series for its norm.
+        #[test]
+        fn normalize_removes_a_dual_scalar_factor(c in coeffs(), alpha in 0.2..3.0f64, beta in -2.0..2.0f64) {
+            let m = displacement(c).exp().expect("finite");
+            let scaled = m * dual_scalar(alpha, beta);
+            prop_assert!(scaled.is_displacement());
+            let n = scaled.normalize().expect("positive norm");
+            close("normalize(m (α + βI))", &n.to_multivector(), &m.to_multivector(), 1e2 * (1.0 + beta.abs() / alpha));
+            close("n rev(n) = 1", &(n * n.reverse()).to_multivector(), &Motor::<f64>::one().to_multivector(), 1e2);
+        }
+
+        /// `log_unit`, `sqrt` and `pow` against the runtime series (`Multivector::log`/`exp`).
+        #[test]
+        fn log_unit_sqrt_and_pow_match_the_series(c in coeffs(), t in -2.0..2.0f64) {
+            let b = displacement(c);
+            let m = b.exp().expect("finite");
+            let scale = 1e3 * (1.0 + b.to_multivector().magnitude());
+            let series_log = m.to_multivector().log().expect("runtime log");
+            close("log_unit", &m.log_unit().unwrap().to_multivector(), &series_log, scale);
+            let r = m.sqrt().expect("sqrt");
+            close("sqrt = exp(log/2)", &r.to_multivector(), &series_log.scale(&0.5).exp().unwrap(), scale);
+            close("sqrt²", &(r * r).to_multivector(), &m.to_multivector(), scale);
+            let p = m.pow(&t).expect("pow");
+            close("pow = exp(t log)", &p.to_multivector(), &series_log.scale(&t).exp().unwrap(), scale * (1.0 + t.abs()));
+            // on a scaled motor the same results (they act on normalize(self))
+            let scaled = m * dual_scalar(1.5, 0.25);
+            close("sqrt(scaled)", &scaled.sqrt().unwrap().to_multivector(), &r.to_multivector(), scale);
+            close("pow(scaled)", &scaled.pow(&t).unwrap().to_multivector(), &p.to_multivector(), scale * (1.0 + t.abs()));
+        }
+    }
+
+    /// The four operations equal g123inf's on the preimage (`e_i4, e_i5 ↦ e_i inf`), checked
+    /// coefficient by coefficient at a fixed motor.
+    #[test]
+    fn operations_match_g123inf_on_the_preimage() {
+        use gam_algebras::g123inf;
+        let b = displacement([0.3, -0.7, 0.2, 1.5, -0.4, 0.9]);
+        let m = b.exp().unwrap() * dual_scalar(2.0, 0.5);
+        let g = g123inf::Motor::new(m.scalar, m.e12, m.e13, m.e23, m.e14, m.e24, m.e34, m.e1234);
+        let image = |x: g123inf::Motor<f64>| {
+            let mut out = Motor::<f64>::zero();
+            (out.scalar, out.e12, out.e13, out.e23) = (x.scalar, x.e12, x.e13, x.e23);
+            (out.e14, out.e24, out.e34, out.e15, out.e25, out.e35) =
+                (x.e1inf, x.e2inf, x.e3inf, x.e1inf, x.e2inf, x.e3inf);
+            (out.e1234, out.e1235) = (x.e123inf, x.e123inf);
+            out
+        };
+        assert_eq!(m.normalize().unwrap(), image(g.normalize().unwrap()));
+        assert_eq!(m.sqrt().unwrap(), image(g.sqrt().unwrap()));
+        assert_eq!(m.pow(&0.3).unwrap(), image(g.pow(&0.3).unwrap()));
+        let (l, lg) = (m.normalize().unwrap().log_unit().unwrap(), g.normalize().unwrap().log_unit().unwrap());
+        assert_eq!((l.e12, l.e13, l.e23, l.e14, l.e15, l.e34), (lg.e12, lg.e13, lg.e23, lg.e1inf, lg.e1inf, lg.e3inf));
+    }
+
+    /// Non-rigid input (a dilation part, `e_i4 ≠ e_i5`, a four-vector outside the image) is a
+    /// typed error naming the operation, as are a zero norm, a full turn and a non-finite `t`.
+    #[test]
+    fn non_rigid_motors_are_refused() {
+        let m = displacement([0.3, 0.1, 0.0, 0.5, 0.0, 0.2]).exp().unwrap();
+        let mut bad = [m; 3];
+        bad[0].e45 = 0.1;
+        bad[1].e14 += 0.1;
+        bad[2].e2345 = 0.1;
+        for x in bad {
+            assert!(!x.is_displacement());
+            for (op, r) in [
+                ("normalize", x.normalize().map(|_| ())),
+                ("log", x.log_unit().map(|_| ())),
+                ("sqrt", x.sqrt().map(|_| ())),
+                ("pow", x.pow(&0.5).map(|_| ())),
+            ] {
+                match r {
+                    Err(algebra_core::MvError::Undefined { op: got, why, .. }) => {
+                        assert_eq!(got, op);
+                        assert!(why.starts_with("not a rigid motion"), "{why}");
+                    }
+                    other => panic!("{op}: {other:?}"),
+                }
+            }
+        }
+        assert!(Motor::<f64>::zero().normalize().is_err());
+        assert!((-Motor::<f64>::one()).sqrt().is_err(), "a full turn");
+        assert!(m.pow(&f64::NAN).is_err());
+        assert!(m.pow(&f64::INFINITY).is_err());
     }
 
     /// Published-style exact values: a pure translation `exp(-t n / 2) = 1 - t n / 2` (the

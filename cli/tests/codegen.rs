@@ -131,8 +131,8 @@ fn fallback_full_turns_the_parity_types_off() {
 }
 
 /// `where unit` in --types declares the constraint in the module: `--emit stats` shows the
-/// constrained kernels with what they save (the same as `--constrain`), `--emit rust` emits
-/// them as methods; an unknown constraint is a usage error.
+/// constrained kernels with what they save (the same as `--constrain`), `--emit rust` uses
+/// them in the unit actions; an unknown constraint is a usage error.
 #[test]
 fn declared_constraints_in_types_show_savings_and_emit_methods() {
     let types = "Motor=1,e12,e13,e23,e1inf,e2inf,e3inf,e123inf where unit;Vector=grade1;Multivector=all";
@@ -159,8 +159,23 @@ fn declared_constraints_in_types_show_savings_and_emit_methods() {
     let rust = gam(&["codegen", "--algebra", "cga-null", "--basis", "product", "--types", types]);
     assert!(rust.status.success());
     let rust = String::from_utf8(rust.stdout).unwrap();
-    assert!(rust.contains("pub fn sandwich_unit_vector(&self, x: &Vector<T>) -> Vector<T>"));
-    assert!(rust.contains("Valid only for inputs satisfying Motor: rev(x) x = 1"));
+    // one unit-action family: the `UnitAction` impl of the pair, the cheaper kernel (the
+    // commutator form, 36 against the reduced 57), and the proof in its rustdoc
+    let unit = rust.split("UnitAction<Vector<T>>\n    for Motor<T>").nth(1).expect("the pair's UnitAction impl");
+    let unit = unit.split("impl<").next().unwrap();
+    assert!(unit.contains("fn sandwich_unit(&self, x: &Vector<T>) -> Vector<T>"), "{unit}");
+    assert!(unit.contains("36 multiplications (reduced modulo `rev(x) x = 1`: 57"), "{unit}");
+    assert!(unit.contains("Proven (ideal membership): on a unit `Motor` the action on a `Vector` is a `Vector`"));
+    assert!(!rust.contains("sandwich_unit_vector"));
+    // the general fused action says what it drops (the σ part of a non-unit motor)
+    let general = rust
+        .split("Sandwich<Vector<T>> for Motor<T>")
+        .nth(1)
+        .expect("the fused sandwich")
+        .split("impl<")
+        .next()
+        .unwrap();
+    assert!(general.contains("component(s) outside `Vector`, dropped here"), "{general}");
     let bad = gam(&["codegen", "--algebra", "cga-null", "--types", "Motor=even where round"]);
     assert_eq!(bad.status.code(), Some(2));
     let err = String::from_utf8_lossy(&bad.stderr);

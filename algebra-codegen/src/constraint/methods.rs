@@ -1,14 +1,15 @@
-//! Constrained kernels as generated methods on the constrained type. For a type declared
-//! `where unit` that is a versor type, every action on another non-full type:
-//! `sandwich_unit_<operand>(&self, x)` = `rev(self) x self` and `apply_unit_<operand>(&self, x)`
-//! = `self x rev(self)`; for a type declared `where null` or `where simple`, its square
-//! `square_<kind>(&self)` = `self self`. A method is emitted only when the constraint changes
-//! something (fewer multiplications or proven-vanishing outputs), its output type is the
-//! smallest declared type holding the non-vanishing outputs, and its rustdoc states the
-//! constraint it relies on.
+//! Constrained kernels in generated code. For a type declared `where unit` that is a versor
+//! type, every action on another non-full type feeds the type's one unit-action family,
+//! `UnitAction::{sandwich_unit, apply_unit}` (`unit::pair_items`): the reduced kernel
+//! is emitted there when it needs fewer multiplications than the structural one, and its proof
+//! (which components of the full product vanish) goes into the impl's rustdoc. For a type
+//! declared `where null` or `where simple`, its square `square_<kind>(&self)` = `self self` is
+//! an inherent method, emitted only when the constraint changes something (fewer
+//! multiplications or proven-vanishing outputs); its output type is the smallest declared type
+//! holding the non-vanishing outputs, and its rustdoc states the constraint it relies on.
 //!
-//! The names carry the constraint (`sandwich_unit_vector`) so they never clash with the
-//! generic `sandwich`/`apply` or a hand-designed kernel of the emitter.
+//! The square's name carries the constraint (`square_simple`) so it never clashes with a
+//! hand-designed kernel of the emitter.
 
 use super::{ConstrainedKernel, ConstraintError, ConstraintKind, smallest_type, table};
 use crate::ModuleSpec;
@@ -156,19 +157,20 @@ fn worth_a_method(k: &ConstrainedKernel) -> bool {
     !k.outputs.is_empty() && k.output_type.is_some() && (k.stats().mul < k.full.stats().mul || !k.vanishing.is_empty())
 }
 
-/// The method name of a request.
+/// The method name of a request (`sandwich_unit` and `apply_unit` are `UnitAction`'s).
 pub fn method_name(spec: &ModuleSpec, r: Request) -> String {
-    let snake = crate::emit::snake(&spec.types[r.right].name);
     match r.op {
-        KernelOp::Sandwich => format!("sandwich_unit_{snake}"),
-        KernelOp::Apply => format!("apply_unit_{snake}"),
+        KernelOp::Sandwich => "sandwich_unit".to_string(),
+        KernelOp::Apply => "apply_unit".to_string(),
         KernelOp::Square => {
             format!("square_{}", spec.types[r.left].constraint.map_or("constrained", |c| c.keyword()))
         }
     }
 }
 
-/// Every constrained method of a module (an `impl` block per kernel), for the module's items.
+/// The module's items that read reduced kernels: the `UnitAction` impls of every `where unit`
+/// versor type (each convention the cheaper kernel, the proof in the rustdoc) and the square
+/// methods of `where null` / `where simple` types.
 ///
 /// ```
 /// use algebra_core::{Algebra, Basis};
@@ -178,7 +180,9 @@ pub fn method_name(spec: &ModuleSpec, r: Request) -> String {
 /// let plan = Plan::new(ModuleSpec::new("cga_null", alg.metric().clone(), Basis::Product, types).unwrap()).unwrap();
 /// // precomputed (the predefined module): no GMP needed
 /// let code = methods(&plan).unwrap().to_string();
-/// assert!(code.contains("fn sandwich_unit_vector (& self , x : & Vector < T >) -> Vector < T >"));
+/// assert!(code.contains("UnitAction < Vector < T >> for Motor < T >"));
+/// assert!(code.contains("fn sandwich_unit (& self , x : & Vector < T >) -> Vector < T >"));
+/// assert!(code.contains("Proven (ideal membership): on a unit `Motor` the action on a `Vector` is a `Vector`"));
 /// ```
 ///
 /// # Errors
@@ -187,18 +191,51 @@ pub fn methods(plan: &Plan) -> Result<TokenStream, ConstraintError> {
     let spec = &plan.spec;
     let names = Names::new(plan);
     let mut items = Vec::new();
+    let mut actions: Vec<(Request, ConstrainedKernel)> = Vec::new();
     for r in requests(spec, plan.full) {
         let k = kernel(spec, r)?;
-        if worth_a_method(&k) {
-            items.push(method(spec, &names, r, &k));
+        match r.op {
+            KernelOp::Square if worth_a_method(&k) => items.push(method(spec, &names, r, &k)),
+            KernelOp::Square => {}
+            KernelOp::Sandwich | KernelOp::Apply => actions.push((r, k)),
         }
+    }
+    // the unit actions of a `where unit` type: one `UnitAction` impl per pair, each
+    // convention the cheaper of the structural and the reduced kernel
+    for pair in actions.chunks(2) {
+        let [(r, sandwich), (_, apply)] = pair else { unreachable!("requests come in sandwich/apply pairs") };
+        let unit = crate::unit::pair_items(spec, &names, r.left, r.right, [sandwich, apply])
+            .map_err(|e| ConstraintError::CoefficientTooLarge(e.to_string()))?;
+        items.push(unit);
     }
     Ok(quote!(#(#items)*))
 }
 
 fn method(spec: &ModuleSpec, names: &Names, r: Request, k: &ConstrainedKernel) -> TokenStream {
     let out = k.output_type.expect("checked by worth_a_method");
-    let (vt, xt, ot) = (&names.types[r.left], &names.types[r.right], &names.types[out]);
+    let (vt, ot) = (&names.types[r.left], &names.types[out]);
+    let (vn, on) = (&spec.types[r.left].name, &spec.types[out].name);
+    let what = format!(
+        " The square `self self` of a `{vn}` declared `where {}`, proven to be a `{on}`.",
+        spec.types[r.left].constraint.map_or("", |c| c.keyword())
+    );
+    let doc = std::iter::once(what).chain(k.doc());
+    let name = format_ident!("{}", method_name(spec, r));
+    let body = typed_body(names, r, k, out);
+    quote! {
+        impl<T: ::algebra_core::Ring> #vt<T> {
+            #(#[doc = #doc])*
+            pub fn #name(&self) -> #ot<T> {
+                #body
+            }
+        }
+    }
+}
+
+/// The statements of a method computing `k` (inputs `self` and, unless a square, `x`) into
+/// the declared type `out`, whose elements hold every computed output of `k`.
+pub(crate) fn typed_body(names: &Names, r: Request, k: &ConstrainedKernel, out: usize) -> TokenStream {
+    let ot = &names.types[out];
     let load = |t: usize, var: TokenStream| -> Vec<TokenStream> {
         names.fields[t].iter().zip(&names.signs[t]).map(|(f, &s)| Names::signed(quote!(#var.#f), s)).collect()
     };
@@ -217,38 +254,18 @@ fn method(spec: &ModuleSpec, names: &Names, r: Request, k: &ConstrainedKernel) -
             None => quote!(#f: T::zero()),
         }
     });
-    let (vn, xn, on) = (&spec.types[r.left].name, &spec.types[r.right].name, &spec.types[out].name);
-    let what = match r.op {
-        KernelOp::Sandwich => {
-            format!(" The action `rev(self) x self` of a unit `{vn}` on a `{xn}`, proven to be a `{on}`.")
-        }
-        KernelOp::Apply => {
-            format!(" The action `self x rev(self)` of a unit `{vn}` on a `{xn}`, proven to be a `{on}`.")
-        }
-        KernelOp::Square => format!(
-            " The square `self self` of a `{vn}` declared `where {}`, proven to be a `{on}`.",
-            spec.types[r.left].constraint.map_or("", |c| c.keyword())
-        ),
-    };
-    let doc = std::iter::once(what).chain(k.doc());
-    let name = format_ident!("{}", method_name(spec, r));
     let body = k.body();
-    let (params, load_b) = match r.op {
-        KernelOp::Square => (quote!(&self), quote!()),
+    let load_b = match r.op {
+        KernelOp::Square => quote!(),
         _ => {
             let b = load(r.right, quote!(x));
-            (quote!(&self, x: &#xt<T>), quote!(let b = [#(#b),*];))
+            quote!(let b = [#(#b),*];)
         }
     };
     quote! {
-        impl<T: ::algebra_core::Ring> #vt<T> {
-            #(#[doc = #doc])*
-            pub fn #name(#params) -> #ot<T> {
-                let a = [#(#a),*];
-                #load_b
-                let [#(#outs),*] = #body;
-                #ot { #(#fields),* }
-            }
-        }
+        let a = [#(#a),*];
+        #load_b
+        let [#(#outs),*] = #body;
+        #ot { #(#fields),* }
     }
 }
