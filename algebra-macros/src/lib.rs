@@ -279,7 +279,20 @@ impl Parse for Decl {
             (MetricDecl::Builtin(_), None) => Vec::new(),
             (MetricDecl::Pairs(_), None) => return Err(missing("generators")),
         };
-        Ok(Decl { engine, attrs, vis, name, generators, metric, metric_span, basis, types, serde, parity_types, closed_forms })
+        Ok(Decl {
+            engine,
+            attrs,
+            vis,
+            name,
+            generators,
+            metric,
+            metric_span,
+            basis,
+            types,
+            serde,
+            parity_types,
+            closed_forms,
+        })
     }
 }
 

@@ -106,3 +106,44 @@ fn custom_kernels_match_the_runtime() {
     assert_eq!(skew::Multivector::from(&x).to_multivector(), xm);
     assert_eq!(skew::Even::<Q>::ELEMENTS, ["1", "eab", "eac", "ebc"]);
 }
+
+// `closed_forms off;` leaves out the detected closed forms, so a crate can give the types its own
+// methods of those names (as `motion` does for `Pose::log`); with the default they are emitted.
+mod closed_forms {
+    algebra_macros::algebra! {
+        pub mod with {
+            generators { e1, e2 }
+            metric { (e1, e1) = 1, (e2, e2) = 1 }
+            types {
+                Bivector = grade 2;
+                Rotor = even;
+            }
+        }
+    }
+    algebra_macros::algebra! {
+        pub mod without {
+            generators { e1, e2 }
+            metric { (e1, e1) = 1, (e2, e2) = 1 }
+            closed_forms off;
+            types {
+                Bivector = grade 2;
+                Rotor = even;
+            }
+        }
+    }
+    impl<T: algebra_core::Real> without::Rotor<T> {
+        /// Compiles only because no generated `log` exists on this type.
+        pub fn log(&self) -> T {
+            self.e12.atan2(&self.scalar)
+        }
+    }
+
+    #[test]
+    fn off_leaves_the_names_free_and_on_emits_them() {
+        let b = with::Bivector::<f64>::e12() * 0.25;
+        let r = b.exp();
+        assert!((r.scalar - 0.25f64.cos()).abs() < 1e-15 && (r.e12 - 0.25f64.sin()).abs() < 1e-15);
+        let own = without::Rotor { scalar: 0.25f64.cos(), e12: 0.25f64.sin() };
+        assert!((own.log() - 0.25).abs() < 1e-15);
+    }
+}

@@ -8850,7 +8850,7 @@ pub mod g3_vendored {
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Sandwich<Vector<T>>
     for Vector<T> {
         type Output = Vector<T>;
-        ///`rev(self) x self` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
+        ///`rev(self) x self` in one fused kernel: every component of the full product is a [`Vector`] component.
         #[inline(always)]
         fn sandwich(&self, x: &Vector<T>) -> Vector<T> {
             let t0 = ((self.e1.mul_ref(&x.e1))
@@ -8870,7 +8870,7 @@ pub mod g3_vendored {
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Apply<Vector<T>> for Vector<T> {
         type Output = Vector<T>;
-        ///`self x rev(self)` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
+        ///`self x rev(self)` in one fused kernel: every component of the full product is a [`Vector`] component.
         #[inline(always)]
         fn apply(&self, x: &Vector<T>) -> Vector<T> {
             let t0 = ((self.e1.mul_ref(&x.e1))
@@ -8890,7 +8890,7 @@ pub mod g3_vendored {
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Sandwich<Rotor<T>> for Vector<T> {
         type Output = Rotor<T>;
-        ///`rev(self) x self` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
+        ///`rev(self) x self` in one fused kernel: every component of the full product is a [`Rotor`] component.
         #[inline(always)]
         fn sandwich(&self, x: &Rotor<T>) -> Rotor<T> {
             let t0 = ((self.e1.mul_ref(&x.scalar))
@@ -8915,7 +8915,7 @@ pub mod g3_vendored {
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Apply<Rotor<T>> for Vector<T> {
         type Output = Rotor<T>;
-        ///`self x rev(self)` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
+        ///`self x rev(self)` in one fused kernel: every component of the full product is a [`Rotor`] component.
         #[inline(always)]
         fn apply(&self, x: &Rotor<T>) -> Rotor<T> {
             let t0 = ((self.e1.mul_ref(&x.scalar))
@@ -8940,7 +8940,7 @@ pub mod g3_vendored {
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Sandwich<Odd<T>> for Vector<T> {
         type Output = Odd<T>;
-        ///`rev(self) x self` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
+        ///`rev(self) x self` in one fused kernel: every component of the full product is a [`Odd`] component.
         #[inline(always)]
         fn sandwich(&self, x: &Odd<T>) -> Odd<T> {
             let t0 = ((self.e1.mul_ref(&x.e1))
@@ -8965,7 +8965,7 @@ pub mod g3_vendored {
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Apply<Odd<T>> for Vector<T> {
         type Output = Odd<T>;
-        ///`self x rev(self)` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
+        ///`self x rev(self)` in one fused kernel: every component of the full product is a [`Odd`] component.
         #[inline(always)]
         fn apply(&self, x: &Odd<T>) -> Odd<T> {
             let t0 = ((self.e1.mul_ref(&x.e1))
@@ -8990,7 +8990,7 @@ pub mod g3_vendored {
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Sandwich<Vector<T>> for Rotor<T> {
         type Output = Vector<T>;
-        ///`rev(self) x self` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
+        ///`rev(self) x self` in one fused kernel: every component of the full product is a [`Vector`] component.
         #[inline(always)]
         fn sandwich(&self, x: &Vector<T>) -> Vector<T> {
             let t0 = ((self.scalar.mul_ref(&x.e1))
@@ -9015,7 +9015,7 @@ pub mod g3_vendored {
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Apply<Vector<T>> for Rotor<T> {
         type Output = Vector<T>;
-        ///`self x rev(self)` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
+        ///`self x rev(self)` in one fused kernel: every component of the full product is a [`Vector`] component.
         #[inline(always)]
         fn apply(&self, x: &Vector<T>) -> Vector<T> {
             let t0 = ((self.scalar.mul_ref(&x.e1))
@@ -9042,7 +9042,7 @@ pub mod g3_vendored {
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Sandwich<Rotor<T>> for Rotor<T> {
         type Output = Rotor<T>;
-        ///`rev(self) x self` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
+        ///`rev(self) x self` in one fused kernel: every component of the full product is a [`Rotor`] component.
         #[inline(always)]
         fn sandwich(&self, x: &Rotor<T>) -> Rotor<T> {
             let t0 = (((self.scalar.mul_ref(&x.scalar)) + &(self.e12.mul_ref(&x.e12)))
@@ -9067,7 +9067,7 @@ pub mod g3_vendored {
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Apply<Rotor<T>> for Rotor<T> {
         type Output = Rotor<T>;
-        ///`self x rev(self)` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
+        ///`self x rev(self)` in one fused kernel: every component of the full product is a [`Rotor`] component.
         #[inline(always)]
         fn apply(&self, x: &Rotor<T>) -> Rotor<T> {
             let t0 = (((self.scalar.mul_ref(&x.scalar)) - &(self.e12.mul_ref(&x.e12)))
@@ -9098,7 +9098,7 @@ pub mod g3_vendored {
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Sandwich<Odd<T>> for Rotor<T> {
         type Output = Odd<T>;
-        ///`rev(self) x self` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
+        ///`rev(self) x self` in one fused kernel: every component of the full product is a [`Odd`] component.
         #[inline(always)]
         fn sandwich(&self, x: &Odd<T>) -> Odd<T> {
             let t0 = (((self.scalar.mul_ref(&x.e1)) - &(self.e12.mul_ref(&x.e2)))
@@ -9123,7 +9123,7 @@ pub mod g3_vendored {
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Apply<Odd<T>> for Rotor<T> {
         type Output = Odd<T>;
-        ///`self x rev(self)` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
+        ///`self x rev(self)` in one fused kernel: every component of the full product is a [`Odd`] component.
         #[inline(always)]
         fn apply(&self, x: &Odd<T>) -> Odd<T> {
             let t0 = (((self.scalar.mul_ref(&x.e1)) + &(self.e12.mul_ref(&x.e2)))
@@ -9154,7 +9154,7 @@ pub mod g3_vendored {
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Sandwich<Vector<T>> for Odd<T> {
         type Output = Vector<T>;
-        ///`rev(self) x self` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
+        ///`rev(self) x self` in one fused kernel: every component of the full product is a [`Vector`] component.
         #[inline(always)]
         fn sandwich(&self, x: &Vector<T>) -> Vector<T> {
             let t0 = ((self.e1.mul_ref(&x.e1))
@@ -9177,7 +9177,7 @@ pub mod g3_vendored {
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Apply<Vector<T>> for Odd<T> {
         type Output = Vector<T>;
-        ///`self x rev(self)` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
+        ///`self x rev(self)` in one fused kernel: every component of the full product is a [`Vector`] component.
         #[inline(always)]
         fn apply(&self, x: &Vector<T>) -> Vector<T> {
             let t0 = ((self.e1.mul_ref(&x.e1))
@@ -9200,7 +9200,7 @@ pub mod g3_vendored {
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Sandwich<Rotor<T>> for Odd<T> {
         type Output = Rotor<T>;
-        ///`rev(self) x self` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
+        ///`rev(self) x self` in one fused kernel: every component of the full product is a [`Rotor`] component.
         #[inline(always)]
         fn sandwich(&self, x: &Rotor<T>) -> Rotor<T> {
             let t0 = (((self.e1.mul_ref(&x.scalar)) - &(self.e2.mul_ref(&x.e12)))
@@ -9225,7 +9225,7 @@ pub mod g3_vendored {
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Apply<Rotor<T>> for Odd<T> {
         type Output = Rotor<T>;
-        ///`self x rev(self)` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
+        ///`self x rev(self)` in one fused kernel: every component of the full product is a [`Rotor`] component.
         #[inline(always)]
         fn apply(&self, x: &Rotor<T>) -> Rotor<T> {
             let t0 = (((self.e1.mul_ref(&x.scalar)) - &(self.e2.mul_ref(&x.e12)))
@@ -9252,7 +9252,7 @@ pub mod g3_vendored {
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Sandwich<Odd<T>> for Odd<T> {
         type Output = Odd<T>;
-        ///`rev(self) x self` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
+        ///`rev(self) x self` in one fused kernel: every component of the full product is a [`Odd`] component.
         #[inline(always)]
         fn sandwich(&self, x: &Odd<T>) -> Odd<T> {
             let t0 = (((self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2)))
@@ -9277,7 +9277,7 @@ pub mod g3_vendored {
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Apply<Odd<T>> for Odd<T> {
         type Output = Odd<T>;
-        ///`self x rev(self)` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
+        ///`self x rev(self)` in one fused kernel: every component of the full product is a [`Odd`] component.
         #[inline(always)]
         fn apply(&self, x: &Odd<T>) -> Odd<T> {
             let t0 = (((self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2)))
@@ -10296,7 +10296,9 @@ pub mod g3_vendored {
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::UnitAction<Vector<T>>
     for Vector<T> {
-        /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
+        /// `rev(self) x self` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
+        /// The commutator form `x + (L x - x L) R`: 12 multiplications.
+        /// Every component of the full product is a `Vector` component: this is the whole action.
         #[inline]
         fn sandwich_unit(&self, x: &Vector<T>) -> Vector<T> {
             let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
@@ -10321,7 +10323,9 @@ pub mod g3_vendored {
                 },
             }
         }
-        /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
+        /// `self x rev(self)` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
+        /// The commutator form `x + (L x - x L) R`: 12 multiplications.
+        /// Every component of the full product is a `Vector` component: this is the whole action.
         #[inline]
         fn apply_unit(&self, x: &Vector<T>) -> Vector<T> {
             let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
@@ -10349,7 +10353,9 @@ pub mod g3_vendored {
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::UnitAction<Rotor<T>>
     for Vector<T> {
-        /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
+        /// `rev(self) x self` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
+        /// The commutator form `x + (L x - x L) R`: 12 multiplications.
+        /// Every component of the full product is a `Rotor` component: this is the whole action.
         #[inline]
         fn sandwich_unit(&self, x: &Rotor<T>) -> Rotor<T> {
             let t0 = ::algebra_core::Ring::neg_ref(
@@ -10373,7 +10379,9 @@ pub mod g3_vendored {
                 },
             }
         }
-        /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
+        /// `self x rev(self)` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
+        /// The commutator form `x + (L x - x L) R`: 12 multiplications.
+        /// Every component of the full product is a `Rotor` component: this is the whole action.
         #[inline]
         fn apply_unit(&self, x: &Rotor<T>) -> Rotor<T> {
             let t0 = ::algebra_core::Ring::neg_ref(
@@ -10399,7 +10407,9 @@ pub mod g3_vendored {
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::UnitAction<Odd<T>> for Vector<T> {
-        /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
+        /// `rev(self) x self` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
+        /// The commutator form `x + (L x - x L) R`: 12 multiplications.
+        /// Every component of the full product is a `Odd` component: this is the whole action.
         #[inline]
         fn sandwich_unit(&self, x: &Odd<T>) -> Odd<T> {
             let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
@@ -10425,7 +10435,9 @@ pub mod g3_vendored {
                 e123: ::core::clone::Clone::clone(&x.e123),
             }
         }
-        /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
+        /// `self x rev(self)` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
+        /// The commutator form `x + (L x - x L) R`: 12 multiplications.
+        /// Every component of the full product is a `Odd` component: this is the whole action.
         #[inline]
         fn apply_unit(&self, x: &Odd<T>) -> Odd<T> {
             let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
@@ -10454,7 +10466,9 @@ pub mod g3_vendored {
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::UnitAction<Vector<T>>
     for Rotor<T> {
-        /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
+        /// `rev(self) x self` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
+        /// The commutator form `x + (L x - x L) R`: 15 multiplications.
+        /// Every component of the full product is a `Vector` component: this is the whole action.
         #[inline]
         fn sandwich_unit(&self, x: &Vector<T>) -> Vector<T> {
             let t0 = ::algebra_core::Ring::neg_ref(
@@ -10480,7 +10494,9 @@ pub mod g3_vendored {
                 },
             }
         }
-        /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
+        /// `self x rev(self)` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
+        /// The commutator form `x + (L x - x L) R`: 15 multiplications.
+        /// Every component of the full product is a `Vector` component: this is the whole action.
         #[inline]
         fn apply_unit(&self, x: &Vector<T>) -> Vector<T> {
             let t0 = ((self.e12.mul_ref(&x.e2)) + &(self.e13.mul_ref(&x.e3)));
@@ -10515,7 +10531,9 @@ pub mod g3_vendored {
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::UnitAction<Rotor<T>>
     for Rotor<T> {
-        /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
+        /// `rev(self) x self` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
+        /// The commutator form `x + (L x - x L) R`: 15 multiplications.
+        /// Every component of the full product is a `Rotor` component: this is the whole action.
         #[inline]
         fn sandwich_unit(&self, x: &Rotor<T>) -> Rotor<T> {
             let t0 = ((self.e13.mul_ref(&x.e23)) - &(self.e23.mul_ref(&x.e13)));
@@ -10544,7 +10562,9 @@ pub mod g3_vendored {
                 },
             }
         }
-        /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
+        /// `self x rev(self)` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
+        /// The commutator form `x + (L x - x L) R`: 15 multiplications.
+        /// Every component of the full product is a `Rotor` component: this is the whole action.
         #[inline]
         fn apply_unit(&self, x: &Rotor<T>) -> Rotor<T> {
             let t0 = ::algebra_core::Ring::neg_ref(
@@ -10577,7 +10597,9 @@ pub mod g3_vendored {
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::UnitAction<Odd<T>> for Rotor<T> {
-        /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
+        /// `rev(self) x self` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
+        /// The commutator form `x + (L x - x L) R`: 15 multiplications.
+        /// Every component of the full product is a `Odd` component: this is the whole action.
         #[inline]
         fn sandwich_unit(&self, x: &Odd<T>) -> Odd<T> {
             let t0 = ::algebra_core::Ring::neg_ref(
@@ -10604,7 +10626,9 @@ pub mod g3_vendored {
                 e123: ::core::clone::Clone::clone(&x.e123),
             }
         }
-        /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
+        /// `self x rev(self)` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
+        /// The commutator form `x + (L x - x L) R`: 15 multiplications.
+        /// Every component of the full product is a `Odd` component: this is the whole action.
         #[inline]
         fn apply_unit(&self, x: &Odd<T>) -> Odd<T> {
             let t0 = ((self.e12.mul_ref(&x.e2)) + &(self.e13.mul_ref(&x.e3)));
@@ -10639,7 +10663,9 @@ pub mod g3_vendored {
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::UnitAction<Vector<T>> for Odd<T> {
-        /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
+        /// `rev(self) x self` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
+        /// The commutator form `x + (L x - x L) R`: 15 multiplications.
+        /// Every component of the full product is a `Vector` component: this is the whole action.
         #[inline]
         fn sandwich_unit(&self, x: &Vector<T>) -> Vector<T> {
             let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
@@ -10667,7 +10693,9 @@ pub mod g3_vendored {
                 },
             }
         }
-        /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
+        /// `self x rev(self)` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
+        /// The commutator form `x + (L x - x L) R`: 15 multiplications.
+        /// Every component of the full product is a `Vector` component: this is the whole action.
         #[inline]
         fn apply_unit(&self, x: &Vector<T>) -> Vector<T> {
             let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
@@ -10695,7 +10723,9 @@ pub mod g3_vendored {
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::UnitAction<Rotor<T>> for Odd<T> {
-        /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
+        /// `rev(self) x self` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
+        /// The commutator form `x + (L x - x L) R`: 15 multiplications.
+        /// Every component of the full product is a `Rotor` component: this is the whole action.
         #[inline]
         fn sandwich_unit(&self, x: &Rotor<T>) -> Rotor<T> {
             let t0 = ::algebra_core::Ring::neg_ref(
@@ -10722,7 +10752,9 @@ pub mod g3_vendored {
                 },
             }
         }
-        /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
+        /// `self x rev(self)` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
+        /// The commutator form `x + (L x - x L) R`: 15 multiplications.
+        /// Every component of the full product is a `Rotor` component: this is the whole action.
         #[inline]
         fn apply_unit(&self, x: &Rotor<T>) -> Rotor<T> {
             let t0 = ::algebra_core::Ring::neg_ref(
@@ -10753,7 +10785,9 @@ pub mod g3_vendored {
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::UnitAction<Odd<T>> for Odd<T> {
-        /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
+        /// `rev(self) x self` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
+        /// The commutator form `x + (L x - x L) R`: 15 multiplications.
+        /// Every component of the full product is a `Odd` component: this is the whole action.
         #[inline]
         fn sandwich_unit(&self, x: &Odd<T>) -> Odd<T> {
             let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
@@ -10782,7 +10816,9 @@ pub mod g3_vendored {
                 e123: ::core::clone::Clone::clone(&x.e123),
             }
         }
-        /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
+        /// `self x rev(self)` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
+        /// The commutator form `x + (L x - x L) R`: 15 multiplications.
+        /// Every component of the full product is a `Odd` component: this is the whole action.
         #[inline]
         fn apply_unit(&self, x: &Odd<T>) -> Odd<T> {
             let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));

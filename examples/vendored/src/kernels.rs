@@ -8122,7 +8122,7 @@ impl<T: self::Ring> Multivector<T> {
 }
 impl<T: self::Ring> self::Sandwich<Vector<T>> for Vector<T> {
     type Output = Vector<T>;
-    ///`rev(self) x self` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
+    ///`rev(self) x self` in one fused kernel: every component of the full product is a [`Vector`] component.
     #[inline(always)]
     fn sandwich(&self, x: &Vector<T>) -> Vector<T> {
         let t0 = ((self.e1.mul_ref(&x.e1))
@@ -8142,7 +8142,7 @@ impl<T: self::Ring> self::Sandwich<Vector<T>> for Vector<T> {
 }
 impl<T: self::Ring> self::Apply<Vector<T>> for Vector<T> {
     type Output = Vector<T>;
-    ///`self x rev(self)` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
+    ///`self x rev(self)` in one fused kernel: every component of the full product is a [`Vector`] component.
     #[inline(always)]
     fn apply(&self, x: &Vector<T>) -> Vector<T> {
         let t0 = ((self.e1.mul_ref(&x.e1))
@@ -8162,7 +8162,7 @@ impl<T: self::Ring> self::Apply<Vector<T>> for Vector<T> {
 }
 impl<T: self::Ring> self::Sandwich<Rotor<T>> for Vector<T> {
     type Output = Rotor<T>;
-    ///`rev(self) x self` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
+    ///`rev(self) x self` in one fused kernel: every component of the full product is a [`Rotor`] component.
     #[inline(always)]
     fn sandwich(&self, x: &Rotor<T>) -> Rotor<T> {
         let t0 = ((self.e1.mul_ref(&x.scalar))
@@ -8187,7 +8187,7 @@ impl<T: self::Ring> self::Sandwich<Rotor<T>> for Vector<T> {
 }
 impl<T: self::Ring> self::Apply<Rotor<T>> for Vector<T> {
     type Output = Rotor<T>;
-    ///`self x rev(self)` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
+    ///`self x rev(self)` in one fused kernel: every component of the full product is a [`Rotor`] component.
     #[inline(always)]
     fn apply(&self, x: &Rotor<T>) -> Rotor<T> {
         let t0 = ((self.e1.mul_ref(&x.scalar))
@@ -8212,7 +8212,7 @@ impl<T: self::Ring> self::Apply<Rotor<T>> for Vector<T> {
 }
 impl<T: self::Ring> self::Sandwich<Odd<T>> for Vector<T> {
     type Output = Odd<T>;
-    ///`rev(self) x self` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
+    ///`rev(self) x self` in one fused kernel: every component of the full product is a [`Odd`] component.
     #[inline(always)]
     fn sandwich(&self, x: &Odd<T>) -> Odd<T> {
         let t0 = ((self.e1.mul_ref(&x.e1))
@@ -8237,7 +8237,7 @@ impl<T: self::Ring> self::Sandwich<Odd<T>> for Vector<T> {
 }
 impl<T: self::Ring> self::Apply<Odd<T>> for Vector<T> {
     type Output = Odd<T>;
-    ///`self x rev(self)` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
+    ///`self x rev(self)` in one fused kernel: every component of the full product is a [`Odd`] component.
     #[inline(always)]
     fn apply(&self, x: &Odd<T>) -> Odd<T> {
         let t0 = ((self.e1.mul_ref(&x.e1))
@@ -8262,7 +8262,7 @@ impl<T: self::Ring> self::Apply<Odd<T>> for Vector<T> {
 }
 impl<T: self::Ring> self::Sandwich<Vector<T>> for Rotor<T> {
     type Output = Vector<T>;
-    ///`rev(self) x self` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
+    ///`rev(self) x self` in one fused kernel: every component of the full product is a [`Vector`] component.
     #[inline(always)]
     fn sandwich(&self, x: &Vector<T>) -> Vector<T> {
         let t0 = ((self.scalar.mul_ref(&x.e1))
@@ -8287,7 +8287,7 @@ impl<T: self::Ring> self::Sandwich<Vector<T>> for Rotor<T> {
 }
 impl<T: self::Ring> self::Apply<Vector<T>> for Rotor<T> {
     type Output = Vector<T>;
-    ///`self x rev(self)` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
+    ///`self x rev(self)` in one fused kernel: every component of the full product is a [`Vector`] component.
     #[inline(always)]
     fn apply(&self, x: &Vector<T>) -> Vector<T> {
         let t0 = ((self.scalar.mul_ref(&x.e1))
@@ -8314,7 +8314,7 @@ impl<T: self::Ring> self::Apply<Vector<T>> for Rotor<T> {
 }
 impl<T: self::Ring> self::Sandwich<Rotor<T>> for Rotor<T> {
     type Output = Rotor<T>;
-    ///`rev(self) x self` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
+    ///`rev(self) x self` in one fused kernel: every component of the full product is a [`Rotor`] component.
     #[inline(always)]
     fn sandwich(&self, x: &Rotor<T>) -> Rotor<T> {
         let t0 = (((self.scalar.mul_ref(&x.scalar)) + &(self.e12.mul_ref(&x.e12)))
@@ -8339,7 +8339,7 @@ impl<T: self::Ring> self::Sandwich<Rotor<T>> for Rotor<T> {
 }
 impl<T: self::Ring> self::Apply<Rotor<T>> for Rotor<T> {
     type Output = Rotor<T>;
-    ///`self x rev(self)` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
+    ///`self x rev(self)` in one fused kernel: every component of the full product is a [`Rotor`] component.
     #[inline(always)]
     fn apply(&self, x: &Rotor<T>) -> Rotor<T> {
         let t0 = (((self.scalar.mul_ref(&x.scalar)) - &(self.e12.mul_ref(&x.e12)))
@@ -8370,7 +8370,7 @@ impl<T: self::Ring> self::Apply<Rotor<T>> for Rotor<T> {
 }
 impl<T: self::Ring> self::Sandwich<Odd<T>> for Rotor<T> {
     type Output = Odd<T>;
-    ///`rev(self) x self` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
+    ///`rev(self) x self` in one fused kernel: every component of the full product is a [`Odd`] component.
     #[inline(always)]
     fn sandwich(&self, x: &Odd<T>) -> Odd<T> {
         let t0 = (((self.scalar.mul_ref(&x.e1)) - &(self.e12.mul_ref(&x.e2)))
@@ -8395,7 +8395,7 @@ impl<T: self::Ring> self::Sandwich<Odd<T>> for Rotor<T> {
 }
 impl<T: self::Ring> self::Apply<Odd<T>> for Rotor<T> {
     type Output = Odd<T>;
-    ///`self x rev(self)` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
+    ///`self x rev(self)` in one fused kernel: every component of the full product is a [`Odd`] component.
     #[inline(always)]
     fn apply(&self, x: &Odd<T>) -> Odd<T> {
         let t0 = (((self.scalar.mul_ref(&x.e1)) + &(self.e12.mul_ref(&x.e2)))
@@ -8426,7 +8426,7 @@ impl<T: self::Ring> self::Apply<Odd<T>> for Rotor<T> {
 }
 impl<T: self::Ring> self::Sandwich<Vector<T>> for Odd<T> {
     type Output = Vector<T>;
-    ///`rev(self) x self` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
+    ///`rev(self) x self` in one fused kernel: every component of the full product is a [`Vector`] component.
     #[inline(always)]
     fn sandwich(&self, x: &Vector<T>) -> Vector<T> {
         let t0 = ((self.e1.mul_ref(&x.e1))
@@ -8449,7 +8449,7 @@ impl<T: self::Ring> self::Sandwich<Vector<T>> for Odd<T> {
 }
 impl<T: self::Ring> self::Apply<Vector<T>> for Odd<T> {
     type Output = Vector<T>;
-    ///`self x rev(self)` projected onto [`Vector`] in one fused kernel: exact for versors whose action preserves `Vector`.
+    ///`self x rev(self)` in one fused kernel: every component of the full product is a [`Vector`] component.
     #[inline(always)]
     fn apply(&self, x: &Vector<T>) -> Vector<T> {
         let t0 = ((self.e1.mul_ref(&x.e1))
@@ -8472,7 +8472,7 @@ impl<T: self::Ring> self::Apply<Vector<T>> for Odd<T> {
 }
 impl<T: self::Ring> self::Sandwich<Rotor<T>> for Odd<T> {
     type Output = Rotor<T>;
-    ///`rev(self) x self` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
+    ///`rev(self) x self` in one fused kernel: every component of the full product is a [`Rotor`] component.
     #[inline(always)]
     fn sandwich(&self, x: &Rotor<T>) -> Rotor<T> {
         let t0 = (((self.e1.mul_ref(&x.scalar)) - &(self.e2.mul_ref(&x.e12)))
@@ -8497,7 +8497,7 @@ impl<T: self::Ring> self::Sandwich<Rotor<T>> for Odd<T> {
 }
 impl<T: self::Ring> self::Apply<Rotor<T>> for Odd<T> {
     type Output = Rotor<T>;
-    ///`self x rev(self)` projected onto [`Rotor`] in one fused kernel: exact for versors whose action preserves `Rotor`.
+    ///`self x rev(self)` in one fused kernel: every component of the full product is a [`Rotor`] component.
     #[inline(always)]
     fn apply(&self, x: &Rotor<T>) -> Rotor<T> {
         let t0 = (((self.e1.mul_ref(&x.scalar)) - &(self.e2.mul_ref(&x.e12)))
@@ -8524,7 +8524,7 @@ impl<T: self::Ring> self::Apply<Rotor<T>> for Odd<T> {
 }
 impl<T: self::Ring> self::Sandwich<Odd<T>> for Odd<T> {
     type Output = Odd<T>;
-    ///`rev(self) x self` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
+    ///`rev(self) x self` in one fused kernel: every component of the full product is a [`Odd`] component.
     #[inline(always)]
     fn sandwich(&self, x: &Odd<T>) -> Odd<T> {
         let t0 = (((self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2)))
@@ -8549,7 +8549,7 @@ impl<T: self::Ring> self::Sandwich<Odd<T>> for Odd<T> {
 }
 impl<T: self::Ring> self::Apply<Odd<T>> for Odd<T> {
     type Output = Odd<T>;
-    ///`self x rev(self)` projected onto [`Odd`] in one fused kernel: exact for versors whose action preserves `Odd`.
+    ///`self x rev(self)` in one fused kernel: every component of the full product is a [`Odd`] component.
     #[inline(always)]
     fn apply(&self, x: &Odd<T>) -> Odd<T> {
         let t0 = (((self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2)))
@@ -9429,7 +9429,9 @@ impl<T: self::Ring> self::ActionMatrix<Odd<T>> for Odd<T> {
     }
 }
 impl<T: self::Ring> self::UnitAction<Vector<T>> for Vector<T> {
-    /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
+    /// `rev(self) x self` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
+    /// The commutator form `x + (L x - x L) R`: 12 multiplications.
+    /// Every component of the full product is a `Vector` component: this is the whole action.
     #[inline]
     fn sandwich_unit(&self, x: &Vector<T>) -> Vector<T> {
         let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
@@ -9454,7 +9456,9 @@ impl<T: self::Ring> self::UnitAction<Vector<T>> for Vector<T> {
             },
         }
     }
-    /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
+    /// `self x rev(self)` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
+    /// The commutator form `x + (L x - x L) R`: 12 multiplications.
+    /// Every component of the full product is a `Vector` component: this is the whole action.
     #[inline]
     fn apply_unit(&self, x: &Vector<T>) -> Vector<T> {
         let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
@@ -9481,7 +9485,9 @@ impl<T: self::Ring> self::UnitAction<Vector<T>> for Vector<T> {
     }
 }
 impl<T: self::Ring> self::UnitAction<Rotor<T>> for Vector<T> {
-    /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
+    /// `rev(self) x self` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
+    /// The commutator form `x + (L x - x L) R`: 12 multiplications.
+    /// Every component of the full product is a `Rotor` component: this is the whole action.
     #[inline]
     fn sandwich_unit(&self, x: &Rotor<T>) -> Rotor<T> {
         let t0 = self::Ring::neg_ref(
@@ -9505,7 +9511,9 @@ impl<T: self::Ring> self::UnitAction<Rotor<T>> for Vector<T> {
             },
         }
     }
-    /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
+    /// `self x rev(self)` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
+    /// The commutator form `x + (L x - x L) R`: 12 multiplications.
+    /// Every component of the full product is a `Rotor` component: this is the whole action.
     #[inline]
     fn apply_unit(&self, x: &Rotor<T>) -> Rotor<T> {
         let t0 = self::Ring::neg_ref(
@@ -9531,7 +9539,9 @@ impl<T: self::Ring> self::UnitAction<Rotor<T>> for Vector<T> {
     }
 }
 impl<T: self::Ring> self::UnitAction<Odd<T>> for Vector<T> {
-    /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
+    /// `rev(self) x self` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
+    /// The commutator form `x + (L x - x L) R`: 12 multiplications.
+    /// Every component of the full product is a `Odd` component: this is the whole action.
     #[inline]
     fn sandwich_unit(&self, x: &Odd<T>) -> Odd<T> {
         let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
@@ -9557,7 +9567,9 @@ impl<T: self::Ring> self::UnitAction<Odd<T>> for Vector<T> {
             e123: ::core::clone::Clone::clone(&x.e123),
         }
     }
-    /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
+    /// `self x rev(self)` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
+    /// The commutator form `x + (L x - x L) R`: 12 multiplications.
+    /// Every component of the full product is a `Odd` component: this is the whole action.
     #[inline]
     fn apply_unit(&self, x: &Odd<T>) -> Odd<T> {
         let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
@@ -9585,7 +9597,9 @@ impl<T: self::Ring> self::UnitAction<Odd<T>> for Vector<T> {
     }
 }
 impl<T: self::Ring> self::UnitAction<Vector<T>> for Rotor<T> {
-    /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
+    /// `rev(self) x self` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
+    /// The commutator form `x + (L x - x L) R`: 15 multiplications.
+    /// Every component of the full product is a `Vector` component: this is the whole action.
     #[inline]
     fn sandwich_unit(&self, x: &Vector<T>) -> Vector<T> {
         let t0 = self::Ring::neg_ref(
@@ -9611,7 +9625,9 @@ impl<T: self::Ring> self::UnitAction<Vector<T>> for Rotor<T> {
             },
         }
     }
-    /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
+    /// `self x rev(self)` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
+    /// The commutator form `x + (L x - x L) R`: 15 multiplications.
+    /// Every component of the full product is a `Vector` component: this is the whole action.
     #[inline]
     fn apply_unit(&self, x: &Vector<T>) -> Vector<T> {
         let t0 = ((self.e12.mul_ref(&x.e2)) + &(self.e13.mul_ref(&x.e3)));
@@ -9645,7 +9661,9 @@ impl<T: self::Ring> self::UnitAction<Vector<T>> for Rotor<T> {
     }
 }
 impl<T: self::Ring> self::UnitAction<Rotor<T>> for Rotor<T> {
-    /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
+    /// `rev(self) x self` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
+    /// The commutator form `x + (L x - x L) R`: 15 multiplications.
+    /// Every component of the full product is a `Rotor` component: this is the whole action.
     #[inline]
     fn sandwich_unit(&self, x: &Rotor<T>) -> Rotor<T> {
         let t0 = ((self.e13.mul_ref(&x.e23)) - &(self.e23.mul_ref(&x.e13)));
@@ -9674,7 +9692,9 @@ impl<T: self::Ring> self::UnitAction<Rotor<T>> for Rotor<T> {
             },
         }
     }
-    /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
+    /// `self x rev(self)` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
+    /// The commutator form `x + (L x - x L) R`: 15 multiplications.
+    /// Every component of the full product is a `Rotor` component: this is the whole action.
     #[inline]
     fn apply_unit(&self, x: &Rotor<T>) -> Rotor<T> {
         let t0 = self::Ring::neg_ref(
@@ -9707,7 +9727,9 @@ impl<T: self::Ring> self::UnitAction<Rotor<T>> for Rotor<T> {
     }
 }
 impl<T: self::Ring> self::UnitAction<Odd<T>> for Rotor<T> {
-    /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
+    /// `rev(self) x self` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
+    /// The commutator form `x + (L x - x L) R`: 15 multiplications.
+    /// Every component of the full product is a `Odd` component: this is the whole action.
     #[inline]
     fn sandwich_unit(&self, x: &Odd<T>) -> Odd<T> {
         let t0 = self::Ring::neg_ref(
@@ -9734,7 +9756,9 @@ impl<T: self::Ring> self::UnitAction<Odd<T>> for Rotor<T> {
             e123: ::core::clone::Clone::clone(&x.e123),
         }
     }
-    /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
+    /// `self x rev(self)` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
+    /// The commutator form `x + (L x - x L) R`: 15 multiplications.
+    /// Every component of the full product is a `Odd` component: this is the whole action.
     #[inline]
     fn apply_unit(&self, x: &Odd<T>) -> Odd<T> {
         let t0 = ((self.e12.mul_ref(&x.e2)) + &(self.e13.mul_ref(&x.e3)));
@@ -9769,7 +9793,9 @@ impl<T: self::Ring> self::UnitAction<Odd<T>> for Rotor<T> {
     }
 }
 impl<T: self::Ring> self::UnitAction<Vector<T>> for Odd<T> {
-    /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
+    /// `rev(self) x self` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
+    /// The commutator form `x + (L x - x L) R`: 15 multiplications.
+    /// Every component of the full product is a `Vector` component: this is the whole action.
     #[inline]
     fn sandwich_unit(&self, x: &Vector<T>) -> Vector<T> {
         let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
@@ -9797,7 +9823,9 @@ impl<T: self::Ring> self::UnitAction<Vector<T>> for Odd<T> {
             },
         }
     }
-    /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
+    /// `self x rev(self)` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
+    /// The commutator form `x + (L x - x L) R`: 15 multiplications.
+    /// Every component of the full product is a `Vector` component: this is the whole action.
     #[inline]
     fn apply_unit(&self, x: &Vector<T>) -> Vector<T> {
         let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
@@ -9825,7 +9853,9 @@ impl<T: self::Ring> self::UnitAction<Vector<T>> for Odd<T> {
     }
 }
 impl<T: self::Ring> self::UnitAction<Rotor<T>> for Odd<T> {
-    /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
+    /// `rev(self) x self` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
+    /// The commutator form `x + (L x - x L) R`: 15 multiplications.
+    /// Every component of the full product is a `Rotor` component: this is the whole action.
     #[inline]
     fn sandwich_unit(&self, x: &Rotor<T>) -> Rotor<T> {
         let t0 = self::Ring::neg_ref(
@@ -9852,7 +9882,9 @@ impl<T: self::Ring> self::UnitAction<Rotor<T>> for Odd<T> {
             },
         }
     }
-    /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
+    /// `self x rev(self)` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
+    /// The commutator form `x + (L x - x L) R`: 15 multiplications.
+    /// Every component of the full product is a `Rotor` component: this is the whole action.
     #[inline]
     fn apply_unit(&self, x: &Rotor<T>) -> Rotor<T> {
         let t0 = self::Ring::neg_ref(
@@ -9883,7 +9915,9 @@ impl<T: self::Ring> self::UnitAction<Rotor<T>> for Odd<T> {
     }
 }
 impl<T: self::Ring> self::UnitAction<Odd<T>> for Odd<T> {
-    /// `rev(self) x self` for a unit `self`, as `x + (rev(self) x - x rev(self)) self`.
+    /// `rev(self) x self` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
+    /// The commutator form `x + (L x - x L) R`: 15 multiplications.
+    /// Every component of the full product is a `Odd` component: this is the whole action.
     #[inline]
     fn sandwich_unit(&self, x: &Odd<T>) -> Odd<T> {
         let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
@@ -9912,7 +9946,9 @@ impl<T: self::Ring> self::UnitAction<Odd<T>> for Odd<T> {
             e123: ::core::clone::Clone::clone(&x.e123),
         }
     }
-    /// `self x rev(self)` for a unit `self`, as `x + (self x - x self) rev(self)`.
+    /// `self x rev(self)` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
+    /// The commutator form `x + (L x - x L) R`: 15 multiplications.
+    /// Every component of the full product is a `Odd` component: this is the whole action.
     #[inline]
     fn apply_unit(&self, x: &Odd<T>) -> Odd<T> {
         let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
