@@ -41,7 +41,7 @@ mod points;
 mod poses;
 mod sample;
 
-/// The lane type of every batch kernel: algebra-core's [`Lanes`](algebra_core::scalar::Lanes)
+/// The lane type of every batch kernel: `algebra_core::scalar::Lanes`
 /// (lane width and packing live in the scalar layer), re-exported here under its first path.
 pub use algebra_core::scalar::Lanes;
 #[cfg(feature = "parallel")]
