@@ -12,7 +12,7 @@
 //! assert_eq!(rot.eval(&ratio(1, 2)).real, Quaternion::new(q(1), q(0), q(0), ratio(1, 2)));
 //! ```
 
-use super::{JuttlerError, QMotion, first_repeat};
+use super::{JuttlerError, QMotion};
 use crate::repr::dual_quaternion::{DualQuaternion, Quaternion};
 use algebra_core::linalg::solve;
 use algebra_core::{Field, Real, Ring};
@@ -23,15 +23,13 @@ fn collocation<T: Ring>(params: &[T]) -> Vec<Vec<T>> {
 }
 
 /// Solves `Σ_j b_j^m(t_i) c_j = rhs_i` for `N` components at once (exact over rationals).
-/// Equal parameters make the matrix singular ([`JuttlerError::Parameters`]); distinct ones
+/// Equal or non-finite parameters are refused ([`JuttlerError::Parameters`]); distinct ones
 /// can still make it singular in the scalar's precision ([`JuttlerError::NumericallySingular`]).
 pub(crate) fn solve_bernstein<T: Field, const N: usize>(
     params: &[T],
     rhs: &[[T; N]],
 ) -> Result<Vec<[T; N]>, JuttlerError> {
-    if let Some((j, i)) = first_repeat(params) {
-        return Err(JuttlerError::Parameters { why: format!("parameters {j} and {i} are equal") });
-    }
+    super::check_finite_distinct(params, std::iter::empty())?;
     solve_columns(&collocation(params), rhs)
         .ok_or(JuttlerError::NumericallySingular { system: "Σ_j b_j^m(t_i) C_j = R_i", unknowns: params.len() })
 }
