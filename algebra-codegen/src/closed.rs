@@ -54,6 +54,9 @@ pub enum Family {
         /// Per field of `B`: `I e_b` as `(field of B, coefficient)`.
         i_times: Vec<ITimes>,
     },
+    /// `M = 1 + B + W`, `B² = s + Q` with `Q` in `W`, `Q²` scalar, `B Q` in `B`: the invariant
+    /// decomposition of 4D and 5D algebras ([`crate::closed_inv`]).
+    Invariant(Box<crate::closed_inv::Invariant>),
 }
 
 /// One detected pair: `B::exp -> M`, `M::log -> B`.
@@ -90,6 +93,8 @@ pub fn detect(spec: &ModuleSpec, closed: &[bool]) -> Result<Vec<ClosedForm>, Cod
                 continue;
             }
             if let Some(c) = pair(spec, b, m)? {
+                out.push(c);
+            } else if let Some(c) = super::closed_inv::pair(spec, b, m)? {
                 out.push(c);
             }
         }
@@ -289,6 +294,7 @@ fn items(plan: &Plan, names: &Names, c: &ClosedForm) -> Result<TokenStream, Code
     let berr = quote!(::core::result::Result<#bt<T>, ::algebra_core::MvError>);
     // exp: the factors, then every field of M
     let (factors, i_index) = match &c.family {
+        Family::Invariant(inv) => return super::closed_inv::items(plan, names, c, inv),
         Family::Dual { i, .. } => {
             let theta2 = ctx.square_form(bi, -1)?;
             (
@@ -358,7 +364,7 @@ fn items(plan: &Plan, names: &Names, c: &ClosedForm) -> Result<TokenStream, Code
             let hk = quote!(hk);
             let inner = match &c.family {
                 Family::Dual { i_times, .. } => Some((&hk, -1, i_times.as_slice())),
-                Family::Scalar(_) => None,
+                Family::Scalar(_) | Family::Invariant(_) => None,
             };
             ctx.combine(bi, mi, k, Some(&quote!(sinc)), inner)?
         };
@@ -366,7 +372,7 @@ fn items(plan: &Plan, names: &Names, c: &ClosedForm) -> Result<TokenStream, Code
     }
     // log_unit: the factors from (sin, cos), then every field of B
     let log_body = match &c.family {
-        Family::Dual { .. } | Family::Scalar(Sign::Elliptic) => {
+        Family::Dual { .. } | Family::Scalar(Sign::Elliptic) | Family::Invariant(_) => {
             let sin2 = ctx.square_form(mi, -1)?;
             quote! {
                 let sin = (#sin2).sqrt();

@@ -31,6 +31,7 @@
 //! ```
 
 pub mod closed;
+pub mod closed_inv;
 pub mod constraint;
 pub mod emit;
 pub mod fallback;

@@ -49,13 +49,63 @@ fn dual_number_squares() {
     }
 }
 
+/// STA, R^4, R^{3,1}, R^{2,2} and R^{4,1} (diagonal and null basis): `B² = s + Q`, `Q²`
+/// scalar, `B Q` in `B` — the invariant decomposition, with the expected `Q` and `Q²`.
+#[test]
+fn invariant_decomposition() {
+    let inv = |alg, basis, types| {
+        let found = families(alg, basis, types);
+        assert_eq!(found.len(), 1, "{types}: {found:?}");
+        let Family::Invariant(inv) = found.into_iter().next().unwrap().2 else { panic!("{types}") };
+        inv
+    };
+    for (p, neg) in [(1, 3), (4, 0), (3, 1), (2, 2)] {
+        let i = inv(diagonal(p, neg, 0), Basis::Blade, "B=grade2;M=even");
+        assert_eq!(i.quad, [0b1111]);
+        // Q = 2 (b12 b34 - b13 b24 + b14 b23) e1234 (fields in order e12 e13 e23 e14 e24 e34)
+        let q: Vec<(usize, usize, String)> = i.q[0].iter().map(|(a, b, c)| (*a, *b, c.to_string())).collect();
+        let two = |a, b, s: &str| (a, b, s.to_string());
+        assert_eq!(q, [two(0, 5, "2"), two(1, 4, "-2"), two(2, 3, "2")], "{p},{neg}");
+        // Q² = (e1234)² q² = (-1)^neg q²
+        let sign = if neg % 2 == 0 { "1" } else { "-1" };
+        assert_eq!(i.q4.iter().map(|(_, _, c)| c.to_string()).collect::<Vec<_>>(), [sign]);
+    }
+    let cga = inv(Algebra::builtin("cga").unwrap(), Basis::Blade, "B=grade2;M=even");
+    assert_eq!(cga.quad, [0b01111, 0b10111, 0b11011, 0b11101, 0b11110]);
+    // Q² = v² I² for Q = v I: e1234² = +1 (e5 missing), the others contain e5² = -1
+    let diag: Vec<String> = cga.q4.iter().map(|(a, b, c)| format!("{a}{b}:{c}")).collect();
+    assert_eq!(diag, ["00:1", "11:-1", "22:-1", "33:-1", "44:-1"]);
+    let null = Algebra::new(
+        "null",
+        Metric::from_strs(
+            &["e1", "e2", "e3", "eo", "einf"],
+            &[
+                &["1", "0", "0", "0", "0"],
+                &["0", "1", "0", "0", "0"],
+                &["0", "0", "1", "0", "0"],
+                &["0", "0", "0", "0", "-1"],
+                &["0", "0", "0", "-1", "0"],
+            ],
+        )
+        .unwrap(),
+    );
+    assert_eq!(inv(null, Basis::Blade, "B=grade2;M=even").quad.len(), 5);
+    // the earlier families keep priority where they apply
+    for name in ["pga3", "g123inf"] {
+        let found = families(Algebra::builtin(name).unwrap(), Basis::Blade, "B=grade2;M=even");
+        assert!(matches!(found[0].2, Family::Dual { .. }), "{name}");
+    }
+}
+
 #[test]
 fn outside_the_families_nothing() {
     let f = |alg, types| families(alg, Basis::Blade, types);
-    // I² = -1 (STA), I² = +1 (4D Euclidean), several grade-4 elements (R^{4,1})
-    assert!(f(diagonal(1, 3, 0), "B=grade2;M=even").is_empty());
-    assert!(f(diagonal(4, 0, 0), "B=grade2;M=even").is_empty());
-    assert!(f(Algebra::builtin("cga").unwrap(), "B=grade2;M=even").is_empty());
+    // a bivector type that does not hold every bivector of the even type, an even type
+    // without its 4-vectors (B² leaves it), and a non-bivector "bivector" type
+    assert!(f(diagonal(4, 0, 0), "B=e12,e34;M=even").is_empty());
+    // (that B pairs with the automatic `Even` instead)
+    assert!(f(diagonal(4, 0, 0), "B=grade2;M=1,e12,e13,e14,e23,e24,e34").iter().all(|(_, m, _)| *m != 1));
+    assert!(f(diagonal(4, 0, 0), "B=e1234;M=even").is_empty());
     // an even type alone has no pair; a bivector type alone pairs with the automatic `Even`
     assert!(f(diagonal(3, 0, 0), "M=even").is_empty());
     let p = plan(diagonal(3, 0, 0), Basis::Blade, "B=grade2;V=grade1");

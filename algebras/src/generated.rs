@@ -74,6 +74,9 @@ algebra! {
     pub mod cga {
         derive serde;
         metric builtin "cga";
+        // closed_form_cga.rs keeps its hand-written exp/log (Result-returning, the displacement
+        // subalgebra through g123inf); the generated invariant-decomposition forms would collide
+        closed_forms off;
         types {
             /// Vectors (points, spheres, planes).
             Vector = grade 1;

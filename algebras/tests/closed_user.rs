@@ -2,7 +2,8 @@
 //! the tables, checked against the runtime series (`Multivector::exp`, an independent
 //! algorithm) in every family — scalar squares (2D PGA at f32 and f64, 3D rotors, a boost,
 //! a mixed-signature algebra) and dual-number squares (3D PGA in a user orientation, a copy of
-//! `G_{123inf}`) — plus the edge cases, and a probe that STA gets no closed form.
+//! `G_{123inf}`) — plus the edge cases. The 4D and 5D algebras (STA, CGA) are in
+//! `tests/closed_inv.rs`.
 
 use algebra_core::Multivector as Mv;
 use algebra_macros::algebra;
@@ -66,18 +67,6 @@ algebra! {
         types {
             Bivector = grade 2;
             Spinor = even;
-        }
-    }
-}
-
-algebra! {
-    /// Spacetime algebra R^{1,3}: B² = a + cI with I² = -1, outside the detected families.
-    pub mod sta {
-        generators { e0, e1, e2, e3 }
-        metric { (e0, e0) = 1, (e1, e1) = -1, (e2, e2) = -1, (e3, e3) = -1 }
-        types {
-            Bivector = grade 2;
-            Rotor = even;
         }
     }
 }
@@ -229,29 +218,4 @@ fn pga2_at_f32() {
     assert!(back.iter().zip(b32.iter()).all(|(a, b)| (a - b).abs() < 1e-5));
     let r = m32.sqrt().unwrap();
     assert!((r * r).iter().zip(m32.iter()).all(|(a, b)| (a - b).abs() < 1e-6));
-}
-
-/// STA is outside the families: no inherent `exp`/`log`, so these probe traits' methods are
-/// the ones called (an inherent method would win and this would not compile). Its users go
-/// through the runtime series.
-#[test]
-fn sta_has_no_closed_form() {
-    trait NoExp {
-        fn exp(&self) -> &'static str {
-            "none"
-        }
-    }
-    trait NoLog {
-        fn log(&self) -> &'static str {
-            "none"
-        }
-    }
-    impl<T> NoExp for sta::Bivector<T> {}
-    impl<T> NoLog for sta::Rotor<T> {}
-    let b = sta::Bivector::<f64>::e01() * 0.5;
-    assert_eq!(b.exp(), "none");
-    assert_eq!(sta::Rotor::<f64>::one().log(), "none");
-    // the fallback: the runtime series
-    let m = sta::Rotor::project(&b.to_multivector().exp().unwrap());
-    assert!((m.scalar - 0.5f64.cosh()).abs() < 1e-15 && (m.e01 - 0.5f64.sinh()).abs() < 1e-15);
 }

@@ -1,0 +1,274 @@
+//! The third closed-form family: the *invariant decomposition* (Roelfs & De Keninck, "Graded
+//! symmetry groups: plane and simple", 2021) for 4D and 5D algebras, detected from the exact
+//! tables (never from names). A declared bivector type `B` and even type `M = 1 + B + W`
+//! qualify when, identically in `B`'s coefficients,
+//!
+//! - `B² = s + Q` lies in the scalar plus the span of `W` (`Q` the "4-vector part");
+//! - `Q² = q4` is a scalar, for every `Q` in `W`'s span;
+//! - `B Q` lies in `B` (checked as a cubic polynomial: its other components vanish).
+//!
+//! Then `B = b1 + b2` with commuting `b_i`, `b_i² = λ_i` the roots of `λ² - s λ + q4/4`, and
+//! `exp(B) = C1 C2 + B (D1 - D2 Q/2) + S1 S2 Q/2`
+//! (`algebra_core::closed_form::invariant_exp_factors`). Complex roots (signature `(2, 2)`)
+//! are detected at run time and go to the runtime series. This covers CGA `R^{4,1}` in the
+//! diagonal and a null basis, spacetime algebra, `R^{3,1}` and Euclidean `R^4`. The two earlier
+//! families ([`crate::closed`]) keep priority.
+
+use super::closed::{ClosedForm, Family};
+use super::emit::Names;
+use super::plan::{Plan, to_ratio};
+use super::sums::sum;
+use super::{CodegenError, ModuleSpec};
+use algebra_core::rational::Q;
+use algebra_core::tables::{Product, Unary};
+use num_traits::Zero;
+use proc_macro2::TokenStream;
+use quote::{format_ident, quote};
+use std::collections::BTreeMap;
+
+/// A quadratic form: `(i, j, coefficient)` with `i <= j`, meaning `coefficient · x_i x_j`.
+pub type Quadratic = Vec<(usize, usize, Q)>;
+
+/// The tables of one detected invariant-decomposition pair, in canonical coefficients.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Invariant {
+    /// The masks of `W`: `M`'s elements other than `1` and `B`'s.
+    pub quad: Vec<u32>,
+    /// `s = <B²>_0` over `B`'s coefficients.
+    pub s: Quadratic,
+    /// Per element of `W`: its coefficient in `Q = <B²>_W`, over `B`'s coefficients.
+    pub q: Vec<Quadratic>,
+    /// `Q² = q4` over `W`'s coefficients.
+    pub q4: Quadratic,
+    /// Per element of `B`: its coefficient in `B Q`, as `(field of B, element of W, c)`.
+    pub bq: Vec<Vec<(usize, usize, Q)>>,
+}
+
+fn int(n: i64) -> Q {
+    Q::from_integer(n.into())
+}
+
+/// The symmetric square `x y + y x` (or `x x`) of two basis elements, as `(mask, coefficient)`.
+fn sym(gp: &algebra_core::tables::ProductTable, x: u32, y: u32) -> BTreeMap<u32, Q> {
+    let mut out = BTreeMap::new();
+    let mut add = |terms: &[(u32, Q)]| {
+        for (k, c) in terms {
+            *out.entry(*k).or_insert_with(Q::zero) += c.clone();
+        }
+    };
+    add(gp.get(x, y).expect("masks of the spec's algebra"));
+    if x != y {
+        add(gp.get(y, x).expect("masks of the spec's algebra"));
+    }
+    out.retain(|_, c| !c.is_zero());
+    out
+}
+
+/// The invariant-decomposition pair `(B, M)`, if the tables qualify (see the module docs).
+///
+/// ```
+/// use algebra_core::{Algebra, Basis};
+/// use algebra_codegen::{ModuleSpec, closed::{Family, detect}, plan::Plan};
+/// let alg = Algebra::builtin("cga").unwrap();
+/// let types = ModuleSpec::parse_types("Bivector=grade2;Motor=even", &alg).unwrap();
+/// let plan = Plan::new(ModuleSpec::new("c", alg.metric().clone(), Basis::Blade, types).unwrap()).unwrap();
+/// let found = detect(&plan.spec, &plan.closed).unwrap();
+/// let Family::Invariant(inv) = &found[0].family else { panic!() };
+/// assert_eq!(inv.quad.len(), 5); // the five 4-vectors of R^{4,1}
+/// ```
+pub fn pair(spec: &ModuleSpec, b: usize, m: usize) -> Result<Option<ClosedForm>, CodegenError> {
+    let (bm, mm) = (&spec.types[b].elements, &spec.types[m].elements);
+    if b == m || bm.is_empty() || !mm.contains(&0) || !bm.iter().all(|x| x.count_ones() == 2 && mm.contains(x)) {
+        return Ok(None);
+    }
+    let quad: Vec<u32> = mm.iter().copied().filter(|x| *x != 0 && !bm.contains(x)).collect();
+    if quad.is_empty() {
+        return Ok(None);
+    }
+    let tables = spec.algebra.tables();
+    let (gp, rev) = (tables.product(spec.basis, Product::Geometric), tables.unary(spec.basis, Unary::Reverse));
+    let reversed = |x: u32, s: i64| rev.image(x).is_ok_and(|im| im.len() == 1 && im[0].0 == x && im[0].1 == int(s));
+    if !bm.iter().all(|&x| reversed(x, -1)) || !quad.iter().all(|&x| reversed(x, 1)) {
+        return Ok(None);
+    }
+    // B² = s + Q with Q in span(W)
+    let (mut s, mut q) = (Vec::new(), vec![Vec::new(); quad.len()]);
+    for (i, &x) in bm.iter().enumerate() {
+        for (j, &y) in bm.iter().enumerate().skip(i) {
+            for (k, c) in sym(gp, x, y) {
+                match quad.iter().position(|w| *w == k) {
+                    _ if k == 0 => s.push((i, j, c)),
+                    Some(a) => q[a].push((i, j, c)),
+                    None => return Ok(None),
+                }
+            }
+        }
+    }
+    // Q² scalar
+    let mut q4 = Vec::new();
+    for (a, &x) in quad.iter().enumerate() {
+        for (bb, &y) in quad.iter().enumerate().skip(a) {
+            for (k, c) in sym(gp, x, y) {
+                if k != 0 {
+                    return Ok(None);
+                }
+                q4.push((a, bb, c));
+            }
+        }
+    }
+    // B Q in B, identically: the cubic b_k Q_a(b) (e_k e_a) has no other component
+    let mut bq = vec![Vec::new(); bm.len()];
+    let mut outside: BTreeMap<(u32, [usize; 3]), Q> = BTreeMap::new();
+    for (k, &x) in bm.iter().enumerate() {
+        for (a, &w) in quad.iter().enumerate() {
+            for (mask, c) in gp.get(x, w).expect("masks of the spec's algebra") {
+                if c.is_zero() {
+                    continue;
+                }
+                match bm.iter().position(|y| y == mask) {
+                    Some(pos) => bq[pos].push((k, a, c.clone())),
+                    None => {
+                        for (i, j, d) in &q[a] {
+                            let mut mono = [k, *i, *j];
+                            mono.sort_unstable();
+                            *outside.entry((*mask, mono)).or_insert_with(Q::zero) += c * d;
+                        }
+                    }
+                }
+            }
+        }
+    }
+    if outside.values().any(|c| !c.is_zero()) {
+        return Ok(None);
+    }
+    let square = (0..bm.len())
+        .map(|i| s.iter().filter(|(a, b, _)| *a == i && *b == i).map(|(_, _, c)| c.clone()).sum())
+        .collect();
+    let family = Family::Invariant(Box::new(Invariant { quad, s, q, q4, bq }));
+    Ok(Some(ClosedForm { bivector: b, even: m, square, family }))
+}
+
+/// `Σ c x_i x_j` over local variables named `prefix{i}`.
+fn form(f: &Quadratic, prefix: &str) -> Result<TokenStream, CodegenError> {
+    let mut terms = Vec::new();
+    for (i, j, c) in f {
+        let (x, y) = (format_ident!("{prefix}{i}"), format_ident!("{prefix}{j}"));
+        terms.push((to_ratio(c)?, quote!((#x.mul_ref(&#y))), true));
+    }
+    Ok(sum(terms))
+}
+
+/// `let x{k} = <canonical coefficient>` for the fields of `owner` at `idx` (orientation signs
+/// folded in), one `let` per element.
+fn load(names: &Names, owner: usize, idx: &[usize], prefix: &str) -> TokenStream {
+    let lets = idx.iter().enumerate().map(|(k, &i)| {
+        let (v, f) = (format_ident!("{prefix}{k}"), &names.fields[owner][i]);
+        if names.signs[owner][i] < 0 { quote!(let #v = -self.#f.clone();) } else { quote!(let #v = self.#f.clone();) }
+    });
+    quote!(#(#lets)*)
+}
+
+/// The invariants of a bivector held in locals `prefix{k}`: `s`, `Q` in `w{a}`, `Q²` in `qq`,
+/// `(B Q)_k` in `bq{k}`.
+fn invariants(inv: &Invariant, nb: usize, prefix: &str) -> Result<TokenStream, CodegenError> {
+    let s = form(&inv.s, prefix)?;
+    let qs = inv
+        .q
+        .iter()
+        .enumerate()
+        .map(|(a, f)| {
+            let v = format_ident!("w{a}");
+            let e = form(f, prefix)?;
+            Ok(quote!(let #v = #e;))
+        })
+        .collect::<Result<Vec<_>, CodegenError>>()?;
+    let q4 = form(&inv.q4, "w")?;
+    let bqs = (0..nb)
+        .map(|k| {
+            let v = format_ident!("bq{k}");
+            let mut terms = Vec::new();
+            for (i, a, c) in &inv.bq[k] {
+                let (x, y) = (format_ident!("{prefix}{i}"), format_ident!("w{a}"));
+                terms.push((to_ratio(c)?, quote!((#x.mul_ref(&#y))), true));
+            }
+            let e = sum(terms);
+            Ok(quote!(let #v = #e;))
+        })
+        .collect::<Result<Vec<_>, CodegenError>>()?;
+    Ok(quote! {
+        let s = #s;
+        #(#qs)*
+        let qq = #q4;
+        #(#bqs)*
+    })
+}
+
+/// The methods of one invariant-decomposition pair.
+pub(super) fn items(plan: &Plan, names: &Names, c: &ClosedForm, inv: &Invariant) -> Result<TokenStream, CodegenError> {
+    let (bi, mi) = (c.bivector, c.even);
+    let (bt, mt) = (&names.types[bi], &names.types[mi]);
+    let (bm, mm) = (&plan.spec.types[bi].elements, &plan.spec.types[mi].elements);
+    let nb = bm.len();
+    let b_in_b: Vec<usize> = (0..nb).collect();
+    let b_in_m: Vec<usize> = bm.iter().map(|x| mm.iter().position(|y| y == x).expect("B in M")).collect();
+    let w_in_m: Vec<usize> = inv.quad.iter().map(|x| mm.iter().position(|y| y == x).expect("W in M")).collect();
+    let scalar_idx = mm.iter().position(|x| *x == 0).expect("1 in M");
+    let cf = quote!(::algebra_core::closed_form);
+    let load_b = load(names, bi, &b_in_b, "b");
+    let inv_b = invariants(inv, nb, "b")?;
+    // exp: every field of M
+    let out = |idx: usize, v: TokenStream| {
+        let f = &names.fields[mi][idx];
+        if names.signs[mi][idx] < 0 { quote!(#f: -(#v)) } else { quote!(#f: #v) }
+    };
+    let mut exp_fields = vec![TokenStream::new(); mm.len()];
+    exp_fields[scalar_idx] = out(scalar_idx, quote!(cc));
+    for (k, &idx) in b_in_m.iter().enumerate() {
+        let (b, bq) = (format_ident!("b{k}"), format_ident!("bq{k}"));
+        exp_fields[idx] = out(idx, quote!(d1.mul_ref(&#b) - hd2.mul_ref(&#bq)));
+    }
+    for (a, &idx) in w_in_m.iter().enumerate() {
+        let w = format_ident!("w{a}");
+        exp_fields[idx] = out(idx, quote!(hss.mul_ref(&#w)));
+    }
+    let n_m = mm.len();
+    let bdoc = format!(
+        " The exponential in closed form by the invariant decomposition \
+         (`algebra_core::closed_form::invariant_exp_factors`): a unit `{mt}`. When the two \
+         invariants `λ1, λ2` are complex (possible only in signatures such as `(2, 2)`) the \
+         runtime series (`to_multivector().exp()`) is used instead. An unchecked kernel: a NaN \
+         or infinite coefficient gives NaN coefficients (use `try_exp` for input of unknown origin)."
+    );
+    Ok(quote! {
+        impl<T: ::algebra_core::Real> #bt<T> {
+            #[doc = #bdoc]
+            pub fn exp(&self) -> #mt<T> {
+                #load_b
+                #inv_b
+                match #cf::invariant_exp_factors(&s, &qq) {
+                    ::core::option::Option::Some((cc, d1, d2, ss)) => {
+                        let half = T::from_ratio(1, 2);
+                        let (hd2, hss) = (d2 * half.clone(), ss * half);
+                        #mt { #(#exp_fields),* }
+                    }
+                    ::core::option::Option::None => match self.to_multivector().exp() {
+                        ::core::result::Result::Ok(m) => #mt::project(&m),
+                        ::core::result::Result::Err(_) => #mt::from_array([(); #n_m].map(|_| T::from_f64(f64::NAN))),
+                    },
+                }
+            }
+
+            /// [`Self::exp`] after checking that every coefficient is finite:
+            /// `MvError::Undefined` ("coefficients are not finite") otherwise, and "the result is
+            /// not finite" when a finite bivector is too large for the scalar.
+            pub fn try_exp(&self) -> ::core::result::Result<#mt<T>, ::algebra_core::MvError> {
+                #cf::check_finite("exp", self, self.iter())?;
+                let out = self.exp();
+                #cf::check_finite("exp", self, out.iter()).map_err(|_| {
+                    #cf::undefined("exp", self.to_string(), "the result is not finite (the bivector is too large for this scalar)")
+                })?;
+                Ok(out)
+            }
+        }
+    })
+}
