@@ -239,7 +239,88 @@ pub(super) fn items(plan: &Plan, names: &Names, c: &ClosedForm, inv: &Invariant)
          runtime series (`to_multivector().exp()`) is used instead. An unchecked kernel: a NaN \
          or infinite coefficient gives NaN coefficients (use `try_exp` for input of unknown origin)."
     );
+    // log_unit: c, B' of self, then every field of B
+    let load_c = load(names, mi, &[scalar_idx], "c");
+    let load_bm = load(names, mi, &b_in_m, "b");
+    let log_fields: Vec<TokenStream> = (0..nb)
+        .map(|k| {
+            let (f, b, bq) = (&names.fields[bi][k], format_ident!("b{k}"), format_ident!("bq{k}"));
+            let v = quote!(f.mul_ref(&#b) - g.mul_ref(&#bq));
+            if names.signs[bi][k] < 0 { quote!(#f: -(#v)) } else { quote!(#f: #v) }
+        })
+        .collect();
+    let berr = quote!(::core::result::Result<#bt<T>, ::algebra_core::MvError>);
+    let err = quote!(::core::result::Result<Self, ::algebra_core::MvError>);
+    let m_items = quote! {
+        impl<T: ::algebra_core::Real> #mt<T> {
+            /// `self / sqrt(self rev(self))` when `self rev(self)` is a positive scalar (up to
+            /// rounding: every other part within `256 ε Σ coefficient²`), so the result is unit.
+            /// `self rev(self)` is computed by the runtime product. Fails when the norm is not
+            /// positive, when `self rev(self)` has a 4-vector part (not a multiple of a versor),
+            /// or a coefficient is not finite.
+            pub fn normalize(&self) -> #err {
+                #cf::check_finite("normalize", self, self.iter())?;
+                let m = self.to_multivector();
+                let n = &m * &m.reverse();
+                let alpha = n.scalar_part();
+                if alpha.to_f64().is_nan() || alpha.to_f64() <= 0.0 {
+                    return Err(#cf::undefined("normalize", self.to_string(), "the norm self rev(self) is not positive"));
+                }
+                let scale: f64 = self.iter().map(|x| x.to_f64() * x.to_f64()).sum();
+                let rest = n.coeffs().iter().skip(1).map(|x| x.to_f64().abs()).fold(0.0, f64::max);
+                if rest > 256.0 * T::relative_epsilon() * scale {
+                    return Err(#cf::undefined("normalize", self.to_string(), "self rev(self) is not a scalar (not a multiple of a versor)"));
+                }
+                Ok(self.scale(&(T::one() / alpha.sqrt())))
+            }
+
+            /// The logarithm of `normalize(self)`: the bivector `B` with
+            /// `exp(B) = normalize(self)`, in the branch of [`Self::log_unit`]. Fails when
+            /// `normalize` or `log_unit` does.
+            pub fn log(&self) -> #berr {
+                self.normalize()?.log_unit()
+            }
+
+            /// The logarithm of an element that is already unit (`self rev(self) = 1`), in
+            /// closed form by the invariant decomposition
+            /// (`algebra_core::closed_form::invariant_log_factors`). The branch: boosts
+            /// (hyperbolic planes) keep a positive `cosh`; of two rotation planes the returned
+            /// angles satisfy `θ1 + θ2 <= π`, each `θ_i ∈ [0, π)` (the smaller of the two
+            /// logarithms). Where the closed form is inaccurate (complex invariants, nearly
+            /// isoclinic rotations, a plane at a quarter turn) the runtime series
+            /// (`to_multivector().log()`) is used. Fails for non-finite input, a full turn in
+            /// one plane, two rotation angles summing to `π`, and elements with no real
+            /// logarithm. For an element that is not unit the result is not a logarithm of
+            /// anything.
+            pub fn log_unit(&self) -> #berr {
+                #cf::check_finite("log", self, self.iter())?;
+                #load_c
+                #load_bm
+                #inv_b
+                match #cf::invariant_log_factors(&c0, &s, &qq) {
+                    ::core::result::Result::Err(why) => Err(#cf::undefined("log", self.to_string(), why)),
+                    ::core::result::Result::Ok(::core::option::Option::Some((f, g))) => Ok(#bt { #(#log_fields),* }),
+                    ::core::result::Result::Ok(::core::option::Option::None) => {
+                        Ok(#bt::project(&self.to_multivector().log()?))
+                    }
+                }
+            }
+
+            /// The square root of `normalize(self)`: `exp(log(self)/2)`.
+            pub fn sqrt(&self) -> #err {
+                Ok((self.log()? * T::from_ratio(1, 2)).exp())
+            }
+
+            /// `normalize(self)^t = exp(t log(self))`.
+            pub fn pow(&self, t: &T) -> #err {
+                #cf::check_finite("pow", t, ::core::iter::once(t))?;
+                Ok((self.log()? * t.clone()).exp())
+            }
+        }
+    };
     Ok(quote! {
+        #m_items
+
         impl<T: ::algebra_core::Real> #bt<T> {
             #[doc = #bdoc]
             pub fn exp(&self) -> #mt<T> {

@@ -71,6 +71,16 @@ algebra! {
     }
 }
 
+/// False for a unit `R = c + B' + W` with `c < 0` whose invariants `μ1, μ2` of `B'` are
+/// close, `(μ1 - μ2)² < 10⁻⁴ s²`: near the cut between two logarithms of equal size.
+fn far_from_the_cut(r: &Mv<f64>) -> bool {
+    let b = r.grade(2);
+    let sq = &b * &b;
+    let (s, q) = (sq.scalar_part(), sq.grade(4));
+    let q4 = (&q * &q).scalar_part();
+    r.scalar_part() >= 0.0 || s * s - q4 >= 1e-4 * s * s
+}
+
 fn close(what: &str, a: &Mv<f64>, b: &Mv<f64>, tol: f64) {
     let err = (a - b).magnitude();
     assert!(err <= tol * b.magnitude().max(1.0), "{what}: {a} vs {b} (error {err:e})");
@@ -95,12 +105,47 @@ macro_rules! exp_tests {
             }
 
             proptest! {
+                #![proptest_config(ProptestConfig::with_cases(96))]
+
                 #[test]
                 fn exp_matches_the_series(c in coeffs()) {
                     let b = biv(c);
                     let reference = b.to_multivector().exp().expect("runtime exp");
                     close("exp", &b.exp().to_multivector(), &reference, 1e-12);
                     prop_assert_eq!(b.try_exp().unwrap(), b.exp());
+                }
+
+                #[test]
+                fn log_inverts_exp_and_matches_the_series(c in prop::collection::vec(-0.5..0.5f64, $len)) {
+                    let b = biv(c);
+                    let m = b.exp();
+                    close("log(exp(B))", &m.log().unwrap().to_multivector(), &b.to_multivector(), 1e-10);
+                    let series = m.to_multivector().log().expect("runtime log");
+                    close("log_unit", &m.log_unit().unwrap().to_multivector(), &series, 1e-10);
+                }
+
+                #[test]
+                fn exp_log_of_products(c in coeffs(), d in coeffs()) {
+                    let r = biv(c).exp() * biv(d).exp();
+                    // away from the branch cut θ1 + θ2 = π (scalar part < 0, equal invariants),
+                    // where the logarithm itself is ill-conditioned
+                    prop_assume!(far_from_the_cut(&r.to_multivector()));
+                    match r.log_unit() {
+                        Ok(b) => close("exp(log(R))", &b.exp().to_multivector(), &r.to_multivector(), 1e-10),
+                        // the exponential of a non-compact group is not onto: -exp(boost)
+                        Err(e) => prop_assert!(e.to_string().contains("no real logarithm"), "{}", e),
+                    }
+                }
+
+                #[test]
+                fn sqrt_pow_normalize(c in prop::collection::vec(-0.5..0.5f64, $len), t in -2.0..2.0f64, s in 0.1..10.0f64) {
+                    let b = biv(c);
+                    let m = b.exp();
+                    let r = m.sqrt().unwrap();
+                    close("sqrt²", &(r * r).to_multivector(), &m.to_multivector(), 1e-10);
+                    let reference = (b * t).to_multivector().exp().expect("runtime exp");
+                    close("pow", &m.pow(&t).unwrap().to_multivector(), &reference, 1e-10);
+                    close("normalize", &m.scale(&s).normalize().unwrap().to_multivector(), &m.to_multivector(), 1e-12);
                 }
             }
         }
@@ -209,4 +254,54 @@ fn non_finite_and_f32() {
     let c = [0.3, -1.1, 0.4, 2.0, -0.5, 0.25, 0.7, -0.2, 0.9, 0.1];
     let (b32, b64) = (cga41::Bivector::<f32>::from_array(c.map(|x| x as f32)), cga41::Bivector::<f64>::from_array(c));
     assert!(b32.exp().iter().zip(b64.exp().iter()).all(|(a, b)| (f64::from(*a) - b).abs() < 1e-5));
+}
+
+/// The logarithm's branch and refusals: translations invert exactly, isoclinic rotations and
+/// θ1 + θ2 < π invert, θ1 + θ2 > π gives the smaller logarithm `(π - θ1, π - θ2)`, a full turn
+/// and θ1 + θ2 = π are refused, and non-finite input is an error. The spacetime cases:
+/// a loxodromic rotor, and `-exp(boost)` (a full turn in the dual plane: refused).
+#[test]
+fn log_branches_and_refusals() {
+    use r4::{Bivector as B, Rotor as R};
+    let t = (cga41::Bivector::<f64>::e14() + cga41::Bivector::e15()) * 0.7 - cga41::Bivector::e23() * 0.0;
+    assert_eq!(t.exp().log().unwrap(), t);
+    for (a, b) in [(0.5, 0.5), (1.5, 1.5), (2.0, 0.5), (0.3, 2.8), (1e-9, 2.0)] {
+        let x = B::<f64>::e12() * a + B::e34() * b;
+        close("log(exp)", &x.exp().log_unit().unwrap().to_multivector(), &x.to_multivector(), 1e-12);
+    }
+    // θ1 + θ2 = 4 > π: the other logarithm, angles π - 2.5 and π - 1.5 with reversed planes
+    let x = B::<f64>::e12() * 2.5 + B::e34() * 1.5;
+    let l = x.exp().log_unit().unwrap();
+    let pi = std::f64::consts::PI;
+    assert!((l.e12 + (pi - 2.5)).abs() < 1e-12 && (l.e34 + (pi - 1.5)).abs() < 1e-12, "{l}");
+    close("exp(log)", &l.exp().to_multivector(), &x.exp().to_multivector(), 1e-14);
+    // refusals
+    assert!((-R::<f64>::one()).log().unwrap_err().to_string().contains("full turn"));
+    let cut = (B::<f64>::e12() * 1.0 + B::e34() * (pi - 1.0)).exp();
+    assert!(
+        cut.log_unit().is_err() || {
+            let l = cut.log_unit().unwrap();
+            (&l.exp().to_multivector() - &cut.to_multivector()).magnitude() < 1e-9
+        }
+    );
+    let mut bad = R::<f64>::one();
+    bad.e1234 = f64::NAN;
+    for e in [bad.log().err(), bad.log_unit().err(), bad.sqrt().err(), bad.normalize().err(), bad.pow(&0.5).err()] {
+        assert!(e.expect("an error").to_string().contains("not finite"));
+    }
+    assert!(R::<f64>::one().pow(&f64::NAN).is_err());
+    assert!(R::<f64>::zero().normalize().is_err());
+    // a rotor times a non-versor even element: self rev(self) has a 4-vector part
+    let mut not_versor = R::<f64>::one();
+    not_versor.e1234 = 0.5;
+    assert!(not_versor.normalize().unwrap_err().to_string().contains("not a scalar"));
+    // spacetime: a loxodromic rotor and its logarithm
+    let lox = sta::Bivector::<f64>::e01() * 1.3 + sta::Bivector::e23() * 0.7;
+    close("sta log", &lox.exp().log().unwrap().to_multivector(), &lox.to_multivector(), 1e-13);
+    let minus_boost = -(sta::Bivector::<f64>::e01() * 0.5).exp();
+    // -exp(0.5 e01) = exp(0.5 e01 ± π e23): two logarithms of equal size, refused
+    assert!(minus_boost.log_unit().unwrap_err().to_string().contains("full turn"));
+    let rotated = (sta::Bivector::<f64>::e01() * 0.5 + sta::Bivector::e23() * 3.0).exp();
+    let l = rotated.log_unit().unwrap();
+    assert!((l.e01 - 0.5).abs() < 1e-13 && (l.e23 - 3.0).abs() < 1e-13, "{l}");
 }
