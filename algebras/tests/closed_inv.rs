@@ -305,3 +305,51 @@ fn log_branches_and_refusals() {
     let l = rotated.log_unit().unwrap();
     assert!((l.e01 - 0.5).abs() < 1e-13 && (l.e23 - 3.0).abs() < 1e-13, "{l}");
 }
+
+/// The closed-form `exp` against mpmath at 360 digits (`tests/fixtures/mpmath/general.json`,
+/// written by `tests/fixtures/mpmath/make_fixtures.py` with `expm` of the left-multiplication
+/// matrix): the non-simple bivectors of `R^4` (`g4`) and `R^{4,1}` (`cga`, diagonal) there.
+#[test]
+fn exp_matches_mpmath_fixtures() {
+    let text = include_str!("../../tests/fixtures/mpmath/general.json");
+    let json: serde_json::Value = serde_json::from_str(text).unwrap();
+    let num = |s: &str| -> f64 {
+        match s.split_once('/') {
+            Some((p, q)) => p.parse::<f64>().unwrap() / q.parse::<f64>().unwrap(),
+            None => s.parse().unwrap(),
+        }
+    };
+    let mut seen = 0;
+    for case in json["cases"].as_array().unwrap() {
+        if case["op"] != "exp" {
+            continue;
+        }
+        let input: Vec<f64> = case["input"].as_array().unwrap().iter().map(|v| num(v.as_str().unwrap())).collect();
+        let output: Vec<f64> = case["output"].as_array().unwrap().iter().map(|v| num(v.as_str().unwrap())).collect();
+        let got: Vec<(u32, f64)> = match case["algebra"].as_str().unwrap() {
+            "cga" => {
+                let b = cga41::Bivector::from_array(cga41::Bivector::<f64>::MASKS.map(|m| input[m as usize]));
+                cga41::Motor::<f64>::MASKS.iter().copied().zip(b.exp().iter().copied()).collect()
+            }
+            "g4" => {
+                let b = r4::Bivector::from_array(r4::Bivector::<f64>::MASKS.map(|m| input[m as usize]));
+                r4::Rotor::<f64>::MASKS.iter().copied().zip(b.exp().iter().copied()).collect()
+            }
+            other => panic!("unknown algebra {other}"),
+        };
+        let scale = output.iter().fold(1.0f64, |a, x| a.max(x.abs()));
+        for (mask, x) in &got {
+            assert!(
+                (x - output[*mask as usize]).abs() < 1e-13 * scale,
+                "{}: blade {mask}: {x} vs {}",
+                case["algebra"],
+                output[*mask as usize]
+            );
+        }
+        // every coefficient outside the even type is zero in the reference
+        let inside: Vec<u32> = got.iter().map(|(m, _)| *m).collect();
+        assert!(output.iter().enumerate().all(|(m, x)| inside.contains(&(m as u32)) || x.abs() < 1e-30));
+        seen += 1;
+    }
+    assert_eq!(seen, 5);
+}
