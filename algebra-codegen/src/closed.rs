@@ -440,6 +440,7 @@ fn items(plan: &Plan, names: &Names, c: &ClosedForm) -> Result<TokenStream, Code
     let bdoc = format!(
         " The exponential in closed form (`algebra_core::closed_form`): a unit `{mt}`. An unchecked kernel: a NaN or infinite coefficient gives NaN coefficients (use `try_exp` for input of unknown origin)."
     );
+    let (try_exp, sqrt_pow) = (try_exp_item(mt), sqrt_pow_items());
     Ok(quote! {
         impl<T: ::algebra_core::Real> #bt<T> {
             #[doc = #bdoc]
@@ -449,17 +450,7 @@ fn items(plan: &Plan, names: &Names, c: &ClosedForm) -> Result<TokenStream, Code
                 #mt { #(#exp_fields),* }
             }
 
-            /// [`Self::exp`] after checking that every coefficient is finite:
-            /// `MvError::Undefined` ("coefficients are not finite") otherwise, and "the result is
-            /// not finite" when a finite bivector is too large for the scalar.
-            pub fn try_exp(&self) -> ::core::result::Result<#mt<T>, ::algebra_core::MvError> {
-                #cf::check_finite("exp", self, self.iter())?;
-                let out = self.exp();
-                #cf::check_finite("exp", self, out.iter()).map_err(|_| {
-                    #cf::undefined("exp", self.to_string(), "the result is not finite (the bivector is too large for this scalar)")
-                })?;
-                Ok(out)
-            }
+            #try_exp
         }
 
         impl<T: ::algebra_core::Real> #mt<T> {
@@ -494,18 +485,46 @@ fn items(plan: &Plan, names: &Names, c: &ClosedForm) -> Result<TokenStream, Code
                 Ok(#bt { #(#log_fields),* })
             }
 
-            /// The square root of `normalize(self)`: `exp(log(self)/2)`.
-            pub fn sqrt(&self) -> #err {
-                Ok((self.log()? * T::from_ratio(1, 2)).exp())
-            }
-
-            /// `normalize(self)^t = exp(t log(self))`.
-            pub fn pow(&self, t: &T) -> #err {
-                #cf::check_finite("pow", t, ::core::iter::once(t))?;
-                Ok((self.log()? * t.clone()).exp())
-            }
+            #sqrt_pow
         }
     })
+}
+
+/// `try_exp` on a bivector type whose `exp` returns `mt`: shared by every family.
+pub(super) fn try_exp_item(mt: &proc_macro2::Ident) -> TokenStream {
+    let cf = quote!(::algebra_core::closed_form);
+    quote! {
+        /// [`Self::exp`] after checking that every coefficient is finite:
+        /// `MvError::Undefined` ("coefficients are not finite") otherwise, and "the result is
+        /// not finite" when a finite bivector is too large for the scalar.
+        pub fn try_exp(&self) -> ::core::result::Result<#mt<T>, ::algebra_core::MvError> {
+            #cf::check_finite("exp", self, self.iter())?;
+            let out = self.exp();
+            #cf::check_finite("exp", self, out.iter()).map_err(|_| {
+                #cf::undefined("exp", self.to_string(), "the result is not finite (the bivector is too large for this scalar)")
+            })?;
+            Ok(out)
+        }
+    }
+}
+
+/// `sqrt` and `pow` on an even type with `log` and its bivector type's `exp`: shared by every
+/// family.
+pub(super) fn sqrt_pow_items() -> TokenStream {
+    let cf = quote!(::algebra_core::closed_form);
+    let err = quote!(::core::result::Result<Self, ::algebra_core::MvError>);
+    quote! {
+        /// The square root of `normalize(self)`: `exp(log(self)/2)`.
+        pub fn sqrt(&self) -> #err {
+            Ok((self.log()? * T::from_ratio(1, 2)).exp())
+        }
+
+        /// `normalize(self)^t = exp(t log(self))`.
+        pub fn pow(&self, t: &T) -> #err {
+            #cf::check_finite("pow", t, ::core::iter::once(t))?;
+            Ok((self.log()? * t.clone()).exp())
+        }
+    }
 }
 
 /// Every closed-form impl of the module.

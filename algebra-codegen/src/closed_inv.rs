@@ -251,6 +251,7 @@ pub(super) fn items(plan: &Plan, names: &Names, c: &ClosedForm, inv: &Invariant)
         .collect();
     let berr = quote!(::core::result::Result<#bt<T>, ::algebra_core::MvError>);
     let err = quote!(::core::result::Result<Self, ::algebra_core::MvError>);
+    let (try_exp, sqrt_pow) = (super::closed::try_exp_item(mt), super::closed::sqrt_pow_items());
     let m_items = quote! {
         impl<T: ::algebra_core::Real> #mt<T> {
             /// `self / sqrt(self rev(self))` when `self rev(self)` is a positive scalar (up to
@@ -306,16 +307,7 @@ pub(super) fn items(plan: &Plan, names: &Names, c: &ClosedForm, inv: &Invariant)
                 }
             }
 
-            /// The square root of `normalize(self)`: `exp(log(self)/2)`.
-            pub fn sqrt(&self) -> #err {
-                Ok((self.log()? * T::from_ratio(1, 2)).exp())
-            }
-
-            /// `normalize(self)^t = exp(t log(self))`.
-            pub fn pow(&self, t: &T) -> #err {
-                #cf::check_finite("pow", t, ::core::iter::once(t))?;
-                Ok((self.log()? * t.clone()).exp())
-            }
+            #sqrt_pow
         }
     };
     Ok(quote! {
@@ -339,17 +331,7 @@ pub(super) fn items(plan: &Plan, names: &Names, c: &ClosedForm, inv: &Invariant)
                 }
             }
 
-            /// [`Self::exp`] after checking that every coefficient is finite:
-            /// `MvError::Undefined` ("coefficients are not finite") otherwise, and "the result is
-            /// not finite" when a finite bivector is too large for the scalar.
-            pub fn try_exp(&self) -> ::core::result::Result<#mt<T>, ::algebra_core::MvError> {
-                #cf::check_finite("exp", self, self.iter())?;
-                let out = self.exp();
-                #cf::check_finite("exp", self, out.iter()).map_err(|_| {
-                    #cf::undefined("exp", self.to_string(), "the result is not finite (the bivector is too large for this scalar)")
-                })?;
-                Ok(out)
-            }
+            #try_exp
         }
     })
 }
