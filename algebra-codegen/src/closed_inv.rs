@@ -241,6 +241,7 @@ pub(super) fn items(plan: &Plan, names: &Names, c: &ClosedForm, inv: &Invariant)
     );
     // log_unit: c, B' of self, then every field of B
     let load_c = load(names, mi, &[scalar_idx], "c");
+    let scalar_field = &names.fields[mi][scalar_idx];
     let load_bm = load(names, mi, &b_in_m, "b");
     let log_fields: Vec<TokenStream> = (0..nb)
         .map(|k| {
@@ -256,19 +257,18 @@ pub(super) fn items(plan: &Plan, names: &Names, c: &ClosedForm, inv: &Invariant)
         impl<T: ::algebra_core::Real> #mt<T> {
             /// `self / sqrt(self rev(self))` when `self rev(self)` is a positive scalar (up to
             /// rounding: every other part within `256 ε Σ coefficient²`), so the result is unit.
-            /// `self rev(self)` is computed by the runtime product. Fails when the norm is not
+            /// `self rev(self)` is the module's own product. Fails when the norm is not
             /// positive, when `self rev(self)` has a 4-vector part (not a multiple of a versor),
             /// or a coefficient is not finite.
             pub fn normalize(&self) -> #err {
                 #cf::check_finite("normalize", self, self.iter())?;
-                let m = self.to_multivector();
-                let n = &m * &m.reverse();
-                let alpha = n.scalar_part();
+                let n: #mt<T> = self * &self.reverse();
+                let alpha = n.#scalar_field.clone();
                 if alpha.to_f64().is_nan() || alpha.to_f64() <= 0.0 {
                     return Err(#cf::undefined("normalize", self.to_string(), "the norm self rev(self) is not positive"));
                 }
                 let scale: f64 = self.iter().map(|x| x.to_f64() * x.to_f64()).sum();
-                let rest = n.coeffs().iter().skip(1).map(|x| x.to_f64().abs()).fold(0.0, f64::max);
+                let rest = n.iter().enumerate().filter(|(i, _)| *i != #scalar_idx).map(|(_, x)| x.to_f64().abs()).fold(0.0, f64::max);
                 if rest > 256.0 * T::relative_epsilon() * scale {
                     return Err(#cf::undefined("normalize", self.to_string(), "self rev(self) is not a scalar (not a multiple of a versor)"));
                 }
