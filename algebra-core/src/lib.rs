@@ -18,6 +18,7 @@
 pub mod algebra;
 pub mod basis;
 pub mod closed_form;
+mod closed_form_inv;
 #[cfg(feature = "rug")]
 pub mod ideal;
 pub mod linalg;
