@@ -336,7 +336,9 @@ fn items(plan: &Plan, names: &Names, c: &ClosedForm) -> Result<TokenStream, Code
         let sp = signed(quote!(self.#scalar_field.mul_ref(&self.#fi)), si);
         hb = quote!(#sp - (#hc_m));
         let w = quote!(w);
+        // only the fields `I B'` reaches (no `x + 0`, which a float kernel must keep)
         let corr: Vec<TokenStream> = (0..c.square.len())
+            .filter(|&k| i_times.iter().any(|row| row.iter().any(|(dst, _)| *dst == k)))
             .map(|k| {
                 let f = ctx.field(mi, k);
                 let v = ctx.combine(mi, mi, k, None, Some((&w, 1, i_times)))?;
@@ -370,17 +372,28 @@ fn items(plan: &Plan, names: &Names, c: &ClosedForm) -> Result<TokenStream, Code
         };
         exp_fields.push(quote!(#f: #v));
     }
-    // log_unit: the factors from (sin, cos), then every field of B
-    let log_body = match &c.family {
+    // log_unit and log: the factors from (sin, cos), then every field of B. `log` takes the
+    // factors of the element as it is (`log_factors_nonunit`, homogeneous in its scale), so it
+    // needs no normalisation; it normalises first only where that scaling is out of range.
+    let fallback = quote!(return self.normalize()?.log_unit(););
+    let full_turn = quote! {
+        if sin.to_f64() == 0.0 && self.#scalar_field.to_f64() < 0.0 {
+            return Err(#cf::undefined("log", self.to_string(), "a full turn has no unique rotation axis"));
+        }
+    };
+    let (log_body, log_full) = match &c.family {
         Family::Dual { .. } | Family::Scalar(Sign::Elliptic) | Family::Invariant(_) => {
             let sin2 = ctx.square_form(mi, -1)?;
-            quote! {
-                let sin = (#sin2).sqrt();
-                if sin.to_f64() == 0.0 && self.#scalar_field.to_f64() < 0.0 {
-                    return Err(#cf::undefined("log", self.to_string(), "a full turn has no unique rotation axis"));
-                }
-                let (inv, kk) = #cf::log_factors(&sin, &self.#scalar_field);
-            }
+            let head = quote!(let sin = (#sin2).sqrt(); #full_turn);
+            (
+                quote!(#head let (inv, kk) = #cf::log_factors(&sin, &self.#scalar_field);),
+                quote! {
+                    #head
+                    let Some((inv, ia, kk)) = #cf::log_factors_nonunit(&sin, &self.#scalar_field, &alpha) else {
+                        #fallback
+                    };
+                },
+            )
         }
         Family::Scalar(sign) => {
             let qf = ctx.square_form(mi, 1)?;
@@ -390,31 +403,47 @@ fn items(plan: &Plan, names: &Names, c: &ClosedForm) -> Result<TokenStream, Code
                 }
                 #cf::log_factor_hyperbolic(&q.sqrt(), &self.#scalar_field)
             };
-            let pick = if *sign == Sign::Hyperbolic {
-                hyper
-            } else {
-                quote! {
-                    if q.to_f64() <= 0.0 {
-                        let sin = (-q).sqrt();
-                        if sin.to_f64() == 0.0 && self.#scalar_field.to_f64() < 0.0 {
-                            return Err(#cf::undefined("log", self.to_string(), "a full turn has no unique rotation axis"));
+            let pick = |elliptic: TokenStream| {
+                if *sign == Sign::Hyperbolic {
+                    hyper.clone()
+                } else {
+                    quote! {
+                        if q.to_f64() <= 0.0 {
+                            let sin = (-q).sqrt();
+                            #full_turn
+                            #elliptic
+                        } else {
+                            #hyper
                         }
-                        #cf::log_factors(&sin, &self.#scalar_field).0
-                    } else {
-                        #hyper
                     }
                 }
             };
-            quote! { let q = #qf; let inv = { #pick }; }
+            let unit = pick(quote!(#cf::log_factors(&sin, &self.#scalar_field).0));
+            let full = pick(quote! {
+                match #cf::log_factors_nonunit(&sin, &self.#scalar_field, &alpha) {
+                    Some((inv, _, _)) => inv,
+                    None => { #fallback }
+                }
+            });
+            (quote! { let q = #qf; let inv = { #unit }; }, quote! { let q = #qf; let inv = { #full }; })
         }
     };
-    let pk = match (&c.family, i_term) {
+    let (pk, pk_full) = match (&c.family, i_term) {
         (Family::Dual { .. }, Some((ii, si))) => {
             let fi = &mfields[ii];
             let v = signed(quote!(self.#fi.mul_ref(&kk)), si);
-            quote!(let pk = #v;)
+            // log(M) = inv B' + (h inv + (p + h s) kk) I B', h = -(β/2)/α: log_unit of
+            // normalize(M) = u M + w M I written in M's own coefficients
+            let p = signed(quote!(self.#fi.clone()), si);
+            (
+                quote!(let pk = #v;),
+                quote! {
+                    let h = -((#hb) * ia);
+                    let pk = h.mul_ref(&inv) + (#p + h.mul_ref(&self.#scalar_field)) * kk;
+                },
+            )
         }
-        _ => quote!(),
+        _ => (quote!(), quote!()),
     };
     let pk_name = quote!(pk);
     let log_fields = (0..c.square.len())
@@ -428,8 +457,10 @@ fn items(plan: &Plan, names: &Names, c: &ClosedForm) -> Result<TokenStream, Code
     let norm_tail = if matches!(c.family, Family::Dual { .. }) {
         quote! {
             let half_beta = #hb;
-            let u = T::one() / alpha.sqrt();
-            let w = -(half_beta * u.clone()) / alpha;
+            // u = 1/√α and w = -(β/2)/α^{3/2}, with one division
+            let inv_alpha = T::one() / alpha;
+            let u = inv_alpha.sqrt();
+            let w = -(half_beta * u.clone()) * inv_alpha;
             let mut out = self.scale(&u);
             #norm_extra
             Ok(out)
@@ -437,6 +468,18 @@ fn items(plan: &Plan, names: &Names, c: &ClosedForm) -> Result<TokenStream, Code
     } else {
         quote!(Ok(self.scale(&(T::one() / alpha.sqrt()))))
     };
+    // `normalize` and `log` do not depend on the scale: far from 1, rescale by a power of two
+    let rescaled = |method: TokenStream| {
+        quote! {
+            // (no let-chain: the code compiles in the user's edition)
+            if !(alpha.to_f64() >= 1e-60 && alpha.to_f64() <= 1e60) {
+                if let Some(k) = #cf::rescale(self.iter()) {
+                    return self.scale(&k).#method();
+                }
+            }
+        }
+    };
+    let (rescaled_normalize, rescaled_log) = (rescaled(quote!(normalize)), rescaled(quote!(log)));
     let bdoc = format!(
         " The exponential in closed form (`algebra_core::closed_form`): a unit `{mt}`. An unchecked kernel: a NaN or infinite coefficient gives NaN coefficients (use `try_exp` for input of unknown origin)."
     );
@@ -461,6 +504,7 @@ fn items(plan: &Plan, names: &Names, c: &ClosedForm) -> Result<TokenStream, Code
             pub fn normalize(&self) -> #err {
                 #cf::check_finite("normalize", self, self.iter())?;
                 let alpha = self.#scalar_field.mul_ref(&self.#scalar_field) - (#qm);
+                #rescaled_normalize
                 if alpha.to_f64().is_nan() || alpha.to_f64() <= 0.0 {
                     return Err(#cf::undefined("normalize", self.to_string(), "the norm self rev(self) is not positive"));
                 }
@@ -471,7 +515,15 @@ fn items(plan: &Plan, names: &Names, c: &ClosedForm) -> Result<TokenStream, Code
             /// `exp(B) = normalize(self)` (rotation angle `θ ∈ [0, π)`). Fails when `normalize`
             /// does, and for a full turn (`θ = π`, no unique axis).
             pub fn log(&self) -> #berr {
-                self.normalize()?.log_unit()
+                #cf::check_finite("log", self, self.iter())?;
+                let alpha = self.#scalar_field.mul_ref(&self.#scalar_field) - (#qm);
+                #rescaled_log
+                if alpha.to_f64().is_nan() || alpha.to_f64() <= 0.0 {
+                    return Err(#cf::undefined("log", self.to_string(), "the norm self rev(self) is not positive"));
+                }
+                #log_full
+                #pk_full
+                Ok(#bt { #(#log_fields),* })
             }
 
             /// The logarithm of an element that is already unit (`self rev(self) = 1`, as every

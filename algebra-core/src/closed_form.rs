@@ -60,7 +60,8 @@ pub fn exp_factors<T: Real>(theta2: &T) -> (T, T, T) {
 
 /// The factors of the logarithm of a unit element from `sin θ >= 0` and `cos θ`: `(θ / sin θ, (θ cos θ - sin θ) / sin³ θ)`, i.e. `1/sinc θ` and
 /// `(cos θ - sinc θ)/(θ sin θ sinc² θ)` (the dual part of the logarithm), with
-/// `θ = atan2(sin, cos) ∈ [0, π]`, one `atan2` and one division.
+/// `θ = atan2(sin, cos) ∈ [0, π]` ([`Real::fast_atan2`]: an inlined polynomial at `f64` and
+/// `f32`) and one division.
 ///
 /// ```
 /// let (inv, kk) = algebra_core::closed_form::log_factors(&0.0f64, &1.0);
@@ -68,21 +69,89 @@ pub fn exp_factors<T: Real>(theta2: &T) -> (T, T, T) {
 /// ```
 #[inline]
 pub fn log_factors<T: Real>(sin: &T, cos: &T) -> (T, T) {
-    let theta = sin.atan2(cos);
+    let theta = sin.fast_atan2(cos);
     if theta.to_f64() < SMALL {
-        let r = |n, d| T::from_ratio(n, d);
-        let t2 = theta.mul_ref(&theta);
-        let t4 = t2.mul_ref(&t2);
-        // θ/sin θ = 1 + θ²/6 + 7θ⁴/360; (θ cos θ - sin θ)/sin³ θ = -1/3 - 2θ²/15 - 2θ⁴/63
-        let inv = T::one() + r(1, 6) * t2.clone() + r(7, 360) * t4.clone();
-        let k = r(-1, 3) - r(2, 15) * t2 - r(2, 63) * t4;
-        (inv, k)
+        log_series(&theta)
     } else {
         let r = T::one() / sin.clone();
         let r2 = r.mul_ref(&r);
         let k = (theta.mul_ref(cos) - sin.clone()) * (r2 * r.clone());
         (theta * r, k)
     }
+}
+
+/// `(θ / sin θ, (θ cos θ - sin θ) / sin³ θ)` by their series (truncation error `θ⁶`).
+fn log_series<T: Real>(theta: &T) -> (T, T) {
+    let r = |n, d| T::from_ratio(n, d);
+    let t2 = theta.mul_ref(theta);
+    let t4 = t2.mul_ref(&t2);
+    // θ/sin θ = 1 + θ²/6 + 7θ⁴/360; (θ cos θ - sin θ)/sin³ θ = -1/3 - 2θ²/15 - 2θ⁴/63
+    let inv = T::one() + r(1, 6) * t2.clone() + r(7, 360) * t4.clone();
+    let k = r(-1, 3) - r(2, 15) * t2 - r(2, 63) * t4;
+    (inv, k)
+}
+
+/// [`log_factors`] for an element that is not unit, `ρ (cos θ + sin θ …)` with `ρ > 0`: from
+/// `sin = ρ sin θ >= 0`, `cos = ρ cos θ` and `alpha = ρ²` (the caller has it), the triple
+/// `(θ / sin, 1 / alpha, (θ cos - sin) / sin³)`, so the generated `log` needs no
+/// normalisation: one `atan2` ([`Real::fast_atan2`]) and one division, as [`log_factors`].
+/// Below [`SMALL`] the series of [`log_factors`] scaled by `1/ρ` and `1/ρ²` (one square
+/// root). `None` when `alpha · sin³` is not a positive normal `f64`-range number (an element
+/// too large or too small to scale this way): the caller then normalises first.
+///
+/// ```
+/// use algebra_core::closed_form::{log_factors, log_factors_nonunit};
+/// let (rho, t) = (3.0f64, 0.7f64);
+/// let (inv, ia, k) = log_factors_nonunit(&(rho * t.sin()), &(rho * t.cos()), &(rho * rho)).unwrap();
+/// let (inv1, k1) = log_factors(&t.sin(), &t.cos());
+/// assert!((inv * rho - inv1).abs() < 1e-15 && (k * rho * rho - k1).abs() < 1e-15);
+/// assert!((ia - 1.0 / 9.0).abs() < 1e-17);
+/// ```
+#[inline]
+pub fn log_factors_nonunit<T: Real>(sin: &T, cos: &T, alpha: &T) -> Option<(T, T, T)> {
+    let theta = sin.fast_atan2(cos);
+    if theta.to_f64() < SMALL {
+        let (inv, k) = log_series(&theta);
+        let ia = T::one() / alpha.clone();
+        let inv_rho = alpha.sqrt() * ia.clone();
+        if !(inv_rho.is_finite() && ia.to_f64().is_normal()) {
+            return None;
+        }
+        Some((inv * inv_rho, ia.clone(), k * ia))
+    } else {
+        let sin2 = sin.mul_ref(sin);
+        let sin3 = sin2.mul_ref(sin);
+        let den = alpha.mul_ref(&sin3);
+        if !den.to_f64().is_normal() || den.to_f64() < 0.0 {
+            return None;
+        }
+        let r = T::one() / den;
+        let ar = alpha.mul_ref(&r);
+        let k = (theta.mul_ref(cos) - sin.clone()) * ar.clone();
+        Some((theta * (sin2 * ar), sin3 * r, k))
+    }
+}
+
+/// The power of two that brings the largest coefficient magnitude near 1 when it is a finite,
+/// non-zero number outside `[2^-64, 2^64]` (as `f64`), else `None`. The generated `normalize`
+/// and `log`, which do not depend on the element's scale, rescale by it first when the norm
+/// `α = self rev(self)` would overflow or underflow; a power of two scales exactly.
+///
+/// ```
+/// use algebra_core::closed_form::rescale;
+/// assert_eq!(rescale([1e200f64, -3e199].iter()), Some(2f64.powi(-664)));
+/// assert_eq!(rescale([0.5f64, 2.0].iter()), None);
+/// assert_eq!(rescale([0.0f64, f64::NAN].iter()), None);
+/// ```
+pub fn rescale<'a, T: Real + 'a>(coeffs: impl Iterator<Item = &'a T>) -> Option<T> {
+    let big = coeffs.map(|c| c.to_f64().abs()).fold(0.0, f64::max);
+    let in_range = (2f64.powi(-64)..=2f64.powi(64)).contains(&big);
+    if !big.is_finite() || big == 0.0 || in_range {
+        return None;
+    }
+    // |e| <= 1000 keeps 2^-e a normal f64; a subnormal maximum takes a second step
+    let e = (big.log2().round() as i32).clamp(-1000, 1000);
+    Some(T::from_f64(2f64.powi(-e)))
 }
 
 /// `(sinh φ / φ, cosh φ)` from `φ² >= 0`: the factors of `exp(B) = cosh φ + (sinh φ/φ) B`
@@ -145,6 +214,7 @@ pub fn undefined(op: &'static str, value: String, why: &str) -> MvError {
 /// assert!(check_finite("exp", &"x", [1.0f64, 2.0].iter()).is_ok());
 /// assert!(check_finite("exp", &"x", [1.0f64, f64::NAN].iter()).is_err());
 /// ```
+#[inline]
 pub fn check_finite<'a, T: Real + 'a>(
     op: &'static str,
     value: &dyn std::fmt::Display,

@@ -15,8 +15,9 @@
 //! **interleaved**: each round times every kernel of a group back to back (in rotating order),
 //! and the report gives the median of the per-round ratios.
 //!
-//! * versor action (the report only, interleaved): `cga_null::Motor::sandwich(&Vector)` (fused)
-//!   and the composed `(rev(S) x) S` relative to `cga_null` `Motor * Motor`; `pga3` `apply` on a
+//! * versor action (the report only, interleaved): `cga_null::Motor::sandwich(&Vector)` (fused),
+//!   `sandwich_unit` on unit motors, and the composed `(rev(S) x) S` relative to `cga_null`
+//!   `Motor * Motor`; `pga3` `apply` on a
 //!   trivector point at f32 relative to the f32 motor product; against nalgebra (f64):
 //!   `g123inf` `Motor * Motor` vs `DualQuaternion *`, a pose applied to a point (`pga3` `apply`
 //!   on a trivector, and `apply_unit` on unit motors) vs `UnitDualQuaternion::transform_point` and
@@ -211,6 +212,9 @@ fn versor_data() -> Versor {
     let composed = cga_null::Vector::project(&((s.reverse() * x) * s).to_multivector());
     let fused = s.sandwich(x);
     assert!(fused.iter().zip(composed.iter()).all(|(a, b)| (a - b).abs() < 1e-12));
+    // sanity: on unit motors the unit action is the fused one
+    let (u, x) = (&d.cn_units[0], &d.cn_points[0]);
+    assert!(u.sandwich_unit(x).iter().zip(u.sandwich(x).iter()).all(|(a, b)| (a - b).abs() < 1e-12));
     d
 }
 
@@ -273,6 +277,7 @@ macro_rules! pairs {
 pairs!(cn_motor_product, cn_motors, cn_motors, |x, y| x * y);
 pairs!(cn_sandwich_fused, cn_motors, cn_points, |s, p| s.sandwich(p));
 pairs!(cn_sandwich_composed, cn_motors, cn_points, |s, p| (s.reverse() * p) * s);
+pairs!(cn_sandwich_unit, cn_units, cn_points, |s, p| s.sandwich_unit(p));
 pairs!(pga32_motor_product, pga_motors32, pga_motors32, |x, y| x * y);
 pairs!(pga32_apply_point, pga_motors32, pga_points32, |s, p| s.apply(p));
 pairs!(g123_motor_product, motors, motors, |x, y| x * y);
@@ -443,6 +448,7 @@ const VERSOR_GROUPS: [(&str, &[(&str, Kernel)]); 6] = [
         &[
             ("cga_null Motor * Motor", cn_motor_product),
             ("cga_null Motor.sandwich(Vector), fused", cn_sandwich_fused),
+            ("cga_null Motor.sandwich_unit(Vector), unit motors", cn_sandwich_unit),
             ("cga_null (rev(S) x) S, composed full kernels", cn_sandwich_composed),
         ],
     ),

@@ -31,9 +31,9 @@ fn g123inf_closed_forms_refuse_non_finite_coefficients() {
             let mut m = (g123inf::Bivector::<f64>::e23() * 0.4).exp();
             *m.iter_mut().nth(k).unwrap() = bad;
             not_finite(m.normalize(), "normalize");
-            not_finite(m.log(), "normalize");
+            not_finite(m.log(), "log");
             not_finite(m.log_unit(), "log");
-            not_finite(m.sqrt(), "normalize");
+            not_finite(m.sqrt(), "log");
         }
         let m = (g123inf::Bivector::<f64>::e23() * 0.4).exp();
         not_finite(m.pow(&bad), "pow");

@@ -125,6 +125,30 @@ macro_rules! family_tests {
                 }
             }
 
+            proptest! {
+                /// `log` takes the logarithm of a non-unit element without normalising it
+                /// first: the same as `log_unit` of the normalised element, at every scale
+                /// (powers of ten from 1e-300 to 1e300: the rescaled and fallback paths too)
+                /// and off the unit group (every coefficient perturbed).
+                #[test]
+                fn log_needs_no_normalisation(
+                    c in coeffs(), e in -300i32..300, p in prop::collection::vec(-0.2..0.2f64, 8), off in any::<bool>(),
+                ) {
+                    let mut x = biv(c).exp();
+                    if off {
+                        for (k, v) in x.iter_mut().enumerate() {
+                            *v += p[k % 8];
+                        }
+                    }
+                    let x = x.scale(&10f64.powi(e));
+                    match (x.log(), x.normalize().and_then(|n| n.log_unit())) {
+                        (Ok(a), Ok(b)) => close("log", &a.to_multivector(), &b.to_multivector(), 1e-11),
+                        (Err(_), Err(_)) => {}
+                        (a, b) => prop_assert!(false, "log {a:?}, log_unit(normalize) {b:?}"),
+                    }
+                }
+            }
+
             #[test]
             fn edge_cases() {
                 // zero: exactly one; log of one exactly zero
@@ -143,6 +167,13 @@ macro_rules! family_tests {
                 assert!(M::<f64>::one().pow(&f64::NAN).is_err());
                 assert!(M::<f64>::zero().normalize().is_err());
                 assert!(M::<f64>::zero().log().is_err());
+                // far from unit scale: the same logarithm (rescaled by a power of two)
+                let m = biv(vec![0.3; $len]).exp();
+                let l = m.log_unit().unwrap();
+                for s in [1e-300, 1e-200, 1e-31, 1e31, 1e200, 1e300] {
+                    close("log at scale", &m.scale(&s).log().unwrap().to_multivector(), &l.to_multivector(), 1e-13);
+                    close("normalize at scale", &m.scale(&s).normalize().unwrap().to_multivector(), &m.to_multivector(), 1e-13);
+                }
             }
         }
     };

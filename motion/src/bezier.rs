@@ -24,117 +24,13 @@
 //! ```
 
 use crate::blend::{Additive, Blend, Multiplicative};
+use crate::de_casteljau::{additive_apex, de_casteljau_with, tableau_with};
 use crate::joins::JoinError;
 use crate::{Even, MotionError, Pose};
 use algebra_core::{Field, Real, Ring};
 use std::convert::Infallible;
 
-/// Why building or evaluating a motion curve failed.
-///
-/// Values are carried as their printed form, so the error type does not depend on the scalar.
-/// Pose-level failures (a singular pose in a slerp, an inverse, ...) are wrapped unchanged.
-///
-/// ```
-/// use motion::{AdditiveBezier, CurveError, Motion, Pose};
-/// let m = AdditiveBezier::new(vec![Pose::<f64>::identity(), Pose::translation(&[1.0, 0.0, 0.0])]).unwrap();
-/// assert!(matches!(m.pose(&1.5), Err(CurveError::OutOfDomain { .. })));
-/// assert!(matches!(AdditiveBezier::<f64>::new(vec![]), Err(CurveError::TooFewPoses { need: 1, got: 0 })));
-/// ```
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-pub enum CurveError {
-    /// A pose operation failed (singular pose, non-finite value, ...).
-    #[error(transparent)]
-    Pose(#[from] MotionError),
-    /// The parameter is outside the motion's domain (or is NaN).
-    #[error("the parameter {t} is outside the domain [{start}, {end}]")]
-    OutOfDomain {
-        /// The parameter, printed.
-        t: String,
-        /// The start of the domain, printed.
-        start: String,
-        /// The end of the domain, printed.
-        end: String,
-    },
-    /// Not enough control poses for the requested degree.
-    #[error("needs at least {need} control poses, got {got}")]
-    TooFewPoses {
-        /// The minimum.
-        need: usize,
-        /// What was given.
-        got: usize,
-    },
-    /// A knot vector of the wrong length: `poses + degree + 1` knots are needed.
-    #[error("a B-spline of degree {degree} with {poses} control poses needs {expected} knots, got {got}")]
-    KnotCount {
-        /// The degree.
-        degree: usize,
-        /// The number of control poses.
-        poses: usize,
-        /// `poses + degree + 1`.
-        expected: usize,
-        /// What was given.
-        got: usize,
-    },
-    /// A knot (or breakpoint) that is NaN or infinite.
-    #[error("{what} {index} is {value}, not finite")]
-    NotFiniteParameter {
-        /// "knot" or "breakpoint".
-        what: &'static str,
-        /// Its index.
-        index: usize,
-        /// The value, printed.
-        value: String,
-    },
-    /// Knots must be non-decreasing.
-    #[error("knot {index} ({value}) is smaller than knot {} ({previous}): knots must be non-decreasing", index - 1)]
-    KnotsDecreasing {
-        /// The index of the offending knot.
-        index: usize,
-        /// Its value, printed.
-        value: String,
-        /// The previous knot, printed.
-        previous: String,
-    },
-    /// A knot value repeated more than `degree + 1` times.
-    #[error("the knot {value} is repeated {multiplicity} times; degree {degree} allows at most {}", degree + 1)]
-    KnotMultiplicity {
-        /// The knot value, printed.
-        value: String,
-        /// How often it occurs.
-        multiplicity: usize,
-        /// The degree.
-        degree: usize,
-    },
-    /// The parameter domain `[u_p, u_{n+1}]` of a B-spline has zero length.
-    #[error("the B-spline domain [{start}, {end}] is empty")]
-    EmptyDomain {
-        /// `u_p`, printed.
-        start: String,
-        /// `u_{n+1}`, printed.
-        end: String,
-    },
-    /// A piecewise motion without segments.
-    #[error("a piecewise motion needs at least one segment")]
-    NoSegments,
-    /// A piecewise motion needs one more breakpoint than segments.
-    #[error("{segments} segments need {} breakpoints, got {got}", segments + 1)]
-    BreakCount {
-        /// The number of segments.
-        segments: usize,
-        /// The number of breakpoints given.
-        got: usize,
-    },
-    /// Breakpoints must be strictly increasing.
-    #[error("breakpoint {index} ({value}) is not greater than breakpoint {} ({previous})", index - 1)]
-    BreaksNotIncreasing {
-        /// The index of the offending breakpoint.
-        index: usize,
-        /// Its value, printed.
-        value: String,
-        /// The previous breakpoint, printed.
-        previous: String,
-    },
-}
+pub use crate::error::CurveError;
 
 /// A motion `t ↦ S(t)` over a parameter interval: Bezier, B-spline, piecewise, reparametrised.
 ///
@@ -268,84 +164,6 @@ pub(crate) fn finite_poses<'a, T: Ring + 'a>(
         Some(p) => Err(MotionError::NotFinite { op, value: p.to_string() }),
         None => Ok(()),
     }
-}
-
-/// The de Casteljau tableau with a pairwise combination: column 0 is the control poses,
-/// column `k` holds `S_{i..i+k}(t)`, the last column the single pose `S(t)`.
-pub(crate) fn tableau_with<T: Ring, E>(
-    poses: &[Pose<T>],
-    t: &T,
-    combine: impl Fn(&Pose<T>, &Pose<T>, &T) -> Result<Pose<T>, E>,
-) -> Result<Vec<Vec<Pose<T>>>, E> {
-    let mut columns = vec![poses.to_vec()];
-    while columns[columns.len() - 1].len() > 1 {
-        let last = &columns[columns.len() - 1];
-        let next = last.windows(2).map(|w| combine(&w[0], &w[1], t)).collect::<Result<Vec<_>, E>>()?;
-        columns.push(next);
-    }
-    Ok(columns)
-}
-
-/// Control poses up to this many (degree ≤ 7) are evaluated in an array on the stack; more in
-/// one `Vec`.
-const STACK_POSES: usize = 8;
-
-/// The apex `S(t)` of the de Casteljau tableau, computed in place in one column: entry `i` of
-/// level `k` overwrites entry `i` of level `k - 1` once entries `i` and `i + 1` were read. The
-/// same `combine` calls on the same arguments in the same order as the tableau
-/// ([`tableau_with`]), so the apex is bit for bit the tableau's; without allocation up to
-/// [`STACK_POSES`] control poses.
-pub(crate) fn de_casteljau_with<T: Ring, E>(
-    poses: &[Pose<T>],
-    t: &T,
-    combine: impl Fn(&Pose<T>, &Pose<T>, &T) -> Result<Pose<T>, E>,
-) -> Result<Pose<T>, E> {
-    if poses.len() <= STACK_POSES {
-        let mut column: [Option<Pose<T>>; STACK_POSES] = std::array::from_fn(|i| poses.get(i).cloned());
-        apex_in_place(&mut column[..poses.len()], t, combine)
-    } else {
-        let mut column: Vec<Option<Pose<T>>> = poses.iter().cloned().map(Some).collect();
-        apex_in_place(&mut column, t, combine)
-    }
-}
-
-fn apex_in_place<T: Ring, E>(
-    column: &mut [Option<Pose<T>>],
-    t: &T,
-    combine: impl Fn(&Pose<T>, &Pose<T>, &T) -> Result<Pose<T>, E>,
-) -> Result<Pose<T>, E> {
-    for len in (1..column.len()).rev() {
-        for i in 0..len {
-            let (Some(a), Some(b)) = (&column[i], &column[i + 1]) else { unreachable!("entries 0..=len are set") };
-            column[i] = Some(combine(a, b, t)?);
-        }
-    }
-    Ok(column.first_mut().and_then(Option::take).expect("a motion has at least one control pose"))
-}
-
-/// The apex of the additive tableau (eq. 17 at every level) coefficient by coefficient: each
-/// of the eight coefficients is its own scalar de Casteljau in an array on the stack, with the
-/// operations of [`Pose::lerp`] (`a (1 - t) + b t`), so the result is bit for bit the pose
-/// tableau's apex while the working set is a few scalars instead of whole poses (no pose is
-/// moved or copied per level). More than [`STACK_POSES`] control poses take the pose tableau.
-pub(crate) fn additive_apex<T: Ring>(poses: &[Pose<T>], t: &T) -> Pose<T> {
-    if poses.len() > STACK_POSES {
-        let Ok(pose) = de_casteljau_with::<T, Infallible>(poses, t, |a, b, t| Ok(Pose::lerp(a, b, t)));
-        return pose;
-    }
-    let one_minus_t = T::one().sub_ref(t);
-    let [c0, c1, c2, c3, c4, c5, c6, c7] = std::array::from_fn(|c| {
-        let mut column: [T; STACK_POSES] =
-            std::array::from_fn(|i| poses.get(i).map_or_else(T::zero, |p| p.components()[c].clone()));
-        for len in (1..poses.len()).rev() {
-            for i in 0..len {
-                column[i] = column[i].mul_ref(&one_minus_t).add_ref(&column[i + 1].mul_ref(t));
-            }
-        }
-        let [apex, ..] = column;
-        apex
-    });
-    Pose::new(c0, c1, c2, c3, c4, c5, c6, c7)
 }
 
 /// A Bezier motion of degree `n` on `[0, 1]` with the pairwise combination of the blend `B`

@@ -52,7 +52,7 @@ pub trait Blend<T: Ring>: Copy + std::fmt::Debug + PartialEq + Default + 'static
     /// assert_eq!(Additive::apex(&c, &0.5).unwrap(), Pose::translation(&[1.5, 0.5, 0.0]));
     /// ```
     fn apex(poses: &[Pose<T>], t: &T) -> Result<Pose<T>, MotionError> {
-        crate::bezier::de_casteljau_with(poses, t, Self::blend)
+        crate::de_casteljau::de_casteljau_with(poses, t, Self::blend)
     }
 
     /// The control pose `S1` next to `S0` of a degree-`n` segment whose indicatrix at `t = 0`
@@ -138,7 +138,7 @@ impl<T: Ring> Blend<T> for Additive {
     }
 
     fn apex(poses: &[Pose<T>], t: &T) -> Result<Pose<T>, MotionError> {
-        Ok(crate::bezier::additive_apex(poses, t))
+        Ok(crate::de_casteljau::additive_apex(poses, t))
     }
 
     fn start_control_pose(s0: &Pose<T>, psi0: &Even<T>, degree: usize) -> Result<Pose<T>, JoinError> {

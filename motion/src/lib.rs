@@ -24,14 +24,14 @@
 //! | [`exp_log`] | closed-form exp and log ("dual angle") |
 //! | [`branch_free`] | exp, log, power, slerp with `select` instead of branches, over SIMD lanes (`LaneReal`) |
 //! | [`interpolation`] | power, slerp (eq. 15), additive interpolation (eq. 17) |
-//! | [`bezier`] | the [`Motion`] and [`MapScalar`] traits, [`CurveError`], [`Bezier`] motions: additive (eq. 18) and multiplicative (Fig. 2) |
+//! | [`bezier`] | the [`Motion`] and [`MapScalar`] traits, [`Bezier`] motions: additive (eq. 18) and multiplicative (Fig. 2) |
 //! | [`blend`] | [`Blend`]: [`Additive`] (eq. 17) or [`Multiplicative`] (eq. 15) as a type parameter, with the join rules (eqs. 20-23) |
 //! | [`bspline`] | [`BSpline`] motions with knots (de Boor), either blend |
 //! | [`piecewise`] | motions over parameter intervals: [`Reparametrized`], [`Piecewise`], [`AnyMotion`] |
 //! | [`velocity`] | Ψ (eq. 11), γ, ν, Ω and u (Thm 3.2), point velocities (eq. 14), Cor. 3.3, second derivatives, all by dual numbers |
 //! | [`joins`] | end conditions, `ν` and `Ψ = λ(ν + γ)`, control poses for C1/G1 joins (eqs. 22-23), [`Continuity`] check |
 //! | [`hermite`] | Hermite interpolation through precision poses with velocities (Sec. 5.3) |
-//! | [`error`] | [`MotionError`] |
+//! | [`error`] | [`MotionError`] (pose operations), [`CurveError`] (motion curves; also re-exported from [`bezier`]) |
 //! | [`spec`] | the `gam hermite` spec: format, checks ([`spec::SpecError`]), segment |
 //! | [`trajectory`] | [`trajectory::Trajectory`]: a C1 motion through key poses at times in one call, velocity estimate, sampler |
 //! | [`jacobian`] | [`jacobian::JetN`] (multi-directional duals), derivatives of a sampled body point and twist w.r.t. every key pose and time |
@@ -57,6 +57,7 @@ pub mod bezier;
 pub mod blend;
 pub mod branch_free;
 pub mod bspline;
+mod de_casteljau;
 pub mod error;
 pub mod exp_log;
 pub mod hermite;

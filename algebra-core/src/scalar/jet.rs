@@ -182,6 +182,14 @@ impl<T: Field> Field for Jet<T> {
     }
 }
 
+impl<T: Real> Jet<T> {
+    /// The derivative part of `atan2(self, x)`: `(x dy - y dx) / (x² + y²)`.
+    fn atan2_eps(&self, x: &Self) -> T {
+        let r2 = x.re.mul_ref(&x.re) + &self.re.mul_ref(&self.re);
+        (x.re.mul_ref(&self.eps) - &self.re.mul_ref(&x.eps)).div_ref(&r2)
+    }
+}
+
 impl<T: Real> Real for Jet<T> {
     fn sqrt(&self) -> Self {
         let s = self.re.sqrt();
@@ -208,10 +216,10 @@ impl<T: Real> Real for Jet<T> {
         self.chain(self.re.cosh(), self.re.sinh())
     }
     fn atan2(&self, x: &Self) -> Self {
-        // d atan2(y, x) = (x dy - y dx) / (x² + y²)
-        let r2 = x.re.mul_ref(&x.re) + &self.re.mul_ref(&self.re);
-        let eps = (x.re.mul_ref(&self.eps) - &self.re.mul_ref(&x.eps)).div_ref(&r2);
-        Jet { re: self.re.atan2(&x.re), eps }
+        Jet { re: self.re.atan2(&x.re), eps: self.atan2_eps(x) }
+    }
+    fn fast_atan2(&self, x: &Self) -> Self {
+        Jet { re: self.re.fast_atan2(&x.re), eps: self.atan2_eps(x) }
     }
     fn atanh(&self) -> Self {
         let d = T::one().div_ref(&(T::one() - &self.re.mul_ref(&self.re)));

@@ -44,6 +44,7 @@ macro_rules! native_ref_ops {
     };
 }
 
+mod atan;
 mod decide;
 mod dual;
 mod exact;
@@ -58,6 +59,7 @@ mod mpfloat;
 pub(crate) mod mprational;
 mod pack;
 
+pub use atan::atan2_f64;
 pub use decide::{Diagnostics, Elementary, LaneReal, Mask, Select};
 pub use jet::Jet;
 pub use lane_dual::LaneDual;
@@ -264,6 +266,21 @@ pub trait Real: Field + PartialOrd {
     fn cosh(&self) -> Self;
     /// Four-quadrant arctangent of `self / x`.
     fn atan2(&self, x: &Self) -> Self;
+    /// [`Real::atan2`] by the fastest kernel the type has that is accurate to a few units in
+    /// the last place: `f64` and `f32` use [`atan2_f64`] (inlined polynomial, within 2.33 ulp
+    /// of the correctly rounded value at `f64`; libm's `atan2` is within 0.5 ulp but is an
+    /// out-of-line call), [`Jet`] passes it to its real part, every other type (num-dual
+    /// types, `MpFloat` at any precision) uses its `atan2`. The closed-form logarithms
+    /// ([`crate::closed_form::log_factors`]) call it.
+    ///
+    /// ```
+    /// use algebra_core::Real;
+    /// let (y, x) = (0.3f64, -0.8);
+    /// assert!((Real::fast_atan2(&y, &x) - y.atan2(x)).abs() < 3.0 * 2.8 * f64::EPSILON);
+    /// ```
+    fn fast_atan2(&self, x: &Self) -> Self {
+        self.atan2(x)
+    }
     /// Inverse hyperbolic tangent.
     fn atanh(&self) -> Self;
     /// Absolute value.

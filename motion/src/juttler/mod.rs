@@ -270,16 +270,11 @@ pub(crate) fn elevate_with<C: Clone, T: Ring>(c: &[C], combine: impl Fn(&C, &T, 
 }
 
 /// De Casteljau's algorithm on Bernstein coefficients with `lerp(a, b, 1 - t, t)`.
+/// The shared in-place apex ([`crate::de_casteljau::apex`]: no allocation up to degree 7).
 pub(crate) fn de_casteljau_with<C: Clone, T: Ring>(c: &[C], t: &T, lerp: impl Fn(&C, &C, &T, &T) -> C) -> C {
     let s = T::one().sub_ref(t);
-    // one column, overwritten in place level by level
-    let mut col = c.to_vec();
-    for len in (1..col.len()).rev() {
-        for i in 0..len {
-            col[i] = lerp(&col[i], &col[i + 1], &s, t);
-        }
-    }
-    col.swap_remove(0)
+    let Ok(apex) = crate::de_casteljau::apex::<C, std::convert::Infallible>(c, |a, b| Ok(lerp(a, b, &s, t)));
+    apex
 }
 
 /// `1/x` or [`JuttlerError::ZeroWeight`].
