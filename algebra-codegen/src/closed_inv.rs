@@ -256,12 +256,17 @@ pub(super) fn items(plan: &Plan, names: &Names, c: &ClosedForm, inv: &Invariant)
     let m_items = quote! {
         impl<T: ::algebra_core::Real> #mt<T> {
             /// `self / sqrt(self rev(self))` when `self rev(self)` is a positive scalar (up to
-            /// rounding: every other part within `256 ε Σ coefficient²`), so the result is unit.
+            /// rounding: every other part within `256 ε Σ coefficient²`), so the result is unit;
+            /// elements far from unit scale are first rescaled by a power of two.
             /// `self rev(self)` is the module's own product. Fails when the norm is not
             /// positive, when `self rev(self)` has a 4-vector part (not a multiple of a versor),
             /// or a coefficient is not finite.
             pub fn normalize(&self) -> #err {
                 #cf::check_finite("normalize", self, self.iter())?;
+                // the result does not depend on the scale: far from 1, rescale by a power of two
+                if let ::core::option::Option::Some(k) = #cf::rescale(self.iter()) {
+                    return self.scale(&k).normalize();
+                }
                 let n: #mt<T> = self * &self.reverse();
                 let alpha = n.#scalar_field.clone();
                 if alpha.to_f64().is_nan() || alpha.to_f64() <= 0.0 {

@@ -295,6 +295,13 @@ fn log_branches_and_refusals() {
     let mut not_versor = R::<f64>::one();
     not_versor.e1234 = 0.5;
     assert!(not_versor.normalize().unwrap_err().to_string().contains("not a scalar"));
+    // far from unit scale: the same normalisation and logarithm (rescaled by a power of two)
+    let m = cga41::Bivector::<f64>::from_array([0.3, -0.2, 0.5, 0.1, 0.7, -0.4, 0.2, 0.6, -0.3, 0.25]).exp();
+    let l = m.log_unit().unwrap();
+    for s in [1e-300, 1e-200, 1e-31, 1e31, 1e200, 1e300] {
+        close("normalize at scale", &m.scale(&s).normalize().unwrap().to_multivector(), &m.to_multivector(), 1e-13);
+        close("log at scale", &m.scale(&s).log().unwrap().to_multivector(), &l.to_multivector(), 1e-13);
+    }
     // spacetime: a loxodromic rotor and its logarithm
     let lox = sta::Bivector::<f64>::e01() * 1.3 + sta::Bivector::e23() * 0.7;
     close("sta log", &lox.exp().log().unwrap().to_multivector(), &lox.to_multivector(), 1e-13);
