@@ -313,12 +313,9 @@ fn log_branches_and_refusals() {
     assert!((l.e01 - 0.5).abs() < 1e-13 && (l.e23 - 3.0).abs() < 1e-13, "{l}");
 }
 
-/// The closed-form `exp` against mpmath at 360 digits (`tests/fixtures/mpmath/general.json`,
-/// written by `tests/fixtures/mpmath/make_fixtures.py` with `expm` of the left-multiplication
-/// matrix): the non-simple bivectors of `R^4` (`g4`) and `R^{4,1}` (`cga`, diagonal) there.
-#[test]
-fn exp_matches_mpmath_fixtures() {
-    let text = include_str!("../../tests/fixtures/mpmath/general.json");
+/// `exp` of every `op = exp` case of an mpmath fixture through the closed form of the module
+/// named by its `algebra`, at `1e-13` of the largest coefficient; returns how many were checked.
+fn check_exp_fixture(text: &str) -> usize {
     let json: serde_json::Value = serde_json::from_str(text).unwrap();
     let num = |s: &str| -> f64 {
         match s.split_once('/') {
@@ -326,37 +323,46 @@ fn exp_matches_mpmath_fixtures() {
             None => s.parse().unwrap(),
         }
     };
+    macro_rules! exp_by {
+        ($m:ident, $b:ident, $e:ident, $input:expr) => {{
+            let b = $m::$b::from_array($m::$b::<f64>::MASKS.map(|m| $input[m as usize]));
+            $m::$e::<f64>::MASKS.iter().copied().zip(b.exp().iter().copied()).collect::<Vec<(u32, f64)>>()
+        }};
+    }
     let mut seen = 0;
     for case in json["cases"].as_array().unwrap() {
-        if case["op"] != "exp" {
+        if case.get("op").is_some_and(|op| op != "exp") {
             continue;
         }
         let input: Vec<f64> = case["input"].as_array().unwrap().iter().map(|v| num(v.as_str().unwrap())).collect();
         let output: Vec<f64> = case["output"].as_array().unwrap().iter().map(|v| num(v.as_str().unwrap())).collect();
-        let got: Vec<(u32, f64)> = match case["algebra"].as_str().unwrap() {
-            "cga" => {
-                let b = cga41::Bivector::from_array(cga41::Bivector::<f64>::MASKS.map(|m| input[m as usize]));
-                cga41::Motor::<f64>::MASKS.iter().copied().zip(b.exp().iter().copied()).collect()
-            }
-            "g4" => {
-                let b = r4::Bivector::from_array(r4::Bivector::<f64>::MASKS.map(|m| input[m as usize]));
-                r4::Rotor::<f64>::MASKS.iter().copied().zip(b.exp().iter().copied()).collect()
-            }
+        let got = match case["algebra"].as_str().unwrap() {
+            "cga" => exp_by!(cga41, Bivector, Motor, input),
+            "g4" => exp_by!(r4, Bivector, Rotor, input),
+            "sta" => exp_by!(sta, Bivector, Rotor, input),
+            "r31" => exp_by!(r31, Bivector, Rotor, input),
             other => panic!("unknown algebra {other}"),
         };
         let scale = output.iter().fold(1.0f64, |a, x| a.max(x.abs()));
         for (mask, x) in &got {
-            assert!(
-                (x - output[*mask as usize]).abs() < 1e-13 * scale,
-                "{}: blade {mask}: {x} vs {}",
-                case["algebra"],
-                output[*mask as usize]
-            );
+            let want = output[*mask as usize];
+            assert!((x - want).abs() < 1e-13 * scale, "{}: blade {mask}: {x} vs {want}", case["algebra"]);
         }
         // every coefficient outside the even type is zero in the reference
         let inside: Vec<u32> = got.iter().map(|(m, _)| *m).collect();
         assert!(output.iter().enumerate().all(|(m, x)| inside.contains(&(m as u32)) || x.abs() < 1e-30));
         seen += 1;
     }
-    assert_eq!(seen, 5);
+    seen
+}
+
+/// The closed-form `exp` against mpmath: the non-simple `R^4` and `R^{4,1}` bivectors of
+/// `tests/fixtures/mpmath/general.json` (360 digits, `make_fixtures.py`), and
+/// `invariant_exp.json` (40 digits, `invariant_exp.py`: loxodromic and random STA rotors,
+/// `R^{3,1}`, isoclinic, nearly isoclinic and near-π `R^4` rotations, a CGA screw and random
+/// CGA bivectors), both `expm` of the left-multiplication matrix.
+#[test]
+fn exp_matches_mpmath_fixtures() {
+    assert_eq!(check_exp_fixture(include_str!("../../tests/fixtures/mpmath/general.json")), 5);
+    assert_eq!(check_exp_fixture(include_str!("../../tests/fixtures/mpmath/invariant_exp.json")), 11);
 }
