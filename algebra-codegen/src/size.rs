@@ -126,9 +126,10 @@ pub(super) fn binary_body(names: &super::emit::Names, k: &super::plan::BinaryKer
     }
 }
 
-/// Whether a kernel with these per-output term counts is table-driven.
-pub(super) fn is_large<I: IntoIterator<Item = usize>>(lens: I) -> bool {
-    lens.into_iter().sum::<usize>() > TABLE_THRESHOLD
+/// Whether a kernel with these per-output term counts is table-driven under the threshold
+/// `table_above` ([`crate::ModuleSpec::table_above`]).
+pub(super) fn is_large<I: IntoIterator<Item = usize>>(table_above: usize, lens: I) -> bool {
+    lens.into_iter().sum::<usize>() > table_above
 }
 
 /// The matrix of `y ↦ self * y` inside a closed type, filled by a loop: `l[row][col] += c ·
