@@ -73,6 +73,8 @@ pub(super) struct Names {
     pub(super) masks: Vec<Vec<u32>>,
     /// Per field: `-1` when its name reverses the canonical orientation.
     pub(super) signs: Vec<Vec<i64>>,
+    /// The size policy's threshold ([`crate::ModuleSpec::table_above`]).
+    pub(super) table_above: usize,
 }
 
 impl Names {
@@ -98,7 +100,7 @@ impl Names {
         let fields = elements.iter().map(|es| es.iter().map(|e| ident(&field_name(e))).collect()).collect();
         let masks = plan.spec.types.iter().map(|t| t.elements.clone()).collect();
         let signs = plan.spec.types.iter().map(super::orient::field_signs).collect();
-        Names { types, fields, elements, masks, signs }
+        Names { types, fields, elements, masks, signs, table_above: plan.spec.table_above }
     }
 
     /// `expr` (a `T` place), cloned, negated when `sign` is `-1`.
@@ -540,7 +542,7 @@ fn inverse_method(plan: &Plan, names: &Names, i: usize) -> TokenStream {
             entries.entry((row, t.rhs)).or_default().push((t.coef, quote!(self.#f), false));
         }
     }
-    let large = super::size::is_large(k.outputs.iter().map(Vec::len));
+    let large = super::size::is_large(names.table_above, k.outputs.iter().map(Vec::len));
     let fill = if large {
         let mut flat = Vec::new();
         for (ko, terms) in k.outputs.iter().enumerate() {
@@ -576,7 +578,7 @@ fn inverse_method(plan: &Plan, names: &Names, i: usize) -> TokenStream {
 
 /// The body of a binary kernel: straight-line code, or a table loop above the size threshold.
 fn kernel_body(names: &Names, k: &BinaryKernel) -> TokenStream {
-    if super::size::is_large(k.outputs.iter().map(Vec::len)) {
+    if super::size::is_large(names.table_above, k.outputs.iter().map(Vec::len)) {
         return super::size::binary_body(names, k);
     }
     let (lf, rf, of) = (&names.fields[k.lhs], &names.fields[k.rhs], &names.fields[k.out]);

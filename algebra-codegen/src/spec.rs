@@ -227,6 +227,10 @@ pub struct ModuleSpec {
     /// emitted; `false` (the DSL's `closed_forms off;`) leaves them out, for a crate that gives
     /// the types its own methods of those names. Default `true`.
     pub closed_forms: bool,
+    /// The size policy's threshold: a kernel with more terms than this is a loop over a
+    /// constant table instead of straight-line code (the DSL's `table_above N;`, `gam codegen
+    /// --table-above N`). Default [`crate::size::TABLE_THRESHOLD`].
+    pub table_above: usize,
 }
 
 impl ModuleSpec {
@@ -270,6 +274,7 @@ impl ModuleSpec {
             serde: false,
             parity_types: true,
             closed_forms: true,
+            table_above: crate::size::TABLE_THRESHOLD,
         })
     }
 

@@ -206,7 +206,7 @@ pub(super) fn action_items(names: &Names, k: &ActionKernel) -> TokenStream {
     let (trait_name, method) = names_of(k.convention);
     // straight-line kernels are always inlined: LLVM declined the `#[inline]` hint for the
     // conformal point action, and the call cost 7 % (1.38 → 1.31 × the motor product)
-    let large = super::size::is_large(k.stage1.iter().chain(&k.stage2).map(Vec::len));
+    let large = super::size::is_large(names.table_above, k.stage1.iter().chain(&k.stage2).map(Vec::len));
     let (body, inline) = if large {
         (table_body(names, k), quote!(#[inline]))
     } else {

@@ -29,6 +29,9 @@
 //! - `closed_forms on;` (default) or `closed_forms off;`: whether the closed-form `exp`, `log`,
 //!   `log_unit`, `normalize`, `sqrt`, `pow` detected from the tables are emitted (`off` for a
 //!   crate that gives the types its own methods of those names, as `motion` does for `Pose`).
+//! - `table_above N;`: the size policy's threshold (default
+//!   `algebra_codegen::size::TABLE_THRESHOLD`): a kernel with more than `N` terms is a loop over
+//!   a constant table, one with at most `N` straight-line code (docs/codegen.md, "Size policy").
 //! - `types { Name = selector; ... }` with selectors `grade K`, `even`, `odd`, `all`, or a
 //!   list `[1, e12, ...]`; doc comments on types are kept. A type may declare a polynomial
 //!   constraint after its selector: `Motor = even where unit;` (`rev(x) x = 1`),
@@ -94,6 +97,7 @@ struct Decl {
     serde: bool,
     parity_types: bool,
     closed_forms: bool,
+    table_above: Option<usize>,
 }
 
 fn parse_value(input: ParseStream) -> syn::Result<Q> {
@@ -132,6 +136,7 @@ impl Parse for Decl {
         braced!(body in input);
         let (mut generators, mut metric, mut basis, mut types) = (None, None, Basis::Blade, None);
         let (mut serde, mut parity_types, mut closed_forms) = (false, true, true);
+        let mut table_above = None;
         let mut metric_span = proc_macro2::Span::call_site();
         while !body.is_empty() {
             let key: Ident = body.parse()?;
@@ -199,6 +204,15 @@ impl Parse for Decl {
                     };
                     body.parse::<Token![;]>()?;
                 }
+                "table_above" => {
+                    let bad = |span| syn::Error::new(span, "expected a number of terms, e.g. `table_above 256;`");
+                    if !body.peek(LitInt) {
+                        return Err(bad(body.span()));
+                    }
+                    let n: LitInt = body.parse()?;
+                    table_above = Some(n.base10_parse::<usize>().map_err(|_| bad(n.span()))?);
+                    body.parse::<Token![;]>()?;
+                }
                 "basis" => {
                     let b: Ident = body.parse()?;
                     basis = match b.to_string().as_str() {
@@ -262,7 +276,7 @@ impl Parse for Decl {
                     return Err(syn::Error::new(
                         key.span(),
                         format!(
-                            "unknown section `{other}` (expected generators, metric, basis, fallback, closed_forms, derive or types)"
+                            "unknown section `{other}` (expected generators, metric, basis, fallback, closed_forms, table_above, derive or types)"
                         ),
                     ));
                 }
@@ -292,6 +306,7 @@ impl Parse for Decl {
             serde,
             parity_types,
             closed_forms,
+            table_above,
         })
     }
 }
@@ -375,6 +390,9 @@ fn expand(decl: Decl) -> syn::Result<proc_macro2::TokenStream> {
     spec.serde = decl.serde;
     spec.parity_types = decl.parity_types;
     spec.closed_forms = decl.closed_forms;
+    if let Some(n) = decl.table_above {
+        spec.table_above = n;
+    }
     let plan = Plan::new(spec).map_err(|e| syn::Error::new(decl.name.span(), e))?;
     let mut items = algebra_codegen::emit::module_items(&plan);
     items.extend(algebra_codegen::constraint::methods(&plan).map_err(|e| syn::Error::new(decl.name.span(), e))?);

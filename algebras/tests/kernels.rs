@@ -13,9 +13,10 @@
 //!
 //! **Exact scalar.** The exact checks run over `algebra_core::rational::Q` itself (a
 //! `BigRational`, not `Copy`): the generator's size policy emits every kernel with more than
-//! `TABLE_THRESHOLD` terms (the dense 5-generator products) as a loop over a constant table,
-//! so this target compiles in about a minute instead of the quarter of an hour the unrolled
-//! `Q` kernels took.
+//! `TABLE_THRESHOLD` (128) terms, 256 in `cga` (`table_above 256;`), as a loop over a constant
+//! table (the dense 5-generator products), so this target compiles in about a minute instead
+//! of the quarter of an hour the unrolled `Q` kernels took. Kernels of 129-256 terms are
+//! checked here in both forms: straight-line in `cga`, tables in `cga_null`'s larger types.
 //!
 //! Test paths read `module::lhs::rhs::{q, f64}` (the eight products),
 //! `module::ty::{unary_q, unary_f64}`, `module::versors::v::{sandwich_q, sandwich_f64}`

@@ -123,6 +123,11 @@ enum Command {
         /// multivector: parity (automatic Even/Odd types) or full (the full multivector).
         #[arg(long, value_enum, value_name = "KIND", default_value = "parity")]
         fallback: codegen::Fallback,
+        /// The size policy's threshold (the DSL's `table_above N;`): a kernel with more than N
+        /// terms is a loop over a constant table, one with at most N straight-line code
+        /// (default: the generator's, see docs/codegen.md "Size policy").
+        #[arg(long, value_name = "N")]
+        table_above: Option<usize>,
     },
     /// Control poses of a motion segment from its end conditions (Secs. 4-5 of the main paper).
     Hermite {
@@ -266,9 +271,30 @@ fn run(command: Command) -> Result<(String, Option<CliError>), CliError> {
             commands::eval(&commands::EvalArgs { algebra, basis, scalar, json, expr })
         }
         Command::Table { algebra, basis, product, json } => commands::table(&algebra, basis, product, json),
-        Command::Codegen { algebra, types, basis, emit, module, json, standalone, constrain, fallback } => {
-            let args =
-                codegen::CodegenArgs { algebra, types, basis, emit, module, json, standalone, constrain, fallback };
+        Command::Codegen {
+            algebra,
+            types,
+            basis,
+            emit,
+            module,
+            json,
+            standalone,
+            constrain,
+            fallback,
+            table_above,
+        } => {
+            let args = codegen::CodegenArgs {
+                algebra,
+                types,
+                basis,
+                emit,
+                module,
+                json,
+                standalone,
+                constrain,
+                fallback,
+                table_above,
+            };
             codegen::codegen(&args)
         }
         Command::Hermite { json, spec } => hermite::hermite(&spec, json),

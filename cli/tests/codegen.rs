@@ -130,6 +130,36 @@ fn fallback_full_turns_the_parity_types_off() {
     assert!(!bad.status.success());
 }
 
+/// `--table-above N` is the DSL's `table_above N;`: the 48-term g123inf motor product is
+/// straight-line code under the default and a table loop when the threshold is below 48; the
+/// header's regeneration command keeps the option; a bad value is a usage error.
+#[test]
+fn table_above_sets_the_size_policy() {
+    let motor_product = |extra: &[&str]| {
+        let mut args = vec!["codegen", "--algebra", "g123inf", "--types", "Motor=even"];
+        args.extend_from_slice(extra);
+        let out = gam(&args);
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        let source = String::from_utf8(out.stdout).unwrap();
+        let start = source.find("::algebra_core::ops::GeometricProduct<Motor<T>>\n    for Motor<T> {").unwrap();
+        let end = start + 1 + source[start + 1..].find("    impl<").unwrap();
+        (source[..source.find("pub use").unwrap()].to_string(), source[start..end].to_string())
+    };
+    let (_, default) = motor_product(&[]);
+    assert!(!default.contains("TERMS"), "{default}");
+    let (_, at_48) = motor_product(&["--table-above", "48"]);
+    assert_eq!(at_48, default);
+    let (header, at_47) = motor_product(&["--table-above", "47"]);
+    assert!(at_47.contains("const TERMS: [(u16, u16, u16); 48usize]"), "{at_47}");
+    assert!(header.contains("--table-above 47"), "{header}");
+    for bad in ["many", "-1", "1.5"] {
+        let out = gam(&["codegen", "--algebra", "g3", "--types", "Vector=grade1", "--table-above", bad]);
+        assert_eq!(out.status.code(), Some(2), "{bad}");
+        let err = String::from_utf8(out.stderr).unwrap();
+        assert!(err.starts_with("error: ") && err.lines().count() == 1, "{err}");
+    }
+}
+
 /// `where unit` in --types declares the constraint in the module: `--emit stats` shows the
 /// constrained kernels with what they save (the same as `--constrain`), `--emit rust` uses
 /// them in the unit actions; an unknown constraint is a usage error.
