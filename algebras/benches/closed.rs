@@ -19,7 +19,7 @@ mod interleaved;
 use algebra_core::test_support::Xorshift;
 use criterion::Criterion;
 use gam_algebras::g123inf::{Bivector, Motor};
-use interleaved::{Kernel, median, ratio, times};
+use interleaved::{Kernel, report_vs_first};
 use std::hint::black_box;
 use std::time::Duration;
 
@@ -135,15 +135,6 @@ const SERIES_KERNELS: [(&str, Kernel<Data>); 3] = [
     ("runtime series log", log_series),
 ];
 
-fn report(title: &str, kernels: &[(&str, Kernel<Data>)], d: &Data, rounds: usize, per: usize) {
-    let t = times(kernels, d, rounds, per);
-    println!("\ninterleaved ({rounds} rounds): {title}");
-    println!("  {:<32} {:>12} {:>22}", "kernel", "ns/element", "ratio to motor product");
-    for (i, (name, _)) in kernels.iter().enumerate() {
-        println!("  {name:<32} {:>12.2} {:>22.3}", median(t[i].clone()) * 1e9, ratio(&t, i, 0));
-    }
-}
-
 fn main() {
     let d = data();
     let mut c = Criterion::default()
@@ -154,7 +145,7 @@ fn main() {
     c.final_summary();
     // `cargo bench` passes `--bench`; skip the report when the bench is run as a test.
     if std::env::args().any(|a| a == "--bench") {
-        report("closed forms vs the g123inf motor product (f64)", &KERNELS, &d, 4000, BATCH);
-        report("runtime series vs the motor product (f64)", &SERIES_KERNELS, &d, 100, SERIES);
+        report_vs_first("closed forms vs the g123inf motor product (f64)", "motor product", &KERNELS, &d, 4000, BATCH);
+        report_vs_first("runtime series vs the motor product (f64)", "motor product", &SERIES_KERNELS, &d, 100, SERIES);
     }
 }

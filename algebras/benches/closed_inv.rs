@@ -17,7 +17,7 @@ mod interleaved;
 mod user_cga41;
 
 use algebra_core::test_support::Xorshift;
-use interleaved::{Kernel, median, ratio, times};
+use interleaved::{Kernel, report_vs_first};
 use std::hint::black_box;
 use user_cga41::cga41::{Bivector, Motor};
 
@@ -88,15 +88,6 @@ fn log_series(d: &Data) -> f64 {
     0.0
 }
 
-fn report(title: &str, kernels: &[(&str, Kernel<Data>)], d: &Data, rounds: usize, per: usize) {
-    let t = times(kernels, d, rounds, per);
-    println!("\ninterleaved ({rounds} rounds): {title}");
-    println!("  {:<32} {:>12} {:>22}", "kernel", "ns/element", "ratio to motor product");
-    for (i, (name, _)) in kernels.iter().enumerate() {
-        println!("  {name:<32} {:>12.2} {:>22.3}", median(t[i].clone()) * 1e9, ratio(&t, i, 0));
-    }
-}
-
 fn main() {
     // `cargo bench` passes `--bench`; skip the report when the bench is run as a test.
     if !std::env::args().any(|a| a == "--bench") {
@@ -105,8 +96,15 @@ fn main() {
     let d = data();
     let closed: [(&str, Kernel<Data>); 3] =
         [("cga41 Motor * Motor", product), ("cga41 Bivector::exp", exp), ("cga41 Motor::log_unit", log_unit)];
-    report("invariant decomposition vs the R^{4,1} motor product (f64)", &closed, &d, 2000, BATCH);
+    report_vs_first(
+        "invariant decomposition vs the R^{4,1} motor product (f64)",
+        "motor product",
+        &closed,
+        &d,
+        2000,
+        BATCH,
+    );
     let series: [(&str, Kernel<Data>); 3] =
         [("cga41 Motor * Motor", product_few), ("runtime series exp", exp_series), ("runtime series log", log_series)];
-    report("runtime series vs the motor product (f64)", &series, &d, 100, SERIES);
+    report_vs_first("runtime series vs the motor product (f64)", "motor product", &series, &d, 100, SERIES);
 }

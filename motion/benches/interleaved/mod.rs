@@ -49,3 +49,16 @@ pub fn print_medians<D>(kernels: &[(&str, Kernel<D>)], times: &[Vec<f64>]) {
 pub fn ratio(times: &[Vec<f64>], a: usize, b: usize) -> f64 {
     median(times[a].iter().zip(&times[b]).map(|(x, y)| x / y).collect())
 }
+
+/// Times `kernels` interleaved (`rounds` rounds, `per` elements per call) and prints each one's
+/// median time per element and its median ratio to the first kernel (named in `against`).
+/// (Used by the `gam-algebras` benches, which include this file by path.)
+#[allow(dead_code)]
+pub fn report_vs_first<D>(title: &str, against: &str, kernels: &[(&str, Kernel<D>)], d: &D, rounds: usize, per: usize) {
+    let t = times(kernels, d, rounds, per);
+    println!("\ninterleaved ({rounds} rounds): {title}");
+    println!("  {:<32} {:>12} {:>22}", "kernel", "ns/element", format!("ratio to {against}"));
+    for (i, (name, _)) in kernels.iter().enumerate() {
+        println!("  {name:<32} {:>12.2} {:>22.3}", median(t[i].clone()) * 1e9, ratio(&t, i, 0));
+    }
+}
