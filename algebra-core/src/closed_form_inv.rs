@@ -269,16 +269,6 @@ fn atan_factor<T: Real>(x: &T) -> T {
     if xf > 0.0 { t.atan2(&T::one()) / t } else { t.atanh() / t }
 }
 
-/// `atan(z)/z` or `atanh(z)/z` (`hyper`), by its series for small `z`.
-fn atan_c<T: Real>(z: &T, hyper: bool) -> T {
-    if z.to_f64().abs() < 1e-3 {
-        let z2 = z.mul_ref(z);
-        let s = if hyper { T::one() } else { -T::one() };
-        return T::one() + s.clone() * z2.clone() * T::from_ratio(1, 3) + z2.mul_ref(&z2) * T::from_ratio(1, 5);
-    }
-    if hyper { z.atanh() / z.clone() } else { z.atan2(&T::one()) / z.clone() }
-}
-
 /// The divided difference `A[x, y]` of [`atan_factor`] without cancellation: its series for
 /// `|x|, |y| <= 1/4`; the quotient when `|x - y| >= max(|x|, |y|)/2`; otherwise (one sign) from
 /// `atan t1 - atan t2 = atan((t1 - t2)/(1 + t1 t2))` (`atanh` and `1 - t1 t2` for `x < 0`).
@@ -308,7 +298,9 @@ fn atan_factor_divided<T: Real>(x: &T, y: &T) -> T {
     let z = (t1.clone() - t2.clone()) / den.clone();
     let at2 = if hyper { t2.atanh() } else { t2.atan2(&T::one()) };
     // (t2 atan t1 - t1 atan t2)/(t1 - t2), then over t1 t2 (t1² - t2²) = ±(x - y) t1 t2
-    let bracket = t2.clone() * atan_c(&z, hyper) / den - at2;
+    // atan(z)/z = A(z²), atanh(z)/z = A(-z²)
+    let z2 = z.mul_ref(&z);
+    let bracket = t2.clone() * atan_factor(&(if hyper { -z2 } else { z2 })) / den - at2;
     let out = bracket / (p * (t1 + t2));
     if hyper { -out } else { out }
 }
