@@ -21,10 +21,11 @@ use super::emit::{Names, sum};
 use super::plan::{Plan, Ratio, to_ratio};
 use super::{CodegenError, ModuleSpec};
 use algebra_core::rational::Q;
-use algebra_core::tables::{Product, Unary};
+use algebra_core::tables::{Product, ProductTable, Unary};
 use num_traits::{Signed, Zero};
 use proc_macro2::TokenStream;
 use quote::quote;
+use std::collections::BTreeMap;
 
 /// The sign of the quadratic form `q` with `B² = q` (or `q + cI`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -102,46 +103,57 @@ pub fn detect(spec: &ModuleSpec, closed: &[bool]) -> Result<Vec<ClosedForm>, Cod
     Ok(out)
 }
 
-fn pair(spec: &ModuleSpec, b: usize, m: usize) -> Result<Option<ClosedForm>, CodegenError> {
-    let alg = &spec.algebra;
+/// `W`, the elements of `M` other than `1` and `B`'s, when the pair can have a closed form of
+/// any family: `B` not empty and made of two-generator elements inside `M`, `1` in `M`,
+/// `rev(e) = -e` on `B` and `rev(w) = w` on `W`. `None` otherwise.
+pub(super) fn even_rest(spec: &ModuleSpec, b: usize, m: usize) -> Option<Vec<u32>> {
     let (bm, mm) = (&spec.types[b].elements, &spec.types[m].elements);
     if b == m || bm.is_empty() || !mm.contains(&0) || !bm.iter().all(|x| x.count_ones() == 2 && mm.contains(x)) {
-        return Ok(None);
+        return None;
     }
     let rest: Vec<u32> = mm.iter().copied().filter(|x| *x != 0 && !bm.contains(x)).collect();
+    let rev = spec.algebra.tables().unary(spec.basis, Unary::Reverse);
+    let reversed = |x: u32, s: i64| rev.image(x).is_ok_and(|im| im.len() == 1 && im[0].0 == x && im[0].1 == int(s));
+    (bm.iter().all(|&x| reversed(x, -1)) && rest.iter().all(|&x| reversed(x, 1))).then_some(rest)
+}
+
+/// The symmetric square `x y + y x` (or `x x`) of two basis elements, as `(mask, coefficient)`
+/// with the zero coefficients dropped.
+pub(super) fn sym(gp: &ProductTable, x: u32, y: u32) -> BTreeMap<u32, Q> {
+    let mut out = BTreeMap::new();
+    let mut add = |terms: &[(u32, Q)]| {
+        for (k, c) in terms {
+            *out.entry(*k).or_insert_with(Q::zero) += c.clone();
+        }
+    };
+    add(gp.get(x, y).expect("masks of the spec's algebra"));
+    if x != y {
+        add(gp.get(y, x).expect("masks of the spec's algebra"));
+    }
+    out.retain(|_, c| !c.is_zero());
+    out
+}
+
+fn pair(spec: &ModuleSpec, b: usize, m: usize) -> Result<Option<ClosedForm>, CodegenError> {
+    let Some(rest) = even_rest(spec, b, m) else { return Ok(None) };
     if rest.len() > 1 {
         return Ok(None);
     }
+    let (bm, mm) = (&spec.types[b].elements, &spec.types[m].elements);
     let i = rest.first().copied();
-    let tables = alg.tables();
-    let (gp, rev) = (tables.product(spec.basis, Product::Geometric), tables.unary(spec.basis, Unary::Reverse));
+    let gp = spec.algebra.tables().product(spec.basis, Product::Geometric);
     let get = |x: u32, y: u32| gp.get(x, y).expect("masks of the spec's algebra").to_vec();
-    let q = |c: &Q| -> Q { c.clone() };
-    // rev(e_b) = -e_b, rev(I) = I
-    let reversed = |x: u32, s: i64| rev.image(x).is_ok_and(|im| im.len() == 1 && im[0].0 == x && im[0].1 == int(s));
-    if !bm.iter().all(|&x| reversed(x, -1)) || i.is_some_and(|x| !reversed(x, 1)) {
-        return Ok(None);
-    }
     let mut square = vec![Q::zero(); bm.len()];
     let mut half_c = Vec::new();
     for (ia, &x) in bm.iter().enumerate() {
         for (ib, &y) in bm.iter().enumerate().skip(ia) {
-            let mut terms = get(x, y);
-            if ia != ib {
-                terms.extend(get(y, x));
-            }
             let mut scalar = Q::zero();
             let mut ipart = Q::zero();
-            for (k, c) in &terms {
-                match *k {
-                    0 => scalar += q(c),
-                    k if Some(k) == i => ipart += q(c),
-                    _ => {
-                        let total: Q = terms.iter().filter(|(kk, _)| kk == k).map(|(_, c)| c.clone()).sum();
-                        if !total.is_zero() {
-                            return Ok(None);
-                        }
-                    }
+            for (k, c) in sym(gp, x, y) {
+                match k {
+                    0 => scalar = c,
+                    k if Some(k) == i => ipart = c,
+                    _ => return Ok(None),
                 }
             }
             if ia == ib {

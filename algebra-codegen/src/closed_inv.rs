@@ -14,13 +14,13 @@
 //! diagonal and a null basis, spacetime algebra, `R^{3,1}` and Euclidean `R^4`. The two earlier
 //! families ([`crate::closed`]) keep priority.
 
-use super::closed::{ClosedForm, Family};
+use super::closed::{ClosedForm, Family, even_rest, sym};
 use super::emit::Names;
 use super::plan::{Plan, to_ratio};
 use super::sums::sum;
 use super::{CodegenError, ModuleSpec};
 use algebra_core::rational::Q;
-use algebra_core::tables::{Product, Unary};
+use algebra_core::tables::Product;
 use num_traits::Zero;
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
@@ -44,26 +44,6 @@ pub struct Invariant {
     pub bq: Vec<Vec<(usize, usize, Q)>>,
 }
 
-fn int(n: i64) -> Q {
-    Q::from_integer(n.into())
-}
-
-/// The symmetric square `x y + y x` (or `x x`) of two basis elements, as `(mask, coefficient)`.
-fn sym(gp: &algebra_core::tables::ProductTable, x: u32, y: u32) -> BTreeMap<u32, Q> {
-    let mut out = BTreeMap::new();
-    let mut add = |terms: &[(u32, Q)]| {
-        for (k, c) in terms {
-            *out.entry(*k).or_insert_with(Q::zero) += c.clone();
-        }
-    };
-    add(gp.get(x, y).expect("masks of the spec's algebra"));
-    if x != y {
-        add(gp.get(y, x).expect("masks of the spec's algebra"));
-    }
-    out.retain(|_, c| !c.is_zero());
-    out
-}
-
 /// The invariant-decomposition pair `(B, M)`, if the tables qualify (see the module docs).
 ///
 /// ```
@@ -77,20 +57,12 @@ fn sym(gp: &algebra_core::tables::ProductTable, x: u32, y: u32) -> BTreeMap<u32,
 /// assert_eq!(inv.quad.len(), 5); // the five 4-vectors of R^{4,1}
 /// ```
 pub fn pair(spec: &ModuleSpec, b: usize, m: usize) -> Result<Option<ClosedForm>, CodegenError> {
-    let (bm, mm) = (&spec.types[b].elements, &spec.types[m].elements);
-    if b == m || bm.is_empty() || !mm.contains(&0) || !bm.iter().all(|x| x.count_ones() == 2 && mm.contains(x)) {
-        return Ok(None);
-    }
-    let quad: Vec<u32> = mm.iter().copied().filter(|x| *x != 0 && !bm.contains(x)).collect();
+    let Some(quad) = even_rest(spec, b, m) else { return Ok(None) };
     if quad.is_empty() {
         return Ok(None);
     }
-    let tables = spec.algebra.tables();
-    let (gp, rev) = (tables.product(spec.basis, Product::Geometric), tables.unary(spec.basis, Unary::Reverse));
-    let reversed = |x: u32, s: i64| rev.image(x).is_ok_and(|im| im.len() == 1 && im[0].0 == x && im[0].1 == int(s));
-    if !bm.iter().all(|&x| reversed(x, -1)) || !quad.iter().all(|&x| reversed(x, 1)) {
-        return Ok(None);
-    }
+    let bm = &spec.types[b].elements;
+    let gp = spec.algebra.tables().product(spec.basis, Product::Geometric);
     // B² = s + Q with Q in span(W)
     let (mut s, mut q) = (Vec::new(), vec![Vec::new(); quad.len()]);
     for (i, &x) in bm.iter().enumerate() {
