@@ -480,18 +480,26 @@ fn items(plan: &Plan, names: &Names, c: &ClosedForm) -> Result<TokenStream, Code
     } else {
         quote!(Ok(self.scale(&(T::one() / alpha.sqrt()))))
     };
-    // `normalize` and `log` do not depend on the scale: far from 1, rescale by a power of two
-    let rescaled = |method: TokenStream| {
+    // The start of `normalize` and `log` (named `op`): finite coefficients, the norm `alpha`,
+    // a rescaling by a power of two far from unit scale (neither depends on the scale), and a
+    // positive norm.
+    let prologue = |op: &str| {
+        let method = proc_macro2::Ident::new(op, proc_macro2::Span::call_site());
         quote! {
+            #cf::check_finite(#op, self, self.iter())?;
+            let alpha = self.#scalar_field.mul_ref(&self.#scalar_field) - (#qm);
             // (no let-chain: the code compiles in the user's edition)
             if !(alpha.to_f64() >= 1e-60 && alpha.to_f64() <= 1e60) {
                 if let Some(k) = #cf::rescale(self.iter()) {
                     return self.scale(&k).#method();
                 }
             }
+            if alpha.to_f64().is_nan() || alpha.to_f64() <= 0.0 {
+                return Err(#cf::undefined(#op, self.to_string(), "the norm self rev(self) is not positive"));
+            }
         }
     };
-    let (rescaled_normalize, rescaled_log) = (rescaled(quote!(normalize)), rescaled(quote!(log)));
+    let (normalize_prologue, log_prologue) = (prologue("normalize"), prologue("log"));
     let bdoc = format!(
         " The exponential in closed form (`algebra_core::closed_form`): a unit `{mt}`. An unchecked kernel: a NaN or infinite coefficient gives NaN coefficients (use `try_exp` for input of unknown origin)."
     );
@@ -514,12 +522,7 @@ fn items(plan: &Plan, names: &Names, c: &ClosedForm) -> Result<TokenStream, Code
             /// central nilpotent element, if any). Fails when the norm is not positive or a
             /// coefficient is not finite.
             pub fn normalize(&self) -> #err {
-                #cf::check_finite("normalize", self, self.iter())?;
-                let alpha = self.#scalar_field.mul_ref(&self.#scalar_field) - (#qm);
-                #rescaled_normalize
-                if alpha.to_f64().is_nan() || alpha.to_f64() <= 0.0 {
-                    return Err(#cf::undefined("normalize", self.to_string(), "the norm self rev(self) is not positive"));
-                }
+                #normalize_prologue
                 #norm_tail
             }
 
@@ -527,12 +530,7 @@ fn items(plan: &Plan, names: &Names, c: &ClosedForm) -> Result<TokenStream, Code
             /// `exp(B) = normalize(self)` (rotation angle `θ ∈ [0, π)`). Fails when `normalize`
             /// does, and for a full turn (`θ = π`, no unique axis).
             pub fn log(&self) -> #berr {
-                #cf::check_finite("log", self, self.iter())?;
-                let alpha = self.#scalar_field.mul_ref(&self.#scalar_field) - (#qm);
-                #rescaled_log
-                if alpha.to_f64().is_nan() || alpha.to_f64() <= 0.0 {
-                    return Err(#cf::undefined("log", self.to_string(), "the norm self rev(self) is not positive"));
-                }
+                #log_prologue
                 #log_full
                 #pk_full
                 Ok(#bt { #(#log_fields),* })
