@@ -27,27 +27,47 @@ pub enum Fallback {
 }
 
 /// The arguments of `gam codegen`.
-#[derive(Debug)]
+#[derive(Debug, clap::Args)]
 pub struct CodegenArgs {
-    /// Built-in name or TOML path.
+    #[arg(long, value_name = "NAME", default_value = "cga-null", help = crate::algebra_help())]
     pub algebra: String,
-    /// `Name=selector;...`.
+    /// The types: "Name=selector;..." with selectors `grade K`, `even`, `odd`, `all` or a
+    /// comma list of basis names, e.g. "Motor=1,e12,e13,e23,e1inf,e2inf,e3inf,e123inf;Vector=grade1";
+    /// a selector may end in `where unit|null|simple` (constrained kernels as methods).
+    #[arg(long, value_name = "TYPES")]
     pub types: String,
-    /// The basis the types refer to.
+    /// The basis the element names refer to: blade or product.
+    #[arg(long, value_name = "B", default_value = "blade")]
     pub basis: Basis,
-    /// What to print.
+    /// rust (formatted source) or stats (operation counts per kernel).
+    #[arg(long, value_enum, value_name = "WHAT", default_value = "rust")]
     pub emit: Emit,
-    /// The module name (default: the algebra name with `-` as `_`).
+    /// The module name (default: the algebra name, `-` as `_`). With --standalone: wrap the
+    /// items in `pub mod NAME` (default: no wrapper).
+    #[arg(long, value_name = "NAME")]
     pub module: Option<String>,
-    /// JSON output.
+    /// Print JSON: for stats a list of {"op","lhs","rhs","out","mul","add"}; for rust
+    /// {"module","source"}.
+    #[arg(long)]
     pub json: bool,
-    /// A dependency-free file (`--standalone`).
+    /// A file with no dependency: scalar and product traits inlined (for f32/f64), no
+    /// conversions to the runtime multivector, items at the top level.
+    #[arg(long)]
     pub standalone: bool,
-    /// `TYPE=unit|null|simple` constraints (`--constrain`, with `--emit stats`).
+    /// With --emit stats: a polynomial constraint TYPE=unit (rev(x) x = 1), TYPE=null
+    /// (x x = 0) or TYPE=simple (x ∧ x = 0), repeatable, as `TYPE=... where KIND` in
+    /// --types; adds rows for the kernels reduced modulo the constraints (the vanishing
+    /// outputs proven and dropped) with what each saves.
+    #[arg(long, value_name = "TYPE=KIND")]
     pub constrain: Vec<String>,
-    /// `--fallback parity|full`.
+    /// Where a result outside every declared type lands when no type is the full
+    /// multivector: parity (automatic Even/Odd types) or full (the full multivector).
+    #[arg(long, value_enum, value_name = "KIND", default_value = "parity")]
     pub fallback: Fallback,
-    /// `--table-above N`: the size policy's threshold (default the generator's).
+    /// The size policy's threshold (the DSL's `table_above N;`): a kernel with more than N
+    /// terms is a loop over a constant table, one with at most N straight-line code
+    /// (default: the generator's, see docs/codegen.md "Size policy").
+    #[arg(long, value_name = "N")]
     pub table_above: Option<usize>,
 }
 

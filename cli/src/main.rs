@@ -39,7 +39,7 @@ struct Cli {
 }
 
 /// The `--algebra` help, naming the built-ins from algebra-core's one table.
-fn algebra_help() -> String {
+pub(crate) fn algebra_help() -> String {
     format!("A built-in algebra ({}) or a path to a TOML file", algebra_core::algebra::builtin_names())
 }
 
@@ -87,48 +87,7 @@ enum Command {
         json: bool,
     },
     /// Generate the Rust module of the `algebra!` macro (or its kernels' operation counts).
-    Codegen {
-        #[arg(long, value_name = "NAME", default_value = "cga-null", help = algebra_help())]
-        algebra: String,
-        /// The types: "Name=selector;..." with selectors `grade K`, `even`, `odd`, `all` or a
-        /// comma list of basis names, e.g. "Motor=1,e12,e13,e23,e1inf,e2inf,e3inf,e123inf;Vector=grade1";
-        /// a selector may end in `where unit|null|simple` (constrained kernels as methods).
-        #[arg(long, value_name = "TYPES")]
-        types: String,
-        /// The basis the element names refer to: blade or product.
-        #[arg(long, value_name = "B", default_value = "blade")]
-        basis: Basis,
-        /// rust (formatted source) or stats (operation counts per kernel).
-        #[arg(long, value_enum, value_name = "WHAT", default_value = "rust")]
-        emit: codegen::Emit,
-        /// The module name (default: the algebra name, `-` as `_`). With --standalone: wrap the
-        /// items in `pub mod NAME` (default: no wrapper).
-        #[arg(long, value_name = "NAME")]
-        module: Option<String>,
-        /// Print JSON: for stats a list of {"op","lhs","rhs","out","mul","add"}; for rust
-        /// {"module","source"}.
-        #[arg(long)]
-        json: bool,
-        /// A file with no dependency: scalar and product traits inlined (for f32/f64), no
-        /// conversions to the runtime multivector, items at the top level.
-        #[arg(long)]
-        standalone: bool,
-        /// With --emit stats: a polynomial constraint TYPE=unit (rev(x) x = 1), TYPE=null
-        /// (x x = 0) or TYPE=simple (x ∧ x = 0), repeatable, as `TYPE=... where KIND` in
-        /// --types; adds rows for the kernels reduced modulo the constraints (the vanishing
-        /// outputs proven and dropped) with what each saves.
-        #[arg(long, value_name = "TYPE=KIND")]
-        constrain: Vec<String>,
-        /// Where a result outside every declared type lands when no type is the full
-        /// multivector: parity (automatic Even/Odd types) or full (the full multivector).
-        #[arg(long, value_enum, value_name = "KIND", default_value = "parity")]
-        fallback: codegen::Fallback,
-        /// The size policy's threshold (the DSL's `table_above N;`): a kernel with more than N
-        /// terms is a loop over a constant table, one with at most N straight-line code
-        /// (default: the generator's, see docs/codegen.md "Size policy").
-        #[arg(long, value_name = "N")]
-        table_above: Option<usize>,
-    },
+    Codegen(codegen::CodegenArgs),
     /// Control poses of a motion segment from its end conditions (Secs. 4-5 of the main paper).
     Hermite {
         /// Print one JSON object: {"control_poses", "velocity_bivectors", "velocity_indicatrices"}.
@@ -271,32 +230,7 @@ fn run(command: Command) -> Result<(String, Option<CliError>), CliError> {
             commands::eval(&commands::EvalArgs { algebra, basis, scalar, json, expr })
         }
         Command::Table { algebra, basis, product, json } => commands::table(&algebra, basis, product, json),
-        Command::Codegen {
-            algebra,
-            types,
-            basis,
-            emit,
-            module,
-            json,
-            standalone,
-            constrain,
-            fallback,
-            table_above,
-        } => {
-            let args = codegen::CodegenArgs {
-                algebra,
-                types,
-                basis,
-                emit,
-                module,
-                json,
-                standalone,
-                constrain,
-                fallback,
-                table_above,
-            };
-            codegen::codegen(&args)
-        }
+        Command::Codegen(args) => codegen::codegen(&args),
         Command::Hermite { json, spec } => hermite::hermite(&spec, json),
         Command::Interpolate { json, spec } => interpolate::interpolate(&spec, json),
         Command::Trajectory { json, spec, point } => trajectory::trajectory(&spec, &point, json),
