@@ -15,7 +15,8 @@
 
 use super::data::{Series, Shape, of_motion};
 use crate::error::CliError;
-use crate::interpolate::{pose_in, usage};
+use crate::interpolate::usage;
+use motion::schema::PoseObject;
 use motion::{AdditiveBezier, MultiplicativeBezier, Piecewise, Pose};
 use serde_json::{Value, json};
 
@@ -48,7 +49,12 @@ fn segment(path: &str, i: usize, v: &Value) -> Result<Segment, CliError> {
     let control = poses
         .iter()
         .enumerate()
-        .map(|(j, mv)| pose_in(path, &format!("segments[{i}].control_poses[{j}]"), &json!({ "motor": mv })))
+        .map(|(j, mv)| {
+            let at = format!("segments[{i}].control_poses[{j}]");
+            PoseObject::from_value(&json!({ "motor": mv }))
+                .and_then(|p| p.to_pose())
+                .map_err(|e| usage(path, e.at(&at)))
+        })
         .collect::<Result<Vec<_>, _>>()?;
     Ok(Segment { t0: number("t0")?, t1: number("t1")?, representation, control })
 }
