@@ -218,7 +218,7 @@ impl ParameterSpec {
 /// let spec = InterpolateSpec::from_value(&serde_json::json!({
 ///     "method": "ccm-multiplicative", "shape": [1, 2],
 ///     "poses": [{"position": [0, 0, 0]}, {"motor": {"1": 1, "e1inf": -0.5}}]}))?;
-/// assert_eq!((spec.method, spec.shape), (Method::CcmMultiplicative, Some(PerPose::Each(vec![1.0, 2.0]))));
+/// assert_eq!((spec.method, &spec.shape), (Method::CcmMultiplicative, &Some(PerPose::Each(vec![1.0, 2.0]))));
 /// // and back
 /// let again: InterpolateSpec = serde_json::from_value(serde_json::to_value(&spec).unwrap()).unwrap();
 /// assert_eq!(again, spec);
