@@ -200,3 +200,37 @@ pub(crate) fn spec_sampler(label: &str, spec: &InterpolateSpec, n: usize) -> Res
     };
     Ok(Sampler { kind, degree, segments, body_point, n, at: Box::new(at) })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::interpolate_json;
+    use crate::sample::{SampleSpec, sample_json};
+    use motion::schema::InterpolateSpec;
+    use serde_json::json;
+
+    /// The entry points of a second front door on a spec already read: the whole result as one
+    /// value, with the keys and samples the CLI streams.
+    #[test]
+    fn entry_points_on_a_parsed_value() {
+        let v = json!({"method": "ccm-additive", "samples": 3, "body_points": [[0, 1, 0]],
+            "poses": [{"position": [0, 0, 0]}, {"position": [2, 0, 0], "axis": [0, 0, 1], "angle": std::f64::consts::FRAC_PI_2}]});
+        let spec = InterpolateSpec::from_value(&v).unwrap();
+        let out = interpolate_json("spec", &spec).unwrap().into_value().unwrap();
+        assert_eq!(out["method"], "ccm-additive");
+        assert_eq!(out["parameters"], json!([0.0, 1.0]));
+        let samples = out["samples"].as_array().unwrap();
+        assert_eq!(samples.iter().map(|s| s["t"].as_f64().unwrap()).collect::<Vec<_>>(), [0.0, 0.5, 1.0]);
+        // the body point (0, 1, 0) under the last key pose: a quarter turn about z, then (2, 0, 0)
+        let p: Vec<f64> = samples[2]["points"][0].as_array().unwrap().iter().map(|x| x.as_f64().unwrap()).collect();
+        assert!((p[0] - 1.0).abs() < 1e-15 && p[1].abs() < 1e-15 && p[2] == 0.0, "{p:?}");
+        // `gam sample` on the same value: the first body point, with speeds
+        let s = SampleSpec::from_value("spec", &v).unwrap();
+        let out = sample_json("spec", &s, 2).unwrap().into_value().unwrap();
+        assert_eq!(out["samples"].as_array().unwrap().len(), 2);
+        assert_eq!(out["samples"][1]["position"], samples[2]["points"][0]);
+        // a refusal carries the label and the library's message
+        let bad = json!({"method": "ccm-additive", "poses": [{"position": [0, 0, 0]}, {"quaternion": [0, 0, 0, 0]}]});
+        let e = SampleSpec::from_value("spec", &bad).err().unwrap();
+        assert_eq!((e.code, e.message.as_str()), (2, "`spec`: `poses[1].quaternion` must be non-zero and finite"));
+    }
+}

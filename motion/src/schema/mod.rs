@@ -192,9 +192,15 @@ fn build_message(method: Method, e: &BuildError) -> String {
     if own { format!("{}: {e}", method.name()) } else { e.to_string() }
 }
 
-/// The shortest round-trip decimal, plain for moderate magnitudes and in exponent form outside
-/// `1e-7 <= |x| < 1e16` (as the CLI prints numbers).
-fn format_f64(x: f64) -> String {
+/// How the messages of the format (and the `gam` CLI) print a number: the shortest round-trip
+/// decimal, plain for moderate magnitudes and in exponent form (`1.2246467991473532e-16`)
+/// outside `1e-7 <= |x| < 1e16`, like JavaScript.
+///
+/// ```
+/// use motion::schema::format_f64;
+/// assert_eq!((format_f64(0.5), format_f64(-1e-300), format_f64(1e16)), ("0.5".into(), "-1e-300".into(), "1e16".into()));
+/// ```
+pub fn format_f64(x: f64) -> String {
     let a = x.abs();
     if a == 0.0 || !x.is_finite() || (1e-7..1e16).contains(&a) { format!("{x}") } else { format!("{x:e}") }
 }
