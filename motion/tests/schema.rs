@@ -451,3 +451,50 @@ fn round_trips() {
         serde_json::from_str::<InterpolateSpec>(r#"{"method": "wl-linear", "poses": [{}], "samples": 0}"#).unwrap_err();
     assert!(e.to_string().starts_with("at least two poses are needed (got 1)"), "{e}");
 }
+
+#[test]
+fn control_data_reads_and_refuses_with_the_cli_messages() {
+    use motion::schema::ControlSpec;
+    let seg = |t0: f64, t1: f64, rep: &str| json!({"t0": t0, "t1": t1, "representation": rep, "degree": 1, "control_poses": [{"1": 1}, {"1": "2", "e3inf": 1}]});
+    // extra keys (as `gam interpolate --json` prints them) are ignored
+    let ok = ControlSpec::from_value(&json!({"method": "x", "segments": [seg(0.0, 1.0, "additive-bezier"), seg(1.0, 3.0, "additive-bezier")], "body_points": [[1, 2, 3]]})).unwrap();
+    assert_eq!((ok.segments.len(), ok.segments[1].t1, ok.body_points.clone()), (2, 3.0, vec![[1.0, 2.0, 3.0]]));
+    // 2 + e3inf = 2 (1 + 1/2 (0, 0, 1) einf): the translation by (0, 0, 1)
+    assert_eq!(ok.segments[0].control_poses[1].transform_point(&[0.0; 3]).unwrap(), [0.0, 0.0, 1.0]);
+    let cases: Vec<(Value, &str)> = vec![
+        (json!({"segments": []}), "`segments` must be a non-empty list"),
+        (
+            json!({"segments": [{"t0": 0, "t1": 1, "control_poses": [{"1": 1}]}]}),
+            "`segments[0].representation` must be a string",
+        ),
+        (
+            json!({"segments": [{"t0": 0, "t1": 1, "representation": "additive-bezier", "control_poses": []}]}),
+            "`segments[0].control_poses` must be a non-empty list of motors",
+        ),
+        (
+            json!({"segments": [{"t0": "0", "t1": 1, "representation": "additive-bezier", "control_poses": [{"1": 1}]}]}),
+            "`segments[0].t0` must be a finite number",
+        ),
+        (
+            json!({"segments": [{"t0": 0, "t1": 1, "representation": "additive-bezier", "control_poses": [{"e1inf": 1}]}]}),
+            "`segments[0].control_poses[0].motor` is singular (rev(S) S has zero scalar part)",
+        ),
+        (
+            json!({"segments": [seg(0.0, 1.0, "additive-bezier"), seg(1.0, 2.0, "multiplicative-bezier")]}),
+            "`segments[1].representation` is `multiplicative-bezier`, but segment 0's is `additive-bezier`: one kind per plot",
+        ),
+        (
+            json!({"segments": [seg(0.0, 1.0, "additive-bezier"), seg(1.5, 2.0, "additive-bezier")]}),
+            "`segments[1].t0` must equal `segments[0].t1` (no gaps)",
+        ),
+        (
+            json!({"segments": [seg(0.0, 1.0, "additive-bezier")], "body_points": [[1, 2]]}),
+            "`body_points` must be a list of [x, y, z]",
+        ),
+    ];
+    for (v, message) in cases {
+        let e = ControlSpec::from_value(&v).unwrap_err();
+        assert_eq!(e.to_string(), message, "{v}");
+        assert!(e.is_input());
+    }
+}

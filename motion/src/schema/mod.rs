@@ -1,6 +1,7 @@
 //! The JSON input format of the motion commands, owned by the library (feature `serde`): pose
-//! objects ([`pose::PoseObject`], every form of the CLI contract's "Pose objects") and the spec
-//! of `gam interpolate` / `gam trajectory` ([`interpolate::InterpolateSpec`]); the spec of
+//! objects ([`pose::PoseObject`], every form of the CLI contract's "Pose objects"), the spec
+//! of `gam interpolate` / `gam trajectory` ([`interpolate::InterpolateSpec`]) and explicit
+//! control data for `gam plot` ([`control::ControlSpec`]); the spec of
 //! `gam hermite` / `gam sample` is [`crate::spec::HermiteSpec`]. The `gam` CLI, and any other
 //! front door (a Python binding), deserializes through these types, so every rule and every
 //! message of the format lives here once.
@@ -26,10 +27,12 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+pub mod control;
 pub mod interpolate;
 pub mod pose;
 mod strict;
 
+pub use control::ControlSpec;
 pub use interpolate::{InterpolateSpec, MAX_SAMPLES};
 pub use pose::{PoseError, PoseObject};
 pub use strict::StrictValue;
@@ -128,6 +131,30 @@ pub enum SchemaError {
     L1 {
         /// The value given.
         got: i64,
+    },
+    /// A field of control data that is missing or of the wrong shape.
+    #[error("`{at}` must be {expected}")]
+    Field {
+        /// Where (`segments`, `segments[2].t0`, `body_points`).
+        at: String,
+        /// What it must be.
+        expected: &'static str,
+    },
+    /// Control data whose segments have different representations.
+    #[error("`segments[{segment}].representation` is `{got}`, but segment 0's is `{first}`: one kind per plot")]
+    MixedRepresentation {
+        /// The first segment that differs.
+        segment: usize,
+        /// Its representation.
+        got: String,
+        /// Segment 0's.
+        first: String,
+    },
+    /// Control data with a gap: segment `segment` does not start where the one before ends.
+    #[error("`segments[{segment}].t0` must equal `segments[{}].t1` (no gaps)", segment - 1)]
+    Gap {
+        /// The segment after the gap (at least 1).
+        segment: usize,
     },
     /// `samples` is 1 or more than [`MAX_SAMPLES`].
     #[error("`samples` must be 0 or from 2 to {MAX_SAMPLES} (got {got})")]
