@@ -85,7 +85,7 @@ fn norm(v: &[f64; 3]) -> f64 {
 }
 
 /// The samples of a spec, computed one at a time: all at once for the text output and
-/// `gam plot` ([`Sampler::collect`]), or streamed for `--json` ([`stream_json`]).
+/// `gam plot` ([`Sampler::collect`]), or streamed for `--json` ([`sample_json`]).
 pub(crate) struct Sampler {
     /// Additive or multiplicative.
     pub kind: SegmentKind,
