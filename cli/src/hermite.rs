@@ -49,41 +49,15 @@ pub(crate) fn strip_comments(text: &str) -> String {
     out
 }
 
-/// serde reports a missing field by its name only; name the end it is missing from
-/// (`missing field `start.velocity``) when that can be told.
-fn qualify_missing_field(message: &str, text: &str) -> String {
-    let Some(rest) = message.strip_prefix("missing field `") else { return message.to_string() };
-    let Some((field, tail)) = rest.split_once('`') else { return message.to_string() };
-    let Ok(value) = serde_json::from_str::<Value>(text) else { return message.to_string() };
-    if value.get(field).is_some() || ["kind", "degree", "start", "end"].contains(&field) {
-        return message.to_string();
-    }
-    for end in ["start", "end"] {
-        if value.get(end).is_some_and(|v| v.is_object() && v.get(field).is_none()) {
-            return format!("missing field `{end}.{field}`{tail}");
-        }
-    }
-    message.to_string()
-}
-
 /// Reads and checks the spec file.
 pub(crate) fn read_spec(path: &str) -> Result<Spec, CliError> {
     let text = std::fs::read_to_string(path).map_err(|e| CliError::usage(format!("cannot read `{path}`: {e}")))?;
-    let text = strip_comments(&text);
-    let spec: Spec = serde_json::from_str(&text).map_err(|e| {
-        let (what, message) = match e.classify() {
-            serde_json::error::Category::Syntax | serde_json::error::Category::Eof => ("invalid JSON", e.to_string()),
-            _ => ("invalid spec", qualify_missing_field(&e.to_string(), &text)),
-        };
-        CliError::usage(format!("`{path}`: {what}: {message}"))
-    })?;
-    spec.check().map_err(|e| spec_error(path, e))?;
-    Ok(spec)
+    Spec::from_json(&strip_comments(&text)).map_err(|e| spec_error(path, e))
 }
 
 /// A rejected spec as a CLI error: bad input is exit 2 (prefixed by the file), a mathematical
 /// failure exit 1.
-fn spec_error(path: &str, e: SpecError) -> CliError {
+pub(crate) fn spec_error(path: &str, e: SpecError) -> CliError {
     if e.is_input() { CliError::usage(format!("`{path}`: {e}")) } else { CliError::math(e.to_string()) }
 }
 
@@ -98,28 +72,38 @@ pub(crate) fn build_segment(spec: &Spec) -> Result<AnyHermiteSegment<f64>, CliEr
         .map_err(|e| if e.is_input() { CliError::usage(e.to_string()) } else { CliError::math(e.to_string()) })
 }
 
-/// Runs `gam hermite`.
+/// The segment of a checked `gam hermite` spec (`label` names it in messages), which has no
+/// `body_point`.
+fn hermite_segment(label: &str, spec: &Spec) -> Result<AnyHermiteSegment<f64>, CliError> {
+    if spec.body_point.is_some() {
+        return Err(CliError::usage(format!("`{label}`: `body_point` is only used by `gam sample` and `gam plot`")));
+    }
+    build_segment(spec)
+}
+
+/// `gam hermite --json` of a checked spec (`label` names it in messages): control poses,
+/// velocity bivectors and indicatrices.
+pub fn hermite_json(label: &str, spec: &Spec) -> Result<Value, CliError> {
+    let seg = hermite_segment(label, spec)?;
+    let nus: Vec<Even<f64>> = seg.velocity_bivectors().iter().map(Even::from).collect();
+    Ok(json!({
+        "control_poses": mv_list(seg.control_poses().iter()),
+        "velocity_bivectors": mv_list(nus.iter()),
+        "velocity_indicatrices": mv_list(seg.velocity_indicatrices().iter()),
+    }))
+}
+
+/// Runs `gam hermite` on the spec file at `path`.
 pub fn hermite(path: &str, json: bool) -> Result<String, CliError> {
     let spec = read_spec(path)?;
-    if spec.body_point.is_some() {
-        return Err(CliError::usage(format!("`{path}`: `body_point` is only used by `gam sample` and `gam plot`")));
-    }
-    let seg = build_segment(&spec)?;
-    let kind = seg.kind();
-    let degree = seg.degree();
-    let poses: Vec<&Even<f64>> = seg.control_poses().iter().collect();
-    let nus: Vec<Even<f64>> = seg.velocity_bivectors().iter().map(Even::from).collect();
     if json {
-        let out = json!({
-            "control_poses": mv_list(poses.iter().copied()),
-            "velocity_bivectors": mv_list(nus.iter()),
-            "velocity_indicatrices": mv_list(seg.velocity_indicatrices().iter()),
-        });
-        return Ok(out.to_string());
+        return Ok(hermite_json(path, &spec)?.to_string());
     }
-    let n = degree;
-    let mut lines = vec![format!("{kind} segment of degree {n}"), "control poses:".to_string()];
-    for (i, m) in poses.iter().enumerate() {
+    let seg = hermite_segment(path, &spec)?;
+    let n = seg.degree();
+    let nus: Vec<Even<f64>> = seg.velocity_bivectors().iter().map(Even::from).collect();
+    let mut lines = vec![format!("{} segment of degree {n}", seg.kind()), "control poses:".to_string()];
+    for (i, m) in seg.control_poses().iter().enumerate() {
         lines.push(format!("  S{i} = {}", mv_human(&m.to_multivector())));
     }
     lines.push("velocity bivectors (nu = Omega e123 + u einf):".to_string());

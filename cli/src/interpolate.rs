@@ -5,57 +5,22 @@
 //! segments and samples, the same way for every method. Names of the contract that are not
 //! implemented yet are recognised and refused with "not implemented yet".
 //!
-//! Pose objects: position + axis + angle, position + quaternion, matrix, motor, and the
-//! `dual_quaternion` and `hexanion` forms (`crate::pose::extra_form`).
-//! Parameters: `uniform` (default), a rule of Jüttler's eq. (15) (`chordal`, `star-chordal`,
-//! `centripetal`, `angular`, `angular-chordal`, normalised to [0, 1]) or an explicit
-//! increasing list (used as given). Velocities, when left out, are estimated by the method
-//! (docs/cli.md).
+//! The spec, its pose objects, its checks and their messages are `motion::schema` (the
+//! library owns the format: `motion::schema::InterpolateSpec`); this module reads the file and
+//! prints the result. [`interpolate_json`] is the command on an already read spec.
+//! Velocities, when left out, are estimated by the method (docs/cli.md).
 //!
-//! A spec of this command is also accepted by `gam sample` and `gam plot` ([`sampler`]).
+//! A spec of this command is also accepted by `gam sample` and `gam plot` ([`spec_sampler`]).
 
 use crate::error::CliError;
 use crate::hermite::strip_comments;
-use crate::output::{mv_human, mv_json};
-use crate::sample::{MAX_SAMPLES, Sample, Sampler, checked};
+use crate::output::{Streamed, mv_human, mv_json};
+use crate::sample::{Sample, Sampler, checked};
 use crate::scalar::format_f64;
-use motion::juttler::Parametrisation;
-use motion::method::{BuildError, BuiltMotion, Method, MethodInput, Parameters};
+use motion::method::{BuiltMotion, Method};
+use motion::schema::{InterpolateSpec, SchemaError};
 use motion::trajectory::TrajectorySample;
-use motion::velocity::Twist;
-use motion::{HermiteShapes, Pose, Pseudoscalar, Shape, Vec3};
-use serde::Deserialize;
 use serde_json::{Value, json};
-
-/// The spec of `gam interpolate`.
-#[derive(Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub(crate) struct Spec {
-    method: String,
-    poses: Vec<Value>,
-    #[serde(default)]
-    parameters: Option<Value>,
-    #[serde(default)]
-    velocities: Option<Vec<VelocitySpec>>,
-    #[serde(default)]
-    shape: Option<Value>,
-    #[serde(default)]
-    gamma: Option<Value>,
-    #[serde(default)]
-    samples: usize,
-    #[serde(default)]
-    body_points: Option<Vec<[f64; 3]>>,
-    #[serde(default)]
-    l1: Option<i64>,
-}
-
-/// The velocity of the body origin and the angular velocity at one key pose (per unit of t).
-#[derive(Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct VelocitySpec {
-    velocity: [f64; 3],
-    angular_velocity: [f64; 3],
-}
 
 /// A built spec: the motion of its method, the body points and the number of samples.
 pub(crate) struct Built {
@@ -68,227 +33,37 @@ pub(crate) fn usage(path: &str, what: impl std::fmt::Display) -> CliError {
     CliError::usage(format!("`{path}`: {what}"))
 }
 
+/// A refused spec as a CLI error: bad input is exit 2, prefixed by `label` (the file), a
+/// mathematical failure exit 1.
+pub(crate) fn schema_error(label: &str, e: SchemaError) -> CliError {
+    if e.is_input() { usage(label, e) } else { CliError::math(e.to_string()) }
+}
+
 /// Reads the file; `Ok(None)` when it is not a `gam interpolate` spec (no top-level `method`).
-fn read(path: &str) -> Result<Option<Spec>, CliError> {
+pub(crate) fn read(path: &str) -> Result<Option<InterpolateSpec>, CliError> {
     let text = std::fs::read_to_string(path).map_err(|e| CliError::usage(format!("cannot read `{path}`: {e}")))?;
     let text = strip_comments(&text);
-    let value: Value = serde_json::from_str(&text).map_err(|e| usage(path, format!("invalid JSON: {e}")))?;
+    let value = motion::schema::parse_json(&text).map_err(|e| usage(path, e))?;
     if value.get("method").is_none() {
         return Ok(None);
     }
-    let spec = serde_json::from_str(&text).map_err(|e| usage(path, format!("invalid spec: {e}")))?;
-    Ok(Some(spec))
+    InterpolateSpec::from_json(&text).map(Some).map_err(|e| schema_error(path, e))
 }
 
-fn array3(path: &str, where_: &str, v: &Value) -> Result<[f64; 3], CliError> {
-    serde_json::from_value(v.clone()).map_err(|_| usage(path, format!("`{where_}` must be a list of 3 numbers")))
+/// Builds a checked spec (`label` names it in messages).
+pub(crate) fn build(label: &str, spec: &InterpolateSpec) -> Result<Built, CliError> {
+    let motion = spec.build().map_err(|e| schema_error(label, e))?;
+    Ok(Built { motion, body_points: spec.body_points(), samples: spec.samples })
 }
 
-/// One pose object of the spec.
-fn pose(path: &str, i: usize, v: &Value) -> Result<Pose<f64>, CliError> {
-    pose_in(path, &format!("poses[{i}]"), v)
+/// Reads a `gam interpolate` spec (also for `gam trajectory`).
+pub(crate) fn read_spec(path: &str) -> Result<InterpolateSpec, CliError> {
+    read(path)?.ok_or_else(|| usage(path, "invalid spec: missing field `method`"))
 }
 
-/// One pose object (every form of the contract), named `name` in messages (also `gam pose`).
-pub(crate) fn pose_in(path: &str, name: &str, v: &Value) -> Result<Pose<f64>, CliError> {
-    let i = name;
-    let at = |key: &str| format!("{i}.{key}");
-    let obj = v.as_object().ok_or_else(|| usage(path, format!("`{i}` must be a pose object")))?;
-    if let Some(parsed) = crate::pose::extra_form(obj, name) {
-        return parsed.map_err(|e| usage(path, e));
-    }
-    let allowed: &[&str] = if obj.contains_key("motor") {
-        &["motor"]
-    } else if obj.contains_key("matrix") {
-        &["matrix"]
-    } else if obj.contains_key("quaternion") {
-        &["position", "quaternion"]
-    } else {
-        &["position", "axis", "angle"]
-    };
-    if let Some(k) = obj.keys().find(|k| !allowed.contains(&k.as_str())) {
-        return Err(usage(path, format!("`{i}`: unexpected key `{k}` (this pose form has {allowed:?})")));
-    }
-    let math = |e: motion::MotionError| usage(path, format!("`{i}`: {e}"));
-    if let Some(m) = obj.get("motor") {
-        let mv = m.as_object().ok_or_else(|| usage(path, format!("`{}` must be a multivector object", at("motor"))))?;
-        let mut c = [0.0; 8];
-        for (key, x) in mv {
-            let k = motion::paper::BLADES
-                .iter()
-                .position(|b| b == key)
-                .ok_or_else(|| usage(path, format!("`{}`: `{key}` is not a blade of g123inf^+", at("motor"))))?;
-            c[k] = match x {
-                Value::Number(n) => n.as_f64(),
-                Value::String(s) => s.trim().parse::<f64>().ok(),
-                _ => None,
-            }
-            .filter(|x| x.is_finite())
-            .ok_or_else(|| usage(path, format!("`{}.{key}` must be a finite number", at("motor"))))?;
-        }
-        let s = Pose::new(c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7]);
-        if s.is_singular() {
-            return Err(usage(path, format!("`{}` is singular (rev(S) S has zero scalar part)", at("motor"))));
-        }
-        return Ok(s);
-    }
-    if let Some(m) = obj.get("matrix") {
-        let m: [[f64; 4]; 4] = serde_json::from_value(m.clone())
-            .map_err(|_| usage(path, format!("`{}` must be 4 rows of 4 numbers", at("matrix"))))?;
-        return Pose::from_matrix(&m, &1e-9).map_err(math);
-    }
-    let position = match obj.get("position") {
-        Some(p) => array3(path, &at("position"), p)?,
-        None => [0.0; 3],
-    };
-    if let Some(q) = obj.get("quaternion") {
-        let q: [f64; 4] = serde_json::from_value(q.clone())
-            .map_err(|_| usage(path, format!("`{}` must be [w, x, y, z]", at("quaternion"))))?;
-        return Pose::from_quaternion_translation(&q, &position)
-            .map_err(|_| usage(path, format!("`{}` must be non-zero and finite", at("quaternion"))));
-    }
-    match (obj.get("axis"), obj.get("angle")) {
-        (None, None) => Ok(Pose::translation(&position)),
-        (Some(a), Some(phi)) => {
-            let axis = array3(path, &at("axis"), a)?;
-            let angle = phi.as_f64().ok_or_else(|| usage(path, format!("`{}` must be a number", at("angle"))))?;
-            Pose::from_axis_angle_translation(&axis, &angle, &position)
-                .map_err(|e| usage(path, format!("`{}`: {e}", at("axis"))))
-        }
-        _ => Err(usage(path, format!("`{i}`: `axis` and `angle` go together"))),
-    }
-}
-
-/// `parameters` of the spec.
-fn parameters(path: &str, spec: &Spec) -> Result<Parameters<f64>, CliError> {
-    let rule = |r| Ok(Parameters::Rule(r));
-    match &spec.parameters {
-        None => Ok(Parameters::Uniform),
-        Some(Value::String(s)) => match s.as_str() {
-            "uniform" => Ok(Parameters::Uniform),
-            "chordal" => rule(Parametrisation::Chordal),
-            "star-chordal" => rule(Parametrisation::StarChordal),
-            "centripetal" => rule(Parametrisation::Centripetal),
-            "angular" => rule(Parametrisation::Angular),
-            "angular-chordal" => rule(Parametrisation::AngleDistance),
-            _ => Err(usage(
-                path,
-                format!(
-                    "`parameters`: unknown rule `{s}` (uniform, chordal, star-chordal, centripetal, angular, angular-chordal, or a list)"
-                ),
-            )),
-        },
-        Some(Value::Array(list)) => serde_json::from_value(Value::Array(list.clone()))
-            .map(Parameters::Given)
-            .map_err(|_| usage(path, "`parameters` must be a list of numbers")),
-        Some(other) => Err(usage(path, format!("`parameters` must be a rule name or a list (got {other})"))),
-    }
-}
-
-/// `shape`/`gamma`: one common value or one per key pose.
-fn shapes(path: &str, spec: &Spec, m: usize) -> Result<HermiteShapes<f64>, CliError> {
-    let lambda: Vec<f64> = match &spec.shape {
-        None => vec![1.0],
-        Some(Value::Array(v)) if v.len() == m => serde_json::from_value(Value::Array(v.clone()))
-            .map_err(|_| usage(path, "`shape` must be a number or one number per pose"))?,
-        Some(v) => vec![v.as_f64().ok_or_else(|| usage(path, "`shape` must be a number or one number per pose"))?],
-    };
-    if let Some(x) = lambda.iter().find(|x| !(**x > 0.0 && x.is_finite())) {
-        return Err(usage(path, format!("`shape` must be positive (got {})", format_f64(*x))));
-    }
-    let gamma: Vec<[f64; 2]> = match &spec.gamma {
-        None => vec![[0.0, 0.0]],
-        Some(v) => match serde_json::from_value::<[f64; 2]>(v.clone()) {
-            Ok(g) => vec![g],
-            Err(_) => serde_json::from_value::<Vec<[f64; 2]>>(v.clone())
-                .ok()
-                .filter(|g| g.len() == m)
-                .ok_or_else(|| usage(path, "`gamma` must be [alpha, beta] or one such pair per pose"))?,
-        },
-    };
-    let shape = |k: usize| {
-        let (l, g) = (lambda[k.min(lambda.len() - 1)], gamma[k.min(gamma.len() - 1)]);
-        Shape::new(l, Pseudoscalar::new(g[0], g[1]))
-    };
-    Ok(if lambda.len() == 1 && gamma.len() == 1 {
-        HermiteShapes::Common(shape(0))
-    } else {
-        HermiteShapes::PerPose((0..m).map(shape).collect())
-    })
-}
-
-/// A failure of [`Method::build`]: exit 2 for bad input, 1 for a numerical failure (singular
-/// system, pose or join), naming the method where the failure is the method's own.
-fn build_error(path: &str, method: Method, e: BuildError) -> CliError {
-    let own = matches!(
-        e,
-        BuildError::Trajectory(_)
-            | BuildError::Wl(_)
-            | BuildError::Repr(_)
-            | BuildError::Juttler(_)
-            | BuildError::Unstable { .. }
-    );
-    let message = if own { format!("{}: {e}", method.name()) } else { e.to_string() };
-    if e.is_input() { usage(path, message) } else { CliError::math(message) }
-}
-
-/// The optional spec keys that are given.
-fn given_keys(spec: &Spec) -> [(&'static str, bool); 4] {
-    [
-        ("velocities", spec.velocities.is_some()),
-        ("shape", spec.shape.is_some()),
-        ("gamma", spec.gamma.is_some()),
-        ("l1", spec.l1.is_some()),
-    ]
-}
-
-/// Checks and builds a spec.
-fn build(path: &str, spec: &Spec) -> Result<Built, CliError> {
-    let method: Method = spec.method.parse().map_err(|e| usage(path, e))?;
-    if let Some((key, _)) = given_keys(spec).into_iter().find(|(k, given)| *given && !method.inputs().contains(k)) {
-        return Err(usage(path, BuildError::Unused { key, method }));
-    }
-    let m = spec.poses.len();
-    if m < 2 {
-        return Err(usage(path, BuildError::TooFewPoses { got: m }));
-    }
-    let poses = spec.poses.iter().enumerate().map(|(i, v)| pose(path, i, v)).collect::<Result<Vec<_>, _>>()?;
-    let velocities = match &spec.velocities {
-        None => None,
-        Some(v) if v.len() != m => {
-            return Err(usage(path, format!("`velocities` has {} entries for {m} poses", v.len())));
-        }
-        Some(v) => Some(
-            v.iter()
-                .zip(&poses)
-                .map(|(w, s)| {
-                    // u = v - Ω × p: the velocity of the body point at the global origin.
-                    let p = s.transform_point(&[0.0; 3]).map_err(|e| CliError::math(e.to_string()))?;
-                    let o = w.angular_velocity;
-                    let c = [o[1] * p[2] - o[2] * p[1], o[2] * p[0] - o[0] * p[2], o[0] * p[1] - o[1] * p[0]];
-                    Ok(Twist { angular: o.into(), linear: Vec3::from(std::array::from_fn(|k| w.velocity[k] - c[k])) })
-                })
-                .collect::<Result<Vec<_>, CliError>>()?,
-        ),
-    };
-    let shapes = if spec.shape.is_some() || spec.gamma.is_some() { Some(shapes(path, spec, m)?) } else { None };
-    let l1 = match spec.l1 {
-        None => None,
-        Some(k) => Some(usize::try_from(k).map_err(|_| usage(path, format!("`l1` must be 0 or more (got {k})")))?),
-    };
-    let input = MethodInput { parameters: parameters(path, spec)?, velocities, shapes, l1, ..MethodInput::new(poses) };
-    if spec.samples == 1 || spec.samples > MAX_SAMPLES {
-        return Err(usage(path, format!("`samples` must be 0 or from 2 to {MAX_SAMPLES} (got {})", spec.samples)));
-    }
-    let body_points = spec.body_points.clone().unwrap_or_else(|| vec![[0.0; 3]]);
-    let motion = method.build(&input).map_err(|e| build_error(path, method, e))?;
-    Ok(Built { motion, body_points, samples: spec.samples })
-}
-
-/// Reads and builds a `gam interpolate` spec (also for `gam trajectory`).
+/// Reads and builds a `gam interpolate` spec (for `gam plot`).
 pub(crate) fn built(path: &str) -> Result<Built, CliError> {
-    let spec = read(path)?.ok_or_else(|| usage(path, "invalid spec: missing field `method`"))?;
-    build(path, &spec)
+    build(path, &read_spec(path)?)
 }
 
 fn finite3(v: &[f64; 3]) -> bool {
@@ -352,54 +127,27 @@ fn segments_json(b: &Built) -> Vec<Value> {
         .collect()
 }
 
-/// `gam interpolate --json`, streamed in bounded memory like `gam sample --json`: the header
-/// (method, parameters, segments), then a first pass that computes every sample and discards
-/// it (a failure leaves stdout empty), then a second that writes them one by one.
-fn stream_json(b: &Built) -> Result<String, CliError> {
+/// `gam interpolate --json` of a spec (`label` names it in messages): the header (method,
+/// parameters, segments) and the samples, streamed by the CLI in bounded memory like
+/// `gam sample --json`, or taken as one value ([`Streamed::into_value`]) by another front door.
+pub fn interpolate_json<'a>(label: &str, spec: &InterpolateSpec) -> Result<Streamed<'a>, CliError> {
+    let b = build(label, spec)?;
     let n = if b.samples >= 2 { b.samples } else { 0 };
     if n > 0 {
-        check_work(b, n)?;
+        check_work(&b, n)?;
     }
     let head =
-        json!({"method": b.motion.method().name(), "parameters": b.motion.times(), "segments": segments_json(b)});
-    write_streamed(&head, n, &|i| sample_json(&sample_at(b, n, i)?))
+        json!({"method": b.motion.method().name(), "parameters": b.motion.times(), "segments": segments_json(&b)});
+    Ok(Streamed { head, n, sample: Box::new(move |i| sample_json(&sample_at(&b, n, i)?)) })
 }
 
-/// Writes `head` with a `samples` array of `n` objects appended, sample by sample in bounded
-/// memory, after a first pass that computes every sample and discards it (so a failure
-/// leaves stdout empty, as the error contract requires). Returns the empty string: the
-/// caller's final newline ends the JSON.
-fn write_streamed(
-    head: &Value,
-    n: usize,
-    sample: &dyn Fn(usize) -> Result<Value, CliError>,
-) -> Result<String, CliError> {
-    use crate::sample::write_error;
-    use std::io::Write;
-    for i in 0..n {
-        sample(i)?;
-    }
-    let head = head.to_string();
-    let mut out = std::io::BufWriter::new(std::io::stdout().lock());
-    out.write_all(head.strip_suffix('}').unwrap_or(&head).as_bytes()).map_err(write_error)?;
-    out.write_all(b",\"samples\":[").map_err(write_error)?;
-    for i in 0..n {
-        if i > 0 {
-            out.write_all(b",").map_err(write_error)?;
-        }
-        serde_json::to_writer(&mut out, &sample(i)?).map_err(|e| write_error(e.into()))?;
-    }
-    out.write_all(b"]}").map_err(write_error)?;
-    out.flush().map_err(write_error)?;
-    Ok(String::new())
-}
-
-/// Runs `gam interpolate`.
+/// Runs `gam interpolate` on the spec file at `path`.
 pub fn interpolate(path: &str, json: bool) -> Result<String, CliError> {
-    let b = built(path)?;
+    let spec = read_spec(path)?;
     if json {
-        return stream_json(&b);
+        return interpolate_json(path, &spec)?.stream();
     }
+    let b = build(path, &spec)?;
     let n = if b.samples >= 2 { b.samples } else { 0 };
     if n > 0 {
         check_work(&b, n)?;
@@ -431,11 +179,10 @@ pub fn interpolate(path: &str, json: bool) -> Result<String, CliError> {
     Ok(lines.join("\n"))
 }
 
-/// `gam sample` / `gam plot` on a `gam interpolate` spec: `Ok(None)` when the file is not one.
-/// The body point is the first of `body_points`; sample `i` is at `t_0 + (t_m - t_0) i/(n-1)`.
-pub(crate) fn sampler(path: &str, n: usize) -> Result<Option<Sampler>, CliError> {
-    let Some(spec) = read(path)? else { return Ok(None) };
-    let b = build(path, &spec)?;
+/// `gam sample` / `gam plot` on a `gam interpolate` spec (`label` names it in messages). The
+/// body point is the first of `body_points`; sample `i` is at `t_0 + (t_m - t_0) i/(n-1)`.
+pub(crate) fn spec_sampler(label: &str, spec: &InterpolateSpec, n: usize) -> Result<Sampler, CliError> {
+    let b = build(label, spec)?;
     let body_point = b.body_points.first().copied().unwrap_or([0.0; 3]);
     let one = Built { body_points: vec![body_point], ..b };
     check_work(&one, n)?;
@@ -451,5 +198,39 @@ pub(crate) fn sampler(path: &str, n: usize) -> Result<Option<Sampler>, CliError>
             pose: s.pose,
         })
     };
-    Ok(Some(Sampler { kind, degree, segments, body_point, n, at: Box::new(at) }))
+    Ok(Sampler { kind, degree, segments, body_point, n, at: Box::new(at) })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::interpolate_json;
+    use crate::sample::{SampleSpec, sample_json};
+    use motion::schema::InterpolateSpec;
+    use serde_json::json;
+
+    /// The entry points of a second front door on a spec already read: the whole result as one
+    /// value, with the keys and samples the CLI streams.
+    #[test]
+    fn entry_points_on_a_parsed_value() {
+        let v = json!({"method": "ccm-additive", "samples": 3, "body_points": [[0, 1, 0]],
+            "poses": [{"position": [0, 0, 0]}, {"position": [2, 0, 0], "axis": [0, 0, 1], "angle": std::f64::consts::FRAC_PI_2}]});
+        let spec = InterpolateSpec::from_value(&v).unwrap();
+        let out = interpolate_json("spec", &spec).unwrap().into_value().unwrap();
+        assert_eq!(out["method"], "ccm-additive");
+        assert_eq!(out["parameters"], json!([0.0, 1.0]));
+        let samples = out["samples"].as_array().unwrap();
+        assert_eq!(samples.iter().map(|s| s["t"].as_f64().unwrap()).collect::<Vec<_>>(), [0.0, 0.5, 1.0]);
+        // the body point (0, 1, 0) under the last key pose: a quarter turn about z, then (2, 0, 0)
+        let p: Vec<f64> = samples[2]["points"][0].as_array().unwrap().iter().map(|x| x.as_f64().unwrap()).collect();
+        assert!((p[0] - 1.0).abs() < 1e-15 && p[1].abs() < 1e-15 && p[2] == 0.0, "{p:?}");
+        // `gam sample` on the same value: the first body point, with speeds
+        let s = SampleSpec::from_value("spec", &v).unwrap();
+        let out = sample_json("spec", &s, 2).unwrap().into_value().unwrap();
+        assert_eq!(out["samples"].as_array().unwrap().len(), 2);
+        assert_eq!(out["samples"][1]["position"], samples[2]["points"][0]);
+        // a refusal carries the label and the library's message
+        let bad = json!({"method": "ccm-additive", "poses": [{"position": [0, 0, 0]}, {"quaternion": [0, 0, 0, 0]}]});
+        let e = SampleSpec::from_value("spec", &bad).err().unwrap();
+        assert_eq!((e.code, e.message.as_str()), (2, "`spec`: `poses[1].quaternion` must be non-zero and finite"));
+    }
 }

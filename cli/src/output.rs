@@ -46,6 +46,55 @@ pub fn text_table(rows: &[Vec<String>]) -> String {
     lines.join("\n")
 }
 
+/// A JSON result with a `samples` array that may be too large to hold: `head` (an object) and
+/// sample `i` of `n`. The CLI streams it to stdout ([`Streamed::stream`]); a caller that wants
+/// the value (the Python binding) takes [`Streamed::into_value`]. Both give the same JSON.
+pub struct Streamed<'a> {
+    /// The object the `samples` array is appended to.
+    pub head: Value,
+    /// The number of samples.
+    pub n: usize,
+    /// Sample `i`, checked.
+    pub sample: Box<dyn Fn(usize) -> Result<Value, crate::error::CliError> + 'a>,
+}
+
+impl Streamed<'_> {
+    /// The whole result as one value.
+    #[allow(dead_code)] // the entry point of a second front door (the Python binding)
+    pub fn into_value(self) -> Result<Value, crate::error::CliError> {
+        let samples = (0..self.n).map(|i| (self.sample)(i)).collect::<Result<Vec<_>, _>>()?;
+        let mut head = self.head;
+        head["samples"] = Value::Array(samples);
+        Ok(head)
+    }
+
+    /// Writes the result to stdout, sample by sample in bounded memory, after a first pass
+    /// that computes every sample and discards it (so a failure leaves stdout empty, as the
+    /// error contract requires). Returns the empty string: the caller's final newline ends
+    /// the JSON.
+    pub fn stream(self) -> Result<String, crate::error::CliError> {
+        use crate::sample::write_error;
+        use std::io::Write;
+        for i in 0..self.n {
+            (self.sample)(i)?;
+        }
+        let head = self.head.to_string();
+        let open = head.strip_suffix('}').unwrap_or(&head);
+        let mut out = std::io::BufWriter::new(std::io::stdout().lock());
+        out.write_all(open.as_bytes()).map_err(write_error)?;
+        out.write_all(if open == "{" { b"\"samples\":[" } else { b",\"samples\":[" }).map_err(write_error)?;
+        for i in 0..self.n {
+            if i > 0 {
+                out.write_all(b",").map_err(write_error)?;
+            }
+            serde_json::to_writer(&mut out, &(self.sample)(i)?).map_err(|e| write_error(e.into()))?;
+        }
+        out.write_all(b"]}").map_err(write_error)?;
+        out.flush().map_err(write_error)?;
+        Ok(String::new())
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

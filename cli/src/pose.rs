@@ -4,53 +4,21 @@
 //! Wareham–Lasenby `cga_rotor` (`motion::wareham_lasenby::from_pose`, signed by
 //! `motion::wareham_lasenby::convert::canonical_sign`).
 //!
-//! Also the two pose input forms of issue 10, `dual_quaternion` and `hexanion`, for the shared
-//! pose parser of `gam interpolate` ([`extra_form`]).
+//! The pose object, every form of it and its checks are `motion::schema::PoseObject` (the
+//! library owns the format); [`pose_json`] is the command on an already read pose object.
 
 use crate::error::CliError;
 use crate::output::{mv_human, mv_json};
 use crate::scalar::format_f64;
-use motion::repr::dual_quaternion::{DualQuaternion, from_dual_quaternion, to_dual_quaternion};
+use motion::repr::dual_quaternion::to_dual_quaternion;
 use motion::repr::hexanion::Hexanion;
 use motion::repr::quaternion::to_quaternion_position;
 use motion::repr::screw::Screw;
 use motion::repr::sign::canonical_pose;
+use motion::schema::PoseObject;
 use motion::wareham_lasenby::{convert::canonical_sign, from_pose as cga_rotor};
 use motion::{Motor, Pose};
-use serde_json::{Map, Value, json};
-
-/// Plücker's relation (8) must hold to this, relative (the cosine between real and dual part).
-const STUDY_TOL: f64 = 1e-9;
-
-/// The `dual_quaternion` or `hexanion` form of a pose object at `at` (e.g. `poses[2]`);
-/// `None` when the object has neither key. Errors are messages for an exit-2 `error:` line.
-pub(crate) fn extra_form(obj: &Map<String, Value>, at: &str) -> Option<Result<Pose<f64>, String>> {
-    let key = ["dual_quaternion", "hexanion"].into_iter().find(|k| obj.contains_key(*k))?;
-    if let Some(other) = obj.keys().find(|k| *k != key) {
-        return Some(Err(format!("`{at}`: unexpected key `{other}` (this pose form has [\"{key}\"])")));
-    }
-    let v = &obj[key];
-    Some(if key == "dual_quaternion" { dual_quaternion(v, at) } else { hexanion(v, at) })
-}
-
-fn dual_quaternion(v: &Value, at: &str) -> Result<Pose<f64>, String> {
-    let c: [f64; 8] = serde_json::from_value(v.clone())
-        .map_err(|_| format!("`{at}.dual_quaternion` must be [w, x, y, z, dw, dx, dy, dz]"))?;
-    from_dual_quaternion(&DualQuaternion::from_coeffs(c), &STUDY_TOL)
-        .map_err(|e| format!("`{at}.dual_quaternion`: {e}"))
-}
-
-fn hexanion(v: &Value, at: &str) -> Result<Pose<f64>, String> {
-    #[derive(serde::Deserialize)]
-    #[serde(deny_unknown_fields)]
-    struct H {
-        omega: [f64; 3],
-        m: [f64; 3],
-    }
-    let h: H = serde_json::from_value(v.clone())
-        .map_err(|_| format!("`{at}.hexanion` must be {{\"omega\": [x, y, z], \"m\": [x, y, z]}}"))?;
-    Hexanion::new(h.omega, h.m).to_pose().map_err(|e| format!("`{at}.hexanion`: {e}"))
-}
+use serde_json::{Value, json};
 
 /// `x + 0.0` prints -0.0 as 0.0.
 fn z<const N: usize>(v: [f64; N]) -> [f64; N] {
@@ -103,6 +71,17 @@ fn representations(s: &Pose<f64>) -> Result<Value, CliError> {
     }))
 }
 
+/// The pose of a pose object (`label` names the document in messages).
+fn the_pose(label: &str, object: &PoseObject) -> Result<Pose<f64>, CliError> {
+    object.to_pose().map_err(|e| crate::interpolate::usage(label, e.at("pose")))
+}
+
+/// `gam pose --json` of a pose object (`label` names the document in messages): the pose in
+/// every representation of the contract.
+pub fn pose_json(label: &str, object: &PoseObject) -> Result<Value, CliError> {
+    representations(&the_pose(label, object)?)
+}
+
 fn list(v: &[f64]) -> String {
     format!("[{}]", v.iter().map(|x| format_f64(*x)).collect::<Vec<_>>().join(", "))
 }
@@ -116,10 +95,10 @@ pub fn pose(arg: &str, json: bool) -> Result<String, CliError> {
         ),
         None => ("POSE_JSON".to_string(), arg.to_string()),
     };
-    let value: Value = serde_json::from_str(&crate::hermite::strip_comments(&text))
-        .map_err(|e| CliError::usage(format!("`{label}`: invalid JSON: {e}")))?;
-    let s = crate::interpolate::pose_in(&label, "pose", &value)?;
-    let out = representations(&s)?;
+    let object = PoseObject::from_json(&crate::hermite::strip_comments(&text), "pose")
+        .map_err(|e| crate::interpolate::usage(&label, e))?;
+    let out = pose_json(&label, &object)?;
+    let s = the_pose(&label, &object)?;
     if json {
         return Ok(out.to_string());
     }

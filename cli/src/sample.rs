@@ -1,6 +1,6 @@
 //! `gam sample SPEC.json --samples N [--json]`: the Hermite segment of a `gam hermite` spec
 //! (see [`crate::hermite`]) sampled at `N` evenly spaced parameter values `t = 0..1` (or the
-//! motion of a `gam interpolate` spec over `[t_0, t_m]`, [`crate::interpolate::sampler`]): the pose,
+//! motion of a `gam interpolate` spec over `[t_0, t_m]`, [`crate::interpolate::spec_sampler`]): the pose,
 //! the position of a body point (`body_point` in the spec, body coordinates, default the
 //! origin), its linear speed and the angular speed of the body.
 //!
@@ -11,15 +11,46 @@
 
 use crate::error::CliError;
 use crate::hermite::{build_segment, read_spec};
-use crate::output::{mv_human, mv_json, text_table};
+use crate::output::{Streamed, mv_human, mv_json, text_table};
 use crate::scalar::format_f64;
+use motion::schema::InterpolateSpec;
+use motion::spec::HermiteSpec;
 use motion::velocity::velocity;
 use motion::{AnyMotion, Pose, SegmentKind};
 use serde_json::{Value, json};
-use std::io::Write;
 
 /// The most samples accepted.
-pub(crate) const MAX_SAMPLES: usize = 1_000_000;
+pub(crate) const MAX_SAMPLES: usize = motion::schema::MAX_SAMPLES;
+
+/// A spec `gam sample` and `gam plot` read: a `gam hermite` spec (with an optional
+/// `body_point`) or a `gam interpolate` spec (with a top-level `method`).
+pub enum SampleSpec {
+    /// A `gam hermite` spec.
+    Hermite(HermiteSpec),
+    /// A `gam interpolate` spec.
+    Interpolate(InterpolateSpec),
+}
+
+impl SampleSpec {
+    /// The spec of an already parsed JSON value (`label` names it in messages).
+    #[allow(dead_code)] // the entry point of a second front door (the Python binding)
+    pub fn from_value(label: &str, v: &Value) -> Result<Self, CliError> {
+        if v.get("method").is_some() {
+            let spec = InterpolateSpec::from_value(v).map_err(|e| crate::interpolate::schema_error(label, e))?;
+            return Ok(SampleSpec::Interpolate(spec));
+        }
+        let spec = HermiteSpec::from_value(v).map_err(|e| crate::hermite::spec_error(label, e))?;
+        Ok(SampleSpec::Hermite(spec))
+    }
+
+    /// The spec in the file at `path`.
+    fn read(path: &str) -> Result<Self, CliError> {
+        match crate::interpolate::read(path)? {
+            Some(spec) => Ok(SampleSpec::Interpolate(spec)),
+            None => Ok(SampleSpec::Hermite(read_spec(path)?)),
+        }
+    }
+}
 
 /// One sample of the motion.
 pub(crate) struct Sample {
@@ -54,7 +85,7 @@ fn norm(v: &[f64; 3]) -> f64 {
 }
 
 /// The samples of a spec, computed one at a time: all at once for the text output and
-/// `gam plot` ([`Sampler::collect`]), or streamed for `--json` ([`stream_json`]).
+/// `gam plot` ([`Sampler::collect`]), or streamed for `--json` ([`sample_json`]).
 pub(crate) struct Sampler {
     /// Additive or multiplicative.
     pub kind: SegmentKind,
@@ -98,23 +129,24 @@ pub(crate) fn checked(sample: Sample) -> Result<Sample, CliError> {
 
 /// Reads the spec at `path` and samples its segment at `n` parameter values.
 pub(crate) fn sample_spec(path: &str, n: usize) -> Result<Sampled, CliError> {
-    sampler(path, n)?.collect()
+    sampler(path, &SampleSpec::read(path)?, n)?.collect()
 }
 
-/// Reads the spec at `path`, checks the work of `n` samples, and returns its sampler.
-pub(crate) fn sampler(path: &str, n: usize) -> Result<Sampler, CliError> {
+/// Checks the work of `n` samples of a spec (`label` names it in messages) and returns its
+/// sampler.
+pub(crate) fn sampler(label: &str, spec: &SampleSpec, n: usize) -> Result<Sampler, CliError> {
     if !(2..=MAX_SAMPLES).contains(&n) {
         return Err(CliError::usage(format!("`--samples` must be an integer from 2 to {MAX_SAMPLES} (got {n})")));
     }
-    if let Some(s) = crate::interpolate::sampler(path, n)? {
-        return Ok(s);
-    }
-    let spec = read_spec(path)?;
+    let spec = match spec {
+        SampleSpec::Interpolate(spec) => return crate::interpolate::spec_sampler(label, spec, n),
+        SampleSpec::Hermite(spec) => spec,
+    };
     let body_point = spec.body_point.unwrap_or([0.0; 3]);
     if !body_point.iter().all(|x| x.is_finite()) {
-        return Err(CliError::usage(format!("`{path}`: `body_point` must be finite")));
+        return Err(CliError::usage(format!("`{label}`: `body_point` must be finite")));
     }
-    let seg = build_segment(&spec)?;
+    let seg = build_segment(spec)?;
     let (kind, degree) = (seg.kind(), seg.degree());
     // building the segment is O(degree); sampling it is O(samples x degree^2)
     crate::budget::check(&format!("sampling degree {degree} at {n} values"), crate::budget::sampling_work(degree, n))?;
@@ -139,7 +171,7 @@ pub(crate) fn sampler(path: &str, n: usize) -> Result<Sampler, CliError> {
 }
 
 /// One sample as the JSON object of `gam sample --json`.
-fn sample_json(x: &Sample) -> Value {
+fn one_json(x: &Sample) -> Value {
     json!({
         "t": x.t,
         "pose": mv_json(&x.pose.to_multivector()),
@@ -149,26 +181,11 @@ fn sample_json(x: &Sample) -> Value {
     })
 }
 
-/// Runs `gam sample --json`, writing to standard output as it goes, in bounded memory: a
-/// first pass computes every sample and discards it (so that a failure leaves stdout empty,
-/// as the error contract requires), a second pass writes them one by one. Returns the empty
-/// string: the caller's final newline ends the JSON.
-pub fn stream_json(path: &str, n: usize) -> Result<String, CliError> {
-    let s = sampler(path, n)?;
-    for i in 0..s.n {
-        (s.at)(i)?;
-    }
-    let mut out = std::io::BufWriter::new(std::io::stdout().lock());
-    out.write_all(b"{\"samples\":[").map_err(write_error)?;
-    for i in 0..s.n {
-        if i > 0 {
-            out.write_all(b",").map_err(write_error)?;
-        }
-        serde_json::to_writer(&mut out, &sample_json(&(s.at)(i)?)).map_err(|e| write_error(e.into()))?;
-    }
-    out.write_all(b"]}").map_err(write_error)?;
-    out.flush().map_err(write_error)?;
-    Ok(String::new())
+/// `gam sample --json` of a spec (`label` names it in messages): streamed by the CLI in
+/// bounded memory, or taken as one value by another front door ([`Streamed::into_value`]).
+pub fn sample_json<'a>(label: &str, spec: &SampleSpec, n: usize) -> Result<Streamed<'a>, CliError> {
+    let s = sampler(label, spec, n)?;
+    Ok(Streamed { head: json!({}), n: s.n, sample: Box::new(move |i| Ok(one_json(&(s.at)(i)?))) })
 }
 
 /// A failed write of streamed output: a closed pipe (`gam sample --json ... | head`) ends the
@@ -182,10 +199,11 @@ pub(crate) fn write_error(e: std::io::Error) -> CliError {
 
 /// Runs `gam sample`.
 pub fn sample(path: &str, n: usize, json: bool) -> Result<String, CliError> {
+    let spec = SampleSpec::read(path)?;
     if json {
-        return stream_json(path, n);
+        return sample_json(path, &spec, n)?.stream();
     }
-    let s = sample_spec(path, n)?;
+    let s = sampler(path, &spec, n)?.collect()?;
     let header = ["t", "x", "y", "z", "linear speed", "angular speed", "pose"];
     let mut rows = vec![header.map(str::to_string).to_vec()];
     for x in &s.samples {

@@ -185,11 +185,9 @@ fn poly_constant(p: &Poly) -> Option<Q> {
 }
 
 /// The shortest round-trip decimal, plain for moderate magnitudes and in exponent form
-/// (`1.2246467991473532e-16`) outside `1e-7 <= |x| < 1e16`, like JavaScript.
-pub fn format_f64(x: f64) -> String {
-    let a = x.abs();
-    if a == 0.0 || !x.is_finite() || (1e-7..1e16).contains(&a) { format!("{x}") } else { format!("{x:e}") }
-}
+/// (`1.2246467991473532e-16`) outside `1e-7 <= |x| < 1e16`, like JavaScript (one rule with the
+/// messages of the motion format: `motion::schema::format_f64`).
+pub use motion::schema::format_f64;
 
 impl CliScalar for f64 {
     const NAME: &'static str = "f64";

@@ -7,10 +7,11 @@
 //! (multiplicative, W-L, hexanion) exit 2 with one `error:` line saying so.
 
 use crate::error::CliError;
-use crate::interpolate::{built, usage};
+use crate::interpolate::{build, read_spec, usage};
 use crate::scalar::format_f64;
-use motion::method::BuildError;
-use serde_json::json;
+use motion::method::{BuildError, Method};
+use motion::schema::InterpolateSpec;
+use serde_json::{Value, json};
 
 /// `x,y,z` of `--point`: three finite numbers.
 fn point(text: &str) -> Result<[f64; 3], CliError> {
@@ -22,13 +23,16 @@ fn point(text: &str) -> Result<[f64; 3], CliError> {
     }
 }
 
-/// Runs `gam trajectory`.
-pub fn trajectory(path: &str, point_text: &str, json: bool) -> Result<String, CliError> {
-    let x = point(point_text)?;
-    let b = built(path)?;
+/// One segment's curve: `t0`, `t1`, degree, weights, affine control points.
+type Curve = (f64, f64, usize, Vec<f64>, Vec<[f64; 3]>);
+
+/// The rational Bézier curves of body point `x` under the motion of a spec (`label` names it
+/// in messages), checked finite.
+fn curves(label: &str, spec: &InterpolateSpec, x: &[f64; 3]) -> Result<(Method, Vec<Curve>), CliError> {
+    let b = build(label, spec)?;
     let method = b.motion.method();
-    let segments = b.motion.rational_trajectories(&x).map_err(|e| match e {
-        BuildError::NotRational { .. } => usage(path, e),
+    let segments = b.motion.rational_trajectories(x).map_err(|e| match e {
+        BuildError::NotRational { .. } => usage(label, e),
         e => CliError::math(format!("{method}: {e}")),
     })?;
     let mut out = Vec::with_capacity(segments.len());
@@ -41,17 +45,31 @@ pub fn trajectory(path: &str, point_text: &str, json: bool) -> Result<String, Cl
         }
         out.push((s.t0, s.t1, s.curve.degree(), weights, points));
     }
+    Ok((method, out))
+}
+
+/// `gam trajectory --json` of a spec (`label` names it in messages) and body point `x`.
+pub fn trajectory_json(label: &str, spec: &InterpolateSpec, x: &[f64; 3]) -> Result<Value, CliError> {
     let z = |c: f64| c + 0.0;
+    let segs: Vec<_> = curves(label, spec, x)?
+        .1
+        .iter()
+        .map(|(t0, t1, d, w, p)| {
+            json!({"t0": t0, "t1": t1, "degree": d, "weights": w.iter().map(|c| z(*c)).collect::<Vec<_>>(),
+                "points": p.iter().map(|q| q.map(z)).collect::<Vec<_>>()})
+        })
+        .collect();
+    Ok(json!({ "segments": segs }))
+}
+
+/// Runs `gam trajectory` on the spec file at `path`.
+pub fn trajectory(path: &str, point_text: &str, json: bool) -> Result<String, CliError> {
+    let x = point(point_text)?;
+    let spec = read_spec(path)?;
     if json {
-        let segs: Vec<_> = out
-            .iter()
-            .map(|(t0, t1, d, w, p)| {
-                json!({"t0": t0, "t1": t1, "degree": d, "weights": w.iter().map(|c| z(*c)).collect::<Vec<_>>(),
-                    "points": p.iter().map(|q| q.map(z)).collect::<Vec<_>>()})
-            })
-            .collect();
-        return Ok(json!({"segments": segs}).to_string());
+        return Ok(trajectory_json(path, &spec, &x)?.to_string());
     }
+    let (method, out) = curves(path, &spec, &x)?;
     let f = |c: &f64| format_f64(*c);
     let mut lines = vec![format!(
         "{method}: trajectory of [{}] as {} rational Bézier curves (local parameter u in [0, 1])",

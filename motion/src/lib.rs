@@ -33,6 +33,7 @@
 //! | [`hermite`] | Hermite interpolation through precision poses with velocities (Sec. 5.3) |
 //! | [`error`] | [`MotionError`] (pose operations), [`CurveError`] (motion curves; also re-exported from [`bezier`]) |
 //! | [`spec`] | the `gam hermite` spec: format, checks ([`spec::SpecError`]), segment |
+//! | `schema` (feature `serde`) | the JSON format of pose objects and of the `gam interpolate` spec, with every check and message (`schema::SchemaError`) |
 //! | [`trajectory`] | [`trajectory::Trajectory`]: a C1 motion through key poses at times in one call, velocity estimate, sampler |
 //! | [`jacobian`] | [`jacobian::JetN`] (multi-directional duals), derivatives of a sampled body point and twist w.r.t. every key pose and time |
 //! | [`method`] | the methods of `gam interpolate` by name ([`method::Method`]) |
@@ -79,6 +80,8 @@ pub mod pose;
 pub mod pseudoscalar;
 pub mod repr;
 mod scaled;
+#[cfg(feature = "serde")]
+pub mod schema;
 mod series;
 pub mod spec;
 mod stable_slerp;

@@ -251,6 +251,65 @@ impl HermiteSpec {
     }
 }
 
+#[cfg(feature = "serde")]
+impl HermiteSpec {
+    /// Reads a spec from JSON text and checks it ([`HermiteSpec::check`]).
+    ///
+    /// ```
+    /// use motion::spec::{HermiteSpec, SpecError};
+    /// let e = HermiteSpec::from_json(r#"{"kind": "additive", "degree": 3, "start": {}}"#).unwrap_err();
+    /// assert!(matches!(&e, SpecError::Invalid(m) if m.starts_with("missing field `start.position`")));
+    /// let e = HermiteSpec::from_json(r#"{"kind": "additive", "kind": "additive"}"#).unwrap_err();
+    /// assert!(e.to_string().contains("duplicate field `kind`"));
+    /// ```
+    pub fn from_json(text: &str) -> Result<Self, SpecError> {
+        let spec: HermiteSpec = serde_json::from_str(text).map_err(|e| {
+            use serde_json::error::Category;
+            match e.classify() {
+                Category::Syntax | Category::Eof | Category::Io => SpecError::Json(e.to_string()),
+                Category::Data => SpecError::Invalid(qualify_missing_field(&e.to_string(), text)),
+            }
+        })?;
+        spec.check()?;
+        Ok(spec)
+    }
+
+    /// Reads a spec from a parsed JSON value and checks it.
+    ///
+    /// ```
+    /// use motion::spec::HermiteSpec;
+    /// let end = serde_json::json!({"position": [0, 0, 0], "axis": [0, 0, 1], "angle": 0,
+    ///     "velocity": [1, 0, 0], "angular_velocity": [0, 0, 0]});
+    /// let spec = HermiteSpec::from_value(&serde_json::json!({"kind": "additive", "degree": 3, "start": end, "end": end}))?;
+    /// assert_eq!(spec.degree, 3);
+    /// # Ok::<(), motion::spec::SpecError>(())
+    /// ```
+    pub fn from_value(v: &serde_json::Value) -> Result<Self, SpecError> {
+        use serde::Deserialize;
+        let spec = HermiteSpec::deserialize(v).map_err(|e| SpecError::Invalid(e.to_string()))?;
+        spec.check()?;
+        Ok(spec)
+    }
+}
+
+/// serde reports a missing field by its name only; name the end it is missing from
+/// (`missing field `start.velocity``) when that can be told.
+#[cfg(feature = "serde")]
+fn qualify_missing_field(message: &str, text: &str) -> String {
+    let Some(rest) = message.strip_prefix("missing field `") else { return message.to_string() };
+    let Some((field, tail)) = rest.split_once('`') else { return message.to_string() };
+    let Ok(value) = serde_json::from_str::<serde_json::Value>(text) else { return message.to_string() };
+    if value.get(field).is_some() || ["kind", "degree", "start", "end"].contains(&field) {
+        return message.to_string();
+    }
+    for end in ["start", "end"] {
+        if value.get(end).is_some_and(|v| v.is_object() && v.get(field).is_none()) {
+            return format!("missing field `{end}.{field}`{tail}");
+        }
+    }
+    message.to_string()
+}
+
 /// Why a [`HermiteSpec`] was rejected or could not be built.
 ///
 /// [`SpecError::is_input`] tells bad input (the CLI's exit 2) from a mathematical failure
@@ -264,6 +323,13 @@ impl HermiteSpec {
 /// ```
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum SpecError {
+    /// The text is not JSON (serde_json's message, with line and column; [`HermiteSpec::from_json`]).
+    #[error("invalid JSON: {0}")]
+    Json(String),
+    /// The JSON is not a spec: a wrong type, an unknown, missing or repeated field (serde's
+    /// message; a missing field of an end is named `start.velocity`).
+    #[error("invalid spec: {0}")]
+    Invalid(String),
     /// The degree is outside `3..=MAX_DEGREE`.
     #[error(
         "`degree` must be an integer from 3 to {MAX_DEGREE} (got {got}): the end conditions fix the four control \

@@ -15,85 +15,28 @@
 
 use super::data::{Series, Shape, of_motion};
 use crate::error::CliError;
-use crate::interpolate::{pose_in, usage};
-use motion::{AdditiveBezier, MultiplicativeBezier, Piecewise, Pose};
-use serde_json::{Value, json};
+use crate::interpolate::usage;
+use motion::schema::ControlSpec;
+use motion::{AdditiveBezier, MultiplicativeBezier, Piecewise};
+use serde_json::Value;
 
-/// One segment of the control-data form.
-struct Segment {
-    t0: f64,
-    t1: f64,
-    representation: String,
-    control: Vec<Pose<f64>>,
-}
-
-fn segment(path: &str, i: usize, v: &Value) -> Result<Segment, CliError> {
-    let at = |key: &str| format!("segments[{i}].{key}");
-    let number = |key: &str| {
-        v.get(key)
-            .and_then(Value::as_f64)
-            .filter(|x| x.is_finite())
-            .ok_or_else(|| usage(path, format!("`{}` must be a finite number", at(key))))
-    };
-    let representation = v
-        .get("representation")
-        .and_then(Value::as_str)
-        .ok_or_else(|| usage(path, format!("`{}` must be a string", at("representation"))))?
-        .to_string();
-    let poses = v
-        .get("control_poses")
-        .and_then(Value::as_array)
-        .filter(|a| !a.is_empty())
-        .ok_or_else(|| usage(path, format!("`{}` must be a non-empty list of motors", at("control_poses"))))?;
-    let control = poses
-        .iter()
-        .enumerate()
-        .map(|(j, mv)| pose_in(path, &format!("segments[{i}].control_poses[{j}]"), &json!({ "motor": mv })))
-        .collect::<Result<Vec<_>, _>>()?;
-    Ok(Segment { t0: number("t0")?, t1: number("t1")?, representation, control })
-}
-
-/// The series of a control-data spec (see the module doc).
+/// The series of a control-data spec (see the module doc; the format and its checks are
+/// `motion::schema::ControlSpec`).
 pub(crate) fn series(path: &str, spec: &Value, name: &str, n: usize, k: usize) -> Result<Series, CliError> {
-    let list = spec
-        .get("segments")
-        .and_then(Value::as_array)
-        .filter(|a| !a.is_empty())
-        .ok_or_else(|| usage(path, "`segments` must be a non-empty list"))?;
-    let segments = list.iter().enumerate().map(|(i, v)| segment(path, i, v)).collect::<Result<Vec<_>, _>>()?;
+    let ControlSpec { segments, body_points } = ControlSpec::from_value(spec).map_err(|e| usage(path, e))?;
     let kind = segments[0].representation.clone();
-    if let Some((i, s)) = segments.iter().enumerate().find(|(_, s)| s.representation != kind) {
-        return Err(usage(
-            path,
-            format!(
-                "`segments[{i}].representation` is `{}`, but segment 0's is `{kind}`: one kind per plot",
-                s.representation
-            ),
-        ));
-    }
-    for (i, pair) in segments.windows(2).enumerate() {
-        if pair[0].t1 != pair[1].t0 {
-            return Err(usage(path, format!("`segments[{}].t0` must equal `segments[{i}].t1` (no gaps)", i + 1)));
-        }
-    }
-    let body_points: Vec<[f64; 3]> = match spec.get("body_points") {
-        Some(v) => {
-            serde_json::from_value(v.clone()).map_err(|_| usage(path, "`body_points` must be a list of [x, y, z]"))?
-        }
-        None => vec![[0.0; 3]],
-    };
     let mut breaks: Vec<f64> = segments.iter().map(|s| s.t0).collect();
     breaks.push(segments[segments.len() - 1].t1);
     let shape = Shape {
         label: format!("{name}: {kind}"),
         method: kind.clone(),
         segments: segments.len(),
-        degree: segments.iter().map(|s| s.control.len() - 1).max().unwrap_or(0),
+        degree: segments.iter().map(|s| s.control_poses.len() - 1).max().unwrap_or(0),
         key_times: breaks.clone(),
         joins: breaks[1..breaks.len() - 1].to_vec(),
     };
     let bad = |e: motion::CurveError| usage(path, format!("segments: {e}"));
-    let controls = segments.into_iter().map(|s| s.control);
+    let controls = segments.into_iter().map(|s| s.control_poses);
     match kind.as_str() {
         "additive-bezier" | "dual-quaternion-bezier" => {
             let parts = controls.map(|c| AdditiveBezier::new(c).map_err(bad)).collect::<Result<Vec<_>, _>>()?;

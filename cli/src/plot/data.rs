@@ -128,7 +128,7 @@ fn file_name(path: &str) -> &str {
 /// Whether `path` holds a `gam interpolate` spec (a top-level `method` key), and its JSON.
 fn read_json(path: &str) -> Result<Value, CliError> {
     let text = std::fs::read_to_string(path).map_err(|e| CliError::usage(format!("cannot read `{path}`: {e}")))?;
-    serde_json::from_str(&strip_comments(&text)).map_err(|e| usage(path, format!("invalid JSON: {e}")))
+    motion::schema::parse_json(&strip_comments(&text)).map_err(|e| usage(path, e))
 }
 
 /// The series of the spec at `path`: `n ≥ 2` samples and `frames` body frames.
