@@ -69,7 +69,12 @@ fn qualify_missing_field(message: &str, text: &str) -> String {
 /// Reads and checks the spec file.
 pub(crate) fn read_spec(path: &str) -> Result<Spec, CliError> {
     let text = std::fs::read_to_string(path).map_err(|e| CliError::usage(format!("cannot read `{path}`: {e}")))?;
-    let text = strip_comments(&text);
+    parse_spec(path, &text)
+}
+
+/// Checks the spec `text` (named `path` in messages).
+pub(crate) fn parse_spec(path: &str, text: &str) -> Result<Spec, CliError> {
+    let text = strip_comments(text);
     let spec: Spec = serde_json::from_str(&text).map_err(|e| {
         let (what, message) = match e.classify() {
             serde_json::error::Category::Syntax | serde_json::error::Category::Eof => ("invalid JSON", e.to_string()),
@@ -100,11 +105,15 @@ pub(crate) fn build_segment(spec: &Spec) -> Result<AnyHermiteSegment<f64>, CliEr
 
 /// Runs `gam hermite`.
 pub fn hermite(path: &str, json: bool) -> Result<String, CliError> {
-    let spec = read_spec(path)?;
+    hermite_of(path, &read_spec(path)?, json)
+}
+
+/// `gam hermite` of a checked spec (named `path` in messages).
+pub(crate) fn hermite_of(path: &str, spec: &Spec, json: bool) -> Result<String, CliError> {
     if spec.body_point.is_some() {
         return Err(CliError::usage(format!("`{path}`: `body_point` is only used by `gam sample` and `gam plot`")));
     }
-    let seg = build_segment(&spec)?;
+    let seg = build_segment(spec)?;
     let kind = seg.kind();
     let degree = seg.degree();
     let poses: Vec<&Even<f64>> = seg.control_poses().iter().collect();

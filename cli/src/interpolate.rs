@@ -71,7 +71,12 @@ pub(crate) fn usage(path: &str, what: impl std::fmt::Display) -> CliError {
 /// Reads the file; `Ok(None)` when it is not a `gam interpolate` spec (no top-level `method`).
 fn read(path: &str) -> Result<Option<Spec>, CliError> {
     let text = std::fs::read_to_string(path).map_err(|e| CliError::usage(format!("cannot read `{path}`: {e}")))?;
-    let text = strip_comments(&text);
+    read_text(path, &text)
+}
+
+/// [`read`] of the spec `text` (named `path` in messages).
+fn read_text(path: &str, text: &str) -> Result<Option<Spec>, CliError> {
+    let text = strip_comments(text);
     let value: Value = serde_json::from_str(&text).map_err(|e| usage(path, format!("invalid JSON: {e}")))?;
     if value.get("method").is_none() {
         return Ok(None);
@@ -291,13 +296,19 @@ pub(crate) fn built(path: &str) -> Result<Built, CliError> {
     build(path, &spec)
 }
 
+/// [`built`] of the spec `text` (named `path` in messages).
+pub(crate) fn built_text(path: &str, text: &str) -> Result<Built, CliError> {
+    let spec = read_text(path, text)?.ok_or_else(|| usage(path, "invalid spec: missing field `method`"))?;
+    build(path, &spec)
+}
+
 fn finite3(v: &[f64; 3]) -> bool {
     v.iter().all(|x| x.is_finite())
 }
 
 /// The work of sampling `n` values: `n × (degree + 1)²` per body point (as for `gam sample`),
 /// with the largest segment degree, checked against the budget.
-fn check_work(b: &Built, n: usize) -> Result<(), CliError> {
+pub(crate) fn check_work(b: &Built, n: usize) -> Result<(), CliError> {
     let (points, degree) = (b.body_points.len().max(1), b.motion.max_degree());
     crate::budget::check(
         &format!("sampling {points} body points of degree-{degree} segments at {n} values"),
@@ -311,7 +322,12 @@ fn sample_at(b: &Built, n: usize, i: usize) -> Result<TrajectorySample<f64>, Cli
     let times = b.motion.times();
     let (t0, t1) = (times[0], times[times.len() - 1]);
     let t = if i + 1 == n { t1 } else { t0 + (t1 - t0) * (i as f64 / (n - 1) as f64) };
-    let s = b.motion.sample(&t, &b.body_points).map_err(|e| CliError::math(e.to_string()))?;
+    sample_t(b, &b.body_points, t)
+}
+
+/// The sample at `t` of `body_points`, checked finite.
+pub(crate) fn sample_t(b: &Built, body_points: &[[f64; 3]], t: f64) -> Result<TrajectorySample<f64>, CliError> {
+    let s = b.motion.sample(&t, body_points).map_err(|e| CliError::math(e.to_string()))?;
     let ok = s.points.iter().all(|p| finite3(&p.position) && finite3(&p.velocity))
         && finite3(&s.space_twist.angular.to_array());
     if !ok {
@@ -322,13 +338,18 @@ fn sample_at(b: &Built, n: usize, i: usize) -> Result<TrajectorySample<f64>, Cli
 
 /// One sample as a JSON object of `gam interpolate --json`.
 fn sample_json(s: &TrajectorySample<f64>) -> Result<Value, CliError> {
-    let matrix = s.pose.unitize().and_then(|u| u.to_matrix()).map_err(|e| CliError::math(e.to_string()))?;
+    let matrix = sample_matrix(s)?;
     // `x + 0.0` prints -0.0 as 0.0.
     let v3 = |v: &[f64; 3]| v.map(|x| x + 0.0);
     Ok(json!({"t": s.t, "matrix": matrix.map(|r| r.map(|x| x + 0.0)),
         "points": s.points.iter().map(|p| v3(&p.position)).collect::<Vec<_>>(),
         "velocities": s.points.iter().map(|p| v3(&p.velocity)).collect::<Vec<_>>(),
         "angular_velocity": v3(&s.space_twist.angular.to_array())}))
+}
+
+/// The rigid (normalised) pose of a sample as a 4x4 matrix.
+pub(crate) fn sample_matrix(s: &TrajectorySample<f64>) -> Result<[[f64; 4]; 4], CliError> {
+    s.pose.unitize().and_then(|u| u.to_matrix()).map_err(|e| CliError::math(e.to_string()))
 }
 
 /// The contract's `segments` array.
@@ -356,13 +377,32 @@ fn segments_json(b: &Built) -> Vec<Value> {
 /// (method, parameters, segments), then a first pass that computes every sample and discards
 /// it (a failure leaves stdout empty), then a second that writes them one by one.
 fn stream_json(b: &Built) -> Result<String, CliError> {
-    let n = if b.samples >= 2 { b.samples } else { 0 };
-    if n > 0 {
-        check_work(b, n)?;
+    let n = b.checked_samples()?;
+    write_streamed(&head_json(b), n, &|i| sample_json(&sample_at(b, n, i)?))
+}
+
+/// The whole `gam interpolate --json` value at once (the Python package's `interpolate`).
+pub(crate) fn json_value(b: &Built) -> Result<Value, CliError> {
+    let n = b.checked_samples()?;
+    let mut out = head_json(b);
+    out["samples"] = (0..n).map(|i| sample_json(&sample_at(b, n, i)?)).collect::<Result<Value, CliError>>()?;
+    Ok(out)
+}
+
+/// `method`, `parameters` and `segments` of `gam interpolate --json`.
+fn head_json(b: &Built) -> Value {
+    json!({"method": b.motion.method().name(), "parameters": b.motion.times(), "segments": segments_json(b)})
+}
+
+impl Built {
+    /// The number of samples of the spec (0 for none), its work checked against the budget.
+    fn checked_samples(&self) -> Result<usize, CliError> {
+        let n = if self.samples >= 2 { self.samples } else { 0 };
+        if n > 0 {
+            check_work(self, n)?;
+        }
+        Ok(n)
     }
-    let head =
-        json!({"method": b.motion.method().name(), "parameters": b.motion.times(), "segments": segments_json(b)});
-    write_streamed(&head, n, &|i| sample_json(&sample_at(b, n, i)?))
 }
 
 /// Writes `head` with a `samples` array of `n` objects appended, sample by sample in bounded

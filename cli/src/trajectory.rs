@@ -7,13 +7,13 @@
 //! (multiplicative, W-L, hexanion) exit 2 with one `error:` line saying so.
 
 use crate::error::CliError;
-use crate::interpolate::{built, usage};
+use crate::interpolate::{Built, built, usage};
 use crate::scalar::format_f64;
 use motion::method::BuildError;
 use serde_json::json;
 
 /// `x,y,z` of `--point`: three finite numbers.
-fn point(text: &str) -> Result<[f64; 3], CliError> {
+pub(crate) fn point(text: &str) -> Result<[f64; 3], CliError> {
     let bad = || CliError::usage(format!("`--point {text}`: expected three finite numbers `x,y,z`"));
     let v: Vec<f64> = text.split(',').map(|s| s.trim().parse::<f64>().map_err(|_| bad())).collect::<Result<_, _>>()?;
     match v[..] {
@@ -25,7 +25,11 @@ fn point(text: &str) -> Result<[f64; 3], CliError> {
 /// Runs `gam trajectory`.
 pub fn trajectory(path: &str, point_text: &str, json: bool) -> Result<String, CliError> {
     let x = point(point_text)?;
-    let b = built(path)?;
+    trajectory_of(path, &built(path)?, x, json)
+}
+
+/// `gam trajectory` of the point `x` under a built spec (named `path` in messages).
+pub(crate) fn trajectory_of(path: &str, b: &Built, x: [f64; 3], json: bool) -> Result<String, CliError> {
     let method = b.motion.method();
     let segments = b.motion.rational_trajectories(&x).map_err(|e| match e {
         BuildError::NotRational { .. } => usage(path, e),
