@@ -4,6 +4,7 @@
 
 use crate::gam_error;
 use crate::pose::PyPose;
+use gam_cli::api::CliError;
 use numpy::ndarray::Array;
 use numpy::{PyArray, PyArrayDyn, PyArrayMethods, PyReadonlyArrayDyn, PyUntypedArrayMethods};
 use pyo3::prelude::*;
@@ -118,40 +119,26 @@ fn apply(m: &[f64], p: &[f64]) -> [f64; 3] {
     std::array::from_fn(|i| m[4 * i] * p[0] + m[4 * i + 1] * p[1] + m[4 * i + 2] * p[2] + m[4 * i + 3])
 }
 
-/// The matrices of `matrices_or_poses`: a `Pose`, a list of `Pose`s, or an array (4, 4) or
-/// (N, 4, 4); `None` for the count means one matrix for every point.
-fn matrices(obj: &Bound<'_, PyAny>) -> PyResult<(Vec<f64>, Option<usize>)> {
+/// The matrices of `matrices_or_poses` when they are `Pose`s (one, or a list): their entries
+/// and their count (`None`: one pose for every point); `None` when it is not made of poses.
+fn pose_matrices(obj: &Bound<'_, PyAny>) -> PyResult<Option<(Vec<f64>, Option<usize>)>> {
     if let Ok(p) = obj.cast::<PyPose>() {
-        return Ok((p.get().matrix_entries()?.to_vec(), None));
+        return Ok(Some((p.get().matrix_entries()?.to_vec(), None)));
     }
     let is_seq = obj.cast::<PyList>().is_ok() || obj.cast::<PyTuple>().is_ok();
-    if is_seq && obj.len()? > 0 && obj.get_item(0)?.cast::<PyPose>().is_ok() {
-        let mut out = Vec::with_capacity(16 * obj.len()?);
-        for (i, item) in obj.try_iter()?.enumerate() {
-            let item = item?;
-            let p = item.cast::<PyPose>().map_err(|_| {
-                gam_error(format!("`matrices_or_poses[{i}]` is not a Pose (a list must hold only Poses)"))
-            })?;
-            out.extend_from_slice(&p.get().matrix_entries()?);
-        }
-        let n = out.len() / 16;
-        return Ok((out, Some(n)));
+    if !(is_seq && obj.len()? > 0 && obj.get_item(0)?.cast::<PyPose>().is_ok()) {
+        return Ok(None);
     }
-    let what = "matrices_or_poses";
-    let a = floats(obj, what)?;
-    let shape = a.shape().to_vec();
-    let count = match shape[..] {
-        [4, 4] => None,
-        [n, 4, 4] => Some(n),
-        _ => {
-            return Err(gam_error(format!(
-                "`{what}` must have shape (N, 4, 4) or (4, 4), or be Poses (got shape {})",
-                shape_text(&shape)
-            )));
-        }
-    };
-    let m = finite_entries(&a, what)?.into_owned();
-    Ok((m, count))
+    let mut out = Vec::with_capacity(16 * obj.len()?);
+    for (i, item) in obj.try_iter()?.enumerate() {
+        let item = item?;
+        let p = item
+            .cast::<PyPose>()
+            .map_err(|_| gam_error(format!("`matrices_or_poses[{i}]` is not a Pose (a list must hold only Poses)")))?;
+        out.extend_from_slice(&p.get().matrix_entries()?);
+    }
+    let n = out.len() / 16;
+    Ok(Some((out, Some(n))))
 }
 
 /// `gam.transform_points(matrices_or_poses, points)`: the images of N points under N rigid poses
@@ -166,7 +153,33 @@ pub(crate) fn transform_points<'py>(
     matrices_or_poses: &Bound<'py, PyAny>,
     points: &Bound<'py, PyAny>,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let (m, m_count) = matrices(matrices_or_poses)?;
+    let poses = pose_matrices(matrices_or_poses)?;
+    let array = match poses {
+        Some(_) => None,
+        None => Some(floats(matrices_or_poses, "matrices_or_poses")?),
+    };
+    let (m, m_count): (std::borrow::Cow<'_, [f64]>, Option<usize>) = match (&poses, &array) {
+        (Some((m, count)), _) => (m.as_slice().into(), *count),
+        (None, Some(a)) => {
+            let count = match a.shape() {
+                [4, 4] => None,
+                [n, 4, 4] => Some(*n),
+                shape => {
+                    return Err(gam_error(format!(
+                        "`matrices_or_poses` must have shape (N, 4, 4) or (4, 4), or be Poses (got shape {})",
+                        shape_text(shape)
+                    )));
+                }
+            };
+            // entries are checked finite with the rigidity, in the one pass below
+            let data: std::borrow::Cow<'_, [f64]> = match a.as_slice() {
+                Ok(m) => m.into(),
+                Err(_) => a.as_array().iter().copied().collect::<Vec<f64>>().into(),
+            };
+            (data, count)
+        }
+        (None, None) => return Err(gam_error("internal: no matrices")),
+    };
     let pa = floats(points, "points")?;
     let pshape = pa.shape().to_vec();
     let p_count = match pshape[..] {
@@ -193,31 +206,39 @@ pub(crate) fn transform_points<'py>(
     let (m_step, p_step) = (if m_count.is_some() { 16 } else { 0 }, if p_count.is_some() { 3 } else { 0 });
     let out = crate::run_detached(py, || {
         let check = |i: usize| {
-            rigid(&m[i * 16..i * 16 + 16]).map_err(|why| {
-                let at = if m_count.is_some() { format!("[{i}]") } else { String::new() };
-                gam_cli::api::CliError::usage(format!("`matrices_or_poses{at}` is not a rigid motion: {why}"))
+            let at = || if m_count.is_some() { format!("[{i}]") } else { String::new() };
+            let mi = &m[i * 16..i * 16 + 16];
+            if let Some(x) = mi.iter().find(|x| !x.is_finite()) {
+                let at = at();
+                return Err(CliError::usage(format!(
+                    "`matrices_or_poses{at}` has the entry {x}: entries must be finite"
+                )));
+            }
+            rigid(mi).map_err(|why| {
+                CliError::usage(format!("`matrices_or_poses{} is not a rigid motion: {why}", at() + "`"))
             })
         };
-        let matrices = if m_count.is_some() { n } else { 1 };
-        let first_bad = if matrices > PARALLEL_ABOVE {
-            (0..matrices).into_par_iter().filter_map(|i| check(i).err().map(|e| (i, e))).min_by_key(|(i, _)| *i)
-        } else {
-            (0..matrices).find_map(|i| check(i).err().map(|e| (i, e)))
+        // one pass: check the pose (once per pose) and map the point
+        let one = |i: usize, o: &mut [f64]| -> Result<(), CliError> {
+            if m_step > 0 || i == 0 {
+                check(i * m_step / 16)?;
+            }
+            o.copy_from_slice(&apply(&m[i * m_step..i * m_step + 16], &p[i * p_step..i * p_step + 3]));
+            Ok(())
         };
-        if let Some((_, e)) = first_bad {
-            return Err(e);
-        }
         let mut out = vec![0.0; 3 * n];
-        let one = |(i, o): (usize, &mut [f64])| {
-            let y = apply(&m[i * m_step..i * m_step + 16], &p[i * p_step..i * p_step + 3]);
-            o.copy_from_slice(&y);
-        };
-        if n > PARALLEL_ABOVE {
-            out.par_chunks_mut(3).enumerate().with_min_len(1024).for_each(one);
+        let done = if n > PARALLEL_ABOVE {
+            out.par_chunks_mut(3).enumerate().with_min_len(1024).try_for_each(|(i, o)| one(i, o))
         } else {
-            out.chunks_mut(3).enumerate().for_each(one);
+            out.chunks_mut(3).enumerate().try_for_each(|(i, o)| one(i, o))
+        };
+        match done {
+            // the first bad pose in index order (a parallel pass stops at any)
+            Err(_) => Err((0..if m_step > 0 { n } else { 1 })
+                .find_map(|i| check(i).err())
+                .unwrap_or_else(|| CliError::usage("`matrices_or_poses`: a pose is not a rigid motion".to_string()))),
+            Ok(()) => Ok(out),
         }
-        Ok(out)
     })?;
     array2(py, n, 3, out)
 }
