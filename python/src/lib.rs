@@ -2,9 +2,9 @@
 //!
 //! - The mirror functions (`eval`, `table`, `prove`, `verify`, `pose`, `hermite`,
 //!   `interpolate`, `trajectory`) call the command line's own code (`gam_cli::api`) and return
-//!   its `--json` value as Python objects ([`convert`]).
-//! - `Pose` ([`pose`]), `build(spec) -> Motion` ([`motion`]) and `transform_points`
-//!   ([`arrays`]) work on numpy arrays.
+//!   its `--json` value as Python objects (module `convert`).
+//! - `Pose` (module `pose`), `build(spec) -> Motion` (module `motion`) and `transform_points`
+//!   (module `arrays`) work on numpy arrays.
 //!
 //! Every failure is a `gam.GamError` (a `ValueError`) carrying the command's `error:` message;
 //! long calls run with the interpreter detached (other Python threads go on).
