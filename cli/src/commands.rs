@@ -78,9 +78,13 @@ pub struct EvalArgs {
 
 /// `gam eval`: parse, evaluate over the chosen scalar, print in the chosen basis.
 pub fn eval(args: &EvalArgs) -> Result<String, CliError> {
+    eval_text(args, &expression_text(&args.expr)?)
+}
+
+/// `gam eval` of the expression `text` itself (`args.expr` is not read: no `@FILE`, no stdin).
+pub fn eval_text(args: &EvalArgs, text: &str) -> Result<String, CliError> {
     let alg = crate::budget::algebra(&args.algebra)?;
-    let text = expression_text(&args.expr)?;
-    let ast = expr::parse(&text, &alg)?;
+    let ast = expr::parse(text, &alg)?;
     let ev = Evaluator::new(&alg, args.basis);
     match args.scalar {
         ScalarKind::Rational => render(&ev.eval::<Q>(&ast)?, args.json),

@@ -72,7 +72,7 @@ fn finite3(v: &[f64; 3]) -> bool {
 
 /// The work of sampling `n` values: `n × (degree + 1)²` per body point (as for `gam sample`),
 /// with the largest segment degree, checked against the budget.
-fn check_work(b: &Built, n: usize) -> Result<(), CliError> {
+pub(crate) fn check_work(b: &Built, n: usize) -> Result<(), CliError> {
     let (points, degree) = (b.body_points.len().max(1), b.motion.max_degree());
     crate::budget::check(
         &format!("sampling {points} body points of degree-{degree} segments at {n} values"),
@@ -86,7 +86,12 @@ fn sample_at(b: &Built, n: usize, i: usize) -> Result<TrajectorySample<f64>, Cli
     let times = b.motion.times();
     let (t0, t1) = (times[0], times[times.len() - 1]);
     let t = if i + 1 == n { t1 } else { t0 + (t1 - t0) * (i as f64 / (n - 1) as f64) };
-    let s = b.motion.sample(&t, &b.body_points).map_err(|e| CliError::math(e.to_string()))?;
+    sample_t(b, &b.body_points, t)
+}
+
+/// The sample at `t` of `body_points`, checked finite (also the Python package's sampler).
+pub(crate) fn sample_t(b: &Built, body_points: &[[f64; 3]], t: f64) -> Result<TrajectorySample<f64>, CliError> {
+    let s = b.motion.sample(&t, body_points).map_err(|e| CliError::math(e.to_string()))?;
     let ok = s.points.iter().all(|p| finite3(&p.position) && finite3(&p.velocity))
         && finite3(&s.space_twist.angular.to_array());
     if !ok {
@@ -97,13 +102,18 @@ fn sample_at(b: &Built, n: usize, i: usize) -> Result<TrajectorySample<f64>, Cli
 
 /// One sample as a JSON object of `gam interpolate --json`.
 fn sample_json(s: &TrajectorySample<f64>) -> Result<Value, CliError> {
-    let matrix = s.pose.unitize().and_then(|u| u.to_matrix()).map_err(|e| CliError::math(e.to_string()))?;
+    let matrix = sample_matrix(s)?;
     // `x + 0.0` prints -0.0 as 0.0.
     let v3 = |v: &[f64; 3]| v.map(|x| x + 0.0);
     Ok(json!({"t": s.t, "matrix": matrix.map(|r| r.map(|x| x + 0.0)),
         "points": s.points.iter().map(|p| v3(&p.position)).collect::<Vec<_>>(),
         "velocities": s.points.iter().map(|p| v3(&p.velocity)).collect::<Vec<_>>(),
         "angular_velocity": v3(&s.space_twist.angular.to_array())}))
+}
+
+/// The rigid (normalised) pose of a sample as a 4x4 matrix.
+pub(crate) fn sample_matrix(s: &TrajectorySample<f64>) -> Result<[[f64; 4]; 4], CliError> {
+    s.pose.unitize().and_then(|u| u.to_matrix()).map_err(|e| CliError::math(e.to_string()))
 }
 
 /// The contract's `segments` array.

@@ -1,26 +1,14 @@
 //! `gam`: the GAM command line (see docs/cli.md and the contract in shared/cli.md).
 //!
-//! This file only parses arguments (clap), dispatches to [`commands`], and maps failures to
-//! exit statuses: 2 for bad usage or input, 1 for a mathematical failure, each with exactly one
-//! `error:` line on stderr and nothing on stdout.
+//! This file only parses arguments (clap), dispatches to the commands of the `gam` library
+//! (cli/src/lib.rs, which the Python package calls too), and maps failures to exit statuses:
+//! 2 for bad usage or input, 1 for a mathematical failure, each with exactly one `error:` line
+//! on stderr and nothing on stdout.
 
-mod budget;
-mod codegen;
-mod commands;
-mod error;
-mod eval;
-mod expr;
-mod figures;
-mod hermite;
-mod interpolate;
-mod output;
-mod plot;
-mod pose;
-mod prove;
-mod sample;
-mod scalar;
-mod trajectory;
-mod verify;
+use gam::{
+    algebra_help, codegen, commands, error, figures, hermite, interpolate, plot, pose, prove, sample, scalar,
+    trajectory, verify,
+};
 
 use algebra_core::{Basis, Product};
 use clap::error::ErrorKind;
@@ -36,11 +24,6 @@ use std::process::ExitCode;
 struct Cli {
     #[command(subcommand)]
     command: Command,
-}
-
-/// The `--algebra` help, naming the built-ins from algebra-core's one table.
-pub(crate) fn algebra_help() -> String {
-    format!("A built-in algebra ({}) or a path to a TOML file", algebra_core::algebra::builtin_names())
 }
 
 #[derive(Debug, Subcommand)]

@@ -60,7 +60,6 @@ pub struct Streamed<'a> {
 
 impl Streamed<'_> {
     /// The whole result as one value.
-    #[allow(dead_code)] // the entry point of a second front door (the Python binding)
     pub fn into_value(self) -> Result<Value, crate::error::CliError> {
         let samples = (0..self.n).map(|i| (self.sample)(i)).collect::<Result<Vec<_>, _>>()?;
         let mut head = self.head;

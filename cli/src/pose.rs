@@ -31,7 +31,7 @@ fn motor_of(s: &Pose<f64>) -> Motor<f64> {
 }
 
 /// Every representation of a (non-singular) pose, as the contract's JSON object.
-fn representations(s: &Pose<f64>) -> Result<Value, CliError> {
+pub(crate) fn representations(s: &Pose<f64>) -> Result<Value, CliError> {
     let math = |e: &dyn std::fmt::Display| CliError::math(e.to_string());
     let u = canonical_pose(&s.unitize().map_err(|e| math(&e))?);
     let matrix = u.to_matrix().map_err(|e| math(&e))?;

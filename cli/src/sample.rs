@@ -33,7 +33,6 @@ pub enum SampleSpec {
 
 impl SampleSpec {
     /// The spec of an already parsed JSON value (`label` names it in messages).
-    #[allow(dead_code)] // the entry point of a second front door (the Python binding)
     pub fn from_value(label: &str, v: &Value) -> Result<Self, CliError> {
         if v.get("method").is_some() {
             let spec = InterpolateSpec::from_value(v).map_err(|e| crate::interpolate::schema_error(label, e))?;

@@ -14,7 +14,7 @@ use motion::schema::InterpolateSpec;
 use serde_json::{Value, json};
 
 /// `x,y,z` of `--point`: three finite numbers.
-fn point(text: &str) -> Result<[f64; 3], CliError> {
+pub(crate) fn point(text: &str) -> Result<[f64; 3], CliError> {
     let bad = || CliError::usage(format!("`--point {text}`: expected three finite numbers `x,y,z`"));
     let v: Vec<f64> = text.split(',').map(|s| s.trim().parse::<f64>().map_err(|_| bad())).collect::<Result<_, _>>()?;
     match v[..] {
