@@ -21,6 +21,7 @@ mod general;
 pub use exp_log::F64_GENERAL_BOUND;
 mod inverse;
 mod ops;
+mod scaling;
 #[cfg(feature = "rug")]
 pub mod symbolic;
 
