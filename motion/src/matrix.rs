@@ -52,9 +52,16 @@ impl<T: Field> Pose<T> {
     /// ```
     pub fn to_matrix(&self) -> Result<Matrix4<T>, MotionError> {
         crate::scaled::require_finite("to_matrix", self, [])?;
+        if let Some((_, s)) = crate::scaled::unusual_scale(self) {
+            // the matrix does not depend on the scale of S: computed from S/2^e
+            return s.to_matrix();
+        }
         let (rows, alpha) = self.action_rows();
         let inv = alpha.try_recip().ok_or_else(|| self.singular("to_matrix"))?;
         let [r0, r1, r2] = rows.map(|r| r.map(|x| x.mul_ref(&inv)));
+        if ![&r0, &r1, &r2].into_iter().flatten().all(Ring::is_finite_value) {
+            return Err(self.overflow("to_matrix"));
+        }
         Ok([r0, r1, r2, [T::zero(), T::zero(), T::zero(), T::one()]])
     }
 }
