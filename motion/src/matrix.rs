@@ -68,6 +68,7 @@ impl<T: Field> Pose<T> {
 
 impl<T: Real> Pose<T> {
     /// The unit pose `S = R T` of a rigid matrix `[[R, v], [0, 1]]`: fails with
+    /// [`MotionError::BadTolerance`] unless `tol` is finite and non-negative, with
     /// [`MotionError::NotRigid`] unless the bottom row is `[0, 0, 0, 1]`, `RᵀR = I` (each entry)
     /// within `tol`, and `det R > 0`. Of the two unit poses `±S` the one with non-negative
     /// scalar part is returned.
@@ -80,10 +81,15 @@ impl<T: Real> Pose<T> {
     /// let mut shear = m;
     /// shear[0][1] = -1.5;
     /// assert!(motion::Pose::from_matrix(&shear, &1e-12).is_err());
+    /// assert!(matches!(motion::Pose::from_matrix(&shear, &f64::INFINITY), Err(motion::MotionError::BadTolerance { .. })));
     /// ```
     pub fn from_matrix(m: &Matrix4<T>, tol: &T) -> Result<Self, MotionError> {
         for x in m.iter().flatten() {
             check_finite_scalar("from_matrix", x)?;
+        }
+        // not (tol >= 0) also catches NaN
+        if !(Real::is_finite(tol) && *tol >= T::zero()) {
+            return Err(MotionError::BadTolerance { op: "from_matrix", value: tol.to_string() });
         }
         let not_rigid = |why: String| MotionError::NotRigid { why };
         let close = |x: &T, y: &T| Real::abs(&x.sub_ref(y)) <= *tol;

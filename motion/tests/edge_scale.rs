@@ -129,3 +129,30 @@ fn a_spline_through_parameters_1e300_apart_is_finite_and_hits_its_key_poses() {
         assert!(m.pose(&t).unwrap().is_finite(), "t = {t}");
     }
 }
+
+#[test]
+fn from_matrix_validates_its_tolerance() {
+    let shear = [[1.0, 1.5, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0], [0.0, 0.0, 0.0, 1.0]];
+    let id = Pose::<f64>::identity().to_matrix().unwrap();
+    for tol in [f64::NAN, -1e-12, f64::INFINITY] {
+        for m in [&shear, &id] {
+            let e = Pose::from_matrix(m, &tol).unwrap_err();
+            assert!(matches!(e, MotionError::BadTolerance { op: "from_matrix", .. }), "{tol}: {e}");
+        }
+    }
+    assert_eq!(Pose::from_matrix(&id, &0.0).unwrap(), Pose::identity());
+    assert!(Pose::from_matrix(&shear, &1e300).is_ok(), "a finite tolerance is the caller's choice");
+}
+
+#[test]
+fn reparametrized_over_the_whole_f64_range_evaluates_at_the_right_place() {
+    use motion::{AdditiveBezier, Motion, Reparametrized};
+    let inner = AdditiveBezier::new(vec![Pose::identity(), Pose::translation(&[2.0, 0.0, 0.0])]).unwrap();
+    let m = Reparametrized::new(inner, [-1e308, 1e308]).unwrap();
+    // t = 0 is the middle (inner 1/2), t = 5e307 three quarters: hand computation
+    for (t, want) in [(0.0f64, 1.0f64), (5e307, 1.5), (-1e308, 0.0), (1e308, 2.0)] {
+        assert!((m.inner_parameter(&t) - want / 2.0).abs() < 1e-15, "t = {t:e}");
+        let p = m.pose(&t).unwrap().transform_point(&[0.0; 3]).unwrap();
+        assert!(max_abs_diff(&p, &[want, 0.0, 0.0]) < 1e-15, "t = {t:e}: {p:?}");
+    }
+}
