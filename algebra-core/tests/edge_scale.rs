@@ -86,3 +86,14 @@ fn scaling_by_a_power_of_two_commutes_with_log_and_sqrt() {
         assert_close(y.sqrt().unwrap().coeffs(), &want, 1e-14, &format!("sqrt at 4^{}", k / 2));
     }
 }
+
+#[test]
+fn near_a_half_angle_of_pi_f64_says_ill_conditioned_not_undefined() {
+    // the screw exp(π(1 - 1e-9) e12 + 0.2 e03) has a logarithm (MPFR finds it); f64's repeated
+    // square roots fail there, which is ill-conditioning, not "no real logarithm"
+    let pga = Algebra::builtin("pga3").unwrap();
+    let b = Multivector::from_terms(&pga, Basis::Blade, [("e12", std::f64::consts::PI * (1.0 - 1e-9)), ("e03", 0.2)])
+        .unwrap();
+    let e = b.exp().unwrap().log().unwrap_err().to_string();
+    assert!(e.contains("is ill-conditioned") && !e.contains("not defined"), "{e}");
+}

@@ -223,9 +223,10 @@ impl<T: Ring> Pose<T> {
         MotionError::Singular { op, value: self.to_string() }
     }
 
-    /// [`MotionError::NotFinite`] about a result of `op` on `self` that overflowed.
+    /// [`MotionError::NotFinite`] about a result of `op` on `self` that overflowed (the pose
+    /// is not printed: its huge coefficients would fill the error line).
     pub(crate) fn overflow(&self, op: &'static str) -> MotionError {
-        MotionError::NotFinite { op, value: format!("the result for the pose {self}") }
+        MotionError::NotFinite { op, value: "the result (an overflow)".to_string() }
     }
 }
 
