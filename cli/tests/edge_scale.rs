@@ -112,3 +112,13 @@ fn a_closed_stdout_is_an_error() {
         std::process::Command::new("sh").arg("-c").arg(format!("exec '{bin}' eval e1 >/dev/null")).output().unwrap();
     assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
 }
+
+#[test]
+fn keyword_type_names_are_refused_clearly() {
+    let e = fails(&["codegen", "--algebra", "g3", "--types", "Self=grade1"], 2);
+    assert!(e.contains("--types: `Self` is a Rust keyword"), "{e}");
+    for types in ["fn=grade 1", "r#type=grade 1", "Even=even;Self=grade 2"] {
+        let e = fails(&["codegen", "--algebra", "g3", "--types", types], 2);
+        assert!(!e.contains("internal") && !e.contains("does not parse"), "{types}: {e}");
+    }
+}
