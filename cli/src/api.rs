@@ -33,6 +33,12 @@ where
     value.parse().map_err(|e| CliError::usage(format!("invalid value '{value}' for '{flag}': {e}")))
 }
 
+/// `v` unless it holds a non-finite number: the binary's last guard before printing
+/// ([`crate::finite_guard`]), so both doors refuse the same results.
+fn finite(command: &str, v: Value) -> Result<Value, CliError> {
+    crate::finite_guard::finite_output(command, v.to_string()).map(|_| v)
+}
+
 /// Command output (JSON text) as a value.
 fn value(out: &str) -> Result<Value, CliError> {
     serde_json::from_str(out).map_err(|e| CliError::math(format!("internal: the command's JSON does not parse: {e}")))
@@ -53,7 +59,7 @@ pub fn eval(expr: &str, algebra: &str, basis: &str, scalar: &str) -> Result<Valu
         return value(&result?.0);
     }
     let args = crate::commands::EvalArgs { algebra: algebra.into(), basis, scalar, json: true, expr: String::new() };
-    value(&crate::commands::eval_text(&args, expr)?)
+    finite("eval", value(&crate::commands::eval_text(&args, expr)?)?)
 }
 
 /// `gam table --json --algebra ALGEBRA --basis BASIS --product PRODUCT`.
@@ -111,7 +117,7 @@ pub fn verify(filter: Option<&str>) -> Result<Value, CliError> {
 /// # Ok::<(), gam::api::CliError>(())
 /// ```
 pub fn pose(pose: &Value) -> Result<Value, CliError> {
-    crate::pose::pose_json("POSE_JSON", &pose_object(pose, "POSE_JSON")?)
+    finite("pose", crate::pose::pose_json("POSE_JSON", &pose_object(pose, "POSE_JSON")?)?)
 }
 
 /// A pose object of the contract read from a value (`label` names it in messages).
@@ -137,7 +143,7 @@ fn interpolate_spec(spec: &Value, label: &str) -> Result<motion::schema::Interpo
 /// ```
 pub fn hermite(spec: &Value, label: &str) -> Result<Value, CliError> {
     let spec = motion::spec::HermiteSpec::from_value(spec).map_err(|e| crate::hermite::spec_error(label, e))?;
-    crate::hermite::hermite_json(label, &spec)
+    finite("hermite", crate::hermite::hermite_json(label, &spec)?)
 }
 
 /// `gam interpolate --json SPEC.json` of the spec `spec`, named `label` in messages.
@@ -151,7 +157,7 @@ pub fn hermite(spec: &Value, label: &str) -> Result<Value, CliError> {
 /// # Ok::<(), gam::api::CliError>(())
 /// ```
 pub fn interpolate(spec: &Value, label: &str) -> Result<Value, CliError> {
-    interpolate::interpolate_json(label, &interpolate_spec(spec, label)?)?.into_value()
+    finite("interpolate", interpolate::interpolate_json(label, &interpolate_spec(spec, label)?)?.into_value()?)
 }
 
 /// `gam trajectory --json SPEC.json --point POINT` of the spec `spec`, named `label` in
@@ -166,7 +172,7 @@ pub fn interpolate(spec: &Value, label: &str) -> Result<Value, CliError> {
 /// ```
 pub fn trajectory(spec: &Value, label: &str, point: &str) -> Result<Value, CliError> {
     let x = crate::trajectory::point(point)?;
-    crate::trajectory::trajectory_json(label, &interpolate_spec(spec, label)?, &x)
+    finite("trajectory", crate::trajectory::trajectory_json(label, &interpolate_spec(spec, label)?, &x)?)
 }
 
 /// A pose object of the contract (any form) as a [`Pose`], checked as `gam pose` checks it

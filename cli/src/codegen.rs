@@ -84,6 +84,13 @@ pub fn codegen(args: &CodegenArgs) -> Result<String, CliError> {
     }
     let bad = |e: CodegenError| CliError::usage(e.to_string());
     let types = ModuleSpec::parse_types(&args.types, &alg).map_err(bad)?;
+    // a type named like a Rust keyword (`Self`, `fn`) made the generated code unparsable
+    if let Some(t) = types.iter().find(|t| t.name.starts_with("r#") || syn::parse_str::<syn::Ident>(&t.name).is_err()) {
+        return Err(CliError::usage(format!(
+            "--types: `{}` is a Rust keyword or not an identifier; choose another type name",
+            t.name
+        )));
+    }
     let mut spec = ModuleSpec::new(&module, alg.metric().clone(), args.basis, types).map_err(bad)?;
     spec.parity_types = args.fallback == Fallback::Parity;
     if let Some(n) = args.table_above {

@@ -23,6 +23,8 @@ pub mod expr;
 #[doc(hidden)]
 pub mod figures;
 #[doc(hidden)]
+pub mod finite_guard;
+#[doc(hidden)]
 pub mod hermite;
 #[doc(hidden)]
 pub mod interpolate;

@@ -6,7 +6,7 @@
 //! on stderr and nothing on stdout.
 
 use gam::{
-    algebra_help, codegen, commands, error, figures, hermite, interpolate, plot, pose, prove, sample, scalar,
+    algebra_help, codegen, commands, error, figures, finite_guard, hermite, interpolate, plot, pose, prove, sample, scalar,
     trajectory, verify,
 };
 
@@ -211,14 +211,25 @@ fn run(command: Command) -> Result<(String, Option<CliError>), CliError> {
                 return result;
             }
             commands::eval(&commands::EvalArgs { algebra, basis, scalar, json, expr })
+                .and_then(|out| finite_guard::finite_output("eval", out))
         }
         Command::Table { algebra, basis, product, json } => commands::table(&algebra, basis, product, json),
         Command::Codegen(args) => codegen::codegen(&args),
-        Command::Hermite { json, spec } => hermite::hermite(&spec, json),
-        Command::Interpolate { json, spec } => interpolate::interpolate(&spec, json),
-        Command::Trajectory { json, spec, point } => trajectory::trajectory(&spec, &point, json),
-        Command::Pose { json, pose } => pose::pose(&pose, json),
-        Command::Sample { samples, json, spec } => sample::sample(&spec, samples, json),
+        Command::Hermite { json, spec } => {
+            hermite::hermite(&spec, json).and_then(|out| finite_guard::finite_output("hermite", out))
+        }
+        Command::Interpolate { json, spec } => {
+            interpolate::interpolate(&spec, json).and_then(|out| finite_guard::finite_output("interpolate", out))
+        }
+        Command::Trajectory { json, spec, point } => {
+            trajectory::trajectory(&spec, &point, json).and_then(|out| finite_guard::finite_output("trajectory", out))
+        }
+        Command::Pose { json, pose } => {
+            pose::pose(&pose, json).and_then(|out| finite_guard::finite_output("pose", out))
+        }
+        Command::Sample { samples, json, spec } => {
+            sample::sample(&spec, samples, json).and_then(|out| finite_guard::finite_output("sample", out))
+        }
         Command::Plot { out, format, samples, view, frames, body, json, specs } => {
             plot::plot(&plot::PlotArgs { specs: &specs, out: &out, format, samples, view, frames, body, json })
         }
@@ -292,8 +303,29 @@ fn check_eval_options(args: &[String]) -> Result<(), String> {
     Ok(())
 }
 
+/// True when the process started with its standard output closed (`gam eval e1 >&-`): the
+/// output would be lost with exit 0. Rust's runtime reopens a closed descriptor 0-2 on
+/// `/dev/null` *read-write* before `main` (a shell's `> /dev/null` opens it write-only), so
+/// on Linux that is what is looked for (`/proc/self/fd/1`, `/proc/self/fdinfo/1`); elsewhere,
+/// a descriptor that cannot be duplicated.
+fn stdout_is_closed() -> bool {
+    use std::os::fd::AsFd;
+    if std::io::stdout().as_fd().try_clone_to_owned().is_err() {
+        return true;
+    }
+    let Ok(target) = std::fs::read_link("/proc/self/fd/1") else { return false };
+    let Ok(info) = std::fs::read_to_string("/proc/self/fdinfo/1") else { return false };
+    // `flags:` in octal; the access mode is its low two bits (O_RDWR = 2)
+    let flags = info.lines().find_map(|l| l.strip_prefix("flags:")).and_then(|f| u32::from_str_radix(f.trim(), 8).ok());
+    target == std::path::Path::new("/dev/null") && flags.is_some_and(|f| f & 3 == 2)
+}
+
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args_os().map(|a| a.to_string_lossy().into_owned()).collect();
+    if stdout_is_closed() {
+        eprintln!("error: cannot write the output: standard output is closed");
+        return ExitCode::from(EXIT_USAGE);
+    }
     if let Err(line) = check_eval_options(&args) {
         eprintln!("{line}");
         return ExitCode::from(EXIT_USAGE);

@@ -37,7 +37,8 @@ pub(crate) fn representations(s: &Pose<f64>) -> Result<Value, CliError> {
     let matrix = u.to_matrix().map_err(|e| math(&e))?;
     let (q, position) = to_quaternion_position(&u).map_err(|e| math(&e))?;
     let v = [q[1], q[2], q[3]];
-    let sin_half = v.iter().map(|x| x * x).sum::<f64>().sqrt();
+    // hypot: the squares of a tiny half-angle (1e-200) underflow
+    let sin_half = v[0].hypot(v[1]).hypot(v[2]);
     let angle = 2.0 * sin_half.atan2(q[0]);
     let axis = if sin_half > 0.0 { v.map(|x| x / sin_half) } else { [0.0; 3] };
     let mut d = to_dual_quaternion(&u).map_err(|e| math(&e))?;

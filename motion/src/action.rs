@@ -96,9 +96,14 @@ impl<T: Field> Pose<T> {
     /// ```
     pub fn transform_point(&self, p: &[T; 3]) -> Result<[T; 3], MotionError> {
         crate::scaled::require_finite("transform_point", self, p)?;
+        if let Some((_, s)) = crate::scaled::unusual_scale(self) {
+            // F_S does not depend on the scale of S: act with S/2^e (1e300 S, 1e-300 S)
+            return s.transform_point(p);
+        }
         let [x, y, z, w] = self.apply_homogeneous(&[p[0].clone(), p[1].clone(), p[2].clone(), T::one()]);
         let inv = w.try_recip().ok_or_else(|| self.singular("transform_point"))?;
-        Ok([x.mul_ref(&inv), y.mul_ref(&inv), z.mul_ref(&inv)])
+        let out = [x.mul_ref(&inv), y.mul_ref(&inv), z.mul_ref(&inv)];
+        if out.iter().all(Ring::is_finite_value) { Ok(out) } else { Err(self.overflow("transform_point")) }
     }
 
     /// The image `A d / α` of a direction (a point at infinity, `W = 0`): the rotation part
@@ -111,8 +116,12 @@ impl<T: Field> Pose<T> {
     /// ```
     pub fn transform_direction(&self, d: &[T; 3]) -> Result<[T; 3], MotionError> {
         crate::scaled::require_finite("transform_direction", self, d)?;
+        if let Some((_, s)) = crate::scaled::unusual_scale(self) {
+            return s.transform_direction(d);
+        }
         let (rows, alpha) = self.action_rows();
         let inv = alpha.try_recip().ok_or_else(|| self.singular("transform_direction"))?;
-        Ok(rows.map(|r| (r[0].mul_ref(&d[0]) + r[1].mul_ref(&d[1]) + r[2].mul_ref(&d[2])).mul_ref(&inv)))
+        let out = rows.map(|r| (r[0].mul_ref(&d[0]) + r[1].mul_ref(&d[1]) + r[2].mul_ref(&d[2])).mul_ref(&inv));
+        if out.iter().all(Ring::is_finite_value) { Ok(out) } else { Err(self.overflow("transform_direction")) }
     }
 }

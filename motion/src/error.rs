@@ -54,6 +54,15 @@ pub enum MotionError {
     /// A rotation quaternion `[w, x, y, z]` that is zero (no rotation to normalise to).
     #[error("the rotation quaternion is zero")]
     ZeroQuaternion,
+    /// A tolerance that is NaN, negative or infinite (an infinite one would accept any
+    /// matrix, a shear among them).
+    #[error("{op}: the tolerance {value} must be a finite number >= 0")]
+    BadTolerance {
+        /// The operation.
+        op: &'static str,
+        /// The tolerance, printed.
+        value: String,
+    },
 }
 
 /// Why building or evaluating a motion curve failed.

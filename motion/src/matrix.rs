@@ -52,15 +52,23 @@ impl<T: Field> Pose<T> {
     /// ```
     pub fn to_matrix(&self) -> Result<Matrix4<T>, MotionError> {
         crate::scaled::require_finite("to_matrix", self, [])?;
+        if let Some((_, s)) = crate::scaled::unusual_scale(self) {
+            // the matrix does not depend on the scale of S: computed from S/2^e
+            return s.to_matrix();
+        }
         let (rows, alpha) = self.action_rows();
         let inv = alpha.try_recip().ok_or_else(|| self.singular("to_matrix"))?;
         let [r0, r1, r2] = rows.map(|r| r.map(|x| x.mul_ref(&inv)));
+        if ![&r0, &r1, &r2].into_iter().flatten().all(Ring::is_finite_value) {
+            return Err(self.overflow("to_matrix"));
+        }
         Ok([r0, r1, r2, [T::zero(), T::zero(), T::zero(), T::one()]])
     }
 }
 
 impl<T: Real> Pose<T> {
     /// The unit pose `S = R T` of a rigid matrix `[[R, v], [0, 1]]`: fails with
+    /// [`MotionError::BadTolerance`] unless `tol` is finite and non-negative, with
     /// [`MotionError::NotRigid`] unless the bottom row is `[0, 0, 0, 1]`, `RᵀR = I` (each entry)
     /// within `tol`, and `det R > 0`. Of the two unit poses `±S` the one with non-negative
     /// scalar part is returned.
@@ -73,10 +81,15 @@ impl<T: Real> Pose<T> {
     /// let mut shear = m;
     /// shear[0][1] = -1.5;
     /// assert!(motion::Pose::from_matrix(&shear, &1e-12).is_err());
+    /// assert!(matches!(motion::Pose::from_matrix(&shear, &f64::INFINITY), Err(motion::MotionError::BadTolerance { .. })));
     /// ```
     pub fn from_matrix(m: &Matrix4<T>, tol: &T) -> Result<Self, MotionError> {
         for x in m.iter().flatten() {
             check_finite_scalar("from_matrix", x)?;
+        }
+        // not (tol >= 0) also catches NaN
+        if !(Real::is_finite(tol) && *tol >= T::zero()) {
+            return Err(MotionError::BadTolerance { op: "from_matrix", value: tol.to_string() });
         }
         let not_rigid = |why: String| MotionError::NotRigid { why };
         let close = |x: &T, y: &T| Real::abs(&x.sub_ref(y)) <= *tol;

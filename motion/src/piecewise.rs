@@ -246,7 +246,15 @@ impl<T: Field + PartialOrd, U: Field + PartialOrd, M: MapScalar<T, U>> MapScalar
 fn inner_parameter<T: Field>(interval: &[T; 2], domain: &[T; 2], t: &T) -> T {
     let [t0, t1] = interval;
     let [a, b] = domain;
-    let s = t.sub_ref(t0).div_ref(&t1.sub_ref(t0));
+    let len = t1.sub_ref(t0);
+    let s = if len.is_finite_value() {
+        t.sub_ref(t0).div_ref(&len)
+    } else {
+        // [-1e308, 1e308]: the length overflows, the length of the halved interval does not
+        let h = T::from_ratio(1, 2);
+        let (t, t0, t1) = (t.mul_ref(&h), t0.mul_ref(&h), t1.mul_ref(&h));
+        t.sub_ref(&t0).div_ref(&t1.sub_ref(&t0))
+    };
     a.add_ref(&s.mul_ref(&b.sub_ref(a)))
 }
 

@@ -172,7 +172,9 @@ impl<T: Ring> Pose<T> {
     /// assert!(!motion::Pose::<f64>::identity().is_singular());
     /// ```
     pub fn is_singular(&self) -> bool {
+        // α of a tiny pose (1e-300) underflows: then decided again at unit scale
         self.pseudo_norm_squared().scalar.is_exact_zero()
+            && crate::scaled::unusual_scale(self).is_none_or(|(_, s)| s.pseudo_norm_squared().scalar.is_exact_zero())
     }
 
     /// `γ S` for a pseudoscalar `γ` (an equivalent pose when `γ` is non-singular, Theorem 2.8).
@@ -220,6 +222,12 @@ impl<T: Ring> Pose<T> {
     pub(crate) fn singular(&self, op: &'static str) -> MotionError {
         MotionError::Singular { op, value: self.to_string() }
     }
+
+    /// [`MotionError::NotFinite`] about a result of `op` on `self` that overflowed (the pose
+    /// is not printed: its huge coefficients would fill the error line).
+    pub(crate) fn overflow(&self, op: &'static str) -> MotionError {
+        MotionError::NotFinite { op, value: "the result (an overflow)".to_string() }
+    }
 }
 
 impl<T: Field> Pose<T> {
@@ -235,6 +243,13 @@ impl<T: Field> Pose<T> {
     /// ```
     pub fn try_inverse(&self) -> Result<Self, MotionError> {
         crate::scaled::require_finite("inverse", self, [])?;
+        if let Some((e, s)) = crate::scaled::unusual_scale(self) {
+            // (2^e S')⁻¹ = 2^-e S'⁻¹
+            let inv = crate::scaled::scale_pow2(&s.try_inverse().map_err(|_| self.singular("inverse"))?, -e);
+            return crate::scaled::require_finite("inverse", &inv, [])
+                .map(|()| inv)
+                .map_err(|_| self.overflow("inverse"));
+        }
         let inv_n2 = self.pseudo_norm_squared().try_inverse().map_err(|_| self.singular("inverse"))?;
         Ok(&inv_n2 * &self.reverse())
     }
@@ -359,6 +374,17 @@ impl<T: Real> Pose<T> {
     /// assert!(!s.is_equivalent(&Pose::identity(), &1e-12).unwrap());
     /// ```
     pub fn is_equivalent(&self, other: &Self, tol: &T) -> Result<bool, MotionError> {
+        let (us, uo) = (crate::scaled::unusual_scale(self), crate::scaled::unusual_scale(other));
+        if us.is_some() || uo.is_some() {
+            // equivalence does not depend on the scale: decided at unit scale (1e300 S, 1e-300 S)
+            for p in [self, other] {
+                if p.is_singular() {
+                    return Err(p.singular("is_equivalent"));
+                }
+            }
+            let (s, o) = (us.map_or_else(|| self.clone(), |u| u.1), uo.map_or_else(|| other.clone(), |u| u.1));
+            return s.is_equivalent(&o, tol);
+        }
         let a = self.pseudo_norm_squared().scalar;
         let b = other.pseudo_norm_squared().scalar;
         if !is_positive(&a) {
@@ -370,7 +396,11 @@ impl<T: Real> Pose<T> {
         let scale = Real::sqrt(&a).mul_ref(&Real::sqrt(&b));
         let bound = tol.mul_ref(&scale);
         let w = other * &self.reverse();
-        Ok([&w.e12, &w.e13, &w.e23, &w.e1inf, &w.e2inf, &w.e3inf].into_iter().all(|x| Real::abs(x) <= bound))
+        let parts = [&w.e12, &w.e13, &w.e23, &w.e1inf, &w.e2inf, &w.e3inf];
+        if !parts.iter().all(|x| Real::is_finite(*x)) || !Real::is_finite(&bound) {
+            return Err(self.overflow("is_equivalent"));
+        }
+        Ok(parts.into_iter().all(|x| Real::abs(x) <= bound))
     }
 
     /// True when every coefficient is finite.

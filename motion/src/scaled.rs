@@ -5,6 +5,41 @@
 use crate::{MotionError, pose::Pose};
 use algebra_core::{Real, Ring};
 
+/// Binary exponents of the rotational part within `±TAME_LOG2`, with every coefficient below
+/// `2^(2·TAME_LOG2)`, are used as they are: the products of the action (eqs. 6-9) and of
+/// `rev(S) S` then stay far inside f64's normal range.
+const TAME_LOG2: i32 = 250;
+
+/// `S · 2^-e` with `2^e` the scale of the rotational part `S∅, S12, S13, S23`, when `S` is of
+/// fixed precision (f64, f32, dual numbers) and far from unit scale; `None` for ordinary
+/// poses (one pass over the magnitudes), exact scalars, singular and non-finite poses. The
+/// scaling is by an exact power of two, so every scale-invariant result (matrix, action,
+/// equivalence, unitization) is unchanged and no square under- or overflows.
+pub(crate) fn unusual_scale<T: Ring>(s: &Pose<T>) -> Option<(i32, Pose<T>)> {
+    if T::relative_epsilon() == 0.0 {
+        return None;
+    }
+    let c = s.components();
+    let rot = c[..4].iter().map(|x| x.magnitude()).fold(0.0, f64::max);
+    let all = c[4..].iter().map(|x| x.magnitude()).fold(rot, f64::max);
+    let (lo, hi) = (2f64.powi(-TAME_LOG2), 2f64.powi(TAME_LOG2));
+    if !(rot > 0.0 && all.is_finite()) || (rot >= lo && rot < hi && all < hi * hi) {
+        return None;
+    }
+    // e = 0: the rotational part is already of unit scale (only the translation is large)
+    let e = rot.log2().floor() as i32;
+    (e != 0).then(|| (e, scale_pow2(s, -e)))
+}
+
+/// `x · 2^e` for a pose, exactly (two factors, each within f64's range, for `|e|` up to about 2000).
+pub(crate) fn scale_pow2<T: Ring>(s: &Pose<T>, e: i32) -> Pose<T> {
+    let factor = |k: i32| {
+        if k >= 0 { T::from_i64(2).pow_u32(k.unsigned_abs()) } else { T::from_ratio(1, 2).pow_u32(k.unsigned_abs()) }
+    };
+    let h = e / 2;
+    s.scale(&factor(h)).scale(&factor(e - h))
+}
+
 /// The component of largest absolute value, as a non-negative value (zero for no input).
 pub(crate) fn largest_abs<'a, T: Real + 'a>(xs: impl IntoIterator<Item = &'a T>) -> T {
     xs.into_iter().map(Real::abs).fold(T::zero(), |m, x| if x > m { x } else { m })
@@ -48,12 +83,29 @@ pub(crate) fn direction<T: Real, const N: usize>(x: &[T; N]) -> Option<[T; N]> {
 }
 
 /// `(m, S/m)` with `m` the largest absolute value of the rotational part
-/// `S∅, S12, S13, S23`: then `rev(S/m) (S/m)` has scalar part in `[1, 4]`, so norms and logs
+/// `S∅, S12, S13, S23` (for floats far from unit scale rounded down to a power of two): then
+/// `rev(S/m) (S/m)` has scalar part in `[1, 16)`, so norms and logs
 /// of huge or tiny poses neither overflow nor underflow. `None` when that part is exactly
 /// zero (a singular pose).
 pub(crate) fn rotational_scale<T: Real>(s: &Pose<T>) -> Option<(T, Pose<T>)> {
     let c = s.components();
     let m = largest_abs([c[0], c[1], c[2], c[3]]);
+    if m.is_exact_zero() {
+        return None;
+    }
+    // far from unit scale, m rounded down to a power of two 2^e: S/2^e is exact, and a
+    // subnormal m (no finite reciprocal) works too; ordinary poses keep S·(1/m)
+    let f = m.to_f64();
+    let ordinary = f >= 2f64.powi(-TAME_LOG2) && f < 2f64.powi(TAME_LOG2);
+    if !ordinary && T::relative_epsilon() > 0.0 && f > 0.0 && f.is_finite() {
+        let e = if f.is_normal() { ((f.to_bits() >> 52) & 0x7ff) as i32 - 1023 } else { f.log2().floor() as i32 };
+        let scaled = match e {
+            0 => s.clone(),
+            -1022..=1022 => s.scale(&T::from_f64(f64::from_bits(((1023 - e) as u64) << 52))),
+            _ => scale_pow2(s, -e),
+        };
+        return Some((T::from_f64(2f64.powi(e)), scaled));
+    }
     let inv = m.try_recip()?;
     Some((m, s.scale(&inv)))
 }

@@ -14,7 +14,8 @@
 //! ill-conditioned. A failure is a typed [`MvError::Undefined`], never a NaN.
 
 use super::{Multivector, MvError};
-use crate::scalar::{Real, Ring};
+use crate::scalar::Real;
+use std::cmp::Ordering;
 
 /// The largest relative error (in the 1-norm of the coefficients) that the general exp, log
 /// and sqrt accept for fixed-precision scalars (`f64`, dual numbers): `2^-26 ≈ 1.5e-8`. A
@@ -31,24 +32,6 @@ impl<T: Real> Multivector<T> {
 
     pub(super) fn one_like(&self) -> Self {
         Multivector::scalar(&self.algebra, self.basis, T::one())
-    }
-
-    /// Splits `self = a + B` (a = identity coefficient) and returns `(a, B, β)` when
-    /// `B² = β` exactly (all other coefficients exactly zero).
-    fn scalar_square_split(&self) -> (T, Self, Option<T>) {
-        let a = self.coeffs[0].clone();
-        let mut b = self.clone();
-        b.coeffs[0] = T::zero();
-        let b2 = &b * &b;
-        let is_scalar = b2.coeffs.iter().skip(1).all(Ring::is_exact_zero);
-        let beta = is_scalar.then(|| b2.coeffs[0].clone());
-        (a, b, beta)
-    }
-
-    /// The closed forms are used when `β` is exactly zero or clearly away from it (a tiny
-    /// `β` would lose accuracy, and for dual numbers an infinite derivative, in `√β`).
-    fn closed_form_applies(beta: &T) -> bool {
-        beta.is_exact_zero() || Real::abs(beta) > Real::sqrt(&T::epsilon())
     }
 
     pub(super) fn check_finite(self, op: &'static str, arg: &Self, why: &str) -> Result<Self, MvError> {
@@ -87,22 +70,19 @@ impl<T: Real> Multivector<T> {
     /// exp at the working precision: closed form, or `e^a · exp(B)` by the general method
     /// (the scalar part commutes with everything).
     pub(super) fn exp_raw(&self) -> Result<Self, MvError> {
-        let (a, b, beta) = self.scalar_square_split();
+        let (a, b, square) = self.scalar_square_split();
         let ea = Real::exp(&a);
-        if let Some(beta) = beta.filter(Self::closed_form_applies) {
-            if beta < T::zero() && !beta.is_finite() {
+        if let Some(sq) = square {
+            if sq.sign == Ordering::Less && !sq.beta.is_finite() {
                 // `1e300·e12`: a unit rotor cannot overflow, but θ² does, and cos θ of an
                 // infinite angle is NaN (an angle that large is meaningless in this precision)
                 return Err(self.undefined("exp", "the rotation angle is too large for this scalar (θ² overflows)"));
             }
-            let (c, s_over) = if beta.is_exact_zero() {
-                (T::one(), T::one())
-            } else if beta < T::zero() {
-                let th = Real::sqrt(&beta.neg_ref());
-                (Real::cos(&th), Real::sin(&th).div_ref(&th))
-            } else {
-                let th = Real::sqrt(&beta);
-                (Real::cosh(&th), Real::sinh(&th).div_ref(&th))
+            let th = sq.root;
+            let (c, s_over) = match sq.sign {
+                Ordering::Equal => (T::one(), T::one()),
+                Ordering::Less => (Real::cos(&th), Real::sin(&th).div_ref(&th)),
+                Ordering::Greater => (Real::cosh(&th), Real::sinh(&th).div_ref(&th)),
             };
             let mut out = b.scale(&s_over.mul_ref(&ea));
             out.coeffs[0] = c.mul_ref(&ea);
@@ -143,7 +123,18 @@ impl<T: Real> Multivector<T> {
     }
 
     fn sqrt_raw(&self) -> Result<Self, MvError> {
-        let l = self.log_raw().map_err(|e| match e {
+        if let Some(e) = self.unusual_exponent() {
+            // √x = 2^k √(x/4^k), exactly: the decisions are made at unit scale
+            let k = e.div_euclid(2);
+            let r = self.scale_pow2(-2 * k).sqrt_unit_scale().map_err(|err| self.restate(err))?;
+            return r.scale_pow2(k).check_finite("sqrt", self, "the result is not finite (overflow in the algorithm)");
+        }
+        self.sqrt_unit_scale()
+    }
+
+    /// sqrt of an element whose largest coefficient is of ordinary size.
+    fn sqrt_unit_scale(&self) -> Result<Self, MvError> {
+        let l = self.log_unit_scale().map_err(|e| match e {
             MvError::Undefined { why, .. } if why.starts_with("ill-conditioned") => self.undefined("sqrt", why),
             _ => self.undefined("sqrt", "no real square root (no real logarithm)"),
         })?;
@@ -166,25 +157,50 @@ impl<T: Real> Multivector<T> {
     }
 
     pub(super) fn log_raw(&self) -> Result<Self, MvError> {
-        let (a, b, beta) = self.scalar_square_split();
-        if let Some(beta) = beta.filter(Self::closed_form_applies) {
+        if let Some(e) = self.unusual_exponent() {
+            // log x = log(x/2^e) + e ln 2 (a positive scalar commutes with everything)
+            let mut l = self.scale_pow2(-e).log_unit_scale().map_err(|err| self.restate(err))?;
+            let shift = T::from_i64(i64::from(e)).mul_ref(&Real::ln(&T::from_i64(2)));
+            l.coeffs[0] = l.coeffs[0].add_ref(&shift);
+            return l.check_finite("log", self, "the result is not finite (overflow in the algorithm)");
+        }
+        self.log_unit_scale()
+    }
+
+    /// An error of a computation on a rescaled copy, restated about `self`.
+    fn restate(&self, err: MvError) -> MvError {
+        match err {
+            MvError::Undefined { op, why, .. } => self.undefined(op, why),
+            other => other,
+        }
+    }
+
+    /// log of an element whose largest coefficient is of ordinary size.
+    fn log_unit_scale(&self) -> Result<Self, MvError> {
+        let (a, b, square) = self.scalar_square_split();
+        if let Some(sq) = square {
             let zero = T::zero();
-            let (ln_r, f) = if beta.is_exact_zero() {
-                if a <= zero {
-                    return Err(self.undefined("log", "the scalar part must be positive when the rest squares to 0"));
+            let (beta, s) = (&sq.beta, &sq.root);
+            let (ln_r, f) = match sq.sign {
+                Ordering::Equal => {
+                    if a <= zero {
+                        return Err(
+                            self.undefined("log", "the scalar part must be positive when the rest squares to 0")
+                        );
+                    }
+                    (Real::ln(&a), T::one().div_ref(&a))
                 }
-                (Real::ln(&a), T::one().div_ref(&a))
-            } else if beta < zero {
-                let s = Real::sqrt(&beta.neg_ref());
-                let r2 = a.mul_ref(&a).sub_ref(&beta);
-                (Real::ln(&r2).mul_ref(&T::from_ratio(1, 2)), Real::atan2(&s, &a).div_ref(&s))
-            } else {
-                let s = Real::sqrt(&beta);
-                if a <= s {
-                    return Err(self.undefined("log", "no real logarithm: need scalar part > sqrt(B^2)"));
+                Ordering::Less => {
+                    let r2 = a.mul_ref(&a).sub_ref(beta);
+                    (Real::ln(&r2).mul_ref(&T::from_ratio(1, 2)), Real::atan2(s, &a).div_ref(s))
                 }
-                let r2 = a.mul_ref(&a).sub_ref(&beta);
-                (Real::ln(&r2).mul_ref(&T::from_ratio(1, 2)), Real::atanh(&s.div_ref(&a)).div_ref(&s))
+                Ordering::Greater => {
+                    if a <= *s {
+                        return Err(self.undefined("log", "no real logarithm: need scalar part > sqrt(B^2)"));
+                    }
+                    let r2 = a.mul_ref(&a).sub_ref(beta);
+                    (Real::ln(&r2).mul_ref(&T::from_ratio(1, 2)), Real::atanh(&s.div_ref(&a)).div_ref(s))
+                }
             };
             let mut out = b.scale(&f);
             out.coeffs[0] = ln_r;

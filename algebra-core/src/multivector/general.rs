@@ -125,7 +125,15 @@ impl<T: Real> Multivector<T> {
             if k >= 100 {
                 return Err(self.undefined("log", "repeated square roots did not approach 1"));
             }
-            y = y.sqrt_db().map_err(|_| self.undefined("log", "no real logarithm (square root failed)"))?;
+            y = y.sqrt_db().map_err(|_| {
+                if self.fixed_precision() {
+                    // f64 cannot tell the two apart: near a half-angle of π (a log exists,
+                    // MPFR finds it) the iteration fails as it does where no log exists
+                    self.undefined("log", "ill-conditioned or undefined: the repeated square roots failed in this precision (a rotation by a half-angle near π is ill-conditioned; mpfr:BITS decides)")
+                } else {
+                    self.undefined("log", "no real logarithm (square root failed)")
+                }
+            })?;
             k += 1;
         }
         let z = &y - &one;

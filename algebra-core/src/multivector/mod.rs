@@ -21,6 +21,7 @@ mod general;
 pub use exp_log::F64_GENERAL_BOUND;
 mod inverse;
 mod ops;
+mod scaling;
 #[cfg(feature = "rug")]
 pub mod symbolic;
 
@@ -95,6 +96,9 @@ impl std::fmt::Display for MvError {
                 write!(f, "basis mask {mask:#b} is out of range for {generators} generators")
             }
             MvError::NotInvertible(x) => write!(f, "{x} is not invertible"),
+            MvError::Undefined { op, value, why } if why.starts_with("ill-conditioned") => {
+                write!(f, "{op} of {value} is {why}")
+            }
             MvError::Undefined { op, value, why } => write!(f, "{op} is not defined for {value}: {why}"),
             #[cfg(feature = "rug")]
             MvError::TooManyTerms(b) => b.fmt(f),

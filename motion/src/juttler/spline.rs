@@ -300,13 +300,27 @@ pub fn algorithm2<T: Real>(
         return Err(JuttlerError::Parameters { why: format!("t_{i} = {} is not finite", params[i]) });
     }
     let unit = poses.iter().map(Pose::unitize).collect::<Result<Vec<_>, _>>()?;
-    match velocities {
+    let spline = match velocities {
         Some(v) => {
             check_finite_velocities(v)?;
             SplineQMotion::hermite(&unit, params, v)
         }
         None => SplineQMotion::hermite(&unit, params, &estimate_velocities(&unit, params)?),
+    }?;
+    // parameters 1e-300 apart: the estimated velocities (steps over Δt) are finite, but the
+    // segments' products of them overflow; refused rather than evaluated to inf/NaN
+    let finite = |c: &DualQuaternion<T>| {
+        [&c.real, &c.dual].into_iter().flat_map(|h| [&h.w, &h.x, &h.y, &h.z]).all(|x| Real::is_finite(x))
+    };
+    if let Some(i) = spline.segments().iter().position(|q| !q.control().iter().all(finite)) {
+        return Err(JuttlerError::Parameters {
+            why: format!(
+                "segment {i} (between t_{i} and t_{}) overflows: the parameters are too close, or the velocities too large, for this precision",
+                i + 1
+            ),
+        });
     }
+    Ok(spline)
 }
 
 /// A spline Q-motion is a [`Motion`] on `[t_0, t_m]`: the pose of the segment's `Q(u)`

@@ -62,7 +62,8 @@ pub enum Parameters<T> {
 /// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct MethodInput<T: Ring> {
-    /// The key poses `S_0, ..., S_m` (sign-aligned by the build, rule (24)).
+    /// The key poses `S_0, ..., S_m` (unitized, the first given a canonical sign, the others
+    /// sign-aligned by rule (24): a non-zero multiple `λS` gives the same motion as `S`).
     pub poses: Vec<Pose<T>>,
     /// Their parameters.
     pub parameters: Parameters<T>,
@@ -259,7 +260,16 @@ impl Method {
         if m < 2 {
             return Err(BuildError::TooFewPoses { got: m });
         }
-        let mut poses = input.poses.clone();
+        // S and λS are the same pose (Theorem 2.8), so the motion must not depend on λ: every
+        // method starts from the unitized key poses (a singular or non-finite pose is passed on
+        // unchanged, for the method's own error)
+        let mut poses: Vec<Pose<T>> = input.poses.iter().map(|p| p.unitize().unwrap_or_else(|_| p.clone())).collect();
+        // ... nor on the sign of λ: the first key pose takes the sign that makes the first
+        // non-zero of S∅, S12, S13, S23 positive, and rule (24) aligns the others to it
+        let first = poses[0].components()[..4].iter().find(|c| !c.is_exact_zero()).map(|c| **c < T::zero());
+        if first == Some(true) {
+            poses[0] = -&poses[0];
+        }
         align_signs(&mut poses);
         let times = input.parameters.values(&poses)?;
         let (segments, motion) = match self {

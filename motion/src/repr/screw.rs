@@ -19,7 +19,7 @@
 //! ```
 
 use crate::repr::hexanion::Hexanion;
-use crate::repr::vec3::{cross, dot, norm, scale, sub, zero};
+use crate::repr::vec3::{cross, dot, norm, sub, zero};
 use crate::{MotionError, Pose};
 use algebra_core::Real;
 
@@ -71,12 +71,14 @@ impl<T: Real> Screw<T> {
             let axis = crate::scaled::direction(&h.m).unwrap_or_else(zero);
             return Screw { axis, angle: theta, translation: d, point: zero(), pitch: None };
         }
-        let inv = T::one().div_ref(&theta);
-        let d = dot(&h.omega, &h.m).mul_ref(&inv);
+        // the unit axis first, then one division by θ: 1/θ² of a tiny angle (1e-200) would
+        // overflow although the point (c = n × m / θ) does not
+        let axis = crate::scaled::direction(&h.omega).unwrap_or_else(zero);
+        let d = dot(&axis, &h.m);
         Screw {
-            axis: scale(&inv, &h.omega),
-            point: scale(&inv.mul_ref(&inv), &cross(&h.omega, &h.m)),
-            pitch: Some(d.mul_ref(&inv)),
+            point: cross(&axis, &h.m).map(|c| c.div_ref(&theta)),
+            pitch: Some(d.div_ref(&theta)),
+            axis,
             translation: d,
             angle: theta,
         }
