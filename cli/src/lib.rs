@@ -7,6 +7,10 @@
 //! The command modules are public for the binary only (hidden from the docs); [`api`] is the
 //! interface for other callers.
 
+// The command modules' own docs (written for the binary) link their private helpers; those
+// modules are hidden from the library's docs, so the links lead nowhere a reader goes.
+#![allow(rustdoc::private_intra_doc_links)]
+
 pub mod api;
 #[doc(hidden)]
 pub mod budget;
