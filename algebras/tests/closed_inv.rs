@@ -132,8 +132,17 @@ macro_rules! exp_tests {
                     prop_assume!(far_from_the_cut(&r.to_multivector()));
                     match r.log_unit() {
                         Ok(b) => close("exp(log(R))", &b.exp().to_multivector(), &r.to_multivector(), 1e-10),
-                        // the exponential of a non-compact group is not onto: -exp(boost)
-                        Err(e) => prop_assert!(e.to_string().contains("no real logarithm"), "{}", e),
+                        // the exponential of a non-compact group is not onto: -exp(boost); and
+                        // the runtime series (complex invariants, R^{2,2}) refuses at f64 what it
+                        // cannot resolve, with the documented typed error naming mpfr:BITS
+                        // (r22_product_with_an_ill_conditioned_log_is_refused pins one such input)
+                        Err(e) => {
+                            let e = e.to_string();
+                            prop_assert!(
+                                e.contains("no real logarithm") || (e.contains("ill-conditioned") && e.contains("mpfr")),
+                                "{}", e
+                            );
+                        }
                     }
                 }
 

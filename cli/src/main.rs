@@ -6,8 +6,8 @@
 //! on stderr and nothing on stdout.
 
 use gam::{
-    algebra_help, codegen, commands, error, figures, finite_guard, hermite, interpolate, plot, pose, prove, sample, scalar,
-    trajectory, verify,
+    algebra_help, codegen, commands, error, figures, finite_guard, hermite, interpolate, plot, pose, prove, sample,
+    scalar, trajectory, verify,
 };
 
 use algebra_core::{Basis, Product};
