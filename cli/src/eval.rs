@@ -206,6 +206,7 @@ impl<'a> Evaluator<'a> {
                 .map_err(|f| failed(what, col, T::NAME, f))?;
             Multivector::from_coeffs(self.algebra, x.basis(), coeffs).map_err(|e| CliError::math(e.to_string()))
         } else {
+            crate::budget::check(&format!("the inverse at column {col}"), T::inverse_work(d))?;
             let inv = T::inverse(d).map_err(|f| failed(what, col, T::NAME, f))?;
             Ok(x * &inv)
         }
@@ -338,6 +339,12 @@ mod tests {
         let q = |t: &str| ev.eval::<algebra_core::rational::Q>(&crate::expr::parse(t, &alg).unwrap());
         assert!(q("7**300000000").unwrap_err().message.contains("GAM_WORK_BUDGET"));
         assert_eq!(q("7**3").unwrap().to_string(), "343");
+        // the exact inverse of a non-scalar with a 100,000-digit coefficient (100 s before)
+        let digits = "7".repeat(100_000);
+        let e = q(&format!("inv({digits}*e1 + e2)")).unwrap_err().message;
+        assert!(e.starts_with("the inverse at column 1 needs about") && e.contains("GAM_WORK_BUDGET"), "{e}");
+        assert_eq!(q(&format!("inv({digits})")).unwrap().to_string().len(), 100_002);
+        assert_eq!(q("inv(2*e1 + e2)").unwrap().to_string(), "2/5*e1 + 1/5*e2");
     }
 
     #[test]

@@ -113,6 +113,15 @@ pub trait CliScalar: Ring + 'static {
         0.0
     }
 
+    /// The work units of inverting the non-scalar `x` exactly: zero for fixed-size scalars;
+    /// for the exact ones `dim² × (bits / 64)²` (every step of the exact inverse meets
+    /// coefficients of about `bits` bits, and a rational operation on them costs a gcd,
+    /// quadratic in their limbs), so a 100,000-digit coefficient is refused before the work.
+    fn inverse_work(x: &Multivector<Self>) -> f64 {
+        let (dim, limbs) = (x.coeffs().len() as f64, Self::size_bits(x) / 64.0);
+        dim * dim * limbs * limbs
+    }
+
     /// The largest total degree of a coefficient of `x` (0 for the scalars without variables):
     /// products whose degree would pass [`MAX_DEGREE`] are refused.
     fn degree(_x: &Multivector<Self>) -> u64 {
