@@ -252,6 +252,49 @@ impl Poly {
         out
     }
 
+    /// The value at a point: `value(name)` gives each variable's value; `None` when a variable
+    /// of the polynomial has none. One pass over the terms (each variable is looked up once), so
+    /// evaluating at a point of `n` variables costs `O(terms × variables per term)`, unlike `n`
+    /// calls of [`Poly::substitute`].
+    ///
+    /// ```
+    /// use algebra_core::{Poly, Ring};
+    /// use rug::Rational;
+    /// let (x, y) = (Poly::var("x"), Poly::var("y"));
+    /// let p = x.clone() * x.clone() * y.clone() - Poly::from_ratio(1, 2) * y;
+    /// let at = |v: &str| match v { "x" => Some(Rational::from(3)), "y" => Some(Rational::from((2, 5))), _ => None };
+    /// assert_eq!(p.evaluate(at), Some(Rational::from((17, 5))));
+    /// assert_eq!(x.evaluate(|_| None), None);
+    /// ```
+    pub fn evaluate(&self, value: impl Fn(&str) -> Option<Rational>) -> Option<Rational> {
+        let mut values: HashMap<u32, Rational> = HashMap::new();
+        let mut sum = Rational::new();
+        for (m, c) in &self.terms {
+            let mut t = c.clone();
+            for &(v, e) in m {
+                let x = match values.entry(v) {
+                    std::collections::hash_map::Entry::Occupied(o) => o.into_mut(),
+                    std::collections::hash_map::Entry::Vacant(slot) => slot.insert(value(&var_name(v))?),
+                };
+                t *= Rational::from(rug::ops::Pow::pow(&*x, e));
+            }
+            sum += t;
+        }
+        Some(sum)
+    }
+
+    /// The largest number of distinct variables in one term (0 for constants): with
+    /// [`Poly::term_count`], what the memory of a product is estimated from.
+    ///
+    /// ```
+    /// use algebra_core::{Poly, Ring};
+    /// let (x, y) = (Poly::var("x"), Poly::var("y"));
+    /// assert_eq!((x.clone() * x.clone() * y + x + Poly::one()).max_term_variables(), 2);
+    /// ```
+    pub fn max_term_variables(&self) -> usize {
+        self.terms.keys().map(Vec::len).max().unwrap_or(0)
+    }
+
     /// Multiplies by a rational constant.
     ///
     /// ```

@@ -7,7 +7,9 @@
 //! (per body point) estimate `samples × (degree + 1)²` (a multiplicative segment's de Casteljau tableau has
 //! `(degree + 1)(degree + 2)/2` slerps per sample, each a dual-number evaluation); every
 //! command that loads an algebra checks the work of its product tables ([`algebra`]), and
-//! `gam eval` checks every `poly` product's term products before forming them.
+//! `gam eval` checks every `poly` product's term products before forming them, and the memory
+//! its result may take against a second budget, [`DEFAULT_MEMORY_BUDGET`] bytes
+//! (`GAM_MEMORY_BUDGET`), so that a product is refused before an allocation could fail.
 
 use crate::error::CliError;
 
@@ -41,9 +43,50 @@ pub fn check(what: &str, estimate: f64) -> Result<(), CliError> {
     }
 }
 
+/// The default memory a single value may take, in bytes (1 GB).
+pub const DEFAULT_MEMORY_BUDGET: f64 = 1e9;
+
+/// The environment variable that replaces [`DEFAULT_MEMORY_BUDGET`].
+pub const MEMORY_VAR: &str = "GAM_MEMORY_BUDGET";
+
+/// About how many work units one second of one core does (the default work budget is about a
+/// minute): `gam prove --timeout` refuses a product whose work would not fit in the time left.
+pub const UNITS_PER_SECOND: f64 = 3e6;
+
+/// `Ok` when a value of about `bytes` bytes is within the memory budget (`GAM_MEMORY_BUDGET`,
+/// default [`DEFAULT_MEMORY_BUDGET`]); otherwise the usage error `WHAT needs about N bytes of
+/// memory, more than the budget of M (set GAM_MEMORY_BUDGET to raise it)`, before the
+/// allocation, so that a large product is refused instead of aborting when memory runs out.
+pub fn check_memory(what: &str, bytes: f64) -> Result<(), CliError> {
+    let max = match std::env::var(MEMORY_VAR) {
+        Err(_) => DEFAULT_MEMORY_BUDGET,
+        Ok(text) => match text.trim().parse::<f64>() {
+            Ok(x) if x.is_finite() && x > 0.0 => x,
+            _ => return Err(CliError::usage(format!("{MEMORY_VAR}=`{text}` must be a positive number of bytes"))),
+        },
+    };
+    if bytes <= max {
+        Ok(())
+    } else {
+        Err(CliError::usage(format!(
+            "{what} needs about {bytes:.2e} bytes of memory, more than the budget of {max:.2e} (set {MEMORY_VAR} to raise it)"
+        )))
+    }
+}
+
+/// Bytes of one term of a `--scalar poly` result with `vars` variables: the map entry with
+/// its node share (about 100), the coefficient's two limbs (about 50) and 8 per variable.
+pub fn poly_term_bytes(vars: usize) -> f64 {
+    150.0 + 8.0 * vars as f64
+}
+
 /// Work units per coefficient term product of a `--scalar poly` product (an exact rational
 /// multiply and a monomial merge cost about 20 table units).
 pub const UNITS_PER_TERM_PRODUCT: f64 = 20.0;
+
+/// Work units per bit of an exact number formed by a power `x ** k` (its size is known before
+/// the work: the base's bits times `k`); the default budget allows numbers of 2e8 bits (25 MB).
+pub const UNITS_PER_BIT: f64 = 1.0;
 
 /// Work units per exact multiply-add of the product tables ([`algebra_core::Tables::build_work`]).
 pub const UNITS_PER_TABLE_TERM: f64 = 10.0;
@@ -74,5 +117,10 @@ mod tests {
         let e = check("sampling", 1e12).unwrap_err();
         assert_eq!(e.code, crate::error::EXIT_USAGE);
         assert!(e.message.contains("GAM_WORK_BUDGET"), "{}", e.message);
+        assert!(check_memory("x", 1e6).is_ok());
+        let e = check_memory("the product at column 3", 1e12).unwrap_err();
+        assert_eq!(e.code, crate::error::EXIT_USAGE);
+        assert!(e.message.contains("GAM_MEMORY_BUDGET") && e.message.contains("1.00e12 bytes"), "{}", e.message);
+        assert_eq!(poly_term_bytes(2), 166.0);
     }
 }

@@ -10,6 +10,7 @@ use crate::scalar::{CliScalar, Elementary, Failure};
 use algebra_core::{Algebra, Basis, Multivector, Poly, Product};
 use std::collections::HashMap;
 use std::sync::Arc;
+use std::time::Instant;
 
 /// Evaluates expressions in one algebra and basis (over any scalar, chosen per call).
 pub struct Evaluator<'a> {
@@ -17,6 +18,22 @@ pub struct Evaluator<'a> {
     basis: Basis,
     /// Named symbolic values (`gam prove`'s `let` names and builders), seen by `poly` only.
     bindings: Option<&'a HashMap<String, Multivector<Poly>>>,
+    /// When set (`gam prove --timeout`): evaluation stops with [`timeout`] after this instant,
+    /// and a product whose work would not fit in the time left is refused the same way.
+    deadline: Option<Instant>,
+}
+
+/// The start of the message of a spent `--timeout` (see [`is_timeout`]).
+const TIMEOUT: &str = "undecided within budget: time limit reached";
+
+/// The error of a spent deadline.
+fn timeout(what: &str) -> CliError {
+    CliError::math(format!("{TIMEOUT} while evaluating {what}"))
+}
+
+/// Whether `e` is the error of a spent deadline ([`Evaluator::until`]).
+pub fn is_timeout(e: &CliError) -> bool {
+    e.message.starts_with(TIMEOUT)
 }
 
 type Mv<T> = Multivector<T>;
@@ -34,7 +51,13 @@ fn failed(what: &str, col: usize, scalar: &str, f: Failure) -> CliError {
 impl<'a> Evaluator<'a> {
     /// An evaluator for `algebra` whose basis names mean elements of `basis`.
     pub fn new(algebra: &'a Arc<Algebra>, basis: Basis) -> Self {
-        Evaluator { algebra, basis, bindings: None }
+        Evaluator { algebra, basis, bindings: None, deadline: None }
+    }
+
+    /// The same evaluator, stopping with an "undecided within budget: time limit" error
+    /// ([`is_timeout`]) once `deadline` has passed.
+    pub fn until(self, deadline: Instant) -> Self {
+        Evaluator { deadline: Some(deadline), ..self }
     }
 
     /// An evaluator that also knows the named values `bindings` (under `--scalar poly`).
@@ -43,7 +66,7 @@ impl<'a> Evaluator<'a> {
         basis: Basis,
         bindings: &'a HashMap<String, Multivector<Poly>>,
     ) -> Self {
-        Evaluator { algebra, basis, bindings: Some(bindings) }
+        Evaluator { algebra, basis, bindings: Some(bindings), deadline: None }
     }
 
     /// The value of `node`, with every coefficient finite.
@@ -61,6 +84,9 @@ impl<'a> Evaluator<'a> {
     }
 
     fn value<T: CliScalar>(&self, node: &Node) -> Result<Mv<T>, CliError> {
+        if self.deadline.is_some_and(|d| Instant::now() > d) {
+            return Err(timeout(&format!("the expression at column {}", column(node))));
+        }
         match node {
             Node::Number { text, col } => T::number(text)
                 .map(|x| self.scalar(x))
@@ -88,7 +114,38 @@ impl<'a> Evaluator<'a> {
                 Ok(acc)
             }
             Node::Call { func, args, col } => self.call(*func, args, *col),
+            Node::Power { base, exponent, col } => self.power(&self.value::<T>(base)?, *exponent, *col),
         }
+    }
+
+    /// `x ** k` by repeated squaring; every product is checked against the work budget, and
+    /// the size of an exact result (its coefficients' bits times `k`) before any of them.
+    fn power<T: CliScalar>(&self, x: &Mv<T>, k: u32, col: usize) -> Result<Mv<T>, CliError> {
+        let degree = T::degree(x).saturating_mul(u64::from(k));
+        if degree > crate::scalar::MAX_DEGREE {
+            return Err(CliError::usage(format!(
+                "the power at column {col} would have degree {degree}, more than the largest degree {}",
+                crate::scalar::MAX_DEGREE
+            )));
+        }
+        let bits = T::size_bits(x) * f64::from(k);
+        crate::budget::check(&format!("the power at column {col}"), bits * crate::budget::UNITS_PER_BIT)?;
+        let mut acc: Option<Mv<T>> = None;
+        let mut square = x.clone();
+        let mut k = k;
+        while k > 0 {
+            if k & 1 == 1 {
+                acc = Some(match acc {
+                    None => square.clone(),
+                    Some(a) => self.product(&a, &square, Product::Geometric, col)?,
+                });
+            }
+            k >>= 1;
+            if k > 0 {
+                square = self.product(&square, &square, Product::Geometric, col)?;
+            }
+        }
+        Ok(acc.unwrap_or_else(|| self.scalar(T::one())))
     }
 
     fn identifier<T: CliScalar>(&self, name: &str, col: usize) -> Result<Mv<T>, CliError> {
@@ -118,7 +175,22 @@ impl<'a> Evaluator<'a> {
 
     /// `product(x, y)` at column `col`, after checking its work against the budget.
     fn product<T: CliScalar>(&self, x: &Mv<T>, y: &Mv<T>, product: Product, col: usize) -> Result<Mv<T>, CliError> {
-        crate::budget::check(&format!("the product at column {col}"), T::product_work(x, y, product))?;
+        let work = T::product_work(x, y, product);
+        crate::budget::check(&format!("the product at column {col}"), work)?;
+        crate::budget::check_memory(&format!("the product at column {col}"), T::product_bytes(x, y, product))?;
+        if let Some(d) = self.deadline {
+            let left = d.saturating_duration_since(Instant::now()).as_secs_f64();
+            if work > left * crate::budget::UNITS_PER_SECOND {
+                return Err(timeout(&format!("the product at column {col} (about {work:.2e} units of work)")));
+            }
+        }
+        let degree = T::degree(x) + T::degree(y);
+        if degree > crate::scalar::MAX_DEGREE {
+            return Err(CliError::usage(format!(
+                "the product at column {col} would have degree {degree}, more than the largest degree {}",
+                crate::scalar::MAX_DEGREE
+            )));
+        }
         x.try_product(y, product).map_err(|e| CliError::usage(e.to_string()))
     }
 
@@ -134,6 +206,7 @@ impl<'a> Evaluator<'a> {
                 .map_err(|f| failed(what, col, T::NAME, f))?;
             Multivector::from_coeffs(self.algebra, x.basis(), coeffs).map_err(|e| CliError::math(e.to_string()))
         } else {
+            crate::budget::check(&format!("the inverse at column {col}"), T::inverse_work(d))?;
             let inv = T::inverse(d).map_err(|f| failed(what, col, T::NAME, f))?;
             Ok(x * &inv)
         }
@@ -198,6 +271,90 @@ impl<'a> Evaluator<'a> {
 fn column(node: &Node) -> usize {
     match node {
         Node::Number { col, .. } | Node::Ident { col, .. } | Node::Prefix { col, .. } | Node::Call { col, .. } => *col,
+        Node::Power { base, .. } => column(base),
         Node::Chain { first, .. } => column(first),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use algebra_core::{Algebra, Ring};
+    use proptest::prelude::*;
+
+    /// `text` read by `gam eval --scalar poly` in g3 (its scalar part).
+    fn read(text: &str) -> Poly {
+        let alg = Algebra::builtin("g3").unwrap();
+        let ast = crate::expr::parse(text, &alg).unwrap();
+        Evaluator::new(&alg, Basis::Blade).eval::<Poly>(&ast).unwrap().scalar_part()
+    }
+
+    /// A polynomial from `(numerator, denominator, exponents of S, S12, x, y1)` terms, built
+    /// with algebra_core's arithmetic (not with the parser under test).
+    fn poly(terms: &[(i64, i64, [u32; 4])]) -> Poly {
+        let names = ["S", "S12", "x", "y1"];
+        terms.iter().fold(Poly::zero(), |acc, (p, q, e)| {
+            let mono = names.iter().zip(e).fold(Poly::one(), |m, (n, k)| m * Poly::var(n).pow_u32(*k));
+            acc + Poly::from_ratio(*p, *q) * mono
+        })
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(200))]
+
+        /// A printed polynomial pasted back is the same polynomial (powers print as `**`,
+        /// negative leading terms as `-x**2`, coefficients as `p/q`).
+        #[test]
+        fn printed_polynomials_read_back(
+            terms in prop::collection::vec((-40i64..40, 1i64..9, [0u32..4, 0u32..3, 0u32..5, 0u32..3]), 0..7)
+        ) {
+            let p = poly(&terms);
+            prop_assert_eq!(read(&p.to_string()), p);
+        }
+    }
+
+    #[test]
+    fn powers_are_products() {
+        assert_eq!(read("-x**2"), -(Poly::var("x") * Poly::var("x")));
+        assert_eq!(read("(x + 1)**3"), read("(x + 1)*(x + 1)*(x + 1)"));
+        assert_eq!(read("x**0 + 0**0"), Poly::from_i64(2));
+        assert_eq!(read("2**10"), Poly::from_i64(1024));
+        assert_eq!(read("(1/2)**3"), Poly::from_ratio(1, 8));
+        let alg = Algebra::builtin("g3").unwrap();
+        let mv = |t: &str| Evaluator::new(&alg, Basis::Blade).eval::<Poly>(&crate::expr::parse(t, &alg).unwrap());
+        // (e1 + e12)^2 = e1 e1 + e1 e12 + e12 e1 + e12 e12 = 1 + e2 - e2 - 1 = 0
+        assert!(mv("(e1 + e12)**2").unwrap().is_zero());
+        assert_eq!(mv("(x*e1 + e2)**2").unwrap().to_string(), "x**2 + 1");
+        assert_eq!(mv("e12**4").unwrap().to_string(), "1");
+        assert_eq!(mv("e1^e2**2").unwrap().to_string(), "e1");
+    }
+
+    #[test]
+    fn powers_respect_the_budgets() {
+        let alg = Algebra::builtin("g3").unwrap();
+        let ev = Evaluator::new(&alg, Basis::Blade);
+        let run = |t: &str| ev.eval::<Poly>(&crate::expr::parse(t, &alg).unwrap()).unwrap_err().message;
+        assert!(run("(x**1000)**1001").contains("degree 1001000, more than the largest degree 1000000"));
+        assert!(run("3**1000000000").contains("the power at column 2 needs about"));
+        let q = |t: &str| ev.eval::<algebra_core::rational::Q>(&crate::expr::parse(t, &alg).unwrap());
+        assert!(q("7**300000000").unwrap_err().message.contains("GAM_WORK_BUDGET"));
+        assert_eq!(q("7**3").unwrap().to_string(), "343");
+        // the exact inverse of a non-scalar with a 100,000-digit coefficient (100 s before)
+        let digits = "7".repeat(100_000);
+        let e = q(&format!("inv({digits}*e1 + e2)")).unwrap_err().message;
+        assert!(e.starts_with("the inverse at column 1 needs about") && e.contains("GAM_WORK_BUDGET"), "{e}");
+        assert_eq!(q(&format!("inv({digits})")).unwrap().to_string().len(), 100_002);
+        assert_eq!(q("inv(2*e1 + e2)").unwrap().to_string(), "2/5*e1 + 1/5*e2");
+    }
+
+    #[test]
+    fn a_spent_deadline_stops_evaluation() {
+        let alg = Algebra::builtin("g3").unwrap();
+        let past = Instant::now();
+        let ev = Evaluator::new(&alg, Basis::Blade).until(past);
+        std::thread::sleep(std::time::Duration::from_millis(2));
+        let e = ev.eval::<Poly>(&crate::expr::parse("x + 1", &alg).unwrap()).unwrap_err();
+        assert!(is_timeout(&e), "{}", e.message);
+        assert_eq!(e.code, crate::error::EXIT_MATH);
     }
 }

@@ -5,7 +5,8 @@
 //!
 //! ```text
 //! atom    := NUMBER | IDENT | IDENT '(' [sum (',' sum)*] ')' | '(' sum ')'
-//! prefix  := ('-' | '~') prefix | atom          -- negation, reverse
+//! power   := atom ['**' INTEGER]                -- a power by a non-negative integer literal
+//! prefix  := ('-' | '~') prefix | power         -- negation, reverse
 //! wedge   := prefix ('^' prefix)*               -- outer product, left-associative
 //! product := wedge (('*' | '/') wedge)*         -- geometric product, division
 //! sum     := product (('+' | '-') product)*
@@ -18,12 +19,21 @@
 //! spellings (`2e5` in g3: write `2e+5` or `2E5`). IDENT is a letter followed by letters, digits or `_`. Chains of a
 //! left-associative operator are kept flat ([`Node::Chain`]) so that long sums do not make
 //! deep trees; nesting (parentheses, prefixes, calls) is limited to [`MAX_DEPTH`].
+//!
+//! `**` binds tighter than the prefix operators, as in Python and in what `gam eval --scalar
+//! poly` prints: `-x**2` is `-(x**2)`, so a printed polynomial reads back as itself. The
+//! exponent is a literal `0 ..= MAX_EXPONENT`; a chain `x**2**3` is refused (write the
+//! parentheses), and `^` stays the outer product.
 
 use crate::error::CliError;
 use algebra_core::Algebra;
 
 /// The deepest nesting of parentheses, prefix operators and calls accepted.
 pub const MAX_DEPTH: usize = 200;
+
+/// The largest exponent literal of `x ** k` (the size of the result is checked against the
+/// work budget when it is evaluated).
+pub const MAX_EXPONENT: u32 = 1_000_000_000;
 
 /// The functions of the expression language, with their arities.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -171,6 +181,15 @@ pub enum Node {
         /// The following operators (with their columns) and operands.
         rest: Vec<(BinOp, usize, Node)>,
     },
+    /// `base ** exponent`, a power by a non-negative integer.
+    Power {
+        /// The base.
+        base: Box<Node>,
+        /// The exponent.
+        exponent: u32,
+        /// The column of `**`.
+        col: usize,
+    },
     /// `f(args...)`, arity already checked.
     Call {
         /// The function.
@@ -187,6 +206,8 @@ enum Tok {
     Num(String),
     Ident(String),
     Sym(char),
+    /// `**`.
+    Pow,
     End,
 }
 
@@ -204,6 +225,7 @@ fn describe(t: &Tok) -> String {
     match t {
         Tok::Num(s) | Tok::Ident(s) => format!("`{s}`"),
         Tok::Sym(c) => format!("`{c}`"),
+        Tok::Pow => "`**`".to_string(),
         Tok::End => "end of input".to_string(),
     }
 }
@@ -266,6 +288,9 @@ fn tokenize(src: &str, has_element: &dyn Fn(&str) -> bool) -> Result<Vec<Token>,
                 i += 1;
             }
             out.push(Token { tok: Tok::Ident(chars[start..i].iter().collect()), col });
+        } else if c == '*' && chars.get(i + 1) == Some(&'*') {
+            out.push(Token { tok: Tok::Pow, col });
+            i += 2;
         } else if "+-*/^~(),".contains(c) {
             out.push(Token { tok: Tok::Sym(c), col });
             i += 1;
@@ -288,6 +313,7 @@ pub fn parse(src: &str, algebra: &Algebra) -> Result<Node, CliError> {
     match t.tok {
         Tok::End => Ok(node),
         Tok::Sym(')') => Err(parse_error(t.col, "unmatched `)`")),
+        Tok::Pow => Err(parse_error(t.col, "a chain `a**j**k` is ambiguous: write `(a**j)**k` or `a**(j*k)`")),
         Tok::Num(_) | Tok::Ident(_) | Tok::Sym('(') => Err(parse_error(
             t.col,
             format!("expected an operator before {} (products need an explicit `*`)", describe(&t.tok)),
@@ -361,13 +387,36 @@ impl Parser {
         let op = match self.peek_sym() {
             Some('-') => PrefixOp::Neg,
             Some('~') => PrefixOp::Reverse,
-            _ => return self.atom(),
+            _ => return self.power(),
         };
         let col = self.next().col;
         self.enter(col)?;
         let operand = Box::new(self.prefix()?);
         self.depth -= 1;
         Ok(Node::Prefix { op, operand, col })
+    }
+
+    fn power(&mut self) -> Result<Node, CliError> {
+        let base = self.atom()?;
+        if self.peek().tok != Tok::Pow {
+            return Ok(base);
+        }
+        let col = self.next().col;
+        let t = self.next();
+        let exponent = match &t.tok {
+            Tok::Num(text) if text.bytes().all(|b| b.is_ascii_digit()) => {
+                text.parse::<u32>().ok().filter(|k| *k <= MAX_EXPONENT).ok_or_else(|| {
+                    parse_error(t.col, format!("the exponent `{text}` of `**` is larger than {MAX_EXPONENT}"))
+                })?
+            }
+            other => {
+                return Err(parse_error(
+                    t.col,
+                    format!("the exponent of `**` must be a non-negative integer literal, found {}", describe(other)),
+                ));
+            }
+        };
+        Ok(Node::Power { base: Box::new(base), exponent, col })
     }
 
     fn atom(&mut self) -> Result<Node, CliError> {
@@ -458,6 +507,7 @@ mod tests {
             Node::Call { func, args, .. } => {
                 format!("{}({})", func.name(), args.iter().map(show).collect::<Vec<_>>().join(","))
             }
+            Node::Power { base, exponent, .. } => format!("({}**{exponent})", show(base)),
         }
     }
 
@@ -480,6 +530,32 @@ mod tests {
         assert_eq!(show(&parse("1/2*e1").unwrap()), "((1/2)*e1)");
         assert_eq!(show(&parse("grade(e1 + 2, 0.5)").unwrap()), "grade((e1+2),0.5)");
         assert_eq!(show(&parse("--e1").unwrap()), "(-(-e1))");
+    }
+
+    #[test]
+    fn powers_bind_tighter_than_prefixes_and_products() {
+        assert_eq!(show(&parse("-x**2").unwrap()), "(-(x**2))");
+        assert_eq!(show(&parse("2*S12**2 - y**3").unwrap()), "((2*(S12**2))-(y**3))");
+        assert_eq!(show(&parse("a^b**2").unwrap()), "(a^(b**2))");
+        assert_eq!(show(&parse("(e1+e2)**0").unwrap()), "((e1+e2)**0)");
+        assert_eq!(show(&parse("~x**2*y").unwrap()), "((~(x**2))*y)");
+        assert_eq!(show(&parse("rev(x)**2").unwrap()), "(rev(x)**2)");
+        assert_eq!(
+            err("x**-1"),
+            "parse error at column 4: the exponent of `**` must be a non-negative integer literal, found `-`"
+        );
+        assert_eq!(
+            err("x**0.5"),
+            "parse error at column 4: the exponent of `**` must be a non-negative integer literal, found `0.5`"
+        );
+        assert_eq!(
+            err("x**y"),
+            "parse error at column 4: the exponent of `**` must be a non-negative integer literal, found `y`"
+        );
+        assert!(err("x**2**3").starts_with("parse error at column 5: a chain `a**j**k` is ambiguous"));
+        assert!(err("x**99999999999").contains("larger than 1000000000"));
+        assert!(err("x**").contains("found end of input"));
+        assert_eq!(err("x * *y"), "parse error at column 5: expected an expression, found `*`");
     }
 
     #[test]

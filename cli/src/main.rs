@@ -181,6 +181,13 @@ enum Command {
         /// Give up with "undecided" (exit 1) after this many seconds.
         #[arg(long, value_name = "SECONDS", default_value_t = 10.0)]
         timeout: f64,
+        /// Give up with "undecided" (exit 1) when the Gröbner basis would hold more polynomials.
+        #[arg(long, value_name = "N", default_value_t = algebra_core::ideal::Budget::default().max_basis)]
+        max_basis: usize,
+        /// Give up with "undecided" (exit 1) when an intermediate polynomial would have more
+        /// terms, or all of them together more than 20 times as many.
+        #[arg(long, value_name = "N", default_value_t = algebra_core::ideal::Budget::default().max_terms)]
+        max_terms: usize,
         /// Print one JSON object: {"holds", "method", "basis_size", "time_ms", "witness", ...}.
         #[arg(long)]
         json: bool,
@@ -234,8 +241,9 @@ fn run(command: Command) -> Result<(String, Option<CliError>), CliError> {
             plot::plot(&plot::PlotArgs { specs: &specs, out: &out, format, samples, view, frames, body, json })
         }
         Command::Figures { out, format, json } => figures::figures(&out, format, json),
-        Command::Prove { algebra, basis, assume, timeout, json, claim } => {
-            return prove::prove(&prove::ProveArgs { algebra, basis, assume, timeout, json, claim });
+        Command::Prove { algebra, basis, assume, timeout, max_basis, max_terms, json, claim } => {
+            let args = prove::ProveArgs { algebra, basis, assume, timeout, max_basis, max_terms, json, claim };
+            return prove::prove(&args);
         }
         Command::Verify { json, filter } => {
             return verify::verify(filter.as_deref(), json).map(|v| (v.output, v.failure));

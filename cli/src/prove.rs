@@ -18,7 +18,7 @@ use algebra_core::{Algebra, Basis, Multivector, Poly, Ring};
 use serde_json::{Value, json};
 use std::collections::HashMap;
 use std::sync::Arc;
-use std::time::Duration;
+use std::time::{Duration, Instant};
 
 /// The options of `gam prove`.
 #[derive(Debug, Clone)]
@@ -29,8 +29,13 @@ pub struct ProveArgs {
     pub basis: Basis,
     /// `--assume`, each `EXPR = EXPR` or `EXPR != 0`.
     pub assume: Vec<String>,
-    /// `--timeout` in seconds.
+    /// `--timeout` in seconds: the whole run (parsing, evaluation, Gröbner basis, normal
+    /// forms, witness search) stops with "undecided" when it is spent.
     pub timeout: f64,
+    /// `--max-basis`: the largest Gröbner basis ([`Budget::max_basis`]).
+    pub max_basis: usize,
+    /// `--max-terms`: the most terms of one polynomial ([`Budget::max_terms`]).
+    pub max_terms: usize,
     /// `--json`.
     pub json: bool,
     /// `let ...; CLAIM`.
@@ -97,6 +102,7 @@ const BUILDER_PREFIX: &str = "zzbuilder";
 
 /// Script state: the algebra, the bound names and the builder count.
 struct Script {
+    deadline: Instant,
     algebra: Arc<Algebra>,
     basis: Basis,
     bindings: HashMap<String, Multivector<Poly>>,
@@ -181,7 +187,7 @@ impl Script {
         let text = self.expand_builders(text)?;
         let ast = expr::parse(&text, &self.algebra)
             .map_err(|e| CliError::usage(format!("in `{}`: {}", text.trim(), e.message)))?;
-        Evaluator::with_bindings(&self.algebra, self.basis, &self.bindings).eval::<Poly>(&ast)
+        Evaluator::with_bindings(&self.algebra, self.basis, &self.bindings).until(self.deadline).eval::<Poly>(&ast)
     }
 
     fn define(&mut self, stmt: &str) -> Result<(), CliError> {
@@ -221,9 +227,10 @@ struct Problem {
     hyps: Hypotheses,
 }
 
-fn parse_problem(args: &ProveArgs) -> Result<Problem, CliError> {
+fn parse_problem(args: &ProveArgs, deadline: Instant) -> Result<Problem, CliError> {
     let algebra = crate::budget::algebra(&args.algebra)?;
-    let mut s = Script { algebra, basis: args.basis, bindings: HashMap::new(), lets: Vec::new(), builders: 0 };
+    let mut s =
+        Script { deadline, algebra, basis: args.basis, bindings: HashMap::new(), lets: Vec::new(), builders: 0 };
     let stmts: Vec<&str> = args.claim.split(';').map(str::trim).filter(|t| !t.is_empty()).collect();
     let Some((claim, lets)) = stmts.split_last() else {
         return Err(CliError::usage("empty claim: expected `[let NAME = EXPR;]... EXPR = EXPR`"));
@@ -259,7 +266,7 @@ fn parse_problem(args: &ProveArgs) -> Result<Problem, CliError> {
     }
     let problem = Problem { claim: diff.components(), hyps };
     // A let name must not also be a symbol of the claim or hypotheses.
-    let symbols: Vec<String> = problem
+    let symbols: std::collections::HashSet<String> = problem
         .claim
         .iter()
         .map(|(_, p)| p)
@@ -267,38 +274,43 @@ fn parse_problem(args: &ProveArgs) -> Result<Problem, CliError> {
         .chain(&problem.hyps.nonzero)
         .flat_map(Poly::variables)
         .collect();
-    let symbols_of_lets: Vec<String> = s
+    let symbols_of_lets: std::collections::HashSet<String> = s
         .lets
         .iter()
         .flat_map(|l| s.bindings[l].coeffs().iter().flat_map(Poly::variables).collect::<Vec<_>>())
         .collect();
-    if let Some(clash) = s.lets.iter().find(|l| symbols.contains(l) || symbols_of_lets.contains(l)) {
+    if let Some(clash) = s.lets.iter().find(|l| symbols.contains(*l) || symbols_of_lets.contains(*l)) {
         return Err(CliError::usage(format!("`let {clash}`: {clash} is also a coefficient symbol")));
     }
     Ok(problem)
 }
 
 /// A rational point (small integers) where `p != 0` and every `nonzero` hypothesis is non-zero;
-/// only meaningful when there are no equations.
-fn witness_point(p: &Poly, nonzero: &[Poly]) -> Option<Vec<(String, i64)>> {
+/// only meaningful when there are no equations. Each attempt evaluates the polynomials once
+/// ([`Poly::evaluate`], linear in their size); the search stops at `deadline`.
+fn witness_point(p: &Poly, nonzero: &[Poly], deadline: Instant) -> Option<Vec<(String, i64)>> {
     let mut vars: Vec<String> = std::iter::once(p).chain(nonzero).flat_map(Poly::variables).collect();
     vars.sort();
     vars.dedup();
     (0..40i64).find_map(|attempt| {
-        let point: Vec<(String, i64)> =
-            vars.iter().enumerate().map(|(i, v)| (v.clone(), ((i as i64 * 7 + attempt * 3) % 11) - 5)).collect();
-        let at = |q: &Poly| point.iter().fold(q.clone(), |acc, (v, x)| acc.substitute(v, &Poly::from_i64(*x)));
-        let ok = !at(p).is_exact_zero() && nonzero.iter().all(|g| !at(g).is_exact_zero());
-        ok.then_some(point)
+        if Instant::now() > deadline {
+            return None;
+        }
+        let point: HashMap<&str, i64> =
+            vars.iter().enumerate().map(|(i, v)| (v.as_str(), ((i as i64 * 7 + attempt * 3) % 11) - 5)).collect();
+        let at = |q: &Poly| q.evaluate(|v| point.get(v).and_then(|x| Poly::from_i64(*x).as_constant()));
+        let non_zero = |q: &Poly| at(q).is_some_and(|x| x != 0);
+        let ok = non_zero(p) && nonzero.iter().all(non_zero);
+        ok.then(|| vars.iter().map(|v| (v.clone(), point[v.as_str()])).collect())
     })
 }
 
-fn witness(problem: &Problem, d: &Decision) -> Value {
+fn witness(problem: &Problem, d: &Decision, deadline: Instant) -> Value {
     let Some((i, nf)) = d.failures.first() else { return Value::Null };
     let (component, poly) = &problem.claim[*i];
     let mut w = json!({"component": component, "normal_form": nf.to_string()});
     if problem.hyps.equations.is_empty()
-        && let Some(point) = witness_point(poly, &problem.hyps.nonzero)
+        && let Some(point) = witness_point(poly, &problem.hyps.nonzero, deadline)
     {
         let map: serde_json::Map<String, Value> = point.into_iter().map(|(v, x)| (v, json!(x))).collect();
         w["point"] = Value::Object(map);
@@ -306,29 +318,46 @@ fn witness(problem: &Problem, d: &Decision) -> Value {
     w
 }
 
+/// The output of `gam prove` when a budget ran out (exit 1 after printing it).
+fn undecided(args: &ProveArgs, reason: &str) -> (String, Option<CliError>) {
+    let out = if args.json {
+        json!({"holds": false, "undecided": true, "method": "groebner", "basis_size": null,
+               "time_ms": null, "witness": null, "reason": reason})
+        .to_string()
+    } else {
+        format!("undecided: {reason}")
+    };
+    (out, Some(CliError::math(format!("{reason} (raise --timeout, --max-basis or --max-terms)"))))
+}
+
 /// `gam prove`: the output, and the failure (exit 1) to report after printing it.
 pub fn prove(args: &ProveArgs) -> Result<(String, Option<CliError>), CliError> {
+    let start = Instant::now();
     if !(args.timeout.is_finite() && args.timeout > 0.0) {
         return Err(CliError::usage(format!("--timeout must be a positive number of seconds, got {}", args.timeout)));
     }
-    let problem = parse_problem(args)?;
-    let budget = Budget { time: Some(Duration::from_secs_f64(args.timeout.min(1e6))), ..Budget::default() };
+    if args.max_basis == 0 || args.max_terms == 0 {
+        return Err(CliError::usage("--max-basis and --max-terms must be positive"));
+    }
+    let limit = Duration::from_secs_f64(args.timeout.min(1e6));
+    let deadline = start + limit;
+    let problem = match parse_problem(args, deadline) {
+        Ok(p) => p,
+        Err(e) if crate::eval::is_timeout(&e) => return Ok(undecided(args, &e.message)),
+        Err(e) => return Err(e),
+    };
+    let remaining = deadline.saturating_duration_since(Instant::now());
+    let budget = Budget { time: Some(remaining), max_basis: args.max_basis, max_terms: args.max_terms };
     let claims: Vec<Poly> = problem.claim.iter().map(|(_, p)| p.clone()).collect();
     let d = match decide(&claims, &problem.hyps, &budget) {
         Ok(d) => d,
-        Err(e @ IdealError::Undecided { .. }) => {
-            let out = if args.json {
-                json!({"holds": false, "undecided": true, "method": "groebner", "basis_size": null,
-                       "time_ms": null, "witness": null, "reason": e.to_string()})
-                .to_string()
-            } else {
-                format!("undecided: {e}")
-            };
-            return Ok((out, Some(CliError::math(format!("{e} (raise --timeout)")))));
+        Err(IdealError::Undecided { limit: which, .. }) => {
+            let e = IdealError::Undecided { limit: which, elapsed_ms: start.elapsed().as_millis() };
+            return Ok(undecided(args, &e.to_string()));
         }
         Err(e) => return Err(CliError::usage(e.to_string())),
     };
-    let w = witness(&problem, &d);
+    let w = witness(&problem, &d, deadline);
     let out = if args.json {
         json!({"holds": d.holds, "method": "groebner", "basis_size": d.basis_size, "time_ms": d.time_ms,
                "witness": w, "components": problem.claim.len(), "inconsistent": d.inconsistent})

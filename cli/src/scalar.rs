@@ -7,6 +7,9 @@ use algebra_core::{Field, MpFloat, MpRational, Multivector, MvError, Poly, Produ
 use num_traits::Zero;
 use std::str::FromStr;
 
+/// The largest total degree of a `poly` result (exponents are stored in 32 bits).
+pub const MAX_DEGREE: u64 = 1_000_000;
+
 /// The largest `mpfr:BITS` precision accepted.
 pub const MAX_MPFR_BITS: u32 = 1_000_000;
 
@@ -98,6 +101,33 @@ pub trait CliScalar: Ring + 'static {
         0.0
     }
 
+    /// The size in bits of the largest coefficient of `x` (numerator and denominator) for the
+    /// exact scalars, 0 for fixed-size ones: what a power `x ** k` multiplies by `k`.
+    fn size_bits(_x: &Multivector<Self>) -> f64 {
+        0.0
+    }
+
+    /// An upper bound of the bytes of `product(a, b)`'s coefficients beyond the fixed size of a
+    /// multivector: zero for fixed-size scalars; for `poly`, one term per term product.
+    fn product_bytes(_a: &Multivector<Self>, _b: &Multivector<Self>, _product: Product) -> f64 {
+        0.0
+    }
+
+    /// The work units of inverting the non-scalar `x` exactly: zero for fixed-size scalars;
+    /// for the exact ones `dim² × (bits / 64)²` (every step of the exact inverse meets
+    /// coefficients of about `bits` bits, and a rational operation on them costs a gcd,
+    /// quadratic in their limbs), so a 100,000-digit coefficient is refused before the work.
+    fn inverse_work(x: &Multivector<Self>) -> f64 {
+        let (dim, limbs) = (x.coeffs().len() as f64, Self::size_bits(x) / 64.0);
+        dim * dim * limbs * limbs
+    }
+
+    /// The largest total degree of a coefficient of `x` (0 for the scalars without variables):
+    /// products whose degree would pass [`MAX_DEGREE`] are refused.
+    fn degree(_x: &Multivector<Self>) -> u64 {
+        0
+    }
+
     /// `exp`, `log` or `sqrt` of a multivector.
     fn elementary(_f: Elementary, _x: &Multivector<Self>) -> Result<Multivector<Self>, Failure> {
         Err(Failure::Unsupported("it needs --scalar f64 or mpfr:BITS".to_string()))
@@ -124,6 +154,9 @@ fn divide_field<T: Field>(x: &T, d: &T) -> Result<T, Failure> {
 
 impl CliScalar for Q {
     const NAME: &'static str = "rational";
+    fn size_bits(x: &Multivector<Self>) -> f64 {
+        x.coeffs().iter().map(|c| (c.numer().bits() + c.denom().bits()) as f64).fold(0.0, f64::max)
+    }
     fn number(text: &str) -> Result<Self, String> {
         parse_rational(text).map_err(|e| e.to_string())
     }
@@ -146,9 +179,23 @@ impl CliScalar for Poly {
     fn variable(name: &str) -> Option<Self> {
         Some(Poly::var(name))
     }
+    fn size_bits(x: &Multivector<Self>) -> f64 {
+        x.coeffs()
+            .iter()
+            .flat_map(|p| p.terms().map(|(c, _)| (c.numer().significant_bits() + c.denom().significant_bits()) as f64))
+            .fold(0.0, f64::max)
+    }
+    fn degree(x: &Multivector<Self>) -> u64 {
+        x.coeffs().iter().map(|p| u64::from(p.degree())).max().unwrap_or(0)
+    }
     fn product_work(a: &Multivector<Self>, b: &Multivector<Self>, product: Product) -> f64 {
         // an algebra mismatch is reported by the product itself
         a.product_terms(b, product).map_or(0.0, |t| t as f64 * crate::budget::UNITS_PER_TERM_PRODUCT)
+    }
+    fn product_bytes(a: &Multivector<Self>, b: &Multivector<Self>, product: Product) -> f64 {
+        let vars = |x: &Multivector<Self>| x.coeffs().iter().map(Poly::max_term_variables).max().unwrap_or(0);
+        let terms = a.product_terms(b, product).map_or(0.0, |t| t as f64);
+        terms * crate::budget::poly_term_bytes(vars(a) + vars(b))
     }
     fn derivative(&self, var: &str) -> Result<Self, Failure> {
         Ok(Poly::derivative(self, var))

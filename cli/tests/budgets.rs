@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::{TempFile, fails, ok, one_error_line};
+use common::{TempFile, fails, gam, ok, one_error_line};
 use std::process::Command;
 
 fn dense_toml(n: usize) -> String {
@@ -86,4 +86,74 @@ fn gam_interpolate_checks_the_sampling_work() {
     let spec = format!(r#"{{"method": "ccm-additive", "poses": {poses}, "samples": 11}}"#);
     let f = TempFile::new("interp-small.json", &spec);
     assert_eq!(ok(&["interpolate", f.path()]).lines().filter(|l| l.starts_with("t = ")).count(), 11);
+}
+
+/// `(x0 + 1)*(x1 + 1)*...*(x{n-1} + 1)`.
+fn product_of_binomials(n: usize) -> String {
+    (0..n).map(|i| format!("(x{i} + 1)")).collect::<Vec<_>>().join("*")
+}
+
+#[test]
+fn a_product_too_large_for_memory_is_refused_before_allocating() {
+    // 2^k terms after k factors: the memory estimate (terms x bytes per term) passes a
+    // 1e7-byte budget near k = 14, long before any allocation could fail; the default budget
+    // (1e9 bytes) refuses the 24-factor product the same way (docs/robustness.md).
+    let expr = product_of_binomials(24);
+    let run = |args: &[&str]| {
+        Command::new(env!("CARGO_BIN_EXE_gam")).env("GAM_MEMORY_BUDGET", "1e7").args(args).output().unwrap()
+    };
+    let claim = format!("{expr} = 0");
+    for args in [
+        vec!["eval", "--algebra", "g3", "--scalar", "poly", expr.as_str()],
+        vec!["prove", "--algebra", "g3", claim.as_str()],
+    ] {
+        let out = run(&args);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        assert!(out.stdout.is_empty());
+        let line = one_error_line(&args, &String::from_utf8_lossy(&out.stderr));
+        assert!(line.contains("bytes of memory") && line.contains("GAM_MEMORY_BUDGET"), "{line}");
+    }
+    // 8 factors (256 terms) are well within it
+    let small = product_of_binomials(8);
+    let out = run(&["eval", "--algebra", "g3", "--scalar", "poly", small.as_str()]);
+    assert_eq!(out.status.code(), Some(0));
+    assert_eq!(String::from_utf8_lossy(&out.stdout).matches(" + ").count() + 1, 256);
+    let bad = Command::new(env!("CARGO_BIN_EXE_gam"))
+        .env("GAM_MEMORY_BUDGET", "lots")
+        .args(["eval", "--algebra", "g3", "--scalar", "poly", "x*x"])
+        .output()
+        .unwrap();
+    assert_eq!(bad.status.code(), Some(2));
+}
+
+#[test]
+fn prove_honours_its_timeout_in_every_phase() {
+    // The witness search of a long claim without hypotheses was cubic in its length (800
+    // symbols took about 12 s under --timeout 1); it is linear now, and the whole run stays
+    // within a small multiple of the timeout.
+    let long = format!("{} = 0", sum("x", 800));
+    let start = std::time::Instant::now();
+    let out = gam(&["prove", "--timeout", "1", "--json", long.as_str()]);
+    assert!(start.elapsed().as_secs_f64() < 6.0, "{:?}", start.elapsed());
+    assert_eq!(out.status.code(), Some(1));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert!(v["undecided"] == true || v["witness"]["point"].as_object().is_some_and(|p| p.len() == 800), "{v}");
+    // Evaluating the claim: a product whose work does not fit in the time left is undecided
+    // (exit 1, the budget's JSON), before it is formed.
+    let big = format!("({})*({}) = 0", sum("x", 400), sum("y", 400));
+    let args = ["prove", "--timeout", "0.01", "--json", big.as_str()];
+    let out = gam(&args);
+    assert_eq!(out.status.code(), Some(1));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["undecided"], true);
+    assert!(v["reason"].as_str().unwrap().contains("time limit"), "{v}");
+    let line = one_error_line(&args, &String::from_utf8_lossy(&out.stderr));
+    assert!(line.contains("raise --timeout"), "{line}");
+    // The basis-size budget is an option too.
+    let args = ["prove", "--max-basis", "1", "--assume", "x*y = 1", "--assume", "x*x = y", "x = y"];
+    let out = gam(&args);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&out.stdout).starts_with("undecided: "), "{out:?}");
+    assert!(one_error_line(&args, &String::from_utf8_lossy(&out.stderr)).contains("basis size"));
+    fails(&["prove", "--max-terms", "0", "x = x"], 2);
 }

@@ -1,10 +1,10 @@
 //! Division with remainder by a list of polynomials, and full reduction (normal forms).
 
-use super::order::Mono;
+use super::order::{self, Mono};
 use super::{DPoly, IdealError, Meter, MonomialOrder, PolyRing};
-use crate::Ring;
 use crate::poly::Poly;
-use rug::Rational;
+use rug::{Integer, Rational};
+use std::cmp::Ordering;
 
 /// The result of dividing `f` by `[g_1, ..., g_s]`: `f = sum q_i g_i + r`, where no term of `r`
 /// is divisible by any leading monomial `LM(g_i)`.
@@ -29,57 +29,217 @@ pub struct Division {
     pub remainder: Poly,
 }
 
-/// A divisor ready for reduction: leading monomial, its variable mask, the polynomial.
+/// A divisor ready for reduction: its variable mask and the polynomial.
 pub(crate) struct Reducer<'a> {
-    pub(crate) lm: &'a Mono,
     pub(crate) mask: u64,
     pub(crate) poly: &'a DPoly,
 }
 
 impl<'a> Reducer<'a> {
     pub(crate) fn new(poly: &'a DPoly) -> Self {
-        Reducer { lm: poly.lm(), mask: poly.lm().mask(), poly }
+        Reducer { mask: order::mask(poly.lm()), poly }
     }
 }
 
 /// The first divisor whose leading monomial divides `m`.
-fn find_divisor(divisors: &[Reducer<'_>], m: &Mono) -> Option<usize> {
-    let mask = m.mask();
-    divisors.iter().position(|d| d.mask & !mask == 0 && d.lm.divides(m))
+fn find_divisor<'a>(divisors: &[Reducer<'a>], m: &Mono) -> Option<&'a DPoly> {
+    let mask = order::mask(m);
+    divisors.iter().find(|d| d.mask & !mask == 0 && order::divides(d.poly.lm(), m)).map(|d| d.poly)
 }
 
-/// The textbook division algorithm; `quotients` are recorded when `quotients` is `Some`.
+/// `out := a * p[from..] - b * q * g[1..]` for `(a, b) = ab`, terms by decreasing monomial
+/// (`p`'s coefficients from `from` on are moved out). Both operands are sorted and a monomial
+/// order is compatible with multiplication, so this is one merge.
+pub(crate) fn combine(
+    p: &mut DPoly,
+    from: usize,
+    (a, b): (&Integer, &Integer),
+    q: &Mono,
+    g: &DPoly,
+    order: MonomialOrder,
+    out: &mut DPoly,
+) {
+    out.exps.clear();
+    out.coefs.clear();
+    let scale = *a != 1;
+    let mut lifted: Vec<u32> = Vec::with_capacity(q.len());
+    let (mut i, mut j) = (from, 1);
+    if j < g.len() {
+        order::mul_into(&mut lifted, q, g.mono(j));
+    }
+    loop {
+        let take_p = |p: &mut DPoly, i: usize| {
+            let mut c = std::mem::take(&mut p.coefs[i]);
+            if scale {
+                c *= a;
+            }
+            c
+        };
+        match (i < p.len(), j < g.len()) {
+            (true, true) => match order.cmp(p.mono(i), &lifted) {
+                Ordering::Greater => {
+                    let c = take_p(p, i);
+                    out.push(p.mono(i), c);
+                    i += 1;
+                }
+                Ordering::Less => {
+                    out.push(&lifted, -Integer::from(b * &g.coefs[j]));
+                    j += 1;
+                    if j < g.len() {
+                        order::mul_into(&mut lifted, q, g.mono(j));
+                    }
+                }
+                Ordering::Equal => {
+                    let mut c = take_p(p, i);
+                    c -= Integer::from(b * &g.coefs[j]);
+                    if c != 0 {
+                        out.push(&lifted, c);
+                    }
+                    i += 1;
+                    j += 1;
+                    if j < g.len() {
+                        order::mul_into(&mut lifted, q, g.mono(j));
+                    }
+                }
+            },
+            (true, false) => {
+                let c = take_p(p, i);
+                out.push(p.mono(i), c);
+                i += 1;
+            }
+            (false, true) => {
+                out.push(&lifted, -Integer::from(b * &g.coefs[j]));
+                j += 1;
+                if j < g.len() {
+                    order::mul_into(&mut lifted, q, g.mono(j));
+                }
+            }
+            (false, false) => break,
+        }
+    }
+}
+
+/// The gcd of the coefficients of `p` and `r` (0 when both are zero).
+fn content(p: &DPoly, r: &DPoly) -> Integer {
+    let mut g = Integer::new();
+    for c in p.coefs.iter().chain(&r.coefs) {
+        g.gcd_mut(c);
+        if g == 1 {
+            break;
+        }
+    }
+    g
+}
+
+/// Full reduction of `f` by `divisors`, fraction-free: returns `(r, s)` with `r ≡ s·f` modulo
+/// the divisors (`s` a positive rational) and no term of `r` divisible by a leading monomial.
+/// Each step is `p := a·p - b·q·g` with `a = lc(g)/d`, `b = c/d`, `d = gcd(c, lc(g))`; the
+/// content of the work is divided out every 16 steps, so coefficients stay small.
 pub(crate) fn reduce(
     f: DPoly,
     divisors: &[Reducer<'_>],
     order: MonomialOrder,
     meter: &mut Meter,
-    mut quotients: Option<&mut Vec<Vec<(Mono, Rational)>>>,
-) -> Result<DPoly, IdealError> {
+) -> Result<(DPoly, Rational), IdealError> {
+    let w = f.w;
     let mut p = f;
+    let mut buf = DPoly::zero(w);
+    let mut rem = DPoly::zero(w);
+    let mut scale = Rational::from(1);
     let mut start = 0;
-    let mut rem = Vec::new();
-    while start < p.terms.len() {
-        meter.check(p.terms.len() - start)?;
-        let (m, c) = &p.terms[start];
-        match find_divisor(divisors, m) {
-            Some(i) => {
-                let d = &divisors[i];
-                let q = d.lm.quotient_of(m);
-                let coef = Rational::from(c / d.poly.lc());
-                if let Some(qs) = quotients.as_deref_mut() {
-                    qs[i].push((q.clone(), coef.clone()));
+    let mut steps = 0u32;
+    while start < p.len() {
+        meter.check(p.len() - start + rem.len())?;
+        match find_divisor(divisors, p.mono(start)) {
+            Some(g) => {
+                let c = &p.coefs[start];
+                let d = Integer::from(c.gcd_ref(g.lc()));
+                let (mut a, mut b) = (Integer::from(g.lc().div_exact_ref(&d)), Integer::from(c.div_exact_ref(&d)));
+                if a.is_negative() {
+                    a = -a;
+                    b = -b;
                 }
-                p = p.sub_mul(start + 1, &coef, &q, d.poly, order);
+                let q = order::quotient(g.lm(), p.mono(start));
+                combine(&mut p, start + 1, (&a, &b), &q, g, order, &mut buf);
+                std::mem::swap(&mut p, &mut buf);
+                if a != 1 {
+                    for c in &mut rem.coefs {
+                        *c *= &a;
+                    }
+                    scale *= &a;
+                }
                 start = 0;
+                steps += 1;
+                if steps.is_multiple_of(16) {
+                    let g = content(&p, &rem);
+                    if g > 1 {
+                        for c in p.coefs.iter_mut().chain(rem.coefs.iter_mut()) {
+                            c.div_exact_mut(&g);
+                        }
+                        scale /= &g;
+                    }
+                }
             }
             None => {
-                rem.push(p.terms[start].clone());
+                let c = std::mem::take(&mut p.coefs[start]);
+                rem.push(p.mono(start), c);
                 start += 1;
             }
         }
     }
-    Ok(DPoly { terms: rem })
+    Ok((rem, scale))
+}
+
+/// A polynomial with rational coefficients for the textbook division (quotients are needed
+/// over Q there), terms by decreasing monomial.
+type RPoly = Vec<(Vec<u32>, Rational)>;
+
+fn rational(p: &DPoly, den: &Integer) -> RPoly {
+    (0..p.len()).map(|i| (p.mono(i).to_vec(), Rational::from((p.coefs[i].clone(), den.clone())))).collect()
+}
+
+/// `p - c·q·g`, whose leading terms cancel.
+fn sub_mul(p: &RPoly, c: &Rational, q: &Mono, g: &RPoly, order: MonomialOrder) -> RPoly {
+    let mut out = Vec::with_capacity(p.len() + g.len());
+    let (mut i, mut j) = (1, 1);
+    let lift = |j: usize| -> (Vec<u32>, Rational) {
+        let mut m = Vec::new();
+        order::mul_into(&mut m, q, &g[j].0);
+        (m, Rational::from(c * &g[j].1))
+    };
+    while i < p.len() || j < g.len() {
+        let next = if j < g.len() { Some(lift(j)) } else { None };
+        match (p.get(i), next) {
+            (Some(x), Some(y)) => match order.cmp(&x.0, &y.0) {
+                Ordering::Greater => {
+                    out.push(x.clone());
+                    i += 1;
+                }
+                Ordering::Less => {
+                    out.push((y.0, -y.1));
+                    j += 1;
+                }
+                Ordering::Equal => {
+                    let v = Rational::from(&x.1 - &y.1);
+                    if v != 0 {
+                        out.push((y.0, v));
+                    }
+                    i += 1;
+                    j += 1;
+                }
+            },
+            (Some(x), None) => {
+                out.push(x.clone());
+                i += 1;
+            }
+            (None, Some(y)) => {
+                out.push((y.0, -y.1));
+                j += 1;
+            }
+            (None, None) => break,
+        }
+    }
+    out
 }
 
 impl PolyRing {
@@ -87,29 +247,41 @@ impl PolyRing {
     /// monomial divides the current leading term is used). The remainder depends on the order
     /// of the list unless the list is a Gröbner basis.
     pub fn divide(&self, f: &Poly, divisors: &[Poly], budget: &super::Budget) -> Result<Division, IdealError> {
-        let f = self.to_dense(f)?;
-        let dense: Vec<DPoly> = divisors
-            .iter()
-            .map(|g| self.to_dense(g))
-            .filter(|g| !matches!(g, Ok(d) if d.is_zero()))
-            .collect::<Result<_, _>>()?;
-        let reducers: Vec<Reducer<'_>> = dense.iter().map(Reducer::new).collect();
-        let mut qs = vec![Vec::new(); reducers.len()];
         let mut meter = Meter::new(budget);
-        let r = reduce(f, &reducers, self.order, &mut meter, Some(&mut qs))?;
-        // Map quotient terms back to the caller's list (zero divisors get a zero quotient).
-        let mut quotients = Vec::with_capacity(divisors.len());
-        let mut k = 0;
+        let (fd, fden) = self.to_dense(f)?;
+        let mut p = rational(&fd, &fden);
+        let mut gs: Vec<RPoly> = Vec::with_capacity(divisors.len());
         for g in divisors {
-            if g.is_exact_zero() {
-                quotients.push(Poly::default());
-            } else {
-                let mut terms = std::mem::take(&mut qs[k]);
-                terms.sort_by(|a, b| self.order.cmp(&b.0, &a.0));
-                quotients.push(self.to_poly(&DPoly { terms }));
-                k += 1;
+            let (d, den) = self.to_dense(g)?;
+            gs.push(rational(&d, &den));
+        }
+        let mut qs: Vec<RPoly> = vec![Vec::new(); gs.len()];
+        let mut rem: RPoly = Vec::new();
+        while !p.is_empty() {
+            meter.check(p.len())?;
+            let lead = &p[0];
+            match gs.iter().position(|g| !g.is_empty() && order::divides(&g[0].0, &lead.0)) {
+                Some(k) => {
+                    let q = order::quotient(&gs[k][0].0, &lead.0);
+                    let c = Rational::from(&lead.1 / &gs[k][0].1);
+                    p = sub_mul(&p, &c, &q, &gs[k], self.order());
+                    qs[k].push((q, c));
+                }
+                None => rem.push(p.remove(0)),
             }
         }
-        Ok(Division { quotients, remainder: self.to_poly(&r) })
+        let poly = |t: RPoly| {
+            let mut d = DPoly::zero(self.width());
+            let mut den = Integer::from(1);
+            for (_, c) in &t {
+                den.lcm_mut(c.denom());
+            }
+            for (m, c) in t {
+                let (n, cd) = c.into_numer_denom();
+                d.push(&m, n * Integer::from(&den / &cd));
+            }
+            self.to_poly(&d, &Rational::from(den))
+        };
+        Ok(Division { quotients: qs.into_iter().map(poly).collect(), remainder: poly(rem) })
     }
 }

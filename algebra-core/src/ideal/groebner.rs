@@ -1,11 +1,13 @@
 //! Buchberger's algorithm with Gebauer–Möller's installation of the product and chain
-//! criteria, the sugar selection strategy, and the final reduction to the unique reduced basis.
+//! criteria, the sugar selection strategy, and the final reduction to the unique reduced basis;
+//! fraction-free (primitive integer polynomials, S-polynomials and reductions by integer
+//! multiples, content removed) on flat exponent vectors.
 
-use super::division::{Reducer, reduce};
-use super::order::Mono;
+use super::division::{Reducer, combine, reduce};
+use super::order;
 use super::{Budget, DPoly, IdealError, Meter, PolyRing};
 use crate::poly::Poly;
-use rug::Rational;
+use rug::{Integer, Rational};
 
 /// A reduced Gröbner basis of an ideal of a [`PolyRing`]: monic, no leading monomial divides a
 /// term of another element, sorted by increasing leading monomial. It is unique for the ideal
@@ -32,7 +34,7 @@ pub struct GroebnerBasis {
 struct Pair {
     i: usize,
     j: usize,
-    lcm: Mono,
+    lcm: Vec<u32>,
     sugar: u32,
 }
 
@@ -42,6 +44,8 @@ struct State<'r> {
     sugar: Vec<u32>,
     active: Vec<bool>,
     pairs: Vec<Pair>,
+    /// Terms of the active polynomials together (the memory budget of the basis).
+    terms: usize,
 }
 
 impl State<'_> {
@@ -51,60 +55,74 @@ impl State<'_> {
 
     /// Gebauer–Möller update: installs `h` (index k) into the basis and the pair list.
     fn update(&mut self, k: usize) {
-        let lh = self.polys[k].lm().clone();
+        let lh = self.polys[k].lm().to_vec();
         let order = self.ring.order();
         // New pairs (i, k) for active i.
-        let mut cands: Vec<(usize, Mono, bool)> = (0..k)
+        let mut cands: Vec<(usize, Vec<u32>, bool)> = (0..k)
             .filter(|&i| self.active[i])
             .map(|i| {
                 let li = self.polys[i].lm();
-                (i, li.lcm(&lh), li.coprime(&lh))
+                (i, order::lcm(li, &lh), order::coprime(li, &lh))
             })
             .collect();
-        // Chain criterion among the new pairs: drop (i, k) if another new pair's lcm properly
-        // divides it; equal lcms keep one, preferring a coprime (product-criterion) one.
+        // Chain criterion among the new pairs: drop (i, k) if another new pair's lcm divides
+        // it; equal lcms keep one, preferring a coprime (product-criterion) one.
         cands.sort_by(|a, b| order.cmp(&a.1, &b.1).then_with(|| b.2.cmp(&a.2)));
-        let mut kept: Vec<(usize, Mono, bool)> = Vec::new();
+        let mut kept: Vec<(usize, Vec<u32>, bool)> = Vec::new();
         for c in cands {
-            if !kept.iter().any(|d| d.1.divides(&c.1)) {
+            if !kept.iter().any(|d| order::divides(&d.1, &c.1)) {
                 kept.push(c);
             }
         }
         // Old pairs (i, j): drop when LM(h) divides lcm(i, j) and both new lcms differ from it.
         let polys = &self.polys;
         self.pairs.retain(|p| {
-            !(lh.divides(&p.lcm) && polys[p.i].lm().lcm(&lh) != p.lcm && polys[p.j].lm().lcm(&lh) != p.lcm)
+            !(order::divides(&lh, &p.lcm)
+                && order::lcm(polys[p.i].lm(), &lh) != p.lcm
+                && order::lcm(polys[p.j].lm(), &lh) != p.lcm)
         });
         // Product criterion: coprime leading monomials need no pair.
         for (i, lcm, coprime) in kept {
             if !coprime {
-                let si = self.sugar[i] + lcm.deg - self.polys[i].lm().deg;
-                let sk = self.sugar[k] + lcm.deg - lh.deg;
+                let si = self.sugar[i] + lcm[0] - self.polys[i].lm()[0];
+                let sk = self.sugar[k] + lcm[0] - lh[0];
                 self.pairs.push(Pair { i, j: k, lcm, sugar: si.max(sk) });
             }
         }
         for i in 0..k {
-            if self.active[i] && lh.divides(self.polys[i].lm()) {
+            if self.active[i] && order::divides(&lh, self.polys[i].lm()) {
                 self.active[i] = false;
+                self.terms -= self.polys[i].len();
             }
         }
         self.active[k] = true;
+        self.terms += self.polys[k].len();
     }
 
+    /// The S-polynomial `(lc g/d)(lcm/lm f) f - (lc f/d)(lcm/lm g) g`, `d = gcd(lc f, lc g)`.
     fn spoly(&self, p: &Pair) -> DPoly {
         let (f, g) = (&self.polys[p.i], &self.polys[p.j]);
-        let (mf, mg) = (f.lm().quotient_of(&p.lcm), g.lm().quotient_of(&p.lcm));
-        // Both monic: S = mf*f - mg*g, whose lcm terms cancel (skipped on both sides).
-        let lifted = DPoly { terms: f.terms.iter().map(|(m, c)| (mf.mul(m), c.clone())).collect() };
-        lifted.sub_mul(1, &Rational::from(1), &mg, g, self.ring.order())
+        let (mf, mg) = (order::quotient(f.lm(), &p.lcm), order::quotient(g.lm(), &p.lcm));
+        let d = Integer::from(f.lc().gcd_ref(g.lc()));
+        let (a, b) = (Integer::from(g.lc().div_exact_ref(&d)), Integer::from(f.lc().div_exact_ref(&d)));
+        let mut lifted = DPoly { w: f.w, exps: Vec::with_capacity(f.exps.len()), coefs: f.coefs.clone() };
+        let mut m = Vec::new();
+        for i in 0..f.len() {
+            order::mul_into(&mut m, &mf, f.mono(i));
+            lifted.exps.extend_from_slice(&m);
+        }
+        let mut out = DPoly::zero(f.w);
+        combine(&mut lifted, 1, (&a, &b), &mg, g, self.ring.order(), &mut out);
+        out
     }
 
-    fn add(&mut self, mut h: DPoly, sugar: u32) -> usize {
-        h.make_monic();
+    fn add(&mut self, mut h: DPoly, sugar: u32, meter: &Meter) -> Result<usize, IdealError> {
+        h.make_primitive();
+        meter.check_basis(self.active.iter().filter(|a| **a).count() + 1, self.terms + h.len())?;
         self.polys.push(h);
         self.sugar.push(sugar);
         self.active.push(false);
-        self.polys.len() - 1
+        Ok(self.polys.len() - 1)
     }
 }
 
@@ -113,24 +131,31 @@ impl PolyRing {
     /// The ideal of no (or only zero) generators has the empty basis; an ideal containing a
     /// non-zero constant has the basis `[1]`.
     pub fn groebner(&self, generators: &[Poly], budget: &Budget) -> Result<GroebnerBasis, IdealError> {
-        let mut meter = Meter::new(budget);
-        let mut st = State { ring: self, polys: Vec::new(), sugar: Vec::new(), active: Vec::new(), pairs: Vec::new() };
-        let mut input: Vec<DPoly> = generators.iter().map(|g| self.to_dense(g)).collect::<Result<Vec<_>, _>>()?;
+        self.groebner_metered(generators, &mut Meter::new(budget))
+    }
+
+    pub(crate) fn groebner_metered(&self, generators: &[Poly], meter: &mut Meter) -> Result<GroebnerBasis, IdealError> {
+        let order = self.order();
+        let mut st =
+            State { ring: self, polys: Vec::new(), sugar: Vec::new(), active: Vec::new(), pairs: Vec::new(), terms: 0 };
+        let mut input: Vec<DPoly> =
+            generators.iter().map(|g| self.to_dense(g).map(|d| d.0)).collect::<Result<Vec<_>, _>>()?;
         input.retain(|p| !p.is_zero());
-        input.sort_by(|a, b| self.order().cmp(a.lm(), b.lm()));
+        input.sort_by(|a, b| order.cmp(a.lm(), b.lm()));
         for g in input {
-            let r = reduce(g, &st.reducers(), self.order(), &mut meter, None)?;
+            let (r, _) = reduce(g, &st.reducers(), order, meter)?;
             if !r.is_zero() {
-                let s = r.terms.iter().map(|t| t.0.deg).max().unwrap_or(0);
-                let k = st.add(r, s);
+                if r.lm()[0] == 0 {
+                    return Ok(GroebnerBasis { ring: self.clone(), basis: vec![unit(self)] });
+                }
+                let s = (0..r.len()).map(|i| r.mono(i)[0]).max().unwrap_or(0);
+                let k = st.add(r, s, meter)?;
                 st.update(k);
             }
         }
         while !st.pairs.is_empty() {
             meter.check_time()?;
-            meter.check_basis(st.polys.len())?;
             // Sugar strategy: least sugar, then least lcm.
-            let order = self.order();
             let best = (0..st.pairs.len())
                 .min_by(|&a, &b| {
                     let (p, q) = (&st.pairs[a], &st.pairs[b]);
@@ -139,38 +164,44 @@ impl PolyRing {
                 .expect("non-empty pair list");
             let pair = st.pairs.swap_remove(best);
             let s = st.spoly(&pair);
-            let r = reduce(s, &st.reducers(), order, &mut meter, None)?;
+            let (r, _) = reduce(s, &st.reducers(), order, meter)?;
             if !r.is_zero() {
-                if r.lm().deg == 0 {
+                if r.lm()[0] == 0 {
                     return Ok(GroebnerBasis { ring: self.clone(), basis: vec![unit(self)] });
                 }
-                let k = st.add(r, pair.sugar);
+                let k = st.add(r, pair.sugar, meter)?;
                 st.update(k);
             }
         }
         let gens: Vec<DPoly> = st.polys.into_iter().zip(st.active).filter(|(_, a)| *a).map(|(p, _)| p).collect();
-        Ok(GroebnerBasis { ring: self.clone(), basis: interreduce(gens, self, &mut meter)? })
+        Ok(GroebnerBasis { ring: self.clone(), basis: interreduce(gens, self, meter)? })
     }
 }
 
 fn unit(ring: &PolyRing) -> DPoly {
-    DPoly { terms: vec![(Mono::one(ring.variables().len()), Rational::from(1))] }
+    let mut one = DPoly::zero(ring.width());
+    one.push(&vec![0; ring.width()], Integer::from(1));
+    one
 }
 
 /// Minimal basis (no leading monomial divides another; the active set already is), then each
-/// element fully reduced by the others, sorted by increasing leading monomial.
+/// element's tail fully reduced by the others, primitive, sorted by increasing leading monomial.
 fn interreduce(mut gens: Vec<DPoly>, ring: &PolyRing, meter: &mut Meter) -> Result<Vec<DPoly>, IdealError> {
     gens.sort_by(|a, b| ring.order().cmp(a.lm(), b.lm()));
     let mut out: Vec<DPoly> = Vec::with_capacity(gens.len());
     for i in 0..gens.len() {
         let others: Vec<Reducer<'_>> =
             gens.iter().enumerate().filter(|(j, _)| *j != i).map(|(_, g)| Reducer::new(g)).collect();
-        let head = DPoly { terms: vec![gens[i].terms[0].clone()] };
-        let tail = DPoly { terms: gens[i].terms[1..].to_vec() };
-        let mut r = reduce(tail, &others, ring.order(), meter, None)?;
-        r.terms.insert(0, head.terms[0].clone());
-        r.make_monic();
-        out.push(r);
+        // r ≡ s·tail with s = n/d, so d·s·g ≡ n·lc·lm + d·r.
+        let (r, s) = reduce(gens[i].tail(1), &others, ring.order(), meter)?;
+        let (n, d) = s.into_numer_denom();
+        let mut h = DPoly::zero(gens[i].w);
+        h.push(gens[i].lm(), n * gens[i].lc());
+        for k in 0..r.len() {
+            h.push(r.mono(k), Integer::from(&d * &r.coefs[k]));
+        }
+        h.make_primitive();
+        out.push(h);
     }
     Ok(out)
 }
@@ -183,7 +214,7 @@ impl GroebnerBasis {
 
     /// The basis polynomials, by increasing leading monomial.
     pub fn polys(&self) -> Vec<Poly> {
-        self.basis.iter().map(|p| self.ring.to_poly(p)).collect()
+        self.basis.iter().map(|p| self.ring.to_poly(p, &Rational::from(p.lc()))).collect()
     }
 
     /// Number of basis polynomials.
@@ -199,7 +230,7 @@ impl GroebnerBasis {
     /// `true` when the ideal is the whole ring (the basis is `[1]`): the equations have no common
     /// complex solution.
     pub fn is_unit(&self) -> bool {
-        self.basis.len() == 1 && self.basis[0].lm().deg == 0
+        self.basis.len() == 1 && self.basis[0].lm()[0] == 0
     }
 
     /// The normal form of `f`: the unique remainder of `f` modulo the ideal.
@@ -218,10 +249,15 @@ impl GroebnerBasis {
 
     /// [`GroebnerBasis::normal_form`] under an explicit budget.
     pub fn normal_form_within(&self, f: &Poly, budget: &Budget) -> Result<Poly, IdealError> {
-        let f = self.ring.to_dense(f)?;
+        self.normal_form_metered(f, &mut Meter::new(budget))
+    }
+
+    /// `f = F / D`, and `r ≡ s·F`: the normal form of `f` is `r / (s·D)`.
+    pub(crate) fn normal_form_metered(&self, f: &Poly, meter: &mut Meter) -> Result<Poly, IdealError> {
+        let (f, den) = self.ring.to_dense(f)?;
         let reducers: Vec<Reducer<'_>> = self.basis.iter().map(Reducer::new).collect();
-        let r = reduce(f, &reducers, self.ring.order(), &mut Meter::new(budget), None)?;
-        Ok(self.ring.to_poly(&r))
+        let (r, s) = reduce(f, &reducers, self.ring.order(), meter)?;
+        Ok(self.ring.to_poly(&r, &(s * den)))
     }
 
     /// Ideal membership: `f` is in the ideal exactly when its normal form is zero.
@@ -246,8 +282,8 @@ impl GroebnerBasis {
     pub fn eliminate(&self, k: usize) -> Vec<Poly> {
         self.basis
             .iter()
-            .filter(|p| p.terms.iter().all(|(m, _)| m.e[..k.min(m.e.len())].iter().all(|e| *e == 0)))
-            .map(|p| self.ring.to_poly(p))
+            .filter(|p| (0..p.len()).all(|i| p.mono(i)[1..=k.min(p.w - 1)].iter().all(|e| *e == 0)))
+            .map(|p| self.ring.to_poly(p, &Rational::from(p.lc())))
             .collect()
     }
 }

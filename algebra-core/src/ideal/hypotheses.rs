@@ -1,7 +1,7 @@
 //! Deciding polynomial claims under hypotheses: equations `h = 0` and non-vanishing conditions
 //! `g != 0` (by the Rabinowitsch trick: a new variable `t` with `1 - t g = 0`).
 
-use super::{Budget, IdealError, MonomialOrder, PolyRing};
+use super::{Budget, IdealError, Meter, MonomialOrder, PolyRing};
 use crate::Ring;
 use crate::poly::Poly;
 use std::time::Instant;
@@ -70,10 +70,13 @@ pub fn decide(claims: &[Poly], hyps: &Hypotheses, budget: &Budget) -> Result<Dec
     }
     let all: Vec<Poly> = gens.iter().chain(claims).cloned().collect();
     let ring = PolyRing::of(&all, MonomialOrder::GrevLex);
-    let basis = ring.groebner(&gens, budget)?;
+    // One meter for the basis and every normal form: the budget bounds the whole decision.
+    let mut meter = Meter::new(budget);
+    let basis = ring.groebner_metered(&gens, &mut meter)?;
     let mut failures = Vec::new();
     for (i, c) in claims.iter().enumerate() {
-        let r = basis.normal_form_within(c, budget)?;
+        meter.check_time()?;
+        let r = basis.normal_form_metered(c, &mut meter)?;
         if !r.is_exact_zero() {
             failures.push((i, r));
         }

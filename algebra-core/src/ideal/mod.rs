@@ -1,6 +1,7 @@
 //! Polynomial ideals over the rationals for [`Poly`]: monomial orders, division with remainder
-//! by a list, reduced Gröbner bases (Buchberger with the product and chain criteria and the
-//! sugar selection strategy), normal forms, ideal membership, non-vanishing hypotheses by the
+//! by a list, reduced Gröbner bases (Buchberger with the Gebauer–Möller criteria and the sugar
+//! selection strategy, fraction-free over the integers on flat exponent vectors; see
+//! docs/verification.md), normal forms, ideal membership, non-vanishing hypotheses by the
 //! Rabinowitsch trick, and elimination of variables.
 //!
 //! Every computation runs under a [`Budget`] (time, basis size, terms per polynomial); when the
@@ -31,7 +32,7 @@ pub use order::MonomialOrder;
 
 use crate::poly::Poly;
 use order::Mono;
-use rug::Rational;
+use rug::{Integer, Rational};
 use std::collections::HashMap;
 use std::fmt;
 use std::time::{Duration, Instant};
@@ -143,86 +144,83 @@ impl Meter {
         }
     }
 
-    pub(crate) fn check_basis(&self, len: usize) -> Result<(), IdealError> {
-        if len > self.budget.max_basis { Err(self.fail(Limit::BasisSize)) } else { Ok(()) }
+    /// The basis may hold `len` polynomials of `terms` terms in all (at most 20 times
+    /// [`Budget::max_terms`]: the memory of the basis).
+    pub(crate) fn check_basis(&self, len: usize, terms: usize) -> Result<(), IdealError> {
+        if len > self.budget.max_basis {
+            Err(self.fail(Limit::BasisSize))
+        } else if terms > self.budget.max_terms.saturating_mul(20) {
+            Err(self.fail(Limit::Terms))
+        } else {
+            Ok(())
+        }
     }
 }
 
-/// A polynomial in dense-exponent form, terms sorted by decreasing monomial.
-#[derive(Clone, Debug, PartialEq, Eq, Default)]
+/// A polynomial with integer coefficients, its monomials stored flat (`w` words each: the
+/// degree, then the exponents; see [`order::Mono`]) by decreasing monomial. The Gröbner
+/// engine works fraction-free: a polynomial over Q is kept as a primitive integer multiple.
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub(crate) struct DPoly {
-    pub(crate) terms: Vec<(Mono, Rational)>,
+    pub(crate) w: usize,
+    pub(crate) exps: Vec<u32>,
+    pub(crate) coefs: Vec<Integer>,
 }
 
 impl DPoly {
+    pub(crate) fn zero(w: usize) -> Self {
+        DPoly { w, exps: Vec::new(), coefs: Vec::new() }
+    }
+
+    pub(crate) fn len(&self) -> usize {
+        self.coefs.len()
+    }
+
     pub(crate) fn is_zero(&self) -> bool {
-        self.terms.is_empty()
+        self.coefs.is_empty()
+    }
+
+    pub(crate) fn mono(&self, i: usize) -> &Mono {
+        &self.exps[i * self.w..(i + 1) * self.w]
     }
 
     pub(crate) fn lm(&self) -> &Mono {
-        &self.terms[0].0
+        self.mono(0)
     }
 
-    pub(crate) fn lc(&self) -> &Rational {
-        &self.terms[0].1
+    pub(crate) fn lc(&self) -> &Integer {
+        &self.coefs[0]
     }
 
-    /// Divides by the leading coefficient.
-    pub(crate) fn make_monic(&mut self) {
-        if let Some(lc) = self.terms.first().map(|t| t.1.clone())
-            && lc != 1
-        {
-            for t in &mut self.terms {
-                t.1 /= &lc;
+    pub(crate) fn push(&mut self, m: &Mono, c: Integer) {
+        self.exps.extend_from_slice(m);
+        self.coefs.push(c);
+    }
+
+    /// The terms from `from` on.
+    pub(crate) fn tail(&self, from: usize) -> DPoly {
+        DPoly { w: self.w, exps: self.exps[from * self.w..].to_vec(), coefs: self.coefs[from..].to_vec() }
+    }
+
+    /// Divides by the content (the gcd of the coefficients) and makes the leading coefficient
+    /// positive: the unique primitive representative of the polynomial up to a rational factor.
+    pub(crate) fn make_primitive(&mut self) {
+        let Some(first) = self.coefs.first() else { return };
+        let mut g = first.clone().abs();
+        for c in &self.coefs[1..] {
+            if g == 1 {
+                break;
+            }
+            g.gcd_mut(c);
+        }
+        if first.is_negative() {
+            g = -g;
+        }
+        if g != 1 {
+            for c in &mut self.coefs {
+                c.div_exact_mut(&g);
             }
         }
-    }
-
-    /// `self - c * m * g`, skipping the first `skip_self`/`skip_g` terms (known to cancel).
-    pub(crate) fn sub_mul(&self, skip_self: usize, c: &Rational, m: &Mono, g: &DPoly, order: MonomialOrder) -> DPoly {
-        let a = &self.terms[skip_self.min(self.terms.len())..];
-        let b = &g.terms[1..];
-        let mut out = Vec::with_capacity(a.len() + b.len());
-        let (mut i, mut j) = (0, 0);
-        let next_b = |j: usize| (m.mul(&b[j].0), Rational::from(c * &b[j].1));
-        let mut pending = if b.is_empty() { None } else { Some(next_b(0)) };
-        while i < a.len() || pending.is_some() {
-            match (a.get(i), pending.as_ref()) {
-                (Some(x), Some(y)) => match order.cmp(&x.0, &y.0) {
-                    std::cmp::Ordering::Greater => {
-                        out.push(x.clone());
-                        i += 1;
-                    }
-                    std::cmp::Ordering::Less => {
-                        let (mo, co) = pending.take().expect("pending term");
-                        out.push((mo, -co));
-                        j += 1;
-                        pending = (j < b.len()).then(|| next_b(j));
-                    }
-                    std::cmp::Ordering::Equal => {
-                        let co = Rational::from(&x.1 - &y.1);
-                        if co != 0 {
-                            out.push((x.0.clone(), co));
-                        }
-                        i += 1;
-                        j += 1;
-                        pending = (j < b.len()).then(|| next_b(j));
-                    }
-                },
-                (Some(x), None) => {
-                    out.push(x.clone());
-                    i += 1;
-                }
-                (None, Some(_)) => {
-                    let (mo, co) = pending.take().expect("pending term");
-                    out.push((mo, -co));
-                    j += 1;
-                    pending = (j < b.len()).then(|| next_b(j));
-                }
-                (None, None) => unreachable!("loop condition"),
-            }
-        }
-        DPoly { terms: out }
     }
 }
 
@@ -281,30 +279,54 @@ impl PolyRing {
 
     /// The leading term (coefficient times monomial) of `p`, `None` for zero.
     pub fn leading_term(&self, p: &Poly) -> Result<Option<Poly>, IdealError> {
-        let d = self.to_dense(p)?;
-        Ok(d.terms.first().map(|t| self.to_poly(&DPoly { terms: vec![t.clone()] })))
+        let (d, den) = self.to_dense(p)?;
+        Ok((!d.is_zero()).then(|| self.to_poly(&d.head(), &Rational::from(den))))
     }
 
-    pub(crate) fn to_dense(&self, p: &Poly) -> Result<DPoly, IdealError> {
-        let n = self.vars.len();
-        let mut terms = Vec::new();
+    /// Words per monomial: the degree and one exponent per variable.
+    pub(crate) fn width(&self) -> usize {
+        self.vars.len() + 1
+    }
+
+    /// `p = F / den` with `F` integer (not made primitive), terms by decreasing monomial.
+    pub(crate) fn to_dense(&self, p: &Poly) -> Result<(DPoly, Integer), IdealError> {
+        let w = self.width();
+        let mut terms: Vec<(Vec<u32>, Rational)> = Vec::new();
+        let mut den = Integer::from(1);
         for (c, m) in p.terms() {
-            let mut e = vec![0u32; n];
+            let mut e = vec![0u32; w];
             for (name, k) in m {
                 let i = *self.index.get(&name).ok_or(IdealError::UnknownVariable(name))?;
-                e[i] += k;
+                e[i + 1] += k;
+                e[0] += k;
             }
-            terms.push((Mono::from_exps(e), c.clone()));
+            den.lcm_mut(c.denom());
+            terms.push((e, c.clone()));
         }
         terms.sort_by(|a, b| self.order.cmp(&b.0, &a.0));
-        Ok(DPoly { terms })
+        let mut out = DPoly::zero(w);
+        for (e, c) in terms {
+            let (num, d) = c.into_numer_denom();
+            out.push(&e, num * Integer::from(&den / &d));
+        }
+        Ok((out, den))
     }
 
-    pub(crate) fn to_poly(&self, p: &DPoly) -> Poly {
-        Poly::from_terms(p.terms.iter().map(|(m, c)| {
-            let vars = m.e.iter().enumerate().filter(|(_, e)| **e > 0);
-            (c.clone(), vars.map(|(i, e)| (self.vars[i].clone(), *e)).collect())
+    /// `p / divisor` as a [`Poly`].
+    pub(crate) fn to_poly(&self, p: &DPoly, divisor: &Rational) -> Poly {
+        Poly::from_terms((0..p.len()).map(|i| {
+            let m = p.mono(i);
+            let vars = m[1..].iter().enumerate().filter(|(_, e)| **e > 0);
+            let c = Rational::from(&p.coefs[i]) / divisor;
+            (c, vars.map(|(i, e)| (self.vars[i].clone(), *e)).collect())
         }))
+    }
+}
+
+impl DPoly {
+    /// The leading term alone.
+    fn head(&self) -> DPoly {
+        DPoly { w: self.w, exps: self.lm().to_vec(), coefs: vec![self.lc().clone()] }
     }
 }
 

@@ -32,79 +32,69 @@ pub enum MonomialOrder {
     },
 }
 
-/// A monomial as a dense exponent vector with its total degree.
-#[derive(Clone, Debug, PartialEq, Eq, Hash)]
-pub(crate) struct Mono {
-    pub(crate) e: Box<[u32]>,
-    pub(crate) deg: u32,
+/// Monomials are exponent slices `[degree, e_0, ..., e_{n-1}]` (the total degree first, so
+/// that graded orders decide most comparisons on one word), stored flat in each polynomial
+/// (`super::DPoly`): no allocation per term.
+pub(crate) type Mono = [u32];
+
+/// `out := a * b`.
+pub(crate) fn mul_into(out: &mut Vec<u32>, a: &Mono, b: &Mono) {
+    out.clear();
+    out.extend(a.iter().zip(b).map(|(x, y)| x + y));
 }
 
-impl Mono {
-    pub(crate) fn one(n: usize) -> Self {
-        Mono { e: vec![0; n].into_boxed_slice(), deg: 0 }
-    }
-
-    pub(crate) fn from_exps(e: Vec<u32>) -> Self {
-        let deg = e.iter().sum();
-        Mono { e: e.into_boxed_slice(), deg }
-    }
-
-    pub(crate) fn mul(&self, o: &Mono) -> Mono {
-        Mono { e: self.e.iter().zip(o.e.iter()).map(|(a, b)| a + b).collect(), deg: self.deg + o.deg }
-    }
-
-    /// `self | o`.
-    pub(crate) fn divides(&self, o: &Mono) -> bool {
-        self.deg <= o.deg && self.e.iter().zip(o.e.iter()).all(|(a, b)| a <= b)
-    }
-
-    /// `o / self`, assuming `self | o`.
-    pub(crate) fn quotient_of(&self, o: &Mono) -> Mono {
-        Mono { e: o.e.iter().zip(self.e.iter()).map(|(a, b)| a - b).collect(), deg: o.deg - self.deg }
-    }
-
-    pub(crate) fn lcm(&self, o: &Mono) -> Mono {
-        Mono::from_exps(self.e.iter().zip(o.e.iter()).map(|(a, b)| *a.max(b)).collect())
-    }
-
-    pub(crate) fn coprime(&self, o: &Mono) -> bool {
-        self.e.iter().zip(o.e.iter()).all(|(a, b)| *a == 0 || *b == 0)
-    }
-
-    /// Bit `i % 64` set when variable `i` occurs: a cheap necessary test for divisibility.
-    pub(crate) fn mask(&self) -> u64 {
-        self.e.iter().enumerate().filter(|(_, e)| **e > 0).fold(0, |m, (i, _)| m | 1 << (i % 64))
-    }
+/// `a | b`.
+pub(crate) fn divides(a: &Mono, b: &Mono) -> bool {
+    a.iter().zip(b).all(|(x, y)| x <= y)
 }
 
+/// `b / a`, assuming `a | b`.
+pub(crate) fn quotient(a: &Mono, b: &Mono) -> Vec<u32> {
+    b.iter().zip(a).map(|(x, y)| x - y).collect()
+}
+
+/// `lcm(a, b)`.
+pub(crate) fn lcm(a: &Mono, b: &Mono) -> Vec<u32> {
+    let mut out: Vec<u32> = a.iter().zip(b).map(|(x, y)| *x.max(y)).collect();
+    out[0] = out[1..].iter().sum();
+    out
+}
+
+/// No variable occurs in both.
+pub(crate) fn coprime(a: &Mono, b: &Mono) -> bool {
+    a[1..].iter().zip(&b[1..]).all(|(x, y)| *x == 0 || *y == 0)
+}
+
+/// Bit `i % 64` set when variable `i` occurs: a cheap necessary test for divisibility.
+pub(crate) fn mask(a: &Mono) -> u64 {
+    a[1..].iter().enumerate().filter(|(_, e)| **e > 0).fold(0, |m, (i, _)| m | 1 << (i % 64))
+}
+
+/// Graded reverse lexicographic comparison of two exponent vectors (no degree word).
 fn grevlex(a: &[u32], b: &[u32]) -> Ordering {
-    let (da, db): (u32, u32) = (a.iter().sum(), b.iter().sum());
-    da.cmp(&db).then_with(|| {
-        for (x, y) in a.iter().zip(b.iter()).rev() {
-            if x != y {
-                return y.cmp(x);
-            }
+    let (da, db): (u64, u64) = (a.iter().map(|&x| u64::from(x)).sum(), b.iter().map(|&x| u64::from(x)).sum());
+    da.cmp(&db).then_with(|| reverse_lex(a, b))
+}
+
+/// On equal degrees: the smaller exponent of the last variable where they differ wins.
+fn reverse_lex(a: &[u32], b: &[u32]) -> Ordering {
+    for (x, y) in a.iter().zip(b).rev() {
+        if x != y {
+            return y.cmp(x);
         }
-        Ordering::Equal
-    })
+    }
+    Ordering::Equal
 }
 
 impl MonomialOrder {
     /// Compares two monomials (`Greater` = `a` is the larger, i.e. leads).
     pub(crate) fn cmp(&self, a: &Mono, b: &Mono) -> Ordering {
         match *self {
-            MonomialOrder::Lex => a.e.cmp(&b.e),
-            MonomialOrder::GrevLex => a.deg.cmp(&b.deg).then_with(|| {
-                for (x, y) in a.e.iter().zip(b.e.iter()).rev() {
-                    if x != y {
-                        return y.cmp(x);
-                    }
-                }
-                Ordering::Equal
-            }),
+            MonomialOrder::Lex => a[1..].cmp(&b[1..]),
+            MonomialOrder::GrevLex => a[0].cmp(&b[0]).then_with(|| reverse_lex(&a[1..], &b[1..])),
             MonomialOrder::Elimination { first } => {
-                let k = first.min(a.e.len());
-                grevlex(&a.e[..k], &b.e[..k]).then_with(|| grevlex(&a.e[k..], &b.e[k..]))
+                let k = (first + 1).min(a.len());
+                grevlex(&a[1..k], &b[1..k]).then_with(|| grevlex(&a[k..], &b[k..]))
             }
         }
     }
@@ -114,8 +104,8 @@ impl MonomialOrder {
 mod tests {
     use super::*;
 
-    fn m(e: &[u32]) -> Mono {
-        Mono::from_exps(e.to_vec())
+    fn m(e: &[u32]) -> Vec<u32> {
+        std::iter::once(e.iter().sum()).chain(e.iter().copied()).collect()
     }
 
     #[test]

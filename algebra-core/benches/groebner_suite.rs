@@ -1,0 +1,296 @@
+//! The Gröbner benchmark suite (docs/performance.md, "Gröbner engine against Singular"): the
+//! papers' hypothesis ideals and the standard systems, each run by GAM in process and, when
+//! installed, by Singular (`std` + `reduce`, degrevlex, over Q, timed by its own `rtimer`) and
+//! by sympy (`groebner` + `reduced`), in the same run; it prints the times and the ratios.
+//!
+//! Every ideal is also written to `target/groebner-suite/NAME.sing` (Singular's input
+//! language) and `NAME.py` (sympy), so the comparison can be rerun by hand. Run it with
+//! `tests/bench/groebner-suite.sh` (installs Singular where missing), or
+//! `cargo bench -p algebra-core --features rug --bench groebner_suite [-- NAME...]`.
+#![allow(missing_docs)]
+
+use algebra_core::ideal::{Budget, MonomialOrder, PolyRing};
+use algebra_core::multivector::symbolic::Part;
+use algebra_core::{Algebra, Basis, Multivector, Poly, Ring};
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::time::{Duration, Instant};
+
+type Mv = Multivector<Poly>;
+
+/// One ideal of the suite: generators, claims to reduce (possibly none), whether sympy runs it.
+struct Ideal {
+    name: &'static str,
+    gens: Vec<Poly>,
+    claims: Vec<Poly>,
+    sympy: bool,
+}
+
+fn components(m: &Mv) -> Vec<Poly> {
+    m.components().into_iter().map(|(_, p)| p).collect()
+}
+
+fn pose(alg: &std::sync::Arc<Algebra>, prefix: &str) -> Mv {
+    let names = ["1", "e12", "e13", "e23", "e1inf", "e2inf", "e3inf", "e123inf"];
+    Multivector::symbolic(alg, Basis::Product, prefix, &Part::elements(&names)).expect("pose")
+}
+
+fn unitary(s: &Mv) -> Vec<Poly> {
+    let one = Multivector::scalar(s.algebra(), s.basis(), Poly::one());
+    components(&(&(&s.reverse() * s) - &one))
+}
+
+/// The docs' example (docs/cli.md, `gam prove`): X = even("S") of cga-null in the product
+/// basis (16 coefficients), rev(X) X = 1, claim (rev(X) e0 X)² = 0.
+fn docs_example() -> Ideal {
+    let alg = Algebra::builtin("cga-null").expect("cga-null");
+    let x = Multivector::symbolic(&alg, Basis::Product, "S", &Part::Even).expect("even");
+    let e0 = Multivector::from_mask(&alg, Basis::Product, alg.mask_of("e0").expect("e0")).expect("e0");
+    let f = &(&x.reverse() * &e0) * &x;
+    Ideal { name: "docs-example", gens: unitary(&x), claims: components(&(&f * &f)), sympy: true }
+}
+
+/// Lemma 2.2 (null vectors): a pose S of G_123inf in G_0123inf, rev(S) S = 1 and x x = 0;
+/// claim (rev(S) x S)² = 0.
+fn lemma_2_2() -> Ideal {
+    let alg = Algebra::builtin("cga-null").expect("cga-null");
+    let s = pose(&alg, "S");
+    let x = Multivector::symbolic(&alg, Basis::Product, "x", &Part::Grade(1)).expect("vector");
+    let fx = &(&s.reverse() * &x) * &s;
+    let gens = unitary(&s).into_iter().chain(components(&(&x * &x))).collect();
+    Ideal { name: "lemma-2.2", gens, claims: components(&(&fx * &fx)), sympy: true }
+}
+
+/// Lemma 3.4 (the registry's statement): rev(S) S = 1 and its derivative; Ψ = 2 rev(S) D is a
+/// bivector.
+fn lemma_3_4() -> Ideal {
+    let alg = Algebra::builtin("cga-null").expect("cga-null");
+    let (s, d) = (pose(&alg, "S"), pose(&alg, "D"));
+    let psi = (&s.reverse() * &d).scale(&Poly::from_i64(2));
+    let derivative = components(&(&(&d.reverse() * &s) + &(&s.reverse() * &d)));
+    let gens = unitary(&s).into_iter().chain(derivative).collect();
+    Ideal { name: "lemma-3.4", gens, claims: components(&(&psi - &psi.grade(2))), sympy: false }
+}
+
+/// The Study quadric for `k` symbolic poses of G_123inf: each on the quadric
+/// (<rev(S_i) S_i>_4 = 0); claim: their product is on it too.
+fn study(k: usize) -> Ideal {
+    let alg = Algebra::builtin("g123inf").expect("g123inf");
+    let poses: Vec<Mv> = (0..k).map(|i| pose(&alg, ["A", "B", "C"][i])).collect();
+    let quadric = |s: &Mv| components(&(&s.reverse() * s).grade(4));
+    let gens = poses.iter().flat_map(quadric).collect();
+    let product = poses[1..].iter().fold(poses[0].clone(), |acc, s| &acc * s);
+    let name = ["study-1", "study-2", "study-3"][k - 1];
+    Ideal { name, gens, claims: quadric(&product), sympy: k == 1 }
+}
+
+fn vars(prefix: &str, n: usize) -> Vec<Poly> {
+    (0..n).map(|i| Poly::var(&format!("{prefix}{i}"))).collect()
+}
+
+/// cyclic-n: the elementary cyclic sums of degree 1..n-1 and x_0 ... x_{n-1} - 1.
+fn cyclic(n: usize) -> Vec<Poly> {
+    let x = vars("x", n);
+    let mut eqs: Vec<Poly> = (1..n)
+        .map(|k| (0..n).fold(Poly::zero(), |s, i| s + (0..k).fold(Poly::one(), |t, j| t * x[(i + j) % n].clone())))
+        .collect();
+    eqs.push(x.iter().fold(Poly::one(), |t, v| t * v.clone()) - Poly::one());
+    eqs
+}
+
+/// katsura-n in u_0..u_n (as tests/fixtures/sympy/groebner.py defines it).
+fn katsura(n: usize) -> Vec<Poly> {
+    let u = vars("u", n + 1);
+    let at = |i: i64| if i.unsigned_abs() as usize <= n { u[i.unsigned_abs() as usize].clone() } else { Poly::zero() };
+    let n_i = n as i64;
+    let mut eqs = vec![(-n_i..=n_i).fold(Poly::zero(), |s, i| s + at(i)) - Poly::one()];
+    for m in 0..n_i {
+        eqs.push((-n_i..=n_i).fold(Poly::zero(), |s, i| s + at(i) * at(m - i)) - at(m));
+    }
+    eqs
+}
+
+fn suite() -> Vec<Ideal> {
+    let std = |name, gens, sympy| Ideal { name, gens, claims: vec![], sympy };
+    vec![
+        docs_example(),
+        lemma_2_2(),
+        lemma_3_4(),
+        study(1),
+        study(2),
+        study(3),
+        std("cyclic-5", cyclic(5), true),
+        std("cyclic-6", cyclic(6), false),
+        std("katsura-5", katsura(5), true),
+        std("katsura-6", katsura(6), false),
+    ]
+}
+
+fn ring_of(ideal: &Ideal) -> PolyRing {
+    let all: Vec<Poly> = ideal.gens.iter().chain(&ideal.claims).cloned().collect();
+    PolyRing::of(&all, MonomialOrder::GrevLex)
+}
+
+/// GAM's time (basis + normal forms), median of up to 5 runs within about 2 s; the basis
+/// size and whether every claim reduced to zero.
+fn run_gam(ideal: &Ideal, budget: &Budget) -> Result<(Duration, usize, bool), String> {
+    let ring = ring_of(ideal);
+    let mut times = Vec::new();
+    let mut shape = (0, true);
+    let start = Instant::now();
+    while times.len() < 5 && (times.is_empty() || start.elapsed() < Duration::from_secs(2)) {
+        let t = Instant::now();
+        let g = ring.groebner(&ideal.gens, budget).map_err(|e| e.to_string())?;
+        let zero = ideal.claims.iter().all(|c| g.contains(c).unwrap_or(false));
+        times.push(t.elapsed());
+        shape = (g.len(), zero);
+    }
+    times.sort();
+    Ok((times[times.len() / 2], shape.0, shape.1))
+}
+
+/// A polynomial in Singular's (`python = false`) or sympy's syntax.
+fn text(p: &Poly, python: bool) -> String {
+    let pow = if python { "**" } else { "^" };
+    let mut out = String::new();
+    for (c, m) in p.terms() {
+        let mono: Vec<String> =
+            m.iter().map(|(v, e)| if *e == 1 { v.clone() } else { format!("{v}{pow}{e}") }).collect();
+        let coeff = match (c.denom() == &1, python) {
+            (true, _) => format!("{}", c.numer()),
+            (false, false) => format!("({}/{})", c.numer(), c.denom()),
+            (false, true) => format!("Rational({}, {})", c.numer(), c.denom()),
+        };
+        let _ = write!(out, " + ({coeff})");
+        for f in mono {
+            let _ = write!(out, "*{f}");
+        }
+    }
+    if out.is_empty() { "0".into() } else { out[3..].to_string() }
+}
+
+fn write_singular(ideal: &Ideal, ring: &PolyRing, dir: &Path) -> PathBuf {
+    let gens: Vec<String> = ideal.gens.iter().map(|p| text(p, false)).collect();
+    let mut s = format!("ring r = 0, ({}), dp;\n", ring.variables().join(", "));
+    let _ = writeln!(s, "ideal i = {};", gens.join(",\n  "));
+    if !ideal.claims.is_empty() {
+        let claims: Vec<String> = ideal.claims.iter().map(|p| text(p, false)).collect();
+        let _ = writeln!(s, "ideal c = {};", claims.join(",\n  "));
+    }
+    s.push_str("system(\"--ticks-per-sec\", 1000000);\nint best = -1; int k; int t; ideal g; ideal n;\n");
+    s.push_str("for (k = 1; k <= 5; k++) {\n  t = rtimer;\n  g = std(i);\n");
+    if !ideal.claims.is_empty() {
+        s.push_str("  n = reduce(c, g);\n");
+    }
+    s.push_str("  t = rtimer - t;\n  if (best < 0 || t < best) { best = t; }\n}\n");
+    let zero = if ideal.claims.is_empty() { "1" } else { "size(n) == 0" };
+    let _ =
+        writeln!(s, "print(\"SINGULAR \" + string(best) + \" \" + string(size(g)) + \" \" + string({zero}));\nquit;");
+    let path = dir.join(format!("{}.sing", ideal.name));
+    std::fs::write(&path, s).expect("write .sing");
+    path
+}
+
+fn write_sympy(ideal: &Ideal, ring: &PolyRing, dir: &Path) -> PathBuf {
+    let gens: Vec<String> = ideal.gens.iter().map(|p| text(p, true)).collect();
+    let claims: Vec<String> = ideal.claims.iter().map(|p| text(p, true)).collect();
+    let v = ring.variables();
+    let s = format!(
+        "import time\nfrom sympy import symbols, groebner, reduced, Rational\n{} = symbols('{}', seq=True)\n\
+         G = [{}]\nC = [{}]\nt = time.perf_counter()\nB = groebner(G, *{}, order='grevlex')\n\
+         zero = all(reduced(c, list(B.exprs), *{}, order='grevlex')[1] == 0 for c in C)\n\
+         print('SYMPY', int((time.perf_counter() - t) * 1e6), len(B.exprs), int(zero))\n",
+        v.join(", ") + ",",
+        v.join(" "),
+        gens.join(",\n  "),
+        claims.join(",\n  "),
+        format_args!("[{}]", v.join(", ")),
+        format_args!("[{}]", v.join(", ")),
+    );
+    let path = dir.join(format!("{}.py", ideal.name));
+    std::fs::write(&path, s).expect("write .py");
+    path
+}
+
+/// Runs `cmd` with a time limit; the first output line starting with `tag`, split.
+fn external(mut cmd: Command, tag: &str, limit: Duration) -> Option<Vec<u128>> {
+    let mut child = cmd.stdout(std::process::Stdio::piped()).stderr(std::process::Stdio::null()).spawn().ok()?;
+    let start = Instant::now();
+    loop {
+        if child.try_wait().ok()?.is_some() {
+            break;
+        }
+        if start.elapsed() > limit {
+            let _ = child.kill();
+            let _ = child.wait();
+            return None;
+        }
+        std::thread::sleep(Duration::from_millis(5));
+    }
+    let out = child.wait_with_output().ok()?;
+    let text = String::from_utf8_lossy(&out.stdout);
+    let line = text.lines().find(|l| l.starts_with(tag))?;
+    line.split_whitespace().skip(1).map(|x| x.parse().ok()).collect()
+}
+
+fn main() {
+    let filter: Vec<String> = std::env::args().skip(1).filter(|a| !a.starts_with('-')).collect();
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../target/groebner-suite");
+    std::fs::create_dir_all(&dir).expect("output directory");
+    let budget = Budget { time: Some(Duration::from_secs(120)), ..Budget::default() };
+    let singular = Command::new("Singular").arg("--version").output().is_ok();
+    println!("ideal          vars gens basis  GAM ms      Singular ms  GAM/Singular  sympy ms     sympy/GAM");
+    for ideal in suite().into_iter().filter(|i| filter.is_empty() || filter.iter().any(|f| i.name.contains(f.as_str())))
+    {
+        let ring = ring_of(&ideal);
+        let sing_file = write_singular(&ideal, &ring, &dir);
+        let py_file = write_sympy(&ideal, &ring, &dir);
+        let gam = run_gam(&ideal, &budget);
+        let sing = singular
+            .then(|| {
+                let mut c = Command::new("Singular");
+                c.arg("-q").arg(&sing_file);
+                external(c, "SINGULAR", Duration::from_secs(300))
+            })
+            .flatten();
+        let sympy = ideal
+            .sympy
+            .then(|| {
+                let mut c = Command::new("python3");
+                c.arg(&py_file);
+                external(c, "SYMPY", Duration::from_secs(300))
+            })
+            .flatten();
+        let (gam_ms, basis, zero) = match &gam {
+            Ok((t, b, z)) => (t.as_secs_f64() * 1e3, b.to_string(), *z),
+            Err(e) => {
+                println!("{:<14} GAM: {e}", ideal.name);
+                continue;
+            }
+        };
+        let sing_ms = sing.as_ref().map(|v| v[0] as f64 / 1e3);
+        let sympy_ms = sympy.as_ref().map(|v| v[0] as f64 / 1e3);
+        if let Some(v) = &sing
+            && (v[1].to_string() != basis || (v[2] == 1) != zero)
+        {
+            println!(
+                "{:<14} MISMATCH: Singular basis {} zero {}, GAM basis {basis} zero {zero}",
+                ideal.name, v[1], v[2]
+            );
+        }
+        let fmt = |x: Option<f64>| x.map_or("-".to_string(), |x| format!("{x:.2}"));
+        println!(
+            "{:<14} {:>4} {:>4} {:>5}  {:>9.2}  {:>11}  {:>12}  {:>9}  {:>10}",
+            ideal.name,
+            ring.variables().len(),
+            ideal.gens.len(),
+            basis,
+            gam_ms,
+            fmt(sing_ms),
+            sing_ms.map_or("-".into(), |s| format!("{:.1}x", gam_ms / s)),
+            fmt(sympy_ms),
+            sympy_ms.map_or("-".into(), |s| format!("{:.0}x", s / gam_ms)),
+        );
+    }
+}
