@@ -144,7 +144,7 @@ pub(crate) fn pose_in(path: &str, name: &str, v: &Value) -> Result<Pose<f64>, Cl
     if let Some(q) = obj.get("quaternion") {
         let q: [f64; 4] = serde_json::from_value(q.clone())
             .map_err(|_| usage(path, format!("`{}` must be [w, x, y, z]", at("quaternion"))))?;
-        return Pose::from_quaternion_translation(&q, &position)
+        return Pose::from_quaternion_wxyz(&q, &position)
             .map_err(|_| usage(path, format!("`{}` must be non-zero and finite", at("quaternion"))));
     }
     match (obj.get("axis"), obj.get("angle")) {
