@@ -129,10 +129,8 @@ impl Plan {
     /// ```
     pub fn new(mut spec: ModuleSpec) -> Result<Plan, CodegenError> {
         let alg = spec.algebra.clone();
+        // every type keeps its storage order ([`TypeSpec::elements`]): kernels index fields
         let order = alg.basis_order().to_vec();
-        for t in &mut spec.types {
-            t.elements.sort_by_key(|m| order.iter().position(|o| o == m));
-        }
         let full = match spec.types.iter().position(|t| t.elements.len() == alg.dim()) {
             Some(i) => i,
             None => {

@@ -90,7 +90,10 @@ pub struct TypeSpec {
     pub name: String,
     /// Doc lines to put on the struct.
     pub doc: Vec<String>,
-    /// The masks of the basis elements, in the algebra's basis order.
+    /// The masks of the basis elements in storage order: as declared for a list (`[e01, e02,
+    /// e03, e12, e31, e23]`), the algebra's basis order for a grade selector (`grade K`,
+    /// `even`, `odd`, `all`). Field `i` of the generated struct (and of `new`, `to_array`,
+    /// `Index`, iteration, `Display` and the `repr(C)` layout) holds `elements[i]`.
     pub elements: Vec<u32>,
     /// Elements listed in a non-canonical orientation (`e20` for `e02`): mask → (the name
     /// as written, `-1` or `1`). The field holds the coefficient in that orientation.
@@ -174,8 +177,7 @@ impl TypeSpec {
                 }
                 masks.push(m);
             }
-            let order = algebra.basis_order();
-            masks.sort_by_key(|m| order.iter().position(|o| o == m));
+            // the declared order is the storage order (fields, `new`, arrays, `repr(C)`)
             let mut t = TypeSpec::new(name, masks)?;
             t.renamed = renamed;
             return Ok(t);
@@ -183,7 +185,7 @@ impl TypeSpec {
         TypeSpec::new(name, elements)
     }
 
-    /// A type from masks (sorted into basis order by the plan).
+    /// A type from masks, stored in the order given.
     ///
     /// ```
     /// let t = algebra_codegen::TypeSpec::new("Scalar", vec![0]).unwrap();

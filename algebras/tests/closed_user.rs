@@ -216,8 +216,11 @@ fn full_turn_translation_and_near_pi() {
 #[test]
 fn user_orientation_matches_pga3() {
     use gam_algebras::pga3;
+    // the user's Line stores its fields as declared (e01 e20 e03 e12 e31 e23), pga3's grade 2
+    // in the canonical order (e01 e02 e12 e03 e13 e23)
     let l = pga_user::Line::<f64>::new(0.3, -0.2, 0.7, 0.4, -0.9, 0.25);
-    let b = pga3::Bivector::new(0.3, 0.2, 0.7, 0.4, 0.9, 0.25); // e01 e02 e03 e12 e13 e23
+    let b = pga3::Bivector::new(0.3, 0.2, 0.4, 0.7, 0.9, 0.25);
+    assert_eq!((l.e03, l.e12, b.e03, b.e12), (0.7, 0.4, 0.7, 0.4));
     let (m, n) = (l.exp(), b.exp());
     assert!((m.e02 - n.e02).abs() < 1e-15 && (m.e30 + n.e03).abs() < 1e-15);
     assert!((m.e21 + n.e12).abs() < 1e-15 && (m.e13 - n.e13).abs() < 1e-15 && (m.e1023 + n.e0123).abs() < 1e-15);

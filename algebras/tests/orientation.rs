@@ -54,7 +54,7 @@ fn blade(name: &str) -> Mv<Q> {
 
 #[test]
 fn fields_are_named_and_signed_as_declared() {
-    assert_eq!(Line::<Q>::ELEMENTS, ["e01", "e02", "e12", "e03", "e31", "e23"]);
+    assert_eq!(Line::<Q>::ELEMENTS, ["e01", "e02", "e03", "e12", "e31", "e23"]); // as declared
     assert_eq!(Point::<Q>::ELEMENTS, ["e021", "e013", "e032", "e123"]);
     assert_eq!(Line::<Q>::e31().to_string(), "e31");
     assert_eq!(Line::<Q>::e31().to_multivector(), -blade("e13"));

@@ -239,7 +239,7 @@ fn sample_and_plot_accept_an_interpolate_spec() {
     assert!(std::fs::read_to_string(out.path()).unwrap().starts_with("<svg"));
 }
 
-/// A quaternion is normalised without overflow (the library's `Pose::from_quaternion_translation`):
+/// A quaternion is normalised without overflow (the library's `Pose::from_quaternion_wxyz`):
 /// components of size 1e200 give the same key pose as the unit quaternion.
 #[test]
 fn huge_quaternion_components() {

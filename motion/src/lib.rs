@@ -61,6 +61,8 @@ pub mod bspline;
 mod de_casteljau;
 pub mod error;
 pub mod exp_log;
+#[cfg(feature = "glam")]
+pub mod glam_conv;
 pub mod hermite;
 pub mod interpolation;
 pub mod jacobian;
@@ -78,6 +80,7 @@ pub mod paper;
 pub mod piecewise;
 pub mod pose;
 pub mod pseudoscalar;
+pub mod quaternion;
 pub mod repr;
 mod scaled;
 #[cfg(feature = "serde")]
@@ -101,5 +104,6 @@ pub use joins::{Continuity, EndCondition, JoinCheck, JoinError, SegmentKind, Sha
 pub use matrix::Matrix4;
 pub use piecewise::{AnyMotion, Piecewise, Reparametrized};
 pub use pose::{Bivector, Even, Pose, Pseudoscalar};
+pub use quaternion::Quaternion;
 pub use vec3::Vec3;
 pub use velocity::{Twist, velocity_bivector, velocity_indicatrix};

@@ -22,7 +22,7 @@
 
 use crate::{MotionError, Pose};
 use algebra_core::{Real, Ring};
-use nalgebra::{Isometry3, Quaternion, RealField, Translation3, UnitQuaternion};
+use nalgebra::{Isometry3, Quaternion, RealField, Translation3, UnitQuaternion, Vector3};
 
 impl<T: Real + RealField> Pose<T> {
     /// The pose `S = R T` of the isometry `x ↦ R x + t`. Unchecked: a NaN or infinite
@@ -38,10 +38,26 @@ impl<T: Real + RealField> Pose<T> {
     /// assert!((q[0] - r.x).abs() < 1e-15 && (q[1] - r.y).abs() < 1e-15 && (q[2] - r.z).abs() < 1e-15);
     /// ```
     pub fn from_na_isometry(iso: &Isometry3<T>) -> Self {
-        let q = iso.rotation.quaternion();
+        Pose::from_na_rotation_translation(&iso.rotation, &iso.translation.vector)
+    }
+
+    /// The pose `S = R T` of nalgebra's unit quaternion `q` (read by its named parts
+    /// `w, i, j, k`: nalgebra's `coords` array is `[i, j, k, w]`) followed by the translation
+    /// `t`, so `F_S(p) = q p q* + t`. Unchecked like [`Pose::from_na_isometry`].
+    ///
+    /// ```
+    /// use nalgebra::{UnitQuaternion, Vector3};
+    /// let q = UnitQuaternion::from_axis_angle(&Vector3::z_axis(), 0.5f64);
+    /// let t = Vector3::new(1.0, 2.0, 3.0);
+    /// let s = motion::Pose::from_na_rotation_translation(&q, &t);
+    /// let p = s.transform_point(&[1.0, 0.0, 0.0]).unwrap();
+    /// let want = q * Vector3::x() + t;
+    /// assert!((p[0] - want.x).abs() < 1e-15 && (p[1] - want.y).abs() < 1e-15 && (p[2] - want.z).abs() < 1e-15);
+    /// ```
+    pub fn from_na_rotation_translation(q: &UnitQuaternion<T>, t: &Vector3<T>) -> Self {
+        let q = q.quaternion();
         let r = Pose::rotor_from_parts(&q.w, &<T as Ring>::one(), &[q.i.clone(), q.j.clone(), q.k.clone()]);
-        let v = &iso.translation.vector;
-        &r * &Pose::translation(&[v[0].clone(), v[1].clone(), v[2].clone()])
+        &r * &Pose::translation(&[t[0].clone(), t[1].clone(), t[2].clone()])
     }
 
     /// [`Pose::from_na_isometry`] of a finite isometry: [`MotionError::NotFinite`] when a
@@ -82,5 +98,21 @@ impl<T: Real + RealField> Pose<T> {
         let t = u.transform_point(&[<T as Ring>::zero(), <T as Ring>::zero(), <T as Ring>::zero()])?;
         let [x, y, z] = t;
         Ok(Isometry3::from_parts(Translation3::new(x, y, z), UnitQuaternion::new_unchecked(q)))
+    }
+}
+
+impl<T: Real + RealField> From<&UnitQuaternion<T>> for Pose<T> {
+    /// The rotation [`Pose::from_na_rotation_translation`] with no translation.
+    ///
+    /// ```
+    /// use nalgebra::{UnitQuaternion, Vector3};
+    /// let q = UnitQuaternion::from_axis_angle(&Vector3::y_axis(), 0.3f64);
+    /// let s = motion::Pose::from(&q);
+    /// assert!(s.is_equivalent(&motion::Pose::rotation(&[0.0, 1.0, 0.0], &0.3)?, &1e-15)?);
+    /// # Ok::<(), motion::MotionError>(())
+    /// ```
+    fn from(q: &UnitQuaternion<T>) -> Self {
+        let z = <T as Ring>::zero;
+        Pose::from_na_rotation_translation(q, &Vector3::new(z(), z(), z()))
     }
 }

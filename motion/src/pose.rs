@@ -288,26 +288,25 @@ impl<T: Real> Pose<T> {
         Ok(Pose::rotation(axis, angle)? * Pose::translation(translation))
     }
 
-    /// `S = R T` from a rotation quaternion `q = [w, x, y, z]` (Hamilton, `w + x i + y j + z k`,
-    /// normalised here without overflow: components of size 1e200 or 1e-300 are fine) and the
-    /// translation: the rotor is `w + (x, y, z) e123` ([`Pose::rotor_from_parts`]), so
-    /// `F_S(p) = q p q* + translation`. Fails for a zero or non-finite quaternion.
+    /// Deprecated: the bare array does not say its order. This is
+    /// [`Pose::from_quaternion_wxyz`] (`[w, x, y, z]`, scalar first); nalgebra's
+    /// `Quaternion::coords` and glam's `Quat::to_array` are `[x, y, z, w]` and would give a
+    /// valid, different pose. Use [`Pose::from_quaternion`] with a named-field
+    /// [`crate::Quaternion`], or the nalgebra/glam conversions, which take those types.
     ///
     /// ```
-    /// use motion::{MotionError, Pose};
-    /// let h = std::f64::consts::FRAC_1_SQRT_2;
-    /// let s = Pose::from_quaternion_translation(&[1e200, 0.0, 0.0, 1e200], &[1.0, 0.0, 0.0])?; // quarter turn about e3
-    /// let want = Pose::from_axis_angle_translation(&[0.0, 0.0, 1.0], &std::f64::consts::FRAC_PI_2, &[1.0, 0.0, 0.0])?;
-    /// assert!(s.is_equivalent(&want, &1e-15)? && (s.scalar - h).abs() < 1e-15);
-    /// assert_eq!(Pose::from_quaternion_translation(&[0.0; 4], &[0.0; 3]), Err(MotionError::ZeroQuaternion));
-    /// # Ok::<(), MotionError>(())
+    /// # #![allow(deprecated)]
+    /// use motion::Pose;
+    /// let s = Pose::from_quaternion_translation(&[1.0, 0.0, 0.0, 0.0], &[1.0, 2.0, 3.0])?;
+    /// assert_eq!(s, Pose::translation(&[1.0, 2.0, 3.0]));
+    /// # Ok::<(), motion::MotionError>(())
     /// ```
+    #[deprecated(
+        since = "0.1.0",
+        note = "the array order is ambiguous: use `Pose::from_quaternion_wxyz` ([w, x, y, z]) or `Pose::from_quaternion` (named fields)"
+    )]
     pub fn from_quaternion_translation(q: &[T; 4], translation: &[T; 3]) -> Result<Self, MotionError> {
-        for x in q.iter().chain(translation) {
-            check_finite_scalar("from_quaternion_translation", x)?;
-        }
-        let [w, x, y, z] = crate::scaled::direction(q).ok_or(MotionError::ZeroQuaternion)?;
-        Ok(Pose::rotor_from_parts(&w, &T::one(), &[x, y, z]) * Pose::translation(translation))
+        Pose::from_quaternion_wxyz(q, translation)
     }
 
     /// The pseudoscalar norm `|S| = √(rev(S) S) = (2α + βω)/(2√α)` (Lemma 2.4(ii) with

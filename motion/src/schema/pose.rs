@@ -302,7 +302,7 @@ impl PoseObject {
             }
             PoseObject::Quaternion { position, quaternion } => {
                 finite_position(position)?;
-                Pose::from_quaternion_translation(quaternion, position).map_err(|_| PoseError::ZeroQuaternion)
+                Pose::from_quaternion_wxyz(quaternion, position).map_err(|_| PoseError::ZeroQuaternion)
             }
             PoseObject::Matrix(m) => Pose::from_matrix(m, &MATRIX_TOL).map_err(PoseError::Matrix),
             PoseObject::Motor(c) => {
