@@ -90,6 +90,8 @@ pub fn prove(claim: &str, algebra: &str, basis: &str, assume: &[String], timeout
         basis,
         assume: assume.to_vec(),
         timeout,
+        max_basis: algebra_core::ideal::Budget::default().max_basis,
+        max_terms: algebra_core::ideal::Budget::default().max_terms,
         json: true,
         claim: claim.into(),
     };
