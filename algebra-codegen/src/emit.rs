@@ -311,7 +311,8 @@ fn type_items(plan: &Plan, names: &Names, i: usize) -> TokenStream {
             }
 
             /// A general element with symbolic coefficients named `prefix` + the basis label
-            /// (`S`, `S12`, ..., as the CLI prints them), for scalars with symbols (`Poly`).
+            /// (`m`, `m12`, ... for the prefix `m`), for scalars with symbols (`Poly`). Avoid
+            /// the prefixes `S`, `E`, `I`, `N`, `O`, `Q`, `C` if the results go to sympy.
             pub fn symbolic(prefix: &str) -> Self
             where
                 T: ::algebra_core::Symbolic,

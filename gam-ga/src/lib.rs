@@ -22,8 +22,10 @@
 //!   off by default because it builds GMP/MPFR from source), `algebras` (the predefined modules
 #![cfg_attr(feature = "algebras", doc = "  [`algebras::g3`], [`algebras::pga3`], ...),")]
 #![cfg_attr(not(feature = "algebras"), doc = "  `algebras::g3`, `algebras::pga3`, ...),")]
-#![cfg_attr(feature = "motion", doc = "  `motion` (the [`motion`] crate), `nalgebra`.")]
-#![cfg_attr(not(feature = "motion"), doc = "  `motion` (the `motion` crate), `nalgebra`.")]
+#![cfg_attr(feature = "motion", doc = "  `motion` (the [`motion`] crate), `nalgebra`, `glam`.")]
+#![cfg_attr(not(feature = "motion"), doc = "  `motion` (the `motion` crate), `nalgebra`, `glam`.")]
+//! - proofs (feature `mpfr`): `gam_ga::ideal` (Gröbner bases, `ideal::decide` under
+//!   hypotheses) with the generated types over `Poly` (`X::<Poly>::symbolic("m")`).
 //!
 //! The package is called `gam-ga`, not `gam`: `gam` is the command-line tool's package
 //! (`cargo run -p gam -- ...` is the documented way to run it) and stays so.
@@ -49,6 +51,7 @@
 //! assert_eq!(moved.to_string(), "-e02 + e12");
 //! ```
 
+pub use algebra_core::Symbolic;
 pub use algebra_core::ops::{
     ActionMatrix, AnticommutatorProduct, CommutatorProduct, GeometricProduct, GeometricProductInto, LeftContraction,
     OuterProduct, RegressiveProduct, RightContraction, ScalarProduct, UnitAction,
@@ -60,6 +63,32 @@ pub use algebra_core::{
 #[cfg(feature = "mpfr")]
 pub use algebra_core::{MpFloat, MpRational, Poly, PrecisionGuard, default_precision, set_default_precision};
 
+/// Proofs: polynomial ideals over the rationals (Gröbner bases, ideal membership) and
+/// [`ideal::decide`], which decides a polynomial claim under hypotheses (equations and
+/// non-vanishing conditions). Feature `mpfr` (the polynomials are [`Poly`], over GMP).
+/// Build the claim with the generated types over `Poly` (`X::<Poly>::symbolic("m")`, the
+/// front door's [`Symbolic`]): e.g. a unit rotor preserves the length of a vector.
+///
+/// ```
+/// gam_ga::algebra! {
+///     pub mod g3 {
+///         generators { e1, e2, e3 }
+///         metric { (e1, e1) = 1, (e2, e2) = 1, (e3, e3) = 1 }
+///         types { Vector = grade 1; Rotor = even; }
+///     }
+/// }
+/// use gam_ga::ideal::{Budget, Hypotheses, decide};
+/// use gam_ga::{Poly, Ring};
+/// let (r, x) = (g3::Rotor::<Poly>::symbolic("r"), g3::Vector::<Poly>::symbolic("x"));
+/// let claim = r.apply(&x).norm_squared() - x.norm_squared(); // |R x rev(R)|² - |x|²
+/// let unit = Hypotheses { equations: vec![r.norm_squared() - Poly::one()], nonzero: vec![] };
+/// assert!(decide(&[claim.clone()], &unit, &Budget::default())?.holds);
+/// assert!(!decide(&[claim], &Hypotheses::default(), &Budget::default())?.holds); // needs |R| = 1
+/// # Ok::<(), gam_ga::ideal::IdealError>(())
+/// ```
+#[cfg(feature = "mpfr")]
+pub use algebra_core::ideal;
+
 /// The predefined generated algebras (feature `algebras`).
 #[cfg(feature = "algebras")]
 pub use gam_algebras as algebras;
@@ -67,6 +96,12 @@ pub use gam_algebras as algebras;
 /// Rigid-body motions (feature `motion`).
 #[cfg(feature = "motion")]
 pub use motion;
+
+/// The README's Rust examples, compiled and run as doc tests with the features they use:
+/// `cargo test -p gam-ga --doc --features nalgebra,mpfr`.
+#[cfg(all(doctest, feature = "nalgebra", feature = "mpfr"))]
+#[doc = include_str!("../../README.md")]
+pub struct ReadmeExamples;
 
 /// The engine that generated code refers to (`$crate::__engine::...`); not a stable API.
 #[doc(hidden)]

@@ -264,14 +264,116 @@ pub fn key_sensitivity<const N: usize>(
             times.len()
         )));
     }
+    lifted_evaluation(poses, times, velocities, kind, shapes, t, p, Some)
+}
+
+/// The derivatives of the body point, its velocity and the space twist at one `t` along every
+/// key-pose and key-time direction ([`key_jacobian`]): row `k` of each field is the derivative
+/// along parameter `k` (`6i..6i+6`: the twist directions of key pose `i`; `6m + i`: key time
+/// `i`; the module docs give the directions).
+#[derive(Clone, Debug, PartialEq)]
+pub struct KeyJacobian {
+    /// `F_{S(t)}(p)`.
+    pub position: [f64; 3],
+    /// Its velocity `d/dt`.
+    pub velocity: [f64; 3],
+    /// The space twist `(Ω, u)` at `t`.
+    pub space_twist: Twist<f64>,
+    /// `d position / d parameter_k` for `k` in `0..7m`.
+    pub d_position: Vec<[f64; 3]>,
+    /// `d velocity / d parameter_k`.
+    pub d_velocity: Vec<[f64; 3]>,
+    /// `d (Ω, u) / d parameter_k` as `[Ωx, Ωy, Ωz, ux, uy, uz]`.
+    pub d_space_twist: Vec<[f64; 6]>,
+}
+
+/// [`key_sensitivity`] without the const parameter: the same derivatives for any number of
+/// key poses, one evaluation per parameter (`7m` evaluations over single-direction dual
+/// numbers instead of one over `JetN<7m>`; the values are identical).
+///
+/// ```
+/// use motion::jacobian::key_jacobian;
+/// use motion::trajectory::Velocities;
+/// use motion::{HermiteShapes, Pose, SegmentKind};
+/// let poses = [Pose::<f64>::identity(), Pose::translation(&[1.0, 0.0, 0.0])];
+/// let j = key_jacobian(&poses, &[0.0, 1.0], &Velocities::Zero, SegmentKind::Additive,
+///     &HermiteShapes::unit(), 1.0, &[0.0; 3])?;
+/// assert_eq!(j.d_position.len(), 14); // 6 twist + 1 time parameter per key pose
+/// assert!((j.d_position[6 + 3][0] - 1.0).abs() < 1e-14); // moving the second pose along x
+/// # Ok::<(), motion::trajectory::TrajectoryError>(())
+/// ```
+pub fn key_jacobian(
+    poses: &[Pose<f64>],
+    times: &[f64],
+    velocities: &Velocities<f64>,
+    kind: SegmentKind,
+    shapes: &HermiteShapes<f64>,
+    t: f64,
+    p: &[f64; 3],
+) -> Result<KeyJacobian, TrajectoryError> {
+    let m = poses.len();
+    if times.len() != m {
+        return Err(TrajectoryError::Input(format!("key_jacobian: {m} poses and {} times", times.len())));
+    }
+    let re = |x: &[JetN<1>; 3]| x.map(|c| c.re);
+    let d = |x: &[JetN<1>; 3]| x.map(|c| c.eps[0]);
+    let twist_d = |w: &Twist<JetN<1>>| {
+        let (a, l) = (&w.angular, &w.linear);
+        [a.x.eps[0], a.y.eps[0], a.z.eps[0], l.x.eps[0], l.y.eps[0], l.z.eps[0]]
+    };
+    let mut out: Option<KeyJacobian> = None;
+    for k in 0..7 * m {
+        let s = lifted_evaluation::<1>(poses, times, velocities, kind, shapes, t, p, |j| (j == k).then_some(0))?;
+        let j = out.get_or_insert_with(|| KeyJacobian {
+            position: re(&s.position),
+            velocity: re(&s.velocity),
+            space_twist: Twist {
+                angular: s.space_twist.angular.map(|c| c.re),
+                linear: s.space_twist.linear.map(|c| c.re),
+            },
+            d_position: Vec::with_capacity(7 * m),
+            d_velocity: Vec::with_capacity(7 * m),
+            d_space_twist: Vec::with_capacity(7 * m),
+        });
+        j.d_position.push(d(&s.position));
+        j.d_velocity.push(d(&s.velocity));
+        j.d_space_twist.push(twist_d(&s.space_twist));
+    }
+    out.ok_or_else(|| TrajectoryError::Input("key_jacobian needs at least one key pose".into()))
+}
+
+/// The evaluation of [`key_sensitivity`] over `JetN<N>`, parameter `k` (module docs) carried by
+/// the jet direction `slot(k)` (`None`: held fixed).
+#[allow(clippy::too_many_arguments)]
+fn lifted_evaluation<const N: usize>(
+    poses: &[Pose<f64>],
+    times: &[f64],
+    velocities: &Velocities<f64>,
+    kind: SegmentKind,
+    shapes: &HermiteShapes<f64>,
+    t: f64,
+    p: &[f64; 3],
+    slot: impl Fn(usize) -> Option<usize>,
+) -> Result<KeySensitivity<N>, TrajectoryError> {
+    let m = poses.len();
     let c = |x: &f64| JetN::<N>::constant(*x);
     let mut lifted = Vec::with_capacity(m);
     for (i, s) in poses.iter().enumerate() {
-        let d = |k: usize| JetN::<N> { re: 0.0, eps: std::array::from_fn(|j| if j == 6 * i + k { 0.5 } else { 0.0 }) };
+        let d = |k: usize| JetN::<N> {
+            re: 0.0,
+            eps: std::array::from_fn(|j| if slot(6 * i + k) == Some(j) { 0.5 } else { 0.0 }),
+        };
         let g = Twist { angular: Vec3::new(d(0), d(1), d(2)), linear: Vec3::new(d(3), d(4), d(5)) }.to_bivector();
         lifted.push(s.map_scalar(&c) * Pose::exp(&Pose::from(&g))?);
     }
-    let times: Vec<JetN<N>> = times.iter().enumerate().map(|(i, x)| JetN::variable(*x, 6 * m + i)).collect();
+    let times: Vec<JetN<N>> = times
+        .iter()
+        .enumerate()
+        .map(|(i, x)| match slot(6 * m + i) {
+            Some(j) => JetN::variable(*x, j),
+            None => JetN::constant(*x),
+        })
+        .collect();
     let velocities = match velocities {
         Velocities::Given(v) => {
             Velocities::Given(v.iter().map(|w| Twist { angular: w.angular.map(c), linear: w.linear.map(c) }).collect())

@@ -249,3 +249,30 @@ fn jacobian_of_a_tool_point_matches_central_differences() {
         assert!(s.position.iter().any(|x| x.eps[31].abs() > 1e-3 && x.eps[32].abs() > 1e-3));
     }
 }
+
+/// `key_jacobian` (no const parameter, one single-direction pass per parameter) gives exactly
+/// the derivatives of `key_sensitivity::<35>`, which the test above checks against central
+/// differences: a dual-number derivative is computed slot by slot, so the two agree bit for bit.
+#[test]
+fn key_jacobian_needs_no_const_parameter_and_equals_key_sensitivity() {
+    use motion::jacobian::{key_jacobian, key_sensitivity};
+    let poses: Vec<Pose<f64>> = key_isometries().iter().map(Pose::from_na_isometry).collect();
+    for kind in [SegmentKind::Additive, SegmentKind::Multiplicative] {
+        let shapes = HermiteShapes::unit();
+        let s = key_sensitivity::<35>(&poses, &TIMES, &Velocities::CatmullRom, kind, &shapes, 1.7, &TOOL).unwrap();
+        let j = key_jacobian(&poses, &TIMES, &Velocities::CatmullRom, kind, &shapes, 1.7, &TOOL).unwrap();
+        assert_eq!(j.position, s.position.map(|x| x.re));
+        assert_eq!(j.velocity, s.velocity.map(|x| x.re));
+        assert_eq!(j.d_position.len(), 35);
+        for k in 0..35 {
+            assert_eq!(j.d_position[k], s.position.map(|x| x.eps[k]), "{kind} position {k}");
+            assert_eq!(j.d_velocity[k], s.velocity.map(|x| x.eps[k]), "{kind} velocity {k}");
+            let w = &s.space_twist;
+            let want = [w.angular.x, w.angular.y, w.angular.z, w.linear.x, w.linear.y, w.linear.z].map(|x| x.eps[k]);
+            assert_eq!(j.d_space_twist[k], want, "{kind} twist {k}");
+        }
+    }
+    let err =
+        key_jacobian(&poses, &TIMES[..2], &Velocities::Zero, SegmentKind::Additive, &HermiteShapes::unit(), 0.5, &TOOL);
+    assert!(matches!(err, Err(motion::trajectory::TrajectoryError::Input(_))));
+}

@@ -113,7 +113,8 @@ pub mod g3_vendored {
             }
         }
         /// A general element with symbolic coefficients named `prefix` + the basis label
-        /// (`S`, `S12`, ..., as the CLI prints them), for scalars with symbols (`Poly`).
+        /// (`m`, `m12`, ... for the prefix `m`), for scalars with symbols (`Poly`). Avoid
+        /// the prefixes `S`, `E`, `I`, `N`, `O`, `Q`, `C` if the results go to sympy.
         pub fn symbolic(prefix: &str) -> Self
         where
             T: ::algebra_core::Symbolic,
@@ -703,7 +704,8 @@ pub mod g3_vendored {
             }
         }
         /// A general element with symbolic coefficients named `prefix` + the basis label
-        /// (`S`, `S12`, ..., as the CLI prints them), for scalars with symbols (`Poly`).
+        /// (`m`, `m12`, ... for the prefix `m`), for scalars with symbols (`Poly`). Avoid
+        /// the prefixes `S`, `E`, `I`, `N`, `O`, `Q`, `C` if the results go to sympy.
         pub fn symbolic(prefix: &str) -> Self
         where
             T: ::algebra_core::Symbolic,
@@ -1348,7 +1350,8 @@ pub mod g3_vendored {
             }
         }
         /// A general element with symbolic coefficients named `prefix` + the basis label
-        /// (`S`, `S12`, ..., as the CLI prints them), for scalars with symbols (`Poly`).
+        /// (`m`, `m12`, ... for the prefix `m`), for scalars with symbols (`Poly`). Avoid
+        /// the prefixes `S`, `E`, `I`, `N`, `O`, `Q`, `C` if the results go to sympy.
         pub fn symbolic(prefix: &str) -> Self
         where
             T: ::algebra_core::Symbolic,
@@ -2038,7 +2041,8 @@ pub mod g3_vendored {
             }
         }
         /// A general element with symbolic coefficients named `prefix` + the basis label
-        /// (`S`, `S12`, ..., as the CLI prints them), for scalars with symbols (`Poly`).
+        /// (`m`, `m12`, ... for the prefix `m`), for scalars with symbols (`Poly`). Avoid
+        /// the prefixes `S`, `E`, `I`, `N`, `O`, `Q`, `C` if the results go to sympy.
         pub fn symbolic(prefix: &str) -> Self
         where
             T: ::algebra_core::Symbolic,
