@@ -50,7 +50,8 @@ pub struct Budget {
     pub time: Option<Duration>,
     /// Largest number of polynomials the basis may hold while it is computed.
     pub max_basis: usize,
-    /// Largest number of terms of any intermediate polynomial.
+    /// Largest number of terms of any intermediate polynomial; the basis together may hold 20
+    /// times as many (the memory of the computation).
     pub max_terms: usize,
 }
 
