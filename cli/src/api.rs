@@ -122,14 +122,18 @@ pub fn pose(pose: &Value) -> Result<Value, CliError> {
     finite("pose", crate::pose::pose_json("POSE_JSON", &pose_object(pose, "POSE_JSON")?)?)
 }
 
+// The values are read through their JSON text, by the readers the command uses on a file, so
+// every message (with its line and column) is the command's.
+
 /// A pose object of the contract read from a value (`label` names it in messages).
 fn pose_object(pose: &Value, label: &str) -> Result<motion::schema::PoseObject, CliError> {
-    motion::schema::PoseObject::from_value(pose).map_err(|e| interpolate::usage(label, e.at("pose")))
+    motion::schema::PoseObject::from_json(&pose.to_string(), "pose").map_err(|e| interpolate::usage(label, e))
 }
 
 /// An interpolate spec read from a value (`label` names it in messages).
 fn interpolate_spec(spec: &Value, label: &str) -> Result<motion::schema::InterpolateSpec, CliError> {
-    motion::schema::InterpolateSpec::from_value(spec).map_err(|e| crate::interpolate::schema_error(label, e))
+    interpolate::read_text(label, &spec.to_string())?
+        .ok_or_else(|| interpolate::usage(label, "invalid spec: missing field `method`"))
 }
 
 /// `gam hermite --json SPEC.json` of the spec `spec`, named `label` in messages.
@@ -144,7 +148,8 @@ fn interpolate_spec(spec: &Value, label: &str) -> Result<motion::schema::Interpo
 /// # Ok::<(), gam::api::CliError>(())
 /// ```
 pub fn hermite(spec: &Value, label: &str) -> Result<Value, CliError> {
-    let spec = motion::spec::HermiteSpec::from_value(spec).map_err(|e| crate::hermite::spec_error(label, e))?;
+    let spec =
+        motion::spec::HermiteSpec::from_json(&spec.to_string()).map_err(|e| crate::hermite::spec_error(label, e))?;
     finite("hermite", crate::hermite::hermite_json(label, &spec)?)
 }
 

@@ -42,12 +42,18 @@ pub(crate) fn schema_error(label: &str, e: SchemaError) -> CliError {
 /// Reads the file; `Ok(None)` when it is not a `gam interpolate` spec (no top-level `method`).
 pub(crate) fn read(path: &str) -> Result<Option<InterpolateSpec>, CliError> {
     let text = std::fs::read_to_string(path).map_err(|e| CliError::usage(format!("cannot read `{path}`: {e}")))?;
-    let text = strip_comments(&text);
-    let value = motion::schema::parse_json(&text).map_err(|e| usage(path, e))?;
+    read_text(path, &text)
+}
+
+/// [`read`] of the spec's text (named `label` in messages; also the Python door's reader, so
+/// both doors give the same messages).
+pub(crate) fn read_text(label: &str, text: &str) -> Result<Option<InterpolateSpec>, CliError> {
+    let text = strip_comments(text);
+    let value = motion::schema::parse_json(&text).map_err(|e| usage(label, e))?;
     if value.get("method").is_none() {
         return Ok(None);
     }
-    InterpolateSpec::from_json(&text).map(Some).map_err(|e| schema_error(path, e))
+    InterpolateSpec::from_json(&text).map(Some).map_err(|e| schema_error(label, e))
 }
 
 /// Builds a checked spec (`label` names it in messages).
