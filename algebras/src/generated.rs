@@ -3,6 +3,7 @@
 
 use algebra_macros::algebra;
 
+#[cfg(feature = "g3")]
 algebra! {
     /// Euclidean 3-space R^3 (labels 1, 2, 3).
     pub mod g3 {
@@ -47,6 +48,7 @@ algebra! {
     }
 }
 
+#[cfg(feature = "pga3")]
 algebra! {
     /// Projective geometric algebra R^{3,0,1} (labels 0, 1, 2, 3; e0^2 = 0).
     pub mod pga3 {
@@ -95,6 +97,7 @@ algebra! {
     }
 }
 
+#[cfg(feature = "cga-null")]
 algebra! {
     /// The main paper's G_{0123inf} in its product basis (e0 . einf = -1, e0^2 = einf^2 = 0):
     /// basis elements are geometric products of generators.

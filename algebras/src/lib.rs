@@ -71,7 +71,13 @@
 
 pub mod generated;
 
-pub use generated::{cga, cga_null, g3, g123inf, pga3};
+#[cfg(feature = "cga-null")]
+pub use generated::cga_null;
+#[cfg(feature = "g3")]
+pub use generated::g3;
+#[cfg(feature = "pga3")]
+pub use generated::pga3;
+pub use generated::{cga, g123inf};
 
 pub mod closed_form;
 pub mod closed_form_cga;
