@@ -86,8 +86,40 @@ impl<T: Ring> Pose<T> {
     }
 }
 
+impl<T: Ring> Pose<T> {
+    /// `α = S∅² + S12² + S13² + S23²`, the scalar part of `rev(S) S` (eq. 5).
+    pub(crate) fn alpha(&self) -> T {
+        let s = self;
+        s.scalar.mul_ref(&s.scalar) + &s.e12.mul_ref(&s.e12) + &s.e13.mul_ref(&s.e13) + &s.e23.mul_ref(&s.e23)
+    }
+
+    /// `F_S(p)` given `inv = 1/α`, by the fewest operations: with `v = (S23, -S13, S12)` (so
+    /// that `rev(S) x S` rotates like the quaternion `S∅ + v`), `c = (S1∞, S2∞, S3∞)` and
+    /// `m = v × p + c`, eqs. (6)-(9) regroup as `α F_S(p) = α p + 2(S∅ m + v × m + Sω v)`:
+    /// 21 products after `2/α`. The one formula of every point action (the scalar
+    /// [`Pose::transform_point`] and the batches), so they agree bit for bit.
+    pub(crate) fn image_with(&self, p: &[T; 3], inv: &T) -> [T; 3] {
+        let s = self;
+        let k = inv.add_ref(inv);
+        let v = [s.e23.clone(), s.e13.neg_ref(), s.e12.clone()];
+        let vp = cross(&v, p);
+        let m = [vp[0].add_ref(&s.e1inf), vp[1].add_ref(&s.e2inf), vp[2].add_ref(&s.e3inf)];
+        let vm = cross(&v, &m);
+        std::array::from_fn(|i| {
+            let d = s.scalar.mul_ref(&m[i]).add_ref(&vm[i]).add_ref(&s.e123inf.mul_ref(&v[i]));
+            p[i].add_ref(&k.mul_ref(&d))
+        })
+    }
+}
+
 impl<T: Field> Pose<T> {
     /// `F_S(p)` for a point `p` of R^3: `(A p + t)/α`. Fails for singular `S` (zero transform).
+    ///
+    /// Ordinary input takes one test (`α` tame: within `2^±500` for floats, non-zero for exact
+    /// scalars; the result finite) and no other check; everything else (non-finite, singular,
+    /// far from unit scale, overflowing) goes to the careful path, which names the failure.
+    /// A non-finite input cannot give a finite result: every coefficient of `S` and of `p`
+    /// enters a product.
     ///
     /// ```
     /// let s = motion::Pose::rotation(&[0.0, 0.0, 1.0], &std::f64::consts::FRAC_PI_2).unwrap();
@@ -95,14 +127,27 @@ impl<T: Field> Pose<T> {
     /// assert!(p[0].abs() < 1e-15 && (p[1] - 1.0).abs() < 1e-15 && (p[2] - 5.0).abs() < 1e-15);
     /// ```
     pub fn transform_point(&self, p: &[T; 3]) -> Result<[T; 3], MotionError> {
+        let alpha = self.alpha();
+        if tame(&alpha)
+            && let Some(inv) = alpha.try_recip()
+        {
+            let out = self.image_with(p, &inv);
+            if out.iter().all(Ring::is_finite_value) {
+                return Ok(out);
+            }
+        }
+        self.transform_point_careful(p)
+    }
+
+    /// [`Pose::transform_point`] for the inputs the direct path declines.
+    fn transform_point_careful(&self, p: &[T; 3]) -> Result<[T; 3], MotionError> {
         crate::scaled::require_finite("transform_point", self, p)?;
         if let Some((_, s)) = crate::scaled::unusual_scale(self) {
             // F_S does not depend on the scale of S: act with S/2^e (1e300 S, 1e-300 S)
-            return s.transform_point(p);
+            return s.transform_point_careful(p);
         }
-        let [x, y, z, w] = self.apply_homogeneous(&[p[0].clone(), p[1].clone(), p[2].clone(), T::one()]);
-        let inv = w.try_recip().ok_or_else(|| self.singular("transform_point"))?;
-        let out = [x.mul_ref(&inv), y.mul_ref(&inv), z.mul_ref(&inv)];
+        let inv = self.alpha().try_recip().ok_or_else(|| self.singular("transform_point"))?;
+        let out = self.image_with(p, &inv);
         if out.iter().all(Ring::is_finite_value) { Ok(out) } else { Err(self.overflow("transform_point")) }
     }
 
@@ -125,3 +170,28 @@ impl<T: Field> Pose<T> {
         if out.iter().all(Ring::is_finite_value) { Ok(out) } else { Err(self.overflow("transform_direction")) }
     }
 }
+
+/// `x × y`.
+fn cross<T: Ring>(x: &[T; 3], y: &[T; 3]) -> [T; 3] {
+    [
+        x[1].mul_ref(&y[2]).sub_ref(&x[2].mul_ref(&y[1])),
+        x[2].mul_ref(&y[0]).sub_ref(&x[0].mul_ref(&y[2])),
+        x[0].mul_ref(&y[1]).sub_ref(&x[1].mul_ref(&y[0])),
+    ]
+}
+
+/// Whether `α = rev(S) S`'s scalar part can be divided by without care: non-zero for exact
+/// scalars; for fixed-precision scalars within `2^±500`, so that no product of the direct
+/// action over- or underflows for poses and points of ordinary size.
+pub(crate) fn tame<T: Ring>(alpha: &T) -> bool {
+    if T::relative_epsilon() == 0.0 {
+        return !alpha.is_exact_zero();
+    }
+    let m = alpha.magnitude();
+    (TAME_LO..TAME_HI).contains(&m)
+}
+
+/// `2^-500`.
+const TAME_LO: f64 = 3.054936363499605e-151;
+/// `2^500`.
+const TAME_HI: f64 = 3.273390607896142e150;

@@ -48,7 +48,7 @@
 //! ```
 
 use crate::pose::is_positive;
-use crate::series::{exp_kernel, log_kernel};
+use crate::series::{exp_kernel, exp_kernel_fixed, log_factors_fixed, log_kernel};
 use crate::{Even, Pseudoscalar};
 use crate::{MotionError, Pose};
 use algebra_core::scalar::{Elementary, LaneReal};
@@ -90,6 +90,14 @@ impl<T: Real> Pose<T> {
     /// ```
     pub fn exp(generator: &Even<T>) -> Result<Self, MotionError> {
         let g = generator;
+        // Ordinary input at f64 precision or less: fixed polynomials, and no e^σ for σ = 0;
+        // one test of the result (σ = -∞ is the one non-finite input with a finite image).
+        if crate::series::at_most_f64::<T>() && Real::is_finite(&g.scalar) {
+            let out = exp_with_kernel(g, exp_kernel_fixed);
+            if out.is_finite() {
+                return Ok(out);
+            }
+        }
         if ![&g.scalar, &g.e12, &g.e13, &g.e23, &g.e1inf, &g.e2inf, &g.e3inf, &g.e123inf]
             .into_iter()
             .all(Real::is_finite)
@@ -116,6 +124,9 @@ impl<T: Real> Pose<T> {
     /// assert!(Pose::<f64>::identity().scale(&0.0).log().is_err());
     /// ```
     pub fn log(&self) -> Result<Even<T>, MotionError> {
+        if let Some(l) = self.log_direct() {
+            return Ok(l);
+        }
         self.check_finite("log")?;
         // log(m S') = ln m + log S' for m > 0: the squares of S' = S/m stay in range.
         let (scale, s) = crate::scaled::rotational_scale(self).ok_or_else(|| self.singular("log"))?;
@@ -141,6 +152,30 @@ impl<T: Real> Pose<T> {
         Ok(l)
     }
 
+    /// [`Pose::log`] for ordinary input at `f64` precision or less: `rev(S) S = α + βω` with `α`
+    /// tame (no rescaling needed), the fixed-length factors of `log_factors_fixed`, and one
+    /// test of the result; `None` sends everything else (non-finite, singular, far from unit
+    /// scale, higher precision) to the careful path. A non-finite coefficient makes `α` or
+    /// the result non-finite.
+    fn log_direct(&self) -> Option<Even<T>> {
+        if !crate::series::at_most_f64::<T>() {
+            return None;
+        }
+        let n2 = self.pseudo_norm_squared();
+        let alpha = &n2.scalar;
+        if !crate::action::tame(alpha) || !is_positive(alpha) {
+            return None;
+        }
+        // one division: 1/√α, and β/(2α) = ½ β (1/√α)²
+        let inv_root = T::one().div_ref(&Real::sqrt(alpha));
+        let m = n2.e123inf.mul_ref(&inv_root).mul_ref(&inv_root).mul_ref(&T::from_ratio(1, 2));
+        let unit = &Pseudoscalar::new(inv_root.clone(), m.mul_ref(&inv_root).neg_ref()) * self;
+        let mut l = unit_log_with(&unit, log_factors_fixed);
+        l.scalar = Real::ln(alpha).mul_ref(&T::from_ratio(1, 2));
+        l.e123inf = m;
+        l.is_finite().then_some(l)
+    }
+
     /// The logarithm of whichever of `±S` has non-negative scalar part (the same transform,
     /// Theorem 2.8): the transform's rotation angle is in `[0, π]`, and `exp(log_shortest S) =
     /// ±S`. At exactly π the sign of `S` as given is kept (module docs).
@@ -163,7 +198,7 @@ pub(crate) fn exp_with_kernel<T: LaneReal>(g: &Even<T>, kernel: impl FnOnce(&T) 
     let (u, w) = (dot(&a, &a), dot(&a, &c));
     let [cc, ss, tt] = kernel(&u);
     let p = &g.e123inf;
-    let es = Elementary::exp(&g.scalar);
+    let es = if g.scalar.is_exact_zero() { T::one() } else { Elementary::exp(&g.scalar) };
     let ess = es.mul_ref(&ss);
     // einf part: e^σ (S c - (wT + pS) a)
     let k = w.mul_ref(&tt).add_ref(&p.mul_ref(&ss)).mul_ref(&es);
@@ -175,20 +210,28 @@ pub(crate) fn exp_with_kernel<T: LaneReal>(g: &Even<T>, kernel: impl FnOnce(&T) 
 
 /// The logarithm (a bivector) of a unitary even element (module docs for the three cases).
 fn unit_log<T: Real>(u: &Even<T>) -> Even<T> {
+    unit_log_with(u, |u0, x| {
+        if *x <= T::from_ratio(1, 4) {
+            let [f, h] = log_kernel(x);
+            (f, h.mul_ref(u0))
+        } else {
+            let s = Real::sqrt(x);
+            let th = Real::atan2(&s, u0);
+            let g = s.sub_ref(&th.mul_ref(u0)).div_ref(&s.mul_ref(x));
+            (th.div_ref(&s), g)
+        }
+    })
+}
+
+/// [`unit_log`] with the factors `(f, g)` of the first case (`u0 ≥ 0`) from `factors(u0, x)`,
+/// `x = |a|²`: the careful series or the fixed-length ones.
+fn unit_log_with<T: Real>(u: &Even<T>, factors: impl FnOnce(&T, &T) -> (T, T)) -> Even<T> {
     let (a, c) = split(u);
     let (u0, q) = (&u.scalar, &u.e123inf);
     let x = dot(&a, &a);
     let zero = T::zero();
     if *u0 >= zero {
-        let (f, g) = if x <= T::from_ratio(1, 4) {
-            let [f, h] = log_kernel(&x);
-            (f, h.mul_ref(u0))
-        } else {
-            let s = Real::sqrt(&x);
-            let th = Real::atan2(&s, u0);
-            let g = s.sub_ref(&th.mul_ref(u0)).div_ref(&s.mul_ref(&x));
-            (th.div_ref(&s), g)
-        };
+        let (f, g) = factors(u0, &x);
         let gq = g.mul_ref(q);
         let c_out = std::array::from_fn(|i| c[i].mul_ref(&f).add_ref(&a[i].mul_ref(&gq)));
         return assemble(zero, a.map(|x| x.mul_ref(&f)), c_out, T::zero());

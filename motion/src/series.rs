@@ -29,6 +29,107 @@ pub(crate) fn exp_kernel<T: Real>(u: &T) -> [T; 3] {
     exp_series(u, |_, terms| terms.iter().all(negligible))
 }
 
+/// Whether `T` carries at most `f64`'s precision (f64, f32, dual numbers and jets over
+/// them): then the fixed-length polynomials below are exact to its last bit, and the pose
+/// layer's direct paths use them.
+pub(crate) fn at_most_f64<T: Ring>() -> bool {
+    T::relative_epsilon() >= f64::EPSILON
+}
+
+/// Terms of the fixed exp polynomials: at `u ≤ 1` the first omitted term is below
+/// `1/22! < 2^-69` of the leading one.
+const EXP_TERMS: usize = 10;
+
+/// `[(-1)^k/(2k)!, (-1)^k/(2k+1)!, (-1)^k 2(k+1)/(2k+3)!]` for `k < EXP_TERMS`: the series
+/// of `[C, S, T]` of [`exp_kernel`], as `f64` (the factorials up to 18! are exact in `f64`).
+const EXP_COEFFS: [[f64; EXP_TERMS]; 3] = {
+    let mut c = [[0.0; EXP_TERMS]; 3];
+    let mut k = 0;
+    while k < EXP_TERMS {
+        let n = 2 * k as u64;
+        let sign = if k % 2 == 0 { 1.0 } else { -1.0 };
+        c[0][k] = sign / factorial(n);
+        c[1][k] = sign / factorial(n + 1);
+        c[2][k] = sign * (2 * (k as u64 + 1)) as f64 / factorial(n + 3);
+        k += 1;
+    }
+    c
+};
+
+const fn factorial(n: u64) -> f64 {
+    let mut f = 1.0;
+    let mut i = 2;
+    while i <= n {
+        f *= i as f64;
+        i += 1;
+    }
+    f
+}
+
+/// `Σ c_k x^k` by Horner's rule in `x²` over the pairs `c_2i + c_2i+1 x`: half the dependent
+/// chain of plain Horner.
+#[inline]
+fn poly<T: Real>(c: &[f64], x: &T) -> T {
+    let x2 = x.mul_ref(x);
+    let pair = |i: usize| match c.get(i + 1) {
+        Some(&next) => T::from_f64(c[i]).add_ref(&x.mul_ref(&T::from_f64(next))),
+        None => T::from_f64(c[i]),
+    };
+    (0..c.len()).step_by(2).rev().fold(T::zero(), |acc, i| acc.mul_ref(&x2).add_ref(&pair(i)))
+}
+
+/// [`exp_kernel`] for types of at most `f64` precision ([`at_most_f64`]): the closed form above
+/// `u = 1`, below it fixed polynomials of [`EXP_TERMS`] terms (no term-by-term test).
+#[inline]
+pub(crate) fn exp_kernel_fixed<T: Real>(u: &T) -> [T; 3] {
+    if *u > T::one() {
+        return exp_kernel(u);
+    }
+    [poly(&EXP_COEFFS[0], u), poly(&EXP_COEFFS[1], u), poly(&EXP_COEFFS[2], u)]
+}
+
+/// `(s - θ cos θ)/θ³ = Σ_{k≥1} (-1)^(k+1) 2k/(2k+1)! θ^(2k-2)`, 7 terms: at `θ ≤ π/6` the first
+/// omitted term is below `2^-56` of the leading `1/3`.
+const SIN_MINUS_THETA_COS: [f64; 7] = {
+    let mut c = [0.0; 7];
+    let mut k = 1;
+    while k <= 7 {
+        let sign = if k % 2 == 1 { 1.0 } else { -1.0 };
+        c[k - 1] = sign * (2 * k) as f64 / factorial(2 * k as u64 + 1);
+        k += 1;
+    }
+    c
+};
+
+/// The factors `(f, g)` of the logarithm of a unitary element with `u0 = cos θ ≥ 0` and
+/// `x = sin² θ` (exp_log.rs, first case): `f = θ/sin θ`, `g = (sin θ - θ cos θ)/sin³ θ`, for
+/// types of at most `f64` precision. `θ` from [`Real::fast_atan2`]; below `x = 2^-20` three
+/// terms of the series of [`log_kernel`]; up to `x = 1/4` (`θ = π/6`) the numerator of `g`
+/// from its own series in `θ` (no cancellation), above it directly (as [`log_kernel`]'s
+/// caller does).
+#[inline]
+pub(crate) fn log_factors_fixed<T: Real>(u0: &T, x: &T) -> (T, T) {
+    if x.to_f64() <= SMALL_X {
+        // f = 1 + x/6 + 3x²/40 + 5x³/112, h = 1/3 + 3x/10 + 15x²/56, g = h u0
+        let f = poly(&[1.0, 1.0 / 6.0, 3.0 / 40.0, 5.0 / 112.0], x);
+        let h = poly(&[1.0 / 3.0, 3.0 / 10.0, 15.0 / 56.0], x);
+        return (f, h.mul_ref(u0));
+    }
+    let s = Real::sqrt(x);
+    let th = s.fast_atan2(u0);
+    let r = T::one().div_ref(&s);
+    let num = if x.to_f64() <= 0.25 {
+        let t2 = th.mul_ref(&th);
+        poly(&SIN_MINUS_THETA_COS, &t2).mul_ref(&t2).mul_ref(&th)
+    } else {
+        s.sub_ref(&th.mul_ref(u0))
+    };
+    (th.mul_ref(&r), num.mul_ref(&r.mul_ref(&r).mul_ref(&r)))
+}
+
+/// `2^-20`: below it the log factors' series of [`log_factors_fixed`] is exact to `f64`.
+const SMALL_X: f64 = 9.5367431640625e-7;
+
 /// The power series of the exp kernel `[C, S, T]` at `u`, summed until `done(k, terms)` holds
 /// after the `k`-th terms (or `MAX_TERMS`): the `Real` kernel stops at negligible terms, the
 /// branch-free one ([`crate::branch_free`]) after a number of terms fixed by the type.

@@ -77,6 +77,7 @@ macro_rules! impl_float {
             fn atan2(&self, x: &Self) -> Self {
                 <$t>::atan2(*self, *x)
             }
+            #[inline]
             fn fast_atan2(&self, x: &Self) -> Self {
                 super::atan2_f64(f64::from(*self), f64::from(*x)) as $t
             }

@@ -167,15 +167,12 @@ impl<T: Field + Send + Sync> Points<T> {
     fn transform_with<L: Lanes<Elem = T>>(&self, pose: &Pose<T>, parallel: bool) -> Result<Points<T>, BatchError> {
         let pose_error = |source| BatchError::Pose { index: 0, source };
         crate::scaled::require_finite("transform_point", pose, []).map_err(pose_error)?;
-        let (rows, alpha) = pose.action_rows();
-        // transform_point divides by w = α·1 and adds t·1: multiplying by one is exact, so
-        // leaving it out changes no bit.
-        let inv = alpha.try_recip().ok_or_else(|| pose_error(pose.singular("transform_point")))?;
-        let rows: [[L; 4]; 3] = rows.map(|r| r.map(|x| L::splat(&x)));
+        // Pose::transform_point's formula with the pose's values in every lane: bit for bit the
+        // scalar loop (the pose's own products are hoisted out of the loop by the compiler)
+        let inv = pose.alpha().try_recip().ok_or_else(|| pose_error(pose.singular("transform_point")))?;
+        let lanes = Pose::<L>::from_array(std::array::from_fn(|k| L::splat(pose.components()[k])));
         let inv = L::splat(&inv);
-        let f = move |[x, y, z]: [L; 3]| {
-            Ok(rows.each_ref().map(|r| (r[0].mul_ref(&x) + r[1].mul_ref(&y) + r[2].mul_ref(&z) + &r[3]).mul_ref(&inv)))
-        };
+        let f = move |p: [L; 3]| Ok(lanes.image_with(&p, &inv));
         let zero: [T; 3] = std::array::from_fn(|_| T::zero());
         let mut out = Points { cols: Columns::filled(self.len(), &zero) };
         run(parallel, self.cols.views(), &zero, out.cols.views_mut(), &f, |_| unreachable!("one pose, checked above"))?;

@@ -266,10 +266,9 @@ impl<T: Field + Send + Sync> Poses<T> {
         let pad: [T; 11] = std::array::from_fn(|c| if c == 0 { T::one() } else { T::zero() });
         let mut out = super::Points { cols: Columns::filled(self.len(), &std::array::from_fn(|_| T::zero())) };
         let f = |c: [L; 11]| {
-            let [x, y, z, w] =
-                pose_of(&c[..8]).apply_homogeneous(&[c[8].clone(), c[9].clone(), c[10].clone(), L::one()]);
-            let inv = w.recip_lanes()?;
-            Ok([x.mul_ref(&inv), y.mul_ref(&inv), z.mul_ref(&inv)])
+            let pose = pose_of(&c[..8]);
+            let inv = pose.alpha().recip_lanes()?;
+            Ok(pose.image_with(&[c[8].clone(), c[9].clone(), c[10].clone()], &inv))
         };
         let describe = |i: usize| {
             let pose = self.get(i).expect("a failing row exists");

@@ -1,0 +1,148 @@
+//! The pose layer's direct paths (issue 31): at `f64` the ordinary inputs of `Pose::exp`,
+//! `log`, `transform_point`, `power` and `slerp` take fixed-length polynomials and one test on
+//! the result instead of the careful path's checks, rescaling and term-by-term series. Each
+//! is checked here against an independent reference over inputs that cross every threshold
+//! of the direct paths (half-angles near 0, near `2^-10`, at `π/6`, at 1, near and past `π/2`;
+//! non-unit poses; large translations): the same operation in 256-bit MPFR (which takes the
+//! careful path), the generated `cga_null` sandwich, and exact rationals.
+
+mod common;
+
+use algebra_core::rational::{Q, ratio};
+use algebra_core::test_support::Xorshift;
+use algebra_core::{MpFloat, PrecisionGuard, Real, Ring};
+
+use common::{cga_null_action, diff, size};
+use motion::{Even, Pose, Pseudoscalar};
+
+/// The condition of the logarithm of `s`: it grows like `1/sin θ` near a rotation by 2π
+/// (half-angle θ near π).
+fn log_condition(s: &Pose<f64>) -> f64 {
+    let l = s.log().unwrap();
+    1.0 / l.e12.hypot(l.e13).hypot(l.e23).sin().abs().max(0.05)
+}
+
+fn to_mp(x: &Even<f64>) -> Even<MpFloat> {
+    x.map_scalar(&|c: &f64| MpFloat::from_f64(*c))
+}
+
+fn to_f64(x: &Even<MpFloat>) -> Even<f64> {
+    x.map_scalar(&|c: &MpFloat| c.to_f64())
+}
+
+/// Generators `σ + θ n e123 + c einf + pω` at the half-angles that bracket the thresholds.
+fn generators() -> Vec<Even<f64>> {
+    let mut rng = Xorshift(0x9E37_79B9_7F4A_7C15);
+    let halves = [
+        0.0,
+        1e-12,
+        2f64.powi(-11),
+        2f64.powi(-10),
+        2f64.powi(-9),
+        0.3,
+        std::f64::consts::FRAC_PI_6 - 1e-9,
+        std::f64::consts::FRAC_PI_6,
+        std::f64::consts::FRAC_PI_6 + 1e-9,
+        0.9,
+        1.0,
+        1.1,
+        std::f64::consts::FRAC_PI_2 - 1e-7,
+        std::f64::consts::FRAC_PI_2 + 1e-7,
+        2.5,
+        3.1,
+    ];
+    let mut out = Vec::new();
+    for half in halves {
+        for k in 0..6 {
+            let mut d = || rng.symmetric();
+            let n = [d(), d(), d() + 0.1];
+            let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+            let a = n.map(|x| half * x / len);
+            let big = if k == 5 { 1e4 } else { 2.0 };
+            let c = [big * d(), big * d(), big * d()];
+            let (sigma, p) = if k % 2 == 1 { (0.5 * d(), d()) } else { (0.0, 0.0) };
+            out.push(Even::new(sigma, a[2], -a[1], a[0], c[0], c[1], c[2], p));
+        }
+    }
+    out
+}
+
+#[test]
+fn exp_equals_the_256_bit_careful_path() {
+    let _g = PrecisionGuard::new(256);
+    for g in generators() {
+        let fast = Pose::exp(&g).unwrap();
+        let reference = to_f64(&Pose::exp(&to_mp(&g)).unwrap());
+        // a few ulp of the result (sin and cos of half-angles up to 3.1 at the largest)
+        assert!(diff(&fast, &reference) <= 2e-15 * size(&reference).max(1.0), "exp({g}): {fast} vs {reference}");
+    }
+}
+
+#[test]
+fn log_equals_the_256_bit_careful_path() {
+    let _g = PrecisionGuard::new(256);
+    for g in generators() {
+        // the pose rounded to f64 is the input of both sides
+        let s = Pose::exp(&g).unwrap();
+        let fast = s.log().unwrap();
+        let reference = to_f64(&to_mp(&s).log().unwrap());
+        let tol = 8e-16 * log_condition(&s) * size(&reference).max(1.0);
+        assert!(diff(&fast, &reference) <= tol, "log({s}): {fast} vs {reference}");
+    }
+}
+
+#[test]
+fn power_and_slerp_equal_the_256_bit_careful_path() {
+    let _g = PrecisionGuard::new(256);
+    let gs = generators();
+    for (i, g) in gs.iter().enumerate() {
+        let a = Pose::exp(g).unwrap();
+        let b = Pose::exp(&gs[(i * 7 + 3) % gs.len()]).unwrap();
+        for t in [0.0, 0.25, 0.5, 1.0, 1.7] {
+            let tm = MpFloat::from_f64(t);
+            let p = a.power(&t).unwrap();
+            let reference = to_f64(&to_mp(&a).power(&tm).unwrap());
+            // relative to the input: the power of a pose with translation 10^4 has its rounding
+            let input = size(&a).max(1.0) * log_condition(&a);
+            assert!(diff(&p, &reference) <= 1e-14 * input, "power({a}, {t}): {p} vs {reference}");
+            let s = Pose::slerp(&a, &b, &t).unwrap();
+            let reference = to_f64(&Pose::slerp(&to_mp(&a), &to_mp(&b), &tm).unwrap());
+            let rel = a.reverse() * b;
+            let input = size(&a).max(1.0) * size(&b).max(1.0) * log_condition(&rel);
+            assert!(diff(&s, &reference) <= 1e-14 * input, "slerp({a}, {b}, {t}): {s} vs {reference}");
+        }
+    }
+}
+
+#[test]
+fn transform_point_equals_the_generated_cga_sandwich() {
+    let mut rng = Xorshift(0x2545_F491_4F6C_DD1D);
+    for g in generators() {
+        // non-unit poses too: 0.3 to 3 times a pseudoscalar with a dual part
+        let mut d = || rng.symmetric();
+        let gamma = Pseudoscalar::new(1.65 + 1.35 * d(), d());
+        let s = Pose::exp(&g).unwrap().scale_pseudoscalar(&gamma);
+        let p = [5.0 * d(), 5.0 * d(), 5.0 * d()];
+        let fast = s.transform_point(&p).unwrap();
+        let (reference, _) = cga_null_action(&s, &p);
+        let scale = reference.iter().fold(1.0f64, |m, x| m.max(x.abs()));
+        for k in 0..3 {
+            assert!((fast[k] - reference[k]).abs() <= 4e-15 * scale, "{s} on {p:?}: {fast:?} vs {reference:?}");
+        }
+    }
+}
+
+#[test]
+fn transform_point_is_exact_over_the_rationals() {
+    let mut rng = Xorshift(7);
+    for _ in 0..200 {
+        let mut r = || ratio((rng.next_u64() % 41) as i64 - 20, (rng.next_u64() % 7 + 1) as i64);
+        let s = Pose::<Q>::from_array(std::array::from_fn(|_| r()));
+        let p = [r(), r(), r()];
+        if s.pseudo_norm_squared().scalar.is_exact_zero() {
+            assert!(s.transform_point(&p).is_err(), "{s} is singular");
+            continue;
+        }
+        assert_eq!(s.transform_point(&p).unwrap(), cga_null_action(&s, &p).0, "{s} on {p:?}");
+    }
+}
