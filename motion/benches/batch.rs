@@ -3,8 +3,9 @@
 //!
 //! * `cloud`: 1e6 points transformed by one pose. Peers: the scalar loop a user writes
 //!   (`Pose::transform_point` per point over `Vec<[f64; 3]>`) and the batch kernel over the
-//!   scalar lane type on one core (`Points::transform::<f64>`: the action rows once, 12 mul +
-//!   9 add per point); candidates: the same kernel over both cores and over SIMD lanes.
+//!   scalar lane type on one core (`Points::transform::<f64>`: `1/α` once, then
+//!   `Pose::transform_point`'s formula per point); candidates: the same kernel over both cores
+//!   and over SIMD lanes.
 //! * `sampling`: 10,000 additive cubic Bézier motions at 100 parameters each, with `dS/dt`
 //!   (dual numbers). Peers: `velocity::pose_derivative` per sample (lifts the motion each call)
 //!   and `batch::sample_many::<f64>` (lifts once per motion), one core; candidates: over both

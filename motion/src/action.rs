@@ -9,6 +9,12 @@
 //! `rev(S)(W e0 + x)S` is `αW` (Lemma 2.2(ii)), so `F_S` is the projective map
 //! `(x, W) ↦ (A x + W t, αW)` and the Euclidean map `x ↦ (A x + t)/α`.
 //!
+//! [`Pose::transform_point`] evaluates that map in fewer operations: with `v = (S23, -S13,
+//! S12)` and `c = (S1∞, S2∞, S3∞)`, `A x + t = α x + 2(S∅ m + v × m + Sω v)` for
+//! `m = v × x + c` (the quaternion form of the rotation, eqs. 6-8, and eq. 9 regrouped), so a
+//! point costs two cross products and one division; [`Pose::action_rows`] keeps the matrix
+//! form for matrices and directions.
+//!
 //! Homogeneous points here are `[x, y, z, w]` (w last, as in 4x4 matrices); the paper writes
 //! `(W, X, Y, Z)`.
 //!

@@ -29,7 +29,7 @@
 //! assert!((l - g).components().iter().all(|x| x.abs() < 1e-14f64));
 //! ```
 
-use crate::exp_log::{assemble, dot, exp_with_kernel, split};
+use crate::exp_log::{assemble, dot, exp_scalar, exp_with_kernel, split};
 use crate::scaled::require_finite;
 use crate::series::{exp_series, log_series};
 use crate::{Even, MotionError, Pose, Pseudoscalar};
@@ -140,7 +140,7 @@ impl<T: LaneReal> Pose<T> {
     pub fn exp_branch_free(generator: &Even<T>) -> Result<Self, MotionError> {
         let g = generator;
         require_finite("exp", g, [])?;
-        let out = exp_with_kernel(g, exp_kernel);
+        let out = exp_with_kernel(g, exp_kernel, exp_scalar);
         require_finite("exp", &out, []).map_err(|_| MotionError::NotFinite { op: "exp", value: g.to_string() })?;
         Ok(out)
     }

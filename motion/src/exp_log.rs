@@ -48,7 +48,7 @@
 //! ```
 
 use crate::pose::is_positive;
-use crate::series::{exp_kernel, exp_kernel_fixed, log_factors_fixed, log_kernel};
+use crate::series::{exp_fixed, exp_kernel, exp_kernel_fixed, ln_fixed, log_factors_fixed, log_kernel};
 use crate::{Even, Pseudoscalar};
 use crate::{MotionError, Pose};
 use algebra_core::scalar::{Elementary, LaneReal};
@@ -93,7 +93,7 @@ impl<T: Real> Pose<T> {
         // Ordinary input at f64 precision or less: fixed polynomials, and no e^σ for σ = 0;
         // one test of the result (σ = -∞ is the one non-finite input with a finite image).
         if crate::series::at_most_f64::<T>() && Real::is_finite(&g.scalar) {
-            let out = exp_with_kernel(g, exp_kernel_fixed);
+            let out = exp_with_kernel(g, exp_kernel_fixed, exp_fixed);
             if out.is_finite() {
                 return Ok(out);
             }
@@ -104,7 +104,7 @@ impl<T: Real> Pose<T> {
         {
             return Err(not_finite("exp", g));
         }
-        let out = exp_with_kernel(g, exp_kernel);
+        let out = exp_with_kernel(g, exp_kernel, exp_scalar);
         out.check_finite("exp").map_err(|_| not_finite("exp", g))?;
         Ok(out)
     }
@@ -171,7 +171,7 @@ impl<T: Real> Pose<T> {
         let m = n2.e123inf.mul_ref(&inv_root).mul_ref(&inv_root).mul_ref(&T::from_ratio(1, 2));
         let unit = &Pseudoscalar::new(inv_root.clone(), m.mul_ref(&inv_root).neg_ref()) * self;
         let mut l = unit_log_with(&unit, log_factors_fixed);
-        l.scalar = Real::ln(alpha).mul_ref(&T::from_ratio(1, 2));
+        l.scalar = ln_fixed(alpha).mul_ref(&T::from_ratio(1, 2));
         l.e123inf = m;
         l.is_finite().then_some(l)
     }
@@ -193,12 +193,17 @@ impl<T: Real> Pose<T> {
 
 /// `exp(σ + a e123 + c einf + pω)` (module docs) from the kernel `[C, S, T]` at `u = |a|²`:
 /// shared by [`Pose::exp`] and the branch-free [`Pose::exp_branch_free`].
-pub(crate) fn exp_with_kernel<T: LaneReal>(g: &Even<T>, kernel: impl FnOnce(&T) -> [T; 3]) -> Even<T> {
+/// `e^σ` is `exp_sigma(σ)`: [`exp_scalar`], or the direct path's `series::exp_fixed`.
+pub(crate) fn exp_with_kernel<T: LaneReal>(
+    g: &Even<T>,
+    kernel: impl FnOnce(&T) -> [T; 3],
+    exp_sigma: impl FnOnce(&T) -> T,
+) -> Even<T> {
     let (a, c) = split(g);
     let (u, w) = (dot(&a, &a), dot(&a, &c));
     let [cc, ss, tt] = kernel(&u);
     let p = &g.e123inf;
-    let es = if g.scalar.is_exact_zero() { T::one() } else { Elementary::exp(&g.scalar) };
+    let es = exp_sigma(&g.scalar);
     let ess = es.mul_ref(&ss);
     // einf part: e^σ (S c - (wT + pS) a)
     let k = w.mul_ref(&tt).add_ref(&p.mul_ref(&ss)).mul_ref(&es);
@@ -206,6 +211,11 @@ pub(crate) fn exp_with_kernel<T: LaneReal>(g: &Even<T>, kernel: impl FnOnce(&T) 
     let a_out = a.map(|x| x.mul_ref(&ess));
     let omega = w.mul_ref(&ess).add_ref(&p.mul_ref(&cc).mul_ref(&es));
     assemble(es.mul_ref(&cc), a_out, c_out, omega)
+}
+
+/// `e^σ`, and exactly 1 for `σ = 0` (every lane and part zero).
+pub(crate) fn exp_scalar<T: LaneReal>(sigma: &T) -> T {
+    if sigma.is_exact_zero() { T::one() } else { Elementary::exp(sigma) }
 }
 
 /// The logarithm (a bivector) of a unitary even element (module docs for the three cases).

@@ -127,6 +127,33 @@ pub(crate) fn log_factors_fixed<T: Real>(u0: &T, x: &T) -> (T, T) {
     (th.mul_ref(&r), num.mul_ref(&r.mul_ref(&r).mul_ref(&r)))
 }
 
+/// `e^x` for types of at most `f64` precision: exactly 1 at `x = 0`; for `|x| < 2^-20` (the
+/// scalar part of the log of a unit pose, `ln α / 2` with `α` within rounding of 1) the cubic
+/// Taylor polynomial, whose first omitted term is below `2^-84` (and that of its derivative,
+/// for dual numbers, below `2^-62`); else the type's `exp`.
+#[inline]
+pub(crate) fn exp_fixed<T: Real>(x: &T) -> T {
+    if x.is_exact_zero() {
+        return T::one();
+    }
+    if x.to_f64().abs() < SMALL_X {
+        return poly(&[1.0, 1.0, 0.5, 1.0 / 6.0], x);
+    }
+    Real::exp(x)
+}
+
+/// `ln α` for types of at most `f64` precision: for `|α - 1| < 2^-20` (the norm of a unit
+/// pose up to rounding) `d - d²/2 + d³/3 - d⁴/4` with `d = α - 1` (exact: Sterbenz), whose
+/// first omitted term is below `2^-80` of `d`; else the type's `ln`.
+#[inline]
+pub(crate) fn ln_fixed<T: Real>(alpha: &T) -> T {
+    let d = alpha.sub_ref(&T::one());
+    if d.to_f64().abs() < SMALL_X {
+        return poly(&[0.0, 1.0, -0.5, 1.0 / 3.0, -0.25], &d);
+    }
+    Real::ln(alpha)
+}
+
 /// `2^-20`: below it the log factors' series of [`log_factors_fixed`] is exact to `f64`.
 const SMALL_X: f64 = 9.5367431640625e-7;
 

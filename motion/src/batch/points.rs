@@ -134,10 +134,10 @@ impl<T: Field + Send + Sync> Points<T> {
 
     /// `F_S(p)` for every point `p`, one pose `S` for all ([`Pose::transform_point`]), computed
     /// over the lane type `L`: `L = T` is the scalar loop, a SIMD lane type transforms
-    /// `L::WIDTH` points per instruction. The action rows `[A | t]` and `1/α` are computed once;
-    /// each point then costs 12 multiplications and 9 additions, in the same order as
-    /// [`Pose::transform_point`], so every result is bit for bit the scalar one. Fails for a
-    /// singular or non-finite pose.
+    /// `L::WIDTH` points per instruction. `1/α` is computed once, and each point takes the
+    /// formula of [`Pose::transform_point`] (two cross products, 15 multiplications once the
+    /// pose's own products are hoisted), in the same order, so every result is bit for bit the
+    /// scalar one. Fails for a singular or non-finite pose.
     ///
     /// ```
     /// use motion::{Pose, batch::Points};
