@@ -170,7 +170,12 @@ impl<T: Real> Pose<T> {
         let inv_root = T::one().div_ref(&Real::sqrt(alpha));
         let m = n2.e123inf.mul_ref(&inv_root).mul_ref(&inv_root).mul_ref(&T::from_ratio(1, 2));
         let unit = &Pseudoscalar::new(inv_root.clone(), m.mul_ref(&inv_root).neg_ref()) * self;
-        let mut l = unit_log_with(&unit, log_factors_fixed);
+        // the half-angle from S itself (scale-invariant): beside the normalisation, not after
+        let (a, _) = split(self);
+        let s_raw = Real::sqrt(&dot(&a, &a));
+        let th = s_raw.fast_atan2(&self.scalar);
+        let s = s_raw.mul_ref(&inv_root);
+        let mut l = unit_log_with(&unit, |u0, x| log_factors_fixed(u0, x, &s, &th));
         l.scalar = ln_fixed(alpha).mul_ref(&T::from_ratio(1, 2));
         l.e123inf = m;
         l.is_finite().then_some(l)

@@ -36,9 +36,10 @@ pub(crate) fn at_most_f64<T: Ring>() -> bool {
     T::relative_epsilon() >= f64::EPSILON
 }
 
-/// Terms of the fixed exp polynomials: at `u ≤ 1` the first omitted term is below
-/// `1/22! < 2^-69` of the leading one.
-const EXP_TERMS: usize = 10;
+/// Terms of the fixed exp polynomials, used up to `u = 4` (half-angles up to 2): there the
+/// first omitted term is below `4^14/28! < 2^-69` (Estrin's scheme evaluates 14 terms in as
+/// many dependent steps as 10).
+const EXP_TERMS: usize = 14;
 
 /// `[(-1)^k/(2k)!, (-1)^k/(2k+1)!, (-1)^k 2(k+1)/(2k+3)!]` for `k < EXP_TERMS`: the series
 /// of `[C, S, T]` of [`exp_kernel`], as `f64` (the factorials up to 18! are exact in `f64`).
@@ -66,23 +67,29 @@ const fn factorial(n: u64) -> f64 {
     f
 }
 
-/// `Σ c_k x^k` by Horner's rule in `x²` over the pairs `c_2i + c_2i+1 x`: half the dependent
-/// chain of plain Horner.
+/// `Σ c_k x^k` (`N ≤ 16` coefficients) by Estrin's scheme: pairs `c_2i + c_2i+1 x`, then pairs
+/// of those with `x²`, then `x⁴`, `x⁸`: a dependent chain of `log2 N` steps instead of Horner's
+/// `N`, for polynomials whose latency, not their operation count, limits the pose layer.
 #[inline]
-fn poly<T: Real>(c: &[f64], x: &T) -> T {
-    let x2 = x.mul_ref(x);
-    let pair = |i: usize| match c.get(i + 1) {
-        Some(&next) => T::from_f64(c[i]).add_ref(&x.mul_ref(&T::from_f64(next))),
-        None => T::from_f64(c[i]),
-    };
-    (0..c.len()).step_by(2).rev().fold(T::zero(), |acc, i| acc.mul_ref(&x2).add_ref(&pair(i)))
+fn poly<T: Real, const N: usize>(c: &[f64; N], x: &T) -> T {
+    const { assert!(N >= 1 && N <= 16) };
+    let mut v: [T; 16] = std::array::from_fn(|i| if i < N { T::from_f64(c[i]) } else { T::zero() });
+    let (mut n, mut p) = (N, x.clone());
+    while n > 1 {
+        for i in 0..n.div_ceil(2) {
+            v[i] = if 2 * i + 1 < n { v[2 * i].add_ref(&v[2 * i + 1].mul_ref(&p)) } else { v[2 * i].clone() };
+        }
+        n = n.div_ceil(2);
+        p = p.mul_ref(&p);
+    }
+    v[0].clone()
 }
 
 /// [`exp_kernel`] for types of at most `f64` precision ([`at_most_f64`]): the closed form above
-/// `u = 1`, below it fixed polynomials of [`EXP_TERMS`] terms (no term-by-term test).
+/// `u = 4`, below it fixed polynomials of [`EXP_TERMS`] terms (no term-by-term test).
 #[inline]
 pub(crate) fn exp_kernel_fixed<T: Real>(u: &T) -> [T; 3] {
-    if *u > T::one() {
+    if u.to_f64() > 4.0 {
         return exp_kernel(u);
     }
     [poly(&EXP_COEFFS[0], u), poly(&EXP_COEFFS[1], u), poly(&EXP_COEFFS[2], u)]
@@ -103,24 +110,23 @@ const SIN_MINUS_THETA_COS: [f64; 7] = {
 
 /// The factors `(f, g)` of the logarithm of a unitary element with `u0 = cos θ ≥ 0` and
 /// `x = sin² θ` (exp_log.rs, first case): `f = θ/sin θ`, `g = (sin θ - θ cos θ)/sin³ θ`, for
-/// types of at most `f64` precision. `θ` from [`Real::fast_atan2`]; below `x = 2^-20` three
-/// terms of the series of [`log_kernel`]; up to `x = 1/4` (`θ = π/6`) the numerator of `g`
-/// from its own series in `θ` (no cancellation), above it directly (as [`log_kernel`]'s
-/// caller does).
+/// types of at most `f64` precision, given `s = sin θ` and `θ` (the caller takes them from the
+/// pose before its normalisation: the angle is scale-invariant, so it is computed beside the
+/// normalisation instead of after it). Below `x = 2^-20` three terms of the series of
+/// [`log_kernel`]; up to `x = 1/4` (`θ = π/6`) the numerator of `g` from its own series in `θ`
+/// (no cancellation), above it directly (as [`log_kernel`]'s caller does).
 #[inline]
-pub(crate) fn log_factors_fixed<T: Real>(u0: &T, x: &T) -> (T, T) {
+pub(crate) fn log_factors_fixed<T: Real>(u0: &T, x: &T, s: &T, th: &T) -> (T, T) {
     if x.to_f64() <= SMALL_X {
         // f = 1 + x/6 + 3x²/40 + 5x³/112, h = 1/3 + 3x/10 + 15x²/56, g = h u0
         let f = poly(&[1.0, 1.0 / 6.0, 3.0 / 40.0, 5.0 / 112.0], x);
         let h = poly(&[1.0 / 3.0, 3.0 / 10.0, 15.0 / 56.0], x);
         return (f, h.mul_ref(u0));
     }
-    let s = Real::sqrt(x);
-    let th = s.fast_atan2(u0);
-    let r = T::one().div_ref(&s);
+    let r = T::one().div_ref(s);
     let num = if x.to_f64() <= 0.25 {
-        let t2 = th.mul_ref(&th);
-        poly(&SIN_MINUS_THETA_COS, &t2).mul_ref(&t2).mul_ref(&th)
+        let t2 = th.mul_ref(th);
+        poly(&SIN_MINUS_THETA_COS, &t2).mul_ref(&t2).mul_ref(th)
     } else {
         s.sub_ref(&th.mul_ref(u0))
     };
