@@ -134,10 +134,9 @@ impl<T: Field> Pose<T> {
     /// ```
     pub fn transform_point(&self, p: &[T; 3]) -> Result<[T; 3], MotionError> {
         let alpha = self.alpha();
-        if tame(&alpha)
-            && let Some(inv) = alpha.try_recip()
-        {
-            let out = self.image_with(p, &inv);
+        if tame(&alpha) {
+            // tame: non-zero, and for floats 1/α is a normal number
+            let out = self.image_with(p, &T::one().div_ref(&alpha));
             if out.iter().all(Ring::is_finite_value) {
                 return Ok(out);
             }
