@@ -128,6 +128,9 @@ pub fn metric_from_toml_str(text: &str, path: &str) -> Result<(Option<String>, M
 /// assert!(alg.metric().is_degenerate());
 /// assert!(algebra_codegen::metric_toml::algebra_from_name_or_path("nope").is_err());
 /// ```
+///
+/// A file whose `name` is a built-in's (`name = "pga3"`) is refused: its algebra would
+/// otherwise be printed and generated under the built-in's identity.
 pub fn algebra_from_name_or_path(arg: &str) -> Result<Arc<Algebra>, MetricError> {
     if let Ok(alg) = Algebra::builtin(arg) {
         return Ok(alg);
@@ -138,6 +141,16 @@ pub fn algebra_from_name_or_path(arg: &str) -> Result<Arc<Algebra>, MetricError>
     let text = std::fs::read_to_string(arg)
         .map_err(|e| MetricError::Toml { path: arg.to_string(), message: e.to_string() })?;
     let (name, metric) = metric_from_toml_str(&text, arg)?;
+    // a built-in's name would make the file's algebra print, describe and generate under the
+    // built-in's identity (its description, its module name): refused, not shadowed
+    if let Some(n) = &name
+        && Algebra::builtin(n).is_ok()
+    {
+        return Err(MetricError::Toml {
+            path: arg.to_string(),
+            message: format!("`name = \"{n}\"` is a built-in algebra's name; give the file's algebra another name"),
+        });
+    }
     Ok(Algebra::new(name.unwrap_or_else(|| arg.to_string()), metric))
 }
 

@@ -217,6 +217,21 @@ fn bad_algebra_files_exit_2() {
     assert!(e.contains("symmetric"), "{e}");
     fails(&["table", "--algebra", asym.path()], 2);
     fails(&["eval", "--algebra", "/nonexistent/gam.toml", "e1"], 2);
+    // a file's algebra never takes a built-in's name (its description and module name)
+    let shadow =
+        TempFile::new("shadow.toml", "name = \"pga3\"\ngenerators = [\"a\", \"b\"]\ngram = [[1, 0], [0, 1]]\n");
+    for args in [
+        vec!["algebras", shadow.path()],
+        vec!["eval", "--algebra", shadow.path(), "ea"],
+        vec!["codegen", "--algebra", shadow.path(), "--types", "V=grade1"],
+    ] {
+        let e = fails(&args, 2);
+        assert!(e.contains("`name = \"pga3\"` is a built-in algebra's name") && e.contains("shadow.toml"), "{e}");
+    }
+    // labels that spell Rust keywords are prefixed (`efn`, `eself`), so the module compiles
+    let kw = TempFile::new("kw.toml", "generators = [\"fn\", \"self\"]\ngram = [[1, 0], [0, 1]]\n");
+    let module = ok(&["codegen", "--algebra", kw.path(), "--types", "V=grade1"]);
+    assert!(module.contains("pub efn: T") && module.contains("pub eself: T"), "{module}");
 }
 
 #[test]
