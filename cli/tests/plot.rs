@@ -430,3 +430,27 @@ fn control_data_errors_are_one_line() {
     let singular = TempFile::new("ctl-singular.json", singular);
     assert!(fails(&["plot", "--out", out.path(), singular.path()], 2).contains("singular"));
 }
+
+/// Explicit multiplicative control data of high degree plot as they sample (the second-order
+/// dual numbers of the plot's accelerations failed from degree about 150: "ln: the
+/// pseudoscalar 0", "inverse: ... singular").
+#[test]
+fn high_degree_multiplicative_control_data_plot() {
+    let n = 200;
+    let motor = |k: usize| {
+        let (half, x) = (0.45 * (k as f64 * 0.7).sin(), k as f64 / n as f64);
+        format!(r#"{{"1": {}, "e12": {}, "e1inf": {}, "e2inf": 0.1}}"#, half.cos(), half.sin(), x)
+    };
+    let poses: Vec<String> = (0..=n).map(motor).collect();
+    let data = format!(
+        r#"{{"segments": [{{"t0": 0, "t1": 1, "representation": "multiplicative-bezier", "control_poses": [{}]}}], "body_points": [[1, 0, 0]]}}"#,
+        poses.join(", ")
+    );
+    let file = TempFile::new("plot-deg200.json", &data);
+    let (v, svg) = plot("plot-deg200", &[file.path(), "--samples", "5"]);
+    let s = &v["series"][0];
+    assert_eq!(s["degree"].as_u64(), Some(n as u64));
+    let speeds = nums(&s["speeds"][0]);
+    assert!(speeds.len() == 5 && speeds.iter().all(|x| x.is_finite() && *x > 0.0), "{speeds:?}");
+    assert_eq!(check_svg(&svg), expected_series(&v));
+}

@@ -24,7 +24,7 @@
 //! ```
 
 use crate::blend::{Additive, Blend, Multiplicative};
-use crate::de_casteljau::{additive_apex, de_casteljau_with, tableau_with};
+use crate::de_casteljau::{additive_apex, tableau_with};
 use crate::joins::JoinError;
 use crate::{Even, MotionError, Pose};
 use algebra_core::{Field, Real, Ring};
@@ -429,7 +429,7 @@ impl<T: Real> Bezier<T, Multiplicative> {
     /// ```
     pub fn de_casteljau(&self, t: &T) -> Result<Pose<T>, CurveError> {
         // factored as exp(l) U with U unitized at every level: stable in the degree
-        Ok(de_casteljau_with(&self.poses, t, crate::stable_slerp::slerp)?)
+        Ok(crate::stable_slerp::apex(&self.poses, t)?)
     }
 
     /// The whole slerp tableau at `t` (Fig. 2): column 0 is the control poses, column `k` holds
@@ -442,7 +442,7 @@ impl<T: Real> Bezier<T, Multiplicative> {
     /// assert_eq!(tab.iter().map(Vec::len).collect::<Vec<_>>(), [4, 3, 2, 1]);
     /// ```
     pub fn tableau(&self, t: &T) -> Result<Vec<Vec<Pose<T>>>, CurveError> {
-        Ok(tableau_with(&self.poses, t, crate::stable_slerp::slerp)?)
+        Ok(crate::stable_slerp::tableau(&self.poses, t)?)
     }
 
     /// The motion with every control pose unitized (`S_i/|S_i|`, Lemma 2.6(i)): the same

@@ -55,6 +55,20 @@ pub trait Blend<T: Ring>: Copy + std::fmt::Debug + PartialEq + Default + 'static
         crate::de_casteljau::de_casteljau_with(poses, t, Self::blend)
     }
 
+    /// De Boor's algorithm over the `p + 1` control poses of a B-spline span (at least one),
+    /// with the parameter `alpha(r, j)` of step `j` of level `r`: what [`crate::BSpline`]
+    /// evaluates. With the Bezier knots (`alpha = t` at every step) it makes the same
+    /// combinations in the same order as [`Blend::apex`], so the two agree bit for bit.
+    ///
+    /// ```
+    /// use motion::{Additive, Blend, Pose};
+    /// let c = [Pose::<f64>::identity(), Pose::translation(&[2.0, 0.0, 0.0])];
+    /// assert_eq!(Additive::de_boor(&c, &|_, _| 0.25).unwrap(), Pose::translation(&[0.5, 0.0, 0.0]));
+    /// ```
+    fn de_boor(poses: &[Pose<T>], alpha: &dyn Fn(usize, usize) -> T) -> Result<Pose<T>, MotionError> {
+        crate::bspline::de_boor_with(poses.to_vec(), alpha, Self::blend)
+    }
+
     /// The control pose `S1` next to `S0` of a degree-`n` segment whose indicatrix at `t = 0`
     /// is `psi0` (eq. 22 or 23).
     ///
@@ -169,6 +183,17 @@ impl<T: Real> Blend<T> for Multiplicative {
 
     fn blend(a: &Pose<T>, b: &Pose<T>, t: &T) -> Result<Pose<T>, MotionError> {
         crate::stable_slerp::slerp(a, b, t)
+    }
+
+    /// The slerp tableau's apex with every entry kept factored as `exp(l) U` from level to
+    /// level (the control poses factored once): stable in the degree, derivatives included.
+    fn apex(poses: &[Pose<T>], t: &T) -> Result<Pose<T>, MotionError> {
+        crate::stable_slerp::apex(poses, t)
+    }
+
+    /// De Boor's algorithm with every entry kept factored as `exp(l) U`, as [`Blend::apex`].
+    fn de_boor(poses: &[Pose<T>], alpha: &dyn Fn(usize, usize) -> T) -> Result<Pose<T>, MotionError> {
+        crate::stable_slerp::de_boor(poses, alpha)
     }
 
     fn start_control_pose(s0: &Pose<T>, psi0: &Even<T>, degree: usize) -> Result<Pose<T>, JoinError> {

@@ -103,21 +103,14 @@ impl<T: Real> Spline<T> {
         spans.rev().find(|&k| u[k] <= *t).unwrap_or(first)
     }
 
-    fn de_boor(
-        &self,
-        t: &T,
-        combine: impl Fn(&Pose<T>, &Pose<T>, &T) -> Result<Pose<T>, crate::MotionError>,
-    ) -> Result<Pose<T>, CurveError> {
+    /// `S(t)` by de Boor's algorithm with the blend `B` ([`Blend::de_boor`]).
+    fn de_boor<B: Blend<T>>(&self, t: &T) -> Result<Pose<T>, CurveError> {
         let (p, k, u) = (self.degree, self.span(t), &self.knots);
-        let mut d: Vec<Pose<T>> = self.poses[k - p..=k].to_vec();
-        for r in 1..=p {
-            for j in (r..=p).rev() {
-                let (lo, hi) = (&u[j + k - p], &u[j + 1 + k - r]);
-                let alpha = t.sub_ref(lo).div_ref(&hi.sub_ref(lo));
-                d[j] = combine(&d[j - 1], &d[j], &alpha)?;
-            }
-        }
-        Ok(d.swap_remove(p))
+        let alpha = |r: usize, j: usize| {
+            let (lo, hi) = (&u[j + k - p], &u[j + 1 + k - r]);
+            t.sub_ref(lo).div_ref(&hi.sub_ref(lo))
+        };
+        Ok(B::de_boor(&self.poses[k - p..=k], &alpha)?)
     }
 
     fn map_scalar<U: Ring>(&self, f: &dyn Fn(&T) -> U) -> Spline<U> {
@@ -241,7 +234,7 @@ impl<T: Ring, B> BSpline<T, B> {
 
 impl<T: Real, B: Blend<T>> Motion<T> for BSpline<T, B> {
     fn evaluate(&self, t: &T) -> Result<Pose<T>, CurveError> {
-        self.spline.de_boor(t, B::blend)
+        self.spline.de_boor::<B>(t)
     }
 
     fn domain(&self) -> [T; 2] {
@@ -255,4 +248,21 @@ impl<T: Real, U: Real, B: Blend<T> + Blend<U>> MapScalar<T, U> for BSpline<T, B>
     fn map_scalar(&self, f: &dyn Fn(&T) -> U) -> BSpline<U, B> {
         BSpline { spline: self.spline.map_scalar(f), blend: self.blend }
     }
+}
+
+/// De Boor's algorithm over the `p + 1` control entries `d` of a span (already lifted to the
+/// element type `C`), with the step parameters `alpha(r, j)` and the pairwise `combine`: level
+/// `r` overwrites `d[j]` with `combine(d[j - 1], d[j], alpha(r, j))` for `j = p..r`.
+pub(crate) fn de_boor_with<T, C, E>(
+    mut d: Vec<C>,
+    alpha: &dyn Fn(usize, usize) -> T,
+    combine: impl Fn(&C, &C, &T) -> Result<C, E>,
+) -> Result<C, E> {
+    let p = d.len() - 1;
+    for r in 1..=p {
+        for j in (r..=p).rev() {
+            d[j] = combine(&d[j - 1], &d[j], &alpha(r, j))?;
+        }
+    }
+    Ok(d.swap_remove(p))
 }

@@ -7,11 +7,23 @@
 //! feed a drift off the unit poses into the next (with the plain recursion the norm error grew
 //! exponentially with the degree: 4e-7 at degree 20, failure from about 40). The factors
 //! are applied to the unitized slerp of each pair.
+//!
+//! A whole tableau ([`apex`], [`tableau`]) keeps every entry factored from level to level:
+//! the control poses are factored once, and each level combines the factors linearly and
+//! slerps the unit parts. Factoring each level's expanded pose again (as the pairwise
+//! [`slerp`] does) would take the logarithm of a unitized pose's norm, which is zero up to
+//! rounding, and eq. (16) multiplies that rounding by `1 + 2t` per level: harmless for the
+//! value (it is tested as negligible and dropped), but a dual number's derivative parts of that
+//! rounding grow with the degree's powers and are not negligible next to the value, so from
+//! degree about 150 the second derivatives (`gam plot`'s accelerations) overflowed or
+//! underflowed to a zero pose.
 
 use crate::MotionError;
+use crate::de_casteljau::apex as apex_with;
 use crate::pose::{Pose, Pseudoscalar};
 use algebra_core::{Real, Ring};
 
+#[derive(Clone)]
 struct Factored<T: Ring> {
     unit: Pose<T>,
     log_factor: Pseudoscalar<T>,
@@ -59,4 +71,42 @@ impl<T: Real> Factored<T> {
 pub(crate) fn slerp<T: Real>(a: &Pose<T>, b: &Pose<T>, t: &T) -> Result<Pose<T>, MotionError> {
     crate::scaled::require_finite("slerp", a, [t])?;
     Ok(Factored::new(a)?.slerp(&Factored::new(b)?, t)?.expand())
+}
+
+/// The apex `S(t)` of the slerp tableau over `poses` (at least one), every entry kept factored
+/// (module docs): the value of the pairwise [`slerp`]'s tableau in exact arithmetic.
+pub(crate) fn apex<T: Real>(poses: &[Pose<T>], t: &T) -> Result<Pose<T>, MotionError> {
+    if let [single] = poses {
+        return Ok(single.clone());
+    }
+    crate::scaled::require_finite("slerp", &Pose::identity(), [t])?;
+    let factored = poses.iter().map(Factored::new).collect::<Result<Vec<_>, _>>()?;
+    Ok(apex_with(&factored, |a, b| a.slerp(b, t))?.expand())
+}
+
+/// The whole slerp tableau (column 0 the control poses, column `k` the entries
+/// `S_{i..i+k}(t)`), every entry kept factored (module docs) and expanded for the output.
+pub(crate) fn tableau<T: Real>(poses: &[Pose<T>], t: &T) -> Result<Vec<Vec<Pose<T>>>, MotionError> {
+    crate::scaled::require_finite("slerp", &Pose::identity(), [t])?;
+    let mut column = poses.iter().map(Factored::new).collect::<Result<Vec<_>, _>>()?;
+    let mut columns = vec![poses.to_vec()];
+    while column.len() > 1 {
+        column = column.windows(2).map(|w| w[0].slerp(&w[1], t)).collect::<Result<Vec<_>, _>>()?;
+        columns.push(column.iter().map(Factored::expand).collect());
+    }
+    Ok(columns)
+}
+
+/// De Boor's algorithm over a span's control poses with every entry kept factored (module
+/// docs); one control pose (degree 0) is returned as it is.
+pub(crate) fn de_boor<T: Real>(poses: &[Pose<T>], alpha: &dyn Fn(usize, usize) -> T) -> Result<Pose<T>, MotionError> {
+    if let [single] = poses {
+        return Ok(single.clone());
+    }
+    let factored = poses.iter().map(Factored::new).collect::<Result<Vec<_>, _>>()?;
+    let apex = crate::bspline::de_boor_with(factored, alpha, |a, b, t| {
+        crate::scaled::require_finite("slerp", &Pose::identity(), [t])?;
+        a.slerp(b, t)
+    })?;
+    Ok(apex.expand())
 }

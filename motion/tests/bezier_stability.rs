@@ -84,3 +84,33 @@ fn non_unit_control_poses_keep_the_definitions_factors() {
         assert!(max_diff(&s, &want) < 1e-11 * scale, "t {t}: {s} vs {want}");
     }
 }
+
+/// The first and second derivatives (dual numbers through the same tableau, what `gam plot`
+/// and the trajectory sampler evaluate) stay finite and right at high degree: the acceleration
+/// of a body point against central differences of its velocity, and the velocity against
+/// central differences of its position. Factoring every tableau entry again from its expanded
+/// pose let the derivative parts of rounding grow with the degree until, from degree about 150,
+/// the second-order dual numbers overflowed to a zero pose.
+#[test]
+fn high_degree_derivatives_stay_finite_and_match_differences() {
+    let mut rng = Xorshift(0x6a09e667f3bcc909);
+    for n in [150, 300] {
+        let m = MultiplicativeBezier::new(random_unit_poses(&mut rng, n)).unwrap();
+        let body = [[1.0, -0.5, 0.25]];
+        for t in [0.3, 0.5, 0.77] {
+            let at = |t: f64| motion::trajectory::sample_motion(&m, &t, &body).unwrap().points[0].clone();
+            let (p, h) = (at(t), 1e-5);
+            let (lo, hi) = (at(t - h), at(t + h));
+            for k in 0..3 {
+                let dv = (hi.velocity[k] - lo.velocity[k]) / (2.0 * h);
+                let dp = (hi.position[k] - lo.position[k]) / (2.0 * h);
+                let (a, v) = (p.acceleration[k], p.velocity[k]);
+                assert!(
+                    a.is_finite() && (a - dv).abs() <= 1e-5 * a.abs().max(dv.abs()).max(1.0),
+                    "n {n}, t {t}: {a} vs {dv}"
+                );
+                assert!((v - dp).abs() <= 1e-6 * v.abs().max(dp.abs()).max(1.0), "n {n}, t {t}: {v} vs {dp}");
+            }
+        }
+    }
+}
