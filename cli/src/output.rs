@@ -26,24 +26,34 @@ pub fn text_table(rows: &[Vec<String>]) -> String {
     let widths: Vec<usize> = (0..ncols).map(width).collect();
     let mut lines = Vec::with_capacity(rows.len() + 1);
     for (i, row) in rows.iter().enumerate() {
-        let mut line = String::new();
-        for (j, cell) in row.iter().enumerate() {
-            let pad = widths[j] - cell.chars().count();
-            line.push_str(cell);
-            line.push_str(&" ".repeat(pad));
-            line.push_str(if j == 0 { " | " } else { "  " });
-        }
-        lines.push(line.trim_end().to_string());
+        lines.push(table_line(row, &widths));
         if i == 0 {
-            let total: usize = widths.iter().sum::<usize>() + 3 + 2 * ncols.saturating_sub(2);
-            let mut rule = "-".repeat(total);
-            if let Some(w0) = widths.first() {
-                rule.replace_range(w0 + 1..w0 + 2, "+");
-            }
-            lines.push(rule);
+            lines.push(table_rule(&widths));
         }
     }
     lines.join("\n")
+}
+
+/// One line of a [`text_table`] with the column widths `widths` (trailing spaces trimmed).
+pub(crate) fn table_line(row: &[String], widths: &[usize]) -> String {
+    let mut line = String::new();
+    for (j, cell) in row.iter().enumerate() {
+        let pad = widths[j] - cell.chars().count();
+        line.push_str(cell);
+        line.push_str(&" ".repeat(pad));
+        line.push_str(if j == 0 { " | " } else { "  " });
+    }
+    line.trim_end().to_string()
+}
+
+/// The rule under the header of a [`text_table`] with the column widths `widths`.
+pub(crate) fn table_rule(widths: &[usize]) -> String {
+    let total: usize = widths.iter().sum::<usize>() + 3 + 2 * widths.len().saturating_sub(2);
+    let mut rule = "-".repeat(total);
+    if let Some(w0) = widths.first() {
+        rule.replace_range(w0 + 1..w0 + 2, "+");
+    }
+    rule
 }
 
 /// A JSON result with a `samples` array that may be too large to hold: `head` (an object) and

@@ -11,13 +11,14 @@
 
 use crate::error::CliError;
 use crate::hermite::{build_segment, read_spec};
-use crate::output::{Streamed, mv_human, mv_json, text_table};
+use crate::output::{Streamed, mv_human, mv_json, table_line, table_rule, text_table};
 use crate::scalar::format_f64;
 use motion::schema::InterpolateSpec;
 use motion::spec::HermiteSpec;
 use motion::velocity::velocity;
 use motion::{AnyMotion, Pose, SegmentKind};
 use serde_json::{Value, json};
+use std::io::Write;
 
 /// The most samples accepted.
 pub(crate) const MAX_SAMPLES: usize = motion::schema::MAX_SAMPLES;
@@ -196,23 +197,108 @@ pub(crate) fn write_error(e: std::io::Error) -> CliError {
     CliError::usage(format!("cannot write the output: {e}"))
 }
 
-/// Runs `gam sample`.
+/// The text row of a sample: `t`, `x`, `y`, `z`, the two speeds, the pose (human form).
+fn text_row(x: &Sample) -> Vec<String> {
+    let mut row = vec![format_f64(x.t)];
+    row.extend(x.position.iter().map(|c| format_f64(*c)));
+    row.push(format_f64(x.linear_speed));
+    row.push(format_f64(x.angular_speed));
+    row.push(mv_human(&x.pose.to_multivector()));
+    row
+}
+
+/// The text header of `gam sample`.
+const HEADER: [&str; 7] = ["t", "x", "y", "z", "linear speed", "angular speed", "pose"];
+
+/// Runs `gam sample`: `--json` and the text table are both written to standard output in
+/// bounded memory (and an empty string returned). The text table's columns are aligned, so
+/// the samples are computed twice: once to check them all and measure the columns (nothing
+/// is printed if one fails), once to print them; a million samples no longer hold their
+/// text (1.9 GB) in memory.
 pub fn sample(path: &str, n: usize, json: bool) -> Result<String, CliError> {
     let spec = SampleSpec::read(path)?;
     if json {
         return sample_json(path, &spec, n)?.stream();
     }
-    let s = sampler(path, &spec, n)?.collect()?;
-    let header = ["t", "x", "y", "z", "linear speed", "angular speed", "pose"];
-    let mut rows = vec![header.map(str::to_string).to_vec()];
-    for x in &s.samples {
-        let mut row = vec![format_f64(x.t)];
-        row.extend(x.position.iter().map(|c| format_f64(*c)));
-        row.push(format_f64(x.linear_speed));
-        row.push(format_f64(x.angular_speed));
-        row.push(mv_human(&x.pose.to_multivector()));
-        rows.push(row);
+    let s = sampler(path, &spec, n)?;
+    write_text(s, &mut std::io::BufWriter::new(std::io::stdout().lock())).map_err(|e| match e {
+        TextError::Cli(e) => e,
+        TextError::Io(e) => write_error(e),
+    })?;
+    Ok(String::new())
+}
+
+/// A failure while writing the text table: of a sample, or of the output.
+enum TextError {
+    Cli(CliError),
+    Io(std::io::Error),
+}
+
+/// The text table of `gam sample` written to `out`, the samples computed twice (see
+/// [`sample`]).
+fn write_text(s: Sampler, out: &mut impl Write) -> Result<(), TextError> {
+    let mut widths = HEADER.map(|h| h.chars().count());
+    for i in 0..s.n {
+        for (w, cell) in widths.iter_mut().zip(text_row(&(s.at)(i).map_err(TextError::Cli)?)) {
+            *w = (*w).max(cell.chars().count());
+        }
     }
+    let shape =
+        Sampled { kind: s.kind, degree: s.degree, segments: s.segments, body_point: s.body_point, samples: vec![] };
+    let mut line = |text: String| writeln!(out, "{text}").map_err(TextError::Io);
+    line(format!("{}, {} samples", crate::plot::title(&shape), s.n))?;
+    line(table_line(&HEADER.map(str::to_string), &widths))?;
+    line(table_rule(&widths))?;
+    for i in 0..s.n {
+        line(table_line(&text_row(&(s.at)(i).map_err(TextError::Cli)?), &widths))?;
+    }
+    out.flush().map_err(TextError::Io)
+}
+
+/// All samples of a spec as `gam sample`'s text table, in memory (tests and other front
+/// doors): the same text the command streams.
+#[cfg(test)]
+fn sample_text(path: &str, n: usize) -> Result<String, CliError> {
+    let s = sample_spec(path, n)?;
+    let mut rows = vec![HEADER.map(str::to_string).to_vec()];
+    rows.extend(s.samples.iter().map(text_row));
     let title = format!("{}, {} samples", crate::plot::title(&s), s.samples.len());
     Ok(format!("{title}\n{}", text_table(&rows)))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The streamed table is the in-memory [`text_table`] of the same samples, byte for byte
+    /// (plus the final newline), for a Hermite and an interpolate spec.
+    #[test]
+    fn streamed_text_is_the_table() {
+        let dir = std::env::temp_dir();
+        let hermite = dir.join("gam-sample-stream-hermite.json");
+        std::fs::write(
+            &hermite,
+            r#"{"kind": "multiplicative", "degree": 5,
+                "start": {"position": [0, 0, 0], "axis": [0, 0, 1], "angle": 0, "velocity": [1, 1, 1], "angular_velocity": [1, 2, 3]},
+                "end": {"position": [8, 10, 12], "axis": [1, 2, 3], "angle": 2, "velocity": [1, 2, 5], "angular_velocity": [1, 1, 2]},
+                "body_point": [0.5, -1, 2]}"#,
+        )
+        .unwrap();
+        let interpolate = dir.join("gam-sample-stream-interpolate.json");
+        std::fs::write(
+            &interpolate,
+            r#"{"method": "ccm-multiplicative", "poses": [{"position": [0, 0, 0]}, {"position": [1, 1, 0], "axis": [0, 0, 1], "angle": 1}, {"position": [2, 0, 1]}]}"#,
+        )
+        .unwrap();
+        for path in [&hermite, &interpolate] {
+            let path = path.to_str().unwrap();
+            for n in [2, 7, 101] {
+                let mut streamed = Vec::new();
+                let spec = SampleSpec::read(path).unwrap();
+                assert!(write_text(sampler(path, &spec, n).unwrap(), &mut streamed).is_ok());
+                let want = sample_text(path, n).unwrap() + "\n";
+                assert_eq!(String::from_utf8(streamed).unwrap(), want, "{path}, {n} samples");
+            }
+        }
+    }
 }

@@ -237,6 +237,9 @@ fn streamed_json_writes_nothing_when_a_later_sample_fails() {
     let spec = TempFile::new("stream-overflow.json", &text);
     let line = fails(&["sample", spec.path(), "--samples", "101", "--json"], 1);
     assert!(line.contains("at t = 0.01 is not finite"), "{line}");
+    // the text table is streamed too (issue 30): nothing printed either (`fails` checks stdout)
+    let line = fails(&["sample", spec.path(), "--samples", "101"], 1);
+    assert!(line.contains("at t = 0.01 is not finite"), "{line}");
     // and the streamed JSON of a good spec is the same as the text table's values
     let good = TempFile::new("stream-good.json", CONTRACT_EXAMPLE);
     let json: Value = serde_json::from_str(&ok(&["sample", good.path(), "--samples", "3", "--json"])).unwrap();
