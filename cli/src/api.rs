@@ -253,7 +253,7 @@ impl Motion {
         let (degree, points) = (self.0.motion.max_degree(), points.max(1));
         crate::budget::check(
             &format!("sampling {points} body points of degree-{degree} segments at {n} values"),
-            crate::budget::sampling_work(degree, n) * points as f64,
+            crate::budget::sampling_work(crate::interpolate::tableau(&self.0.motion), degree, n, 1) * points as f64,
         )
     }
 

@@ -100,10 +100,68 @@ pub fn algebra(arg: &str) -> Result<std::sync::Arc<algebra_core::Algebra>, CliEr
     Ok(alg)
 }
 
-/// The estimate for sampling a Bezier segment of `degree` at `samples` parameter values.
-pub fn sampling_work(degree: usize, samples: usize) -> f64 {
+/// What one sample of a motion evaluates, for the work estimate of sampling
+/// ([`sampling_work`]): each kind's units per `(degree + 1)²` of the de Casteljau tableau and
+/// per sample (the pose, its twists and the body point over dual numbers, and the sample's
+/// output), measured with the release build by `cargo bench -p gam --bench work_estimate`
+/// (docs/performance.md) so that the estimate is within 2x of the time.
+///
+/// ```
+/// use gam::budget::Tableau;
+/// assert!(Tableau::Slerp.units_per_entry() > 10.0 * Tableau::Linear.units_per_entry());
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Tableau {
+    /// Additive Bézier segments (a few multiply-adds per coefficient and entry), the
+    /// Wareham–Lasenby and hexanion motions (no tableau: an exponential per sample).
+    Linear,
+    /// Multiplicative Bézier segments: a logarithm and an exponential per entry.
+    Slerp,
+    /// Jüttler's rational motions (Q-motions, the minimal-order motion): a dual-quaternion
+    /// tableau and its normalisation to a pose.
+    Rational,
+}
+
+impl Tableau {
+    /// Units per `(degree + 1)²` of one sample.
+    ///
+    /// ```
+    /// assert_eq!(gam::budget::Tableau::Slerp.units_per_entry(), 0.45);
+    /// ```
+    pub fn units_per_entry(self) -> f64 {
+        match self {
+            Tableau::Linear => 0.012,
+            Tableau::Slerp => 0.45,
+            Tableau::Rational => 0.03,
+        }
+    }
+
+    /// Units per sample besides the tableau.
+    ///
+    /// ```
+    /// assert_eq!(gam::budget::Tableau::Linear.units_per_sample(), 25.0);
+    /// ```
+    pub fn units_per_sample(self) -> f64 {
+        match self {
+            Tableau::Linear | Tableau::Slerp => 25.0,
+            Tableau::Rational => 50.0,
+        }
+    }
+}
+
+/// The work of `passes` passes over `samples` samples of segments of degree `degree`:
+/// `passes × samples × (e (degree + 1)² + s)` with `e` and `s` the [`Tableau`]'s units per
+/// entry and per sample. Streamed output takes two passes (every sample is computed once to
+/// check it, once to print it).
+///
+/// ```
+/// use gam::budget::{Tableau, sampling_work};
+/// assert_eq!(sampling_work(Tableau::Linear, 3, 100, 1), 100.0 * (16.0 * 0.012 + 25.0));
+/// assert_eq!(sampling_work(Tableau::Slerp, 3, 100, 2), 200.0 * (16.0 * 0.45 + 25.0));
+/// ```
+pub fn sampling_work(tableau: Tableau, degree: usize, samples: usize, passes: usize) -> f64 {
     let d = degree as f64 + 1.0;
-    samples as f64 * d * d
+    (passes * samples) as f64 * (tableau.units_per_entry() * d * d + tableau.units_per_sample())
 }
 
 #[cfg(test)]
@@ -112,7 +170,9 @@ mod tests {
 
     #[test]
     fn estimates_and_limit() {
-        assert_eq!(sampling_work(3, 100), 1600.0);
+        assert_eq!(sampling_work(Tableau::Linear, 3, 100, 1), 100.0 * (16.0 * 0.012 + 25.0));
+        assert_eq!(sampling_work(Tableau::Slerp, 99, 10, 2), 20.0 * (1e4 * 0.45 + 25.0));
+        assert_eq!(sampling_work(Tableau::Rational, 0, 1, 1), 0.03 + 50.0);
         assert!(check("x", 1.0).is_ok());
         let e = check("sampling", 1e12).unwrap_err();
         assert_eq!(e.code, crate::error::EXIT_USAGE);

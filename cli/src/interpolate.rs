@@ -12,12 +12,13 @@
 //!
 //! A spec of this command is also accepted by `gam sample` and `gam plot` ([`spec_sampler`]).
 
+use crate::budget::Tableau;
 use crate::error::CliError;
 use crate::hermite::strip_comments;
 use crate::output::{Streamed, mv_human, mv_json};
 use crate::sample::{Sample, Sampler, checked};
 use crate::scalar::format_f64;
-use motion::method::{BuiltMotion, Method};
+use motion::method::{BuiltMotion, Method, MethodMotion};
 use motion::schema::{InterpolateSpec, SchemaError};
 use motion::trajectory::TrajectorySample;
 use serde_json::{Value, json};
@@ -76,14 +77,26 @@ fn finite3(v: &[f64; 3]) -> bool {
     v.iter().all(|x| x.is_finite())
 }
 
-/// The work of sampling `n` values: `n × (degree + 1)²` per body point (as for `gam sample`),
-/// with the largest segment degree, checked against the budget.
-pub(crate) fn check_work(b: &Built, n: usize) -> Result<(), CliError> {
+/// The work of `passes` passes over `n` samples ([`crate::budget::sampling_work`], with the
+/// largest segment degree and the motion's [`Tableau`]) per body point, checked against the
+/// budget.
+pub(crate) fn check_work(b: &Built, n: usize, passes: usize) -> Result<(), CliError> {
     let (points, degree) = (b.body_points.len().max(1), b.motion.max_degree());
     crate::budget::check(
         &format!("sampling {points} body points of degree-{degree} segments at {n} values"),
-        crate::budget::sampling_work(degree, n) * points as f64,
+        crate::budget::sampling_work(tableau(&b.motion), degree, n, passes) * points as f64,
     )
+}
+
+/// What a sample of the motion evaluates (for the work estimate).
+pub(crate) fn tableau(m: &BuiltMotion<f64>) -> Tableau {
+    match m.motion() {
+        MethodMotion::QMotions(_) | MethodMotion::Minimal(_) => Tableau::Rational,
+        _ if m.segments().iter().any(|s| s.representation == Method::CcmMultiplicative.representation()) => {
+            Tableau::Slerp
+        }
+        _ => Tableau::Linear,
+    }
 }
 
 /// Sample `i` of `n` evenly spaced times over `[t_0, t_m]` (as `Trajectory::sample_evenly`),
@@ -150,7 +163,7 @@ pub fn interpolate_json<'a>(label: &str, spec: &InterpolateSpec) -> Result<Strea
     let b = build(label, spec)?;
     let n = if b.samples >= 2 { b.samples } else { 0 };
     if n > 0 {
-        check_work(&b, n)?;
+        check_work(&b, n, 2)?;
     }
     let head =
         json!({"method": b.motion.method().name(), "parameters": b.motion.times(), "segments": segments_json(&b)});
@@ -166,7 +179,7 @@ pub fn interpolate(path: &str, json: bool) -> Result<String, CliError> {
     let b = build(path, &spec)?;
     let n = if b.samples >= 2 { b.samples } else { 0 };
     if n > 0 {
-        check_work(&b, n)?;
+        check_work(&b, n, 1)?;
     }
     let method = b.motion.method();
     let times = b.motion.times();
@@ -197,11 +210,11 @@ pub fn interpolate(path: &str, json: bool) -> Result<String, CliError> {
 
 /// `gam sample` / `gam plot` on a `gam interpolate` spec (`label` names it in messages). The
 /// body point is the first of `body_points`; sample `i` is at `t_0 + (t_m - t_0) i/(n-1)`.
-pub(crate) fn spec_sampler(label: &str, spec: &InterpolateSpec, n: usize) -> Result<Sampler, CliError> {
+pub(crate) fn spec_sampler(label: &str, spec: &InterpolateSpec, n: usize, passes: usize) -> Result<Sampler, CliError> {
     let b = build(label, spec)?;
     let body_point = b.body_points.first().copied().unwrap_or([0.0; 3]);
     let one = Built { body_points: vec![body_point], ..b };
-    check_work(&one, n)?;
+    check_work(&one, n, passes)?;
     let norm = |v: &[f64; 3]| v.iter().map(|x| x * x).sum::<f64>().sqrt();
     let (kind, degree, segments) = (one.motion.method().kind(), one.motion.max_degree(), one.motion.segments().len());
     let at = move |i: usize| {

@@ -9,9 +9,12 @@
 //! finite differences): the linear speed is `|v|` of eq. (14) at the current position of the
 //! body point, the angular speed `|Ω|` of `ν = Ω e123 + u einf` (Theorem 3.2).
 
+use crate::budget::Tableau;
 use crate::error::CliError;
 use crate::hermite::{build_segment, read_spec};
-use crate::output::{Streamed, mv_human, mv_json, table_line, table_rule, text_table};
+#[cfg(test)]
+use crate::output::text_table;
+use crate::output::{Streamed, mv_human, mv_json, table_line, table_rule};
 use crate::scalar::format_f64;
 use motion::schema::InterpolateSpec;
 use motion::spec::HermiteSpec;
@@ -129,17 +132,17 @@ pub(crate) fn checked(sample: Sample) -> Result<Sample, CliError> {
 
 /// Reads the spec at `path` and samples its segment at `n` parameter values.
 pub(crate) fn sample_spec(path: &str, n: usize) -> Result<Sampled, CliError> {
-    sampler(path, &SampleSpec::read(path)?, n)?.collect()
+    sampler(path, &SampleSpec::read(path)?, n, 1)?.collect()
 }
 
-/// Checks the work of `n` samples of a spec (`label` names it in messages) and returns its
-/// sampler.
-pub(crate) fn sampler(label: &str, spec: &SampleSpec, n: usize) -> Result<Sampler, CliError> {
+/// Checks the work of `passes` passes over `n` samples of a spec (`label` names it in
+/// messages) and returns its sampler.
+pub(crate) fn sampler(label: &str, spec: &SampleSpec, n: usize, passes: usize) -> Result<Sampler, CliError> {
     if !(2..=MAX_SAMPLES).contains(&n) {
         return Err(CliError::usage(format!("`--samples` must be an integer from 2 to {MAX_SAMPLES} (got {n})")));
     }
     let spec = match spec {
-        SampleSpec::Interpolate(spec) => return crate::interpolate::spec_sampler(label, spec, n),
+        SampleSpec::Interpolate(spec) => return crate::interpolate::spec_sampler(label, spec, n, passes),
         SampleSpec::Hermite(spec) => spec,
     };
     let body_point = spec.body_point.unwrap_or([0.0; 3]);
@@ -149,7 +152,9 @@ pub(crate) fn sampler(label: &str, spec: &SampleSpec, n: usize) -> Result<Sample
     let seg = build_segment(spec)?;
     let (kind, degree) = (seg.kind(), seg.degree());
     // building the segment is O(degree); sampling it is O(samples x degree^2)
-    crate::budget::check(&format!("sampling degree {degree} at {n} values"), crate::budget::sampling_work(degree, n))?;
+    let tableau = if kind == SegmentKind::Multiplicative { Tableau::Slerp } else { Tableau::Linear };
+    let work = crate::budget::sampling_work(tableau, degree, n, passes);
+    crate::budget::check(&format!("sampling degree {degree} at {n} values"), work)?;
     let curve = |e: motion::CurveError| CliError::math(e.to_string());
     let motion: AnyMotion<f64> = seg.into_motion().map_err(curve)?;
     let last = (n - 1) as f64;
@@ -184,7 +189,7 @@ fn one_json(x: &Sample) -> Value {
 /// `gam sample --json` of a spec (`label` names it in messages): streamed by the CLI in
 /// bounded memory, or taken as one value by another front door ([`Streamed::into_value`]).
 pub fn sample_json<'a>(label: &str, spec: &SampleSpec, n: usize) -> Result<Streamed<'a>, CliError> {
-    let s = sampler(label, spec, n)?;
+    let s = sampler(label, spec, n, 2)?;
     Ok(Streamed { head: json!({}), n: s.n, sample: Box::new(move |i| Ok(one_json(&(s.at)(i)?))) })
 }
 
@@ -220,7 +225,7 @@ pub fn sample(path: &str, n: usize, json: bool) -> Result<String, CliError> {
     if json {
         return sample_json(path, &spec, n)?.stream();
     }
-    let s = sampler(path, &spec, n)?;
+    let s = sampler(path, &spec, n, 2)?;
     write_text(s, &mut std::io::BufWriter::new(std::io::stdout().lock())).map_err(|e| match e {
         TextError::Cli(e) => e,
         TextError::Io(e) => write_error(e),
@@ -295,7 +300,7 @@ mod tests {
             for n in [2, 7, 101] {
                 let mut streamed = Vec::new();
                 let spec = SampleSpec::read(path).unwrap();
-                assert!(write_text(sampler(path, &spec, n).unwrap(), &mut streamed).is_ok());
+                assert!(write_text(sampler(path, &spec, n, 2).unwrap(), &mut streamed).is_ok());
                 let want = sample_text(path, n).unwrap() + "\n";
                 assert_eq!(String::from_utf8(streamed).unwrap(), want, "{path}, {n} samples");
             }

@@ -16,6 +16,7 @@
 //! as the shape factors vary ([`control_arcs`]).
 
 use super::{Figure, SAMPLES};
+use crate::budget::Tableau;
 use crate::error::CliError;
 use crate::plot::data::{Mark, Series, Shape, evenly, of_motion};
 use crate::plot::draw::View;
@@ -40,8 +41,10 @@ fn math<E: std::fmt::Display>(what: &str) -> impl Fn(E) -> CliError + '_ {
 fn segment(label: String, spec: &HermiteSpec, frames: usize) -> Result<Series, CliError> {
     let seg = spec.segment().map_err(math("the Sec. 5 segment"))?;
     let method = seg.kind().to_string();
+    let multiplicative = seg.kind() == SegmentKind::Multiplicative;
+    let tableau = if multiplicative { Tableau::Slerp } else { Tableau::Linear };
     let motion = seg.into_motion().map_err(math("the Sec. 5 segment"))?;
-    let shape = Shape { label, method, segments: 1, degree: 3, key_times: vec![0.0, 1.0], joins: vec![] };
+    let shape = Shape { label, method, segments: 1, degree: 3, tableau, key_times: vec![0.0, 1.0], joins: vec![] };
     of_motion(shape, &motion, vec![[0.0; 3]], SAMPLES, frames)
 }
 
@@ -58,6 +61,7 @@ fn jaklic_motion(lambda: f64, blocks: bool) -> Result<Series, CliError> {
         method: "additive".into(),
         segments: 8,
         degree: 3,
+        tableau: Tableau::Linear,
         joins: times[1..8].to_vec(),
         key_times: times,
     };

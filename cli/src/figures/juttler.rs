@@ -169,6 +169,7 @@ fn built(
         method: method.name().to_string(),
         segments: m.segments().len(),
         degree: m.max_degree(),
+        tableau: crate::interpolate::tableau(&m),
         key_times: m.times().to_vec(),
         joins: m.segments().iter().skip(1).map(|s| s.t0).collect(),
     };
@@ -212,6 +213,7 @@ pub(crate) fn all(format: Format) -> Result<Vec<Drawn>, CliError> {
         method: "projective + TR".into(),
         segments: 1,
         degree: proj.degree(),
+        tableau: crate::budget::Tableau::Rational,
         key_times: t,
         joins: vec![],
     };

@@ -41,6 +41,7 @@ fn sec4(label: &str, gamma: Option<[f64; 2]>) -> Result<Series, CliError> {
         method: label.to_string(),
         segments: 2,
         degree: 3,
+        tableau: crate::budget::Tableau::Linear,
         key_times: vec![0.0, 1.0, 2.0],
         joins: vec![1.0],
     };

@@ -54,6 +54,7 @@ fn series<M: motion::MapScalar<f64, motion::algebra_core::Jet<motion::algebra_co
         method: label.into(),
         segments: times.len() - 1,
         degree: 0,
+        tableau: crate::budget::Tableau::Linear,
         joins: if joins { times[1..times.len() - 1].to_vec() } else { vec![] },
         key_times: times,
     };

@@ -14,6 +14,7 @@
 //! hexanion) cannot be redrawn from them: plot their `gam interpolate` spec instead.
 
 use super::data::{Series, Shape, of_motion};
+use crate::budget::Tableau;
 use crate::error::CliError;
 use crate::interpolate::usage;
 use motion::schema::ControlSpec;
@@ -32,6 +33,7 @@ pub(crate) fn series(path: &str, spec: &Value, name: &str, n: usize, k: usize) -
         method: kind.clone(),
         segments: segments.len(),
         degree: segments.iter().map(|s| s.control_poses.len() - 1).max().unwrap_or(0),
+        tableau: if kind == "multiplicative-bezier" { Tableau::Slerp } else { Tableau::Linear },
         key_times: breaks.clone(),
         joins: breaks[1..breaks.len() - 1].to_vec(),
     };

@@ -153,6 +153,7 @@ fn interpolated(path: &str, n: usize, k: usize) -> Result<Series, CliError> {
         method,
         segments: m.segments().len(),
         degree: m.max_degree(),
+        tableau: crate::interpolate::tableau(m),
         key_times: m.times().to_vec(),
         joins: m.segments().iter().skip(1).map(|s| s.t0).collect(),
     };
@@ -169,6 +170,8 @@ pub(crate) struct Shape {
     pub segments: usize,
     /// [`Series::degree`].
     pub degree: usize,
+    /// What a sample evaluates (for the work estimate).
+    pub tableau: crate::budget::Tableau,
     /// [`Series::key_times`] (the first and last are the parameter range).
     pub key_times: Vec<f64>,
     /// [`Series::joins`].
@@ -188,7 +191,7 @@ pub(crate) fn of_motion<M: MapScalar<f64, Jet<Jet<f64>>>>(
     let degree = shape.degree;
     crate::budget::check(
         &format!("plotting {} body points of degree-{degree} segments at {n} values", body_points.len()),
-        crate::budget::sampling_work(degree, n + k) * body_points.len().max(1) as f64,
+        crate::budget::sampling_work(shape.tableau, degree, n + k, 1) * body_points.len().max(1) as f64,
     )?;
     let key_times = shape.key_times;
     let (t0, t1) = (key_times[0], key_times[key_times.len() - 1]);

@@ -1,0 +1,130 @@
+//! The work estimates of `GAM_WORK_BUDGET` against the time the work takes (issue 30, item 3):
+//! for each case the `gam` binary is run once with a budget of one unit, which refuses the
+//! work and names its estimate ("needs about X units of work"), and once with the budget
+//! raised, timed. The estimate promises `X / UNITS_PER_SECOND` seconds on one core; the report
+//! prints that, the measured time and their ratio, and fails (exit 1) when a case is
+//! off by more than 2x either way. Cases: multiplicative segments through `gam sample`
+//! (dual numbers), `gam plot` (second-order dual numbers) and `gam interpolate` (the
+//! sampler), additive ones, and the other methods' samples (Wareham–Lasenby, Jüttler's
+//! rational motions).
+//!
+//! ```text
+//! cargo bench -p gam --bench work_estimate
+//! ```
+#![allow(missing_docs)]
+
+use std::process::Command;
+use std::time::Instant;
+
+/// A Hermite spec of `kind` and `degree` (the contract's example end conditions).
+fn hermite(kind: &str, degree: usize) -> String {
+    format!(
+        r#"{{"kind": "{kind}", "degree": {degree},
+  "start": {{"position": [0,0,0], "axis": [0,0,1], "angle": 0, "velocity": [1,1,1], "angular_velocity": [1,2,3]}},
+  "end": {{"position": [8,10,12], "axis": [1,2,3], "angle": 1.959, "velocity": [1,5,3], "angular_velocity": [2,1,1]}}}}"#
+    )
+}
+
+/// A `gam interpolate` spec of `method` through `m` key poses on a helix, sampled `n` times.
+fn interpolate(method: &str, m: usize, n: usize) -> String {
+    let poses: Vec<String> = (0..m)
+        .map(|i| {
+            let a = i as f64 * 0.4;
+            format!(
+                r#"{{"position": [{}, {}, {}], "axis": [0, 0.3, 1], "angle": {a}}}"#,
+                3.0 * a.cos(),
+                3.0 * a.sin(),
+                0.2 * a
+            )
+        })
+        .collect();
+    format!(r#"{{"method": "{method}", "poses": [{}], "samples": {n}}}"#, poses.join(", "))
+}
+
+struct Case {
+    name: String,
+    spec: String,
+    args: Vec<String>,
+}
+
+fn case(name: &str, spec: String, args: &[&str]) -> Case {
+    Case { name: name.to_string(), spec, args: args.iter().map(|s| s.to_string()).collect() }
+}
+
+fn run(args: &[String], budget: &str) -> (bool, String, f64) {
+    let start = Instant::now();
+    let out =
+        Command::new(env!("CARGO_BIN_EXE_gam")).env("GAM_WORK_BUDGET", budget).args(args).output().expect("gam runs");
+    let secs = start.elapsed().as_secs_f64();
+    (out.status.success(), String::from_utf8_lossy(&out.stderr).into_owned(), secs)
+}
+
+fn main() {
+    let dir = std::env::temp_dir().join(format!("gam-work-estimate-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let svg = dir.join("out.svg").to_string_lossy().into_owned();
+    let cases = vec![
+        case("sample, multiplicative, degree 100", hermite("multiplicative", 100), &["sample", "--samples", "1000"]),
+        case("sample, multiplicative, degree 400", hermite("multiplicative", 400), &["sample", "--samples", "60"]),
+        case("sample, additive, degree 400", hermite("additive", 400), &["sample", "--samples", "2000"]),
+        case(
+            "plot, multiplicative, degree 100",
+            hermite("multiplicative", 100),
+            &["plot", "--out", &svg, "--samples", "300"],
+        ),
+        case(
+            "plot, multiplicative, degree 400",
+            hermite("multiplicative", 400),
+            &["plot", "--out", &svg, "--samples", "20"],
+        ),
+        case(
+            "interpolate, ccm-multiplicative, 40 poses",
+            interpolate("ccm-multiplicative", 40, 20000),
+            &["interpolate", "--json"],
+        ),
+        case("interpolate, ccm-additive, 40 poses", interpolate("ccm-additive", 40, 20000), &["interpolate", "--json"]),
+        case("interpolate text, ccm-multiplicative", interpolate("ccm-multiplicative", 40, 20000), &["interpolate"]),
+        case("interpolate, wl-quadratic, 40 poses", interpolate("wl-quadratic", 40, 20000), &["interpolate", "--json"]),
+        case(
+            "interpolate, juttler-spline, 40 poses",
+            interpolate("juttler-spline", 40, 20000),
+            &["interpolate", "--json"],
+        ),
+        case(
+            "plot, ccm-multiplicative, 40 poses",
+            interpolate("ccm-multiplicative", 40, 0),
+            &["plot", "--out", &svg, "--samples", "20000"],
+        ),
+    ];
+    let per_second = gam::budget::UNITS_PER_SECOND;
+    println!("work estimates against measured time (UNITS_PER_SECOND = {per_second:.0e}):");
+    println!("  {:<44} {:>11} {:>11} {:>11} {:>8}", "case", "estimate", "promised s", "measured s", "ratio");
+    let mut bad = Vec::new();
+    for (i, c) in cases.iter().enumerate() {
+        let file = dir.join(format!("spec{i}.json"));
+        std::fs::write(&file, &c.spec).unwrap();
+        let mut args = c.args.clone();
+        args.insert(1, file.to_string_lossy().into_owned());
+        let (ok, stderr, _) = run(&args, "1");
+        let units: f64 = match (ok, stderr.split("needs about ").nth(1)) {
+            (false, Some(rest)) => rest.split_whitespace().next().and_then(|x| x.parse().ok()).expect("an estimate"),
+            _ => panic!("{}: the budget of one unit did not refuse: {stderr}", c.name),
+        };
+        let (ok, stderr, secs) = run(&args, "1e15");
+        assert!(ok, "{}: {stderr}", c.name);
+        let promised = units / per_second;
+        let ratio = secs / promised;
+        let mark = if (0.5..=2.0).contains(&ratio) {
+            ""
+        } else {
+            bad.push(c.name.clone());
+            "OFF"
+        };
+        println!("  {:<44} {units:>11.2e} {promised:>11.2} {secs:>11.2} {ratio:>7.2}x {mark}", c.name);
+    }
+    std::fs::remove_dir_all(&dir).ok();
+    if !bad.is_empty() {
+        eprintln!("estimates off by more than 2x: {}", bad.join(", "));
+        std::process::exit(1);
+    }
+}
