@@ -5,8 +5,10 @@
 //! prints that, the measured time and their ratio, and fails (exit 1) when a case is
 //! off by more than 2x either way. Cases: multiplicative segments through `gam sample`
 //! (dual numbers), `gam plot` (second-order dual numbers) and `gam interpolate` (the
-//! sampler), additive ones, and the other methods' samples (Wareham–Lasenby, Jüttler's
-//! rational motions).
+//! sampler), additive ones, the other methods' samples (Wareham–Lasenby, Jüttler's rational
+//! motions), and the builds of Jüttler's global interpolants (`juttler-trt` is not among
+//! them: its interpolant fails the key-pose check from about 20 poses, before its build
+//! takes measurable time; its constant comes from a 30-pose run, 0.18 s for 0.14 s promised).
 //!
 //! ```text
 //! cargo bench -p gam --bench work_estimate
@@ -94,6 +96,16 @@ fn main() {
             "plot, ccm-multiplicative, 40 poses",
             interpolate("ccm-multiplicative", 40, 0),
             &["plot", "--out", &svg, "--samples", "20000"],
+        ),
+        case(
+            "interpolate, juttler-q-motion, 45 poses (build)",
+            interpolate("juttler-q-motion", 45, 0),
+            &["interpolate", "--json"],
+        ),
+        case(
+            "interpolate, juttler-minimal, 40 poses (build)",
+            interpolate("juttler-minimal", 40, 0),
+            &["interpolate", "--json"],
         ),
     ];
     let per_second = gam::budget::UNITS_PER_SECOND;

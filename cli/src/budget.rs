@@ -164,6 +164,29 @@ pub fn sampling_work(tableau: Tableau, degree: usize, samples: usize, passes: us
     (passes * samples) as f64 * (tableau.units_per_entry() * d * d + tableau.units_per_sample())
 }
 
+/// The work of building one of Jüttler's global interpolants (`juttler-q-motion`,
+/// `juttler-trt`, `juttler-minimal`: one curve through all `m` key poses, degree growing with
+/// `m`) before it is built: `c m⁴` units, `c` per method, measured as [`Tableau`]'s units
+/// (the collocation and the check that the result hits every key pose). `None` for the other
+/// methods, whose build is linear in `m`.
+///
+/// ```
+/// use gam::budget::global_build_work;
+/// use motion::method::Method;
+/// assert_eq!(global_build_work(Method::JuttlerQMotion, 10), Some(1e4));
+/// assert_eq!(global_build_work(Method::CcmAdditive, 10), None);
+/// ```
+pub fn global_build_work(method: motion::method::Method, m: usize) -> Option<f64> {
+    use motion::method::Method;
+    let c = match method {
+        Method::JuttlerQMotion => 1.0,
+        Method::JuttlerTrt => 0.5,
+        Method::JuttlerMinimal => 2.5,
+        _ => return None,
+    };
+    Some(c * (m as f64).powi(4))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -59,6 +59,10 @@ pub(crate) fn read_text(label: &str, text: &str) -> Result<Option<InterpolateSpe
 
 /// Builds a checked spec (`label` names it in messages).
 pub(crate) fn build(label: &str, spec: &InterpolateSpec) -> Result<Built, CliError> {
+    let m = spec.poses.len();
+    if let Some(work) = crate::budget::global_build_work(spec.method, m) {
+        crate::budget::check(&format!("building {} through {m} key poses", spec.method.name()), work)?;
+    }
     let motion = spec.build().map_err(|e| schema_error(label, e))?;
     Ok(Built { motion, body_points: spec.body_points(), samples: spec.samples })
 }

@@ -157,3 +157,23 @@ fn prove_honours_its_timeout_in_every_phase() {
     assert!(one_error_line(&args, &String::from_utf8_lossy(&out.stderr)).contains("basis size"));
     fails(&["prove", "--max-terms", "0", "x = x"], 2);
 }
+
+/// Jüttler's global interpolants (one curve through all key poses) are estimated before they
+/// are built: 400 key poses through `juttler-q-motion` ran past 600 s; now refused at once.
+#[test]
+fn global_juttler_builds_are_estimated_before_the_build() {
+    let poses: Vec<String> = (0..400)
+        .map(|i| format!(r#"{{"position": [{}, {}, 0], "axis": [0, 0, 1], "angle": {}}}"#, i % 7, i % 5, i % 3))
+        .collect();
+    for method in ["juttler-q-motion", "juttler-trt", "juttler-minimal"] {
+        let spec = format!(r#"{{"method": "{method}", "poses": [{}]}}"#, poses.join(", "));
+        let f = TempFile::new(&format!("global-{method}.json"), &spec);
+        let start = std::time::Instant::now();
+        let line = fails(&["interpolate", f.path()], 2);
+        assert!(
+            line.contains(&format!("building {method} through 400 key poses")) && line.contains("GAM_WORK_BUDGET"),
+            "{line}"
+        );
+        assert!(start.elapsed().as_secs_f64() < 10.0, "{method}: refused only after {:?}", start.elapsed());
+    }
+}
