@@ -186,6 +186,9 @@ fn every_pose_refusal_is_typed_with_the_cli_message() {
     );
     refused(json!({"axis": [0, 0, 1], "angle": "1"}), shape("angle", "a number"), "`poses[4].angle` must be a number");
     refused(json!({"axis": [0, 0, 1]}), PoseError::AxisWithoutAngle, "`poses[4]`: `axis` and `angle` go together");
+    // the identity rotation as `gam pose` prints it (axis [0, 0, 0], angle 0) reads back
+    let identity = PoseObject::from_value(&json!({"position": [1, 2, 3], "axis": [0, 0, 0], "angle": 0})).unwrap();
+    assert_eq!(identity.to_pose().unwrap(), Pose::translation(&[1.0, 2.0, 3.0]));
     let e = PoseObject::from_value(&json!({"axis": [0, 0, 0], "angle": 1})).unwrap().to_pose().unwrap_err();
     assert_eq!(e, PoseError::Axis(motion::MotionError::ZeroAxis));
     assert_eq!(e.at("poses[0]").to_string(), "`poses[0].axis`: the rotation axis has length zero");

@@ -58,7 +58,8 @@ pub enum PoseObject {
     AxisAngle {
         /// The translation applied after the rotation.
         position: [f64; 3],
-        /// The rotation axis (normalised; not zero).
+        /// The rotation axis (normalised; not zero, except `[0, 0, 0]` with angle 0: the
+        /// identity rotation, as `gam pose` prints it).
         axis: [f64; 3],
         /// The angle in radians, right-handed.
         angle: f64,
@@ -294,6 +295,11 @@ impl PoseObject {
         };
         match self {
             PoseObject::Translation { position } => {
+                finite_position(position)?;
+                Ok(Pose::translation(position))
+            }
+            // `gam pose` prints the identity rotation as axis [0, 0, 0], angle 0: it reads back
+            PoseObject::AxisAngle { position, axis: [0.0, 0.0, 0.0], angle: 0.0 } => {
                 finite_position(position)?;
                 Ok(Pose::translation(position))
             }

@@ -1,0 +1,160 @@
+//! Fuzzing that checks values (issue 30, item 5): random good inputs to `gam pose` and to
+//! `gam interpolate` with every method, each run under a memory cap (`ulimit -v`, 4 GB) and
+//! a timeout, and every result checked against invariants that need no oracle:
+//!
+//! - `gam pose`: the matrix is rigid, and every representation it prints, read back as a pose
+//!   object (position + axis + angle, position + quaternion, matrix, motor, dual quaternion,
+//!   hexanion), gives the same matrix;
+//! - `gam interpolate --json`, every method: every sampled matrix is rigid, the motion hits
+//!   every key pose at its parameter (Rodrigues' matrix of the key pose, computed here), and the
+//!   body points' positions are the matrices applied to them.
+//!
+//! The counts of inputs and checks are printed (`--nocapture`) and in docs/robustness.md.
+
+mod common;
+
+use algebra_core::test_support::Xorshift;
+use common::{TempFile, rodrigues};
+use serde_json::Value;
+use std::process::Command;
+
+/// `gam ARGS` under `ulimit -v` (4 GB) and the contract's timeout; exit 0 required.
+fn gam_capped(args: &[&str]) -> Value {
+    let mut cmd = Command::new("sh");
+    cmd.arg("-c").arg("ulimit -v 4000000 && exec \"$0\" \"$@\"").arg(env!("CARGO_BIN_EXE_gam")).args(args);
+    let out = cmd.output().expect("run gam under sh");
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "gam {args:?}: {stderr}");
+    serde_json::from_slice(&out.stdout).unwrap_or_else(|e| panic!("gam {args:?}: not JSON ({e})"))
+}
+
+fn num(v: &Value) -> f64 {
+    v.as_f64().unwrap_or_else(|| v.as_str().and_then(|s| s.parse().ok()).unwrap_or_else(|| panic!("not a number: {v}")))
+}
+
+fn matrix(v: &Value) -> [[f64; 4]; 4] {
+    std::array::from_fn(|i| std::array::from_fn(|j| num(&v[i][j])))
+}
+
+/// Orthonormal rotation block (to `1e-12`), determinant +1, bottom row `[0, 0, 0, 1]` exactly.
+fn assert_rigid(m: &[[f64; 4]; 4], what: &str) {
+    for i in 0..3 {
+        for j in 0..3 {
+            let dot: f64 = (0..3).map(|k| m[k][i] * m[k][j]).sum();
+            let want = if i == j { 1.0 } else { 0.0 };
+            assert!((dot - want).abs() < 1e-12, "{what}: columns {i}, {j} give {dot}");
+        }
+    }
+    let det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+        + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+    assert!((det - 1.0).abs() < 1e-12, "{what}: det {det}");
+    assert_eq!(m[3], [0.0, 0.0, 0.0, 1.0], "{what}");
+}
+
+fn max_diff(a: &[[f64; 4]; 4], b: &[[f64; 4]; 4]) -> f64 {
+    (0..4).flat_map(|i| (0..4).map(move |j| (a[i][j] - b[i][j]).abs())).fold(0.0, f64::max)
+}
+
+/// A random key pose: axis, angle (edges 0 and π included), position.
+fn random_pose(rng: &mut Xorshift) -> ([f64; 3], f64, [f64; 3]) {
+    let axis = [rng.symmetric(), rng.symmetric(), rng.symmetric() + 0.05];
+    let angle = match rng.below(8) {
+        0 => 0.0,
+        1 => std::f64::consts::PI,
+        2 => 1e-9,
+        _ => 3.0 * rng.unit(),
+    };
+    (axis, angle, [4.0 * rng.symmetric(), 4.0 * rng.symmetric(), 4.0 * rng.symmetric()])
+}
+
+fn pose_json((axis, angle, p): &([f64; 3], f64, [f64; 3])) -> String {
+    format!(r#"{{"position": {p:?}, "axis": {axis:?}, "angle": {angle:?}}}"#)
+}
+
+#[test]
+fn pose_representations_round_trip() {
+    let mut rng = Xorshift(0x0ddb_a11c_afe5_eed5);
+    let (mut inputs, mut checks) = (0, 0);
+    for _ in 0..25 {
+        let key = random_pose(&mut rng);
+        let out = gam_capped(&["pose", "--json", &pose_json(&key)]);
+        inputs += 1;
+        let m = matrix(&out["matrix"]);
+        assert_rigid(&m, "gam pose");
+        let want = rodrigues(key.0, key.1, key.2);
+        assert!(max_diff(&m, &want) < 1e-12 * 8.0, "{key:?}: {m:?} vs {want:?}");
+        let forms = [
+            format!(r#"{{"position": {}, "axis": {}, "angle": {}}}"#, out["position"], out["axis"], out["angle"]),
+            format!(r#"{{"position": {}, "quaternion": {}}}"#, out["position"], out["quaternion"]),
+            format!(r#"{{"matrix": {}}}"#, out["matrix"]),
+            format!(r#"{{"motor": {}}}"#, out["motor"]),
+            format!(r#"{{"dual_quaternion": {}}}"#, out["dual_quaternion"]),
+            format!(r#"{{"hexanion": {}}}"#, out["hexanion"]),
+        ];
+        for form in &forms {
+            let back = matrix(&gam_capped(&["pose", "--json", form])["matrix"]);
+            inputs += 1;
+            checks += 1;
+            assert!(max_diff(&back, &m) < 1e-12 * 8.0, "{form}: {back:?} vs {m:?}");
+        }
+    }
+    eprintln!("value fuzz gam pose: {inputs} inputs, {checks} round trips, 0 mismatches");
+}
+
+#[test]
+fn every_method_hits_its_key_poses_with_rigid_samples() {
+    let methods = [
+        "ccm-additive",
+        "ccm-multiplicative",
+        "wl-linear",
+        "wl-quadratic",
+        "hexanion-linear",
+        "juttler-q-motion",
+        "juttler-trt",
+        "juttler-spline",
+        "juttler-minimal",
+    ];
+    let mut rng = Xorshift(0x005e_ed0f_f00d_cafe);
+    let file = TempFile::empty("fuzz-values-spec.json");
+    let (mut inputs, mut hits, mut rigid) = (0, 0, 0);
+    let body = [[0.5, -1.0, 2.0], [0.0, 0.0, 0.0]];
+    for round in 0..3 {
+        for method in methods {
+            let m = 4 + (round % 2);
+            let keys: Vec<_> = (0..m).map(|_| random_pose(&mut rng)).collect();
+            let poses: Vec<String> = keys.iter().map(pose_json).collect();
+            let n = 4 * (m - 1) + 1;
+            let spec = format!(
+                r#"{{"method": "{method}", "poses": [{}], "samples": {n}, "body_points": {body:?}}}"#,
+                poses.join(", ")
+            );
+            std::fs::write(file.path(), &spec).unwrap();
+            let out = gam_capped(&["interpolate", "--json", file.path()]);
+            inputs += 1;
+            let params: Vec<f64> = out["parameters"].as_array().unwrap().iter().map(num).collect();
+            for s in out["samples"].as_array().unwrap() {
+                let mx = matrix(&s["matrix"]);
+                assert_rigid(&mx, &format!("{method} at t = {}", s["t"]));
+                rigid += 1;
+                for (b, p) in body.iter().zip(s["points"].as_array().unwrap()) {
+                    let image: [f64; 3] =
+                        std::array::from_fn(|i| (0..3).map(|j| mx[i][j] * b[j]).sum::<f64>() + mx[i][3]);
+                    for i in 0..3 {
+                        assert!((image[i] - num(&p[i])).abs() < 1e-12 * 16.0, "{method}: point {b:?}");
+                    }
+                }
+                if let Some(k) = params.iter().position(|t| *t == num(&s["t"])) {
+                    let want = rodrigues(keys[k].0, keys[k].1, keys[k].2);
+                    let d = max_diff(&mx, &want);
+                    assert!(d < 1e-9, "{method}: key pose {k} missed by {d} ({spec})");
+                    hits += 1;
+                }
+            }
+        }
+    }
+    assert!(hits >= inputs * 4, "{hits} key poses checked in {inputs} runs");
+    eprintln!(
+        "value fuzz gam interpolate: {inputs} inputs over {} methods, {rigid} rigid samples, {hits} key poses hit, 0 mismatches",
+        methods.len()
+    );
+}
