@@ -103,17 +103,7 @@ fn pose_representations_round_trip() {
 
 #[test]
 fn every_method_hits_its_key_poses_with_rigid_samples() {
-    let methods = [
-        "ccm-additive",
-        "ccm-multiplicative",
-        "wl-linear",
-        "wl-quadratic",
-        "hexanion-linear",
-        "juttler-q-motion",
-        "juttler-trt",
-        "juttler-spline",
-        "juttler-minimal",
-    ];
+    let methods = motion::method::Method::ALL.map(|m| m.name());
     let mut rng = Xorshift(0x005e_ed0f_f00d_cafe);
     let file = TempFile::empty("fuzz-values-spec.json");
     let (mut inputs, mut hits, mut rigid) = (0, 0, 0);

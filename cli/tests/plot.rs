@@ -185,17 +185,7 @@ fn speeds_match_central_differences_of_the_path() {
 
 #[test]
 fn every_method_plots_in_every_view() {
-    let methods = [
-        "ccm-additive",
-        "ccm-multiplicative",
-        "wl-linear",
-        "wl-quadratic",
-        "hexanion-linear",
-        "juttler-q-motion",
-        "juttler-trt",
-        "juttler-minimal",
-        "juttler-spline",
-    ];
+    let methods = motion::method::Method::ALL.map(|m| m.name());
     for method in methods {
         let file = TempFile::new(&format!("plot-{method}.json"), &spec(method, false));
         for view in ["xy", "xz", "yz", "3d"] {

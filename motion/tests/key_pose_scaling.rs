@@ -9,18 +9,6 @@ use common::{Xorshift, centered};
 use motion::method::{Method, MethodInput};
 use motion::{Motion, Pose};
 
-const METHODS: [&str; 9] = [
-    "ccm-additive",
-    "ccm-multiplicative",
-    "wl-linear",
-    "wl-quadratic",
-    "hexanion-linear",
-    "juttler-q-motion",
-    "juttler-trt",
-    "juttler-minimal",
-    "juttler-spline",
-];
-
 fn key_poses(rng: &mut Xorshift, n: usize) -> Vec<Pose<f64>> {
     (0..n)
         .map(|_| {
@@ -46,8 +34,8 @@ fn scaled_key_poses_give_the_same_motion_in_every_method() {
     let mut rng = Xorshift(0xd1b5_4a32_d192_ed03);
     for round in 0..4 {
         let poses = key_poses(&mut rng, 3 + round % 2);
-        for name in METHODS {
-            let method: Method = name.parse().unwrap();
+        for method in Method::ALL {
+            let name = method.name();
             let want = sampled(method, &poses);
             for _ in 0..3 {
                 // λ_i = ±10^e, e in [-6, 6], a different one per key pose
