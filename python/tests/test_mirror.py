@@ -7,12 +7,12 @@ import math
 import gam
 import pytest
 
-# Floats: the extension and the binary run the same Rust code, and most results are
-# bit-identical; a few representations (gam pose's screw and hexanion, gam trajectory's
-# weights) were seen to differ in the last bit between the binary and the extension loaded
-# in Python, so numbers are compared to 4 ulps-ish (1e-15 relative) and everything else
-# (keys, strings that are not numbers, integers, booleans) exactly.
-REL = 1e-15
+# Floats: the extension and the binary run the same Rust code and, built with the same profile
+# (as .ci/run builds both, with the dev profile), give the same bits: numbers are compared
+# exactly. (The last-bit differences once seen in gam pose's screw and hexanion and gam
+# trajectory's weights came with an extension built at opt-level 3 against a binary at
+# opt-level 1; set GAM_BIN to a binary of the extension's profile.)
+REL = 0.0
 
 
 def close(a, b, at="$"):
