@@ -36,7 +36,7 @@ where
 /// `v` unless it holds a non-finite number: the binary's last guard before printing
 /// ([`crate::finite_guard`]), so both doors refuse the same results.
 fn finite(command: &str, v: Value) -> Result<Value, CliError> {
-    crate::finite_guard::finite_output(command, v.to_string()).map(|_| v)
+    crate::finite_guard::finite_value(command, &v).map(|()| v)
 }
 
 /// Command output (JSON text) as a value.

@@ -32,10 +32,33 @@ pub fn non_finite_token(out: &str) -> Option<&str> {
 pub fn finite_output(command: &str, out: String) -> Result<String, crate::error::CliError> {
     match non_finite_token(&out) {
         None => Ok(out),
-        Some(w) => Err(crate::error::CliError::math(format!(
-            "{command}: the result holds a non-finite number (`{w}`): overflow or an undefined value in the computation; nothing printed"
-        ))),
+        Some(w) => Err(refused(command, w)),
     }
+}
+
+/// [`finite_output`] for a JSON value (the library's door, `gam::api`): the same tokens, looked
+/// for in its strings without printing it (a JSON number is always finite: serde writes a
+/// non-finite `f64` as `null`).
+///
+/// ```
+/// use serde_json::json;
+/// assert!(gam::finite_guard::finite_value("pose", &json!({"e1inf": "2", "angle": 0.5})).is_ok());
+/// assert!(gam::finite_guard::finite_value("pose", &json!({"motor": {"e1": "-inf"}})).is_err());
+/// ```
+pub fn finite_value(command: &str, v: &serde_json::Value) -> Result<(), crate::error::CliError> {
+    use serde_json::Value;
+    match v {
+        Value::String(s) => non_finite_token(s).map_or(Ok(()), |w| Err(refused(command, w))),
+        Value::Array(xs) => xs.iter().try_for_each(|x| finite_value(command, x)),
+        Value::Object(m) => m.values().try_for_each(|x| finite_value(command, x)),
+        Value::Null | Value::Bool(_) | Value::Number(_) => Ok(()),
+    }
+}
+
+fn refused(command: &str, token: &str) -> crate::error::CliError {
+    crate::error::CliError::math(format!(
+        "{command}: the result holds a non-finite number (`{token}`): overflow or an undefined value in the computation; nothing printed"
+    ))
 }
 
 #[cfg(test)]

@@ -211,6 +211,17 @@ enum Command {
 /// Runs a command: its output and, for `verify`, the failure to report after printing it.
 fn run(command: Command) -> Result<(String, Option<CliError>), CliError> {
     let done = |out: String| (out, None);
+    // the numeric commands' last guard (finite_guard): one place for all of them; the streamed
+    // outputs (`sample`, `--json` samples) are checked sample by sample instead
+    let guarded = match &command {
+        Command::Eval { .. } => Some("eval"),
+        Command::Hermite { .. } => Some("hermite"),
+        Command::Interpolate { .. } => Some("interpolate"),
+        Command::Trajectory { .. } => Some("trajectory"),
+        Command::Pose { .. } => Some("pose"),
+        Command::Sample { .. } => Some("sample"),
+        _ => None,
+    };
     let out = match command {
         Command::Algebras { json, algebras } => commands::algebras(&algebras, json),
         Command::Eval { algebra, basis, scalar, json, expr } => {
@@ -218,25 +229,14 @@ fn run(command: Command) -> Result<(String, Option<CliError>), CliError> {
                 return result;
             }
             commands::eval(&commands::EvalArgs { algebra, basis, scalar, json, expr })
-                .and_then(|out| finite_guard::finite_output("eval", out))
         }
         Command::Table { algebra, basis, product, json } => commands::table(&algebra, basis, product, json),
         Command::Codegen(args) => codegen::codegen(&args),
-        Command::Hermite { json, spec } => {
-            hermite::hermite(&spec, json).and_then(|out| finite_guard::finite_output("hermite", out))
-        }
-        Command::Interpolate { json, spec } => {
-            interpolate::interpolate(&spec, json).and_then(|out| finite_guard::finite_output("interpolate", out))
-        }
-        Command::Trajectory { json, spec, point } => {
-            trajectory::trajectory(&spec, &point, json).and_then(|out| finite_guard::finite_output("trajectory", out))
-        }
-        Command::Pose { json, pose } => {
-            pose::pose(&pose, json).and_then(|out| finite_guard::finite_output("pose", out))
-        }
-        Command::Sample { samples, json, spec } => {
-            sample::sample(&spec, samples, json).and_then(|out| finite_guard::finite_output("sample", out))
-        }
+        Command::Hermite { json, spec } => hermite::hermite(&spec, json),
+        Command::Interpolate { json, spec } => interpolate::interpolate(&spec, json),
+        Command::Trajectory { json, spec, point } => trajectory::trajectory(&spec, &point, json),
+        Command::Pose { json, pose } => pose::pose(&pose, json),
+        Command::Sample { samples, json, spec } => sample::sample(&spec, samples, json),
         Command::Plot { out, format, samples, view, frames, body, json, specs } => {
             plot::plot(&plot::PlotArgs { specs: &specs, out: &out, format, samples, view, frames, body, json })
         }
@@ -249,7 +249,10 @@ fn run(command: Command) -> Result<(String, Option<CliError>), CliError> {
             return verify::verify(filter.as_deref(), json).map(|v| (v.output, v.failure));
         }
     };
-    out.map(done)
+    match guarded {
+        Some(name) => out.and_then(|out| finite_guard::finite_output(name, out)).map(done),
+        None => out.map(done),
+    }
 }
 
 /// clap's error as one `error:` line (help and version requests are printed as usual).
