@@ -26,6 +26,7 @@
 //! assert_eq!(s.transform_point(&[q(1), q(2), q(3)]).unwrap(), [q(-2), q(1), q(3)]);
 //! ```
 
+use crate::repr::vec3::cross;
 use crate::{MotionError, Pose};
 use algebra_core::{Field, Ring};
 
@@ -93,12 +94,6 @@ impl<T: Ring> Pose<T> {
 }
 
 impl<T: Ring> Pose<T> {
-    /// `α = S∅² + S12² + S13² + S23²`, the scalar part of `rev(S) S` (eq. 5).
-    pub(crate) fn alpha(&self) -> T {
-        let s = self;
-        s.scalar.mul_ref(&s.scalar) + &s.e12.mul_ref(&s.e12) + &s.e13.mul_ref(&s.e13) + &s.e23.mul_ref(&s.e23)
-    }
-
     /// `F_S(p)` given `inv = 1/α`, by the fewest operations: with `v = (S23, -S13, S12)` (so
     /// that `rev(S) x S` rotates like the quaternion `S∅ + v`), `c = (S1∞, S2∞, S3∞)` and
     /// `m = v × p + c`, eqs. (6)-(9) regroup as `α F_S(p) = α p + 2(S∅ m + v × m + Sω v)`:
@@ -134,7 +129,7 @@ impl<T: Field> Pose<T> {
     /// ```
     pub fn transform_point(&self, p: &[T; 3]) -> Result<[T; 3], MotionError> {
         let alpha = self.alpha();
-        if tame(&alpha) {
+        if crate::scaled::tame(&alpha) {
             // tame: non-zero, and for floats 1/α is a normal number
             let out = self.image_with(p, &T::one().div_ref(&alpha));
             if out.iter().all(Ring::is_finite_value) {
@@ -175,28 +170,3 @@ impl<T: Field> Pose<T> {
         if out.iter().all(Ring::is_finite_value) { Ok(out) } else { Err(self.overflow("transform_direction")) }
     }
 }
-
-/// `x × y`.
-fn cross<T: Ring>(x: &[T; 3], y: &[T; 3]) -> [T; 3] {
-    [
-        x[1].mul_ref(&y[2]).sub_ref(&x[2].mul_ref(&y[1])),
-        x[2].mul_ref(&y[0]).sub_ref(&x[0].mul_ref(&y[2])),
-        x[0].mul_ref(&y[1]).sub_ref(&x[1].mul_ref(&y[0])),
-    ]
-}
-
-/// Whether `α = rev(S) S`'s scalar part can be divided by without care: non-zero for exact
-/// scalars; for fixed-precision scalars within `2^±500`, so that no product of the direct
-/// action over- or underflows for poses and points of ordinary size.
-pub(crate) fn tame<T: Ring>(alpha: &T) -> bool {
-    if T::relative_epsilon() == 0.0 {
-        return !alpha.is_exact_zero();
-    }
-    let m = alpha.magnitude();
-    (TAME_LO..TAME_HI).contains(&m)
-}
-
-/// `2^-500`.
-const TAME_LO: f64 = 3.054936363499605e-151;
-/// `2^500`.
-const TAME_HI: f64 = 3.273390607896142e150;

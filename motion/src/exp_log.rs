@@ -163,7 +163,7 @@ impl<T: Real> Pose<T> {
         }
         let n2 = self.pseudo_norm_squared();
         let alpha = &n2.scalar;
-        if !crate::action::tame(alpha) || !is_positive(alpha) {
+        if !crate::scaled::tame(alpha) || !is_positive(alpha) {
             return None;
         }
         // one division: 1/√α, and β/(2α) = ½ β (1/√α)²

@@ -158,10 +158,16 @@ impl<T: Ring> Pose<T> {
     /// ```
     pub fn pseudo_norm_squared(&self) -> Pseudoscalar<T> {
         let s = self;
-        let alpha = s.scalar.mul_ref(&s.scalar) + s.e12.mul_ref(&s.e12) + s.e13.mul_ref(&s.e13) + s.e23.mul_ref(&s.e23);
         let half_beta =
             s.scalar.mul_ref(&s.e123inf) - s.e12.mul_ref(&s.e3inf) + s.e13.mul_ref(&s.e2inf) - s.e23.mul_ref(&s.e1inf);
-        Pseudoscalar::new(alpha, half_beta.add_ref(&half_beta))
+        Pseudoscalar::new(self.alpha(), half_beta.add_ref(&half_beta))
+    }
+
+    /// `α = S∅² + S12² + S13² + S23²`, the scalar part of [`Pose::pseudo_norm_squared`] alone
+    /// (what the point action divides by).
+    pub(crate) fn alpha(&self) -> T {
+        let s = self;
+        s.scalar.mul_ref(&s.scalar) + s.e12.mul_ref(&s.e12) + s.e13.mul_ref(&s.e13) + s.e23.mul_ref(&s.e23)
     }
 
     /// True when `S` is exactly singular: the scalar part of `rev(S) S` is exactly zero, so

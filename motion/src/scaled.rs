@@ -10,6 +10,22 @@ use algebra_core::{Real, Ring};
 /// `rev(S) S` then stay far inside f64's normal range.
 const TAME_LOG2: i32 = 250;
 
+/// Whether `α = rev(S) S`'s scalar part can be divided by without care: non-zero for exact
+/// scalars; for fixed-precision scalars within `2^±(2·TAME_LOG2)` (the square of a tame
+/// rotational part), so that no product of the direct paths of `Pose::transform_point` and
+/// `Pose::log` over- or underflows for poses and points of ordinary size.
+pub(crate) fn tame<T: Ring>(alpha: &T) -> bool {
+    if T::relative_epsilon() == 0.0 {
+        return !alpha.is_exact_zero();
+    }
+    (TAME_ALPHA_LO..TAME_ALPHA_HI).contains(&alpha.magnitude())
+}
+
+/// `2^(-2·TAME_LOG2)`, exactly.
+const TAME_ALPHA_LO: f64 = f64::from_bits(((1023 - 2 * TAME_LOG2) as u64) << 52);
+/// `2^(2·TAME_LOG2)`, exactly.
+const TAME_ALPHA_HI: f64 = f64::from_bits(((1023 + 2 * TAME_LOG2) as u64) << 52);
+
 /// `S · 2^-e` with `2^e` the scale of the rotational part `S∅, S12, S13, S23`, when `S` is of
 /// fixed precision (f64, f32, dual numbers) and far from unit scale; `None` for ordinary
 /// poses (one pass over the magnitudes), exact scalars, singular and non-finite poses. The

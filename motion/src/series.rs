@@ -133,19 +133,16 @@ pub(crate) fn log_factors_fixed<T: Real>(u0: &T, x: &T, s: &T, th: &T) -> (T, T)
     (th.mul_ref(&r), num.mul_ref(&r.mul_ref(&r).mul_ref(&r)))
 }
 
-/// `e^x` for types of at most `f64` precision: exactly 1 at `x = 0`; for `|x| < 2^-20` (the
-/// scalar part of the log of a unit pose, `ln α / 2` with `α` within rounding of 1) the cubic
-/// Taylor polynomial, whose first omitted term is below `2^-84` (and that of its derivative,
-/// for dual numbers, below `2^-62`); else the type's `exp`.
+/// `e^x` for types of at most `f64` precision: for `0 < |x| < 2^-20` (the scalar part of the
+/// log of a unit pose, `ln α / 2` with `α` within rounding of 1) the cubic Taylor polynomial,
+/// whose first omitted term is below `2^-84` (and that of its derivative, for dual numbers,
+/// below `2^-62`); else [`crate::exp_log::exp_scalar`] (exactly 1 at `x = 0`).
 #[inline]
 pub(crate) fn exp_fixed<T: Real>(x: &T) -> T {
-    if x.is_exact_zero() {
-        return T::one();
-    }
-    if x.to_f64().abs() < SMALL_X {
+    if !x.is_exact_zero() && x.to_f64().abs() < SMALL_X {
         return poly(&[1.0, 1.0, 0.5, 1.0 / 6.0], x);
     }
-    Real::exp(x)
+    crate::exp_log::exp_scalar(x)
 }
 
 /// `ln α` for types of at most `f64` precision: for `|α - 1| < 2^-20` (the norm of a unit

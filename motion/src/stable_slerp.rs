@@ -79,7 +79,7 @@ pub(crate) fn apex<T: Real>(poses: &[Pose<T>], t: &T) -> Result<Pose<T>, MotionE
     if let [single] = poses {
         return Ok(single.clone());
     }
-    crate::scaled::require_finite("slerp", &Pose::identity(), [t])?;
+    finite_parameter(t)?;
     let factored = poses.iter().map(Factored::new).collect::<Result<Vec<_>, _>>()?;
     Ok(apex_with(&factored, |a, b| a.slerp(b, t))?.expand())
 }
@@ -87,7 +87,7 @@ pub(crate) fn apex<T: Real>(poses: &[Pose<T>], t: &T) -> Result<Pose<T>, MotionE
 /// The whole slerp tableau (column 0 the control poses, column `k` the entries
 /// `S_{i..i+k}(t)`), every entry kept factored (module docs) and expanded for the output.
 pub(crate) fn tableau<T: Real>(poses: &[Pose<T>], t: &T) -> Result<Vec<Vec<Pose<T>>>, MotionError> {
-    crate::scaled::require_finite("slerp", &Pose::identity(), [t])?;
+    finite_parameter(t)?;
     let mut column = poses.iter().map(Factored::new).collect::<Result<Vec<_>, _>>()?;
     let mut columns = vec![poses.to_vec()];
     while column.len() > 1 {
@@ -105,8 +105,14 @@ pub(crate) fn de_boor<T: Real>(poses: &[Pose<T>], alpha: &dyn Fn(usize, usize) -
     }
     let factored = poses.iter().map(Factored::new).collect::<Result<Vec<_>, _>>()?;
     let apex = crate::bspline::de_boor_with(factored, alpha, |a, b, t| {
-        crate::scaled::require_finite("slerp", &Pose::identity(), [t])?;
+        finite_parameter(t)?;
         a.slerp(b, t)
     })?;
     Ok(apex.expand())
+}
+
+/// [`MotionError::NotFinite`] for a non-finite slerp parameter (any part, for dual numbers),
+/// naming the parameter: the tableaux check it once, not with every control pose.
+fn finite_parameter<T: Real>(t: &T) -> Result<(), MotionError> {
+    if t.is_finite_value() { Ok(()) } else { Err(MotionError::NotFinite { op: "slerp", value: t.to_string() }) }
 }

@@ -151,13 +151,8 @@ pub(crate) fn dot<T: Ring>(x: &[T; 3], y: &[T; 3]) -> T {
     x[0].mul_ref(&y[0]).add_ref(&x[1].mul_ref(&y[1])).add_ref(&x[2].mul_ref(&y[2]))
 }
 
-pub(crate) fn cross<T: Ring>(x: &[T; 3], y: &[T; 3]) -> [T; 3] {
-    [
-        x[1].mul_ref(&y[2]).sub_ref(&x[2].mul_ref(&y[1])),
-        x[2].mul_ref(&y[0]).sub_ref(&x[0].mul_ref(&y[2])),
-        x[0].mul_ref(&y[1]).sub_ref(&x[1].mul_ref(&y[0])),
-    ]
-}
+/// `x × y`: the one copy in the representations' vector helpers.
+pub(crate) use crate::repr::vec3::cross;
 
 /// `x/|x|` (divided by the largest component first), `None` for zero or non-finite `x`.
 pub(crate) fn unit<T: Real>(x: &[T; 3]) -> Option<[T; 3]> {
