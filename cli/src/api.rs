@@ -250,11 +250,7 @@ impl Motion {
     /// Refuses sampling `n` parameters at `points` body points beyond the work budget (the
     /// check of `gam interpolate`).
     pub fn check_work(&self, n: usize, points: usize) -> Result<(), CliError> {
-        let (degree, points) = (self.0.motion.max_degree(), points.max(1));
-        crate::budget::check(
-            &format!("sampling {points} body points of degree-{degree} segments at {n} values"),
-            crate::budget::sampling_work(crate::interpolate::tableau(&self.0.motion), degree, n, 1) * points as f64,
-        )
+        interpolate::check_sampling(&self.0.motion, points, n, 1)
     }
 
     /// The sample at `t` (within `[t_0, t_m]`) of `body_points`: the same numbers as the sample

@@ -123,6 +123,38 @@ pub enum Tableau {
 }
 
 impl Tableau {
+    /// The tableau of a Bézier segment of `kind`.
+    ///
+    /// ```
+    /// use gam::budget::Tableau;
+    /// assert_eq!(Tableau::of_segment(motion::SegmentKind::Multiplicative), Tableau::Slerp);
+    /// ```
+    pub fn of_segment(kind: motion::SegmentKind) -> Self {
+        match kind {
+            motion::SegmentKind::Additive => Tableau::Linear,
+            motion::SegmentKind::Multiplicative => Tableau::Slerp,
+        }
+    }
+
+    /// The tableau of a `gam interpolate` method's samples.
+    ///
+    /// ```
+    /// use gam::budget::Tableau;
+    /// use motion::method::Method;
+    /// assert_eq!(Tableau::of_method(Method::JuttlerSpline), Tableau::Rational);
+    /// assert_eq!(Tableau::of_method(Method::WlQuadratic), Tableau::Linear);
+    /// ```
+    pub fn of_method(method: motion::method::Method) -> Self {
+        use motion::method::Method;
+        match method {
+            Method::CcmMultiplicative => Tableau::Slerp,
+            Method::JuttlerQMotion | Method::JuttlerTrt | Method::JuttlerMinimal | Method::JuttlerSpline => {
+                Tableau::Rational
+            }
+            Method::CcmAdditive | Method::WlLinear | Method::WlQuadratic | Method::HexanionLinear => Tableau::Linear,
+        }
+    }
+
     /// Units per `(degree + 1)²` of one sample.
     ///
     /// ```

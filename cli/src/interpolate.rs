@@ -18,7 +18,7 @@ use crate::hermite::strip_comments;
 use crate::output::{Streamed, mv_human, mv_json};
 use crate::sample::{Sample, Sampler, checked};
 use crate::scalar::format_f64;
-use motion::method::{BuiltMotion, Method, MethodMotion};
+use motion::method::{BuiltMotion, Method};
 use motion::schema::{InterpolateSpec, SchemaError};
 use motion::trajectory::TrajectorySample;
 use serde_json::{Value, json};
@@ -85,22 +85,22 @@ fn finite3(v: &[f64; 3]) -> bool {
 /// largest segment degree and the motion's [`Tableau`]) per body point, checked against the
 /// budget.
 pub(crate) fn check_work(b: &Built, n: usize, passes: usize) -> Result<(), CliError> {
-    let (points, degree) = (b.body_points.len().max(1), b.motion.max_degree());
-    crate::budget::check(
-        &format!("sampling {points} body points of degree-{degree} segments at {n} values"),
-        crate::budget::sampling_work(tableau(&b.motion), degree, n, passes) * points as f64,
-    )
+    check_sampling(&b.motion, b.body_points.len(), n, passes)
 }
 
-/// What a sample of the motion evaluates (for the work estimate).
-pub(crate) fn tableau(m: &BuiltMotion<f64>) -> Tableau {
-    match m.motion() {
-        MethodMotion::QMotions(_) | MethodMotion::Minimal(_) => Tableau::Rational,
-        _ if m.segments().iter().any(|s| s.representation == Method::CcmMultiplicative.representation()) => {
-            Tableau::Slerp
-        }
-        _ => Tableau::Linear,
-    }
+/// [`check_work`] for `points` body points (at least one counted) of `motion` (also the Python
+/// package's sampler).
+pub(crate) fn check_sampling(
+    motion: &BuiltMotion<f64>,
+    points: usize,
+    n: usize,
+    passes: usize,
+) -> Result<(), CliError> {
+    let (points, degree) = (points.max(1), motion.max_degree());
+    crate::budget::check(
+        &format!("sampling {points} body points of degree-{degree} segments at {n} values"),
+        crate::budget::sampling_work(Tableau::of_method(motion.method()), degree, n, passes) * points as f64,
+    )
 }
 
 /// Sample `i` of `n` evenly spaced times over `[t_0, t_m]` (as `Trajectory::sample_evenly`),

@@ -152,8 +152,7 @@ pub(crate) fn sampler(label: &str, spec: &SampleSpec, n: usize, passes: usize) -
     let seg = build_segment(spec)?;
     let (kind, degree) = (seg.kind(), seg.degree());
     // building the segment is O(degree); sampling it is O(samples x degree^2)
-    let tableau = if kind == SegmentKind::Multiplicative { Tableau::Slerp } else { Tableau::Linear };
-    let work = crate::budget::sampling_work(tableau, degree, n, passes);
+    let work = crate::budget::sampling_work(Tableau::of_segment(kind), degree, n, passes);
     crate::budget::check(&format!("sampling degree {degree} at {n} values"), work)?;
     let curve = |e: motion::CurveError| CliError::math(e.to_string());
     let motion: AnyMotion<f64> = seg.into_motion().map_err(curve)?;

@@ -41,8 +41,7 @@ fn math<E: std::fmt::Display>(what: &str) -> impl Fn(E) -> CliError + '_ {
 fn segment(label: String, spec: &HermiteSpec, frames: usize) -> Result<Series, CliError> {
     let seg = spec.segment().map_err(math("the Sec. 5 segment"))?;
     let method = seg.kind().to_string();
-    let multiplicative = seg.kind() == SegmentKind::Multiplicative;
-    let tableau = if multiplicative { Tableau::Slerp } else { Tableau::Linear };
+    let tableau = Tableau::of_segment(seg.kind());
     let motion = seg.into_motion().map_err(math("the Sec. 5 segment"))?;
     let shape = Shape { label, method, segments: 1, degree: 3, tableau, key_times: vec![0.0, 1.0], joins: vec![] };
     of_motion(shape, &motion, vec![[0.0; 3]], SAMPLES, frames)

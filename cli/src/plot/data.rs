@@ -153,7 +153,7 @@ fn interpolated(path: &str, n: usize, k: usize) -> Result<Series, CliError> {
         method,
         segments: m.segments().len(),
         degree: m.max_degree(),
-        tableau: crate::interpolate::tableau(m),
+        tableau: crate::budget::Tableau::of_method(m.method()),
         key_times: m.times().to_vec(),
         joins: m.segments().iter().skip(1).map(|s| s.t0).collect(),
     };
