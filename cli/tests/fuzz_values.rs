@@ -14,7 +14,7 @@
 mod common;
 
 use algebra_core::test_support::Xorshift;
-use common::{TempFile, rodrigues};
+use common::{TempFile, matrix, max_diff, rodrigues};
 use serde_json::Value;
 use std::process::Command;
 
@@ -32,10 +32,6 @@ fn num(v: &Value) -> f64 {
     v.as_f64().unwrap_or_else(|| v.as_str().and_then(|s| s.parse().ok()).unwrap_or_else(|| panic!("not a number: {v}")))
 }
 
-fn matrix(v: &Value) -> [[f64; 4]; 4] {
-    std::array::from_fn(|i| std::array::from_fn(|j| num(&v[i][j])))
-}
-
 /// Orthonormal rotation block (to `1e-12`), determinant +1, bottom row `[0, 0, 0, 1]` exactly.
 fn assert_rigid(m: &[[f64; 4]; 4], what: &str) {
     for i in 0..3 {
@@ -49,10 +45,6 @@ fn assert_rigid(m: &[[f64; 4]; 4], what: &str) {
         + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
     assert!((det - 1.0).abs() < 1e-12, "{what}: det {det}");
     assert_eq!(m[3], [0.0, 0.0, 0.0, 1.0], "{what}");
-}
-
-fn max_diff(a: &[[f64; 4]; 4], b: &[[f64; 4]; 4]) -> f64 {
-    (0..4).flat_map(|i| (0..4).map(move |j| (a[i][j] - b[i][j]).abs())).fold(0.0, f64::max)
 }
 
 /// A random key pose: axis, angle (edges 0 and π included), position.

@@ -6,7 +6,7 @@
 
 mod common;
 
-use common::{TempFile, fails, ok, rodrigues};
+use common::{TempFile, fails, matrix, max_diff, ok, rodrigues};
 use serde_json::Value;
 
 /// The rotation matrix of a unit quaternion `[w, x, y, z]`, with translation `t`.
@@ -47,14 +47,6 @@ fn expected_matrices() -> Vec<[[f64; 4]; 4]> {
 fn run_json(name: &str, text: &str) -> Value {
     let spec = TempFile::new(&format!("interp-{name}.json"), text);
     serde_json::from_str(&ok(&["interpolate", "--json", spec.path()])).expect("JSON")
-}
-
-fn matrix(v: &Value) -> [[f64; 4]; 4] {
-    serde_json::from_value(v.clone()).expect("4x4 matrix")
-}
-
-fn max_diff(a: &[[f64; 4]; 4], b: &[[f64; 4]; 4]) -> f64 {
-    (0..4).flat_map(|i| (0..4).map(move |j| (a[i][j] - b[i][j]).abs())).fold(0.0, f64::max)
 }
 
 #[test]

@@ -6,7 +6,7 @@
 
 mod common;
 
-use common::{TempFile, assert_velocities_match_differences, fails, ok, rodrigues};
+use common::{TempFile, assert_velocities_match_differences, fails, max_diff, ok, rodrigues};
 use serde_json::Value;
 
 type M4 = [[f64; 4]; 4];
@@ -50,10 +50,6 @@ fn series_exp(w: [f64; 3], m: [f64; 3]) -> M4 {
         }
     }
     sum
-}
-
-fn max_diff(a: &M4, b: &M4) -> f64 {
-    (0..4).flat_map(|r| (0..4).map(move |c| (a[r][c] - b[r][c]).abs())).fold(0.0, f64::max)
 }
 
 fn vec3(v: &Value) -> [f64; 3] {

@@ -10,7 +10,7 @@
 
 mod common;
 
-use common::{TempFile, assert_velocities_match_differences, fails, ok, rodrigues};
+use common::{TempFile, assert_velocities_match_differences, fails, max_diff, ok, rodrigues};
 use serde_json::Value;
 
 /// (axis, angle, position) of four key poses.
@@ -30,10 +30,6 @@ fn poses() -> String {
 fn run_json(name: &str, text: &str) -> Value {
     let spec = TempFile::new(&format!("interp-jq-{name}.json"), text);
     serde_json::from_str(&ok(&["interpolate", "--json", spec.path()])).expect("JSON")
-}
-
-fn max_diff(a: &[[f64; 4]; 4], b: &[[f64; 4]; 4]) -> f64 {
-    (0..4).flat_map(|i| (0..4).map(move |j| (a[i][j] - b[i][j]).abs())).fold(0.0, f64::max)
 }
 
 /// Hamilton product of quaternions `[w, x, y, z]`.

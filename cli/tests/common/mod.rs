@@ -128,6 +128,16 @@ pub fn run_contract(args: &[&str], stdin: &[u8]) -> i32 {
     code
 }
 
+/// A JSON 4x4 matrix (the `matrix` of `gam pose` and of the samples of `gam interpolate`).
+pub fn matrix(v: &serde_json::Value) -> [[f64; 4]; 4] {
+    serde_json::from_value(v.clone()).expect("4x4 matrix")
+}
+
+/// The largest entrywise difference of two 4x4 matrices.
+pub fn max_diff(a: &[[f64; 4]; 4], b: &[[f64; 4]; 4]) -> f64 {
+    (0..4).flat_map(|i| (0..4).map(move |j| (a[i][j] - b[i][j]).abs())).fold(0.0, f64::max)
+}
+
 /// `R x + t` as a 4x4 matrix from axis, angle, position (Rodrigues).
 pub fn rodrigues(axis: [f64; 3], phi: f64, t: [f64; 3]) -> [[f64; 4]; 4] {
     let n = (axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]).sqrt();
