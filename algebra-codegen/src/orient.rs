@@ -104,14 +104,20 @@ pub(crate) fn fold_signs(plan: &mut Plan) {
         }
     }
     for k in &mut plan.actions {
-        // stage 1 sums c · s[a] · x[b] into canonical intermediates; stage 2 sums c · t[k] · s[a]
-        for (a, b, c) in k.stage1.iter_mut().flatten() {
-            *c = times(*c, signs[k.versor][*a] * signs[k.operand][*b]);
-        }
-        for (o, terms) in k.stage2.iter_mut().enumerate() {
-            for (_, a, c) in terms {
-                *c = times(*c, signs[k.versor][*a] * signs[k.operand][o]);
-            }
+        fold_action(k, &signs);
+    }
+}
+
+/// Folds the field signs into one two-stage action kernel (the fused actions of the plan and
+/// the unit-versor kernels of [`crate::unit`]): stage 1 sums `c · s[a] · x[b]` into canonical
+/// intermediates, stage 2 sums `c · t[k] · s[a]` into the operand's fields.
+pub(crate) fn fold_action(k: &mut crate::versor::ActionKernel, signs: &[Vec<i64>]) {
+    for (a, b, c) in k.stage1.iter_mut().flatten() {
+        *c = times(*c, signs[k.versor][*a] * signs[k.operand][*b]);
+    }
+    for (o, terms) in k.stage2.iter_mut().enumerate() {
+        for (_, a, c) in terms {
+            *c = times(*c, signs[k.versor][*a] * signs[k.operand][o]);
         }
     }
 }

@@ -118,6 +118,9 @@ fn unit_kernel(spec: &ModuleSpec, convention: Convention, v: usize, x: usize) ->
             term.2 = super::plan::to_ratio(&c)?;
         }
     }
+    // the fields of renamed blades (`e31`, `e021`) hold the coefficient in their orientation
+    let signs: Vec<Vec<i64>> = spec.types.iter().map(super::orient::field_signs).collect();
+    super::orient::fold_action(&mut k, &signs);
     Ok(UnitKernel { kernel: k, scale })
 }
 

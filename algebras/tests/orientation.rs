@@ -106,3 +106,21 @@ proptest! {
         }
     }
 }
+
+/// The unit-versor kernels of the oriented module: for a unit motor (rotation by the
+/// Pythagorean angle cos = 3/5 about the e31 axis, then a translation), `apply_unit` and
+/// `sandwich_unit` equal the general actions exactly, on points and lines.
+#[test]
+fn unit_actions_fold_the_orientation_signs() {
+    let r = Motor::new(ratio(3, 5), q(0), q(0), q(0), q(0), ratio(4, 5), q(0), q(0));
+    let mut t = Motor::<Q>::one();
+    (t.e01, t.e02, t.e03) = (ratio(1, 2), q(-2), ratio(3, 4));
+    let m = &t * &r;
+    assert_eq!(&m * &m.reverse(), Motor::one());
+    let p = Point::new(ratio(1, 3), q(2), q(-1), q(1));
+    let l = Line::new(q(1), q(2), q(3), q(-1), ratio(1, 2), q(5));
+    assert_eq!(m.apply_unit(&p), m.apply(&p));
+    assert_eq!(m.sandwich_unit(&p), m.sandwich(&p));
+    assert_eq!(m.apply_unit(&l), m.apply(&l));
+    assert_eq!(m.sandwich_unit(&l), m.sandwich(&l));
+}
