@@ -35,6 +35,7 @@ pub mod closed_inv;
 pub mod constraint;
 pub mod emit;
 pub mod fallback;
+pub mod lang;
 pub mod matrix;
 #[cfg(feature = "toml")]
 pub mod metric_toml;
@@ -44,7 +45,7 @@ pub mod plan;
 pub mod size;
 pub mod spec;
 pub mod standalone;
-mod sums;
+pub(crate) mod sums;
 pub mod unit;
 mod value;
 pub mod versor;

@@ -1,11 +1,44 @@
-//! Sums of `coefficient x operand` terms as token streams, in the three shapes the kernels
-//! use: a chain ([`sum`]), chains of at most four ([`chunked_sum`], the binary products) and a
-//! balanced tree ([`tree_sum`], the versor actions). The shape changes only the order of the
+//! Sums of `coefficient x operand` terms in the three shapes the kernels use: a chain
+//! ([`sum`]), chains of at most four ([`chunked_sum`], the binary products) and a balanced
+//! tree ([`tree_sum`], the versor actions). The shape changes only the order of the
 //! floating-point additions (and so the speed and the rounding), never the exact value.
+//!
+//! The shapes are written once, over [`Build`]: the Rust emitter builds token streams
+//! ([`Tokens`]), the other languages' emitters language-free expressions
+//! ([`crate::lang::ir::Expr`]), so a C, WGSL or GLSL kernel adds in the same order as the Rust
+//! kernel of the same declaration (and gives the same floating-point result).
 
 use crate::plan::Ratio;
 use proc_macro2::TokenStream;
 use quote::quote;
+
+/// How a sum's pieces are written: the operations [`sum`], [`chunked_sum`] and [`tree_sum`]
+/// combine. `x` operands are places or values of the scalar type; the results are values.
+pub(crate) trait Build {
+    /// An expression.
+    type E: Clone;
+    /// The scalar zero.
+    fn zero() -> Self::E;
+    /// `x` as a value: moved when `movable`, else copied.
+    fn value(x: Self::E, movable: bool) -> Self::E;
+    /// `-x`.
+    fn neg(x: Self::E) -> Self::E;
+    /// `k · x` for a constant `k` (a chain's first term).
+    fn scaled(k: Ratio, x: Self::E) -> Self::E;
+    /// `k · x` as a tree leaf (parenthesised where the syntax needs it).
+    fn scaled_leaf(k: Ratio, x: Self::E) -> Self::E;
+    /// `acc + x` (`negative`: `acc - x`), `x` a single term.
+    fn add(acc: Self::E, x: Self::E, negative: bool) -> Self::E;
+    /// `acc + k · x` (`negative`: `acc - k · x`).
+    fn add_scaled(acc: Self::E, k: Ratio, x: Self::E, negative: bool) -> Self::E;
+    /// `acc + (e)` (`negative`: `acc - (e)`), `e` a partial sum.
+    fn add_group(acc: Self::E, e: Self::E, negative: bool) -> Self::E;
+    /// `(a + b)` (`negative`: `(a - b)`) inside a tree.
+    fn tree_add(a: Self::E, b: Self::E, negative: bool) -> Self::E;
+}
+
+/// Rust tokens: operands are places borrowed by reference (`acc + &x`).
+pub(crate) struct Tokens;
 
 /// `T::from_ratio(n, d)`.
 fn constant(c: Ratio) -> TokenStream {
@@ -13,15 +46,57 @@ fn constant(c: Ratio) -> TokenStream {
     quote!(T::from_ratio(#n, #d))
 }
 
+impl Build for Tokens {
+    type E = TokenStream;
+    fn zero() -> TokenStream {
+        quote!(T::zero())
+    }
+    fn value(x: TokenStream, movable: bool) -> TokenStream {
+        if movable { x } else { quote!(::core::clone::Clone::clone(&#x)) }
+    }
+    fn neg(x: TokenStream) -> TokenStream {
+        quote!(::algebra_core::Ring::neg_ref(&#x))
+    }
+    fn scaled(k: Ratio, x: TokenStream) -> TokenStream {
+        let k = constant(k);
+        quote!(#k * &#x)
+    }
+    fn scaled_leaf(k: Ratio, x: TokenStream) -> TokenStream {
+        let k = constant(k);
+        quote!((#k * &#x))
+    }
+    fn add(acc: TokenStream, x: TokenStream, negative: bool) -> TokenStream {
+        if negative { quote!(#acc - &#x) } else { quote!(#acc + &#x) }
+    }
+    fn add_scaled(acc: TokenStream, k: Ratio, x: TokenStream, negative: bool) -> TokenStream {
+        let k = constant(k);
+        if negative { quote!(#acc - #k * &#x) } else { quote!(#acc + #k * &#x) }
+    }
+    fn add_group(acc: TokenStream, e: TokenStream, negative: bool) -> TokenStream {
+        if negative { quote!(#acc - &(#e)) } else { quote!(#acc + &(#e)) }
+    }
+    fn tree_add(a: TokenStream, b: TokenStream, negative: bool) -> TokenStream {
+        if negative { quote!((#a - &#b)) } else { quote!((#a + &#b)) }
+    }
+}
+
 /// One summand: coefficient, operand expression, whether the operand may be moved.
-pub(super) type SumTerm = (Ratio, TokenStream, bool);
+pub(crate) type Term<E> = (Ratio, E, bool);
+
+/// One summand of a Rust token sum.
+pub(super) type SumTerm = Term<TokenStream>;
 
 /// A sum of `(coefficient, operand)` terms, each operand an expression of type `T` that may be
 /// used by reference (`&operand`). `movable` says the operand may be moved when it comes
 /// first with coefficient 1.
-pub(super) fn sum(mut terms: Vec<SumTerm>) -> TokenStream {
+pub(super) fn sum(terms: Vec<SumTerm>) -> TokenStream {
+    sum_in::<Tokens>(terms)
+}
+
+/// [`sum`] over any [`Build`].
+pub(crate) fn sum_in<B: Build>(mut terms: Vec<Term<B::E>>) -> B::E {
     if terms.is_empty() {
-        return quote!(T::zero());
+        return B::zero();
     }
     // start with a positive term if there is one, to avoid a negation
     if let Some(p) = terms.iter().position(|(c, _, _)| c.0 > 0) {
@@ -30,26 +105,16 @@ pub(super) fn sum(mut terms: Vec<SumTerm>) -> TokenStream {
     let mut it = terms.into_iter();
     let (c, x, movable) = it.next().expect("non-empty");
     let mut acc = match c {
-        (1, 1) if movable => x,
-        (1, 1) => quote!(::core::clone::Clone::clone(&#x)),
-        (-1, 1) => quote!(::algebra_core::Ring::neg_ref(&#x)),
-        c => {
-            let k = constant(c);
-            quote!(#k * &#x)
-        }
+        (1, 1) => B::value(x, movable),
+        (-1, 1) => B::neg(x),
+        c => B::scaled(c, x),
     };
     for (c, x, _) in it {
         acc = match c {
-            (1, 1) => quote!(#acc + &#x),
-            (-1, 1) => quote!(#acc - &#x),
-            (n, d) if n < 0 => {
-                let k = constant((-n, d));
-                quote!(#acc - #k * &#x)
-            }
-            c => {
-                let k = constant(c);
-                quote!(#acc + #k * &#x)
-            }
+            (1, 1) => B::add(acc, x, false),
+            (-1, 1) => B::add(acc, x, true),
+            (n, d) if n < 0 => B::add_scaled(acc, (-n, d), x, true),
+            c => B::add_scaled(acc, c, x, false),
         };
     }
     acc
@@ -68,8 +133,13 @@ const CHUNK: usize = 4;
 /// A chunk whose first term is negative is negated and subtracted, so each chunk keeps its
 /// term order (the same order in neighbouring outputs) and no term is negated on its own.
 pub(super) fn chunked_sum(terms: Vec<SumTerm>) -> TokenStream {
+    chunked_sum_in::<Tokens>(terms)
+}
+
+/// [`chunked_sum`] over any [`Build`].
+pub(crate) fn chunked_sum_in<B: Build>(terms: Vec<Term<B::E>>) -> B::E {
     if terms.len() <= CHUNK {
-        return sum(terms);
+        return sum_in::<B>(terms);
     }
     let mut chunks = Vec::new();
     let mut rest = terms;
@@ -79,24 +149,21 @@ pub(super) fn chunked_sum(terms: Vec<SumTerm>) -> TokenStream {
         rest = tail;
     }
     let mut it = chunks.into_iter();
-    let mut acc = sum(it.next().expect("more than CHUNK terms"));
+    let mut acc = sum_in::<B>(it.next().expect("more than CHUNK terms"));
     for mut chunk in it {
         if chunk.len() == 1 {
             // a lone term joins the chain (no clone of a borrowed operand)
             let ((n, d), x, _) = chunk.pop().expect("one term");
-            let k = constant((n.abs(), d));
-            acc = match (n.abs(), d, n < 0) {
-                (1, 1, false) => quote!(#acc + &#x),
-                (1, 1, true) => quote!(#acc - &#x),
-                (_, _, false) => quote!(#acc + #k * &#x),
-                (_, _, true) => quote!(#acc - #k * &#x),
+            acc = match (n.abs(), d) {
+                (1, 1) => B::add(acc, x, n < 0),
+                (k, d) => B::add_scaled(acc, (k, d), x, n < 0),
             };
         } else if chunk[0].0.0 > 0 {
-            let e = sum(chunk);
-            acc = quote!(#acc + &(#e));
+            let e = sum_in::<B>(chunk);
+            acc = B::add_group(acc, e, false);
         } else {
-            let e = sum(chunk.into_iter().map(|((n, d), x, m)| ((-n, d), x, m)).collect());
-            acc = quote!(#acc - &(#e));
+            let e = sum_in::<B>(chunk.into_iter().map(|((n, d), x, m)| ((-n, d), x, m)).collect());
+            acc = B::add_group(acc, e, true);
         }
     }
     acc
@@ -110,54 +177,45 @@ pub(super) fn chunked_sum(terms: Vec<SumTerm>) -> TokenStream {
 /// partial sum carries its sign, so no term is negated on its own and the result is negated
 /// at most once.
 pub(super) fn tree_sum(terms: Vec<SumTerm>) -> TokenStream {
+    tree_sum_in::<Tokens>(terms)
+}
+
+/// [`tree_sum`] over any [`Build`].
+pub(crate) fn tree_sum_in<B: Build>(terms: Vec<Term<B::E>>) -> B::E {
     if terms.is_empty() {
-        return quote!(T::zero());
+        return B::zero();
     }
-    let part = tree(terms);
+    let part = tree::<B>(terms);
     match (part.neg, part.owned) {
-        (true, _) => {
-            let e = part.e;
-            quote!(::algebra_core::Ring::neg_ref(&#e))
-        }
-        (false, true) => part.e,
-        (false, false) => {
-            let e = part.e;
-            quote!(::core::clone::Clone::clone(&#e))
-        }
+        (true, _) => B::neg(part.e),
+        (false, owned) => B::value(part.e, owned),
     }
 }
 
-/// A signed partial sum: `±e`, and whether `e` is an owned `T` (else a place to borrow).
-struct Part {
-    e: TokenStream,
+/// A signed partial sum: `±e`, and whether `e` is an owned value (else a place to borrow).
+struct Part<E> {
+    e: E,
     neg: bool,
     owned: bool,
 }
 
-fn tree(mut terms: Vec<SumTerm>) -> Part {
+fn tree<B: Build>(mut terms: Vec<Term<B::E>>) -> Part<B::E> {
     if terms.len() == 1 {
         let (c, x, movable) = terms.pop().expect("one term");
         return match c {
             (1, 1) | (-1, 1) => Part { e: x, neg: c.0 < 0, owned: movable },
-            (n, d) => {
-                let k = constant((n.abs(), d));
-                Part { e: quote!((#k * &#x)), neg: n < 0, owned: true }
-            }
+            (n, d) => Part { e: B::scaled_leaf((n.abs(), d), x), neg: n < 0, owned: true },
         };
     }
     let right = terms.split_off(terms.len() / 2);
-    let (l, r) = (tree(terms), tree(right));
+    let (l, r) = (tree::<B>(terms), tree::<B>(right));
     // the receiver of `+`/`-` must be owned; addition commutes, and signs travel with the parts
     let (recv, arg) = match (l.owned, r.owned) {
         (true, _) => (l, r),
         (false, true) => (r, l),
-        (false, false) => {
-            let e = l.e;
-            (Part { e: quote!(::core::clone::Clone::clone(&#e)), neg: l.neg, owned: true }, r)
-        }
+        (false, false) => (Part { e: B::value(l.e, false), neg: l.neg, owned: true }, r),
     };
-    let (re, ae) = (recv.e, arg.e);
-    let e = if recv.neg == arg.neg { quote!((#re + &#ae)) } else { quote!((#re - &#ae)) };
+    let e = B::tree_add(recv.e, arg.e, recv.neg != arg.neg);
     Part { e, neg: recv.neg, owned: true }
 }
 

@@ -1,0 +1,190 @@
+//! Helpers for testing the kernels the generator emits in other languages
+//! (`algebra_codegen::lang`) against the Rust kernels of the same declaration: a registry of
+//! the Rust kernels by operation and parameter types, random inputs, and a C driver that
+//! compiles the header and runs every kernel on the same inputs.
+
+use algebra_codegen::lang::ir::{Kernel, Output};
+use algebra_codegen::lang::{function_name, type_name};
+use algebra_codegen::{ModuleSpec, plan::Plan};
+use algebra_core::{Algebra, Basis};
+use std::collections::HashMap;
+use std::fmt::Write;
+use std::ops::IndexMut;
+
+/// The plan of a declaration given as `gam codegen --types` text.
+///
+/// ```
+/// let plan = gam_lang_tests::plan("g3", algebra_core::Basis::Blade, "Rotor=even", "g3");
+/// assert_eq!(plan.spec.types[0].name, "Rotor");
+/// ```
+pub fn plan(algebra: &str, basis: Basis, types: &str, module: &str) -> Plan {
+    let alg = Algebra::builtin(algebra).expect("a built-in algebra");
+    let types = ModuleSpec::parse_types(types, &alg).expect("valid types");
+    Plan::new(ModuleSpec::new(module, alg.metric().clone(), basis, types).expect("a valid spec")).expect("a plan")
+}
+
+/// A Rust kernel: the parameters' fields in, the result's fields out.
+pub type RustKernel<S> = Box<dyn Fn(&[Vec<S>]) -> Vec<S>>;
+
+/// The Rust kernels of one module, keyed by operation name and parameter type names.
+pub struct Registry<S> {
+    /// The kernels.
+    pub kernels: HashMap<(String, Vec<String>), RustKernel<S>>,
+    /// Each type's basis names in storage order (`ELEMENTS`).
+    pub elements: HashMap<String, Vec<String>>,
+}
+
+impl<S> Default for Registry<S> {
+    fn default() -> Self {
+        Registry { kernels: HashMap::new(), elements: HashMap::new() }
+    }
+}
+
+impl<S: Copy + 'static> Registry<S> {
+    /// Registers a kernel.
+    pub fn add(&mut self, op: &str, params: &[&str], f: impl Fn(&[Vec<S>]) -> Vec<S> + 'static) {
+        self.kernels.insert((op.to_string(), params.iter().map(|p| p.to_string()).collect()), Box::new(f));
+    }
+
+    /// The Rust kernel of an emitted kernel.
+    pub fn get(&self, plan: &Plan, k: &Kernel) -> Option<&RustKernel<S>> {
+        let params = k.params.iter().map(|&i| plan.spec.types[i].name.clone()).collect();
+        self.kernels.get(&(k.op.name().to_string(), params))
+    }
+}
+
+/// A value of a generated type from its fields.
+pub fn load<A: Default + IndexMut<usize, Output = S>, S: Copy>(fields: &[S]) -> A {
+    let mut a = A::default();
+    for (i, x) in fields.iter().enumerate() {
+        a[i] = *x;
+    }
+    a
+}
+
+/// The fields of a generated value.
+pub fn store<O: IntoIterator<Item = S>, S>(o: O) -> Vec<S> {
+    o.into_iter().collect()
+}
+
+/// Deterministic pseudo-random numbers in `[-2, 2)` (splitmix64), so a failure reproduces.
+pub struct Numbers(u64);
+
+impl Numbers {
+    /// A sequence from a seed.
+    pub fn new(seed: u64) -> Numbers {
+        Numbers(seed)
+    }
+
+    /// The next number.
+    pub fn next_f64(&mut self) -> f64 {
+        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        z ^= z >> 31;
+        (z >> 11) as f64 / (1u64 << 53) as f64 * 4.0 - 2.0
+    }
+}
+
+/// The number of fields of every parameter and of the result of a kernel.
+pub fn shape(plan: &Plan, k: &Kernel) -> (Vec<usize>, usize) {
+    let n = |i: usize| plan.spec.types[i].elements.len();
+    let out = match &k.output {
+        Output::Type(o, _) => n(*o),
+        Output::Scalar(_) => 1,
+    };
+    (k.params.iter().map(|&i| n(i)).collect(), out)
+}
+
+/// A C program that includes `header`, reads `samples` inputs per kernel from standard input
+/// (the fields as the hexadecimal bits of `double`s, or of `float`s with `float`), calls each
+/// kernel and prints the result's fields the same way, one line per call.
+pub fn c_driver(plan: &Plan, kernels: &[Kernel], header: &str, samples: usize, float: bool) -> String {
+    let (scalar, bits, fmt, sfx) =
+        if float { ("float", "unsigned int", "%x", "f") } else { ("double", "unsigned long long", "%llx", "") };
+    // on short input `get` complains and returns 0; the Rust side then sees a short output
+    let mut c = format!(
+        "#include <stdio.h>\n#include <string.h>\n#include \"{header}\"\n\
+         static {scalar} get(void) {{ {bits} u = 0; {scalar} v; if (scanf(\"{fmt}\", &u) != 1) fprintf(stderr, \"short input\\n\"); memcpy(&v, &u, sizeof v); return v; }}\n\
+         static void put({scalar} v) {{ {bits} u; memcpy(&u, &v, sizeof v); printf(\"{fmt} \", u); }}\n\
+         int main(void) {{\n    int i;\n"
+    );
+    for k in kernels {
+        let fields = |i: usize| -> Vec<String> {
+            let t = &plan.spec.types[i];
+            t.elements
+                .iter()
+                .map(|m| {
+                    let n = t
+                        .renamed
+                        .get(m)
+                        .map_or_else(|| plan.spec.algebra.name_of(*m).unwrap().to_string(), |(n, _)| n.clone());
+                    algebra_codegen::emit::field_name(&n)
+                })
+                .collect()
+        };
+        let _ = writeln!(c, "    for (i = 0; i < {samples}; i++) {{");
+        let mut args = Vec::new();
+        for (p, &ty) in k.params.iter().enumerate() {
+            let _ = writeln!(c, "        {}{sfx} a{p};", type_name(plan, ty));
+            for f in fields(ty) {
+                let _ = writeln!(c, "        a{p}.{f} = get();");
+            }
+            args.push(format!("a{p}"));
+        }
+        let call = format!("{}{sfx}({})", function_name(plan, k), args.join(", "));
+        match &k.output {
+            Output::Type(o, _) => {
+                let _ = writeln!(c, "        {{ {}{sfx} r = {call};", type_name(plan, *o));
+                for f in fields(*o) {
+                    let _ = writeln!(c, "          put(r.{f});");
+                }
+                let _ = writeln!(c, "        }}");
+            }
+            Output::Scalar(_) => {
+                let _ = writeln!(c, "        put({call});");
+            }
+        }
+        let _ = writeln!(c, "        printf(\"\\n\");\n    }}");
+    }
+    c.push_str("    return 0;\n}\n");
+    c
+}
+
+/// Compiles `files` (name, text) in a fresh directory with the system C compiler (`CC`, else
+/// `cc`), C99, `-O2`, without contraction of multiply-adds, runs the program on `input` and
+/// returns its output.
+///
+/// # Panics
+/// When the compiler is missing, the code does not compile or the program fails.
+pub fn compile_and_run(name: &str, files: &[(&str, &str)], main: &str, input: &str) -> String {
+    use std::io::Write as _;
+    let dir = std::env::temp_dir().join(format!("gam-lang-{}-{name}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("a temporary directory");
+    for (file, text) in files {
+        std::fs::write(dir.join(file), text).expect("write a source file");
+    }
+    let cc = std::env::var("CC").unwrap_or_else(|_| "cc".to_string());
+    let exe = dir.join("run");
+    let status = std::process::Command::new(&cc)
+        .args(["-std=c99", "-O2", "-ffp-contract=off", "-Wall", "-Wextra", "-Werror", "-pedantic", "-o"])
+        .arg(&exe)
+        .arg(dir.join(main))
+        .status()
+        .unwrap_or_else(|e| panic!("the C compiler `{cc}` did not start: {e}"));
+    assert!(status.success(), "{main} did not compile (sources in {})", dir.display());
+    let mut child = std::process::Command::new(&exe)
+        .stdin(std::process::Stdio::piped())
+        .stdout(std::process::Stdio::piped())
+        .spawn()
+        .expect("run the compiled program");
+    let mut stdin = child.stdin.take().expect("stdin");
+    let input = input.to_string();
+    let writer = std::thread::spawn(move || stdin.write_all(input.as_bytes()));
+    let out = child.wait_with_output().expect("the program's output");
+    writer.join().expect("the writer").expect("write the input");
+    assert!(out.status.success(), "the program failed");
+    let _ = std::fs::remove_dir_all(&dir);
+    String::from_utf8(out.stdout).expect("ASCII output")
+}
