@@ -75,6 +75,9 @@ pub struct Plan {
     /// The spec, with the full multivector type appended when no declared type holds every
     /// basis element (named `Multivector`, or `FullMultivector` if that name is taken).
     pub spec: ModuleSpec,
+    /// How many types the user declared: the first `declared` of `spec.types`; the others
+    /// (automatic `Even`/`Odd`, the full multivector) are added by the plan as outputs.
+    pub declared: usize,
     /// Index of the type holding every basis element (the fallback output type).
     pub full: usize,
     /// Every binary kernel: all ordered pairs of types, all products.
@@ -129,6 +132,7 @@ impl Plan {
     /// ```
     pub fn new(mut spec: ModuleSpec) -> Result<Plan, CodegenError> {
         let alg = spec.algebra.clone();
+        let declared = spec.types.len();
         // every type keeps its storage order ([`TypeSpec::elements`]): kernels index fields
         let order = alg.basis_order().to_vec();
         let full = match spec.types.iter().position(|t| t.elements.len() == alg.dim()) {
@@ -212,7 +216,7 @@ impl Plan {
             })
             .collect();
         let actions = super::versor::plan_actions(&spec, full)?;
-        let mut plan = Plan { spec, full, binary, unary, norm, closed, actions, typed, matrices: Vec::new() };
+        let mut plan = Plan { spec, declared, full, binary, unary, norm, closed, actions, typed, matrices: Vec::new() };
         super::orient::fold_signs(&mut plan);
         plan.matrices = super::matrix::plan_matrices(&plan);
         Ok(plan)

@@ -153,7 +153,7 @@ pub fn c_driver(plan: &Plan, kernels: &[Kernel], header: &str, samples: usize, f
 }
 
 /// Compiles `files` (name, text) in a fresh directory with the system C compiler (`CC`, else
-/// `cc`), C99, `-O2`, without contraction of multiply-adds, runs the program on `input` and
+/// `cc`), C99, `-O2`, without contraction of multiply-adds, linked with libm, runs the program on `input` and
 /// returns its output.
 ///
 /// # Panics
@@ -171,6 +171,7 @@ pub fn compile_and_run(name: &str, files: &[(&str, &str)], main: &str, input: &s
         .args(["-std=c99", "-O2", "-ffp-contract=off", "-Wall", "-Wextra", "-Werror", "-pedantic", "-o"])
         .arg(&exe)
         .arg(dir.join(main))
+        .arg("-lm")
         .status()
         .unwrap_or_else(|e| panic!("the C compiler `{cc}` did not start: {e}"));
     assert!(status.success(), "{main} did not compile (sources in {})", dir.display());

@@ -10,8 +10,9 @@ use algebra_core::Basis;
 use gam_lang_tests::{Numbers, Registry, c_driver, compile_and_run, load, plan, shape, store};
 
 macro_rules! registry {
-    ($m:ident, $s:ty; types [$($t:ident),*]; versors [$($v:ident),*] on [$($x:ident),*]) => {{
+    ($m:ident, $s:ty; types [$($t:ident),*]; versors [$($v:ident),*] on [$($x:ident),*]; closed [$($b:ident => $ev:ident),*]) => {{
         let mut r = Registry::<$s>::default();
+        $( registry!(@closed r, $m, $s, $b, $ev); )*
         $( r.elements.insert(stringify!($t).to_string(), $m::$t::<$s>::ELEMENTS.iter().map(|e| e.to_string()).collect()); )*
         registry!(@rows r, $m, $s; [$($t),*]; $($t),*);
         $( registry!(@unary r, $m, $s, $t); )*
@@ -42,6 +43,11 @@ macro_rules! registry {
         registry!(@un $r, $m, $s, $t, "dual", dual);
         registry!(@un $r, $m, $s, $t, "undual", undual);
         $r.add("norm_squared", &[stringify!($t)], |p| vec![load::<$m::$t<$s>, $s>(&p[0]).norm_squared()]);
+    };
+    (@closed $r:ident, $m:ident, $s:ty, $b:ident, $ev:ident) => {
+        $r.add("exp", &[stringify!($b)], |p| store(load::<$m::$b<$s>, $s>(&p[0]).exp()));
+        $r.add("log_unit", &[stringify!($ev)], |p| store(load::<$m::$ev<$s>, $s>(&p[0]).log_unit().unwrap()));
+        $r.add("normalize", &[stringify!($ev)], |p| store(load::<$m::$ev<$s>, $s>(&p[0]).normalize().unwrap()));
     };
     (@un $r:ident, $m:ident, $s:ty, $t:ident, $name:literal, $f:ident) => {
         $r.add($name, &[stringify!($t)], |p| store(load::<$m::$t<$s>, $s>(&p[0]).$f()));
@@ -92,7 +98,15 @@ algebra_macros::algebra! {
     /// Dual quaternions in the conformal subalgebra.
     pub mod g123inf {
         metric builtin "g123inf";
-        types { Motor = [1, e12, e13, e23, e1inf, e2inf, e3inf, e123inf]; Vector = grade 1; }
+        types { Motor = [1, e12, e13, e23, e1inf, e2inf, e3inf, e123inf]; Vector = grade 1; Bivector = grade 2; }
+    }
+}
+
+algebra_macros::algebra! {
+    /// Euclidean rotors (the trigonometric closed forms without a dual part).
+    pub mod g3 {
+        metric builtin "g3";
+        types { Rotor = even; Vector = grade 1; Bivector = grade 2; }
     }
 }
 
@@ -108,15 +122,23 @@ algebra_macros::algebra! {
 
 const SAMPLES: usize = 3;
 
+/// The closed forms call `sin`, `cos` and `atan2` (libm in C, a polynomial `atan2` in Rust):
+/// equal within a few units in the last place, not bit for bit.
+fn closed(op: &str) -> bool {
+    matches!(op, "exp" | "log_unit" | "normalize")
+}
+
 /// Runs every kernel of the plan's C header in `double` (or `float`) and compares with the
 /// registry; returns the number of kernels compared.
-fn check<S: Copy + PartialEq + std::fmt::Debug + 'static>(
+#[allow(clippy::too_many_arguments)]
+fn check<S: Copy + PartialEq + Into<f64> + std::fmt::Debug + 'static>(
     plan: &Plan,
     reg: &Registry<S>,
     float: bool,
     from_f64: impl Fn(f64) -> S,
     bits: impl Fn(S) -> String,
     parse: impl Fn(&str) -> S,
+    close: impl Fn(&[S], &[S]) -> bool,
 ) -> usize {
     // the registry declares the plan's types, fields in the same order
     for t in &plan.spec.types {
@@ -127,7 +149,7 @@ fn check<S: Copy + PartialEq + std::fmt::Debug + 'static>(
         assert_eq!(reg.elements.get(&t.name), Some(&fields), "type {} of the Rust module", t.name);
     }
     let ks = kernels(plan).unwrap();
-    let header = emit(plan, Lang::C, &Options::default()).unwrap();
+    let header = emit(plan, Lang::C, &Options { every_type: true, ..Options::default() }).unwrap();
     let driver = c_driver(plan, &ks, "gam.h", SAMPLES, float);
     let mut numbers = Numbers::new(0x5eed);
     let mut input = String::new();
@@ -144,18 +166,29 @@ fn check<S: Copy + PartialEq + std::fmt::Debug + 'static>(
                 input.push(' ');
             }
             input.push('\n');
-            expected.push((algebra_codegen::lang::function_name(plan, k), rust(&args)));
+            expected.push((algebra_codegen::lang::function_name(plan, k), closed(k.op.name()), rust(&args)));
         }
     }
     let name = format!("{}-{}", plan.spec.name, if float { "f32" } else { "f64" });
     let out = compile_and_run(&name, &[("gam.h", &header), ("main.c", &driver)], "main.c", &input);
     let lines: Vec<&str> = out.lines().collect();
     assert_eq!(lines.len(), expected.len(), "one output line per call");
-    for (line, (name, want)) in lines.iter().zip(&expected) {
+    for (line, (name, approx, want)) in lines.iter().zip(&expected) {
         let got: Vec<S> = line.split_whitespace().map(&parse).collect();
-        assert_eq!(&got, want, "{name}: C and Rust differ");
+        if *approx {
+            assert!(close(&got, want), "{name}: C and Rust differ beyond a few ulp: {got:?} vs {want:?}");
+        } else {
+            assert_eq!(&got, want, "{name}: C and Rust differ");
+        }
     }
     ks.len()
+}
+
+/// Equal within `ulps` units in the last place of the largest magnitude (the results are of
+/// unit scale, so an absolute bound at that scale).
+fn within<S: Copy + Into<f64>>(a: &[S], b: &[S], eps: f64, ulps: f64) -> bool {
+    let scale = a.iter().chain(b).map(|x| (*x).into().abs()).fold(1.0, f64::max);
+    a.len() == b.len() && a.iter().zip(b).all(|(x, y)| ((*x).into() - (*y).into()).abs() <= ulps * eps * scale)
 }
 
 fn check_f64(plan: &Plan, reg: &Registry<f64>) -> usize {
@@ -166,6 +199,7 @@ fn check_f64(plan: &Plan, reg: &Registry<f64>) -> usize {
         |x| x,
         |x| format!("{:x}", x.to_bits()),
         |s| f64::from_bits(u64::from_str_radix(s, 16).unwrap()),
+        |a, b| within(a, b, f64::EPSILON, 8.0),
     )
 }
 
@@ -177,14 +211,15 @@ fn check_f32(plan: &Plan, reg: &Registry<f32>) -> usize {
         |x| x as f32,
         |x| format!("{:x}", x.to_bits()),
         |s| f32::from_bits(u32::from_str_radix(s, 16).unwrap()),
+        |a, b| within(a, b, f32::EPSILON as f64, 8.0),
     )
 }
 
 #[test]
 fn pga3_header_equals_the_rust_kernels() {
     let plan = plan("pga3", Basis::Blade, "Motor=even;Point=grade3;Line=grade2;Plane=grade1", "pga");
-    let r64 = registry!(pga, f64; types [Motor, Point, Line, Plane, Odd, Multivector]; versors [Motor, Point, Line, Plane, Odd] on [Motor, Point, Line, Plane, Odd]);
-    let r32 = registry!(pga, f32; types [Motor, Point, Line, Plane, Odd, Multivector]; versors [Motor, Point, Line, Plane, Odd] on [Motor, Point, Line, Plane, Odd]);
+    let r64 = registry!(pga, f64; types [Motor, Point, Line, Plane, Odd, Multivector]; versors [Motor, Point, Line, Plane, Odd] on [Motor, Point, Line, Plane, Odd]; closed [Line => Motor]);
+    let r32 = registry!(pga, f32; types [Motor, Point, Line, Plane, Odd, Multivector]; versors [Motor, Point, Line, Plane, Odd] on [Motor, Point, Line, Plane, Odd]; closed [Line => Motor]);
     let n = check_f64(&plan, &r64);
     assert_eq!(n, check_f32(&plan, &r32));
     assert!(n > 400, "{n} kernels");
@@ -198,15 +233,29 @@ fn oriented_pga3_header_equals_the_rust_kernels() {
         "Plane=grade1;Line=e01,e02,e03,e12,e31,e23;Point=e021,e013,e032,e123;Motor=1,e01,e02,e03,e12,e31,e23,e0123",
         "ganja",
     );
-    let r64 = registry!(ganja, f64; types [Plane, Line, Point, Motor, Odd, Multivector]; versors [Plane, Line, Point, Motor, Odd] on [Plane, Line, Point, Motor, Odd]);
+    let r64 = registry!(ganja, f64; types [Plane, Line, Point, Motor, Odd, Multivector]; versors [Plane, Line, Point, Motor, Odd] on [Plane, Line, Point, Motor, Odd]; closed [Line => Motor]);
     check_f64(&plan, &r64);
 }
 
 #[test]
 fn g123inf_header_equals_the_rust_kernels() {
-    let plan = plan("g123inf", Basis::Blade, "Motor=1,e12,e13,e23,e1inf,e2inf,e3inf,e123inf;Vector=grade1", "g123inf");
-    let r64 = registry!(g123inf, f64; types [Motor, Vector, Odd, Multivector]; versors [Motor, Vector, Odd] on [Motor, Vector, Odd]);
-    let r32 = registry!(g123inf, f32; types [Motor, Vector, Odd, Multivector]; versors [Motor, Vector, Odd] on [Motor, Vector, Odd]);
+    let plan = plan(
+        "g123inf",
+        Basis::Blade,
+        "Motor=1,e12,e13,e23,e1inf,e2inf,e3inf,e123inf;Vector=grade1;Bivector=grade2",
+        "g123inf",
+    );
+    let r64 = registry!(g123inf, f64; types [Motor, Vector, Bivector, Odd, Multivector]; versors [Motor, Vector, Bivector, Odd] on [Motor, Vector, Bivector, Odd]; closed [Bivector => Motor]);
+    let r32 = registry!(g123inf, f32; types [Motor, Vector, Bivector, Odd, Multivector]; versors [Motor, Vector, Bivector, Odd] on [Motor, Vector, Bivector, Odd]; closed [Bivector => Motor]);
+    check_f64(&plan, &r64);
+    check_f32(&plan, &r32);
+}
+
+#[test]
+fn euclidean_rotor_header_equals_the_rust_kernels() {
+    let plan = plan("g3", Basis::Blade, "Rotor=even;Vector=grade1;Bivector=grade2", "g3");
+    let r64 = registry!(g3, f64; types [Rotor, Vector, Bivector, Odd, Multivector]; versors [Rotor, Vector, Bivector, Odd] on [Rotor, Vector, Bivector, Odd]; closed [Bivector => Rotor]);
+    let r32 = registry!(g3, f32; types [Rotor, Vector, Bivector, Odd, Multivector]; versors [Rotor, Vector, Bivector, Odd] on [Rotor, Vector, Bivector, Odd]; closed [Bivector => Rotor]);
     check_f64(&plan, &r64);
     check_f32(&plan, &r32);
 }
@@ -215,6 +264,6 @@ fn g123inf_header_equals_the_rust_kernels() {
 fn product_basis_cga_header_equals_the_rust_kernels() {
     let plan =
         plan("cga-null", Basis::Product, "Motor=1,e12,e13,e23,e1inf,e2inf,e3inf,e123inf;Vector=grade1", "cga_null");
-    let r64 = registry!(cga_null, f64; types [Motor, Vector, Even, Odd, Multivector]; versors [Motor, Vector, Even, Odd] on [Motor, Vector, Even, Odd]);
+    let r64 = registry!(cga_null, f64; types [Motor, Vector, Even, Odd, Multivector]; versors [Motor, Vector, Even, Odd] on [Motor, Vector, Even, Odd]; closed []);
     check_f64(&plan, &r64);
 }

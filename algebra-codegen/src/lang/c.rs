@@ -48,16 +48,15 @@ impl Dialect for C {
         out.push_str(&format!("}} {name};\n"));
         out
     }
-    fn function(&self, s: Scalar, f: &Function<'_>) -> String {
-        let ty = self.scalar(s);
+    fn function(&self, _: Scalar, f: &Function<'_>) -> String {
         let params: Vec<String> = f.params.iter().map(|(p, t)| format!("{t} {p}")).collect();
         let mut out = self.comment(f.doc);
         out.push_str(&format!("static inline {} {}({}) {{\n", f.ret, f.name, params.join(", ")));
         for p in &f.unused {
             push_line(&mut out, "    ", &format!("(void){p};"));
         }
-        for (i, e) in f.lets.iter().enumerate() {
-            push_line(&mut out, "    ", &format!("const {ty} t{i} = {e};"));
+        for (i, (t, e)) in f.lets.iter().enumerate() {
+            push_line(&mut out, "    ", &format!("const {t} t{i} = {e};"));
         }
         match &f.fields {
             Some((name, fields)) => {
@@ -71,5 +70,29 @@ impl Dialect for C {
         }
         out.push_str("}\n");
         out
+    }
+    fn math(&self, s: Scalar, f: &str) -> String {
+        match s {
+            Scalar::F64 => f.to_string(),
+            Scalar::F32 => format!("{f}f"),
+        }
+    }
+    fn triple(&self, s: Scalar, module: &str) -> String {
+        format!("{module}_Triple{}", self.suffix(s))
+    }
+    fn triple_def(&self, s: Scalar, module: &str) -> String {
+        let t = self.triple(s, module);
+        format!("#include <math.h>\n\ntypedef struct {t} {{\n    {} x, y, z;\n}} {t};\n\n", self.scalar(s))
+    }
+    fn local(&self, ty: &str, name: &str, value: &str) -> String {
+        format!("const {ty} {name} = {value};")
+    }
+    fn return_triple(&self, s: Scalar, module: &str, [x, y, z]: [&str; 3]) -> String {
+        format!("{{ {} out; out.x = {x}; out.y = {y}; out.z = {z}; return out; }}", self.triple(s, module))
+    }
+    fn helper_head(&self, s: Scalar, module: &str, name: &str, params: &[&str]) -> String {
+        let ty = self.scalar(s);
+        let params: Vec<String> = params.iter().map(|p| format!("{ty} {p}")).collect();
+        format!("static inline {} {name}({}) {{", self.triple(s, module), params.join(", "))
     }
 }

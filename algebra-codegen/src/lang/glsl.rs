@@ -41,8 +41,8 @@ impl Dialect for Glsl {
         let params: Vec<String> = f.params.iter().map(|(p, t)| format!("{t} {p}")).collect();
         let mut out = self.comment(f.doc);
         out.push_str(&format!("{} {}({}) {{\n", f.ret, f.name, params.join(", ")));
-        for (i, e) in f.lets.iter().enumerate() {
-            push_line(&mut out, "    ", &format!("float t{i} = {e};"));
+        for (i, (t, e)) in f.lets.iter().enumerate() {
+            push_line(&mut out, "    ", &format!("{t} t{i} = {e};"));
         }
         match &f.fields {
             Some((name, _)) => {
@@ -58,5 +58,25 @@ impl Dialect for Glsl {
         }
         out.push_str("}\n");
         out
+    }
+    fn math(&self, _: Scalar, f: &str) -> String {
+        // GLSL's two-argument arctangent is `atan(y, x)`
+        if f == "atan2" { "atan".to_string() } else { f.to_string() }
+    }
+    fn triple(&self, _: Scalar, _module: &str) -> String {
+        "vec3".to_string()
+    }
+    fn triple_def(&self, _: Scalar, _module: &str) -> String {
+        String::new()
+    }
+    fn local(&self, ty: &str, name: &str, value: &str) -> String {
+        format!("{ty} {name} = {value};")
+    }
+    fn return_triple(&self, _: Scalar, _module: &str, [x, y, z]: [&str; 3]) -> String {
+        format!("return vec3({x}, {y}, {z});")
+    }
+    fn helper_head(&self, _: Scalar, _module: &str, name: &str, params: &[&str]) -> String {
+        let params: Vec<String> = params.iter().map(|p| format!("float {p}")).collect();
+        format!("vec3 {name}({}) {{", params.join(", "))
     }
 }

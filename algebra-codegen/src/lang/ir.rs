@@ -35,6 +35,36 @@ pub enum Expr {
     Mul(Box<Expr>, Box<Expr>),
     /// `-a`.
     Neg(Box<Expr>),
+    /// `a / b`.
+    Div(Box<Expr>, Box<Expr>),
+    /// `sqrt(a)`.
+    Sqrt(Box<Expr>),
+    /// A scalar helper function of the file ([`Helper`]), returning three scalars; bound to a
+    /// local and read with [`Expr::Part`].
+    Call(Helper, Vec<Expr>),
+    /// Part `1` of the three returned by the [`Expr::Call`] bound to local `0`.
+    Part(usize, usize),
+}
+
+/// The scalar helpers of the closed forms (the factors of `algebra_core::closed_form`), emitted
+/// once per file when a kernel calls them.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+pub enum Helper {
+    /// `θ² ↦ (sinc θ, (cos θ - sinc θ)/θ², cos θ)`, by their series below `θ = 10^-3`.
+    ExpFactors,
+    /// `(sin θ, cos θ) ↦ (θ / sin θ, (θ cos θ - sin θ)/sin³ θ, 0)` with `θ = atan2(sin, cos)`,
+    /// by their series below `θ = 10^-3`.
+    LogFactors,
+}
+
+impl Helper {
+    /// The helper's name in function names (`exp_factors`, `log_factors`).
+    pub fn name(self) -> &'static str {
+        match self {
+            Helper::ExpFactors => "exp_factors",
+            Helper::LogFactors => "log_factors",
+        }
+    }
 }
 
 /// The operation of a kernel, which names it.
@@ -51,6 +81,12 @@ pub enum Op {
     Action(Convention),
     /// The unit-versor action (`sandwich_unit`, `apply_unit`).
     UnitAction(Convention),
+    /// The closed-form exponential of a bivector type.
+    Exp,
+    /// The closed-form logarithm of a unit element of an even type.
+    LogUnit,
+    /// An element of an even type divided by its norm.
+    Normalize,
 }
 
 impl Op {
@@ -70,6 +106,9 @@ impl Op {
             Op::Action(Convention::Apply) => "apply",
             Op::UnitAction(Convention::Sandwich) => "sandwich_unit",
             Op::UnitAction(Convention::Apply) => "apply_unit",
+            Op::Exp => "exp",
+            Op::LogUnit => "log_unit",
+            Op::Normalize => "normalize",
         }
     }
 }
@@ -98,7 +137,7 @@ pub struct Kernel {
     pub doc: String,
 }
 
-struct Ir;
+pub(super) struct Ir;
 
 impl Build for Ir {
     type E = Expr;
@@ -137,9 +176,12 @@ impl Kernel {
         fn uses(e: &Expr, param: usize) -> bool {
             match e {
                 Expr::Field { param: p, .. } => *p == param,
-                Expr::Local(_) | Expr::Const(_) => false,
-                Expr::Add(a, b) | Expr::Sub(a, b) | Expr::Mul(a, b) => uses(a, param) || uses(b, param),
-                Expr::Neg(a) => uses(a, param),
+                Expr::Local(_) | Expr::Const(_) | Expr::Part(..) => false,
+                Expr::Add(a, b) | Expr::Sub(a, b) | Expr::Mul(a, b) | Expr::Div(a, b) => {
+                    uses(a, param) || uses(b, param)
+                }
+                Expr::Neg(a) | Expr::Sqrt(a) => uses(a, param),
+                Expr::Call(_, args) => args.iter().any(|a| uses(a, param)),
             }
         }
         let outputs: Vec<&Expr> = match &self.output {
@@ -164,7 +206,8 @@ fn field(param: usize, field: usize) -> Expr {
 
 /// Every kernel of a plan, in the order of the Rust module: the binary products (every pair
 /// of types, every product), the unary maps and norms per type, the fused actions and the
-/// unit-versor actions. Pairs without a fused action (a versor type on the full multivector)
+/// unit-versor actions, then the closed forms (`exp`, `log_unit`, `normalize`;
+/// [`super::closed`]). Pairs without a fused action (a versor type on the full multivector)
 /// have no action kernel here: compose two geometric products.
 ///
 /// ```
@@ -203,6 +246,7 @@ pub fn kernels(plan: &Plan) -> Result<Vec<Kernel>, CodegenError> {
     for u in plan_unit_actions(&plan.spec, plan.full)? {
         out.push(unit_action(plan, &u, name(u.kernel.versor), name(u.kernel.operand)));
     }
+    out.extend(super::closed::kernels(plan)?);
     Ok(out)
 }
 

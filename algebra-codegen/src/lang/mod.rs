@@ -6,10 +6,14 @@
 //! Every language gets the same items from the same declaration:
 //! - each declared type (and the fallback types the plan adds) as a struct of scalars, the
 //!   fields in the declared order (the `repr(C)` layout of the Rust type);
-//! - every product of every ordered pair of types (`{m}_{lhs}_{op}_{rhs}`), the unary maps
+//! - every product of every ordered pair of declared types (of every type with
+//!   [`Options::every_type`]) (`{m}_{lhs}_{op}_{rhs}`), the unary maps
 //!   (`{m}_{type}_{reverse}`...) and `{m}_{type}_norm_squared`;
 //! - the fused versor actions `{m}_{versor}_{sandwich|apply}_{operand}` and the unit-versor
-//!   forms `..._{sandwich_unit|apply_unit}_...`.
+//!   forms `..._{sandwich_unit|apply_unit}_...`;
+//! - the closed forms `{m}_{bivector}_exp`, `{m}_{even}_log_unit` and `{m}_{even}_normalize`
+//!   where the generator finds them for the trigonometric families (rotors, PGA motors, dual
+//!   quaternions; [`closed`]), with the helpers `{m}_exp_factors` and `{m}_log_factors`.
 //!
 //! `{m}` is the module name, `{lhs}` a type's name in snake case. C has a `double` and a
 //! `float` version of everything (the `float` names end in `f`: `pga_Motorf`,
@@ -28,7 +32,9 @@
 //! ```
 
 pub mod c;
+mod closed;
 pub mod glsl;
+mod helpers;
 pub mod ir;
 pub mod wgsl;
 
@@ -68,6 +74,10 @@ pub struct Options {
     pub ops: Option<BTreeSet<String>>,
     /// Comment lines at the top of the file (e.g. the command that regenerates it).
     pub header: Vec<String>,
+    /// Kernels of every type, also those taking the types the plan adds (automatic
+    /// `Even`/`Odd`, the full multivector) as parameters; by default only kernels among the
+    /// declared types (the added types still appear as structs, as results).
+    pub every_type: bool,
 }
 
 /// How one language writes the pieces of a kernel file.
@@ -91,6 +101,18 @@ pub trait Dialect {
     /// A function: signature, the locals `t0, t1, ...`, and the result (a struct built from
     /// its fields' expressions, or a scalar).
     fn function(&self, s: Scalar, f: &Function<'_>) -> String;
+    /// The name of a math function (`sqrt`, `sin`, `cos`, `atan2`) at the scalar type.
+    fn math(&self, s: Scalar, f: &str) -> String;
+    /// The type of three scalars the closed-form helpers return (read as `.x`, `.y`, `.z`).
+    fn triple(&self, s: Scalar, module: &str) -> String;
+    /// The definition of [`Self::triple`], if the language needs one.
+    fn triple_def(&self, s: Scalar, module: &str) -> String;
+    /// `let name = value;` for a local of type `ty`.
+    fn local(&self, ty: &str, name: &str, value: &str) -> String;
+    /// The return of three scalars as [`Self::triple`].
+    fn return_triple(&self, s: Scalar, module: &str, values: [&str; 3]) -> String;
+    /// A helper's signature line (up to the opening brace): scalar parameters, a triple result.
+    fn helper_head(&self, s: Scalar, module: &str, name: &str, params: &[&str]) -> String;
 }
 
 /// One function ready to print: every expression already written in the language.
@@ -101,8 +123,8 @@ pub struct Function<'a> {
     pub params: Vec<(&'static str, String)>,
     /// The return type's name.
     pub ret: String,
-    /// The locals' expressions (`t0`, `t1`, ...).
-    pub lets: Vec<String>,
+    /// The locals' types and expressions (`t0`, `t1`, ...).
+    pub lets: Vec<(String, String)>,
     /// `Some((type name, field names))` when the result is a struct, `None` for a scalar.
     pub fields: Option<(String, &'a [String])>,
     /// The result: one expression per field, or the scalar.
@@ -130,7 +152,7 @@ fn param_names(op: &Op) -> &'static [&'static str] {
     match op {
         Op::Product(_) => &["a", "b"],
         Op::Action(_) | Op::UnitAction(_) => &["s", "x"],
-        Op::Unary(_) | Op::NormSquared => &["x"],
+        Op::Unary(_) | Op::NormSquared | Op::Exp | Op::LogUnit | Op::Normalize => &["x"],
     }
 }
 
@@ -193,17 +215,40 @@ fn decimal(s: Scalar, (n, d): Ratio) -> String {
     if text.contains(['.', 'e']) { text } else { format!("{text}.0") }
 }
 
-fn expr(d: &dyn Dialect, s: Scalar, e: &Expr, params: &[&str], fields: &[&[String]]) -> String {
-    let go = |e: &Expr| expr(d, s, e, params, fields);
+/// What [`expr`] needs to print names.
+struct Names<'a> {
+    module: &'a str,
+    suffix: &'a str,
+    params: &'a [&'a str],
+    fields: &'a [&'a [String]],
+}
+
+fn expr(d: &dyn Dialect, s: Scalar, e: &Expr, n: &Names<'_>) -> String {
+    let go = |e: &Expr| expr(d, s, e, n);
     match e {
-        Expr::Field { param, field } => format!("{}.{}", params[*param], fields[*param][*field]),
+        Expr::Field { param, field } => format!("{}.{}", n.params[*param], n.fields[*param][*field]),
         Expr::Local(i) => format!("t{i}"),
         Expr::Const(c) if c.0 < 0 => format!("(-{})", d.literal(s, &decimal(s, *c))),
         Expr::Const(c) => d.literal(s, &decimal(s, *c)),
         Expr::Add(a, b) => format!("({} + {})", go(a), go(b)),
         Expr::Sub(a, b) => format!("({} - {})", go(a), go(b)),
         Expr::Mul(a, b) => format!("({} * {})", go(a), go(b)),
+        Expr::Div(a, b) => format!("({} / {})", go(a), go(b)),
         Expr::Neg(a) => format!("(-{})", go(a)),
+        Expr::Sqrt(a) => format!("{}({})", d.math(s, "sqrt"), bare(go(a))),
+        Expr::Call(h, args) => {
+            let args: Vec<String> = args.iter().map(|a| bare(go(a))).collect();
+            format!("{}_{}{}({})", n.module, h.name(), n.suffix, args.join(", "))
+        }
+        Expr::Part(i, j) => format!("t{i}.{}", ["x", "y", "z"][*j]),
+    }
+}
+
+/// The helper a local calls, if any.
+fn call(e: &Expr) -> Option<ir::Helper> {
+    match e {
+        Expr::Call(h, _) => Some(*h),
+        _ => None,
     }
 }
 
@@ -230,9 +275,18 @@ fn render(plan: &Plan, d: &dyn Dialect, options: &Options) -> Result<String, Cod
     let kernels: Vec<Kernel> = ir::kernels(plan)?
         .into_iter()
         .filter(|k| options.ops.as_ref().is_none_or(|ops| ops.contains(k.op.name())))
+        .filter(|k| options.every_type || k.params.iter().all(|&p| p < plan.declared))
         .collect();
     let fields = field_names(plan);
     let module = &plan.spec.name;
+    // the declared types, and the added ones the emitted kernels take or return
+    let mut used: BTreeSet<usize> = (0..plan.declared).collect();
+    for k in &kernels {
+        used.extend(&k.params);
+        if let Output::Type(o, _) = &k.output {
+            used.insert(*o);
+        }
+    }
     let mut out = String::new();
     for line in &options.header {
         out.push_str(&d.comment(line));
@@ -240,7 +294,7 @@ fn render(plan: &Plan, d: &dyn Dialect, options: &Options) -> Result<String, Cod
     out.push_str(&d.prologue(module));
     for &s in d.scalars() {
         let sfx = d.suffix(s);
-        for (i, f) in fields.iter().enumerate() {
+        for (i, f) in fields.iter().enumerate().filter(|(i, _)| used.contains(i)) {
             let t = &plan.spec.types[i];
             for line in &t.doc {
                 out.push_str(&d.comment(line.trim()));
@@ -249,10 +303,19 @@ fn render(plan: &Plan, d: &dyn Dialect, options: &Options) -> Result<String, Cod
             out.push_str(&d.structure(s, &format!("{}{sfx}", type_name(plan, i)), f));
             out.push('\n');
         }
+        let helpers: BTreeSet<ir::Helper> = kernels.iter().flat_map(|k| k.lets.iter().filter_map(call)).collect();
+        if !helpers.is_empty() {
+            out.push_str(&d.triple_def(s, module));
+            for h in helpers {
+                out.push_str(&helpers::text(d, s, module, h));
+                out.push('\n');
+            }
+        }
         for k in &kernels {
             let params = param_names(&k.op);
             let pf: Vec<&[String]> = k.params.iter().map(|&i| fields[i].as_slice()).collect();
-            let print = |e: &Expr| bare(expr(d, s, e, params, &pf));
+            let names = Names { module, suffix: sfx, params, fields: &pf };
+            let print = |e: &Expr| bare(expr(d, s, e, &names));
             let (ret, result_fields, values) = match &k.output {
                 Output::Type(o, es) => (
                     format!("{}{sfx}", type_name(plan, *o)),
@@ -261,6 +324,14 @@ fn render(plan: &Plan, d: &dyn Dialect, options: &Options) -> Result<String, Cod
                 ),
                 Output::Scalar(e) => (d.scalar(s).to_string(), None, vec![print(e)]),
             };
+            let lets = k
+                .lets
+                .iter()
+                .map(|e| {
+                    let ty = if call(e).is_some() { d.triple(s, module) } else { d.scalar(s).to_string() };
+                    (ty, print(e))
+                })
+                .collect();
             let f = Function {
                 name: format!("{}{sfx}", function_name(plan, k)),
                 params: params
@@ -269,7 +340,7 @@ fn render(plan: &Plan, d: &dyn Dialect, options: &Options) -> Result<String, Cod
                     .map(|(p, &i)| (*p, format!("{}{sfx}", type_name(plan, i))))
                     .collect(),
                 ret,
-                lets: k.lets.iter().map(print).collect(),
+                lets,
                 fields: result_fields,
                 values,
                 doc: &k.doc,
@@ -284,7 +355,7 @@ fn render(plan: &Plan, d: &dyn Dialect, options: &Options) -> Result<String, Cod
 }
 
 /// The operation names [`Options::ops`] accepts.
-pub const OP_NAMES: [&str; 18] = [
+pub const OP_NAMES: [&str; 21] = [
     "gp",
     "op",
     "lc",
@@ -303,6 +374,9 @@ pub const OP_NAMES: [&str; 18] = [
     "apply",
     "sandwich_unit",
     "apply_unit",
+    "exp",
+    "log_unit",
+    "normalize",
 ];
 
 /// Appends `indent` + `line` + newline.

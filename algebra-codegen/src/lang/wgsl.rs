@@ -40,7 +40,7 @@ impl Dialect for Wgsl {
         let params: Vec<String> = f.params.iter().map(|(p, t)| format!("{p}: {t}")).collect();
         let mut out = self.comment(f.doc);
         out.push_str(&format!("fn {}({}) -> {} {{\n", f.name, params.join(", "), f.ret));
-        for (i, e) in f.lets.iter().enumerate() {
+        for (i, (_, e)) in f.lets.iter().enumerate() {
             push_line(&mut out, "    ", &format!("let t{i} = {e};"));
         }
         match &f.fields {
@@ -55,5 +55,24 @@ impl Dialect for Wgsl {
         }
         out.push_str("}\n");
         out
+    }
+    fn math(&self, _: Scalar, f: &str) -> String {
+        f.to_string()
+    }
+    fn triple(&self, _: Scalar, _module: &str) -> String {
+        "vec3<f32>".to_string()
+    }
+    fn triple_def(&self, _: Scalar, _module: &str) -> String {
+        String::new()
+    }
+    fn local(&self, _ty: &str, name: &str, value: &str) -> String {
+        format!("let {name} = {value};")
+    }
+    fn return_triple(&self, _: Scalar, _module: &str, [x, y, z]: [&str; 3]) -> String {
+        format!("return vec3<f32>({x}, {y}, {z});")
+    }
+    fn helper_head(&self, _: Scalar, _module: &str, name: &str, params: &[&str]) -> String {
+        let params: Vec<String> = params.iter().map(|p| format!("{p}: f32")).collect();
+        format!("fn {name}({}) -> vec3<f32> {{", params.join(", "))
     }
 }
