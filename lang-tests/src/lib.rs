@@ -11,6 +11,78 @@ use std::collections::HashMap;
 use std::fmt::Write;
 use std::ops::IndexMut;
 
+/// The product traits the generated kernels implement (for [`registry!`]).
+pub use algebra_core::ops;
+
+/// A [`Registry`] of every kernel of a generated module `$m` at scalar `$s`: the products
+/// among `types`, their unary maps and norms, the actions (`sandwich`, `apply` and their unit
+/// forms) of each of `versors` on each of `on`, and `exp`/`log_unit`/`normalize` of the
+/// `closed` (bivector => even) pairs.
+#[macro_export]
+macro_rules! registry {
+    ($m:ident, $s:ty; types [$($t:ident),*]; versors [$($v:ident),*] on [$($x:ident),*]; closed [$($b:ident => $ev:ident),*]) => {{
+        let mut r = $crate::Registry::<$s>::default();
+        $( registry!(@closed r, $m, $s, $b, $ev); )*
+        $( r.elements.insert(stringify!($t).to_string(), $m::$t::<$s>::ELEMENTS.iter().map(|e| e.to_string()).collect()); )*
+        registry!(@rows r, $m, $s; [$($t),*]; $($t),*);
+        $( registry!(@unary r, $m, $s, $t); )*
+        registry!(@actions r, $m, $s; [$($x),*]; $($v),*);
+        r
+    }};
+    (@rows $r:ident, $m:ident, $s:ty; $all:tt; $($a:ident),*) => { $( registry!(@row $r, $m, $s, $a; $all); )* };
+    (@row $r:ident, $m:ident, $s:ty, $a:ident; [$($b:ident),*]) => { $(
+        registry!(@prod $r, $m, $s, $a, $b, "gp", GeometricProduct, gp);
+        registry!(@prod $r, $m, $s, $a, $b, "op", OuterProduct, op);
+        registry!(@prod $r, $m, $s, $a, $b, "lc", LeftContraction, lc);
+        registry!(@prod $r, $m, $s, $a, $b, "rc", RightContraction, rc);
+        registry!(@prod $r, $m, $s, $a, $b, "sp", ScalarProduct, sp);
+        registry!(@prod $r, $m, $s, $a, $b, "regressive", RegressiveProduct, regressive);
+        registry!(@prod $r, $m, $s, $a, $b, "commutator", CommutatorProduct, commutator);
+        registry!(@prod $r, $m, $s, $a, $b, "anticommutator", AnticommutatorProduct, anticommutator);
+    )* };
+    (@prod $r:ident, $m:ident, $s:ty, $a:ident, $b:ident, $name:literal, $tr:ident, $f:ident) => {
+        $r.add($name, &[stringify!($a), stringify!($b)], |p| {
+            let (a, b): ($m::$a<$s>, $m::$b<$s>) = ($crate::load(&p[0]), $crate::load(&p[1]));
+            $crate::store($crate::ops::$tr::$f(&a, &b))
+        });
+    };
+    (@unary $r:ident, $m:ident, $s:ty, $t:ident) => {
+        registry!(@un $r, $m, $s, $t, "reverse", reverse);
+        registry!(@un $r, $m, $s, $t, "grade_involution", grade_involution);
+        registry!(@un $r, $m, $s, $t, "conjugate", conjugate);
+        registry!(@un $r, $m, $s, $t, "dual", dual);
+        registry!(@un $r, $m, $s, $t, "undual", undual);
+        $r.add("norm_squared", &[stringify!($t)], |p| vec![$crate::load::<$m::$t<$s>, $s>(&p[0]).norm_squared()]);
+    };
+    (@closed $r:ident, $m:ident, $s:ty, $b:ident, $ev:ident) => {
+        $r.add("exp", &[stringify!($b)], |p| $crate::store($crate::load::<$m::$b<$s>, $s>(&p[0]).exp()));
+        $r.add("log_unit", &[stringify!($ev)], |p| $crate::store($crate::load::<$m::$ev<$s>, $s>(&p[0]).log_unit().unwrap()));
+        $r.add("normalize", &[stringify!($ev)], |p| $crate::store($crate::load::<$m::$ev<$s>, $s>(&p[0]).normalize().unwrap()));
+    };
+    (@un $r:ident, $m:ident, $s:ty, $t:ident, $name:literal, $f:ident) => {
+        $r.add($name, &[stringify!($t)], |p| $crate::store($crate::load::<$m::$t<$s>, $s>(&p[0]).$f()));
+    };
+    (@actions $r:ident, $m:ident, $s:ty; $all:tt; $($v:ident),*) => { $( registry!(@act $r, $m, $s, $v; $all); )* };
+    (@act $r:ident, $m:ident, $s:ty, $v:ident; [$($x:ident),*]) => { $(
+        $r.add("sandwich", &[stringify!($v), stringify!($x)], |p| {
+            let (v, x): ($m::$v<$s>, $m::$x<$s>) = ($crate::load(&p[0]), $crate::load(&p[1]));
+            $crate::store(v.sandwich(&x))
+        });
+        $r.add("apply", &[stringify!($v), stringify!($x)], |p| {
+            let (v, x): ($m::$v<$s>, $m::$x<$s>) = ($crate::load(&p[0]), $crate::load(&p[1]));
+            $crate::store(v.apply(&x))
+        });
+        $r.add("sandwich_unit", &[stringify!($v), stringify!($x)], |p| {
+            let (v, x): ($m::$v<$s>, $m::$x<$s>) = ($crate::load(&p[0]), $crate::load(&p[1]));
+            $crate::store(v.sandwich_unit(&x))
+        });
+        $r.add("apply_unit", &[stringify!($v), stringify!($x)], |p| {
+            let (v, x): ($m::$v<$s>, $m::$x<$s>) = ($crate::load(&p[0]), $crate::load(&p[1]));
+            $crate::store(v.apply_unit(&x))
+        });
+    )* };
+}
+
 /// The plan of a declaration given as `gam codegen --types` text.
 ///
 /// ```

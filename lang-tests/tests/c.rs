@@ -7,71 +7,7 @@
 use algebra_codegen::lang::{Lang, Options, emit, ir::kernels};
 use algebra_codegen::plan::Plan;
 use algebra_core::Basis;
-use gam_lang_tests::{Numbers, Registry, c_driver, compile_and_run, load, plan, shape, store};
-
-macro_rules! registry {
-    ($m:ident, $s:ty; types [$($t:ident),*]; versors [$($v:ident),*] on [$($x:ident),*]; closed [$($b:ident => $ev:ident),*]) => {{
-        let mut r = Registry::<$s>::default();
-        $( registry!(@closed r, $m, $s, $b, $ev); )*
-        $( r.elements.insert(stringify!($t).to_string(), $m::$t::<$s>::ELEMENTS.iter().map(|e| e.to_string()).collect()); )*
-        registry!(@rows r, $m, $s; [$($t),*]; $($t),*);
-        $( registry!(@unary r, $m, $s, $t); )*
-        registry!(@actions r, $m, $s; [$($x),*]; $($v),*);
-        r
-    }};
-    (@rows $r:ident, $m:ident, $s:ty; $all:tt; $($a:ident),*) => { $( registry!(@row $r, $m, $s, $a; $all); )* };
-    (@row $r:ident, $m:ident, $s:ty, $a:ident; [$($b:ident),*]) => { $(
-        registry!(@prod $r, $m, $s, $a, $b, "gp", GeometricProduct, gp);
-        registry!(@prod $r, $m, $s, $a, $b, "op", OuterProduct, op);
-        registry!(@prod $r, $m, $s, $a, $b, "lc", LeftContraction, lc);
-        registry!(@prod $r, $m, $s, $a, $b, "rc", RightContraction, rc);
-        registry!(@prod $r, $m, $s, $a, $b, "sp", ScalarProduct, sp);
-        registry!(@prod $r, $m, $s, $a, $b, "regressive", RegressiveProduct, regressive);
-        registry!(@prod $r, $m, $s, $a, $b, "commutator", CommutatorProduct, commutator);
-        registry!(@prod $r, $m, $s, $a, $b, "anticommutator", AnticommutatorProduct, anticommutator);
-    )* };
-    (@prod $r:ident, $m:ident, $s:ty, $a:ident, $b:ident, $name:literal, $tr:ident, $f:ident) => {
-        $r.add($name, &[stringify!($a), stringify!($b)], |p| {
-            let (a, b): ($m::$a<$s>, $m::$b<$s>) = (load(&p[0]), load(&p[1]));
-            store(algebra_core::ops::$tr::$f(&a, &b))
-        });
-    };
-    (@unary $r:ident, $m:ident, $s:ty, $t:ident) => {
-        registry!(@un $r, $m, $s, $t, "reverse", reverse);
-        registry!(@un $r, $m, $s, $t, "grade_involution", grade_involution);
-        registry!(@un $r, $m, $s, $t, "conjugate", conjugate);
-        registry!(@un $r, $m, $s, $t, "dual", dual);
-        registry!(@un $r, $m, $s, $t, "undual", undual);
-        $r.add("norm_squared", &[stringify!($t)], |p| vec![load::<$m::$t<$s>, $s>(&p[0]).norm_squared()]);
-    };
-    (@closed $r:ident, $m:ident, $s:ty, $b:ident, $ev:ident) => {
-        $r.add("exp", &[stringify!($b)], |p| store(load::<$m::$b<$s>, $s>(&p[0]).exp()));
-        $r.add("log_unit", &[stringify!($ev)], |p| store(load::<$m::$ev<$s>, $s>(&p[0]).log_unit().unwrap()));
-        $r.add("normalize", &[stringify!($ev)], |p| store(load::<$m::$ev<$s>, $s>(&p[0]).normalize().unwrap()));
-    };
-    (@un $r:ident, $m:ident, $s:ty, $t:ident, $name:literal, $f:ident) => {
-        $r.add($name, &[stringify!($t)], |p| store(load::<$m::$t<$s>, $s>(&p[0]).$f()));
-    };
-    (@actions $r:ident, $m:ident, $s:ty; $all:tt; $($v:ident),*) => { $( registry!(@act $r, $m, $s, $v; $all); )* };
-    (@act $r:ident, $m:ident, $s:ty, $v:ident; [$($x:ident),*]) => { $(
-        $r.add("sandwich", &[stringify!($v), stringify!($x)], |p| {
-            let (v, x): ($m::$v<$s>, $m::$x<$s>) = (load(&p[0]), load(&p[1]));
-            store(v.sandwich(&x))
-        });
-        $r.add("apply", &[stringify!($v), stringify!($x)], |p| {
-            let (v, x): ($m::$v<$s>, $m::$x<$s>) = (load(&p[0]), load(&p[1]));
-            store(v.apply(&x))
-        });
-        $r.add("sandwich_unit", &[stringify!($v), stringify!($x)], |p| {
-            let (v, x): ($m::$v<$s>, $m::$x<$s>) = (load(&p[0]), load(&p[1]));
-            store(v.sandwich_unit(&x))
-        });
-        $r.add("apply_unit", &[stringify!($v), stringify!($x)], |p| {
-            let (v, x): ($m::$v<$s>, $m::$x<$s>) = (load(&p[0]), load(&p[1]));
-            store(v.apply_unit(&x))
-        });
-    )* };
-}
+use gam_lang_tests::{Numbers, Registry, c_driver, compile_and_run, plan, registry, shape};
 
 algebra_macros::algebra! {
     /// 3D PGA, canonical names.
