@@ -142,14 +142,16 @@ fn main() {
     let (mut ng, mut np) = (Vec::new(), Vec::new());
     for _ in 0..ROUNDS {
         ng.push(per_element(&mut || {
-            for i in 0..N {
-                o[i] = black_box(&a)[i] * black_box(&b)[i];
+            let (a, b) = (black_box(&a), black_box(&b));
+            for ((o, a), b) in o.iter_mut().zip(a).zip(b) {
+                *o = a * b;
             }
             black_box(&o);
         }));
         np.push(per_element(&mut || {
-            for i in 0..N {
-                po[i] = black_box(&a)[i].transform_point(&black_box(&p)[i]);
+            let (a, p) = (black_box(&a), black_box(&p));
+            for ((o, a), p) in po.iter_mut().zip(a).zip(p) {
+                *o = a.transform_point(p);
             }
             black_box(&po);
         }));
