@@ -84,3 +84,31 @@ fn glsl_kernels_validate() {
         every_kernel_is_a_function(&plan, &module);
     }
 }
+
+/// The block of `lang` in docs/codegen.md's "Kernels in C, WGSL and GLSL", with the generated
+/// file (named by its first line, `pga3 Motor=even;Point=grade3`) in place of its comment.
+fn doc_shader(fence: &str, lang: Lang) -> String {
+    let doc = include_str!("../../docs/codegen.md");
+    let start = doc.find(&format!("```{fence}\n")).expect("a block") + fence.len() + 4;
+    let block = &doc[start..start + doc[start..].find("```").expect("its end")];
+    let plan = plan("pga3", Basis::Blade, "Motor=even;Point=grade3", "pga");
+    let source =
+        emit(&plan, lang, &Options { ops: Some(["apply_unit".to_string()].into()), ..Options::default() }).unwrap();
+    assert!(block.contains("// (the generated file"), "the block names where the file goes");
+    block
+        .lines()
+        .map(|l| if l.starts_with("// (the generated file") { source.clone() } else { format!("{l}\n") })
+        .collect()
+}
+
+#[test]
+fn the_shaders_of_the_docs_validate() {
+    let wgsl = doc_shader("wgsl", Lang::Wgsl);
+    let module = naga::front::wgsl::parse_str(&wgsl).unwrap_or_else(|e| panic!("{}", e.emit_to_string(&wgsl)));
+    validate(&module, "the WGSL example");
+    let glsl = doc_shader("glsl", Lang::Glsl);
+    let module = naga::front::glsl::Frontend::default()
+        .parse(&naga::front::glsl::Options::from(naga::ShaderStage::Compute), &glsl)
+        .unwrap_or_else(|e| panic!("{}", e.emit_to_string(&glsl)));
+    validate(&module, "the GLSL example");
+}
