@@ -47,13 +47,53 @@ use std::fmt;
 mod methods;
 #[cfg(feature = "constraints")]
 mod reduce;
+mod request;
 pub mod table;
 mod tokens;
 
+pub use methods::methods;
 pub(crate) use methods::typed_body;
-pub use methods::{KernelOp, Request, compute, kernel, method_name, methods, requests};
 #[cfg(feature = "constraints")]
 pub use reduce::{constrained_action, constrained_product};
+pub use request::{compute, kernel, method_name, requests};
+
+/// What a constrained kernel computes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum KernelOp {
+    /// `rev(S) x S` (the module's `sandwich`).
+    Sandwich,
+    /// `S x rev(S)` (the module's `apply`).
+    Apply,
+    /// `x x` (left and right are the same value).
+    Square,
+}
+
+impl KernelOp {
+    /// `sandwich`, `apply` or `square`.
+    ///
+    /// ```
+    /// assert_eq!(algebra_codegen::constraint::KernelOp::Square.name(), "square");
+    /// ```
+    pub fn name(self) -> &'static str {
+        match self {
+            KernelOp::Sandwich => "sandwich",
+            KernelOp::Apply => "apply",
+            KernelOp::Square => "square",
+        }
+    }
+}
+
+/// One constrained kernel of a module: the operation and its two type indices (equal for
+/// [`KernelOp::Square`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Request {
+    /// The operation.
+    pub op: KernelOp,
+    /// The versor (or squared) type.
+    pub left: usize,
+    /// The operand type.
+    pub right: usize,
+}
 
 /// The polynomial constraints a type may declare.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -8,8 +8,8 @@
 //! is reached after at most two rounds. Only modules that do not declare the full multivector
 //! get them; a declared full type is a declared type every result lands in.
 
-use super::plan::UNARY_OPS;
 use super::spec::{CodegenError, ModuleSpec, TypeSpec};
+use crate::naming::UNARY_OPS;
 use algebra_core::tables::Product;
 use std::collections::BTreeSet;
 

@@ -1,14 +1,21 @@
 //! The code generator behind the `algebra!` macro and `gam codegen`: from a [`ModuleSpec`]
 //! (an algebra, a basis and named types, each a set of basis elements) to a Rust module of
-//! types generic over the scalar with fully unrolled, sparse kernels.
+//! types generic over the scalar with fully unrolled, sparse kernels, or the same kernels in C,
+//! WGSL or GLSL.
 //!
 //! The pipeline is visible in three steps:
 //! 1. [`spec::ModuleSpec`]: what the user declared (validated);
 //! 2. [`plan::Plan`]: the structural analysis — for every pair of types and every product,
 //!    which output coefficients receive which `(lhs, rhs, rational)` terms, and which declared
-//!    type is the smallest holding the result (decided here, at expansion time);
-//! 3. [`emit`]: the token stream (structs, constructors, Display, conversions, operator and
-//!    trait impls, unary operations).
+//!    type is the smallest holding the result (decided here, at expansion time). The plan's
+//!    parts are language-free: [`versor`] (fused actions), [`unit`](mod@unit) (unit-versor
+//!    actions), [`matrix`] (action matrices), [`closed`] and [`closed_inv`] (closed-form
+//!    detection), [`constraint`] (kernels reduced modulo constraints), [`orient`], [`size`],
+//!    `sums` (the summation shapes every emitter uses) and [`naming`];
+//! 3. an emitter, which depends on the plan and on which nothing depends: [`emit`] (the Rust
+//!    token stream: structs, constructors, Display, conversions, operator and trait impls,
+//!    unary operations, actions, closed forms; [`standalone`] and [`paths`] rewrite it) or
+//!    [`lang`] (C, WGSL, GLSL, one file per language).
 //!
 //! Kernels contain only structurally non-zero terms, fold rational constants into
 //! `T::from_ratio`, never compare values, and report their operation counts
@@ -39,15 +46,16 @@ pub mod lang;
 pub mod matrix;
 #[cfg(feature = "toml")]
 pub mod metric_toml;
+pub mod naming;
 pub mod orient;
 pub mod paths;
 pub mod plan;
+mod ratio;
 pub mod size;
 pub mod spec;
 pub mod standalone;
 pub(crate) mod sums;
 pub mod unit;
-mod value;
 pub mod versor;
 
 pub use spec::{CodegenError, ModuleSpec, TypeSpec};

@@ -21,8 +21,7 @@
 //! ));
 //! ```
 
-use super::plan::{Plan, Ratio};
-use super::spec::TypeSpec;
+use crate::ratio::Ratio;
 use algebra_core::algebra::Algebra;
 
 /// The blade and orientation of a name: `Some((mask, sign))` when `name` is `e` followed by
@@ -69,43 +68,8 @@ pub fn oriented_mask(algebra: &Algebra, name: &str) -> Option<(u32, i64)> {
     Some((seq.iter().fold(0, |m, &i| m | 1 << i), sign))
 }
 
-/// The sign of each field of a type (`-1` where the name reverses the canonical orientation).
-pub fn field_signs(t: &TypeSpec) -> Vec<i64> {
-    t.elements.iter().map(|m| t.renamed.get(m).map_or(1, |(_, s)| *s)).collect()
-}
-
-fn times((n, d): Ratio, s: i64) -> Ratio {
+pub(crate) fn times((n, d): Ratio, s: i64) -> Ratio {
     (n * s, d)
-}
-
-/// Folds the field signs of every type into the plan's kernels (a no-op without renames).
-pub(crate) fn fold_signs(plan: &mut Plan) {
-    let signs: Vec<Vec<i64>> = plan.spec.types.iter().map(field_signs).collect();
-    if signs.iter().flatten().all(|&s| s == 1) {
-        return;
-    }
-    for k in plan.binary.iter_mut().chain(plan.typed.iter_mut()) {
-        for (o, terms) in k.outputs.iter_mut().enumerate() {
-            for t in terms {
-                t.coef = times(t.coef, signs[k.lhs][t.lhs] * signs[k.rhs][t.rhs] * signs[k.out][o]);
-            }
-        }
-    }
-    for k in &mut plan.unary {
-        for (o, terms) in k.outputs.iter_mut().enumerate() {
-            for (a, c) in terms {
-                *c = times(*c, signs[k.ty][*a] * signs[k.out][o]);
-            }
-        }
-    }
-    for (i, terms) in plan.norm.iter_mut().enumerate() {
-        for t in terms {
-            t.coef = times(t.coef, signs[i][t.lhs] * signs[i][t.rhs]);
-        }
-    }
-    for k in &mut plan.actions {
-        fold_action(k, &signs);
-    }
 }
 
 /// Folds the field signs into one two-stage action kernel (the fused actions of the plan and

@@ -1,16 +1,16 @@
 //! Structural analysis: which terms each generated kernel contains, and which declared type
 //! receives each result. Everything here is decided from the exact tables at expansion time.
 
+pub use crate::naming::{UNARY_OPS, unary_name};
+pub use crate::ratio::Ratio;
+use crate::ratio::to_ratio;
 use crate::spec::{CodegenError, ModuleSpec, TypeSpec};
 use algebra_core::basis::Basis;
 use algebra_core::multivector::Multivector;
 use algebra_core::rational::Q;
 use algebra_core::tables::{Product, Unary};
-use num_traits::{ToPrimitive, Zero};
+use num_traits::Zero;
 use std::collections::BTreeSet;
-
-/// An exact constant of a kernel as `(numerator, denominator)`, for `T::from_ratio`.
-pub type Ratio = (i64, i64);
 
 /// `c · lhs[lhs] · rhs[rhs]`: one term of a binary kernel (field indices into the types).
 #[derive(Debug, Clone, PartialEq)]
@@ -96,17 +96,6 @@ pub struct Plan {
     pub typed: Vec<BinaryKernel>,
     /// The matrix forms of the fused actions small enough ([`super::matrix`]).
     pub matrices: Vec<super::matrix::MatrixKernel>,
-}
-
-/// The unary operations that get kernels.
-pub const UNARY_OPS: [Unary; 5] =
-    [Unary::Reverse, Unary::GradeInvolution, Unary::CliffordConjugate, Unary::Dual, Unary::Undual];
-
-pub(super) fn to_ratio(c: &Q) -> Result<Ratio, CodegenError> {
-    match (c.numer().to_i64(), c.denom().to_i64()) {
-        (Some(n), Some(d)) => Ok((n, d)),
-        _ => Err(CodegenError::CoefficientTooLarge(algebra_core::rational::format_rational(c))),
-    }
 }
 
 /// Counts of a kernel given its per-output terms.
@@ -217,8 +206,8 @@ impl Plan {
             .collect();
         let actions = super::versor::plan_actions(&spec, full)?;
         let mut plan = Plan { spec, declared, full, binary, unary, norm, closed, actions, typed, matrices: Vec::new() };
-        super::orient::fold_signs(&mut plan);
-        plan.matrices = super::matrix::plan_matrices(&plan);
+        fold_signs(&mut plan);
+        plan.matrices = super::matrix::plan_matrices(&plan.actions);
         Ok(plan)
     }
 
@@ -316,18 +305,6 @@ impl Plan {
     }
 }
 
-/// The method name of a unary operation in generated code.
-pub fn unary_name(op: Unary) -> &'static str {
-    match op {
-        Unary::Reverse => "reverse",
-        Unary::GradeInvolution => "grade_involution",
-        Unary::CliffordConjugate => "conjugate",
-        Unary::Dual => "dual",
-        Unary::Undual => "undual",
-        Unary::BasisReverse => "basis_reverse",
-    }
-}
-
 /// `<x rev(x)>_0 = Σ_{i<=j} c_ij x_i x_j` for a type with the given elements.
 fn norm_terms(
     alg: &std::sync::Arc<algebra_core::Algebra>,
@@ -348,4 +325,34 @@ fn norm_terms(
         }
     }
     Ok(terms)
+}
+
+/// Folds the orientation signs of renamed blades ([`crate::orient`]) of every type into the plan's kernels (a no-op without renames).
+fn fold_signs(plan: &mut Plan) {
+    let signs: Vec<Vec<i64>> = plan.spec.types.iter().map(crate::TypeSpec::signs).collect();
+    if signs.iter().flatten().all(|&s| s == 1) {
+        return;
+    }
+    for k in plan.binary.iter_mut().chain(plan.typed.iter_mut()) {
+        for (o, terms) in k.outputs.iter_mut().enumerate() {
+            for t in terms {
+                t.coef = crate::orient::times(t.coef, signs[k.lhs][t.lhs] * signs[k.rhs][t.rhs] * signs[k.out][o]);
+            }
+        }
+    }
+    for k in &mut plan.unary {
+        for (o, terms) in k.outputs.iter_mut().enumerate() {
+            for (a, c) in terms {
+                *c = crate::orient::times(*c, signs[k.ty][*a] * signs[k.out][o]);
+            }
+        }
+    }
+    for (i, terms) in plan.norm.iter_mut().enumerate() {
+        for t in terms {
+            t.coef = crate::orient::times(t.coef, signs[i][t.lhs] * signs[i][t.rhs]);
+        }
+    }
+    for k in &mut plan.actions {
+        crate::orient::fold_action(k, &signs);
+    }
 }

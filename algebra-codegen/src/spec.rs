@@ -105,6 +105,12 @@ pub struct TypeSpec {
 }
 
 impl TypeSpec {
+    /// The sign of each field (`-1` where the name reverses the canonical orientation,
+    /// [`crate::orient`]).
+    pub fn signs(&self) -> Vec<i64> {
+        self.elements.iter().map(|m| self.renamed.get(m).map_or(1, |(_, s)| *s)).collect()
+    }
+
     /// A type from a selector: `grade K` (or `gradeK`), `grades K,L`, `even`, `odd`, `all`,
     /// or a comma-separated list of basis names (`1, e12, e1inf`). Grades count generators in
     /// the chosen basis (the paper's notion in the product basis). A listed name may reorder

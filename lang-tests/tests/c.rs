@@ -4,7 +4,7 @@
 //! multiply-adds) and run on random inputs, equals the Rust kernel bit for bit: the emitters
 //! print the same operations in the same order ([`algebra_codegen::lang::ir`]).
 
-use algebra_codegen::lang::{Lang, Options, emit, ir::kernels};
+use algebra_codegen::lang::{Lang, Options, emit, kernels};
 use algebra_codegen::plan::Plan;
 use algebra_core::Basis;
 use gam_lang_tests::{Numbers, Registry, c_driver, compile_and_run, plan, registry, shape};

@@ -44,7 +44,7 @@ fn validate(module: &naga::Module, what: &str) -> naga::valid::ModuleInfo {
 fn every_kernel_is_a_function(plan: &Plan, module: &naga::Module) {
     let names: std::collections::HashSet<&str> =
         module.functions.iter().filter_map(|(_, f)| f.name.as_deref()).filter(|n| *n != "main").collect();
-    let kernels = algebra_codegen::lang::ir::kernels(plan).unwrap();
+    let kernels = algebra_codegen::lang::kernels(plan).unwrap();
     for k in &kernels {
         let name = algebra_codegen::lang::function_name(plan, k);
         assert!(names.contains(name.as_str()), "{name} is missing");

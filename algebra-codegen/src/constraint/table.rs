@@ -15,8 +15,7 @@
 //! end
 //! ```
 
-use super::methods::Request;
-use super::{ConstrainedKernel, ConstraintError, Counts, KTerm, Monomial};
+use super::{ConstrainedKernel, ConstraintError, Counts, KTerm, Monomial, Request};
 use crate::ModuleSpec;
 use algebra_core::rational::format_rational;
 use std::fmt::Write;

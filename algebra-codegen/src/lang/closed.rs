@@ -9,10 +9,10 @@
 //! input give non-finite coefficients, and the Rust methods' rescaling of elements far from
 //! unit scale is left out (docs/codegen.md "Kernels in C, WGSL and GLSL").
 
-use super::ir::{Expr, Helper, Kernel, Op, Output};
+use super::ir::{Expr, Helper, Ir, Kernel, Op, Output};
 use crate::closed::{ClosedForm, Family, ITimes, Sign, detect};
-use crate::orient::field_signs;
-use crate::plan::{Plan, Ratio, to_ratio};
+use crate::plan::Plan;
+use crate::ratio::{Ratio, to_ratio};
 use crate::{CodegenError, sums};
 use algebra_core::rational::Q;
 use num_traits::Zero;
@@ -30,7 +30,7 @@ fn mul(a: Expr, c: Expr) -> Expr {
 }
 
 fn sum(terms: Vec<(Ratio, Expr)>) -> Expr {
-    sums::sum_in::<super::ir::Ir>(terms.into_iter().map(|(c, e)| (c, e, true)).collect())
+    sums::sum_in::<Ir>(terms.into_iter().map(|(c, e)| (c, e, true)).collect())
 }
 
 /// Field access for one closed form: parameter 0 is the kernel's input (`B` or `M`).
@@ -126,7 +126,7 @@ fn pair(plan: &Plan, c: &ClosedForm) -> Result<Vec<Kernel>, CodegenError> {
     let types = &plan.spec.types;
     let in_m: Vec<usize> =
         types[bi].elements.iter().map(|x| types[mi].elements.iter().position(|y| y == x).expect("B in M")).collect();
-    let ctx = Ctx { c, in_m, signs: types.iter().map(field_signs).collect() };
+    let ctx = Ctx { c, in_m, signs: types.iter().map(crate::TypeSpec::signs).collect() };
     let m_fields = types[mi].elements.len();
     let one = types[mi].elements.iter().position(|x| *x == 0).expect("1 in M");
     let scalar = Expr::Field { param: 0, field: one };
@@ -203,7 +203,7 @@ fn pair(plan: &Plan, c: &ClosedForm) -> Result<Vec<Kernel>, CodegenError> {
     };
 
     // normalize: M -> M
-    let alpha = sums::sum_in::<super::ir::Ir>(vec![
+    let alpha = sums::sum_in::<Ir>(vec![
         ((1, 1), mul(scalar.clone(), scalar.clone()), true),
         ((-1, 1), ctx.square_form(mi, 1)?, true),
     ]);

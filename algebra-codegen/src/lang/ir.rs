@@ -1,16 +1,12 @@
-//! The language-free form of every kernel: straight-line programs over one scalar type,
-//! built from the [`Plan`] in the same statement order and with the same summation shapes as
-//! the Rust kernels ([`crate::sums`]), so a kernel computes the same floating-point result in
-//! every language that evaluates `+`, `-` and `*` as written (C without contraction of
-//! multiply-adds; see docs/codegen.md "Kernels in C, WGSL and GLSL").
+//! The language-free form of a kernel: a straight-line program over one scalar type (locals,
+//! then the result), the operations in evaluation order. Built from the plan by
+//! `lang::linear` and `lang::closed`; printed by the dialects of [`super`].
 
-use crate::plan::{BinaryKernel, Plan, Ratio, Term as PlanTerm, unary_name};
-use crate::sums::{Build, Term, chunked_sum_in, sum_in, tree_sum_in};
-use crate::unit::{UnitKernel, plan_unit_actions};
-use crate::versor::{ActionKernel, Convention};
-use crate::{CodegenError, emit};
+use crate::naming::product_name;
+use crate::ratio::Ratio;
+use crate::sums::Build;
+use crate::versor::Convention;
 use algebra_core::tables::Product;
-use std::collections::BTreeMap;
 
 /// A scalar expression. Binary operations are evaluated as written (printers parenthesise
 /// every one), so the order of the floating-point operations is part of the expression.
@@ -99,7 +95,7 @@ impl Op {
     /// ```
     pub fn name(&self) -> &'static str {
         match self {
-            Op::Product(p) => emit::product_trait(*p).1,
+            Op::Product(p) => product_name(*p),
             Op::Unary(n) => n,
             Op::NormSquared => "norm_squared",
             Op::Action(Convention::Sandwich) => "sandwich",
@@ -192,262 +188,14 @@ impl Kernel {
     }
 }
 
-fn mul(a: Expr, b: Expr) -> Expr {
+pub(super) fn mul(a: Expr, b: Expr) -> Expr {
     Expr::Mul(Box::new(a), Box::new(b))
 }
 
-fn add(a: Expr, b: Expr, negative: bool) -> Expr {
+pub(super) fn add(a: Expr, b: Expr, negative: bool) -> Expr {
     if negative { Expr::Sub(Box::new(a), Box::new(b)) } else { Expr::Add(Box::new(a), Box::new(b)) }
 }
 
-fn field(param: usize, field: usize) -> Expr {
+pub(super) fn field(param: usize, field: usize) -> Expr {
     Expr::Field { param, field }
-}
-
-/// Every kernel of a plan, in the order of the Rust module: the binary products (every pair
-/// of types, every product), the unary maps and norms per type, the fused actions and the
-/// unit-versor actions, then the closed forms (`exp`, `log_unit`, `normalize`;
-/// [`super::closed`]). Pairs without a fused action (a versor type on the full multivector)
-/// have no action kernel here: compose two geometric products.
-///
-/// ```
-/// use algebra_core::{Algebra, Basis};
-/// use algebra_codegen::{ModuleSpec, plan::Plan, lang::ir::{kernels, Op}};
-/// let alg = Algebra::builtin("pga3").unwrap();
-/// let types = ModuleSpec::parse_types("Motor=even;Point=grade3", &alg).unwrap();
-/// let plan = Plan::new(ModuleSpec::new("pga", alg.metric().clone(), Basis::Blade, types).unwrap()).unwrap();
-/// let ks = kernels(&plan).unwrap();
-/// let apply = ks.iter().find(|k| k.op.name() == "apply_unit" && k.params == [0, 1]).unwrap();
-/// assert_eq!(apply.lets.len(), 4); // the commutator's intermediates
-/// ```
-pub fn kernels(plan: &Plan) -> Result<Vec<Kernel>, CodegenError> {
-    let name = |i: usize| plan.spec.types[i].name.as_str();
-    let mut out: Vec<Kernel> = plan.binary.iter().map(|k| binary(plan, k)).collect();
-    for ty in 0..plan.spec.types.len() {
-        for k in plan.unary.iter().filter(|k| k.ty == ty) {
-            let fields = k
-                .outputs
-                .iter()
-                .map(|terms| sum_in::<Ir>(terms.iter().map(|&(a, c)| (c, field(0, a), false)).collect()))
-                .collect();
-            out.push(Kernel {
-                op: Op::Unary(unary_name(k.op)),
-                params: vec![ty],
-                lets: Vec::new(),
-                output: Output::Type(k.out, fields),
-                doc: format!("The {} of a {}.", unary_name(k.op).replace('_', " "), name(ty)),
-            });
-        }
-        out.push(norm(ty, &plan.norm[ty], name(ty)));
-    }
-    for k in &plan.actions {
-        out.push(action(plan, k, name(k.versor), name(k.operand)));
-    }
-    for u in plan_unit_actions(&plan.spec, plan.full)? {
-        out.push(unit_action(plan, &u, name(u.kernel.versor), name(u.kernel.operand)));
-    }
-    out.extend(super::closed::kernels(plan)?);
-    Ok(out)
-}
-
-/// A binary product: the distinct field products bound once (in field order), each output a
-/// [`chunked_sum_in`]; above the size threshold the table form's four interleaved accumulators
-/// ([`crate::size`]), written out.
-fn binary(plan: &Plan, k: &BinaryKernel) -> Kernel {
-    let (product, lhs, rhs) = (k.product, k.lhs, k.rhs);
-    let doc = format!(
-        "The {} of a {} and a {}.",
-        emit::product_trait(product).0,
-        plan.spec.types[lhs].name,
-        plan.spec.types[rhs].name
-    );
-    let large = crate::size::is_large(plan.spec.table_above, k.outputs.iter().map(Vec::len));
-    let mut uses: BTreeMap<(usize, usize), usize> = BTreeMap::new();
-    for t in k.outputs.iter().flatten() {
-        *uses.entry((t.lhs, t.rhs)).or_default() += 1;
-    }
-    let mut lets = Vec::new();
-    let mut local = BTreeMap::new();
-    if !large {
-        for &(a, b) in uses.keys() {
-            local.insert((a, b), lets.len());
-            lets.push(mul(field(0, a), field(1, b)));
-        }
-    }
-    let fields = k
-        .outputs
-        .iter()
-        .map(|terms| {
-            if large {
-                table_sum(terms.iter().map(|t| (field(0, t.lhs), field(1, t.rhs), t.coef)).collect())
-            } else {
-                chunked_sum_in::<Ir>(
-                    terms.iter().map(|t| (t.coef, Expr::Local(local[&(t.lhs, t.rhs)]), true)).collect(),
-                )
-            }
-        })
-        .collect();
-    Kernel { op: Op::Product(product), params: vec![lhs, rhs], lets, output: Output::Type(k.out, fields), doc }
-}
-
-/// One output of a table-driven kernel ([`crate::size::table_loop`]): the products `a · b`
-/// with their constants dealt round-robin to four accumulators starting at zero (the remainder
-/// to the first), then `(a0 + a1) + (a2 + a3)`.
-fn table_sum(terms: Vec<(Expr, Expr, Ratio)>) -> Expr {
-    let mut acc: [Expr; 4] = std::array::from_fn(|_| Ir::zero());
-    let quads = terms.len() / 4 * 4;
-    for (i, (a, b, c)) in terms.into_iter().enumerate() {
-        let slot = if i < quads { i % 4 } else { 0 };
-        let p = mul(a, b);
-        let sum = std::mem::replace(&mut acc[slot], Ir::zero());
-        acc[slot] = match c {
-            (1, 1) => add(sum, p, false),
-            (-1, 1) => add(sum, p, true),
-            c => add(sum, mul(Expr::Const(c), p), false),
-        };
-    }
-    let [a0, a1, a2, a3] = acc;
-    add(add(a0, a1, false), add(a2, a3, false), false)
-}
-
-/// The outputs of a table-driven two-stage kernel, per output row of `(i, j, c)` terms.
-fn table_rows(rows: &[Vec<(usize, usize, Ratio)>], a: impl Fn(usize) -> Expr, b: impl Fn(usize) -> Expr) -> Vec<Expr> {
-    rows.iter().map(|row| table_sum(row.iter().map(|&(i, j, c)| (a(i), b(j), c)).collect())).collect()
-}
-
-fn norm(ty: usize, terms: &[PlanTerm], name: &str) -> Kernel {
-    let lets = terms.iter().map(|t| mul(field(0, t.lhs), field(0, t.rhs))).collect();
-    let value = sum_in::<Ir>(terms.iter().enumerate().map(|(n, t)| (t.coef, Expr::Local(n), true)).collect());
-    Kernel {
-        op: Op::NormSquared,
-        params: vec![ty],
-        lets,
-        output: Output::Scalar(value),
-        doc: format!("The squared norm <x rev(x)>_0 of a {name} (may be negative or zero)."),
-    }
-}
-
-/// `c · s[a]` as `(±1, |c| · s[a])`: the constant multiplies the versor's coefficient
-/// (as [`crate::versor`]'s kernels do).
-fn scaled(c: Ratio, a: usize) -> (Ratio, Expr) {
-    let (n, d) = c;
-    if n.abs() == 1 && d == 1 {
-        (c, field(0, a))
-    } else {
-        ((n.signum(), 1), mul(Expr::Const((n.abs(), d)), field(0, a)))
-    }
-}
-
-fn stage1(k: &ActionKernel) -> Vec<Expr> {
-    k.stage1
-        .iter()
-        .map(|terms| {
-            let summands: Vec<Term<Expr>> = terms
-                .iter()
-                .map(|&(a, b, c)| {
-                    let (c, s) = scaled(c, a);
-                    (c, mul(s, field(1, b)), true)
-                })
-                .collect();
-            tree_sum_in::<Ir>(summands)
-        })
-        .collect()
-}
-
-fn stage2(terms: &[(usize, usize, Ratio)]) -> Expr {
-    tree_sum_in::<Ir>(
-        terms
-            .iter()
-            .map(|&(i, a, c)| {
-                let (c, s) = scaled(c, a);
-                (c, mul(Expr::Local(i), s), true)
-            })
-            .collect(),
-    )
-}
-
-/// Whether an action kernel is table-driven in Rust ([`crate::size`]).
-fn large_action(plan: &Plan, k: &ActionKernel) -> bool {
-    crate::size::is_large(plan.spec.table_above, k.stage1.iter().chain(&k.stage2).map(Vec::len))
-}
-
-/// The two stages of an action: straight-line, or the table form's accumulators.
-fn stages(plan: &Plan, k: &ActionKernel) -> (Vec<Expr>, Vec<Expr>) {
-    if large_action(plan, k) {
-        let t = table_rows(&k.stage1, |a| field(0, a), |b| field(1, b));
-        let out = table_rows(&k.stage2, Expr::Local, |a| field(0, a));
-        (t, out)
-    } else {
-        (stage1(k), k.stage2.iter().map(|t| stage2(t)).collect())
-    }
-}
-
-fn action(plan: &Plan, k: &ActionKernel, versor: &str, operand: &str) -> Kernel {
-    let product = match k.convention {
-        Convention::Sandwich => "rev(S) x S",
-        Convention::Apply => "S x rev(S)",
-    };
-    let (lets, outputs) = stages(plan, k);
-    let doc = if k.outside.is_empty() {
-        format!("{product} for a {versor} S and a {operand} x, in one fused kernel.")
-    } else {
-        format!("{product} for a {versor} S and a {operand} x, projected onto {operand} (exact when S is a versor).")
-    };
-    Kernel {
-        op: Op::Action(k.convention),
-        params: vec![k.versor, k.operand],
-        lets,
-        output: Output::Type(k.operand, outputs),
-        doc,
-    }
-}
-
-/// A unit-versor action; a table-sized one is the general action (as in Rust).
-fn unit_action(plan: &Plan, u: &UnitKernel, versor: &str, operand: &str) -> Kernel {
-    let k = &u.kernel;
-    if large_action(plan, k) {
-        let general = plan
-            .actions
-            .iter()
-            .find(|a| (a.versor, a.operand, a.convention) == (k.versor, k.operand, k.convention))
-            .expect("every unit kernel has a general one");
-        let mut g = action(plan, general, versor, operand);
-        g.op = Op::UnitAction(k.convention);
-        g.doc = format!("{} (the general action: this pair is above the size threshold)", g.doc);
-        return g;
-    }
-    let mut lets = stage1(k);
-    let fields = k
-        .stage2
-        .iter()
-        .enumerate()
-        .map(|(j, terms)| {
-            let x = field(1, j);
-            if terms.is_empty() {
-                return x;
-            }
-            let y = stage2(terms);
-            match u.scale {
-                (1, 1) => add(x, y, false),
-                (2, 1) => {
-                    // `x + y + y` (the Rust kernel's order) with `y` computed once
-                    lets.push(y);
-                    let y = Expr::Local(lets.len() - 1);
-                    add(add(x, y.clone(), false), y, false)
-                }
-                c => add(x, mul(Expr::Const(c), y), false),
-            }
-        })
-        .collect();
-    let what = match k.convention {
-        Convention::Sandwich => "rev(S) x S",
-        Convention::Apply => "S x rev(S)",
-    };
-    Kernel {
-        op: Op::UnitAction(k.convention),
-        params: vec![k.versor, k.operand],
-        lets,
-        output: Output::Type(k.operand, fields),
-        doc: format!("{what} for a unit {versor} S (S rev(S) = 1) and a {operand} x; not the action otherwise."),
-    }
 }

@@ -1,4 +1,4 @@
-//! Kernels in other languages: the plan's kernels ([`ir::kernels`], language-free) printed as
+//! Kernels in other languages: the plan's kernels ([`kernels`], language-free [`ir`] programs) printed as
 //! a C99 header ([`c`]), WGSL ([`wgsl`]) or GLSL 4.50 ([`glsl`]) source. The Rust module is
 //! [`crate::emit::module`]; this module depends on the plan only, and each language is one
 //! file implementing [`Dialect`].
@@ -13,7 +13,7 @@
 //!   forms `..._{sandwich_unit|apply_unit}_...`;
 //! - the closed forms `{m}_{bivector}_exp`, `{m}_{even}_log_unit` and `{m}_{even}_normalize`
 //!   where the generator finds them for the trigonometric families (rotors, PGA motors, dual
-//!   quaternions; [`closed`]), with the helpers `{m}_exp_factors` and `{m}_log_factors`.
+//!   quaternions; `lang::closed`), with the helpers `{m}_exp_factors` and `{m}_log_factors`.
 //!
 //! `{m}` is the module name, `{lhs}` a type's name in snake case. C has a `double` and a
 //! `float` version of everything (the `float` names end in `f`: `pga_Motorf`,
@@ -36,10 +36,11 @@ mod closed;
 pub mod glsl;
 mod helpers;
 pub mod ir;
+mod linear;
 pub mod wgsl;
 
 use crate::CodegenError;
-use crate::emit::{field_name, snake};
+use crate::naming::{field_name, snake};
 use crate::plan::{Plan, Ratio};
 use ir::{Expr, Kernel, Op, Output};
 use std::collections::BTreeSet;
@@ -147,6 +148,32 @@ pub fn emit(plan: &Plan, lang: Lang, options: &Options) -> Result<String, Codege
     }
 }
 
+/// Every kernel of a plan, in the order of the Rust module: the binary products (every pair
+/// of types, every product), the unary maps and norms per type, the fused actions and the
+/// unit-versor actions (`lang::linear`), then the closed forms (`exp`, `log_unit`, `normalize`;
+/// `lang::closed`). Pairs without a fused action (a versor type on the full multivector) have no
+/// action kernel: compose two geometric products.
+///
+/// ```
+/// use algebra_core::{Algebra, Basis};
+/// use algebra_codegen::{ModuleSpec, plan::Plan, lang::kernels};
+/// let alg = Algebra::builtin("pga3").unwrap();
+/// let types = ModuleSpec::parse_types("Motor=even;Point=grade3;Line=grade2", &alg).unwrap();
+/// let plan = Plan::new(ModuleSpec::new("pga", alg.metric().clone(), Basis::Blade, types).unwrap()).unwrap();
+/// let ks = kernels(&plan).unwrap();
+/// let apply = ks.iter().find(|k| k.op.name() == "apply_unit" && k.params == [0, 1]).unwrap();
+/// assert_eq!(apply.lets.len(), 7); // the commutator's four intermediates and three corrections
+/// assert!(ks.iter().any(|k| k.op.name() == "exp" && k.params == [2]));
+/// ```
+///
+/// # Errors
+/// [`CodegenError`] when a kernel cannot be planned (a constant beyond 64 bits).
+pub fn kernels(plan: &Plan) -> Result<Vec<Kernel>, CodegenError> {
+    let mut out = linear::kernels(plan)?;
+    out.extend(closed::kernels(plan)?);
+    Ok(out)
+}
+
 /// The parameter names of a kernel (`a, b` for products, `s, x` for actions, `x` for unary).
 fn param_names(op: &Op) -> &'static [&'static str] {
     match op {
@@ -160,7 +187,7 @@ fn param_names(op: &Op) -> &'static [&'static str] {
 ///
 /// ```
 /// use algebra_core::{Algebra, Basis};
-/// use algebra_codegen::{ModuleSpec, plan::Plan, lang::{function_name, ir::kernels}};
+/// use algebra_codegen::{ModuleSpec, plan::Plan, lang::{function_name, kernels}};
 /// let alg = Algebra::builtin("g3").unwrap();
 /// let types = ModuleSpec::parse_types("Rotor=even;Vector=grade1", &alg).unwrap();
 /// let plan = Plan::new(ModuleSpec::new("g3", alg.metric().clone(), Basis::Blade, types).unwrap()).unwrap();
@@ -272,7 +299,7 @@ fn bare(e: String) -> String {
 }
 
 fn render(plan: &Plan, d: &dyn Dialect, options: &Options) -> Result<String, CodegenError> {
-    let kernels: Vec<Kernel> = ir::kernels(plan)?
+    let kernels: Vec<Kernel> = self::kernels(plan)?
         .into_iter()
         .filter(|k| options.ops.as_ref().is_none_or(|ops| ops.contains(k.op.name())))
         .filter(|k| options.every_type || k.params.iter().all(|&p| p < plan.declared))

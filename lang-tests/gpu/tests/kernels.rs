@@ -7,7 +7,8 @@
 //! Needs a Vulkan driver; on a machine without a GPU, Mesa's lavapipe
 //! (`apt-get install mesa-vulkan-drivers`, which `.ci/run` installs).
 
-use algebra_codegen::lang::ir::{Kernel, kernels};
+use algebra_codegen::lang::ir::Kernel;
+use algebra_codegen::lang::kernels;
 use algebra_codegen::lang::{Lang, Options, emit, function_name};
 use algebra_codegen::plan::Plan;
 use algebra_core::Basis;

@@ -4,6 +4,8 @@
 //! that uses the macro, or vendors the emitted file, depends on `algebra-core` (without its
 //! `rug` feature if it wants no GMP).
 
+use crate::naming::product_name;
+pub use crate::naming::{field_name, snake};
 use crate::plan::{BinaryKernel, Plan, Term, UnaryKernel, unary_name};
 use algebra_core::basis::Basis;
 use algebra_core::rational::format_rational;
@@ -12,19 +14,27 @@ use proc_macro2::{Ident, Span, TokenStream};
 use quote::{format_ident, quote};
 use std::collections::BTreeMap;
 
-pub(super) use crate::sums::{SumTerm, chunked_sum, sum, tree_sum};
+mod closed;
+mod matrix;
+pub(crate) mod size;
+pub(crate) mod sums;
+pub(crate) mod unit;
+mod value;
+mod versor;
+
+use sums::{SumTerm, chunked_sum, sum};
 
 /// The trait and method of each product.
 pub(super) fn product_trait(p: Product) -> (&'static str, &'static str) {
     match p {
-        Product::Geometric => ("GeometricProduct", "gp"),
-        Product::Outer => ("OuterProduct", "op"),
-        Product::LeftContraction => ("LeftContraction", "lc"),
-        Product::RightContraction => ("RightContraction", "rc"),
-        Product::Scalar => ("ScalarProduct", "sp"),
-        Product::Regressive => ("RegressiveProduct", "regressive"),
-        Product::Commutator => ("CommutatorProduct", "commutator"),
-        Product::Anticommutator => ("AnticommutatorProduct", "anticommutator"),
+        Product::Geometric => ("GeometricProduct", product_name(p)),
+        Product::Outer => ("OuterProduct", product_name(p)),
+        Product::LeftContraction => ("LeftContraction", product_name(p)),
+        Product::RightContraction => ("RightContraction", product_name(p)),
+        Product::Scalar => ("ScalarProduct", product_name(p)),
+        Product::Regressive => ("RegressiveProduct", product_name(p)),
+        Product::Commutator => ("CommutatorProduct", product_name(p)),
+        Product::Anticommutator => ("AnticommutatorProduct", product_name(p)),
     }
 }
 
@@ -40,28 +50,8 @@ pub(super) fn product_operator(p: Product) -> Option<(&'static str, &'static str
     }
 }
 
-/// The field name of a basis element: `scalar` for `1`, else the basis name (`e12`).
-pub fn field_name(name: &str) -> String {
-    if name == "1" { "scalar".to_string() } else { name.to_string() }
-}
-
 pub(super) fn ident(s: &str) -> Ident {
     Ident::new(s, Span::call_site())
-}
-
-pub(crate) fn snake(name: &str) -> String {
-    let mut out = String::new();
-    for (i, c) in name.chars().enumerate() {
-        if c.is_ascii_uppercase() {
-            if i > 0 {
-                out.push('_');
-            }
-            out.push(c.to_ascii_lowercase());
-        } else {
-            out.push(c);
-        }
-    }
-    out
 }
 
 /// The fields, element names and orientation signs of every type of a plan.
@@ -99,7 +89,7 @@ impl Names {
             .collect();
         let fields = elements.iter().map(|es| es.iter().map(|e| ident(&field_name(e))).collect()).collect();
         let masks = plan.spec.types.iter().map(|t| t.elements.clone()).collect();
-        let signs = plan.spec.types.iter().map(super::orient::field_signs).collect();
+        let signs = plan.spec.types.iter().map(crate::TypeSpec::signs).collect();
         Names { types, fields, elements, masks, signs, table_above: plan.spec.table_above }
     }
 
@@ -164,10 +154,10 @@ pub fn module_items(plan: &Plan) -> TokenStream {
     let binaries = plan.binary.iter().map(|k| binary_items(&names, k));
     let typed = plan.typed.iter().map(|k| typed_items(&names, k));
     let conversions = conversion_items(&names);
-    let actions = super::versor::module_items(plan, &names);
-    let matrices = super::matrix::module_items(plan, &names);
-    let units = super::unit::module_items(plan, &names);
-    let closed = super::closed::module_items(plan, &names);
+    let actions = versor::module_items(plan, &names);
+    let matrices = matrix::module_items(plan, &names);
+    let units = unit::module_items(plan, &names);
+    let closed = closed::module_items(plan, &names);
     quote! {
         pub use ::algebra_core::ops::{
             ActionMatrix, AnticommutatorProduct, Apply, CommutatorProduct, GeometricProduct, GeometricProductInto,
@@ -239,8 +229,8 @@ fn type_items(plan: &Plan, names: &Names, i: usize) -> TokenStream {
     let unaries = plan.unary.iter().filter(|k| k.ty == i).map(|k| unary_method(names, k));
     let norm = norm_method(names, i, &plan.norm[i]);
     let inverse = inverse_method(plan, names, i);
-    let serde_derive = super::value::serde_attribute(plan);
-    let values = super::value::type_items(names, i);
+    let serde_derive = value::serde_attribute(plan);
+    let values = value::type_items(names, i);
     quote! {
         #(#docs)*
         #[doc = #basis_doc]
@@ -543,14 +533,14 @@ fn inverse_method(plan: &Plan, names: &Names, i: usize) -> TokenStream {
             entries.entry((row, t.rhs)).or_default().push((t.coef, quote!(self.#f), false));
         }
     }
-    let large = super::size::is_large(names.table_above, k.outputs.iter().map(Vec::len));
+    let large = crate::size::is_large(names.table_above, k.outputs.iter().map(Vec::len));
     let fill = if large {
         let mut flat = Vec::new();
         for (ko, terms) in k.outputs.iter().enumerate() {
             let row = masks.iter().position(|&mm| mm == names.masks[k.out][ko]).expect("closed type");
             flat.extend(terms.iter().map(|t| (t.lhs, t.rhs, row, t.coef)));
         }
-        super::size::matrix_fill(&flat, fields)
+        size::matrix_fill(&flat, fields)
     } else {
         let sets = entries.into_iter().map(|((r, c), terms)| {
             let e = sum(terms);
@@ -579,8 +569,8 @@ fn inverse_method(plan: &Plan, names: &Names, i: usize) -> TokenStream {
 
 /// The body of a binary kernel: straight-line code, or a table loop above the size threshold.
 fn kernel_body(names: &Names, k: &BinaryKernel) -> TokenStream {
-    if super::size::is_large(names.table_above, k.outputs.iter().map(Vec::len)) {
-        return super::size::binary_body(names, k);
+    if crate::size::is_large(names.table_above, k.outputs.iter().map(Vec::len)) {
+        return size::binary_body(names, k);
     }
     let (lf, rf, of) = (&names.fields[k.lhs], &names.fields[k.rhs], &names.fields[k.out]);
     let ot = &names.types[k.out];
@@ -633,7 +623,7 @@ fn binary_items(names: &Names, k: &BinaryKernel) -> TokenStream {
             }
         }
     });
-    let mixed = super::value::mixed_operators(names, k);
+    let mixed = value::mixed_operators(names, k);
     let body = kernel_body(names, k);
     let typed = if k.product == Product::Geometric {
         // `gp_into` with the natural output type is `gp` itself

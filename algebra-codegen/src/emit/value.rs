@@ -4,8 +4,8 @@
 //!
 //! These items are independent of the algebra: they depend only on each type's fields.
 
-use super::emit::{Names, ident, product_operator, product_trait};
-use super::plan::{BinaryKernel, Plan};
+use super::{Names, ident, product_operator, product_trait};
+use crate::plan::{BinaryKernel, Plan};
 use proc_macro2::TokenStream;
 use quote::quote;
 
