@@ -71,7 +71,7 @@ vec3 g123inf_log_factors(float si, float co) {
     }
 }
 
-// The GeometricProduct of a Motor and a Motor.
+// `gp` of a Motor and a Motor.
 g123inf_Motor g123inf_motor_gp_motor(g123inf_Motor a, g123inf_Motor b) {
     float t0 = a.scalar * b.scalar;
     float t1 = a.scalar * b.e12;
@@ -133,7 +133,7 @@ g123inf_Motor g123inf_motor_gp_motor(g123inf_Motor a, g123inf_Motor b) {
     );
 }
 
-// The GeometricProduct of a Motor and a Vector.
+// `gp` of a Motor and a Vector.
 g123inf_Odd g123inf_motor_gp_vector(g123inf_Motor a, g123inf_Vector b) {
     float t0 = a.scalar * b.e1;
     float t1 = a.scalar * b.e2;
@@ -175,7 +175,7 @@ g123inf_Odd g123inf_motor_gp_vector(g123inf_Motor a, g123inf_Vector b) {
     );
 }
 
-// The GeometricProduct of a Motor and a Bivector.
+// `gp` of a Motor and a Bivector.
 g123inf_Motor g123inf_motor_gp_bivector(g123inf_Motor a, g123inf_Bivector b) {
     float t0 = a.scalar * b.e12;
     float t1 = a.scalar * b.e13;
@@ -225,7 +225,7 @@ g123inf_Motor g123inf_motor_gp_bivector(g123inf_Motor a, g123inf_Bivector b) {
     );
 }
 
-// The GeometricProduct of a Vector and a Motor.
+// `gp` of a Vector and a Motor.
 g123inf_Odd g123inf_vector_gp_motor(g123inf_Vector a, g123inf_Motor b) {
     float t0 = a.e1 * b.scalar;
     float t1 = a.e1 * b.e12;
@@ -267,7 +267,7 @@ g123inf_Odd g123inf_vector_gp_motor(g123inf_Vector a, g123inf_Motor b) {
     );
 }
 
-// The GeometricProduct of a Vector and a Vector.
+// `gp` of a Vector and a Vector.
 g123inf_Motor g123inf_vector_gp_vector(g123inf_Vector a, g123inf_Vector b) {
     float t0 = a.e1 * b.e1;
     float t1 = a.e1 * b.e2;
@@ -296,7 +296,7 @@ g123inf_Motor g123inf_vector_gp_vector(g123inf_Vector a, g123inf_Vector b) {
     );
 }
 
-// The GeometricProduct of a Vector and a Bivector.
+// `gp` of a Vector and a Bivector.
 g123inf_Odd g123inf_vector_gp_bivector(g123inf_Vector a, g123inf_Bivector b) {
     float t0 = a.e1 * b.e12;
     float t1 = a.e1 * b.e13;
@@ -331,7 +331,7 @@ g123inf_Odd g123inf_vector_gp_bivector(g123inf_Vector a, g123inf_Bivector b) {
     );
 }
 
-// The GeometricProduct of a Bivector and a Motor.
+// `gp` of a Bivector and a Motor.
 g123inf_Motor g123inf_bivector_gp_motor(g123inf_Bivector a, g123inf_Motor b) {
     float t0 = a.e12 * b.scalar;
     float t1 = a.e12 * b.e12;
@@ -381,7 +381,7 @@ g123inf_Motor g123inf_bivector_gp_motor(g123inf_Bivector a, g123inf_Motor b) {
     );
 }
 
-// The GeometricProduct of a Bivector and a Vector.
+// `gp` of a Bivector and a Vector.
 g123inf_Odd g123inf_bivector_gp_vector(g123inf_Bivector a, g123inf_Vector b) {
     float t0 = a.e12 * b.e1;
     float t1 = a.e12 * b.e2;
@@ -416,7 +416,7 @@ g123inf_Odd g123inf_bivector_gp_vector(g123inf_Bivector a, g123inf_Vector b) {
     );
 }
 
-// The GeometricProduct of a Bivector and a Bivector.
+// `gp` of a Bivector and a Bivector.
 g123inf_Motor g123inf_bivector_gp_bivector(g123inf_Bivector a, g123inf_Bivector b) {
     float t0 = a.e12 * b.e12;
     float t1 = a.e12 * b.e13;

@@ -80,7 +80,7 @@ static inline g123inf_Triple g123inf_log_factors(double si, double co) {
     }
 }
 
-/* The GeometricProduct of a Motor and a Motor. */
+/* `gp` of a Motor and a Motor. */
 static inline g123inf_Motor g123inf_motor_gp_motor(g123inf_Motor a, g123inf_Motor b) {
     const double t0 = a.scalar * b.scalar;
     const double t1 = a.scalar * b.e12;
@@ -142,7 +142,7 @@ static inline g123inf_Motor g123inf_motor_gp_motor(g123inf_Motor a, g123inf_Moto
     return r;
 }
 
-/* The GeometricProduct of a Motor and a Vector. */
+/* `gp` of a Motor and a Vector. */
 static inline g123inf_Odd g123inf_motor_gp_vector(g123inf_Motor a, g123inf_Vector b) {
     const double t0 = a.scalar * b.e1;
     const double t1 = a.scalar * b.e2;
@@ -184,7 +184,7 @@ static inline g123inf_Odd g123inf_motor_gp_vector(g123inf_Motor a, g123inf_Vecto
     return r;
 }
 
-/* The GeometricProduct of a Motor and a Bivector. */
+/* `gp` of a Motor and a Bivector. */
 static inline g123inf_Motor g123inf_motor_gp_bivector(g123inf_Motor a, g123inf_Bivector b) {
     const double t0 = a.scalar * b.e12;
     const double t1 = a.scalar * b.e13;
@@ -234,7 +234,7 @@ static inline g123inf_Motor g123inf_motor_gp_bivector(g123inf_Motor a, g123inf_B
     return r;
 }
 
-/* The GeometricProduct of a Vector and a Motor. */
+/* `gp` of a Vector and a Motor. */
 static inline g123inf_Odd g123inf_vector_gp_motor(g123inf_Vector a, g123inf_Motor b) {
     const double t0 = a.e1 * b.scalar;
     const double t1 = a.e1 * b.e12;
@@ -276,7 +276,7 @@ static inline g123inf_Odd g123inf_vector_gp_motor(g123inf_Vector a, g123inf_Moto
     return r;
 }
 
-/* The GeometricProduct of a Vector and a Vector. */
+/* `gp` of a Vector and a Vector. */
 static inline g123inf_Motor g123inf_vector_gp_vector(g123inf_Vector a, g123inf_Vector b) {
     const double t0 = a.e1 * b.e1;
     const double t1 = a.e1 * b.e2;
@@ -305,7 +305,7 @@ static inline g123inf_Motor g123inf_vector_gp_vector(g123inf_Vector a, g123inf_V
     return r;
 }
 
-/* The GeometricProduct of a Vector and a Bivector. */
+/* `gp` of a Vector and a Bivector. */
 static inline g123inf_Odd g123inf_vector_gp_bivector(g123inf_Vector a, g123inf_Bivector b) {
     const double t0 = a.e1 * b.e12;
     const double t1 = a.e1 * b.e13;
@@ -340,7 +340,7 @@ static inline g123inf_Odd g123inf_vector_gp_bivector(g123inf_Vector a, g123inf_B
     return r;
 }
 
-/* The GeometricProduct of a Bivector and a Motor. */
+/* `gp` of a Bivector and a Motor. */
 static inline g123inf_Motor g123inf_bivector_gp_motor(g123inf_Bivector a, g123inf_Motor b) {
     const double t0 = a.e12 * b.scalar;
     const double t1 = a.e12 * b.e12;
@@ -390,7 +390,7 @@ static inline g123inf_Motor g123inf_bivector_gp_motor(g123inf_Bivector a, g123in
     return r;
 }
 
-/* The GeometricProduct of a Bivector and a Vector. */
+/* `gp` of a Bivector and a Vector. */
 static inline g123inf_Odd g123inf_bivector_gp_vector(g123inf_Bivector a, g123inf_Vector b) {
     const double t0 = a.e12 * b.e1;
     const double t1 = a.e12 * b.e2;
@@ -425,7 +425,7 @@ static inline g123inf_Odd g123inf_bivector_gp_vector(g123inf_Bivector a, g123inf
     return r;
 }
 
-/* The GeometricProduct of a Bivector and a Bivector. */
+/* `gp` of a Bivector and a Bivector. */
 static inline g123inf_Motor g123inf_bivector_gp_bivector(g123inf_Bivector a, g123inf_Bivector b) {
     const double t0 = a.e12 * b.e12;
     const double t1 = a.e12 * b.e13;
@@ -1043,7 +1043,7 @@ static inline g123inf_Triplef g123inf_log_factorsf(float si, float co) {
     }
 }
 
-/* The GeometricProduct of a Motor and a Motor. */
+/* `gp` of a Motor and a Motor. */
 static inline g123inf_Motorf g123inf_motor_gp_motorf(g123inf_Motorf a, g123inf_Motorf b) {
     const float t0 = a.scalar * b.scalar;
     const float t1 = a.scalar * b.e12;
@@ -1105,7 +1105,7 @@ static inline g123inf_Motorf g123inf_motor_gp_motorf(g123inf_Motorf a, g123inf_M
     return r;
 }
 
-/* The GeometricProduct of a Motor and a Vector. */
+/* `gp` of a Motor and a Vector. */
 static inline g123inf_Oddf g123inf_motor_gp_vectorf(g123inf_Motorf a, g123inf_Vectorf b) {
     const float t0 = a.scalar * b.e1;
     const float t1 = a.scalar * b.e2;
@@ -1147,7 +1147,7 @@ static inline g123inf_Oddf g123inf_motor_gp_vectorf(g123inf_Motorf a, g123inf_Ve
     return r;
 }
 
-/* The GeometricProduct of a Motor and a Bivector. */
+/* `gp` of a Motor and a Bivector. */
 static inline g123inf_Motorf g123inf_motor_gp_bivectorf(g123inf_Motorf a, g123inf_Bivectorf b) {
     const float t0 = a.scalar * b.e12;
     const float t1 = a.scalar * b.e13;
@@ -1197,7 +1197,7 @@ static inline g123inf_Motorf g123inf_motor_gp_bivectorf(g123inf_Motorf a, g123in
     return r;
 }
 
-/* The GeometricProduct of a Vector and a Motor. */
+/* `gp` of a Vector and a Motor. */
 static inline g123inf_Oddf g123inf_vector_gp_motorf(g123inf_Vectorf a, g123inf_Motorf b) {
     const float t0 = a.e1 * b.scalar;
     const float t1 = a.e1 * b.e12;
@@ -1239,7 +1239,7 @@ static inline g123inf_Oddf g123inf_vector_gp_motorf(g123inf_Vectorf a, g123inf_M
     return r;
 }
 
-/* The GeometricProduct of a Vector and a Vector. */
+/* `gp` of a Vector and a Vector. */
 static inline g123inf_Motorf g123inf_vector_gp_vectorf(g123inf_Vectorf a, g123inf_Vectorf b) {
     const float t0 = a.e1 * b.e1;
     const float t1 = a.e1 * b.e2;
@@ -1268,7 +1268,7 @@ static inline g123inf_Motorf g123inf_vector_gp_vectorf(g123inf_Vectorf a, g123in
     return r;
 }
 
-/* The GeometricProduct of a Vector and a Bivector. */
+/* `gp` of a Vector and a Bivector. */
 static inline g123inf_Oddf g123inf_vector_gp_bivectorf(g123inf_Vectorf a, g123inf_Bivectorf b) {
     const float t0 = a.e1 * b.e12;
     const float t1 = a.e1 * b.e13;
@@ -1303,7 +1303,7 @@ static inline g123inf_Oddf g123inf_vector_gp_bivectorf(g123inf_Vectorf a, g123in
     return r;
 }
 
-/* The GeometricProduct of a Bivector and a Motor. */
+/* `gp` of a Bivector and a Motor. */
 static inline g123inf_Motorf g123inf_bivector_gp_motorf(g123inf_Bivectorf a, g123inf_Motorf b) {
     const float t0 = a.e12 * b.scalar;
     const float t1 = a.e12 * b.e12;
@@ -1353,7 +1353,7 @@ static inline g123inf_Motorf g123inf_bivector_gp_motorf(g123inf_Bivectorf a, g12
     return r;
 }
 
-/* The GeometricProduct of a Bivector and a Vector. */
+/* `gp` of a Bivector and a Vector. */
 static inline g123inf_Oddf g123inf_bivector_gp_vectorf(g123inf_Bivectorf a, g123inf_Vectorf b) {
     const float t0 = a.e12 * b.e1;
     const float t1 = a.e12 * b.e2;
@@ -1388,7 +1388,7 @@ static inline g123inf_Oddf g123inf_bivector_gp_vectorf(g123inf_Bivectorf a, g123
     return r;
 }
 
-/* The GeometricProduct of a Bivector and a Bivector. */
+/* `gp` of a Bivector and a Bivector. */
 static inline g123inf_Motorf g123inf_bivector_gp_bivectorf(g123inf_Bivectorf a, g123inf_Bivectorf b) {
     const float t0 = a.e12 * b.e12;
     const float t1 = a.e12 * b.e13;

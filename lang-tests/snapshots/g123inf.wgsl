@@ -71,7 +71,7 @@ fn g123inf_log_factors(si: f32, co: f32) -> vec3<f32> {
     }
 }
 
-// The GeometricProduct of a Motor and a Motor.
+// `gp` of a Motor and a Motor.
 fn g123inf_motor_gp_motor(a: g123inf_Motor, b: g123inf_Motor) -> g123inf_Motor {
     let t0 = a.scalar * b.scalar;
     let t1 = a.scalar * b.e12;
@@ -133,7 +133,7 @@ fn g123inf_motor_gp_motor(a: g123inf_Motor, b: g123inf_Motor) -> g123inf_Motor {
     );
 }
 
-// The GeometricProduct of a Motor and a Vector.
+// `gp` of a Motor and a Vector.
 fn g123inf_motor_gp_vector(a: g123inf_Motor, b: g123inf_Vector) -> g123inf_Odd {
     let t0 = a.scalar * b.e1;
     let t1 = a.scalar * b.e2;
@@ -175,7 +175,7 @@ fn g123inf_motor_gp_vector(a: g123inf_Motor, b: g123inf_Vector) -> g123inf_Odd {
     );
 }
 
-// The GeometricProduct of a Motor and a Bivector.
+// `gp` of a Motor and a Bivector.
 fn g123inf_motor_gp_bivector(a: g123inf_Motor, b: g123inf_Bivector) -> g123inf_Motor {
     let t0 = a.scalar * b.e12;
     let t1 = a.scalar * b.e13;
@@ -225,7 +225,7 @@ fn g123inf_motor_gp_bivector(a: g123inf_Motor, b: g123inf_Bivector) -> g123inf_M
     );
 }
 
-// The GeometricProduct of a Vector and a Motor.
+// `gp` of a Vector and a Motor.
 fn g123inf_vector_gp_motor(a: g123inf_Vector, b: g123inf_Motor) -> g123inf_Odd {
     let t0 = a.e1 * b.scalar;
     let t1 = a.e1 * b.e12;
@@ -267,7 +267,7 @@ fn g123inf_vector_gp_motor(a: g123inf_Vector, b: g123inf_Motor) -> g123inf_Odd {
     );
 }
 
-// The GeometricProduct of a Vector and a Vector.
+// `gp` of a Vector and a Vector.
 fn g123inf_vector_gp_vector(a: g123inf_Vector, b: g123inf_Vector) -> g123inf_Motor {
     let t0 = a.e1 * b.e1;
     let t1 = a.e1 * b.e2;
@@ -296,7 +296,7 @@ fn g123inf_vector_gp_vector(a: g123inf_Vector, b: g123inf_Vector) -> g123inf_Mot
     );
 }
 
-// The GeometricProduct of a Vector and a Bivector.
+// `gp` of a Vector and a Bivector.
 fn g123inf_vector_gp_bivector(a: g123inf_Vector, b: g123inf_Bivector) -> g123inf_Odd {
     let t0 = a.e1 * b.e12;
     let t1 = a.e1 * b.e13;
@@ -331,7 +331,7 @@ fn g123inf_vector_gp_bivector(a: g123inf_Vector, b: g123inf_Bivector) -> g123inf
     );
 }
 
-// The GeometricProduct of a Bivector and a Motor.
+// `gp` of a Bivector and a Motor.
 fn g123inf_bivector_gp_motor(a: g123inf_Bivector, b: g123inf_Motor) -> g123inf_Motor {
     let t0 = a.e12 * b.scalar;
     let t1 = a.e12 * b.e12;
@@ -381,7 +381,7 @@ fn g123inf_bivector_gp_motor(a: g123inf_Bivector, b: g123inf_Motor) -> g123inf_M
     );
 }
 
-// The GeometricProduct of a Bivector and a Vector.
+// `gp` of a Bivector and a Vector.
 fn g123inf_bivector_gp_vector(a: g123inf_Bivector, b: g123inf_Vector) -> g123inf_Odd {
     let t0 = a.e12 * b.e1;
     let t1 = a.e12 * b.e2;
@@ -416,7 +416,7 @@ fn g123inf_bivector_gp_vector(a: g123inf_Bivector, b: g123inf_Vector) -> g123inf
     );
 }
 
-// The GeometricProduct of a Bivector and a Bivector.
+// `gp` of a Bivector and a Bivector.
 fn g123inf_bivector_gp_bivector(a: g123inf_Bivector, b: g123inf_Bivector) -> g123inf_Motor {
     let t0 = a.e12 * b.e12;
     let t1 = a.e12 * b.e13;

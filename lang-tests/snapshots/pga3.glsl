@@ -71,7 +71,7 @@ vec3 pga3_log_factors(float si, float co) {
     }
 }
 
-// The GeometricProduct of a Motor and a Motor.
+// `gp` of a Motor and a Motor.
 pga3_Motor pga3_motor_gp_motor(pga3_Motor a, pga3_Motor b) {
     float t0 = a.scalar * b.scalar;
     float t1 = a.scalar * b.e01;
@@ -133,7 +133,7 @@ pga3_Motor pga3_motor_gp_motor(pga3_Motor a, pga3_Motor b) {
     );
 }
 
-// The GeometricProduct of a Motor and a Point.
+// `gp` of a Motor and a Point.
 pga3_Odd pga3_motor_gp_point(pga3_Motor a, pga3_Point b) {
     float t0 = a.scalar * b.e012;
     float t1 = a.scalar * b.e013;
@@ -167,7 +167,7 @@ pga3_Odd pga3_motor_gp_point(pga3_Motor a, pga3_Point b) {
     );
 }
 
-// The GeometricProduct of a Motor and a Line.
+// `gp` of a Motor and a Line.
 pga3_Motor pga3_motor_gp_line(pga3_Motor a, pga3_Line b) {
     float t0 = a.scalar * b.e01;
     float t1 = a.scalar * b.e02;
@@ -217,7 +217,7 @@ pga3_Motor pga3_motor_gp_line(pga3_Motor a, pga3_Line b) {
     );
 }
 
-// The GeometricProduct of a Point and a Motor.
+// `gp` of a Point and a Motor.
 pga3_Odd pga3_point_gp_motor(pga3_Point a, pga3_Motor b) {
     float t0 = a.e012 * b.scalar;
     float t1 = a.e012 * b.e12;
@@ -251,7 +251,7 @@ pga3_Odd pga3_point_gp_motor(pga3_Point a, pga3_Motor b) {
     );
 }
 
-// The GeometricProduct of a Point and a Point.
+// `gp` of a Point and a Point.
 pga3_Motor pga3_point_gp_point(pga3_Point a, pga3_Point b) {
     float t0 = a.e012 * b.e123;
     float t1 = a.e013 * b.e123;
@@ -272,7 +272,7 @@ pga3_Motor pga3_point_gp_point(pga3_Point a, pga3_Point b) {
     );
 }
 
-// The GeometricProduct of a Point and a Line.
+// `gp` of a Point and a Line.
 pga3_Odd pga3_point_gp_line(pga3_Point a, pga3_Line b) {
     float t0 = a.e012 * b.e12;
     float t1 = a.e012 * b.e13;
@@ -301,7 +301,7 @@ pga3_Odd pga3_point_gp_line(pga3_Point a, pga3_Line b) {
     );
 }
 
-// The GeometricProduct of a Line and a Motor.
+// `gp` of a Line and a Motor.
 pga3_Motor pga3_line_gp_motor(pga3_Line a, pga3_Motor b) {
     float t0 = a.e01 * b.scalar;
     float t1 = a.e01 * b.e12;
@@ -351,7 +351,7 @@ pga3_Motor pga3_line_gp_motor(pga3_Line a, pga3_Motor b) {
     );
 }
 
-// The GeometricProduct of a Line and a Point.
+// `gp` of a Line and a Point.
 pga3_Odd pga3_line_gp_point(pga3_Line a, pga3_Point b) {
     float t0 = a.e01 * b.e123;
     float t1 = a.e02 * b.e123;
@@ -380,7 +380,7 @@ pga3_Odd pga3_line_gp_point(pga3_Line a, pga3_Point b) {
     );
 }
 
-// The GeometricProduct of a Line and a Line.
+// `gp` of a Line and a Line.
 pga3_Motor pga3_line_gp_line(pga3_Line a, pga3_Line b) {
     float t0 = a.e01 * b.e12;
     float t1 = a.e01 * b.e13;

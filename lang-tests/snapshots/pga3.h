@@ -80,7 +80,7 @@ static inline pga3_Triple pga3_log_factors(double si, double co) {
     }
 }
 
-/* The GeometricProduct of a Motor and a Motor. */
+/* `gp` of a Motor and a Motor. */
 static inline pga3_Motor pga3_motor_gp_motor(pga3_Motor a, pga3_Motor b) {
     const double t0 = a.scalar * b.scalar;
     const double t1 = a.scalar * b.e01;
@@ -142,7 +142,7 @@ static inline pga3_Motor pga3_motor_gp_motor(pga3_Motor a, pga3_Motor b) {
     return r;
 }
 
-/* The GeometricProduct of a Motor and a Point. */
+/* `gp` of a Motor and a Point. */
 static inline pga3_Odd pga3_motor_gp_point(pga3_Motor a, pga3_Point b) {
     const double t0 = a.scalar * b.e012;
     const double t1 = a.scalar * b.e013;
@@ -176,7 +176,7 @@ static inline pga3_Odd pga3_motor_gp_point(pga3_Motor a, pga3_Point b) {
     return r;
 }
 
-/* The GeometricProduct of a Motor and a Line. */
+/* `gp` of a Motor and a Line. */
 static inline pga3_Motor pga3_motor_gp_line(pga3_Motor a, pga3_Line b) {
     const double t0 = a.scalar * b.e01;
     const double t1 = a.scalar * b.e02;
@@ -226,7 +226,7 @@ static inline pga3_Motor pga3_motor_gp_line(pga3_Motor a, pga3_Line b) {
     return r;
 }
 
-/* The GeometricProduct of a Point and a Motor. */
+/* `gp` of a Point and a Motor. */
 static inline pga3_Odd pga3_point_gp_motor(pga3_Point a, pga3_Motor b) {
     const double t0 = a.e012 * b.scalar;
     const double t1 = a.e012 * b.e12;
@@ -260,7 +260,7 @@ static inline pga3_Odd pga3_point_gp_motor(pga3_Point a, pga3_Motor b) {
     return r;
 }
 
-/* The GeometricProduct of a Point and a Point. */
+/* `gp` of a Point and a Point. */
 static inline pga3_Motor pga3_point_gp_point(pga3_Point a, pga3_Point b) {
     const double t0 = a.e012 * b.e123;
     const double t1 = a.e013 * b.e123;
@@ -281,7 +281,7 @@ static inline pga3_Motor pga3_point_gp_point(pga3_Point a, pga3_Point b) {
     return r;
 }
 
-/* The GeometricProduct of a Point and a Line. */
+/* `gp` of a Point and a Line. */
 static inline pga3_Odd pga3_point_gp_line(pga3_Point a, pga3_Line b) {
     const double t0 = a.e012 * b.e12;
     const double t1 = a.e012 * b.e13;
@@ -310,7 +310,7 @@ static inline pga3_Odd pga3_point_gp_line(pga3_Point a, pga3_Line b) {
     return r;
 }
 
-/* The GeometricProduct of a Line and a Motor. */
+/* `gp` of a Line and a Motor. */
 static inline pga3_Motor pga3_line_gp_motor(pga3_Line a, pga3_Motor b) {
     const double t0 = a.e01 * b.scalar;
     const double t1 = a.e01 * b.e12;
@@ -360,7 +360,7 @@ static inline pga3_Motor pga3_line_gp_motor(pga3_Line a, pga3_Motor b) {
     return r;
 }
 
-/* The GeometricProduct of a Line and a Point. */
+/* `gp` of a Line and a Point. */
 static inline pga3_Odd pga3_line_gp_point(pga3_Line a, pga3_Point b) {
     const double t0 = a.e01 * b.e123;
     const double t1 = a.e02 * b.e123;
@@ -389,7 +389,7 @@ static inline pga3_Odd pga3_line_gp_point(pga3_Line a, pga3_Point b) {
     return r;
 }
 
-/* The GeometricProduct of a Line and a Line. */
+/* `gp` of a Line and a Line. */
 static inline pga3_Motor pga3_line_gp_line(pga3_Line a, pga3_Line b) {
     const double t0 = a.e01 * b.e12;
     const double t1 = a.e01 * b.e13;
@@ -981,7 +981,7 @@ static inline pga3_Triplef pga3_log_factorsf(float si, float co) {
     }
 }
 
-/* The GeometricProduct of a Motor and a Motor. */
+/* `gp` of a Motor and a Motor. */
 static inline pga3_Motorf pga3_motor_gp_motorf(pga3_Motorf a, pga3_Motorf b) {
     const float t0 = a.scalar * b.scalar;
     const float t1 = a.scalar * b.e01;
@@ -1043,7 +1043,7 @@ static inline pga3_Motorf pga3_motor_gp_motorf(pga3_Motorf a, pga3_Motorf b) {
     return r;
 }
 
-/* The GeometricProduct of a Motor and a Point. */
+/* `gp` of a Motor and a Point. */
 static inline pga3_Oddf pga3_motor_gp_pointf(pga3_Motorf a, pga3_Pointf b) {
     const float t0 = a.scalar * b.e012;
     const float t1 = a.scalar * b.e013;
@@ -1077,7 +1077,7 @@ static inline pga3_Oddf pga3_motor_gp_pointf(pga3_Motorf a, pga3_Pointf b) {
     return r;
 }
 
-/* The GeometricProduct of a Motor and a Line. */
+/* `gp` of a Motor and a Line. */
 static inline pga3_Motorf pga3_motor_gp_linef(pga3_Motorf a, pga3_Linef b) {
     const float t0 = a.scalar * b.e01;
     const float t1 = a.scalar * b.e02;
@@ -1127,7 +1127,7 @@ static inline pga3_Motorf pga3_motor_gp_linef(pga3_Motorf a, pga3_Linef b) {
     return r;
 }
 
-/* The GeometricProduct of a Point and a Motor. */
+/* `gp` of a Point and a Motor. */
 static inline pga3_Oddf pga3_point_gp_motorf(pga3_Pointf a, pga3_Motorf b) {
     const float t0 = a.e012 * b.scalar;
     const float t1 = a.e012 * b.e12;
@@ -1161,7 +1161,7 @@ static inline pga3_Oddf pga3_point_gp_motorf(pga3_Pointf a, pga3_Motorf b) {
     return r;
 }
 
-/* The GeometricProduct of a Point and a Point. */
+/* `gp` of a Point and a Point. */
 static inline pga3_Motorf pga3_point_gp_pointf(pga3_Pointf a, pga3_Pointf b) {
     const float t0 = a.e012 * b.e123;
     const float t1 = a.e013 * b.e123;
@@ -1182,7 +1182,7 @@ static inline pga3_Motorf pga3_point_gp_pointf(pga3_Pointf a, pga3_Pointf b) {
     return r;
 }
 
-/* The GeometricProduct of a Point and a Line. */
+/* `gp` of a Point and a Line. */
 static inline pga3_Oddf pga3_point_gp_linef(pga3_Pointf a, pga3_Linef b) {
     const float t0 = a.e012 * b.e12;
     const float t1 = a.e012 * b.e13;
@@ -1211,7 +1211,7 @@ static inline pga3_Oddf pga3_point_gp_linef(pga3_Pointf a, pga3_Linef b) {
     return r;
 }
 
-/* The GeometricProduct of a Line and a Motor. */
+/* `gp` of a Line and a Motor. */
 static inline pga3_Motorf pga3_line_gp_motorf(pga3_Linef a, pga3_Motorf b) {
     const float t0 = a.e01 * b.scalar;
     const float t1 = a.e01 * b.e12;
@@ -1261,7 +1261,7 @@ static inline pga3_Motorf pga3_line_gp_motorf(pga3_Linef a, pga3_Motorf b) {
     return r;
 }
 
-/* The GeometricProduct of a Line and a Point. */
+/* `gp` of a Line and a Point. */
 static inline pga3_Oddf pga3_line_gp_pointf(pga3_Linef a, pga3_Pointf b) {
     const float t0 = a.e01 * b.e123;
     const float t1 = a.e02 * b.e123;
@@ -1290,7 +1290,7 @@ static inline pga3_Oddf pga3_line_gp_pointf(pga3_Linef a, pga3_Pointf b) {
     return r;
 }
 
-/* The GeometricProduct of a Line and a Line. */
+/* `gp` of a Line and a Line. */
 static inline pga3_Motorf pga3_line_gp_linef(pga3_Linef a, pga3_Linef b) {
     const float t0 = a.e01 * b.e12;
     const float t1 = a.e01 * b.e13;

@@ -71,7 +71,7 @@ fn pga3_log_factors(si: f32, co: f32) -> vec3<f32> {
     }
 }
 
-// The GeometricProduct of a Motor and a Motor.
+// `gp` of a Motor and a Motor.
 fn pga3_motor_gp_motor(a: pga3_Motor, b: pga3_Motor) -> pga3_Motor {
     let t0 = a.scalar * b.scalar;
     let t1 = a.scalar * b.e01;
@@ -133,7 +133,7 @@ fn pga3_motor_gp_motor(a: pga3_Motor, b: pga3_Motor) -> pga3_Motor {
     );
 }
 
-// The GeometricProduct of a Motor and a Point.
+// `gp` of a Motor and a Point.
 fn pga3_motor_gp_point(a: pga3_Motor, b: pga3_Point) -> pga3_Odd {
     let t0 = a.scalar * b.e012;
     let t1 = a.scalar * b.e013;
@@ -167,7 +167,7 @@ fn pga3_motor_gp_point(a: pga3_Motor, b: pga3_Point) -> pga3_Odd {
     );
 }
 
-// The GeometricProduct of a Motor and a Line.
+// `gp` of a Motor and a Line.
 fn pga3_motor_gp_line(a: pga3_Motor, b: pga3_Line) -> pga3_Motor {
     let t0 = a.scalar * b.e01;
     let t1 = a.scalar * b.e02;
@@ -217,7 +217,7 @@ fn pga3_motor_gp_line(a: pga3_Motor, b: pga3_Line) -> pga3_Motor {
     );
 }
 
-// The GeometricProduct of a Point and a Motor.
+// `gp` of a Point and a Motor.
 fn pga3_point_gp_motor(a: pga3_Point, b: pga3_Motor) -> pga3_Odd {
     let t0 = a.e012 * b.scalar;
     let t1 = a.e012 * b.e12;
@@ -251,7 +251,7 @@ fn pga3_point_gp_motor(a: pga3_Point, b: pga3_Motor) -> pga3_Odd {
     );
 }
 
-// The GeometricProduct of a Point and a Point.
+// `gp` of a Point and a Point.
 fn pga3_point_gp_point(a: pga3_Point, b: pga3_Point) -> pga3_Motor {
     let t0 = a.e012 * b.e123;
     let t1 = a.e013 * b.e123;
@@ -272,7 +272,7 @@ fn pga3_point_gp_point(a: pga3_Point, b: pga3_Point) -> pga3_Motor {
     );
 }
 
-// The GeometricProduct of a Point and a Line.
+// `gp` of a Point and a Line.
 fn pga3_point_gp_line(a: pga3_Point, b: pga3_Line) -> pga3_Odd {
     let t0 = a.e012 * b.e12;
     let t1 = a.e012 * b.e13;
@@ -301,7 +301,7 @@ fn pga3_point_gp_line(a: pga3_Point, b: pga3_Line) -> pga3_Odd {
     );
 }
 
-// The GeometricProduct of a Line and a Motor.
+// `gp` of a Line and a Motor.
 fn pga3_line_gp_motor(a: pga3_Line, b: pga3_Motor) -> pga3_Motor {
     let t0 = a.e01 * b.scalar;
     let t1 = a.e01 * b.e12;
@@ -351,7 +351,7 @@ fn pga3_line_gp_motor(a: pga3_Line, b: pga3_Motor) -> pga3_Motor {
     );
 }
 
-// The GeometricProduct of a Line and a Point.
+// `gp` of a Line and a Point.
 fn pga3_line_gp_point(a: pga3_Line, b: pga3_Point) -> pga3_Odd {
     let t0 = a.e01 * b.e123;
     let t1 = a.e02 * b.e123;
@@ -380,7 +380,7 @@ fn pga3_line_gp_point(a: pga3_Line, b: pga3_Point) -> pga3_Odd {
     );
 }
 
-// The GeometricProduct of a Line and a Line.
+// `gp` of a Line and a Line.
 fn pga3_line_gp_line(a: pga3_Line, b: pga3_Line) -> pga3_Motor {
     let t0 = a.e01 * b.e12;
     let t1 = a.e01 * b.e13;
