@@ -11,6 +11,7 @@ use crate::paths::{join_path, map_engine_paths};
 use crate::plan::Plan;
 use proc_macro2::TokenStream;
 use quote::{ToTokens, quote};
+use std::collections::BTreeSet;
 use syn::parse_quote;
 
 /// The inlined support items (parsed once per call).
@@ -43,12 +44,93 @@ fn allow() -> TokenStream {
 /// assert!(!text.contains("fn to_multivector") && !text.contains("fn algebra"));
 /// ```
 pub fn file(plan: &Plan, header: &[String], nest: Option<&str>) -> syn::Result<syn::File> {
+    file_with(plan, header, nest, &Selection::default())
+}
+
+/// Which kernels a standalone file keeps (`gam codegen --standalone --ops ... [--every-type]`).
+/// Every type keeps its struct and value methods; the selection applies to the product and
+/// action impls.
+#[derive(Debug, Clone, Default)]
+pub struct Selection {
+    /// Only the operations named here ([`STANDALONE_OPS`]: the products `gp`, `op`, `lc`, `rc`,
+    /// `sp`, `regressive`, `commutator`, `anticommutator`; `gp_into`, the output-typed
+    /// geometric products; the actions `sandwich`, `apply`, `sandwich_unit`/`apply_unit` (one
+    /// trait) and `matrix`, their matrix form); `None`: [`DEFAULT_OPS`], the geometric product
+    /// and the versor actions.
+    pub ops: Option<BTreeSet<String>>,
+    /// Also the kernels taking the types the plan adds (automatic `Even`/`Odd`, the full
+    /// multivector), and the actions composed of two full products; by default only kernels
+    /// among the declared types.
+    pub every_type: bool,
+}
+
+/// The operations a standalone file can select.
+pub const STANDALONE_OPS: [&str; 14] = [
+    "gp",
+    "op",
+    "lc",
+    "rc",
+    "sp",
+    "regressive",
+    "commutator",
+    "anticommutator",
+    "gp_into",
+    "sandwich",
+    "apply",
+    "sandwich_unit",
+    "apply_unit",
+    "matrix",
+];
+
+/// The operations of a standalone file without `--ops`.
+pub const DEFAULT_OPS: [&str; 5] = ["gp", "sandwich", "apply", "sandwich_unit", "apply_unit"];
+
+impl Selection {
+    fn keeps(&self, op: &str) -> bool {
+        let named = |o: &str| match &self.ops {
+            None => DEFAULT_OPS.contains(&o),
+            Some(ops) => ops.contains(o),
+        };
+        match op {
+            "unit" => named("sandwich_unit") || named("apply_unit"),
+            op => named(op),
+        }
+    }
+}
+
+/// [`file`] keeping the kernels of `selection` only.
+///
+/// ```
+/// use algebra_core::{Algebra, Basis};
+/// use algebra_codegen::{ModuleSpec, plan::Plan, standalone::{Selection, file_with}};
+/// let alg = Algebra::builtin("pga3").unwrap();
+/// let types = ModuleSpec::parse_types("Motor=even;Point=grade3", &alg).unwrap();
+/// let plan = Plan::new(ModuleSpec::new("pga", alg.metric().clone(), Basis::Blade, types).unwrap()).unwrap();
+/// let text = |s: &Selection| quote::ToTokens::to_token_stream(&file_with(&plan, &[], None, s).unwrap()).to_string();
+/// let only_gp = text(&Selection { ops: Some(["gp".to_string()].into()), every_type: false });
+/// assert!(only_gp.contains("GeometricProduct < Point < T > > for Motor < T >"));
+/// assert!(!only_gp.contains("OuterProduct < Point < T > > for Motor < T >"));
+/// assert!(!only_gp.contains("GeometricProduct < Multivector < T > > for Multivector < T >"));
+/// assert!(!only_gp.contains("self :: Apply < Point < T > > for Motor < T >"));
+/// // the default: the geometric product and the versor actions among the declared types
+/// let default = text(&Selection::default());
+/// assert!(default.contains("self :: UnitAction < Point < T > > for Motor < T >"));
+/// assert!(!default.contains("self :: OuterProduct < Point < T > > for Motor < T >"));
+/// assert!(!default.contains("ActionMatrix < Point"));
+/// ```
+pub fn file_with(plan: &Plan, header: &[String], nest: Option<&str>, selection: &Selection) -> syn::Result<syn::File> {
     let items = map_engine_paths(crate::emit::module_items(plan), &|segments| {
         let skip = segments.iter().take_while(|s| FLATTENED.iter().any(|m| *s == m)).count();
         join_path(quote!(self), &segments[skip..])
     });
     let mut file: syn::File = syn::parse2(items)?;
     file.items.retain_mut(keep_item);
+    let types: Vec<&str> = plan.spec.types.iter().map(|t| t.name.as_str()).collect();
+    let declared = &types[..plan.declared];
+    file.items = select(std::mem::take(&mut file.items), &types, declared, selection);
+    if !selection.every_type {
+        file.items = prune(std::mem::take(&mut file.items), &types, declared);
+    }
     file.items.extend(shared_items()?);
     let support: syn::File = syn::parse_str(SUPPORT)?;
     file.items.extend(support.items);
@@ -73,6 +155,155 @@ pub fn file(plan: &Plan, header: &[String], nest: Option<&str>) -> syn::Result<s
         }
     };
     syn::parse2(tokens)
+}
+
+/// The name a type is written with (`Motor` for `Motor<T>` and `&Motor<T>`).
+fn type_name(ty: &syn::Type) -> Option<String> {
+    match ty {
+        syn::Type::Reference(r) => type_name(&r.elem),
+        syn::Type::Path(p) => p.path.segments.last().map(|s| s.ident.to_string()),
+        _ => None,
+    }
+}
+
+/// The operation of a kernel trait (the product traits and their operators, the actions).
+fn operation(trait_name: &str) -> Option<&'static str> {
+    Some(match trait_name {
+        "GeometricProduct" | "Mul" => "gp",
+        "GeometricProductInto" => "gp_into",
+        "OuterProduct" | "BitXor" => "op",
+        "LeftContraction" | "BitOr" => "lc",
+        "RightContraction" => "rc",
+        "ScalarProduct" => "sp",
+        "RegressiveProduct" | "BitAnd" => "regressive",
+        "CommutatorProduct" => "commutator",
+        "AnticommutatorProduct" => "anticommutator",
+        "Sandwich" => "sandwich",
+        "Apply" => "apply",
+        "UnitAction" => "unit",
+        "ActionMatrix" => "matrix",
+        _ => return None,
+    })
+}
+
+/// A kernel impl: its operation and its (self, right-hand) types; `None` for other items and
+/// for `Mul<T>` (scaling by a scalar).
+fn kernel_impl(item: &syn::Item, types: &[&str]) -> Option<(&'static str, String, String)> {
+    let syn::Item::Impl(imp) = item else { return None };
+    let (_, path, _) = imp.trait_.as_ref()?;
+    let last = path.segments.last()?;
+    let op = operation(&last.ident.to_string())?;
+    let rhs = match &last.arguments {
+        syn::PathArguments::AngleBracketed(a) => a.args.iter().find_map(|g| match g {
+            syn::GenericArgument::Type(t) => type_name(t),
+            _ => None,
+        }),
+        _ => None,
+    }?;
+    types.contains(&rhs.as_str()).then_some((op, type_name(&imp.self_ty)?, rhs))
+}
+
+/// The items that survive the selection: every item but the kernel impls, and the kernel
+/// impls of selected operations between selected types. A unit action above the size
+/// threshold calls the general one of its pair, which then stays too.
+fn select(items: Vec<syn::Item>, types: &[&str], declared: &[&str], selection: &Selection) -> Vec<syn::Item> {
+    let among = |l: &str, r: &str| selection.every_type || (declared.contains(&l) && declared.contains(&r));
+    let mut needed: BTreeSet<(&'static str, String, String)> = BTreeSet::new();
+    for item in &items {
+        if let Some(("unit", l, r)) = kernel_impl(item, types)
+            && selection.keeps("unit")
+            && among(&l, &r)
+        {
+            let text = item.to_token_stream().to_string();
+            for (general, call) in [("apply", "Apply :: apply"), ("sandwich", "Sandwich :: sandwich")] {
+                if text.contains(call) {
+                    needed.insert((general, l.clone(), r.clone()));
+                }
+            }
+        }
+    }
+    items
+        .into_iter()
+        .filter(|item| {
+            let Some((op, l, r)) = kernel_impl(item, types) else { return true };
+            // an action composed of two full products goes through types the plan added
+            if matches!(op, "sandwich" | "apply")
+                && item.to_token_stream().to_string().contains("GeometricProduct :: gp")
+            {
+                return selection.every_type && selection.keeps("gp") && selection.keeps(op);
+            }
+            (among(&l, &r) && selection.keeps(op)) || needed.contains(&(op, l, r))
+        })
+        .collect()
+}
+
+/// The generated types an item names (as whole tokens).
+fn mentioned<'a>(tokens: &impl ToTokens, types: &[&'a str]) -> BTreeSet<&'a str> {
+    let text = tokens.to_token_stream().to_string();
+    let words: BTreeSet<&str> = text.split(|c: char| !(c.is_alphanumeric() || c == '_')).collect();
+    types.iter().copied().filter(|t| words.contains(t)).collect()
+}
+
+/// The type an item belongs to: a struct's name, an impl's self type.
+fn owner(item: &syn::Item) -> Option<String> {
+    match item {
+        syn::Item::Struct(s) => Some(s.ident.to_string()),
+        syn::Item::Impl(imp) => type_name(&imp.self_ty),
+        _ => None,
+    }
+}
+
+/// Drops the types the plan added (automatic `Even`/`Odd`, the full multivector) that no kept
+/// kernel returns, with their impls and every method or conversion naming them: the kept
+/// kernels among the declared types rarely reach the full multivector, whose value methods
+/// are a large part of a file.
+fn prune(items: Vec<syn::Item>, types: &[&str], declared: &[&str]) -> Vec<syn::Item> {
+    let mut used: BTreeSet<&str> = declared.iter().copied().collect();
+    // the results of the kept kernels and of the unary maps of used types, to a fixed point
+    loop {
+        let before = used.len();
+        for item in &items {
+            let Some(o) = owner(item) else { continue };
+            if !used.contains(o.as_str()) {
+                continue;
+            }
+            match item {
+                syn::Item::Impl(imp) if kernel_impl(item, types).is_some() => used.extend(mentioned(imp, types)),
+                syn::Item::Impl(imp) if imp.trait_.is_none() => {
+                    for it in &imp.items {
+                        if let syn::ImplItem::Fn(f) = it
+                            && ["reverse", "grade_involution", "conjugate", "dual", "undual"]
+                                .iter()
+                                .any(|u| f.sig.ident == u)
+                        {
+                            used.extend(mentioned(&f.sig.output, types));
+                        }
+                    }
+                }
+                _ => {}
+            }
+        }
+        if used.len() == before {
+            break;
+        }
+    }
+    let unused: Vec<&str> = types.iter().copied().filter(|t| !used.contains(t)).collect();
+    let names_unused = |t: &dyn ToTokens| !mentioned(&t.to_token_stream(), &unused).is_empty();
+    items
+        .into_iter()
+        .filter_map(|mut item| {
+            if owner(&item).is_some_and(|o| unused.contains(&o.as_str())) {
+                return None;
+            }
+            if let syn::Item::Impl(imp) = &mut item {
+                if imp.trait_.is_some() {
+                    return (!names_unused(&*imp)).then_some(item);
+                }
+                imp.items.retain(|it| !names_unused(it));
+            }
+            Some(item)
+        })
+        .collect()
 }
 
 /// Whether a tokenised item uses the runtime (paths now read `self :: Multivector` etc.).

@@ -267,3 +267,51 @@ fn other_languages_are_the_library_emitters_with_the_regeneration_command() {
         assert!(err.starts_with("error:") && err.lines().count() == 1, "{bad:?}: {err}");
     }
 }
+
+/// `--standalone --ops ...` and `--every-type`: the selected kernels only, and every selection
+/// compiles on its own without warnings (rustc, no dependency).
+#[test]
+fn standalone_selections_compile_on_their_own() {
+    let types = "Motor=even;Point=grade3;Line=grade2;Plane=grade1";
+    let dir = std::env::temp_dir().join(format!("gam-standalone-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let mut lines = Vec::new();
+    for (n, extra) in
+        [vec![], vec!["--ops", "gp,op,regressive,apply_unit"], vec!["--ops", "gp", "--every-type"]].iter().enumerate()
+    {
+        let mut args = vec!["codegen", "--standalone", "--algebra", "pga3", "--types", types];
+        args.extend(extra.iter().copied());
+        let out = gam(&args);
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        let text = String::from_utf8(out.stdout).unwrap();
+        // an impl of `kernel` (e.g. `GeometricProduct<Line<T>> for Motor<T>`)
+        let has = |kernel: &str| text.contains(&format!("> self::{kernel}"));
+        let any = |t: &str| text.contains(&format!("> self::{t}<"));
+        match n {
+            0 => {
+                // the default: gp and the versor actions among the declared types
+                assert!(has("UnitAction<Point<T>> for Motor<T>") && has("GeometricProduct<Line<T>> for Motor<T>"));
+                assert!(!any("OuterProduct") && !any("ActionMatrix") && !text.contains("struct Multivector"));
+            }
+            1 => {
+                assert!(has("OuterProduct<Plane<T>> for Plane<T>") && has("RegressiveProduct<Point<T>> for Point<T>"));
+                assert!(!has("Apply<Point<T>> for Motor<T>") && !any("LeftContraction"));
+                assert!(text.lines().nth(1).unwrap().contains("--ops gp,op,regressive,apply_unit"));
+            }
+            _ => assert!(has("GeometricProduct<Multivector<T>> for Multivector<T>") && !any("UnitAction")),
+        }
+        let file = dir.join(format!("k{n}.rs"));
+        std::fs::write(&file, &text).unwrap();
+        let rustc = std::process::Command::new("rustc")
+            .args(["--edition", "2024", "--crate-type", "lib", "-D", "warnings", "--out-dir"])
+            .arg(&dir)
+            .arg(&file)
+            .output()
+            .expect("rustc runs");
+        assert!(rustc.status.success(), "selection {n}: {}", String::from_utf8_lossy(&rustc.stderr));
+        lines.push(text.lines().count());
+    }
+    // the default is a fraction of every kernel of every type
+    assert!(lines[0] * 2 < lines[2] + lines[0], "{lines:?}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
