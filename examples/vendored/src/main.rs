@@ -6,7 +6,7 @@
 #[rustfmt::skip] // kept byte-for-byte as generated (the CLI test compares it)
 mod kernels;
 
-use kernels::{GeometricProduct, Rotor, Vector};
+use kernels::{Rotor, Vector};
 
 /// The rotor of the rotation by `angle` in the plane `e12` (about `e3`):
 /// `R = cos(angle/2) + sin(angle/2) e12`, acting as `rev(R) v R`.
@@ -31,6 +31,7 @@ fn main() {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use kernels::GeometricProduct;
 
     #[test]
     fn quarter_turn_about_e3() {
