@@ -98,7 +98,7 @@ impl Selection {
     }
 }
 
-/// [`file`] keeping the kernels of `selection` only.
+/// [`file()`] keeping the kernels of `selection` only.
 ///
 /// ```
 /// use algebra_core::{Algebra, Basis};
@@ -131,9 +131,13 @@ pub fn file_with(plan: &Plan, header: &[String], nest: Option<&str>, selection: 
     if !selection.every_type {
         file.items = prune(std::mem::take(&mut file.items), &types, declared);
     }
-    file.items.extend(shared_items()?);
+    let closed = file.items.iter().any(|it| it.to_token_stream().to_string().contains("self :: closed_form ::"));
+    file.items.extend(shared_items(closed)?);
     let support: syn::File = syn::parse_str(SUPPORT)?;
     file.items.extend(support.items);
+    if closed {
+        file.items.extend(real_impls());
+    }
     let allow = allow();
     let docs = header.iter().map(|d| quote!(#![doc = #d]));
     let items = &file.items;
@@ -329,8 +333,12 @@ fn keep_item(item: &mut syn::Item) -> bool {
         syn::Item::Const(c) => c.ident != "BASIS",
         syn::Item::Fn(f) => f.sig.ident != "algebra",
         syn::Item::Impl(imp) => {
-            // the closed forms need `Real` and `algebra_core::closed_form`, not inlined
-            if imp.generics.to_token_stream().to_string().contains("self :: Real") {
+            // a closed form with a runtime fallback (the invariant decomposition's complex
+            // roots) goes as a whole: its other methods call the one that needs the runtime
+            if imp.trait_.is_none()
+                && imp.generics.to_token_stream().to_string().contains("self :: Real")
+                && imp.items.iter().any(uses_runtime)
+            {
                 return false;
             }
             if imp.trait_.is_none() {
@@ -372,8 +380,10 @@ fn set_doc(attrs: &mut Vec<syn::Attribute>, doc: &str) {
 }
 
 /// The product traits, `Ring` and `Field` reduced to [`RING_METHODS`] and [`FIELD_METHODS`],
-/// the solver and `join_terms`, from algebra-core's sources.
-fn shared_items() -> syn::Result<Vec<syn::Item>> {
+/// the solver and `join_terms`, from algebra-core's sources; with `closed` also `Real` and the
+/// closed-form factors (`mod closed_form`, both of algebra-core's files, for the generated
+/// `exp`, `log`, `normalize`, `sqrt` and `pow`).
+fn shared_items(closed: bool) -> syn::Result<Vec<syn::Item>> {
     let mut items: Vec<syn::Item> = syn::parse_str::<syn::File>(algebra_core::sources::OPS)?
         .items
         .into_iter()
@@ -381,12 +391,15 @@ fn shared_items() -> syn::Result<Vec<syn::Item>> {
         .collect();
     for item in syn::parse_str::<syn::File>(algebra_core::sources::SCALAR)?.items {
         let syn::Item::Trait(mut t) = item else { continue };
-        let keep: &[&str] = match t.ident.to_string().as_str() {
-            "Ring" => &RING_METHODS,
-            "Field" => &FIELD_METHODS,
+        let keep: Option<&[&str]> = match t.ident.to_string().as_str() {
+            "Ring" => Some(&RING_METHODS),
+            "Field" => Some(&FIELD_METHODS),
+            "Real" if closed => None,
             _ => continue,
         };
-        t.items.retain(|m| matches!(m, syn::TraitItem::Fn(f) if keep.iter().any(|k| f.sig.ident == k)));
+        if let Some(keep) = keep {
+            t.items.retain(|m| matches!(m, syn::TraitItem::Fn(f) if keep.iter().any(|k| f.sig.ident == k)));
+        }
         // the methods' doc examples name algebra-core: keep one line pointing at the original
         for m in &mut t.items {
             if let syn::TraitItem::Fn(f) = m {
@@ -418,5 +431,66 @@ fn shared_items() -> syn::Result<Vec<syn::Item>> {
             }
         }
     }
+    if closed {
+        items.push(closed_form_module()?);
+    }
     Ok(items)
+}
+
+/// `Real` for `f32` and `f64` through std (the closed forms' scalar functions).
+fn real_impls() -> Vec<syn::Item> {
+    [quote!(f32), quote!(f64)]
+        .iter()
+        .map(|t| {
+            parse_quote! {
+                impl Real for #t {
+                    fn sqrt(&self) -> Self { #t::sqrt(*self) }
+                    fn exp(&self) -> Self { #t::exp(*self) }
+                    fn ln(&self) -> Self { #t::ln(*self) }
+                    fn sin(&self) -> Self { #t::sin(*self) }
+                    fn cos(&self) -> Self { #t::cos(*self) }
+                    fn sinh(&self) -> Self { #t::sinh(*self) }
+                    fn cosh(&self) -> Self { #t::cosh(*self) }
+                    fn atan2(&self, x: &Self) -> Self { #t::atan2(*self, *x) }
+                    fn atanh(&self) -> Self { #t::atanh(*self) }
+                    fn abs(&self) -> Self { #t::abs(*self) }
+                    fn to_f64(&self) -> f64 { f64::from(*self) }
+                    fn from_f64(x: f64) -> Self { x as #t }
+                    fn pi() -> Self { ::core::#t::consts::PI }
+                    fn is_finite(&self) -> bool { #t::is_finite(*self) }
+                }
+            }
+        })
+        .collect()
+}
+
+/// `mod closed_form`: algebra-core's `closed_form` and `closed_form_inv` in one module, their
+/// `use` lines replaced by the file's own items and their docs by one line each (the originals'
+/// examples name algebra-core).
+fn closed_form_module() -> syn::Result<syn::Item> {
+    let mut body: Vec<syn::Item> = Vec::new();
+    for source in [algebra_core::sources::CLOSED_FORM, algebra_core::sources::CLOSED_FORM_INV] {
+        for mut item in syn::parse_str::<syn::File>(source)?.items {
+            match &mut item {
+                syn::Item::Use(_) => continue,
+                syn::Item::Fn(f) => {
+                    let doc = format!(" algebra-core's `closed_form::{}`.", f.sig.ident);
+                    set_doc(&mut f.attrs, &doc);
+                }
+                syn::Item::Const(c) => {
+                    let doc = format!(" algebra-core's `closed_form::{}`.", c.ident);
+                    set_doc(&mut c.attrs, &doc);
+                }
+                _ => {}
+            }
+            body.push(item);
+        }
+    }
+    Ok(parse_quote! {
+        /// The scalar factors of the closed forms (algebra-core's `closed_form`).
+        pub mod closed_form {
+            use super::{MvError, Real};
+            #(#body)*
+        }
+    })
 }

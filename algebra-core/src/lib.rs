@@ -47,7 +47,8 @@ pub use scalar::{MpFloat, MpRational, PrecisionGuard, default_precision, set_def
 pub use symbol::Symbolic;
 pub use tables::{Product, Tables, Unary};
 
-/// The source text of the product traits, the scalar traits, the solver and the printing helper, which
+/// The source text of the product traits, the scalar traits, the solver, the printing helper and the
+/// closed-form factors, which
 /// `gam codegen --standalone` inlines (reduced) into its dependency-free files, so that those
 /// files and this crate share one definition. Not a stable API.
 #[doc(hidden)]
@@ -60,4 +61,8 @@ pub mod sources {
     pub const LINALG: &str = include_str!("linalg.rs");
     /// `multivector/display.rs`.
     pub const DISPLAY: &str = include_str!("multivector/display.rs");
+    /// `closed_form.rs`.
+    pub const CLOSED_FORM: &str = include_str!("closed_form.rs");
+    /// `closed_form_inv.rs`.
+    pub const CLOSED_FORM_INV: &str = include_str!("closed_form_inv.rs");
 }

@@ -34,12 +34,22 @@ float_scalar!(f32, f64);
 pub enum MvError {
     /// The element has no inverse (it is a zero divisor).
     NotInvertible(String),
+    /// No real logarithm or square root exists, or the input is not finite (the closed forms).
+    Undefined {
+        /// `log`, `sqrt`, `exp`, ...
+        op: &'static str,
+        /// The argument, printed.
+        value: String,
+        /// Why.
+        why: String,
+    },
 }
 
 impl ::core::fmt::Display for MvError {
     fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
         match self {
             MvError::NotInvertible(x) => write!(f, "{x} is not invertible"),
+            MvError::Undefined { op, value, why } => write!(f, "{op} is not defined for {value}: {why}"),
         }
     }
 }
