@@ -225,12 +225,13 @@ pub fn c_driver(plan: &Plan, kernels: &[Kernel], header: &str, samples: usize, f
 }
 
 /// Compiles `files` (name, text) in a fresh directory with the system C compiler (`CC`, else
-/// `cc`), C99, `-O2`, without contraction of multiply-adds, linked with libm, runs the program on `input` and
+/// `cc`), C99 at optimisation level `opt` (`-O0`, `-O2`: the results do not depend on it),
+/// without contraction of multiply-adds, linked with libm, runs the program on `input` and
 /// returns its output.
 ///
 /// # Panics
 /// When the compiler is missing, the code does not compile or the program fails.
-pub fn compile_and_run(name: &str, files: &[(&str, &str)], main: &str, input: &str) -> String {
+pub fn compile_and_run(name: &str, files: &[(&str, &str)], main: &str, input: &str, opt: &str) -> String {
     use std::io::Write as _;
     let dir = std::env::temp_dir().join(format!("gam-lang-{}-{name}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("a temporary directory");
@@ -240,7 +241,7 @@ pub fn compile_and_run(name: &str, files: &[(&str, &str)], main: &str, input: &s
     let cc = std::env::var("CC").unwrap_or_else(|_| "cc".to_string());
     let exe = dir.join("run");
     let status = std::process::Command::new(&cc)
-        .args(["-std=c99", "-O2", "-ffp-contract=off", "-Wall", "-Wextra", "-Werror", "-pedantic", "-o"])
+        .args(["-std=c99", opt, "-ffp-contract=off", "-Wall", "-Wextra", "-Werror", "-pedantic", "-o"])
         .arg(&exe)
         .arg(dir.join(main))
         .arg("-lm")

@@ -13,7 +13,7 @@ fn the_c_example_of_the_docs_moves_the_point() {
     let types = "Motor=even;Point=e032,e013,e021,e123;Line=grade2";
     assert!(program.lines().next().unwrap().contains(&format!("--module pga --types \"{types}\"")));
     let header = emit(&plan("pga3", Basis::Blade, types, "pga"), Lang::C, &Options::default()).unwrap();
-    let out = compile_and_run("doc-example", &[("pga.h", &header), ("main.c", program)], "main.c", "");
+    let out = compile_and_run("doc-example", &[("pga.h", &header), ("main.c", program)], "main.c", "", "-O2");
     let v: Vec<f64> = out.split_whitespace().map(|x| x.parse().unwrap()).collect();
     let want = [2.0, 1.0, 0.0, 1.0];
     assert!(v.iter().zip(want).all(|(a, b)| (a - b).abs() < 1e-15) && v.len() == 4, "{out}");
