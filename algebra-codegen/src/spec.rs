@@ -105,6 +105,29 @@ pub struct TypeSpec {
 }
 
 impl TypeSpec {
+    /// The basis names of the fields in storage order, as declared (`e31` where the
+    /// declaration reorders `e13`, [`crate::orient`]); the field of `1` is named `scalar` in
+    /// generated code ([`crate::naming::field_name`]).
+    ///
+    /// ```
+    /// use algebra_core::Algebra;
+    /// use algebra_codegen::ModuleSpec;
+    /// let alg = Algebra::builtin("pga3").unwrap();
+    /// let t = &ModuleSpec::parse_types("Line=e01,e02,e03,e12,e31,e23", &alg).unwrap()[0];
+    /// assert_eq!(t.element_names(&alg), ["e01", "e02", "e03", "e12", "e31", "e23"]);
+    /// ```
+    pub fn element_names(&self, algebra: &Algebra) -> Vec<String> {
+        self.elements
+            .iter()
+            .map(|m| {
+                self.renamed.get(m).map_or_else(
+                    || algebra.name_of(*m).expect("a mask of the spec's algebra").to_string(),
+                    |(n, _)| n.clone(),
+                )
+            })
+            .collect()
+    }
+
     /// The sign of each field (`-1` where the name reverses the canonical orientation,
     /// [`crate::orient`]).
     pub fn signs(&self) -> Vec<i64> {

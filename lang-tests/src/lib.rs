@@ -184,16 +184,10 @@ pub fn c_driver(plan: &Plan, kernels: &[Kernel], header: &str, samples: usize, f
     );
     for k in kernels {
         let fields = |i: usize| -> Vec<String> {
-            let t = &plan.spec.types[i];
-            t.elements
+            plan.spec.types[i]
+                .element_names(&plan.spec.algebra)
                 .iter()
-                .map(|m| {
-                    let n = t
-                        .renamed
-                        .get(m)
-                        .map_or_else(|| plan.spec.algebra.name_of(*m).unwrap().to_string(), |(n, _)| n.clone());
-                    algebra_codegen::emit::field_name(&n)
-                })
+                .map(|n| algebra_codegen::emit::field_name(n))
                 .collect()
         };
         let _ = writeln!(c, "    for (i = 0; i < {samples}; i++) {{");

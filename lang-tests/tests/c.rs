@@ -80,10 +80,7 @@ fn check<S: Copy + PartialEq + Into<f64> + std::fmt::Debug + 'static>(
 ) -> usize {
     // the registry declares the plan's types, fields in the same order
     for t in &plan.spec.types {
-        let name = |m: &u32| {
-            t.renamed.get(m).map_or_else(|| plan.spec.algebra.name_of(*m).unwrap().to_string(), |(n, _)| n.clone())
-        };
-        let fields: Vec<String> = t.elements.iter().map(name).collect();
+        let fields = t.element_names(&plan.spec.algebra);
         assert_eq!(reg.elements.get(&t.name), Some(&fields), "type {} of the Rust module", t.name);
     }
     let ks = kernels(plan).unwrap();

@@ -71,22 +71,7 @@ impl Names {
     pub(super) fn new(plan: &Plan) -> Names {
         let alg = &plan.spec.algebra;
         let types = plan.spec.types.iter().map(|t| ident(&t.name)).collect();
-        let elements: Vec<Vec<String>> = plan
-            .spec
-            .types
-            .iter()
-            .map(|t| {
-                t.elements
-                    .iter()
-                    .map(|m| {
-                        t.renamed.get(m).map_or_else(
-                            || alg.name_of(*m).expect("a mask of the spec's algebra").to_string(),
-                            |(n, _)| n.clone(),
-                        )
-                    })
-                    .collect()
-            })
-            .collect();
+        let elements: Vec<Vec<String>> = plan.spec.types.iter().map(|t| t.element_names(alg)).collect();
         let fields = elements.iter().map(|es| es.iter().map(|e| ident(&field_name(e))).collect()).collect();
         let masks = plan.spec.types.iter().map(|t| t.elements.clone()).collect();
         let signs = plan.spec.types.iter().map(crate::TypeSpec::signs).collect();

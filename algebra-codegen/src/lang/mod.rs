@@ -213,22 +213,7 @@ pub fn type_name(plan: &Plan, i: usize) -> String {
 /// declared, e.g. `e31`).
 fn field_names(plan: &Plan) -> Vec<Vec<String>> {
     let alg = &plan.spec.algebra;
-    plan.spec
-        .types
-        .iter()
-        .map(|t| {
-            t.elements
-                .iter()
-                .map(|m| {
-                    let n = t.renamed.get(m).map_or_else(
-                        || alg.name_of(*m).expect("a mask of the spec's algebra").to_string(),
-                        |(n, _)| n.clone(),
-                    );
-                    field_name(&n)
-                })
-                .collect()
-        })
-        .collect()
+    plan.spec.types.iter().map(|t| t.element_names(alg).iter().map(|n| field_name(n)).collect()).collect()
 }
 
 /// `n / d` rounded once to the scalar, as the shortest decimal that reads back to it (the

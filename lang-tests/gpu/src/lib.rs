@@ -174,15 +174,7 @@ pub enum Shader {
 }
 
 fn fields(plan: &Plan, ty: usize) -> Vec<String> {
-    let t = &plan.spec.types[ty];
-    t.elements
-        .iter()
-        .map(|m| {
-            let n =
-                t.renamed.get(m).map_or_else(|| plan.spec.algebra.name_of(*m).unwrap().to_string(), |(n, _)| n.clone());
-            algebra_codegen::emit::field_name(&n)
-        })
-        .collect()
+    plan.spec.types[ty].element_names(&plan.spec.algebra).iter().map(|n| algebra_codegen::emit::field_name(n)).collect()
 }
 
 /// One entry point per kernel, `k0`, `k1`, ...: invocation `i < count` reads its operands'

@@ -1,8 +1,8 @@
-//! The WGSL and GLSL kernels, validated by naga (the shader compiler of wgpu and Firefox):
+//! The WGSL and GLSL kernels, validated by naga (the shader compiler of wgpu and Firefox; here
+//! wgpu's, so that the workspace's test build does not compile it):
 //! every kernel of four declarations parses and passes naga's validator, and each struct has
 //! the size of the Rust `repr(C)` type of `f32` (no padding), so a storage buffer of them has
-//! the layout of a `[T<f32>]` slice. Running them on a GPU is `lang-tests/gpu` (outside the
-//! workspace: wgpu and a software Vulkan driver).
+//! the layout of a `[T<f32>]` slice. `kernels.rs` runs them on a GPU.
 
 use algebra_codegen::lang::{Lang, Options, emit};
 use algebra_codegen::plan::Plan;
@@ -33,15 +33,18 @@ fn every() -> Options {
     Options { every_type: true, ..Options::default() }
 }
 
-fn validate(module: &naga::Module, what: &str) -> naga::valid::ModuleInfo {
-    naga::valid::Validator::new(naga::valid::ValidationFlags::all(), naga::valid::Capabilities::default())
-        .validate(module)
-        .unwrap_or_else(|e| panic!("{what} does not validate: {e:?}"))
+fn validate(module: &wgpu::naga::Module, what: &str) -> wgpu::naga::valid::ModuleInfo {
+    wgpu::naga::valid::Validator::new(
+        wgpu::naga::valid::ValidationFlags::all(),
+        wgpu::naga::valid::Capabilities::default(),
+    )
+    .validate(module)
+    .unwrap_or_else(|e| panic!("{what} does not validate: {e:?}"))
 }
 
 /// Every kernel of the plan is a function of the module (with the closed forms, whose
 /// helpers are functions too).
-fn every_kernel_is_a_function(plan: &Plan, module: &naga::Module) {
+fn every_kernel_is_a_function(plan: &Plan, module: &wgpu::naga::Module) {
     let names: std::collections::HashSet<&str> =
         module.functions.iter().filter_map(|(_, f)| f.name.as_deref()).filter(|n| *n != "main").collect();
     let kernels = algebra_codegen::lang::kernels(plan).unwrap();
@@ -57,11 +60,11 @@ fn every_kernel_is_a_function(plan: &Plan, module: &naga::Module) {
 fn wgsl_kernels_validate_and_structs_are_packed() {
     for plan in plans() {
         let source = emit(&plan, Lang::Wgsl, &every()).unwrap();
-        let module = naga::front::wgsl::parse_str(&source)
+        let module = wgpu::naga::front::wgsl::parse_str(&source)
             .unwrap_or_else(|e| panic!("{} WGSL: {}", plan.spec.name, e.emit_to_string(&source)));
         validate(&module, &format!("{} WGSL", plan.spec.name));
         every_kernel_is_a_function(&plan, &module);
-        let mut layouter = naga::proc::Layouter::default();
+        let mut layouter = wgpu::naga::proc::Layouter::default();
         layouter.update(module.to_ctx()).unwrap();
         for (i, t) in plan.spec.types.iter().enumerate() {
             let name = algebra_codegen::lang::type_name(&plan, i);
@@ -77,8 +80,8 @@ fn glsl_kernels_validate() {
         let source = emit(&plan, Lang::Glsl, &every()).unwrap();
         // the file is included into a shader with a version line and an entry point
         let shader = format!("#version 450\nlayout(local_size_x = 1) in;\n{source}\nvoid main() {{}}\n");
-        let module = naga::front::glsl::Frontend::default()
-            .parse(&naga::front::glsl::Options::from(naga::ShaderStage::Compute), &shader)
+        let module = wgpu::naga::front::glsl::Frontend::default()
+            .parse(&wgpu::naga::front::glsl::Options::from(wgpu::naga::ShaderStage::Compute), &shader)
             .unwrap_or_else(|e| panic!("{} GLSL: {}", plan.spec.name, e.emit_to_string(&shader)));
         validate(&module, &format!("{} GLSL", plan.spec.name));
         every_kernel_is_a_function(&plan, &module);
@@ -88,7 +91,7 @@ fn glsl_kernels_validate() {
 /// The block of `lang` in docs/codegen.md's "Kernels in C, WGSL and GLSL", with the generated
 /// file (named by its first line, `pga3 Motor=even;Point=grade3`) in place of its comment.
 fn doc_shader(fence: &str, lang: Lang) -> String {
-    let doc = include_str!("../../docs/codegen.md");
+    let doc = include_str!("../../../docs/codegen.md");
     let start = doc.find(&format!("```{fence}\n")).expect("a block") + fence.len() + 4;
     let block = &doc[start..start + doc[start..].find("```").expect("its end")];
     let plan = plan("pga3", Basis::Blade, "Motor=even;Point=grade3", "pga");
@@ -104,11 +107,11 @@ fn doc_shader(fence: &str, lang: Lang) -> String {
 #[test]
 fn the_shaders_of_the_docs_validate() {
     let wgsl = doc_shader("wgsl", Lang::Wgsl);
-    let module = naga::front::wgsl::parse_str(&wgsl).unwrap_or_else(|e| panic!("{}", e.emit_to_string(&wgsl)));
+    let module = wgpu::naga::front::wgsl::parse_str(&wgsl).unwrap_or_else(|e| panic!("{}", e.emit_to_string(&wgsl)));
     validate(&module, "the WGSL example");
     let glsl = doc_shader("glsl", Lang::Glsl);
-    let module = naga::front::glsl::Frontend::default()
-        .parse(&naga::front::glsl::Options::from(naga::ShaderStage::Compute), &glsl)
+    let module = wgpu::naga::front::glsl::Frontend::default()
+        .parse(&wgpu::naga::front::glsl::Options::from(wgpu::naga::ShaderStage::Compute), &glsl)
         .unwrap_or_else(|e| panic!("{}", e.emit_to_string(&glsl)));
     validate(&module, "the GLSL example");
 }
