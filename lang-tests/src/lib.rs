@@ -4,7 +4,7 @@
 //! compiles the header and runs every kernel on the same inputs.
 
 use algebra_codegen::lang::ir::{Kernel, Output};
-use algebra_codegen::lang::{function_name, type_name};
+use algebra_codegen::lang::{field_names, function_name, type_name};
 use algebra_codegen::{ModuleSpec, plan::Plan};
 use algebra_core::{Algebra, Basis};
 use std::collections::HashMap;
@@ -159,6 +159,39 @@ impl Numbers {
     }
 }
 
+/// Whether `op` is a closed form (`exp`, `log_unit`, `normalize`): its kernels call `sqrt`,
+/// `sin`, `cos` and `atan2`, so other languages agree within rounding, not bit for bit.
+pub fn is_closed(op: &str) -> bool {
+    matches!(op, "exp" | "log_unit" | "normalize")
+}
+
+/// The arguments of one call of `k`: every field from `numbers` (in `[-2, 2)`). For a closed
+/// form the input is scaled by `1e-4` when `small` (the factors' series branch) and the scalar
+/// part of an even input set to 1 (so the angle is the sample's); `log_unit` gets the registry's
+/// `normalize` of that (a unit element, its domain).
+pub fn arguments<S: Copy + 'static>(
+    plan: &Plan,
+    reg: &Registry<S>,
+    k: &Kernel,
+    numbers: &mut Numbers,
+    small: bool,
+    from_f64: impl Fn(f64) -> S,
+) -> Vec<Vec<S>> {
+    let closed = is_closed(k.op.name());
+    let scale = if closed && small { 1e-4 } else { 1.0 };
+    let (params, _) = shape(plan, k);
+    let mut args: Vec<Vec<S>> =
+        params.iter().map(|&n| (0..n).map(|_| from_f64(scale * numbers.next_f64())).collect()).collect();
+    if closed && let Some(one) = plan.spec.types[k.params[0]].elements.iter().position(|m| *m == 0) {
+        args[0][one] = from_f64(1.0);
+    }
+    if k.op.name() == "log_unit" {
+        let key = ("normalize".to_string(), vec![plan.spec.types[k.params[0]].name.clone()]);
+        args[0] = reg.kernels.get(&key).expect("normalize registered with log_unit")(&args);
+    }
+    args
+}
+
 /// The number of fields of every parameter and of the result of a kernel.
 pub fn shape(plan: &Plan, k: &Kernel) -> (Vec<usize>, usize) {
     let n = |i: usize| plan.spec.types[i].elements.len();
@@ -182,19 +215,13 @@ pub fn c_driver(plan: &Plan, kernels: &[Kernel], header: &str, samples: usize, f
          static void put({scalar} v) {{ {bits} u; memcpy(&u, &v, sizeof v); printf(\"{fmt} \", u); }}\n\
          int main(void) {{\n    int i;\n"
     );
+    let fields = field_names(plan);
     for k in kernels {
-        let fields = |i: usize| -> Vec<String> {
-            plan.spec.types[i]
-                .element_names(&plan.spec.algebra)
-                .iter()
-                .map(|n| algebra_codegen::emit::field_name(n))
-                .collect()
-        };
         let _ = writeln!(c, "    for (i = 0; i < {samples}; i++) {{");
         let mut args = Vec::new();
         for (p, &ty) in k.params.iter().enumerate() {
             let _ = writeln!(c, "        {}{sfx} a{p};", type_name(plan, ty));
-            for f in fields(ty) {
+            for f in &fields[ty] {
                 let _ = writeln!(c, "        a{p}.{f} = get();");
             }
             args.push(format!("a{p}"));
@@ -203,7 +230,7 @@ pub fn c_driver(plan: &Plan, kernels: &[Kernel], header: &str, samples: usize, f
         match &k.output {
             Output::Type(o, _) => {
                 let _ = writeln!(c, "        {{ {}{sfx} r = {call};", type_name(plan, *o));
-                for f in fields(*o) {
+                for f in &fields[*o] {
                     let _ = writeln!(c, "          put(r.{f});");
                 }
                 let _ = writeln!(c, "        }}");

@@ -9,7 +9,7 @@
 use algebra_codegen::lang::{Lang, Options, emit, kernels};
 use algebra_codegen::plan::Plan;
 use algebra_core::Basis;
-use gam_lang_tests::{Numbers, Registry, c_driver, compile_and_run, plan, registry, shape};
+use gam_lang_tests::{Numbers, Registry, arguments, c_driver, compile_and_run, is_closed, plan, registry};
 
 algebra_macros::algebra! {
     /// 3D PGA, canonical names.
@@ -60,12 +60,6 @@ algebra_macros::algebra! {
 
 const SAMPLES: usize = 3;
 
-/// The closed forms call `sin`, `cos` and `atan2` (libm in C, a polynomial `atan2` in Rust):
-/// equal within a few units in the last place, not bit for bit.
-fn closed(op: &str) -> bool {
-    matches!(op, "exp" | "log_unit" | "normalize")
-}
-
 /// Runs every kernel of the plan's C header in `double` (or `float`) and compares with the
 /// registry; returns the number of kernels compared.
 #[allow(clippy::too_many_arguments)]
@@ -92,16 +86,17 @@ fn check<S: Copy + PartialEq + Into<f64> + std::fmt::Debug + 'static>(
     for k in &ks {
         let rust =
             reg.get(plan, k).unwrap_or_else(|| panic!("no Rust kernel registered for {} {:?}", k.op.name(), k.params));
-        let (params, _) = shape(plan, k);
-        for _ in 0..SAMPLES {
-            let args: Vec<Vec<S>> =
-                params.iter().map(|&n| (0..n).map(|_| from_f64(numbers.next_f64())).collect()).collect();
+        for sample in 0..SAMPLES {
+            // the first sample of a closed form takes the series branch
+            let args = arguments(plan, reg, k, &mut numbers, sample == 0, &from_f64);
             for a in args.iter().flatten() {
                 input.push_str(&bits(*a));
                 input.push(' ');
             }
             input.push('\n');
-            expected.push((algebra_codegen::lang::function_name(plan, k), closed(k.op.name()), rust(&args)));
+            // the closed forms call libm's `sin`, `cos` and `atan2` (Rust: a polynomial `atan2`):
+            // within a few units in the last place, not bit for bit
+            expected.push((algebra_codegen::lang::function_name(plan, k), is_closed(k.op.name()), rust(&args)));
         }
     }
     let name = format!("{}-{}", plan.spec.name, if float { "f32" } else { "f64" });

@@ -210,8 +210,8 @@ pub fn type_name(plan: &Plan, i: usize) -> String {
 }
 
 /// The field names of every type, in storage order (`scalar` for `1`, else the basis name as
-/// declared, e.g. `e31`).
-fn field_names(plan: &Plan) -> Vec<Vec<String>> {
+/// declared, e.g. `e31`): the structs' fields in every language.
+pub fn field_names(plan: &Plan) -> Vec<Vec<String>> {
     let alg = &plan.spec.algebra;
     plan.spec.types.iter().map(|t| t.element_names(alg).iter().map(|n| field_name(n)).collect()).collect()
 }

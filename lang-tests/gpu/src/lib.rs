@@ -3,7 +3,7 @@
 //! this crate.
 
 use algebra_codegen::lang::ir::{Kernel, Output};
-use algebra_codegen::lang::{function_name, type_name};
+use algebra_codegen::lang::{field_names, function_name, type_name};
 use algebra_codegen::plan::Plan;
 use std::fmt::Write;
 use std::future::Future;
@@ -173,10 +173,6 @@ pub enum Shader {
     Glsl,
 }
 
-fn fields(plan: &Plan, ty: usize) -> Vec<String> {
-    plan.spec.types[ty].element_names(&plan.spec.algebra).iter().map(|n| algebra_codegen::emit::field_name(n)).collect()
-}
-
 /// One entry point per kernel, `k0`, `k1`, ...: invocation `i < count` reads its operands'
 /// fields from the flat `f32` buffers `a` and `b` (binding 0 and 1), calls the kernel and
 /// writes the result's fields to `o` (binding 2). Workgroups of 64.
@@ -201,12 +197,13 @@ pub fn test_shader(plan: &Plan, kernels: &[Kernel], source: &str, lang: Shader, 
             );
         }
     }
+    let fields = field_names(plan);
     for (n, k) in kernels.iter().enumerate() {
         let mut body = String::new();
         let buffers = ["a", "b"];
         let mut args = Vec::new();
         for (p, &ty) in k.params.iter().enumerate() {
-            let f = fields(plan, ty);
+            let f = &fields[ty];
             let reads: Vec<String> = (0..f.len()).map(|j| format!("{}[i * {}u + {j}u]", buffers[p], f.len())).collect();
             let tn = type_name(plan, ty);
             match lang {
@@ -219,7 +216,7 @@ pub fn test_shader(plan: &Plan, kernels: &[Kernel], source: &str, lang: Shader, 
         let call = format!("{}({})", function_name(plan, k), args.join(", "));
         match &k.output {
             Output::Type(o, _) => {
-                let f = fields(plan, *o);
+                let f = &fields[*o];
                 match lang {
                     Shader::Wgsl => writeln!(body, "    let r = {call};"),
                     Shader::Glsl => writeln!(body, "    {} r = {call};", type_name(plan, *o)),

@@ -13,7 +13,7 @@ use algebra_codegen::lang::{Lang, Options, emit, function_name};
 use algebra_codegen::plan::Plan;
 use algebra_core::Basis;
 use gam_gpu_tests::{Gpu, Shader, test_shader};
-use gam_lang_tests::{Numbers, Registry, plan, registry, shape};
+use gam_lang_tests::{Numbers, Registry, arguments, is_closed, plan, registry};
 
 algebra_macros::algebra! {
     /// 3D PGA.
@@ -33,29 +33,14 @@ algebra_macros::algebra! {
 
 const COUNT: usize = 64;
 
-fn closed(op: &str) -> bool {
-    matches!(op, "exp" | "log_unit" | "normalize")
-}
-
 /// The inputs of one kernel (flat, `COUNT` values of each parameter) and the Rust results.
 fn inputs(plan: &Plan, reg: &Registry<f32>, k: &Kernel, numbers: &mut Numbers) -> ([Vec<f32>; 2], Vec<Vec<f32>>) {
-    let (params, _) = shape(plan, k);
     let mut flat = [Vec::new(), Vec::new()];
     let mut want = Vec::new();
     let rust = reg.get(plan, k).unwrap_or_else(|| panic!("no Rust kernel for {}", function_name(plan, k)));
     for sample in 0..COUNT {
-        let scale = if closed(k.op.name()) && sample % 8 == 0 { 1e-4 } else { 1.0 };
-        let mut args: Vec<Vec<f32>> =
-            params.iter().map(|&n| (0..n).map(|_| (scale * numbers.next_f64()) as f32).collect()).collect();
-        if closed(k.op.name())
-            && let Some(one) = plan.spec.types[k.params[0]].elements.iter().position(|m| *m == 0)
-        {
-            args[0][one] = 1.0;
-        }
-        if k.op.name() == "log_unit" {
-            let normalize = &reg.kernels[&("normalize".to_string(), vec![plan.spec.types[k.params[0]].name.clone()])];
-            args[0] = normalize(&args);
-        }
+        // one sample in eight of a closed form takes the series branch
+        let args = arguments(plan, reg, k, numbers, sample % 8 == 0, |x| x as f32);
         for (p, a) in args.iter().enumerate() {
             flat[p].extend(a);
         }
@@ -104,7 +89,7 @@ fn run(gpu: &Gpu, plan: &Plan, reg: &Registry<f32>, lang: Shader, chosen: impl F
         let pipeline = gpu.pipeline(module, &entry, &layout);
         gpu.dispatch(&pipeline, &layout, [&bufs[0], &bufs[1], &bufs[2]], COUNT.div_ceil(64) as u32);
         let got = gpu.read(&bufs[2]);
-        let tol = if closed(k.op.name()) { 3e-5 } else { 4e-6 };
+        let tol = if is_closed(k.op.name()) { 3e-5 } else { 4e-6 };
         for (i, w) in want.iter().enumerate() {
             let g = &got[i * w.len()..(i + 1) * w.len()];
             let scale = w.iter().map(|x| x.abs()).fold(1.0f32, f32::max);
