@@ -59,8 +59,8 @@ impl Dialect for C {
             push_line(&mut out, "    ", &format!("const {t} t{i} = {e};"));
         }
         match &f.fields {
-            Some((name, fields)) => {
-                push_line(&mut out, "    ", &format!("{name} r;"));
+            Some(fields) => {
+                push_line(&mut out, "    ", &format!("{} r;", f.ret));
                 for (field, v) in fields.iter().zip(&f.values) {
                     push_line(&mut out, "    ", &format!("r.{field} = {v};"));
                 }

@@ -45,8 +45,8 @@ impl Dialect for Glsl {
             push_line(&mut out, "    ", &format!("{t} t{i} = {e};"));
         }
         match &f.fields {
-            Some((name, _)) => {
-                push_line(&mut out, "    ", &format!("return {name}("));
+            Some(_) => {
+                push_line(&mut out, "    ", &format!("return {}(", f.ret));
                 let n = f.values.len();
                 for (i, v) in f.values.iter().enumerate() {
                     let sep = if i + 1 < n { "," } else { "" };

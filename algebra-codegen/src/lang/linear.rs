@@ -12,7 +12,7 @@ use crate::ratio::Ratio;
 use crate::sums::{Build, Term, chunked_sum_in, sum_in, tree_sum_in};
 use crate::unit::{UnitKernel, plan_unit_actions};
 use crate::versor::{ActionKernel, Convention};
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, BTreeSet};
 
 /// Every kernel of a plan, in the order of the Rust module: the binary products (every pair
 /// of types, every product), the unary maps and norms per type, the fused actions and the
@@ -55,18 +55,11 @@ fn binary(plan: &Plan, k: &BinaryKernel) -> Kernel {
     let doc =
         format!("`{}` of a {} and a {}.", product_name(product), plan.spec.types[lhs].name, plan.spec.types[rhs].name);
     let large = crate::size::is_large(plan.spec.table_above, k.outputs.iter().map(Vec::len));
-    let mut uses: BTreeMap<(usize, usize), usize> = BTreeMap::new();
-    for t in k.outputs.iter().flatten() {
-        *uses.entry((t.lhs, t.rhs)).or_default() += 1;
-    }
-    let mut lets = Vec::new();
-    let mut local = BTreeMap::new();
-    if !large {
-        for &(a, b) in uses.keys() {
-            local.insert((a, b), lets.len());
-            lets.push(mul(field(0, a), field(1, b)));
-        }
-    }
+    // the distinct field products, bound in field order (the Rust kernel's `p{a}_{b}`)
+    let pairs: BTreeSet<(usize, usize)> =
+        if large { BTreeSet::new() } else { k.outputs.iter().flatten().map(|t| (t.lhs, t.rhs)).collect() };
+    let local: BTreeMap<(usize, usize), usize> = pairs.iter().enumerate().map(|(i, &p)| (p, i)).collect();
+    let lets = pairs.iter().map(|&(a, b)| mul(field(0, a), field(1, b))).collect();
     let fields = k
         .outputs
         .iter()

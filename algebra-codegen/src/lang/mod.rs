@@ -122,12 +122,12 @@ pub struct Function<'a> {
     pub name: String,
     /// `(parameter name, type name)`.
     pub params: Vec<(&'static str, String)>,
-    /// The return type's name.
+    /// The return type's name (the struct built from [`Self::fields`], or the scalar).
     pub ret: String,
     /// The locals' types and expressions (`t0`, `t1`, ...).
     pub lets: Vec<(String, String)>,
-    /// `Some((type name, field names))` when the result is a struct, `None` for a scalar.
-    pub fields: Option<(String, &'a [String])>,
+    /// The result struct's field names, `None` when the result is a scalar.
+    pub fields: Option<&'a [String]>,
     /// The result: one expression per field, or the scalar.
     pub values: Vec<String>,
     /// The doc line.
@@ -299,6 +299,7 @@ fn render(plan: &Plan, d: &dyn Dialect, options: &Options) -> Result<String, Cod
             used.insert(*o);
         }
     }
+    let helpers: BTreeSet<ir::Helper> = kernels.iter().flat_map(|k| k.lets.iter().filter_map(call)).collect();
     let mut out = String::new();
     for line in &options.header {
         out.push_str(&d.comment(line));
@@ -315,10 +316,9 @@ fn render(plan: &Plan, d: &dyn Dialect, options: &Options) -> Result<String, Cod
             out.push_str(&d.structure(s, &format!("{}{sfx}", type_name(plan, i)), f));
             out.push('\n');
         }
-        let helpers: BTreeSet<ir::Helper> = kernels.iter().flat_map(|k| k.lets.iter().filter_map(call)).collect();
         if !helpers.is_empty() {
             out.push_str(&d.triple_def(s, module));
-            for h in helpers {
+            for &h in &helpers {
                 out.push_str(&helpers::text(d, s, module, h));
                 out.push('\n');
             }
@@ -331,7 +331,7 @@ fn render(plan: &Plan, d: &dyn Dialect, options: &Options) -> Result<String, Cod
             let (ret, result_fields, values) = match &k.output {
                 Output::Type(o, es) => (
                     format!("{}{sfx}", type_name(plan, *o)),
-                    Some((format!("{}{sfx}", type_name(plan, *o)), fields[*o].as_slice())),
+                    Some(fields[*o].as_slice()),
                     es.iter().map(print).collect(),
                 ),
                 Output::Scalar(e) => (d.scalar(s).to_string(), None, vec![print(e)]),

@@ -44,8 +44,8 @@ impl Dialect for Wgsl {
             push_line(&mut out, "    ", &format!("let t{i} = {e};"));
         }
         match &f.fields {
-            Some((name, _)) => {
-                push_line(&mut out, "    ", &format!("return {name}("));
+            Some(_) => {
+                push_line(&mut out, "    ", &format!("return {}(", f.ret));
                 for v in &f.values {
                     push_line(&mut out, "        ", &format!("{v},"));
                 }
