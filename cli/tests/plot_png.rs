@@ -47,9 +47,20 @@ const SPEC: &str = r#"{"method": "ccm-additive",
             {"position": [1, 1, 0], "axis": [0, 0, 1], "angle": 1},
             {"position": [2, 0, 1], "axis": [1, 0, 0], "angle": 0.5}]}"#;
 
-/// The first series colour (its speed and path) and the second (its angular speed).
-const BLUE: [u8; 3] = [31, 119, 180];
-const RED: [u8; 3] = [214, 39, 40];
+/// The first series colour (its speed, dashed angular speed and path).
+const BLUE: [u8; 3] = [0, 136, 255];
+/// The legend band's background.
+const LEGEND: [u8; 3] = [250, 250, 250];
+
+/// The `width` and `height` of an SVG file's root element.
+fn svg_size(path: &str) -> (usize, usize) {
+    let svg = std::fs::read_to_string(path).expect("the SVG was written");
+    let attr = |name: &str| {
+        let at = svg.find(&format!(" {name}=\"")).expect(name) + name.len() + 3;
+        svg[at..at + svg[at..].find('"').unwrap()].parse().expect("a size")
+    };
+    (attr("width"), attr("height"))
+}
 /// The frames' e1 axis.
 const AXIS_RED: [u8; 3] = [220, 0, 0];
 
@@ -61,15 +72,21 @@ fn a_png_plot_has_its_size_series_colours_and_title_text() {
     let title = "ccm-additive motion of 2 segments of degree 3, body point [0, 0, 0]";
     assert_eq!(line, format!("wrote {}: {title} (201 samples)", out.path()));
     let img = decode(&std::fs::read(out.path()).expect("the PNG was written"));
-    assert_eq!((img.width, img.height), (1200, 560));
-    // The background is white; the speed panel is the left half, the path panel the right.
+    // The SVG of the same figure has the same size: 1200 wide, the panels 560 high and the
+    // legend band under them.
+    let svg = TempFile::empty("plot-png-twin.svg");
+    ok(&["plot", spec.path(), "--out", svg.path(), "--frames", "3"]);
+    assert_eq!((img.width, img.height), svg_size(svg.path()));
+    assert!(img.width == 1200 && img.height > 580, "{} x {}", img.width, img.height);
+    // The background is white; the speed panel is the left half, the path panel the right,
+    // the legend band below 560.
     assert_eq!(img.at(1, 1), [255; 3]);
     assert_eq!(img.at(1198, 558), [255; 3]);
     let left_blue = img.find(BLUE, 80..590, 60..520).len();
     let right_blue = img.find(BLUE, 680..1190, 60..520).len();
     assert!(left_blue > 300 && right_blue > 300, "speed {left_blue}, path {right_blue} blue pixels");
-    assert!(img.find(RED, 80..590, 60..520).len() > 200, "the angular speed in the speed panel");
-    assert!(img.find(RED, 600..1200, 0..560).is_empty(), "the angular speed only in the speed panel");
+    assert!(img.find(LEGEND, 0..1200, 560..img.height).len() > 10_000, "the legend band");
+    assert!(img.find(BLUE, 0..1200, 560..img.height).len() > 20, "the legend's swatches");
     assert!(img.find(AXIS_RED, 600..1200, 40..560).len() > 20, "the frames' e1 axes in the path panel");
     assert!(img.find(AXIS_RED, 0..600, 0..560).is_empty());
     // The title: black text pixels in the top band, all inside the box plotters lays it out
@@ -93,7 +110,7 @@ fn the_format_flag_overrides_the_extension_and_the_pixels_repeat() {
     ok(&["plot", spec.path(), "--out", a.path(), "--format", "png", "--view", "3d", "--frames", "2", "--body", "cube"]);
     let png = std::fs::read(a.path()).expect("written");
     let img = decode(&png);
-    assert_eq!((img.width, img.height), (1200, 560));
+    assert_eq!(img.width, 1200);
     assert!(img.find([90, 90, 90], 600..1200, 40..560).len() > 50, "the cubes' grey edges");
     // The same figure again is the same file, byte for byte (nothing depends on the machine).
     let b = TempFile::empty("again.png");
@@ -123,12 +140,16 @@ fn figures_in_png_are_the_svg_gallery_as_images() {
     std::fs::create_dir_all(&dir).expect("a temp dir");
     let d = dir.to_str().expect("utf-8");
     let lines = ok(&["figures", "--out", d, "--format", "png"]);
+    let svgs = dir.join("svg");
+    std::fs::create_dir_all(&svgs).expect("a temp dir");
+    ok(&["figures", "--out", svgs.to_str().expect("utf-8")]);
     let files: Vec<&str> = lines.lines().map(|l| l.split(": ").next().unwrap().trim_start_matches("wrote ")).collect();
     assert_eq!(files.len(), 17, "{lines}");
     for f in &files {
         assert!(f.ends_with(".png"), "{f}");
         let img = decode(&std::fs::read(f).expect("written"));
-        let size = if f.ends_with("juttler_fig5b.png") { (800, 640) } else { (1200, 560) };
+        let name = std::path::Path::new(f).file_stem().and_then(|s| s.to_str()).expect("a name");
+        let size = svg_size(svgs.join(format!("{name}.svg")).to_str().expect("utf-8"));
         assert_eq!((img.width, img.height), size, "{f}");
         let blue = img.find(BLUE, 0..img.width, 40..img.height).len();
         assert!(blue > 300, "{f}: {blue} pixels of the first series' colour");

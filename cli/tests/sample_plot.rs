@@ -204,13 +204,13 @@ fn plot_writes_an_svg() {
     assert!(svg.trim_end().ends_with("</svg>"));
     for text in [
         "multiplicative segment of degree 3, body point [0, 1, 0]",
-        "linear and angular speed",
+        "linear speed (solid) and angular speed (dashed)",
         "path of the body point",
         "linear speed |v|",
         "angular speed |Omega|",
-        "\nt\n",
-        "\nx\n",
-        "\ny\n",
+        ">t</text>",
+        ">x</text>",
+        ">y</text>",
     ] {
         assert!(svg.contains(text), "the SVG lacks {text:?}");
     }

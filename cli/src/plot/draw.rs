@@ -1,18 +1,28 @@
-//! Drawing the [`Series`] of `gam plot` into an SVG string with `plotters`: the speed panel
-//! (every body point's `|v|` as a thick line and each series' `|Ω|` as a thin one, the
-//! joins as vertical grey lines) and the path panel (the paths of the body points projected on
-//! a coordinate plane, or a 3-D view; the key points as dots; the body frames as red, green,
-//! blue segments along the moved `e1, e2, e3`).
+//! Drawing the [`Series`] of `gam plot` with `plotters`: the speed panel (every body point's
+//! `|v|` as a thick solid line and each series' `|Ω|` as a thin dashed one in the same hue, on
+//! a second axis at the right when the two differ by a factor of ten or more; the joins as
+//! vertical grey lines), the path panel (the paths of the body points projected on a
+//! coordinate plane with equal scales on both axes, or a 3-D view with equal scales,
+//! [`super::axes3d`]; the key points as dots; the body frames as red, green, blue segments
+//! along the moved `e1, e2, e3`, colours no path uses) and the legend in a band under both
+//! ([`super::legend`]).
 //!
-//! Every data line is one SVG `<polyline>` and every legend mark a `<rect>`, so a test can
-//! count the series of a figure (the polylines not in black, which are the axes): per series, one speed line and one path per body point, one
-//! angular speed line, one line per join and three per frame (twelve with `--body cube`).
+//! Colours ([`super::style::PALETTE`]): with one spec, one hue per body point (its speed and
+//! its path); with several, one hue per spec, its further body points darker.
+//!
+//! Every data line is one SVG `<polyline>` and every legend mark a `<rect>` (or a `<circle>`),
+//! so a test can count the series of a figure (the polylines not in black or grey, which are
+//! the axes, the grid and the box): per series, one speed line and one path per body point,
+//! one angular speed line, one line per join and three per frame (twelve with `--body cube`).
 //! Filled faces (the L-shaped block's two L faces, the filled face markings of
 //! [`Series::marks`]) are SVG `<polygon>`s; each mark's outline is one more polyline, a dashed
 //! `arc` one per dash.
 
+use super::axes3d::{self, Bounds};
 use super::data::{Mark, Series, moved};
+use super::legend::{self, Entry, Swatch};
 use super::raster::{Format, Picture, encode};
+use super::style::{ANGULAR, AXIS_COLOURS, JOIN, Px, colour, dashed, fitted};
 use crate::error::CliError;
 use crate::scalar::format_f64;
 use plotters::coord::Shift;
@@ -75,16 +85,16 @@ pub(crate) const DASH: usize = 3;
 
 /// The filled polygons and the polylines (with their colours) drawing `m`.
 #[allow(clippy::type_complexity)]
-fn mark_shapes(m: &Mark) -> (Option<Vec<[f64; 3]>>, Vec<(Vec<[f64; 3]>, RGBColor, u32)>) {
+fn mark_shapes(m: &Mark) -> (Option<Vec<[f64; 3]>>, Vec<(Vec<[f64; 3]>, RGBColor, f64)>) {
     match m.kind {
-        "square" | "triangle" => (Some(m.points.clone()), vec![(m.points.clone(), MARK, 1)]),
+        "square" | "triangle" => (Some(m.points.clone()), vec![(m.points.clone(), MARK, 1.0)]),
         "arc" => {
             let dashes = (0..m.points.len().saturating_sub(1) / DASH)
-                .map(|i| (m.points[DASH * i..(DASH * i + DASH).min(m.points.len())].to_vec(), ARC, 1));
+                .map(|i| (m.points[DASH * i..(DASH * i + DASH).min(m.points.len())].to_vec(), ARC, 1.0));
             (None, dashes.collect())
         }
-        "curve" => (None, vec![(m.points.clone(), MARK, 2)]),
-        _ => (None, vec![(m.points.clone(), MARK, 1)]),
+        "curve" => (None, vec![(m.points.clone(), MARK, 2.0)]),
+        _ => (None, vec![(m.points.clone(), MARK, 1.0)]),
     }
 }
 
@@ -94,6 +104,7 @@ fn draw_extras<DB: DrawingBackend, CT: CoordTranslate>(
     chart: &mut ChartContext<DB, CT>,
     s: &Series,
     body: Body,
+    px: Px,
     to: impl Fn(&[f64; 3]) -> CT::From,
 ) -> Result<(), CliError>
 where
@@ -108,7 +119,7 @@ where
         chart.draw_series(fill.iter().map(|ps| shade(ps, MARK))).map_err(draw_error)?;
         let lines = lines
             .into_iter()
-            .map(|(ps, c, w)| PathElement::new(ps.iter().map(&to).collect::<Vec<_>>(), c.stroke_width(w)));
+            .map(|(ps, c, w)| PathElement::new(ps.iter().map(&to).collect::<Vec<_>>(), c.stroke_width(px.u(w))));
         chart.draw_series(lines).map_err(draw_error)?;
     }
     Ok(())
@@ -186,32 +197,35 @@ pub(crate) fn range(values: impl Iterator<Item = f64>) -> (f64, f64) {
     (lo - pad, hi + pad)
 }
 
-/// The colour of line `i`.
-fn colour(i: usize) -> RGBColor {
-    const C: [RGBColor; 10] = [
-        RGBColor(31, 119, 180),
-        RGBColor(214, 39, 40),
-        RGBColor(44, 160, 44),
-        RGBColor(148, 103, 189),
-        RGBColor(255, 127, 14),
-        RGBColor(140, 86, 75),
-        RGBColor(227, 119, 194),
-        RGBColor(23, 190, 207),
-        RGBColor(188, 189, 34),
-        RGBColor(255, 187, 120),
-    ];
-    C[i % C.len()]
+/// The ranges `a` and `b` widened about their centres so that one unit is as many pixels
+/// along both in a plotting area `(w, h)` pixels large (equal aspect).
+pub(crate) fn equal_aspect(a: (f64, f64), b: (f64, f64), (w, h): (f64, f64)) -> ((f64, f64), (f64, f64)) {
+    let per_pixel = ((a.1 - a.0) / w).max((b.1 - b.0) / h);
+    let widen = |(lo, hi): (f64, f64), pixels: f64| {
+        let (c, half) = ((lo + hi) / 2.0, per_pixel * pixels / 2.0);
+        (c - half, c + half)
+    };
+    (widen(a, w), widen(b, h))
 }
 
-/// The colour index of body point `j` of series `si`; `j = body_points.len()` is the
-/// series' angular speed.
+/// The colour of body point `j` of series `si` (see the module doc).
 fn colour_of(all: &[Series], si: usize, j: usize) -> RGBColor {
-    colour(all[..si].iter().map(|s| s.body_points.len() + 1).sum::<usize>() + j)
+    if all.len() == 1 {
+        return colour(j);
+    }
+    let c = colour(si);
+    let dark = (0.3 * j as f64).min(0.6);
+    let f = |v: u8| (f64::from(v) * (1.0 - dark)).round() as u8;
+    RGBColor(f(c.0), f(c.1), f(c.2))
 }
 
-/// A legend mark (a `<rect>`, not counted as a series).
-fn mark(c: RGBColor) -> impl Fn((i32, i32)) -> Rectangle<(i32, i32)> {
-    move |(x, y)| Rectangle::new([(x, y - 2), (x + 20, y + 2)], c.filled())
+/// The colour of series `si`'s angular speed: its spec's hue, or, for one spec of several
+/// body points, a dark grey.
+fn angular_colour(all: &[Series], si: usize) -> RGBColor {
+    match all {
+        [s] if s.body_points.len() > 1 => ANGULAR,
+        _ => colour_of(all, si, 0),
+    }
 }
 
 /// The legend text of body point `j` of series `s` (short when the figure has one line).
@@ -221,6 +235,38 @@ fn point_label(all: &[Series], s: &Series, j: usize, what: &str) -> String {
     }
     let p = s.body_points[j].map(format_f64).join(", ");
     if all.len() == 1 { format!("{what} of [{p}]") } else { format!("{}: {what} of [{p}]", s.label) }
+}
+
+/// The legend of a figure of `all` with the body drawn as `body`: with several specs, one
+/// entry per spec of one body point (its hue, solid and dashed), otherwise one per body point
+/// and one for the angular speed.
+fn entries(all: &[Series], body: Body) -> Vec<Entry> {
+    let mut out = Vec::new();
+    for (si, s) in all.iter().enumerate() {
+        if all.len() > 1 && s.body_points.len() == 1 {
+            out.push(Entry { text: s.label.clone(), colour: colour_of(all, si, 0), swatch: Swatch::Pair });
+            continue;
+        }
+        for j in 0..s.body_points.len() {
+            let text = point_label(all, s, j, "linear speed |v| and path");
+            out.push(Entry { text, colour: colour_of(all, si, j), swatch: Swatch::Solid });
+        }
+        let text =
+            if all.len() == 1 { "angular speed |Omega|".into() } else { format!("{}: angular speed |Omega|", s.label) };
+        out.push(Entry { text, colour: angular_colour(all, si), swatch: Swatch::Dashed });
+    }
+    if all.iter().any(|s| !s.key_points.is_empty()) {
+        out.push(Entry { text: "key poses".into(), colour: BLACK, swatch: Swatch::Dot });
+    }
+    if all.iter().any(|s| !s.joins.is_empty()) {
+        out.push(Entry { text: "joins".into(), colour: JOIN, swatch: Swatch::Solid });
+    }
+    if body == Body::Frames && all.iter().any(|s| !s.frames.is_empty()) {
+        for (k, c) in AXIS_COLOURS.iter().enumerate() {
+            out.push(Entry { text: format!("body frame e{}", k + 1), colour: *c, swatch: Swatch::Solid });
+        }
+    }
+    out
 }
 
 /// The frames' axis length: a tenth of the largest extent of the paths.
@@ -240,143 +286,169 @@ fn tip(f: &super::data::Frame, k: usize, l: f64) -> [f64; 3] {
     std::array::from_fn(|i| f.origin[i] + l * (f.axes[k][i] - f.origin[i]))
 }
 
-/// The colour of the join lines.
-const JOIN: RGBColor = RGBColor(128, 128, 128);
+/// Panel layout, in pixels: the margin, the x and y label areas, the caption and label sizes.
+const MARGIN: f64 = 12.0;
+const X_LABELS: f64 = 42.0;
+const Y_LABELS: f64 = 62.0;
+const CAPTION: f64 = 16.0;
+const LABEL: f64 = 12.0;
 
-const AXIS_COLOURS: [RGBColor; 3] = [RGBColor(220, 0, 0), RGBColor(0, 160, 0), RGBColor(0, 0, 220)];
-
-/// The speed panel.
-fn speeds<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, all: &[Series]) -> Result<(), CliError> {
-    let (t_lo, t_hi) = range(all.iter().flat_map(|s| s.t.iter().copied()));
-    let values = all.iter().flat_map(|s| s.speeds.iter().flatten().chain(&s.angular_speed).copied());
-    let (_, hi) = range(values.chain(std::iter::once(0.0)));
-    let mut chart = ChartBuilder::on(area)
-        .caption("linear and angular speed", ("sans-serif", 18))
-        .margin(15)
-        .x_label_area_size(40)
-        .y_label_area_size(60)
-        .build_cartesian_2d(t_lo..t_hi, 0.0..hi)
-        .map_err(draw_error)?;
-    chart.configure_mesh().x_desc("t").y_desc("speed (per unit t)").draw().map_err(draw_error)?;
-    for (si, s) in all.iter().enumerate() {
-        for (j, v) in s.speeds.iter().enumerate() {
-            let c = colour_of(all, si, j);
-            let pts = s.t.iter().copied().zip(v.iter().copied());
-            chart
-                .draw_series(LineSeries::new(pts, c.stroke_width(2)))
-                .map_err(draw_error)?
-                .label(point_label(all, s, j, "linear speed |v|"))
-                .legend(mark(c));
-        }
-        let c = colour_of(all, si, s.body_points.len());
-        let label =
-            if all.len() == 1 { "angular speed |Omega|".into() } else { format!("{}: angular speed |Omega|", s.label) };
-        chart
-            .draw_series(LineSeries::new(s.t.iter().copied().zip(s.angular_speed.iter().copied()), c.stroke_width(1)))
-            .map_err(draw_error)?
-            .label(label)
-            .legend(mark(c));
-        let joins = s.joins.iter().map(|t| PathElement::new(vec![(*t, 0.0), (*t, hi)], JOIN.stroke_width(1)));
-        chart.draw_series(joins).map_err(draw_error)?;
-    }
-    chart
-        .configure_series_labels()
-        .background_style(WHITE.mix(0.8))
-        .border_style(BLACK)
-        .position(SeriesLabelPosition::UpperRight)
-        .draw()
-        .map_err(draw_error)
+/// The panel `area` with its caption drawn, the rest returned.
+fn captioned<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    caption: &str,
+    px: Px,
+) -> Result<DrawingArea<DB, Shift>, CliError> {
+    let width = f64::from(area.dim_in_pixel().0) / px.0 - 2.0 * MARGIN;
+    area.titled(caption, ("sans-serif", px.font(fitted(caption, CAPTION, width)))).map_err(draw_error)
 }
 
-/// The path panel projected on the coordinates `(a, b)`.
+/// The axes, grid and label styles of a 2-D panel at the scale `px`.
+fn style_mesh<DB: DrawingBackend, X: plotters::coord::ranged1d::Ranged, Y: plotters::coord::ranged1d::Ranged>(
+    mesh: &mut plotters::chart::MeshStyle<'_, '_, X, Y, DB>,
+    px: Px,
+) {
+    mesh.label_style(("sans-serif", px.font(LABEL)))
+        .axis_desc_style(("sans-serif", px.font(13.0)))
+        .set_all_tick_mark_size(px.i(5.0))
+        .axis_style(BLACK.stroke_width(px.u(1.0)))
+        .bold_line_style(BLACK.mix(0.18).stroke_width(px.u(1.0)))
+        .light_line_style(BLACK.mix(0.06).stroke_width(px.u(1.0)))
+        .x_labels(8)
+        .y_labels(8);
+}
+
+/// The speed panel.
+fn speeds<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, all: &[Series], px: Px) -> Result<(), CliError> {
+    let (t_lo, t_hi) = range(all.iter().flat_map(|s| s.t.iter().copied()));
+    let top = |values: &mut dyn Iterator<Item = f64>| range(values.chain(std::iter::once(0.0))).1;
+    let linear = top(&mut all.iter().flat_map(|s| s.speeds.iter().flatten().copied()));
+    let angular = top(&mut all.iter().flat_map(|s| s.angular_speed.iter().copied()));
+    let ratio = linear / angular;
+    let split = ratio.is_finite() && !(0.1..=10.0).contains(&ratio);
+    let (lin_hi, ang_hi) = if split { (linear, angular) } else { (linear.max(angular), linear.max(angular)) };
+    let area = captioned(area, "linear speed (solid) and angular speed (dashed)", px)?;
+    let mut builder = ChartBuilder::on(&area);
+    builder.margin(px.u(MARGIN)).x_label_area_size(px.u(X_LABELS)).y_label_area_size(px.u(Y_LABELS));
+    if split {
+        builder.right_y_label_area_size(px.u(Y_LABELS));
+    }
+    let chart = builder.build_cartesian_2d(t_lo..t_hi, 0.0..lin_hi).map_err(draw_error)?;
+    let mut chart = chart.set_secondary_coord(t_lo..t_hi, 0.0..ang_hi);
+    let y_desc = if split { "linear speed |v| per unit t" } else { "speed per unit t" };
+    let mut mesh = chart.configure_mesh();
+    style_mesh(&mut mesh, px);
+    mesh.x_desc("t").y_desc(y_desc).draw().map_err(draw_error)?;
+    if split {
+        chart
+            .configure_secondary_axes()
+            .label_style(("sans-serif", px.font(LABEL)))
+            .axis_desc_style(("sans-serif", px.font(13.0)))
+            .set_all_tick_mark_size(px.i(5.0))
+            .axis_style(BLACK.stroke_width(px.u(1.0)))
+            .y_desc("angular speed |Omega| per unit t (dashed)")
+            .draw()
+            .map_err(draw_error)?;
+    }
+    for (si, s) in all.iter().enumerate() {
+        let joins =
+            s.joins.iter().map(|t| PathElement::new(vec![(*t, 0.0), (*t, lin_hi)], JOIN.stroke_width(px.u(1.0))));
+        chart.draw_series(joins).map_err(draw_error)?;
+        for (j, v) in s.speeds.iter().enumerate() {
+            let pts = s.t.iter().copied().zip(v.iter().copied());
+            chart
+                .draw_series(LineSeries::new(pts, colour_of(all, si, j).stroke_width(px.u(2.0))))
+                .map_err(draw_error)?;
+        }
+        let pts = s.t.iter().copied().zip(s.angular_speed.iter().copied());
+        let style = dashed(angular_colour(all, si), px.u(1.5));
+        chart.draw_secondary_series(LineSeries::new(pts, style)).map_err(draw_error)?;
+    }
+    Ok(())
+}
+
+/// Draws the paths, key points, frames and extras of `all` on a chart, `to` mapping a world
+/// point to the chart's coordinates.
+fn draw_paths<DB: DrawingBackend, CT: CoordTranslate>(
+    chart: &mut ChartContext<DB, CT>,
+    all: &[Series],
+    body: Body,
+    px: Px,
+    to: impl Fn(&[f64; 3]) -> CT::From + Copy,
+) -> Result<(), CliError>
+where
+    CT::From: Clone + 'static,
+{
+    let l = frame_scale(all);
+    for (si, s) in all.iter().enumerate() {
+        for (j, path) in s.paths.iter().enumerate() {
+            let style = colour_of(all, si, j).stroke_width(px.u(2.0));
+            chart.draw_series(LineSeries::new(path.iter().map(to), style)).map_err(draw_error)?;
+        }
+        let dots = s.key_points.iter().flatten().map(|p| Circle::new(to(p), px.u(4.0), BLACK.filled()));
+        chart.draw_series(dots).map_err(draw_error)?;
+        for f in &s.frames {
+            let lines = body_lines(f, body, l).into_iter();
+            let lines =
+                lines.map(|(ps, c)| PathElement::new(ps.iter().map(to).collect::<Vec<_>>(), c.stroke_width(px.u(2.0))));
+            chart.draw_series(lines).map_err(draw_error)?;
+        }
+        draw_extras(chart, s, body, px, to)?;
+    }
+    Ok(())
+}
+
+/// The path panel projected on the coordinates `(a, b)`, with equal scales on both axes.
 fn paths_2d<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     all: &[Series],
     body: Body,
-    a: usize,
-    b: usize,
+    (a, b): (usize, usize),
+    px: Px,
 ) -> Result<(), CliError> {
     let names = ["x", "y", "z"];
     let shown = shown_points(all, body);
-    let pts = || shown.iter();
-    let (a_lo, a_hi) = range(pts().map(|p| p[a]));
-    let (b_lo, b_hi) = range(pts().map(|p| p[b]));
-    let mut chart = ChartBuilder::on(area)
-        .caption(format!("path of the body points ({}-{} projection)", names[a], names[b]), ("sans-serif", 18))
-        .margin(15)
-        .x_label_area_size(40)
-        .y_label_area_size(60)
+    let caption = format!("path of the body points ({}-{} projection, equal scales)", names[a], names[b]);
+    let area = captioned(area, &caption, px)?;
+    let (w, h) = area.dim_in_pixel();
+    let plot = (f64::from(w) - px.0 * (2.0 * MARGIN + Y_LABELS), f64::from(h) - px.0 * (2.0 * MARGIN + X_LABELS));
+    let ((a_lo, a_hi), (b_lo, b_hi)) =
+        equal_aspect(range(shown.iter().map(|p| p[a])), range(shown.iter().map(|p| p[b])), plot);
+    let mut chart = ChartBuilder::on(&area)
+        .margin(px.u(MARGIN))
+        .x_label_area_size(px.u(X_LABELS))
+        .y_label_area_size(px.u(Y_LABELS))
         .build_cartesian_2d(a_lo..a_hi, b_lo..b_hi)
         .map_err(draw_error)?;
-    chart.configure_mesh().x_desc(names[a]).y_desc(names[b]).draw().map_err(draw_error)?;
-    let l = frame_scale(all);
-    for (si, s) in all.iter().enumerate() {
-        for (j, path) in s.paths.iter().enumerate() {
-            let c = colour_of(all, si, j);
-            let series = chart.draw_series(LineSeries::new(path.iter().map(|p| (p[a], p[b])), c.stroke_width(2)));
-            let series = series.map_err(draw_error)?;
-            if all.len() > 1 && j == 0 {
-                series.label(s.label.clone()).legend(mark(c));
-            }
-        }
-        let dots = s.key_points.iter().flatten().map(|p| Circle::new((p[a], p[b]), 4, BLACK.filled()));
-        chart.draw_series(dots).map_err(draw_error)?;
-        for f in &s.frames {
-            let lines = body_lines(f, body, l).into_iter();
-            let lines = lines.map(|(ps, c)| {
-                PathElement::new(ps.iter().map(|p| (p[a], p[b])).collect::<Vec<_>>(), c.stroke_width(2))
-            });
-            chart.draw_series(lines).map_err(draw_error)?;
-        }
-        draw_extras(&mut chart, s, body, |p| (p[a], p[b]))?;
-    }
-    if all.len() > 1 {
-        let mut labels = chart.configure_series_labels();
-        labels.background_style(WHITE.mix(0.8)).border_style(BLACK).draw().map_err(draw_error)?;
-    }
-    Ok(())
+    let mut mesh = chart.configure_mesh();
+    style_mesh(&mut mesh, px);
+    mesh.x_desc(names[a]).y_desc(names[b]).draw().map_err(draw_error)?;
+    draw_paths(&mut chart, all, body, px, |p| (p[a], p[b]))
 }
 
-/// The path panel as a 3-D view (z up: plotters' vertical axis is its second).
-fn paths_3d<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, all: &[Series], body: Body) -> Result<(), CliError> {
+/// The path panel as a 3-D view (z up), with equal scales on the three axes.
+fn paths_3d<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    all: &[Series],
+    body: Body,
+    px: Px,
+) -> Result<(), CliError> {
     let shown = shown_points(all, body);
-    let pts = || shown.iter();
-    let (x, y, z) = (range(pts().map(|p| p[0])), range(pts().map(|p| p[1])), range(pts().map(|p| p[2])));
-    let mut chart = ChartBuilder::on(area)
-        .caption("path of the body points (3-D view, z up)", ("sans-serif", 18))
-        .margin(15)
-        .build_cartesian_3d(x.0..x.1, z.0..z.1, y.0..y.1)
-        .map_err(draw_error)?;
-    chart.configure_axes().draw().map_err(draw_error)?;
-    let to = |p: &[f64; 3]| (p[0], p[2], p[1]);
-    let l = frame_scale(all);
-    for (si, s) in all.iter().enumerate() {
-        for (j, path) in s.paths.iter().enumerate() {
-            let c = colour_of(all, si, j);
-            let series = chart.draw_series(LineSeries::new(path.iter().map(to), c.stroke_width(2)));
-            let series = series.map_err(draw_error)?;
-            if all.len() > 1 && j == 0 {
-                series.label(s.label.clone()).legend(mark(c));
-            }
-        }
-        let dots = s.key_points.iter().flatten().map(|p| Circle::new(to(p), 4, BLACK.filled()));
-        chart.draw_series(dots).map_err(draw_error)?;
-        for f in &s.frames {
-            let lines = body_lines(f, body, l).into_iter();
-            let lines = lines.map(|(ps, c)| PathElement::new(ps.iter().map(to).collect::<Vec<_>>(), c.stroke_width(2)));
-            chart.draw_series(lines).map_err(draw_error)?;
-        }
-        draw_extras(&mut chart, s, body, to)?;
-    }
-    if all.len() > 1 {
-        let mut labels = chart.configure_series_labels();
-        labels.background_style(WHITE.mix(0.8)).border_style(BLACK).draw().map_err(draw_error)?;
-    }
-    Ok(())
+    let area = captioned(area, "path of the body points (3-D view, z up, equal scales)", px)?;
+    let bounds = Bounds::of(shown.iter());
+    let mut chart = axes3d::chart(&area, &bounds, px)?;
+    axes3d::draw_axes(&mut chart, &area, &bounds, px)?;
+    draw_paths(&mut chart, all, body, px, axes3d::to)
 }
+
+/// The height of the two panels and the title, in pixels.
+const PANELS: u32 = 560;
+
+/// The figure's width in pixels.
+const WIDTH: u32 = 1200;
 
 /// The figure of `all` (one or more series) titled `title`, the body drawn as `body` at the
-/// frames, in the view `view` (1200 x 560 pixels).
+/// frames, in the view `view`: 1200 pixels wide, the panels 560 high, the legend band under them.
 pub(crate) struct Figure<'a> {
     /// The series.
     pub all: &'a [Series],
@@ -390,17 +462,21 @@ pub(crate) struct Figure<'a> {
 
 impl Picture for Figure<'_> {
     fn size(&self) -> (u32, u32) {
-        (1200, 560)
+        (WIDTH, PANELS + legend::height(&entries(self.all, self.body), f64::from(WIDTH)))
     }
 
-    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), CliError> {
-        let root = root.titled(self.title, ("sans-serif", 22)).map_err(draw_error)?;
-        let (left, right) = root.split_horizontally(600);
-        speeds(&left, self.all)?;
+    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>, px: Px) -> Result<(), CliError> {
+        let (top, band) = root.split_vertically(px.i(f64::from(PANELS)));
+        let size = fitted(self.title, 22.0, f64::from(WIDTH) - 2.0 * MARGIN);
+        let top = top.titled(self.title, ("sans-serif", px.font(size))).map_err(draw_error)?;
+        let top = top.margin(px.i(6.0), 0, 0, 0);
+        let (left, right) = top.split_horizontally(px.i(f64::from(WIDTH) / 2.0));
+        speeds(&left, self.all, px)?;
         match self.view.axes() {
-            Some((a, b)) => paths_2d(&right, self.all, self.body, a, b),
-            None => paths_3d(&right, self.all, self.body),
+            Some(ab) => paths_2d(&right, self.all, self.body, ab, px)?,
+            None => paths_3d(&right, self.all, self.body, px)?,
         }
+        legend::draw(&band, &entries(self.all, self.body), px)
     }
 }
 

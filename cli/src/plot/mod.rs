@@ -15,12 +15,16 @@
 //! `--json`), then drawn ([`draw::render`]) into a string, then written to FILE (so an
 //! unwritable path is one `error:` line, exit 2, and nothing is left half written).
 
+pub(crate) mod axes3d;
 pub(crate) mod control;
 pub(crate) mod data;
 pub(crate) mod draw;
 pub(crate) mod font;
+pub(crate) mod legend;
 pub(crate) mod raster;
+pub(crate) mod style;
 pub(crate) mod surface;
+pub(crate) mod svg;
 
 use crate::error::CliError;
 use crate::sample::Sampled;

@@ -1,5 +1,7 @@
-//! The output formats of `gam plot` and `gam figures`: SVG (plotters' SVG backend) or PNG
-//! (plotters' `BitMapBackend` into memory, encoded by the `png` crate). plotters draws text
+//! The output formats of `gam plot` and `gam figures`: SVG ([`super::svg::Svg`], drawn at
+//! [`SVG_SCALE`]) or PNG (plotters' `BitMapBackend` into memory at [`PNG_SCALE`] times the
+//! size, averaged down to the size, so lines and text are anti-aliased; encoded by the `png`
+//! crate). plotters draws text
 //! into a bitmap only through a font rasteriser and a system font; [`Raster`] instead draws
 //! every text with the built-in bitmap font of [`super::font`] and hands everything else to
 //! the `BitMapBackend`, so a PNG needs no font on the machine and has the same pixels
@@ -12,6 +14,8 @@
 //! same in both formats.
 
 use super::font::{ABOVE, COLUMNS, glyph};
+use super::style::{DASH_OPACITY, DASH_PATTERN, Px, SVG_SCALE};
+use super::svg::Svg;
 use crate::error::CliError;
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -48,8 +52,9 @@ impl Format {
 pub(crate) trait Picture {
     /// The image size in pixels.
     fn size(&self) -> (u32, u32);
-    /// Draws the picture on `root` (already filled white).
-    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), CliError>;
+    /// Draws the picture on `root` (already filled white) at the scale `px` (`root` is
+    /// `px` times [`Picture::size`]).
+    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>, px: Px) -> Result<(), CliError>;
 }
 
 fn draw_error<E: std::fmt::Display>(e: E) -> CliError {
@@ -57,10 +62,10 @@ fn draw_error<E: std::fmt::Display>(e: E) -> CliError {
 }
 
 /// Draws `picture` on a white background, fills and presents it.
-fn paint<DB: DrawingBackend>(picture: &impl Picture, backend: DB) -> Result<(), CliError> {
+fn paint<DB: DrawingBackend>(picture: &impl Picture, backend: DB, px: Px) -> Result<(), CliError> {
     let root = backend.into_drawing_area();
     root.fill(&WHITE).map_err(draw_error)?;
-    picture.draw(&root)?;
+    picture.draw(&root, px)?;
     root.present().map_err(draw_error)
 }
 
@@ -71,12 +76,14 @@ pub(crate) fn encode(picture: &impl Picture, format: Format) -> Result<Vec<u8>, 
     match format {
         Format::Svg => {
             let mut svg = String::new();
-            paint(picture, SVGBackend::with_string(&mut svg, (w, h)))?;
+            paint(picture, Svg::new(&mut svg, (w, h)), Px(SVG_SCALE))?;
             Ok(svg.into_bytes())
         }
         Format::Png => {
-            let mut rgb = vec![0u8; 3 * w as usize * h as usize];
-            paint(picture, Raster { inner: BitMapBackend::with_buffer(&mut rgb, (w, h)) })?;
+            let (sw, sh) = (w * PNG_SCALE, h * PNG_SCALE);
+            let mut big = vec![0u8; 3 * sw as usize * sh as usize];
+            paint(picture, Raster { inner: BitMapBackend::with_buffer(&mut big, (sw, sh)) }, Px(f64::from(PNG_SCALE)))?;
+            let rgb = shrink(&big, (w, h));
             let mut file = Vec::new();
             let mut encoder = png::Encoder::new(&mut file, w, h);
             encoder.set_color(png::ColorType::Rgb);
@@ -90,12 +97,124 @@ pub(crate) fn encode(picture: &impl Picture, format: Format) -> Result<Vec<u8>, 
     }
 }
 
+/// PNGs are drawn at this multiple of their size and averaged down.
+pub(crate) const PNG_SCALE: u32 = 2;
+
+/// The `(w, h)` RGB image whose pixels are the means of the `PNG_SCALE`² pixels of `big`.
+fn shrink(big: &[u8], (w, h): (u32, u32)) -> Vec<u8> {
+    let (s, (w, h)) = (PNG_SCALE as usize, (w as usize, h as usize));
+    let mut out = vec![0u8; 3 * w * h];
+    for y in 0..h {
+        for x in 0..w {
+            for c in 0..3 {
+                let mut sum = 0u32;
+                for dy in 0..s {
+                    for dx in 0..s {
+                        sum += u32::from(big[3 * ((y * s + dy) * w * s + x * s + dx) + c]);
+                    }
+                }
+                out[3 * (y * w + x) + c] = ((sum + (s * s / 2) as u32) / (s * s) as u32) as u8;
+            }
+        }
+    }
+    out
+}
+
+/// The dashes of the polyline `path`: pieces of [`DASH_PATTERN`]`[0] unit` drawn, then
+/// `[1] unit` skipped (`unit`: the line width plus one pixel, in drawing units).
+fn dashes(path: &[BackendCoord], unit: f64) -> Vec<Vec<BackendCoord>> {
+    let (on, off) = (DASH_PATTERN[0] * unit, DASH_PATTERN[1] * unit);
+    let (mut out, mut cur, mut drawing, mut left) = (Vec::new(), Vec::new(), true, on);
+    for seg in path.windows(2) {
+        let (a, b) = ((f64::from(seg[0].0), f64::from(seg[0].1)), (f64::from(seg[1].0), f64::from(seg[1].1)));
+        let len = (b.0 - a.0).hypot(b.1 - a.1);
+        let at = |s: f64| {
+            let u = if len > 0.0 { s / len } else { 0.0 };
+            ((a.0 + u * (b.0 - a.0)).round() as i32, (a.1 + u * (b.1 - a.1)).round() as i32)
+        };
+        let mut s = 0.0;
+        if drawing && cur.is_empty() {
+            cur.push(at(0.0));
+        }
+        while len - s > left {
+            s += left;
+            if drawing {
+                cur.push(at(s));
+                out.push(std::mem::take(&mut cur));
+            } else {
+                cur = vec![at(s)];
+            }
+            drawing = !drawing;
+            left = if drawing { on } else { off };
+        }
+        left -= len - s;
+        if drawing {
+            cur.push(at(len));
+        }
+    }
+    if cur.len() > 1 {
+        out.push(cur);
+    }
+    out
+}
+
+/// The pixel spans `(y, x0, x1)` inside the polygon `vert` (even-odd rule, pixel centres).
+fn spans(vert: &[BackendCoord]) -> Vec<(i32, i32, i32)> {
+    let n = vert.len();
+    if n < 3 {
+        return vec![];
+    }
+    let (lo, hi) = vert.iter().fold((i32::MAX, i32::MIN), |(l, h), p| (l.min(p.1), h.max(p.1)));
+    let mut out = Vec::new();
+    let mut xs = Vec::new();
+    for y in lo..=hi {
+        let yc = f64::from(y) + 0.5;
+        xs.clear();
+        for i in 0..n {
+            let (a, b) = (vert[i], vert[(i + 1) % n]);
+            let (ya, yb) = (f64::from(a.1), f64::from(b.1));
+            if (ya <= yc) != (yb <= yc) {
+                xs.push(f64::from(a.0) + (yc - ya) / (yb - ya) * f64::from(b.0 - a.0));
+            }
+        }
+        xs.sort_by(f64::total_cmp);
+        for pair in xs.chunks_exact(2) {
+            let (x0, x1) = ((pair[0] - 0.5).ceil() as i32, (pair[1] - 0.5).floor() as i32);
+            if x0 <= x1 {
+                out.push((y, x0, x1));
+            }
+        }
+    }
+    out
+}
+
 /// A `BitMapBackend` that draws text with the built-in bitmap font (see the module doc).
 pub(crate) struct Raster<'a> {
     inner: BitMapBackend<'a>,
 }
 
 type Error<'a> = DrawingErrorKind<<BitMapBackend<'a> as DrawingBackend>::ErrorType>;
+
+impl<'a> Raster<'a> {
+    /// Draws a polyline segment by segment with round joins: plotters joins the segments of a
+    /// wide polyline with mitres, which shoot far out where the line turns back on itself (the
+    /// L-shaped block's zigzag along its edges).
+    fn wide_path<S: BackendStyle>(&mut self, path: &[BackendCoord], style: &S) -> Result<(), Error<'a>> {
+        let w = style.stroke_width();
+        if w <= 1 {
+            return self.inner.draw_path(path.iter().copied(), style);
+        }
+        for seg in path.windows(2) {
+            self.inner.draw_path(seg.iter().copied(), style)?;
+        }
+        if style.color().alpha >= 1.0 {
+            for p in path.iter().skip(1).take(path.len().saturating_sub(2)) {
+                self.inner.draw_circle(*p, w / 2, &style.color(), true)?;
+            }
+        }
+        Ok(())
+    }
+}
 
 impl<'a> DrawingBackend for Raster<'a> {
     type ErrorType = <BitMapBackend<'a> as DrawingBackend>::ErrorType;
@@ -135,7 +254,20 @@ impl<'a> DrawingBackend for Raster<'a> {
         path: I,
         style: &S,
     ) -> Result<(), Error<'a>> {
-        self.inner.draw_path(path, style)
+        let c = style.color();
+        let path: Vec<_> = path.into_iter().collect();
+        if c.alpha != DASH_OPACITY {
+            return self.wide_path(&path, style);
+        }
+        let solid = ShapeStyle {
+            color: RGBAColor(c.rgb.0, c.rgb.1, c.rgb.2, 1.0),
+            filled: false,
+            stroke_width: style.stroke_width(),
+        };
+        for dash in dashes(&path, f64::from(style.stroke_width() + PNG_SCALE)) {
+            self.wide_path(&dash, &solid)?;
+        }
+        Ok(())
     }
 
     fn draw_circle<S: BackendStyle>(
@@ -153,7 +285,16 @@ impl<'a> DrawingBackend for Raster<'a> {
         vert: I,
         style: &S,
     ) -> Result<(), Error<'a>> {
-        self.inner.fill_polygon(vert, style)
+        // plotters' own polygon fill draws stray spans for polygons seen almost edge on (the
+        // L-shaped block's faces in a 3-D view); this is a plain even-odd scanline fill.
+        let c = style.color();
+        let vert: Vec<BackendCoord> = vert.into_iter().collect();
+        for (y, x0, x1) in spans(&vert) {
+            for x in x0..=x1 {
+                self.inner.draw_pixel((x, y), c)?;
+            }
+        }
+        Ok(())
     }
 
     fn blit_bitmap(&mut self, pos: BackendCoord, size: (u32, u32), src: &[u8]) -> Result<(), Error<'a>> {
@@ -240,6 +381,21 @@ pub(crate) fn text_pixels(text: &str, size: f64) -> Vec<(i32, i32)> {
 #[cfg(test)]
 mod tests {
     use super::{Format, text_box, text_pixels};
+
+    #[test]
+    fn polygons_fill_their_inside_only() {
+        // A 4 x 2 rectangle: pixel centres (x + 0.5, y + 0.5) inside for x in 0..4, y in 0..2.
+        let rect = super::spans(&[(0, 0), (4, 0), (4, 2), (0, 2)]);
+        assert_eq!(rect, vec![(0, 0, 3), (1, 0, 3)]);
+        // A sliver seen edge on (all corners within half a pixel of one row) fills at most
+        // that row, never a long stray span.
+        let sliver = super::spans(&[(0, 10), (300, 10), (300, 11), (150, 10), (0, 11)]);
+        assert!(sliver.iter().all(|(y, x0, x1)| *y == 10 && *x0 >= 0 && *x1 < 300), "{sliver:?}");
+        // A triangle: the row through y = 4.5 of (0, 0), (10, 0), (0, 10) covers x + 0.5 <= 5.5.
+        let tri = super::spans(&[(0, 0), (10, 0), (0, 10)]);
+        assert!(tri.contains(&(4, 0, 5)), "{tri:?}");
+        assert!(super::spans(&[(0, 0), (1, 1)]).is_empty());
+    }
 
     #[test]
     fn the_format_follows_the_flag_then_the_extension() {

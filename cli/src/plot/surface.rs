@@ -2,14 +2,15 @@
 //! the kinematic surface of Jüttler's Fig. 5b ([`crate::figures`]). Every curve is one SVG
 //! `<polyline>` in the SVG: the curves of one family in one colour, those of the other in another.
 
-use super::draw::range;
+use super::axes3d::{self, Bounds};
 use super::raster::{Format, Picture, encode};
+use super::style::{Px, fitted};
 use crate::error::CliError;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
 /// The colours of the two families: `v` fixed (blue), `t` fixed (grey).
-const FAMILIES: [RGBColor; 2] = [RGBColor(31, 119, 180), RGBColor(120, 120, 120)];
+const FAMILIES: [RGBColor; 2] = [super::style::PALETTE[0], RGBColor(120, 120, 120)];
 
 fn draw_error<E: std::fmt::Display>(e: E) -> CliError {
     CliError::math(format!("cannot draw the surface: {e}"))
@@ -29,18 +30,16 @@ impl Picture for Wireframe<'_> {
         (800, 640)
     }
 
-    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), CliError> {
-        let all: Vec<&[f64; 3]> = self.families.iter().flat_map(|f| f.iter().flatten()).collect();
-        let (x, y, z) =
-            (range(all.iter().map(|p| p[0])), range(all.iter().map(|p| p[1])), range(all.iter().map(|p| p[2])));
-        let root = root.titled(self.title, ("sans-serif", 20)).map_err(draw_error)?;
-        let mut chart =
-            ChartBuilder::on(&root).margin(15).build_cartesian_3d(x.0..x.1, z.0..z.1, y.0..y.1).map_err(draw_error)?;
-        chart.configure_axes().draw().map_err(draw_error)?;
+    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>, px: Px) -> Result<(), CliError> {
+        let bounds = Bounds::of(self.families.iter().flat_map(|f| f.iter().flatten()));
+        let size = fitted(self.title, 20.0, f64::from(self.size().0) - 24.0);
+        let root = root.titled(self.title, ("sans-serif", px.font(size))).map_err(draw_error)?;
+        let mut chart = axes3d::chart(&root, &bounds, px)?;
+        axes3d::draw_axes(&mut chart, &root, &bounds, px)?;
         for (family, colour) in self.families.iter().zip(FAMILIES) {
-            let width = if colour == FAMILIES[0] { 2 } else { 1 };
+            let width = if colour == FAMILIES[0] { 2.0 } else { 1.0 };
             for curve in family.iter() {
-                let line = LineSeries::new(curve.iter().map(|p| (p[0], p[2], p[1])), colour.stroke_width(width));
+                let line = LineSeries::new(curve.iter().map(axes3d::to), colour.stroke_width(px.u(width)));
                 chart.draw_series(line).map_err(draw_error)?;
             }
         }
