@@ -150,6 +150,10 @@ enum Command {
         /// Also print the data of the figure as one JSON object {"title", "series": [...]}.
         #[arg(long)]
         json: bool,
+        /// Animate the body along its path with a cursor on the speed panel: an animated SVG,
+        /// or an HTML page with play/pause and a slider when --out ends in .html.
+        #[arg(long)]
+        animate: bool,
         /// `gam interpolate` specs (with "method") or `gam hermite` specs (with an optional
         /// "body_point": [x, y, z]).
         #[arg(value_name = "SPEC.json", required = true)]
@@ -237,8 +241,8 @@ fn run(command: Command) -> Result<(String, Option<CliError>), CliError> {
         Command::Trajectory { json, spec, point } => trajectory::trajectory(&spec, &point, json),
         Command::Pose { json, pose } => pose::pose(&pose, json),
         Command::Sample { samples, json, spec } => sample::sample(&spec, samples, json),
-        Command::Plot { out, format, samples, view, frames, body, json, specs } => {
-            plot::plot(&plot::PlotArgs { specs: &specs, out: &out, format, samples, view, frames, body, json })
+        Command::Plot { out, format, samples, view, frames, body, json, animate, specs } => {
+            plot::plot(&plot::PlotArgs { specs: &specs, out: &out, format, samples, view, frames, body, json, animate })
         }
         Command::Figures { out, format, json } => figures::figures(&out, format, json),
         Command::Prove { algebra, basis, assume, timeout, max_basis, max_terms, json, claim } => {

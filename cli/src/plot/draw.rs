@@ -23,6 +23,7 @@ use super::data::{Mark, Series, moved};
 use super::legend::{self, Entry, Swatch};
 use super::raster::{Format, Picture, encode};
 use super::style::{ANGULAR, AXIS_COLOURS, JOIN, Px, colour, dashed, fitted};
+use super::svg::{SharedLayers, in_layer};
 use crate::error::CliError;
 use crate::scalar::format_f64;
 use plotters::coord::Shift;
@@ -237,10 +238,10 @@ fn point_label(all: &[Series], s: &Series, j: usize, what: &str) -> String {
     if all.len() == 1 { format!("{what} of [{p}]") } else { format!("{}: {what} of [{p}]", s.label) }
 }
 
-/// The legend of a figure of `all` with the body drawn as `body`: with several specs, one
-/// entry per spec of one body point (its hue, solid and dashed), otherwise one per body point
-/// and one for the angular speed.
-fn entries(all: &[Series], body: Body) -> Vec<Entry> {
+/// The legend of a figure of `all` with the body drawn as `body` (`animated`: the body moves):
+/// with several specs, one entry per spec of one body point (its hue, solid and dashed),
+/// otherwise one per body point and one for the angular speed.
+fn entries(all: &[Series], body: Body, animated: bool) -> Vec<Entry> {
     let mut out = Vec::new();
     for (si, s) in all.iter().enumerate() {
         if all.len() > 1 && s.body_points.len() == 1 {
@@ -261,7 +262,10 @@ fn entries(all: &[Series], body: Body) -> Vec<Entry> {
     if all.iter().any(|s| !s.joins.is_empty()) {
         out.push(Entry { text: "joins".into(), colour: JOIN, swatch: Swatch::Solid });
     }
-    if body == Body::Frames && all.iter().any(|s| !s.frames.is_empty()) {
+    if animated {
+        out.push(Entry { text: "the moving body's parameter t".into(), colour: CURSOR, swatch: Swatch::Solid });
+    }
+    if body == Body::Frames && (animated || all.iter().any(|s| !s.frames.is_empty())) {
         for (k, c) in AXIS_COLOURS.iter().enumerate() {
             out.push(Entry { text: format!("body frame e{}", k + 1), colour: *c, swatch: Swatch::Solid });
         }
@@ -318,8 +322,13 @@ fn style_mesh<DB: DrawingBackend, X: plotters::coord::ranged1d::Ranged, Y: plott
         .y_labels(8);
 }
 
-/// The speed panel.
-fn speeds<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, all: &[Series], px: Px) -> Result<(), CliError> {
+/// The speed panel (with the animation's cursor in its layers).
+fn speeds<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    all: &[Series],
+    anim: Option<&Animation>,
+    px: Px,
+) -> Result<(), CliError> {
     let (t_lo, t_hi) = range(all.iter().flat_map(|s| s.t.iter().copied()));
     let top = |values: &mut dyn Iterator<Item = f64>| range(values.chain(std::iter::once(0.0))).1;
     let linear = top(&mut all.iter().flat_map(|s| s.speeds.iter().flatten().copied()));
@@ -364,7 +373,31 @@ fn speeds<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, all: &[Series], px:
         let style = dashed(angular_colour(all, si), px.u(1.5));
         chart.draw_secondary_series(LineSeries::new(pts, style)).map_err(draw_error)?;
     }
+    if let Some(a) = anim {
+        for k in 0..a.frames {
+            let cursor = |s: &Series| {
+                let t = s.frames[k].t;
+                PathElement::new(vec![(t, 0.0), (t, lin_hi)], CURSOR.stroke_width(px.u(1.5)))
+            };
+            let drawn = in_layer(Some(&a.layers), k, || chart.draw_series(a.series.iter().map(cursor)).map(|_| ()));
+            drawn.map_err(draw_error)?;
+        }
+    }
     Ok(())
+}
+
+/// The colour of the animation's cursor on the speed panel.
+const CURSOR: RGBColor = RGBColor(0, 0, 0);
+
+/// An animated figure ([`super::animate`]): the body and the speed cursor at `frames`
+/// parameters, each drawn into its own layer.
+pub(crate) struct Animation<'a> {
+    /// Per spec, the series whose `frames` are the animation's frames.
+    pub series: &'a [Series],
+    /// The number of frames.
+    pub frames: usize,
+    /// The layers the frames are drawn into.
+    pub layers: SharedLayers,
 }
 
 /// Draws the paths, key points, frames and extras of `all` on a chart, `to` mapping a world
@@ -372,7 +405,7 @@ fn speeds<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, all: &[Series], px:
 fn draw_paths<DB: DrawingBackend, CT: CoordTranslate>(
     chart: &mut ChartContext<DB, CT>,
     all: &[Series],
-    body: Body,
+    (body, anim): (Body, Option<&Animation>),
     px: Px,
     to: impl Fn(&[f64; 3]) -> CT::From + Copy,
 ) -> Result<(), CliError>
@@ -395,6 +428,29 @@ where
         }
         draw_extras(chart, s, body, px, to)?;
     }
+    let Some(a) = anim else { return Ok(()) };
+    for k in 0..a.frames {
+        in_layer(Some(&a.layers), k, || -> Result<(), CliError> {
+            for (si, s) in a.series.iter().enumerate() {
+                let f = &s.frames[k];
+                let faces = body_faces(f, body)
+                    .into_iter()
+                    .map(|ps| Polygon::new(ps.iter().map(to).collect::<Vec<_>>(), SHADE.mix(0.6).filled()));
+                chart.draw_series(faces).map_err(draw_error)?;
+                let lines = body_lines(f, body, l)
+                    .into_iter()
+                    .map(|(ps, c)| PathElement::new(ps.iter().map(to).collect::<Vec<_>>(), c.stroke_width(px.u(2.0))));
+                chart.draw_series(lines).map_err(draw_error)?;
+                let dots = s
+                    .body_points
+                    .iter()
+                    .enumerate()
+                    .map(|(j, x)| Circle::new(to(&moved(f, *x)), px.u(5.0), colour_of(all, si, j).filled()));
+                chart.draw_series(dots).map_err(draw_error)?;
+            }
+            Ok(())
+        })?;
+    }
     Ok(())
 }
 
@@ -402,7 +458,7 @@ where
 fn paths_2d<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     all: &[Series],
-    body: Body,
+    (body, anim): (Body, Option<&Animation>),
     (a, b): (usize, usize),
     px: Px,
 ) -> Result<(), CliError> {
@@ -423,14 +479,14 @@ fn paths_2d<DB: DrawingBackend>(
     let mut mesh = chart.configure_mesh();
     style_mesh(&mut mesh, px);
     mesh.x_desc(names[a]).y_desc(names[b]).draw().map_err(draw_error)?;
-    draw_paths(&mut chart, all, body, px, |p| (p[a], p[b]))
+    draw_paths(&mut chart, all, (body, anim), px, |p| (p[a], p[b]))
 }
 
 /// The path panel as a 3-D view (z up), with equal scales on the three axes.
 fn paths_3d<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     all: &[Series],
-    body: Body,
+    (body, anim): (Body, Option<&Animation>),
     px: Px,
 ) -> Result<(), CliError> {
     let shown = shown_points(all, body);
@@ -438,7 +494,7 @@ fn paths_3d<DB: DrawingBackend>(
     let bounds = Bounds::of(shown.iter());
     let mut chart = axes3d::chart(&area, &bounds, px)?;
     axes3d::draw_axes(&mut chart, &area, &bounds, px)?;
-    draw_paths(&mut chart, all, body, px, axes3d::to)
+    draw_paths(&mut chart, all, (body, anim), px, axes3d::to)
 }
 
 /// The height of the two panels and the title, in pixels.
@@ -458,11 +514,14 @@ pub(crate) struct Figure<'a> {
     pub body: Body,
     /// The title.
     pub title: &'a str,
+    /// The animation, if the figure is animated (SVG only).
+    pub animation: Option<Animation<'a>>,
 }
 
 impl Picture for Figure<'_> {
     fn size(&self) -> (u32, u32) {
-        (WIDTH, PANELS + legend::height(&entries(self.all, self.body), f64::from(WIDTH)))
+        let entries = entries(self.all, self.body, self.animation.is_some());
+        (WIDTH, PANELS + legend::height(&entries, f64::from(WIDTH)))
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>, px: Px) -> Result<(), CliError> {
@@ -471,18 +530,19 @@ impl Picture for Figure<'_> {
         let top = top.titled(self.title, ("sans-serif", px.font(size))).map_err(draw_error)?;
         let top = top.margin(px.i(6.0), 0, 0, 0);
         let (left, right) = top.split_horizontally(px.i(f64::from(WIDTH) / 2.0));
-        speeds(&left, self.all, px)?;
+        let anim = self.animation.as_ref();
+        speeds(&left, self.all, anim, px)?;
         match self.view.axes() {
-            Some(ab) => paths_2d(&right, self.all, self.body, ab, px)?,
-            None => paths_3d(&right, self.all, self.body, px)?,
+            Some(ab) => paths_2d(&right, self.all, (self.body, anim), ab, px)?,
+            None => paths_3d(&right, self.all, (self.body, anim), px)?,
         }
-        legend::draw(&band, &entries(self.all, self.body), px)
+        legend::draw(&band, &entries(self.all, self.body, anim.is_some()), px)
     }
 }
 
 /// The file bytes of the figure of `all` (see [`Figure`]) in `format`.
 pub(crate) fn render(all: &[Series], view: View, body: Body, title: &str, format: Format) -> Result<Vec<u8>, CliError> {
-    encode(&Figure { all, view, body, title }, format)
+    encode(&Figure { all, view, body, title, animation: None }, format)
 }
 
 #[cfg(test)]

@@ -1,6 +1,7 @@
-//! `gam plot SPEC.json... --out FILE.svg|FILE.png [--format svg|png] [--samples N]
-//! [--view xy|xz|yz|3d] [--frames K] [--body frames|cube|l-block] [--json]`: an SVG (or a
-//! PNG, [`raster`]) of one or more specs, like the paper's
+//! `gam plot SPEC.json... --out FILE.svg|FILE.png|FILE.html [--format svg|png] [--samples N]
+//! [--view xy|xz|yz|3d] [--frames K] [--body frames|cube|l-block] [--animate] [--json]`: an
+//! SVG (or a PNG, [`raster`]; or, with `--animate`, an animated SVG or HTML page, [`animate`])
+//! of one or more specs, like the paper's
 //! Figs. 3-5, with two panels: the linear speed of every body point and the angular speed
 //! against `t` with the joins marked, and the paths of the body points (projected on a
 //! coordinate plane, or in a 3-D view) with the key points and, with `--frames K`, the moved
@@ -15,6 +16,7 @@
 //! `--json`), then drawn ([`draw::render`]) into a string, then written to FILE (so an
 //! unwritable path is one `error:` line, exit 2, and nothing is left half written).
 
+pub(crate) mod animate;
 pub(crate) mod axes3d;
 pub(crate) mod control;
 pub(crate) mod data;
@@ -82,6 +84,9 @@ pub struct PlotArgs<'a> {
     pub body: Body,
     /// Print the data of the figure as JSON instead of the one-line report.
     pub json: bool,
+    /// Write an animation ([`animate`]): an animated SVG, or an HTML page for an `out` ending
+    /// in `.html`.
+    pub animate: bool,
 }
 
 /// Runs `gam plot`: writes the SVG or PNG to `out` and reports what was written (or prints the data).
@@ -96,10 +101,20 @@ pub fn plot(a: &PlotArgs) -> Result<String, CliError> {
         let max = crate::sample::MAX_SAMPLES;
         return Err(CliError::usage(format!("`--samples` must be an integer from 2 to {max} (got {})", a.samples)));
     }
+    let format = Format::of(a.format, a.out);
+    if a.animate && format == Format::Png {
+        return Err(CliError::usage("`--animate` writes an SVG or an HTML page (FILE.svg or FILE.html), not a PNG"));
+    }
     let all = a.specs.iter().map(|p| data::series(p, a.samples, a.frames)).collect::<Result<Vec<_>, _>>()?;
     let title = figure_title(&all);
     let out = a.out;
-    let bytes = draw::render(&all, a.view, a.body, &title, Format::of(a.format, out))?;
+    let bytes = if a.animate {
+        let n = animate::FRAMES;
+        let frames = a.specs.iter().map(|p| data::series(p, n, n)).collect::<Result<Vec<_>, _>>()?;
+        animate::render((&all, a.view, a.body, &title), &frames, animate::Kind::of(out))?
+    } else {
+        draw::render(&all, a.view, a.body, &title, format)?
+    };
     std::fs::write(out, bytes).map_err(|e| CliError::usage(format!("cannot write `{out}`: {e}")))?;
     if a.json {
         return serde_json::to_string(&serde_json::json!({"title": title, "series": all}))

@@ -62,7 +62,7 @@ fn draw_error<E: std::fmt::Display>(e: E) -> CliError {
 }
 
 /// Draws `picture` on a white background, fills and presents it.
-fn paint<DB: DrawingBackend>(picture: &impl Picture, backend: DB, px: Px) -> Result<(), CliError> {
+pub(crate) fn paint<DB: DrawingBackend>(picture: &impl Picture, backend: DB, px: Px) -> Result<(), CliError> {
     let root = backend.into_drawing_area();
     root.fill(&WHITE).map_err(draw_error)?;
     picture.draw(&root, px)?;
@@ -76,7 +76,7 @@ pub(crate) fn encode(picture: &impl Picture, format: Format) -> Result<Vec<u8>, 
     match format {
         Format::Svg => {
             let mut svg = String::new();
-            paint(picture, Svg::new(&mut svg, (w, h)), Px(SVG_SCALE))?;
+            paint(picture, Svg::new(&mut svg, (w, h), None), Px(SVG_SCALE))?;
             Ok(svg.into_bytes())
         }
         Format::Png => {

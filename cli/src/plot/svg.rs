@@ -14,25 +14,74 @@ use plotters_backend::text_anchor::{HPos, VPos};
 use plotters_backend::{
     BackendColor, BackendCoord, BackendStyle, BackendTextStyle, DrawingBackend, DrawingErrorKind, FontTransform,
 };
+use std::cell::RefCell;
 use std::fmt::Write as _;
+use std::rc::Rc;
+
+/// The layers of an animated picture: while `current` is `Some(k)`, what is drawn goes into
+/// `frames[k]` instead of the picture ([`super::animate`]).
+#[derive(Debug, Default)]
+pub(crate) struct Layers {
+    /// The layer being drawn, if any.
+    pub current: Option<usize>,
+    /// The elements of each layer.
+    pub frames: Vec<String>,
+}
+
+/// The layers shared by the drawing code (which switches them) and the backend (which writes
+/// into them).
+pub(crate) type SharedLayers = Rc<RefCell<Layers>>;
+
+/// Draws into layer `k` of `layers` (if any) while `draw` runs.
+pub(crate) fn in_layer<T>(layers: Option<&SharedLayers>, k: usize, draw: impl FnOnce() -> T) -> T {
+    if let Some(l) = layers {
+        let mut l = l.borrow_mut();
+        if l.frames.len() <= k {
+            l.frames.resize(k + 1, String::new());
+        }
+        l.current = Some(k);
+    }
+    let out = draw();
+    if let Some(l) = layers {
+        l.borrow_mut().current = None;
+    }
+    out
+}
 
 /// An SVG document being drawn (see the module doc).
 pub(crate) struct Svg<'a> {
     out: &'a mut String,
     /// The picture's size in pixels.
     size: (u32, u32),
+    /// The animation layers, if the picture has any.
+    layers: Option<SharedLayers>,
 }
 
 impl<'a> Svg<'a> {
-    /// Starts a picture of `size` pixels written into `out`.
-    pub fn new(out: &'a mut String, size: (u32, u32)) -> Self {
+    /// Starts a picture of `size` pixels written into `out`, drawing into `layers` while one
+    /// is switched on.
+    pub fn new(out: &'a mut String, size: (u32, u32), layers: Option<SharedLayers>) -> Self {
         let _ = writeln!(
             out,
             r#"<svg width="{w}" height="{h}" viewBox="0 0 {w} {h}" xmlns="http://www.w3.org/2000/svg">"#,
             w = size.0,
             h = size.1
         );
-        Svg { out, size }
+        Svg { out, size, layers }
+    }
+
+    /// Writes one element line into the current layer or the picture.
+    fn emit(&mut self, line: String) {
+        if let Some(layers) = &self.layers {
+            let mut l = layers.borrow_mut();
+            if let Some(k) = l.current {
+                l.frames[k].push_str(&line);
+                l.frames[k].push('\n');
+                return;
+            }
+        }
+        self.out.push_str(&line);
+        self.out.push('\n');
     }
 }
 
@@ -94,7 +143,7 @@ impl DrawingBackend for Svg<'_> {
         if c.alpha > 0.0 {
             let one = n(1.0);
             let (x, y, f, o) = (n(p.0.into()), n(p.1.into()), colour(c), opacity(c));
-            let _ = writeln!(self.out, r#"<rect x="{x}" y="{y}" width="{one}" height="{one}" fill="{f}"{o}/>"#);
+            self.emit(format!(r#"<rect x="{x}" y="{y}" width="{one}" height="{one}" fill="{f}"{o}/>"#));
         }
         Ok(())
     }
@@ -121,7 +170,7 @@ impl DrawingBackend for Svg<'_> {
             format!(r#"fill="none" stroke="{}" stroke-width="{}""#, colour(c), n(style.stroke_width().into()))
         };
         let o = opacity(c);
-        let _ = writeln!(self.out, r#"<rect x="{x}" y="{y}" width="{w}" height="{h}" {paint}{o}/>"#);
+        self.emit(format!(r#"<rect x="{x}" y="{y}" width="{w}" height="{h}" {paint}{o}/>"#));
         Ok(())
     }
 
@@ -142,10 +191,9 @@ impl DrawingBackend for Svg<'_> {
             String::new()
         };
         let (p, s, o, w) = (points(path), colour(c), opacity(c), n(w));
-        let _ = writeln!(
-            self.out,
+        self.emit(format!(
             r#"<polyline fill="none" stroke="{s}" stroke-width="{w}"{dash}{o} stroke-linejoin="round" points="{p}"/>"#
-        );
+        ));
         Ok(())
     }
 
@@ -160,7 +208,7 @@ impl DrawingBackend for Svg<'_> {
             format!(r#"fill="none" stroke="{}""#, colour(c))
         };
         let (x, y, r, o) = (n(c0.0.into()), n(c0.1.into()), n(r.into()), opacity(c));
-        let _ = writeln!(self.out, r#"<circle cx="{x}" cy="{y}" r="{r}" {paint}{o}/>"#);
+        self.emit(format!(r#"<circle cx="{x}" cy="{y}" r="{r}" {paint}{o}/>"#));
         Ok(())
     }
 
@@ -172,7 +220,7 @@ impl DrawingBackend for Svg<'_> {
         let c = style.color();
         if c.alpha > 0.0 {
             let (p, f, o) = (points(vert), colour(c), opacity(c));
-            let _ = writeln!(self.out, r#"<polygon points="{p}" fill="{f}"{o}/>"#);
+            self.emit(format!(r#"<polygon points="{p}" fill="{f}"{o}/>"#));
         }
         Ok(())
     }
@@ -201,10 +249,8 @@ impl DrawingBackend for Svg<'_> {
         };
         let (size, f, o, t) = (n(style.size() / 1.24), colour(c), opacity(c), escape(text));
         let family = escape(style.family().as_str());
-        let _ = writeln!(
-            self.out,
-            r#"<text x="{x}" y="{y}" dy="{dy}" text-anchor="{anchor}" font-family="{family}" font-size="{size}" fill="{f}"{o}{rotate}>{t}</text>"#
-        );
+        self.emit(format!(r#"<text x="{x}" y="{y}" dy="{dy}" text-anchor="{anchor}" font-family="{family}" font-size="{size}" fill="{f}"{o}{rotate}>{t}</text>"#
+        ));
         Ok(())
     }
 
