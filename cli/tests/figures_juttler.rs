@@ -268,3 +268,25 @@ fn the_spline_of_fig_6_has_continuous_speeds_at_its_joins() {
         }
     }
 }
+
+#[test]
+fn fig_4_stays_near_its_key_positions() {
+    // Its own key positions (Figs. 1-3's make the TRT system (34) nearly singular): both
+    // trajectories stay within 0.1 of the key points' bounding box, at speeds below 50.
+    let figs = figures("fig4");
+    let s = &figs["juttler_fig4.svg"]["series"][0];
+    assert_eq!(s["degree"], 7, "max(l1, l2) + k = 3 + 4 (Result 5)");
+    let keyp: Vec<[f64; 3]> = s["key_points"].as_array().unwrap().iter().flat_map(|k| points(k)).collect();
+    let lo: [f64; 3] = std::array::from_fn(|i| keyp.iter().map(|p| p[i]).fold(f64::INFINITY, f64::min));
+    let hi: [f64; 3] = std::array::from_fn(|i| keyp.iter().map(|p| p[i]).fold(f64::NEG_INFINITY, f64::max));
+    for path in s["paths"].as_array().unwrap() {
+        for p in points(path) {
+            for i in 0..3 {
+                assert!(p[i] > lo[i] - 0.1 && p[i] < hi[i] + 0.1, "{p:?} leaves the box {lo:?} {hi:?}");
+            }
+        }
+    }
+    for v in s["speeds"].as_array().unwrap().iter().flat_map(|v| nums(v)) {
+        assert!(v < 50.0, "speed {v}");
+    }
+}

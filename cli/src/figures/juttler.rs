@@ -4,7 +4,7 @@
 //! `(0, 0, 1)`, in a 3-D view (z up). The cubes' three pairs of opposite faces are marked by
 //! squares, triangles and crosses as in the paper ([`face_marks`]), and Fig. 5a also draws the
 //! parabola moved with the body ([`parabola_marks`]). The paper does not print its positions; the ones here
-//! ([`FIVE`], [`THREE`], [`SIX`]) are chosen to show what each figure shows (docs/figures.md).
+//! ([`FIVE`], [`FOUR`], [`THREE`], [`SIX`]) are chosen to show what each figure shows (docs/figures.md).
 //!
 //! - Fig. 1: elliptic rotations (23)-(25) composed with the TR translation (Algorithm 1),
 //!   equidistant parameters (`Method::JuttlerQMotion`).
@@ -45,6 +45,18 @@ pub(crate) const FIVE: [Key; 5] = [
     ([1.0, 0.0, 0.0], 1.2, [6.0, 0.0, 1.0]),
     ([0.0, 1.0, 1.0], 1.6, [8.0, 2.0, 0.0]),
     ([1.0, 1.0, 0.0], 2.0, [12.0, 0.0, 0.0]),
+];
+
+/// The five positions of Fig. 4. With [`FIVE`] the TRT system (34) is nearly singular: the
+/// motion swings out to `y = 34` at speeds up to 1167 (per unit `t`) between key poses 12
+/// apart. These (found by a search over random positions marching along x, then rounded)
+/// give a motion that stays within 0.03 of the key poses' bounding box, speeds up to 21.
+pub(crate) const FOUR: [Key; 5] = [
+    ([0.0, 0.0, 1.0], 0.0, [0.0, 0.0, 0.0]),
+    ([-0.4, -0.6, 0.6], 1.0, [2.6, -0.9, 0.0]),
+    ([-1.0, 0.7, -0.6], 0.6, [5.9, 0.5, 0.1]),
+    ([0.3, 0.3, -0.1], 0.4, [9.5, 1.1, -0.4]),
+    ([-0.1, 0.5, 1.0], 0.4, [11.5, 0.4, 0.1]),
 ];
 
 /// The three positions of Fig. 5.
@@ -236,7 +248,7 @@ pub(crate) fn all(format: Format) -> Result<Vec<Drawn>, CliError> {
         (
             "juttler_fig4.svg",
             "Juttler Fig. 4: TRT method (l1 = 3, l2 = 0), dt ~ dist + angle",
-            built("TRT", Method::JuttlerTrt, &FIVE, Parameters::Rule(Parametrisation::AngleDistance), Some(3), pts())?,
+            built("TRT", Method::JuttlerTrt, &FOUR, Parameters::Rule(Parametrisation::AngleDistance), Some(3), pts())?,
         ),
         (
             "juttler_fig5a.svg",
@@ -259,6 +271,7 @@ pub(crate) fn all(format: Format) -> Result<Vec<Drawn>, CliError> {
         let keys: &[Key] = match file {
             "juttler_fig5a.svg" => &THREE,
             "juttler_fig6.svg" => &SIX,
+            "juttler_fig4.svg" => &FOUR,
             _ => &FIVE,
         };
         out.push((file, title.to_string(), svg, json!({"title": title, "keys": keys, "series": [s]})));
