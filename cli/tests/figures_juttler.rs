@@ -276,7 +276,7 @@ fn fig_4_stays_near_its_key_positions() {
     let figs = figures("fig4");
     let s = &figs["juttler_fig4.svg"]["series"][0];
     assert_eq!(s["degree"], 7, "max(l1, l2) + k = 3 + 4 (Result 5)");
-    let keyp: Vec<[f64; 3]> = s["key_points"].as_array().unwrap().iter().flat_map(|k| points(k)).collect();
+    let keyp: Vec<[f64; 3]> = s["key_points"].as_array().unwrap().iter().flat_map(points).collect();
     let lo: [f64; 3] = std::array::from_fn(|i| keyp.iter().map(|p| p[i]).fold(f64::INFINITY, f64::min));
     let hi: [f64; 3] = std::array::from_fn(|i| keyp.iter().map(|p| p[i]).fold(f64::NEG_INFINITY, f64::max));
     for path in s["paths"].as_array().unwrap() {
@@ -286,7 +286,7 @@ fn fig_4_stays_near_its_key_positions() {
             }
         }
     }
-    for v in s["speeds"].as_array().unwrap().iter().flat_map(|v| nums(v)) {
+    for v in s["speeds"].as_array().unwrap().iter().flat_map(nums) {
         assert!(v < 50.0, "speed {v}");
     }
 }
