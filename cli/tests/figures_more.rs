@@ -35,6 +35,10 @@ fn nums(v: &Value) -> Vec<f64> {
     v.as_array().expect("a list").iter().map(|x| x.as_f64().expect("a number")).collect()
 }
 
+fn point(v: &Value) -> [f64; 3] {
+    serde_json::from_value(v.clone()).expect("[x, y, z]")
+}
+
 fn path(s: &Value) -> Vec<[f64; 3]> {
     s["paths"][0].as_array().expect("a path").iter().map(|p| nums(p).try_into().expect("3 coordinates")).collect()
 }
@@ -224,6 +228,27 @@ fn wl_fig_7_is_the_helix_of_t_par_and_psi() {
         assert!((v - 53f64.sqrt()).abs() < 1e-9 && (w - psi).abs() < 1e-9, "{v} {w}");
     }
     assert!(nums(&s["joins"]).is_empty());
+    // The vectors drawn: -t⊥ = -e3 from the origin, then the paper's t'∥ at λ = 1 (Sec. 4.1)
+    // by hand: c = cos(9π/2) = 0, s = sin(9π/2) = 1, so t'∥ = -(2/ψ)(a tᵇ - b tᵃ) =
+    // (2/(9π)) (-6, 4, 0). It ends where the library's path ends: the paper's formula and
+    // the library's exp(λB) agree on the end of the helix.
+    let marks = s["marks"].as_array().expect("marks");
+    let arrow = |label: &str| {
+        let m = marks.iter().find(|m| m["label"] == label).unwrap_or_else(|| panic!("no {label}"));
+        assert_eq!(m["kind"], "arrow");
+        (point(&m["points"][0]), point(&m["points"][1]))
+    };
+    let (o, down) = arrow("-t_perp");
+    assert_eq!((o, down), ([0.0; 3], [0.0, 0.0, -1.0]));
+    let (from, to) = arrow("t'_par");
+    let k = 2.0 / (9.0 * PI);
+    assert_eq!(from, down);
+    let want = [-6.0 * k, 4.0 * k, -1.0];
+    for i in 0..3 {
+        assert!((to[i] - want[i]).abs() < 1e-15, "t'_par ends at {to:?}, want {want:?}");
+        assert!((end[i] - want[i]).abs() < 1e-12, "the path ends at {end:?}, t'_par at {want:?}");
+    }
+    assert_eq!(arrow("t_par / 8"), ([0.0; 3], [0.5, 0.75, 0.0]));
 }
 
 #[test]

@@ -112,11 +112,16 @@ fn expected_series(data: &Value) -> usize {
 }
 
 /// The polylines of a figure's `marks` (`gam figures` only): one per mark, but a dashed arc
-/// (the main paper's Fig. 8) is one per dash of 3 of its points.
+/// (the main paper's Fig. 8) is one per dash of 3 of its points and an arrow two.
 fn mark_lines(data: &Value) -> usize {
     let marks =
         data["series"].as_array().expect("series").iter().flat_map(|s| s["marks"].as_array().into_iter().flatten());
-    marks.map(|m| if m["kind"] == "arc" { (m["points"].as_array().expect("points").len() - 1) / 3 } else { 1 }).sum()
+    let lines = |m: &Value| match m["kind"].as_str() {
+        Some("arc") => (m["points"].as_array().expect("points").len() - 1) / 3,
+        Some("arrow") => 2, // the shaft and the head
+        _ => 1,
+    };
+    marks.map(lines).sum()
 }
 
 #[test]

@@ -82,7 +82,10 @@ pub(crate) fn control_arcs(kind: SpecKind) -> Result<Vec<Mark>, CliError> {
     let lambdas = evenly(1.0, 4.0, ARC_POINTS);
     let s1 = lambdas.iter().map(|l| at(*l, 1.0, 1)).collect::<Result<_, _>>()?;
     let s2 = lambdas.iter().map(|l| at(1.0, *l, 2)).collect::<Result<_, _>>()?;
-    Ok(vec![Mark { t: 0.0, kind: "arc", points: s1 }, Mark { t: 1.0, kind: "arc", points: s2 }])
+    Ok(vec![
+        Mark { t: 0.0, kind: "arc", points: s1, label: None },
+        Mark { t: 1.0, kind: "arc", points: s2, label: None },
+    ])
 }
 
 /// Figs. 8 and 9: the Sec. 5.2 segment of `kind` for every `(λ0, λ3)` of [`SHAPES`], the

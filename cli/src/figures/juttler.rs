@@ -125,7 +125,7 @@ pub(crate) fn face_marks(f: &Frame) -> Vec<Mark> {
                 _ => CROSS.iter().map(|c| ("cross", &c[..])).collect(),
             };
             for (kind, pts) in shapes {
-                out.push(Mark { t: f.t, kind, points: pts.iter().copied().map(on).collect() });
+                out.push(Mark { t: f.t, kind, points: pts.iter().copied().map(on).collect(), label: None });
             }
         }
     }
@@ -161,7 +161,7 @@ fn parabola_marks(s: &Series) -> Result<Vec<Mark>, CliError> {
         evenly(0.0, 1.0, 33).iter().map(|v| x.point(v).map_err(bad("Fig. 5a"))).collect::<Result<_, _>>()?;
     Ok(s.frames
         .iter()
-        .map(|f| Mark { t: f.t, kind: "curve", points: points.iter().map(|p| moved(f, *p)).collect() })
+        .map(|f| Mark { t: f.t, kind: "curve", points: points.iter().map(|p| moved(f, *p)).collect(), label: None })
         .collect())
 }
 

@@ -3,7 +3,7 @@
 //! | file | paper | motion |
 //! |---|---|---|
 //! | `wl_fig5.svg` | Fig. 5 | a) piecewise-linear ([`WlLinear`], Sec. 3.1) and b) quadratic ([`WlQuadratic`], Sec. 3.2) interpolation of the three poses [`FIG5_POSES`] at `t = 0, 1, 2` |
-//! | `wl_fig7.svg` | Fig. 7 | the screw path `R_λ = exp(λB)`, `0 ≤ λ ≤ 1`, of `B` with `ψ = 9π`, `t∥ = 4a + 6b`, `|t⊥| = 1` ([`fig7_generator`]) |
+//! | `wl_fig7.svg` | Fig. 7 | the screw path `R_λ = exp(λB)`, `0 ≤ λ ≤ 1`, of `B` with `ψ = 9π`, `t∥ = 4a + 6b`, `|t⊥| = 1` ([`fig7_generator`]), with the vectors `t⊥`, `t'∥` ([`fig7_t_par_prime`]) and `t∥` |
 //!
 //! The paper does not print its three "representative poses"; [`FIG5_POSES`] are ours.
 //! `exp(λB)` turns by `λψ`, more than π, so it is not the linear interpolation of its end poses
@@ -13,7 +13,7 @@
 
 use super::{Figure, SAMPLES};
 use crate::error::CliError;
-use crate::plot::data::{Series, Shape, of_motion};
+use crate::plot::data::{Mark, Series, Shape, of_motion};
 use crate::plot::draw::View;
 use motion::Pose;
 use motion::wareham_lasenby::{Generator, GeneratorParts, WlLinear, WlQuadratic, to_pose};
@@ -26,10 +26,10 @@ pub(crate) const FIG5_POSES: [([f64; 3], [f64; 3], f64); 3] = [
     ([8.0, 0.0, 1.0], [1.0, 1.0, 1.0], 1.2),
 ];
 
-/// The parts of Fig. 7's generator: `ψ = 9π` about `e3` (the plane of `P` is `e1 e2`, so
-/// `a = e1`, `b = e2`), `t∥ = 4 e1 + 6 e2`, `t⊥ = e3`.
+/// The parts of Fig. 7's generator: `ψ = 9π` in the plane `P = a b` with `a = e1`, `b = e2`
+/// (the library's `P = -axis e123` is `e1 e2` for the axis `-e3`), `t∥ = 4a + 6b`, `t⊥ = e3`.
 pub(crate) fn fig7_parts() -> GeneratorParts<f64> {
-    GeneratorParts { psi: 9.0 * PI, axis: [0.0, 0.0, 1.0], t_par: [4.0, 6.0, 0.0], t_perp: [0.0, 0.0, 1.0] }
+    GeneratorParts { psi: 9.0 * PI, axis: [0.0, 0.0, -1.0], t_par: [4.0, 6.0, 0.0], t_perp: [0.0, 0.0, 1.0] }
 }
 
 /// Fig. 7's generator `B = (ψ/2) P + (t∥ + t⊥) n/2`.
@@ -61,6 +61,39 @@ fn series<M: motion::MapScalar<f64, motion::algebra_core::Jet<motion::algebra_co
     of_motion(shape, motion, vec![[0.0; 3]], SAMPLES, frames)
 }
 
+/// The in-plane translation `t'∥` of `exp(λB)` at `λ = 1` by the paper's formula (Sec. 4.1):
+/// `t'∥ = -(2s/ψ) [a (tᵃ c + tᵇ s) + b (tᵇ c - tᵃ s)]`, `c, s = cos, sin(ψ/2)`, with `a = e1`,
+/// `b = e2` (the plane of Fig. 7's `P`).
+pub(crate) fn fig7_t_par_prime() -> [f64; 3] {
+    let p = fig7_parts();
+    let (c, s) = ((p.psi / 2.0).cos(), (p.psi / 2.0).sin());
+    let (ta, tb) = (p.t_par[0], p.t_par[1]);
+    let k = -2.0 * s / p.psi;
+    [k * (ta * c + tb * s), k * (tb * c - ta * s), 0.0]
+}
+
+/// Fig. 7's vectors: `-t⊥` from the origin (`exp(B)` translates by `-t⊥`: the paper's prose
+/// says `+t⊥`, docs/verification.md), then `t'∥` from its tip (so it ends where the path ends:
+/// "translate along -t⊥, rotate by ψ, translate along t'∥"), and `t∥` from the origin, drawn at
+/// an eighth of its length (it is 14 times as long as `t'∥`).
+fn fig7_arrows() -> Vec<Mark> {
+    let p = fig7_parts();
+    let tp = fig7_t_par_prime();
+    let down = p.t_perp.map(|x| -x);
+    let end: [f64; 3] = std::array::from_fn(|i| down[i] + tp[i]);
+    let arrow = |from: [f64; 3], to: [f64; 3], label: &str| Mark {
+        t: 1.0,
+        kind: "arrow",
+        points: vec![from, to],
+        label: Some(label.to_string()),
+    };
+    vec![
+        arrow([0.0; 3], down, "-t_perp"),
+        arrow(down, end, "t'_par"),
+        arrow([0.0; 3], p.t_par.map(|x| x / 8.0), "t_par / 8"),
+    ]
+}
+
 /// W-L Figs. 5 and 7.
 pub(super) fn figures() -> Result<Vec<Figure>, CliError> {
     let poses = FIG5_POSES
@@ -79,7 +112,8 @@ pub(super) fn figures() -> Result<Vec<Figure>, CliError> {
     let keys = keys.collect::<Result<Vec<_>, _>>().map_err(math)?;
     let lambdas: Vec<f64> = (0..=10).map(|k| f64::from(k) / 10.0).collect();
     let screw = WlLinear::new(&keys, &lambdas).map_err(math)?;
-    let fig7 = vec![series("exp(lambda B)", &screw, lambdas, (11, false))?];
+    let mut fig7 = vec![series("exp(lambda B)", &screw, lambdas, (11, false))?];
+    fig7[0].marks = fig7_arrows();
     Ok(vec![
         (
             "wl_fig5.svg",

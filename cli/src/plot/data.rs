@@ -41,10 +41,14 @@ pub(crate) struct Mark {
     /// the one next to the start, `t1` for the one next to the end).
     pub t: f64,
     /// What it is: `square`, `triangle`, `cross` (face markings; squares and triangles
-    /// filled), `curve` (a moved body curve), `arc` (a control pose's path, drawn dashed).
+    /// filled), `curve` (a moved body curve), `arc` (a control pose's path, drawn dashed),
+    /// `arrow` (a vector from `points[0]` to `points[1]`, with a head and its `label`).
     pub kind: &'static str,
     /// The polyline.
     pub points: Vec<[f64; 3]>,
+    /// The text written at an arrow's tip.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub label: Option<String>,
 }
 
 /// Everything drawn for one spec.

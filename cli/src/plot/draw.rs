@@ -95,8 +95,30 @@ fn mark_shapes(m: &Mark) -> (Option<Vec<[f64; 3]>>, Vec<(Vec<[f64; 3]>, RGBColor
             (None, dashes.collect())
         }
         "curve" => (None, vec![(m.points.clone(), MARK, 2.0)]),
+        "arrow" => (None, vec![(m.points.clone(), MARK, 2.0), (arrow_head(&m.points), MARK, 2.0)]),
         _ => (None, vec![(m.points.clone(), MARK, 1.0)]),
     }
+}
+
+/// The head of the arrow `[tail, tip]`: a polyline through the tip, its sides 15% of the
+/// arrow long, in the plane of the arrow and `e3` (or `e1` for an arrow along `e3`).
+fn arrow_head(points: &[[f64; 3]]) -> Vec<[f64; 3]> {
+    let (Some(a), Some(b)) = (points.first(), points.last()) else { return vec![] };
+    let d: [f64; 3] = std::array::from_fn(|i| b[i] - a[i]);
+    let len = d.iter().map(|x| x * x).sum::<f64>().sqrt();
+    if len == 0.0 {
+        return vec![];
+    }
+    let cross =
+        |u: [f64; 3], v: [f64; 3]| [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]];
+    let mut side = cross(d, [0.0, 0.0, 1.0]);
+    if side.iter().map(|x| x * x).sum::<f64>() < 1e-12 * len * len {
+        side = cross(d, [1.0, 0.0, 0.0]);
+    }
+    let s = side.iter().map(|x| x * x).sum::<f64>().sqrt();
+    let h = 0.15 * len;
+    let at = |sign: f64| std::array::from_fn(|i| b[i] - h * d[i] / len + sign * 0.5 * h * side[i] / s);
+    vec![at(1.0), *b, at(-1.0)]
 }
 
 /// Draws the shaded faces of `body` at the frames of `s` and the marks of `s` on a chart,
@@ -122,6 +144,11 @@ where
             .into_iter()
             .map(|(ps, c, w)| PathElement::new(ps.iter().map(&to).collect::<Vec<_>>(), c.stroke_width(px.u(w))));
         chart.draw_series(lines).map_err(draw_error)?;
+        if let (Some(label), Some(tip)) = (&m.label, m.points.last()) {
+            let font = ("sans-serif", px.font(13.0)).into_font().color(&MARK);
+            let text = EmptyElement::at(to(tip)) + Text::new(label.clone(), (px.i(6.0), px.i(-16.0)), font);
+            chart.draw_series(std::iter::once(text)).map_err(draw_error)?;
+        }
     }
     Ok(())
 }
