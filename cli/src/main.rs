@@ -144,7 +144,7 @@ enum Command {
         /// Draw the moved body's coordinate frames at K evenly spaced parameters.
         #[arg(long, value_name = "K", default_value_t = 0)]
         frames: usize,
-        /// How the body is drawn at the frames: its coordinate frame, the unit cube or the L-shaped block.
+        /// How the body is drawn at the frames: its coordinate frame, the unit cube, the L-shaped block or the cuboid.
         #[arg(long, value_name = "BODY", value_enum, default_value = "frames")]
         body: plot::Body,
         /// Also print the data of the figure as one JSON object {"title", "series": [...]}.

@@ -277,7 +277,15 @@ fn figures() -> Vec<(String, Value)> {
             continue; // drawn with cubes; checked by figures_juttler.rs
         }
         let svg = std::fs::read_to_string(dir.join(file)).expect("the figure was written");
-        assert_eq!(check_svg(&svg), expected_series(fig) + mark_lines(fig), "{file}");
+        // A body drawn as a cube or the cuboid has 12 lines per frame, not 3.
+        let frames: usize =
+            fig["series"].as_array().unwrap().iter().map(|s| s["frames"].as_array().unwrap().len()).sum();
+        let extra = if fig["body"] == "cuboid" || fig["body"] == "cube" { 9 * frames } else { 0 };
+        assert_eq!(check_svg(&svg), expected_series(fig) + mark_lines(fig) + extra, "{file}");
+        if fig["body"] == "cuboid" {
+            // its top face filled: one light grey polygon per frame
+            assert_eq!(svg.matches(r##"fill="#BEBEBE" opacity="0.6""##).count(), frames, "{file}");
+        }
         let committed = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../docs/figures").join(file);
         let committed = std::fs::read_to_string(&committed).expect("the gallery has the figure");
         assert!(committed == svg, "docs/figures/{file} is stale: run `gam figures --out docs/figures`");
@@ -304,6 +312,15 @@ fn paper_figures_3_to_5() {
     // printed V_i translate by 2 (2 + 1.0472 3t): |v| = 6.2832 exactly, |Ω| = 0.
     let f3 = &figure(&all, "fig3.svg")[0];
     assert_eq!(nums(&f3["joins"]), [1.0]);
+    // "The poses of a cuboidal block during the motion are shown": 9 of them, the body point
+    // (the block's centre) on the path at t = 0, 0.25, ..., 2.
+    let frames = f3["frames"].as_array().unwrap();
+    assert_eq!(frames.len(), 9);
+    for (k, f) in frames.iter().enumerate() {
+        let i = 50 * k; // samples every 0.005
+        assert!((num(&f["t"]) - 0.25 * k as f64).abs() < 1e-12);
+        assert!(dist(&point(&f["origin"]), &point(&f3["paths"][0][i])) < 1e-9, "frame {k}");
+    }
     let (v, w) = (nums(&f3["speeds"][0]), nums(&f3["angular_speed"]));
     assert!((v[199] - 5.6569).abs() < 0.03 && (w[199] - 1.4142).abs() < 0.01, "{} {}", v[199], w[199]);
     for i in 201..v.len() {

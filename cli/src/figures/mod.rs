@@ -25,7 +25,7 @@ pub(crate) const SAMPLES: usize = 401;
 
 /// The Sec. 4 motion over `[0, 2]` with the line's `V_1` replaced by `V_0 [1 + (Ψ + γ)/6]`
 /// (`γ = g + w ω`) when `gamma` is given, as a series labelled `label`.
-fn sec4(label: &str, gamma: Option<[f64; 2]>) -> Result<Series, CliError> {
+fn sec4(label: &str, gamma: Option<[f64; 2]>, frames: usize) -> Result<Series, CliError> {
     let mut line = sec_4::printed_line();
     if let Some([g, w]) = gamma {
         let psi = sec_4::PRINTED_PSI_END_OF_ARC;
@@ -45,7 +45,7 @@ fn sec4(label: &str, gamma: Option<[f64; 2]>) -> Result<Series, CliError> {
         key_times: vec![0.0, 1.0, 2.0],
         joins: vec![1.0],
     };
-    of_motion(shape, &motion, vec![[0.0; 3]], SAMPLES, 0)
+    of_motion(shape, &motion, vec![[0.0; 3]], SAMPLES, frames)
 }
 
 /// One figure: file name, title, view, series.
@@ -53,14 +53,14 @@ pub(crate) type Figure = (&'static str, String, View, Vec<Series>);
 
 /// The figures.
 fn all() -> Result<Vec<Figure>, CliError> {
-    let fig3 = vec![sec4("quadrant then line", None)?];
+    let fig3 = vec![sec4("quadrant then line", None, 9)?];
     let fig4 = [0.0, 5.0, -5.0, 10.0, -10.0]
         .iter()
-        .map(|g| sec4(&format!("gamma = {g}"), Some([*g, 0.0])))
+        .map(|g| sec4(&format!("gamma = {g}"), Some([*g, 0.0]), 0))
         .collect::<Result<Vec<_>, _>>()?;
     let fig5 = [0.0, 20.0, -20.0, 40.0, -40.0]
         .iter()
-        .map(|w| sec4(&format!("gamma = {w} omega"), Some([0.0, *w])))
+        .map(|w| sec4(&format!("gamma = {w} omega"), Some([0.0, *w]), 0))
         .collect::<Result<Vec<_>, _>>()?;
     Ok([
         (
@@ -78,9 +78,14 @@ fn all() -> Result<Vec<Figure>, CliError> {
     .collect())
 }
 
-/// How the body is drawn in figure `file`: the L-shaped block in the main paper's Figs. 6-10.
+/// How the body is drawn in figure `file`: the cuboid in the main paper's Fig. 3, the
+/// L-shaped block in its Figs. 6-10.
 fn body_of(file: &str) -> Body {
-    if cross2022::L_BLOCK_FILES.contains(&file) { Body::LBlock } else { Body::Frames }
+    match file {
+        "fig3.svg" => Body::Cuboid,
+        _ if cross2022::L_BLOCK_FILES.contains(&file) => Body::LBlock,
+        _ => Body::Frames,
+    }
 }
 
 /// `file` (named `NAME.svg`) with the extension of `format`.
@@ -102,10 +107,12 @@ pub fn figures(dir: &str, format: Format, json: bool) -> Result<String, CliError
     let mut lines = Vec::new();
     let mut data = serde_json::Map::new();
     for (file, title, view, series) in all()? {
-        let bytes = render(&series, view, body_of(file), &title, format)?;
+        let body = body_of(file);
+        let bytes = render(&series, view, body, &title, format)?;
         let file = named(file, format);
         lines.push(write(dir, &file, &title, bytes)?);
-        data.insert(file, json!({"title": title, "series": series}));
+        let body = serde_json::to_value(body).map_err(|e| CliError::math(format!("cannot print the body: {e}")))?;
+        data.insert(file, json!({"title": title, "body": body, "series": series}));
     }
     for (file, title, bytes, value) in juttler::all(format)? {
         let file = named(file, format);

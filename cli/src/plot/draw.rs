@@ -29,8 +29,10 @@ use crate::scalar::format_f64;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-/// How the moved body is drawn at the frame parameters.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+/// How the moved body is drawn at the frame parameters (`gam figures --json` prints it as
+/// `body`, named as `--body` names it).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
 pub enum Body {
     /// Its coordinate frame: `e1` red, `e2` green, `e3` blue, a tenth of the paths' extent.
     Frames,
@@ -39,6 +41,22 @@ pub enum Body {
     /// The L-shaped block of the main paper's Figs. 6-10, in grey: an L of legs 2 (along `e2`)
     /// and 1 (along `e3`), 0.5 wide, 0.5 deep (along `e1`), its corner at the body origin.
     LBlock,
+    /// The cuboidal block of the main paper's Fig. 3, in grey: [`CUBOID`] long along `e1, e2,
+    /// e3`, centred on the body origin (the paper's body point is the block's centre), its
+    /// top face (`+e3`) filled.
+    Cuboid,
+}
+
+/// The cuboid's edge lengths along `e1, e2, e3` (the paper prints none; its Fig. 3 shows a
+/// block longer than wide, flat).
+pub(crate) const CUBOID: [f64; 3] = [1.2, 0.6, 0.3];
+
+/// The cuboid moved by frame `f`: corner `i + 2j + 4k` at `(±, ±, ±)` half lengths, the
+/// minus sign for a zero bit.
+pub(crate) fn cuboid(f: &super::data::Frame) -> [[f64; 3]; 8] {
+    std::array::from_fn(|c| {
+        moved(f, std::array::from_fn(|k| if c >> k & 1 == 1 { CUBOID[k] } else { -CUBOID[k] } / 2.0))
+    })
 }
 
 /// The L-shaped block's profile in the body's `e2 e3` plane (counter-clockwise, the corner of
@@ -69,6 +87,10 @@ fn body_faces(f: &super::data::Frame, body: Body) -> Vec<Vec<[f64; 3]>> {
         Body::LBlock => {
             let b = l_block(f);
             vec![b[..6].to_vec(), b[6..].to_vec()]
+        }
+        Body::Cuboid => {
+            let b = cuboid(f);
+            vec![vec![b[4], b[5], b[7], b[6]]]
         }
         Body::Frames | Body::Cube => vec![],
     }
@@ -166,6 +188,10 @@ fn body_lines(f: &super::data::Frame, body: Body, l: f64) -> Vec<(Vec<[f64; 3]>,
     match body {
         Body::Frames => (0..3).map(|k| (vec![f.origin, tip(f, k, l)], AXIS_COLOURS[k])).collect(),
         Body::Cube => EDGES.iter().map(|(a, b)| (vec![f.cube[*a], f.cube[*b]], CUBE)).collect(),
+        Body::Cuboid => {
+            let c = cuboid(f);
+            EDGES.iter().map(|(a, b)| (vec![c[*a], c[*b]], CUBE)).collect()
+        }
         Body::LBlock => {
             let b = l_block(f);
             let outline = |o: usize| (0..=6).map(|c| b[o + c % 6]).collect();
@@ -180,8 +206,9 @@ fn shown_points(all: &[Series], body: Body) -> Vec<[f64; 3]> {
     let paths = all.iter().flat_map(|s| s.paths.iter().flatten().copied());
     let cubes = all.iter().flat_map(|s| s.frames.iter().flat_map(|f| f.cube)).filter(|_| body == Body::Cube);
     let blocks = all.iter().flat_map(|s| s.frames.iter().flat_map(l_block)).filter(|_| body == Body::LBlock);
+    let cuboids = all.iter().flat_map(|s| s.frames.iter().flat_map(cuboid)).filter(|_| body == Body::Cuboid);
     let marks = all.iter().flat_map(|s| s.marks.iter().flat_map(|m| m.points.iter().copied()));
-    paths.chain(cubes).chain(blocks).chain(marks).collect()
+    paths.chain(cubes).chain(blocks).chain(cuboids).chain(marks).collect()
 }
 
 /// The path panel's view: a projection on a coordinate plane or a 3-D view.

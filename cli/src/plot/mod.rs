@@ -1,5 +1,5 @@
 //! `gam plot SPEC.json... --out FILE.svg|FILE.png|FILE.html [--format svg|png] [--samples N]
-//! [--view xy|xz|yz|3d] [--frames K] [--body frames|cube|l-block] [--animate] [--json]`: an
+//! [--view xy|xz|yz|3d] [--frames K] [--body frames|cube|l-block|cuboid] [--animate] [--json]`: an
 //! SVG (or a PNG, [`raster`]; or, with `--animate`, an animated SVG or HTML page, [`animate`])
 //! of one or more specs, like the paper's
 //! Figs. 3-5, with two panels: the linear speed of every body point and the angular speed
