@@ -351,6 +351,26 @@ fn paper_figures_3_to_5() {
     }
     let (plus, minus) = (path(&f5[1]), path(&f5[2]));
     assert!(plus.iter().zip(&minus).all(|(a, b)| (a[2] + b[2]).abs() < 1e-12), "±20ω mirror each other");
+    // Its companion: the same speeds as increases over γ = 0 in per cent (recomputed here
+    // from Fig. 5's data); the mirrored motions have equal speeds; at most about 2.9% for
+    // ±20ω and 11% for ±40ω, just after the join; the angular speeds do not change.
+    let inc = figure(&all, "fig5_increase.svg");
+    assert_eq!(inc.len(), 5);
+    for (s, c) in f5.iter().zip(&inc) {
+        let (v, v0, got) = (nums(&s["speeds"][0]), nums(&f5[0]["speeds"][0]), nums(&c["speeds"][0]));
+        for i in 0..v.len() {
+            assert!((got[i] - 100.0 * (v[i] - v0[i]) / v0[i]).abs() < 1e-9, "{} at {i}", s["label"]);
+        }
+        assert!(nums(&c["angular_speed"]).iter().all(|w| *w == 0.0));
+    }
+    let peak = |s: &Value| nums(&s["speeds"][0]).into_iter().fold(f64::MIN, f64::max);
+    assert_eq!(peak(&inc[1]), peak(&inc[2]));
+    assert!(
+        (2.5..3.2).contains(&peak(&inc[1])) && (10.5..11.5).contains(&peak(&inc[3])),
+        "{} {}",
+        peak(&inc[1]),
+        peak(&inc[3])
+    );
 }
 
 #[test]

@@ -11,7 +11,7 @@ mod juttler;
 
 use crate::error::CliError;
 use crate::plot::data::{Series, Shape, of_motion};
-use crate::plot::draw::{Body, View, render};
+use crate::plot::draw::{Body, View, render, render_relative};
 use crate::plot::raster::Format;
 use motion::paper::sec_4;
 use motion::{AdditiveBezier, Piecewise, Pose};
@@ -78,6 +78,41 @@ fn all() -> Result<Vec<Figure>, CliError> {
     .collect())
 }
 
+/// The companion of Fig. 5: its speeds as increases over `γ = 0`.
+const FIG5_INCREASE: &str = "fig5_increase.svg";
+
+/// `100 (a - b) / b`, and 0 where both are 0.
+fn percent(a: f64, b: f64) -> f64 {
+    if a == b { 0.0 } else { 100.0 * (a - b) / b }
+}
+
+/// The companion of a figure whose first series is labelled `gamma = 0 omega` (Fig. 5): every
+/// series with its linear and angular speeds as increases in per cent over the first one's
+/// (same samples), its title and the base's label. The ±γ motions mirror each other, so their
+/// speeds coincide and are drawn over each other, and the increase is a few per cent: at the
+/// scale of the speeds the paper's "this increases the linear speed" is hard to see.
+fn companion_of(series: &[Series]) -> Result<Option<(Vec<Series>, String, String)>, CliError> {
+    let Some(base) = series.first().filter(|s| s.label == "gamma = 0 omega") else { return Ok(None) };
+    let mut out = Vec::new();
+    for s in series {
+        let mut c = s.clone();
+        c.speeds = s
+            .speeds
+            .iter()
+            .zip(&base.speeds)
+            .map(|(v, v0)| v.iter().zip(v0).map(|(a, b)| percent(*a, *b)).collect())
+            .collect();
+        c.angular_speed = s.angular_speed.iter().zip(&base.angular_speed).map(|(a, b)| percent(*a, *b)).collect();
+        if c.speeds.iter().flatten().chain(&c.angular_speed).any(|x| !x.is_finite()) {
+            return Err(CliError::math(format!("{}: a speed increase over a zero speed", s.label)));
+        }
+        c.frames.clear();
+        out.push(c);
+    }
+    let title = "Fig. 5 (companion): the speeds of Fig. 5 as increases over gamma = 0, in per cent".to_string();
+    Ok(Some((out, title, base.label.clone())))
+}
+
 /// How the body is drawn in figure `file`: the cuboid in the main paper's Fig. 3, the
 /// L-shaped block in its Figs. 6-10.
 fn body_of(file: &str) -> Body {
@@ -113,6 +148,12 @@ pub fn figures(dir: &str, format: Format, json: bool) -> Result<String, CliError
         lines.push(write(dir, &file, &title, bytes)?);
         let body = serde_json::to_value(body).map_err(|e| CliError::math(format!("cannot print the body: {e}")))?;
         data.insert(file, json!({"title": title, "body": body, "series": series}));
+        if let Some((companion, title, base)) = companion_of(&series)? {
+            let bytes = render_relative(&companion, (view, Body::Frames), (&title, &base), format)?;
+            let file = named(FIG5_INCREASE, format);
+            lines.push(write(dir, &file, &title, bytes)?);
+            data.insert(file, json!({"title": title, "relative_to": base, "series": companion}));
+        }
     }
     for (file, title, bytes, value) in juttler::all(format)? {
         let file = named(file, format);

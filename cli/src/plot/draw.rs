@@ -380,25 +380,36 @@ fn style_mesh<DB: DrawingBackend, X: plotters::coord::ranged1d::Ranged, Y: plott
 fn speeds<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     all: &[Series],
-    anim: Option<&Animation>,
+    (anim, relative): (Option<&Animation>, Option<&str>),
     px: Px,
 ) -> Result<(), CliError> {
     let (t_lo, t_hi) = range(all.iter().flat_map(|s| s.t.iter().copied()));
-    let top = |values: &mut dyn Iterator<Item = f64>| range(values.chain(std::iter::once(0.0))).1;
-    let linear = top(&mut all.iter().flat_map(|s| s.speeds.iter().flatten().copied()));
-    let angular = top(&mut all.iter().flat_map(|s| s.angular_speed.iter().copied()));
-    let ratio = linear / angular;
-    let split = ratio.is_finite() && !(0.1..=10.0).contains(&ratio);
-    let (lin_hi, ang_hi) = if split { (linear, angular) } else { (linear.max(angular), linear.max(angular)) };
-    let area = captioned(area, "linear speed (solid) and angular speed (dashed)", px)?;
+    let bounds = |values: &mut dyn Iterator<Item = f64>| range(values.chain(std::iter::once(0.0)));
+    let linear = bounds(&mut all.iter().flat_map(|s| s.speeds.iter().flatten().copied()));
+    let angular = bounds(&mut all.iter().flat_map(|s| s.angular_speed.iter().copied()));
+    // Speeds are never negative (their ranges start at 0); differences in per cent may be.
+    let lo = if relative.is_some() { linear.0.min(angular.0).min(0.0) } else { 0.0 };
+    let ratio = linear.1 / angular.1;
+    let split = relative.is_none() && ratio.is_finite() && !(0.1..=10.0).contains(&ratio);
+    let both = linear.1.max(angular.1);
+    let (lin_hi, ang_hi) = if split { (linear.1, angular.1) } else { (both, both) };
+    let caption = match relative {
+        Some(base) => format!("increase over {base} in per cent: linear (solid), angular (dashed)"),
+        None => "linear speed (solid) and angular speed (dashed)".to_string(),
+    };
+    let area = captioned(area, &caption, px)?;
     let mut builder = ChartBuilder::on(&area);
     builder.margin(px.u(MARGIN)).x_label_area_size(px.u(X_LABELS)).y_label_area_size(px.u(Y_LABELS));
     if split {
         builder.right_y_label_area_size(px.u(Y_LABELS));
     }
-    let chart = builder.build_cartesian_2d(t_lo..t_hi, 0.0..lin_hi).map_err(draw_error)?;
-    let mut chart = chart.set_secondary_coord(t_lo..t_hi, 0.0..ang_hi);
-    let y_desc = if split { "linear speed |v| per unit t" } else { "speed per unit t" };
+    let chart = builder.build_cartesian_2d(t_lo..t_hi, lo..lin_hi).map_err(draw_error)?;
+    let mut chart = chart.set_secondary_coord(t_lo..t_hi, lo..ang_hi);
+    let y_desc = match (relative, split) {
+        (Some(_), _) => "per cent of the speed",
+        (None, true) => "linear speed |v| per unit t",
+        (None, false) => "speed per unit t",
+    };
     let mut mesh = chart.configure_mesh();
     style_mesh(&mut mesh, px);
     mesh.x_desc("t").y_desc(y_desc).draw().map_err(draw_error)?;
@@ -415,7 +426,7 @@ fn speeds<DB: DrawingBackend>(
     }
     for (si, s) in all.iter().enumerate() {
         let joins =
-            s.joins.iter().map(|t| PathElement::new(vec![(*t, 0.0), (*t, lin_hi)], JOIN.stroke_width(px.u(1.0))));
+            s.joins.iter().map(|t| PathElement::new(vec![(*t, lo), (*t, lin_hi)], JOIN.stroke_width(px.u(1.0))));
         chart.draw_series(joins).map_err(draw_error)?;
         for (j, v) in s.speeds.iter().enumerate() {
             let pts = s.t.iter().copied().zip(v.iter().copied());
@@ -431,7 +442,7 @@ fn speeds<DB: DrawingBackend>(
         for k in 0..a.frames {
             let cursor = |s: &Series| {
                 let t = s.frames[k].t;
-                PathElement::new(vec![(t, 0.0), (t, lin_hi)], CURSOR.stroke_width(px.u(1.5)))
+                PathElement::new(vec![(t, lo), (t, lin_hi)], CURSOR.stroke_width(px.u(1.5)))
             };
             let drawn = in_layer(Some(&a.layers), k, || chart.draw_series(a.series.iter().map(cursor)).map(|_| ()));
             drawn.map_err(draw_error)?;
@@ -570,6 +581,9 @@ pub(crate) struct Figure<'a> {
     pub title: &'a str,
     /// The animation, if the figure is animated (SVG only).
     pub animation: Option<Animation<'a>>,
+    /// The speeds are increases in per cent over the series labelled so (a companion figure),
+    /// not speeds.
+    pub relative: Option<&'a str>,
 }
 
 impl Picture for Figure<'_> {
@@ -585,7 +599,7 @@ impl Picture for Figure<'_> {
         let top = top.margin(px.i(6.0), 0, 0, 0);
         let (left, right) = top.split_horizontally(px.i(f64::from(WIDTH) / 2.0));
         let anim = self.animation.as_ref();
-        speeds(&left, self.all, anim, px)?;
+        speeds(&left, self.all, (anim, self.relative), px)?;
         match self.view.axes() {
             Some(ab) => paths_2d(&right, self.all, (self.body, anim), ab, px)?,
             None => paths_3d(&right, self.all, (self.body, anim), px)?,
@@ -596,7 +610,18 @@ impl Picture for Figure<'_> {
 
 /// The file bytes of the figure of `all` (see [`Figure`]) in `format`.
 pub(crate) fn render(all: &[Series], view: View, body: Body, title: &str, format: Format) -> Result<Vec<u8>, CliError> {
-    encode(&Figure { all, view, body, title, animation: None }, format)
+    encode(&Figure { all, view, body, title, animation: None, relative: None }, format)
+}
+
+/// The file bytes of the figure of `all` whose speeds are increases in per cent over the
+/// series labelled `base` (see [`Figure::relative`]) in `format`.
+pub(crate) fn render_relative(
+    all: &[Series],
+    (view, body): (View, Body),
+    (title, base): (&str, &str),
+    format: Format,
+) -> Result<Vec<u8>, CliError> {
+    encode(&Figure { all, view, body, title, animation: None, relative: Some(base) }, format)
 }
 
 #[cfg(test)]
