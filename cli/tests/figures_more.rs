@@ -271,3 +271,44 @@ fn gam_plot_draws_the_l_block() {
         .collect();
     assert_eq!(grey, [7, 7, 12].repeat(4));
 }
+
+#[test]
+fn fig_10s_companion_measures_the_error_against_the_paper_s_path() {
+    // The reference point's path of Jaklič et al. as the paper prints it (Sec. 5.3):
+    // c(t) = (3 log(t+1) cos t, 3 log(t+1) sin t, 3 (t+1)).
+    let c = |t: f64| [3.0 * (t + 1.0).ln() * t.cos(), 3.0 * (t + 1.0).ln() * t.sin(), 3.0 * (t + 1.0)];
+    let (hermite, errors) = (series("fig10.svg"), series("fig10_error.svg"));
+    assert_eq!(run().0["fig10_error.svg"]["error_against"], "the motion of Jaklic et al.");
+    assert_eq!(errors.len(), 4, "three shape factors and the exact motion");
+    for (h, e) in hermite.iter().zip(&errors) {
+        assert_eq!(h["label"], e["label"]);
+        let (t, p, d, w) = (nums(&h["t"]), path(h), nums(&e["speeds"][0]), nums(&e["angular_speed"]));
+        for i in 0..t.len() {
+            let want = norm(&sub(&p[i], &c(t[i])));
+            assert!((d[i] - want).abs() < 1e-9, "{} t = {}: {} vs {want}", h["label"], t[i], d[i]);
+            // the Hermite motion interpolates the precision poses at t = 1, ..., 9
+            if (t[i] - t[i].round()).abs() < 1e-12 {
+                assert!(
+                    d[i] < 1e-9 && w[i] < 1e-7,
+                    "{} at the precision pose t = {}: {} {}",
+                    h["label"],
+                    t[i],
+                    d[i],
+                    w[i]
+                );
+            }
+        }
+        let (dmax, wmax) = (d.iter().fold(0.0, |a: f64, b| a.max(*b)), w.iter().fold(0.0, |a: f64, b| a.max(*b)));
+        assert!(dmax > 0.01 && wmax > 1e-3, "{}: an interpolant, not the motion itself", h["label"]);
+    }
+    // λ = 1 follows the exact motion most closely: its largest position error is ten times
+    // smaller than with λ = 0.5 or 1.5.
+    let dmax = |s: &Value| nums(&s["speeds"][0]).into_iter().fold(0.0, f64::max);
+    assert!(10.0 * dmax(&errors[0]) < dmax(&errors[1]).min(dmax(&errors[2])));
+    // The exact motion's path is c(t), its error zero.
+    let exact = &errors[3];
+    for (ti, q) in nums(&exact["t"]).iter().zip(path(exact)) {
+        assert!(norm(&sub(&q, &c(*ti))) < 1e-12);
+    }
+    assert!(nums(&exact["speeds"][0]).iter().chain(&nums(&exact["angular_speed"])).all(|x| *x == 0.0));
+}

@@ -167,7 +167,7 @@ fn every_figure_reads_cleanly() {
         read(path, &svg, !path.ends_with("juttler_fig5b.svg"));
         count += 1;
     }
-    assert_eq!(count, 18);
+    assert_eq!(count, 19);
     let _ = std::fs::remove_dir_all(&dir);
 }
 

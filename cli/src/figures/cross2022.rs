@@ -50,6 +50,51 @@ fn segment(label: String, spec: &HermiteSpec, frames: usize) -> Result<Series, C
 /// The Jaklič motion through the nine precision poses (`t = 1..9`), additive, common shape
 /// factor `lambda`, with a block at each precision pose when `blocks`.
 fn jaklic_motion(lambda: f64, blocks: bool) -> Result<Series, CliError> {
+    jaklic_frames(lambda, if blocks { 9 } else { 0 })
+}
+
+/// What the companion of Fig. 10 measures its motions against.
+pub(crate) const EXACT: &str = "the motion of Jaklic et al.";
+
+/// The companion of Fig. 10 (not in the paper): for each common shape factor, the distance
+/// of the body point (the reference point) from the exact path `c(t)` and the rotation angle
+/// between the Hermite motion's orientation and the exact `q(t)`, at every sample; and the
+/// exact motion itself (zero error), so the path panel compares the paths.
+pub(crate) fn fig10_error() -> Result<(Vec<Series>, String), CliError> {
+    let mut out = Vec::new();
+    for lambda in COMMON {
+        let mut s = jaklic_frames(lambda, SAMPLES)?;
+        let (mut dist, mut angle) = (Vec::with_capacity(SAMPLES), Vec::with_capacity(SAMPLES));
+        for f in &s.frames {
+            let exact = jaklic::pose(&f.t).map_err(math("the exact Jaklic motion"))?;
+            let at = |p: [f64; 3]| exact.transform_point(&p).map_err(math("the exact Jaklic motion"));
+            let o = at([0.0; 3])?;
+            dist.push((0..3).map(|i| (f.origin[i] - o[i]).powi(2)).sum::<f64>().sqrt());
+            // |R_h - R_e|_F = 2√2 sin(θ/2) for the rotation angle θ between them
+            let mut frob = 0.0;
+            for (k, e) in [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]].into_iter().enumerate() {
+                let ek = at(e)?;
+                frob += (0..3).map(|i| ((f.axes[k][i] - f.origin[i]) - (ek[i] - o[i])).powi(2)).sum::<f64>();
+            }
+            angle.push(2.0 * (frob.sqrt() / (2.0 * std::f64::consts::SQRT_2)).min(1.0).asin());
+        }
+        (s.speeds, s.angular_speed) = (vec![dist], angle);
+        s.frames.clear();
+        out.push(s);
+    }
+    let mut exact = out[0].clone();
+    exact.label = EXACT.to_string();
+    exact.method = "exact".into();
+    exact.paths = vec![exact.t.iter().map(|t| jaklic::path(t)).collect()];
+    exact.speeds = vec![vec![0.0; exact.t.len()]];
+    exact.angular_speed = vec![0.0; exact.t.len()];
+    out.push(exact);
+    let title = "Fig. 10 (companion): the Hermite motions against the exact motion of Jaklic et al.".to_string();
+    Ok((out, title))
+}
+
+/// [`jaklic_motion`] with `frames` evenly spaced body frames.
+fn jaklic_frames(lambda: f64, frames: usize) -> Result<Series, CliError> {
     let segs = jaklic::segments(SegmentKind::Additive, lambda).map_err(math("the Jaklic motion"))?;
     let segs = segs.into_iter().map(|s| s.into_motion()).collect::<Result<Vec<_>, _>>();
     let segs = segs.map_err(math("the Jaklic motion"))?;
@@ -64,7 +109,7 @@ fn jaklic_motion(lambda: f64, blocks: bool) -> Result<Series, CliError> {
         joins: times[1..8].to_vec(),
         key_times: times,
     };
-    of_motion(shape, &motion, vec![[0.0; 3]], SAMPLES, if blocks { 9 } else { 0 })
+    of_motion(shape, &motion, vec![[0.0; 3]], SAMPLES, frames)
 }
 
 /// The shape factors along Fig. 8's dashed arcs: 61 values from 1 to 4.

@@ -11,7 +11,7 @@ mod juttler;
 
 use crate::error::CliError;
 use crate::plot::data::{Series, Shape, of_motion};
-use crate::plot::draw::{Body, View, render, render_relative};
+use crate::plot::draw::{Body, Panel, View, render, render_panel};
 use crate::plot::raster::Format;
 use motion::paper::sec_4;
 use motion::{AdditiveBezier, Piecewise, Pose};
@@ -77,6 +77,9 @@ fn all() -> Result<Vec<Figure>, CliError> {
     .chain(wareham_lasenby::figures()?)
     .collect())
 }
+
+/// The companion of Fig. 10: its motions' errors against the exact motion.
+const FIG10_ERROR: &str = "fig10_error.svg";
 
 /// The companion of Fig. 5: its speeds as increases over `γ = 0`.
 const FIG5_INCREASE: &str = "fig5_increase.svg";
@@ -149,12 +152,18 @@ pub fn figures(dir: &str, format: Format, json: bool) -> Result<String, CliError
         let body = serde_json::to_value(body).map_err(|e| CliError::math(format!("cannot print the body: {e}")))?;
         data.insert(file, json!({"title": title, "body": body, "series": series}));
         if let Some((companion, title, base)) = companion_of(&series)? {
-            let bytes = render_relative(&companion, (view, Body::Frames), (&title, &base), format)?;
+            let bytes = render_panel(&companion, (view, Body::Frames), (&title, Panel::Increase(&base)), format)?;
             let file = named(FIG5_INCREASE, format);
             lines.push(write(dir, &file, &title, bytes)?);
             data.insert(file, json!({"title": title, "relative_to": base, "series": companion}));
         }
     }
+    let (errors, title) = cross2022::fig10_error()?;
+    let panel = Panel::Error(cross2022::EXACT);
+    let bytes = render_panel(&errors, (View::ThreeD, Body::Frames), (&title, panel), format)?;
+    let file = named(FIG10_ERROR, format);
+    lines.push(write(dir, &file, &title, bytes)?);
+    data.insert(file, json!({"title": title, "error_against": cross2022::EXACT, "series": errors}));
     for (file, title, bytes, value) in juttler::all(format)? {
         let file = named(file, format);
         lines.push(write(dir, &file, &title, bytes)?);

@@ -49,7 +49,7 @@ fn layers(figure: (&[Series], View, Body, &str), frames: &[Series]) -> Result<(S
     let (all, view, body, title) = figure;
     let shared = Rc::new(RefCell::new(Layers::default()));
     let animation = Animation { series: frames, frames: FRAMES, layers: shared.clone() };
-    let picture = Figure { all, view, body, title, animation: Some(animation), relative: None };
+    let picture = Figure { all, view, body, title, animation: Some(animation), panel: super::draw::Panel::Speeds };
     let (w, h) = picture.size();
     let mut svg = String::new();
     paint(&picture, Svg::new(&mut svg, (w, h), Some(shared.clone())), Px(SVG_SCALE))?;

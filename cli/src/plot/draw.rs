@@ -380,7 +380,7 @@ fn style_mesh<DB: DrawingBackend, X: plotters::coord::ranged1d::Ranged, Y: plott
 fn speeds<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     all: &[Series],
-    (anim, relative): (Option<&Animation>, Option<&str>),
+    (anim, panel): (Option<&Animation>, Panel),
     px: Px,
 ) -> Result<(), CliError> {
     let (t_lo, t_hi) = range(all.iter().flat_map(|s| s.t.iter().copied()));
@@ -388,14 +388,15 @@ fn speeds<DB: DrawingBackend>(
     let linear = bounds(&mut all.iter().flat_map(|s| s.speeds.iter().flatten().copied()));
     let angular = bounds(&mut all.iter().flat_map(|s| s.angular_speed.iter().copied()));
     // Speeds are never negative (their ranges start at 0); differences in per cent may be.
-    let lo = if relative.is_some() { linear.0.min(angular.0).min(0.0) } else { 0.0 };
+    let lo = if let Panel::Increase(_) = panel { linear.0.min(angular.0).min(0.0) } else { 0.0 };
     let ratio = linear.1 / angular.1;
-    let split = relative.is_none() && ratio.is_finite() && !(0.1..=10.0).contains(&ratio);
+    let split = !matches!(panel, Panel::Increase(_)) && ratio.is_finite() && !(0.1..=10.0).contains(&ratio);
     let both = linear.1.max(angular.1);
     let (lin_hi, ang_hi) = if split { (linear.1, angular.1) } else { (both, both) };
-    let caption = match relative {
-        Some(base) => format!("increase over {base} in per cent: linear (solid), angular (dashed)"),
-        None => "linear speed (solid) and angular speed (dashed)".to_string(),
+    let caption = match panel {
+        Panel::Increase(base) => format!("increase over {base} in per cent: linear (solid), angular (dashed)"),
+        Panel::Error(exact) => format!("error against {exact}: position (solid), rotation (dashed)"),
+        Panel::Speeds => "linear speed (solid) and angular speed (dashed)".to_string(),
     };
     let area = captioned(area, &caption, px)?;
     let mut builder = ChartBuilder::on(&area);
@@ -405,10 +406,16 @@ fn speeds<DB: DrawingBackend>(
     }
     let chart = builder.build_cartesian_2d(t_lo..t_hi, lo..lin_hi).map_err(draw_error)?;
     let mut chart = chart.set_secondary_coord(t_lo..t_hi, lo..ang_hi);
-    let y_desc = match (relative, split) {
-        (Some(_), _) => "per cent of the speed",
-        (None, true) => "linear speed |v| per unit t",
-        (None, false) => "speed per unit t",
+    let y_desc = match (panel, split) {
+        (Panel::Increase(_), _) => "per cent of the speed",
+        (Panel::Error(_), true) => "distance of the body point",
+        (Panel::Error(_), false) => "distance, angle (radians)",
+        (Panel::Speeds, true) => "linear speed |v| per unit t",
+        (Panel::Speeds, false) => "speed per unit t",
+    };
+    let y2_desc = match panel {
+        Panel::Error(_) => "rotation angle between the two, radians (dashed)",
+        _ => "angular speed |Omega| per unit t (dashed)",
     };
     let mut mesh = chart.configure_mesh();
     style_mesh(&mut mesh, px);
@@ -420,7 +427,7 @@ fn speeds<DB: DrawingBackend>(
             .axis_desc_style(("sans-serif", px.font(13.0)))
             .set_all_tick_mark_size(px.i(5.0))
             .axis_style(BLACK.stroke_width(px.u(1.0)))
-            .y_desc("angular speed |Omega| per unit t (dashed)")
+            .y_desc(y2_desc)
             .draw()
             .map_err(draw_error)?;
     }
@@ -581,9 +588,20 @@ pub(crate) struct Figure<'a> {
     pub title: &'a str,
     /// The animation, if the figure is animated (SVG only).
     pub animation: Option<Animation<'a>>,
-    /// The speeds are increases in per cent over the series labelled so (a companion figure),
-    /// not speeds.
-    pub relative: Option<&'a str>,
+    /// What the left panel's lines are.
+    pub panel: Panel<'a>,
+}
+
+/// What a figure's left panel draws from each series' `speeds` (solid) and `angular_speed`
+/// (dashed).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Panel<'a> {
+    /// Speeds (per unit `t`).
+    Speeds,
+    /// Increases in per cent over the series labelled so.
+    Increase(&'a str),
+    /// Errors against the motion named so: the body point's distance and the rotation angle.
+    Error(&'a str),
 }
 
 impl Picture for Figure<'_> {
@@ -599,7 +617,7 @@ impl Picture for Figure<'_> {
         let top = top.margin(px.i(6.0), 0, 0, 0);
         let (left, right) = top.split_horizontally(px.i(f64::from(WIDTH) / 2.0));
         let anim = self.animation.as_ref();
-        speeds(&left, self.all, (anim, self.relative), px)?;
+        speeds(&left, self.all, (anim, self.panel), px)?;
         match self.view.axes() {
             Some(ab) => paths_2d(&right, self.all, (self.body, anim), ab, px)?,
             None => paths_3d(&right, self.all, (self.body, anim), px)?,
@@ -610,18 +628,18 @@ impl Picture for Figure<'_> {
 
 /// The file bytes of the figure of `all` (see [`Figure`]) in `format`.
 pub(crate) fn render(all: &[Series], view: View, body: Body, title: &str, format: Format) -> Result<Vec<u8>, CliError> {
-    encode(&Figure { all, view, body, title, animation: None, relative: None }, format)
+    encode(&Figure { all, view, body, title, animation: None, panel: Panel::Speeds }, format)
 }
 
-/// The file bytes of the figure of `all` whose speeds are increases in per cent over the
-/// series labelled `base` (see [`Figure::relative`]) in `format`.
-pub(crate) fn render_relative(
+/// The file bytes of the figure of `all` whose left panel draws `panel` (see [`Panel`]) in
+/// `format`.
+pub(crate) fn render_panel(
     all: &[Series],
     (view, body): (View, Body),
-    (title, base): (&str, &str),
+    (title, panel): (&str, Panel),
     format: Format,
 ) -> Result<Vec<u8>, CliError> {
-    encode(&Figure { all, view, body, title, animation: None, relative: Some(base) }, format)
+    encode(&Figure { all, view, body, title, animation: None, panel }, format)
 }
 
 #[cfg(test)]
