@@ -85,7 +85,7 @@ pub(crate) fn fig10_error() -> Result<(Vec<Series>, String), CliError> {
     let mut exact = out[0].clone();
     exact.label = EXACT.to_string();
     exact.method = "exact".into();
-    exact.paths = vec![exact.t.iter().map(|t| jaklic::path(t)).collect()];
+    exact.paths = vec![exact.t.iter().map(jaklic::path).collect()];
     exact.speeds = vec![vec![0.0; exact.t.len()]];
     exact.angular_speed = vec![0.0; exact.t.len()];
     out.push(exact);
