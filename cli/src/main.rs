@@ -154,6 +154,10 @@ enum Command {
         /// or an HTML page with play/pause and a slider when --out ends in .html.
         #[arg(long)]
         animate: bool,
+        /// Draw the linear and angular accelerations |a|, |Omega'| instead of the speeds (not
+        /// with --animate).
+        #[arg(long, conflicts_with = "animate")]
+        acceleration: bool,
         /// `gam interpolate` specs (with "method") or `gam hermite` specs (with an optional
         /// "body_point": [x, y, z]).
         #[arg(value_name = "SPEC.json", required = true)]
@@ -241,8 +245,9 @@ fn run(command: Command) -> Result<(String, Option<CliError>), CliError> {
         Command::Trajectory { json, spec, point } => trajectory::trajectory(&spec, &point, json),
         Command::Pose { json, pose } => pose::pose(&pose, json),
         Command::Sample { samples, json, spec } => sample::sample(&spec, samples, json),
-        Command::Plot { out, format, samples, view, frames, body, json, animate, specs } => {
-            plot::plot(&plot::PlotArgs { specs: &specs, out: &out, format, samples, view, frames, body, json, animate })
+        Command::Plot { out, format, samples, view, frames, body, json, animate, acceleration, specs } => {
+            let (specs, out) = (&specs, &out);
+            plot::plot(&plot::PlotArgs { specs, out, format, samples, view, frames, body, json, animate, acceleration })
         }
         Command::Figures { out, format, json } => figures::figures(&out, format, json),
         Command::Prove { algebra, basis, assume, timeout, max_basis, max_terms, json, claim } => {

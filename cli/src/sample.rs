@@ -69,26 +69,12 @@ pub(crate) struct Sample {
     pub angular_speed: f64,
 }
 
-/// A sampled segment.
-pub(crate) struct Sampled {
-    /// Additive or multiplicative.
-    pub kind: SegmentKind,
-    /// The degree of the segment(s).
-    pub degree: usize,
-    /// The number of segments (1 for a `gam hermite` spec).
-    pub segments: usize,
-    /// The body point (body coordinates).
-    pub body_point: [f64; 3],
-    /// The samples, `t` from 0 to 1.
-    pub samples: Vec<Sample>,
-}
-
 fn norm(v: &[f64; 3]) -> f64 {
     v.iter().map(|x| x * x).sum::<f64>().sqrt()
 }
 
-/// The samples of a spec, computed one at a time: all at once for the text output and
-/// `gam plot` ([`Sampler::collect`]), or streamed for `--json` ([`sample_json`]).
+/// The samples of a spec, computed one at a time (streamed for the text table and for
+/// `--json`, [`sample_json`]).
 pub(crate) struct Sampler {
     /// Additive or multiplicative.
     pub kind: SegmentKind,
@@ -104,20 +90,6 @@ pub(crate) struct Sampler {
     pub at: Box<dyn Fn(usize) -> Result<Sample, CliError>>,
 }
 
-impl Sampler {
-    /// All `n` samples.
-    pub fn collect(self) -> Result<Sampled, CliError> {
-        let samples = (0..self.n).map(|i| (self.at)(i)).collect::<Result<Vec<_>, _>>()?;
-        Ok(Sampled {
-            kind: self.kind,
-            degree: self.degree,
-            segments: self.segments,
-            body_point: self.body_point,
-            samples,
-        })
-    }
-}
-
 /// A sample with every number checked finite.
 pub(crate) fn checked(sample: Sample) -> Result<Sample, CliError> {
     let m = &sample.pose;
@@ -128,11 +100,6 @@ pub(crate) fn checked(sample: Sample) -> Result<Sample, CliError> {
     } else {
         Err(CliError::math(format!("the result at t = {} is not finite (overflow)", format_f64(sample.t))))
     }
-}
-
-/// Reads the spec at `path` and samples its segment at `n` parameter values.
-pub(crate) fn sample_spec(path: &str, n: usize) -> Result<Sampled, CliError> {
-    sampler(path, &SampleSpec::read(path)?, n, 1)?.collect()
 }
 
 /// Checks the work of `passes` passes over `n` samples of a spec (`label` names it in
@@ -247,10 +214,9 @@ fn write_text(s: Sampler, out: &mut impl Write) -> Result<(), TextError> {
             *w = (*w).max(cell.chars().count());
         }
     }
-    let shape =
-        Sampled { kind: s.kind, degree: s.degree, segments: s.segments, body_point: s.body_point, samples: vec![] };
+    let title = crate::plot::title(&s);
     let mut line = |text: String| writeln!(out, "{text}").map_err(TextError::Io);
-    line(format!("{}, {} samples", crate::plot::title(&shape), s.n))?;
+    line(format!("{title}, {} samples", s.n))?;
     line(table_line(&HEADER.map(str::to_string), &widths))?;
     line(table_rule(&widths))?;
     for i in 0..s.n {
@@ -263,10 +229,11 @@ fn write_text(s: Sampler, out: &mut impl Write) -> Result<(), TextError> {
 /// doors): the same text the command streams.
 #[cfg(test)]
 fn sample_text(path: &str, n: usize) -> Result<String, CliError> {
-    let s = sample_spec(path, n)?;
+    let s = sampler(path, &SampleSpec::read(path)?, n, 1)?;
+    let samples = (0..s.n).map(|i| (s.at)(i)).collect::<Result<Vec<_>, _>>()?;
     let mut rows = vec![HEADER.map(str::to_string).to_vec()];
-    rows.extend(s.samples.iter().map(text_row));
-    let title = format!("{}, {} samples", crate::plot::title(&s), s.samples.len());
+    rows.extend(samples.iter().map(text_row));
+    let title = format!("{}, {} samples", crate::plot::title(&s), samples.len());
     Ok(format!("{title}\n{}", text_table(&rows)))
 }
 

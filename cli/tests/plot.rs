@@ -189,6 +189,38 @@ fn speeds_match_central_differences_of_the_path() {
 }
 
 #[test]
+fn accelerations_match_second_differences_of_the_path() {
+    // |a| of each body point is |d²/dt²| of its path (second central differences, away from
+    // the join); |Ω'| bounds the rate of change of |Ω| (|d|Ω|/dt| <= |dΩ/dt|); with
+    // `--acceleration` the left panel draws them.
+    let file = TempFile::new("plot-acc.json", &spec("ccm-multiplicative", true));
+    let (data, svg) = plot("plot-acc", &[file.path(), "--samples", "2001", "--acceleration"]);
+    assert!(svg.contains("linear acceleration (solid) and angular acceleration (dashed)"));
+    assert!(svg.contains("linear acceleration |a| and path") && !svg.contains("linear speed"));
+    let s = &data["series"][0];
+    let t = nums(&s["t"]);
+    let h = t[1] - t[0];
+    let inside = |i: usize| (t[i] - 1.0).abs() > 3.0 * h;
+    for j in 0..POINTS.len() {
+        let acc = nums(&s["accelerations"][j]);
+        let path: Vec<[f64; 3]> = s["paths"][j].as_array().unwrap().iter().map(point).collect();
+        let mut worst: f64 = 0.0;
+        for i in (1..t.len() - 1).filter(|i| inside(*i)) {
+            let fd: [f64; 3] = std::array::from_fn(|k| (path[i + 1][k] - 2.0 * path[i][k] + path[i - 1][k]) / (h * h));
+            let fd = fd.iter().map(|x| x * x).sum::<f64>().sqrt();
+            worst = worst.max((fd - acc[i]).abs() / acc[i].max(1.0));
+        }
+        assert!(worst < 1e-3, "body point {j}: worst relative difference {worst}");
+    }
+    let (w, dw) = (nums(&s["angular_speed"]), nums(&s["angular_acceleration"]));
+    assert!(dw.iter().any(|x| *x > 0.1));
+    for i in (1..t.len() - 1).filter(|i| inside(*i)) {
+        let rate = (w[i + 1] - w[i - 1]).abs() / (2.0 * h);
+        assert!(rate <= dw[i] * (1.0 + 1e-3) + 1e-6, "t = {}: |d|Ω|/dt| {rate} > |Ω'| {}", t[i], dw[i]);
+    }
+}
+
+#[test]
 fn every_method_plots_in_every_view() {
     let methods = motion::method::Method::ALL.map(|m| m.name());
     for method in methods {

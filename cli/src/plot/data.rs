@@ -5,12 +5,12 @@
 //! A `gam interpolate` spec (it has a `method` key) is built by the one build path of `gam
 //! interpolate` ([`crate::interpolate::built`]) and sampled over its whole parameter range
 //! `[t_0, t_m]`, every `body_points` entry at once; a `gam hermite` spec is one segment over
-//! `[0, 1]` sampled by [`crate::sample::sample_spec`] with its `body_point`.
+//! `[0, 1]` with its `body_point`.
 
 use crate::error::CliError;
 use crate::hermite::strip_comments;
+use crate::hermite::{build_segment, read_spec};
 use crate::interpolate::{built, usage};
-use crate::sample::sample_spec;
 use crate::scalar::format_f64;
 use motion::algebra_core::Jet;
 use motion::trajectory::sample_motion;
@@ -76,6 +76,10 @@ pub(crate) struct Series {
     pub speeds: Vec<Vec<f64>>,
     /// `|Ω|` at `t[i]`.
     pub angular_speed: Vec<f64>,
+    /// `accelerations[j][i]`: `|a|` of body point `j` at `t[i]` (per unit of `t` squared).
+    pub accelerations: Vec<Vec<f64>>,
+    /// `|Ω'|` at `t[i]`, the derivative of the space angular velocity.
+    pub angular_acceleration: Vec<f64>,
     /// `key_points[k][j]`: body point `j` at the key parameter `key_times[k]`.
     pub key_points: Vec<Vec<[f64; 3]>>,
     /// The body frames at the `--frames K` evenly spaced parameters.
@@ -212,13 +216,17 @@ pub(crate) fn of_motion<M: MapScalar<f64, Jet<Jet<f64>>>>(
     let mut paths = vec![Vec::with_capacity(n); body_points.len()];
     let mut speeds = vec![Vec::with_capacity(n); body_points.len()];
     let mut angular_speed = Vec::with_capacity(n);
+    let mut accelerations = vec![Vec::with_capacity(n); body_points.len()];
+    let mut angular_acceleration = Vec::with_capacity(n);
     for ti in &t {
         let s = sample(*ti)?;
         for (j, p) in s.points.iter().enumerate() {
             paths[j].push(p.position);
             speeds[j].push(norm(&p.velocity));
+            accelerations[j].push(norm(&p.acceleration));
         }
         angular_speed.push(norm(&s.space_twist.angular.to_array()));
+        angular_acceleration.push(norm(&s.space_twist_derivative.angular.to_array()));
     }
     let key_points = key_times
         .iter()
@@ -237,35 +245,30 @@ pub(crate) fn of_motion<M: MapScalar<f64, Jet<Jet<f64>>>>(
         paths,
         speeds,
         angular_speed,
+        accelerations,
+        angular_acceleration,
         key_points,
         frames,
         marks: vec![],
     })
 }
 
-/// A `gam hermite` spec: one segment over `[0, 1]`; its frames are at the nearest samples.
+/// A `gam hermite` spec: one segment over `[0, 1]`, checked as `gam sample` checks it, sampled
+/// by [`of_motion`] like every other motion.
 fn hermite(path: &str, n: usize, k: usize) -> Result<Series, CliError> {
-    let s = sample_spec(path, n)?;
-    let t: Vec<f64> = s.samples.iter().map(|x| x.t).collect();
-    let nearest = |tf: f64| s.samples.iter().min_by(|a, b| (a.t - tf).abs().total_cmp(&(b.t - tf).abs()));
-    let frames =
-        evenly(0.0, 1.0, k).into_iter().filter_map(nearest).map(|x| frame(x.t, &x.pose)).collect::<Result<_, _>>()?;
-    let ends = [s.samples.first(), s.samples.last()];
-    let method = s.kind.to_string();
-    Ok(Series {
+    let spec = read_spec(path)?;
+    let checked = crate::sample::sampler(path, &crate::sample::SampleSpec::Hermite(spec.clone()), n, 1)?;
+    let (kind, degree, body_point) = (checked.kind, checked.degree, checked.body_point);
+    let motion = build_segment(&spec)?.into_motion().map_err(|e| CliError::math(e.to_string()))?;
+    let method = kind.to_string();
+    let shape = Shape {
         label: format!("{}: {method}", file_name(path)),
         method,
-        segments: s.segments,
-        degree: s.degree,
-        body_points: vec![s.body_point],
+        segments: 1,
+        degree,
+        tableau: crate::budget::Tableau::of_segment(kind),
         key_times: vec![0.0, 1.0],
         joins: vec![],
-        key_points: ends.into_iter().flatten().map(|x| vec![x.position]).collect(),
-        paths: vec![s.samples.iter().map(|x| x.position).collect()],
-        speeds: vec![s.samples.iter().map(|x| x.linear_speed).collect()],
-        angular_speed: s.samples.iter().map(|x| x.angular_speed).collect(),
-        t,
-        frames,
-        marks: vec![],
-    })
+    };
+    of_motion(shape, &motion, vec![body_point], n, k)
 }

@@ -295,7 +295,11 @@ fn point_label(all: &[Series], s: &Series, j: usize, what: &str) -> String {
 /// The legend of a figure of `all` with the body drawn as `body` (`animated`: the body moves):
 /// with several specs, one entry per spec of one body point (its hue, solid and dashed),
 /// otherwise one per body point and one for the angular speed.
-fn entries(all: &[Series], body: Body, animated: bool) -> Vec<Entry> {
+fn entries(all: &[Series], body: Body, (animated, panel): (bool, Panel)) -> Vec<Entry> {
+    let (solid, dashed) = match panel {
+        Panel::Acceleration => ("linear acceleration |a| and path", "angular acceleration |Omega'|"),
+        _ => ("linear speed |v| and path", "angular speed |Omega|"),
+    };
     let mut out = Vec::new();
     for (si, s) in all.iter().enumerate() {
         if all.len() > 1 && s.body_points.len() == 1 {
@@ -303,11 +307,10 @@ fn entries(all: &[Series], body: Body, animated: bool) -> Vec<Entry> {
             continue;
         }
         for j in 0..s.body_points.len() {
-            let text = point_label(all, s, j, "linear speed |v| and path");
+            let text = point_label(all, s, j, solid);
             out.push(Entry { text, colour: colour_of(all, si, j), swatch: Swatch::Solid });
         }
-        let text =
-            if all.len() == 1 { "angular speed |Omega|".into() } else { format!("{}: angular speed |Omega|", s.label) };
+        let text = if all.len() == 1 { dashed.to_string() } else { format!("{}: {dashed}", s.label) };
         out.push(Entry { text, colour: angular_colour(all, si), swatch: Swatch::Dashed });
     }
     if all.iter().any(|s| !s.key_points.is_empty()) {
@@ -385,8 +388,8 @@ fn speeds<DB: DrawingBackend>(
 ) -> Result<(), CliError> {
     let (t_lo, t_hi) = range(all.iter().flat_map(|s| s.t.iter().copied()));
     let bounds = |values: &mut dyn Iterator<Item = f64>| range(values.chain(std::iter::once(0.0)));
-    let linear = bounds(&mut all.iter().flat_map(|s| s.speeds.iter().flatten().copied()));
-    let angular = bounds(&mut all.iter().flat_map(|s| s.angular_speed.iter().copied()));
+    let linear = bounds(&mut all.iter().flat_map(|s| lines(s, panel).0.iter().flatten().copied()));
+    let angular = bounds(&mut all.iter().flat_map(|s| lines(s, panel).1.iter().copied()));
     // Speeds are never negative (their ranges start at 0); differences in per cent may be.
     let lo = if let Panel::Increase(_) = panel { linear.0.min(angular.0).min(0.0) } else { 0.0 };
     let ratio = linear.1 / angular.1;
@@ -397,6 +400,7 @@ fn speeds<DB: DrawingBackend>(
         Panel::Increase(base) => format!("increase over {base} in per cent: linear (solid), angular (dashed)"),
         Panel::Error(exact) => format!("error against {exact}: position (solid), rotation (dashed)"),
         Panel::Speeds => "linear speed (solid) and angular speed (dashed)".to_string(),
+        Panel::Acceleration => "linear acceleration (solid) and angular acceleration (dashed)".to_string(),
     };
     let area = captioned(area, &caption, px)?;
     let mut builder = ChartBuilder::on(&area);
@@ -412,9 +416,12 @@ fn speeds<DB: DrawingBackend>(
         (Panel::Error(_), false) => "distance, angle (radians)",
         (Panel::Speeds, true) => "linear speed |v| per unit t",
         (Panel::Speeds, false) => "speed per unit t",
+        (Panel::Acceleration, true) => "linear acceleration |a| per unit t^2",
+        (Panel::Acceleration, false) => "acceleration per unit t^2",
     };
     let y2_desc = match panel {
         Panel::Error(_) => "rotation angle between the two, radians (dashed)",
+        Panel::Acceleration => "angular acceleration |Omega'| per unit t^2 (dashed)",
         _ => "angular speed |Omega| per unit t (dashed)",
     };
     let mut mesh = chart.configure_mesh();
@@ -435,13 +442,13 @@ fn speeds<DB: DrawingBackend>(
         let joins =
             s.joins.iter().map(|t| PathElement::new(vec![(*t, lo), (*t, lin_hi)], JOIN.stroke_width(px.u(1.0))));
         chart.draw_series(joins).map_err(draw_error)?;
-        for (j, v) in s.speeds.iter().enumerate() {
+        for (j, v) in lines(s, panel).0.iter().enumerate() {
             let pts = s.t.iter().copied().zip(v.iter().copied());
             chart
                 .draw_series(LineSeries::new(pts, colour_of(all, si, j).stroke_width(px.u(2.0))))
                 .map_err(draw_error)?;
         }
-        let pts = s.t.iter().copied().zip(s.angular_speed.iter().copied());
+        let pts = s.t.iter().copied().zip(lines(s, panel).1.iter().copied());
         let style = dashed(angular_colour(all, si), px.u(1.5));
         chart.draw_secondary_series(LineSeries::new(pts, style)).map_err(draw_error)?;
     }
@@ -602,11 +609,21 @@ pub(crate) enum Panel<'a> {
     Increase(&'a str),
     /// Errors against the motion named so: the body point's distance and the rotation angle.
     Error(&'a str),
+    /// Accelerations: `|a|` of the body points and `|Ω'|` (`gam plot --acceleration`).
+    Acceleration,
+}
+
+/// The lines a panel draws of series `s`: per body point (solid), and the dashed one.
+fn lines<'s>(s: &'s Series, panel: Panel) -> (&'s [Vec<f64>], &'s [f64]) {
+    match panel {
+        Panel::Acceleration => (&s.accelerations, &s.angular_acceleration),
+        _ => (&s.speeds, &s.angular_speed),
+    }
 }
 
 impl Picture for Figure<'_> {
     fn size(&self) -> (u32, u32) {
-        let entries = entries(self.all, self.body, self.animation.is_some());
+        let entries = entries(self.all, self.body, (self.animation.is_some(), self.panel));
         (WIDTH, PANELS + legend::height(&entries, f64::from(WIDTH)))
     }
 
@@ -622,13 +639,13 @@ impl Picture for Figure<'_> {
             Some(ab) => paths_2d(&right, self.all, (self.body, anim), ab, px)?,
             None => paths_3d(&right, self.all, (self.body, anim), px)?,
         }
-        legend::draw(&band, &entries(self.all, self.body, anim.is_some()), px)
+        legend::draw(&band, &entries(self.all, self.body, (anim.is_some(), self.panel)), px)
     }
 }
 
 /// The file bytes of the figure of `all` (see [`Figure`]) in `format`.
 pub(crate) fn render(all: &[Series], view: View, body: Body, title: &str, format: Format) -> Result<Vec<u8>, CliError> {
-    encode(&Figure { all, view, body, title, animation: None, panel: Panel::Speeds }, format)
+    render_panel(all, (view, body), (title, Panel::Speeds), format)
 }
 
 /// The file bytes of the figure of `all` whose left panel draws `panel` (see [`Panel`]) in

@@ -1,5 +1,6 @@
 //! `gam plot SPEC.json... --out FILE.svg|FILE.png|FILE.html [--format svg|png] [--samples N]
-//! [--view xy|xz|yz|3d] [--frames K] [--body frames|cube|l-block|cuboid] [--animate] [--json]`: an
+//! [--view xy|xz|yz|3d] [--frames K] [--body frames|cube|l-block|cuboid] [--acceleration] [--animate]
+//! [--json]`: an
 //! SVG (or a PNG, [`raster`]; or, with `--animate`, an animated SVG or HTML page, [`animate`])
 //! of one or more specs, like the paper's
 //! Figs. 3-5, with two panels: the linear speed of every body point and the angular speed
@@ -29,7 +30,7 @@ pub(crate) mod surface;
 pub(crate) mod svg;
 
 use crate::error::CliError;
-use crate::sample::Sampled;
+use crate::sample::Sampler;
 use crate::scalar::format_f64;
 use data::Series;
 pub use draw::{Body, View};
@@ -42,7 +43,7 @@ pub const DEFAULT_SAMPLES: usize = 201;
 pub const MAX_FRAMES: usize = 1000;
 
 /// The title of a sampled Hermite segment (also `gam sample`).
-pub(crate) fn title(s: &Sampled) -> String {
+pub(crate) fn title(s: &Sampler) -> String {
     one_title(&s.kind.to_string(), s.segments, s.degree, &[s.body_point])
 }
 
@@ -87,6 +88,8 @@ pub struct PlotArgs<'a> {
     /// Write an animation ([`animate`]): an animated SVG, or an HTML page for an `out` ending
     /// in `.html`.
     pub animate: bool,
+    /// Draw the accelerations `|a|`, `|Ω'|` instead of the speeds in the left panel.
+    pub acceleration: bool,
 }
 
 /// Runs `gam plot`: writes the SVG or PNG to `out` and reports what was written (or prints the data).
@@ -113,7 +116,8 @@ pub fn plot(a: &PlotArgs) -> Result<String, CliError> {
         let frames = a.specs.iter().map(|p| data::series(p, n, n)).collect::<Result<Vec<_>, _>>()?;
         animate::render((&all, a.view, a.body, &title), &frames, animate::Kind::of(out))?
     } else {
-        draw::render(&all, a.view, a.body, &title, format)?
+        let panel = if a.acceleration { draw::Panel::Acceleration } else { draw::Panel::Speeds };
+        draw::render_panel(&all, (a.view, a.body), (&title, panel), format)?
     };
     std::fs::write(out, bytes).map_err(|e| CliError::usage(format!("cannot write `{out}`: {e}")))?;
     if a.json {
