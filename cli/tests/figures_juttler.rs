@@ -69,7 +69,25 @@ fn figures(test: &str) -> serde_json::Map<String, Value> {
                 let len = |k: &str| s[k].as_array().map_or(0, Vec::len);
                 2 * len("body_points") + 1 + len("joins") + 12 * len("frames") + len("marks")
             }
-            None => fig["iso_v"].as_array().unwrap().len() + fig["iso_t"].as_array().unwrap().len(),
+            // Fig. 5b, shaded: quads between neighbouring v curves, 5 samples of t long, each
+            // with its two v curve pieces and the t curve pieces on its edges at the t curves'
+            // parameters (every 25th sample: an inner one belongs to two quads)
+            None => {
+                let (nv, nk) = (fig["iso_v"].as_array().unwrap().len(), fig["iso_t"].as_array().unwrap().len());
+                let nt = fig["iso_v"][0].as_array().unwrap().len();
+                let quads = (nt - 1).div_ceil(5);
+                let polygons = svg.matches("<polygon").count();
+                assert_eq!(polygons, (nv - 1) * quads, "{file}: one shaded polygon per quad");
+                let mut shades: Vec<&str> = svg
+                    .lines()
+                    .filter(|l| l.starts_with("<polygon"))
+                    .map(|l| l.split("fill=").nth(1).unwrap())
+                    .collect();
+                shades.sort();
+                shades.dedup();
+                assert!(shades.len() > 20, "{file}: {} shades", shades.len());
+                (nv - 1) * (2 * quads + 2 * nk - 2)
+            }
         };
         assert_eq!(lines - black, expected, "{file}");
         out.insert(file.clone(), fig.clone());

@@ -14,7 +14,7 @@
 //! - Fig. 4: TRT with `l1 = 3, l2 = 0` and `Δt_i ~ dist + ∠` (`Method::JuttlerTrt`).
 //! - Fig. 5a/5b: the minimal rational motion of order 4 through 3 positions (`juttler-minimal`)
 //!   moving the parabola [`parabola`], and the kinematic surface it sweeps
-//!   (`juttler::surface::RationalBezierSurface::kinematic`), as a wireframe.
+//!   (`juttler::surface::RationalBezierSurface::kinematic`), shaded, with its iso-curves.
 //! - Fig. 6: the C¹ spline Q-motion of Algorithm 2 through 6 positions (`juttler-spline`).
 
 use crate::error::CliError;
