@@ -46,6 +46,7 @@ pub mod lang;
 pub mod matrix;
 #[cfg(feature = "toml")]
 pub mod metric_toml;
+pub mod named;
 pub mod naming;
 pub mod orient;
 pub mod paths;

@@ -81,6 +81,9 @@ pub enum CodegenError {
     /// A table coefficient that does not fit the `i64` ratio of `T::from_ratio`.
     #[error("a table coefficient ({0}) is too large for T::from_ratio(i64, i64)")]
     CoefficientTooLarge(String),
+    /// A recognised geometry whose named constructors cannot be built (a bug, not bad input).
+    #[error("named constructors: {0}")]
+    NamedConstructor(String),
 }
 
 /// One declared type: a name, doc lines and the basis elements (masks) it holds.

@@ -125,6 +125,8 @@ pub fn file_with(plan: &Plan, header: &[String], nest: Option<&str>, selection: 
     });
     let mut file: syn::File = syn::parse2(items)?;
     file.items.retain_mut(keep_item);
+    // the named constructors need the engine's `Real` and error helpers: not vendored
+    file.items.retain(|item| !matches!(item, syn::Item::Fn(f) if crate::named::is_named(&f.sig.ident.to_string())));
     let types: Vec<&str> = plan.spec.types.iter().map(|t| t.name.as_str()).collect();
     let declared = &types[..plan.declared];
     file.items = select(std::mem::take(&mut file.items), &types, declared, selection);

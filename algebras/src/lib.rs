@@ -68,6 +68,27 @@
 //! assert!(fast.iter().zip(general.iter()).all(|(a, b)| (a - b).abs() < 1e-12));
 //! assert_eq!(fast.e123, 1.0); // the weight is copied, not recomputed
 //! ```
+//!
+//! # Named constructors
+//!
+//! Modules whose metric is PGA's or Euclidean get `point`, `plane`, `line_through`,
+//! `translator`, `rotor`, `motor`, ... (docs/codegen.md, "Named constructors"): versors move
+//! things under `apply` (`x ↦ S x rev(S)`), a rotor turns right-handed about its axis.
+//!
+//! ```
+//! use gam_algebras::pga3::{self, Apply};
+//! use std::f64::consts::FRAC_PI_2;
+//! // a quarter turn about e3, then one unit along e1: (1, 0, 0) goes to (1, 1, 0)
+//! let m = pga3::motor(&[0.0, 0.0, 1.0], &FRAC_PI_2, &[1.0, 0.0, 0.0]).unwrap();
+//! let p = m.apply(&pga3::point(&[1.0, 0.0, 0.0]));
+//! let want = pga3::point(&[1.0, 1.0, 0.0]);
+//! assert!(p.iter().zip(want.iter()).all(|(a, b)| (a - b).abs() < 1e-15));
+//! // exact over rationals where no angle is involved
+//! use algebra_core::rational::q;
+//! let t = pga3::translator(&[q(1), q(2), q(3)]);
+//! assert_eq!(t.apply(&pga3::point(&[q(0), q(0), q(0)])), pga3::point(&[q(1), q(2), q(3)]));
+//! assert!(pga3::rotor(&[0.0; 3], &1.0).is_err()); // no axis
+//! ```
 
 pub mod generated;
 

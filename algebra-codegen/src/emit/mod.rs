@@ -16,6 +16,7 @@ use std::collections::BTreeMap;
 
 mod closed;
 mod matrix;
+mod named;
 pub(crate) mod size;
 pub(crate) mod sums;
 pub(crate) mod unit;
@@ -143,6 +144,7 @@ pub fn module_items(plan: &Plan) -> TokenStream {
     let matrices = matrix::module_items(plan, &names);
     let units = unit::module_items(plan, &names);
     let closed = closed::module_items(plan, &names);
+    let named = named::module_items(plan, &names);
     quote! {
         pub use ::algebra_core::ops::{
             ActionMatrix, AnticommutatorProduct, Apply, CommutatorProduct, GeometricProduct, GeometricProductInto,
@@ -176,6 +178,7 @@ pub fn module_items(plan: &Plan) -> TokenStream {
         #matrices
         #units
         #closed
+        #named
     }
 }
 

@@ -10850,5 +10850,43 @@ pub mod g3_vendored {
             }
         }
     }
+    /// The rotation by `angle` (radians) about `axis` through the origin, right-handed: `cos(angle/2) ± sin(angle/2) β(axis/|axis|)`, the sign chosen from the product tables so that `apply` (`x ↦ S x rev(S)`) turns every vector by `+angle` (a quarter turn about `e3` takes `e1` to `e2`). `sandwich` (`rev(S) x S`) turns the other way. An error for a zero or non-finite axis or angle.
+    #[allow(clippy::too_many_arguments)]
+    pub fn rotor<T: ::algebra_core::Real>(
+        axis: &[T; 3usize],
+        angle: &T,
+    ) -> ::core::result::Result<Rotor<T>, ::algebra_core::MvError> {
+        ::algebra_core::closed_form::check_finite("rotor", &"axis", axis.iter())?;
+        ::algebra_core::closed_form::check_finite(
+            "rotor",
+            &"angle",
+            ::core::iter::once(angle),
+        )?;
+        let norm2 = axis.iter().fold(T::zero(), |acc, a| acc + &a.mul_ref(a));
+        if !(norm2 > T::zero()) || !::algebra_core::Ring::is_finite_value(&norm2) {
+            return Err(
+                ::algebra_core::closed_form::undefined(
+                    "rotor",
+                    "axis".to_string(),
+                    "the axis is zero (or too large for this scalar)",
+                ),
+            );
+        }
+        let inv = T::one().div_ref(&::algebra_core::Real::sqrt(&norm2));
+        let u0 = axis[0usize].mul_ref(&inv);
+        let u1 = axis[1usize].mul_ref(&inv);
+        let u2 = axis[2usize].mul_ref(&inv);
+        let half = angle.mul_ref(&T::from_ratio(1, 2));
+        let (c, s) = (
+            ::algebra_core::Real::cos(&half),
+            ::algebra_core::Real::sin(&half),
+        );
+        Ok(Rotor {
+            scalar: c.clone(),
+            e12: ::algebra_core::Ring::neg_ref(&s.mul_ref(&u2)),
+            e13: s.mul_ref(&u1),
+            e23: ::algebra_core::Ring::neg_ref(&s.mul_ref(&u0)),
+        })
+    }
 }
 

@@ -1,0 +1,427 @@
+//! Named constructors (points, planes, lines, translators, rotors, motors), for algebras
+//! recognised from their exact metric, never from their names:
+//!
+//! - **PGA**: a diagonal metric with one generator `g0` squaring to `0` and the others
+//!   (`g1..gn`, `n = 2` or `3`) squaring to `+1`. The point `x` is the meet of the hyperplanes
+//!   `x_k = const`: `(g1 - x1 g0) ∧ ... ∧ (gn - xn g0)`; a direction is its limit, a plane
+//!   `n·x = d` is `n1 g1 + ... - d g0`; the line through two points their join `P ∨ Q`.
+//!   The translator is `1 ± (1/2) Σ t_k g0 g_k` and the rotor `cos(θ/2) ± sin(θ/2) β(â)` with
+//!   `β(a) = a1 g2 g3 + a2 g3 g1 + a3 g1 g2` (`g1 g2` in 2D); each sign is chosen here by acting
+//!   with the candidate on points, exactly over `Q`, so that under [`apply`](crate::versor)
+//!   (`x ↦ S x rev(S)`) the translator moves every point by `+t` and the rotor turns it by `+θ`
+//!   about `a`, right-handed.
+//! - **Euclidean** `G_2`, `G_3` (every generator squares to `+1`): the rotor, with the same rule
+//!   acting on vectors.
+//!
+//! Each constructor is an expansion of products of *pieces* `(atoms, multivector)`: the
+//! result's every coefficient is a sum of exact rational multiples of products of atoms
+//! (parameter components, `cos(θ/2)`, `sin(θ/2)`, the unit axis). It returns the smallest
+//! declared type holding its support, and is left out when no declared type holds it. The
+//! emitter is [`crate::emit`]'s `named`.
+
+use crate::spec::{CodegenError, ModuleSpec};
+use algebra_core::Multivector;
+use algebra_core::rational::Q;
+use algebra_core::tables::Product;
+use num_traits::{One, Zero};
+use std::collections::BTreeMap;
+use std::sync::Arc;
+
+/// The names of every named constructor (the functions a module may get).
+pub const NAMES: [&str; 10] = [
+    "point",
+    "direction",
+    "plane",
+    "line",
+    "line_through",
+    "translator",
+    "rotor",
+    "motor",
+    "rotor_about_line",
+    "rotor_about_point",
+];
+
+/// Whether `name` is one of the named constructors ([`NAMES`]).
+pub fn is_named(name: &str) -> bool {
+    NAMES.contains(&name)
+}
+
+/// A factor of a term.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Atom {
+    /// Component `k` of array parameter `p`.
+    Param(usize, usize),
+    /// `cos(θ/2)` of the angle parameter.
+    Cos,
+    /// `sin(θ/2)` of the angle parameter.
+    Sin,
+    /// Component `k` of the unit axis (`axis / |axis|`).
+    Unit(usize),
+}
+
+/// A parameter of a constructor.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Param {
+    /// `name: &[T; n]`.
+    Array(&'static str, usize),
+    /// The axis `&[T; n]` (normalised; a zero or non-finite axis is an error).
+    Axis(usize),
+    /// The angle `&T` (radians).
+    Angle,
+}
+
+/// One term of an output field: `coef · Π atoms`.
+pub type Monomial = (Vec<Atom>, Q);
+
+/// One named constructor.
+#[derive(Debug, Clone)]
+pub struct Constructor {
+    /// The function's name.
+    pub name: &'static str,
+    /// Its parameters, in order.
+    pub params: Vec<Param>,
+    /// The output type.
+    pub out: usize,
+    /// Per field of the output type: its terms (canonical coefficients; the emitter folds the
+    /// fields' orientation signs in).
+    pub fields: Vec<Vec<Monomial>>,
+    /// What it builds, for the docs.
+    pub doc: String,
+}
+
+/// The recognised geometry.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Geometry {
+    /// Projective: the null generator and the Euclidean ones.
+    Pga {
+        /// `g0`.
+        null: usize,
+        /// `g1..gn`.
+        euclid: Vec<usize>,
+    },
+    /// Euclidean `G_n`.
+    Euclid(Vec<usize>),
+}
+
+/// The geometry of `spec`'s metric, if recognised.
+pub fn recognise(spec: &ModuleSpec) -> Option<Geometry> {
+    let m = spec.algebra.metric();
+    if !m.is_diagonal() {
+        return None;
+    }
+    let sq: Vec<Q> = (0..m.dimension()).map(|i| m.gram(i, i).cloned().unwrap_or_else(|_| Q::zero())).collect();
+    let null: Vec<usize> = (0..sq.len()).filter(|&i| sq[i].is_zero()).collect();
+    let pos: Vec<usize> = (0..sq.len()).filter(|&i| sq[i] == Q::one()).collect();
+    if null.len() + pos.len() != sq.len() || !(2..=3).contains(&pos.len()) {
+        return None;
+    }
+    match null.as_slice() {
+        [] => Some(Geometry::Euclid(pos)),
+        [g0] => Some(Geometry::Pga { null: *g0, euclid: pos }),
+        _ => None,
+    }
+}
+
+/// A sum of `(atoms, multivector)` pieces.
+type Pieces = Vec<(Vec<Atom>, Multivector<Q>)>;
+
+struct Ctx {
+    alg: Arc<algebra_core::Algebra>,
+    basis: algebra_core::Basis,
+}
+
+impl Ctx {
+    fn generator(&self, i: usize) -> Multivector<Q> {
+        Multivector::from_mask(&self.alg, self.basis, 1 << i).expect("a generator")
+    }
+
+    fn scalar(&self, q: Q) -> Multivector<Q> {
+        Multivector::scalar(&self.alg, self.basis, q)
+    }
+
+    fn product(&self, a: &Pieces, b: &Pieces, p: Product) -> Pieces {
+        let mut out = Vec::new();
+        for (x, u) in a {
+            for (y, v) in b {
+                let mut atoms = [x.as_slice(), y.as_slice()].concat();
+                atoms.sort();
+                out.push((atoms, u.product(v, p)));
+            }
+        }
+        out
+    }
+
+    /// `(g_k - x_k g0)` over the Euclidean generators, outer-multiplied: the point `x`
+    /// (parameter `param`), or only its linear part (a direction) when `direction`.
+    fn point(&self, null: usize, euclid: &[usize], param: usize, direction: bool) -> Pieces {
+        let mut acc: Pieces = vec![(vec![], self.scalar(Q::one()))];
+        for (k, &g) in euclid.iter().enumerate() {
+            let factor = vec![
+                (vec![], self.generator(g)),
+                (vec![Atom::Param(param, k)], self.generator(null).scale(&-Q::one())),
+            ];
+            acc = self.product(&acc, &factor, Product::Outer);
+        }
+        if direction {
+            acc.retain(|(atoms, _)| !atoms.is_empty());
+        }
+        acc
+    }
+
+    /// `1 + sign/2 Σ t_k g0 g_k`.
+    fn translator(&self, null: usize, euclid: &[usize], param: usize, sign: &Q) -> Pieces {
+        let half = sign * Q::new(1.into(), 2.into());
+        let mut out: Pieces = vec![(vec![], self.scalar(Q::one()))];
+        for (k, &g) in euclid.iter().enumerate() {
+            out.push((vec![Atom::Param(param, k)], self.generator(null).gp(&self.generator(g)).scale(&half)));
+        }
+        out
+    }
+
+    /// `β(a)`: the bivector of the rotation about `a` (3D) or in the plane (2D), with the unit
+    /// axis atoms when `unit`.
+    fn beta(&self, euclid: &[usize], unit: bool) -> Pieces {
+        let g = |k: usize| self.generator(euclid[k]);
+        match euclid.len() {
+            3 => (0..3)
+                .map(|k| {
+                    let atoms = if unit { vec![Atom::Unit(k)] } else { vec![] };
+                    (atoms, g((k + 1) % 3).gp(&g((k + 2) % 3)))
+                })
+                .collect(),
+            _ => vec![(vec![], g(0).gp(&g(1)))],
+        }
+    }
+
+    /// `cos(θ/2) + sign sin(θ/2) β(â)`.
+    fn rotor(&self, euclid: &[usize], sign: &Q) -> Pieces {
+        let mut out: Pieces = vec![(vec![Atom::Cos], self.scalar(Q::one()))];
+        for (mut atoms, b) in self.beta(euclid, true) {
+            atoms.push(Atom::Sin);
+            atoms.sort();
+            out.push((atoms, b.scale(sign)));
+        }
+        out
+    }
+
+    /// The multivector of `pieces` with every atom set to the value `at` gives it.
+    fn eval(&self, pieces: &Pieces, at: impl Fn(Atom) -> Q) -> Multivector<Q> {
+        let mut acc = self.scalar(Q::zero());
+        for (atoms, mv) in pieces {
+            let c = atoms.iter().fold(Q::one(), |c, a| c * at(*a));
+            acc = acc.try_add(&mv.scale(&c)).expect("one algebra");
+        }
+        acc
+    }
+}
+
+/// `S x rev(S)`.
+fn apply(s: &Multivector<Q>, x: &Multivector<Q>) -> Multivector<Q> {
+    s.gp(x).gp(&s.reverse())
+}
+
+/// `a = k b` for some rational `k > 0`.
+fn positive_multiple(a: &Multivector<Q>, b: &Multivector<Q>) -> bool {
+    let (ca, cb) = (a.coeffs(), b.coeffs());
+    let Some(i) = cb.iter().position(|c| !c.is_zero()) else { return false };
+    let k = &ca[i] / &cb[i];
+    k > Q::zero() && ca.iter().zip(cb).all(|(x, y)| *x == &k * y)
+}
+
+/// The sign in `{+1, -1}` for which `check(sign)` holds.
+fn sign_where(what: &str, check: impl Fn(&Q) -> bool) -> Result<Q, CodegenError> {
+    [Q::one(), -Q::one()]
+        .into_iter()
+        .find(|s| check(s))
+        .ok_or_else(|| CodegenError::NamedConstructor(format!("no sign makes the {what} act as expected")))
+}
+
+/// Collects `pieces` into per-field terms of the smallest declared type holding them.
+fn collect(spec: &ModuleSpec, pieces: &Pieces) -> Option<(usize, Vec<Vec<Monomial>>)> {
+    let mut by_mask: BTreeMap<u32, BTreeMap<Vec<Atom>, Q>> = BTreeMap::new();
+    for (atoms, mv) in pieces {
+        for (mask, c) in mv.coeffs().iter().enumerate() {
+            if !c.is_zero() {
+                *by_mask.entry(mask as u32).or_default().entry(atoms.clone()).or_insert_with(Q::zero) += c;
+            }
+        }
+    }
+    by_mask.retain(|_, terms| {
+        terms.retain(|_, c| !c.is_zero());
+        !terms.is_empty()
+    });
+    let masks: Vec<u32> = by_mask.keys().copied().collect();
+    let declared = (0..spec.types.len()).filter(|&t| masks.iter().all(|m| spec.types[t].elements.contains(m)));
+    let out = declared.min_by_key(|&t| spec.types[t].elements.len())?;
+    let fields = spec.types[out]
+        .elements
+        .iter()
+        .map(|m| by_mask.get(m).map(|t| t.iter().map(|(a, c)| (a.clone(), c.clone())).collect()).unwrap_or_default())
+        .collect();
+    Some((out, fields))
+}
+
+/// The named constructors of `spec` (its first `declared` types are the user's): empty when
+/// the algebra is not recognised.
+pub fn constructors(spec: &ModuleSpec, declared: usize) -> Result<Vec<Constructor>, CodegenError> {
+    let Some(geometry) = recognise(spec) else { return Ok(vec![]) };
+    let ctx = Ctx { alg: spec.algebra.clone(), basis: spec.basis };
+    let view = ModuleSpec { types: spec.types[..declared].to_vec(), ..spec.clone() };
+    let mut out = Vec::new();
+    let mut add = |name: &'static str, params: Vec<Param>, pieces: Pieces, doc: String| {
+        if let Some((ty, fields)) = collect(&view, &pieces) {
+            out.push(Constructor { name, params, out: ty, fields, doc });
+        }
+    };
+    match geometry {
+        Geometry::Euclid(euclid) => {
+            let n = euclid.len();
+            let sign = sign_where("rotor", |s| {
+                // a quarter turn (unnormalised: 1 + sign β) takes g1 to a positive multiple of g2
+                let r = ctx.eval(&ctx.rotor(&euclid, s), |a| {
+                    if a == Atom::Unit(2) || a == Atom::Cos || a == Atom::Sin { Q::one() } else { Q::zero() }
+                });
+                positive_multiple(&apply(&r, &ctx.generator(euclid[0])), &ctx.generator(euclid[1]))
+            })?;
+            let params = if n == 3 { vec![Param::Axis(3), Param::Angle] } else { vec![Param::Angle] };
+            let doc = rotor_doc(n, "vector");
+            add("rotor", params, ctx.rotor(&euclid, &sign), doc);
+        }
+        Geometry::Pga { null, euclid } => {
+            let n = euclid.len();
+            let origin = ctx.eval(&ctx.point(null, &euclid, 0, false), |_| Q::zero());
+            let point_at = |k: usize| {
+                ctx.eval(
+                    &ctx.point(null, &euclid, 0, false),
+                    |a| if a == Atom::Param(0, k) { Q::one() } else { Q::zero() },
+                )
+            };
+            let t_sign = sign_where("translator", |s| {
+                let t = ctx.eval(&ctx.translator(null, &euclid, 0, s), |a| {
+                    if a == Atom::Param(0, 0) { Q::one() } else { Q::zero() }
+                });
+                apply(&t, &origin) == point_at(0)
+            })?;
+            let r_sign = sign_where("rotor", |s| {
+                let axis_last = Atom::Unit(n - 1);
+                let r = ctx.eval(&ctx.rotor(&euclid, s), |a| {
+                    if a == axis_last || a == Atom::Cos || a == Atom::Sin { Q::one() } else { Q::zero() }
+                });
+                // about the last axis (the plane g1 g2 in 2D), a quarter turn takes e1 to e2
+                let (p1, p2) = (point_at(0), point_at(1));
+                let moved = apply(&r, &p1);
+                moved.try_sub(&p2.scale(&Q::from_integer(2.into()))).map(|d| d.is_zero()).unwrap_or(false)
+            })?;
+            let point = ctx.point(null, &euclid, 0, false);
+            add(
+                "point",
+                vec![Param::Array("p", n)],
+                point.clone(),
+                format!(
+                    "The point `p`: the meet of the {} `x_k = p_k`, weight `+1` on the Euclidean pseudoscalar.",
+                    if n == 3 { "planes" } else { "lines" }
+                ),
+            );
+            add(
+                "direction",
+                vec![Param::Array("d", n)],
+                ctx.point(null, &euclid, 0, true),
+                "The direction `d` (the ideal point, weight 0): the point `t d` divided by `t` as `t` grows.".into(),
+            );
+            let mut hyper: Pieces =
+                (0..n).map(|k| (vec![Atom::Param(0, k)], ctx.generator(euclid[k]))).collect::<Vec<_>>();
+            hyper.push((vec![Atom::Param(1, 0)], ctx.generator(null).scale(&-Q::one())));
+            let (name, what) = if n == 3 { ("plane", "plane") } else { ("line", "line") };
+            add(
+                name,
+                vec![Param::Array("normal", n), Param::Array("distance", 1)],
+                hyper,
+                format!(
+                    "The {what} `normal · x = distance` (`normal` need not be a unit vector): `Σ normal_k g_k - distance g0`."
+                ),
+            );
+            let q = ctx.point(null, &euclid, 1, false);
+            let join = ctx.product(&point, &q, Product::Regressive);
+            add(
+                "line_through",
+                vec![Param::Array("p", n), Param::Array("q", n)],
+                join,
+                "The line through the points `p` and `q`: their join `point(p) ∨ point(q)` (the regressive product)."
+                    .into(),
+            );
+            let translator = ctx.translator(null, &euclid, 0, &t_sign);
+            add(
+                "translator",
+                vec![Param::Array("t", n)],
+                translator.clone(),
+                "The translation by `t`: `apply` (`x ↦ S x rev(S)`) moves every point by `+t`.".into(),
+            );
+            let rotor = ctx.rotor(&euclid, &r_sign);
+            let (rotor_params, motor_params) = if n == 3 {
+                (vec![Param::Axis(3), Param::Angle], vec![Param::Axis(3), Param::Angle, Param::Array("t", 3)])
+            } else {
+                (vec![Param::Angle], vec![Param::Angle, Param::Array("t", 2)])
+            };
+            add("rotor", rotor_params.clone(), rotor.clone(), rotor_doc(n, "point"));
+            let translate_param = |pieces: &Pieces, to: usize| -> Pieces {
+                pieces
+                    .iter()
+                    .map(|(atoms, mv)| {
+                        (
+                            atoms
+                                .iter()
+                                .map(|a| if let Atom::Param(0, k) = a { Atom::Param(to, *k) } else { *a })
+                                .collect(),
+                            mv.clone(),
+                        )
+                    })
+                    .collect()
+            };
+            // the motor's translation is its last parameter: index 0 (the only array) after
+            // the axis and angle
+            let t_motor = translate_param(&translator, 0);
+            add(
+                "motor",
+                motor_params,
+                ctx.product(&t_motor, &rotor, Product::Geometric),
+                "The rigid motion `x ↦ R x + t` (rotate by `angle` about `axis` through the origin, then translate by `t`): `translator(t) rotor(axis, angle)`; `apply` (`x ↦ S x rev(S)`) moves points by it.".into(),
+            );
+            // about the line through p: translator(p) rotor translator(-p)
+            let back: Pieces = translator
+                .iter()
+                .map(|(atoms, mv)| {
+                    let neg = if atoms.is_empty() { mv.clone() } else { mv.scale(&-Q::one()) };
+                    (atoms.clone(), neg)
+                })
+                .collect();
+            let about = ctx.product(&ctx.product(&translator, &rotor, Product::Geometric), &back, Product::Geometric);
+            let (about_name, about_params) = if n == 3 {
+                ("rotor_about_line", vec![Param::Array("p", 3), Param::Axis(3), Param::Angle])
+            } else {
+                ("rotor_about_point", vec![Param::Array("p", 2), Param::Angle])
+            };
+            add(
+                about_name,
+                about_params,
+                about,
+                format!(
+                    "The rotation by `angle` about the {} through `p`: `translator(p) rotor(..) translator(-p)`.",
+                    if n == 3 { "axis `axis`" } else { "point" }
+                ),
+            );
+        }
+    }
+    Ok(out)
+}
+
+fn rotor_doc(n: usize, acted: &str) -> String {
+    if n == 3 {
+        format!(
+            "The rotation by `angle` (radians) about `axis` through the origin, right-handed: `cos(angle/2) ± sin(angle/2) β(axis/|axis|)`, the sign chosen from the product tables so that `apply` (`x ↦ S x rev(S)`) turns every {acted} by `+angle` (a quarter turn about `e3` takes `e1` to `e2`). `sandwich` (`rev(S) x S`) turns the other way. An error for a zero or non-finite axis or angle."
+        )
+    } else {
+        format!(
+            "The rotation by `angle` (radians) in the plane, counter-clockwise: `apply` (`x ↦ S x rev(S)`) turns every {acted} by `+angle` (a quarter turn takes `e1` to `e2`). An error for a non-finite angle."
+        )
+    }
+}
