@@ -28,7 +28,11 @@ use std::collections::BTreeMap;
 use std::sync::Arc;
 
 /// The names of every named constructor (the functions a module may get).
-pub const NAMES: [&str; 10] = [
+pub const NAMES: [&str; 14] = [
+    "up",
+    "down",
+    "sphere",
+    "dilator",
     "point",
     "direction",
     "plane",
@@ -57,6 +61,10 @@ pub enum Atom {
     Sin,
     /// Component `k` of the unit axis (`axis / |axis|`).
     Unit(usize),
+    /// `cosh(ln(scale)/2) = (√scale + 1/√scale)/2` of the scale parameter.
+    Cosh,
+    /// `sinh(ln(scale)/2) = (√scale - 1/√scale)/2`.
+    Sinh,
 }
 
 /// A parameter of a constructor.
@@ -68,6 +76,8 @@ pub enum Param {
     Axis(usize),
     /// The angle `&T` (radians).
     Angle,
+    /// The scale factor `&T` (positive).
+    Scale,
 }
 
 /// One term of an output field: `coef · Π atoms`.
@@ -101,15 +111,55 @@ pub enum Geometry {
     },
     /// Euclidean `G_n`.
     Euclid(Vec<usize>),
+    /// Conformal: the Euclidean generators and the null vectors `o` (origin) and `∞`
+    /// (infinity), `o · ∞ = -1`, as generator combinations.
+    Cga {
+        /// `g1..gn`.
+        euclid: Vec<usize>,
+        /// `o = Σ c_i g_i`.
+        origin: Vec<(usize, Q)>,
+        /// `∞ = Σ c_i g_i`.
+        infinity: Vec<(usize, Q)>,
+    },
 }
 
 /// The geometry of `spec`'s metric, if recognised.
 pub fn recognise(spec: &ModuleSpec) -> Option<Geometry> {
     let m = spec.algebra.metric();
+    let dim = m.dimension();
+    let g = |i: usize, j: usize| m.gram(i, j).cloned().unwrap_or_else(|_| Q::zero());
+    let sq: Vec<Q> = (0..dim).map(|i| g(i, i)).collect();
     if !m.is_diagonal() {
-        return None;
+        // a null pair a < b (a² = b² = 0, a·b = c ≠ 0), everything else orthonormal and positive
+        let off: Vec<(usize, usize)> =
+            (0..dim).flat_map(|i| (i + 1..dim).map(move |j| (i, j))).filter(|&(i, j)| !g(i, j).is_zero()).collect();
+        let [(a, b)] = off.as_slice() else { return None };
+        let euclid: Vec<usize> = (0..dim).filter(|i| i != a && i != b).collect();
+        if !sq[*a].is_zero()
+            || !sq[*b].is_zero()
+            || euclid.iter().any(|&i| sq[i] != Q::one())
+            || !(2..=3).contains(&euclid.len())
+        {
+            return None;
+        }
+        let c = g(*a, *b);
+        return Some(Geometry::Cga { euclid, origin: vec![(*a, -Q::one() / c)], infinity: vec![(*b, Q::one())] });
     }
-    let sq: Vec<Q> = (0..m.dimension()).map(|i| m.gram(i, i).cloned().unwrap_or_else(|_| Q::zero())).collect();
+    let minus: Vec<usize> = (0..dim).filter(|&i| sq[i] == -Q::one()).collect();
+    if let [e_minus] = minus.as_slice() {
+        let pos: Vec<usize> = (0..dim).filter(|&i| sq[i] == Q::one()).collect();
+        if pos.len() + 1 != dim || !(3..=4).contains(&pos.len()) {
+            return None;
+        }
+        // e+ is the last positive generator (the tables cannot tell which one the user meant)
+        let e_plus = *pos.last().expect("3 or 4 positive generators");
+        let half = Q::new(1.into(), 2.into());
+        return Some(Geometry::Cga {
+            euclid: pos[..pos.len() - 1].to_vec(),
+            origin: vec![(*e_minus, half.clone()), (e_plus, -half)],
+            infinity: vec![(*e_minus, Q::one()), (e_plus, Q::one())],
+        });
+    }
     let null: Vec<usize> = (0..sq.len()).filter(|&i| sq[i].is_zero()).collect();
     let pos: Vec<usize> = (0..sq.len()).filter(|&i| sq[i] == Q::one()).collect();
     if null.len() + pos.len() != sq.len() || !(2..=3).contains(&pos.len()) {
@@ -133,6 +183,11 @@ struct Ctx {
 impl Ctx {
     fn generator(&self, i: usize) -> Multivector<Q> {
         Multivector::from_mask(&self.alg, self.basis, 1 << i).expect("a generator")
+    }
+
+    fn combo(&self, c: &[(usize, Q)]) -> Multivector<Q> {
+        c.iter()
+            .fold(self.scalar(Q::zero()), |acc, (i, q)| acc.try_add(&self.generator(*i).scale(q)).expect("one algebra"))
     }
 
     fn scalar(&self, q: Q) -> Multivector<Q> {
@@ -168,12 +223,12 @@ impl Ctx {
         acc
     }
 
-    /// `1 + sign/2 Σ t_k g0 g_k`.
-    fn translator(&self, null: usize, euclid: &[usize], param: usize, sign: &Q) -> Pieces {
+    /// `1 + sign/2 Σ t_k n g_k` for the null vector `n` (`g0` in PGA, `∞` in CGA).
+    fn translator(&self, null: &Multivector<Q>, euclid: &[usize], param: usize, sign: &Q) -> Pieces {
         let half = sign * Q::new(1.into(), 2.into());
         let mut out: Pieces = vec![(vec![], self.scalar(Q::one()))];
         for (k, &g) in euclid.iter().enumerate() {
-            out.push((vec![Atom::Param(param, k)], self.generator(null).gp(&self.generator(g)).scale(&half)));
+            out.push((vec![Atom::Param(param, k)], null.gp(&self.generator(g)).scale(&half)));
         }
         out
     }
@@ -297,7 +352,7 @@ pub fn constructors(spec: &ModuleSpec, declared: usize) -> Result<Vec<Constructo
                 )
             };
             let t_sign = sign_where("translator", |s| {
-                let t = ctx.eval(&ctx.translator(null, &euclid, 0, s), |a| {
+                let t = ctx.eval(&ctx.translator(&ctx.generator(null), &euclid, 0, s), |a| {
                     if a == Atom::Param(0, 0) { Q::one() } else { Q::zero() }
                 });
                 apply(&t, &origin) == point_at(0)
@@ -349,7 +404,7 @@ pub fn constructors(spec: &ModuleSpec, declared: usize) -> Result<Vec<Constructo
                 "The line through the points `p` and `q`: their join `point(p) ∨ point(q)` (the regressive product)."
                     .into(),
             );
-            let translator = ctx.translator(null, &euclid, 0, &t_sign);
+            let translator = ctx.translator(&ctx.generator(null), &euclid, 0, &t_sign);
             add(
                 "translator",
                 vec![Param::Array("t", n)],
@@ -410,8 +465,144 @@ pub fn constructors(spec: &ModuleSpec, declared: usize) -> Result<Vec<Constructo
                 ),
             );
         }
+        Geometry::Cga { euclid, origin, infinity } => {
+            let n = euclid.len();
+            let (o, inf) = (ctx.combo(&origin), ctx.combo(&infinity));
+            let half = Q::new(1.into(), 2.into());
+            let up = |param: usize| -> Pieces {
+                let mut out: Pieces = vec![(vec![], o.clone())];
+                for (k, &g) in euclid.iter().enumerate() {
+                    out.push((vec![Atom::Param(param, k)], ctx.generator(g)));
+                    out.push((vec![Atom::Param(param, k), Atom::Param(param, k)], inf.scale(&half)));
+                }
+                out
+            };
+            let at = |x: &[Q]| ctx.eval(&up(0), |a| if let Atom::Param(0, k) = a { x[k].clone() } else { Q::zero() });
+            let unit = |k: usize| -> Vec<Q> { (0..n).map(|i| if i == k { Q::one() } else { Q::zero() }).collect() };
+            let origin_point = at(&vec![Q::zero(); n]);
+            let t_sign = sign_where("translator", |s| {
+                let t = ctx.eval(&ctx.translator(&inf, &euclid, 0, s), |a| {
+                    if a == Atom::Param(0, 0) { Q::one() } else { Q::zero() }
+                });
+                apply(&t, &origin_point) == at(&unit(0))
+            })?;
+            let r_sign = sign_where("rotor", |s| {
+                let axis_last = Atom::Unit(n - 1);
+                let r = ctx.eval(&ctx.rotor(&euclid, s), |a| {
+                    if a == axis_last || a == Atom::Cos || a == Atom::Sin { Q::one() } else { Q::zero() }
+                });
+                let moved = apply(&r, &at(&unit(0)));
+                moved.try_sub(&at(&unit(1)).scale(&Q::from_integer(2.into()))).map(|d| d.is_zero()).unwrap_or(false)
+            })?;
+            let e = o.op(&inf);
+            let dilator = |sign: &Q| -> Pieces {
+                vec![(vec![Atom::Cosh], ctx.scalar(Q::one())), (vec![Atom::Sinh], e.scale(sign))]
+            };
+            let d_sign = sign_where("dilator", |s| {
+                // scale 4: cosh(ln 2) = 5/4, sinh(ln 2) = 3/4; e1 goes to a multiple of up(4 e1)
+                let d = ctx.eval(&dilator(s), |a| match a {
+                    Atom::Cosh => Q::new(5.into(), 4.into()),
+                    Atom::Sinh => Q::new(3.into(), 4.into()),
+                    _ => Q::zero(),
+                });
+                let mut four = unit(0);
+                four[0] = Q::from_integer(4.into());
+                positive_multiple(&apply(&d, &at(&unit(0))), &at(&four))
+            })?;
+            let up_doc = "The conformal point of `p`: `up(p) = o + p + (1/2) p² ∞` (`o` the origin, `∞` infinity, `o · ∞ = -1`; `up(p) · up(q) = -|p - q|²/2`).";
+            add("up", vec![Param::Array("p", n)], up(0), up_doc.into());
+            add("point", vec![Param::Array("p", n)], up(0), format!("{up_doc} The same as `up`."));
+            let mut sphere = up(0);
+            sphere.push((vec![Atom::Param(1, 0), Atom::Param(1, 0)], inf.scale(&-half.clone())));
+            add(
+                "sphere",
+                vec![Param::Array("center", n), Param::Array("radius", 1)],
+                sphere,
+                format!(
+                    "The dual {} of `center` and `radius`: `up(center) - (1/2) radius² ∞`; `up(x) · sphere = 0` exactly on it.",
+                    if n == 3 { "sphere" } else { "circle" }
+                ),
+            );
+            let mut hyper: Pieces = (0..n).map(|k| (vec![Atom::Param(0, k)], ctx.generator(euclid[k]))).collect();
+            hyper.push((vec![Atom::Param(1, 0)], inf.clone()));
+            let name = if n == 3 { "plane" } else { "line" };
+            add(
+                name,
+                vec![Param::Array("normal", n), Param::Array("distance", 1)],
+                hyper,
+                format!(
+                    "The dual {name} `normal · x = distance`: `normal + distance ∞`; `up(x) · {name}` is `normal · x - distance`."
+                ),
+            );
+            let translator = ctx.translator(&inf, &euclid, 0, &t_sign);
+            add(
+                "translator",
+                vec![Param::Array("t", n)],
+                translator.clone(),
+                "The translation by `t`: `1 ± (1/2) t ∞`, the sign chosen so that `apply` (`x ↦ S x rev(S)`) moves `up(p)` to `up(p + t)`.".into(),
+            );
+            let rotor = ctx.rotor(&euclid, &r_sign);
+            let (rotor_params, motor_params) = if n == 3 {
+                (vec![Param::Axis(3), Param::Angle], vec![Param::Axis(3), Param::Angle, Param::Array("t", 3)])
+            } else {
+                (vec![Param::Angle], vec![Param::Angle, Param::Array("t", 2)])
+            };
+            add("rotor", rotor_params, rotor.clone(), rotor_doc(n, "point"));
+            add(
+                "motor",
+                motor_params,
+                ctx.product(&translator, &rotor, Product::Geometric),
+                "The rigid motion `x ↦ R x + t`: `translator(t) rotor(..)`; `apply` moves points by it.".into(),
+            );
+            add(
+                "dilator",
+                vec![Param::Scale],
+                dilator(&d_sign),
+                "The scaling by `scale > 0` about the origin: `cosh(ln(scale)/2) ± sinh(ln(scale)/2) o∧∞`, the sign chosen so that `apply` takes `up(p)` to a positive multiple of `up(scale p)` (normalise with `down`). An error for a scale that is not positive and finite.".into(),
+            );
+            let back: Pieces = translator
+                .iter()
+                .map(|(atoms, mv)| (atoms.clone(), if atoms.is_empty() { mv.clone() } else { mv.scale(&-Q::one()) }))
+                .collect();
+            let about = ctx.product(&ctx.product(&translator, &rotor, Product::Geometric), &back, Product::Geometric);
+            let (about_name, about_params) = if n == 3 {
+                ("rotor_about_line", vec![Param::Array("p", 3), Param::Axis(3), Param::Angle])
+            } else {
+                ("rotor_about_point", vec![Param::Array("p", 2), Param::Angle])
+            };
+            add(about_name, about_params, about, "The rotation by `angle` about the axis (3D) or point (2D) through `p`: `translator(p) rotor(..) translator(-p)`.".into());
+        }
     }
     Ok(out)
+}
+
+/// `down`: the Euclidean point of a conformal point, `x_k = (X · g_k) / (-X · ∞)`.
+#[derive(Debug, Clone)]
+pub struct Down {
+    /// The input type (the type of `up`).
+    pub input: usize,
+    /// Per field of the input: its coefficient in `-X · ∞` (canonical).
+    pub weight: Vec<Q>,
+    /// Per Euclidean coordinate, per field of the input: its coefficient in `X · g_k`.
+    pub coords: Vec<Vec<Q>>,
+}
+
+/// The `down` of a conformal module whose `up` lands in a declared type.
+pub fn down(spec: &ModuleSpec, declared: usize) -> Option<Down> {
+    let Some(Geometry::Cga { euclid, infinity, .. }) = recognise(spec) else { return None };
+    let ups = constructors(spec, declared).ok()?;
+    let input = ups.iter().find(|c| c.name == "up")?.out;
+    let ctx = Ctx { alg: spec.algebra.clone(), basis: spec.basis };
+    let inf = ctx.combo(&infinity);
+    let fields: Vec<Multivector<Q>> = spec.types[input]
+        .elements
+        .iter()
+        .map(|m| Multivector::from_mask(&ctx.alg, ctx.basis, *m).expect("a mask"))
+        .collect();
+    let weight = fields.iter().map(|f| -f.sp(&inf).scalar_part()).collect();
+    let coords =
+        euclid.iter().map(|&g| fields.iter().map(|f| f.sp(&ctx.generator(g)).scalar_part()).collect()).collect();
+    Some(Down { input, weight, coords })
 }
 
 fn rotor_doc(n: usize, acted: &str) -> String {

@@ -71,9 +71,10 @@
 //!
 //! # Named constructors
 //!
-//! Modules whose metric is PGA's or Euclidean get `point`, `plane`, `line_through`,
-//! `translator`, `rotor`, `motor`, ... (docs/codegen.md, "Named constructors"): versors move
-//! things under `apply` (`x ↦ S x rev(S)`), a rotor turns right-handed about its axis.
+//! Modules whose metric is PGA's, Euclidean or conformal get `point`, `plane`, `line_through`,
+//! `translator`, `rotor`, `motor`, `up`/`down`, `sphere`, `dilator`, ... (docs/codegen.md,
+//! "Named constructors"): versors move things under `apply` (`x ↦ S x rev(S)`), a rotor turns
+//! right-handed about its axis.
 //!
 //! ```
 //! use gam_algebras::pga3::{self, Apply};
@@ -88,6 +89,11 @@
 //! let t = pga3::translator(&[q(1), q(2), q(3)]);
 //! assert_eq!(t.apply(&pga3::point(&[q(0), q(0), q(0)])), pga3::point(&[q(1), q(2), q(3)]));
 //! assert!(pga3::rotor(&[0.0; 3], &1.0).is_err()); // no axis
+//! // conformal: up, the action, down
+//! use gam_algebras::cga;
+//! let x = cga::up(&[q(1), q(2), q(3)]);
+//! let moved = cga::translator(&[q(-1), q(0), q(1)]).apply(&x);
+//! assert_eq!(cga::down(&moved).unwrap(), [q(0), q(2), q(4)]);
 //! ```
 
 pub mod generated;

@@ -3,7 +3,7 @@
 
 use super::Names;
 use super::sums::{SumTerm, sum};
-use crate::named::{Atom, Constructor, Param, constructors};
+use crate::named::{Atom, Constructor, Down, Param, constructors, down};
 use crate::plan::Plan;
 use crate::ratio::to_ratio;
 use proc_macro2::TokenStream;
@@ -22,6 +22,8 @@ fn atom(a: Atom) -> TokenStream {
             let v = format_ident!("u{}", k);
             quote!(#v)
         }
+        Atom::Cosh => quote!(ch),
+        Atom::Sinh => quote!(sh),
     }
 }
 
@@ -51,7 +53,7 @@ fn function(names: &Names, c: &Constructor) -> Option<TokenStream> {
     let mut args = Vec::new();
     let mut lets = Vec::new();
     let mut checks = Vec::new();
-    let trig = c.params.iter().any(|p| matches!(p, Param::Angle | Param::Axis(_)));
+    let trig = c.params.iter().any(|p| matches!(p, Param::Angle | Param::Axis(_) | Param::Scale));
     for p in &c.params {
         match p {
             Param::Array(n, len) => {
@@ -87,6 +89,21 @@ fn function(names: &Names, c: &Constructor) -> Option<TokenStream> {
                     }
                     let inv = T::one().div_ref(&::algebra_core::Real::sqrt(&norm2));
                     #(let #us = axis[#idx].mul_ref(&inv);)*
+                });
+            }
+            Param::Scale => {
+                args.push(quote!(scale: &T));
+                checks.push(
+                    quote!(::algebra_core::closed_form::check_finite(#name_str, &"scale", ::core::iter::once(scale))?;),
+                );
+                lets.push(quote! {
+                    if !(*scale > T::zero()) {
+                        return Err(::algebra_core::closed_form::undefined(#name_str, "scale".to_string(), "the scale is not positive"));
+                    }
+                    let root = ::algebra_core::Real::sqrt(scale);
+                    let inv = T::one().div_ref(&root);
+                    let ch = (root.clone() + &inv).mul_ref(&T::from_ratio(1, 2));
+                    let sh = (root - &inv).mul_ref(&T::from_ratio(1, 2));
                 });
             }
             Param::Angle => {
@@ -135,9 +152,45 @@ fn function(names: &Names, c: &Constructor) -> Option<TokenStream> {
     })
 }
 
+/// `down` (conformal modules): the Euclidean point of a conformal point.
+fn down_item(names: &Names, d: &Down) -> Option<TokenStream> {
+    let ty = &names.types[d.input];
+    let fields = &names.fields[d.input];
+    let signs = &names.signs[d.input];
+    let linear = |coefs: &[algebra_core::rational::Q]| -> Option<TokenStream> {
+        let mut terms: Vec<SumTerm> = Vec::new();
+        for ((c, f), s) in coefs.iter().zip(fields).zip(signs) {
+            if !num_traits::Zero::is_zero(c) {
+                let c = if *s < 0 { -c.clone() } else { c.clone() };
+                terms.push((to_ratio(&c).ok()?, quote!(x.#f), false));
+            }
+        }
+        Some(sum(terms))
+    };
+    let weight = linear(&d.weight)?;
+    let coords = d.coords.iter().map(|c| linear(c)).collect::<Option<Vec<_>>>()?;
+    let n = coords.len();
+    Some(quote! {
+        /// The Euclidean point of the conformal point `x` (any weight): `x_k = (x · g_k) / (-x · ∞)`,
+        /// so `down(&up(&p)) == p`. An error when `x · ∞ = 0` (a point at infinity, a plane)
+        /// or `x` is not finite.
+        pub fn down<T: ::algebra_core::Field>(x: &#ty<T>) -> ::core::result::Result<[T; #n], ::algebra_core::MvError> {
+            if !x.iter().all(::algebra_core::Ring::is_finite_value) {
+                return Err(::algebra_core::closed_form::undefined("down", "x".to_string(), "coefficients are not finite"));
+            }
+            let w = #weight;
+            let inv = w.try_recip().filter(::algebra_core::Ring::is_finite_value).ok_or_else(|| {
+                ::algebra_core::closed_form::undefined("down", "x".to_string(), "its weight -x · ∞ is zero (not a finite point)")
+            })?;
+            Ok([#(#coords.mul_ref(&inv)),*])
+        }
+    })
+}
+
 /// Every named constructor of the plan's algebra (none when it is not recognised).
 pub(super) fn module_items(plan: &Plan, names: &Names) -> TokenStream {
     let Ok(all) = constructors(&plan.spec, plan.declared) else { return quote!() };
     let items = all.iter().filter_map(|c| function(names, c));
-    quote!(#(#items)*)
+    let down = down(&plan.spec, plan.declared).and_then(|d| down_item(names, &d));
+    quote!(#(#items)* #down)
 }
