@@ -80,8 +80,9 @@ enum Command {
         #[arg(value_name = "SPEC.json")]
         spec: String,
     },
-    /// A motion through key poses by a named method (ccm-additive, ccm-multiplicative, wl-linear,
-    /// wl-quadratic, hexanion-linear, juttler-q-motion).
+    /// A motion through key poses by a named method: ccm-additive, ccm-multiplicative,
+    /// wl-linear, wl-quadratic, hexanion-linear, juttler-q-motion, juttler-trt,
+    /// juttler-minimal, juttler-spline (docs/cli.md, "gam interpolate").
     Interpolate {
         /// Print one JSON object: {"method", "parameters", "segments", "samples"}.
         #[arg(long)]

@@ -252,6 +252,11 @@ fn help_and_version_succeed() {
     assert!(ok(&["--help"]).contains("eval"));
     assert!(ok(&["eval", "--help"]).contains("--scalar"));
     assert!(ok(&["--version"]).starts_with("gam "));
+    // every interpolation method is named in `gam interpolate --help`
+    let help = ok(&["interpolate", "--help"]);
+    for m in motion::method::Method::ALL {
+        assert!(help.contains(m.name()), "`gam interpolate --help` does not list {}", m.name());
+    }
 }
 
 #[test]

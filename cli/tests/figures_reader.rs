@@ -161,8 +161,11 @@ fn every_figure_reads_cleanly() {
     std::fs::create_dir_all(&dir).expect("a temp dir");
     let lines = ok(&["figures", "--out", dir.to_str().expect("utf-8")]);
     let mut count = 0;
+    let docs = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../docs/cli.md")).expect("docs/cli.md");
     for line in lines.lines() {
         let path = line.split(": ").next().unwrap().trim_start_matches("wrote ");
+        let file = std::path::Path::new(path).file_name().unwrap().to_str().unwrap();
+        assert!(docs.contains(&format!("`{file}`")), "docs/cli.md does not list {file}");
         let svg = std::fs::read_to_string(path).expect("written");
         read(path, &svg, !path.ends_with("juttler_fig5b.svg"));
         count += 1;

@@ -117,8 +117,8 @@ pub mod sec_5_1 {
     use crate::EndCondition;
     use crate::spec::{EndSpec, HermiteSpec, SpecKind};
 
-    /// The printed end angle `θ3 = 1.959` (itself rounded: every angle in `[1.959125, 1.95915)`,
-    /// e.g. 112.25°, reproduces all printed values).
+    /// The printed end angle `θ3 = 1.959` (itself rounded: exactly the angles in
+    /// `[1.9591014, 1.9591494]`, e.g. 112.25°, reproduce all printed values).
     pub const PRINTED_ANGLE: f64 = 1.959;
     /// The end axis `(1, 2, 3)` (normalised by the constructors).
     pub const AXIS: [f64; 3] = [1.0, 2.0, 3.0];

@@ -78,15 +78,16 @@ fn sec_5_1_at_the_printed_angle() {
     assert!((s3.e123inf - 7.101).abs() < 1e-3 && (s2.e3inf - 6.877).abs() < 1e-3 && (s2.e123inf - 4.707).abs() < 1e-3);
 }
 
-/// The printed θ3 = 1.959 is itself rounded: every angle in [1.959125, 1.95915) (inside its
-/// rounding interval), for example 112.25° = 1.9591320 rad, reproduces all 64 printed values.
+/// The printed θ3 = 1.959 is itself rounded: the angles that reproduce all 64 printed values
+/// form the window [1.9591014, 1.9591494] (found by scanning [1.9589, 1.9595] every 1e-7 and
+/// bisecting both ends; no gap inside), which holds 112.25° = 1.9591320 rad and not 1.959.
 #[test]
 fn sec_5_1_all_values_within_the_rounding_of_the_angle() {
-    for theta3 in [112.25f64.to_radians(), 1.959126, 1.959149] {
+    for theta3 in [112.25f64.to_radians(), 1.9591015, 1.9591493] {
         assert_eq!(sec_5_1_mismatches(theta3, AXIS), [], "θ3 = {theta3}");
     }
-    // Outside that window some value is always off.
-    for theta3 in [1.9591, 1.95916] {
+    // Just outside the window's ends some printed value is off.
+    for theta3 in [1.9591013, 1.9591495, 1.959] {
         assert!(!sec_5_1_mismatches(theta3, AXIS).is_empty(), "θ3 = {theta3}");
     }
     // The axis is (1, 2, 3)/√14: the printed (rounded) axis (0.267, 0.535, 0.802), normalised,
