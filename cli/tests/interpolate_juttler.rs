@@ -188,7 +188,25 @@ fn trt_splits_and_singular_system() {
     let two = r#"[{"position": [0, 0, 0]}, {"position": [1, 0, 0], "axis": [0, 0, 1], "angle": 1}]"#;
     let spec = TempFile::new("interp-jq-trt-two.json", &format!(r#"{{"method": "juttler-trt", "poses": {two}}}"#));
     let e = fails(&["interpolate", "--json", spec.path()], 1);
-    assert!(e.contains("juttler-trt") && e.contains("(34) is singular"), "{e}");
+    assert!(e.contains("juttler-trt") && e.contains("(34) is singular") && e.contains("l1 = l2 even"), "{e}");
+    // six positions in general position: the split l1 = l2 = 2 is singular whatever the
+    // positions (docs/verification.md, Result 5) and the error says so; l1 = 1 works
+    let six = r#"[{"position": [0, 0, 0]},
+        {"position": [2, 1, 0], "axis": [0, 0, 1], "angle": 0.7},
+        {"position": [4, -1, 1], "axis": [1, 0, 0], "angle": 1.1},
+        {"position": [6, 0, 2], "axis": [0, 1, 1], "angle": 0.4},
+        {"position": [8, 2, 1], "axis": [1, 1, 0], "angle": 1.3},
+        {"position": [10, 1, 0], "axis": [1, -1, 2], "angle": 0.9}]"#;
+    let at = |l1: usize| {
+        TempFile::new(
+            &format!("interp-jq-trt-six-{l1}.json"),
+            &format!(r#"{{"method": "juttler-trt", "poses": {six}, "l1": {l1}}}"#),
+        )
+    };
+    let e = fails(&["interpolate", at(2).path()], 1);
+    assert!(e.contains("l1 = l2 even") && e.contains("choose another l1"), "{e}");
+    let v = run_json("trt-six-1", &std::fs::read_to_string(at(1).path()).unwrap());
+    assert_eq!(v["segments"][0]["degree"], 3 + 5);
 }
 
 /// `control_poses` and `dual_quaternions` are the same control data under `gam pose`'s map

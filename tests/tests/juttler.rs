@@ -75,7 +75,9 @@ fn proposition_4() {
 #[test]
 fn result_5() {
     let out = assert_holds("juttler/result-5");
-    assert_eq!(out.checks, 17);
+    // 17 for m = 4 and two positions, 40 for the splits of m = 2..6 on two position sets
+    assert_eq!(out.checks, 57);
+    assert!(out.notes.iter().any(|n| n.contains("l1 = l2 is even")), "{:?}", out.notes);
     assert!(
         out.notes.iter().any(|n| n.starts_with("counterexample") && n.contains("two positions")),
         "{:?}",

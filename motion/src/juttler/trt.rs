@@ -64,9 +64,12 @@ fn epsilon_curve<T: Ring>(p: &[[T; 3]]) -> QMotion<T> {
 /// λ_i P_i`, degree `max(l1, l2) + k` with `l2 = m - 1 - l1`; exact over rationals. Fails for
 /// fewer than two positions, `l1 > m - 1` ([`JuttlerError::Split`]), a `rot` with a dual part
 /// ([`JuttlerError::NotRotational`]) and a singular system (34)
-/// ([`JuttlerError::SingularSystem`], e.g. positions that share an orientation). (34) is
-/// singular whenever all relative rotations share an axis `v` (planar motions, and any two
-/// positions): `b` constant along that axis and `a = -Rot(t_i) b` solve the homogeneous system.
+/// ([`JuttlerError::SingularSystem`]). (34) is singular whenever all relative rotations share
+/// an axis `v` (planar motions, and any two positions): `b` constant along that axis and
+/// `a = -Rot(t_i) b` solve the homogeneous system. It is also singular for *every* set of
+/// positions when `l1 = l2` is even (`m = 1, 5, 9, ...`): measured over random rational
+/// positions for `m ≤ 9` (the `juttler/result-5` statement checks `m ≤ 6`), not proved; every
+/// other split was nonsingular in general position.
 ///
 /// ```
 /// use algebra_core::rational::q;
@@ -120,11 +123,16 @@ pub fn trt_method<T: Field>(
             rhs[eq] = norm.mul_ref(&si[row]);
         }
     }
+    let why = if l1 == l2 && l1 % 2 == 0 {
+        "with l1 = l2 even, (34) is singular for every set of positions (found for m = 1, 5, 9): choose another l1"
+    } else {
+        "the positions do not determine both translation curves (their relative rotations share an axis, as in a planar motion)"
+    };
     let x = solve(a.clone(), rhs).ok_or_else(|| JuttlerError::SingularSystem {
         system: "(34)",
         rank: n - null_space(&a, n).len(),
         unknowns: n,
-        why: "the positions do not determine both translation curves (e.g. some share an orientation)",
+        why,
     })?;
     let p: Vec<[T; 3]> = x.chunks(3).map(|c| [c[0].clone(), c[1].clone(), c[2].clone()]).collect();
     let (p1, p2) = p.split_at(l1 + 1);

@@ -16,7 +16,8 @@
 //! * `juttler/proposition-4` (TR): (31) nonsingular; interpolation; degree `k + m`; the origin
 //!   moves on the polynomial curve `Σ b_j^m(t) p_j` of degree `m`; moving the origin of the
 //!   moving space changes the motion.
-//! * `juttler/result-5` (TRT): (34) typed in (with `U` of (11)) is nonsingular for every split;
+//! * `juttler/result-5` (TRT): (34) typed in (with `U` of (11)) is nonsingular for every split
+//!   of m = 4 on random positions, and for m = 2..6 singular exactly when `l1 = l2` is even;
 //!   interpolation; degree `max(l1, l2) + k`; moving the origin by `c` gives exactly the
 //!   control points `B_i (1 + ε c/2)`. Found: `l1, l2 ≥ 0` (the text says `≤ 0`), and (34) is
 //!   singular for every pair of positions.
@@ -414,7 +415,43 @@ fn result_5(c: &mut Checker) {
             "any two positions: b along the relative rotation axis and a = -Rot(t_i) b solve the homogeneous system",
         );
     }
+    // Which splits are singular for positions in general position: every split of m = 2..6
+    // over two random rational position sets (uniform and random parameters). Measured further
+    // (m up to 9, six sets each): singular exactly when l1 = l2 is even (m = 1, 5, 9), with a
+    // one-dimensional null space; nonsingular for every other split.
+    for m in 2..=6usize {
+        for (seed, uniform) in [(7001u64, true), (7002, false)] {
+            let mut g = Lcg(seed + 31 * m as u64);
+            let (r, _, _) = positions(&mut g, m);
+            let t: Vec<Q> = if uniform {
+                params(m)
+            } else {
+                let mut acc = q(0);
+                (0..=m)
+                    .map(|_| {
+                        acc = &acc + num_traits::Signed::abs(&g.next()) + ratio(1, 7);
+                        acc.clone()
+                    })
+                    .collect()
+            };
+            let Some(rot) = c.ok(format!("m = {m}: affine rotations"), affine(&r, &t)) else { continue };
+            for l1 in 0..m {
+                let l2 = m - 1 - l1;
+                let even_equal = l1 == l2 && l1 % 2 == 0;
+                c.check(
+                    format!(
+                        "m = {m}, l1 = {l1}, {} parameters: (34) is singular iff l1 = l2 is even",
+                        if uniform { "uniform" } else { "random" }
+                    ),
+                    nonsingular(system_34(&rot, &t, l1, l2)) != even_equal,
+                );
+            }
+        }
+    }
     c.note("Result 5 prints l1, l2 <= 0; with l1 + l2 = m - 1 it means l1, l2 >= 0");
+    c.note(
+        "'in general' fails for whole splits: (34) is singular for every set of positions when l1 = l2 is even (m = 1, 5, 9, ...; measured for m <= 9, not proved); the juttler-trt error says so",
+    );
 }
 
 /// The Bernstein-form curve with control points `h` as polynomials in `t`.
