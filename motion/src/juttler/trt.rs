@@ -123,7 +123,7 @@ pub fn trt_method<T: Field>(
             rhs[eq] = norm.mul_ref(&si[row]);
         }
     }
-    let why = if l1 == l2 && l1 % 2 == 0 {
+    let why = if l1 == l2 && l1.is_multiple_of(2) {
         "with l1 = l2 even, (34) is singular for every set of positions (found for m = 1, 5, 9): choose another l1"
     } else {
         "the positions do not determine both translation curves (their relative rotations share an axis, as in a planar motion)"

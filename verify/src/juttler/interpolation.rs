@@ -437,7 +437,7 @@ fn result_5(c: &mut Checker) {
             let Some(rot) = c.ok(format!("m = {m}: affine rotations"), affine(&r, &t)) else { continue };
             for l1 in 0..m {
                 let l2 = m - 1 - l1;
-                let even_equal = l1 == l2 && l1 % 2 == 0;
+                let even_equal = l1 == l2 && l1.is_multiple_of(2);
                 c.check(
                     format!(
                         "m = {m}, l1 = {l1}, {} parameters: (34) is singular iff l1 = l2 is even",
