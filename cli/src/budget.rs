@@ -148,9 +148,12 @@ impl Tableau {
         use motion::method::Method;
         match method {
             Method::CcmMultiplicative => Tableau::Slerp,
-            Method::JuttlerQMotion | Method::JuttlerTrt | Method::JuttlerMinimal | Method::JuttlerSpline => {
-                Tableau::Rational
-            }
+            Method::JuttlerQMotion
+            | Method::JuttlerAffine
+            | Method::JuttlerProjective
+            | Method::JuttlerTrt
+            | Method::JuttlerMinimal
+            | Method::JuttlerSpline => Tableau::Rational,
             Method::CcmAdditive | Method::WlLinear | Method::WlQuadratic | Method::HexanionLinear => Tableau::Linear,
         }
     }
@@ -211,7 +214,8 @@ pub fn sampling_work(tableau: Tableau, degree: usize, samples: usize, passes: us
 pub fn global_build_work(method: motion::method::Method, m: usize) -> Option<f64> {
     use motion::method::Method;
     let c = match method {
-        Method::JuttlerQMotion => 1.0,
+        Method::JuttlerQMotion | Method::JuttlerAffine => 1.0,
+        Method::JuttlerProjective => 2.0,
         Method::JuttlerTrt => 0.5,
         Method::JuttlerMinimal => 2.5,
         _ => return None,

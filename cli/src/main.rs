@@ -81,8 +81,9 @@ enum Command {
         spec: String,
     },
     /// A motion through key poses by a named method: ccm-additive, ccm-multiplicative,
-    /// wl-linear, wl-quadratic, hexanion-linear, juttler-q-motion, juttler-trt,
-    /// juttler-minimal, juttler-spline (docs/cli.md, "gam interpolate").
+    /// wl-linear, wl-quadratic, hexanion-linear, juttler-q-motion, juttler-affine,
+    /// juttler-projective, juttler-trt, juttler-minimal, juttler-spline (docs/cli.md, "gam
+    /// interpolate").
     Interpolate {
         /// Print one JSON object: {"method", "parameters", "segments", "samples"}.
         #[arg(long)]

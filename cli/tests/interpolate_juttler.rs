@@ -1,4 +1,5 @@
-//! `gam interpolate` with Jüttler's methods `juttler-q-motion` (Algorithm 1), `juttler-trt`,
+//! `gam interpolate` with Jüttler's methods `juttler-q-motion` (Algorithm 1), `juttler-affine`
+//! and `juttler-projective` (the affine and projective rotations with TR), `juttler-trt`,
 //! `juttler-minimal` and `juttler-spline` (Algorithm 2): the contract's JSON keys and the
 //! papers' degrees, the motion through every key pose (matrices by Rodrigues' formula here,
 //! not by the library), the segments' dual quaternions checked by evaluating their Bézier
@@ -78,8 +79,9 @@ fn segment_at(segs: &[Value], t: f64) -> (&Value, f64) {
 /// (method, extra spec keys, segments, degree of each segment's control data) for the four
 /// key poses (m = 3): 2m; TRT max(l1, l2) + m; the minimal motion's Q-motion (36) of degree
 /// k + n = m + 2m; the spline's segments 6.
-const METHODS: [(&str, &str, usize, u64); 5] = [
+const METHODS: [(&str, &str, usize, u64); 6] = [
     ("juttler-q-motion", "", 1, 6),
+    ("juttler-affine", "", 1, 6),
     ("juttler-trt", "", 1, 5),
     ("juttler-trt", r#", "l1": 1"#, 1, 4),
     ("juttler-minimal", "", 1, 9),
@@ -388,4 +390,40 @@ fn many_poses_global_methods_refuse_the_spline_interpolates() {
             assert!((0..3).all(|k| (got[k] - w[k]).abs() < 1e-12), "key {i}: {got:?} vs {w:?}");
         }
     }
+}
+
+#[test]
+fn projective_rotations_with_tr() {
+    // five key poses (m = 4): the projective rotation has degree 3m/4 = 3, with TR 7m/4 = 7;
+    // the motion passes through every key pose (Rodrigues here) and `gam trajectory` accepts it
+    let five: [([f64; 3], f64, [f64; 3]); 5] = [
+        ([0.0, 0.0, 1.0], 0.0, [0.0, 0.0, 0.0]),
+        ([0.0, 0.0, 1.0], 0.8, [3.0, 1.0, 0.0]),
+        ([1.0, 0.0, 0.0], 1.2, [6.0, 0.0, 1.0]),
+        ([0.0, 1.0, 1.0], 1.6, [8.0, 2.0, 0.0]),
+        ([1.0, 1.0, 0.0], 2.0, [12.0, 0.0, 0.0]),
+    ];
+    let p: Vec<String> =
+        five.iter().map(|(a, phi, t)| format!(r#"{{"position": {t:?}, "axis": {a:?}, "angle": {phi}}}"#)).collect();
+    let text = format!(r#"{{"method": "juttler-projective", "poses": [{}], "samples": 9}}"#, p.join(", "));
+    let v = run_json("projective", &text);
+    assert_eq!(v["segments"][0]["degree"], 7);
+    let samples = v["samples"].as_array().unwrap();
+    for (k, (axis, phi, pos)) in five.iter().enumerate() {
+        let s = &samples[2 * k];
+        let got: [[f64; 4]; 4] = serde_json::from_value(s["matrix"].clone()).unwrap();
+        assert!(max_diff(&got, &rodrigues(*axis, *phi, *pos)) < 1e-12, "key {k}: {got:?}");
+    }
+    let spec = TempFile::new("interp-jq-projective-traj.json", &text);
+    let t: Value = serde_json::from_str(&ok(&["trajectory", "--json", spec.path(), "--point", "0,0,1"])).unwrap();
+    assert_eq!(t["segments"][0]["degree"], 2 * 7);
+    // four poses: the projective method needs m divisible by 4
+    let spec = TempFile::new(
+        "interp-jq-projective-four.json",
+        &format!(r#"{{"method": "juttler-projective", "poses": {}}}"#, poses()),
+    );
+    let out = common::gam(&["interpolate", spec.path()]);
+    let e = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{e}");
+    assert!(e.contains("juttler-projective") && e.contains("divisible by 4"), "{e}");
 }

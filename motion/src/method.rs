@@ -52,6 +52,14 @@ pub enum Method {
     /// elliptic rotation (23)-(25) composed with the TR translation (30)-(31)
     /// ([`crate::juttler::tr::algorithm1`]).
     JuttlerQMotion,
+    /// Jüttler Sec. 3.1 (19)-(21) with Sec. 4.1: the affine rotational method (rotations of
+    /// degree `m` with scalar part 1) composed with the TR translation: degree `2m`
+    /// ([`crate::juttler::rotational::affine`], [`crate::juttler::tr::tr_method`]).
+    JuttlerAffine,
+    /// Jüttler Sec. 3.3 (27)-(28) with Sec. 4.1: the projective rotational method (degree
+    /// `3m/4`, for `m + 1 = 5, 9, 13, ...` key poses) composed with the TR translation: degree
+    /// `7m/4` ([`crate::juttler::projective::projective`], [`crate::juttler::tr::tr_method`]).
+    JuttlerProjective,
     /// Jüttler Sec. 4.2: the elliptic rotation (22)-(25) with the TRT translations (32)-(34),
     /// split `l1 + l2 = m - 1` ([`crate::juttler::trt::trt`]).
     JuttlerTrt,
@@ -67,7 +75,7 @@ pub enum Method {
 pub const LATER: [(&str, u32); 0] = [];
 
 /// The implemented methods, as listed in messages.
-const IMPLEMENTED: &str = "ccm-additive, ccm-multiplicative, wl-linear, wl-quadratic, hexanion-linear, juttler-q-motion, juttler-trt, juttler-minimal, juttler-spline";
+const IMPLEMENTED: &str = "ccm-additive, ccm-multiplicative, wl-linear, wl-quadratic, hexanion-linear, juttler-q-motion, juttler-affine, juttler-projective, juttler-trt, juttler-minimal, juttler-spline";
 
 /// Why a method name was not accepted.
 ///
@@ -110,6 +118,8 @@ crate::names::named!("motion::method::Method", Method {
     WlQuadratic => "wl-quadratic",
     HexanionLinear => "hexanion-linear",
     JuttlerQMotion => "juttler-q-motion",
+    JuttlerAffine => "juttler-affine",
+    JuttlerProjective => "juttler-projective",
     JuttlerTrt => "juttler-trt",
     JuttlerMinimal => "juttler-minimal",
     JuttlerSpline => "juttler-spline"
@@ -130,6 +140,8 @@ impl Method {
         match self {
             Method::CcmAdditive
             | Method::JuttlerQMotion
+            | Method::JuttlerAffine
+            | Method::JuttlerProjective
             | Method::JuttlerTrt
             | Method::JuttlerMinimal
             | Method::JuttlerSpline => SegmentKind::Additive,
@@ -153,9 +165,12 @@ impl Method {
             Method::WlLinear => "wl-relative-rotor",
             Method::WlQuadratic => "wl-bivector-quadratic",
             Method::HexanionLinear => "hexanion-linear",
-            Method::JuttlerQMotion | Method::JuttlerTrt | Method::JuttlerMinimal | Method::JuttlerSpline => {
-                "dual-quaternion-bezier"
-            }
+            Method::JuttlerQMotion
+            | Method::JuttlerAffine
+            | Method::JuttlerProjective
+            | Method::JuttlerTrt
+            | Method::JuttlerMinimal
+            | Method::JuttlerSpline => "dual-quaternion-bezier",
         }
     }
 
@@ -178,6 +193,8 @@ impl Method {
             | Method::WlQuadratic
             | Method::HexanionLinear
             | Method::JuttlerQMotion
+            | Method::JuttlerAffine
+            | Method::JuttlerProjective
             | Method::JuttlerMinimal => &[],
         }
     }
