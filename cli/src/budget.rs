@@ -154,7 +154,11 @@ impl Tableau {
             | Method::JuttlerTrt
             | Method::JuttlerMinimal
             | Method::JuttlerSpline => Tableau::Rational,
-            Method::CcmAdditive | Method::WlLinear | Method::WlQuadratic | Method::HexanionLinear => Tableau::Linear,
+            Method::CcmAdditive
+            | Method::WlLinear
+            | Method::WlQuadratic
+            | Method::WlDirect
+            | Method::HexanionLinear => Tableau::Linear,
         }
     }
 

@@ -1,4 +1,5 @@
-//! `gam interpolate` with the Wareham–Lasenby methods `wl-linear` and `wl-quadratic`: the
+//! `gam interpolate` with the Wareham–Lasenby methods `wl-linear`, `wl-quadratic` and
+//! `wl-direct`: the
 //! contract's JSON keys, the motion through every key pose (matrices by Rodrigues' formula
 //! here, not by the library), point velocities against central differences of the sampled
 //! points, and the error contract (exit 2 for keys W-L does not use and too few poses).
@@ -31,9 +32,11 @@ fn run_json(name: &str, text: &str) -> Value {
 
 #[test]
 fn output_keys_and_key_poses() {
-    for (method, rep, degrees) in
-        [("wl-linear", "wl-relative-rotor", [1, 1, 1]), ("wl-quadratic", "wl-bivector-quadratic", [2, 3, 2])]
-    {
+    for (method, rep, degrees) in [
+        ("wl-linear", "wl-relative-rotor", [1, 1, 1]),
+        ("wl-quadratic", "wl-bivector-quadratic", [2, 3, 2]),
+        ("wl-direct", "wl-bivector-linear", [1, 1, 1]),
+    ] {
         let v = run_json(method, &spec(method, 7, ""));
         let keys: Vec<&String> = v.as_object().unwrap().keys().collect();
         assert_eq!(keys, ["method", "parameters", "segments", "samples"]);
@@ -98,4 +101,34 @@ fn gam_sample_accepts_a_wl_spec() {
         let q: Vec<[f64; 3]> = serde_json::from_value(r["points"].clone()).unwrap();
         assert!((0..3).all(|k| (p[k] - q[0][k]).abs() < 1e-15), "{p:?} vs {:?}", q[0]);
     }
+}
+
+#[test]
+fn direct_interpolation_of_the_bivectors() {
+    // Two rotations about e3 at the origin: the logarithms commute, so halfway the direct
+    // interpolation is the rotation by the mean angle (Rodrigues), like wl-linear.
+    let two = |a: f64, b: f64, p: [f64; 3]| {
+        format!(
+            r#"{{"method": "METHOD", "poses": [{{"position": [0, 0, 0], "axis": [0, 0, 1], "angle": {a}}},
+            {{"position": {p:?}, "axis": [1, 0, 0], "angle": {b}}}], "samples": 3}}"#
+        )
+    };
+    let mid = |text: &str, method: &str| -> [[f64; 4]; 4] {
+        let v = run_json(&format!("direct-{method}-{}", text.len()), &text.replace("METHOD", method));
+        serde_json::from_value(v["samples"][1]["matrix"].clone()).unwrap()
+    };
+    let same_axis = r#"{"method": "METHOD", "poses": [{"position": [0, 0, 0], "axis": [0, 0, 1], "angle": 0.4},
+        {"position": [0, 0, 0], "axis": [0, 0, 1], "angle": 1.6}], "samples": 3}"#;
+    let want = rodrigues([0.0, 0.0, 1.0], 1.0, [0.0; 3]);
+    for method in ["wl-direct", "wl-linear"] {
+        let got = mid(same_axis, method);
+        let d = (0..4).flat_map(|r| (0..4).map(move |c| (got[r][c] - want[r][c]).abs())).fold(0.0, f64::max);
+        assert!(d < 1e-14, "{method}: {got:?}");
+    }
+    // A rotation and a screw about another axis: the generators do not commute, and halfway
+    // the direct interpolation differs from the relative-rotor one (the paper's closing remark).
+    let text = two(0.9, 1.3, [2.0, -1.0, 0.5]);
+    let (a, b) = (mid(&text, "wl-direct"), mid(&text, "wl-linear"));
+    let d = (0..4).flat_map(|r| (0..4).map(move |c| (a[r][c] - b[r][c]).abs())).fold(0.0, f64::max);
+    assert!(d > 1e-2, "wl-direct and wl-linear agree halfway: {a:?}");
 }

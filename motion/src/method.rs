@@ -45,6 +45,10 @@ pub enum Method {
     /// Wareham–Lasenby Sec. 3.2: quadratic in the bivectors `ℓ(R_i)`, smoothed for more than
     /// three poses ([`crate::wareham_lasenby::WlQuadratic`]).
     WlQuadratic,
+    /// Wareham–Lasenby Sec. 3.3: direct piecewise linear interpolation of the bivectors
+    /// `ℓ(R_i)`, then exp ([`crate::wareham_lasenby::WlBivectorLinear`]); differs from
+    /// `wl-linear` between the key poses unless the generators commute.
+    WlDirect,
     /// Angelidis (56): piecewise linear interpolation of the key poses' principal hexanions,
     /// then exp ([`crate::repr::hexanion::blend::HexanionLinear`]).
     HexanionLinear,
@@ -75,7 +79,7 @@ pub enum Method {
 pub const LATER: [(&str, u32); 0] = [];
 
 /// The implemented methods, as listed in messages.
-const IMPLEMENTED: &str = "ccm-additive, ccm-multiplicative, wl-linear, wl-quadratic, hexanion-linear, juttler-q-motion, juttler-affine, juttler-projective, juttler-trt, juttler-minimal, juttler-spline";
+const IMPLEMENTED: &str = "ccm-additive, ccm-multiplicative, wl-linear, wl-quadratic, wl-direct, hexanion-linear, juttler-q-motion, juttler-affine, juttler-projective, juttler-trt, juttler-minimal, juttler-spline";
 
 /// Why a method name was not accepted.
 ///
@@ -116,6 +120,7 @@ crate::names::named!("motion::method::Method", Method {
     CcmMultiplicative => "ccm-multiplicative",
     WlLinear => "wl-linear",
     WlQuadratic => "wl-quadratic",
+    WlDirect => "wl-direct",
     HexanionLinear => "hexanion-linear",
     JuttlerQMotion => "juttler-q-motion",
     JuttlerAffine => "juttler-affine",
@@ -145,9 +150,11 @@ impl Method {
             | Method::JuttlerTrt
             | Method::JuttlerMinimal
             | Method::JuttlerSpline => SegmentKind::Additive,
-            Method::CcmMultiplicative | Method::WlLinear | Method::WlQuadratic | Method::HexanionLinear => {
-                SegmentKind::Multiplicative
-            }
+            Method::CcmMultiplicative
+            | Method::WlLinear
+            | Method::WlQuadratic
+            | Method::WlDirect
+            | Method::HexanionLinear => SegmentKind::Multiplicative,
         }
     }
 
@@ -164,6 +171,7 @@ impl Method {
             Method::CcmMultiplicative => "multiplicative-bezier",
             Method::WlLinear => "wl-relative-rotor",
             Method::WlQuadratic => "wl-bivector-quadratic",
+            Method::WlDirect => "wl-bivector-linear",
             Method::HexanionLinear => "hexanion-linear",
             Method::JuttlerQMotion
             | Method::JuttlerAffine
@@ -191,6 +199,7 @@ impl Method {
             Method::JuttlerSpline => &["velocities"],
             Method::WlLinear
             | Method::WlQuadratic
+            | Method::WlDirect
             | Method::HexanionLinear
             | Method::JuttlerQMotion
             | Method::JuttlerAffine
@@ -209,6 +218,13 @@ impl Method {
     /// assert!(Method::JuttlerQMotion.is_rational() && !Method::WlLinear.is_rational());
     /// ```
     pub fn is_rational(self) -> bool {
-        !matches!(self, Method::CcmMultiplicative | Method::WlLinear | Method::WlQuadratic | Method::HexanionLinear)
+        !matches!(
+            self,
+            Method::CcmMultiplicative
+                | Method::WlLinear
+                | Method::WlQuadratic
+                | Method::WlDirect
+                | Method::HexanionLinear
+        )
     }
 }

@@ -29,7 +29,7 @@ use crate::repr::hexanion::Hexanion;
 use crate::repr::hexanion::blend::HexanionLinear;
 use crate::trajectory::{Trajectory, TrajectoryError, Velocities, align_signs};
 use crate::velocity::Twist;
-use crate::wareham_lasenby::{WlError, WlLinear, WlMotion, WlQuadratic};
+use crate::wareham_lasenby::{WlBivectorLinear, WlError, WlLinear, WlMotion, WlQuadratic};
 use crate::{CurveError, HermiteShapes, JoinError, Motion, Piecewise, Pose};
 use algebra_core::{Real, Ring};
 
@@ -277,9 +277,10 @@ impl Method {
         let times = input.parameters.values(&poses)?;
         let (segments, motion) = match self {
             Method::CcmAdditive | Method::CcmMultiplicative => self.hermite(input, &poses, &times)?,
-            Method::WlLinear | Method::WlQuadratic => {
+            Method::WlLinear | Method::WlQuadratic | Method::WlDirect => {
                 let wl = match self {
                     Method::WlLinear => WlMotion::Linear(WlLinear::new(&poses, &times)?),
+                    Method::WlDirect => WlMotion::Direct(WlBivectorLinear::new(&poses, &times)?),
                     _ => WlMotion::Quadratic(WlQuadratic::new(&poses, &times)?),
                 };
                 let segments = (0..m - 1).map(|k| self.key_pose_segment(&poses, &times, k, None)).collect();

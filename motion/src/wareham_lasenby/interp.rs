@@ -348,6 +348,8 @@ pub enum WlMotion<T: Ring> {
     Linear(WlLinear<T>),
     /// `wl-quadratic` (Sec. 3.2, smoothed for more than 3 poses).
     Quadratic(WlQuadratic<T>),
+    /// `wl-direct` (Sec. 3.3).
+    Direct(WlBivectorLinear<T>),
 }
 
 impl<T: Real> Motion<T> for WlMotion<T> {
@@ -355,12 +357,14 @@ impl<T: Real> Motion<T> for WlMotion<T> {
         match self {
             WlMotion::Linear(m) => m.evaluate(t),
             WlMotion::Quadratic(m) => m.evaluate(t),
+            WlMotion::Direct(m) => m.evaluate(t),
         }
     }
     fn domain(&self) -> [T; 2] {
         match self {
             WlMotion::Linear(m) => m.domain(),
             WlMotion::Quadratic(m) => m.domain(),
+            WlMotion::Direct(m) => m.domain(),
         }
     }
 }
@@ -371,6 +375,7 @@ impl<T: Real, U: Real> MapScalar<T, U> for WlMotion<T> {
         match self {
             WlMotion::Linear(m) => WlMotion::Linear(m.map_scalar(f)),
             WlMotion::Quadratic(m) => WlMotion::Quadratic(m.map_scalar(f)),
+            WlMotion::Direct(m) => WlMotion::Direct(m.map_scalar(f)),
         }
     }
 }
