@@ -158,7 +158,8 @@ impl Tableau {
             | Method::WlLinear
             | Method::WlQuadratic
             | Method::WlDirect
-            | Method::HexanionLinear => Tableau::Linear,
+            | Method::HexanionLinear
+            | Method::HexanionDecoupled => Tableau::Linear,
         }
     }
 

@@ -81,7 +81,8 @@ enum Command {
         spec: String,
     },
     /// A motion through key poses by a named method: ccm-additive, ccm-multiplicative,
-    /// wl-linear, wl-quadratic, wl-direct, hexanion-linear, juttler-q-motion, juttler-affine,
+    /// wl-linear, wl-quadratic, wl-direct, hexanion-linear, hexanion-decoupled, juttler-q-motion,
+    /// juttler-affine,
     /// juttler-projective, juttler-trt, juttler-minimal, juttler-spline (docs/cli.md, "gam
     /// interpolate").
     Interpolate {

@@ -124,3 +124,72 @@ fn errors() {
     );
     assert!(e.contains("poses[1]"), "{e}");
 }
+
+/// Key poses of the decoupled motion: (axis, angle, position), turns below a half turn
+/// between neighbours.
+const DECOUPLED: [([f64; 3], f64, [f64; 3]); 3] = [
+    ([0.0, 0.0, 1.0], 0.0, [0.0, 0.0, 0.0]),
+    ([0.0, 0.0, 1.0], 1.2, [2.0, 1.0, 0.0]),
+    ([1.0, 1.0, 0.0], 1.0, [3.0, 3.0, 1.0]),
+];
+
+fn decoupled_spec(shift: [f64; 3]) -> String {
+    let poses: Vec<String> = DECOUPLED
+        .iter()
+        .map(|(a, phi, t)| {
+            let t: [f64; 3] = std::array::from_fn(|k| t[k] + shift[k]);
+            format!(r#"{{"position": {t:?}, "axis": {a:?}, "angle": {phi}}}"#)
+        })
+        .collect();
+    format!(
+        r#"{{"method": "hexanion-decoupled", "poses": [{}], "samples": 21, "body_points": [[0, 0, 0], [0.5, -1, 2]]}}"#,
+        poses.join(", ")
+    )
+}
+
+#[test]
+fn decoupled_motion_moves_the_origin_straight() {
+    let v = run_json("decoupled", &decoupled_spec([0.0; 3]));
+    let samples = v["samples"].as_array().unwrap();
+    // through every key pose (samples at t = 0, 0.1, ..., 2: keys at 0, 10, 20)
+    for (k, (axis, phi, pos)) in DECOUPLED.iter().enumerate() {
+        let got: M4 = serde_json::from_value(samples[10 * k]["matrix"].clone()).unwrap();
+        assert!(max_diff(&got, &rodrigues(*axis, *phi, *pos)) < 1e-13, "key {k}: {got:?}");
+    }
+    for (i, s) in samples.iter().enumerate() {
+        // the body origin on the straight segment between the key positions, linear in t
+        let (seg, u) = ((i / 10).min(1), (i as f64 - 10.0 * ((i / 10).min(1)) as f64) / 10.0);
+        let (a, b) = (DECOUPLED[seg].2, DECOUPLED[seg + 1].2);
+        let p: [f64; 3] = serde_json::from_value(s["points"][0].clone()).unwrap();
+        for k in 0..3 {
+            assert!((p[k] - (a[k] + u * (b[k] - a[k]))).abs() < 1e-12, "t = {}: {p:?}", s["t"]);
+        }
+    }
+    // on the first segment both keys turn about e3 (by 0 and 1.2): a constant |Ω| = 1.2/Δt
+    let dt = samples[10]["t"].as_f64().unwrap() - samples[0]["t"].as_f64().unwrap();
+    for s in &samples[1..10] {
+        let w: [f64; 3] = serde_json::from_value(s["angular_velocity"].clone()).unwrap();
+        let n = w.iter().map(|x| x * x).sum::<f64>().sqrt();
+        assert!((n - 1.2 / dt).abs() < 1e-12 && w[0].abs() < 1e-12 && w[1].abs() < 1e-12, "{w:?}");
+    }
+    // moving every key pose by the same translation moves the motion by it
+    let shift = [5.0, -3.0, 2.0];
+    let moved = run_json("decoupled-moved", &decoupled_spec(shift));
+    for (s, t) in samples.iter().zip(moved["samples"].as_array().unwrap()) {
+        let (a, b): (M4, M4) = (
+            serde_json::from_value(s["matrix"].clone()).unwrap(),
+            serde_json::from_value(t["matrix"].clone()).unwrap(),
+        );
+        for r in 0..3 {
+            for c in 0..3 {
+                assert!((a[r][c] - b[r][c]).abs() < 1e-12);
+            }
+            assert!((a[r][3] + shift[r] - b[r][3]).abs() < 1e-12);
+        }
+    }
+    // velocities (dual numbers) against differences of the points, 2001 samples
+    let fine = run_json("decoupled-fine", &decoupled_spec([0.0; 3]).replace(r#""samples": 21"#, r#""samples": 2001"#));
+    let fine = fine["samples"].as_array().unwrap();
+    let h = fine[1]["t"].as_f64().unwrap() - fine[0]["t"].as_f64().unwrap();
+    assert_velocities_match_differences("hexanion-decoupled", fine, h, &[150, 700, 1300, 1900]);
+}

@@ -52,6 +52,10 @@ pub enum Method {
     /// Angelidis (56): piecewise linear interpolation of the key poses' principal hexanions,
     /// then exp ([`crate::repr::hexanion::blend::HexanionLinear`]).
     HexanionLinear,
+    /// Angelidis (58)-(60): between consecutive key poses the body origin moves straight while
+    /// the body turns at a constant rate about it
+    /// ([`crate::repr::hexanion::blend::HexanionDecoupled`]).
+    HexanionDecoupled,
     /// Jüttler's Algorithm 1: one Q-motion of degree `2m` through the `m + 1` key poses, the
     /// elliptic rotation (23)-(25) composed with the TR translation (30)-(31)
     /// ([`crate::juttler::tr::algorithm1`]).
@@ -79,7 +83,7 @@ pub enum Method {
 pub const LATER: [(&str, u32); 0] = [];
 
 /// The implemented methods, as listed in messages.
-const IMPLEMENTED: &str = "ccm-additive, ccm-multiplicative, wl-linear, wl-quadratic, wl-direct, hexanion-linear, juttler-q-motion, juttler-affine, juttler-projective, juttler-trt, juttler-minimal, juttler-spline";
+const IMPLEMENTED: &str = "ccm-additive, ccm-multiplicative, wl-linear, wl-quadratic, wl-direct, hexanion-linear, hexanion-decoupled, juttler-q-motion, juttler-affine, juttler-projective, juttler-trt, juttler-minimal, juttler-spline";
 
 /// Why a method name was not accepted.
 ///
@@ -122,6 +126,7 @@ crate::names::named!("motion::method::Method", Method {
     WlQuadratic => "wl-quadratic",
     WlDirect => "wl-direct",
     HexanionLinear => "hexanion-linear",
+    HexanionDecoupled => "hexanion-decoupled",
     JuttlerQMotion => "juttler-q-motion",
     JuttlerAffine => "juttler-affine",
     JuttlerProjective => "juttler-projective",
@@ -154,7 +159,8 @@ impl Method {
             | Method::WlLinear
             | Method::WlQuadratic
             | Method::WlDirect
-            | Method::HexanionLinear => SegmentKind::Multiplicative,
+            | Method::HexanionLinear
+            | Method::HexanionDecoupled => SegmentKind::Multiplicative,
         }
     }
 
@@ -173,6 +179,7 @@ impl Method {
             Method::WlQuadratic => "wl-bivector-quadratic",
             Method::WlDirect => "wl-bivector-linear",
             Method::HexanionLinear => "hexanion-linear",
+            Method::HexanionDecoupled => "hexanion-decoupled",
             Method::JuttlerQMotion
             | Method::JuttlerAffine
             | Method::JuttlerProjective
@@ -201,6 +208,7 @@ impl Method {
             | Method::WlQuadratic
             | Method::WlDirect
             | Method::HexanionLinear
+            | Method::HexanionDecoupled
             | Method::JuttlerQMotion
             | Method::JuttlerAffine
             | Method::JuttlerProjective

@@ -26,7 +26,7 @@ use crate::juttler::{JuttlerError, KeyVelocity, Parametrisation, QMotion, parame
 use crate::repr::ReprError;
 use crate::repr::dual_quaternion::to_dual_quaternion_exact;
 use crate::repr::hexanion::Hexanion;
-use crate::repr::hexanion::blend::HexanionLinear;
+use crate::repr::hexanion::blend::{HexanionDecoupled, HexanionLinear};
 use crate::trajectory::{Trajectory, TrajectoryError, Velocities, align_signs};
 use crate::velocity::Twist;
 use crate::wareham_lasenby::{WlBivectorLinear, WlError, WlLinear, WlMotion, WlQuadratic};
@@ -295,6 +295,11 @@ impl Method {
                     })
                     .collect();
                 (segments, MethodMotion::Hexanion(h))
+            }
+            Method::HexanionDecoupled => {
+                let d = HexanionDecoupled::through(&poses, &times)?;
+                let segments = (0..m - 1).map(|k| self.key_pose_segment(&poses, &times, k, None)).collect();
+                (segments, MethodMotion::Decoupled(d))
             }
             Method::JuttlerQMotion
             | Method::JuttlerAffine

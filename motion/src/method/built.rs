@@ -10,7 +10,7 @@ use crate::juttler::minimal::MinimalMotion;
 use crate::juttler::{QMotion, RationalBezier, RationalMotion};
 use crate::repr::dual_quaternion::DualQuaternion;
 use crate::repr::hexanion::Hexanion;
-use crate::repr::hexanion::blend::HexanionLinear;
+use crate::repr::hexanion::blend::{HexanionDecoupled, HexanionLinear};
 use crate::trajectory::{TrajectoryError, TrajectorySample, sample_motion};
 use crate::wareham_lasenby::WlMotion;
 use crate::{AnyMotion, CurveError, MapScalar, Motion, Piecewise, Pose};
@@ -89,6 +89,8 @@ pub enum MethodMotion<T: Ring> {
     Wl(WlMotion<T>),
     /// `hexanion-linear`.
     Hexanion(HexanionLinear<T>),
+    /// `hexanion-decoupled`.
+    Decoupled(HexanionDecoupled<T>),
     /// `juttler-q-motion`, `juttler-trt`, `juttler-spline`: Q-motions (eq. 13) at their
     /// breakpoints (one segment for Algorithm 1 and TRT, one per interval for Algorithm 2).
     QMotions(Piecewise<T, QMotion<T>>),
@@ -102,6 +104,7 @@ impl<T: Real> Motion<T> for MethodMotion<T> {
             MethodMotion::Bezier(m) => m.evaluate(t),
             MethodMotion::Wl(m) => m.evaluate(t),
             MethodMotion::Hexanion(m) => m.evaluate(t),
+            MethodMotion::Decoupled(m) => m.evaluate(t),
             MethodMotion::QMotions(m) => m.evaluate(t),
             MethodMotion::Minimal(m) => m.evaluate(t),
         }
@@ -112,6 +115,7 @@ impl<T: Real> Motion<T> for MethodMotion<T> {
             MethodMotion::Bezier(m) => m.domain(),
             MethodMotion::Wl(m) => m.domain(),
             MethodMotion::Hexanion(m) => m.domain(),
+            MethodMotion::Decoupled(m) => m.domain(),
             MethodMotion::QMotions(m) => m.domain(),
             MethodMotion::Minimal(m) => m.domain(),
         }
@@ -125,6 +129,7 @@ impl<T: Real, U: Real> MapScalar<T, U> for MethodMotion<T> {
             MethodMotion::Bezier(m) => MethodMotion::Bezier(m.map_scalar(f)),
             MethodMotion::Wl(m) => MethodMotion::Wl(m.map_scalar(f)),
             MethodMotion::Hexanion(m) => MethodMotion::Hexanion(m.map_scalar(f)),
+            MethodMotion::Decoupled(m) => MethodMotion::Decoupled(m.map_scalar(f)),
             MethodMotion::QMotions(m) => MethodMotion::QMotions(m.map_scalar(f)),
             MethodMotion::Minimal(m) => MethodMotion::Minimal(m.map_scalar(f)),
         }

@@ -1,7 +1,8 @@
 //! Motions from hexanions (Angelidis Sec. 7): the linear interpolation (56), the weighted
 //! blend (57), the decoupled translation + rotation motion (58)-(60), and
 //! [`HexanionLinear`], the piecewise linear interpolation (56) of the principal hexanions of
-//! key poses (method `hexanion-linear` of `gam interpolate`).
+//! key poses (method `hexanion-linear` of `gam interpolate`), and [`HexanionDecoupled`], the
+//! decoupled motion (58)-(60) between consecutive key poses (method `hexanion-decoupled`).
 //!
 //! Note on (60): as printed, `C(p, u) = p + u m + (1 - cos|uω|)/|uω|² ω × ξ + sin|uω|/|uω| ξ`
 //! with `ξ = ω × (p - c)` lacks the factors `u²` and `u` that the rotation by `uω` about `c`
@@ -223,5 +224,96 @@ impl<T: Real, U: Real> MapScalar<T, U> for HexanionLinear<T> {
     fn map_scalar(&self, f: &dyn Fn(&T) -> U) -> HexanionLinear<U> {
         let h = |x: &Hexanion<T>| Hexanion::new(x.omega.clone().map(|c| f(&c)), x.m.clone().map(|c| f(&c)));
         HexanionLinear { times: self.times.iter().map(f).collect(), hexanions: self.hexanions.iter().map(h).collect() }
+    }
+}
+
+/// Angelidis' decoupled motion (58)-(60) through key poses: on `[t_i, t_(i+1)]` the body
+/// origin moves on the straight line from its key position to the next while the body turns
+/// at a constant rate about it, by the relative rotation's principal rotation vector (at most
+/// a half turn): with `A, B` the key poses, `c = A(0)`, `m = B(0) - c` and `ω` the rotation of
+/// `A⁻¹ B` (`A` first), the pose at `u = (t - t_i)/(t_(i+1) - t_i)` is `A` then
+/// [`Decoupled`]`{ω, m, c}` at `u`. Through every key pose; unlike `hexanion-linear` it does
+/// not depend on where the fixed frame's origin is, but on the body's (its origin moves
+/// straight).
+///
+/// ```
+/// use motion::{Motion, Pose, repr::hexanion::blend::HexanionDecoupled};
+/// let a = Pose::<f64>::identity();
+/// let b = Pose::from_axis_angle_translation(&[0.0, 0.0, 1.0], &1.0, &[2.0, 0.0, 0.0]).unwrap();
+/// let m = HexanionDecoupled::through(&[a, b], &[0.0, 1.0]).unwrap();
+/// // halfway: the body origin at (1, 0, 0), turned by half the angle
+/// let p = m.pose(&0.5).unwrap().transform_point(&[0.0; 3]).unwrap();
+/// assert!((p[0] - 1.0).abs() < 1e-15 && p[1].abs() < 1e-15);
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct HexanionDecoupled<T: Ring> {
+    times: Vec<T>,
+    starts: Vec<Pose<T>>,
+    parts: Vec<Decoupled<T>>,
+}
+
+impl<T: Real> HexanionDecoupled<T> {
+    /// The motion through `poses` at `times` (at least two poses; times finite and strictly
+    /// increasing; as many as poses). Fails for a singular or non-finite pose.
+    ///
+    /// ```
+    /// use motion::{Pose, repr::hexanion::blend::HexanionDecoupled};
+    /// assert!(HexanionDecoupled::<f64>::through(&[Pose::identity()], &[0.0]).is_err());
+    /// ```
+    pub fn through(poses: &[Pose<T>], times: &[T]) -> Result<Self, ReprError> {
+        if poses.len() < 2 {
+            return Err(CurveError::TooFewPoses { need: 2, got: poses.len() }.into());
+        }
+        crate::repr::check_times(times, poses.len())?;
+        let origin = [T::zero(), T::zero(), T::zero()];
+        let mut parts = Vec::with_capacity(poses.len() - 1);
+        for w in poses.windows(2) {
+            let (a, b) = (&w[0], &w[1]);
+            let relative = a.try_inverse()?.then(b);
+            let omega = Hexanion::from_pose(&relative)?.omega;
+            let c = a.transform_point(&origin)?;
+            let m = sub(&b.transform_point(&origin)?, &c);
+            parts.push(Decoupled { omega, m, centre: c });
+        }
+        Ok(HexanionDecoupled { times: times.to_vec(), starts: poses[..poses.len() - 1].to_vec(), parts })
+    }
+
+    /// The decoupled motions of the segments.
+    ///
+    /// ```
+    /// use motion::{Pose, repr::hexanion::blend::HexanionDecoupled};
+    /// let m = HexanionDecoupled::through(&[Pose::<f64>::identity(), Pose::translation(&[0.0, 3.0, 0.0])], &[0.0, 1.0]).unwrap();
+    /// assert_eq!(m.parts()[0].m, [0.0, 3.0, 0.0]);
+    /// ```
+    pub fn parts(&self) -> &[Decoupled<T>] {
+        &self.parts
+    }
+}
+
+impl<T: Real> Motion<T> for HexanionDecoupled<T> {
+    fn evaluate(&self, t: &T) -> Result<Pose<T>, CurveError> {
+        let n = self.times.len();
+        let i = (0..n - 2).find(|&i| *t < self.times[i + 1]).unwrap_or(n - 2);
+        let u = t.sub_ref(&self.times[i]).div_ref(&self.times[i + 1].sub_ref(&self.times[i]));
+        Ok(self.starts[i].then(&self.parts[i].pose_at(&u)?))
+    }
+    fn domain(&self) -> [T; 2] {
+        [self.times[0].clone(), self.times[self.times.len() - 1].clone()]
+    }
+}
+
+impl<T: Real, U: Real> MapScalar<T, U> for HexanionDecoupled<T> {
+    type Mapped = HexanionDecoupled<U>;
+    fn map_scalar(&self, f: &dyn Fn(&T) -> U) -> HexanionDecoupled<U> {
+        let v = |x: &[T; 3]| x.clone().map(|c| f(&c));
+        HexanionDecoupled {
+            times: self.times.iter().map(f).collect(),
+            starts: self.starts.iter().map(|p| p.map_scalar(f)).collect(),
+            parts: self
+                .parts
+                .iter()
+                .map(|d| Decoupled { omega: v(&d.omega), m: v(&d.m), centre: v(&d.centre) })
+                .collect(),
+        }
     }
 }
