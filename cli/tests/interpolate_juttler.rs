@@ -415,6 +415,16 @@ fn projective_rotations_with_tr() {
         assert!(max_diff(&got, &rodrigues(*axis, *phi, *pos)) < 1e-12, "key {k}: {got:?}");
     }
     let spec = TempFile::new("interp-jq-projective-traj.json", &text);
+    // gam plot draws it in every view (the paths end at the first and last key positions)
+    for view in ["xy", "3d"] {
+        let out = TempFile::empty(&format!("interp-jq-projective-{view}.svg"));
+        let data: Value =
+            serde_json::from_str(&ok(&["plot", "--json", "--out", out.path(), spec.path(), "--view", view])).unwrap();
+        let path = data["series"][0]["paths"][0].as_array().unwrap();
+        let end: [f64; 3] = serde_json::from_value(path[path.len() - 1].clone()).unwrap();
+        assert!((0..3).all(|k| (end[k] - five[4].2[k]).abs() < 1e-9), "{end:?}");
+        assert!(std::fs::read_to_string(out.path()).unwrap().starts_with("<svg"));
+    }
     let t: Value = serde_json::from_str(&ok(&["trajectory", "--json", spec.path(), "--point", "0,0,1"])).unwrap();
     assert_eq!(t["segments"][0]["degree"], 2 * 7);
     // four poses: the projective method needs m divisible by 4

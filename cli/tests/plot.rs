@@ -223,7 +223,8 @@ fn accelerations_match_second_differences_of_the_path() {
 #[test]
 fn every_method_plots_in_every_view() {
     let methods = motion::method::Method::ALL.map(|m| m.name());
-    for method in methods {
+    // juttler-projective takes 5, 9, ... poses, not these three: plotted in interpolate_juttler.rs
+    for method in methods.into_iter().filter(|m| *m != "juttler-projective") {
         let file = TempFile::new(&format!("plot-{method}.json"), &spec(method, false));
         for view in ["xy", "xz", "yz", "3d"] {
             let (data, svg) = plot(&format!("plot-{method}-{view}"), &[file.path(), "--view", view, "--frames", "3"]);
