@@ -104,7 +104,7 @@ fn trt_errors_are_typed() {
             system: "(34)",
             rank: 6,
             unknowns: 9,
-            why: "the positions do not determine both translation curves (e.g. some share an orientation)"
+            why: "the positions do not determine both translation curves (their relative rotations share an axis, as in a planar motion)"
         })
     );
 }
