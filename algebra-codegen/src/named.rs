@@ -259,6 +259,48 @@ impl Ctx {
         out
     }
 
+    /// Adds `translator`, `rotor`, `motor` and the rotation about a line (3D) or point (2D),
+    /// for the null vector `null` of the translations and the signs found for them.
+    fn rigid_motions(
+        &self,
+        euclid: &[usize],
+        (null, t_sign, r_sign): (&Multivector<Q>, &Q, &Q),
+        translator_doc: &str,
+        add: &mut dyn FnMut(&'static str, Vec<Param>, Pieces, String),
+    ) {
+        let n = euclid.len();
+        let translator = self.translator(null, euclid, 0, t_sign);
+        add("translator", vec![Param::Array("t", n)], translator.clone(), translator_doc.into());
+        let rotor = self.rotor(euclid, r_sign);
+        let (rotor_params, motor_params) = if n == 3 {
+            (vec![Param::Axis(3), Param::Angle], vec![Param::Axis(3), Param::Angle, Param::Array("t", 3)])
+        } else {
+            (vec![Param::Angle], vec![Param::Angle, Param::Array("t", 2)])
+        };
+        add("rotor", rotor_params, rotor.clone(), rotor_doc(n, "point"));
+        // the motor's translation is its only array parameter (index 0), after axis and angle
+        add(
+            "motor",
+            motor_params,
+            self.product(&translator, &rotor, Product::Geometric),
+            "The rigid motion `x ↦ R x + t` (rotate by `angle` about the axis through the origin, then translate by `t`): `translator(t) rotor(..)`; `apply` (`x ↦ S x rev(S)`) moves points by it.".into(),
+        );
+        // about the line (point) through p: translator(p) rotor translator(-p)
+        let back: Pieces = translator
+            .iter()
+            .map(|(atoms, mv)| (atoms.clone(), if atoms.is_empty() { mv.clone() } else { mv.scale(&-Q::one()) }))
+            .collect();
+        let about = self.product(&self.product(&translator, &rotor, Product::Geometric), &back, Product::Geometric);
+        let (name, params, what) = if n == 3 {
+            ("rotor_about_line", vec![Param::Array("p", 3), Param::Axis(3), Param::Angle], "axis `axis`")
+        } else {
+            ("rotor_about_point", vec![Param::Array("p", 2), Param::Angle], "point")
+        };
+        let doc =
+            format!("The rotation by `angle` about the {what} through `p`: `translator(p) rotor(..) translator(-p)`.");
+        add(name, params, about, doc);
+    }
+
     /// The multivector of `pieces` with every atom set to the value `at` gives it.
     fn eval(&self, pieces: &Pieces, at: impl Fn(Atom) -> Q) -> Multivector<Q> {
         let mut acc = self.scalar(Q::zero());
@@ -404,66 +446,8 @@ pub fn constructors(spec: &ModuleSpec, declared: usize) -> Result<Vec<Constructo
                 "The line through the points `p` and `q`: their join `point(p) ∨ point(q)` (the regressive product)."
                     .into(),
             );
-            let translator = ctx.translator(&ctx.generator(null), &euclid, 0, &t_sign);
-            add(
-                "translator",
-                vec![Param::Array("t", n)],
-                translator.clone(),
-                "The translation by `t`: `apply` (`x ↦ S x rev(S)`) moves every point by `+t`.".into(),
-            );
-            let rotor = ctx.rotor(&euclid, &r_sign);
-            let (rotor_params, motor_params) = if n == 3 {
-                (vec![Param::Axis(3), Param::Angle], vec![Param::Axis(3), Param::Angle, Param::Array("t", 3)])
-            } else {
-                (vec![Param::Angle], vec![Param::Angle, Param::Array("t", 2)])
-            };
-            add("rotor", rotor_params.clone(), rotor.clone(), rotor_doc(n, "point"));
-            let translate_param = |pieces: &Pieces, to: usize| -> Pieces {
-                pieces
-                    .iter()
-                    .map(|(atoms, mv)| {
-                        (
-                            atoms
-                                .iter()
-                                .map(|a| if let Atom::Param(0, k) = a { Atom::Param(to, *k) } else { *a })
-                                .collect(),
-                            mv.clone(),
-                        )
-                    })
-                    .collect()
-            };
-            // the motor's translation is its last parameter: index 0 (the only array) after
-            // the axis and angle
-            let t_motor = translate_param(&translator, 0);
-            add(
-                "motor",
-                motor_params,
-                ctx.product(&t_motor, &rotor, Product::Geometric),
-                "The rigid motion `x ↦ R x + t` (rotate by `angle` about `axis` through the origin, then translate by `t`): `translator(t) rotor(axis, angle)`; `apply` (`x ↦ S x rev(S)`) moves points by it.".into(),
-            );
-            // about the line through p: translator(p) rotor translator(-p)
-            let back: Pieces = translator
-                .iter()
-                .map(|(atoms, mv)| {
-                    let neg = if atoms.is_empty() { mv.clone() } else { mv.scale(&-Q::one()) };
-                    (atoms.clone(), neg)
-                })
-                .collect();
-            let about = ctx.product(&ctx.product(&translator, &rotor, Product::Geometric), &back, Product::Geometric);
-            let (about_name, about_params) = if n == 3 {
-                ("rotor_about_line", vec![Param::Array("p", 3), Param::Axis(3), Param::Angle])
-            } else {
-                ("rotor_about_point", vec![Param::Array("p", 2), Param::Angle])
-            };
-            add(
-                about_name,
-                about_params,
-                about,
-                format!(
-                    "The rotation by `angle` about the {} through `p`: `translator(p) rotor(..) translator(-p)`.",
-                    if n == 3 { "axis `axis`" } else { "point" }
-                ),
-            );
+            let doc = "The translation by `t`: `apply` (`x ↦ S x rev(S)`) moves every point by `+t`.";
+            ctx.rigid_motions(&euclid, (&ctx.generator(null), &t_sign, &r_sign), doc, &mut add);
         }
         Geometry::Cga { euclid, origin, infinity } => {
             let n = euclid.len();
@@ -534,43 +518,14 @@ pub fn constructors(spec: &ModuleSpec, declared: usize) -> Result<Vec<Constructo
                     "The dual {name} `normal · x = distance`: `normal + distance ∞`; `up(x) · {name}` is `normal · x - distance`."
                 ),
             );
-            let translator = ctx.translator(&inf, &euclid, 0, &t_sign);
-            add(
-                "translator",
-                vec![Param::Array("t", n)],
-                translator.clone(),
-                "The translation by `t`: `1 ± (1/2) t ∞`, the sign chosen so that `apply` (`x ↦ S x rev(S)`) moves `up(p)` to `up(p + t)`.".into(),
-            );
-            let rotor = ctx.rotor(&euclid, &r_sign);
-            let (rotor_params, motor_params) = if n == 3 {
-                (vec![Param::Axis(3), Param::Angle], vec![Param::Axis(3), Param::Angle, Param::Array("t", 3)])
-            } else {
-                (vec![Param::Angle], vec![Param::Angle, Param::Array("t", 2)])
-            };
-            add("rotor", rotor_params, rotor.clone(), rotor_doc(n, "point"));
-            add(
-                "motor",
-                motor_params,
-                ctx.product(&translator, &rotor, Product::Geometric),
-                "The rigid motion `x ↦ R x + t`: `translator(t) rotor(..)`; `apply` moves points by it.".into(),
-            );
             add(
                 "dilator",
                 vec![Param::Scale],
                 dilator(&d_sign),
                 "The scaling by `scale > 0` about the origin: `cosh(ln(scale)/2) ± sinh(ln(scale)/2) o∧∞`, the sign chosen so that `apply` takes `up(p)` to a positive multiple of `up(scale p)` (normalise with `down`). An error for a scale that is not positive and finite.".into(),
             );
-            let back: Pieces = translator
-                .iter()
-                .map(|(atoms, mv)| (atoms.clone(), if atoms.is_empty() { mv.clone() } else { mv.scale(&-Q::one()) }))
-                .collect();
-            let about = ctx.product(&ctx.product(&translator, &rotor, Product::Geometric), &back, Product::Geometric);
-            let (about_name, about_params) = if n == 3 {
-                ("rotor_about_line", vec![Param::Array("p", 3), Param::Axis(3), Param::Angle])
-            } else {
-                ("rotor_about_point", vec![Param::Array("p", 2), Param::Angle])
-            };
-            add(about_name, about_params, about, "The rotation by `angle` about the axis (3D) or point (2D) through `p`: `translator(p) rotor(..) translator(-p)`.".into());
+            let doc = "The translation by `t`: `1 ± (1/2) t ∞`, the sign chosen so that `apply` (`x ↦ S x rev(S)`) moves `up(p)` to `up(p + t)`.";
+            ctx.rigid_motions(&euclid, (&inf, &t_sign, &r_sign), doc, &mut add);
         }
     }
     Ok(out)
