@@ -170,7 +170,7 @@ fn every_figure_reads_cleanly() {
         read(path, &svg, !path.ends_with("juttler_fig5b.svg"));
         count += 1;
     }
-    assert_eq!(count, 19);
+    assert_eq!(count, 21);
     let _ = std::fs::remove_dir_all(&dir);
 }
 

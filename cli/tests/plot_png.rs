@@ -144,7 +144,7 @@ fn figures_in_png_are_the_svg_gallery_as_images() {
     std::fs::create_dir_all(&svgs).expect("a temp dir");
     ok(&["figures", "--out", svgs.to_str().expect("utf-8")]);
     let files: Vec<&str> = lines.lines().map(|l| l.split(": ").next().unwrap().trim_start_matches("wrote ")).collect();
-    assert_eq!(files.len(), 19, "{lines}");
+    assert_eq!(files.len(), 21, "{lines}");
     for f in &files {
         assert!(f.ends_with(".png"), "{f}");
         let img = decode(&std::fs::read(f).expect("written"));

@@ -2,7 +2,8 @@
 //!
 //! | file | paper | motion |
 //! |---|---|---|
-//! | `wl_fig5.svg` | Fig. 5 | a) piecewise-linear ([`WlLinear`], Sec. 3.1) and b) quadratic ([`WlQuadratic`], Sec. 3.2) interpolation of the three poses [`FIG5_POSES`] at `t = 0, 1, 2` |
+//! | `wl_fig5.svg` | Fig. 5 | a) piecewise-linear ([`WlLinear`], Sec. 3.1) and b) quadratic ([`WlQuadratic`], Sec. 3.2) interpolation of the three poses [`FIG5_POSES`] at `t = 0, 1, 2`, overlaid |
+//! | `wl_fig5a.svg`, `wl_fig5b.svg` | Fig. 5 a), b) | each on its own, as the paper's two panels |
 //! | `wl_fig7.svg` | Fig. 7 | the screw path `R_λ = exp(λB)`, `0 ≤ λ ≤ 1`, of `B` with `ψ = 9π`, `t∥ = 4a + 6b`, `|t⊥| = 1` ([`fig7_generator`]), with the vectors `t⊥`, `t'∥` ([`fig7_t_par_prime`]) and `t∥` |
 //!
 //! The paper does not print its three "representative poses"; [`FIG5_POSES`] are ours.
@@ -107,6 +108,8 @@ pub(super) fn figures() -> Result<Vec<Figure>, CliError> {
         series("a) piecewise linear", &linear, times.clone(), (5, true))?,
         series("b) quadratic", &quadratic, times, (5, true))?,
     ];
+    // the paper's two panels, each on its own (the overlay above compares them)
+    let (fig5a, fig5b) = (vec![fig5[0].clone()], vec![fig5[1].clone()]);
     let b = fig7_generator()?;
     let keys = (0..=10).map(|k| b.scale(&(f64::from(k) / 10.0)).exp().map(|r| to_pose(&r)));
     let keys = keys.collect::<Result<Vec<_>, _>>().map_err(math)?;
@@ -121,6 +124,13 @@ pub(super) fn figures() -> Result<Vec<Figure>, CliError> {
             View::Xy,
             fig5,
         ),
+        (
+            "wl_fig5a.svg",
+            "Wareham-Lasenby Fig. 5a: piecewise-linear interpolation of three poses".into(),
+            View::Xy,
+            fig5a,
+        ),
+        ("wl_fig5b.svg", "Wareham-Lasenby Fig. 5b: quadratic interpolation of three poses".into(), View::Xy, fig5b),
         (
             "wl_fig7.svg",
             "Wareham-Lasenby Fig. 7: the screw path of exp(lambda B), t_par = 4a + 6b, psi = 9 pi, |t_perp| = 1".into(),
