@@ -9,22 +9,17 @@ use std::collections::BTreeMap;
 use std::sync::Arc;
 
 /// Why a module specification was rejected.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[derive(Debug, Clone, PartialEq)]
 pub enum CodegenError {
     /// No types declared.
-    #[error("declare at least one type")]
     NoTypes,
     /// A type name that is not a Rust type identifier.
-    #[error("`{0}` is not a valid type name (use an identifier starting with an uppercase letter)")]
     InvalidTypeName(String),
     /// The same type name twice.
-    #[error("type `{0}` is declared twice")]
     DuplicateType(String),
     /// A type with no elements.
-    #[error("type `{0}` has no basis elements")]
     EmptyType(String),
     /// An element listed twice in one type.
-    #[error("type `{ty}` lists `{element}` twice")]
     DuplicateElement {
         /// The type.
         ty: String,
@@ -32,10 +27,8 @@ pub enum CodegenError {
         element: String,
     },
     /// Two types with exactly the same elements (the output-type choice would be ambiguous).
-    #[error("types `{0}` and `{1}` have the same basis elements")]
     SameElements(String, String),
     /// An element that is not a basis name of the algebra.
-    #[error("type `{ty}`: unknown basis element `{element}` (generators: {labels})")]
     UnknownElement {
         /// The type.
         ty: String,
@@ -45,7 +38,6 @@ pub enum CodegenError {
         labels: String,
     },
     /// A grade outside `0..=n`.
-    #[error("type `{ty}`: grade {grade} does not exist in an algebra with {n} generators")]
     BadGrade {
         /// The type.
         ty: String,
@@ -55,15 +47,9 @@ pub enum CodegenError {
         n: usize,
     },
     /// A malformed `--types` string.
-    #[error(
-        "bad type list `{0}`: expected `Name=elements;Name=elements` with elements `grade K`, `even`, `odd`, `all` or a comma list of basis names"
-    )]
     BadTypeList(String),
     /// A reordered basis name (`e20`) in the product basis, where reordering generators is
     /// not a sign change in general.
-    #[error(
-        "type `{ty}`: `{element}` reorders the generators of a basis element; orientation-aware names need the blade basis"
-    )]
     OrientedInProductBasis {
         /// The type.
         ty: String,
@@ -71,7 +57,6 @@ pub enum CodegenError {
         element: String,
     },
     /// A `where` clause naming no known constraint.
-    #[error("type `{ty}`: unknown constraint `{word}` (expected `where unit`, `where null` or `where simple`)")]
     UnknownConstraint {
         /// The type.
         ty: String,
@@ -79,12 +64,51 @@ pub enum CodegenError {
         word: String,
     },
     /// A table coefficient that does not fit the `i64` ratio of `T::from_ratio`.
-    #[error("a table coefficient ({0}) is too large for T::from_ratio(i64, i64)")]
     CoefficientTooLarge(String),
     /// A recognised geometry whose named constructors cannot be built (a bug, not bad input).
-    #[error("named constructors: {0}")]
     NamedConstructor(String),
 }
+
+impl std::fmt::Display for CodegenError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            CodegenError::NoTypes => write!(f, "declare at least one type"),
+            CodegenError::InvalidTypeName(t) => {
+                write!(f, "`{t}` is not a valid type name (use an identifier starting with an uppercase letter)")
+            }
+            CodegenError::DuplicateType(t) => write!(f, "type `{t}` is declared twice"),
+            CodegenError::EmptyType(t) => write!(f, "type `{t}` has no basis elements"),
+            CodegenError::DuplicateElement { ty, element } => write!(f, "type `{ty}` lists `{element}` twice"),
+            CodegenError::SameElements(a, b) => write!(f, "types `{a}` and `{b}` have the same basis elements"),
+            CodegenError::UnknownElement { ty, element, labels } => {
+                write!(f, "type `{ty}`: unknown basis element `{element}` (generators: {labels})")
+            }
+            CodegenError::BadGrade { ty, grade, n } => {
+                write!(f, "type `{ty}`: grade {grade} does not exist in an algebra with {n} generators")
+            }
+            CodegenError::BadTypeList(t) => write!(
+                f,
+                "bad type list `{t}`: expected `Name=elements;Name=elements` with elements `grade K`, `even`, `odd`, `all` or a comma list of basis names"
+            ),
+            CodegenError::OrientedInProductBasis { ty, element } => write!(
+                f,
+                "type `{ty}`: `{element}` reorders the generators of a basis element; orientation-aware names need the blade basis"
+            ),
+            CodegenError::UnknownConstraint { ty, word } => write!(
+                f,
+                "type `{ty}`: unknown constraint `{word}` (expected `where unit`, `where null` or `where simple`)"
+            ),
+            CodegenError::CoefficientTooLarge(c) => {
+                write!(f, "a table coefficient ({c}) is too large for T::from_ratio(i64, i64)")
+            }
+            CodegenError::NamedConstructor(why) => write!(f, "named constructors: {why}"),
+        }
+    }
+}
+
+// Written by hand (not `thiserror`): the macro path then builds one `syn` (thiserror 2 pulls
+// in syn 3 beside the macro's syn 2; issue 26 item 5).
+impl std::error::Error for CodegenError {}
 
 /// One declared type: a name, doc lines and the basis elements (masks) it holds.
 #[derive(Debug, Clone, PartialEq)]
