@@ -277,6 +277,32 @@ mod tests {
     }
 
     #[test]
+    fn the_view_looks_down_and_depth_grows_away_from_the_viewer() {
+        // The painter's algorithm of Jüttler's Fig. 5b (surface.rs) draws the largest
+        // projected depth first, taking plotters' depth as the distance from the screen. In our
+        // view (pitched 0.35 rad above the horizon) a point above another is nearer the viewer:
+        // its depth must be smaller, and it must be drawn higher on the screen.
+        use super::{Bounds, chart, to};
+        use crate::plot::style::Px;
+        use crate::plot::svg::Svg;
+        use plotters::prelude::IntoDrawingArea;
+        let mut out = String::new();
+        let area = Svg::new(&mut out, (400, 400), None).into_drawing_area();
+        let b = Bounds::of([[0.0, 0.0, 0.0], [1.0, 1.0, 1.0]].iter());
+        let c = chart(&area, &b, Px(1.0)).expect("a chart");
+        let depth = |p: [f64; 3]| {
+            let (x, y, z) = to(&p);
+            c.as_coord_spec().projected_depth(&x, &y, &z)
+        };
+        let screen_y = |p: [f64; 3]| c.plotting_area().map_coordinate(&to(&p)).1;
+        for (x, y) in [(0.0, 0.0), (1.0, 0.0), (0.0, 1.0), (0.5, 0.5)] {
+            let (low, high) = ([x, y, 0.0], [x, y, 1.0]);
+            assert!(depth(high) < depth(low), "({x}, {y}): {} vs {}", depth(high), depth(low));
+            assert!(screen_y(high) < screen_y(low));
+        }
+    }
+
+    #[test]
     fn ticks_are_round_and_inside() {
         assert_eq!(ticks(-0.3, 2.3, 5), (vec![0.0, 1.0, 2.0], 1.0));
         assert_eq!(ticks(-0.3, 2.3, 8), (vec![0.0, 0.5, 1.0, 1.5, 2.0], 0.5));
