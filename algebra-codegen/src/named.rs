@@ -175,6 +175,9 @@ pub fn recognise(spec: &ModuleSpec) -> Option<Geometry> {
 /// A sum of `(atoms, multivector)` pieces.
 type Pieces = Vec<(Vec<Atom>, Multivector<Q>)>;
 
+/// The point of a geometry at Euclidean coordinates.
+type PointAt<'a> = dyn Fn(&[Q]) -> Multivector<Q> + 'a;
+
 struct Ctx {
     alg: Arc<algebra_core::Algebra>,
     basis: algebra_core::Basis,
@@ -233,17 +236,12 @@ impl Ctx {
         out
     }
 
-    /// `β(a)`: the bivector of the rotation about `a` (3D) or in the plane (2D), with the unit
-    /// axis atoms when `unit`.
-    fn beta(&self, euclid: &[usize], unit: bool) -> Pieces {
+    /// `β(â)`: the bivector of the rotation about the unit axis `â` (3D, its atoms
+    /// [`Atom::Unit`]) or in the plane (2D).
+    fn beta(&self, euclid: &[usize]) -> Pieces {
         let g = |k: usize| self.generator(euclid[k]);
         match euclid.len() {
-            3 => (0..3)
-                .map(|k| {
-                    let atoms = if unit { vec![Atom::Unit(k)] } else { vec![] };
-                    (atoms, g((k + 1) % 3).gp(&g((k + 2) % 3)))
-                })
-                .collect(),
+            3 => (0..3).map(|k| (vec![Atom::Unit(k)], g((k + 1) % 3).gp(&g((k + 2) % 3)))).collect(),
             _ => vec![(vec![], g(0).gp(&g(1)))],
         }
     }
@@ -251,7 +249,7 @@ impl Ctx {
     /// `cos(θ/2) + sign sin(θ/2) β(â)`.
     fn rotor(&self, euclid: &[usize], sign: &Q) -> Pieces {
         let mut out: Pieces = vec![(vec![Atom::Cos], self.scalar(Q::one()))];
-        for (mut atoms, b) in self.beta(euclid, true) {
+        for (mut atoms, b) in self.beta(euclid) {
             atoms.push(Atom::Sin);
             atoms.sort();
             out.push((atoms, b.scale(sign)));
@@ -260,14 +258,33 @@ impl Ctx {
     }
 
     /// Adds `translator`, `rotor`, `motor` and the rotation about a line (3D) or point (2D),
-    /// for the null vector `null` of the translations and the signs found for them.
+    /// for the null vector `null` of the translations; `point(x)` is the point at `x`. The
+    /// translator's and rotor's signs are the ones for which `apply` moves the origin to `e1`
+    /// and turns `e1` into `e2` by a quarter turn about the last axis (the plane `g1 g2` in 2D).
     fn rigid_motions(
         &self,
         euclid: &[usize],
-        (null, t_sign, r_sign): (&Multivector<Q>, &Q, &Q),
+        (null, point): (&Multivector<Q>, &PointAt),
         translator_doc: &str,
         add: &mut dyn FnMut(&'static str, Vec<Param>, Pieces, String),
-    ) {
+    ) -> Result<(), CodegenError> {
+        let n = euclid.len();
+        let unit = |k: usize| -> Vec<Q> { (0..n).map(|i| if i == k { Q::one() } else { Q::zero() }).collect() };
+        let (origin, e1, e2) = (point(&vec![Q::zero(); n]), point(&unit(0)), point(&unit(1)));
+        let t_sign = sign_where("translator", |s| {
+            let t = self.eval(&self.translator(null, euclid, 0, s), |a| {
+                if a == Atom::Param(0, 0) { Q::one() } else { Q::zero() }
+            });
+            apply(&t, &origin) == e1
+        })?;
+        let r_sign = sign_where("rotor", |s| {
+            // unnormalised (1 + sign β): the quarter turn, times |1 + β|² = 2
+            let r = self.eval(&self.rotor(euclid, s), |a| {
+                if a == Atom::Unit(n - 1) || a == Atom::Cos || a == Atom::Sin { Q::one() } else { Q::zero() }
+            });
+            apply(&r, &e1).try_sub(&e2.scale(&Q::from_integer(2.into()))).is_ok_and(|d| d.is_zero())
+        })?;
+        let (t_sign, r_sign) = (&t_sign, &r_sign);
         let n = euclid.len();
         let translator = self.translator(null, euclid, 0, t_sign);
         add("translator", vec![Param::Array("t", n)], translator.clone(), translator_doc.into());
@@ -299,6 +316,7 @@ impl Ctx {
         let doc =
             format!("The rotation by `angle` about the {what} through `p`: `translator(p) rotor(..) translator(-p)`.");
         add(name, params, about, doc);
+        Ok(())
     }
 
     /// The multivector of `pieces` with every atom set to the value `at` gives it.
@@ -312,9 +330,9 @@ impl Ctx {
     }
 }
 
-/// `S x rev(S)`.
+/// `S x rev(S)`: [`Multivector::sandwich`] (`rev(S) x S`) of `rev(S)`.
 fn apply(s: &Multivector<Q>, x: &Multivector<Q>) -> Multivector<Q> {
-    s.gp(x).gp(&s.reverse())
+    s.reverse().sandwich(x)
 }
 
 /// `a = k b` for some rational `k > 0`.
@@ -386,29 +404,6 @@ pub fn constructors(spec: &ModuleSpec, declared: usize) -> Result<Vec<Constructo
         }
         Geometry::Pga { null, euclid } => {
             let n = euclid.len();
-            let origin = ctx.eval(&ctx.point(null, &euclid, 0, false), |_| Q::zero());
-            let point_at = |k: usize| {
-                ctx.eval(
-                    &ctx.point(null, &euclid, 0, false),
-                    |a| if a == Atom::Param(0, k) { Q::one() } else { Q::zero() },
-                )
-            };
-            let t_sign = sign_where("translator", |s| {
-                let t = ctx.eval(&ctx.translator(&ctx.generator(null), &euclid, 0, s), |a| {
-                    if a == Atom::Param(0, 0) { Q::one() } else { Q::zero() }
-                });
-                apply(&t, &origin) == point_at(0)
-            })?;
-            let r_sign = sign_where("rotor", |s| {
-                let axis_last = Atom::Unit(n - 1);
-                let r = ctx.eval(&ctx.rotor(&euclid, s), |a| {
-                    if a == axis_last || a == Atom::Cos || a == Atom::Sin { Q::one() } else { Q::zero() }
-                });
-                // about the last axis (the plane g1 g2 in 2D), a quarter turn takes e1 to e2
-                let (p1, p2) = (point_at(0), point_at(1));
-                let moved = apply(&r, &p1);
-                moved.try_sub(&p2.scale(&Q::from_integer(2.into()))).map(|d| d.is_zero()).unwrap_or(false)
-            })?;
             let point = ctx.point(null, &euclid, 0, false);
             add(
                 "point",
@@ -446,8 +441,9 @@ pub fn constructors(spec: &ModuleSpec, declared: usize) -> Result<Vec<Constructo
                 "The line through the points `p` and `q`: their join `point(p) ∨ point(q)` (the regressive product)."
                     .into(),
             );
+            let at = |x: &[Q]| ctx.eval(&point, |a| if let Atom::Param(0, k) = a { x[k].clone() } else { Q::zero() });
             let doc = "The translation by `t`: `apply` (`x ↦ S x rev(S)`) moves every point by `+t`.";
-            ctx.rigid_motions(&euclid, (&ctx.generator(null), &t_sign, &r_sign), doc, &mut add);
+            ctx.rigid_motions(&euclid, (&ctx.generator(null), &at), doc, &mut add)?;
         }
         Geometry::Cga { euclid, origin, infinity } => {
             let n = euclid.len();
@@ -463,21 +459,6 @@ pub fn constructors(spec: &ModuleSpec, declared: usize) -> Result<Vec<Constructo
             };
             let at = |x: &[Q]| ctx.eval(&up(0), |a| if let Atom::Param(0, k) = a { x[k].clone() } else { Q::zero() });
             let unit = |k: usize| -> Vec<Q> { (0..n).map(|i| if i == k { Q::one() } else { Q::zero() }).collect() };
-            let origin_point = at(&vec![Q::zero(); n]);
-            let t_sign = sign_where("translator", |s| {
-                let t = ctx.eval(&ctx.translator(&inf, &euclid, 0, s), |a| {
-                    if a == Atom::Param(0, 0) { Q::one() } else { Q::zero() }
-                });
-                apply(&t, &origin_point) == at(&unit(0))
-            })?;
-            let r_sign = sign_where("rotor", |s| {
-                let axis_last = Atom::Unit(n - 1);
-                let r = ctx.eval(&ctx.rotor(&euclid, s), |a| {
-                    if a == axis_last || a == Atom::Cos || a == Atom::Sin { Q::one() } else { Q::zero() }
-                });
-                let moved = apply(&r, &at(&unit(0)));
-                moved.try_sub(&at(&unit(1)).scale(&Q::from_integer(2.into()))).map(|d| d.is_zero()).unwrap_or(false)
-            })?;
             let e = o.op(&inf);
             let dilator = |sign: &Q| -> Pieces {
                 vec![(vec![Atom::Cosh], ctx.scalar(Q::one())), (vec![Atom::Sinh], e.scale(sign))]
@@ -525,7 +506,7 @@ pub fn constructors(spec: &ModuleSpec, declared: usize) -> Result<Vec<Constructo
                 "The scaling by `scale > 0` about the origin: `cosh(ln(scale)/2) ± sinh(ln(scale)/2) o∧∞`, the sign chosen so that `apply` takes `up(p)` to a positive multiple of `up(scale p)` (normalise with `down`). An error for a scale that is not positive and finite.".into(),
             );
             let doc = "The translation by `t`: `1 ± (1/2) t ∞`, the sign chosen so that `apply` (`x ↦ S x rev(S)`) moves `up(p)` to `up(p + t)`.";
-            ctx.rigid_motions(&euclid, (&inf, &t_sign, &r_sign), doc, &mut add);
+            ctx.rigid_motions(&euclid, (&inf, &at), doc, &mut add)?;
         }
     }
     Ok(out)
@@ -542,11 +523,11 @@ pub struct Down {
     pub coords: Vec<Vec<Q>>,
 }
 
-/// The `down` of a conformal module whose `up` lands in a declared type.
-pub fn down(spec: &ModuleSpec, declared: usize) -> Option<Down> {
+/// The `down` of a conformal module, given its [`constructors`] (`None` without an `up`,
+/// which is the case for every other module).
+pub fn down(spec: &ModuleSpec, constructors: &[Constructor]) -> Option<Down> {
+    let input = constructors.iter().find(|c| c.name == "up")?.out;
     let Some(Geometry::Cga { euclid, infinity, .. }) = recognise(spec) else { return None };
-    let ups = constructors(spec, declared).ok()?;
-    let input = ups.iter().find(|c| c.name == "up")?.out;
     let ctx = Ctx { alg: spec.algebra.clone(), basis: spec.basis };
     let inf = ctx.combo(&infinity);
     let fields: Vec<Multivector<Q>> = spec.types[input]
@@ -569,5 +550,37 @@ fn rotor_doc(n: usize, acted: &str) -> String {
         format!(
             "The rotation by `angle` (radians) in the plane, counter-clockwise: `apply` (`x ↦ S x rev(S)`) turns every {acted} by `+angle` (a quarter turn takes `e1` to `e2`). An error for a non-finite angle."
         )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{NAMES, constructors};
+    use crate::ModuleSpec;
+    use algebra_core::{Algebra, Basis, Metric};
+
+    /// `--standalone` drops the named constructors by [`NAMES`]: every function any
+    /// recognised geometry emits must be listed there.
+    #[test]
+    fn every_constructor_is_named() {
+        let builtin = |n: &str| Algebra::builtin(n).unwrap();
+        let pga2 = Algebra::new("pga2", Metric::diagonal(2, 0, 1).unwrap());
+        let cases = [
+            (builtin("g3"), Basis::Blade),
+            (builtin("pga3"), Basis::Blade),
+            (pga2, Basis::Blade),
+            (builtin("cga"), Basis::Blade),
+            (builtin("cga-null"), Basis::Product),
+        ];
+        for (a, basis) in cases {
+            let types = ModuleSpec::parse_types("V=grade1;B=grade2;M=even;A=all", &a).unwrap();
+            let spec = ModuleSpec::new(a.name(), a.metric().clone(), basis, types).unwrap();
+            let all = constructors(&spec, spec.types.len()).unwrap();
+            assert!(!all.is_empty(), "{}", a.name());
+            for c in &all {
+                assert!(NAMES.contains(&c.name), "{}: `{}` is not in NAMES", a.name(), c.name);
+            }
+        }
+        assert!(NAMES.contains(&"down"));
     }
 }

@@ -191,6 +191,6 @@ fn down_item(names: &Names, d: &Down) -> Option<TokenStream> {
 pub(super) fn module_items(plan: &Plan, names: &Names) -> TokenStream {
     let Ok(all) = constructors(&plan.spec, plan.declared) else { return quote!() };
     let items = all.iter().filter_map(|c| function(names, c));
-    let down = down(&plan.spec, plan.declared).and_then(|d| down_item(names, &d));
+    let down = down(&plan.spec, &all).and_then(|d| down_item(names, &d));
     quote!(#(#items)* #down)
 }
