@@ -19,7 +19,7 @@ use crate::scalar::format_f64;
 use motion::schema::InterpolateSpec;
 use motion::spec::HermiteSpec;
 use motion::velocity::velocity;
-use motion::{AnyMotion, Pose, SegmentKind};
+use motion::{AnyHermiteSegment, AnyMotion, Pose, SegmentKind};
 use serde_json::{Value, json};
 use std::io::Write;
 
@@ -102,6 +102,16 @@ pub(crate) fn checked(sample: Sample) -> Result<Sample, CliError> {
     }
 }
 
+/// The segment of a `gam hermite` spec `label` and its body point (default the body origin;
+/// an error when not finite), as `gam sample` and `gam plot` read them.
+pub(crate) fn hermite_segment(label: &str, spec: &HermiteSpec) -> Result<(AnyHermiteSegment<f64>, [f64; 3]), CliError> {
+    let body_point = spec.body_point.unwrap_or([0.0; 3]);
+    if !body_point.iter().all(|x| x.is_finite()) {
+        return Err(CliError::usage(format!("`{label}`: `body_point` must be finite")));
+    }
+    Ok((build_segment(spec)?, body_point))
+}
+
 /// Checks the work of `passes` passes over `n` samples of a spec (`label` names it in
 /// messages) and returns its sampler.
 pub(crate) fn sampler(label: &str, spec: &SampleSpec, n: usize, passes: usize) -> Result<Sampler, CliError> {
@@ -112,11 +122,7 @@ pub(crate) fn sampler(label: &str, spec: &SampleSpec, n: usize, passes: usize) -
         SampleSpec::Interpolate(spec) => return crate::interpolate::spec_sampler(label, spec, n, passes),
         SampleSpec::Hermite(spec) => spec,
     };
-    let body_point = spec.body_point.unwrap_or([0.0; 3]);
-    if !body_point.iter().all(|x| x.is_finite()) {
-        return Err(CliError::usage(format!("`{label}`: `body_point` must be finite")));
-    }
-    let seg = build_segment(spec)?;
+    let (seg, body_point) = hermite_segment(label, spec)?;
     let (kind, degree) = (seg.kind(), seg.degree());
     // building the segment is O(degree); sampling it is O(samples x degree^2)
     let work = crate::budget::sampling_work(Tableau::of_segment(kind), degree, n, passes);

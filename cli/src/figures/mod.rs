@@ -89,13 +89,12 @@ fn percent(a: f64, b: f64) -> f64 {
     if a == b { 0.0 } else { 100.0 * (a - b) / b }
 }
 
-/// The companion of a figure whose first series is labelled `gamma = 0 omega` (Fig. 5): every
-/// series with its linear and angular speeds as increases in per cent over the first one's
-/// (same samples), its title and the base's label. The ±γ motions mirror each other, so their
+/// The companion of Fig. 5: every series with its linear and angular speeds as increases in
+/// per cent over the first one's (`γ = 0`, the same samples), its title and the base's label. The ±γ motions mirror each other, so their
 /// speeds coincide and are drawn over each other, and the increase is a few per cent: at the
 /// scale of the speeds the paper's "this increases the linear speed" is hard to see.
-fn companion_of(series: &[Series]) -> Result<Option<(Vec<Series>, String, String)>, CliError> {
-    let Some(base) = series.first().filter(|s| s.label == "gamma = 0 omega") else { return Ok(None) };
+fn increases(series: &[Series]) -> Result<(Vec<Series>, String, String), CliError> {
+    let base = series.first().ok_or_else(|| CliError::math("Fig. 5 has no series"))?;
     let mut out = Vec::new();
     for s in series {
         let mut c = s.clone();
@@ -113,7 +112,7 @@ fn companion_of(series: &[Series]) -> Result<Option<(Vec<Series>, String, String
         out.push(c);
     }
     let title = "Fig. 5 (companion): the speeds of Fig. 5 as increases over gamma = 0, in per cent".to_string();
-    Ok(Some((out, title, base.label.clone())))
+    Ok((out, title, base.label.clone()))
 }
 
 /// How the body is drawn in figure `file`: the cuboid in the main paper's Fig. 3, the
@@ -145,13 +144,14 @@ pub fn figures(dir: &str, format: Format, json: bool) -> Result<String, CliError
     let mut lines = Vec::new();
     let mut data = serde_json::Map::new();
     for (file, title, view, series) in all()? {
-        let body = body_of(file);
+        let (body, fig5) = (body_of(file), file == "fig5.svg");
         let bytes = render(&series, view, body, &title, format)?;
         let file = named(file, format);
         lines.push(write(dir, &file, &title, bytes)?);
         let body = serde_json::to_value(body).map_err(|e| CliError::math(format!("cannot print the body: {e}")))?;
         data.insert(file, json!({"title": title, "body": body, "series": series}));
-        if let Some((companion, title, base)) = companion_of(&series)? {
+        if fig5 {
+            let (companion, title, base) = increases(&series)?;
             let bytes = render_panel(&companion, (view, Body::Frames), (&title, Panel::Increase(&base)), format)?;
             let file = named(FIG5_INCREASE, format);
             lines.push(write(dir, &file, &title, bytes)?);

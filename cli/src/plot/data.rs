@@ -8,8 +8,8 @@
 //! `[0, 1]` with its `body_point`.
 
 use crate::error::CliError;
+use crate::hermite::read_spec;
 use crate::hermite::strip_comments;
-use crate::hermite::{build_segment, read_spec};
 use crate::interpolate::{built, usage};
 use crate::scalar::format_f64;
 use motion::algebra_core::Jet;
@@ -253,13 +253,13 @@ pub(crate) fn of_motion<M: MapScalar<f64, Jet<Jet<f64>>>>(
     })
 }
 
-/// A `gam hermite` spec: one segment over `[0, 1]`, checked as `gam sample` checks it, sampled
-/// by [`of_motion`] like every other motion.
+/// A `gam hermite` spec: one segment over `[0, 1]`, read as `gam sample` reads it
+/// ([`crate::sample::hermite_segment`]), sampled by [`of_motion`] like every other motion.
 fn hermite(path: &str, n: usize, k: usize) -> Result<Series, CliError> {
-    let spec = read_spec(path)?;
-    let checked = crate::sample::sampler(path, &crate::sample::SampleSpec::Hermite(spec.clone()), n, 1)?;
-    let (kind, degree, body_point) = (checked.kind, checked.degree, checked.body_point);
-    let motion = build_segment(&spec)?.into_motion().map_err(|e| CliError::math(e.to_string()))?;
+    let (seg, body_point) = crate::sample::hermite_segment(path, &read_spec(path)?)?;
+    let (kind, degree) = (seg.kind(), seg.degree());
+    // of_motion checks the work of sampling it
+    let motion = seg.into_motion().map_err(|e| CliError::math(e.to_string()))?;
     let method = kind.to_string();
     let shape = Shape {
         label: format!("{}: {method}", file_name(path)),

@@ -21,7 +21,7 @@
 use super::axes3d::{self, Bounds};
 use super::data::{Mark, Series, moved};
 use super::legend::{self, Entry, Swatch};
-use super::raster::{Format, Picture, encode};
+use super::raster::{Format, Picture, draw_error, encode};
 use super::style::{ANGULAR, AXIS_COLOURS, JOIN, Px, colour, dashed, fitted};
 use super::svg::{SharedLayers, in_layer};
 use crate::error::CliError;
@@ -235,10 +235,6 @@ impl View {
             View::ThreeD => None,
         }
     }
-}
-
-fn draw_error<E: std::fmt::Display>(e: E) -> CliError {
-    CliError::math(format!("cannot draw the plot: {e}"))
 }
 
 /// `[lo, hi]` covering `values`, padded by 5% (and widened when all values are equal).

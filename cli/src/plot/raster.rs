@@ -57,7 +57,8 @@ pub(crate) trait Picture {
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>, px: Px) -> Result<(), CliError>;
 }
 
-fn draw_error<E: std::fmt::Display>(e: E) -> CliError {
+/// A plotters drawing error as the one `error:` line of `gam plot` and `gam figures`.
+pub(crate) fn draw_error<E: std::fmt::Display>(e: E) -> CliError {
     CliError::math(format!("cannot draw the plot: {e}"))
 }
 
