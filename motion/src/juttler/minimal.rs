@@ -35,7 +35,7 @@
 
 use super::q_motion::pose_of;
 use super::rotational::{check_count, elliptic, solve_bernstein};
-use super::tr::rotation_translation;
+use super::tr::{rotation_translation, rotations};
 use super::trt::rotation_curve;
 use super::{
     JuttlerError, QMotion, RationalBezier, RationalMotion, bernstein_product, check_finite_distinct, de_casteljau_with,
@@ -337,6 +337,6 @@ pub fn minimal_method<T: Field>(
 /// ```
 pub fn minimal<T: Real>(poses: &[Pose<T>], params: &[T]) -> Result<MinimalMotion<T>, JuttlerError> {
     check_count(poses.len(), params)?;
-    let rots = poses.iter().map(|p| Ok(rotation_translation(p)?.0)).collect::<Result<Vec<_>, JuttlerError>>()?;
+    let rots = rotations(poses)?;
     minimal_method(&elliptic(&rots, params)?, poses, params)
 }

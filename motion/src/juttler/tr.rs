@@ -40,6 +40,19 @@ pub fn rotation_translation<T: Field>(p: &Pose<T>) -> Result<(Quaternion<T>, [T;
     Ok((q.real, s))
 }
 
+/// The rotational parts `Rot(P_i)` of `poses` ([`rotation_translation`]), as the rotational
+/// methods take them.
+///
+/// ```
+/// use algebra_core::rational::q;
+/// use motion::{Pose, juttler::tr::rotations};
+/// let r = rotations(&[Pose::translation(&[q(1), q(0), q(0)])]).unwrap();
+/// assert_eq!((r[0].w.clone(), r[0].x.clone()), (q(1), q(0)));
+/// ```
+pub fn rotations<T: Field>(poses: &[Pose<T>]) -> Result<Vec<Quaternion<T>>, JuttlerError> {
+    poses.iter().map(|p| Ok(rotation_translation(p)?.0)).collect()
+}
+
 /// The TR method (30)-(31): `Q_trans * rot` with `Q_trans` of degree `m` through the
 /// translations `s_i` at `params` (one per position, distinct); exact over rationals. `rot`
 /// must interpolate the rotational parts at `params` (e.g. [`super::rotational::affine`]); then
@@ -73,6 +86,5 @@ pub fn tr_method<T: Field>(rot: &QMotion<T>, poses: &[Pose<T>], params: &[T]) ->
 /// ```
 pub fn algorithm1<T: Real>(poses: &[Pose<T>], params: &[T]) -> Result<QMotion<T>, JuttlerError> {
     check_count(poses.len(), params)?;
-    let rots = poses.iter().map(|p| Ok(rotation_translation(p)?.0)).collect::<Result<Vec<_>, JuttlerError>>()?;
-    tr_method(&elliptic(&rots, params)?, poses, params)
+    tr_method(&elliptic(&rotations(poses)?, params)?, poses, params)
 }

@@ -28,7 +28,7 @@
 
 use super::projective::null_space;
 use super::rotational::{check_count, elliptic};
-use super::tr::rotation_translation;
+use super::tr::{rotation_translation, rotations};
 use super::{JuttlerError, QMotion, bernstein_values, check_finite_distinct};
 use crate::Pose;
 use crate::repr::dual_quaternion::{DualQuaternion, Quaternion, matrix_u};
@@ -156,6 +156,6 @@ pub fn trt_method<T: Field>(
 /// ```
 pub fn trt<T: Real>(poses: &[Pose<T>], params: &[T], l1: usize) -> Result<QMotion<T>, JuttlerError> {
     check_count(poses.len(), params)?;
-    let rots = poses.iter().map(|p| Ok(rotation_translation(p)?.0)).collect::<Result<Vec<_>, JuttlerError>>()?;
+    let rots = rotations(poses)?;
     trt_method(&elliptic(&rots, params)?, poses, params, l1)
 }

@@ -20,7 +20,7 @@ use crate::juttler::parametrisation::normalise;
 use crate::juttler::projective::projective;
 use crate::juttler::rotational::affine;
 use crate::juttler::spline::algorithm2;
-use crate::juttler::tr::{algorithm1, rotation_translation, tr_method};
+use crate::juttler::tr::{algorithm1, rotations, tr_method};
 use crate::juttler::trt::trt;
 use crate::juttler::{JuttlerError, KeyVelocity, Parametrisation, QMotion, parameters};
 use crate::repr::ReprError;
@@ -357,18 +357,16 @@ impl Method {
                 (segment, MethodMotion::Minimal(Piecewise::new(breaks, vec![motion])?))
             }
             _ => {
-                let rots = || -> Result<Vec<_>, JuttlerError> {
-                    poses.iter().map(|p| Ok(rotation_translation(p)?.0)).collect()
-                };
                 let q = match self {
                     Method::JuttlerQMotion => algorithm1(poses, &u).map_err(singular)?,
                     // Jüttler (19)-(21): the affine rotations, then TR
                     Method::JuttlerAffine => {
-                        tr_method(&affine(&rots()?, &u).map_err(singular)?, poses, &u).map_err(singular)?
+                        tr_method(&affine(&rotations(poses)?, &u).map_err(singular)?, poses, &u).map_err(singular)?
                     }
                     // Jüttler (27)-(28): the projective rotations (m + 1 = 5, 9, 13, ... poses), then TR
                     Method::JuttlerProjective => {
-                        tr_method(&projective(&rots()?, &u).map_err(singular)?, poses, &u).map_err(singular)?
+                        tr_method(&projective(&rotations(poses)?, &u).map_err(singular)?, poses, &u)
+                            .map_err(singular)?
                     }
                     // default l1 = m - 1 for m + 1 poses (l2 = 0)
                     _ => trt(poses, &u, input.l1.unwrap_or(m - 2)).map_err(singular)?,

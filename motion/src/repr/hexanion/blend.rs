@@ -200,14 +200,20 @@ impl<T: Real> HexanionLinear<T> {
     /// assert_eq!(m.hexanion_at(&1.0), Hexanion::new([0.0; 3], [1.0, 0.0, 0.0]));
     /// ```
     pub fn hexanion_at(&self, t: &T) -> Hexanion<T> {
-        let n = self.times.len();
-        if n == 1 {
+        if self.times.len() == 1 {
             return self.hexanions[0].clone();
         }
-        let i = (0..n - 2).find(|&i| *t < self.times[i + 1]).unwrap_or(n - 2);
-        let u = t.sub_ref(&self.times[i]).div_ref(&self.times[i + 1].sub_ref(&self.times[i]));
+        let (i, u) = locate(&self.times, t);
         Hexanion::lerp(&self.hexanions[i], &self.hexanions[i + 1], &u)
     }
+}
+
+/// The segment `i` of `times` (at least two) holding `t`, the first or last for `t` outside,
+/// and `t`'s local parameter `u = (t - t_i)/(t_(i+1) - t_i)` on it.
+fn locate<T: Field + PartialOrd>(times: &[T], t: &T) -> (usize, T) {
+    let n = times.len();
+    let i = (0..n - 2).find(|&i| *t < times[i + 1]).unwrap_or(n - 2);
+    (i, t.sub_ref(&times[i]).div_ref(&times[i + 1].sub_ref(&times[i])))
 }
 
 impl<T: Real> Motion<T> for HexanionLinear<T> {
@@ -292,9 +298,7 @@ impl<T: Real> HexanionDecoupled<T> {
 
 impl<T: Real> Motion<T> for HexanionDecoupled<T> {
     fn evaluate(&self, t: &T) -> Result<Pose<T>, CurveError> {
-        let n = self.times.len();
-        let i = (0..n - 2).find(|&i| *t < self.times[i + 1]).unwrap_or(n - 2);
-        let u = t.sub_ref(&self.times[i]).div_ref(&self.times[i + 1].sub_ref(&self.times[i]));
+        let (i, u) = locate(&self.times, t);
         Ok(self.starts[i].then(&self.parts[i].pose_at(&u)?))
     }
     fn domain(&self) -> [T; 2] {
