@@ -133,6 +133,23 @@ fn parse_decimal(s: &str) -> Option<Q> {
     Some(if neg { -value } else { value })
 }
 
+/// The rational square root of `x`, when `x ≥ 0` is the square of a rational (numerator and
+/// denominator in lowest terms are perfect squares); `None` otherwise.
+///
+/// ```
+/// use algebra_core::rational::{ratio, sqrt_rational};
+/// assert_eq!(sqrt_rational(&ratio(9, 25)), Some(ratio(3, 5)));
+/// assert_eq!(sqrt_rational(&ratio(2, 1)), None);
+/// assert_eq!(sqrt_rational(&ratio(-4, 1)), None);
+/// ```
+pub fn sqrt_rational(x: &Q) -> Option<Q> {
+    if x.is_negative() {
+        return None;
+    }
+    let root = |n: &BigInt| Some(n.sqrt()).filter(|r| &(r * r) == n);
+    Some(Q::new(root(x.numer())?, root(x.denom())?))
+}
+
 /// Prints `p` or `p/q` in lowest terms (the CLI's `rational` coefficient syntax).
 ///
 /// ```

@@ -20,9 +20,11 @@
 
 mod build;
 mod built;
+pub mod exact;
 
 pub use build::{BuildError, MethodInput, Parameters};
 pub use built::{BuiltMotion, MethodMotion, MethodSegment, RationalSegment};
+pub use exact::{ExactMotion, ExactSample};
 
 use crate::joins::SegmentKind;
 

@@ -433,7 +433,7 @@ pub(crate) fn unit_axis<T: Real>(axis: &[T; 3]) -> Result<[T; 3], MotionError> {
 }
 
 /// `x > 0`, false for NaN.
-pub(crate) fn is_positive<T: Real>(x: &T) -> bool {
+pub(crate) fn is_positive<T: Ring + PartialOrd>(x: &T) -> bool {
     x.partial_cmp(&T::zero()) == Some(std::cmp::Ordering::Greater)
 }
 

@@ -113,7 +113,7 @@ pub enum TrajectoryError {
 /// assert_eq!(poses[1], -&b);
 /// # Ok::<(), motion::MotionError>(())
 /// ```
-pub fn align_signs<T: Real>(poses: &mut [Pose<T>]) {
+pub fn align_signs<T: Ring + PartialOrd>(poses: &mut [Pose<T>]) {
     for i in 1..poses.len() {
         let (a, b) = (poses[i - 1].components(), poses[i].components());
         let dot = |range: std::ops::Range<usize>| range.fold(T::zero(), |acc, k| acc.add_ref(&a[k].mul_ref(b[k])));

@@ -31,7 +31,7 @@ use crate::trajectory::{Trajectory, TrajectoryError, Velocities, align_signs};
 use crate::velocity::Twist;
 use crate::wareham_lasenby::{WlBivectorLinear, WlError, WlLinear, WlMotion, WlQuadratic};
 use crate::{CurveError, HermiteShapes, JoinError, Motion, Piecewise, Pose};
-use algebra_core::{Real, Ring};
+use algebra_core::{Field, Real, Ring};
 
 /// The parameters `t_i` of the key poses (`parameters` of the contract).
 ///
@@ -146,6 +146,36 @@ pub enum BuildError {
         /// What went wrong.
         why: String,
     },
+    /// A method (or an input of it) whose construction is not rational, asked of
+    /// [`Method::build_exact`].
+    #[error("{method} is not exact over the rationals: it needs {needs} (use --scalar mpfr:BITS or f64)")]
+    NotExact {
+        /// The method.
+        method: &'static str,
+        /// What it needs.
+        needs: &'static str,
+    },
+    /// A key pose whose rotation has an irrational norm, for a method of
+    /// [`Method::build_exact`] that normalises it.
+    #[error(
+        "{method} normalises the key rotations, and key pose {index}'s quaternion has norm² {norm_squared}, not the square of a rational (give quaternions of rational norm such as [3/5, 0, 0, 4/5], or use --scalar mpfr:BITS or f64)"
+    )]
+    IrrationalNorm {
+        /// The method.
+        method: &'static str,
+        /// The key pose.
+        index: usize,
+        /// Its norm squared, `p/q`.
+        norm_squared: String,
+    },
+    /// A parameter outside `[t_0, t_m]` asked of an exact motion.
+    #[error("t = {t} is outside the motion's domain {domain}")]
+    OutOfDomain {
+        /// The parameter, `p/q`.
+        t: String,
+        /// The domain.
+        domain: String,
+    },
     /// A rational trajectory asked of a method whose motions are not rational.
     #[error(
         "the motions of `{method}` are not rational (their point trajectories are not rational curves; rational: ccm-additive and the juttler-* methods)"
@@ -179,6 +209,9 @@ impl BuildError {
             | BuildError::TooFewPoses { .. }
             | BuildError::ParameterCount { .. }
             | BuildError::NotRational { .. }
+            | BuildError::NotExact { .. }
+            | BuildError::IrrationalNorm { .. }
+            | BuildError::OutOfDomain { .. }
             | BuildError::Curve(_) => true,
             BuildError::Unstable { .. } => false,
             BuildError::Trajectory(e) => {
@@ -226,7 +259,10 @@ impl<T: Real> Parameters<T> {
 /// Space twists (`u` the velocity of the body point at the global origin) as Jüttler's
 /// `v⃗_i`, `ω⃗_i` (the velocity of the moving origin, at the key pose's position `p_i`):
 /// `v⃗_i = u + Ω × p_i`.
-fn key_velocities<T: Real>(poses: &[Pose<T>], twists: &[Twist<T>]) -> Result<Vec<KeyVelocity<T>>, BuildError> {
+pub(super) fn key_velocities<T: Field>(
+    poses: &[Pose<T>],
+    twists: &[Twist<T>],
+) -> Result<Vec<KeyVelocity<T>>, BuildError> {
     poses
         .iter()
         .zip(twists)
@@ -254,26 +290,11 @@ impl Method {
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     pub fn build<T: Real>(self, input: &MethodInput<T>) -> Result<BuiltMotion<T>, BuildError> {
-        let given =
-            [("velocities", input.velocities.is_some()), ("shape", input.shapes.is_some()), ("l1", input.l1.is_some())];
-        if let Some((key, _)) = given.into_iter().find(|(key, given)| *given && !self.inputs().contains(key)) {
-            return Err(BuildError::Unused { key, method: self });
-        }
-        let m = input.poses.len();
-        if m < 2 {
-            return Err(BuildError::TooFewPoses { got: m });
-        }
         // S and λS are the same pose (Theorem 2.8), so the motion must not depend on λ: every
         // method starts from the unitized key poses (a singular or non-finite pose is passed on
         // unchanged, for the method's own error)
-        let mut poses: Vec<Pose<T>> = input.poses.iter().map(|p| p.unitize().unwrap_or_else(|_| p.clone())).collect();
-        // ... nor on the sign of λ: the first key pose takes the sign that makes the first
-        // non-zero of S∅, S12, S13, S23 positive, and rule (24) aligns the others to it
-        let first = poses[0].components()[..4].iter().find(|c| !c.is_exact_zero()).map(|c| **c < T::zero());
-        if first == Some(true) {
-            poses[0] = -&poses[0];
-        }
-        align_signs(&mut poses);
+        let poses = self.key_poses(input, &|p| p.unitize().unwrap_or_else(|_| p.clone()))?;
+        let m = poses.len();
         let times = input.parameters.values(&poses)?;
         let (segments, motion) = match self {
             Method::CcmAdditive | Method::CcmMultiplicative => self.hermite(input, &poses, &times)?,
@@ -326,6 +347,34 @@ impl Method {
             }
         };
         Ok(BuiltMotion { method: self, times, key_poses: poses, segments, motion })
+    }
+
+    /// The key poses every method starts from, after the checks of the input (an input the
+    /// method does not read, fewer than two poses): each scaled by `scale` (unitized, for the
+    /// floating-point build), and since the sign of `λ` in `λS` must not matter either, the
+    /// first takes the sign that makes the first non-zero of `S∅, S12, S13, S23` positive and
+    /// rule (24) aligns the others to it.
+    pub(super) fn key_poses<T: Ring + PartialOrd>(
+        self,
+        input: &MethodInput<T>,
+        scale: &dyn Fn(&Pose<T>) -> Pose<T>,
+    ) -> Result<Vec<Pose<T>>, BuildError> {
+        let given =
+            [("velocities", input.velocities.is_some()), ("shape", input.shapes.is_some()), ("l1", input.l1.is_some())];
+        if let Some((key, _)) = given.into_iter().find(|(key, given)| *given && !self.inputs().contains(key)) {
+            return Err(BuildError::Unused { key, method: self });
+        }
+        let m = input.poses.len();
+        if m < 2 {
+            return Err(BuildError::TooFewPoses { got: m });
+        }
+        let mut poses: Vec<Pose<T>> = input.poses.iter().map(scale).collect();
+        let first = poses[0].components()[..4].iter().find(|c| !c.is_exact_zero()).map(|c| **c < T::zero());
+        if first == Some(true) {
+            poses[0] = -&poses[0];
+        }
+        align_signs(&mut poses);
+        Ok(poses)
     }
 
     /// The Jüttler methods with one interpolant over `[t_0, t_m]` (Algorithm 1, TRT, minimal
@@ -457,7 +506,7 @@ impl Method {
     }
 
     /// A Q-motion over `[t0, t1]`: its control dual quaternions, and the same as motors.
-    fn q_motion_segment<T: Real>(self, q: &QMotion<T>, breaks: &[T]) -> MethodSegment<T> {
+    pub(super) fn q_motion_segment<T: Ring>(self, q: &QMotion<T>, breaks: &[T]) -> MethodSegment<T> {
         MethodSegment {
             t0: breaks[0].clone(),
             t1: breaks[1].clone(),

@@ -22,11 +22,12 @@
 //! # Ok::<(), motion::schema::SchemaError>(())
 //! ```
 
-use super::{SchemaError, StrictValue, pose::PoseObject};
+use super::{SchemaError, SpecNumber, StrictValue, pose::PoseError, pose::PoseObject};
 use crate::juttler::Parametrisation;
 use crate::method::{BuildError, BuiltMotion, Method, MethodInput, Parameters};
 use crate::velocity::Twist;
 use crate::{HermiteShapes, Pose, Pseudoscalar, Shape, Vec3};
+use algebra_core::Field;
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
 
@@ -44,14 +45,24 @@ pub const MAX_SAMPLES: usize = 1_000_000;
 /// ```
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
-pub struct VelocitySpec {
+pub struct VelocitySpec<N = f64> {
     /// The velocity of the body point at the origin of the body frame.
-    pub velocity: [f64; 3],
+    pub velocity: [N; 3],
     /// The angular velocity `Ω`.
-    pub angular_velocity: [f64; 3],
+    pub angular_velocity: [N; 3],
 }
 
-impl VelocitySpec {
+impl<N> VelocitySpec<N> {
+    /// The same velocity with every number mapped by `f`.
+    fn map<U>(&self, f: &dyn Fn(&N) -> U) -> VelocitySpec<U> {
+        VelocitySpec {
+            velocity: self.velocity.each_ref().map(f),
+            angular_velocity: self.angular_velocity.each_ref().map(f),
+        }
+    }
+}
+
+impl<T: Field> VelocitySpec<T> {
     /// The space twist at `pose`: `Ω` and `u = v - Ω × p`, the velocity of the body point at the
     /// global origin (`p` is where `pose` puts the body origin).
     ///
@@ -62,11 +73,15 @@ impl VelocitySpec {
     /// assert_eq!(tw.linear.to_array(), [0.0, 0.0, 0.0]); // a turn about the z axis
     /// # Ok::<(), motion::MotionError>(())
     /// ```
-    pub fn twist(&self, pose: &Pose<f64>) -> Result<Twist<f64>, crate::MotionError> {
-        let p = pose.transform_point(&[0.0; 3])?;
-        let o = self.angular_velocity;
-        let c = [o[1] * p[2] - o[2] * p[1], o[2] * p[0] - o[0] * p[2], o[0] * p[1] - o[1] * p[0]];
-        Ok(Twist { angular: o.into(), linear: Vec3::from(std::array::from_fn(|k| self.velocity[k] - c[k])) })
+    pub fn twist(&self, pose: &Pose<T>) -> Result<Twist<T>, crate::MotionError> {
+        let p = pose.transform_point(&[T::zero(), T::zero(), T::zero()])?;
+        let o = &self.angular_velocity;
+        let cross = |i: usize, j: usize| o[i].mul_ref(&p[j]).sub_ref(&o[j].mul_ref(&p[i]));
+        let c = [cross(1, 2), cross(2, 0), cross(0, 1)];
+        Ok(Twist {
+            angular: o.clone().into(),
+            linear: Vec3::from(std::array::from_fn(|k| self.velocity[k].sub_ref(&c[k]))),
+        })
     }
 }
 
@@ -138,7 +153,7 @@ impl ParameterRule {
     }
 
     /// The rule of the method input.
-    fn parametrisation(self) -> Parametrisation<f64> {
+    fn parametrisation<T>(self) -> Parametrisation<T> {
         match self {
             ParameterRule::Chordal => Parametrisation::Chordal,
             ParameterRule::StarChordal => Parametrisation::StarChordal,
@@ -164,23 +179,23 @@ impl std::str::FromStr for ParameterRule {
 /// let _ = ParameterSpec::Rule(ParameterRule::Chordal);
 /// ```
 #[derive(Debug, Clone, PartialEq, Default)]
-pub enum ParameterSpec {
+pub enum ParameterSpec<N = f64> {
     /// `uniform` (the default): `t_i = i/m`.
     #[default]
     Uniform,
     /// A rule of eq. (15).
     Rule(ParameterRule),
     /// One value per pose, strictly increasing, used as given (checked by the method).
-    Given(Vec<f64>),
+    Given(Vec<N>),
 }
 
-impl ParameterSpec {
+impl<N: SpecNumber> ParameterSpec<N> {
     fn of(v: &Value) -> Result<Self, SchemaError> {
         match v {
             Value::String(s) if s == "uniform" => Ok(ParameterSpec::Uniform),
             Value::String(s) => s.parse().map(ParameterSpec::Rule),
             Value::Array(_) => {
-                Vec::<f64>::deserialize(v).map(ParameterSpec::Given).map_err(|_| SchemaError::ParameterList)
+                Vec::<N>::deserialize(v).map(ParameterSpec::Given).map_err(|_| SchemaError::ParameterList)
             }
             other => Err(SchemaError::ParameterType { got: other.to_string() }),
         }
@@ -190,10 +205,21 @@ impl ParameterSpec {
         match self {
             ParameterSpec::Uniform => Value::from("uniform"),
             ParameterSpec::Rule(r) => Value::from(r.name()),
-            ParameterSpec::Given(v) => Value::from(v.clone()),
+            ParameterSpec::Given(v) => Value::from(v.iter().map(SpecNumber::to_json).collect::<Vec<_>>()),
         }
     }
 
+    /// The parameters of the method input, every given value mapped by `f`.
+    fn parameters_with<T>(&self, f: &dyn Fn(&N) -> T) -> Parameters<T> {
+        match self {
+            ParameterSpec::Uniform => Parameters::Uniform,
+            ParameterSpec::Rule(r) => Parameters::Rule(r.parametrisation()),
+            ParameterSpec::Given(v) => Parameters::Given(v.iter().map(f).collect()),
+        }
+    }
+}
+
+impl ParameterSpec {
     /// The parameters of the method input.
     ///
     /// ```
@@ -201,11 +227,7 @@ impl ParameterSpec {
     /// assert_eq!(ParameterSpec::Given(vec![0.0, 2.0]).to_parameters(), Parameters::Given(vec![0.0, 2.0]));
     /// ```
     pub fn to_parameters(&self) -> Parameters<f64> {
-        match self {
-            ParameterSpec::Uniform => Parameters::Uniform,
-            ParameterSpec::Rule(r) => Parameters::Rule(r.parametrisation()),
-            ParameterSpec::Given(v) => Parameters::Given(v.clone()),
-        }
+        self.parameters_with(&|x| *x)
     }
 }
 
@@ -225,24 +247,24 @@ impl ParameterSpec {
 /// # Ok::<(), motion::schema::SchemaError>(())
 /// ```
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(try_from = "RawSpec", into = "RawSpec")]
-pub struct InterpolateSpec {
+#[serde(try_from = "RawSpec<N>", into = "RawSpec<N>", bound = "N: SpecNumber")]
+pub struct InterpolateSpec<N = f64> {
     /// The method.
     pub method: Method,
     /// The key poses (at least two).
-    pub poses: Vec<PoseObject>,
+    pub poses: Vec<PoseObject<N>>,
     /// Their parameters.
-    pub parameters: ParameterSpec,
+    pub parameters: ParameterSpec<N>,
     /// The velocities at the key poses (`None`: the method estimates them).
-    pub velocities: Option<Vec<VelocitySpec>>,
+    pub velocities: Option<Vec<VelocitySpec<N>>>,
     /// The shape factors λ (`ccm-*`; positive).
-    pub shape: Option<PerPose<f64>>,
+    pub shape: Option<PerPose<N>>,
     /// `[α, β]` of `γ = α + βω` (`ccm-*`).
-    pub gamma: Option<PerPose<[f64; 2]>>,
+    pub gamma: Option<PerPose<[N; 2]>>,
     /// Evenly spaced samples over `[t_0, t_m]` (0: none; else 2 to [`MAX_SAMPLES`]).
     pub samples: usize,
     /// The body points to sample (`None`: the origin).
-    pub body_points: Option<Vec<[f64; 3]>>,
+    pub body_points: Option<Vec<[N; 3]>>,
     /// The TRT split of `juttler-trt`.
     pub l1: Option<usize>,
 }
@@ -250,14 +272,14 @@ pub struct InterpolateSpec {
 /// The spec as serde reads it; every part whose shape is not fixed by a type is a
 /// [`StrictValue`] (keys given twice are refused), checked by [`InterpolateSpec::try_from`].
 #[derive(Debug, Clone, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct RawSpec {
+#[serde(deny_unknown_fields, bound = "N: SpecNumber")]
+struct RawSpec<N> {
     method: String,
     poses: Vec<StrictValue>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     parameters: Option<StrictValue>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    velocities: Option<Vec<VelocitySpec>>,
+    velocities: Option<Vec<VelocitySpec<N>>>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     shape: Option<StrictValue>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -265,33 +287,33 @@ struct RawSpec {
     #[serde(default)]
     samples: usize,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    body_points: Option<Vec<[f64; 3]>>,
+    body_points: Option<Vec<[N; 3]>>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     l1: Option<i64>,
 }
 
-impl TryFrom<RawSpec> for InterpolateSpec {
+impl<N: SpecNumber> TryFrom<RawSpec<N>> for InterpolateSpec<N> {
     type Error = SchemaError;
-    fn try_from(raw: RawSpec) -> Result<Self, SchemaError> {
+    fn try_from(raw: RawSpec<N>) -> Result<Self, SchemaError> {
         let method: Method = raw.method.parse()?;
         let poses = raw
             .poses
             .iter()
             .enumerate()
-            .map(|(i, v)| PoseObject::from_value(&v.0).map_err(|e| e.at(&format!("poses[{i}]"))))
+            .map(|(i, v)| PoseObject::read_value(&v.0).map_err(|e| e.at(&format!("poses[{i}]"))))
             .collect::<Result<Vec<_>, _>>()?;
         let shape = match &raw.shape {
             None => None,
             Some(StrictValue(v @ Value::Array(_))) => {
-                Some(PerPose::Each(Vec::<f64>::deserialize(v).map_err(|_| SchemaError::ShapeForm)?))
+                Some(PerPose::Each(Vec::<N>::deserialize(v).map_err(|_| SchemaError::ShapeForm)?))
             }
-            Some(StrictValue(v)) => Some(PerPose::Common(v.as_f64().ok_or(SchemaError::ShapeForm)?)),
+            Some(StrictValue(v)) => Some(PerPose::Common(N::from_json(v).ok_or(SchemaError::ShapeForm)?)),
         };
         let gamma = match &raw.gamma {
             None => None,
-            Some(StrictValue(v)) => Some(match <[f64; 2]>::deserialize(v) {
+            Some(StrictValue(v)) => Some(match <[N; 2]>::deserialize(v) {
                 Ok(g) => PerPose::Common(g),
-                Err(_) => PerPose::Each(Vec::<[f64; 2]>::deserialize(v).map_err(|_| SchemaError::GammaForm)?),
+                Err(_) => PerPose::Each(Vec::<[N; 2]>::deserialize(v).map_err(|_| SchemaError::GammaForm)?),
             }),
         };
         let l1 = match raw.l1 {
@@ -314,8 +336,8 @@ impl TryFrom<RawSpec> for InterpolateSpec {
     }
 }
 
-impl From<InterpolateSpec> for RawSpec {
-    fn from(s: InterpolateSpec) -> Self {
+impl<N: SpecNumber> From<InterpolateSpec<N>> for RawSpec<N> {
+    fn from(s: InterpolateSpec<N>) -> Self {
         let per_pose = |p: Option<Value>| p.map(StrictValue);
         RawSpec {
             method: s.method.name().to_string(),
@@ -323,12 +345,15 @@ impl From<InterpolateSpec> for RawSpec {
             parameters: Some(StrictValue(s.parameters.to_value())),
             velocities: s.velocities,
             shape: per_pose(s.shape.map(|x| match x {
-                PerPose::Common(x) => Value::from(x),
-                PerPose::Each(v) => Value::from(v),
+                PerPose::Common(x) => x.to_json(),
+                PerPose::Each(v) => Value::from(v.iter().map(SpecNumber::to_json).collect::<Vec<_>>()),
             })),
-            gamma: per_pose(s.gamma.map(|x| match x {
-                PerPose::Common(g) => Value::from(g.to_vec()),
-                PerPose::Each(v) => Value::from(v.iter().map(|g| g.to_vec()).collect::<Vec<_>>()),
+            gamma: per_pose(s.gamma.map(|x| {
+                let pair = |g: &[N; 2]| Value::from(g.iter().map(SpecNumber::to_json).collect::<Vec<_>>());
+                match x {
+                    PerPose::Common(g) => pair(&g),
+                    PerPose::Each(v) => Value::from(v.iter().map(pair).collect::<Vec<_>>()),
+                }
             })),
             samples: s.samples,
             body_points: s.body_points,
@@ -350,8 +375,7 @@ impl InterpolateSpec {
     /// assert!(e.to_string().contains("duplicate key `position`"));
     /// ```
     pub fn from_json(text: &str) -> Result<Self, SchemaError> {
-        let raw: RawSpec = serde_json::from_str(text).map_err(|e| SchemaError::of_json(&e))?;
-        InterpolateSpec::try_from(raw)
+        InterpolateSpec::read_json(text)
     }
 
     /// Reads and checks a spec from a parsed JSON value (as another front door has it).
@@ -363,84 +387,18 @@ impl InterpolateSpec {
     /// assert_eq!(e.to_string(), "at least two poses are needed (got 1)");
     /// ```
     pub fn from_value(v: &Value) -> Result<Self, SchemaError> {
-        let raw = RawSpec::deserialize(v).map_err(|e| SchemaError::Invalid(e.to_string()))?;
-        InterpolateSpec::try_from(raw)
+        InterpolateSpec::read_value(v)
     }
 
-    /// The optional keys the spec gives.
-    fn given_keys(&self) -> [(&'static str, bool); 4] {
-        [
-            ("velocities", self.velocities.is_some()),
-            ("shape", self.shape.is_some()),
-            ("gamma", self.gamma.is_some()),
-            ("l1", self.l1.is_some()),
-        ]
-    }
-
-    /// Every rule of the format, in the order the CLI reports them: keys the method does not
-    /// read, at least two poses, each pose, one velocity per pose, shapes and `gamma`, `samples`.
-    /// Returns the key poses.
+    /// The key poses, every rule of the format checked ([`InterpolateSpec::poses_with`]).
     ///
     /// ```
-    /// use motion::schema::{InterpolateSpec, SchemaError, interpolate::PerPose};
-    /// let mut spec = InterpolateSpec::from_value(&serde_json::json!({
-    ///     "method": "ccm-additive", "poses": [{"position": [0, 0, 0]}, {"position": [1, 0, 0]}]}))?;
-    /// spec.shape = Some(PerPose::Common(-1.0));
-    /// assert_eq!(spec.poses().unwrap_err(), SchemaError::ShapeValue { got: -1.0 });
-    /// # Ok::<(), SchemaError>(())
+    /// let spec = motion::schema::InterpolateSpec::from_json(r#"{"method": "wl-linear", "poses": [{}, {"position": [1, 0, 0]}]}"#)?;
+    /// assert_eq!(spec.poses()?[1].transform_point(&[0.0; 3])?, [1.0, 0.0, 0.0]);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     pub fn poses(&self) -> Result<Vec<Pose<f64>>, SchemaError> {
-        let method = self.method;
-        if let Some((key, _)) = self.given_keys().into_iter().find(|(k, given)| *given && !method.inputs().contains(k))
-        {
-            return Err(SchemaError::Build { method, source: BuildError::Unused { key, method } });
-        }
-        let m = self.poses.len();
-        if m < 2 {
-            return Err(SchemaError::Build { method, source: BuildError::TooFewPoses { got: m } });
-        }
-        let poses = self
-            .poses
-            .iter()
-            .enumerate()
-            .map(|(i, p)| p.to_pose().map_err(|e| e.at(&format!("poses[{i}]"))))
-            .collect::<Result<Vec<_>, _>>()?;
-        if let Some(v) = &self.velocities
-            && v.len() != m
-        {
-            return Err(SchemaError::VelocityCount { got: v.len(), poses: m });
-        }
-        if let Some(shape) = &self.shape {
-            if matches!(shape, PerPose::Each(v) if v.len() != m) {
-                return Err(SchemaError::ShapeForm);
-            }
-            if let Some(x) = shape.values().iter().find(|x| !(**x > 0.0 && x.is_finite())) {
-                return Err(SchemaError::ShapeValue { got: *x });
-            }
-        }
-        if let Some(gamma) = &self.gamma
-            && (matches!(gamma, PerPose::Each(v) if v.len() != m)
-                || gamma.values().iter().flatten().any(|x| !x.is_finite()))
-        {
-            return Err(SchemaError::GammaForm);
-        }
-        if self.samples == 1 || self.samples > MAX_SAMPLES {
-            return Err(SchemaError::Samples { got: self.samples });
-        }
-        Ok(poses)
-    }
-
-    /// Checks every rule (see [`InterpolateSpec::poses`]).
-    ///
-    /// ```
-    /// use motion::schema::InterpolateSpec;
-    /// let mut spec = InterpolateSpec::from_json(r#"{"method": "wl-linear", "poses": [{}, {"position": [1, 0, 0]}]}"#)?;
-    /// spec.l1 = Some(1);
-    /// assert_eq!(spec.check().unwrap_err().to_string(), "`l1` is not used by `wl-linear` (it interpolates the key poses only)");
-    /// # Ok::<(), motion::schema::SchemaError>(())
-    /// ```
-    pub fn check(&self) -> Result<(), SchemaError> {
-        self.poses().map(drop)
+        self.poses_with(&PoseObject::to_pose)
     }
 
     /// The input of [`Method::build`]: the key poses, parameters, the space twists of the
@@ -457,38 +415,7 @@ impl InterpolateSpec {
     /// # Ok::<(), motion::schema::SchemaError>(())
     /// ```
     pub fn method_input(&self) -> Result<MethodInput<f64>, SchemaError> {
-        let poses = self.poses()?;
-        let m = poses.len();
-        let velocities = match &self.velocities {
-            None => None,
-            Some(v) => Some(
-                v.iter()
-                    .zip(&poses)
-                    .map(|(w, s)| w.twist(s).map_err(SchemaError::Velocity))
-                    .collect::<Result<Vec<_>, _>>()?,
-            ),
-        };
-        let shapes = if self.shape.is_some() || self.gamma.is_some() {
-            let lambda = self.shape.clone().unwrap_or(PerPose::Common(1.0));
-            let gamma = self.gamma.clone().unwrap_or(PerPose::Common([0.0, 0.0]));
-            let shape = |k: usize| {
-                let g = gamma.get(k);
-                Shape::new(lambda.get(k), Pseudoscalar::new(g[0], g[1]))
-            };
-            Some(match (&lambda, &gamma) {
-                (PerPose::Common(_), PerPose::Common(_)) => HermiteShapes::Common(shape(0)),
-                _ => HermiteShapes::PerPose((0..m).map(shape).collect()),
-            })
-        } else {
-            None
-        };
-        Ok(MethodInput {
-            parameters: self.parameters.to_parameters(),
-            velocities,
-            shapes,
-            l1: self.l1,
-            ..MethodInput::new(poses)
-        })
+        self.method_input_with(self.poses()?, &|x| *x)
     }
 
     /// Checks the spec and builds its motion ([`Method::build`]); a failure of the method is
@@ -516,5 +443,163 @@ impl InterpolateSpec {
     /// ```
     pub fn body_points(&self) -> Vec<[f64; 3]> {
         self.body_points.clone().unwrap_or_else(|| vec![[0.0; 3]])
+    }
+}
+
+impl<N: SpecNumber> InterpolateSpec<N> {
+    /// [`InterpolateSpec::from_json`] in any number type ([`super::Exact`] reads every literal
+    /// as written).
+    ///
+    /// ```
+    /// use algebra_core::rational::ratio;
+    /// use motion::schema::{Exact, InterpolateSpec, interpolate::ParameterSpec};
+    /// let spec = InterpolateSpec::<Exact>::read_json(r#"{"method": "juttler-affine", "parameters": [0, 0.1, 1],
+    ///     "poses": [{"position": [0, 0, 0]}, {"position": [1, 0, 0]}, {"position": [1, 1, 0]}]}"#)?;
+    /// assert_eq!(spec.parameters, ParameterSpec::Given([ratio(0, 1), ratio(1, 10), ratio(1, 1)].map(Exact).to_vec()));
+    /// # Ok::<(), motion::schema::SchemaError>(())
+    /// ```
+    pub fn read_json(text: &str) -> Result<Self, SchemaError> {
+        let raw: RawSpec<N> = serde_json::from_str(&N::prepare_text(text)).map_err(|e| SchemaError::of_json(&e))?;
+        InterpolateSpec::try_from(raw)
+    }
+
+    /// [`InterpolateSpec::from_value`] in any number type.
+    ///
+    /// ```
+    /// use motion::schema::{Exact, InterpolateSpec};
+    /// let v = serde_json::json!({"method": "wl-linear", "poses": [{}, {"position": ["1/3", 0, 0]}]});
+    /// assert_eq!(InterpolateSpec::<Exact>::read_value(&v)?.poses.len(), 2);
+    /// # Ok::<(), motion::schema::SchemaError>(())
+    /// ```
+    pub fn read_value(v: &Value) -> Result<Self, SchemaError> {
+        let raw = RawSpec::<N>::deserialize(v).map_err(|e| SchemaError::Invalid(e.to_string()))?;
+        InterpolateSpec::try_from(raw)
+    }
+
+    /// The optional keys the spec gives.
+    fn given_keys(&self) -> [(&'static str, bool); 4] {
+        [
+            ("velocities", self.velocities.is_some()),
+            ("shape", self.shape.is_some()),
+            ("gamma", self.gamma.is_some()),
+            ("l1", self.l1.is_some()),
+        ]
+    }
+
+    /// Every rule of the format, in the order the CLI reports them: keys the method does not
+    /// read, at least two poses, each pose (converted by `pose`), one velocity per pose, shapes
+    /// and `gamma`, `samples`. Returns the converted key poses.
+    ///
+    /// ```
+    /// use motion::schema::{InterpolateSpec, SchemaError, interpolate::PerPose};
+    /// let mut spec = InterpolateSpec::from_value(&serde_json::json!({
+    ///     "method": "ccm-additive", "poses": [{"position": [0, 0, 0]}, {"position": [1, 0, 0]}]}))?;
+    /// spec.shape = Some(PerPose::Common(-1.0));
+    /// assert_eq!(spec.poses_with(&|_| Ok(())).unwrap_err(), SchemaError::ShapeValue { got: -1.0 });
+    /// # Ok::<(), SchemaError>(())
+    /// ```
+    pub fn poses_with<P>(&self, pose: &dyn Fn(&PoseObject<N>) -> Result<P, PoseError>) -> Result<Vec<P>, SchemaError> {
+        let method = self.method;
+        if let Some((key, _)) = self.given_keys().into_iter().find(|(k, given)| *given && !method.inputs().contains(k))
+        {
+            return Err(SchemaError::Build { method, source: BuildError::Unused { key, method } });
+        }
+        let m = self.poses.len();
+        if m < 2 {
+            return Err(SchemaError::Build { method, source: BuildError::TooFewPoses { got: m } });
+        }
+        let poses = self
+            .poses
+            .iter()
+            .enumerate()
+            .map(|(i, p)| pose(p).map_err(|e| e.at(&format!("poses[{i}]"))))
+            .collect::<Result<Vec<_>, _>>()?;
+        if let Some(v) = &self.velocities
+            && v.len() != m
+        {
+            return Err(SchemaError::VelocityCount { got: v.len(), poses: m });
+        }
+        if let Some(shape) = &self.shape {
+            if matches!(shape, PerPose::Each(v) if v.len() != m) {
+                return Err(SchemaError::ShapeForm);
+            }
+            if let Some(x) = shape.values().iter().find(|x| !x.is_positive()) {
+                return Err(SchemaError::ShapeValue { got: x.to_f64() });
+            }
+        }
+        if let Some(gamma) = &self.gamma
+            && (matches!(gamma, PerPose::Each(v) if v.len() != m)
+                || gamma.values().iter().flatten().any(|x| !SpecNumber::is_finite(x)))
+        {
+            return Err(SchemaError::GammaForm);
+        }
+        if self.samples == 1 || self.samples > MAX_SAMPLES {
+            return Err(SchemaError::Samples { got: self.samples });
+        }
+        Ok(poses)
+    }
+
+    /// Checks every rule of the format ([`InterpolateSpec::poses_with`]); the key poses are
+    /// converted where the number type can tell ([`SpecNumber::check_pose`]).
+    ///
+    /// ```
+    /// use motion::schema::InterpolateSpec;
+    /// let mut spec = InterpolateSpec::from_json(r#"{"method": "wl-linear", "poses": [{}, {"position": [1, 0, 0]}]}"#)?;
+    /// spec.l1 = Some(1);
+    /// assert_eq!(spec.check().unwrap_err().to_string(), "`l1` is not used by `wl-linear` (it interpolates the key poses only)");
+    /// # Ok::<(), motion::schema::SchemaError>(())
+    /// ```
+    pub fn check(&self) -> Result<(), SchemaError> {
+        self.poses_with(&|p| N::check_pose(p)).map(drop)
+    }
+
+    /// [`InterpolateSpec::method_input`] over any field: the key poses already converted (by
+    /// [`InterpolateSpec::poses_with`]) and every other number mapped by `f`.
+    ///
+    /// ```
+    /// use motion::schema::InterpolateSpec;
+    /// let spec = InterpolateSpec::from_json(r#"{"method": "ccm-additive", "shape": 2,
+    ///     "poses": [{"position": [0, 0, 0]}, {"position": [1, 0, 0]}]}"#)?;
+    /// let input = spec.method_input_with(spec.poses()?, &|x| *x)?;
+    /// assert_eq!(input.poses.len(), 2);
+    /// assert!(matches!(input.shapes, Some(motion::HermiteShapes::Common(s)) if s.lambda == 2.0));
+    /// # Ok::<(), motion::schema::SchemaError>(())
+    /// ```
+    pub fn method_input_with<T: Field>(
+        &self,
+        poses: Vec<Pose<T>>,
+        f: &dyn Fn(&N) -> T,
+    ) -> Result<MethodInput<T>, SchemaError> {
+        let m = poses.len();
+        let velocities = match &self.velocities {
+            None => None,
+            Some(v) => Some(
+                v.iter()
+                    .zip(&poses)
+                    .map(|(w, s)| w.map(f).twist(s).map_err(SchemaError::Velocity))
+                    .collect::<Result<Vec<_>, _>>()?,
+            ),
+        };
+        let shapes = if self.shape.is_some() || self.gamma.is_some() {
+            let lambda = self.shape.clone().unwrap_or(PerPose::Common(N::one()));
+            let gamma = self.gamma.clone().unwrap_or(PerPose::Common([N::zero(), N::zero()]));
+            let shape = |k: usize| {
+                let g = gamma.get(k);
+                Shape::new(f(&lambda.get(k)), Pseudoscalar::new(f(&g[0]), f(&g[1])))
+            };
+            Some(match (&lambda, &gamma) {
+                (PerPose::Common(_), PerPose::Common(_)) => HermiteShapes::Common(shape(0)),
+                _ => HermiteShapes::PerPose((0..m).map(shape).collect()),
+            })
+        } else {
+            None
+        };
+        Ok(MethodInput {
+            parameters: self.parameters.parameters_with(f),
+            velocities,
+            shapes,
+            l1: self.l1,
+            ..MethodInput::new(poses)
+        })
     }
 }

@@ -29,11 +29,13 @@
 
 pub mod control;
 pub mod interpolate;
+mod number;
 pub mod pose;
 mod strict;
 
 pub use control::ControlSpec;
 pub use interpolate::{InterpolateSpec, MAX_SAMPLES};
+pub use number::{Exact, SpecNumber, quote_numbers};
 pub use pose::{PoseError, PoseObject};
 pub use strict::StrictValue;
 
