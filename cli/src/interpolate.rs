@@ -16,9 +16,13 @@ use crate::budget::Tableau;
 use crate::error::CliError;
 use crate::hermite::strip_comments;
 use crate::output::{Streamed, mv_human, mv_json};
+use crate::precision::{self, MotionScalar, OutScalar, json_list};
 use crate::sample::{Sample, Sampler, checked};
+use crate::scalar::CliScalar;
 use crate::scalar::format_f64;
-use motion::method::{BuiltMotion, Method};
+use algebra_core::rational::Q;
+use algebra_core::{MpFloat, Real, Ring};
+use motion::method::{BuiltMotion, Method, MethodSegment};
 use motion::schema::{InterpolateSpec, SchemaError};
 use motion::trajectory::TrajectorySample;
 use serde_json::{Value, json};
@@ -96,10 +100,22 @@ pub(crate) fn check_sampling(
     n: usize,
     passes: usize,
 ) -> Result<(), CliError> {
-    let (points, degree) = (points.max(1), motion.max_degree());
+    check_segments(motion.method(), motion.segments(), points, n, passes)
+}
+
+/// [`check_sampling`] of a method's segments in any scalar.
+fn check_segments<T: Ring>(
+    method: Method,
+    segments: &[MethodSegment<T>],
+    points: usize,
+    n: usize,
+    passes: usize,
+) -> Result<(), CliError> {
+    let points = points.max(1);
+    let degree = segments.iter().map(|s| s.degree).max().unwrap_or(0);
     crate::budget::check(
         &format!("sampling {points} body points of degree-{degree} segments at {n} values"),
-        crate::budget::sampling_work(Tableau::of_method(motion.method()), degree, n, passes) * points as f64,
+        crate::budget::sampling_work(Tableau::of_method(method), degree, n, passes) * points as f64,
     )
 }
 
@@ -123,15 +139,66 @@ pub(crate) fn sample_t(b: &Built, body_points: &[[f64; 3]], t: f64) -> Result<Tr
     Ok(s)
 }
 
+/// One sample of `gam interpolate` in any scalar: the parameter, the rigid matrix, the body
+/// points, their velocities and the angular velocity.
+struct Row<T> {
+    t: T,
+    matrix: [[T; 4]; 4],
+    points: Vec<[T; 3]>,
+    velocities: Vec<[T; 3]>,
+    angular_velocity: [T; 3],
+}
+
+impl<T: Real> Row<T> {
+    /// The row of a sample of a floating-point motion.
+    fn of(s: &TrajectorySample<T>) -> Result<Self, CliError> {
+        let matrix = s.pose.unitize().and_then(|u| u.to_matrix()).map_err(|e| CliError::math(e.to_string()))?;
+        Ok(Row {
+            t: s.t.clone(),
+            matrix,
+            points: s.points.iter().map(|p| p.position.clone()).collect(),
+            velocities: s.points.iter().map(|p| p.velocity.clone()).collect(),
+            angular_velocity: s.space_twist.angular.to_array(),
+        })
+    }
+}
+
+impl Row<Q> {
+    /// The row of an exact sample.
+    fn exact(s: motion::method::ExactSample) -> Self {
+        Row {
+            t: s.t,
+            matrix: s.matrix,
+            points: s.points,
+            velocities: s.velocities,
+            angular_velocity: s.angular_velocity,
+        }
+    }
+}
+
+impl<T: OutScalar> Row<T> {
+    /// The JSON object of `gam interpolate --json`'s `samples[]`.
+    fn json(&self) -> Value {
+        let list3 = |v: &[[T; 3]]| v.iter().map(|p| json_list(p)).collect::<Vec<_>>();
+        json!({"t": self.t.json(), "matrix": self.matrix.iter().map(|r| json_list(r)).collect::<Vec<_>>(),
+            "points": list3(&self.points), "velocities": list3(&self.velocities),
+            "angular_velocity": json_list(&self.angular_velocity)})
+    }
+
+    /// The human line.
+    fn text(&self) -> String {
+        let pts: Vec<String> = self
+            .points
+            .iter()
+            .map(|p| format!("[{}]", p.iter().map(CliScalar::format).collect::<Vec<_>>().join(", ")))
+            .collect();
+        format!("t = {}: points {}", self.t.format(), pts.join(" "))
+    }
+}
+
 /// One sample as a JSON object of `gam interpolate --json`.
 fn sample_json(s: &TrajectorySample<f64>) -> Result<Value, CliError> {
-    let matrix = sample_matrix(s)?;
-    // `x + 0.0` prints -0.0 as 0.0.
-    let v3 = |v: &[f64; 3]| v.map(|x| x + 0.0);
-    Ok(json!({"t": s.t, "matrix": matrix.map(|r| r.map(|x| x + 0.0)),
-        "points": s.points.iter().map(|p| v3(&p.position)).collect::<Vec<_>>(),
-        "velocities": s.points.iter().map(|p| v3(&p.velocity)).collect::<Vec<_>>(),
-        "angular_velocity": v3(&s.space_twist.angular.to_array())}))
+    Ok(Row::of(s)?.json())
 }
 
 /// The rigid (normalised) pose of a sample as a 4x4 matrix.
@@ -140,24 +207,76 @@ pub(crate) fn sample_matrix(s: &TrajectorySample<f64>) -> Result<[[f64; 4]; 4], 
 }
 
 /// The contract's `segments` array.
-fn segments_json(b: &Built) -> Vec<Value> {
-    let z = |x: &f64| x + 0.0;
-    b.motion
-        .segments()
+fn segments_json<T: OutScalar>(segments: &[MethodSegment<T>]) -> Vec<Value> {
+    segments
         .iter()
         .map(|seg| {
-            let mut v = json!({"t0": seg.t0, "t1": seg.t1, "representation": seg.representation, "degree": seg.degree,
+            let mut v = json!({"t0": seg.t0.json(), "t1": seg.t1.json(), "representation": seg.representation, "degree": seg.degree,
                 "control_poses": seg.control_poses.iter().map(|s| mv_json(&s.to_multivector())).collect::<Vec<_>>()});
             if let Some(d) = &seg.dual_quaternions {
-                v["dual_quaternions"] = json!(d.iter().map(|d| d.coeffs().map(|x| z(&x))).collect::<Vec<_>>());
+                v["dual_quaternions"] = json!(d.iter().map(|d| json_list(&d.coeffs())).collect::<Vec<_>>());
             }
             if let Some(h) = &seg.hexanions {
-                let hex = |x: &motion::repr::hexanion::Hexanion<f64>| json!({"omega": x.omega.map(|c| z(&c)), "m": x.m.map(|c| z(&c))});
+                let hex = |x: &motion::repr::hexanion::Hexanion<T>| json!({"omega": json_list(&x.omega), "m": json_list(&x.m)});
                 v["hexanions"] = json!([hex(&h[0]), hex(&h[1])]);
             }
             v
         })
         .collect()
+}
+
+/// The header lines of the human output: the method, its parameters and each segment's
+/// control poses (the key poses once, for the methods whose segments are key poses).
+fn header_text<T: OutScalar>(
+    method: Method,
+    times: &[T],
+    segments: &[MethodSegment<T>],
+    key_poses: &[motion::Pose<T>],
+) -> Vec<String> {
+    let t = times.iter().map(CliScalar::format).collect::<Vec<_>>().join(", ");
+    let mut lines = vec![format!("{method}: {} segments through {} poses at t = [{t}]", segments.len(), times.len())];
+    if matches!(method, Method::WlLinear | Method::WlQuadratic | Method::HexanionLinear) {
+        // their segments' control poses are key poses: each once
+        for (i, s) in key_poses.iter().enumerate() {
+            lines.push(format!("  P{i} = {}", mv_human(&s.to_multivector())));
+        }
+    } else {
+        for (k, seg) in segments.iter().enumerate() {
+            lines.push(format!("segment {k} (t = {} .. {}):", seg.t0.format(), seg.t1.format()));
+            for (i, s) in seg.control_poses.iter().enumerate() {
+                lines.push(format!("  S{i} = {}", mv_human(&s.to_multivector())));
+            }
+        }
+    }
+    lines
+}
+
+/// Parameter `i` of `n` evenly spaced over `[t0, t1]` (the last exactly `t1`).
+fn even<T: Ring>(t0: &T, t1: &T, n: usize, i: usize) -> T {
+    if i + 1 == n { t1.clone() } else { t0.add_ref(&t1.sub_ref(t0).mul_ref(&T::from_ratio(i as i64, n as i64 - 1))) }
+}
+
+/// What the header of a motion's output shows: its method, parameters, segments and key poses.
+type Header<'h, T> = (Method, &'h [T], &'h [MethodSegment<T>], &'h [motion::Pose<T>]);
+
+/// The output of a motion in any scalar: the header and `n` rows (`row(i)`), JSON streamed
+/// or human.
+fn output<'a, T: OutScalar>(
+    (method, times, segments, key_poses): Header<'_, T>,
+    n: usize,
+    json: bool,
+    row: impl Fn(usize) -> Result<Row<T>, CliError> + 'a,
+) -> Result<String, CliError> {
+    if json {
+        let head =
+            json!({"method": method.name(), "parameters": json_list(times), "segments": segments_json(segments)});
+        return Streamed { head, n, sample: Box::new(move |i| Ok(row(i)?.json())) }.stream();
+    }
+    let mut lines = header_text(method, times, segments, key_poses);
+    for i in 0..n {
+        lines.push(row(i)?.text());
+    }
+    Ok(lines.join("\n"))
 }
 
 /// `gam interpolate --json` of a spec (`label` names it in messages): the header (method,
@@ -169,13 +288,55 @@ pub fn interpolate_json<'a>(label: &str, spec: &InterpolateSpec) -> Result<Strea
     if n > 0 {
         check_work(&b, n, 2)?;
     }
-    let head =
-        json!({"method": b.motion.method().name(), "parameters": b.motion.times(), "segments": segments_json(&b)});
+    let head = json!({"method": b.motion.method().name(), "parameters": json_list(b.motion.times()),
+        "segments": segments_json(b.motion.segments())});
     Ok(Streamed { head, n, sample: Box::new(move |i| sample_json(&sample_at(&b, n, i)?)) })
 }
 
-/// Runs `gam interpolate` on the spec file at `path`.
-pub fn interpolate(path: &str, json: bool) -> Result<String, CliError> {
+/// Runs `gam interpolate` on the spec file at `path`, in the scalar of `--scalar`.
+pub fn interpolate(path: &str, json: bool, scalar: MotionScalar) -> Result<String, CliError> {
+    match scalar {
+        MotionScalar::F64 => interpolate_f64(path, json),
+        MotionScalar::Rational => {
+            let spec = precision::read_exact_spec(path)?;
+            let m = precision::build_exact(path, &spec)?;
+            let bodies = precision::body_points(&spec);
+            let n = if spec.samples >= 2 { spec.samples } else { 0 };
+            if n > 0 {
+                check_segments(m.method(), m.segments(), bodies.len(), n, 1)?;
+            }
+            let times = m.times();
+            let (t0, t1) = (&times[0], &times[times.len() - 1]);
+            let row = |i: usize| {
+                let s = m
+                    .sample(&even(t0, t1, n, i), &bodies)
+                    .map_err(|e| CliError::math(format!("{}: {e}", m.method())))?;
+                Ok(Row::exact(s))
+            };
+            output((m.method(), times, m.segments(), m.key_poses()), n, json, row)
+        }
+        MotionScalar::Mpfr(_) => scalar.run(|| {
+            let spec = precision::read_exact_spec(path)?;
+            let b = precision::build_mpfr(path, &spec)?;
+            let bodies: Vec<[MpFloat; 3]> =
+                precision::body_points(&spec).iter().map(|p| p.each_ref().map(MpFloat::from_rational)).collect();
+            let n = if spec.samples >= 2 { spec.samples } else { 0 };
+            if n > 0 {
+                check_segments(b.method(), b.segments(), bodies.len(), n, 1)?;
+            }
+            let times = b.times();
+            let (t0, t1) = (&times[0], &times[times.len() - 1]);
+            let row = |i: usize| {
+                let s = b.sample(&even(t0, t1, n, i), &bodies).map_err(|e| CliError::math(e.to_string()))?;
+                Row::of(&s)
+            };
+            output((b.method(), times, b.segments(), b.key_poses()), n, json, row)
+        }),
+    }
+}
+
+/// `gam interpolate` in f64.
+fn interpolate_f64(path: &str, json: bool) -> Result<String, CliError> {
     let spec = read_spec(path)?;
     if json {
         return interpolate_json(path, &spec)?.stream();
@@ -185,29 +346,10 @@ pub fn interpolate(path: &str, json: bool) -> Result<String, CliError> {
     if n > 0 {
         check_work(&b, n, 1)?;
     }
-    let method = b.motion.method();
-    let times = b.motion.times();
-    let t = times.iter().map(|x| format_f64(*x)).collect::<Vec<_>>().join(", ");
-    let segments = b.motion.segments();
-    let mut lines = vec![format!("{method}: {} segments through {} poses at t = [{t}]", segments.len(), times.len())];
-    if matches!(method, Method::WlLinear | Method::WlQuadratic | Method::HexanionLinear) {
-        // their segments' control poses are key poses: each once
-        for (i, s) in b.motion.key_poses().iter().enumerate() {
-            lines.push(format!("  P{i} = {}", mv_human(&s.to_multivector())));
-        }
-    } else {
-        for (k, seg) in segments.iter().enumerate() {
-            lines.push(format!("segment {k} (t = {} .. {}):", format_f64(seg.t0), format_f64(seg.t1)));
-            for (i, s) in seg.control_poses.iter().enumerate() {
-                lines.push(format!("  S{i} = {}", mv_human(&s.to_multivector())));
-            }
-        }
-    }
+    let m = &b.motion;
+    let mut lines = header_text(m.method(), m.times(), m.segments(), m.key_poses());
     for i in 0..n {
-        let s = sample_at(&b, n, i)?;
-        let pts: Vec<String> =
-            s.points.iter().map(|p| format!("[{}]", p.position.map(format_f64).join(", "))).collect();
-        lines.push(format!("t = {}: points {}", format_f64(s.t), pts.join(" ")));
+        lines.push(Row::of(&sample_at(&b, n, i)?)?.text());
     }
     Ok(lines.join("\n"))
 }

@@ -39,6 +39,8 @@ pub mod plot;
 #[doc(hidden)]
 pub mod pose;
 #[doc(hidden)]
+pub mod precision;
+#[doc(hidden)]
 pub mod prove;
 #[doc(hidden)]
 pub mod sample;

@@ -6,14 +6,15 @@
 //! on stderr and nothing on stdout.
 
 use gam::{
-    algebra_help, codegen, commands, error, figures, finite_guard, hermite, interpolate, plot, pose, prove, sample,
-    scalar, trajectory, verify,
+    algebra_help, codegen, commands, error, figures, finite_guard, hermite, interpolate, plot, pose, precision, prove,
+    sample, scalar, trajectory, verify,
 };
 
 use algebra_core::{Basis, Product};
 use clap::error::ErrorKind;
 use clap::{Parser, Subcommand};
 use error::{CliError, EXIT_USAGE};
+use precision::MotionScalar;
 use scalar::ScalarKind;
 use std::io::Write;
 use std::process::ExitCode;
@@ -93,6 +94,9 @@ enum Command {
         /// body_points (see docs/cli.md).
         #[arg(value_name = "SPEC.json")]
         spec: String,
+        /// f64, rational (exact: juttler-* methods with rational key poses) or mpfr:BITS.
+        #[arg(long, value_name = "S", default_value = "f64")]
+        scalar: MotionScalar,
     },
     /// The trajectory of a body point under a `gam interpolate` spec's motion as rational Bézier
     /// curves, one per segment (rational methods only: ccm-additive, juttler-*).
@@ -100,6 +104,9 @@ enum Command {
         /// Print one JSON object: {"segments": [{"t0", "t1", "degree", "weights", "points"}]}.
         #[arg(long)]
         json: bool,
+        /// f64, rational (exact: juttler-* methods with rational key poses) or mpfr:BITS.
+        #[arg(long, value_name = "S", default_value = "f64")]
+        scalar: MotionScalar,
         /// The JSON spec of `gam interpolate`.
         #[arg(value_name = "SPEC.json")]
         spec: String,
@@ -244,8 +251,8 @@ fn run(command: Command) -> Result<(String, Option<CliError>), CliError> {
         Command::Table { algebra, basis, product, json } => commands::table(&algebra, basis, product, json),
         Command::Codegen(args) => codegen::codegen(&args),
         Command::Hermite { json, spec } => hermite::hermite(&spec, json),
-        Command::Interpolate { json, spec } => interpolate::interpolate(&spec, json),
-        Command::Trajectory { json, spec, point } => trajectory::trajectory(&spec, &point, json),
+        Command::Interpolate { json, spec, scalar } => interpolate::interpolate(&spec, json, scalar),
+        Command::Trajectory { json, spec, point, scalar } => trajectory::trajectory(&spec, &point, json, scalar),
         Command::Pose { json, pose } => pose::pose(&pose, json),
         Command::Sample { samples, json, spec } => sample::sample(&spec, samples, json),
         Command::Plot { out, format, samples, view, frames, body, json, animate, acceleration, specs } => {

@@ -4,19 +4,27 @@
 //! built by the one build path of `gam interpolate` (`motion::method::Method::build`); the
 //! curves come from `motion::method::BuiltMotion::rational_trajectories`, i.e. the
 //! `motion::juttler::RationalMotion` trait. Methods whose motions are not rational
-//! (multiplicative, W-L, hexanion) exit 2 with one `error:` line saying so.
+//! (multiplicative, W-L, hexanion) exit 2 with one `error:` line saying so. With
+//! `--scalar rational` the curves are exact (`motion::method::Method::build_exact`), with
+//! `--scalar mpfr:BITS` computed at that precision ([`crate::precision`]).
 
 use crate::error::CliError;
 use crate::interpolate::{build, read_spec, usage};
-use crate::scalar::format_f64;
-use motion::method::{BuildError, Method};
+use crate::precision::{self, MotionScalar, OutScalar, json_list};
+use crate::scalar::CliScalar;
+use algebra_core::rational::{parse_rational, rational_to_f64};
+use algebra_core::{MpFloat, Ring};
+use motion::method::{BuildError, Method, RationalSegment};
 use motion::schema::InterpolateSpec;
 use serde_json::{Value, json};
 
-/// `x,y,z` of `--point`: three finite numbers.
+/// `x,y,z` of `--point`: three finite numbers (decimals, or `p/q` rounded to the nearest f64).
 pub(crate) fn point(text: &str) -> Result<[f64; 3], CliError> {
     let bad = || CliError::usage(format!("`--point {text}`: expected three finite numbers `x,y,z`"));
-    let v: Vec<f64> = text.split(',').map(|s| s.trim().parse::<f64>().map_err(|_| bad())).collect::<Result<_, _>>()?;
+    let number = |s: &str| {
+        s.trim().parse::<f64>().ok().or_else(|| parse_rational(s).ok().map(|q| rational_to_f64(&q))).ok_or_else(bad)
+    };
+    let v: Vec<f64> = text.split(',').map(number).collect::<Result<_, _>>()?;
     match v[..] {
         [x, y, z] if v.iter().all(|c| c.is_finite()) => Ok([x, y, z]),
         _ => Err(bad()),
@@ -24,63 +32,99 @@ pub(crate) fn point(text: &str) -> Result<[f64; 3], CliError> {
 }
 
 /// One segment's curve: `t0`, `t1`, degree, weights, affine control points.
-type Curve = (f64, f64, usize, Vec<f64>, Vec<[f64; 3]>);
+type Curve<T> = (T, T, usize, Vec<T>, Vec<[T; 3]>);
 
-/// The rational Bézier curves of body point `x` under the motion of a spec (`label` names it
-/// in messages), checked finite.
-fn curves(label: &str, spec: &InterpolateSpec, x: &[f64; 3]) -> Result<(Method, Vec<Curve>), CliError> {
-    let b = build(label, spec)?;
-    let method = b.motion.method();
-    let segments = b.motion.rational_trajectories(x).map_err(|e| match e {
+/// The curves of rational segments (of `method`, for body point `x`), checked finite.
+fn curves_of<T: OutScalar>(
+    method: Method,
+    x: &[T; 3],
+    segments: Result<Vec<RationalSegment<T>>, BuildError>,
+    label: &str,
+) -> Result<Vec<Curve<T>>, CliError> {
+    let x_text = || format!("[{}]", x.iter().map(CliScalar::format).collect::<Vec<_>>().join(", "));
+    let segments = segments.map_err(|e| match e {
         BuildError::NotRational { .. } => usage(label, e),
         e => CliError::math(format!("{method}: {e}")),
     })?;
     let mut out = Vec::with_capacity(segments.len());
-    for s in &segments {
+    for s in segments {
         let weights = s.curve.weights();
-        let points = s.curve.points().map_err(|e| CliError::math(format!("{method}: the trajectory of {x:?}: {e}")))?;
-        let finite = weights.iter().chain(points.iter().flatten()).all(|c| c.is_finite());
-        if !finite {
-            return Err(CliError::math(format!("{method}: the trajectory of {x:?} is not finite (overflow)")));
+        let points =
+            s.curve.points().map_err(|e| CliError::math(format!("{method}: the trajectory of {}: {e}", x_text())))?;
+        if !weights.iter().chain(points.iter().flatten()).all(CliScalar::finite) {
+            return Err(CliError::math(format!("{method}: the trajectory of {} is not finite (overflow)", x_text())));
         }
         out.push((s.t0, s.t1, s.curve.degree(), weights, points));
     }
-    Ok((method, out))
+    Ok(out)
+}
+
+/// The curves of body point `x` under the f64 motion of a spec (`label` names it in messages).
+fn curves(label: &str, spec: &InterpolateSpec, x: &[f64; 3]) -> Result<(Method, Vec<Curve<f64>>), CliError> {
+    let b = build(label, spec)?;
+    let method = b.motion.method();
+    Ok((method, curves_of(method, x, b.motion.rational_trajectories(x), label)?))
+}
+
+/// The `--json` object of curves.
+fn curves_json<T: OutScalar>(curves: &[Curve<T>]) -> Value {
+    let segs: Vec<_> = curves
+        .iter()
+        .map(|(t0, t1, d, w, p)| {
+            json!({"t0": t0.json(), "t1": t1.json(), "degree": d, "weights": json_list(w),
+                "points": p.iter().map(|q| json_list(q)).collect::<Vec<_>>()})
+        })
+        .collect();
+    json!({ "segments": segs })
+}
+
+/// The human form of curves.
+fn curves_text<T: OutScalar>(method: Method, x: &[T; 3], curves: &[Curve<T>]) -> String {
+    let f = |c: &T| c.format();
+    let list = |v: &[T]| v.iter().map(f).collect::<Vec<_>>().join(", ");
+    let mut lines = vec![format!(
+        "{method}: trajectory of [{}] as {} rational Bézier curves (local parameter u in [0, 1])",
+        list(x),
+        curves.len()
+    )];
+    for (k, (t0, t1, d, w, p)) in curves.iter().enumerate() {
+        lines.push(format!("segment {k} (t = {} .. {}): degree {d}", f(t0), f(t1)));
+        for (j, (wj, pj)) in w.iter().zip(p).enumerate() {
+            lines.push(format!("  w{j} = {}, P{j} = [{}]", f(wj), list(pj)));
+        }
+    }
+    lines.join("\n")
 }
 
 /// `gam trajectory --json` of a spec (`label` names it in messages) and body point `x`.
 pub fn trajectory_json(label: &str, spec: &InterpolateSpec, x: &[f64; 3]) -> Result<Value, CliError> {
-    let z = |c: f64| c + 0.0;
-    let segs: Vec<_> = curves(label, spec, x)?
-        .1
-        .iter()
-        .map(|(t0, t1, d, w, p)| {
-            json!({"t0": t0, "t1": t1, "degree": d, "weights": w.iter().map(|c| z(*c)).collect::<Vec<_>>(),
-                "points": p.iter().map(|q| q.map(z)).collect::<Vec<_>>()})
-        })
-        .collect();
-    Ok(json!({ "segments": segs }))
+    Ok(curves_json(&curves(label, spec, x)?.1))
 }
 
-/// Runs `gam trajectory` on the spec file at `path`.
-pub fn trajectory(path: &str, point_text: &str, json: bool) -> Result<String, CliError> {
-    let x = point(point_text)?;
-    let spec = read_spec(path)?;
-    if json {
-        return Ok(trajectory_json(path, &spec, &x)?.to_string());
-    }
-    let (method, out) = curves(path, &spec, &x)?;
-    let f = |c: &f64| format_f64(*c);
-    let mut lines = vec![format!(
-        "{method}: trajectory of [{}] as {} rational Bézier curves (local parameter u in [0, 1])",
-        x.iter().map(f).collect::<Vec<_>>().join(", "),
-        out.len()
-    )];
-    for (k, (t0, t1, d, w, p)) in out.iter().enumerate() {
-        lines.push(format!("segment {k} (t = {} .. {}): degree {d}", f(t0), f(t1)));
-        for (j, (wj, pj)) in w.iter().zip(p).enumerate() {
-            lines.push(format!("  w{j} = {}, P{j} = [{}]", f(wj), pj.iter().map(f).collect::<Vec<_>>().join(", ")));
+/// The output of curves, JSON or human.
+fn render<T: OutScalar>(method: Method, x: &[T; 3], curves: &[Curve<T>], json: bool) -> String {
+    if json { curves_json(curves).to_string() } else { curves_text(method, x, curves) }
+}
+
+/// Runs `gam trajectory` on the spec file at `path`, in the scalar of `--scalar`.
+pub fn trajectory(path: &str, point_text: &str, json: bool, scalar: MotionScalar) -> Result<String, CliError> {
+    match scalar {
+        MotionScalar::F64 => {
+            let x = point(point_text)?;
+            let (method, out) = curves(path, &read_spec(path)?, &x)?;
+            Ok(render(method, &x, &out, json))
         }
+        MotionScalar::Rational => {
+            let x = precision::point_exact(point_text)?;
+            let m = precision::build_exact(path, &precision::read_exact_spec(path)?)?;
+            let out = curves_of(m.method(), &x, m.rational_trajectories(&x), path)?;
+            Ok(render(m.method(), &x, &out, json))
+        }
+        MotionScalar::Mpfr(_) => scalar.run(|| {
+            let x = precision::point_exact(point_text)?.map(|c| MpFloat::from_rational(&c));
+            let b = precision::build_mpfr(path, &precision::read_exact_spec(path)?)?;
+            let out = curves_of(b.method(), &x, b.rational_trajectories(&x), path)?;
+            Ok(render(b.method(), &x, &out, json))
+        }),
     }
-    Ok(lines.join("\n"))
 }

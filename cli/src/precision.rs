@@ -1,0 +1,157 @@
+//! `--scalar f64|rational|mpfr:BITS` of the motion commands (shared/cli.md, "Precision of the
+//! motion commands"): which scalar a command computes in, how a spec is read for it, and how
+//! its numbers are printed.
+//!
+//! - `f64` (the default): the spec is read as always, every output unchanged.
+//! - `rational`: the spec is read with every literal exact (`motion::schema::Exact`), the
+//!   motion built by `motion::method::Method::build_exact`, every number printed as a `"p/q"`
+//!   coefficient string; a method or pose form that needs a square root or a transcendental
+//!   function exits 2 naming it.
+//! - `mpfr:BITS`: the spec is read exactly and each number rounded once to `BITS` bits; every
+//!   method runs at that precision ([`motion::method::Method::build`] over `MpFloat`) and prints
+//!   its digits as strings.
+
+use crate::error::CliError;
+use crate::hermite::strip_comments;
+use crate::interpolate::{schema_error, usage};
+use crate::scalar::{CliScalar, ScalarKind};
+use algebra_core::rational::{Q, parse_rational};
+use algebra_core::{Field, MpFloat, PrecisionGuard, Ring};
+use motion::Pose;
+use motion::method::{BuildError, BuiltMotion, ExactMotion, MethodInput};
+use motion::schema::{Exact, InterpolateSpec, PoseObject, SchemaError};
+use serde_json::Value;
+
+/// The scalar of a motion command.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum MotionScalar {
+    /// IEEE doubles (the default).
+    F64,
+    /// Exact rationals.
+    Rational,
+    /// MPFR floats with this many bits.
+    Mpfr(u32),
+}
+
+impl std::str::FromStr for MotionScalar {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        match s.parse::<ScalarKind>()? {
+            ScalarKind::F64 => Ok(MotionScalar::F64),
+            ScalarKind::Rational => Ok(MotionScalar::Rational),
+            ScalarKind::Mpfr(bits) => Ok(MotionScalar::Mpfr(bits)),
+            ScalarKind::Poly => {
+                Err("`poly` is not a scalar of the motion commands (f64, rational or mpfr:BITS)".into())
+            }
+        }
+    }
+}
+
+impl MotionScalar {
+    /// Runs `f` with MPFR's default precision set to the command's (for `mpfr:BITS`).
+    pub(crate) fn run<R>(self, f: impl FnOnce() -> R) -> R {
+        let _guard = match self {
+            MotionScalar::Mpfr(bits) => Some(PrecisionGuard::new(bits)),
+            _ => None,
+        };
+        f()
+    }
+}
+
+/// A scalar the motion commands print: `f64` as JSON numbers (as always), the others as
+/// coefficient strings.
+pub(crate) trait OutScalar: CliScalar + Field {
+    /// The value in `--json` output.
+    fn json(&self) -> Value;
+}
+
+impl OutScalar for f64 {
+    fn json(&self) -> Value {
+        // `x + 0.0` prints -0.0 as 0.0
+        Value::from(self + 0.0)
+    }
+}
+
+impl OutScalar for Q {
+    fn json(&self) -> Value {
+        Value::String(self.format())
+    }
+}
+
+impl OutScalar for MpFloat {
+    fn json(&self) -> Value {
+        Value::String(self.format())
+    }
+}
+
+/// The values as a JSON list.
+pub(crate) fn json_list<T: OutScalar>(v: &[T]) -> Value {
+    Value::Array(v.iter().map(OutScalar::json).collect())
+}
+
+/// `x,y,z` of `--point`, exactly: three numbers (`p`, `p/q` or decimals).
+pub(crate) fn point_exact(text: &str) -> Result<[Q; 3], CliError> {
+    let bad = || CliError::usage(format!("`--point {text}`: expected three numbers `x,y,z`"));
+    let v: Vec<Q> = text.split(',').map(|s| parse_rational(s).map_err(|_| bad())).collect::<Result<_, _>>()?;
+    <[Q; 3]>::try_from(v).map_err(|_| bad())
+}
+
+/// A `gam interpolate` spec read with every literal exact.
+pub(crate) fn read_exact_spec(path: &str) -> Result<InterpolateSpec<Exact>, CliError> {
+    let text = std::fs::read_to_string(path).map_err(|e| CliError::usage(format!("cannot read `{path}`: {e}")))?;
+    let text = strip_comments(&text);
+    let value = motion::schema::parse_json(&text).map_err(|e| usage(path, e))?;
+    if value.get("method").is_none() {
+        return Err(usage(path, "invalid spec: missing field `method`"));
+    }
+    InterpolateSpec::<Exact>::read_json(&text).map_err(|e| schema_error(path, e))
+}
+
+/// The method input over exact rationals (pose forms that are not rational are refused).
+fn exact_input(label: &str, spec: &InterpolateSpec<Exact>) -> Result<MethodInput<Q>, CliError> {
+    let poses = spec.poses_with(&PoseObject::to_pose_exact).map_err(|e| schema_error(label, e))?;
+    spec.method_input_with(poses, &|x| x.0.clone()).map_err(|e| schema_error(label, e))
+}
+
+/// The method input at the current MPFR precision (each exact literal rounded once).
+fn mpfr_input(label: &str, spec: &InterpolateSpec<Exact>) -> Result<MethodInput<MpFloat>, CliError> {
+    let f = |x: &Exact| MpFloat::from_rational(&x.0);
+    let poses: Vec<Pose<MpFloat>> = spec.poses_with(&|p| p.map(&f).to_pose()).map_err(|e| schema_error(label, e))?;
+    spec.method_input_with(poses, &f).map_err(|e| schema_error(label, e))
+}
+
+/// A refusal of the method as the CLI's error (bad input exit 2, a numerical failure exit 1).
+fn build_error(label: &str, spec: &InterpolateSpec<Exact>, source: BuildError) -> CliError {
+    schema_error(label, SchemaError::Build { method: spec.method, source })
+}
+
+/// The budget of a global interpolant, as for f64.
+fn check_budget(spec: &InterpolateSpec<Exact>) -> Result<(), CliError> {
+    let m = spec.poses.len();
+    if let Some(work) = crate::budget::global_build_work(spec.method, m) {
+        crate::budget::check(&format!("building {} through {m} key poses", spec.method.name()), work)?;
+    }
+    Ok(())
+}
+
+/// Builds a spec exactly (`label` names it in messages).
+pub(crate) fn build_exact(label: &str, spec: &InterpolateSpec<Exact>) -> Result<ExactMotion, CliError> {
+    check_budget(spec)?;
+    let input = exact_input(label, spec)?;
+    spec.method.build_exact(&input).map_err(|e| build_error(label, spec, e))
+}
+
+/// Builds a spec at the current MPFR precision (inside [`MotionScalar::run`]).
+pub(crate) fn build_mpfr(label: &str, spec: &InterpolateSpec<Exact>) -> Result<BuiltMotion<MpFloat>, CliError> {
+    check_budget(spec)?;
+    let input = mpfr_input(label, spec)?;
+    spec.method.build(&input).map_err(|e| build_error(label, spec, e))
+}
+
+/// The exact body points of a spec (`[[0, 0, 0]]` when left out).
+pub(crate) fn body_points(spec: &InterpolateSpec<Exact>) -> Vec<[Q; 3]> {
+    match &spec.body_points {
+        Some(v) => v.iter().map(|p| p.each_ref().map(|x| x.0.clone())).collect(),
+        None => vec![[Q::zero(), Q::zero(), Q::zero()]],
+    }
+}

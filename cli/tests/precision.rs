@@ -1,0 +1,251 @@
+//! `--scalar f64|rational|mpfr:BITS` of the motion commands (shared/cli.md, "Precision of the
+//! motion commands"), against an independent exact computation: the fixture
+//! tests/fixtures/fractions/juttler_trajectory.json, written by the committed script
+//! juttler_trajectory.py next to it (Jüttler's TR method with the elliptic and affine
+//! rotations, in Python's `fractions` only).
+//!
+//! - `rational`: `gam trajectory` prints the script's control points and weights, fraction for
+//!   fraction; `gam interpolate` samples are exact (key poses hit exactly).
+//! - `f64`: the same specs agree with the fractions to 1e-12.
+//! - `mpfr:256`: key poses hit to 1e-70.
+//! - refusals: methods and pose forms that need square roots or transcendental functions exit 2
+//!   naming the method or the key.
+
+mod common;
+
+use algebra_core::rational::{Q, parse_rational, rational_to_f64};
+use common::{TempFile, fails, ok};
+use serde_json::Value;
+
+/// The fixture's cases.
+fn cases() -> Vec<Value> {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../tests/fixtures/fractions/juttler_trajectory.json");
+    serde_json::from_str(&std::fs::read_to_string(path).expect("fixture")).expect("fixture JSON")
+}
+
+/// A JSON coefficient (string or number) as an exact rational.
+fn exact(v: &Value) -> Q {
+    match v {
+        Value::String(s) => parse_rational(s).expect("a rational"),
+        Value::Number(n) => parse_rational(&n.to_string()).expect("a number"),
+        _ => panic!("not a number: {v}"),
+    }
+}
+
+/// `C(n, k) u^k (1 - u)^(n - k)`, exactly.
+fn bernstein(n: usize, k: usize, u: &Q) -> Q {
+    let c = (0..k).fold(Q::from_integer(1.into()), |acc, i| acc * Q::new((n - i).into(), (i + 1).into()));
+    let one = Q::from_integer(1.into());
+    let mut b = c;
+    for _ in 0..k {
+        b *= u;
+    }
+    for _ in k..n {
+        b *= &one - u;
+    }
+    b
+}
+
+/// A `segments[]` curve at the local parameter `u`, exactly.
+fn point_at(seg: &Value, u: &Q) -> [Q; 3] {
+    let w: Vec<Q> = seg["weights"].as_array().unwrap().iter().map(exact).collect();
+    let p: Vec<Vec<Q>> =
+        seg["points"].as_array().unwrap().iter().map(|q| q.as_array().unwrap().iter().map(exact).collect()).collect();
+    let d = w.len() - 1;
+    let den: Q = (0..=d).map(|j| bernstein(d, j, u) * &w[j]).sum();
+    std::array::from_fn(|k| (0..=d).map(|j| bernstein(d, j, u) * &w[j] * &p[j][k]).sum::<Q>() / &den)
+}
+
+fn trajectory(spec: &TempFile, point: &str, scalar: &str) -> Value {
+    let out = ok(&["trajectory", "--json", "--scalar", scalar, spec.path(), "--point", point]);
+    serde_json::from_str(&out).expect("JSON")
+}
+
+#[test]
+fn rational_trajectories_equal_the_independent_fractions() {
+    for case in cases() {
+        let spec = TempFile::new("precision-exact.json", &case["spec"].to_string());
+        let got = trajectory(&spec, case["point"].as_str().unwrap(), "rational");
+        assert_eq!(got["segments"], case["segments"], "{}", case["name"]);
+        // every number is a coefficient string
+        assert!(got["segments"][0]["weights"].as_array().unwrap().iter().all(Value::is_string));
+    }
+}
+
+#[test]
+fn f64_agrees_with_the_fractions_to_1e_12() {
+    for case in cases() {
+        let spec = TempFile::new("precision-f64.json", &case["spec"].to_string());
+        let got = trajectory(&spec, case["point"].as_str().unwrap(), "f64");
+        let (a, b) = (&got["segments"][0], &case["segments"][0]);
+        assert_eq!(a["degree"], b["degree"]);
+        let flat = |s: &Value| -> Vec<f64> {
+            let w = s["weights"].as_array().unwrap().iter();
+            let p = s["points"].as_array().unwrap().iter().flat_map(|q| q.as_array().unwrap().iter());
+            w.chain(p).map(|x| rational_to_f64(&exact(x))).collect()
+        };
+        let (x, y) = (flat(a), flat(b));
+        let scale = y.iter().fold(1.0f64, |m, v| m.max(v.abs()));
+        for (i, (x, y)) in x.iter().zip(&y).enumerate() {
+            assert!((x - y).abs() <= 1e-12 * scale, "{}: number {i}: {x} vs {y}", case["name"]);
+        }
+    }
+}
+
+/// The key poses of a fixture case as exact (rotation quaternion, translation), and the
+/// image of `x` under each.
+fn key_images(case: &Value, x: &[Q; 3]) -> Vec<[Q; 3]> {
+    let poses = case["spec"]["poses"].as_array().unwrap();
+    poses
+        .iter()
+        .map(|p| {
+            let q: Vec<Q> = p["quaternion"].as_array().unwrap().iter().map(exact).collect();
+            let t: Vec<Q> = p["position"].as_array().unwrap().iter().map(exact).collect();
+            // q x q* / |q|², Hamilton
+            let (w, v) = (&q[0], [&q[1], &q[2], &q[3]]);
+            let n2: Q = q.iter().map(|c| c * c).sum();
+            let cross = |a: [&Q; 3], b: &[Q; 3]| -> [Q; 3] {
+                [a[1] * &b[2] - a[2] * &b[1], a[2] * &b[0] - a[0] * &b[2], a[0] * &b[1] - a[1] * &b[0]]
+            };
+            let vx = cross(v, x);
+            let vvx = cross(v, &vx);
+            let two = Q::from_integer(2.into());
+            std::array::from_fn(|k| (&x[k] * &n2 + &two * w * &vx[k] + &two * &vvx[k]) / &n2 + &t[k])
+        })
+        .collect()
+}
+
+/// The local parameters `u_i` of the key poses (uniform, or the given ones mapped onto [0, 1]).
+fn key_parameters(case: &Value) -> Vec<Q> {
+    let m = case["spec"]["poses"].as_array().unwrap().len() - 1;
+    match case["spec"].get("parameters") {
+        Some(Value::Array(t)) => {
+            let t: Vec<Q> = t.iter().map(exact).collect();
+            t.iter().map(|ti| (ti - &t[0]) / (&t[m] - &t[0])).collect()
+        }
+        _ => (0..=m).map(|i| Q::new((i as i64).into(), (m as i64).into())).collect(),
+    }
+}
+
+#[test]
+fn rational_curves_hit_the_key_poses_exactly_and_mpfr_to_1e_70() {
+    for case in cases() {
+        let spec = TempFile::new("precision-keys.json", &case["spec"].to_string());
+        let point = case["point"].as_str().unwrap();
+        let x: [Q; 3] = std::array::from_fn(|k| parse_rational(point.split(',').nth(k).unwrap()).unwrap());
+        let want = key_images(&case, &x);
+        let exact_curve = trajectory(&spec, point, "rational");
+        let mpfr_curve = trajectory(&spec, point, "mpfr:256");
+        for (u, p) in key_parameters(&case).iter().zip(&want) {
+            assert_eq!(&point_at(&exact_curve["segments"][0], u), p, "{}", case["name"]);
+            let got = point_at(&mpfr_curve["segments"][0], u);
+            for k in 0..3 {
+                let err = rational_to_f64(&(&got[k] - &p[k])).abs();
+                assert!(err < 1e-70, "{}: u = {u}: error {err:e}", case["name"]);
+            }
+        }
+    }
+}
+
+#[test]
+fn rational_interpolate_samples_are_exact_at_the_key_parameters() {
+    let case = &cases()[1]; // given parameters 0, 1/4, 1/2, 2
+    let mut spec = case["spec"].clone();
+    spec["samples"] = 9.into(); // t = 0, 1/4, ..., 2
+    spec["body_points"] = serde_json::json!([[0.5, -1, 2]]);
+    let file = TempFile::new("precision-interpolate.json", &spec.to_string());
+    let out: Value =
+        serde_json::from_str(&ok(&["interpolate", "--json", "--scalar", "rational", file.path()])).unwrap();
+    assert_eq!(out["parameters"], serde_json::json!(["0", "1/4", "1/2", "2"]));
+    let x = [Q::new(1.into(), 2.into()), Q::from_integer((-1).into()), Q::from_integer(2.into())];
+    let want = key_images(case, &x);
+    let samples = out["samples"].as_array().unwrap();
+    for (sample, key) in [(0, 0), (1, 1), (2, 2), (8, 3)] {
+        let p: Vec<Q> = samples[sample]["points"][0].as_array().unwrap().iter().map(exact).collect();
+        assert_eq!(p, want[key].to_vec(), "sample {sample}");
+    }
+    // the rigid matrix of an exact sample is exactly orthonormal
+    let m: Vec<Vec<Q>> = samples[3]["matrix"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|r| r.as_array().unwrap().iter().map(exact).collect())
+        .collect();
+    for i in 0..3 {
+        for j in 0..3 {
+            let dot: Q = (0..3).map(|k| &m[k][i] * &m[k][j]).sum();
+            assert_eq!(dot, Q::from_integer(i64::from(i == j).into()), "R^T R at ({i}, {j})");
+        }
+    }
+    // velocities agree with the f64 motion
+    let f64_out: Value = serde_json::from_str(&ok(&["interpolate", "--json", file.path()])).unwrap();
+    for i in [3, 5] {
+        for key in ["velocities", "angular_velocity"] {
+            let a = &samples[i][key];
+            let b = &f64_out["samples"][i][key];
+            for (x, y) in numbers(a).iter().zip(numbers(b)) {
+                assert!((x - y).abs() < 1e-9 * (1.0 + y.abs()), "{key} at sample {i}: {x} vs {y}");
+            }
+        }
+    }
+}
+
+/// The numbers of a nested JSON list, as f64.
+fn numbers(v: &Value) -> Vec<f64> {
+    match v {
+        Value::Array(a) => a.iter().flat_map(numbers).collect(),
+        x => vec![rational_to_f64(&exact(x))],
+    }
+}
+
+#[test]
+fn decimal_literals_and_fractions_are_read_exactly() {
+    // 0.1 and "1/10" are the same exact key translation; 0.1 + 0.2 is exactly 0.3
+    let spec = r#"{"method": "juttler-affine", "poses": [{"position": [0.1, 0, 0]},
+        {"position": ["1/10", 0.2, 0]}, {"position": [0.3, "0.2", 1e-30]}], "samples": 2}"#;
+    let file = TempFile::new("precision-decimals.json", spec);
+    let out: Value =
+        serde_json::from_str(&ok(&["interpolate", "--json", "--scalar", "rational", file.path()])).unwrap();
+    assert_eq!(out["samples"][0]["points"][0], serde_json::json!(["1/10", "0", "0"]));
+    let tiny = format!("1/1{}", "0".repeat(30));
+    assert_eq!(out["samples"][1]["points"][0], serde_json::json!(["3/10", "1/5", tiny]));
+}
+
+#[test]
+fn what_is_not_rational_exits_2_naming_it() {
+    let poses =
+        r#"[{"position": [0, 0, 0]}, {"quaternion": [1, 0, 0, 1], "position": [1, 0, 0]}, {"position": [2, 1, 0]}]"#;
+    let spec = |method: &str| {
+        TempFile::new("precision-refuse.json", &format!(r#"{{"method": "{method}", "poses": {poses}}}"#))
+    };
+    for method in ["wl-linear", "hexanion-linear", "ccm-additive", "ccm-multiplicative"] {
+        let f = spec(method);
+        let e = fails(&["interpolate", "--scalar", "rational", f.path()], 2);
+        assert!(e.contains(method) && e.contains("not exact") && e.contains("mpfr:BITS"), "{e}");
+        // the same spec at 128 bits runs
+        ok(&["interpolate", "--scalar", "mpfr:128", f.path()]);
+    }
+    // the elliptic method normalises [1, 0, 0, 1]: |q| = √2
+    let f = spec("juttler-q-motion");
+    let e = fails(&["trajectory", "--scalar", "rational", f.path(), "--point", "0,0,0"], 2);
+    assert!(e.contains("key pose 1") && e.contains("norm² 2"), "{e}");
+    // ... the affine one does not
+    let f = spec("juttler-affine");
+    ok(&["trajectory", "--scalar", "rational", f.path(), "--point", "0,0,0"]);
+    // a pose form with sine and cosine
+    let f = TempFile::new(
+        "precision-axis.json",
+        r#"{"method": "juttler-affine", "poses": [{}, {"axis": [0, 0, 1], "angle": 1}]}"#,
+    );
+    let e = fails(&["interpolate", "--scalar", "rational", f.path()], 2);
+    assert!(e.contains("`poses[1].axis`") && e.contains("sine and cosine"), "{e}");
+    // a parametrisation rule measures distances
+    let f = TempFile::new(
+        "precision-rule.json",
+        r#"{"method": "juttler-affine", "parameters": "chordal", "poses": [{}, {"position": [1, 0, 0]}]}"#,
+    );
+    let e = fails(&["interpolate", "--scalar", "rational", f.path()], 2);
+    assert!(e.contains("parametrisation rule"), "{e}");
+    let e = fails(&["interpolate", "--scalar", "poly", f.path()], 2);
+    assert!(e.contains("not a scalar of the motion commands"), "{e}");
+}
