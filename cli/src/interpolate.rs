@@ -18,7 +18,6 @@ use crate::hermite::strip_comments;
 use crate::output::{Streamed, mv_human, mv_json};
 use crate::precision::{self, MotionScalar, OutScalar, json_list};
 use crate::sample::{Sample, Sampler, checked};
-use crate::scalar::CliScalar;
 use crate::scalar::format_f64;
 use algebra_core::rational::Q;
 use algebra_core::{MpFloat, Real, Ring};
@@ -190,9 +189,9 @@ impl<T: OutScalar> Row<T> {
         let pts: Vec<String> = self
             .points
             .iter()
-            .map(|p| format!("[{}]", p.iter().map(CliScalar::format).collect::<Vec<_>>().join(", ")))
+            .map(|p| format!("[{}]", p.iter().map(OutScalar::text).collect::<Vec<_>>().join(", ")))
             .collect();
-        format!("t = {}: points {}", self.t.format(), pts.join(" "))
+        format!("t = {}: points {}", self.t.text(), pts.join(" "))
     }
 }
 
@@ -233,7 +232,7 @@ fn header_text<T: OutScalar>(
     segments: &[MethodSegment<T>],
     key_poses: &[motion::Pose<T>],
 ) -> Vec<String> {
-    let t = times.iter().map(CliScalar::format).collect::<Vec<_>>().join(", ");
+    let t = times.iter().map(OutScalar::text).collect::<Vec<_>>().join(", ");
     let mut lines = vec![format!("{method}: {} segments through {} poses at t = [{t}]", segments.len(), times.len())];
     if matches!(method, Method::WlLinear | Method::WlQuadratic | Method::HexanionLinear) {
         // their segments' control poses are key poses: each once
@@ -242,7 +241,7 @@ fn header_text<T: OutScalar>(
         }
     } else {
         for (k, seg) in segments.iter().enumerate() {
-            lines.push(format!("segment {k} (t = {} .. {}):", seg.t0.format(), seg.t1.format()));
+            lines.push(format!("segment {k} (t = {} .. {}):", seg.t0.text(), seg.t1.text()));
             for (i, s) in seg.control_poses.iter().enumerate() {
                 lines.push(format!("  S{i} = {}", mv_human(&s.to_multivector())));
             }

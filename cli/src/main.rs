@@ -123,6 +123,9 @@ enum Command {
         /// A pose object (JSON, any form of `gam interpolate`'s poses), or @FILE.
         #[arg(value_name = "POSE_JSON", allow_hyphen_values = true)]
         pose: String,
+        /// f64, rational (exact: matrix and position only) or mpfr:BITS.
+        #[arg(long, value_name = "S", default_value = "f64")]
+        scalar: MotionScalar,
     },
     /// Sample a `gam hermite` segment: pose, body point position, linear and angular speed.
     Sample {
@@ -253,7 +256,7 @@ fn run(command: Command) -> Result<(String, Option<CliError>), CliError> {
         Command::Hermite { json, spec } => hermite::hermite(&spec, json),
         Command::Interpolate { json, spec, scalar } => interpolate::interpolate(&spec, json, scalar),
         Command::Trajectory { json, spec, point, scalar } => trajectory::trajectory(&spec, &point, json, scalar),
-        Command::Pose { json, pose } => pose::pose(&pose, json),
+        Command::Pose { json, pose, scalar } => pose::pose(&pose, json, scalar),
         Command::Sample { samples, json, spec } => sample::sample(&spec, samples, json),
         Command::Plot { out, format, samples, view, frames, body, json, animate, acceleration, specs } => {
             let (specs, out) = (&specs, &out);

@@ -6,74 +6,177 @@
 //!
 //! The pose object, every form of it and its checks are `motion::schema::PoseObject` (the
 //! library owns the format); [`pose_json`] is the command on an already read pose object.
+//!
+//! `--scalar mpfr:BITS` computes every representation at that precision (the object's numbers
+//! read exactly, rounded once); `--scalar rational` reads them exactly and prints the
+//! representations that are rational for every rational pose: `matrix` and `position` (the
+//! others need square roots or transcendental functions: docs/cli.md).
 
 use crate::error::CliError;
 use crate::output::{mv_human, mv_json};
-use crate::scalar::format_f64;
+use crate::precision::{MotionScalar, OutScalar, json_list};
+use crate::scalar::CliScalar;
+use algebra_core::{MpFloat, Multivector, Real, Ring};
 use motion::repr::dual_quaternion::to_dual_quaternion;
 use motion::repr::hexanion::Hexanion;
 use motion::repr::quaternion::to_quaternion_position;
 use motion::repr::screw::Screw;
 use motion::repr::sign::canonical_pose;
-use motion::schema::PoseObject;
+use motion::schema::{Exact, PoseObject};
 use motion::wareham_lasenby::{convert::canonical_sign, from_pose as cga_rotor};
 use motion::{Motor, Pose};
 use serde_json::{Value, json};
 
-/// `x + 0.0` prints -0.0 as 0.0.
-fn z<const N: usize>(v: [f64; N]) -> [f64; N] {
-    v.map(|x| x + 0.0)
-}
-
-fn motor_of(s: &Pose<f64>) -> Motor<f64> {
+fn motor_of<T: Ring>(s: &Pose<T>) -> Motor<T> {
     let [a, b, c, d, e, f, g, h] = s.to_array();
     Motor::new(a, b, c, d, e, f, g, h)
 }
 
-/// Every representation of a (non-singular) pose, as the contract's JSON object.
-pub(crate) fn representations(s: &Pose<f64>) -> Result<Value, CliError> {
+/// `|v|` without overflow or underflow of the squares (a tiny half-angle of 1e-200).
+fn norm3<T: Real>(v: &[T; 3]) -> T {
+    let m = v.iter().map(Real::abs).fold(T::zero(), |a, x| if x > a { x } else { a });
+    if m.is_exact_zero() {
+        return m;
+    }
+    let sum = v.iter().fold(T::zero(), |acc, x| {
+        let y = x.div_ref(&m);
+        acc.add_ref(&y.mul_ref(&y))
+    });
+    m.mul_ref(&Real::sqrt(&sum))
+}
+
+/// Every representation of a pose in one scalar: the fields of the contract's JSON object
+/// (`None` where the scalar cannot hold them: the irrational ones under `rational`).
+struct Representations<T> {
+    matrix: [[T; 4]; 4],
+    position: [T; 3],
+    /// quaternion, axis, angle, motor, dual quaternion, hexanion, screw, cga rotor
+    rest: Option<Rest<T>>,
+}
+
+struct Rest<T> {
+    quaternion: [T; 4],
+    axis: [T; 3],
+    angle: T,
+    motor: Multivector<T>,
+    dual_quaternion: [T; 8],
+    hexanion: Hexanion<T>,
+    screw: Screw<T>,
+    cga_rotor: Multivector<T>,
+}
+
+/// Every representation of a (non-singular) pose over a real scalar.
+fn real_representations<T: Real + OutScalar>(s: &Pose<T>) -> Result<Representations<T>, CliError> {
     let math = |e: &dyn std::fmt::Display| CliError::math(e.to_string());
     let u = canonical_pose(&s.unitize().map_err(|e| math(&e))?);
     let matrix = u.to_matrix().map_err(|e| math(&e))?;
     let (q, position) = to_quaternion_position(&u).map_err(|e| math(&e))?;
-    let v = [q[1], q[2], q[3]];
-    // hypot: the squares of a tiny half-angle (1e-200) underflow
-    let sin_half = v[0].hypot(v[1]).hypot(v[2]);
-    let angle = 2.0 * sin_half.atan2(q[0]);
-    let axis = if sin_half > 0.0 { v.map(|x| x / sin_half) } else { [0.0; 3] };
+    let v = [q[1].clone(), q[2].clone(), q[3].clone()];
+    let sin_half = norm3(&v);
+    let angle = T::from_i64(2).mul_ref(&sin_half.atan2(&q[0]));
+    let axis = if sin_half > T::zero() { v.map(|x| x.div_ref(&sin_half)) } else { [T::zero(), T::zero(), T::zero()] };
     let mut d = to_dual_quaternion(&u).map_err(|e| math(&e))?;
     let r = &d.real;
-    if r.w * q[0] + r.x * q[1] + r.y * q[2] + r.z * q[3] < 0.0 {
+    let dot = r.w.mul_ref(&q[0]).add_ref(&r.x.mul_ref(&q[1])).add_ref(&r.y.mul_ref(&q[2])).add_ref(&r.z.mul_ref(&q[3]));
+    if dot < T::zero() {
         d = -d;
     }
-    let h = Hexanion::from_pose(&u).map_err(|e| math(&e))?;
-    let sc = Screw::of_hexanion(&h);
+    let hexanion = Hexanion::from_pose(&u).map_err(|e| math(&e))?;
+    let screw = Screw::of_hexanion(&hexanion);
     let rotor = canonical_sign(cga_rotor(&u).map_err(|e| math(&e))?);
-    let all = [matrix.iter().flatten().copied().collect(), position.to_vec(), d.coeffs().to_vec(), h.omega.to_vec()]
-        .into_iter()
-        .chain([h.m.to_vec(), sc.point.to_vec(), vec![sc.translation, sc.pitch.unwrap_or(0.0), angle]])
-        .chain([rotor.iter().copied().collect()])
-        .collect::<Vec<Vec<f64>>>();
-    if !all.iter().flatten().all(|x| x.is_finite()) {
+    let reps = Representations {
+        matrix,
+        position,
+        rest: Some(Rest {
+            quaternion: q,
+            axis,
+            angle,
+            motor: motor_of(&u).to_multivector(),
+            dual_quaternion: d.coeffs(),
+            hexanion,
+            screw,
+            cga_rotor: rotor.to_multivector(),
+        }),
+    };
+    if !reps.numbers().iter().all(|x| CliScalar::finite(*x)) {
         return Err(CliError::math("the pose's representations overflow (a translation near the largest f64)"));
     }
-    Ok(json!({
-        "matrix": matrix.map(z),
-        "position": z(position),
-        "quaternion": z(q),
-        "axis": z(axis),
-        "angle": angle,
-        "motor": mv_json(&motor_of(&u).to_multivector()),
-        "dual_quaternion": z(d.coeffs()),
-        "hexanion": {"omega": z(h.omega), "m": z(h.m)},
-        "screw": {"axis": z(sc.axis), "angle": sc.angle, "translation": sc.translation + 0.0,
-                  "point": z(sc.point), "pitch": sc.pitch.map(|p| p + 0.0)},
-        "cga_rotor": mv_json(&rotor.to_multivector()),
-    }))
+    Ok(reps)
+}
+
+impl<T: OutScalar> Representations<T> {
+    /// Every number (for the finiteness check).
+    fn numbers(&self) -> Vec<&T> {
+        let mut all: Vec<&T> = self.matrix.iter().flatten().chain(&self.position).collect();
+        if let Some(r) = &self.rest {
+            let sc = &r.screw;
+            all.extend(r.quaternion.iter().chain(&r.axis).chain([&r.angle]).chain(&r.dual_quaternion));
+            all.extend(r.hexanion.omega.iter().chain(&r.hexanion.m).chain(&sc.axis).chain(&sc.point));
+            all.extend([&sc.angle, &sc.translation].into_iter().chain(sc.pitch.as_ref()));
+            all.extend(r.cga_rotor.coeffs());
+        }
+        all
+    }
+
+    /// The contract's JSON object.
+    fn json(&self) -> Value {
+        let mut out = json!({"matrix": self.matrix.iter().map(|r| json_list(r)).collect::<Vec<_>>(),
+            "position": json_list(&self.position)});
+        if let Some(r) = &self.rest {
+            let sc = &r.screw;
+            let more = json!({
+                "quaternion": json_list(&r.quaternion),
+                "axis": json_list(&r.axis),
+                "angle": r.angle.json(),
+                "motor": mv_json(&r.motor),
+                "dual_quaternion": json_list(&r.dual_quaternion),
+                "hexanion": {"omega": json_list(&r.hexanion.omega), "m": json_list(&r.hexanion.m)},
+                "screw": {"axis": json_list(&sc.axis), "angle": sc.angle.json(), "translation": sc.translation.json(),
+                          "point": json_list(&sc.point), "pitch": sc.pitch.as_ref().map(OutScalar::json)},
+                "cga_rotor": mv_json(&r.cga_rotor),
+            });
+            if let (Some(o), Value::Object(m)) = (out.as_object_mut(), more) {
+                o.extend(m);
+            }
+        }
+        out
+    }
+
+    /// The human form, one representation per line.
+    fn text(&self) -> String {
+        let list = |v: &[T]| format!("[{}]", v.iter().map(OutScalar::text).collect::<Vec<_>>().join(", "));
+        let rows: Vec<String> = self.matrix.iter().map(|r| list(r)).collect();
+        let mut lines = vec![format!("matrix: [{}]", rows.join(", ")), format!("position: {}", list(&self.position))];
+        if let Some(r) = &self.rest {
+            let sc = &r.screw;
+            let pitch = sc.pitch.as_ref().map_or_else(|| "none".to_string(), OutScalar::text);
+            lines.extend([
+                format!("quaternion: {}", list(&r.quaternion)),
+                format!("axis: {}, angle: {}", list(&r.axis), r.angle.text()),
+                format!("motor: {}", mv_human(&r.motor)),
+                format!("dual_quaternion: {}", list(&r.dual_quaternion)),
+                format!("hexanion: omega {}, m {}", list(&r.hexanion.omega), list(&r.hexanion.m)),
+                format!(
+                    "screw: axis {}, angle {}, translation {}, point {}, pitch {pitch}",
+                    list(&sc.axis),
+                    sc.angle.text(),
+                    sc.translation.text(),
+                    list(&sc.point)
+                ),
+                format!("cga_rotor: {}", mv_human(&r.cga_rotor)),
+            ]);
+        }
+        lines.join("\n")
+    }
+}
+
+/// Every representation of a (non-singular) pose, as the contract's JSON object.
+pub(crate) fn representations(s: &Pose<f64>) -> Result<Value, CliError> {
+    Ok(real_representations(s)?.json())
 }
 
 /// The pose of a pose object (`label` names the document in messages).
-fn the_pose(label: &str, object: &PoseObject) -> Result<Pose<f64>, CliError> {
+fn the_pose<T: Real>(label: &str, object: &PoseObject<T>) -> Result<Pose<T>, CliError> {
     object.to_pose().map_err(|e| crate::interpolate::usage(label, e.at("pose")))
 }
 
@@ -83,12 +186,19 @@ pub fn pose_json(label: &str, object: &PoseObject) -> Result<Value, CliError> {
     representations(&the_pose(label, object)?)
 }
 
-fn list(v: &[f64]) -> String {
-    format!("[{}]", v.iter().map(|x| format_f64(*x)).collect::<Vec<_>>().join(", "))
+/// The representations of an exact pose that are rational: the rigid matrix and the position.
+fn exact_representations(
+    label: &str,
+    object: &PoseObject<Exact>,
+) -> Result<Representations<algebra_core::rational::Q>, CliError> {
+    let s = object.to_pose_exact().map_err(|e| crate::interpolate::usage(label, e.at("pose")))?;
+    let matrix = s.to_matrix().map_err(|e| CliError::math(e.to_string()))?;
+    let position = [matrix[0][3].clone(), matrix[1][3].clone(), matrix[2][3].clone()];
+    Ok(Representations { matrix, position, rest: None })
 }
 
-/// Runs `gam pose`: `arg` is a pose object, or `@FILE` holding one.
-pub fn pose(arg: &str, json: bool) -> Result<String, CliError> {
+/// Runs `gam pose`: `arg` is a pose object, or `@FILE` holding one; in the scalar of `--scalar`.
+pub fn pose(arg: &str, json: bool, scalar: MotionScalar) -> Result<String, CliError> {
     let (label, text) = match arg.strip_prefix('@') {
         Some(file) => (
             file.to_string(),
@@ -96,58 +206,28 @@ pub fn pose(arg: &str, json: bool) -> Result<String, CliError> {
         ),
         None => ("POSE_JSON".to_string(), arg.to_string()),
     };
-    let object = PoseObject::from_json(&crate::hermite::strip_comments(&text), "pose")
-        .map_err(|e| crate::interpolate::usage(&label, e))?;
-    let out = pose_json(&label, &object)?;
-    let s = the_pose(&label, &object)?;
-    if json {
-        return Ok(out.to_string());
+    let text = crate::hermite::strip_comments(&text);
+    let render = |json: bool, v: Value, t: String| if json { v.to_string() } else { t };
+    match scalar {
+        MotionScalar::F64 => {
+            let object = PoseObject::from_json(&text, "pose").map_err(|e| crate::interpolate::usage(&label, e))?;
+            let r = real_representations(&the_pose(&label, &object)?)?;
+            Ok(render(json, r.json(), r.text()))
+        }
+        MotionScalar::Rational => {
+            let object = exact_object(&label, &text)?;
+            let r = exact_representations(&label, &object)?;
+            Ok(render(json, r.json(), r.text()))
+        }
+        MotionScalar::Mpfr(_) => scalar.run(|| {
+            let object = exact_object(&label, &text)?.map(&|x| MpFloat::from_rational(&x.0));
+            let r = real_representations(&the_pose(&label, &object)?)?;
+            Ok(render(json, r.json(), r.text()))
+        }),
     }
-    let nums =
-        |k: &str| out[k].as_array().map(|a| a.iter().filter_map(Value::as_f64).collect::<Vec<_>>()).unwrap_or_default();
-    let m = out["matrix"].as_array().cloned().unwrap_or_default();
-    let rows: Vec<String> = m
-        .iter()
-        .map(|r| {
-            list(&r.as_array().map(|a| a.iter().filter_map(Value::as_f64).collect::<Vec<_>>()).unwrap_or_default())
-        })
-        .collect();
-    let sc = &out["screw"];
-    let f = |v: &Value| v.as_f64().map(format_f64).unwrap_or_else(|| "none".into());
-    let sub = |v: &Value| {
-        list(&v.as_array().map(|a| a.iter().filter_map(Value::as_f64).collect::<Vec<_>>()).unwrap_or_default())
-    };
-    Ok([
-        format!("matrix: [{}]", rows.join(", ")),
-        format!("position: {}", list(&nums("position"))),
-        format!("quaternion: {}", list(&nums("quaternion"))),
-        format!("axis: {}, angle: {}", list(&nums("axis")), f(&out["angle"])),
-        format!(
-            "motor: {}",
-            mv_human(
-                &motor_of(&canonical_pose(&s.unitize().map_err(|e| CliError::math(e.to_string()))?)).to_multivector()
-            )
-        ),
-        format!("dual_quaternion: {}", list(&nums("dual_quaternion"))),
-        format!("hexanion: omega {}, m {}", sub(&out["hexanion"]["omega"]), sub(&out["hexanion"]["m"])),
-        format!(
-            "screw: axis {}, angle {}, translation {}, point {}, pitch {}",
-            sub(&sc["axis"]),
-            f(&sc["angle"]),
-            f(&sc["translation"]),
-            sub(&sc["point"]),
-            f(&sc["pitch"])
-        ),
-        format!(
-            "cga_rotor: {}",
-            mv_human(
-                &canonical_sign(
-                    cga_rotor(&s.unitize().map_err(|e| CliError::math(e.to_string()))?)
-                        .map_err(|e| CliError::math(e.to_string()))?
-                )
-                .to_multivector()
-            )
-        ),
-    ]
-    .join("\n"))
+}
+
+/// A pose object read with every literal exact.
+fn exact_object(label: &str, text: &str) -> Result<PoseObject<Exact>, CliError> {
+    PoseObject::<Exact>::read_json(text, "pose").map_err(|e| crate::interpolate::usage(label, e))
 }

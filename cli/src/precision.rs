@@ -63,12 +63,19 @@ impl MotionScalar {
 pub(crate) trait OutScalar: CliScalar + Field {
     /// The value in `--json` output.
     fn json(&self) -> Value;
+    /// The value in human output.
+    fn text(&self) -> String {
+        self.format()
+    }
 }
 
 impl OutScalar for f64 {
     fn json(&self) -> Value {
         // `x + 0.0` prints -0.0 as 0.0
         Value::from(self + 0.0)
+    }
+    fn text(&self) -> String {
+        (self + 0.0).format()
     }
 }
 

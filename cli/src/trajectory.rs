@@ -41,7 +41,7 @@ fn curves_of<T: OutScalar>(
     segments: Result<Vec<RationalSegment<T>>, BuildError>,
     label: &str,
 ) -> Result<Vec<Curve<T>>, CliError> {
-    let x_text = || format!("[{}]", x.iter().map(CliScalar::format).collect::<Vec<_>>().join(", "));
+    let x_text = || format!("[{}]", x.iter().map(OutScalar::text).collect::<Vec<_>>().join(", "));
     let segments = segments.map_err(|e| match e {
         BuildError::NotRational { .. } => usage(label, e),
         e => CliError::math(format!("{method}: {e}")),
@@ -80,7 +80,7 @@ fn curves_json<T: OutScalar>(curves: &[Curve<T>]) -> Value {
 
 /// The human form of curves.
 fn curves_text<T: OutScalar>(method: Method, x: &[T; 3], curves: &[Curve<T>]) -> String {
-    let f = |c: &T| c.format();
+    let f = |c: &T| c.text();
     let list = |v: &[T]| v.iter().map(f).collect::<Vec<_>>().join(", ");
     let mut lines = vec![format!(
         "{method}: trajectory of [{}] as {} rational Bézier curves (local parameter u in [0, 1])",

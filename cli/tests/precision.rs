@@ -249,3 +249,44 @@ fn what_is_not_rational_exits_2_naming_it() {
     let e = fails(&["interpolate", "--scalar", "poly", f.path()], 2);
     assert!(e.contains("not a scalar of the motion commands"), "{e}");
 }
+
+#[test]
+fn pose_prints_what_is_rational_exactly_and_mpfr_everything() {
+    // q = (3/5, 0, 0, 4/5): cos φ = 2w² - 1 = -7/25, sin φ = 2wz = 24/25 (by hand)
+    let pose = r#"{"quaternion": [0.6, 0, 0, 0.8], "position": [1, "1/3", 0]}"#;
+    let want = serde_json::json!([
+        ["-7/25", "-24/25", "0", "1"],
+        ["24/25", "-7/25", "0", "1/3"],
+        ["0", "0", "1", "0"],
+        ["0", "0", "0", "1"]
+    ]);
+    let out: Value = serde_json::from_str(&ok(&["pose", "--json", "--scalar", "rational", pose])).unwrap();
+    assert_eq!(out["matrix"], want);
+    assert_eq!(out["position"], serde_json::json!(["1", "1/3", "0"]));
+    // the irrational representations are left out, not approximated
+    assert_eq!(out.as_object().unwrap().len(), 2, "{out}");
+    // the same non-unit quaternion (scaled by 5) gives the same exact matrix
+    let scaled = r#"{"quaternion": [3, 0, 0, 4], "position": [1, "1/3", 0]}"#;
+    let again: Value = serde_json::from_str(&ok(&["pose", "--json", "--scalar", "rational", scaled])).unwrap();
+    assert_eq!(again["matrix"], want);
+    // mpfr:256: every representation, the matrix within 1e-70 of the exact one
+    let hi: Value = serde_json::from_str(&ok(&["pose", "--json", "--scalar", "mpfr:256", pose])).unwrap();
+    for (i, row) in want.as_array().unwrap().iter().enumerate() {
+        for (j, x) in row.as_array().unwrap().iter().enumerate() {
+            let err = rational_to_f64(&(exact(&hi["matrix"][i][j]) - exact(x))).abs();
+            assert!(err < 1e-70, "matrix[{i}][{j}]: {err:e}");
+        }
+    }
+    for key in ["quaternion", "axis", "angle", "motor", "dual_quaternion", "hexanion", "screw", "cga_rotor"] {
+        assert!(hi.get(key).is_some(), "{key} missing at mpfr:256");
+    }
+    // the unit quaternion at 256 bits: (3/5, 0, 0, 4/5) to 1e-70
+    let q: Vec<Q> = hi["quaternion"].as_array().unwrap().iter().map(exact).collect();
+    let want_q =
+        [Q::new(3.into(), 5.into()), Q::from_integer(0.into()), Q::from_integer(0.into()), Q::new(4.into(), 5.into())];
+    for (a, b) in q.iter().zip(&want_q) {
+        assert!(rational_to_f64(&(a - b)).abs() < 1e-70);
+    }
+    let e = fails(&["pose", "--scalar", "rational", r#"{"hexanion": {"omega": [0, 0, 1], "m": [0, 0, 0]}}"#], 2);
+    assert!(e.contains("`pose.hexanion`") && e.contains("exp"), "{e}");
+}
