@@ -5,11 +5,16 @@
 //! format); this module reads the file and prints the result.
 //!
 //! The file is JSON; `//` comments (outside strings) are allowed, as in the contract's example.
+//! `--scalar mpfr:BITS` reads the numbers exactly, rounds each once and builds the segment at
+//! that precision; `--scalar rational` exits 2 ([`NOT_EXACT`]).
 
 use crate::error::CliError;
 use crate::output::{mv_human, mv_json};
+use crate::precision::{MotionScalar, OutScalar};
+use algebra_core::{MpFloat, Real, Ring};
 use motion::AnyHermiteSegment;
 use motion::Even;
+use motion::schema::Exact;
 pub(crate) use motion::spec::HermiteSpec as Spec;
 use motion::spec::SpecError;
 use serde_json::{Value, json};
@@ -62,19 +67,19 @@ pub(crate) fn spec_error(path: &str, e: SpecError) -> CliError {
 }
 
 /// A JSON list of multivectors in g123inf blade names.
-fn mv_list<'a>(list: impl Iterator<Item = &'a Even<f64>>) -> Value {
+fn mv_list<'a, T: OutScalar + 'a>(list: impl Iterator<Item = &'a Even<T>>) -> Value {
     Value::Array(list.map(|m| mv_json(&m.to_multivector())).collect())
 }
 
 /// The segment of a checked spec (shared with `gam sample` and `gam plot`).
-pub(crate) fn build_segment(spec: &Spec) -> Result<AnyHermiteSegment<f64>, CliError> {
+pub(crate) fn build_segment<T: Real>(spec: &Spec<T>) -> Result<AnyHermiteSegment<T>, CliError> {
     spec.segment()
         .map_err(|e| if e.is_input() { CliError::usage(e.to_string()) } else { CliError::math(e.to_string()) })
 }
 
 /// The segment of a checked `gam hermite` spec (`label` names it in messages), which has no
 /// `body_point`.
-fn hermite_segment(label: &str, spec: &Spec) -> Result<AnyHermiteSegment<f64>, CliError> {
+fn hermite_segment<T: Real>(label: &str, spec: &Spec<T>) -> Result<AnyHermiteSegment<T>, CliError> {
     if spec.body_point.is_some() {
         return Err(CliError::usage(format!("`{label}`: `body_point` is only used by `gam sample` and `gam plot`")));
     }
@@ -84,24 +89,49 @@ fn hermite_segment(label: &str, spec: &Spec) -> Result<AnyHermiteSegment<f64>, C
 /// `gam hermite --json` of a checked spec (`label` names it in messages): control poses,
 /// velocity bivectors and indicatrices.
 pub fn hermite_json(label: &str, spec: &Spec) -> Result<Value, CliError> {
-    let seg = hermite_segment(label, spec)?;
-    let nus: Vec<Even<f64>> = seg.velocity_bivectors().iter().map(Even::from).collect();
-    Ok(json!({
+    Ok(segment_json(&hermite_segment(label, spec)?))
+}
+
+/// The JSON object of a segment.
+fn segment_json<T: OutScalar + Real>(seg: &AnyHermiteSegment<T>) -> Value {
+    let nus: Vec<Even<T>> = seg.velocity_bivectors().iter().map(Even::from).collect();
+    json!({
         "control_poses": mv_list(seg.control_poses().iter()),
         "velocity_bivectors": mv_list(nus.iter()),
         "velocity_indicatrices": mv_list(seg.velocity_indicatrices().iter()),
-    }))
+    })
 }
 
-/// Runs `gam hermite` on the spec file at `path`.
-pub fn hermite(path: &str, json: bool) -> Result<String, CliError> {
-    let spec = read_spec(path)?;
-    if json {
-        return Ok(hermite_json(path, &spec)?.to_string());
+/// A `gam hermite` spec read with every literal exact (for `--scalar mpfr:BITS`).
+pub(crate) fn read_exact_spec(path: &str) -> Result<Spec<Exact>, CliError> {
+    let text = std::fs::read_to_string(path).map_err(|e| CliError::usage(format!("cannot read `{path}`: {e}")))?;
+    Spec::<Exact>::read_json(&strip_comments(&text)).map_err(|e| spec_error(path, e))
+}
+
+/// Why `gam hermite` specs are not exact.
+pub(crate) const NOT_EXACT: &str = "the end conditions give rotations by axis and angle (sine and cosine) and the C1 construction of Sec. 5.3 takes unit poses: not exact over the rationals (use --scalar mpfr:BITS or f64)";
+
+/// Runs `gam hermite` on the spec file at `path`, in the scalar of `--scalar`.
+pub fn hermite(path: &str, json: bool, scalar: MotionScalar) -> Result<String, CliError> {
+    match scalar {
+        MotionScalar::F64 => output(path, &read_spec(path)?, json),
+        MotionScalar::Rational => Err(CliError::usage(format!("`{path}`: gam hermite: {NOT_EXACT}"))),
+        MotionScalar::Mpfr(_) => scalar.run(|| {
+            let spec = read_exact_spec(path)?.map(&|x| MpFloat::from_rational(&x.0));
+            spec.check().map_err(|e| spec_error(path, e))?;
+            output(path, &spec, json)
+        }),
     }
-    let seg = hermite_segment(path, &spec)?;
+}
+
+/// The output of a checked spec.
+fn output<T: OutScalar + Real>(path: &str, spec: &Spec<T>, json: bool) -> Result<String, CliError> {
+    let seg = hermite_segment(path, spec)?;
+    if json {
+        return Ok(segment_json(&seg).to_string());
+    }
     let n = seg.degree();
-    let nus: Vec<Even<f64>> = seg.velocity_bivectors().iter().map(Even::from).collect();
+    let nus: Vec<Even<T>> = seg.velocity_bivectors().iter().map(Even::from).collect();
     let mut lines = vec![format!("{} segment of degree {n}", seg.kind()), "control poses:".to_string()];
     for (i, m) in seg.control_poses().iter().enumerate() {
         lines.push(format!("  S{i} = {}", mv_human(&m.to_multivector())));

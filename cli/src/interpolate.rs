@@ -17,7 +17,7 @@ use crate::error::CliError;
 use crate::hermite::strip_comments;
 use crate::output::{Streamed, mv_human, mv_json};
 use crate::precision::{self, MotionScalar, OutScalar, json_list};
-use crate::sample::{Sample, Sampler, checked};
+use crate::sample::{Sample, Sampler, checked, norm};
 use crate::scalar::format_f64;
 use algebra_core::rational::Q;
 use algebra_core::{MpFloat, Real, Ring};
@@ -251,7 +251,7 @@ fn header_text<T: OutScalar>(
 }
 
 /// Parameter `i` of `n` evenly spaced over `[t0, t1]` (the last exactly `t1`).
-fn even<T: Ring>(t0: &T, t1: &T, n: usize, i: usize) -> T {
+pub(crate) fn even<T: Ring>(t0: &T, t1: &T, n: usize, i: usize) -> T {
     if i + 1 == n { t1.clone() } else { t0.add_ref(&t1.sub_ref(t0).mul_ref(&T::from_ratio(i as i64, n as i64 - 1))) }
 }
 
@@ -357,18 +357,30 @@ fn interpolate_f64(path: &str, json: bool) -> Result<String, CliError> {
 /// body point is the first of `body_points`; sample `i` is at `t_0 + (t_m - t_0) i/(n-1)`.
 pub(crate) fn spec_sampler(label: &str, spec: &InterpolateSpec, n: usize, passes: usize) -> Result<Sampler, CliError> {
     let b = build(label, spec)?;
-    let body_point = b.body_points.first().copied().unwrap_or([0.0; 3]);
-    let one = Built { body_points: vec![body_point], ..b };
-    check_work(&one, n, passes)?;
-    let norm = |v: &[f64; 3]| v.iter().map(|x| x * x).sum::<f64>().sqrt();
-    let (kind, degree, segments) = (one.motion.method().kind(), one.motion.max_degree(), one.motion.segments().len());
+    motion_sampler(b.motion, b.body_points.first().copied(), n, passes)
+}
+
+/// The sampler of a built motion over a real scalar and one body point (default the origin).
+pub(crate) fn motion_sampler<T: Real + OutScalar>(
+    motion: BuiltMotion<T>,
+    body_point: Option<[T; 3]>,
+    n: usize,
+    passes: usize,
+) -> Result<Sampler<T>, CliError> {
+    let body_point = body_point.unwrap_or_else(|| [T::zero(), T::zero(), T::zero()]);
+    check_segments(motion.method(), motion.segments(), 1, n, passes)?;
+    let (kind, degree, segments) = (motion.method().kind(), motion.max_degree(), motion.segments().len());
+    let point = [body_point.clone()];
     let at = move |i: usize| {
-        let s = sample_at(&one, n, i)?;
+        let times = motion.times();
+        let t = even(&times[0], &times[times.len() - 1], n, i);
+        let s = motion.sample(&t, &point).map_err(|e| CliError::math(e.to_string()))?;
+        let p = &s.points[0];
         checked(Sample {
-            t: s.t,
-            linear_speed: norm(&s.points[0].velocity),
-            angular_speed: norm(&s.space_twist.angular.to_array()),
-            position: s.points[0].position,
+            t: s.t.clone(),
+            linear_speed: Some(norm(&p.velocity)),
+            angular_speed: Some(norm(&s.space_twist.angular.to_array())),
+            position: p.position.clone(),
             pose: s.pose,
         })
     };

@@ -80,6 +80,9 @@ enum Command {
         /// The JSON spec: kind, degree, start and end conditions (see docs/cli.md).
         #[arg(value_name = "SPEC.json")]
         spec: String,
+        /// f64 or mpfr:BITS (rational exits 2: the end rotations are axis and angle).
+        #[arg(long, value_name = "S", default_value = "f64")]
+        scalar: MotionScalar,
     },
     /// A motion through key poses by a named method: ccm-additive, ccm-multiplicative,
     /// wl-linear, wl-quadratic, wl-direct, hexanion-linear, hexanion-decoupled, juttler-q-motion,
@@ -138,6 +141,10 @@ enum Command {
         /// The JSON spec of `gam hermite`, plus an optional "body_point": [x, y, z].
         #[arg(value_name = "SPEC.json")]
         spec: String,
+        /// f64, mpfr:BITS, or rational (exact poses and positions, speeds left out; gam
+        /// interpolate specs of the juttler-* methods).
+        #[arg(long, value_name = "S", default_value = "f64")]
+        scalar: MotionScalar,
     },
     /// Plot specs to SVG (or PNG): speeds against t with the joins marked, and the paths of the body
     /// points (several specs are overlaid with a legend).
@@ -253,11 +260,11 @@ fn run(command: Command) -> Result<(String, Option<CliError>), CliError> {
         }
         Command::Table { algebra, basis, product, json } => commands::table(&algebra, basis, product, json),
         Command::Codegen(args) => codegen::codegen(&args),
-        Command::Hermite { json, spec } => hermite::hermite(&spec, json),
+        Command::Hermite { json, spec, scalar } => hermite::hermite(&spec, json, scalar),
         Command::Interpolate { json, spec, scalar } => interpolate::interpolate(&spec, json, scalar),
         Command::Trajectory { json, spec, point, scalar } => trajectory::trajectory(&spec, &point, json, scalar),
         Command::Pose { json, pose, scalar } => pose::pose(&pose, json, scalar),
-        Command::Sample { samples, json, spec } => sample::sample(&spec, samples, json),
+        Command::Sample { samples, json, spec, scalar } => sample::sample(&spec, samples, json, scalar),
         Command::Plot { out, format, samples, view, frames, body, json, animate, acceleration, specs } => {
             let (specs, out) = (&specs, &out);
             plot::plot(&plot::PlotArgs { specs, out, format, samples, view, frames, body, json, animate, acceleration })

@@ -15,7 +15,10 @@ use crate::hermite::{build_segment, read_spec};
 #[cfg(test)]
 use crate::output::text_table;
 use crate::output::{Streamed, mv_human, mv_json, table_line, table_rule};
-use crate::scalar::format_f64;
+use crate::precision::{self, MotionScalar, OutScalar, json_list};
+use crate::scalar::CliScalar;
+use algebra_core::rational::Q;
+use algebra_core::{MpFloat, Real, Ring};
 use motion::schema::InterpolateSpec;
 use motion::spec::HermiteSpec;
 use motion::velocity::velocity;
@@ -55,27 +58,28 @@ impl SampleSpec {
     }
 }
 
-/// One sample of the motion.
-pub(crate) struct Sample {
+/// One sample of the motion (`f64` unless `--scalar` says otherwise).
+pub(crate) struct Sample<T = f64> {
     /// The parameter value.
-    pub t: f64,
+    pub t: T,
     /// `S(t)`.
-    pub pose: Pose<f64>,
+    pub pose: Pose<T>,
     /// The current position of the body point.
-    pub position: [f64; 3],
-    /// `|v|`: the speed of the body point.
-    pub linear_speed: f64,
-    /// `|Ω|`.
-    pub angular_speed: f64,
+    pub position: [T; 3],
+    /// `|v|`: the speed of the body point (`None` over exact rationals: a square root).
+    pub linear_speed: Option<T>,
+    /// `|Ω|` (`None` over exact rationals).
+    pub angular_speed: Option<T>,
 }
 
-fn norm(v: &[f64; 3]) -> f64 {
-    v.iter().map(|x| x * x).sum::<f64>().sqrt()
+/// `|v|`.
+pub(crate) fn norm<T: Real>(v: &[T; 3]) -> T {
+    Real::sqrt(&v.iter().fold(T::zero(), |acc, x| acc.add_ref(&x.mul_ref(x))))
 }
 
 /// The samples of a spec, computed one at a time (streamed for the text table and for
 /// `--json`, [`sample_json`]).
-pub(crate) struct Sampler {
+pub(crate) struct Sampler<T = f64> {
     /// Additive or multiplicative.
     pub kind: SegmentKind,
     /// The degree of the segment(s).
@@ -83,30 +87,31 @@ pub(crate) struct Sampler {
     /// The number of segments (1 for a `gam hermite` spec).
     pub segments: usize,
     /// The body point (body coordinates).
-    pub body_point: [f64; 3],
+    pub body_point: [T; 3],
     /// The number of samples.
     pub n: usize,
     /// Sample `i` of `n`, checked finite.
-    pub at: Box<dyn Fn(usize) -> Result<Sample, CliError>>,
+    pub at: Box<dyn Fn(usize) -> Result<Sample<T>, CliError>>,
 }
 
 /// A sample with every number checked finite.
-pub(crate) fn checked(sample: Sample) -> Result<Sample, CliError> {
-    let m = &sample.pose;
-    let coefficients = [m.scalar, m.e12, m.e13, m.e23, m.e1inf, m.e2inf, m.e3inf, m.e123inf];
-    let all = coefficients.iter().chain(&sample.position).chain([&sample.linear_speed, &sample.angular_speed]);
-    if all.into_iter().all(|x| x.is_finite()) {
+pub(crate) fn checked<T: OutScalar>(sample: Sample<T>) -> Result<Sample<T>, CliError> {
+    let all = sample.pose.components().into_iter().chain(&sample.position);
+    if all.chain(sample.linear_speed.iter()).chain(sample.angular_speed.iter()).all(CliScalar::finite) {
         Ok(sample)
     } else {
-        Err(CliError::math(format!("the result at t = {} is not finite (overflow)", format_f64(sample.t))))
+        Err(CliError::math(format!("the result at t = {} is not finite (overflow)", sample.t.text())))
     }
 }
 
 /// The segment of a `gam hermite` spec `label` and its body point (default the body origin;
 /// an error when not finite), as `gam sample` and `gam plot` read them.
-pub(crate) fn hermite_segment(label: &str, spec: &HermiteSpec) -> Result<(AnyHermiteSegment<f64>, [f64; 3]), CliError> {
-    let body_point = spec.body_point.unwrap_or([0.0; 3]);
-    if !body_point.iter().all(|x| x.is_finite()) {
+pub(crate) fn hermite_segment<T: Real>(
+    label: &str,
+    spec: &HermiteSpec<T>,
+) -> Result<(AnyHermiteSegment<T>, [T; 3]), CliError> {
+    let body_point = spec.body_point.clone().unwrap_or_else(|| [T::zero(), T::zero(), T::zero()]);
+    if !body_point.iter().all(Real::is_finite) {
         return Err(CliError::usage(format!("`{label}`: `body_point` must be finite")));
     }
     Ok((build_segment(spec)?, body_point))
@@ -118,28 +123,37 @@ pub(crate) fn sampler(label: &str, spec: &SampleSpec, n: usize, passes: usize) -
     if !(2..=MAX_SAMPLES).contains(&n) {
         return Err(CliError::usage(format!("`--samples` must be an integer from 2 to {MAX_SAMPLES} (got {n})")));
     }
-    let spec = match spec {
-        SampleSpec::Interpolate(spec) => return crate::interpolate::spec_sampler(label, spec, n, passes),
-        SampleSpec::Hermite(spec) => spec,
-    };
+    match spec {
+        SampleSpec::Interpolate(spec) => crate::interpolate::spec_sampler(label, spec, n, passes),
+        SampleSpec::Hermite(spec) => hermite_sampler(label, spec, n, passes),
+    }
+}
+
+/// The sampler of a `gam hermite` spec over a real scalar: `t = i/(n-1)`.
+fn hermite_sampler<T: Real + OutScalar>(
+    label: &str,
+    spec: &HermiteSpec<T>,
+    n: usize,
+    passes: usize,
+) -> Result<Sampler<T>, CliError> {
     let (seg, body_point) = hermite_segment(label, spec)?;
     let (kind, degree) = (seg.kind(), seg.degree());
     // building the segment is O(degree); sampling it is O(samples x degree^2)
     let work = crate::budget::sampling_work(Tableau::of_segment(kind), degree, n, passes);
     crate::budget::check(&format!("sampling degree {degree} at {n} values"), work)?;
     let curve = |e: motion::CurveError| CliError::math(e.to_string());
-    let motion: AnyMotion<f64> = seg.into_motion().map_err(curve)?;
-    let last = (n - 1) as f64;
+    let motion: AnyMotion<T> = seg.into_motion().map_err(curve)?;
+    let point = body_point.clone();
     let at = move |i: usize| {
-        let t = i as f64 / last;
-        let vel = velocity(&motion, &t).map_err(|e| CliError::math(format!("at t = {}: {e}", format_f64(t))))?;
-        let (position, v) = vel
-            .body_point_velocity(&body_point)
-            .map_err(|e| CliError::math(format!("at t = {}: {e}", format_f64(t))))?;
+        let t = T::from_ratio(i as i64, n as i64 - 1);
+        let at_t = |e: &dyn std::fmt::Display| CliError::math(format!("at t = {}: {e}", t.text()));
+        let vel = velocity(&motion, &t).map_err(|e| at_t(&e))?;
+        let (position, v) = vel.body_point_velocity(&point).map_err(|e| at_t(&e))?;
+        let angular_speed = norm(&vel.twist().angular.to_array());
         checked(Sample {
             t,
-            linear_speed: norm(&v),
-            angular_speed: norm(&vel.twist().angular.to_array()),
+            linear_speed: Some(norm(&v)),
+            angular_speed: Some(angular_speed),
             position,
             pose: vel.pose,
         })
@@ -148,14 +162,14 @@ pub(crate) fn sampler(label: &str, spec: &SampleSpec, n: usize, passes: usize) -
 }
 
 /// One sample as the JSON object of `gam sample --json`.
-fn one_json(x: &Sample) -> Value {
-    json!({
-        "t": x.t,
-        "pose": mv_json(&x.pose.to_multivector()),
-        "position": x.position,
-        "linear_speed": x.linear_speed,
-        "angular_speed": x.angular_speed,
-    })
+fn one_json<T: OutScalar>(x: &Sample<T>) -> Value {
+    let mut v = json!({"t": x.t.json(), "pose": mv_json(&x.pose.to_multivector()), "position": json_list(&x.position)});
+    for (key, speed) in [("linear_speed", &x.linear_speed), ("angular_speed", &x.angular_speed)] {
+        if let Some(speed) = speed {
+            v[key] = speed.json();
+        }
+    }
+    v
 }
 
 /// `gam sample --json` of a spec (`label` names it in messages): streamed by the CLI in
@@ -175,11 +189,11 @@ pub(crate) fn write_error(e: std::io::Error) -> CliError {
 }
 
 /// The text row of a sample: `t`, `x`, `y`, `z`, the two speeds, the pose (human form).
-fn text_row(x: &Sample) -> Vec<String> {
-    let mut row = vec![format_f64(x.t)];
-    row.extend(x.position.iter().map(|c| format_f64(*c)));
-    row.push(format_f64(x.linear_speed));
-    row.push(format_f64(x.angular_speed));
+/// (Speeds left out over exact rationals.)
+fn text_row<T: OutScalar>(x: &Sample<T>) -> Vec<String> {
+    let mut row = vec![x.t.text()];
+    row.extend(x.position.iter().map(OutScalar::text));
+    row.extend(x.linear_speed.iter().chain(&x.angular_speed).map(OutScalar::text));
     row.push(mv_human(&x.pose.to_multivector()));
     row
 }
@@ -187,22 +201,92 @@ fn text_row(x: &Sample) -> Vec<String> {
 /// The text header of `gam sample`.
 const HEADER: [&str; 7] = ["t", "x", "y", "z", "linear speed", "angular speed", "pose"];
 
+/// The header of samples with (or, over exact rationals, without) the speed columns.
+fn header(speeds: bool) -> Vec<String> {
+    HEADER.iter().filter(|h| speeds || !h.ends_with("speed")).map(|h| h.to_string()).collect()
+}
+
 /// Runs `gam sample`: `--json` and the text table are both written to standard output in
 /// bounded memory (and an empty string returned). The text table's columns are aligned, so
 /// the samples are computed twice: once to check them all and measure the columns (nothing
 /// is printed if one fails), once to print them; a million samples no longer hold their
 /// text (1.9 GB) in memory.
-pub fn sample(path: &str, n: usize, json: bool) -> Result<String, CliError> {
-    let spec = SampleSpec::read(path)?;
-    if json {
-        return sample_json(path, &spec, n)?.stream();
+pub fn sample(path: &str, n: usize, json: bool, scalar: MotionScalar) -> Result<String, CliError> {
+    match scalar {
+        MotionScalar::F64 => {
+            let spec = SampleSpec::read(path)?;
+            if json {
+                return sample_json(path, &spec, n)?.stream();
+            }
+            output(sampler(path, &spec, n, 2)?, false)
+        }
+        MotionScalar::Rational => {
+            check_count(n)?;
+            if crate::interpolate::read(path)?.is_none() {
+                return Err(CliError::usage(format!("`{path}`: gam sample: {}", crate::hermite::NOT_EXACT)));
+            }
+            output(exact_sampler(path, n)?, json)
+        }
+        MotionScalar::Mpfr(_) => scalar.run(|| {
+            check_count(n)?;
+            let to = |x: &motion::schema::Exact| MpFloat::from_rational(&x.0);
+            let s = if crate::interpolate::read(path)?.is_some() {
+                let spec = precision::read_exact_spec(path)?;
+                let b = precision::build_mpfr(path, &spec)?;
+                let body = spec.body_points.as_ref().and_then(|p| p.first()).map(|p| p.each_ref().map(to));
+                crate::interpolate::motion_sampler(b, body, n, 2)?
+            } else {
+                let spec = crate::hermite::read_exact_spec(path)?.map(&to);
+                spec.check().map_err(|e| crate::hermite::spec_error(path, e))?;
+                hermite_sampler(path, &spec, n, 2)?
+            };
+            output(s, json)
+        }),
     }
-    let s = sampler(path, &spec, n, 2)?;
+}
+
+/// `--samples` from 2 to [`MAX_SAMPLES`].
+fn check_count(n: usize) -> Result<(), CliError> {
+    if (2..=MAX_SAMPLES).contains(&n) {
+        Ok(())
+    } else {
+        Err(CliError::usage(format!("`--samples` must be an integer from 2 to {MAX_SAMPLES} (got {n})")))
+    }
+}
+
+/// The output of a sampler: `--json` streamed, or the text table (see [`sample`]).
+fn output<T: OutScalar + 'static>(s: Sampler<T>, json: bool) -> Result<String, CliError> {
+    if json {
+        let at = s.at;
+        return Streamed { head: json!({}), n: s.n, sample: Box::new(move |i| Ok(one_json(&at(i)?))) }.stream();
+    }
     write_text(s, &mut std::io::BufWriter::new(std::io::stdout().lock())).map_err(|e| match e {
         TextError::Cli(e) => e,
         TextError::Io(e) => write_error(e),
     })?;
     Ok(String::new())
+}
+
+/// The sampler of a `gam interpolate` spec over exact rationals: the pose and the position of
+/// the body point exactly; the speeds (square roots) are left out.
+fn exact_sampler(path: &str, n: usize) -> Result<Sampler<Q>, CliError> {
+    let spec = precision::read_exact_spec(path)?;
+    let m = precision::build_exact(path, &spec)?;
+    let body_point = precision::body_points(&spec).swap_remove(0);
+    let degree = m.segments().iter().map(|s| s.degree).max().unwrap_or(0);
+    let work = crate::budget::sampling_work(Tableau::of_method(m.method()), degree, n, 2);
+    crate::budget::check(&format!("sampling degree-{degree} segments at {n} values"), work)?;
+    let (kind, segments, point) = (m.method().kind(), m.segments().len(), body_point.clone());
+    let at = move |i: usize| {
+        let times = m.times();
+        let t = crate::interpolate::even(&times[0], &times[times.len() - 1], n, i);
+        let math = |e: &dyn std::fmt::Display| CliError::math(format!("{}: at t = {}: {e}", m.method(), t.text()));
+        let s = m.sample(&t, std::slice::from_ref(&point)).map_err(|e| math(&e))?;
+        let pose = m.pose(&t).map_err(|e| math(&e))?;
+        let position = s.points.into_iter().next().unwrap_or_else(|| point.clone());
+        Ok(Sample { t, pose, position, linear_speed: None, angular_speed: None })
+    };
+    Ok(Sampler { kind, degree, segments, body_point, n, at: Box::new(at) })
 }
 
 /// A failure while writing the text table: of a sample, or of the output.
@@ -213,17 +297,25 @@ enum TextError {
 
 /// The text table of `gam sample` written to `out`, the samples computed twice (see
 /// [`sample`]).
-fn write_text(s: Sampler, out: &mut impl Write) -> Result<(), TextError> {
-    let mut widths = HEADER.map(|h| h.chars().count());
+fn write_text<T: OutScalar>(s: Sampler<T>, out: &mut impl Write) -> Result<(), TextError> {
+    // the columns: with the speeds, or without them over exact rationals
+    let (mut speeds, mut widths) = (true, None::<Vec<usize>>);
     for i in 0..s.n {
-        for (w, cell) in widths.iter_mut().zip(text_row(&(s.at)(i).map_err(TextError::Cli)?)) {
+        let sample = (s.at)(i).map_err(TextError::Cli)?;
+        let w = widths.get_or_insert_with(|| {
+            speeds = sample.linear_speed.is_some();
+            header(speeds).iter().map(|h| h.chars().count()).collect()
+        });
+        for (w, cell) in w.iter_mut().zip(text_row(&sample)) {
             *w = (*w).max(cell.chars().count());
         }
     }
+    let head = header(speeds);
+    let widths = widths.unwrap_or_else(|| head.iter().map(|h| h.chars().count()).collect());
     let title = crate::plot::title(&s);
     let mut line = |text: String| writeln!(out, "{text}").map_err(TextError::Io);
     line(format!("{title}, {} samples", s.n))?;
-    line(table_line(&HEADER.map(str::to_string), &widths))?;
+    line(table_line(&head, &widths))?;
     line(table_rule(&widths))?;
     for i in 0..s.n {
         line(table_line(&text_row(&(s.at)(i).map_err(TextError::Cli)?), &widths))?;

@@ -290,3 +290,64 @@ fn pose_prints_what_is_rational_exactly_and_mpfr_everything() {
     let e = fails(&["pose", "--scalar", "rational", r#"{"hexanion": {"omega": [0, 0, 1], "m": [0, 0, 0]}}"#], 2);
     assert!(e.contains("`pose.hexanion`") && e.contains("exp"), "{e}");
 }
+
+#[test]
+fn sample_and_hermite_in_every_precision() {
+    let case = &cases()[1];
+    let mut spec = case["spec"].clone();
+    spec["body_points"] = serde_json::json!([[0.5, -1, 2]]);
+    let file = TempFile::new("precision-sample.json", &spec.to_string());
+    // t = 0, 2/3, 4/3, 2: exact poses and positions, no speeds
+    let out: Value =
+        serde_json::from_str(&ok(&["sample", "--json", "--samples", "4", "--scalar", "rational", file.path()]))
+            .unwrap();
+    let samples = out["samples"].as_array().unwrap();
+    assert_eq!(samples[1]["t"], "2/3");
+    assert!(samples.iter().all(|s| s.get("linear_speed").is_none() && s.get("angular_speed").is_none()));
+    let x = [Q::new(1.into(), 2.into()), Q::from_integer((-1).into()), Q::from_integer(2.into())];
+    let last: Vec<Q> = samples[3]["position"].as_array().unwrap().iter().map(exact).collect();
+    assert_eq!(last, key_images(case, &x)[3].to_vec());
+    // the text table of the exact samples has no speed columns
+    let text = ok(&["sample", "--samples", "4", "--scalar", "rational", file.path()]);
+    assert!(!text.contains("speed") && text.contains("2/3"), "{text}");
+    // mpfr:256 against f64: positions and speeds agree to 1e-12
+    let hi: Value =
+        serde_json::from_str(&ok(&["sample", "--json", "--samples", "4", "--scalar", "mpfr:256", file.path()]))
+            .unwrap();
+    let lo: Value = serde_json::from_str(&ok(&["sample", "--json", "--samples", "4", file.path()])).unwrap();
+    for (a, b) in hi["samples"].as_array().unwrap().iter().zip(lo["samples"].as_array().unwrap()) {
+        for key in ["position", "linear_speed", "angular_speed"] {
+            for (x, y) in numbers(&a[key]).iter().zip(numbers(&b[key])) {
+                assert!((x - y).abs() < 1e-12 * (1.0 + y.abs()), "{key}: {x} vs {y}");
+            }
+        }
+    }
+    // a Hermite spec: mpfr runs (and agrees with f64), rational exits 2
+    let hermite = TempFile::new("precision-hermite.json", common::CONTRACT_EXAMPLE);
+    let hi: Value = serde_json::from_str(&ok(&["hermite", "--json", "--scalar", "mpfr:200", hermite.path()])).unwrap();
+    let lo: Value = serde_json::from_str(&ok(&["hermite", "--json", hermite.path()])).unwrap();
+    let c = |v: &Value| -> Vec<f64> {
+        v["control_poses"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .flat_map(|m| m.as_object().unwrap().values().map(|x| rational_to_f64(&exact(x))).collect::<Vec<_>>())
+            .collect()
+    };
+    let (a, b) = (c(&hi), c(&lo));
+    assert_eq!(a.len(), b.len());
+    for (x, y) in a.iter().zip(&b) {
+        assert!((x - y).abs() < 1e-12 * (1.0 + y.abs()), "{x} vs {y}");
+    }
+    for args in
+        [["hermite", "--scalar", "rational", hermite.path()], ["sample", "--scalar", "rational", hermite.path()]]
+    {
+        let mut args = args.to_vec();
+        if args[0] == "sample" {
+            args.extend(["--samples", "3"]);
+        }
+        let e = fails(&args, 2);
+        assert!(e.contains("axis and angle") && e.contains("mpfr:BITS"), "{e}");
+    }
+    ok(&["sample", "--samples", "3", "--scalar", "mpfr:100", hermite.path()]);
+}

@@ -27,6 +27,7 @@
 use crate::hermite::{AnyHermiteSegment, hermite_segment};
 use crate::joins::{EndCondition, JoinError, SegmentKind, Shape};
 use crate::{MotionError, Pose, Pseudoscalar};
+use algebra_core::Real;
 
 /// The largest degree accepted (a segment of degree `n` has `n + 1` control poses).
 pub const MAX_DEGREE: i64 = 10_000;
@@ -70,30 +71,59 @@ impl From<SegmentKind> for SpecKind {
 /// let e = motion::spec::EndSpec::new([0.0; 3], [1.0, 0.0, 0.0], 0.5, [1.0, 0.0, 0.0], [0.0; 3]);
 /// assert_eq!((e.shape, e.gamma), (1.0, [0.0, 0.0]));
 /// ```
+///
+/// The numbers are `f64` by default; a spec read with exact numbers
+/// (`EndSpec<motion::schema::Exact>`) is mapped to any real scalar with [`EndSpec::map`].
 #[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize), serde(deny_unknown_fields))]
-pub struct EndSpec {
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(deny_unknown_fields, bound = "N: crate::schema::SpecNumber")
+)]
+pub struct EndSpec<N = f64> {
     /// The position `r` of the reference point (the translation of `S = R T`).
-    pub position: [f64; 3],
+    pub position: [N; 3],
     /// The rotation axis (normalised; not zero).
-    pub axis: [f64; 3],
+    pub axis: [N; 3],
     /// The rotation angle (radians, right-handed).
-    pub angle: f64,
+    pub angle: N,
     /// The velocity `v` of the reference point.
-    pub velocity: [f64; 3],
+    pub velocity: [N; 3],
     /// The angular velocity `Ω` (fixed frame).
-    pub angular_velocity: [f64; 3],
+    pub angular_velocity: [N; 3],
     /// The shape factor λ (positive; default 1).
-    #[cfg_attr(feature = "serde", serde(default = "one"))]
-    pub shape: f64,
+    #[cfg_attr(feature = "serde", serde(default = "crate::schema::SpecNumber::one"))]
+    pub shape: N,
     /// `[α, β]` of the pseudoscalar `γ = α + βω` (default `[0, 0]`).
-    #[cfg_attr(feature = "serde", serde(default))]
-    pub gamma: [f64; 2],
+    #[cfg_attr(feature = "serde", serde(default = "zero_pair"))]
+    pub gamma: [N; 2],
 }
 
 #[cfg(feature = "serde")]
-fn one() -> f64 {
-    1.0
+fn zero_pair<N: crate::schema::SpecNumber>() -> [N; 2] {
+    [N::zero(), N::zero()]
+}
+
+impl<N> EndSpec<N> {
+    /// The same end with every number mapped by `f` (e.g. exact numbers rounded once to a
+    /// precision).
+    ///
+    /// ```
+    /// let e = motion::spec::EndSpec::new([1.0, 2.0, 3.0], [0.0, 0.0, 1.0], 0.5, [0.0; 3], [0.0; 3]);
+    /// assert_eq!(e.map(&|x: &f64| 2.0 * x).position, [2.0, 4.0, 6.0]);
+    /// ```
+    pub fn map<M>(&self, f: &dyn Fn(&N) -> M) -> EndSpec<M> {
+        let a3 = |v: &[N; 3]| v.each_ref().map(f);
+        EndSpec {
+            position: a3(&self.position),
+            axis: a3(&self.axis),
+            angle: f(&self.angle),
+            velocity: a3(&self.velocity),
+            angular_velocity: a3(&self.angular_velocity),
+            shape: f(&self.shape),
+            gamma: self.gamma.each_ref().map(f),
+        }
+    }
 }
 
 impl EndSpec {
@@ -118,7 +148,9 @@ impl EndSpec {
         self.gamma = gamma;
         self
     }
+}
 
+impl<T: Real> EndSpec<T> {
     /// The end condition and shape it describes (after [`HermiteSpec::check`]).
     ///
     /// ```
@@ -128,7 +160,7 @@ impl EndSpec {
     /// assert_eq!(shape.lambda, 1.0);
     /// # Ok::<(), motion::spec::SpecError>(())
     /// ```
-    pub fn end_condition(&self, name: &'static str) -> Result<(EndCondition<f64>, Shape<f64>), SpecError> {
+    pub fn end_condition(&self, name: &'static str) -> Result<(EndCondition<T>, Shape<T>), SpecError> {
         let cond = EndCondition::from_axis_angle(
             &self.position,
             &self.axis,
@@ -140,21 +172,23 @@ impl EndSpec {
             MotionError::ZeroAxis => SpecError::ZeroAxis { end: name },
             other => SpecError::Motion { end: Some(name), source: other },
         })?;
-        Ok((cond, Shape::new(self.shape, Pseudoscalar::new(self.gamma[0], self.gamma[1]))))
+        let [a, b] = self.gamma.clone();
+        Ok((cond, Shape::new(self.shape.clone(), Pseudoscalar::new(a, b))))
     }
 
     fn check(&self, name: &'static str) -> Result<(), SpecError> {
-        if self.axis.iter().all(|x| *x == 0.0) {
+        if self.axis.iter().all(|x| x.is_exact_zero()) {
             return Err(SpecError::ZeroAxis { end: name });
         }
-        if self.shape <= 0.0 || self.shape.is_nan() {
-            return Err(SpecError::Shape { end: name, got: self.shape });
+        // not (shape > 0) also catches NaN
+        if self.shape.partial_cmp(&T::zero()) != Some(std::cmp::Ordering::Greater) {
+            return Err(SpecError::Shape { end: name, got: self.shape.to_f64() });
         }
         let all = self.position.iter().chain(&self.axis).chain([&self.angle]).chain(&self.velocity);
         if let Some(x) =
-            all.chain(&self.angular_velocity).chain([&self.shape]).chain(&self.gamma).find(|x| !x.is_finite())
+            all.chain(&self.angular_velocity).chain([&self.shape]).chain(&self.gamma).find(|x| !Real::is_finite(*x))
         {
-            return Err(SpecError::NotFinite { end: name, value: *x });
+            return Err(SpecError::NotFinite { end: name, value: x.to_f64() });
         }
         Ok(())
     }
@@ -170,20 +204,44 @@ impl EndSpec {
 /// # Ok::<(), motion::spec::SpecError>(())
 /// ```
 #[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize), serde(deny_unknown_fields))]
-pub struct HermiteSpec {
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(deny_unknown_fields, bound = "N: crate::schema::SpecNumber")
+)]
+pub struct HermiteSpec<N = f64> {
     /// Additive or multiplicative.
     pub kind: SpecKind,
     /// The degree `n`, from 3 to [`MAX_DEGREE`].
     pub degree: i64,
     /// The condition at `t = 0`.
-    pub start: EndSpec,
+    pub start: EndSpec<N>,
     /// The condition at `t = 1`.
-    pub end: EndSpec,
+    pub end: EndSpec<N>,
     /// A body point (body coordinates) for sampling (`gam sample` / `gam plot`); not part of the
     /// segment.
     #[cfg_attr(feature = "serde", serde(default, skip_serializing_if = "Option::is_none"))]
-    pub body_point: Option<[f64; 3]>,
+    pub body_point: Option<[N; 3]>,
+}
+
+impl<N> HermiteSpec<N> {
+    /// The same spec with every number mapped by `f`.
+    ///
+    /// ```
+    /// use motion::spec::{EndSpec, HermiteSpec, SpecKind};
+    /// let a = EndSpec::new([0.0; 3], [0.0, 0.0, 1.0], 0.0, [0.0; 3], [0.0; 3]);
+    /// let spec = HermiteSpec::new(SpecKind::Additive, 3, a.clone(), a);
+    /// assert_eq!(spec.map(&|x: &f64| *x as f32).degree, 3);
+    /// ```
+    pub fn map<M>(&self, f: &dyn Fn(&N) -> M) -> HermiteSpec<M> {
+        HermiteSpec {
+            kind: self.kind,
+            degree: self.degree,
+            start: self.start.map(f),
+            end: self.end.map(f),
+            body_point: self.body_point.as_ref().map(|p| p.each_ref().map(f)),
+        }
+    }
 }
 
 impl HermiteSpec {
@@ -197,7 +255,9 @@ impl HermiteSpec {
     pub fn new(kind: SpecKind, degree: i64, start: EndSpec, end: EndSpec) -> Self {
         HermiteSpec { kind, degree, start, end, body_point: None }
     }
+}
 
+impl<T: Real> HermiteSpec<T> {
     /// Every rule of the format: degree in `3..=MAX_DEGREE`, non-zero axes, positive shape
     /// factors, finite numbers (the body point too).
     ///
@@ -215,9 +275,9 @@ impl HermiteSpec {
         self.start.check("start")?;
         self.end.check("end")?;
         if let Some(p) = &self.body_point
-            && let Some(x) = p.iter().find(|x| !x.is_finite())
+            && let Some(x) = p.iter().find(|x| !Real::is_finite(*x))
         {
-            return Err(SpecError::NotFinite { end: "body_point", value: *x });
+            return Err(SpecError::NotFinite { end: "body_point", value: x.to_f64() });
         }
         Ok(())
     }
@@ -232,7 +292,7 @@ impl HermiteSpec {
     /// assert_eq!(seg.velocity_bivectors()[0].e1inf, 1.0);
     /// # Ok::<(), motion::spec::SpecError>(())
     /// ```
-    pub fn segment(&self) -> Result<AnyHermiteSegment<f64>, SpecError> {
+    pub fn segment(&self) -> Result<AnyHermiteSegment<T>, SpecError> {
         self.check()?;
         let degree = self.degree as usize; // 3..=MAX_DEGREE
         let (start, start_shape) = self.start.end_condition("start")?;
@@ -263,13 +323,7 @@ impl HermiteSpec {
     /// assert!(e.to_string().contains("duplicate field `kind`"));
     /// ```
     pub fn from_json(text: &str) -> Result<Self, SpecError> {
-        let spec: HermiteSpec = serde_json::from_str(text).map_err(|e| {
-            use serde_json::error::Category;
-            match e.classify() {
-                Category::Syntax | Category::Eof | Category::Io => SpecError::Json(e.to_string()),
-                Category::Data => SpecError::Invalid(qualify_missing_field(&e.to_string(), text)),
-            }
-        })?;
+        let spec = HermiteSpec::read_json(text)?;
         spec.check()?;
         Ok(spec)
     }
@@ -289,6 +343,32 @@ impl HermiteSpec {
         let spec = HermiteSpec::deserialize(v).map_err(|e| SpecError::Invalid(e.to_string()))?;
         spec.check()?;
         Ok(spec)
+    }
+}
+
+#[cfg(feature = "serde")]
+impl<N: crate::schema::SpecNumber> HermiteSpec<N> {
+    /// Reads a spec from JSON text in any number type, without the checks of
+    /// [`HermiteSpec::check`] (which need a real scalar: map the spec first).
+    /// [`crate::schema::Exact`] reads every literal as written.
+    ///
+    /// ```
+    /// use algebra_core::rational::ratio;
+    /// use motion::{schema::Exact, spec::HermiteSpec};
+    /// let end = r#"{"position": [0.1, 0, 0], "axis": [0, 0, 1], "angle": 0, "velocity": [1, 0, 0], "angular_velocity": [0, 0, 0]}"#;
+    /// let spec = HermiteSpec::<Exact>::read_json(&format!(r#"{{"kind": "additive", "degree": 3, "start": {end}, "end": {end}}}"#))?;
+    /// assert_eq!(spec.start.position[0], Exact(ratio(1, 10)));
+    /// # Ok::<(), motion::spec::SpecError>(())
+    /// ```
+    pub fn read_json(text: &str) -> Result<Self, SpecError> {
+        let prepared = N::prepare_text(text);
+        serde_json::from_str(&prepared).map_err(|e| {
+            use serde_json::error::Category;
+            match e.classify() {
+                Category::Syntax | Category::Eof | Category::Io => SpecError::Json(e.to_string()),
+                Category::Data => SpecError::Invalid(qualify_missing_field(&e.to_string(), &prepared)),
+            }
+        })
     }
 }
 

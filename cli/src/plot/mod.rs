@@ -42,19 +42,25 @@ pub const DEFAULT_SAMPLES: usize = 201;
 /// The most body frames `--frames` draws.
 pub const MAX_FRAMES: usize = 1000;
 
-/// The title of a sampled Hermite segment (also `gam sample`).
-pub(crate) fn title(s: &Sampler) -> String {
-    one_title(&s.kind.to_string(), s.segments, s.degree, &[s.body_point])
+/// The title of a sampled Hermite segment (also `gam sample`, in any scalar).
+pub(crate) fn title<T: crate::precision::OutScalar>(s: &Sampler<T>) -> String {
+    let point = s.body_point.iter().map(crate::precision::OutScalar::text).collect::<Vec<_>>();
+    titled(&s.kind.to_string(), s.segments, s.degree, &[format!("[{}]", point.join(", "))])
 }
 
 /// "KIND segment of degree D" or "KIND motion of N segments of degree D", and the body points.
 fn one_title(method: &str, segments: usize, degree: usize, points: &[[f64; 3]]) -> String {
+    let p: Vec<String> = points.iter().map(|p| format!("[{}]", p.map(format_f64).join(", "))).collect();
+    titled(method, segments, degree, &p)
+}
+
+/// [`one_title`] with the body points already written.
+fn titled(method: &str, segments: usize, degree: usize, p: &[String]) -> String {
     let what = if segments == 1 {
         format!("{method} segment of degree {degree}")
     } else {
         format!("{method} motion of {segments} segments of degree {degree}")
     };
-    let p: Vec<String> = points.iter().map(|p| format!("[{}]", p.map(format_f64).join(", "))).collect();
     let noun = if p.len() == 1 { "body point" } else { "body points" };
     format!("{what}, {noun} {}", p.join(" "))
 }
