@@ -20,6 +20,7 @@
 
 pub use crate::error::CliError;
 use crate::interpolate::{self, Built};
+use crate::precision::MotionScalar;
 use algebra_core::{Basis, Product};
 use motion::Pose;
 use serde_json::Value;
@@ -180,6 +181,78 @@ pub fn interpolate(spec: &Value, label: &str) -> Result<Value, CliError> {
 pub fn trajectory(spec: &Value, label: &str, point: &str) -> Result<Value, CliError> {
     let x = crate::trajectory::point(point)?;
     finite("trajectory", crate::trajectory::trajectory_json(label, &interpolate_spec(spec, label)?, &x)?)
+}
+
+/// The scalar of `--scalar` of the motion commands (`f64`, `rational` or `mpfr:BITS`).
+fn motion_scalar(scalar: &str) -> Result<MotionScalar, CliError> {
+    option(scalar, "--scalar <S>")
+}
+
+/// [`pose`] with `--scalar SCALAR` (`f64`, `rational` or `mpfr:BITS`; docs/cli.md, "Precision
+/// of the motion commands").
+///
+/// ```
+/// let v = gam::api::pose_with(&serde_json::json!({"quaternion": [0.6, 0, 0, 0.8]}), "rational")?;
+/// assert_eq!(v["matrix"][0], serde_json::json!(["-7/25", "-24/25", "0", "0"]));
+/// # Ok::<(), gam::api::CliError>(())
+/// ```
+pub fn pose_with(pose: &Value, scalar: &str) -> Result<Value, CliError> {
+    match motion_scalar(scalar)? {
+        MotionScalar::F64 => self::pose(pose),
+        s => finite("pose", crate::pose::pose_in("POSE_JSON", &pose.to_string(), s)?.0),
+    }
+}
+
+/// [`hermite`] with `--scalar SCALAR`.
+///
+/// ```
+/// use serde_json::json;
+/// let end = |p: [f64; 3]| json!({"position": p, "axis": [0, 0, 1], "angle": 0,
+///     "velocity": [1, 0, 0], "angular_velocity": [0, 0, 0]});
+/// let spec = json!({"kind": "additive", "degree": 3, "start": end([0.0; 3]), "end": end([1.0, 0.0, 0.0])});
+/// assert_eq!(gam::api::hermite_with(&spec, "spec", "mpfr:100")?["control_poses"].as_array().map(Vec::len), Some(4));
+/// assert_eq!(gam::api::hermite_with(&spec, "spec", "rational").unwrap_err().code, 2);
+/// # Ok::<(), gam::api::CliError>(())
+/// ```
+pub fn hermite_with(spec: &Value, label: &str, scalar: &str) -> Result<Value, CliError> {
+    match motion_scalar(scalar)? {
+        MotionScalar::F64 => hermite(spec, label),
+        s => finite("hermite", value(&crate::hermite::hermite_in(label, &spec.to_string(), true, s)?)?),
+    }
+}
+
+/// [`interpolate`] with `--scalar SCALAR`.
+///
+/// ```
+/// use serde_json::json;
+/// let spec = json!({"method": "juttler-affine", "poses": [{"position": [0, 0, 0]}, {"position": [0.3, 0, 0]}], "samples": 3});
+/// let v = gam::api::interpolate_with(&spec, "spec", "rational")?;
+/// assert_eq!(v["samples"][1]["points"], json!([["3/20", "0", "0"]]));
+/// # Ok::<(), gam::api::CliError>(())
+/// ```
+pub fn interpolate_with(spec: &Value, label: &str, scalar: &str) -> Result<Value, CliError> {
+    match motion_scalar(scalar)? {
+        MotionScalar::F64 => interpolate(spec, label),
+        s => {
+            s.run(|| finite("interpolate", interpolate::precise(label, &spec.to_string(), s)?.streamed().into_value()?))
+        }
+    }
+}
+
+/// [`trajectory`] with `--scalar SCALAR`.
+///
+/// ```
+/// use serde_json::json;
+/// let spec = json!({"method": "juttler-q-motion", "poses": [{"position": [0, 0, 0]}, {"position": [2, 0, 0]}]});
+/// let v = gam::api::trajectory_with(&spec, "spec", "1/2,0,0", "rational")?;
+/// assert_eq!(v["segments"][0]["points"][2], json!(["3/2", "0", "0"]));
+/// # Ok::<(), gam::api::CliError>(())
+/// ```
+pub fn trajectory_with(spec: &Value, label: &str, point: &str, scalar: &str) -> Result<Value, CliError> {
+    match motion_scalar(scalar)? {
+        MotionScalar::F64 => trajectory(spec, label, point),
+        s => finite("trajectory", value(&crate::trajectory::trajectory_in(label, &spec.to_string(), point, true, s)?)?),
+    }
 }
 
 /// A pose object of the contract (any form) as a [`Pose`], checked as `gam pose` checks it

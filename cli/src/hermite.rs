@@ -102,10 +102,10 @@ fn segment_json<T: OutScalar + Real>(seg: &AnyHermiteSegment<T>) -> Value {
     })
 }
 
-/// A `gam hermite` spec read with every literal exact (for `--scalar mpfr:BITS`).
-pub(crate) fn read_exact_spec(path: &str) -> Result<Spec<Exact>, CliError> {
-    let text = std::fs::read_to_string(path).map_err(|e| CliError::usage(format!("cannot read `{path}`: {e}")))?;
-    Spec::<Exact>::read_json(&strip_comments(&text)).map_err(|e| spec_error(path, e))
+/// A `gam hermite` spec read with every literal exact (for `--scalar mpfr:BITS`) from its
+/// text (`label` names it in messages).
+pub(crate) fn exact_spec(label: &str, text: &str) -> Result<Spec<Exact>, CliError> {
+    Spec::<Exact>::read_json(&strip_comments(text)).map_err(|e| spec_error(label, e))
 }
 
 /// Why `gam hermite` specs are not exact.
@@ -115,11 +115,22 @@ pub(crate) const NOT_EXACT: &str = "the end conditions give rotations by axis an
 pub fn hermite(path: &str, json: bool, scalar: MotionScalar) -> Result<String, CliError> {
     match scalar {
         MotionScalar::F64 => output(path, &read_spec(path)?, json),
-        MotionScalar::Rational => Err(CliError::usage(format!("`{path}`: gam hermite: {NOT_EXACT}"))),
+        _ => hermite_in(path, &crate::precision::read_file(path)?, json, scalar),
+    }
+}
+
+/// `gam hermite` of the spec text `text` (named `label` in messages) in an exact or MPFR
+/// scalar: the JSON text or the human form.
+pub(crate) fn hermite_in(label: &str, text: &str, json: bool, scalar: MotionScalar) -> Result<String, CliError> {
+    match scalar {
+        MotionScalar::F64 => {
+            output(label, &Spec::from_json(&strip_comments(text)).map_err(|e| spec_error(label, e))?, json)
+        }
+        MotionScalar::Rational => Err(CliError::usage(format!("`{label}`: gam hermite: {NOT_EXACT}"))),
         MotionScalar::Mpfr(_) => scalar.run(|| {
-            let spec = read_exact_spec(path)?.map(&|x| MpFloat::from_rational(&x.0));
-            spec.check().map_err(|e| spec_error(path, e))?;
-            output(path, &spec, json)
+            let spec = exact_spec(label, text)?.map(&|x| MpFloat::from_rational(&x.0));
+            spec.check().map_err(|e| spec_error(label, e))?;
+            output(label, &spec, json)
         }),
     }
 }

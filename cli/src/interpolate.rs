@@ -255,29 +255,6 @@ pub(crate) fn even<T: Ring>(t0: &T, t1: &T, n: usize, i: usize) -> T {
     if i + 1 == n { t1.clone() } else { t0.add_ref(&t1.sub_ref(t0).mul_ref(&T::from_ratio(i as i64, n as i64 - 1))) }
 }
 
-/// What the header of a motion's output shows: its method, parameters, segments and key poses.
-type Header<'h, T> = (Method, &'h [T], &'h [MethodSegment<T>], &'h [motion::Pose<T>]);
-
-/// The output of a motion in any scalar: the header and `n` rows (`row(i)`), JSON streamed
-/// or human.
-fn output<'a, T: OutScalar>(
-    (method, times, segments, key_poses): Header<'_, T>,
-    n: usize,
-    json: bool,
-    row: impl Fn(usize) -> Result<Row<T>, CliError> + 'a,
-) -> Result<String, CliError> {
-    if json {
-        let head =
-            json!({"method": method.name(), "parameters": json_list(times), "segments": segments_json(segments)});
-        return Streamed { head, n, sample: Box::new(move |i| Ok(row(i)?.json())) }.stream();
-    }
-    let mut lines = header_text(method, times, segments, key_poses);
-    for i in 0..n {
-        lines.push(row(i)?.text());
-    }
-    Ok(lines.join("\n"))
-}
-
 /// `gam interpolate --json` of a spec (`label` names it in messages): the header (method,
 /// parameters, segments) and the samples, streamed by the CLI in bounded memory like
 /// `gam sample --json`, or taken as one value ([`Streamed::into_value`]) by another front door.
@@ -292,46 +269,99 @@ pub fn interpolate_json<'a>(label: &str, spec: &InterpolateSpec) -> Result<Strea
     Ok(Streamed { head, n, sample: Box::new(move |i| sample_json(&sample_at(&b, n, i)?)) })
 }
 
+/// What the header of a motion's output shows: its method, parameters, segments and key poses.
+type Header<'h, T> = (Method, &'h [T], &'h [MethodSegment<T>], &'h [motion::Pose<T>]);
+
+/// The output of a motion in an exact or MPFR scalar, ready to print either way: the JSON
+/// head and the human header lines, and sample `i` as JSON or as a human line.
+pub(crate) struct Precise {
+    head: Value,
+    header: Vec<String>,
+    n: usize,
+    json_row: Box<dyn Fn(usize) -> Result<Value, CliError>>,
+    text_row: Box<dyn Fn(usize) -> Result<String, CliError>>,
+}
+
+impl Precise {
+    /// The output of `header` and `n` rows (`row(i)`).
+    fn new<T: OutScalar + 'static>(
+        (method, times, segments, key_poses): Header<'_, T>,
+        n: usize,
+        row: impl Fn(usize) -> Result<Row<T>, CliError> + 'static,
+    ) -> Self {
+        let head =
+            json!({"method": method.name(), "parameters": json_list(times), "segments": segments_json(segments)});
+        let header = header_text(method, times, segments, key_poses);
+        let row = std::rc::Rc::new(row);
+        let (r1, r2) = (row.clone(), row);
+        Precise {
+            head,
+            header,
+            n,
+            json_row: Box::new(move |i| Ok(r1(i)?.json())),
+            text_row: Box::new(move |i| Ok(r2(i)?.text())),
+        }
+    }
+
+    /// The JSON result, streamed by the CLI or taken as one value.
+    pub(crate) fn streamed(self) -> Streamed<'static> {
+        Streamed { head: self.head, n: self.n, sample: self.json_row }
+    }
+
+    /// The human output.
+    fn text(self) -> Result<String, CliError> {
+        let mut lines = self.header;
+        for i in 0..self.n {
+            lines.push((self.text_row)(i)?);
+        }
+        Ok(lines.join("\n"))
+    }
+}
+
+/// `gam interpolate` of the spec text `text` (named `label` in messages) over exact rationals
+/// or MPFR (inside [`MotionScalar::run`]).
+pub(crate) fn precise(label: &str, text: &str, scalar: MotionScalar) -> Result<Precise, CliError> {
+    let spec = precision::exact_spec(label, text)?;
+    let n = if spec.samples >= 2 { spec.samples } else { 0 };
+    let bodies = precision::body_points(&spec);
+    if scalar == MotionScalar::Rational {
+        let m = precision::build_exact(label, &spec)?;
+        if n > 0 {
+            check_segments(m.method(), m.segments(), bodies.len(), n, 1)?;
+        }
+        let header = (m.method(), m.times(), m.segments(), m.key_poses());
+        let (times, motion) = (m.times().to_vec(), m.clone());
+        let row = move |i: usize| {
+            let t = even(&times[0], &times[times.len() - 1], n, i);
+            let s = motion.sample(&t, &bodies).map_err(|e| CliError::math(format!("{}: {e}", motion.method())))?;
+            Ok(Row::exact(s))
+        };
+        return Ok(Precise::new(header, n, row));
+    }
+    let b = precision::build_mpfr(label, &spec)?;
+    let bodies: Vec<[MpFloat; 3]> = bodies.iter().map(|p| p.each_ref().map(MpFloat::from_rational)).collect();
+    if n > 0 {
+        check_segments(b.method(), b.segments(), bodies.len(), n, 1)?;
+    }
+    let header = (b.method(), b.times(), b.segments(), b.key_poses());
+    let (times, motion) = (b.times().to_vec(), b.clone());
+    let row = move |i: usize| {
+        let t = even(&times[0], &times[times.len() - 1], n, i);
+        Row::of(&motion.sample(&t, &bodies).map_err(|e| CliError::math(e.to_string()))?)
+    };
+    Ok(Precise::new(header, n, row))
+}
+
 /// Runs `gam interpolate` on the spec file at `path`, in the scalar of `--scalar`.
 pub fn interpolate(path: &str, json: bool, scalar: MotionScalar) -> Result<String, CliError> {
-    match scalar {
-        MotionScalar::F64 => interpolate_f64(path, json),
-        MotionScalar::Rational => {
-            let spec = precision::read_exact_spec(path)?;
-            let m = precision::build_exact(path, &spec)?;
-            let bodies = precision::body_points(&spec);
-            let n = if spec.samples >= 2 { spec.samples } else { 0 };
-            if n > 0 {
-                check_segments(m.method(), m.segments(), bodies.len(), n, 1)?;
-            }
-            let times = m.times();
-            let (t0, t1) = (&times[0], &times[times.len() - 1]);
-            let row = |i: usize| {
-                let s = m
-                    .sample(&even(t0, t1, n, i), &bodies)
-                    .map_err(|e| CliError::math(format!("{}: {e}", m.method())))?;
-                Ok(Row::exact(s))
-            };
-            output((m.method(), times, m.segments(), m.key_poses()), n, json, row)
-        }
-        MotionScalar::Mpfr(_) => scalar.run(|| {
-            let spec = precision::read_exact_spec(path)?;
-            let b = precision::build_mpfr(path, &spec)?;
-            let bodies: Vec<[MpFloat; 3]> =
-                precision::body_points(&spec).iter().map(|p| p.each_ref().map(MpFloat::from_rational)).collect();
-            let n = if spec.samples >= 2 { spec.samples } else { 0 };
-            if n > 0 {
-                check_segments(b.method(), b.segments(), bodies.len(), n, 1)?;
-            }
-            let times = b.times();
-            let (t0, t1) = (&times[0], &times[times.len() - 1]);
-            let row = |i: usize| {
-                let s = b.sample(&even(t0, t1, n, i), &bodies).map_err(|e| CliError::math(e.to_string()))?;
-                Row::of(&s)
-            };
-            output((b.method(), times, b.segments(), b.key_poses()), n, json, row)
-        }),
+    if scalar == MotionScalar::F64 {
+        return interpolate_f64(path, json);
     }
+    let text = precision::read_file(path)?;
+    scalar.run(|| {
+        let out = precise(path, &text, scalar)?;
+        if json { out.streamed().stream() } else { out.text() }
+    })
 }
 
 /// `gam interpolate` in f64.

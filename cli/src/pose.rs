@@ -206,23 +206,28 @@ pub fn pose(arg: &str, json: bool, scalar: MotionScalar) -> Result<String, CliEr
         ),
         None => ("POSE_JSON".to_string(), arg.to_string()),
     };
-    let text = crate::hermite::strip_comments(&text);
-    let render = |json: bool, v: Value, t: String| if json { v.to_string() } else { t };
+    let (value, text) = pose_in(&label, &text, scalar)?;
+    Ok(if json { value.to_string() } else { text })
+}
+
+/// `gam pose` of the pose object text `text` (named `label` in messages) in `scalar`: the JSON
+/// object and the human form.
+pub(crate) fn pose_in(label: &str, text: &str, scalar: MotionScalar) -> Result<(Value, String), CliError> {
+    let text = crate::hermite::strip_comments(text);
     match scalar {
         MotionScalar::F64 => {
-            let object = PoseObject::from_json(&text, "pose").map_err(|e| crate::interpolate::usage(&label, e))?;
-            let r = real_representations(&the_pose(&label, &object)?)?;
-            Ok(render(json, r.json(), r.text()))
+            let object = PoseObject::from_json(&text, "pose").map_err(|e| crate::interpolate::usage(label, e))?;
+            let r = real_representations(&the_pose(label, &object)?)?;
+            Ok((r.json(), r.text()))
         }
         MotionScalar::Rational => {
-            let object = exact_object(&label, &text)?;
-            let r = exact_representations(&label, &object)?;
-            Ok(render(json, r.json(), r.text()))
+            let r = exact_representations(label, &exact_object(label, &text)?)?;
+            Ok((r.json(), r.text()))
         }
         MotionScalar::Mpfr(_) => scalar.run(|| {
-            let object = exact_object(&label, &text)?.map(&|x| MpFloat::from_rational(&x.0));
-            let r = real_representations(&the_pose(&label, &object)?)?;
-            Ok(render(json, r.json(), r.text()))
+            let object = exact_object(label, &text)?.map(&|x| MpFloat::from_rational(&x.0));
+            let r = real_representations(&the_pose(label, &object)?)?;
+            Ok((r.json(), r.text()))
         }),
     }
 }

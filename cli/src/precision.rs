@@ -103,15 +103,25 @@ pub(crate) fn point_exact(text: &str) -> Result<[Q; 3], CliError> {
     <[Q; 3]>::try_from(v).map_err(|_| bad())
 }
 
-/// A `gam interpolate` spec read with every literal exact.
+/// The text of the file at `path`.
+pub(crate) fn read_file(path: &str) -> Result<String, CliError> {
+    std::fs::read_to_string(path).map_err(|e| CliError::usage(format!("cannot read `{path}`: {e}")))
+}
+
+/// A `gam interpolate` spec read with every literal exact from the file at `path`.
 pub(crate) fn read_exact_spec(path: &str) -> Result<InterpolateSpec<Exact>, CliError> {
-    let text = std::fs::read_to_string(path).map_err(|e| CliError::usage(format!("cannot read `{path}`: {e}")))?;
-    let text = strip_comments(&text);
-    let value = motion::schema::parse_json(&text).map_err(|e| usage(path, e))?;
+    exact_spec(path, &read_file(path)?)
+}
+
+/// A `gam interpolate` spec read with every literal exact from its text (`label` names it in
+/// messages; `//` comments allowed).
+pub(crate) fn exact_spec(label: &str, text: &str) -> Result<InterpolateSpec<Exact>, CliError> {
+    let text = strip_comments(text);
+    let value = motion::schema::parse_json(&text).map_err(|e| usage(label, e))?;
     if value.get("method").is_none() {
-        return Err(usage(path, "invalid spec: missing field `method`"));
+        return Err(usage(label, "invalid spec: missing field `method`"));
     }
-    InterpolateSpec::<Exact>::read_json(&text).map_err(|e| schema_error(path, e))
+    InterpolateSpec::<Exact>::read_json(&text).map_err(|e| schema_error(label, e))
 }
 
 /// The method input over exact rationals (pose forms that are not rational are refused).

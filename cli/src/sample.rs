@@ -236,7 +236,7 @@ pub fn sample(path: &str, n: usize, json: bool, scalar: MotionScalar) -> Result<
                 let body = spec.body_points.as_ref().and_then(|p| p.first()).map(|p| p.each_ref().map(to));
                 crate::interpolate::motion_sampler(b, body, n, 2)?
             } else {
-                let spec = crate::hermite::read_exact_spec(path)?.map(&to);
+                let spec = crate::hermite::exact_spec(path, &precision::read_file(path)?)?.map(&to);
                 spec.check().map_err(|e| crate::hermite::spec_error(path, e))?;
                 hermite_sampler(path, &spec, n, 2)?
             };

@@ -108,23 +108,34 @@ fn render<T: OutScalar>(method: Method, x: &[T; 3], curves: &[Curve<T>], json: b
 
 /// Runs `gam trajectory` on the spec file at `path`, in the scalar of `--scalar`.
 pub fn trajectory(path: &str, point_text: &str, json: bool, scalar: MotionScalar) -> Result<String, CliError> {
-    match scalar {
-        MotionScalar::F64 => {
-            let x = point(point_text)?;
-            let (method, out) = curves(path, &read_spec(path)?, &x)?;
-            Ok(render(method, &x, &out, json))
-        }
-        MotionScalar::Rational => {
-            let x = precision::point_exact(point_text)?;
-            let m = precision::build_exact(path, &precision::read_exact_spec(path)?)?;
-            let out = curves_of(m.method(), &x, m.rational_trajectories(&x), path)?;
-            Ok(render(m.method(), &x, &out, json))
-        }
-        MotionScalar::Mpfr(_) => scalar.run(|| {
-            let x = precision::point_exact(point_text)?.map(|c| MpFloat::from_rational(&c));
-            let b = precision::build_mpfr(path, &precision::read_exact_spec(path)?)?;
-            let out = curves_of(b.method(), &x, b.rational_trajectories(&x), path)?;
-            Ok(render(b.method(), &x, &out, json))
-        }),
+    if scalar == MotionScalar::F64 {
+        let x = point(point_text)?;
+        let (method, out) = curves(path, &read_spec(path)?, &x)?;
+        return Ok(render(method, &x, &out, json));
     }
+    trajectory_in(path, &precision::read_file(path)?, point_text, json, scalar)
+}
+
+/// `gam trajectory` of the spec text `text` (named `label` in messages) over exact rationals
+/// or MPFR: the JSON text or the human form.
+pub(crate) fn trajectory_in(
+    label: &str,
+    text: &str,
+    point_text: &str,
+    json: bool,
+    scalar: MotionScalar,
+) -> Result<String, CliError> {
+    let x = precision::point_exact(point_text)?;
+    let spec = precision::exact_spec(label, text)?;
+    if scalar == MotionScalar::Rational {
+        let m = precision::build_exact(label, &spec)?;
+        let out = curves_of(m.method(), &x, m.rational_trajectories(&x), label)?;
+        return Ok(render(m.method(), &x, &out, json));
+    }
+    scalar.run(|| {
+        let x = x.each_ref().map(MpFloat::from_rational);
+        let b = precision::build_mpfr(label, &spec)?;
+        let out = curves_of(b.method(), &x, b.rational_trajectories(&x), label)?;
+        Ok(render(b.method(), &x, &out, json))
+    })
 }

@@ -1,6 +1,7 @@
 //! JSON values between Python and Rust: a spec or pose given as Python objects becomes a
 //! [`serde_json::Value`] (dicts with string keys, lists/tuples, strings, numbers, booleans,
-//! `None`; numpy arrays and scalars through their `tolist()`), and a command's JSON value
+//! `None`; numpy arrays and scalars through their `tolist()`; a `fractions.Fraction` as the
+//! string `"p/q"`), and a command's JSON value
 //! becomes the objects `json.loads` would give (integers stay `int`, other numbers `float`).
 
 use crate::gam_error;
@@ -64,6 +65,11 @@ fn to_json_at(obj: &Bound<'_, PyAny>, at: &str, depth: usize) -> PyResult<Value>
             list.push(to_json_at(&item?, &format!("{at}[{i}]"), depth + 1)?);
         }
         return Ok(Value::Array(list));
+    }
+    // fractions.Fraction: the string "p/q", read exactly under scalar="rational" or "mpfr:BITS"
+    if type_name(obj) == "Fraction" && obj.hasattr("numerator")? && obj.hasattr("denominator")? {
+        let (p, q) = (obj.getattr("numerator")?.str()?, obj.getattr("denominator")?.str()?);
+        return Ok(Value::String(format!("{}/{}", p.to_str()?, q.to_str()?)));
     }
     // numpy arrays and numpy scalars (float64, int64, ...)
     if obj.hasattr("tolist")? && obj.hasattr("dtype")? {
@@ -133,7 +139,17 @@ pub(crate) fn point_text(obj: &Bound<'_, PyAny>) -> PyResult<String> {
     let bad = || gam_error("`point` must be [x, y, z] (three numbers) or the text \"x,y,z\"");
     let obj = if obj.hasattr("tolist")? { obj.call_method0("tolist")? } else { obj.clone() };
     let items = obj.try_iter().map_err(|_| bad())?;
-    let coords: Vec<f64> =
-        items.map(|i| i.and_then(|i| i.extract::<f64>()).map_err(|_| bad())).collect::<Result<_, _>>()?;
-    Ok(coords.iter().map(|x| format!("{x:?}")).collect::<Vec<_>>().join(","))
+    // each coordinate as the CLI's text: a Fraction as p/q and an int as written (exact under
+    // scalar="rational"), a float as its shortest round-trip decimal
+    let coordinate = |i: Bound<'_, PyAny>| -> PyResult<String> {
+        match to_json(&i, "point")? {
+            Value::String(s) if type_name(&i) == "Fraction" => Ok(s),
+            Value::Number(n) => {
+                Ok(n.as_f64().filter(|_| n.is_f64()).map_or_else(|| n.to_string(), |x| format!("{x:?}")))
+            }
+            _ => Err(bad()),
+        }
+    };
+    let coords: Vec<String> = items.map(|i| i.and_then(coordinate).map_err(|_| bad())).collect::<Result<_, _>>()?;
+    Ok(coords.join(","))
 }

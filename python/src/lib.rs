@@ -97,39 +97,44 @@ fn verify<'py>(py: Python<'py>, filter: Option<&str>) -> PyResult<Bound<'py, PyA
     mirror(py, || api::verify(filter))
 }
 
-/// `gam pose --json`: one pose object (any form of the contract) in every representation.
+/// `gam pose --json [--scalar S]`: one pose object (any form of the contract) in every
+/// representation; `scalar` is `"f64"` (default), `"rational"` or `"mpfr:BITS"`.
 #[pyfunction]
-#[pyo3(name = "pose")]
-fn pose_fn<'py>(py: Python<'py>, pose: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+#[pyo3(name = "pose", signature = (pose, scalar = "f64"))]
+fn pose_fn<'py>(py: Python<'py>, pose: &Bound<'py, PyAny>, scalar: &str) -> PyResult<Bound<'py, PyAny>> {
     let v = convert::to_json(pose, "pose")?;
-    mirror(py, || api::pose(&v))
+    mirror(py, || api::pose_with(&v, scalar))
 }
 
-/// `gam hermite --json`: the control poses of a segment from its end conditions.
+/// `gam hermite --json [--scalar S]`: the control poses of a segment from its end conditions.
 #[pyfunction]
-fn hermite<'py>(py: Python<'py>, spec: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+#[pyo3(signature = (spec, scalar = "f64"))]
+fn hermite<'py>(py: Python<'py>, spec: &Bound<'py, PyAny>, scalar: &str) -> PyResult<Bound<'py, PyAny>> {
     let v = convert::to_json(spec, "spec")?;
-    mirror(py, || api::hermite(&v, "spec"))
+    mirror(py, || api::hermite_with(&v, "spec", scalar))
 }
 
-/// `gam interpolate --json`: a motion through key poses, its segments and samples.
+/// `gam interpolate --json [--scalar S]`: a motion through key poses, its segments and samples.
 #[pyfunction]
-fn interpolate<'py>(py: Python<'py>, spec: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+#[pyo3(signature = (spec, scalar = "f64"))]
+fn interpolate<'py>(py: Python<'py>, spec: &Bound<'py, PyAny>, scalar: &str) -> PyResult<Bound<'py, PyAny>> {
     let v = convert::to_json(spec, "spec")?;
-    mirror(py, || api::interpolate(&v, "spec"))
+    mirror(py, || api::interpolate_with(&v, "spec", scalar))
 }
 
-/// `gam trajectory --json --point x,y,z`: the trajectory of a body point as rational Bézier
-/// curves; `point` is `[x, y, z]` or the text `"x,y,z"`.
+/// `gam trajectory --json --point x,y,z [--scalar S]`: the trajectory of a body point as
+/// rational Bézier curves; `point` is `[x, y, z]` or the text `"x,y,z"`.
 #[pyfunction]
+#[pyo3(signature = (spec, point, scalar = "f64"))]
 fn trajectory<'py>(
     py: Python<'py>,
     spec: &Bound<'py, PyAny>,
     point: &Bound<'py, PyAny>,
+    scalar: &str,
 ) -> PyResult<Bound<'py, PyAny>> {
     let v = convert::to_json(spec, "spec")?;
     let point = convert::point_text(point)?;
-    mirror(py, || api::trajectory(&v, "spec", &point))
+    mirror(py, || api::trajectory_with(&v, "spec", &point, scalar))
 }
 
 /// The Python module `gam`.
