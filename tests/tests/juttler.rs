@@ -97,6 +97,7 @@ fn theorem_6_converse() {
     // 3 construction-independent checks, then 12 per rational motion for all seven (no early
     // return: every motion reached R = ξ M)
     let out = assert_holds("juttler/theorem-6-converse");
-    assert_eq!(out.checks, 3 + 7 * 12);
+    assert_eq!(out.checks, 3 + 7 * 12 + 1);
+    assert!(out.notes.iter().any(|n| n.starts_with("counterexample") && n.contains("mirrored")), "{:?}", out.notes);
     assert!(out.notes.iter().any(|n| n.contains("(36)") && n.contains("n = 3, k = 1")), "{:?}", out.notes);
 }

@@ -406,7 +406,20 @@ fn theorem_6_converse(c: &mut Checker) {
     let b = to_bernstein(&p, 4);
     let back = b.iter().enumerate().fold(Poly::zero(), |acc, (i, bi)| acc + bernstein(4, i as u32, &t).mul_ref(&Poly::from_q(bi)));
     c.equal("power -> Bernstein (degree 4) and back", &back, &p);
-    for inst in instances() {
-        converse(c, &inst);
+    let all = instances();
+    for inst in &all {
+        converse(c, inst);
     }
+    // The construction can fail: a mirrored motion (fixed frame reflected in y = 0) has the
+    // shape (10) but an improper rotation block, and X is not of rank one.
+    let mut mirrored = all[5].r.clone();
+    mirrored[2] = mirrored[2].clone().map(|x| x.neg_ref());
+    let x = x_matrix(&mirrored);
+    let rank_one = (0..4).all(|i| (0..4).all(|j| x[i][i].mul_ref(&x[j][j]) == x[i][j].mul_ref(&x[i][j])));
+    c.counterexample(
+        "X has rank one for every matrix of the shape (10)",
+        rank_one,
+        "the Darboux motion of instance 6 mirrored in y = 0 (det < 0): X_ii X_jj != X_ij² (a motion, i.e. a proper \
+         rotation block, is needed)",
+    );
 }
