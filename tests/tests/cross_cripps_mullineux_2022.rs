@@ -204,5 +204,9 @@ fn sec_5_2_darboux() {
     let out = assert_holds("cross2022/sec-5.2-darboux");
     // normal form 10, three general instances of 6, the example 14: nothing skipped
     assert_eq!(out.checks, 10 + 3 * 6 + 14);
-    assert!(out.notes.iter().any(|n| n.starts_with("counterexample") && n.contains("circular arcs")), "{:?}", out.notes);
+    assert!(
+        out.notes.iter().any(|n| n.starts_with("counterexample") && n.contains("circular arcs")),
+        "{:?}",
+        out.notes
+    );
 }

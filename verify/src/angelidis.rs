@@ -25,6 +25,9 @@
 //! * `angelidis/eq-35`: the twist point transform, on twists and rotations; needs ω != 0.
 //! * `angelidis/eq-37`, `-38`, `-39`: the cube, Rot via the cube, Rot² = M²: symbolic
 //!   polynomial identities (denominators |ω|² cleared), including Rot + Trs = <ω, m> of (32)-(33).
+//! * `angelidis/eq-60`: the trajectory (60) of the decoupled motion (58)-(59), symbolically
+//!   against the poses of the main paper and at 256 bits against the series and the library;
+//!   the printed form holds only at u = 1 (details in `decoupled.rs`).
 
 mod decoupled;
 mod library;

@@ -24,7 +24,8 @@
 //!   (29), and satisfies (8) identically in `t`.
 //!
 //! Propositions 1-4, Result 5 and Theorem 6 (the interpolation methods of Secs. 3-5) are in
-//! [`interpolation`].
+//! [`interpolation`]; the converse part of Theorem 6 (every rational motion of order n has the
+//! form (35)) in [`converse`].
 
 pub mod converse;
 pub mod interpolation;

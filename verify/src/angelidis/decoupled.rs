@@ -68,11 +68,8 @@ fn eq_60_cleared(
 
 fn symbolic(c: &mut Checker) {
     let (th, ch, sh, u) = (var("θ"), var("ch"), var("sh"), var("u"));
-    let (p, cc, m) = (
-        [var("p1"), var("p2"), var("p3")],
-        [var("c1"), var("c2"), var("c3")],
-        [var("m1"), var("m2"), var("m3")],
-    );
+    let (p, cc, m) =
+        ([var("p1"), var("p2"), var("p3")], [var("c1"), var("c2"), var("c3")], [var("m1"), var("m2"), var("m3")]);
     let units: [[Q; 3]; 3] =
         [[q(1), q(0), q(0)], [ratio(2, 7), ratio(3, 7), ratio(6, 7)], [ratio(4, 9), ratio(-4, 9), ratio(7, 9)]];
     for nq in &units {
@@ -84,7 +81,11 @@ fn symbolic(c: &mut Checker) {
         let truth: V3<Poly> = std::array::from_fn(|i| y[i].mul_ref(&u).mul_ref(&u).mul_ref(&th).mul_ref(&th));
         let uu = u.mul_ref(&u);
         let corrected = eq_60_cleared(&n, &th, &ch, &sh, &u, &cc, &m, &p, (&uu, &u));
-        c.equal(format!("{label}: (59) moves p along (60) with the factors u² on ω × ξ and u on ξ, for all u"), &truth, &corrected);
+        c.equal(
+            format!("{label}: (59) moves p along (60) with the factors u² on ω × ξ and u on ξ, for all u"),
+            &truth,
+            &corrected,
+        );
         let one = Poly::one();
         let printed = eq_60_cleared(&n, &th, &ch, &sh, &u, &cc, &m, &p, (&one, &one));
         let at1 = |v: &V3<Poly>| v.clone().map(|x| x.substitute("u", &one));
@@ -110,7 +111,11 @@ fn symbolic(c: &mut Checker) {
         // the centre moves straight: from c to c + m
         let yc = pose_59(&n, &ch, &sh, &u, &cc, &m, &cc);
         let straight: V3<Poly> = std::array::from_fn(|i| w.mul_ref(&cc[i].add_ref(&u.mul_ref(&m[i]))));
-        c.equal(format!("{label}: the centre c moves straight to c + m: C(c, u) = c + u m"), &[yc[0].clone(), yc[1].clone(), yc[2].clone()], &straight);
+        c.equal(
+            format!("{label}: the centre c moves straight to c + m: C(c, u) = c + u m"),
+            &[yc[0].clone(), yc[1].clone(), yc[2].clone()],
+            &straight,
+        );
     }
 }
 
@@ -153,7 +158,12 @@ fn numeric(c: &mut Checker) {
     let (nf, pf, cf, mf) = (n.map(|x| mp(&x)), p.map(|x| mp(&x)), cc.map(|x| mp(&x)), m.map(|x| mp(&x)));
     let omega = vscale(&theta, &nf);
     let truth_f = truth.map(|x| mp(&x));
-    c.close("cos|uω| = 3/5 at u = 1/2 for θ = 4 atan(1/2)", &[Real::cos(&u.mul_ref(&theta))], &[mp(&ratio(3, 5))], DIGITS);
+    c.close(
+        "cos|uω| = 3/5 at u = 1/2 for θ = 4 atan(1/2)",
+        &[Real::cos(&u.mul_ref(&theta))],
+        &[mp(&ratio(3, 5))],
+        DIGITS,
+    );
     // the power series of (59): exp(<uω, (c + um) × uω>) exp(<0, um>)
     let (uw, um) = (vscale(&u, &omega), vscale(&u, &mf));
     let zero = [MpFloat::zero(), MpFloat::zero(), MpFloat::zero()];
@@ -175,7 +185,8 @@ fn numeric(c: &mut Checker) {
     let th = Real::sqrt(&dot(&uw, &uw));
     let (a, b) = (MpFloat::one().sub_ref(&Real::cos(&th)).div_ref(&th.mul_ref(&th)), Real::sin(&th).div_ref(&th));
     let xi = cross(&omega, &vsub(&pf, &cf));
-    let printed_small = vadd(&vadd(&pf, &vscale(&tiny, &mf)), &vadd(&vscale(&a, &cross(&omega, &xi)), &vscale(&b, &xi)));
+    let printed_small =
+        vadd(&vadd(&pf, &vscale(&tiny, &mf)), &vadd(&vscale(&a, &cross(&omega, &xi)), &vscale(&b, &xi)));
     let limit = vadd(&pf, &vadd(&xi, &vscale(&MpFloat::from_ratio(1, 2), &cross(&omega, &xi))));
     c.close("the printed (60) at u = 10^-20 is p + ξ + ω × ξ/2 (to 15 digits), not p", &printed_small, &limit, 15);
     c.counterexample(

@@ -92,7 +92,6 @@ fn var(name: &str) -> Poly {
     Poly::var(name)
 }
 
-
 fn int(n: i64) -> Poly {
     Poly::from_i64(n)
 }
@@ -157,7 +156,10 @@ fn normal_form(c: &mut Checker) {
         &p1.mul_ref(&axial),
         &two(q1.mul_ref(&uv)).add_ref(&two(q0.mul_ref(&vv))),
     );
-    c.check("normal form: the axial displacement is the same for every point (vertical Darboux motion)", independent_of_point(&axial));
+    c.check(
+        "normal form: the axial displacement is the same for every point (vertical Darboux motion)",
+        independent_of_point(&axial),
+    );
     let plane = q1
         .mul_ref(&x[1].mul_ref(&y[3]).sub_ref(&x[2].mul_ref(&y[2])))
         .add_ref(&q0.mul_ref(&rho2.mul_ref(&y[0]).sub_ref(&x[1].mul_ref(&y[2])).sub_ref(&x[2].mul_ref(&y[3]))));
@@ -181,7 +183,16 @@ fn normal_form(c: &mut Checker) {
 fn random_pose(g: &mut crate::juttler::Lcg) -> Pose<Q> {
     let mut k: Vec<Q> = (0..8).map(|_| g.next()).collect();
     k[0] = &k[0] + q(3);
-    Pose::new(k[0].clone(), k[1].clone(), k[2].clone(), k[3].clone(), k[4].clone(), k[5].clone(), k[6].clone(), k[7].clone())
+    Pose::new(
+        k[0].clone(),
+        k[1].clone(),
+        k[2].clone(),
+        k[3].clone(),
+        k[4].clone(),
+        k[5].clone(),
+        k[6].clone(),
+        k[7].clone(),
+    )
 }
 
 fn general(c: &mut Checker) {
@@ -204,10 +215,12 @@ fn general(c: &mut Checker) {
         let origin = img([Poly::zero(), Poly::zero(), Poly::zero()], Poly::one());
         let alpha = origin[0].clone();
         let s: [Q; 3] = std::array::from_fn(|i| &origin[i + 1] / &alpha);
-        let cols: Vec<[Q; 3]> = (0..3).map(|j| {
-            let y = img(unit(j), Poly::zero());
-            std::array::from_fn(|i| &y[i + 1] / &alpha)
-        }).collect();
+        let cols: Vec<[Q; 3]> = (0..3)
+            .map(|j| {
+                let y = img(unit(j), Poly::zero());
+                std::array::from_fn(|i| &y[i + 1] / &alpha)
+            })
+            .collect();
         let comps = cc.components();
         let ax = [comps[3].clone(), -comps[2].clone(), comps[1].clone()];
         let aa = ax.iter().fold(q(0), |acc, e| acc + e * e);
@@ -216,8 +229,11 @@ fn general(c: &mut Checker) {
             .map(|i| (0..3).map(|j| &cols[j][i] - if i == j { q(1) } else { q(0) } + &ax[i] * &ax[j]).collect())
             .collect();
         let rhs: Vec<Q> = (0..3).map(|i| -(&s[i] - &sa / &aa * &ax[i])).collect();
-        let Some(cp) = c.ok(format!("instance {k}: the axis point of C"), solve(mat, rhs).ok_or("singular")) else { continue };
-        let moved: Vec<Q> = (0..3).map(|i| (0..3).fold(s[i].clone(), |acc, j| acc + &cols[j][i] * &cp[j]) - &cp[i]).collect();
+        let Some(cp) = c.ok(format!("instance {k}: the axis point of C"), solve(mat, rhs).ok_or("singular")) else {
+            continue;
+        };
+        let moved: Vec<Q> =
+            (0..3).map(|i| (0..3).fold(s[i].clone(), |acc, j| acc + &cols[j][i] * &cp[j]) - &cp[i]).collect();
         let par = (0..3).all(|i| &moved[(i + 1) % 3] * &ax[(i + 2) % 3] == &moved[(i + 2) % 3] * &ax[(i + 1) % 3]);
         c.check(format!("instance {k}: F_C(c) - c is along the axis a (c is on C's screw axis)"), par);
         // the trajectory of x under S(λ) = (1 - λ)A + λB, and its start F_A(x)
@@ -247,7 +263,9 @@ fn general(c: &mut Checker) {
             &alpha_a.mul_ref(&u.mul_ref(&u).add_ref(&lam.mul_ref(&lam).mul_ref(&c_(&aa)))),
         );
         c.check(
-            format!("instance {k}: the axial displacement times y0 has no constant term and degree <= 2 in λ (Darboux form)"),
+            format!(
+                "instance {k}: the axial displacement times y0 has no constant term and degree <= 2 in λ (Darboux form)"
+            ),
             quadratic_in(&axial, "λ") && axial.substitute("λ", &Poly::zero()) == Poly::zero(),
         );
     }
@@ -290,7 +308,11 @@ fn example(c: &mut Checker) {
         &y[0].mul_ref(&y[0]).mul_ref(&off(&start)),
     );
     let axial1 = y[1].sub_ref(&y[0].mul_ref(&x[0]));
-    c.equal("S1: the axial displacement 144 (y1 - y0 x1) = -π λ0² (every point)", &axial1.mul_ref(&int(144)), &pi.mul_ref(&lam).mul_ref(&lam).neg_ref());
+    c.equal(
+        "S1: the axial displacement 144 (y1 - y0 x1) = -π λ0² (every point)",
+        &axial1.mul_ref(&int(144)),
+        &pi.mul_ref(&lam).mul_ref(&lam).neg_ref(),
+    );
     c.check("S1: the paths are conics (degree 2 in λ0)", y.iter().all(|e| quadratic_in(e, "λ")));
     let at4 = {
         let pi_f = std::f64::consts::PI;
@@ -313,7 +335,10 @@ fn example(c: &mut Checker) {
     let y = image(&s2, &x);
     let y3s = image(&s3, &x);
     let off2 = |p: &[Poly; 4]| {
-        let (a, b) = (pi.mul_ref(&p[2]).sub_ref(&int(10).mul_ref(&pi).mul_ref(&p[0])), pi.mul_ref(&p[3]).sub_ref(&int(32).mul_ref(&p[0])));
+        let (a, b) = (
+            pi.mul_ref(&p[2]).sub_ref(&int(10).mul_ref(&pi).mul_ref(&p[0])),
+            pi.mul_ref(&p[3]).sub_ref(&int(32).mul_ref(&p[0])),
+        );
         a.mul_ref(&a) + b.mul_ref(&b)
     };
     // y0 carries α(S3') = 2: compare with the start F_S3(x), whose weight is 2 as well

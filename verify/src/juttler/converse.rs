@@ -281,7 +281,8 @@ fn instances() -> Vec<Instance> {
         xi_degree: 4,
     });
     // 5. a translation 2 + ε v(t), deg v = 3: k = 0
-    let shift = DualQuaternion::new(Quaternion::one().scale(&Poly::from_i64(2)), Quaternion::pure(&rand_vec(&mut g, 3)));
+    let shift =
+        DualQuaternion::new(Quaternion::one().scale(&Poly::from_i64(2)), Quaternion::pure(&rand_vec(&mut g, 3)));
     out.push(Instance { name: "translation 2 + εv(t), deg v = 3", r: matrix_12(&shift), n: 3, k: 0, xi_degree: 0 });
     // 6. (1 - t) + t C, C off the Study quadric (a Darboux motion, Sec. 5.2 of the main paper): order 2
     let cc = DualQuaternion::from_coeffs(std::array::from_fn(|_| Poly::from_q(&g.next())));
@@ -325,7 +326,10 @@ fn converse(c: &mut Checker, inst: &Instance) {
     // 1. ξ and the order n
     let xi = gcd_all(r.iter().flatten());
     c.equal(format!("{name}: deg ξ (gcd of the entries)"), &(xi.len() - 1), &inst.xi_degree);
-    let Some(rp) = r.iter().map(|row| row.iter().map(|x| exact_div(x, &xi)).collect::<Option<Vec<_>>>()).collect::<Option<Vec<_>>>()
+    let Some(rp) = r
+        .iter()
+        .map(|row| row.iter().map(|x| exact_div(x, &xi)).collect::<Option<Vec<_>>>())
+        .collect::<Option<Vec<_>>>()
     else {
         c.fail(format!("{name}: ξ does not divide R"));
         return;
@@ -334,8 +338,9 @@ fn converse(c: &mut Checker, inst: &Instance) {
     let n = rp.iter().flatten().filter_map(deg).max().unwrap_or(0);
     c.equal(format!("{name}: order n = deg R/ξ"), &n, &inst.n);
     let x = [ratio(1, 2), q(-1), q(3)].map(|e| Poly::from_q(&e));
-    let traj: [Poly; 4] =
-        std::array::from_fn(|i| rp[i][0].clone() + (0..3).fold(Poly::zero(), |acc, j| acc + rp[i][j + 1].mul_ref(&x[j])));
+    let traj: [Poly; 4] = std::array::from_fn(|i| {
+        rp[i][0].clone() + (0..3).fold(Poly::zero(), |acc, j| acc + rp[i][j + 1].mul_ref(&x[j]))
+    });
     let common = gcd_all(traj.iter());
     c.check(
         format!("{name}: the trajectory of (1/2, -1, 3) is irreducible (no common factor) of degree n"),
@@ -344,9 +349,7 @@ fn converse(c: &mut Checker, inst: &Instance) {
     // 2. D from X
     let xm = x_matrix(&rp);
     let rank_one = (0..4).all(|i| {
-        (0..4).all(|j| {
-            (0..4).all(|k| (0..4).all(|l| xm[i][j].mul_ref(&xm[k][l]) == xm[i][l].mul_ref(&xm[k][j])))
-        })
+        (0..4).all(|j| (0..4).all(|k| (0..4).all(|l| xm[i][j].mul_ref(&xm[k][l]) == xm[i][l].mul_ref(&xm[k][j]))))
     });
     c.check(format!("{name}: X has rank one (R/ξ is a rotation of quaternion form)"), rank_one);
     let Some(row) = (0..4).find(|&i| xm[i][i] != Poly::zero()) else {
@@ -404,7 +407,10 @@ fn theorem_6_converse(c: &mut Checker) {
     let p = poly(&[q(2), ratio(-1, 3), q(5), q(1)]);
     let t = Poly::var("t");
     let b = to_bernstein(&p, 4);
-    let back = b.iter().enumerate().fold(Poly::zero(), |acc, (i, bi)| acc + bernstein(4, i as u32, &t).mul_ref(&Poly::from_q(bi)));
+    let back = b
+        .iter()
+        .enumerate()
+        .fold(Poly::zero(), |acc, (i, bi)| acc + bernstein(4, i as u32, &t).mul_ref(&Poly::from_q(bi)));
     c.equal("power -> Bernstein (degree 4) and back", &back, &p);
     let all = instances();
     for inst in &all {
