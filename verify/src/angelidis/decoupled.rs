@@ -28,75 +28,89 @@ fn vsub<T: Ring>(a: &V3<T>, b: &V3<T>) -> V3<T> {
     std::array::from_fn(|i| a[i].sub_ref(&b[i]))
 }
 
-/// The homogeneous image `(y, w)` of `p` under the pose of (59): translate by `u m`, then turn
-/// by the rotor `ch + sh (n e123)` about the axis along `n` through `c + u m`.
-fn pose_59(n: &V3<Poly>, ch: &Poly, sh: &Poly, u: &Poly, c: &V3<Poly>, m: &V3<Poly>, p: &V3<Poly>) -> [Poly; 4] {
-    let um = vscale(u, m);
-    let centre = vadd(c, &um);
-    let back = centre.clone().map(|x| x.neg_ref());
-    let about = &(&Pose::translation(&back) * &Pose::rotor_from_parts(ch, sh, n)) * &Pose::translation(&centre);
-    let pose = &Pose::translation(&um) * &about;
-    pose.apply_homogeneous(&[p[0].clone(), p[1].clone(), p[2].clone(), Poly::one()])
+/// The symbols of one check: the axis `n` (rational, unit), `θ = |ω|`, the rotor's `ch`, `sh`,
+/// the parameter `u`, the centre `c`, the translation `m`.
+struct Motion59 {
+    n: V3<Poly>,
+    th: Poly,
+    ch: Poly,
+    sh: Poly,
+    u: Poly,
+    c: V3<Poly>,
+    m: V3<Poly>,
 }
 
-/// `(60)` cleared of denominators, with the factors `fa` on `ω × ξ` and `fb` on `ξ` (`1, 1` as
-/// printed; `u², u` corrected): `D C = D(p + um) + fa 2sh² θ² n × (n × (p - c)) + fb 2 ch sh uθ ·
-/// θ n × (p - c)`, `D = w u² θ²` (the printed coefficients `(1 - cos|uω|)/|uω|²` and
-/// `sin|uω|/|uω|` times `D`).
-#[allow(clippy::too_many_arguments)]
-fn eq_60_cleared(
-    n: &V3<Poly>,
-    th: &Poly,
-    ch: &Poly,
-    sh: &Poly,
-    u: &Poly,
-    c: &V3<Poly>,
-    m: &V3<Poly>,
-    p: &V3<Poly>,
-    factors: (&Poly, &Poly),
-) -> V3<Poly> {
-    let w = ch.mul_ref(ch).add_ref(&sh.mul_ref(sh));
-    let d = w.mul_ref(u).mul_ref(u).mul_ref(th).mul_ref(th);
-    let omega = vscale(th, n);
-    let xi = cross(&omega, &vsub(p, c));
-    let two = Poly::from_i64(2);
-    let a = two.mul_ref(sh).mul_ref(sh).mul_ref(factors.0);
-    let b = two.mul_ref(ch).mul_ref(sh).mul_ref(u).mul_ref(th).mul_ref(factors.1);
-    let start = vadd(p, &vscale(u, m));
-    std::array::from_fn(|i| d.mul_ref(&start[i]) + a.mul_ref(&cross(&omega, &xi)[i]) + b.mul_ref(&xi[i]))
+impl Motion59 {
+    /// `w = ch² + sh²`, the weight of the rotor's images.
+    fn w(&self) -> Poly {
+        self.ch.mul_ref(&self.ch).add_ref(&self.sh.mul_ref(&self.sh))
+    }
+
+    /// The homogeneous image `(y, w)` of `p` under the pose of (59): translate by `u m`, then
+    /// turn by the rotor `ch + sh (n e123)` about the axis along `n` through `c + u m`.
+    fn image(&self, p: &V3<Poly>) -> [Poly; 4] {
+        let um = vscale(&self.u, &self.m);
+        let centre = vadd(&self.c, &um);
+        let back = centre.clone().map(|x| x.neg_ref());
+        let rotor = Pose::rotor_from_parts(&self.ch, &self.sh, &self.n);
+        let about = &(&Pose::translation(&back) * &rotor) * &Pose::translation(&centre);
+        let pose = &Pose::translation(&um) * &about;
+        pose.apply_homogeneous(&[p[0].clone(), p[1].clone(), p[2].clone(), Poly::one()])
+    }
+
+    /// `(60)` cleared of denominators, with the factors `fa` on `ω × ξ` and `fb` on `ξ` (`1, 1`
+    /// as printed; `u², u` corrected): `D C = D(p + um) + fa 2sh² θ² n × (n × (p - c)) + fb 2 ch
+    /// sh uθ · θ n × (p - c)`, `D = w u² θ²` (the printed coefficients `(1 - cos|uω|)/|uω|²` and
+    /// `sin|uω|/|uω|` times `D`).
+    fn eq_60_cleared(&self, p: &V3<Poly>, fa: &Poly, fb: &Poly) -> V3<Poly> {
+        let (th, ch, sh, u) = (&self.th, &self.ch, &self.sh, &self.u);
+        let d = self.w().mul_ref(u).mul_ref(u).mul_ref(th).mul_ref(th);
+        let omega = vscale(th, &self.n);
+        let xi = cross(&omega, &vsub(p, &self.c));
+        let two = Poly::from_i64(2);
+        let a = two.mul_ref(sh).mul_ref(sh).mul_ref(fa);
+        let b = two.mul_ref(ch).mul_ref(sh).mul_ref(u).mul_ref(th).mul_ref(fb);
+        let start = vadd(p, &vscale(u, &self.m));
+        std::array::from_fn(|i| d.mul_ref(&start[i]) + a.mul_ref(&cross(&omega, &xi)[i]) + b.mul_ref(&xi[i]))
+    }
 }
 
 fn symbolic(c: &mut Checker) {
-    let (th, ch, sh, u) = (var("θ"), var("ch"), var("sh"), var("u"));
-    let (p, cc, m) =
-        ([var("p1"), var("p2"), var("p3")], [var("c1"), var("c2"), var("c3")], [var("m1"), var("m2"), var("m3")]);
+    let p = [var("p1"), var("p2"), var("p3")];
     let units: [[Q; 3]; 3] =
         [[q(1), q(0), q(0)], [ratio(2, 7), ratio(3, 7), ratio(6, 7)], [ratio(4, 9), ratio(-4, 9), ratio(7, 9)]];
     for nq in &units {
-        let n = nq.clone().map(|x| Poly::from_q(&x));
+        let mo = Motion59 {
+            n: nq.clone().map(|x| Poly::from_q(&x)),
+            th: var("θ"),
+            ch: var("ch"),
+            sh: var("sh"),
+            u: var("u"),
+            c: [var("c1"), var("c2"), var("c3")],
+            m: [var("m1"), var("m2"), var("m3")],
+        };
+        let (th, ch, sh, u) = (&mo.th, &mo.ch, &mo.sh, &mo.u);
         let label = format!("n = ({}, {}, {})", nq[0], nq[1], nq[2]);
-        let y = pose_59(&n, &ch, &sh, &u, &cc, &m, &p);
-        let w = ch.mul_ref(&ch).add_ref(&sh.mul_ref(&sh));
-        c.equal(format!("{label}: the weight of (59)'s image is w = ch² + sh²"), &y[3], &w);
-        let truth: V3<Poly> = std::array::from_fn(|i| y[i].mul_ref(&u).mul_ref(&u).mul_ref(&th).mul_ref(&th));
-        let uu = u.mul_ref(&u);
-        let corrected = eq_60_cleared(&n, &th, &ch, &sh, &u, &cc, &m, &p, (&uu, &u));
+        let y = mo.image(&p);
+        c.equal(format!("{label}: the weight of (59)'s image is w = ch² + sh²"), &y[3], &mo.w());
+        let truth: V3<Poly> = std::array::from_fn(|i| y[i].mul_ref(u).mul_ref(u).mul_ref(th).mul_ref(th));
+        let uu = u.mul_ref(u);
         c.equal(
             format!("{label}: (59) moves p along (60) with the factors u² on ω × ξ and u on ξ, for all u"),
             &truth,
-            &corrected,
+            &mo.eq_60_cleared(&p, &uu, u),
         );
         let one = Poly::one();
-        let printed = eq_60_cleared(&n, &th, &ch, &sh, &u, &cc, &m, &p, (&one, &one));
+        let printed = mo.eq_60_cleared(&p, &one, &one);
         let at1 = |v: &V3<Poly>| v.clone().map(|x| x.substitute("u", &one));
         c.equal(format!("{label}: the printed (60) holds at u = 1, the end pose (58)"), &at1(&printed), &at1(&truth));
         let diff = vsub(&printed, &truth);
         // the difference: (1 - u²) (1 - cos|uω|)/|uω|² ω × ξ + (1 - u) sin|uω|/|uω| ξ, cleared
-        let omega = vscale(&th, &n);
-        let xi = cross(&omega, &vsub(&p, &cc));
+        let omega = vscale(th, &mo.n);
+        let xi = cross(&omega, &vsub(&p, &mo.c));
         let two = Poly::from_i64(2);
-        let ka = two.mul_ref(&sh).mul_ref(&sh).mul_ref(&one.sub_ref(&uu));
-        let kb = two.mul_ref(&ch).mul_ref(&sh).mul_ref(&u).mul_ref(&th).mul_ref(&one.sub_ref(&u));
+        let ka = two.mul_ref(sh).mul_ref(sh).mul_ref(&one.sub_ref(&uu));
+        let kb = two.mul_ref(ch).mul_ref(sh).mul_ref(u).mul_ref(th).mul_ref(&one.sub_ref(u));
         let expect: V3<Poly> = std::array::from_fn(|i| ka.mul_ref(&cross(&omega, &xi)[i]) + kb.mul_ref(&xi[i]));
         c.equal(
             format!("{label}: printed - trajectory = (1 - u²)(1 - cos|uω|)/|uω|² ω × ξ + (1 - u) sin|uω|/|uω| ξ"),
@@ -109,8 +123,8 @@ fn symbolic(c: &mut Checker) {
             "the printed form lacks the factors u² on ω × ξ and u on ξ (they are right only at u = 1)",
         );
         // the centre moves straight: from c to c + m
-        let yc = pose_59(&n, &ch, &sh, &u, &cc, &m, &cc);
-        let straight: V3<Poly> = std::array::from_fn(|i| w.mul_ref(&cc[i].add_ref(&u.mul_ref(&m[i]))));
+        let yc = mo.image(&mo.c);
+        let straight: V3<Poly> = std::array::from_fn(|i| mo.w().mul_ref(&mo.c[i].add_ref(&u.mul_ref(&mo.m[i]))));
         c.equal(
             format!("{label}: the centre c moves straight to c + m: C(c, u) = c + u m"),
             &[yc[0].clone(), yc[1].clone(), yc[2].clone()],
@@ -119,9 +133,19 @@ fn symbolic(c: &mut Checker) {
     }
 }
 
+/// A rational instance and its trajectory point, true and as printed.
+struct Instance {
+    n: V3<Q>,
+    p: V3<Q>,
+    c: V3<Q>,
+    m: V3<Q>,
+    truth: V3<Q>,
+    printed: V3<Q>,
+}
+
 /// The rational instance `u = 1/2`, `ω = θ n`, `n = (2, 3, 6)/7`, `θ = 4 atan(1/2)` (so
 /// `cos|uω| = 3/5`, `sin|uω| = 4/5`): the trajectory and the printed form, exactly.
-fn instance() -> (V3<Q>, V3<Q>, V3<Q>, V3<Q>, V3<Q>, V3<Q>) {
+fn instance() -> Instance {
     let n = [ratio(2, 7), ratio(3, 7), ratio(6, 7)];
     let (p, cc, m) = ([q(1), q(-2), ratio(1, 2)], [ratio(1, 3), q(1), q(-1)], [q(2), ratio(-1, 2), q(3)]);
     let u = ratio(1, 2);
@@ -134,7 +158,7 @@ fn instance() -> (V3<Q>, V3<Q>, V3<Q>, V3<Q>, V3<Q>, V3<Q>) {
     let b_printed = &sin / &u;
     let printed = vadd(&start, &vadd(&vscale(&a_printed, &nnr), &vscale(&b_printed, &nr)));
     let truth = vadd(&start, &vadd(&vscale(&(q(1) - &cos), &nnr), &vscale(&sin, &nr)));
-    (n, p, cc, m, truth, printed)
+    Instance { n, p, c: cc, m, truth, printed }
 }
 
 /// A small rational as an MPFR float (numerator and denominator fit in `i64` here).
@@ -151,7 +175,7 @@ fn tenth_pow(k: u32) -> MpFloat {
 
 fn numeric(c: &mut Checker) {
     let _g = PrecisionGuard::new(256);
-    let (n, p, cc, m, truth, printed) = instance();
+    let Instance { n, p, c: cc, m, truth, printed } = instance();
     c.check("u = 1/2, cos|uω| = 3/5: the printed (60) differs from the trajectory (exact rationals)", printed != truth);
     let theta = MpFloat::from_i64(4).mul_ref(&Real::atan2(&MpFloat::one(), &MpFloat::from_i64(2)));
     let u = MpFloat::from_ratio(1, 2);
