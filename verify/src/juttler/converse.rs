@@ -1,7 +1,7 @@
 //! The second part of Jüttler's Theorem 6 (Sec. 5): "Conversely, let a rational motion of order
 //! n by its matrix representation R = R(t) be given. Then a number k satisfying 0 ≤ k ≤ n/2 and
 //! 8 polynomials w0*(t), w_i(t) and d_j(t) of the above maximal degrees exist, such that
-//! R(t) = ξ(t) M(t)" with `M` of (35). The paper omits the proof (it cites its ref. [9]); the
+//! R(t) = ξ(t) M(t)" with `M` of (35). The paper omits the proof (it cites its ref. \[9\]); the
 //! first part is `juttler/theorem-6` in [`super::interpolation`].
 //!
 //! `juttler/theorem-6-converse` checks it by constructing the data from `R` alone, exactly, on
