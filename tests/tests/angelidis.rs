@@ -18,6 +18,7 @@ const IDS: &[&str] = &[
     "angelidis/eq-39",
     "angelidis/eq-41",
     "angelidis/sec-6",
+    "angelidis/eq-60",
     // symbolic-under-hypotheses (tests in tests/tests/under_hypotheses.rs)
     "angelidis/eq-14-symbolic",
 ];
@@ -92,4 +93,13 @@ fn eq_41() {
 #[test]
 fn sec_6() {
     assert_holds("angelidis/sec-6");
+}
+
+#[test]
+fn eq_60() {
+    let out = assert_holds("angelidis/eq-60");
+    // 6 symbolic checks for each of three axes, then 7 at 256 bits: nothing skipped
+    assert_eq!(out.checks, 3 * 6 + 7);
+    has_counterexample(&out, "printed (60) for every u");
+    has_counterexample(&out, "starts at p");
 }

@@ -37,6 +37,7 @@ const IDS: &[&str] = &[
     "cross2022/theorem-4.5-multiplicative",
     "cross2022/corollary-4.6-additive",
     "cross2022/corollary-4.6-multiplicative",
+    "cross2022/sec-5.2-darboux",
     // symbolic-under-hypotheses (tests in tests/tests/under_hypotheses.rs)
     "cross2022/lemma-2.2-null",
     "cross2022/lemma-2.2-inner-product",
@@ -196,4 +197,16 @@ fn corollary_4_6_additive() {
 #[test]
 fn corollary_4_6_multiplicative() {
     assert_holds("cross2022/corollary-4.6-multiplicative");
+}
+
+#[test]
+fn sec_5_2_darboux() {
+    let out = assert_holds("cross2022/sec-5.2-darboux");
+    // normal form 10, three general instances of 6, the example 14: nothing skipped
+    assert_eq!(out.checks, 10 + 3 * 6 + 14);
+    assert!(
+        out.notes.iter().any(|n| n.starts_with("counterexample") && n.contains("circular arcs")),
+        "{:?}",
+        out.notes
+    );
 }

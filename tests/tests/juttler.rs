@@ -16,6 +16,7 @@ const IDS: &[&str] = &[
     "juttler/proposition-4",
     "juttler/result-5",
     "juttler/theorem-6",
+    "juttler/theorem-6-converse",
     // symbolic-under-hypotheses (tests in tests/tests/under_hypotheses.rs)
     "juttler/eq-9-symbolic",
 ];
@@ -89,4 +90,14 @@ fn result_5() {
 fn theorem_6() {
     // every comparison ran (no early return on a failed construction)
     assert_eq!(assert_holds("juttler/theorem-6").checks, 10);
+}
+
+#[test]
+fn theorem_6_converse() {
+    // 3 construction-independent checks, then 12 per rational motion for all seven (no early
+    // return: every motion reached R = ξ M)
+    let out = assert_holds("juttler/theorem-6-converse");
+    assert_eq!(out.checks, 3 + 7 * 12 + 1);
+    assert!(out.notes.iter().any(|n| n.starts_with("counterexample") && n.contains("mirrored")), "{:?}", out.notes);
+    assert!(out.notes.iter().any(|n| n.contains("(36)") && n.contains("n = 3, k = 1")), "{:?}", out.notes);
 }

@@ -25,7 +25,11 @@
 //! * `angelidis/eq-35`: the twist point transform, on twists and rotations; needs ω != 0.
 //! * `angelidis/eq-37`, `-38`, `-39`: the cube, Rot via the cube, Rot² = M²: symbolic
 //!   polynomial identities (denominators |ω|² cleared), including Rot + Trs = <ω, m> of (32)-(33).
+//! * `angelidis/eq-60`: the trajectory (60) of the decoupled motion (58)-(59), symbolically
+//!   against the poses of the main paper and at 256 bits against the series and the library;
+//!   the printed form holds only at u = 1 (details in `decoupled.rs`).
 
+mod decoupled;
 mod library;
 
 use crate::{Checker, Method, Paper, Statement};
@@ -148,6 +152,19 @@ pub const STATEMENTS: &[Statement] = &[
         method: Method::MpFloat,
         hypotheses: "θ is only defined mod 2π: the principal branch θ ∈ [0, π] recovers <ω, m> when |ω| < π",
         check: library::sec_6,
+    },
+    Statement {
+        id: "angelidis/eq-60",
+        paper: Paper::Angelidis,
+        label: "Eqs. (58)-(60)",
+        statement: "the decoupled motion (59) <uω, (<0, um> * c) × (uω)> * <0, um>, u ∈ [0, 1], moves a point p along \
+                    C(p, u) = p + um + (1 - cos|uω|)/|uω|² ω × ξ + sin|uω|/|uω| ξ, ξ = ω × (p - c) (60)",
+        method: Method::Symbolic,
+        hypotheses: "(60) as printed holds only at u = 1 (the end pose (58)): the rotation by uω about c + um gives \
+                     C(p, u) = p + um + (1 - cos|uω|)/|uω|² u² ω × ξ + sin|uω|/|uω| u ξ; the printed form does not start \
+                     at p (it tends to p + ξ + ω × ξ/2 as u -> 0). ω != 0. The text's 'from a point c to another point \
+                     p + m' is the centre's path from c to c + m",
+        check: decoupled::eq_60,
     },
 ];
 

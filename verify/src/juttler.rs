@@ -24,8 +24,10 @@
 //!   (29), and satisfies (8) identically in `t`.
 //!
 //! Propositions 1-4, Result 5 and Theorem 6 (the interpolation methods of Secs. 3-5) are in
-//! [`interpolation`].
+//! [`interpolation`]; the converse part of Theorem 6 (every rational motion of order n has the
+//! form (35)) in [`converse`].
 
+pub mod converse;
 pub mod interpolation;
 
 use crate::{Checker, Method, Paper, Statement};
@@ -110,7 +112,7 @@ fn re<T: Ring>(x: &Dq<T>) -> Dq<T> {
 }
 
 /// The translation `2v0 + εv` of eq. (5).
-fn translation5<T: Ring>(v0: &T, v: &[T; 3]) -> Dq<T> {
+pub(crate) fn translation5<T: Ring>(v0: &T, v: &[T; 3]) -> Dq<T> {
     Dq::new(Quaternion::new(v0.add_ref(v0), T::zero(), T::zero(), T::zero()), Quaternion::pure(v))
 }
 
@@ -269,7 +271,7 @@ fn eq_9(c: &mut Checker) {
 }
 
 /// The image of (12): `(y0, y)` for the homogeneous point `(x0, x)`.
-fn image12<T: Ring>(qq: &Dq<T>, x0: &T, x: &[T; 3]) -> (T, [T; 3]) {
+pub(crate) fn image12<T: Ring>(qq: &Dq<T>, x0: &T, x: &[T; 3]) -> (T, [T; 3]) {
     let y0 = qq.real.norm_squared().mul_ref(x0);
     let pt = translation5(x0, x);
     let w = &(qq * &pt) * &tilde(&re(qq));

@@ -58,6 +58,7 @@ pub fn statements() -> impl Iterator<Item = &'static Statement> {
         .chain(under_hypotheses::wareham_lasenby::STATEMENTS)
         .chain(juttler::STATEMENTS)
         .chain(juttler::interpolation::STATEMENTS)
+        .chain(juttler::converse::STATEMENTS)
         .chain(under_hypotheses::juttler::STATEMENTS)
         .chain(angelidis::STATEMENTS)
         .chain(under_hypotheses::angelidis::STATEMENTS)

@@ -24,6 +24,8 @@
 //! * `juttler/theorem-6` (minimal order): `M(t)` of (35) typed in equals the library's matrix
 //!   as polynomials in `t`; the trajectory is `M(t)(1, x)` of exact degree `n`; the trajectory of
 //!   the Q-motion (36) is the same times `4 w0* |D|⁴`; interpolation (37)-(39) has order `2m`.
+//!   The converse ("every rational motion of order n is ξ M") is `juttler/theorem-6-converse` in
+//!   [`super::converse`].
 
 use super::{Lcg, bernstein, binom, u11};
 use crate::{Checker, Method, Paper, Statement};
