@@ -47,6 +47,8 @@ pub mod sample;
 #[doc(hidden)]
 pub mod scalar;
 #[doc(hidden)]
+pub mod surface;
+#[doc(hidden)]
 pub mod trajectory;
 #[doc(hidden)]
 pub mod verify;

@@ -7,7 +7,7 @@
 
 use gam::{
     algebra_help, codegen, commands, error, figures, finite_guard, hermite, interpolate, plot, pose, precision, prove,
-    sample, scalar, trajectory, verify,
+    sample, scalar, surface, trajectory, verify,
 };
 
 use algebra_core::{Basis, Product};
@@ -116,6 +116,23 @@ enum Command {
         /// The body point, in body coordinates.
         #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true)]
         point: String,
+    },
+    /// The kinematic (sweep) surface of a rational curve of the body under a `gam interpolate`
+    /// spec's motion, as rational tensor-product Bézier patches, one per segment (rational
+    /// methods only: ccm-additive, juttler-*).
+    Surface {
+        /// Print one JSON object: {"segments": [{"t0", "t1", "degrees", "weights", "points"}]}.
+        #[arg(long)]
+        json: bool,
+        /// The JSON spec of `gam interpolate`.
+        #[arg(value_name = "SPEC.json")]
+        spec: String,
+        /// The curve: a JSON file {"points": [[x, y, z], ...], "weights": [w, ...]} (body coordinates).
+        #[arg(long, value_name = "CURVE.json")]
+        curve: String,
+        /// f64, rational (exact: juttler-* methods with rational key poses) or mpfr:BITS.
+        #[arg(long, value_name = "S", default_value = "f64")]
+        scalar: MotionScalar,
     },
     /// One pose in every representation: matrix, quaternion, axis-angle, motor, dual quaternion,
     /// hexanion, screw.
@@ -246,6 +263,7 @@ fn run(command: Command) -> Result<(String, Option<CliError>), CliError> {
         Command::Hermite { .. } => Some("hermite"),
         Command::Interpolate { .. } => Some("interpolate"),
         Command::Trajectory { .. } => Some("trajectory"),
+        Command::Surface { .. } => Some("surface"),
         Command::Pose { .. } => Some("pose"),
         Command::Sample { .. } => Some("sample"),
         _ => None,
@@ -263,6 +281,7 @@ fn run(command: Command) -> Result<(String, Option<CliError>), CliError> {
         Command::Hermite { json, spec, scalar } => hermite::hermite(&spec, json, scalar),
         Command::Interpolate { json, spec, scalar } => interpolate::interpolate(&spec, json, scalar),
         Command::Trajectory { json, spec, point, scalar } => trajectory::trajectory(&spec, &point, json, scalar),
+        Command::Surface { json, spec, curve, scalar } => surface::surface(&spec, &curve, json, scalar),
         Command::Pose { json, pose, scalar } => pose::pose(&pose, json, scalar),
         Command::Sample { samples, json, spec, scalar } => sample::sample(&spec, samples, json, scalar),
         Command::Plot { out, format, samples, view, frames, body, json, animate, acceleration, specs } => {
@@ -293,7 +312,7 @@ fn clap_failure(e: clap::Error) -> ExitCode {
     let text = e.render().to_string();
     let line = match e.kind() {
         ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand | ErrorKind::MissingSubcommand => {
-            "error: a subcommand is required: algebras, eval, table, codegen, hermite, interpolate, trajectory, pose, sample, plot, figures, prove or verify (see gam --help)"
+            "error: a subcommand is required: algebras, eval, table, codegen, hermite, interpolate, trajectory, surface, pose, sample, plot, figures, prove or verify (see gam --help)"
                 .to_string()
         }
         _ => first_error_line(&text),

@@ -351,3 +351,85 @@ fn sample_and_hermite_in_every_precision() {
     }
     ok(&["sample", "--samples", "3", "--scalar", "mpfr:100", hermite.path()]);
 }
+
+/// A surface patch of `gam surface --json` at `(u, v)`, exactly.
+fn surface_at(seg: &Value, u: &Q, v: &Q) -> [Q; 3] {
+    let w: Vec<Vec<Q>> =
+        seg["weights"].as_array().unwrap().iter().map(|r| r.as_array().unwrap().iter().map(exact).collect()).collect();
+    let p: Vec<Vec<Vec<Q>>> = seg["points"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|r| r.as_array().unwrap().iter().map(|q| q.as_array().unwrap().iter().map(exact).collect()).collect())
+        .collect();
+    let (du, dv) = (w.len() - 1, w[0].len() - 1);
+    let mut den = Q::from_integer(0.into());
+    let mut num = [den.clone(), den.clone(), den.clone()];
+    for i in 0..=du {
+        for j in 0..=dv {
+            let b = bernstein(du, i, u) * bernstein(dv, j, v) * &w[i][j];
+            for k in 0..3 {
+                num[k] += &b * &p[i][j][k];
+            }
+            den += b;
+        }
+    }
+    num.map(|x| x / &den)
+}
+
+#[test]
+fn kinematic_surfaces_sweep_the_curve_through_the_key_poses() {
+    // the rational segment from (1/2, -1, 2) (weight 1) to (0, 1, 1) (weight 2)
+    let curve = TempFile::new("precision-curve.json", r#"{"points": [[0.5, -1, 2], [0, 1, 1]], "weights": [1, 2]}"#);
+    let v = Q::new(1.into(), 3.into());
+    // the curve point at v = 1/3: (w0 (1-v) p0 + w1 v p1) / (w0 (1-v) + w1 v)
+    let x: [Q; 3] = {
+        let (a, b) = (Q::new(2.into(), 3.into()), Q::new(2.into(), 3.into()));
+        let p0 = [Q::new(1.into(), 2.into()), Q::from_integer((-1).into()), Q::from_integer(2.into())];
+        let p1 = [Q::from_integer(0.into()), Q::from_integer(1.into()), Q::from_integer(1.into())];
+        std::array::from_fn(|k| (&a * &p0[k] + &b * &p1[k]) / (&a + &b))
+    };
+    for case in cases() {
+        let spec = TempFile::new("precision-surface.json", &case["spec"].to_string());
+        let exact_out: Value = serde_json::from_str(&ok(&[
+            "surface",
+            "--json",
+            "--scalar",
+            "rational",
+            spec.path(),
+            "--curve",
+            curve.path(),
+        ]))
+        .unwrap();
+        let seg = &exact_out["segments"][0];
+        assert_eq!(seg["degrees"], serde_json::json!([case["segments"][0]["degree"], 1]));
+        // at each key parameter the surface is the key pose applied to the curve
+        for (u, want) in key_parameters(&case).iter().zip(key_images(&case, &x)) {
+            assert_eq!(surface_at(seg, u, &v), want, "{}", case["name"]);
+        }
+        // column 0 is the trajectory of the curve's first point (weight 1)
+        let first = &case["segments"][0];
+        let col0: Vec<Value> = seg["points"].as_array().unwrap().iter().map(|r| r[0].clone()).collect();
+        let w0: Vec<Value> = seg["weights"].as_array().unwrap().iter().map(|r| r[0].clone()).collect();
+        if case["point"] == "1/2,-1,2" {
+            assert_eq!((Value::from(col0), Value::from(w0)), (first["points"].clone(), first["weights"].clone()));
+        }
+        // f64 agrees to 1e-12
+        let f64_out: Value =
+            serde_json::from_str(&ok(&["surface", "--json", spec.path(), "--curve", curve.path()])).unwrap();
+        let (a, b) = (numbers(&f64_out["segments"][0]["points"]), numbers(&seg["points"]));
+        let scale = b.iter().fold(1.0f64, |m, x| m.max(x.abs()));
+        assert!(a.iter().zip(&b).all(|(x, y)| (x - y).abs() <= 1e-12 * scale), "{}", case["name"]);
+    }
+    // refusals
+    let wl = TempFile::new(
+        "precision-surface-wl.json",
+        r#"{"method": "wl-linear", "poses": [{}, {"position": [1, 0, 0]}]}"#,
+    );
+    let e = fails(&["surface", wl.path(), "--curve", curve.path()], 2);
+    assert!(e.contains("not rational"), "{e}");
+    let bad = TempFile::new("precision-curve-bad.json", r#"{"points": [[0, 0, 0]], "weights": [1, 2]}"#);
+    let spec = TempFile::new("precision-surface-ok.json", &cases()[0]["spec"].to_string());
+    let e = fails(&["surface", spec.path(), "--curve", bad.path()], 2);
+    assert!(e.contains("`weights` has 2 values for 1 points"), "{e}");
+}

@@ -23,7 +23,7 @@ mod built;
 pub mod exact;
 
 pub use build::{BuildError, MethodInput, Parameters};
-pub use built::{BuiltMotion, MethodMotion, MethodSegment, RationalSegment};
+pub use built::{BuiltMotion, MethodMotion, MethodSegment, RationalSegment, SurfaceSegment};
 pub use exact::{ExactMotion, ExactSample};
 
 use crate::joins::SegmentKind;

@@ -139,17 +139,17 @@ pub(crate) fn point_text(obj: &Bound<'_, PyAny>) -> PyResult<String> {
     let bad = || gam_error("`point` must be [x, y, z] (three numbers) or the text \"x,y,z\"");
     let obj = if obj.hasattr("tolist")? { obj.call_method0("tolist")? } else { obj.clone() };
     let items = obj.try_iter().map_err(|_| bad())?;
-    // each coordinate as the CLI's text: a Fraction as p/q and an int as written (exact under
-    // scalar="rational"), a float as its shortest round-trip decimal
+    // each coordinate as the CLI's text: a Fraction as p/q, a string and an int as written
+    // (exact under scalar="rational"), a float as its shortest round-trip decimal
     let coordinate = |i: Bound<'_, PyAny>| -> PyResult<String> {
         match to_json(&i, "point")? {
-            Value::String(s) if type_name(&i) == "Fraction" => Ok(s),
+            Value::String(s) => Ok(s),
             Value::Number(n) => {
                 Ok(n.as_f64().filter(|_| n.is_f64()).map_or_else(|| n.to_string(), |x| format!("{x:?}")))
             }
             _ => Err(bad()),
         }
     };
-    let coords: Vec<String> = items.map(|i| i.and_then(coordinate).map_err(|_| bad())).collect::<Result<_, _>>()?;
+    let coords: Vec<String> = items.map(|i| i.map_err(|_| bad()).and_then(coordinate)).collect::<Result<_, _>>()?;
     Ok(coords.join(","))
 }

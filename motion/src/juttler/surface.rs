@@ -85,7 +85,7 @@ impl<T: Ring> RationalBezierSurface<T> {
     /// let s = RationalBezierSurface::kinematic(&m, &x).unwrap();
     /// assert_eq!(s.point(&ratio(1, 2), &ratio(1, 4)).unwrap(), [ratio(1, 4), q(0), q(1)]);
     /// ```
-    pub fn kinematic<M: RationalMotion<T>>(m: &M, x: &RationalBezier<T>) -> Result<Self, JuttlerError> {
+    pub fn kinematic<M: RationalMotion<T> + ?Sized>(m: &M, x: &RationalBezier<T>) -> Result<Self, JuttlerError> {
         let origin = m.rational_trajectory(&[T::zero(), T::zero(), T::zero()])?;
         let columns = x
             .control()

@@ -7,7 +7,8 @@
 
 use super::{BuildError, Method};
 use crate::juttler::minimal::MinimalMotion;
-use crate::juttler::{QMotion, RationalBezier, RationalMotion};
+use crate::juttler::surface::RationalBezierSurface;
+use crate::juttler::{JuttlerError, QMotion, RationalBezier, RationalMotion};
 use crate::repr::dual_quaternion::DualQuaternion;
 use crate::repr::hexanion::Hexanion;
 use crate::repr::hexanion::blend::{HexanionDecoupled, HexanionLinear};
@@ -206,36 +207,81 @@ impl<T: Real> BuiltMotion<T> {
     /// # Ok::<(), BuildError>(())
     /// ```
     pub fn rational_trajectories(&self, x: &[T; 3]) -> Result<Vec<RationalSegment<T>>, BuildError> {
+        self.rational_pieces(&|m| m.rational_trajectory(x))
+            .map(|v| v.into_iter().map(|(t0, t1, curve)| RationalSegment { t0, t1, curve }).collect())
+    }
+
+    /// The kinematic (sweep) surface of the rational curve `curve` (body coordinates) under
+    /// each segment, as a rational tensor-product Bézier surface in (`u`, `v`), `u` the
+    /// segment's local parameter (Jüttler Sec. 5, Fig. 5b:
+    /// [`RationalBezierSurface::kinematic`]); [`BuildError::NotRational`] as for
+    /// [`BuiltMotion::rational_trajectories`].
+    ///
+    /// ```
+    /// use motion::{Pose, juttler::RationalBezier, method::{Method, MethodInput}};
+    /// let poses = vec![Pose::<f64>::identity(), Pose::translation(&[0.0, 0.0, 2.0])];
+    /// let m = Method::JuttlerQMotion.build(&MethodInput::new(poses))?;
+    /// let segment = RationalBezier::new(vec![[1.0, 0.0, 0.0, 0.0], [1.0, 1.0, 0.0, 0.0]]).unwrap();
+    /// let s = &m.kinematic_surfaces(&segment)?[0].surface;
+    /// let p = s.point(&0.5, &0.5).unwrap();
+    /// assert!((p[0] - 0.5).abs() < 1e-15 && p[1].abs() < 1e-15 && (p[2] - 1.0).abs() < 1e-15);
+    /// # Ok::<(), motion::method::BuildError>(())
+    /// ```
+    pub fn kinematic_surfaces(&self, curve: &RationalBezier<T>) -> Result<Vec<SurfaceSegment<T>>, BuildError> {
+        self.rational_pieces(&|m| RationalBezierSurface::kinematic(m, curve))
+            .map(|v| v.into_iter().map(|(t0, t1, surface)| SurfaceSegment { t0, t1, surface }).collect())
+    }
+
+    /// `f` of each segment's rational motion, with the segment's interval.
+    fn rational_pieces<R>(
+        &self,
+        f: &dyn Fn(&dyn RationalMotion<T>) -> Result<R, JuttlerError>,
+    ) -> Result<Vec<(T, T, R)>, BuildError> {
         let not_rational = || BuildError::NotRational { method: self.method.name() };
-        match &self.motion {
-            MethodMotion::QMotions(p) => rational_segments(p, x),
-            MethodMotion::Minimal(p) => rational_segments(p, x),
+        let pieces: Vec<(&dyn RationalMotion<T>, &[T])> = match &self.motion {
+            MethodMotion::QMotions(p) => pieces_of(p),
+            MethodMotion::Minimal(p) => pieces_of(p),
             MethodMotion::Bezier(p) if self.method.is_rational() => p
                 .segments()
                 .iter()
                 .zip(p.breaks().windows(2))
                 .map(|(m, w)| match m {
-                    AnyMotion::AdditiveBezier(b) => {
-                        Ok(RationalSegment { t0: w[0].clone(), t1: w[1].clone(), curve: b.rational_trajectory(x)? })
-                    }
+                    AnyMotion::AdditiveBezier(b) => Ok((b as &dyn RationalMotion<T>, w)),
                     _ => Err(not_rational()),
                 })
-                .collect(),
-            _ => Err(not_rational()),
-        }
+                .collect::<Result<_, _>>()?,
+            _ => return Err(not_rational()),
+        };
+        pieces.into_iter().map(|(m, w)| Ok((w[0].clone(), w[1].clone(), f(m)?))).collect()
     }
 }
 
-/// The rational trajectories of `x` under the segments of a piecewise rational motion.
-fn rational_segments<T: Real, M: RationalMotion<T> + Motion<T>>(
-    p: &Piecewise<T, M>,
-    x: &[T; 3],
-) -> Result<Vec<RationalSegment<T>>, BuildError> {
-    p.segments()
-        .iter()
-        .zip(p.breaks().windows(2))
-        .map(|(m, w)| Ok(RationalSegment { t0: w[0].clone(), t1: w[1].clone(), curve: m.rational_trajectory(x)? }))
-        .collect()
+/// The segments of a piecewise rational motion with their intervals.
+fn pieces_of<T: Real, M: RationalMotion<T> + Motion<T>>(p: &Piecewise<T, M>) -> Vec<(&dyn RationalMotion<T>, &[T])> {
+    p.segments().iter().map(|m| m as &dyn RationalMotion<T>).zip(p.breaks().windows(2)).collect()
+}
+
+/// The kinematic surface of a rational curve under one segment `[t0, t1]` of a rational
+/// method ([`BuiltMotion::kinematic_surfaces`], [`super::ExactMotion::kinematic_surfaces`]).
+///
+/// ```
+/// use algebra_core::rational::q;
+/// use motion::{Pose, juttler::RationalBezier, method::{Method, MethodInput}};
+/// let poses = vec![Pose::translation(&[q(0), q(0), q(0)]), Pose::translation(&[q(0), q(0), q(2)])];
+/// let m = Method::JuttlerAffine.build_exact(&MethodInput::new(poses))?;
+/// let point = RationalBezier::new(vec![[q(1), q(1), q(0), q(0)]]).unwrap();
+/// let s = &m.kinematic_surfaces(&point)?[0];
+/// assert_eq!((s.t0.clone(), s.t1.clone(), s.surface.degrees()), (q(0), q(1), (4, 0)));
+/// # Ok::<(), motion::method::BuildError>(())
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct SurfaceSegment<T> {
+    /// The segment's first parameter.
+    pub t0: T,
+    /// Its last parameter.
+    pub t1: T,
+    /// The surface, `u` along the segment's local parameter, `v` the curve's.
+    pub surface: RationalBezierSurface<T>,
 }
 
 impl<T: Real> Motion<T> for BuiltMotion<T> {

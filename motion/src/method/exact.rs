@@ -25,14 +25,15 @@
 //! ```
 
 use super::build::key_velocities;
-use super::{BuildError, Method, MethodInput, MethodSegment, Parameters, RationalSegment};
+use super::{BuildError, Method, MethodInput, MethodSegment, Parameters, RationalSegment, SurfaceSegment};
 use crate::juttler::minimal::{MinimalMotion, minimal_method};
 use crate::juttler::parametrisation::normalise;
 use crate::juttler::projective::projective;
 use crate::juttler::rotational::{affine, elliptic_normalised};
+use crate::juttler::surface::RationalBezierSurface;
 use crate::juttler::tr::{rotations, tr_method};
 use crate::juttler::trt::trt_method;
-use crate::juttler::{JuttlerError, QMotion, SplineQMotion};
+use crate::juttler::{JuttlerError, QMotion, RationalBezier, RationalMotion, SplineQMotion};
 use crate::repr::dual_quaternion::{Quaternion, from_dual_quaternion_exact};
 use crate::{MotionError, Pose, Pseudoscalar};
 use algebra_core::rational::{Q, format_rational, sqrt_rational};
@@ -234,16 +235,43 @@ impl ExactMotion {
     /// # Ok::<(), motion::method::BuildError>(())
     /// ```
     pub fn rational_trajectories(&self, x: &[Q; 3]) -> Result<Vec<RationalSegment<Q>>, BuildError> {
-        use crate::juttler::RationalMotion;
+        self.rational_pieces(&|m| m.rational_trajectory(x))
+            .map(|v| v.into_iter().map(|(t0, t1, curve)| RationalSegment { t0, t1, curve }).collect())
+    }
+
+    /// The kinematic (sweep) surface of the rational curve `curve` under each segment, exactly
+    /// (as [`super::BuiltMotion::kinematic_surfaces`]).
+    ///
+    /// ```
+    /// # use algebra_core::rational::{q, ratio};
+    /// # use motion::{Pose, juttler::RationalBezier, method::{Method, MethodInput}};
+    /// let poses = vec![Pose::translation(&[q(0), q(0), q(0)]), Pose::translation(&[q(0), q(0), q(2)])];
+    /// let m = Method::JuttlerAffine.build_exact(&MethodInput::new(poses))?;
+    /// let segment = RationalBezier::new(vec![[q(1), q(0), q(0), q(0)], [q(1), q(1), q(0), q(0)]]).unwrap();
+    /// let s = &m.kinematic_surfaces(&segment)?[0].surface;
+    /// assert_eq!(s.point(&ratio(1, 2), &ratio(1, 2))?, [ratio(1, 2), q(0), q(1)]);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn kinematic_surfaces(&self, curve: &RationalBezier<Q>) -> Result<Vec<SurfaceSegment<Q>>, BuildError> {
+        self.rational_pieces(&|m| RationalBezierSurface::kinematic(m, curve))
+            .map(|v| v.into_iter().map(|(t0, t1, surface)| SurfaceSegment { t0, t1, surface }).collect())
+    }
+
+    /// `f` of each segment's rational motion (for `juttler-minimal` the motion of minimal
+    /// order), with the segment's interval.
+    fn rational_pieces<R>(
+        &self,
+        f: &dyn Fn(&dyn RationalMotion<Q>) -> Result<R, JuttlerError>,
+    ) -> Result<Vec<(Q, Q, R)>, BuildError> {
         self.pieces
             .iter()
             .zip(self.breaks.windows(2))
             .map(|(p, w)| {
-                let curve = match &p.minimal {
-                    Some(m) => m.rational_trajectory(x)?,
-                    None => p.q.rational_trajectory(x)?,
+                let m: &dyn RationalMotion<Q> = match &p.minimal {
+                    Some(m) => m,
+                    None => &p.q,
                 };
-                Ok(RationalSegment { t0: w[0].clone(), t1: w[1].clone(), curve })
+                Ok((w[0].clone(), w[1].clone(), f(m)?))
             })
             .collect()
     }
