@@ -159,7 +159,8 @@ impl Tableau {
             | Method::WlQuadratic
             | Method::WlDirect
             | Method::HexanionLinear
-            | Method::HexanionDecoupled => Tableau::Linear,
+            | Method::HexanionDecoupled
+            | Method::HexanionBlend => Tableau::Linear,
         }
     }
 

@@ -85,10 +85,9 @@ enum Command {
         scalar: MotionScalar,
     },
     /// A motion through key poses by a named method: ccm-additive, ccm-multiplicative,
-    /// wl-linear, wl-quadratic, wl-direct, hexanion-linear, hexanion-decoupled, juttler-q-motion,
-    /// juttler-affine,
-    /// juttler-projective, juttler-trt, juttler-minimal, juttler-spline (docs/cli.md, "gam
-    /// interpolate").
+    /// wl-linear, wl-quadratic, wl-direct, hexanion-linear, hexanion-decoupled, hexanion-blend,
+    /// juttler-q-motion, juttler-affine, juttler-projective, juttler-trt, juttler-minimal,
+    /// juttler-spline (docs/cli.md, "gam interpolate").
     Interpolate {
         /// Print one JSON object: {"method", "parameters", "segments", "samples"}.
         #[arg(long)]

@@ -193,3 +193,50 @@ fn decoupled_motion_moves_the_origin_straight() {
     let h = fine[1]["t"].as_f64().unwrap() - fine[0]["t"].as_f64().unwrap();
     assert_velocities_match_differences("hexanion-decoupled", fine, h, &[150, 700, 1300, 1900]);
 }
+
+/// Angelidis' blend (57) with named weights (`hexanion-blend`): every sample is the power-series
+/// exponential of `Σ φ_i(t) H_i` with the weights computed here (Lagrange polynomials of the
+/// key parameters; Bernstein polynomials), so `lagrange` passes through every key pose.
+#[test]
+fn blend_is_the_series_exp_of_the_weighted_hexanions() {
+    let poses: Vec<String> =
+        HEX.iter().map(|(w, m)| format!(r#"{{"hexanion": {{"omega": {w:?}, "m": {m:?}}}}}"#)).collect();
+    let times = [0.0, 0.5, 1.0];
+    let lagrange = |t: f64| -> Vec<f64> {
+        (0..3).map(|i| (0..3).filter(|&j| j != i).map(|j| (t - times[j]) / (times[i] - times[j])).product()).collect()
+    };
+    let bernstein = |t: f64| vec![(1.0 - t) * (1.0 - t), 2.0 * t * (1.0 - t), t * t];
+    for (name, phi) in [("lagrange", &lagrange as &dyn Fn(f64) -> Vec<f64>), ("bernstein", &bernstein)] {
+        let text = format!(
+            r#"{{"method": "hexanion-blend", "weights": "{name}", "poses": [{}], "samples": 5}}"#,
+            poses.join(", ")
+        );
+        let out = run_json(name, &text);
+        let seg = &out["segments"][0];
+        assert_eq!((seg["representation"].as_str(), seg["degree"].as_u64()), (Some("hexanion-blend"), Some(2)));
+        assert_eq!(out["segments"].as_array().unwrap().len(), 1);
+        for s in out["samples"].as_array().unwrap() {
+            let t = s["t"].as_f64().unwrap();
+            let f = phi(t);
+            let w: [f64; 3] = std::array::from_fn(|k| (0..3).map(|i| f[i] * HEX[i].0[k]).sum());
+            let m: [f64; 3] = std::array::from_fn(|k| (0..3).map(|i| f[i] * HEX[i].1[k]).sum());
+            let want = series_exp(w, m);
+            let got: M4 = serde_json::from_value(s["matrix"].clone()).unwrap();
+            assert!(max_diff(&got, &want) < 1e-12, "{name} at t = {t}");
+        }
+        if name == "lagrange" {
+            let key: M4 = serde_json::from_value(out["samples"][2]["matrix"].clone()).unwrap();
+            assert!(max_diff(&key, &series_exp(HEX[1].0, HEX[1].1)) < 1e-12);
+        }
+    }
+    // weights belong to hexanion-blend only, and must be named
+    let other = TempFile::new("interp-hex-weights.json", &spec(0, r#", "weights": "lagrange""#));
+    let e = fails(&["interpolate", other.path()], 2);
+    assert!(e.contains("`weights` is not used by `hexanion-linear`"), "{e}");
+    let bad = TempFile::new(
+        "interp-hex-bad-weights.json",
+        &format!(r#"{{"method": "hexanion-blend", "weights": "cubic", "poses": [{}]}}"#, poses.join(", ")),
+    );
+    let e = fails(&["interpolate", bad.path()], 2);
+    assert!(e.contains("unknown weights `cubic` (lagrange or bernstein)"), "{e}");
+}

@@ -58,6 +58,10 @@ pub enum Method {
     /// the body turns at a constant rate about it
     /// ([`crate::repr::hexanion::blend::HexanionDecoupled`]).
     HexanionDecoupled,
+    /// Angelidis (57): the weighted blend of all key poses' principal hexanions with named
+    /// weight functions (`lagrange`: through every key pose; `bernstein`: a Bézier curve of
+    /// hexanions), then exp ([`crate::repr::hexanion::blend::HexanionBlend`]).
+    HexanionBlend,
     /// Jüttler's Algorithm 1: one Q-motion of degree `2m` through the `m + 1` key poses, the
     /// elliptic rotation (23)-(25) composed with the TR translation (30)-(31)
     /// ([`crate::juttler::tr::algorithm1`]).
@@ -85,7 +89,7 @@ pub enum Method {
 pub const LATER: [(&str, u32); 0] = [];
 
 /// The implemented methods, as listed in messages.
-const IMPLEMENTED: &str = "ccm-additive, ccm-multiplicative, wl-linear, wl-quadratic, wl-direct, hexanion-linear, hexanion-decoupled, juttler-q-motion, juttler-affine, juttler-projective, juttler-trt, juttler-minimal, juttler-spline";
+const IMPLEMENTED: &str = "ccm-additive, ccm-multiplicative, wl-linear, wl-quadratic, wl-direct, hexanion-linear, hexanion-decoupled, hexanion-blend, juttler-q-motion, juttler-affine, juttler-projective, juttler-trt, juttler-minimal, juttler-spline";
 
 /// Why a method name was not accepted.
 ///
@@ -129,6 +133,7 @@ crate::names::named!("motion::method::Method", Method {
     WlDirect => "wl-direct",
     HexanionLinear => "hexanion-linear",
     HexanionDecoupled => "hexanion-decoupled",
+    HexanionBlend => "hexanion-blend",
     JuttlerQMotion => "juttler-q-motion",
     JuttlerAffine => "juttler-affine",
     JuttlerProjective => "juttler-projective",
@@ -162,7 +167,8 @@ impl Method {
             | Method::WlQuadratic
             | Method::WlDirect
             | Method::HexanionLinear
-            | Method::HexanionDecoupled => SegmentKind::Multiplicative,
+            | Method::HexanionDecoupled
+            | Method::HexanionBlend => SegmentKind::Multiplicative,
         }
     }
 
@@ -182,6 +188,7 @@ impl Method {
             Method::WlDirect => "wl-bivector-linear",
             Method::HexanionLinear => "hexanion-linear",
             Method::HexanionDecoupled => "hexanion-decoupled",
+            Method::HexanionBlend => "hexanion-blend",
             Method::JuttlerQMotion
             | Method::JuttlerAffine
             | Method::JuttlerProjective
@@ -192,7 +199,7 @@ impl Method {
     }
 
     /// The optional inputs the method reads besides the key poses and their parameters, by
-    /// their `gam interpolate` spec keys (`velocities`, `shape`, `gamma`, `l1`); an input
+    /// their `gam interpolate` spec keys (`velocities`, `shape`, `gamma`, `l1`, `weights`); an input
     /// given to a method that does not read it is refused ([`BuildError::Unused`]).
     ///
     /// ```
@@ -206,6 +213,7 @@ impl Method {
             Method::CcmAdditive | Method::CcmMultiplicative => &["velocities", "shape", "gamma"],
             Method::JuttlerTrt => &["l1"],
             Method::JuttlerSpline => &["velocities"],
+            Method::HexanionBlend => &["weights"],
             Method::WlLinear
             | Method::WlQuadratic
             | Method::WlDirect
@@ -235,6 +243,8 @@ impl Method {
                 | Method::WlQuadratic
                 | Method::WlDirect
                 | Method::HexanionLinear
+                | Method::HexanionDecoupled
+                | Method::HexanionBlend
         )
     }
 }

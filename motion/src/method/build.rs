@@ -26,7 +26,7 @@ use crate::juttler::{JuttlerError, KeyVelocity, Parametrisation, QMotion, parame
 use crate::repr::ReprError;
 use crate::repr::dual_quaternion::to_dual_quaternion_exact;
 use crate::repr::hexanion::Hexanion;
-use crate::repr::hexanion::blend::{HexanionDecoupled, HexanionLinear};
+use crate::repr::hexanion::blend::{BlendWeights, HexanionBlend, HexanionDecoupled, HexanionLinear};
 use crate::trajectory::{Trajectory, TrajectoryError, Velocities, align_signs};
 use crate::velocity::Twist;
 use crate::wareham_lasenby::{WlBivectorLinear, WlError, WlLinear, WlMotion, WlQuadratic};
@@ -75,6 +75,8 @@ pub struct MethodInput<T: Ring> {
     pub shapes: Option<HermiteShapes<T>>,
     /// The TRT split `l1` (`juttler-trt`).
     pub l1: Option<usize>,
+    /// The weight functions of `hexanion-blend` (`None`: `lagrange`).
+    pub weights: Option<BlendWeights>,
 }
 
 impl<T: Ring> MethodInput<T> {
@@ -85,7 +87,7 @@ impl<T: Ring> MethodInput<T> {
     /// assert_eq!(input.poses.len(), 1);
     /// ```
     pub fn new(poses: Vec<Pose<T>>) -> Self {
-        MethodInput { poses, parameters: Parameters::Uniform, velocities: None, shapes: None, l1: None }
+        MethodInput { poses, parameters: Parameters::Uniform, velocities: None, shapes: None, l1: None, weights: None }
     }
 }
 
@@ -317,6 +319,11 @@ impl Method {
                     .collect();
                 (segments, MethodMotion::Hexanion(h))
             }
+            Method::HexanionBlend => {
+                let weights = input.weights.unwrap_or(BlendWeights::Lagrange);
+                let b = HexanionBlend::through(&poses, &times, weights)?;
+                (vec![self.key_pose_segment(&poses, &times, 0, None)], MethodMotion::Blend(b))
+            }
             Method::HexanionDecoupled => {
                 let d = HexanionDecoupled::through(&poses, &times)?;
                 let segments = (0..m - 1).map(|k| self.key_pose_segment(&poses, &times, k, None)).collect();
@@ -359,8 +366,12 @@ impl Method {
         input: &MethodInput<T>,
         scale: &dyn Fn(&Pose<T>) -> Pose<T>,
     ) -> Result<Vec<Pose<T>>, BuildError> {
-        let given =
-            [("velocities", input.velocities.is_some()), ("shape", input.shapes.is_some()), ("l1", input.l1.is_some())];
+        let given = [
+            ("velocities", input.velocities.is_some()),
+            ("shape", input.shapes.is_some()),
+            ("l1", input.l1.is_some()),
+            ("weights", input.weights.is_some()),
+        ];
         if let Some((key, _)) = given.into_iter().find(|(key, given)| *given && !self.inputs().contains(key)) {
             return Err(BuildError::Unused { key, method: self });
         }
@@ -492,11 +503,14 @@ impl Method {
                 let (lo, hi) = (k.saturating_sub(1), (k + 2).min(last));
                 (lo..=hi, if hi - lo == 3 { 3 } else { 2 })
             }
+            // one segment over [t_0, t_m]: every key pose, φ_i of degree m
+            Method::HexanionBlend => (0..=last, last),
             _ => (k..=k + 1, 1),
         };
+        let end = if self == Method::HexanionBlend { last } else { k + 1 };
         MethodSegment {
             t0: times[k].clone(),
-            t1: times[k + 1].clone(),
+            t1: times[end].clone(),
             representation: self.representation(),
             degree,
             control_poses: poses[range].to_vec(),

@@ -11,7 +11,7 @@ use crate::juttler::surface::RationalBezierSurface;
 use crate::juttler::{JuttlerError, QMotion, RationalBezier, RationalMotion};
 use crate::repr::dual_quaternion::DualQuaternion;
 use crate::repr::hexanion::Hexanion;
-use crate::repr::hexanion::blend::{HexanionDecoupled, HexanionLinear};
+use crate::repr::hexanion::blend::{HexanionBlend, HexanionDecoupled, HexanionLinear};
 use crate::trajectory::{TrajectoryError, TrajectorySample, sample_motion};
 use crate::wareham_lasenby::WlMotion;
 use crate::{AnyMotion, CurveError, MapScalar, Motion, Piecewise, Pose};
@@ -92,6 +92,8 @@ pub enum MethodMotion<T: Ring> {
     Hexanion(HexanionLinear<T>),
     /// `hexanion-decoupled`.
     Decoupled(HexanionDecoupled<T>),
+    /// `hexanion-blend`.
+    Blend(HexanionBlend<T>),
     /// `juttler-q-motion`, `juttler-trt`, `juttler-spline`: Q-motions (eq. 13) at their
     /// breakpoints (one segment for Algorithm 1 and TRT, one per interval for Algorithm 2).
     QMotions(Piecewise<T, QMotion<T>>),
@@ -106,6 +108,7 @@ impl<T: Real> Motion<T> for MethodMotion<T> {
             MethodMotion::Wl(m) => m.evaluate(t),
             MethodMotion::Hexanion(m) => m.evaluate(t),
             MethodMotion::Decoupled(m) => m.evaluate(t),
+            MethodMotion::Blend(m) => m.evaluate(t),
             MethodMotion::QMotions(m) => m.evaluate(t),
             MethodMotion::Minimal(m) => m.evaluate(t),
         }
@@ -117,6 +120,7 @@ impl<T: Real> Motion<T> for MethodMotion<T> {
             MethodMotion::Wl(m) => m.domain(),
             MethodMotion::Hexanion(m) => m.domain(),
             MethodMotion::Decoupled(m) => m.domain(),
+            MethodMotion::Blend(m) => m.domain(),
             MethodMotion::QMotions(m) => m.domain(),
             MethodMotion::Minimal(m) => m.domain(),
         }
@@ -131,6 +135,7 @@ impl<T: Real, U: Real> MapScalar<T, U> for MethodMotion<T> {
             MethodMotion::Wl(m) => MethodMotion::Wl(m.map_scalar(f)),
             MethodMotion::Hexanion(m) => MethodMotion::Hexanion(m.map_scalar(f)),
             MethodMotion::Decoupled(m) => MethodMotion::Decoupled(m.map_scalar(f)),
+            MethodMotion::Blend(m) => MethodMotion::Blend(m.map_scalar(f)),
             MethodMotion::QMotions(m) => MethodMotion::QMotions(m.map_scalar(f)),
             MethodMotion::Minimal(m) => MethodMotion::Minimal(m.map_scalar(f)),
         }

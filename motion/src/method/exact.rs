@@ -389,7 +389,8 @@ impl Method {
             | Method::WlQuadratic
             | Method::WlDirect
             | Method::HexanionLinear
-            | Method::HexanionDecoupled => return Err(not_exact("exp and log")),
+            | Method::HexanionDecoupled
+            | Method::HexanionBlend => return Err(not_exact("exp and log")),
         };
         let segments: Vec<MethodSegment<Q>> =
             pieces.iter().zip(breaks.windows(2)).map(|(p, w)| self.q_motion_segment(&p.q, w)).collect();

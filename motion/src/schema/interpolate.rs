@@ -4,7 +4,7 @@
 //! ```json
 //! {"method": "ccm-additive", "poses": [POSE, POSE, ...], "parameters": "uniform",
 //!  "velocities": [{"velocity": [..], "angular_velocity": [..]}, ...],
-//!  "shape": 1, "gamma": [0, 0], "l1": 1, "samples": 101, "body_points": [[0, 0, 0]]}
+//!  "shape": 1, "gamma": [0, 0], "l1": 1, "weights": "lagrange", "samples": 101, "body_points": [[0, 0, 0]]}
 //! ```
 //!
 //! Every key but `method` and `poses` may be left out; a key the method does not read
@@ -25,6 +25,7 @@
 use super::{SchemaError, SpecNumber, StrictValue, pose::PoseError, pose::PoseObject};
 use crate::juttler::Parametrisation;
 use crate::method::{BuildError, BuiltMotion, Method, MethodInput, Parameters};
+use crate::repr::hexanion::blend::BlendWeights;
 use crate::velocity::Twist;
 use crate::{HermiteShapes, Pose, Pseudoscalar, Shape, Vec3};
 use algebra_core::Field;
@@ -267,6 +268,8 @@ pub struct InterpolateSpec<N = f64> {
     pub body_points: Option<Vec<[N; 3]>>,
     /// The TRT split of `juttler-trt`.
     pub l1: Option<usize>,
+    /// The weight functions of `hexanion-blend` (`"lagrange"`, `"bernstein"`).
+    pub weights: Option<BlendWeights>,
 }
 
 /// The spec as serde reads it; every part whose shape is not fixed by a type is a
@@ -290,6 +293,8 @@ struct RawSpec<N> {
     body_points: Option<Vec<[N; 3]>>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     l1: Option<i64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    weights: Option<String>,
 }
 
 impl<N: SpecNumber> TryFrom<RawSpec<N>> for InterpolateSpec<N> {
@@ -330,6 +335,7 @@ impl<N: SpecNumber> TryFrom<RawSpec<N>> for InterpolateSpec<N> {
             samples: raw.samples,
             body_points: raw.body_points,
             l1,
+            weights: raw.weights.as_deref().map(str::parse).transpose().map_err(SchemaError::Weights)?,
         };
         spec.check()?;
         Ok(spec)
@@ -358,6 +364,7 @@ impl<N: SpecNumber> From<InterpolateSpec<N>> for RawSpec<N> {
             samples: s.samples,
             body_points: s.body_points,
             l1: s.l1.map(|k| i64::try_from(k).unwrap_or(i64::MAX)),
+            weights: s.weights.map(|w| w.name().to_string()),
         }
     }
 }
@@ -477,12 +484,13 @@ impl<N: SpecNumber> InterpolateSpec<N> {
     }
 
     /// The optional keys the spec gives.
-    fn given_keys(&self) -> [(&'static str, bool); 4] {
+    fn given_keys(&self) -> [(&'static str, bool); 5] {
         [
             ("velocities", self.velocities.is_some()),
             ("shape", self.shape.is_some()),
             ("gamma", self.gamma.is_some()),
             ("l1", self.l1.is_some()),
+            ("weights", self.weights.is_some()),
         ]
     }
 
@@ -599,6 +607,7 @@ impl<N: SpecNumber> InterpolateSpec<N> {
             velocities,
             shapes,
             l1: self.l1,
+            weights: self.weights,
             ..MethodInput::new(poses)
         })
     }

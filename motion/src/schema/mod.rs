@@ -128,6 +128,9 @@ pub enum SchemaError {
     /// mathematical failure).
     #[error(transparent)]
     Velocity(MotionError),
+    /// `weights` names no weight functions of `hexanion-blend`.
+    #[error("`weights`: {0}")]
+    Weights(String),
     /// `l1` is negative.
     #[error("`l1` must be 0 or more (got {got})")]
     L1 {

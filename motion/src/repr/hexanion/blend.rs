@@ -321,3 +321,157 @@ impl<T: Real, U: Real> MapScalar<T, U> for HexanionDecoupled<T> {
         }
     }
 }
+
+/// The named weight functions `φ_i(t)` of Angelidis' blend (57) through key poses
+/// ([`HexanionBlend`]); both sum to one at every `t`.
+///
+/// ```
+/// use motion::repr::hexanion::blend::BlendWeights;
+/// assert_eq!("lagrange".parse::<BlendWeights>(), Ok(BlendWeights::Lagrange));
+/// assert_eq!(BlendWeights::Lagrange.weights(&[0.0, 1.0, 2.0], &1.0), vec![0.0, 1.0, 0.0]);
+/// assert_eq!(BlendWeights::Bernstein.weights(&[0.0, 1.0, 2.0], &1.0), vec![0.25, 0.5, 0.25]);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BlendWeights {
+    /// The Lagrange polynomials of the key parameters, `φ_i(t_j) = δ_ij`: the blend passes
+    /// through every key pose; a polynomial of degree `m` in `t` (it oscillates for many
+    /// poses, as polynomial interpolation does).
+    Lagrange,
+    /// The Bernstein polynomials `b_i^m(u)`, `u = (t - t_0)/(t_m - t_0)`: a Bézier curve of
+    /// hexanions with the principal hexanions as control points, through the first and last
+    /// key pose only (smooth, within their convex hull).
+    Bernstein,
+}
+
+crate::names::named!("motion::repr::hexanion::blend::BlendWeights", BlendWeights {
+    Lagrange => "lagrange",
+    Bernstein => "bernstein"
+});
+
+impl std::str::FromStr for BlendWeights {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        BlendWeights::from_name(s).ok_or_else(|| format!("unknown weights `{s}` (lagrange or bernstein)"))
+    }
+}
+
+impl BlendWeights {
+    /// `φ_0(t), ..., φ_m(t)` for the key parameters `times` (at least one, distinct).
+    ///
+    /// ```
+    /// use motion::repr::hexanion::blend::BlendWeights;
+    /// let w = BlendWeights::Lagrange.weights(&[0.0, 1.0, 3.0], &2.0);
+    /// assert_eq!(w, vec![-1.0 / 3.0, 1.0, 1.0 / 3.0]); // sums to one
+    /// ```
+    pub fn weights<T: Field>(self, times: &[T], t: &T) -> Vec<T> {
+        let m = times.len() - 1;
+        match self {
+            BlendWeights::Lagrange => (0..=m)
+                .map(|i| {
+                    (0..=m).filter(|&j| j != i).fold(T::one(), |acc, j| {
+                        acc.mul_ref(&t.sub_ref(&times[j]).div_ref(&times[i].sub_ref(&times[j])))
+                    })
+                })
+                .collect(),
+            BlendWeights::Bernstein if m == 0 => vec![T::one()],
+            BlendWeights::Bernstein => {
+                let u = t.sub_ref(&times[0]).div_ref(&times[m].sub_ref(&times[0]));
+                crate::juttler::bernstein_values(m, &u)
+            }
+        }
+    }
+}
+
+/// Angelidis' blend (57) through key poses: `exp(Σ φ_i(t) H_i / Σ φ_i(t))` of the key poses'
+/// principal hexanions `H_i` with named weight functions `φ_i` ([`BlendWeights`]). With
+/// `lagrange` it passes through every key pose; with `bernstein` through the first and last.
+/// Like `hexanion-linear` it depends on where the fixed frame's origin is.
+///
+/// ```
+/// use motion::{Motion, Pose, repr::hexanion::blend::{BlendWeights, HexanionBlend}};
+/// let poses = [[0.0, 0.0, 0.0], [1.0, 1.0, 0.0], [2.0, 0.0, 0.0]].map(|t| Pose::<f64>::translation(&t));
+/// let m = HexanionBlend::through(&poses, &[0.0, 1.0, 2.0], BlendWeights::Lagrange).unwrap();
+/// let p = m.pose(&1.0).unwrap().transform_point(&[0.0; 3]).unwrap();
+/// assert!((p[0] - 1.0).abs() < 1e-15 && (p[1] - 1.0).abs() < 1e-15);
+/// let b = HexanionBlend::through(&poses, &[0.0, 1.0, 2.0], BlendWeights::Bernstein).unwrap();
+/// let q = b.pose(&1.0).unwrap().transform_point(&[0.0; 3]).unwrap();
+/// assert!((q[1] - 0.5).abs() < 1e-15); // the quadratic Bézier's midpoint
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct HexanionBlend<T> {
+    weights: BlendWeights,
+    times: Vec<T>,
+    hexanions: Vec<Hexanion<T>>,
+}
+
+impl<T: Real> HexanionBlend<T> {
+    /// The blend through `poses` at `times` (at least one pose; times finite and strictly
+    /// increasing; as many as poses).
+    ///
+    /// ```
+    /// use motion::{Pose, repr::hexanion::blend::{BlendWeights, HexanionBlend}};
+    /// let poses = [Pose::<f64>::identity(), Pose::identity()];
+    /// assert!(HexanionBlend::through(&poses, &[1.0, 1.0], BlendWeights::Lagrange).is_err());
+    /// ```
+    pub fn through(poses: &[Pose<T>], times: &[T], weights: BlendWeights) -> Result<Self, ReprError> {
+        let linear = HexanionLinear::through(poses, times)?;
+        Ok(HexanionBlend { weights, times: linear.times, hexanions: linear.hexanions })
+    }
+
+    /// The weight functions.
+    ///
+    /// ```
+    /// use motion::{Pose, repr::hexanion::blend::{BlendWeights, HexanionBlend}};
+    /// let m = HexanionBlend::through(&[Pose::<f64>::identity()], &[0.0], BlendWeights::Bernstein).unwrap();
+    /// assert_eq!(m.weights(), BlendWeights::Bernstein);
+    /// ```
+    pub fn weights(&self) -> BlendWeights {
+        self.weights
+    }
+
+    /// The principal hexanions of the key poses.
+    ///
+    /// ```
+    /// use motion::{Pose, repr::hexanion::{Hexanion, blend::{BlendWeights, HexanionBlend}}};
+    /// let m = HexanionBlend::through(&[Pose::<f64>::identity()], &[0.0], BlendWeights::Lagrange).unwrap();
+    /// assert_eq!(m.hexanions(), &[Hexanion::zero()]);
+    /// ```
+    pub fn hexanions(&self) -> &[Hexanion<T>] {
+        &self.hexanions
+    }
+
+    /// The blended hexanion (57) at `t`: `Σ φ_i(t) H_i` (both weight families sum to one
+    /// identically in `t`, so (57)'s division is by one).
+    ///
+    /// ```
+    /// use motion::{Pose, repr::hexanion::{Hexanion, blend::{BlendWeights, HexanionBlend}}};
+    /// let poses = [Pose::<f64>::identity(), Pose::translation(&[2.0, 0.0, 0.0])];
+    /// let m = HexanionBlend::through(&poses, &[0.0, 2.0], BlendWeights::Bernstein).unwrap();
+    /// assert_eq!(m.hexanion_at(&1.0), Hexanion::new([0.0; 3], [1.0, 0.0, 0.0]));
+    /// ```
+    pub fn hexanion_at(&self, t: &T) -> Hexanion<T> {
+        let phi = self.weights.weights(&self.times, t);
+        phi.iter().zip(&self.hexanions).fold(Hexanion::zero(), |s, (w, h)| &s + &h.scale(w))
+    }
+}
+
+impl<T: Real> Motion<T> for HexanionBlend<T> {
+    fn evaluate(&self, t: &T) -> Result<Pose<T>, CurveError> {
+        Ok(self.hexanion_at(t).to_pose()?)
+    }
+    fn domain(&self) -> [T; 2] {
+        [self.times[0].clone(), self.times[self.times.len() - 1].clone()]
+    }
+}
+
+impl<T: Real, U: Real> MapScalar<T, U> for HexanionBlend<T> {
+    type Mapped = HexanionBlend<U>;
+    fn map_scalar(&self, f: &dyn Fn(&T) -> U) -> HexanionBlend<U> {
+        let h = |x: &Hexanion<T>| Hexanion::new(x.omega.clone().map(|c| f(&c)), x.m.clone().map(|c| f(&c)));
+        HexanionBlend {
+            weights: self.weights,
+            times: self.times.iter().map(f).collect(),
+            hexanions: self.hexanions.iter().map(h).collect(),
+        }
+    }
+}
