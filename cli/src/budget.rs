@@ -153,7 +153,8 @@ impl Tableau {
             | Method::JuttlerProjective
             | Method::JuttlerTrt
             | Method::JuttlerMinimal
-            | Method::JuttlerSpline => Tableau::Rational,
+            | Method::JuttlerSpline
+            | Method::JuttlerBSpline => Tableau::Rational,
             Method::CcmAdditive
             | Method::WlLinear
             | Method::WlQuadratic

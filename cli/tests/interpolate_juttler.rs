@@ -437,3 +437,96 @@ fn projective_rotations_with_tr() {
     assert_eq!(out.status.code(), Some(2), "{e}");
     assert!(e.contains("juttler-projective") && e.contains("divisible by 4"), "{e}");
 }
+
+/// `juttler-bspline` (Jüttler Sec. 6, B-spline Q-motions by the TR method): through every key
+/// pose (Rodrigues here), the points the images of the printed pieces under (12), the pieces
+/// joined C^(p-1) exactly (derivatives of the printed rational control data at the breaks, here),
+/// and with `degree` = m the TR method on the elliptic rotations, i.e. `juttler-q-motion`,
+/// coefficient for coefficient.
+#[test]
+fn bspline_q_motions() {
+    // six key poses with rational quaternion norms, so --scalar rational runs too
+    let keys = r#"[{"position": [0, 0, 0]}, {"position": [1, 1, 0], "quaternion": [0.6, 0, 0, 0.8]},
+        {"position": [2, 0, 0.5]}, {"position": [3, 1, 1], "quaternion": [2, 1, 2, 0]},
+        {"position": [4, 0, 0], "quaternion": [0, 0.6, 0.8, 0]}, {"position": [5, 1, 0]}]"#;
+    let spec = |extra: &str| format!(r#"{{"method": "juttler-bspline", "poses": {keys}, "samples": 11{extra}}}"#);
+    // p = 3 by default: knots 0, 0, 0, 0, 2/5, 3/5, 1, 1, 1, 1 (averages of 3 parameters)
+    let v = run_json("bspline", &spec(""));
+    let segs = v["segments"].as_array().unwrap();
+    let ends: Vec<(f64, f64)> = segs.iter().map(|s| (s["t0"].as_f64().unwrap(), s["t1"].as_f64().unwrap())).collect();
+    assert_eq!(ends, [(0.0, 0.4), (0.4, 0.6), (0.6, 1.0)]);
+    assert!(segs.iter().all(|s| s["degree"] == 6));
+    let quats: [[f64; 4]; 6] = [
+        [1.0, 0.0, 0.0, 0.0],
+        [0.6, 0.0, 0.0, 0.8],
+        [1.0, 0.0, 0.0, 0.0],
+        [2.0, 1.0, 2.0, 0.0],
+        [0.0, 0.6, 0.8, 0.0],
+        [1.0, 0.0, 0.0, 0.0],
+    ];
+    let positions =
+        [[0.0, 0.0, 0.0], [1.0, 1.0, 0.0], [2.0, 0.0, 0.5], [3.0, 1.0, 1.0], [4.0, 0.0, 0.0], [5.0, 1.0, 0.0]];
+    let samples = v["samples"].as_array().unwrap();
+    for (i, (q, p)) in quats.iter().zip(positions).enumerate() {
+        let s = &samples[2 * i]; // t = i/5
+        let n = q.iter().map(|c| c * c).sum::<f64>().sqrt();
+        let sin = (q[1] * q[1] + q[2] * q[2] + q[3] * q[3]).sqrt() / n;
+        let angle = 2.0 * sin.atan2(q[0] / n);
+        let axis = if sin > 0.0 { [q[1], q[2], q[3]] } else { [0.0, 0.0, 1.0] };
+        let got: [[f64; 4]; 4] = serde_json::from_value(s["matrix"].clone()).unwrap();
+        assert!(max_diff(&got, &rodrigues(axis, angle, p)) < 1e-13, "key pose {i}");
+        // the printed point: the origin's image under the printed piece, by (12) here
+        let (seg, u) = segment_at(segs, s["t"].as_f64().unwrap());
+        let dq: Vec<[f64; 8]> = serde_json::from_value(seg["dual_quaternions"].clone()).unwrap();
+        let y = jut_image(&bezier(&dq, u), [0.0; 3]);
+        assert!((0..3).all(|k| (y[k] - p[k]).abs() < 1e-12), "key {i}: {y:?}");
+    }
+    // exactly C2 (p = 3) at the breaks: the first and second derivatives of the homogeneous
+    // pieces, from their rational control points
+    let file = TempFile::new("interp-jq-bspline-exact.json", &spec(""));
+    let exact: Value =
+        serde_json::from_str(&ok(&["interpolate", "--json", "--scalar", "rational", file.path()])).unwrap();
+    let q = |s: &str| algebra_core::rational::parse_rational(s).unwrap();
+    let pieces: Vec<(Vec<Vec<algebra_core::rational::Q>>, algebra_core::rational::Q)> = exact["segments"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|s| {
+            let b = s["dual_quaternions"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|d| d.as_array().unwrap().iter().map(|x| q(x.as_str().unwrap())).collect())
+                .collect();
+            (b, q(s["t1"].as_str().unwrap()) - q(s["t0"].as_str().unwrap()))
+        })
+        .collect();
+    for w in pieces.windows(2) {
+        let ((a, ha), (b, hb)) = (&w[0], &w[1]);
+        let n = a.len() - 1;
+        for k in 0..8 {
+            // n (B_n - B_(n-1)) / h_a = n (B'_1 - B'_0) / h_b, and the second differences / h²
+            let d1 = (&a[n][k] - &a[n - 1][k]) / ha;
+            let e1 = (&b[1][k] - &b[0][k]) / hb;
+            assert_eq!(d1, e1, "C1 at a break, coefficient {k}");
+            let d2 = (&a[n][k] - &a[n - 1][k] * algebra_core::rational::q(2) + &a[n - 2][k]) / (ha * ha);
+            let e2 = (&b[2][k] - &b[1][k] * algebra_core::rational::q(2) + &b[0][k]) / (hb * hb);
+            assert_eq!(d2, e2, "C2 at a break, coefficient {k}");
+        }
+    }
+    // degree = m: one Bézier piece, the elliptic TR method of juttler-q-motion, exactly
+    let one = TempFile::new("interp-jq-bspline-m.json", &spec(r#", "degree": 5"#));
+    let qm = TempFile::new("interp-jq-qmotion.json", &spec("").replace("juttler-bspline", "juttler-q-motion"));
+    let a: Value = serde_json::from_str(&ok(&["interpolate", "--json", "--scalar", "rational", one.path()])).unwrap();
+    let b: Value = serde_json::from_str(&ok(&["interpolate", "--json", "--scalar", "rational", qm.path()])).unwrap();
+    assert_eq!(a["segments"][0]["dual_quaternions"], b["segments"][0]["dual_quaternions"]);
+    // refusals
+    let high = TempFile::new("interp-jq-bspline-high.json", &spec(r#", "degree": 6"#));
+    let e = fails(&["interpolate", high.path()], 2);
+    assert!(e.contains("degree 6 for 6 positions"), "{e}");
+    let neg = TempFile::new("interp-jq-bspline-neg.json", &spec(r#", "degree": -1"#));
+    assert!(fails(&["interpolate", neg.path()], 2).contains("`degree` must be 1 or more"));
+    let other =
+        TempFile::new("interp-jq-degree.json", &spec(r#", "degree": 2"#).replace("juttler-bspline", "juttler-spline"));
+    assert!(fails(&["interpolate", other.path()], 2).contains("`degree` is not used by `juttler-spline`"));
+}

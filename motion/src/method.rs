@@ -83,13 +83,18 @@ pub enum Method {
     /// Jüttler's Algorithm 2: the C1 spline Q-motion (40)-(44), velocities given or estimated
     /// by step 1 ([`crate::juttler::spline::algorithm2`]).
     JuttlerSpline,
+    /// Jüttler Sec. 6 (the TR method with B-spline Q-motions, as the paper says Secs. 3-4
+    /// generalise): rotational parts and translations interpolated by B-splines of degree `p`
+    /// (spec key `degree`, default `min(3, m)`) on averaged knots, their product a B-spline
+    /// Q-motion of degree `2p`, C^(p-1) ([`crate::juttler::bspline_tr::bspline_tr`]).
+    JuttlerBSpline,
 }
 
 /// The methods the contract names that come with later issues (name, issue): none today.
 pub const LATER: [(&str, u32); 0] = [];
 
 /// The implemented methods, as listed in messages.
-const IMPLEMENTED: &str = "ccm-additive, ccm-multiplicative, wl-linear, wl-quadratic, wl-direct, hexanion-linear, hexanion-decoupled, hexanion-blend, juttler-q-motion, juttler-affine, juttler-projective, juttler-trt, juttler-minimal, juttler-spline";
+const IMPLEMENTED: &str = "ccm-additive, ccm-multiplicative, wl-linear, wl-quadratic, wl-direct, hexanion-linear, hexanion-decoupled, hexanion-blend, juttler-q-motion, juttler-affine, juttler-projective, juttler-trt, juttler-minimal, juttler-spline, juttler-bspline";
 
 /// Why a method name was not accepted.
 ///
@@ -139,7 +144,8 @@ crate::names::named!("motion::method::Method", Method {
     JuttlerProjective => "juttler-projective",
     JuttlerTrt => "juttler-trt",
     JuttlerMinimal => "juttler-minimal",
-    JuttlerSpline => "juttler-spline"
+    JuttlerSpline => "juttler-spline",
+    JuttlerBSpline => "juttler-bspline"
 });
 
 impl Method {
@@ -161,7 +167,8 @@ impl Method {
             | Method::JuttlerProjective
             | Method::JuttlerTrt
             | Method::JuttlerMinimal
-            | Method::JuttlerSpline => SegmentKind::Additive,
+            | Method::JuttlerSpline
+            | Method::JuttlerBSpline => SegmentKind::Additive,
             Method::CcmMultiplicative
             | Method::WlLinear
             | Method::WlQuadratic
@@ -194,12 +201,13 @@ impl Method {
             | Method::JuttlerProjective
             | Method::JuttlerTrt
             | Method::JuttlerMinimal
-            | Method::JuttlerSpline => "dual-quaternion-bezier",
+            | Method::JuttlerSpline
+            | Method::JuttlerBSpline => "dual-quaternion-bezier",
         }
     }
 
     /// The optional inputs the method reads besides the key poses and their parameters, by
-    /// their `gam interpolate` spec keys (`velocities`, `shape`, `gamma`, `l1`, `weights`); an input
+    /// their `gam interpolate` spec keys (`velocities`, `shape`, `gamma`, `l1`, `weights`, `degree`); an input
     /// given to a method that does not read it is refused ([`BuildError::Unused`]).
     ///
     /// ```
@@ -214,6 +222,7 @@ impl Method {
             Method::JuttlerTrt => &["l1"],
             Method::JuttlerSpline => &["velocities"],
             Method::HexanionBlend => &["weights"],
+            Method::JuttlerBSpline => &["degree"],
             Method::WlLinear
             | Method::WlQuadratic
             | Method::WlDirect

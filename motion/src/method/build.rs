@@ -15,6 +15,7 @@
 //! ```
 
 use super::{BuiltMotion, Method, MethodMotion, MethodSegment};
+use crate::juttler::bspline_tr::bspline_tr;
 use crate::juttler::minimal::minimal;
 use crate::juttler::parametrisation::normalise;
 use crate::juttler::projective::projective;
@@ -22,7 +23,7 @@ use crate::juttler::rotational::affine;
 use crate::juttler::spline::algorithm2;
 use crate::juttler::tr::{algorithm1, rotations, tr_method};
 use crate::juttler::trt::trt;
-use crate::juttler::{JuttlerError, KeyVelocity, Parametrisation, QMotion, parameters};
+use crate::juttler::{JuttlerError, KeyVelocity, Parametrisation, QMotion, SplineQMotion, parameters};
 use crate::repr::ReprError;
 use crate::repr::dual_quaternion::to_dual_quaternion_exact;
 use crate::repr::hexanion::Hexanion;
@@ -77,6 +78,8 @@ pub struct MethodInput<T: Ring> {
     pub l1: Option<usize>,
     /// The weight functions of `hexanion-blend` (`None`: `lagrange`).
     pub weights: Option<BlendWeights>,
+    /// The B-spline degree `p` of `juttler-bspline` (`None`: `min(3, m)`).
+    pub degree: Option<usize>,
 }
 
 impl<T: Ring> MethodInput<T> {
@@ -87,7 +90,15 @@ impl<T: Ring> MethodInput<T> {
     /// assert_eq!(input.poses.len(), 1);
     /// ```
     pub fn new(poses: Vec<Pose<T>>) -> Self {
-        MethodInput { poses, parameters: Parameters::Uniform, velocities: None, shapes: None, l1: None, weights: None }
+        MethodInput {
+            poses,
+            parameters: Parameters::Uniform,
+            velocities: None,
+            shapes: None,
+            l1: None,
+            weights: None,
+            degree: None,
+        }
     }
 }
 
@@ -343,14 +354,11 @@ impl Method {
                     }
                     Some(v) => Some(key_velocities(&poses, v)?),
                 };
-                let spline = algorithm2(&poses, &times, velocities.as_deref())?;
-                let segments = spline
-                    .segments()
-                    .iter()
-                    .zip(spline.breaks().windows(2))
-                    .map(|(q, w)| self.q_motion_segment(q, w))
-                    .collect();
-                (segments, MethodMotion::QMotions(Piecewise::new(times.clone(), spline.segments().to_vec())?))
+                self.spline_parts(&algorithm2(&poses, &times, velocities.as_deref())?)?
+            }
+            Method::JuttlerBSpline => {
+                let p = input.degree.unwrap_or(3.min(m - 1));
+                self.spline_parts(bspline_tr(&poses, &times, p)?.pieces())?
             }
         };
         Ok(BuiltMotion { method: self, times, key_poses: poses, segments, motion })
@@ -371,6 +379,7 @@ impl Method {
             ("shape", input.shapes.is_some()),
             ("l1", input.l1.is_some()),
             ("weights", input.weights.is_some()),
+            ("degree", input.degree.is_some()),
         ];
         if let Some((key, _)) = given.into_iter().find(|(key, given)| *given && !self.inputs().contains(key)) {
             return Err(BuildError::Unused { key, method: self });
@@ -517,6 +526,22 @@ impl Method {
             dual_quaternions: None,
             hexanions,
         }
+    }
+
+    /// The segments and motion of a piecewise Q-motion (`juttler-spline`, `juttler-bspline`):
+    /// one segment per piece, between its breaks.
+    pub(super) fn spline_parts<T: Real>(
+        self,
+        spline: &SplineQMotion<T>,
+    ) -> Result<(Vec<MethodSegment<T>>, MethodMotion<T>), BuildError> {
+        let segments = spline
+            .segments()
+            .iter()
+            .zip(spline.breaks().windows(2))
+            .map(|(q, w)| self.q_motion_segment(q, w))
+            .collect();
+        let motion = Piecewise::new(spline.breaks().to_vec(), spline.segments().to_vec())?;
+        Ok((segments, MethodMotion::QMotions(motion)))
     }
 
     /// A Q-motion over `[t0, t1]`: its control dual quaternions, and the same as motors.

@@ -26,6 +26,7 @@
 
 use super::build::key_velocities;
 use super::{BuildError, Method, MethodInput, MethodSegment, Parameters, RationalSegment, SurfaceSegment};
+use crate::juttler::bspline_tr::bspline_tr;
 use crate::juttler::minimal::{MinimalMotion, minimal_method};
 use crate::juttler::parametrisation::normalise;
 use crate::juttler::projective::projective;
@@ -277,6 +278,11 @@ impl ExactMotion {
     }
 }
 
+/// The pieces and breaks of a piecewise Q-motion.
+fn spline_pieces(spline: &SplineQMotion<Q>) -> (Vec<Piece>, Vec<Q>) {
+    (spline.segments().iter().map(|q| Piece { q: q.clone(), minimal: None }).collect(), spline.breaks().to_vec())
+}
+
 /// The unit quaternion of `r`, when its norm is rational; else the method cannot be exact.
 fn unit_exact(method: Method, index: usize, r: &Quaternion<Q>) -> Result<Quaternion<Q>, BuildError> {
     let n2 = r.norm_squared();
@@ -333,6 +339,11 @@ impl Method {
             Parameters::Given(t) => t.clone(),
             Parameters::Rule(_) => return Err(not_exact("a parametrisation rule of eq. (15) (distances and angles)")),
         };
+        // the spline methods take unit key poses (their velocities and rotational parts are at
+        // the poses' scale): exact when the norms are rational
+        let unit_poses = |poses: &[Pose<Q>]| -> Result<Vec<Pose<Q>>, BuildError> {
+            poses.iter().enumerate().map(|(i, p)| unitize_exact(self, i, p)).collect()
+        };
         let unit_rotations = |poses: &[Pose<Q>]| -> Result<Vec<Quaternion<Q>>, BuildError> {
             rotations(poses)?.iter().enumerate().map(|(i, r)| unit_exact(self, i, r)).collect()
         };
@@ -376,11 +387,12 @@ impl Method {
                     let why = format!("{} velocities for {m} poses", v.len());
                     return Err(JuttlerError::Parameters { why }.into());
                 }
-                let unit =
-                    poses.iter().enumerate().map(|(i, p)| unitize_exact(self, i, p)).collect::<Result<Vec<_>, _>>()?;
-                let spline = SplineQMotion::hermite(&unit, &times, &key_velocities(&unit, v)?)?;
-                let pieces = spline.segments().iter().map(|q| Piece { q: q.clone(), minimal: None }).collect();
-                (pieces, times.clone())
+                let unit = unit_poses(&poses)?;
+                spline_pieces(&SplineQMotion::hermite(&unit, &times, &key_velocities(&unit, v)?)?)
+            }
+            Method::JuttlerBSpline => {
+                let p = input.degree.unwrap_or(3.min(m - 1));
+                spline_pieces(bspline_tr(&unit_poses(&poses)?, &times, p)?.pieces())
             }
             Method::CcmAdditive | Method::CcmMultiplicative => {
                 return Err(not_exact("the C1 Hermite construction of Sec. 5.3 (unit poses, logarithms)"));

@@ -4,7 +4,7 @@
 //! ```json
 //! {"method": "ccm-additive", "poses": [POSE, POSE, ...], "parameters": "uniform",
 //!  "velocities": [{"velocity": [..], "angular_velocity": [..]}, ...],
-//!  "shape": 1, "gamma": [0, 0], "l1": 1, "weights": "lagrange", "samples": 101, "body_points": [[0, 0, 0]]}
+//!  "shape": 1, "gamma": [0, 0], "l1": 1, "weights": "lagrange", "degree": 3, "samples": 101, "body_points": [[0, 0, 0]]}
 //! ```
 //!
 //! Every key but `method` and `poses` may be left out; a key the method does not read
@@ -270,6 +270,8 @@ pub struct InterpolateSpec<N = f64> {
     pub l1: Option<usize>,
     /// The weight functions of `hexanion-blend` (`"lagrange"`, `"bernstein"`).
     pub weights: Option<BlendWeights>,
+    /// The B-spline degree of `juttler-bspline`.
+    pub degree: Option<usize>,
 }
 
 /// The spec as serde reads it; every part whose shape is not fixed by a type is a
@@ -295,6 +297,8 @@ struct RawSpec<N> {
     l1: Option<i64>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     weights: Option<String>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    degree: Option<i64>,
 }
 
 impl<N: SpecNumber> TryFrom<RawSpec<N>> for InterpolateSpec<N> {
@@ -336,6 +340,7 @@ impl<N: SpecNumber> TryFrom<RawSpec<N>> for InterpolateSpec<N> {
             body_points: raw.body_points,
             l1,
             weights: raw.weights.as_deref().map(str::parse).transpose().map_err(SchemaError::Weights)?,
+            degree: raw.degree.map(|d| usize::try_from(d).map_err(|_| SchemaError::Degree { got: d })).transpose()?,
         };
         spec.check()?;
         Ok(spec)
@@ -365,6 +370,7 @@ impl<N: SpecNumber> From<InterpolateSpec<N>> for RawSpec<N> {
             body_points: s.body_points,
             l1: s.l1.map(|k| i64::try_from(k).unwrap_or(i64::MAX)),
             weights: s.weights.map(|w| w.name().to_string()),
+            degree: s.degree.map(|d| i64::try_from(d).unwrap_or(i64::MAX)),
         }
     }
 }
@@ -484,13 +490,14 @@ impl<N: SpecNumber> InterpolateSpec<N> {
     }
 
     /// The optional keys the spec gives.
-    fn given_keys(&self) -> [(&'static str, bool); 5] {
+    fn given_keys(&self) -> [(&'static str, bool); 6] {
         [
             ("velocities", self.velocities.is_some()),
             ("shape", self.shape.is_some()),
             ("gamma", self.gamma.is_some()),
             ("l1", self.l1.is_some()),
             ("weights", self.weights.is_some()),
+            ("degree", self.degree.is_some()),
         ]
     }
 
@@ -608,6 +615,7 @@ impl<N: SpecNumber> InterpolateSpec<N> {
             shapes,
             l1: self.l1,
             weights: self.weights,
+            degree: self.degree,
             ..MethodInput::new(poses)
         })
     }

@@ -131,6 +131,12 @@ pub enum SchemaError {
     /// `weights` names no weight functions of `hexanion-blend`.
     #[error("`weights`: {0}")]
     Weights(String),
+    /// `degree` is negative.
+    #[error("`degree` must be 1 or more (got {got})")]
+    Degree {
+        /// The value given.
+        got: i64,
+    },
     /// `l1` is negative.
     #[error("`l1` must be 0 or more (got {got})")]
     L1 {
