@@ -154,7 +154,8 @@ impl Tableau {
             | Method::JuttlerTrt
             | Method::JuttlerMinimal
             | Method::JuttlerSpline
-            | Method::JuttlerBSpline => Tableau::Rational,
+            | Method::JuttlerBSpline
+            | Method::JuttlerMinimalSpline => Tableau::Rational,
             Method::CcmAdditive
             | Method::WlLinear
             | Method::WlQuadratic

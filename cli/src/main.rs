@@ -87,7 +87,7 @@ enum Command {
     /// A motion through key poses by a named method: ccm-additive, ccm-multiplicative,
     /// wl-linear, wl-quadratic, wl-direct, hexanion-linear, hexanion-decoupled, hexanion-blend,
     /// juttler-q-motion, juttler-affine, juttler-projective, juttler-trt, juttler-minimal,
-    /// juttler-spline, juttler-bspline (docs/cli.md, "gam interpolate").
+    /// juttler-spline, juttler-bspline, juttler-minimal-spline (docs/cli.md, "gam interpolate").
     Interpolate {
         /// Print one JSON object: {"method", "parameters", "segments", "samples"}.
         #[arg(long)]

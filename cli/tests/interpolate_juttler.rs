@@ -530,3 +530,81 @@ fn bspline_q_motions() {
         TempFile::new("interp-jq-degree.json", &spec(r#", "degree": 2"#).replace("juttler-bspline", "juttler-spline"));
     assert!(fails(&["interpolate", other.path()], 2).contains("`degree` is not used by `juttler-spline`"));
 }
+
+/// `juttler-minimal-spline` (Jüttler Sec. 6's closing remark: a C1 spline of rational motions
+/// of order 6): through every key pose, the given velocities and angular velocities at the
+/// keys, trajectories of degree 6 (the Q-motion spline's are 12), and exactly C1 at the joins:
+/// the rational curves of `gam trajectory --scalar rational` (their values and derivatives at
+/// the breaks, computed here from the control points).
+#[test]
+fn minimal_order_spline() {
+    let keys = r#"[{"position": [0, 0, 0]}, {"position": [1, 1, 0], "quaternion": [0.6, 0, 0, 0.8]},
+        {"position": [2, 0, 0.5], "quaternion": [2, 1, 2, 0]}, {"position": [3, 1, 1]}]"#;
+    let given = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.5], [0.5, 0.0, 1.0], [-1.0, 0.5, 0.0]];
+    let omega = [[0.0, 0.0, 0.5], [0.1, 0.0, 0.5], [0.0, 0.2, 0.0], [0.0, 0.0, -0.5]];
+    let v: Vec<String> =
+        given.iter().zip(&omega).map(|(v, w)| format!(r#"{{"velocity": {v:?}, "angular_velocity": {w:?}}}"#)).collect();
+    let text = format!(
+        r#"{{"method": "juttler-minimal-spline", "poses": {keys}, "parameters": [0, 0.5, 1.25, 2], "velocities": [{}], "samples": 9, "body_points": [[0, 0, 0]]}}"#,
+        v.join(", ")
+    );
+    let out = run_json("minimal-spline", &text);
+    let samples = out["samples"].as_array().unwrap();
+    let quats = [[1.0, 0.0, 0.0, 0.0], [0.6, 0.0, 0.0, 0.8], [2.0, 1.0, 2.0, 0.0], [1.0, 0.0, 0.0, 0.0]];
+    let positions = [[0.0, 0.0, 0.0], [1.0, 1.0, 0.0], [2.0, 0.0, 0.5], [3.0, 1.0, 1.0]];
+    for (i, t) in [0.0, 0.5, 1.25, 2.0].into_iter().enumerate() {
+        let s = samples.iter().find(|s| s["t"].as_f64() == Some(t)).expect("a sample at the key");
+        let q = quats[i];
+        let n = q.iter().map(|c| c * c).sum::<f64>().sqrt();
+        let sin = (q[1] * q[1] + q[2] * q[2] + q[3] * q[3]).sqrt() / n;
+        let axis = if sin > 0.0 { [q[1], q[2], q[3]] } else { [0.0, 0.0, 1.0] };
+        let got: [[f64; 4]; 4] = serde_json::from_value(s["matrix"].clone()).unwrap();
+        assert!(max_diff(&got, &rodrigues(axis, 2.0 * sin.atan2(q[0] / n), positions[i])) < 1e-13, "key {i}");
+        let vel: Vec<[f64; 3]> = serde_json::from_value(s["velocities"].clone()).unwrap();
+        let w: [f64; 3] = serde_json::from_value(s["angular_velocity"].clone()).unwrap();
+        assert!((0..3).all(|k| (vel[0][k] - given[i][k]).abs() < 1e-12 && (w[k] - omega[i][k]).abs() < 1e-12), "{s}");
+    }
+    // exact trajectories of order 6, C1 at the joins
+    let file = TempFile::new("interp-jq-minimal-spline.json", &text);
+    let tr: Value = serde_json::from_str(&ok(&[
+        "trajectory",
+        "--json",
+        "--scalar",
+        "rational",
+        file.path(),
+        "--point",
+        "1/2,-1,2",
+    ]))
+    .unwrap();
+    type Q = algebra_core::rational::Q;
+    let q = |v: &Value| algebra_core::rational::parse_rational(v.as_str().unwrap()).unwrap();
+    let segs = tr["segments"].as_array().unwrap();
+    assert_eq!(segs.len(), 3);
+    assert!(segs.iter().all(|s| s["degree"] == 6), "order 6");
+    // a segment's rational curve p(u) = P(u)/W(u) at u = 1 (`at_end`) or 0: the point and
+    // p' = (P' W - P W')/W² per unit t, with P' = ±n (P_a - P_b) from the control points
+    let value_and_rate = |seg: &Value, at_end: bool| -> Vec<Q> {
+        let wts: Vec<Q> = seg["weights"].as_array().unwrap().iter().map(q).collect();
+        let pts: Vec<Vec<Q>> =
+            seg["points"].as_array().unwrap().iter().map(|x| x.as_array().unwrap().iter().map(q).collect()).collect();
+        let n = wts.len() - 1;
+        let h = q(&seg["t1"]) - q(&seg["t0"]);
+        let (a, b) = if at_end { (n, n - 1) } else { (0, 1) };
+        let s = Q::from_integer((if at_end { n as i64 } else { -(n as i64) }).into());
+        let dw = &s * (&wts[a] - &wts[b]);
+        let rates = pts[a].iter().zip(&pts[b]).map(|(xa, xb)| {
+            let pa = &wts[a] * xa;
+            let dp = &s * (&pa - &wts[b] * xb);
+            (dp * &wts[a] - &pa * &dw) / (&wts[a] * &wts[a]) / &h
+        });
+        pts[a].iter().cloned().chain(rates).collect()
+    };
+    for w in segs.windows(2) {
+        assert_eq!(value_and_rate(&w[0], true), value_and_rate(&w[1], false), "not C1 at a join");
+    }
+    // the Q-motion spline's trajectories have degree 12
+    let q_spline = TempFile::new("interp-jq-q-spline.json", &text.replace("juttler-minimal-spline", "juttler-spline"));
+    let tr: Value =
+        serde_json::from_str(&ok(&["trajectory", "--json", q_spline.path(), "--point", "0.5,-1,2"])).unwrap();
+    assert_eq!(tr["segments"][0]["degree"], 12);
+}

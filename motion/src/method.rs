@@ -88,13 +88,18 @@ pub enum Method {
     /// (spec key `degree`, default `min(3, m)`) on averaged knots, their product a B-spline
     /// Q-motion of degree `2p`, C^(p-1) ([`crate::juttler::bspline_tr::bspline_tr`]).
     JuttlerBSpline,
+    /// Jüttler Sec. 6's closing remark, built here: the C1 spline whose segments are rational
+    /// motions of order 6 (Algorithm 2's cubic rotations, the origin on `w/|D|²` with `w` the
+    /// cubic Hermite data), velocities given or estimated by step 1
+    /// ([`crate::juttler::minimal_spline::minimal_spline`]).
+    JuttlerMinimalSpline,
 }
 
 /// The methods the contract names that come with later issues (name, issue): none today.
 pub const LATER: [(&str, u32); 0] = [];
 
 /// The implemented methods, as listed in messages.
-const IMPLEMENTED: &str = "ccm-additive, ccm-multiplicative, wl-linear, wl-quadratic, wl-direct, hexanion-linear, hexanion-decoupled, hexanion-blend, juttler-q-motion, juttler-affine, juttler-projective, juttler-trt, juttler-minimal, juttler-spline, juttler-bspline";
+const IMPLEMENTED: &str = "ccm-additive, ccm-multiplicative, wl-linear, wl-quadratic, wl-direct, hexanion-linear, hexanion-decoupled, hexanion-blend, juttler-q-motion, juttler-affine, juttler-projective, juttler-trt, juttler-minimal, juttler-spline, juttler-bspline, juttler-minimal-spline";
 
 /// Why a method name was not accepted.
 ///
@@ -145,7 +150,8 @@ crate::names::named!("motion::method::Method", Method {
     JuttlerTrt => "juttler-trt",
     JuttlerMinimal => "juttler-minimal",
     JuttlerSpline => "juttler-spline",
-    JuttlerBSpline => "juttler-bspline"
+    JuttlerBSpline => "juttler-bspline",
+    JuttlerMinimalSpline => "juttler-minimal-spline"
 });
 
 impl Method {
@@ -168,7 +174,8 @@ impl Method {
             | Method::JuttlerTrt
             | Method::JuttlerMinimal
             | Method::JuttlerSpline
-            | Method::JuttlerBSpline => SegmentKind::Additive,
+            | Method::JuttlerBSpline
+            | Method::JuttlerMinimalSpline => SegmentKind::Additive,
             Method::CcmMultiplicative
             | Method::WlLinear
             | Method::WlQuadratic
@@ -202,7 +209,8 @@ impl Method {
             | Method::JuttlerTrt
             | Method::JuttlerMinimal
             | Method::JuttlerSpline
-            | Method::JuttlerBSpline => "dual-quaternion-bezier",
+            | Method::JuttlerBSpline
+            | Method::JuttlerMinimalSpline => "dual-quaternion-bezier",
         }
     }
 
@@ -220,7 +228,7 @@ impl Method {
         match self {
             Method::CcmAdditive | Method::CcmMultiplicative => &["velocities", "shape", "gamma"],
             Method::JuttlerTrt => &["l1"],
-            Method::JuttlerSpline => &["velocities"],
+            Method::JuttlerSpline | Method::JuttlerMinimalSpline => &["velocities"],
             Method::HexanionBlend => &["weights"],
             Method::JuttlerBSpline => &["degree"],
             Method::WlLinear

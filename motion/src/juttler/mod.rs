@@ -39,6 +39,7 @@ pub mod additive_trajectory;
 pub mod bspline;
 pub mod bspline_tr;
 pub mod minimal;
+pub mod minimal_spline;
 pub mod parametrisation;
 pub mod projective;
 pub mod q_motion;

@@ -17,12 +17,14 @@
 use super::{BuiltMotion, Method, MethodMotion, MethodSegment};
 use crate::juttler::bspline_tr::bspline_tr;
 use crate::juttler::minimal::minimal;
+use crate::juttler::minimal_spline::minimal_spline;
 use crate::juttler::parametrisation::normalise;
 use crate::juttler::projective::projective;
 use crate::juttler::rotational::affine;
 use crate::juttler::spline::algorithm2;
 use crate::juttler::tr::{algorithm1, rotations, tr_method};
 use crate::juttler::trt::trt;
+use crate::juttler::velocity::estimate_velocities;
 use crate::juttler::{JuttlerError, KeyVelocity, Parametrisation, QMotion, SplineQMotion, parameters};
 use crate::repr::ReprError;
 use crate::repr::dual_quaternion::to_dual_quaternion_exact;
@@ -269,6 +271,21 @@ impl<T: Real> Parameters<T> {
     }
 }
 
+/// The spec's velocities as Jüttler's (`None` when not given), one per key pose.
+pub(super) fn given_velocities<T: Field>(
+    input: &MethodInput<T>,
+    poses: &[Pose<T>],
+) -> Result<Option<Vec<KeyVelocity<T>>>, BuildError> {
+    match &input.velocities {
+        None => Ok(None),
+        Some(v) if v.len() != poses.len() => {
+            let why = format!("{} velocities for {} poses", v.len(), poses.len());
+            Err(JuttlerError::Parameters { why }.into())
+        }
+        Some(v) => Ok(Some(key_velocities(poses, v)?)),
+    }
+}
+
 /// Space twists (`u` the velocity of the body point at the global origin) as Jüttler's
 /// `v⃗_i`, `ω⃗_i` (the velocity of the moving origin, at the key pose's position `p_i`):
 /// `v⃗_i = u + Ω × p_i`.
@@ -346,15 +363,15 @@ impl Method {
             | Method::JuttlerTrt
             | Method::JuttlerMinimal => self.global(input, &poses, &times)?,
             Method::JuttlerSpline => {
-                let velocities = match &input.velocities {
-                    None => None,
-                    Some(v) if v.len() != m => {
-                        let why = format!("{} velocities for {m} poses", v.len());
-                        return Err(JuttlerError::Parameters { why }.into());
-                    }
-                    Some(v) => Some(key_velocities(&poses, v)?),
-                };
+                let velocities = given_velocities(input, &poses)?;
                 self.spline_parts(&algorithm2(&poses, &times, velocities.as_deref())?)?
+            }
+            Method::JuttlerMinimalSpline => {
+                let velocities = match given_velocities(input, &poses)? {
+                    Some(v) => v,
+                    None => estimate_velocities(&poses, &times)?,
+                };
+                self.minimal_spline_parts(&poses, &times, &velocities)?
             }
             Method::JuttlerBSpline => {
                 let p = input.degree.unwrap_or(3.min(m - 1));
@@ -542,6 +559,20 @@ impl Method {
             .collect();
         let motion = Piecewise::new(spline.breaks().to_vec(), spline.segments().to_vec())?;
         Ok((segments, MethodMotion::QMotions(motion)))
+    }
+
+    /// The C1 spline of rational motions of order 6 (`juttler-minimal-spline`): one segment per
+    /// interval, its control data the segment's Q-motion (36).
+    pub(super) fn minimal_spline_parts<T: Real>(
+        self,
+        poses: &[Pose<T>],
+        times: &[T],
+        velocities: &[KeyVelocity<T>],
+    ) -> Result<(Vec<MethodSegment<T>>, MethodMotion<T>), BuildError> {
+        let pieces = minimal_spline(poses, times, velocities)?;
+        let segments =
+            pieces.iter().zip(times.windows(2)).map(|(p, w)| self.q_motion_segment(&p.q_motion(), w)).collect();
+        Ok((segments, MethodMotion::Minimal(Piecewise::new(times.to_vec(), pieces)?)))
     }
 
     /// A Q-motion over `[t0, t1]`: its control dual quaternions, and the same as motors.

@@ -24,10 +24,11 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use super::build::key_velocities;
+use super::build::given_velocities;
 use super::{BuildError, Method, MethodInput, MethodSegment, Parameters, RationalSegment, SurfaceSegment};
 use crate::juttler::bspline_tr::bspline_tr;
 use crate::juttler::minimal::{MinimalMotion, minimal_method};
+use crate::juttler::minimal_spline::minimal_spline;
 use crate::juttler::parametrisation::normalise;
 use crate::juttler::projective::projective;
 use crate::juttler::rotational::{affine, elliptic_normalised};
@@ -377,18 +378,20 @@ impl Method {
                 };
                 (vec![piece], vec![times[0].clone(), times[m - 1].clone()])
             }
-            Method::JuttlerSpline => {
-                let Some(v) = &input.velocities else {
+            Method::JuttlerSpline | Method::JuttlerMinimalSpline => {
+                if input.velocities.is_none() {
                     return Err(not_exact(
                         "the velocity estimate of Algorithm 2's step 1 (logarithms): give `velocities`",
                     ));
-                };
-                if v.len() != m {
-                    let why = format!("{} velocities for {m} poses", v.len());
-                    return Err(JuttlerError::Parameters { why }.into());
                 }
                 let unit = unit_poses(&poses)?;
-                spline_pieces(&SplineQMotion::hermite(&unit, &times, &key_velocities(&unit, v)?)?)
+                let v = given_velocities(input, &unit)?.unwrap_or_default();
+                if self == Method::JuttlerSpline {
+                    spline_pieces(&SplineQMotion::hermite(&unit, &times, &v)?)
+                } else {
+                    let pieces = minimal_spline(&unit, &times, &v)?;
+                    (pieces.into_iter().map(|p| Piece { q: p.q_motion(), minimal: Some(p) }).collect(), times.clone())
+                }
             }
             Method::JuttlerBSpline => {
                 let p = input.degree.unwrap_or(3.min(m - 1));
