@@ -255,6 +255,23 @@ pub fn trajectory_with(spec: &Value, label: &str, point: &str, scalar: &str) -> 
     }
 }
 
+/// `gam surface --json --scalar SCALAR SPEC.json --curve CURVE.json` of the spec `spec` and the
+/// curve `curve` (`{"points": [...], "weights": [...]}`), named `label` and `curve` in messages.
+///
+/// ```
+/// use serde_json::json;
+/// let spec = json!({"method": "juttler-affine", "poses": [{"position": [0, 0, 0]}, {"position": [0, 0, 2]}]});
+/// let v = gam::api::surface(&spec, "spec", &json!({"points": [[1, 0, 0], [1, 1, 0]]}), "rational")?;
+/// assert_eq!(v["segments"][0]["degrees"], json!([4, 1]));
+/// assert_eq!(v["segments"][0]["points"][0][1], json!(["1", "1", "0"]));
+/// # Ok::<(), gam::api::CliError>(())
+/// ```
+pub fn surface(spec: &Value, label: &str, curve: &Value, scalar: &str) -> Result<Value, CliError> {
+    let (spec, curve) = (spec.to_string(), curve.to_string());
+    let out = crate::surface::surface_in((label, &spec), ("curve", &curve), true, motion_scalar(scalar)?)?;
+    finite("surface", value(&out)?)
+}
+
 /// A pose object of the contract (any form) as a [`Pose`], checked as `gam pose` checks it
 /// (`label` names it in messages).
 ///

@@ -11,7 +11,7 @@
 //! exit 2, as for `gam trajectory`.
 
 use crate::error::CliError;
-use crate::interpolate::{build, read_spec, usage};
+use crate::interpolate::{build, usage};
 use crate::precision::{self, MotionScalar, OutScalar, json_list};
 use algebra_core::rational::Q;
 use algebra_core::{MpFloat, Ring};
@@ -33,11 +33,14 @@ struct CurveFile<N> {
 /// The most control points of a curve.
 const MAX_POINTS: usize = 1000;
 
-/// The curve of the file at `path` in number type `N`, mapped by `f`: homogeneous control
-/// points `(w, w p)`.
-fn read_curve<N: SpecNumber, T: Ring>(path: &str, f: &dyn Fn(&N) -> T) -> Result<RationalBezier<T>, CliError> {
-    let text = precision::read_file(path)?;
-    let text = crate::hermite::strip_comments(&text);
+/// The curve of the text `text` (named `path` in messages) in number type `N`, mapped by
+/// `f`: homogeneous control points `(w, w p)`.
+fn read_curve<N: SpecNumber, T: Ring>(
+    path: &str,
+    text: &str,
+    f: &dyn Fn(&N) -> T,
+) -> Result<RationalBezier<T>, CliError> {
+    let text = crate::hermite::strip_comments(text);
     let c: CurveFile<N> = serde_json::from_str(&N::prepare_text(&text)).map_err(|e| {
         usage(path, format!("invalid curve: {e} (expected {{\"points\": [[x, y, z], ...], \"weights\": [w, ...]}})"))
     })?;
@@ -137,21 +140,34 @@ fn render<T: OutScalar>(method: Method, patches: &[Patch<T>], json: bool) -> Str
 
 /// Runs `gam surface` on the spec file at `path` and the curve file at `curve`.
 pub fn surface(path: &str, curve: &str, json: bool, scalar: MotionScalar) -> Result<String, CliError> {
+    let (spec_text, curve_text) = (precision::read_file(path)?, precision::read_file(curve)?);
+    surface_in((path, &spec_text), (curve, &curve_text), json, scalar)
+}
+
+/// `gam surface` of the spec and curve texts, each with the label that names it in messages.
+pub(crate) fn surface_in(
+    (path, spec_text): (&str, &str),
+    (curve, curve_text): (&str, &str),
+    json: bool,
+    scalar: MotionScalar,
+) -> Result<String, CliError> {
     match scalar {
         MotionScalar::F64 => {
-            let x = read_curve::<f64, f64>(curve, &|c| *c)?;
-            let b = build(path, &read_spec(path)?)?;
+            let x = read_curve::<f64, f64>(curve, curve_text, &|c| *c)?;
+            let spec = crate::interpolate::read_text(path, spec_text)?
+                .ok_or_else(|| usage(path, "invalid spec: missing field `method`"))?;
+            let b = build(path, &spec)?;
             let method = b.motion.method();
             Ok(render(method, &patches(method, b.motion.kinematic_surfaces(&x), path)?, json))
         }
         MotionScalar::Rational => {
-            let x = read_curve::<Exact, Q>(curve, &|c| c.0.clone())?;
-            let m = precision::build_exact(path, &precision::read_exact_spec(path)?)?;
+            let x = read_curve::<Exact, Q>(curve, curve_text, &|c| c.0.clone())?;
+            let m = precision::build_exact(path, &precision::exact_spec(path, spec_text)?)?;
             Ok(render(m.method(), &patches(m.method(), m.kinematic_surfaces(&x), path)?, json))
         }
         MotionScalar::Mpfr(_) => scalar.run(|| {
-            let x = read_curve::<Exact, MpFloat>(curve, &|c| MpFloat::from_rational(&c.0))?;
-            let b = precision::build_mpfr(path, &precision::read_exact_spec(path)?)?;
+            let x = read_curve::<Exact, MpFloat>(curve, curve_text, &|c| MpFloat::from_rational(&c.0))?;
+            let b = precision::build_mpfr(path, &precision::exact_spec(path, spec_text)?)?;
             let method = b.method();
             Ok(render(method, &patches(method, b.kinematic_surfaces(&x), path)?, json))
         }),

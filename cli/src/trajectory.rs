@@ -1,5 +1,5 @@
 //! `gam trajectory [--json] SPEC.json --point x,y,z`: the trajectory of one body point under
-//! the motion of a `gam interpolate` spec, as exact rational Bézier curves, one per segment in
+//! the motion of a `gam interpolate` spec, as rational Bézier curves (exactly, with `--scalar rational`), one per segment in
 //! the segment's local parameter `u ∈ [0, 1]` (Wave 2 contract, shared/cli.md). The spec is
 //! built by the one build path of `gam interpolate` (`motion::method::Method::build`); the
 //! curves come from `motion::method::BuiltMotion::rational_trajectories`, i.e. the

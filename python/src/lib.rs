@@ -137,6 +137,20 @@ fn trajectory<'py>(
     mirror(py, || api::trajectory_with(&v, "spec", &point, scalar))
 }
 
+/// `gam surface --json --curve CURVE.json [--scalar S]`: the kinematic surface of a rational
+/// curve (`{"points": [[x, y, z], ...], "weights": [...]}`) under the spec's motion.
+#[pyfunction]
+#[pyo3(signature = (spec, curve, scalar = "f64"))]
+fn surface<'py>(
+    py: Python<'py>,
+    spec: &Bound<'py, PyAny>,
+    curve: &Bound<'py, PyAny>,
+    scalar: &str,
+) -> PyResult<Bound<'py, PyAny>> {
+    let (v, c) = (convert::to_json(spec, "spec")?, convert::to_json(curve, "curve")?);
+    mirror(py, || api::surface(&v, "spec", &c, scalar))
+}
+
 /// The Python module `gam`.
 #[pymodule]
 fn gam(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -150,6 +164,7 @@ fn gam(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(hermite, m)?)?;
     m.add_function(wrap_pyfunction!(interpolate, m)?)?;
     m.add_function(wrap_pyfunction!(trajectory, m)?)?;
+    m.add_function(wrap_pyfunction!(surface, m)?)?;
     m.add_class::<pose::PyPose>()?;
     m.add_class::<motion::PyMotion>()?;
     m.add_function(wrap_pyfunction!(motion::build, m)?)?;

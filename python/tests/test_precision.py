@@ -50,3 +50,15 @@ def test_refusals_carry_the_command_message():
         gam.interpolate(spec, scalar="rational")
     with pytest.raises(gam.GamError, match="invalid value 'poly' for '--scalar <S>'"):
         gam.interpolate(spec, scalar="poly")
+
+
+def test_surface_mirrors_the_cli(cli):
+    spec = CASES[0]["spec"]
+    curve = {"points": [[Fraction(1, 2), 0, 0], [0, 1, 1]], "weights": [1, 2]}
+    got = gam.surface(spec, curve, scalar="rational")
+    want = cli.json("surface", "--json", "--scalar", "rational", "spec.json", "--curve", "curve.json",
+                    files={"spec.json": spec, "curve.json": {"points": [["1/2", 0, 0], [0, 1, 1]], "weights": [1, 2]}})
+    assert got == want
+    assert got["segments"][0]["points"][0][0] == ["1/2", "0", "0"]
+    f64 = gam.surface(spec, {"points": [[0.5, 0, 0], [0, 1, 1]], "weights": [1, 2]})
+    assert f64["segments"][0]["degrees"] == got["segments"][0]["degrees"]

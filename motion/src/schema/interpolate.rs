@@ -176,8 +176,8 @@ impl std::str::FromStr for ParameterRule {
 ///
 /// ```
 /// use motion::schema::interpolate::{ParameterRule, ParameterSpec};
-/// assert_eq!(ParameterSpec::default(), ParameterSpec::Uniform);
-/// let _ = ParameterSpec::Rule(ParameterRule::Chordal);
+/// assert_eq!(ParameterSpec::<f64>::default(), ParameterSpec::Uniform);
+/// let _: ParameterSpec = ParameterSpec::Rule(ParameterRule::Chordal);
 /// ```
 #[derive(Debug, Clone, PartialEq, Default)]
 pub enum ParameterSpec<N = f64> {
