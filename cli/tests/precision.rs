@@ -92,11 +92,11 @@ fn f64_agrees_with_the_fractions_to_1e_12() {
     }
 }
 
-/// The key poses of a fixture case as exact (rotation quaternion, translation), and the
-/// image of `x` under each.
+/// The key poses of a fixture case (its `keys`: rotation quaternion and translation, whatever
+/// form the spec gives them in), exactly, and the image of `x` under each.
 fn key_images(case: &Value, x: &[Q; 3]) -> Vec<[Q; 3]> {
-    let poses = case["spec"]["poses"].as_array().unwrap();
-    poses
+    let keys = case["keys"].as_array().unwrap();
+    keys
         .iter()
         .map(|p| {
             let q: Vec<Q> = p["quaternion"].as_array().unwrap().iter().map(exact).collect();
