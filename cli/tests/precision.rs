@@ -96,8 +96,7 @@ fn f64_agrees_with_the_fractions_to_1e_12() {
 /// form the spec gives them in), exactly, and the image of `x` under each.
 fn key_images(case: &Value, x: &[Q; 3]) -> Vec<[Q; 3]> {
     let keys = case["keys"].as_array().unwrap();
-    keys
-        .iter()
+    keys.iter()
         .map(|p| {
             let q: Vec<Q> = p["quaternion"].as_array().unwrap().iter().map(exact).collect();
             let t: Vec<Q> = p["position"].as_array().unwrap().iter().map(exact).collect();

@@ -33,7 +33,7 @@ use crate::trajectory::{Trajectory, TrajectoryError, Velocities};
 use crate::velocity::{Twist, velocity};
 use crate::{Pose, Pseudoscalar, Vec3};
 use algebra_core::rational::{Q, rational_to_f64};
-use algebra_core::{Field, Real, Ring};
+use algebra_core::{Field, Jet, Real, Ring};
 use std::cmp::Ordering;
 use std::fmt;
 use std::ops::{Add, Div, Mul, Neg, Sub};
@@ -264,7 +264,9 @@ pub fn key_sensitivity<const N: usize>(
             times.len()
         )));
     }
-    lifted_evaluation(poses, times, velocities, kind, shapes, t, p, Some)
+    let (position, velocity, space_twist) =
+        lifted_evaluation::<f64, JetN<N>>(poses, times, velocities, kind, shapes, &t, p, Some)?;
+    Ok(KeySensitivity { position, velocity, space_twist })
 }
 
 /// The derivatives of the body point, its velocity and the space twist at one `t` along every
@@ -272,24 +274,25 @@ pub fn key_sensitivity<const N: usize>(
 /// along parameter `k` (`6i..6i+6`: the twist directions of key pose `i`; `6m + i`: key time
 /// `i`; the module docs give the directions).
 #[derive(Clone, Debug, PartialEq)]
-pub struct KeyJacobian {
+pub struct KeyJacobian<T = f64> {
     /// `F_{S(t)}(p)`.
-    pub position: [f64; 3],
+    pub position: [T; 3],
     /// Its velocity `d/dt`.
-    pub velocity: [f64; 3],
+    pub velocity: [T; 3],
     /// The space twist `(Ω, u)` at `t`.
-    pub space_twist: Twist<f64>,
+    pub space_twist: Twist<T>,
     /// `d position / d parameter_k` for `k` in `0..7m`.
-    pub d_position: Vec<[f64; 3]>,
+    pub d_position: Vec<[T; 3]>,
     /// `d velocity / d parameter_k`.
-    pub d_velocity: Vec<[f64; 3]>,
+    pub d_velocity: Vec<[T; 3]>,
     /// `d (Ω, u) / d parameter_k` as `[Ωx, Ωy, Ωz, ux, uy, uz]`.
-    pub d_space_twist: Vec<[f64; 6]>,
+    pub d_space_twist: Vec<[T; 6]>,
 }
 
-/// [`key_sensitivity`] without the const parameter: the same derivatives for any number of
-/// key poses, one evaluation per parameter (`7m` evaluations over single-direction dual
-/// numbers instead of one over `JetN<7m>`; the values are identical).
+/// [`key_sensitivity`] without the const parameter and over any [`Real`] scalar (`f64`, MPFR,
+/// ...): the same derivatives for any number of key poses, one evaluation per parameter (`7m`
+/// evaluations over the single-direction dual numbers [`Jet<T>`] instead of one over
+/// `JetN<7m>`; over `f64` the values are identical).
 ///
 /// ```
 /// use motion::jacobian::key_jacobian;
@@ -302,86 +305,106 @@ pub struct KeyJacobian {
 /// assert!((j.d_position[6 + 3][0] - 1.0).abs() < 1e-14); // moving the second pose along x
 /// # Ok::<(), motion::trajectory::TrajectoryError>(())
 /// ```
-pub fn key_jacobian(
-    poses: &[Pose<f64>],
-    times: &[f64],
-    velocities: &Velocities<f64>,
+pub fn key_jacobian<T: Real>(
+    poses: &[Pose<T>],
+    times: &[T],
+    velocities: &Velocities<T>,
     kind: SegmentKind,
-    shapes: &HermiteShapes<f64>,
-    t: f64,
-    p: &[f64; 3],
-) -> Result<KeyJacobian, TrajectoryError> {
+    shapes: &HermiteShapes<T>,
+    t: T,
+    p: &[T; 3],
+) -> Result<KeyJacobian<T>, TrajectoryError> {
     let m = poses.len();
     if times.len() != m {
         return Err(TrajectoryError::Input(format!("key_jacobian: {m} poses and {} times", times.len())));
     }
-    let re = |x: &[JetN<1>; 3]| x.map(|c| c.re);
-    let d = |x: &[JetN<1>; 3]| x.map(|c| c.eps[0]);
-    let twist_d = |w: &Twist<JetN<1>>| {
+    let re = |x: &[Jet<T>; 3]| x.clone().map(|c| c.re);
+    let d = |x: &[Jet<T>; 3]| x.clone().map(|c| c.eps);
+    let twist_d = |w: &Twist<Jet<T>>| {
         let (a, l) = (&w.angular, &w.linear);
-        [a.x.eps[0], a.y.eps[0], a.z.eps[0], l.x.eps[0], l.y.eps[0], l.z.eps[0]]
+        [&a.x, &a.y, &a.z, &l.x, &l.y, &l.z].map(|c| c.eps.clone())
     };
-    let mut out: Option<KeyJacobian> = None;
+    let mut out: Option<KeyJacobian<T>> = None;
     for k in 0..7 * m {
-        let s = lifted_evaluation::<1>(poses, times, velocities, kind, shapes, t, p, |j| (j == k).then_some(0))?;
+        let (position, velocity, twist) =
+            lifted_evaluation::<T, Jet<T>>(poses, times, velocities, kind, shapes, &t, p, |j| (j == k).then_some(0))?;
         let j = out.get_or_insert_with(|| KeyJacobian {
-            position: re(&s.position),
-            velocity: re(&s.velocity),
+            position: re(&position),
+            velocity: re(&velocity),
             space_twist: Twist {
-                angular: s.space_twist.angular.map(|c| c.re),
-                linear: s.space_twist.linear.map(|c| c.re),
+                angular: twist.angular.map(|c| c.re.clone()),
+                linear: twist.linear.map(|c| c.re.clone()),
             },
             d_position: Vec::with_capacity(7 * m),
             d_velocity: Vec::with_capacity(7 * m),
             d_space_twist: Vec::with_capacity(7 * m),
         });
-        j.d_position.push(d(&s.position));
-        j.d_velocity.push(d(&s.velocity));
-        j.d_space_twist.push(twist_d(&s.space_twist));
+        j.d_position.push(d(&position));
+        j.d_velocity.push(d(&velocity));
+        j.d_space_twist.push(twist_d(&twist));
     }
     out.ok_or_else(|| TrajectoryError::Input("key_jacobian needs at least one key pose".into()))
 }
 
-/// The evaluation of [`key_sensitivity`] over `JetN<N>`, parameter `k` (module docs) carried by
-/// the jet direction `slot(k)` (`None`: held fixed).
-#[allow(clippy::too_many_arguments)]
-fn lifted_evaluation<const N: usize>(
-    poses: &[Pose<f64>],
-    times: &[f64],
-    velocities: &Velocities<f64>,
+/// A scalar the key parameters are lifted to: derivative directions over a base scalar `T`
+/// ([`JetN`] over `f64`, [`Jet`] over any [`Real`]).
+trait Lift<T>: Real {
+    /// `x` with no derivative.
+    fn constant_of(x: &T) -> Self;
+    /// `x` plus `e` times the infinitesimal of direction `dir` (`None`: a constant).
+    fn seeded(x: &T, dir: Option<usize>, e: &T) -> Self;
+}
+
+impl<const N: usize> Lift<f64> for JetN<N> {
+    fn constant_of(x: &f64) -> Self {
+        JetN::constant(*x)
+    }
+    fn seeded(x: &f64, dir: Option<usize>, e: &f64) -> Self {
+        JetN { re: *x, eps: std::array::from_fn(|j| if dir == Some(j) { *e } else { 0.0 }) }
+    }
+}
+
+impl<T: Real> Lift<T> for Jet<T> {
+    fn constant_of(x: &T) -> Self {
+        Jet::constant(x.clone())
+    }
+    fn seeded(x: &T, dir: Option<usize>, e: &T) -> Self {
+        Jet::new(x.clone(), if dir == Some(0) { e.clone() } else { T::zero() })
+    }
+}
+
+/// The evaluation of [`key_sensitivity`] over the lifted scalar `L` (`JetN<N>` or `Jet<T>`),
+/// parameter `k` (module docs) carried by the direction `slot(k)` (`None`: held fixed): the
+/// body point, its velocity and the space twist.
+#[allow(clippy::too_many_arguments, clippy::type_complexity)]
+fn lifted_evaluation<T: Real, L: Lift<T>>(
+    poses: &[Pose<T>],
+    times: &[T],
+    velocities: &Velocities<T>,
     kind: SegmentKind,
-    shapes: &HermiteShapes<f64>,
-    t: f64,
-    p: &[f64; 3],
+    shapes: &HermiteShapes<T>,
+    t: &T,
+    p: &[T; 3],
     slot: impl Fn(usize) -> Option<usize>,
-) -> Result<KeySensitivity<N>, TrajectoryError> {
+) -> Result<([L; 3], [L; 3], Twist<L>), TrajectoryError> {
     let m = poses.len();
-    let c = |x: &f64| JetN::<N>::constant(*x);
+    let c = |x: &T| L::constant_of(x);
+    let half = T::from_ratio(1, 2);
     let mut lifted = Vec::with_capacity(m);
     for (i, s) in poses.iter().enumerate() {
-        let d = |k: usize| JetN::<N> {
-            re: 0.0,
-            eps: std::array::from_fn(|j| if slot(6 * i + k) == Some(j) { 0.5 } else { 0.0 }),
-        };
+        let d = |k: usize| L::seeded(&T::zero(), slot(6 * i + k), &half);
         let g = Twist { angular: Vec3::new(d(0), d(1), d(2)), linear: Vec3::new(d(3), d(4), d(5)) }.to_bivector();
         lifted.push(s.map_scalar(&c) * Pose::exp(&Pose::from(&g))?);
     }
-    let times: Vec<JetN<N>> = times
-        .iter()
-        .enumerate()
-        .map(|(i, x)| match slot(6 * m + i) {
-            Some(j) => JetN::variable(*x, j),
-            None => JetN::constant(*x),
-        })
-        .collect();
+    let times: Vec<L> = times.iter().enumerate().map(|(i, x)| L::seeded(x, slot(6 * m + i), &T::one())).collect();
     let velocities = match velocities {
-        Velocities::Given(v) => {
-            Velocities::Given(v.iter().map(|w| Twist { angular: w.angular.map(c), linear: w.linear.map(c) }).collect())
-        }
+        Velocities::Given(v) => Velocities::Given(
+            v.iter().map(|w| Twist { angular: w.angular.clone().map(c), linear: w.linear.clone().map(c) }).collect(),
+        ),
         Velocities::CatmullRom => Velocities::CatmullRom,
         Velocities::Zero => Velocities::Zero,
     };
-    let shape = |s: &Shape<f64>| Shape::new(c(&s.lambda), Pseudoscalar::new(c(&s.gamma.scalar), c(&s.gamma.e123inf)));
+    let shape = |s: &Shape<T>| Shape::new(c(&s.lambda), Pseudoscalar::new(c(&s.gamma.scalar), c(&s.gamma.e123inf)));
     let shapes = match shapes {
         HermiteShapes::Common(s) => HermiteShapes::Common(shape(s)),
         HermiteShapes::PerPose(v) => HermiteShapes::PerPose(v.iter().map(shape).collect()),
@@ -390,8 +413,8 @@ fn lifted_evaluation<const N: usize>(
         }
     };
     let tr = Trajectory::through(&lifted, &times, &velocities, kind, &shapes)?;
-    let tj = c(&t);
+    let tj = c(t);
     let vel = velocity(tr.motion(), &tj)?;
-    let (position, v) = vel.body_point_velocity(&p.map(|x| c(&x)))?;
-    Ok(KeySensitivity { position, velocity: v, space_twist: vel.twist() })
+    let (position, v) = vel.body_point_velocity(&p.each_ref().map(c))?;
+    Ok((position, v, vel.twist()))
 }

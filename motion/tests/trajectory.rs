@@ -250,29 +250,92 @@ fn jacobian_of_a_tool_point_matches_central_differences() {
     }
 }
 
-/// `key_jacobian` (no const parameter, one single-direction pass per parameter) gives exactly
-/// the derivatives of `key_sensitivity::<35>`, which the test above checks against central
-/// differences: a dual-number derivative is computed slot by slot, so the two agree bit for bit.
+/// `key_jacobian` (no const parameter, one single-direction pass per parameter, over
+/// `Jet<f64>`) gives the derivatives of `key_sensitivity::<35>` (over `JetN<35>`), which the test
+/// above checks against central differences: the same derivatives, to rounding (the two dual
+/// number types order a few operations differently, so they agree to a few ulps, not bit for bit).
 #[test]
 fn key_jacobian_needs_no_const_parameter_and_equals_key_sensitivity() {
     use motion::jacobian::{key_jacobian, key_sensitivity};
     let poses: Vec<Pose<f64>> = key_isometries().iter().map(Pose::from_na_isometry).collect();
+    let close = |a: &[f64], b: &[f64], what: &str| {
+        for (x, y) in a.iter().zip(b) {
+            assert!((x - y).abs() <= 1e-14 * (1.0 + y.abs()), "{what}: {x} vs {y}");
+        }
+    };
     for kind in [SegmentKind::Additive, SegmentKind::Multiplicative] {
         let shapes = HermiteShapes::unit();
         let s = key_sensitivity::<35>(&poses, &TIMES, &Velocities::CatmullRom, kind, &shapes, 1.7, &TOOL).unwrap();
         let j = key_jacobian(&poses, &TIMES, &Velocities::CatmullRom, kind, &shapes, 1.7, &TOOL).unwrap();
-        assert_eq!(j.position, s.position.map(|x| x.re));
-        assert_eq!(j.velocity, s.velocity.map(|x| x.re));
+        close(&j.position, &s.position.map(|x| x.re), "position");
+        close(&j.velocity, &s.velocity.map(|x| x.re), "velocity");
         assert_eq!(j.d_position.len(), 35);
         for k in 0..35 {
-            assert_eq!(j.d_position[k], s.position.map(|x| x.eps[k]), "{kind} position {k}");
-            assert_eq!(j.d_velocity[k], s.velocity.map(|x| x.eps[k]), "{kind} velocity {k}");
+            close(&j.d_position[k], &s.position.map(|x| x.eps[k]), &format!("{kind} position {k}"));
+            close(&j.d_velocity[k], &s.velocity.map(|x| x.eps[k]), &format!("{kind} velocity {k}"));
             let w = &s.space_twist;
             let want = [w.angular.x, w.angular.y, w.angular.z, w.linear.x, w.linear.y, w.linear.z].map(|x| x.eps[k]);
-            assert_eq!(j.d_space_twist[k], want, "{kind} twist {k}");
+            close(&j.d_space_twist[k], &want, &format!("{kind} twist {k}"));
         }
     }
     let err =
         key_jacobian(&poses, &TIMES[..2], &Velocities::Zero, SegmentKind::Additive, &HermiteShapes::unit(), 0.5, &TOOL);
     assert!(matches!(err, Err(motion::trajectory::TrajectoryError::Input(_))));
+}
+
+/// `key_jacobian` over MPFR at 200 bits: equal to the f64 Jacobian to 1e-12 (the same
+/// derivatives), and against central differences of the 200-bit trajectory with the key times
+/// and the key poses moved by ±1e-20, to 1e-30 relative: derivatives far beyond f64, checked by
+/// an independent route (differences need no dual numbers).
+#[test]
+fn key_jacobian_over_mpfr_matches_f64_and_high_precision_differences() {
+    use algebra_core::{MpFloat, PrecisionGuard, Real};
+    use motion::jacobian::key_jacobian;
+    use motion::velocity::velocity as vel;
+    let _bits = PrecisionGuard::new(200);
+    let lo: Vec<Pose<f64>> = key_isometries().iter().map(Pose::from_na_isometry).collect();
+    let m = |x: &f64| MpFloat::from_f64(*x);
+    let poses: Vec<Pose<MpFloat>> = lo.iter().map(|p| p.map_scalar(&m)).collect();
+    let times: Vec<MpFloat> = TIMES.iter().map(m).collect();
+    let (t, tool) = (MpFloat::from_f64(1.7), TOOL.each_ref().map(m));
+    let kind = SegmentKind::Multiplicative;
+    let hi =
+        key_jacobian(&poses, &times, &Velocities::CatmullRom, kind, &HermiteShapes::unit(), t.clone(), &tool).unwrap();
+    let f = key_jacobian(&lo, &TIMES, &Velocities::CatmullRom, kind, &HermiteShapes::unit(), 1.7, &TOOL).unwrap();
+    let scale = f.d_position.iter().flatten().fold(0.0f64, |a, x| a.max(x.abs()));
+    for (a, b) in hi.d_position.iter().flatten().zip(f.d_position.iter().flatten()) {
+        assert!((a.to_f64() - b).abs() < 1e-12 * scale, "{} vs {b}", a.to_f64());
+    }
+    let position = |p: &[Pose<MpFloat>], times: &[MpFloat]| -> [MpFloat; 3] {
+        let tr = Trajectory::through(p, times, &Velocities::CatmullRom, kind, &HermiteShapes::unit()).unwrap();
+        vel(tr.motion(), &t).unwrap().body_point_velocity(&tool).unwrap().0
+    };
+    let h = MpFloat::from_f64(1e-20);
+    let two_h = h.clone() + h.clone();
+    let mut worst = 0.0f64;
+    // the key times (5) and the six twist directions of key pose 2
+    let directions: Vec<usize> = (30..35).chain(12..18).collect();
+    for j in directions {
+        let moved = |sign: f64| {
+            let (mut p, mut ts) = (poses.clone(), times.clone());
+            let step = h.clone() * MpFloat::from_f64(sign);
+            if j < 30 {
+                let (i, k) = (j / 6, j % 6);
+                let mut c: [MpFloat; 6] = std::array::from_fn(|_| MpFloat::from_f64(0.0));
+                c[k] = step * MpFloat::from_f64(0.5);
+                let [a, b, cc, d, e, g] = c;
+                let tw = Twist { angular: Vec3::new(a, b, cc), linear: Vec3::new(d, e, g) }.to_bivector();
+                p[i] = p[i].clone() * Pose::exp(&Pose::from(&tw)).unwrap();
+            } else {
+                ts[j - 30] = ts[j - 30].clone() + step;
+            }
+            position(&p, &ts)
+        };
+        let (plus, minus) = (moved(1.0), moved(-1.0));
+        for r in 0..3 {
+            let fd = (plus[r].clone() - minus[r].clone()) / two_h.clone();
+            worst = worst.max((fd - hi.d_position[j][r].clone()).to_f64().abs() / scale);
+        }
+    }
+    assert!(worst < 1e-30, "worst relative difference {worst:e}");
 }
