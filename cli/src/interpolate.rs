@@ -99,22 +99,24 @@ pub(crate) fn check_sampling(
     n: usize,
     passes: usize,
 ) -> Result<(), CliError> {
-    check_segments(motion.method(), motion.segments(), points, n, passes)
+    check_segments(motion.method(), motion.segments(), points, n, passes, 1.0)
 }
 
-/// [`check_sampling`] of a method's segments in any scalar.
-fn check_segments<T: Ring>(
+/// [`check_sampling`] of a method's segments in any scalar, the f64 estimate times `factor`
+/// ([`MotionScalar::cost_factor`]).
+pub(crate) fn check_segments<T: Ring>(
     method: Method,
     segments: &[MethodSegment<T>],
     points: usize,
     n: usize,
     passes: usize,
+    factor: f64,
 ) -> Result<(), CliError> {
     let points = points.max(1);
     let degree = segments.iter().map(|s| s.degree).max().unwrap_or(0);
     crate::budget::check(
         &format!("sampling {points} body points of degree-{degree} segments at {n} values"),
-        crate::budget::sampling_work(Tableau::of_method(method), degree, n, passes) * points as f64,
+        crate::budget::sampling_work(Tableau::of_method(method), degree, n, passes) * points as f64 * factor,
     )
 }
 
@@ -327,7 +329,7 @@ pub(crate) fn precise(label: &str, text: &str, scalar: MotionScalar) -> Result<P
     if scalar == MotionScalar::Rational {
         let m = precision::build_exact(label, &spec)?;
         if n > 0 {
-            check_segments(m.method(), m.segments(), bodies.len(), n, 1)?;
+            check_segments(m.method(), m.segments(), bodies.len(), n, 1, scalar.cost_factor(m.key_poses().len()))?;
         }
         let header = (m.method(), m.times(), m.segments(), m.key_poses());
         let (times, motion) = (m.times().to_vec(), m.clone());
@@ -341,7 +343,7 @@ pub(crate) fn precise(label: &str, text: &str, scalar: MotionScalar) -> Result<P
     let b = precision::build_mpfr(label, &spec)?;
     let bodies: Vec<[MpFloat; 3]> = bodies.iter().map(|p| p.each_ref().map(MpFloat::from_rational)).collect();
     if n > 0 {
-        check_segments(b.method(), b.segments(), bodies.len(), n, 1)?;
+        check_segments(b.method(), b.segments(), bodies.len(), n, 1, scalar.cost_factor(b.key_poses().len()))?;
     }
     let header = (b.method(), b.times(), b.segments(), b.key_poses());
     let (times, motion) = (b.times().to_vec(), b.clone());
@@ -387,18 +389,18 @@ fn interpolate_f64(path: &str, json: bool) -> Result<String, CliError> {
 /// body point is the first of `body_points`; sample `i` is at `t_0 + (t_m - t_0) i/(n-1)`.
 pub(crate) fn spec_sampler(label: &str, spec: &InterpolateSpec, n: usize, passes: usize) -> Result<Sampler, CliError> {
     let b = build(label, spec)?;
-    motion_sampler(b.motion, b.body_points.first().copied(), n, passes)
+    motion_sampler(b.motion, b.body_points.first().copied(), (n, passes, 1.0))
 }
 
-/// The sampler of a built motion over a real scalar and one body point (default the origin).
+/// The sampler of a built motion over a real scalar and one body point (default the origin);
+/// its work is checked as f64's times `factor` ([`MotionScalar::cost_factor`]).
 pub(crate) fn motion_sampler<T: Real + OutScalar>(
     motion: BuiltMotion<T>,
     body_point: Option<[T; 3]>,
-    n: usize,
-    passes: usize,
+    (n, passes, factor): (usize, usize, f64),
 ) -> Result<Sampler<T>, CliError> {
     let body_point = body_point.unwrap_or_else(|| [T::zero(), T::zero(), T::zero()]);
-    check_segments(motion.method(), motion.segments(), 1, n, passes)?;
+    check_segments(motion.method(), motion.segments(), 1, n, passes, factor)?;
     let (kind, degree, segments) = (motion.method().kind(), motion.max_degree(), motion.segments().len());
     let point = [body_point.clone()];
     let at = move |i: usize| {

@@ -48,6 +48,40 @@ impl std::str::FromStr for MotionScalar {
 }
 
 impl MotionScalar {
+    /// The `--scalar` spelling.
+    ///
+    /// ```
+    /// assert_eq!(gam::precision::MotionScalar::Mpfr(256).name(), "mpfr:256");
+    /// ```
+    pub fn name(self) -> String {
+        match self {
+            MotionScalar::F64 => "f64".into(),
+            MotionScalar::Rational => "rational".into(),
+            MotionScalar::Mpfr(bits) => format!("mpfr:{bits}"),
+        }
+    }
+
+    /// How much dearer an arithmetic operation is than in f64, for a motion through `m` key
+    /// poses, as a factor of the f64 work estimates ([`crate::budget`]): exact rationals carry
+    /// coefficients whose size grows about linearly with `m` in the global constructions (the
+    /// collocation's denominators: about `16 m` bits, so `(1 + 16m/64)²`-ish per operation,
+    /// taken as `1 + m²/16`); MPFR at `BITS` bits costs about `(1 + BITS/64)^1.5`. Measured on
+    /// `juttler-q-motion` and `juttler-bspline` with random rational key poses (debug build): 16
+    /// poses 3.7 s, 20 poses 17 s, 40 poses past two minutes before the budget refused them.
+    ///
+    /// ```
+    /// use gam::precision::MotionScalar;
+    /// assert_eq!(MotionScalar::F64.cost_factor(40), 1.0);
+    /// assert_eq!(MotionScalar::Rational.cost_factor(8), 5.0);
+    /// ```
+    pub fn cost_factor(self, m: usize) -> f64 {
+        match self {
+            MotionScalar::F64 => 1.0,
+            MotionScalar::Rational => 1.0 + (m * m) as f64 / 16.0,
+            MotionScalar::Mpfr(bits) => (1.0 + f64::from(bits) / 64.0).powf(1.5),
+        }
+    }
+
     /// Runs `f` with MPFR's default precision set to the command's (for `mpfr:BITS`).
     pub(crate) fn run<R>(self, f: impl FnOnce() -> R) -> R {
         let _guard = match self {
@@ -143,24 +177,32 @@ fn build_error(label: &str, spec: &InterpolateSpec<Exact>, source: BuildError) -
 }
 
 /// The budget of a global interpolant, as for f64.
-fn check_budget(spec: &InterpolateSpec<Exact>) -> Result<(), CliError> {
+/// The budget of building a spec's motion in `scalar`: the global interpolants as in f64
+/// ([`crate::budget::global_build_work`]), and `juttler-bspline`'s dense collocation (`50 m³`
+/// units), times [`MotionScalar::cost_factor`].
+fn check_budget(spec: &InterpolateSpec<Exact>, scalar: MotionScalar) -> Result<(), CliError> {
     let m = spec.poses.len();
-    if let Some(work) = crate::budget::global_build_work(spec.method, m) {
-        crate::budget::check(&format!("building {} through {m} key poses", spec.method.name()), work)?;
+    let work = match spec.method {
+        motion::method::Method::JuttlerBSpline => Some(50.0 * (m as f64).powi(3)),
+        method => crate::budget::global_build_work(method, m),
+    };
+    if let Some(work) = work {
+        let what = format!("building {} through {m} key poses ({})", spec.method.name(), scalar.name());
+        crate::budget::check(&what, work * scalar.cost_factor(m))?;
     }
     Ok(())
 }
 
 /// Builds a spec exactly (`label` names it in messages).
 pub(crate) fn build_exact(label: &str, spec: &InterpolateSpec<Exact>) -> Result<ExactMotion, CliError> {
-    check_budget(spec)?;
+    check_budget(spec, MotionScalar::Rational)?;
     let input = exact_input(label, spec)?;
     spec.method.build_exact(&input).map_err(|e| build_error(label, spec, e))
 }
 
 /// Builds a spec at the current MPFR precision (inside [`MotionScalar::run`]).
 pub(crate) fn build_mpfr(label: &str, spec: &InterpolateSpec<Exact>) -> Result<BuiltMotion<MpFloat>, CliError> {
-    check_budget(spec)?;
+    check_budget(spec, MotionScalar::Mpfr(algebra_core::default_precision()))?;
     let input = mpfr_input(label, spec)?;
     spec.method.build(&input).map_err(|e| build_error(label, spec, e))
 }

@@ -234,7 +234,8 @@ pub fn sample(path: &str, n: usize, json: bool, scalar: MotionScalar) -> Result<
                 let spec = precision::read_exact_spec(path)?;
                 let b = precision::build_mpfr(path, &spec)?;
                 let body = spec.body_points.as_ref().and_then(|p| p.first()).map(|p| p.each_ref().map(to));
-                crate::interpolate::motion_sampler(b, body, n, 2)?
+                let factor = scalar.cost_factor(b.key_poses().len());
+                crate::interpolate::motion_sampler(b, body, (n, 2, factor))?
             } else {
                 let spec = crate::hermite::exact_spec(path, &precision::read_file(path)?)?.map(&to);
                 spec.check().map_err(|e| crate::hermite::spec_error(path, e))?;
@@ -274,8 +275,14 @@ fn exact_sampler(path: &str, n: usize) -> Result<Sampler<Q>, CliError> {
     let m = precision::build_exact(path, &spec)?;
     let body_point = precision::body_points(&spec).swap_remove(0);
     let degree = m.segments().iter().map(|s| s.degree).max().unwrap_or(0);
-    let work = crate::budget::sampling_work(Tableau::of_method(m.method()), degree, n, 2);
-    crate::budget::check(&format!("sampling degree-{degree} segments at {n} values"), work)?;
+    crate::interpolate::check_segments(
+        m.method(),
+        m.segments(),
+        1,
+        n,
+        2,
+        MotionScalar::Rational.cost_factor(m.key_poses().len()),
+    )?;
     let (kind, segments, point) = (m.method().kind(), m.segments().len(), body_point.clone());
     let at = move |i: usize| {
         let times = m.times();

@@ -78,10 +78,7 @@ fn patches<T: OutScalar>(
     surfaces: Result<Vec<SurfaceSegment<T>>, BuildError>,
     label: &str,
 ) -> Result<Vec<Patch<T>>, CliError> {
-    let surfaces = surfaces.map_err(|e| match e {
-        BuildError::NotRational { .. } => usage(label, e),
-        e => CliError::math(format!("{method}: {e}")),
-    })?;
+    let surfaces = surfaces.map_err(|e| crate::trajectory::rational_error(method, label, e))?;
     let mut out = Vec::with_capacity(surfaces.len());
     for s in surfaces {
         let net = s.surface.control();

@@ -42,10 +42,7 @@ fn curves_of<T: OutScalar>(
     label: &str,
 ) -> Result<Vec<Curve<T>>, CliError> {
     let x_text = || format!("[{}]", x.iter().map(OutScalar::text).collect::<Vec<_>>().join(", "));
-    let segments = segments.map_err(|e| match e {
-        BuildError::NotRational { .. } => usage(label, e),
-        e => CliError::math(format!("{method}: {e}")),
-    })?;
+    let segments = segments.map_err(|e| rational_error(method, label, e))?;
     let mut out = Vec::with_capacity(segments.len());
     for s in segments {
         let weights = s.curve.weights();
@@ -57,6 +54,16 @@ fn curves_of<T: OutScalar>(
         out.push((s.t0, s.t1, s.curve.degree(), weights, points));
     }
     Ok(out)
+}
+
+/// A refusal of a motion's rational segments (`gam trajectory`, `gam surface`): a method whose
+/// motions are not rational is bad input (exit 2, `label` names the spec), anything else a
+/// mathematical failure of the method (exit 1).
+pub(crate) fn rational_error(method: Method, label: &str, e: BuildError) -> CliError {
+    match e {
+        BuildError::NotRational { .. } => usage(label, e),
+        e => CliError::math(format!("{method}: {e}")),
+    }
 }
 
 /// The curves of body point `x` under the f64 motion of a spec (`label` names it in messages).

@@ -432,3 +432,27 @@ fn kinematic_surfaces_sweep_the_curve_through_the_key_poses() {
     let e = fails(&["surface", spec.path(), "--curve", bad.path()], 2);
     assert!(e.contains("`weights` has 2 values for 1 points"), "{e}");
 }
+
+/// Exact and MPFR work is budgeted like f64 work, scaled by what an operation costs there
+/// (`MotionScalar::cost_factor`): a global interpolant through 40 rational key poses, which ran
+/// past two minutes, and 20 poses at 100000 bits are refused at once (exit 2), not run.
+#[test]
+fn exact_and_mpfr_work_is_budgeted() {
+    let poses: Vec<String> = (0..40)
+        .map(|i| format!(r#"{{"quaternion": [{}, 0.6, 0, 0.8], "position": [{i}, {}, 0.5]}}"#, 1 + i % 3, i % 7))
+        .collect();
+    let spec = TempFile::new(
+        "precision-budget.json",
+        &format!(r#"{{"method": "juttler-q-motion", "poses": [{}]}}"#, poses.join(", ")),
+    );
+    let started = std::time::Instant::now();
+    let e = fails(&["interpolate", "--scalar", "rational", spec.path()], 2);
+    assert!(e.contains("40 key poses (rational)") && e.contains("GAM_WORK_BUDGET"), "{e}");
+    let twenty = TempFile::new(
+        "precision-budget-20.json",
+        &format!(r#"{{"method": "juttler-q-motion", "poses": [{}]}}"#, poses[..20].join(", ")),
+    );
+    let e = fails(&["trajectory", "--scalar", "mpfr:100000", twenty.path(), "--point", "0,0,0"], 2);
+    assert!(e.contains("(mpfr:100000)"), "{e}");
+    assert!(started.elapsed().as_secs() < 10, "refused before the work");
+}
