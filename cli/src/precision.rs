@@ -150,7 +150,8 @@ pub(crate) fn read_exact_spec(path: &str) -> Result<InterpolateSpec<Exact>, CliE
 /// A `gam interpolate` spec read with every literal exact from its text (`label` names it in
 /// messages; `//` comments allowed).
 pub(crate) fn exact_spec(label: &str, text: &str) -> Result<InterpolateSpec<Exact>, CliError> {
-    let text = strip_comments(text);
+    // every literal quoted first: `1e400` is a rational, not an f64 out of range
+    let text = motion::schema::quote_numbers(&strip_comments(text));
     let value = motion::schema::parse_json(&text).map_err(|e| usage(label, e))?;
     if value.get("method").is_none() {
         return Err(usage(label, "invalid spec: missing field `method`"));

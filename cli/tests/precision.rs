@@ -456,3 +456,19 @@ fn exact_and_mpfr_work_is_budgeted() {
     assert!(e.contains("(mpfr:100000)"), "{e}");
     assert!(started.elapsed().as_secs() < 10, "refused before the work");
 }
+
+/// A literal beyond f64 is a rational like any other under `--scalar rational` (and an MPFR
+/// number under `mpfr:BITS`); f64 refuses it as before.
+#[test]
+fn literals_beyond_f64_are_read_exactly() {
+    let spec = TempFile::new(
+        "precision-1e400.json",
+        r#"{"method": "juttler-affine", "samples": 2, "poses": [{"position": [1e400, 0, 0]}, {"position": [1, 0, 0]}]}"#,
+    );
+    let out: Value =
+        serde_json::from_str(&ok(&["interpolate", "--json", "--scalar", "rational", spec.path()])).unwrap();
+    assert_eq!(out["samples"][0]["points"][0][0], Value::from(format!("1{}", "0".repeat(400))));
+    let hi: Value = serde_json::from_str(&ok(&["interpolate", "--json", "--scalar", "mpfr:64", spec.path()])).unwrap();
+    assert!(hi["samples"][0]["points"][0][0].as_str().unwrap().ends_with("e400"), "{hi}");
+    assert!(fails(&["interpolate", spec.path()], 2).contains("number out of range"));
+}
