@@ -117,8 +117,12 @@ pub(crate) const ARC_POINTS: usize = 61;
 
 /// Fig. 8's dashed arcs: the paths of the body origin under the middle control poses `S_1`
 /// as `λ0` runs over `[1, 4]` (`λ3 = 1`; `t = 0`) and `S_2` as `λ3` does (`λ0 = 1`; `t = 1`).
-/// Each is an additive Bézier motion of degree 1 in its shape factor, so in this planar
-/// example a circular arc (the paper, Sec. 5.2).
+/// Fig. 8 is the multiplicative segment: its middle control poses are
+/// `S_1 = exp(λ0 (ν0 + γ0)/6)` (and the like for `S_2`), whose pseudoscalar factor moves no
+/// point and whose `exp(μ ν0)` lies in the pencil of `1 + ν0`, so these paths are exact
+/// circular arcs. (The paper's Sec. 5.2 says "additive Bézier motion of degree 1": for the
+/// additive poses of (22) the paths are ellipses leaving the plane; statement
+/// `cross2022/sec-5.2-darboux`, docs/verification.md.)
 pub(crate) fn control_arcs(kind: SpecKind) -> Result<Vec<Mark>, CliError> {
     let at = |l0: f64, l3: f64, i: usize| {
         let seg = sec_5_2::spec(kind, l0, l3).segment().map_err(math("the Sec. 5.2 segment"))?;
