@@ -8,8 +8,9 @@
 //! |---|---|
 //! | `juttler-affine`, `juttler-projective` | always (no key rotation may be a half turn for `juttler-affine`) |
 //! | `juttler-q-motion`, `juttler-trt`, `juttler-minimal` | every key rotation quaternion has a rational norm (the elliptic method (23) normalises them) |
-//! | `juttler-spline` | the same, and `velocities` are given (the estimate of step 1 takes logarithms) |
-//! | `ccm-*`, `wl-*`, `hexanion-*` | never: exp and log, or the C1 Hermite construction's square roots ([`BuildError::NotExact`]) |
+//! | `juttler-spline`, `juttler-minimal-spline`, `juttler-bspline` | every key pose has a rational norm (they take unit poses); the splines with `velocities` given (the estimate of step 1 takes logarithms) |
+//! | `ccm-additive` | every key pose has a rational norm, and `velocities` are given: the additive joins (22) are rational |
+//! | `ccm-multiplicative`, `wl-*`, `hexanion-*` | never: exp and log ([`BuildError::NotExact`]) |
 //!
 //! The parameters must be `uniform` or given; the rules of eq. (15) measure distances and
 //! angles (square roots, arc cosines).
@@ -26,6 +27,7 @@
 
 use super::build::given_velocities;
 use super::{BuildError, Method, MethodInput, MethodSegment, Parameters, RationalSegment, SurfaceSegment};
+use crate::joins::{EndCondition, additive_end, additive_start};
 use crate::juttler::bspline_tr::bspline_tr;
 use crate::juttler::minimal::{MinimalMotion, minimal_method};
 use crate::juttler::minimal_spline::minimal_spline;
@@ -36,18 +38,70 @@ use crate::juttler::surface::RationalBezierSurface;
 use crate::juttler::tr::{rotations, tr_method};
 use crate::juttler::trt::trt_method;
 use crate::juttler::{JuttlerError, QMotion, RationalBezier, RationalMotion, SplineQMotion};
+use crate::repr::dual_quaternion::to_dual_quaternion_exact;
 use crate::repr::dual_quaternion::{Quaternion, from_dual_quaternion_exact};
-use crate::{MotionError, Pose, Pseudoscalar};
+use crate::trajectory::TrajectoryError;
+use crate::{AdditiveBezier, HermiteShapes, MapScalar, Motion, MotionError, Pose, Pseudoscalar};
 use algebra_core::rational::{Q, format_rational, sqrt_rational};
 use algebra_core::{Jet, Ring};
 
-/// One segment of an exact motion: its Q-motion on the local parameter `u ∈ [0, 1]`, and for
-/// `juttler-minimal` the motion of minimal order (the same motion, with point trajectories of
-/// lower degree).
+/// One segment of an exact motion on its local parameter `u ∈ [0, 1]`: a Q-motion, a motion of
+/// minimal order (with its Q-motion (36), the same motion), or an additive Bézier motion
+/// (`ccm-additive`: its sums of poses need not lie on the Study quadric, so it is kept as the
+/// main paper's motion, not as a Q-motion).
 #[derive(Debug, Clone, PartialEq)]
-struct Piece {
-    q: QMotion<Q>,
-    minimal: Option<MinimalMotion<Q>>,
+enum Piece {
+    Q(QMotion<Q>),
+    Minimal(MinimalMotion<Q>, QMotion<Q>),
+    Additive(AdditiveBezier<Q>),
+}
+
+impl Piece {
+    /// The pose at `u`.
+    fn pose(&self, u: &Q) -> Result<Pose<Q>, BuildError> {
+        match self {
+            Piece::Q(q) | Piece::Minimal(_, q) => Ok(q.pose_exact(u)?),
+            Piece::Additive(b) => Ok(b.evaluate(u)?),
+        }
+    }
+
+    /// The pose at `u` over exact dual numbers (value and `d/du`).
+    fn jet_pose(&self, u: &Q) -> Result<Pose<Jet<Q>>, BuildError> {
+        let jet = |x: &Q| Jet::constant(x.clone());
+        let u = Jet::variable(u.clone());
+        match self {
+            Piece::Q(q) | Piece::Minimal(_, q) => {
+                Ok(from_dual_quaternion_exact(&q.map_ring(&jet).eval(&u)).map_err(JuttlerError::from)?)
+            }
+            Piece::Additive(b) => Ok(MapScalar::<Q, Jet<Q>>::map_scalar(b, &jet).evaluate(&u)?),
+        }
+    }
+
+    /// The rational motion whose point trajectories the segment has (for `juttler-minimal`, of
+    /// minimal order).
+    fn rational(&self) -> &dyn RationalMotion<Q> {
+        match self {
+            Piece::Q(q) => q,
+            Piece::Minimal(m, _) => m,
+            Piece::Additive(b) => b,
+        }
+    }
+
+    /// The contract's segment of the piece over `breaks`.
+    fn segment(&self, method: Method, breaks: &[Q]) -> MethodSegment<Q> {
+        match self {
+            Piece::Q(q) | Piece::Minimal(_, q) => method.q_motion_segment(q, breaks),
+            Piece::Additive(b) => MethodSegment {
+                t0: breaks[0].clone(),
+                t1: breaks[1].clone(),
+                representation: method.representation(),
+                degree: b.poses().len() - 1,
+                control_poses: b.poses().to_vec(),
+                dual_quaternions: Some(b.poses().iter().map(to_dual_quaternion_exact).collect()),
+                hexanions: None,
+            },
+        }
+    }
 }
 
 /// A motion of [`Method::build_exact`]: the method's segments (the contract's `segments[]`,
@@ -184,7 +238,7 @@ impl ExactMotion {
     /// ```
     pub fn pose(&self, t: &Q) -> Result<Pose<Q>, BuildError> {
         let (k, u) = self.locate(t)?;
-        Ok(self.pieces[k].q.pose_exact(&u)?)
+        self.pieces[k].pose(&u)
     }
 
     /// The sample at `t` of `body_points`: the rigid matrix, the points, their velocities and
@@ -202,9 +256,7 @@ impl ExactMotion {
     pub fn sample(&self, t: &Q, body_points: &[[Q; 3]]) -> Result<ExactSample, BuildError> {
         let (k, u) = self.locate(t)?;
         let dt = &self.breaks[k + 1] - &self.breaks[k];
-        let jet = self.pieces[k].q.map_ring(&|x: &Q| Jet::constant(x.clone()));
-        let d = jet.eval(&Jet::variable(u));
-        let pose = from_dual_quaternion_exact(&d).map_err(JuttlerError::from)?;
+        let pose = self.pieces[k].jet_pose(&u)?;
         let m = pose.to_matrix().map_err(JuttlerError::from)?;
         let rate = |x: &Jet<Q>| &x.eps / &dt;
         let mut points = Vec::with_capacity(body_points.len());
@@ -268,20 +320,60 @@ impl ExactMotion {
         self.pieces
             .iter()
             .zip(self.breaks.windows(2))
-            .map(|(p, w)| {
-                let m: &dyn RationalMotion<Q> = match &p.minimal {
-                    Some(m) => m,
-                    None => &p.q,
-                };
-                Ok((w[0].clone(), w[1].clone(), f(m)?))
-            })
+            .map(|(p, w)| Ok((w[0].clone(), w[1].clone(), f(p.rational())?)))
             .collect()
     }
 }
 
+/// `ccm-additive` over the rationals: the main paper's C1 Hermite interpolation (Sec. 5.3) with
+/// additive cubic segments, on the (unit) key poses with the given space twists: segment `k` on
+/// `[t_k, t_(k+1)]` of length `h` has `S1 = S_k (1 + Ψ0/6)`, `S2 = S_(k+1) (1 - Ψ1/6)` (eq. 22)
+/// with `Ψ = h λ(ν + γ)`, as [`crate::HermiteSegment::through_at`] computes in floating point.
+fn additive_hermite(
+    poses: &[Pose<Q>],
+    times: &[Q],
+    twists: &[crate::velocity::Twist<Q>],
+    shapes: Option<&HermiteShapes<Q>>,
+) -> Result<Vec<Piece>, BuildError> {
+    let m = poses.len();
+    if twists.len() != m {
+        let why = format!("{} velocities for {m} poses", twists.len());
+        return Err(JuttlerError::Parameters { why }.into());
+    }
+    let zero = [Q::zero(), Q::zero(), Q::zero()];
+    let conditions = poses
+        .iter()
+        .zip(twists)
+        .map(|(s, w)| {
+            let p = s.transform_point(&zero).map_err(JuttlerError::from)?;
+            let v = w.point_velocity(&p);
+            Ok(EndCondition::new(s.clone(), p, v.into(), w.angular.to_array()))
+        })
+        .collect::<Result<Vec<_>, BuildError>>()?;
+    let unit = HermiteShapes::unit();
+    let shapes = shapes.unwrap_or(&unit);
+    (0..m - 1)
+        .map(|k| {
+            let h = &times[k + 1] - &times[k];
+            if h <= Q::zero() {
+                let why = format!("parameter {} is not larger than parameter {k}", k + 1);
+                return Err(JuttlerError::Parameters { why }.into());
+            }
+            let [a, b] = shapes.for_segment(k, m).map_err(TrajectoryError::from)?;
+            let (c0, c1) = (&conditions[k], &conditions[k + 1]);
+            let psi0 = a.stretched(&h).indicatrix(&c0.velocity_bivector());
+            let psi1 = b.stretched(&h).indicatrix(&c1.velocity_bivector());
+            let s1 = additive_start(&c0.pose, &psi0, 3).map_err(TrajectoryError::from)?;
+            let s2 = additive_end(&c1.pose, &psi1, 3).map_err(TrajectoryError::from)?;
+            let b = AdditiveBezier::new(vec![c0.pose.clone(), s1, s2, c1.pose.clone()])?;
+            Ok(Piece::Additive(b))
+        })
+        .collect()
+}
+
 /// The pieces and breaks of a piecewise Q-motion.
 fn spline_pieces(spline: &SplineQMotion<Q>) -> (Vec<Piece>, Vec<Q>) {
-    (spline.segments().iter().map(|q| Piece { q: q.clone(), minimal: None }).collect(), spline.breaks().to_vec())
+    (spline.segments().iter().cloned().map(Piece::Q).collect(), spline.breaks().to_vec())
 }
 
 /// The unit quaternion of `r`, when its norm is rational; else the method cannot be exact.
@@ -356,24 +448,22 @@ impl Method {
             | Method::JuttlerMinimal => {
                 let u = normalise(&times, m)?;
                 let piece = match self {
-                    Method::JuttlerAffine => {
-                        Piece { q: tr_method(&affine(&rotations(&poses)?, &u)?, &poses, &u)?, minimal: None }
-                    }
+                    Method::JuttlerAffine => Piece::Q(tr_method(&affine(&rotations(&poses)?, &u)?, &poses, &u)?),
                     Method::JuttlerProjective => {
-                        Piece { q: tr_method(&projective(&rotations(&poses)?, &u)?, &poses, &u)?, minimal: None }
+                        Piece::Q(tr_method(&projective(&rotations(&poses)?, &u)?, &poses, &u)?)
                     }
                     Method::JuttlerQMotion => {
                         let rot = elliptic_normalised(&unit_rotations(&poses)?, &u)?;
-                        Piece { q: tr_method(&rot, &poses, &u)?, minimal: None }
+                        Piece::Q(tr_method(&rot, &poses, &u)?)
                     }
                     Method::JuttlerTrt => {
                         let rot = elliptic_normalised(&unit_rotations(&poses)?, &u)?;
-                        Piece { q: trt_method(&rot, &poses, &u, input.l1.unwrap_or(m - 2))?, minimal: None }
+                        Piece::Q(trt_method(&rot, &poses, &u, input.l1.unwrap_or(m - 2))?)
                     }
                     _ => {
                         let rot = elliptic_normalised(&unit_rotations(&poses)?, &u)?;
                         let motion = minimal_method(&rot, &poses, &u)?;
-                        Piece { q: motion.q_motion(), minimal: Some(motion) }
+                        Piece::Minimal(motion.clone(), motion.q_motion())
                     }
                 };
                 (vec![piece], vec![times[0].clone(), times[m - 1].clone()])
@@ -390,15 +480,24 @@ impl Method {
                     spline_pieces(&SplineQMotion::hermite(&unit, &times, &v)?)
                 } else {
                     let pieces = minimal_spline(&unit, &times, &v)?;
-                    (pieces.into_iter().map(|p| Piece { q: p.q_motion(), minimal: Some(p) }).collect(), times.clone())
+                    (pieces.into_iter().map(|p| Piece::Minimal(p.clone(), p.q_motion())).collect(), times.clone())
                 }
             }
             Method::JuttlerBSpline => {
                 let p = input.degree.unwrap_or(3.min(m - 1));
                 spline_pieces(bspline_tr(&unit_poses(&poses)?, &times, p)?.pieces())
             }
-            Method::CcmAdditive | Method::CcmMultiplicative => {
-                return Err(not_exact("the C1 Hermite construction of Sec. 5.3 (unit poses, logarithms)"));
+            Method::CcmAdditive => {
+                let Some(twists) = &input.velocities else {
+                    return Err(not_exact(
+                        "the velocity estimate of Sec. 5.3 (logarithms of relative poses): give `velocities`",
+                    ));
+                };
+                let unit = unit_poses(&poses)?;
+                (additive_hermite(&unit, &times, twists, input.shapes.as_ref())?, times.clone())
+            }
+            Method::CcmMultiplicative => {
+                return Err(not_exact("exp and log (the multiplicative joins (23))"));
             }
             Method::WlLinear
             | Method::WlQuadratic
@@ -408,7 +507,7 @@ impl Method {
             | Method::HexanionBlend => return Err(not_exact("exp and log")),
         };
         let segments: Vec<MethodSegment<Q>> =
-            pieces.iter().zip(breaks.windows(2)).map(|(p, w)| self.q_motion_segment(&p.q, w)).collect();
+            pieces.iter().zip(breaks.windows(2)).map(|(p, w)| p.segment(self, w)).collect();
         let motion = ExactMotion { method: self, times, key_poses: poses, segments, breaks, pieces };
         // the construction interpolates by design; checked exactly all the same
         for (i, (p, t)) in motion.key_poses.iter().zip(&motion.times).enumerate() {
