@@ -142,21 +142,22 @@ pub(crate) fn read_file(path: &str) -> Result<String, CliError> {
     std::fs::read_to_string(path).map_err(|e| CliError::usage(format!("cannot read `{path}`: {e}")))
 }
 
-/// A `gam interpolate` spec read with every literal exact from the file at `path`.
-pub(crate) fn read_exact_spec(path: &str) -> Result<InterpolateSpec<Exact>, CliError> {
-    exact_spec(path, &read_file(path)?)
-}
-
 /// A `gam interpolate` spec read with every literal exact from its text (`label` names it in
 /// messages; `//` comments allowed).
 pub(crate) fn exact_spec(label: &str, text: &str) -> Result<InterpolateSpec<Exact>, CliError> {
+    exact_spec_if_any(label, text)?.ok_or_else(|| usage(label, "invalid spec: missing field `method`"))
+}
+
+/// [`exact_spec`], or `None` when the text is no `gam interpolate` spec (no top-level
+/// `method`: a `gam hermite` spec, for `gam sample`), as `interpolate::read_text` in f64.
+pub(crate) fn exact_spec_if_any(label: &str, text: &str) -> Result<Option<InterpolateSpec<Exact>>, CliError> {
     // every literal quoted first: `1e400` is a rational, not an f64 out of range
     let text = motion::schema::quote_numbers(&strip_comments(text));
     let value = motion::schema::parse_json(&text).map_err(|e| usage(label, e))?;
     if value.get("method").is_none() {
-        return Err(usage(label, "invalid spec: missing field `method`"));
+        return Ok(None);
     }
-    InterpolateSpec::<Exact>::read_json(&text).map_err(|e| schema_error(label, e))
+    InterpolateSpec::<Exact>::read_json(&text).map(Some).map_err(|e| schema_error(label, e))
 }
 
 /// The method input over exact rationals (pose forms that are not rational are refused).

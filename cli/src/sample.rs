@@ -120,9 +120,7 @@ pub(crate) fn hermite_segment<T: Real>(
 /// Checks the work of `passes` passes over `n` samples of a spec (`label` names it in
 /// messages) and returns its sampler.
 pub(crate) fn sampler(label: &str, spec: &SampleSpec, n: usize, passes: usize) -> Result<Sampler, CliError> {
-    if !(2..=MAX_SAMPLES).contains(&n) {
-        return Err(CliError::usage(format!("`--samples` must be an integer from 2 to {MAX_SAMPLES} (got {n})")));
-    }
+    check_count(n)?;
     match spec {
         SampleSpec::Interpolate(spec) => crate::interpolate::spec_sampler(label, spec, n, passes),
         SampleSpec::Hermite(spec) => hermite_sampler(label, spec, n, passes),
@@ -222,24 +220,27 @@ pub fn sample(path: &str, n: usize, json: bool, scalar: MotionScalar) -> Result<
         }
         MotionScalar::Rational => {
             check_count(n)?;
-            if crate::interpolate::read(path)?.is_none() {
+            let Some(spec) = precision::exact_spec_if_any(path, &precision::read_file(path)?)? else {
                 return Err(CliError::usage(format!("`{path}`: gam sample: {}", crate::hermite::NOT_EXACT)));
-            }
-            output(exact_sampler(path, n)?, json)
+            };
+            output(exact_sampler(path, &spec, n)?, json)
         }
         MotionScalar::Mpfr(_) => scalar.run(|| {
             check_count(n)?;
             let to = |x: &motion::schema::Exact| MpFloat::from_rational(&x.0);
-            let s = if crate::interpolate::read(path)?.is_some() {
-                let spec = precision::read_exact_spec(path)?;
-                let b = precision::build_mpfr(path, &spec)?;
-                let body = spec.body_points.as_ref().and_then(|p| p.first()).map(|p| p.each_ref().map(to));
-                let factor = scalar.cost_factor(b.key_poses().len());
-                crate::interpolate::motion_sampler(b, body, (n, 2, factor))?
-            } else {
-                let spec = crate::hermite::exact_spec(path, &precision::read_file(path)?)?.map(&to);
-                spec.check().map_err(|e| crate::hermite::spec_error(path, e))?;
-                hermite_sampler(path, &spec, n, 2)?
+            let text = precision::read_file(path)?;
+            let s = match precision::exact_spec_if_any(path, &text)? {
+                Some(spec) => {
+                    let b = precision::build_mpfr(path, &spec)?;
+                    let body = precision::body_points(&spec).swap_remove(0).each_ref().map(MpFloat::from_rational);
+                    let factor = scalar.cost_factor(b.key_poses().len());
+                    crate::interpolate::motion_sampler(b, Some(body), (n, 2, factor))?
+                }
+                None => {
+                    let spec = crate::hermite::exact_spec(path, &text)?.map(&to);
+                    spec.check().map_err(|e| crate::hermite::spec_error(path, e))?;
+                    hermite_sampler(path, &spec, n, 2)?
+                }
             };
             output(s, json)
         }),
@@ -270,10 +271,9 @@ fn output<T: OutScalar + 'static>(s: Sampler<T>, json: bool) -> Result<String, C
 
 /// The sampler of a `gam interpolate` spec over exact rationals: the pose and the position of
 /// the body point exactly; the speeds (square roots) are left out.
-fn exact_sampler(path: &str, n: usize) -> Result<Sampler<Q>, CliError> {
-    let spec = precision::read_exact_spec(path)?;
-    let m = precision::build_exact(path, &spec)?;
-    let body_point = precision::body_points(&spec).swap_remove(0);
+fn exact_sampler(path: &str, spec: &InterpolateSpec<motion::schema::Exact>, n: usize) -> Result<Sampler<Q>, CliError> {
+    let m = precision::build_exact(path, spec)?;
+    let body_point = precision::body_points(spec).swap_remove(0);
     let degree = m.segments().iter().map(|s| s.degree).max().unwrap_or(0);
     crate::interpolate::check_segments(
         m.method(),

@@ -472,6 +472,11 @@ fn literals_beyond_f64_are_read_exactly() {
     let hi: Value = serde_json::from_str(&ok(&["interpolate", "--json", "--scalar", "mpfr:64", spec.path()])).unwrap();
     assert!(hi["samples"][0]["points"][0][0].as_str().unwrap().ends_with("e400"), "{hi}");
     assert!(fails(&["interpolate", spec.path()], 2).contains("number out of range"));
+    // gam sample tells a spec of gam interpolate from one of gam hermite by the same exact read
+    let sampled: Value =
+        serde_json::from_str(&ok(&["sample", "--json", "--samples", "2", "--scalar", "rational", spec.path()]))
+            .unwrap();
+    assert_eq!(sampled["samples"][0]["position"][0], Value::from(format!("1{}", "0".repeat(400))));
 }
 
 /// `ccm-additive` over the rationals (with given velocities and key quaternions of rational
