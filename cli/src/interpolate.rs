@@ -285,15 +285,20 @@ pub(crate) struct Precise {
 }
 
 impl Precise {
-    /// The output of `header` and `n` rows (`row(i)`).
+    /// The JSON head and the human header lines of a motion (written before its rows take the
+    /// motion over).
+    fn describe<T: OutScalar>((method, times, segments, key_poses): Header<'_, T>) -> (Value, Vec<String>) {
+        let head =
+            json!({"method": method.name(), "parameters": json_list(times), "segments": segments_json(segments)});
+        (head, header_text(method, times, segments, key_poses))
+    }
+
+    /// The output of a described motion and its `n` rows (`row(i)`).
     fn new<T: OutScalar + 'static>(
-        (method, times, segments, key_poses): Header<'_, T>,
+        (head, header): (Value, Vec<String>),
         n: usize,
         row: impl Fn(usize) -> Result<Row<T>, CliError> + 'static,
     ) -> Self {
-        let head =
-            json!({"method": method.name(), "parameters": json_list(times), "segments": segments_json(segments)});
-        let header = header_text(method, times, segments, key_poses);
         let row = std::rc::Rc::new(row);
         let (r1, r2) = (row.clone(), row);
         Precise {
@@ -331,27 +336,27 @@ pub(crate) fn precise(label: &str, text: &str, scalar: MotionScalar) -> Result<P
         if n > 0 {
             check_segments(m.method(), m.segments(), bodies.len(), n, 1, scalar.cost_factor(m.key_poses().len()))?;
         }
-        let header = (m.method(), m.times(), m.segments(), m.key_poses());
-        let (times, motion) = (m.times().to_vec(), m.clone());
+        let described = Precise::describe((m.method(), m.times(), m.segments(), m.key_poses()));
         let row = move |i: usize| {
+            let times = m.times();
             let t = even(&times[0], &times[times.len() - 1], n, i);
-            let s = motion.sample(&t, &bodies).map_err(|e| CliError::math(format!("{}: {e}", motion.method())))?;
+            let s = m.sample(&t, &bodies).map_err(|e| CliError::math(format!("{}: {e}", m.method())))?;
             Ok(Row::exact(s))
         };
-        return Ok(Precise::new(header, n, row));
+        return Ok(Precise::new(described, n, row));
     }
     let b = precision::build_mpfr(label, &spec)?;
     let bodies: Vec<[MpFloat; 3]> = bodies.iter().map(|p| p.each_ref().map(MpFloat::from_rational)).collect();
     if n > 0 {
         check_segments(b.method(), b.segments(), bodies.len(), n, 1, scalar.cost_factor(b.key_poses().len()))?;
     }
-    let header = (b.method(), b.times(), b.segments(), b.key_poses());
-    let (times, motion) = (b.times().to_vec(), b.clone());
+    let described = Precise::describe((b.method(), b.times(), b.segments(), b.key_poses()));
     let row = move |i: usize| {
+        let times = b.times();
         let t = even(&times[0], &times[times.len() - 1], n, i);
-        Row::of(&motion.sample(&t, &bodies).map_err(|e| CliError::math(e.to_string()))?)
+        Row::of(&b.sample(&t, &bodies).map_err(|e| CliError::math(e.to_string()))?)
     };
-    Ok(Precise::new(header, n, row))
+    Ok(Precise::new(described, n, row))
 }
 
 /// Runs `gam interpolate` on the spec file at `path`, in the scalar of `--scalar`.
