@@ -145,24 +145,14 @@ impl Tableau {
     /// assert_eq!(Tableau::of_method(Method::WlQuadratic), Tableau::Linear);
     /// ```
     pub fn of_method(method: motion::method::Method) -> Self {
-        use motion::method::Method;
-        match method {
-            Method::CcmMultiplicative => Tableau::Slerp,
-            Method::JuttlerQMotion
-            | Method::JuttlerAffine
-            | Method::JuttlerProjective
-            | Method::JuttlerTrt
-            | Method::JuttlerMinimal
-            | Method::JuttlerSpline
-            | Method::JuttlerBSpline
-            | Method::JuttlerMinimalSpline => Tableau::Rational,
-            Method::CcmAdditive
-            | Method::WlLinear
-            | Method::WlQuadratic
-            | Method::WlDirect
-            | Method::HexanionLinear
-            | Method::HexanionDecoupled
-            | Method::HexanionBlend => Tableau::Linear,
+        // the multiplicative Bézier's slerps, the Jüttler methods' rational evaluation, and the
+        // rest (additive Bézier, W-L, hexanion): a linear tableau
+        if method == motion::method::Method::CcmMultiplicative {
+            Tableau::Slerp
+        } else if method.is_juttler() {
+            Tableau::Rational
+        } else {
+            Tableau::Linear
         }
     }
 

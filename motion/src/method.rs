@@ -155,6 +155,35 @@ crate::names::named!("motion::method::Method", Method {
 });
 
 impl Method {
+    /// True for Jüttler's methods: their motions are Q-motions (or rational motions of minimal
+    /// order, given by their Q-motions (36)), their segments' control data dual quaternions. The
+    /// one list of the family, from which [`Method::kind`] and [`Method::is_rational`] follow.
+    ///
+    /// ```
+    /// use motion::method::Method;
+    /// assert!(Method::JuttlerBSpline.is_juttler() && !Method::CcmAdditive.is_juttler());
+    /// ```
+    pub fn is_juttler(self) -> bool {
+        match self {
+            Method::JuttlerQMotion
+            | Method::JuttlerAffine
+            | Method::JuttlerProjective
+            | Method::JuttlerTrt
+            | Method::JuttlerMinimal
+            | Method::JuttlerSpline
+            | Method::JuttlerBSpline
+            | Method::JuttlerMinimalSpline => true,
+            Method::CcmAdditive
+            | Method::CcmMultiplicative
+            | Method::WlLinear
+            | Method::WlQuadratic
+            | Method::WlDirect
+            | Method::HexanionLinear
+            | Method::HexanionDecoupled
+            | Method::HexanionBlend => false,
+        }
+    }
+
     /// The segment kind: additive for `ccm-additive` and the Jüttler methods (a Q-motion
     /// `Σ b_i(t) B_i` is the additive Bézier motion of the motors of its control dual
     /// quaternions: the map between them is linear), multiplicative for `ccm-multiplicative`;
@@ -166,23 +195,10 @@ impl Method {
     /// assert_eq!(Method::JuttlerQMotion.kind(), SegmentKind::Additive);
     /// ```
     pub fn kind(self) -> SegmentKind {
-        match self {
-            Method::CcmAdditive
-            | Method::JuttlerQMotion
-            | Method::JuttlerAffine
-            | Method::JuttlerProjective
-            | Method::JuttlerTrt
-            | Method::JuttlerMinimal
-            | Method::JuttlerSpline
-            | Method::JuttlerBSpline
-            | Method::JuttlerMinimalSpline => SegmentKind::Additive,
-            Method::CcmMultiplicative
-            | Method::WlLinear
-            | Method::WlQuadratic
-            | Method::WlDirect
-            | Method::HexanionLinear
-            | Method::HexanionDecoupled
-            | Method::HexanionBlend => SegmentKind::Multiplicative,
+        if self == Method::CcmAdditive || self.is_juttler() {
+            SegmentKind::Additive
+        } else {
+            SegmentKind::Multiplicative
         }
     }
 
@@ -253,15 +269,6 @@ impl Method {
     /// assert!(Method::JuttlerQMotion.is_rational() && !Method::WlLinear.is_rational());
     /// ```
     pub fn is_rational(self) -> bool {
-        !matches!(
-            self,
-            Method::CcmMultiplicative
-                | Method::WlLinear
-                | Method::WlQuadratic
-                | Method::WlDirect
-                | Method::HexanionLinear
-                | Method::HexanionDecoupled
-                | Method::HexanionBlend
-        )
+        self.kind() == SegmentKind::Additive
     }
 }
