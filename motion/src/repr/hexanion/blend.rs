@@ -400,8 +400,8 @@ impl BlendWeights {
 #[derive(Clone, Debug, PartialEq)]
 pub struct HexanionBlend<T> {
     weights: BlendWeights,
-    times: Vec<T>,
-    hexanions: Vec<Hexanion<T>>,
+    /// The key times and principal hexanions (those of `hexanion-linear`).
+    keys: HexanionLinear<T>,
 }
 
 impl<T: Real> HexanionBlend<T> {
@@ -414,8 +414,7 @@ impl<T: Real> HexanionBlend<T> {
     /// assert!(HexanionBlend::through(&poses, &[1.0, 1.0], BlendWeights::Lagrange).is_err());
     /// ```
     pub fn through(poses: &[Pose<T>], times: &[T], weights: BlendWeights) -> Result<Self, ReprError> {
-        let linear = HexanionLinear::through(poses, times)?;
-        Ok(HexanionBlend { weights, times: linear.times, hexanions: linear.hexanions })
+        Ok(HexanionBlend { weights, keys: HexanionLinear::through(poses, times)? })
     }
 
     /// The weight functions.
@@ -437,7 +436,7 @@ impl<T: Real> HexanionBlend<T> {
     /// assert_eq!(m.hexanions(), &[Hexanion::zero()]);
     /// ```
     pub fn hexanions(&self) -> &[Hexanion<T>] {
-        &self.hexanions
+        self.keys.hexanions()
     }
 
     /// The blended hexanion (57) at `t`: `Σ φ_i(t) H_i` (both weight families sum to one
@@ -450,8 +449,8 @@ impl<T: Real> HexanionBlend<T> {
     /// assert_eq!(m.hexanion_at(&1.0), Hexanion::new([0.0; 3], [1.0, 0.0, 0.0]));
     /// ```
     pub fn hexanion_at(&self, t: &T) -> Hexanion<T> {
-        let phi = self.weights.weights(&self.times, t);
-        phi.iter().zip(&self.hexanions).fold(Hexanion::zero(), |s, (w, h)| &s + &h.scale(w))
+        let phi = self.weights.weights(self.keys.times(), t);
+        phi.iter().zip(self.hexanions()).fold(Hexanion::zero(), |s, (w, h)| &s + &h.scale(w))
     }
 }
 
@@ -460,18 +459,13 @@ impl<T: Real> Motion<T> for HexanionBlend<T> {
         Ok(self.hexanion_at(t).to_pose()?)
     }
     fn domain(&self) -> [T; 2] {
-        [self.times[0].clone(), self.times[self.times.len() - 1].clone()]
+        self.keys.domain()
     }
 }
 
 impl<T: Real, U: Real> MapScalar<T, U> for HexanionBlend<T> {
     type Mapped = HexanionBlend<U>;
     fn map_scalar(&self, f: &dyn Fn(&T) -> U) -> HexanionBlend<U> {
-        let h = |x: &Hexanion<T>| Hexanion::new(x.omega.clone().map(|c| f(&c)), x.m.clone().map(|c| f(&c)));
-        HexanionBlend {
-            weights: self.weights,
-            times: self.times.iter().map(f).collect(),
-            hexanions: self.hexanions.iter().map(h).collect(),
-        }
+        HexanionBlend { weights: self.weights, keys: self.keys.map_scalar(f) }
     }
 }
