@@ -11,7 +11,9 @@
 
 mod common;
 
-use common::{TempFile, assert_velocities_match_differences, fails, max_diff, ok, rodrigues};
+use common::{
+    TempFile, assert_velocities_match_differences, curve_end, fails, max_diff, ok, rodrigues, rodrigues_wxyz,
+};
 use serde_json::Value;
 
 /// (axis, angle, position) of four key poses.
@@ -469,12 +471,8 @@ fn bspline_q_motions() {
     let samples = v["samples"].as_array().unwrap();
     for (i, (q, p)) in quats.iter().zip(positions).enumerate() {
         let s = &samples[2 * i]; // t = i/5
-        let n = q.iter().map(|c| c * c).sum::<f64>().sqrt();
-        let sin = (q[1] * q[1] + q[2] * q[2] + q[3] * q[3]).sqrt() / n;
-        let angle = 2.0 * sin.atan2(q[0] / n);
-        let axis = if sin > 0.0 { [q[1], q[2], q[3]] } else { [0.0, 0.0, 1.0] };
         let got: [[f64; 4]; 4] = serde_json::from_value(s["matrix"].clone()).unwrap();
-        assert!(max_diff(&got, &rodrigues(axis, angle, p)) < 1e-13, "key pose {i}");
+        assert!(max_diff(&got, &rodrigues_wxyz(*q, p)) < 1e-13, "key pose {i}");
         // the printed point: the origin's image under the printed piece, by (12) here
         let (seg, u) = segment_at(segs, s["t"].as_f64().unwrap());
         let dq: Vec<[f64; 8]> = serde_json::from_value(seg["dual_quaternions"].clone()).unwrap();
@@ -554,12 +552,8 @@ fn minimal_order_spline() {
     let positions = [[0.0, 0.0, 0.0], [1.0, 1.0, 0.0], [2.0, 0.0, 0.5], [3.0, 1.0, 1.0]];
     for (i, t) in [0.0, 0.5, 1.25, 2.0].into_iter().enumerate() {
         let s = samples.iter().find(|s| s["t"].as_f64() == Some(t)).expect("a sample at the key");
-        let q = quats[i];
-        let n = q.iter().map(|c| c * c).sum::<f64>().sqrt();
-        let sin = (q[1] * q[1] + q[2] * q[2] + q[3] * q[3]).sqrt() / n;
-        let axis = if sin > 0.0 { [q[1], q[2], q[3]] } else { [0.0, 0.0, 1.0] };
         let got: [[f64; 4]; 4] = serde_json::from_value(s["matrix"].clone()).unwrap();
-        assert!(max_diff(&got, &rodrigues(axis, 2.0 * sin.atan2(q[0] / n), positions[i])) < 1e-13, "key {i}");
+        assert!(max_diff(&got, &rodrigues_wxyz(quats[i], positions[i])) < 1e-13, "key {i}");
         let vel: Vec<[f64; 3]> = serde_json::from_value(s["velocities"].clone()).unwrap();
         let w: [f64; 3] = serde_json::from_value(s["angular_velocity"].clone()).unwrap();
         assert!((0..3).all(|k| (vel[0][k] - given[i][k]).abs() < 1e-12 && (w[k] - omega[i][k]).abs() < 1e-12), "{s}");
@@ -576,31 +570,11 @@ fn minimal_order_spline() {
         "1/2,-1,2",
     ]))
     .unwrap();
-    type Q = algebra_core::rational::Q;
-    let q = |v: &Value| algebra_core::rational::parse_rational(v.as_str().unwrap()).unwrap();
     let segs = tr["segments"].as_array().unwrap();
     assert_eq!(segs.len(), 3);
     assert!(segs.iter().all(|s| s["degree"] == 6), "order 6");
-    // a segment's rational curve p(u) = P(u)/W(u) at u = 1 (`at_end`) or 0: the point and
-    // p' = (P' W - P W')/W² per unit t, with P' = ±n (P_a - P_b) from the control points
-    let value_and_rate = |seg: &Value, at_end: bool| -> Vec<Q> {
-        let wts: Vec<Q> = seg["weights"].as_array().unwrap().iter().map(q).collect();
-        let pts: Vec<Vec<Q>> =
-            seg["points"].as_array().unwrap().iter().map(|x| x.as_array().unwrap().iter().map(q).collect()).collect();
-        let n = wts.len() - 1;
-        let h = q(&seg["t1"]) - q(&seg["t0"]);
-        let (a, b) = if at_end { (n, n - 1) } else { (0, 1) };
-        let s = Q::from_integer((if at_end { n as i64 } else { -(n as i64) }).into());
-        let dw = &s * (&wts[a] - &wts[b]);
-        let rates = pts[a].iter().zip(&pts[b]).map(|(xa, xb)| {
-            let pa = &wts[a] * xa;
-            let dp = &s * (&pa - &wts[b] * xb);
-            (dp * &wts[a] - &pa * &dw) / (&wts[a] * &wts[a]) / &h
-        });
-        pts[a].iter().cloned().chain(rates).collect()
-    };
     for w in segs.windows(2) {
-        assert_eq!(value_and_rate(&w[0], true), value_and_rate(&w[1], false), "not C1 at a join");
+        assert_eq!(curve_end(&w[0], true), curve_end(&w[1], false), "not C1 at a join");
     }
     // the Q-motion spline's trajectories have degree 12
     let q_spline = TempFile::new("interp-jq-q-spline.json", &text.replace("juttler-minimal-spline", "juttler-spline"));

@@ -14,22 +14,13 @@
 mod common;
 
 use algebra_core::rational::{Q, parse_rational, rational_to_f64};
-use common::{TempFile, fails, ok};
+use common::{TempFile, curve_end, exact, fails, ok};
 use serde_json::Value;
 
 /// The fixture's cases.
 fn cases() -> Vec<Value> {
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../tests/fixtures/fractions/juttler_trajectory.json");
     serde_json::from_str(&std::fs::read_to_string(path).expect("fixture")).expect("fixture JSON")
-}
-
-/// A JSON coefficient (string or number) as an exact rational.
-fn exact(v: &Value) -> Q {
-    match v {
-        Value::String(s) => parse_rational(s).expect("a rational"),
-        Value::Number(n) => parse_rational(&n.to_string()).expect("a number"),
-        _ => panic!("not a number: {v}"),
-    }
 }
 
 /// `C(n, k) u^k (1 - u)^(n - k)`, exactly.
@@ -526,24 +517,5 @@ fn ccm_additive_is_exact_with_given_velocities() {
     .unwrap();
     let segs = tr["segments"].as_array().unwrap();
     assert!(segs.iter().all(|s| s["degree"] == 6));
-    let rate = |seg: &Value, at_end: bool| -> Vec<Q> {
-        let w: Vec<Q> = seg["weights"].as_array().unwrap().iter().map(exact).collect();
-        let p: Vec<Vec<Q>> = seg["points"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .map(|x| x.as_array().unwrap().iter().map(exact).collect())
-            .collect();
-        let n = w.len() - 1;
-        let h = exact(&seg["t1"]) - exact(&seg["t0"]);
-        let (a, b) = if at_end { (n, n - 1) } else { (0, 1) };
-        let s = Q::from_integer((if at_end { n as i64 } else { -(n as i64) }).into());
-        let dw = &s * (&w[a] - &w[b]);
-        let rates = p[a].iter().zip(&p[b]).map(|(xa, xb)| {
-            let pa = &w[a] * xa;
-            ((&s * (&pa - &w[b] * xb)) * &w[a] - &pa * &dw) / (&w[a] * &w[a]) / &h
-        });
-        p[a].iter().cloned().chain(rates).collect()
-    };
-    assert_eq!(rate(&segs[0], true), rate(&segs[1], false), "not C1 at t = 1/2");
+    assert_eq!(curve_end(&segs[0], true), curve_end(&segs[1], false), "not C1 at t = 1/2");
 }

@@ -172,3 +172,44 @@ pub fn assert_velocities_match_differences(label: &str, samples: &[serde_json::V
         }
     }
 }
+
+/// The rigid matrix of the rotation by the quaternion `[w, x, y, z]` (any non-zero scale), then
+/// the translation `t`, by [`rodrigues`] (the half-angle from `q`'s scalar and vector parts).
+pub fn rodrigues_wxyz(q: [f64; 4], t: [f64; 3]) -> [[f64; 4]; 4] {
+    let n = q.iter().map(|c| c * c).sum::<f64>().sqrt();
+    let sin = (q[1] * q[1] + q[2] * q[2] + q[3] * q[3]).sqrt() / n;
+    let axis = if sin > 0.0 { [q[1], q[2], q[3]] } else { [0.0, 0.0, 1.0] };
+    rodrigues(axis, 2.0 * sin.atan2(q[0] / n), t)
+}
+
+/// A JSON coefficient (a `"p/q"` string or a number) as an exact rational.
+pub fn exact(v: &serde_json::Value) -> algebra_core::rational::Q {
+    use algebra_core::rational::parse_rational;
+    match v {
+        serde_json::Value::String(s) => parse_rational(s).expect("a rational"),
+        serde_json::Value::Number(n) => parse_rational(&n.to_string()).expect("a number"),
+        _ => panic!("not a number: {v}"),
+    }
+}
+
+/// One segment of `gam trajectory --json --scalar rational`, its rational curve
+/// `p(u) = P(u)/W(u)` at `u = 1` (`at_end`) or `u = 0`, exactly: the point, then its derivative
+/// per unit of `t`, `p' = (P' W - P W')/W² / (t1 - t0)`, with `P' = ±n (P_a - P_b)` from the two
+/// control points at that end (the Bernstein end derivative). Equal values on both sides of a
+/// break are C1 there.
+pub fn curve_end(seg: &serde_json::Value, at_end: bool) -> Vec<algebra_core::rational::Q> {
+    use algebra_core::rational::Q;
+    let w: Vec<Q> = seg["weights"].as_array().unwrap().iter().map(exact).collect();
+    let p: Vec<Vec<Q>> =
+        seg["points"].as_array().unwrap().iter().map(|x| x.as_array().unwrap().iter().map(exact).collect()).collect();
+    let n = w.len() - 1;
+    let h = exact(&seg["t1"]) - exact(&seg["t0"]);
+    let (a, b) = if at_end { (n, n - 1) } else { (0, 1) };
+    let s = Q::from_integer((if at_end { n as i64 } else { -(n as i64) }).into());
+    let dw = &s * (&w[a] - &w[b]);
+    let rates = p[a].iter().zip(&p[b]).map(|(xa, xb)| {
+        let pa = &w[a] * xa;
+        ((&s * (&pa - &w[b] * xb)) * &w[a] - &pa * &dw) / (&w[a] * &w[a]) / &h
+    });
+    p[a].iter().cloned().chain(rates).collect()
+}
