@@ -1,19 +1,16 @@
 //! The output formats of `gam plot` and `gam figures`: SVG ([`super::svg::Svg`], drawn at
 //! [`SVG_SCALE`]) or PNG (plotters' `BitMapBackend` into memory at [`PNG_SCALE`] times the
-//! size, averaged down to the size, so lines and text are anti-aliased; encoded by the `png`
-//! crate). plotters draws text
-//! into a bitmap only through a font rasteriser and a system font; [`Raster`] instead draws
-//! every text with the built-in bitmap font of [`super::font`] and hands everything else to
-//! the `BitMapBackend`, so a PNG needs no font on the machine and has the same pixels
-//! everywhere.
+//! size, averaged down to the size, so lines are anti-aliased; encoded by the `png` crate).
+//! plotters draws text into a bitmap only through a system font; [`Raster`] instead draws
+//! every text with the bundled font of [`super::font`] (anti-aliased coverage) and hands
+//! everything else to the `BitMapBackend`, so a PNG needs no font on the machine and has the
+//! same pixels everywhere.
 //!
-//! A text occupies the box plotters' layout estimates for it (the box the SVG output's layout
-//! uses too): per character `0.7 em` wide, `em` above the baseline and `0.24 em` below, with
-//! `em = size / 1.24²`. A glyph's 5 x 9 pixels fill its character cell (6 columns with the
-//! spacing, 8 rows above the baseline with one of space, 2 below), so the figure lays out the
-//! same in both formats.
+//! Both formats lay texts out in the box plotters estimates without a font ([`text_box`]: per
+//! character `0.7 em` wide, `em = size / 1.24²`) and draw them at [`drawn_em`] with the same
+//! anchors and baselines, so the figure lays out the same in both.
 
-use super::font::{ABOVE, COLUMNS, glyph};
+use super::font;
 use super::style::{DASH_OPACITY, DASH_PATTERN, Px, SVG_SCALE};
 use super::svg::Svg;
 use crate::error::CliError;
@@ -27,7 +24,7 @@ use plotters_backend::{BackendColor, BackendCoord, BackendStyle, BackendTextStyl
 pub enum Format {
     /// Scalable vector graphics (the default).
     Svg,
-    /// A PNG image (RGB, 8 bits per channel), text in the built-in bitmap font.
+    /// A PNG image (RGB, 8 bits per channel), text in the bundled DejaVu Sans.
     Png,
 }
 
@@ -189,7 +186,7 @@ fn spans(vert: &[BackendCoord]) -> Vec<(i32, i32, i32)> {
     out
 }
 
-/// A `BitMapBackend` that draws text with the built-in bitmap font (see the module doc).
+/// A `BitMapBackend` that draws text with the bundled font (see the module doc).
 pub(crate) struct Raster<'a> {
     inner: BitMapBackend<'a>,
 }
@@ -307,26 +304,30 @@ impl<'a> DrawingBackend for Raster<'a> {
         if color.alpha == 0.0 {
             return Ok(());
         }
-        let ((x0, y0), (x1, y1)) = text_box(text, style.size());
-        let (width, height) = (x1 - x0, y1 - y0);
+        let ((x0, _), (x1, _)) = text_box(text, style.size());
+        let em = drawn_em(style.size());
+        let (pixels, width) =
+            font::coverage(text, em, f64::from(x1 - x0)).map_err(|e| DrawingErrorKind::FontError(Box::new(e)))?;
+        // Anchored by the drawn width and the baseline offsets of the SVG output
+        // (`text-anchor`, and `dy` of 0.76 em, 0.5 ex or -0.5 ex).
+        let width = width.round() as i32;
         let dx = match style.anchor().h_pos {
             HPos::Left => 0,
             HPos::Right => -width,
             HPos::Center => -width / 2,
         };
-        let dy = match style.anchor().v_pos {
-            VPos::Top => 0,
-            VPos::Center => -height / 2,
-            VPos::Bottom => -height,
-        };
+        let dy = (em
+            * match style.anchor().v_pos {
+                VPos::Top => 0.76,
+                VPos::Center => 0.5 * font::EX,
+                VPos::Bottom => -0.5 * font::EX,
+            })
+        .round() as i32;
         let trans = style.transform();
-        let (w, h) = self.get_size();
-        for (x, y) in text_pixels(text, style.size()) {
-            let (x, y) = trans.transform(x + dx - x0, y + dy - y0);
-            let (x, y) = (pos.0 + x, pos.1 + y);
-            if x >= 0 && x < w as i32 && y >= 0 && y < h as i32 {
-                self.inner.draw_pixel((x, y), color)?;
-            }
+        for (x, y, c) in pixels {
+            let (x, y) = trans.transform(x + dx, y + dy);
+            let alpha = color.alpha * f64::from(c);
+            self.inner.draw_pixel((pos.0 + x, pos.1 + y), BackendColor { alpha, rgb: color.rgb })?;
         }
         Ok(())
     }
@@ -337,9 +338,16 @@ impl<'a> DrawingBackend for Raster<'a> {
     }
 }
 
-/// `em` of a font of `size` (plotters' estimate).
+/// `em` of a font of `size` in plotters' layout estimate (smaller than the drawn em,
+/// [`drawn_em`]).
 fn em(size: f64) -> f64 {
     size / 1.24 / 1.24
+}
+
+/// The em a text of `size` is drawn at, in both formats: the SVG's `font-size` and the PNG's
+/// glyphs.
+pub(crate) fn drawn_em(size: f64) -> f64 {
+    size / 1.24
 }
 
 /// The box of `text` at `size` relative to the start of its baseline, `((x0, y0), (x1, y1))`
@@ -350,38 +358,9 @@ pub(crate) fn text_box(text: &str, size: f64) -> ((i32, i32), (i32, i32)) {
     ((0, -em.round() as i32), ((em * 0.7 * n).round() as i32, (em * 0.24).round() as i32))
 }
 
-/// The pixels of `text` at `size` relative to the start of its baseline: every set glyph pixel
-/// scaled to its share of the character cell (see the module doc).
-pub(crate) fn text_pixels(text: &str, size: f64) -> Vec<(i32, i32)> {
-    let em = em(size);
-    let (cw, rh) = (0.7 * em / (COLUMNS + 1) as f64, em / (ABOVE + 1) as f64);
-    let mut out = Vec::new();
-    for (i, c) in text.chars().enumerate() {
-        let left = 0.7 * em * i as f64;
-        for (r, bits) in glyph(c).iter().enumerate() {
-            // row r's top, with the baseline at y = 0 below row ABOVE - 1
-            let top = (r as f64 - ABOVE as f64) * rh;
-            let (ya, yb) = (top.round() as i32, (top + rh).round() as i32);
-            for col in 0..COLUMNS {
-                if bits >> (COLUMNS - 1 - col) & 1 == 0 {
-                    continue;
-                }
-                let x = left + col as f64 * cw;
-                let (xa, xb) = (x.round() as i32, (x + cw).round() as i32);
-                for y in ya..yb.max(ya + 1) {
-                    for x in xa..xb.max(xa + 1) {
-                        out.push((x, y));
-                    }
-                }
-            }
-        }
-    }
-    out
-}
-
 #[cfg(test)]
 mod tests {
-    use super::{Format, text_box, text_pixels};
+    use super::{Format, text_box};
 
     #[test]
     fn polygons_fill_their_inside_only() {
@@ -409,20 +388,30 @@ mod tests {
     }
 
     #[test]
-    fn text_stays_in_its_box_and_scales_the_glyphs() {
+    fn text_stays_in_its_box() {
+        // The box an SVG reader gives a text (cli/tests/figures_reader.rs): at most 0.7 em of
+        // plotters' estimate per character wide, 0.76 drawn em above the baseline and 0.24
+        // below (one pixel more for anti-aliasing).
         for size in [10.0, 12.0, 18.0, 22.0, 40.0] {
-            let text = "Agy|_~";
-            let ((x0, y0), (x1, y1)) = text_box(text, size);
-            let px = text_pixels(text, size);
-            assert!(!px.is_empty());
-            for (x, y) in &px {
-                assert!((x0..=x1).contains(x) && (y0..=y1).contains(y), "{size}: ({x}, {y}) outside");
+            let em = super::drawn_em(size);
+            for text in ["Agy|_~", "WWWWMM", "t∥ λ = 1.5", "iiii", "(Ψ)"] {
+                let ((x0, _), (x1, _)) = text_box(text, size);
+                let (px, width) = super::font::coverage(text, em, f64::from(x1 - x0)).expect("the font");
+                assert!(!px.is_empty() && width <= f64::from(x1 - x0) + 0.01, "{text} at {size}: width {width}");
+                let (top, bottom) = ((-0.76 * em).floor() as i32 - 1, (0.24 * em).ceil() as i32 + 1);
+                for (x, y, _) in &px {
+                    assert!(
+                        (x0 - 1..=x1 + 1).contains(x) && (top..=bottom).contains(y),
+                        "{text} at {size}: ({x}, {y}) outside"
+                    );
+                }
             }
         }
-        // At em = 8 (size 8 * 1.24²) a glyph pixel is one row high and 0.7 * 8 / 6 wide: the
-        // capital I's 7 rows of pixels stand on the baseline, rows -7..-1.
-        let px = text_pixels("I", 8.0 * 1.24 * 1.24);
-        let rows: std::collections::BTreeSet<i32> = px.iter().map(|p| p.1).collect();
-        assert_eq!(rows.into_iter().collect::<Vec<_>>(), vec![-7, -6, -5, -4, -3, -2, -1]);
+        // The capital I stands on the baseline and is 0.73 em high (DejaVu Sans' cap height,
+        // 1493 of 2048 units): at em = 20 its rows are -15..-1.
+        let (px, _) = super::font::coverage("I", 20.0, 100.0).expect("the font");
+        let full: std::collections::BTreeSet<i32> = px.iter().filter(|p| p.2 > 0.99).map(|p| p.1).collect();
+        assert_eq!(full.first().copied(), Some(-14));
+        assert_eq!(full.last().copied(), Some(-1));
     }
 }

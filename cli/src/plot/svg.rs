@@ -247,7 +247,7 @@ impl DrawingBackend for Svg<'_> {
             FontTransform::Rotate270 => format!(r#" transform="rotate(270, {x}, {y})""#),
             _ => String::new(),
         };
-        let (size, f, o, t) = (n(style.size() / 1.24), colour(c), opacity(c), escape(text));
+        let (size, f, o, t) = (n(super::raster::drawn_em(style.size())), colour(c), opacity(c), escape(text));
         let family = escape(style.family().as_str());
         self.emit(format!(r#"<text x="{x}" y="{y}" dy="{dy}" text-anchor="{anchor}" font-family="{family}" font-size="{size}" fill="{f}"{o}{rotate}>{t}</text>"#
         ));
