@@ -132,7 +132,9 @@ impl<T: Field> Pose<T> {
         if crate::scaled::tame(&alpha) {
             // tame: non-zero, and for floats 1/α is a normal number
             let out = self.image_with(p, &T::one().div_ref(&alpha));
-            if out.iter().all(Ring::is_finite_value) {
+            // one test for the three: a sum of finite values that is not finite overflowed,
+            // and any infinity or NaN makes the sum non-finite (the careful path then names it)
+            if out[0].add_ref(&out[1]).add_ref(&out[2]).is_finite_value() {
                 return Ok(out);
             }
         }
@@ -140,6 +142,8 @@ impl<T: Field> Pose<T> {
     }
 
     /// [`Pose::transform_point`] for the inputs the direct path declines.
+    #[cold]
+    #[inline(never)]
     fn transform_point_careful(&self, p: &[T; 3]) -> Result<[T; 3], MotionError> {
         crate::scaled::require_finite("transform_point", self, p)?;
         if let Some((_, s)) = crate::scaled::unusual_scale(self) {
