@@ -139,7 +139,7 @@ fn fig_10_passes_through_the_nine_poses_c1() {
     let all = series("fig10.svg");
     assert_eq!(
         all.iter().map(|s| s["label"].as_str().unwrap()).collect::<Vec<_>>(),
-        ["lambda = 1", "lambda = 0.5", "lambda = 1.5"]
+        ["λ = 1", "λ = 0.5", "λ = 1.5"]
     );
     for (s, lambda) in all.iter().zip([1.0, 0.5, 1.5]) {
         assert_eq!(nums(&s["joins"]), [2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0]);
@@ -238,9 +238,9 @@ fn wl_fig_7_is_the_helix_of_t_par_and_psi() {
         assert_eq!(m["kind"], "arrow");
         (point(&m["points"][0]), point(&m["points"][1]))
     };
-    let (o, down) = arrow("-t_perp");
+    let (o, down) = arrow("-t⊥");
     assert_eq!((o, down), ([0.0; 3], [0.0, 0.0, -1.0]));
-    let (from, to) = arrow("t'_par");
+    let (from, to) = arrow("t'∥");
     let k = 2.0 / (9.0 * PI);
     assert_eq!(from, down);
     let want = [-6.0 * k, 4.0 * k, -1.0];
@@ -248,7 +248,7 @@ fn wl_fig_7_is_the_helix_of_t_par_and_psi() {
         assert!((to[i] - want[i]).abs() < 1e-15, "t'_par ends at {to:?}, want {want:?}");
         assert!((end[i] - want[i]).abs() < 1e-12, "the path ends at {end:?}, t'_par at {want:?}");
     }
-    assert_eq!(arrow("t_par / 8"), ([0.0; 3], [0.5, 0.75, 0.0]));
+    assert_eq!(arrow("t∥ / 8"), ([0.0; 3], [0.5, 0.75, 0.0]));
 }
 
 #[test]

@@ -207,7 +207,7 @@ fn plot_writes_an_svg() {
         "linear speed (solid) and angular speed (dashed)",
         "path of the body point",
         "linear speed |v|",
-        "angular speed |Omega|",
+        "angular speed |Ω|",
         ">t</text>",
         ">x</text>",
         ">y</text>",

@@ -89,7 +89,7 @@ pub(crate) fn fig10_error() -> Result<(Vec<Series>, String), CliError> {
     exact.speeds = vec![vec![0.0; exact.t.len()]];
     exact.angular_speed = vec![0.0; exact.t.len()];
     out.push(exact);
-    let title = "Fig. 10 (companion): the Hermite motions against the exact motion of Jaklic et al.".to_string();
+    let title = "Fig. 10 (companion): the Hermite motions against the exact motion of Jaklič et al.".to_string();
     Ok((out, title))
 }
 
@@ -101,7 +101,7 @@ fn jaklic_frames(lambda: f64, frames: usize) -> Result<Series, CliError> {
     let times: Vec<f64> = (1..=9).map(f64::from).collect();
     let motion = Piecewise::new(times.clone(), segs).map_err(math("the Jaklic motion"))?;
     let shape = Shape {
-        label: format!("lambda = {lambda}"),
+        label: format!("λ = {lambda}"),
         method: "additive".into(),
         segments: 8,
         degree: 3,
@@ -142,7 +142,7 @@ pub(crate) fn control_arcs(kind: SpecKind) -> Result<Vec<Mark>, CliError> {
 /// control poses when `arcs` (Fig. 8).
 fn shapes(kind: SpecKind, arcs: bool) -> Result<Vec<Series>, CliError> {
     let one = |(i, (l0, l3)): (usize, &(f64, f64))| {
-        let label = format!("lambda0 = {l0}, lambda3 = {l3}");
+        let label = format!("λ₀ = {l0}, λ₃ = {l3}");
         segment(label, &sec_5_2::spec(kind, *l0, *l3), if i == 0 { 2 } else { 0 })
     };
     let mut all: Vec<Series> = SHAPES.iter().enumerate().map(one).collect::<Result<_, _>>()?;

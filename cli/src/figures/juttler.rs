@@ -232,32 +232,32 @@ pub(crate) fn all(format: Format) -> Result<Vec<Drawn>, CliError> {
     let figs: Vec<(&'static str, &str, Series)> = vec![
         (
             "juttler_fig1.svg",
-            "Juttler Fig. 1: elliptic rotations + TR translation, equidistant",
+            "Jüttler Fig. 1: elliptic rotations + TR translation, equidistant",
             built("elliptic", Method::JuttlerQMotion, &FIVE, uniform(), None, pts())?,
         ),
         (
             "juttler_fig2.svg",
-            "Juttler Fig. 2: projective rotations (degree 3) + TR translation: a somersault",
+            "Jüttler Fig. 2: projective rotations (degree 3) + TR translation: a somersault",
             series(proj_shape, &proj, pts())?,
         ),
         (
             "juttler_fig3.svg",
-            "Juttler Fig. 3: TR method (Algorithm 1), dt ~ sqrt(dist)",
+            "Jüttler Fig. 3: TR method (Algorithm 1), Δt ~ √dist",
             built("TR", Method::JuttlerQMotion, &FIVE, Parameters::Rule(Parametrisation::Centripetal), None, pts())?,
         ),
         (
             "juttler_fig4.svg",
-            "Juttler Fig. 4: TRT method (l1 = 3, l2 = 0), dt ~ dist + angle",
+            "Jüttler Fig. 4: TRT method (l₁ = 3, l₂ = 0), Δt ~ dist + angle",
             built("TRT", Method::JuttlerTrt, &FOUR, Parameters::Rule(Parametrisation::AngleDistance), Some(3), pts())?,
         ),
         (
             "juttler_fig5a.svg",
-            "Juttler Fig. 5a: rational motion of order 4 through 3 positions, parabola points",
+            "Jüttler Fig. 5a: rational motion of order 4 through 3 positions, parabola points",
             built("minimal", Method::JuttlerMinimal, &THREE, uniform(), None, on_parabola()?)?,
         ),
         (
             "juttler_fig6.svg",
-            "Juttler Fig. 6: C1 spline Q-motion (Algorithm 2) through 6 positions",
+            "Jüttler Fig. 6: C1 spline Q-motion (Algorithm 2) through 6 positions",
             built("spline", Method::JuttlerSpline, &SIX, uniform(), None, pts())?,
         ),
     ];
@@ -277,7 +277,7 @@ pub(crate) fn all(format: Format) -> Result<Vec<Drawn>, CliError> {
         out.push((file, title.to_string(), svg, json!({"title": title, "keys": keys, "series": [s]})));
     }
     let [iso_v, iso_t] = surface_curves()?;
-    let title = "Juttler Fig. 5b: the kinematic surface swept by the parabola (v = const thick, t = const thin)";
+    let title = "Jüttler Fig. 5b: the kinematic surface swept by the parabola (v = const thick, t = const thin)";
     let svg = wireframe([&iso_v, &iso_t], title, format)?;
     let grid = evenly(0.0, 1.0, 9);
     let data = json!({"title": title, "grid": grid, "t": evenly(0.0, 1.0, SAMPLES), "iso_v": iso_v, "iso_t": iso_t});

@@ -56,11 +56,11 @@ fn all() -> Result<Vec<Figure>, CliError> {
     let fig3 = vec![sec4("quadrant then line", None, 9)?];
     let fig4 = [0.0, 5.0, -5.0, 10.0, -10.0]
         .iter()
-        .map(|g| sec4(&format!("gamma = {g}"), Some([*g, 0.0]), 0))
+        .map(|g| sec4(&format!("γ = {g}"), Some([*g, 0.0]), 0))
         .collect::<Result<Vec<_>, _>>()?;
     let fig5 = [0.0, 20.0, -20.0, 40.0, -40.0]
         .iter()
-        .map(|w| sec4(&format!("gamma = {w} omega"), Some([0.0, *w]), 0))
+        .map(|w| sec4(&format!("γ = {w}ω"), Some([0.0, *w]), 0))
         .collect::<Result<Vec<_>, _>>()?;
     Ok([
         (
@@ -69,8 +69,8 @@ fn all() -> Result<Vec<Figure>, CliError> {
             View::Xy,
             fig3,
         ),
-        ("fig4.svg", "Fig. 4: V1 = V0[1 + (Psi + gamma)/6], gamma real: planar".into(), View::Xy, fig4),
-        ("fig5.svg", "Fig. 5: gamma a multiple of omega = e123inf: out of the plane (x-z view)".into(), View::Xz, fig5),
+        ("fig4.svg", "Fig. 4: V₁ = V₀[1 + (Ψ + γ)/6], γ real: planar".into(), View::Xy, fig4),
+        ("fig5.svg", "Fig. 5: γ a multiple of ω = e123∞: out of the plane (x-z view)".into(), View::Xz, fig5),
     ]
     .into_iter()
     .chain(cross2022::figures()?)
@@ -111,7 +111,7 @@ fn increases(series: &[Series]) -> Result<(Vec<Series>, String, String), CliErro
         c.frames.clear();
         out.push(c);
     }
-    let title = "Fig. 5 (companion): the speeds of Fig. 5 as increases over gamma = 0, in per cent".to_string();
+    let title = "Fig. 5 (companion): the speeds of Fig. 5 as increases over γ = 0, in per cent".to_string();
     Ok((out, title, base.label.clone()))
 }
 

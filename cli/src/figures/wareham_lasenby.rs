@@ -89,9 +89,9 @@ fn fig7_arrows() -> Vec<Mark> {
         label: Some(label.to_string()),
     };
     vec![
-        arrow([0.0; 3], down, "-t_perp"),
-        arrow(down, end, "t'_par"),
-        arrow([0.0; 3], p.t_par.map(|x| x / 8.0), "t_par / 8"),
+        arrow([0.0; 3], down, "-t⊥"),
+        arrow(down, end, "t'∥"),
+        arrow([0.0; 3], p.t_par.map(|x| x / 8.0), "t∥ / 8"),
     ]
 }
 
@@ -115,25 +115,25 @@ pub(super) fn figures() -> Result<Vec<Figure>, CliError> {
     let keys = keys.collect::<Result<Vec<_>, _>>().map_err(math)?;
     let lambdas: Vec<f64> = (0..=10).map(|k| f64::from(k) / 10.0).collect();
     let screw = WlLinear::new(&keys, &lambdas).map_err(math)?;
-    let mut fig7 = vec![series("exp(lambda B)", &screw, lambdas, (11, false))?];
+    let mut fig7 = vec![series("exp(λB)", &screw, lambdas, (11, false))?];
     fig7[0].marks = fig7_arrows();
     Ok(vec![
         (
             "wl_fig5.svg",
-            "Wareham-Lasenby Fig. 5: a) piecewise-linear and b) quadratic interpolation of three poses".into(),
+            "Wareham–Lasenby Fig. 5: a) piecewise-linear and b) quadratic interpolation of three poses".into(),
             View::Xy,
             fig5,
         ),
         (
             "wl_fig5a.svg",
-            "Wareham-Lasenby Fig. 5a: piecewise-linear interpolation of three poses".into(),
+            "Wareham–Lasenby Fig. 5a: piecewise-linear interpolation of three poses".into(),
             View::Xy,
             fig5a,
         ),
-        ("wl_fig5b.svg", "Wareham-Lasenby Fig. 5b: quadratic interpolation of three poses".into(), View::Xy, fig5b),
+        ("wl_fig5b.svg", "Wareham–Lasenby Fig. 5b: quadratic interpolation of three poses".into(), View::Xy, fig5b),
         (
             "wl_fig7.svg",
-            "Wareham-Lasenby Fig. 7: the screw path of exp(lambda B), t_par = 4a + 6b, psi = 9 pi, |t_perp| = 1".into(),
+            "Wareham–Lasenby Fig. 7: the screw path of exp(λB), t∥ = 4a + 6b, ψ = 9π, |t⊥| = 1".into(),
             View::ThreeD,
             fig7,
         ),

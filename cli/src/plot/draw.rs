@@ -293,8 +293,8 @@ fn point_label(all: &[Series], s: &Series, j: usize, what: &str) -> String {
 /// otherwise one per body point and one for the angular speed.
 fn entries(all: &[Series], body: Body, (animated, panel): (bool, Panel)) -> Vec<Entry> {
     let (solid, dashed) = match panel {
-        Panel::Acceleration => ("linear acceleration |a| and path", "angular acceleration |Omega'|"),
-        _ => ("linear speed |v| and path", "angular speed |Omega|"),
+        Panel::Acceleration => ("linear acceleration |a| and path", "angular acceleration |Ω'|"),
+        _ => ("linear speed |v| and path", "angular speed |Ω|"),
     };
     let mut out = Vec::new();
     for (si, s) in all.iter().enumerate() {
@@ -412,13 +412,13 @@ fn speeds<DB: DrawingBackend>(
         (Panel::Error(_), false) => "distance, angle (radians)",
         (Panel::Speeds, true) => "linear speed |v| per unit t",
         (Panel::Speeds, false) => "speed per unit t",
-        (Panel::Acceleration, true) => "linear acceleration |a| per unit t^2",
-        (Panel::Acceleration, false) => "acceleration per unit t^2",
+        (Panel::Acceleration, true) => "linear acceleration |a| per unit t²",
+        (Panel::Acceleration, false) => "acceleration per unit t²",
     };
     let y2_desc = match panel {
         Panel::Error(_) => "rotation angle between the two, radians (dashed)",
-        Panel::Acceleration => "angular acceleration |Omega'| per unit t^2 (dashed)",
-        _ => "angular speed |Omega| per unit t (dashed)",
+        Panel::Acceleration => "angular acceleration |Ω'| per unit t² (dashed)",
+        _ => "angular speed |Ω| per unit t (dashed)",
     };
     let mut mesh = chart.configure_mesh();
     style_mesh(&mut mesh, px);
