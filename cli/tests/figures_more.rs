@@ -137,10 +137,7 @@ fn fig_10_passes_through_the_nine_poses_c1() {
     // through c(k); at each join the velocity from the left equals that from the right and is
     // λ c'(k) (the precision velocity scaled by the shape factor); blocks at t = 1..9 on λ = 1.
     let all = series("fig10.svg");
-    assert_eq!(
-        all.iter().map(|s| s["label"].as_str().unwrap()).collect::<Vec<_>>(),
-        ["λ = 1", "λ = 0.5", "λ = 1.5"]
-    );
+    assert_eq!(all.iter().map(|s| s["label"].as_str().unwrap()).collect::<Vec<_>>(), ["λ = 1", "λ = 0.5", "λ = 1.5"]);
     for (s, lambda) in all.iter().zip([1.0, 0.5, 1.5]) {
         assert_eq!(nums(&s["joins"]), [2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0]);
         let (p, v) = (path(s), nums(&s["speeds"][0]));

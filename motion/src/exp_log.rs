@@ -109,6 +109,16 @@ impl<T: Real> Pose<T> {
         Ok(out)
     }
 
+    /// [`Pose::exp`]'s direct path alone: `None` where it would take the careful path (higher
+    /// precision than `f64`, a non-finite scalar part, a non-finite result).
+    pub(crate) fn exp_direct(generator: &Even<T>) -> Option<Self> {
+        if !crate::series::at_most_f64::<T>() || !Real::is_finite(&generator.scalar) {
+            return None;
+        }
+        let out = exp_with_kernel(generator, exp_kernel_fixed, exp_fixed);
+        out.is_finite().then_some(out)
+    }
+
     /// The logarithm of the element (module docs): `exp(log S) = S`, rotational half-angle
     /// in `[0, π]`; the scalar and ω parts are `log|S|`, zero for unitary `S`. Fails for
     /// singular or non-finite `S`.
@@ -157,7 +167,7 @@ impl<T: Real> Pose<T> {
     /// test of the result; `None` sends everything else (non-finite, singular, far from unit
     /// scale, higher precision) to the careful path. A non-finite coefficient makes `α` or
     /// the result non-finite.
-    fn log_direct(&self) -> Option<Even<T>> {
+    pub(crate) fn log_direct(&self) -> Option<Even<T>> {
         if !crate::series::at_most_f64::<T>() {
             return None;
         }

@@ -27,6 +27,9 @@ impl<T: Real> Pose<T> {
     /// assert!(half.is_equivalent(&Pose::rotation(&[0.0, 0.0, 1.0], &0.6).unwrap(), &1e-15).unwrap());
     /// ```
     pub fn power(&self, t: &T) -> Result<Self, MotionError> {
+        if let Some(p) = self.power_direct(t) {
+            return Ok(p);
+        }
         crate::scaled::require_finite("power", self, [t])?;
         let l = self.log()?;
         Pose::exp(&l.scale(t))
@@ -47,10 +50,27 @@ impl<T: Real> Pose<T> {
     /// assert!((&end - &b).components().iter().all(|x| x.abs() < 1e-14f64));
     /// ```
     pub fn slerp(a: &Self, b: &Self, t: &T) -> Result<Self, MotionError> {
+        if crate::series::at_most_f64::<T>() {
+            // the direct path: a non-finite `a`, `b` or `t` cannot give a finite result (every
+            // coefficient enters a product), so one test of the result replaces the checks
+            let out = (&a.reverse() * b).power_direct(t).map(|p| a * &p);
+            if let Some(out) = out.filter(Pose::is_finite) {
+                return Ok(out);
+            }
+        }
         crate::scaled::require_finite("slerp", a, [t])?;
         crate::scaled::require_finite("slerp", b, [])?;
         let rel = &a.reverse() * b;
         Ok(a * &rel.power(t)?)
+    }
+}
+
+impl<T: Real> Pose<T> {
+    /// [`Pose::power`] by the direct paths of `log` and `exp` alone (ordinary input at `f64`
+    /// precision or less); `None` sends the input to the careful path, which names a failure.
+    fn power_direct(&self, t: &T) -> Option<Self> {
+        let l = self.log_direct()?;
+        Pose::exp_direct(&l.scale(t))
     }
 }
 

@@ -88,11 +88,7 @@ fn fig7_arrows() -> Vec<Mark> {
         points: vec![from, to],
         label: Some(label.to_string()),
     };
-    vec![
-        arrow([0.0; 3], down, "-t⊥"),
-        arrow(down, end, "t'∥"),
-        arrow([0.0; 3], p.t_par.map(|x| x / 8.0), "t∥ / 8"),
-    ]
+    vec![arrow([0.0; 3], down, "-t⊥"), arrow(down, end, "t'∥"), arrow([0.0; 3], p.t_par.map(|x| x / 8.0), "t∥ / 8")]
 }
 
 /// W-L Figs. 5 and 7.
