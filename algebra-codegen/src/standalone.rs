@@ -54,13 +54,14 @@ pub fn file(plan: &Plan, header: &[String], nest: Option<&str>) -> syn::Result<s
 pub struct Selection {
     /// Only the operations named here ([`STANDALONE_OPS`]: the products `gp`, `op`, `lc`, `rc`,
     /// `sp`, `regressive`, `commutator`, `anticommutator`; `gp_into`, the output-typed
-    /// geometric products; the actions `sandwich`, `apply`, `sandwich_unit`/`apply_unit` (one
-    /// trait) and `matrix`, their matrix form); `None`: [`DEFAULT_OPS`], the geometric product
-    /// and the versor actions.
+    /// geometric products; the actions `sandwich`, `apply`, `sandwich_unit`, `apply_unit` and
+    /// `matrix`, their matrix form), the actions of every versor type; `None`: [`DEFAULT_OPS`]
+    /// (the geometric product, `apply` and `apply_unit`), the actions of the kinematic versor
+    /// types only (see [`is_kinematic`]).
     pub ops: Option<BTreeSet<String>>,
     /// Also the kernels taking the types the plan adds (automatic `Even`/`Odd`, the full
-    /// multivector), and the actions composed of two full products; by default only kernels
-    /// among the declared types.
+    /// multivector), the actions composed of two full products and, without `ops`, the actions
+    /// of every versor type; by default only kernels among the declared types.
     pub every_type: bool,
 }
 
@@ -82,10 +83,26 @@ pub const STANDALONE_OPS: [&str; 14] = [
     "matrix",
 ];
 
-/// The operations of a standalone file without `--ops`.
-pub const DEFAULT_OPS: [&str; 5] = ["gp", "sandwich", "apply", "sandwich_unit", "apply_unit"];
+/// The operations of a standalone file without `--ops`: the geometric product and the action
+/// `x ↦ V x rev(V)` in its two forms, `apply` (exact for any `V`) and `apply_unit` (the fused
+/// form for unit `V`), of the kinematic versor types ([`is_kinematic`]) on every declared type.
+pub const DEFAULT_OPS: [&str; 3] = ["gp", "apply", "apply_unit"];
+
+/// Whether a type is a kinematic versor type (a motor or rotor): every basis element even, and
+/// the scalar `1` among them (so it holds the identity motion). The default standalone file
+/// keeps the actions of these types only; bivector types (`Line`) and odd versors
+/// (reflections in planes, point reflections) act through `--ops` or `--every-type`.
+pub fn is_kinematic(elements: &[u32]) -> bool {
+    elements.contains(&0) && elements.iter().all(|m| m.count_ones() % 2 == 0)
+}
 
 impl Selection {
+    /// Whether the actions of the versor type `versor` are kept: those of every versor type
+    /// when `ops` is given or with `every_type`, else those of the `kinematic` types.
+    fn acts(&self, versor: &str, kinematic: &[&str]) -> bool {
+        self.ops.is_some() || self.every_type || kinematic.contains(&versor)
+    }
+
     fn keeps(&self, op: &str) -> bool {
         let named = |o: &str| match &self.ops {
             None => DEFAULT_OPS.contains(&o),
@@ -112,9 +129,14 @@ impl Selection {
 /// assert!(!only_gp.contains("OuterProduct < Point < T > > for Motor < T >"));
 /// assert!(!only_gp.contains("GeometricProduct < Multivector < T > > for Multivector < T >"));
 /// assert!(!only_gp.contains("self :: Apply < Point < T > > for Motor < T >"));
-/// // the default: the geometric product and the versor actions among the declared types
+/// // the default: the geometric product, and `apply`/`apply_unit` of the motor (the
+/// // kinematic versor type) on the declared types
 /// let default = text(&Selection::default());
 /// assert!(default.contains("self :: UnitAction < Point < T > > for Motor < T >"));
+/// assert!(default.contains("self :: Apply < Point < T > > for Motor < T >"));
+/// assert!(!default.contains("self :: Sandwich < Point < T > > for Motor < T >"));
+/// assert!(!default.contains("self :: Apply < Motor < T > > for Point < T >"));
+/// assert!(!default.contains("fn sandwich_unit"));
 /// assert!(!default.contains("self :: OuterProduct < Point < T > > for Motor < T >"));
 /// assert!(!default.contains("ActionMatrix < Point"));
 /// ```
@@ -129,12 +151,15 @@ pub fn file_with(plan: &Plan, header: &[String], nest: Option<&str>, selection: 
     file.items.retain(|item| !matches!(item, syn::Item::Fn(f) if crate::named::is_named(&f.sig.ident.to_string())));
     let types: Vec<&str> = plan.spec.types.iter().map(|t| t.name.as_str()).collect();
     let declared = &types[..plan.declared];
-    file.items = select(std::mem::take(&mut file.items), &types, declared, selection);
+    let kinematic: Vec<&str> =
+        (0..plan.declared).filter(|&i| is_kinematic(&plan.spec.types[i].elements)).map(|i| types[i]).collect();
+    file.items = select(std::mem::take(&mut file.items), &types, declared, &kinematic, selection);
     if !selection.every_type {
         file.items = prune(std::mem::take(&mut file.items), &types, declared);
     }
+    drop_dead_dispatch(&mut file.items);
     let closed = file.items.iter().any(|it| it.to_token_stream().to_string().contains("self :: closed_form ::"));
-    file.items.extend(shared_items(closed)?);
+    file.items.extend(shared_items(closed, selection)?);
     let support: syn::File = syn::parse_str(SUPPORT)?;
     file.items.extend(support.items);
     if closed {
@@ -210,15 +235,30 @@ fn kernel_impl(item: &syn::Item, types: &[&str]) -> Option<(&'static str, String
 }
 
 /// The items that survive the selection: every item but the kernel impls, and the kernel
-/// impls of selected operations between selected types. A unit action above the size
-/// threshold calls the general one of its pair, which then stays too.
-fn select(items: Vec<syn::Item>, types: &[&str], declared: &[&str], selection: &Selection) -> Vec<syn::Item> {
+/// impls of selected operations between selected types (actions: of selected versor types,
+/// [`Selection::acts`]); a `UnitAction` impl keeps the selected one of its two methods. A unit
+/// action above the size threshold calls the general one of its pair, which then stays too.
+fn select(
+    mut items: Vec<syn::Item>,
+    types: &[&str],
+    declared: &[&str],
+    kinematic: &[&str],
+    selection: &Selection,
+) -> Vec<syn::Item> {
     let among = |l: &str, r: &str| selection.every_type || (declared.contains(&l) && declared.contains(&r));
+    for item in &mut items {
+        if let Some(("unit", _, _)) = kernel_impl(item, types)
+            && let syn::Item::Impl(imp) = item
+        {
+            imp.items.retain(|it| !matches!(it, syn::ImplItem::Fn(f) if !selection.keeps(&f.sig.ident.to_string())));
+        }
+    }
     let mut needed: BTreeSet<(&'static str, String, String)> = BTreeSet::new();
     for item in &items {
         if let Some(("unit", l, r)) = kernel_impl(item, types)
             && selection.keeps("unit")
             && among(&l, &r)
+            && selection.acts(&l, kinematic)
         {
             let text = item.to_token_stream().to_string();
             for (general, call) in [("apply", "Apply :: apply"), ("sandwich", "Sandwich :: sandwich")] {
@@ -238,7 +278,8 @@ fn select(items: Vec<syn::Item>, types: &[&str], declared: &[&str], selection: &
             {
                 return selection.every_type && selection.keeps("gp") && selection.keeps(op);
             }
-            (among(&l, &r) && selection.keeps(op)) || needed.contains(&(op, l, r))
+            let acts = !matches!(op, "sandwich" | "apply" | "unit" | "matrix") || selection.acts(&l, kinematic);
+            (among(&l, &r) && acts && selection.keeps(op)) || needed.contains(&(op, l, r))
         })
         .collect()
 }
@@ -310,6 +351,54 @@ fn prune(items: Vec<syn::Item>, types: &[&str], declared: &[&str]) -> Vec<syn::I
             Some(item)
         })
         .collect()
+}
+
+/// The generic inherent methods that forward to a kernel trait (`m.apply(&p)` for
+/// `Apply::apply(&m, &p)`): the method, its trait and the trait method it calls.
+const DISPATCH: [(&str, &str, &str); 9] = [
+    ("sandwich", "Sandwich", "sandwich"),
+    ("apply", "Apply", "apply"),
+    ("apply_unit", "UnitAction", "apply_unit"),
+    ("sandwich_unit", "UnitAction", "sandwich_unit"),
+    ("apply_matrix", "ActionMatrix", "apply_matrix"),
+    ("sandwich_matrix", "ActionMatrix", "sandwich_matrix"),
+    ("transform", "ActionMatrix", "transform"),
+    ("join", "RegressiveProduct", "regressive"),
+    ("gp_into", "GeometricProductInto", "gp_into"),
+];
+
+/// Drops the forwarding methods ([`DISPATCH`]) of a type that implements their trait for no
+/// operand in the file: they could not be called (their `where Self: Trait<X>` holds for no
+/// `X`), so no program that compiled loses anything.
+fn drop_dead_dispatch(items: &mut [syn::Item]) {
+    // (trait, trait method, self type) of every kept trait impl
+    let mut implemented: BTreeSet<(String, String, String)> = BTreeSet::new();
+    for item in items.iter() {
+        let syn::Item::Impl(imp) = item else { continue };
+        let (Some((_, path, _)), Some(owner)) = (&imp.trait_, type_name(&imp.self_ty)) else { continue };
+        let Some(last) = path.segments.last() else { continue };
+        for it in &imp.items {
+            if let syn::ImplItem::Fn(f) = it {
+                implemented.insert((last.ident.to_string(), f.sig.ident.to_string(), owner.clone()));
+            }
+        }
+    }
+    for item in items.iter_mut() {
+        let syn::Item::Impl(imp) = item else { continue };
+        if imp.trait_.is_some() {
+            continue;
+        }
+        let Some(owner) = type_name(&imp.self_ty) else { continue };
+        imp.items.retain(|it| {
+            let syn::ImplItem::Fn(f) = it else { return true };
+            let Some((_, tr, method)) = DISPATCH.iter().find(|(name, _, _)| f.sig.ident == name) else { return true };
+            // only the generic forwarding methods (a closed form or a user-facing method of
+            // another shape with one of these names is kept)
+            let forwards = !f.sig.generics.params.is_empty()
+                && f.sig.generics.where_clause.to_token_stream().to_string().contains(&format!("self :: {tr} <"));
+            !forwards || implemented.contains(&(tr.to_string(), method.to_string(), owner.clone()))
+        });
+    }
 }
 
 /// Whether a tokenised item uses the runtime (paths now read `self :: Multivector` etc.).
@@ -385,12 +474,34 @@ fn set_doc(attrs: &mut Vec<syn::Attribute>, doc: &str) {
 /// the solver and `join_terms`, from algebra-core's sources; with `closed` also `Real` and the
 /// closed-form factors (`mod closed_form`, both of algebra-core's files, for the generated
 /// `exp`, `log`, `normalize`, `sqrt` and `pow`).
-fn shared_items(closed: bool) -> syn::Result<Vec<syn::Item>> {
+fn shared_items(closed: bool, selection: &Selection) -> syn::Result<Vec<syn::Item>> {
     let mut items: Vec<syn::Item> = syn::parse_str::<syn::File>(algebra_core::sources::OPS)?
         .items
         .into_iter()
         .filter(|it| matches!(it, syn::Item::Trait(_)))
         .collect();
+    // `UnitAction` with the selected one of its two methods (both when neither is selected)
+    for (kept, dropped, convention) in [
+        ("apply_unit", "sandwich_unit", "`S x rev(S)` ([`Apply`])"),
+        ("sandwich_unit", "apply_unit", "`rev(S) x S` ([`Sandwich`])"),
+    ] {
+        if selection.keeps(kept) && !selection.keeps(dropped) {
+            for item in &mut items {
+                if let syn::Item::Trait(t) = item
+                    && t.ident == "UnitAction"
+                {
+                    t.items.retain(|m| !matches!(m, syn::TraitItem::Fn(f) if f.sig.ident == dropped));
+                    let doc = format!(
+                        " The versor action {convention} for *unit* versors (`S rev(S) = 1`), fused and typed \
+                         but cheaper: since `x S rev(S) = x`, the commutator drops every part of `S` that \
+                         commutes with `x`. Not the action for other versors. algebra-core's `UnitAction` \
+                         with the one method this file selects (`--ops {dropped}` adds `{dropped}`)."
+                    );
+                    set_doc(&mut t.attrs, &doc);
+                }
+            }
+        }
+    }
     for item in syn::parse_str::<syn::File>(algebra_core::sources::SCALAR)?.items {
         let syn::Item::Trait(mut t) = item else { continue };
         let keep: Option<&[&str]> = match t.ident.to_string().as_str() {

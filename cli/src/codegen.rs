@@ -63,13 +63,14 @@ pub struct CodegenArgs {
     /// lc, rc, sp, regressive, commutator, anticommutator, reverse, grade_involution,
     /// conjugate, dual, undual, norm_squared, sandwich, apply, sandwich_unit, apply_unit, exp,
     /// log_unit, normalize). With --standalone: gp, op, lc, rc, sp, regressive, commutator,
-    /// anticommutator, gp_into, sandwich, apply, sandwich_unit, apply_unit, matrix (default:
-    /// gp and the four actions).
+    /// anticommutator, gp_into, sandwich, apply, sandwich_unit, apply_unit, matrix, the actions
+    /// of every versor type (default: gp, and apply and apply_unit of the even types holding
+    /// 1, motors and rotors).
     #[arg(long, value_name = "OPS", value_delimiter = ',')]
     pub ops: Option<Vec<String>>,
     /// With --standalone or --lang c|wgsl|glsl: also the kernels taking the types the generator
     /// adds (automatic Even/Odd, the full multivector); by default only kernels among the
-    /// declared types.
+    /// declared types. With --standalone and no --ops: also the actions of every versor type.
     #[arg(long)]
     pub every_type: bool,
     /// The module name (default: the algebra name, `-` as `_`). With --standalone: wrap the

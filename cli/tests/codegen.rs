@@ -289,8 +289,10 @@ fn standalone_selections_compile_on_their_own() {
         let any = |t: &str| text.contains(&format!("> self::{t}<"));
         match n {
             0 => {
-                // the default: gp and the versor actions among the declared types
+                // the default: gp, and apply/apply_unit of the motor on the declared types
                 assert!(has("UnitAction<Point<T>> for Motor<T>") && has("GeometricProduct<Line<T>> for Motor<T>"));
+                assert!(has("Apply<Line<T>> for Motor<T>") && !any("Sandwich") && !text.contains("fn sandwich_unit"));
+                assert!(!has("Apply<Point<T>> for Plane<T>") && !has("UnitAction<Point<T>> for Line<T>"));
                 assert!(!any("OuterProduct") && !any("ActionMatrix") && !text.contains("struct Multivector"));
             }
             1 => {

@@ -47,78 +47,6 @@ impl<T: self::Ring> Vector<T> {
             e3: self.e3.mul_ref(s),
         }
     }
-    /// The sandwich `f_S(x) = rev(S) x S` of the main paper (eq. 3); a fused kernel typed
-    /// to `x`'s type when `Self` is a versor type (see the `Sandwich` trait).
-    pub fn sandwich<X>(&self, x: &X) -> <Self as self::Sandwich<X>>::Output
-    where
-        Self: self::Sandwich<X>,
-    {
-        self::Sandwich::sandwich(self, x)
-    }
-    /// The action `S x rev(S)` (the klein/GATL/ganja convention); a fused kernel typed to
-    /// `x`'s type when `Self` is a versor type (see the `Apply` trait).
-    pub fn apply<X>(&self, x: &X) -> <Self as self::Apply<X>>::Output
-    where
-        Self: self::Apply<X>,
-    {
-        self::Apply::apply(self, x)
-    }
-    /// `self x rev(self)` for a unit versor (`self rev(self) = 1`), cheaper than
-    /// [`Self::apply`]: `x + (self x - x self) rev(self)`. Not the action otherwise.
-    pub fn apply_unit<X>(&self, x: &X) -> X
-    where
-        Self: self::UnitAction<X>,
-    {
-        self::UnitAction::apply_unit(self, x)
-    }
-    /// `rev(self) x self` for a unit versor, as `x + (rev(self) x - x rev(self)) self`.
-    pub fn sandwich_unit<X>(&self, x: &X) -> X
-    where
-        Self: self::UnitAction<X>,
-    {
-        self::UnitAction::sandwich_unit(self, x)
-    }
-    /// The matrix of the action `x ↦ self x rev(self)` on `X` (see `ActionMatrix`):
-    /// `let m = motor.apply_matrix::<Point<f64>>();` then `Motor::transform(&m, &p)`
-    /// per point equals `motor.apply(&p)`.
-    pub fn apply_matrix<X>(&self) -> <Self as self::ActionMatrix<X>>::Matrix
-    where
-        Self: self::ActionMatrix<X>,
-    {
-        self::ActionMatrix::apply_matrix(self)
-    }
-    /// The matrix of the action `x ↦ rev(self) x self` on `X` (see `ActionMatrix`).
-    pub fn sandwich_matrix<X>(&self) -> <Self as self::ActionMatrix<X>>::Matrix
-    where
-        Self: self::ActionMatrix<X>,
-    {
-        self::ActionMatrix::sandwich_matrix(self)
-    }
-    /// An action matrix of this type applied to `x` (see `ActionMatrix`).
-    pub fn transform<X>(m: &<Self as self::ActionMatrix<X>>::Matrix, x: &X) -> X
-    where
-        Self: self::ActionMatrix<X>,
-    {
-        <Self as self::ActionMatrix<X>>::transform(m, x)
-    }
-    /// The join `self ∨ x` (the regressive product, also `self & x`):
-    /// `undual(dual(self) ^ dual(x))` with the metric-free complements of `dual`, so it
-    /// is the same in degenerate metrics (PGA) as in non-degenerate ones.
-    pub fn join<X>(&self, x: &X) -> <Self as self::RegressiveProduct<X>>::Output
-    where
-        Self: self::RegressiveProduct<X>,
-    {
-        self::RegressiveProduct::regressive(self, x)
-    }
-    /// The geometric product computed only on `O`'s components (the projection of
-    /// `self * x` onto `O`): `let r: Rotor<f64> = a.gp_into(&b);` or
-    /// `a.gp_into::<Rotor<f64>, _>(&b)`. See `GeometricProductInto`.
-    pub fn gp_into<O, X>(&self, x: &X) -> O
-    where
-        Self: self::GeometricProductInto<X, O>,
-    {
-        self::GeometricProductInto::gp_into(self, x)
-    }
     ///The reverse (a linear map; output type chosen at generation).
     pub fn reverse(&self) -> Vector<T> {
         Vector {
@@ -483,14 +411,6 @@ impl<T: self::Ring> Rotor<T> {
             e23: self.e23.mul_ref(s),
         }
     }
-    /// The sandwich `f_S(x) = rev(S) x S` of the main paper (eq. 3); a fused kernel typed
-    /// to `x`'s type when `Self` is a versor type (see the `Sandwich` trait).
-    pub fn sandwich<X>(&self, x: &X) -> <Self as self::Sandwich<X>>::Output
-    where
-        Self: self::Sandwich<X>,
-    {
-        self::Sandwich::sandwich(self, x)
-    }
     /// The action `S x rev(S)` (the klein/GATL/ganja convention); a fused kernel typed to
     /// `x`'s type when `Self` is a versor type (see the `Apply` trait).
     pub fn apply<X>(&self, x: &X) -> <Self as self::Apply<X>>::Output
@@ -506,54 +426,6 @@ impl<T: self::Ring> Rotor<T> {
         Self: self::UnitAction<X>,
     {
         self::UnitAction::apply_unit(self, x)
-    }
-    /// `rev(self) x self` for a unit versor, as `x + (rev(self) x - x rev(self)) self`.
-    pub fn sandwich_unit<X>(&self, x: &X) -> X
-    where
-        Self: self::UnitAction<X>,
-    {
-        self::UnitAction::sandwich_unit(self, x)
-    }
-    /// The matrix of the action `x ↦ self x rev(self)` on `X` (see `ActionMatrix`):
-    /// `let m = motor.apply_matrix::<Point<f64>>();` then `Motor::transform(&m, &p)`
-    /// per point equals `motor.apply(&p)`.
-    pub fn apply_matrix<X>(&self) -> <Self as self::ActionMatrix<X>>::Matrix
-    where
-        Self: self::ActionMatrix<X>,
-    {
-        self::ActionMatrix::apply_matrix(self)
-    }
-    /// The matrix of the action `x ↦ rev(self) x self` on `X` (see `ActionMatrix`).
-    pub fn sandwich_matrix<X>(&self) -> <Self as self::ActionMatrix<X>>::Matrix
-    where
-        Self: self::ActionMatrix<X>,
-    {
-        self::ActionMatrix::sandwich_matrix(self)
-    }
-    /// An action matrix of this type applied to `x` (see `ActionMatrix`).
-    pub fn transform<X>(m: &<Self as self::ActionMatrix<X>>::Matrix, x: &X) -> X
-    where
-        Self: self::ActionMatrix<X>,
-    {
-        <Self as self::ActionMatrix<X>>::transform(m, x)
-    }
-    /// The join `self ∨ x` (the regressive product, also `self & x`):
-    /// `undual(dual(self) ^ dual(x))` with the metric-free complements of `dual`, so it
-    /// is the same in degenerate metrics (PGA) as in non-degenerate ones.
-    pub fn join<X>(&self, x: &X) -> <Self as self::RegressiveProduct<X>>::Output
-    where
-        Self: self::RegressiveProduct<X>,
-    {
-        self::RegressiveProduct::regressive(self, x)
-    }
-    /// The geometric product computed only on `O`'s components (the projection of
-    /// `self * x` onto `O`): `let r: Rotor<f64> = a.gp_into(&b);` or
-    /// `a.gp_into::<Rotor<f64>, _>(&b)`. See `GeometricProductInto`.
-    pub fn gp_into<O, X>(&self, x: &X) -> O
-    where
-        Self: self::GeometricProductInto<X, O>,
-    {
-        self::GeometricProductInto::gp_into(self, x)
     }
     ///The reverse (a linear map; output type chosen at generation).
     pub fn reverse(&self) -> Rotor<T> {
@@ -976,78 +848,6 @@ impl<T: self::Ring> Odd<T> {
             e3: self.e3.mul_ref(s),
             e123: self.e123.mul_ref(s),
         }
-    }
-    /// The sandwich `f_S(x) = rev(S) x S` of the main paper (eq. 3); a fused kernel typed
-    /// to `x`'s type when `Self` is a versor type (see the `Sandwich` trait).
-    pub fn sandwich<X>(&self, x: &X) -> <Self as self::Sandwich<X>>::Output
-    where
-        Self: self::Sandwich<X>,
-    {
-        self::Sandwich::sandwich(self, x)
-    }
-    /// The action `S x rev(S)` (the klein/GATL/ganja convention); a fused kernel typed to
-    /// `x`'s type when `Self` is a versor type (see the `Apply` trait).
-    pub fn apply<X>(&self, x: &X) -> <Self as self::Apply<X>>::Output
-    where
-        Self: self::Apply<X>,
-    {
-        self::Apply::apply(self, x)
-    }
-    /// `self x rev(self)` for a unit versor (`self rev(self) = 1`), cheaper than
-    /// [`Self::apply`]: `x + (self x - x self) rev(self)`. Not the action otherwise.
-    pub fn apply_unit<X>(&self, x: &X) -> X
-    where
-        Self: self::UnitAction<X>,
-    {
-        self::UnitAction::apply_unit(self, x)
-    }
-    /// `rev(self) x self` for a unit versor, as `x + (rev(self) x - x rev(self)) self`.
-    pub fn sandwich_unit<X>(&self, x: &X) -> X
-    where
-        Self: self::UnitAction<X>,
-    {
-        self::UnitAction::sandwich_unit(self, x)
-    }
-    /// The matrix of the action `x ↦ self x rev(self)` on `X` (see `ActionMatrix`):
-    /// `let m = motor.apply_matrix::<Point<f64>>();` then `Motor::transform(&m, &p)`
-    /// per point equals `motor.apply(&p)`.
-    pub fn apply_matrix<X>(&self) -> <Self as self::ActionMatrix<X>>::Matrix
-    where
-        Self: self::ActionMatrix<X>,
-    {
-        self::ActionMatrix::apply_matrix(self)
-    }
-    /// The matrix of the action `x ↦ rev(self) x self` on `X` (see `ActionMatrix`).
-    pub fn sandwich_matrix<X>(&self) -> <Self as self::ActionMatrix<X>>::Matrix
-    where
-        Self: self::ActionMatrix<X>,
-    {
-        self::ActionMatrix::sandwich_matrix(self)
-    }
-    /// An action matrix of this type applied to `x` (see `ActionMatrix`).
-    pub fn transform<X>(m: &<Self as self::ActionMatrix<X>>::Matrix, x: &X) -> X
-    where
-        Self: self::ActionMatrix<X>,
-    {
-        <Self as self::ActionMatrix<X>>::transform(m, x)
-    }
-    /// The join `self ∨ x` (the regressive product, also `self & x`):
-    /// `undual(dual(self) ^ dual(x))` with the metric-free complements of `dual`, so it
-    /// is the same in degenerate metrics (PGA) as in non-degenerate ones.
-    pub fn join<X>(&self, x: &X) -> <Self as self::RegressiveProduct<X>>::Output
-    where
-        Self: self::RegressiveProduct<X>,
-    {
-        self::RegressiveProduct::regressive(self, x)
-    }
-    /// The geometric product computed only on `O`'s components (the projection of
-    /// `self * x` onto `O`): `let r: Rotor<f64> = a.gp_into(&b);` or
-    /// `a.gp_into::<Rotor<f64>, _>(&b)`. See `GeometricProductInto`.
-    pub fn gp_into<O, X>(&self, x: &X) -> O
-    where
-        Self: self::GeometricProductInto<X, O>,
-    {
-        self::GeometricProductInto::gp_into(self, x)
     }
     ///The reverse (a linear map; output type chosen at generation).
     pub fn reverse(&self) -> Odd<T> {
@@ -1657,121 +1457,6 @@ impl<T: self::Ring> Odd<T> {
         }
     }
 }
-impl<T: self::Ring> self::Sandwich<Vector<T>> for Vector<T> {
-    type Output = Vector<T>;
-    ///`rev(self) x self` in one fused kernel: every component of the full product is a [`Vector`] component.
-    #[inline(always)]
-    fn sandwich(&self, x: &Vector<T>) -> Vector<T> {
-        let t0 = ((self.e1.mul_ref(&x.e1))
-            + &((self.e2.mul_ref(&x.e2)) + &(self.e3.mul_ref(&x.e3))));
-        let t1 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
-        let t2 = ((self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1)));
-        let t3 = ((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2)));
-        Vector {
-            e1: ((t0.mul_ref(&self.e1))
-                + &((t1.mul_ref(&self.e2)) + &(t2.mul_ref(&self.e3)))),
-            e2: ((t0.mul_ref(&self.e2))
-                - &((t1.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e3)))),
-            e3: ((t0.mul_ref(&self.e3))
-                - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
-        }
-    }
-}
-impl<T: self::Ring> self::Apply<Vector<T>> for Vector<T> {
-    type Output = Vector<T>;
-    ///`self x rev(self)` in one fused kernel: every component of the full product is a [`Vector`] component.
-    #[inline(always)]
-    fn apply(&self, x: &Vector<T>) -> Vector<T> {
-        let t0 = ((self.e1.mul_ref(&x.e1))
-            + &((self.e2.mul_ref(&x.e2)) + &(self.e3.mul_ref(&x.e3))));
-        let t1 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
-        let t2 = ((self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1)));
-        let t3 = ((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2)));
-        Vector {
-            e1: ((t0.mul_ref(&self.e1))
-                + &((t1.mul_ref(&self.e2)) + &(t2.mul_ref(&self.e3)))),
-            e2: ((t0.mul_ref(&self.e2))
-                - &((t1.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e3)))),
-            e3: ((t0.mul_ref(&self.e3))
-                - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
-        }
-    }
-}
-impl<T: self::Ring> self::Sandwich<Rotor<T>> for Vector<T> {
-    type Output = Rotor<T>;
-    ///`rev(self) x self` in one fused kernel: every component of the full product is a [`Rotor`] component.
-    #[inline(always)]
-    fn sandwich(&self, x: &Rotor<T>) -> Rotor<T> {
-        let t0 = ((self.e1.mul_ref(&x.scalar))
-            - &((self.e2.mul_ref(&x.e12)) + &(self.e3.mul_ref(&x.e13))));
-        let t1 = ((self.e1.mul_ref(&x.e12))
-            + &((self.e2.mul_ref(&x.scalar)) - &(self.e3.mul_ref(&x.e23))));
-        let t2 = ((self.e1.mul_ref(&x.e13))
-            + &((self.e2.mul_ref(&x.e23)) + &(self.e3.mul_ref(&x.scalar))));
-        let t3 = ((self.e1.mul_ref(&x.e23))
-            - &((self.e2.mul_ref(&x.e13)) - &(self.e3.mul_ref(&x.e12))));
-        Rotor {
-            scalar: ((t0.mul_ref(&self.e1))
-                + &((t1.mul_ref(&self.e2)) + &(t2.mul_ref(&self.e3)))),
-            e12: ((t0.mul_ref(&self.e2))
-                - &((t1.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e3)))),
-            e13: ((t0.mul_ref(&self.e3))
-                - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
-            e23: ((t1.mul_ref(&self.e3))
-                - &((t2.mul_ref(&self.e2)) - &(t3.mul_ref(&self.e1)))),
-        }
-    }
-}
-impl<T: self::Ring> self::Apply<Rotor<T>> for Vector<T> {
-    type Output = Rotor<T>;
-    ///`self x rev(self)` in one fused kernel: every component of the full product is a [`Rotor`] component.
-    #[inline(always)]
-    fn apply(&self, x: &Rotor<T>) -> Rotor<T> {
-        let t0 = ((self.e1.mul_ref(&x.scalar))
-            - &((self.e2.mul_ref(&x.e12)) + &(self.e3.mul_ref(&x.e13))));
-        let t1 = ((self.e1.mul_ref(&x.e12))
-            + &((self.e2.mul_ref(&x.scalar)) - &(self.e3.mul_ref(&x.e23))));
-        let t2 = ((self.e1.mul_ref(&x.e13))
-            + &((self.e2.mul_ref(&x.e23)) + &(self.e3.mul_ref(&x.scalar))));
-        let t3 = ((self.e1.mul_ref(&x.e23))
-            - &((self.e2.mul_ref(&x.e13)) - &(self.e3.mul_ref(&x.e12))));
-        Rotor {
-            scalar: ((t0.mul_ref(&self.e1))
-                + &((t1.mul_ref(&self.e2)) + &(t2.mul_ref(&self.e3)))),
-            e12: ((t0.mul_ref(&self.e2))
-                - &((t1.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e3)))),
-            e13: ((t0.mul_ref(&self.e3))
-                - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
-            e23: ((t1.mul_ref(&self.e3))
-                - &((t2.mul_ref(&self.e2)) - &(t3.mul_ref(&self.e1)))),
-        }
-    }
-}
-impl<T: self::Ring> self::Sandwich<Vector<T>> for Rotor<T> {
-    type Output = Vector<T>;
-    ///`rev(self) x self` in one fused kernel: every component of the full product is a [`Vector`] component.
-    #[inline(always)]
-    fn sandwich(&self, x: &Vector<T>) -> Vector<T> {
-        let t0 = ((self.scalar.mul_ref(&x.e1))
-            - &((self.e12.mul_ref(&x.e2)) + &(self.e13.mul_ref(&x.e3))));
-        let t1 = ((self.scalar.mul_ref(&x.e2))
-            + &((self.e12.mul_ref(&x.e1)) - &(self.e23.mul_ref(&x.e3))));
-        let t2 = ((self.scalar.mul_ref(&x.e3))
-            + &((self.e13.mul_ref(&x.e1)) + &(self.e23.mul_ref(&x.e2))));
-        let t3 = self::Ring::neg_ref(
-            &((self.e12.mul_ref(&x.e3))
-                - &((self.e13.mul_ref(&x.e2)) - &(self.e23.mul_ref(&x.e1)))),
-        );
-        Vector {
-            e1: (((t0.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e12)))
-                - &((t2.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e23)))),
-            e2: (((t0.mul_ref(&self.e12)) + &(t1.mul_ref(&self.scalar)))
-                - &((t2.mul_ref(&self.e23)) - &(t3.mul_ref(&self.e13)))),
-            e3: (((t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23)))
-                + &((t2.mul_ref(&self.scalar)) - &(t3.mul_ref(&self.e12)))),
-        }
-    }
-}
 impl<T: self::Ring> self::Apply<Vector<T>> for Rotor<T> {
     type Output = Vector<T>;
     ///`self x rev(self)` in one fused kernel: every component of the full product is a [`Vector`] component.
@@ -1796,31 +1481,6 @@ impl<T: self::Ring> self::Apply<Vector<T>> for Rotor<T> {
                 &(((t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23)))
                     - &((t2.mul_ref(&self.scalar)) + &(t3.mul_ref(&self.e12)))),
             ),
-        }
-    }
-}
-impl<T: self::Ring> self::Sandwich<Rotor<T>> for Rotor<T> {
-    type Output = Rotor<T>;
-    ///`rev(self) x self` in one fused kernel: every component of the full product is a [`Rotor`] component.
-    #[inline(always)]
-    fn sandwich(&self, x: &Rotor<T>) -> Rotor<T> {
-        let t0 = (((self.scalar.mul_ref(&x.scalar)) + &(self.e12.mul_ref(&x.e12)))
-            + &((self.e13.mul_ref(&x.e13)) + &(self.e23.mul_ref(&x.e23))));
-        let t1 = (((self.scalar.mul_ref(&x.e12)) - &(self.e12.mul_ref(&x.scalar)))
-            + &((self.e13.mul_ref(&x.e23)) - &(self.e23.mul_ref(&x.e13))));
-        let t2 = (((self.scalar.mul_ref(&x.e13)) - &(self.e12.mul_ref(&x.e23)))
-            - &((self.e13.mul_ref(&x.scalar)) - &(self.e23.mul_ref(&x.e12))));
-        let t3 = (((self.scalar.mul_ref(&x.e23)) + &(self.e12.mul_ref(&x.e13)))
-            - &((self.e13.mul_ref(&x.e12)) + &(self.e23.mul_ref(&x.scalar))));
-        Rotor {
-            scalar: (((t0.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e12)))
-                - &((t2.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e23)))),
-            e12: (((t0.mul_ref(&self.e12)) + &(t1.mul_ref(&self.scalar)))
-                - &((t2.mul_ref(&self.e23)) - &(t3.mul_ref(&self.e13)))),
-            e13: (((t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23)))
-                + &((t2.mul_ref(&self.scalar)) - &(t3.mul_ref(&self.e12)))),
-            e23: (((t0.mul_ref(&self.e23)) - &(t1.mul_ref(&self.e13)))
-                + &((t2.mul_ref(&self.e12)) + &(t3.mul_ref(&self.scalar)))),
         }
     }
 }
@@ -1855,145 +1515,7 @@ impl<T: self::Ring> self::Apply<Rotor<T>> for Rotor<T> {
         }
     }
 }
-impl<T: self::Ring> self::UnitAction<Vector<T>> for Vector<T> {
-    /// `rev(self) x self` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
-    /// The commutator form `x + (L x - x L) R`: 12 multiplications.
-    /// Every component of the full product is a `Vector` component: this is the whole action.
-    #[inline]
-    fn sandwich_unit(&self, x: &Vector<T>) -> Vector<T> {
-        let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
-        let t1 = ((self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1)));
-        let t2 = ((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2)));
-        Vector {
-            e1: {
-                let y = ((t0.mul_ref(&self.e2)) + &(t1.mul_ref(&self.e3)));
-                x.e1.add_ref(&y) + &y
-            },
-            e2: {
-                let y = self::Ring::neg_ref(
-                    &((t0.mul_ref(&self.e1)) - &(t2.mul_ref(&self.e3))),
-                );
-                x.e2.add_ref(&y) + &y
-            },
-            e3: {
-                let y = self::Ring::neg_ref(
-                    &((t1.mul_ref(&self.e1)) + &(t2.mul_ref(&self.e2))),
-                );
-                x.e3.add_ref(&y) + &y
-            },
-        }
-    }
-    /// `self x rev(self)` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
-    /// The commutator form `x + (L x - x L) R`: 12 multiplications.
-    /// Every component of the full product is a `Vector` component: this is the whole action.
-    #[inline]
-    fn apply_unit(&self, x: &Vector<T>) -> Vector<T> {
-        let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
-        let t1 = ((self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1)));
-        let t2 = ((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2)));
-        Vector {
-            e1: {
-                let y = ((t0.mul_ref(&self.e2)) + &(t1.mul_ref(&self.e3)));
-                x.e1.add_ref(&y) + &y
-            },
-            e2: {
-                let y = self::Ring::neg_ref(
-                    &((t0.mul_ref(&self.e1)) - &(t2.mul_ref(&self.e3))),
-                );
-                x.e2.add_ref(&y) + &y
-            },
-            e3: {
-                let y = self::Ring::neg_ref(
-                    &((t1.mul_ref(&self.e1)) + &(t2.mul_ref(&self.e2))),
-                );
-                x.e3.add_ref(&y) + &y
-            },
-        }
-    }
-}
-impl<T: self::Ring> self::UnitAction<Rotor<T>> for Vector<T> {
-    /// `rev(self) x self` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
-    /// The commutator form `x + (L x - x L) R`: 12 multiplications.
-    /// Every component of the full product is a `Rotor` component: this is the whole action.
-    #[inline]
-    fn sandwich_unit(&self, x: &Rotor<T>) -> Rotor<T> {
-        let t0 = self::Ring::neg_ref(
-            &((self.e2.mul_ref(&x.e12)) + &(self.e3.mul_ref(&x.e13))),
-        );
-        let t1 = ((self.e1.mul_ref(&x.e12)) - &(self.e3.mul_ref(&x.e23)));
-        let t2 = ((self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23)));
-        Rotor {
-            scalar: ::core::clone::Clone::clone(&x.scalar),
-            e12: {
-                let y = ((t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1)));
-                x.e12.add_ref(&y) + &y
-            },
-            e13: {
-                let y = ((t0.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e1)));
-                x.e13.add_ref(&y) + &y
-            },
-            e23: {
-                let y = ((t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e2)));
-                x.e23.add_ref(&y) + &y
-            },
-        }
-    }
-    /// `self x rev(self)` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
-    /// The commutator form `x + (L x - x L) R`: 12 multiplications.
-    /// Every component of the full product is a `Rotor` component: this is the whole action.
-    #[inline]
-    fn apply_unit(&self, x: &Rotor<T>) -> Rotor<T> {
-        let t0 = self::Ring::neg_ref(
-            &((self.e2.mul_ref(&x.e12)) + &(self.e3.mul_ref(&x.e13))),
-        );
-        let t1 = ((self.e1.mul_ref(&x.e12)) - &(self.e3.mul_ref(&x.e23)));
-        let t2 = ((self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23)));
-        Rotor {
-            scalar: ::core::clone::Clone::clone(&x.scalar),
-            e12: {
-                let y = ((t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1)));
-                x.e12.add_ref(&y) + &y
-            },
-            e13: {
-                let y = ((t0.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e1)));
-                x.e13.add_ref(&y) + &y
-            },
-            e23: {
-                let y = ((t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e2)));
-                x.e23.add_ref(&y) + &y
-            },
-        }
-    }
-}
 impl<T: self::Ring> self::UnitAction<Vector<T>> for Rotor<T> {
-    /// `rev(self) x self` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
-    /// The commutator form `x + (L x - x L) R`: 15 multiplications.
-    /// Every component of the full product is a `Vector` component: this is the whole action.
-    #[inline]
-    fn sandwich_unit(&self, x: &Vector<T>) -> Vector<T> {
-        let t0 = self::Ring::neg_ref(
-            &((self.e12.mul_ref(&x.e2)) + &(self.e13.mul_ref(&x.e3))),
-        );
-        let t1 = ((self.e12.mul_ref(&x.e1)) - &(self.e23.mul_ref(&x.e3)));
-        let t2 = ((self.e13.mul_ref(&x.e1)) + &(self.e23.mul_ref(&x.e2)));
-        Vector {
-            e1: {
-                let y = ((t0.mul_ref(&self.scalar))
-                    - &((t1.mul_ref(&self.e12)) + &(t2.mul_ref(&self.e13))));
-                x.e1.add_ref(&y) + &y
-            },
-            e2: {
-                let y = ((t0.mul_ref(&self.e12))
-                    + &((t1.mul_ref(&self.scalar)) - &(t2.mul_ref(&self.e23))));
-                x.e2.add_ref(&y) + &y
-            },
-            e3: {
-                let y = ((t0.mul_ref(&self.e13))
-                    + &((t1.mul_ref(&self.e23)) + &(t2.mul_ref(&self.scalar))));
-                x.e3.add_ref(&y) + &y
-            },
-        }
-    }
     /// `self x rev(self)` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
     /// The commutator form `x + (L x - x L) R`: 15 multiplications.
     /// Every component of the full product is a `Vector` component: this is the whole action.
@@ -2030,37 +1552,6 @@ impl<T: self::Ring> self::UnitAction<Vector<T>> for Rotor<T> {
     }
 }
 impl<T: self::Ring> self::UnitAction<Rotor<T>> for Rotor<T> {
-    /// `rev(self) x self` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
-    /// The commutator form `x + (L x - x L) R`: 15 multiplications.
-    /// Every component of the full product is a `Rotor` component: this is the whole action.
-    #[inline]
-    fn sandwich_unit(&self, x: &Rotor<T>) -> Rotor<T> {
-        let t0 = ((self.e13.mul_ref(&x.e23)) - &(self.e23.mul_ref(&x.e13)));
-        let t1 = self::Ring::neg_ref(
-            &((self.e12.mul_ref(&x.e23)) - &(self.e23.mul_ref(&x.e12))),
-        );
-        let t2 = ((self.e12.mul_ref(&x.e13)) - &(self.e13.mul_ref(&x.e12)));
-        Rotor {
-            scalar: ::core::clone::Clone::clone(&x.scalar),
-            e12: {
-                let y = ((t0.mul_ref(&self.scalar))
-                    - &((t1.mul_ref(&self.e23)) - &(t2.mul_ref(&self.e13))));
-                x.e12.add_ref(&y) + &y
-            },
-            e13: {
-                let y = ((t0.mul_ref(&self.e23))
-                    + &((t1.mul_ref(&self.scalar)) - &(t2.mul_ref(&self.e12))));
-                x.e13.add_ref(&y) + &y
-            },
-            e23: {
-                let y = self::Ring::neg_ref(
-                    &((t0.mul_ref(&self.e13))
-                        - &((t1.mul_ref(&self.e12)) + &(t2.mul_ref(&self.scalar)))),
-                );
-                x.e23.add_ref(&y) + &y
-            },
-        }
-    }
     /// `self x rev(self)` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
     /// The commutator form `x + (L x - x L) R`: 15 multiplications.
     /// Every component of the full product is a `Rotor` component: this is the whole action.
@@ -2197,15 +1688,8 @@ pub trait ActionMatrix<X> {
     /// The matrix applied to `x` (skipping entries that are structurally zero).
     fn transform(m: &Self::Matrix, x: &X) -> X;
 }
-/// The versor action for *unit* versors (`S rev(S) = 1`), typed and fused as [`Apply`] and
-/// [`Sandwich`] but cheaper: since `x S rev(S) = x`, the action is `x + (S x - x S) rev(S)`,
-/// and the commutator drops every part of `S` that commutes with `x`. Exact over any ring when
-/// `S rev(S) = 1` holds exactly; for other versors the result is not the action. Generated for
-/// every pair with a fused kernel (`apply_unit`/`sandwich_unit`; an example is in `gam_algebras`'
-/// crate docs).
+/// The versor action `S x rev(S)` ([`Apply`]) for *unit* versors (`S rev(S) = 1`), fused and typed but cheaper: since `x S rev(S) = x`, the commutator drops every part of `S` that commutes with `x`. Not the action for other versors. algebra-core's `UnitAction` with the one method this file selects (`--ops sandwich_unit` adds `sandwich_unit`).
 pub trait UnitAction<X> {
-    /// `rev(self) x self` ([`Sandwich`]) for a unit `self`.
-    fn sandwich_unit(&self, x: &X) -> X;
     /// `self x rev(self)` ([`Apply`]) for a unit `self`.
     fn apply_unit(&self, x: &X) -> X;
 }
