@@ -631,9 +631,40 @@ fn compact(items: Vec<syn::Item>, types: &[&str]) -> syn::Result<Vec<syn::Item>>
         }
         out.push(item);
     }
+    // the projections `a.project_to_b()` of a type in one impl block (where the first was)
+    let mut projections: std::collections::BTreeMap<String, Vec<syn::ImplItem>> = Default::default();
+    let mut merged: Vec<syn::Item> = Vec::new();
+    for mut item in out {
+        if let syn::Item::Impl(imp) = &mut item {
+            zero_rest(imp);
+            let only_projections = imp.trait_.is_none()
+                && !imp.items.is_empty()
+                && imp
+                    .items
+                    .iter()
+                    .all(|it| matches!(it, syn::ImplItem::Fn(f) if f.sig.ident.to_string().starts_with("project_to_")));
+            if only_projections && let Some(owner) = type_name(&imp.self_ty) {
+                let first = !projections.contains_key(&owner);
+                projections.entry(owner).or_default().append(&mut imp.items);
+                if !first {
+                    continue;
+                }
+            }
+        }
+        merged.push(item);
+    }
+    for item in &mut merged {
+        if let syn::Item::Impl(imp) = item
+            && imp.trait_.is_none()
+            && imp.items.is_empty()
+            && let Some(fns) = type_name(&imp.self_ty).and_then(|o| projections.remove(&o))
+        {
+            imp.items = fns;
+        }
+    }
     // `value_type!` after each struct (the basis elements are known once every impl was read)
     let mut items = Vec::new();
-    for item in out {
+    for item in merged {
         let invocation = match &item {
             syn::Item::Struct(st) => fields.get(&st.ident.to_string()).map(|f| {
                 let ty = &st.ident;
@@ -658,6 +689,48 @@ fn compact(items: Vec<syn::Item>, types: &[&str]) -> syn::Result<Vec<syn::Item>>
     }
     macros.extend(items);
     Ok(macros)
+}
+
+/// In the projections and embeddings between types (`project_to_b`, `From<&A> for B`), a
+/// struct literal's zero fields as `..B::zero()`, and a literal with nothing but zeros as
+/// `B::zero()`.
+fn zero_rest(imp: &mut syn::ItemImpl) {
+    let conversion = match &imp.trait_ {
+        Some((_, path, _)) => path.segments.last().is_some_and(|l| l.ident == "From"),
+        None => true,
+    };
+    if !conversion {
+        return;
+    }
+    for it in &mut imp.items {
+        let syn::ImplItem::Fn(f) = it else { continue };
+        let name = f.sig.ident.to_string();
+        if imp.trait_.is_none() && !name.starts_with("project_to_") {
+            continue;
+        }
+        let Some(syn::Stmt::Expr(syn::Expr::Struct(lit), None)) = f.block.stmts.last_mut() else { continue };
+        if lit.rest.is_some() {
+            continue;
+        }
+        let zero = |e: &syn::Expr| e.to_token_stream().to_string() == "T :: zero ()";
+        let before = lit.fields.len();
+        let fields: syn::punctuated::Punctuated<syn::FieldValue, syn::Token![,]> =
+            lit.fields.iter().filter(|fv| !zero(&fv.expr)).cloned().collect();
+        if fields.len() == before {
+            continue;
+        }
+        let ty = &lit.path;
+        if fields.is_empty() {
+            *f.block.stmts.last_mut().expect("checked above") = syn::Stmt::Expr(parse_quote!(#ty::zero()), None);
+        } else {
+            lit.fields = fields;
+            if !lit.fields.trailing_punct() {
+                lit.fields.push_punct(Default::default());
+            }
+            lit.dot2_token = Some(Default::default());
+            lit.rest = Some(Box::new(parse_quote!(#ty::zero())));
+        }
+    }
 }
 
 /// The generic inherent methods that forward to a kernel trait (`m.apply(&p)` for
@@ -802,7 +875,7 @@ fn shared_items(closed: bool, used: &BTreeSet<String>, selection: &Selection) ->
                         " The versor action {convention} for *unit* versors (`S rev(S) = 1`), fused and typed \
                          but cheaper: since `x S rev(S) = x`, the commutator drops every part of `S` that \
                          commutes with `x`. Not the action for other versors. algebra-core's `UnitAction` \
-                         with the one method this file selects (`--ops {dropped}` adds `{dropped}`)."
+                         with the one method this file selects (name `{dropped}` in `--ops` for both)."
                     );
                     set_doc(&mut t.attrs, &doc);
                 }

@@ -691,12 +691,7 @@ impl<T: self::Ring> self::GeometricProduct<Rotor<T>> for Rotor<T> {
 impl<T: self::Ring> Vector<T> {
     ///The projection onto [`Rotor`]: shared coefficients kept, the others dropped.
     pub fn project_to_rotor(&self) -> Rotor<T> {
-        Rotor {
-            scalar: T::zero(),
-            e12: T::zero(),
-            e13: T::zero(),
-            e23: T::zero(),
-        }
+        Rotor::zero()
     }
 }
 impl<T: self::Ring> ::core::convert::From<&Vector<T>> for Odd<T> {
@@ -706,29 +701,18 @@ impl<T: self::Ring> ::core::convert::From<&Vector<T>> for Odd<T> {
             e1: ::core::clone::Clone::clone(&x.e1),
             e2: ::core::clone::Clone::clone(&x.e2),
             e3: ::core::clone::Clone::clone(&x.e3),
-            e123: T::zero(),
+            ..Odd::zero()
         }
     }
 }
 impl<T: self::Ring> Rotor<T> {
     ///The projection onto [`Vector`]: shared coefficients kept, the others dropped.
     pub fn project_to_vector(&self) -> Vector<T> {
-        Vector {
-            e1: T::zero(),
-            e2: T::zero(),
-            e3: T::zero(),
-        }
+        Vector::zero()
     }
-}
-impl<T: self::Ring> Rotor<T> {
     ///The projection onto [`Odd`]: shared coefficients kept, the others dropped.
     pub fn project_to_odd(&self) -> Odd<T> {
-        Odd {
-            e1: T::zero(),
-            e2: T::zero(),
-            e3: T::zero(),
-            e123: T::zero(),
-        }
+        Odd::zero()
     }
 }
 impl<T: self::Ring> Odd<T> {
@@ -740,16 +724,9 @@ impl<T: self::Ring> Odd<T> {
             e3: ::core::clone::Clone::clone(&self.e3),
         }
     }
-}
-impl<T: self::Ring> Odd<T> {
     ///The projection onto [`Rotor`]: shared coefficients kept, the others dropped.
     pub fn project_to_rotor(&self) -> Rotor<T> {
-        Rotor {
-            scalar: T::zero(),
-            e12: T::zero(),
-            e13: T::zero(),
-            e23: T::zero(),
-        }
+        Rotor::zero()
     }
 }
 impl<T: self::Ring> self::Apply<Vector<T>> for Rotor<T> {
@@ -983,7 +960,7 @@ pub trait ActionMatrix<X> {
     /// The matrix applied to `x` (skipping entries that are structurally zero).
     fn transform(m: &Self::Matrix, x: &X) -> X;
 }
-/// The versor action `S x rev(S)` ([`Apply`]) for *unit* versors (`S rev(S) = 1`), fused and typed but cheaper: since `x S rev(S) = x`, the commutator drops every part of `S` that commutes with `x`. Not the action for other versors. algebra-core's `UnitAction` with the one method this file selects (`--ops sandwich_unit` adds `sandwich_unit`).
+/// The versor action `S x rev(S)` ([`Apply`]) for *unit* versors (`S rev(S) = 1`), fused and typed but cheaper: since `x S rev(S) = x`, the commutator drops every part of `S` that commutes with `x`. Not the action for other versors. algebra-core's `UnitAction` with the one method this file selects (name `sandwich_unit` in `--ops` for both).
 pub trait UnitAction<X> {
     /// `self x rev(self)` ([`Apply`]) for a unit `self`.
     fn apply_unit(&self, x: &X) -> X;
