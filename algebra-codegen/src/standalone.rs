@@ -6,6 +6,12 @@
 //! `join_terms`, all
 //! parsed from algebra-core's own sources ([`algebra_core::sources`]), then
 //! `standalone/support.rs` (`f32`/`f64` impls, `MvError`, `format_term`).
+//!
+//! The kernels are those of a [`Selection`] (by default the geometric product and `apply` /
+//! `apply_unit` of the motor and rotor types). The value semantics every type shares and the
+//! product operators are written once, as the macros of `standalone/values.rs` invoked per
+//! type and per product (`compact`); [`layout`] prints those macros as written after
+//! prettyplease.
 
 use crate::paths::{join_path, map_engine_paths};
 use crate::plan::Plan;

@@ -276,8 +276,14 @@ fn standalone_selections_compile_on_their_own() {
     let dir = std::env::temp_dir().join(format!("gam-standalone-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let mut lines = Vec::new();
-    for (n, extra) in
-        [vec![], vec!["--ops", "gp,op,regressive,apply_unit"], vec!["--ops", "gp", "--every-type"]].iter().enumerate()
+    for (n, extra) in [
+        vec![],
+        vec!["--ops", "gp,op,regressive,apply_unit"],
+        vec!["--ops", "gp", "--every-type"],
+        vec!["--ops", "gp,sandwich,apply,sandwich_unit,apply_unit"],
+    ]
+    .iter()
+    .enumerate()
     {
         let mut args = vec!["codegen", "--standalone", "--algebra", "pga3", "--types", types];
         args.extend(extra.iter().copied());
@@ -300,7 +306,15 @@ fn standalone_selections_compile_on_their_own() {
                 assert!(!has("Apply<Point<T>> for Motor<T>") && !any("LeftContraction"));
                 assert!(text.lines().nth(1).unwrap().contains("--ops gp,op,regressive,apply_unit"));
             }
-            _ => assert!(has("GeometricProduct<Multivector<T>> for Multivector<T>") && !any("UnitAction")),
+            2 => assert!(has("GeometricProduct<Multivector<T>> for Multivector<T>") && !any("UnitAction")),
+            _ => {
+                // the earlier default: both conventions, of every versor type (a plane's
+                // reflection, a line's half-turn), and both unit methods
+                assert!(has("Sandwich<Point<T>> for Plane<T>") && has("Apply<Motor<T>> for Line<T>"));
+                assert!(
+                    has("UnitAction<Point<T>> for Point<T>") && text.contains("fn sandwich_unit(&self, x: &Line<T>)")
+                );
+            }
         }
         let file = dir.join(format!("k{n}.rs"));
         std::fs::write(&file, &text).unwrap();
