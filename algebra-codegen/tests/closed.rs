@@ -129,7 +129,9 @@ fn emitted_in_modules_and_standalone_files_but_the_invariant_family() {
         assert!(module.contains(m) && text.contains(m), "{m}");
     }
     assert!(
-        text.contains("pub mod closed_form") && text.contains("pub trait Real") && text.contains("impl Real for f32")
+        text.contains("pub mod closed_form")
+            && text.contains("pub trait Real")
+            && text.contains("float_real ! (f32 , f64)")
     );
     assert!(!text.contains("algebra_core ::"), "no path into algebra-core");
     // CGA: the invariant decomposition in the module, not in the standalone file

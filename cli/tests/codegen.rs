@@ -276,8 +276,14 @@ fn standalone_selections_compile_on_their_own() {
     let dir = std::env::temp_dir().join(format!("gam-standalone-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let mut lines = Vec::new();
-    for (n, extra) in
-        [vec![], vec!["--ops", "gp,op,regressive,apply_unit"], vec!["--ops", "gp", "--every-type"]].iter().enumerate()
+    for (n, extra) in [
+        vec![],
+        vec!["--ops", "gp,op,regressive,apply_unit"],
+        vec!["--ops", "gp", "--every-type"],
+        vec!["--ops", "gp,sandwich,apply,sandwich_unit,apply_unit"],
+    ]
+    .iter()
+    .enumerate()
     {
         let mut args = vec!["codegen", "--standalone", "--algebra", "pga3", "--types", types];
         args.extend(extra.iter().copied());
@@ -289,8 +295,10 @@ fn standalone_selections_compile_on_their_own() {
         let any = |t: &str| text.contains(&format!("> self::{t}<"));
         match n {
             0 => {
-                // the default: gp and the versor actions among the declared types
+                // the default: gp, and apply/apply_unit of the motor on the declared types
                 assert!(has("UnitAction<Point<T>> for Motor<T>") && has("GeometricProduct<Line<T>> for Motor<T>"));
+                assert!(has("Apply<Line<T>> for Motor<T>") && !any("Sandwich") && !text.contains("fn sandwich_unit"));
+                assert!(!has("Apply<Point<T>> for Plane<T>") && !has("UnitAction<Point<T>> for Line<T>"));
                 assert!(!any("OuterProduct") && !any("ActionMatrix") && !text.contains("struct Multivector"));
             }
             1 => {
@@ -298,7 +306,15 @@ fn standalone_selections_compile_on_their_own() {
                 assert!(!has("Apply<Point<T>> for Motor<T>") && !any("LeftContraction"));
                 assert!(text.lines().nth(1).unwrap().contains("--ops gp,op,regressive,apply_unit"));
             }
-            _ => assert!(has("GeometricProduct<Multivector<T>> for Multivector<T>") && !any("UnitAction")),
+            2 => assert!(has("GeometricProduct<Multivector<T>> for Multivector<T>") && !any("UnitAction")),
+            _ => {
+                // the earlier default: both conventions, of every versor type (a plane's
+                // reflection, a line's half-turn), and both unit methods
+                assert!(has("Sandwich<Point<T>> for Plane<T>") && has("Apply<Motor<T>> for Line<T>"));
+                assert!(
+                    has("UnitAction<Point<T>> for Point<T>") && text.contains("fn sandwich_unit(&self, x: &Line<T>)")
+                );
+            }
         }
         let file = dir.join(format!("k{n}.rs"));
         std::fs::write(&file, &text).unwrap();
@@ -370,5 +386,130 @@ fn main() {
         }
     }
     assert!(lines.next().unwrap().contains("normalize is not defined"), "{text}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The default standalone file for 3D PGA with `Motor`, `Point`, `Line`, `Plane` (issue 26 item
+/// 4): at most 3,000 lines, compiles with rustc alone under `-D warnings`, and its `apply` and
+/// `apply_unit` of a motor (a rotation about a general axis, then a translation) on points agree
+/// with the 4x4 matrix `[[R, t], [0, 1]]` to 1e-12. The program also touches the value
+/// semantics `value_type!` writes (constructors, arrays, indexing, iteration, operators by value
+/// and by reference, compound assignment, `s * x`, `Display`, `Debug`) and the closed forms.
+#[test]
+fn standalone_pga3_default_is_lean_and_moves_points_like_a_matrix() {
+    let types = "Motor=even;Point=grade3;Line=grade2;Plane=grade1";
+    let out = gam(&["codegen", "--standalone", "--algebra", "pga3", "--types", types]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let text = String::from_utf8(out.stdout).unwrap();
+    let lines = text.lines().count();
+    assert!(lines <= 3000, "{lines} lines");
+    // one convention, of the motor only; the value semantics written once
+    assert!(!text.contains("> self::Sandwich<") && !text.contains("fn sandwich_unit"));
+    assert!(
+        text.contains("> self::Apply<Point<T>> for Motor<T>") && !text.contains("> self::Apply<Point<T>> for Line<T>")
+    );
+    assert_eq!(text.matches("macro_rules! value_type").count(), 1);
+    assert_eq!(text.matches("impl<T: self::Ring> ::core::ops::Neg for").count(), 0, "no per-type copies");
+    let dir = std::env::temp_dir().join(format!("gam-standalone-lean-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(dir.join("kernels.rs"), &text).unwrap();
+    let main = r#"
+mod kernels;
+use kernels::{Line, Motor, Plane, Point};
+
+/// (x, y, z) as a point of this file: x = -e023, y = e013, z = -e012, weight e123.
+fn point(x: f64, y: f64, z: f64) -> Point<f64> {
+    Point::new(-z, y, -x, 1.0)
+}
+
+fn main() {
+    // R = exp(-θ/2 (nx e23 + ny e31 + nz e12)) turns by θ about the unit axis n; T = 1 - t e0/2
+    // moves by t; M = T R turns, then moves (M x rev(M)).
+    let (theta, n, t) = (0.9_f64, [2.0_f64, -1.0, 2.0].map(|c| c / 3.0), [0.5_f64, -1.25, 2.0]);
+    let (s, c) = (theta / 2.0).sin_cos();
+    let r = Motor::new(c, 0.0, 0.0, -s * n[2], 0.0, s * n[1], -s * n[0], 0.0);
+    let tr = Motor::new(1.0, -t[0] / 2.0, -t[1] / 2.0, 0.0, -t[2] / 2.0, 0.0, 0.0, 0.0);
+    let m = &tr * &r;
+    for p in [[1.0, 2.0, 0.5], [0.0, 0.0, 0.0], [-3.0, 0.25, 7.0]] {
+        let (a, b) = (m.apply(&point(p[0], p[1], p[2])), m.apply_unit(&point(p[0], p[1], p[2])));
+        for q in [a, b] {
+            println!("{:e} {:e} {:e} {:e}", -q.e023, q.e013, -q.e012, q.e123);
+        }
+    }
+    // the same motor through exp of a line (the closed form) and back through log
+    let back = m.log().unwrap().exp();
+    println!("{:e}", (back - m).iter().map(|x| x.abs()).fold(0.0, f64::max));
+
+    // value semantics (value_type!, scalar_times!, product_operators!)
+    let mut l = Line::<f64>::from_array([1.0, 2.0, 3.0, 4.0, 5.0, 6.0]);
+    assert_eq!(Line::<f64>::LEN, 6);
+    assert_eq!(Line::<f64>::ELEMENTS[3], "e03");
+    assert_eq!((l[2], l.e12), (3.0, 3.0));
+    l[2] = -3.0;
+    *l.iter_mut().next().unwrap() += 1.0;
+    assert_eq!(l.to_array(), [2.0, 2.0, -3.0, 4.0, 5.0, 6.0]);
+    let arr: [f64; 6] = l.into();
+    assert_eq!(Line::from(arr), l);
+    assert_eq!(l.iter().sum::<f64>(), (&l).into_iter().sum::<f64>());
+    assert_eq!(l.into_iter().count(), 6);
+    let mut q = Plane::<f64>::e1() * 2.0 + Plane::e2() - Plane::e3() / 4.0;
+    q += Plane::e0();
+    q -= Plane::e2();
+    q *= 2.0;
+    q /= 4.0;
+    assert_eq!(q, Plane::new(0.5, 1.0, 0.0, -0.125));
+    assert_eq!(format!("{q}"), "0.5*e0 + e1 - 0.125*e3");
+    assert_eq!(format!("{:?}", -&q), "Plane(-0.5*e0 - e1 + 0.125*e3)");
+    assert_eq!(2.0 * &q, &q + &q);
+    assert_eq!(&q - &q, Plane::zero());
+    assert_eq!(2.0_f32 * Plane::<f32>::e1(), Plane::<f32>::e1() * 2.0_f32);
+    assert_eq!(Motor::<f64>::default(), Motor::zero());
+    assert_eq!(Motor::<f64>::one() * Motor::one(), Motor::one());
+    assert_eq!((&m * m.reverse()).scalar.round(), 1.0);
+    assert!((m.inverse().unwrap() - m.reverse()).iter().all(|x| x.abs() < 1e-12));
+    assert!(std::panic::catch_unwind(|| Point::<f64>::zero()[4]).is_err());
+    println!("ok");
+}
+"#;
+    std::fs::write(dir.join("main.rs"), main).unwrap();
+    let rustc = std::process::Command::new("rustc")
+        .args(["--edition", "2024", "-D", "warnings", "-o"])
+        .arg(dir.join("run"))
+        .arg(dir.join("main.rs"))
+        .output()
+        .expect("rustc runs");
+    assert!(rustc.status.success(), "{}", String::from_utf8_lossy(&rustc.stderr));
+    let run = std::process::Command::new(dir.join("run")).output().expect("the program runs");
+    assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stderr));
+    let text = String::from_utf8(run.stdout).unwrap();
+    let mut rows = text.lines();
+    // by hand: the rotation matrix of θ about n (Rodrigues), then + t
+    let (theta, n, t) = (0.9_f64, [2.0_f64, -1.0, 2.0].map(|c| c / 3.0), [0.5_f64, -1.25, 2.0]);
+    let (s, c) = theta.sin_cos();
+    let k = 1.0 - c;
+    let rot = [
+        [c + n[0] * n[0] * k, n[0] * n[1] * k - n[2] * s, n[0] * n[2] * k + n[1] * s],
+        [n[1] * n[0] * k + n[2] * s, c + n[1] * n[1] * k, n[1] * n[2] * k - n[0] * s],
+        [n[2] * n[0] * k - n[1] * s, n[2] * n[1] * k + n[0] * s, c + n[2] * n[2] * k],
+    ];
+    let matrix = [
+        [rot[0][0], rot[0][1], rot[0][2], t[0]],
+        [rot[1][0], rot[1][1], rot[1][2], t[1]],
+        [rot[2][0], rot[2][1], rot[2][2], t[2]],
+        [0.0, 0.0, 0.0, 1.0],
+    ];
+    for p in [[1.0, 2.0, 0.5], [0.0, 0.0, 0.0], [-3.0, 0.25, 7.0]] {
+        let h = [p[0], p[1], p[2], 1.0];
+        let want: Vec<f64> = matrix.iter().map(|row| row.iter().zip(&h).map(|(a, b)| a * b).sum()).collect();
+        for method in ["apply", "apply_unit"] {
+            let got: Vec<f64> = rows.next().unwrap().split_whitespace().map(|x| x.parse().unwrap()).collect();
+            for (g, w) in got.iter().zip(&want) {
+                assert!((g - w).abs() <= 1e-12, "{method} of {p:?}: {got:?} vs {want:?}");
+            }
+        }
+    }
+    let roundtrip: f64 = rows.next().unwrap().parse().unwrap();
+    assert!(roundtrip <= 1e-12, "exp(log(m)) - m: {roundtrip}");
+    assert_eq!(rows.next(), Some("ok"), "{text}");
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -10,6 +10,302 @@
     non_snake_case,
     dead_code
 )]
+/// The value semantics every type of this file shares (one definition instead of a copy per
+/// type): `LEN`, `new`, `zero`, `one` (for a type holding the scalar), `scale`, the basis
+/// elements (`Motor::e12()`), arrays (`to_array`, `into_array`, `from_array`, `From` both
+/// ways), `Index`/`IndexMut`, iteration (`iter`, `iter_mut`, `IntoIterator` by value and by
+/// reference), `Default` (zero), `Display` (`1 + 2*e12`), `Debug` (`Motor(1 + 2*e12)`), `+`,
+/// `-` and negation on values and references, `x * s` and `x / s` for a scalar `s` (also on
+/// `&x`), `s * x` for `f32` and `f64`, and `+=`, `-=`, `*= s`, `/= s`. Coefficients are in
+/// the order of the type's `ELEMENTS`.
+macro_rules! value_type {
+    ($ty:ident[$n:literal] { $($f:ident),* } basis { $($e:ident),* } $(one: $one:ident)?) => {
+        impl<T: Ring> $ty<T> {
+            /// The number of coefficients.
+            pub const LEN: usize = $n;
+
+            /// A value from its coefficients, in the order of [`Self::ELEMENTS`].
+            #[allow(clippy::too_many_arguments)]
+            pub fn new($($f: T),*) -> Self {
+                $ty { $($f),* }
+            }
+
+            /// Zero.
+            pub fn zero() -> Self {
+                $ty { $($f: T::zero()),* }
+            }
+
+            $(
+                /// The identity element.
+                pub fn one() -> Self {
+                    $ty { $one: T::one(), ..Self::zero() }
+                }
+            )?
+
+            $(
+                #[doc = concat!("The basis element `", stringify!($e), "` (coefficient 1, every other coefficient 0).")]
+                pub fn $e() -> Self {
+                    $ty { $e: T::one(), ..Self::zero() }
+                }
+            )*
+
+            /// Every coefficient multiplied by `s`.
+            pub fn scale(&self, s: &T) -> Self {
+                $ty { $($f: self.$f.mul_ref(s)),* }
+            }
+
+            /// The coefficients in the order of [`Self::ELEMENTS`] (cloned).
+            pub fn to_array(&self) -> [T; $n] {
+                [$(self.$f.clone()),*]
+            }
+
+            /// The coefficients in the order of [`Self::ELEMENTS`] (moved out).
+            pub fn into_array(self) -> [T; $n] {
+                [$(self.$f),*]
+            }
+
+            /// A value from its coefficients in the order of [`Self::ELEMENTS`].
+            pub fn from_array(a: [T; $n]) -> Self {
+                let [$($f),*] = a;
+                $ty { $($f),* }
+            }
+
+            /// An iterator over references to the coefficients, in the order of [`Self::ELEMENTS`].
+            pub fn iter(&self) -> ::core::array::IntoIter<&T, $n> {
+                [$(&self.$f),*].into_iter()
+            }
+
+            /// An iterator over mutable references to the coefficients.
+            pub fn iter_mut(&mut self) -> ::core::array::IntoIter<&mut T, $n> {
+                [$(&mut self.$f),*].into_iter()
+            }
+        }
+
+        impl<T: Ring> ::core::default::Default for $ty<T> {
+            /// Zero.
+            fn default() -> Self {
+                Self::zero()
+            }
+        }
+
+        impl<T: Ring> ::core::convert::From<[T; $n]> for $ty<T> {
+            fn from(a: [T; $n]) -> Self {
+                Self::from_array(a)
+            }
+        }
+
+        impl<T: Ring> ::core::convert::From<$ty<T>> for [T; $n] {
+            fn from(x: $ty<T>) -> Self {
+                x.into_array()
+            }
+        }
+
+        impl<T: Ring> ::core::ops::Index<usize> for $ty<T> {
+            type Output = T;
+            /// The coefficient at position `i` of [`Self::ELEMENTS`]; panics if `i >= LEN`, like
+            /// an array.
+            fn index(&self, i: usize) -> &T {
+                match self.iter().nth(i) {
+                    Some(c) => c,
+                    None => panic!("index {} out of range for {} (length {})", i, stringify!($ty), $n),
+                }
+            }
+        }
+
+        impl<T: Ring> ::core::ops::IndexMut<usize> for $ty<T> {
+            fn index_mut(&mut self, i: usize) -> &mut T {
+                match self.iter_mut().nth(i) {
+                    Some(c) => c,
+                    None => panic!("index {} out of range for {} (length {})", i, stringify!($ty), $n),
+                }
+            }
+        }
+
+        impl<T: Ring> ::core::iter::IntoIterator for $ty<T> {
+            type Item = T;
+            type IntoIter = ::core::array::IntoIter<T, $n>;
+            fn into_iter(self) -> Self::IntoIter {
+                self.into_array().into_iter()
+            }
+        }
+
+        impl<'a, T: Ring> ::core::iter::IntoIterator for &'a $ty<T> {
+            type Item = &'a T;
+            type IntoIter = ::core::array::IntoIter<&'a T, $n>;
+            fn into_iter(self) -> Self::IntoIter {
+                self.iter()
+            }
+        }
+
+        impl<T: Ring> ::core::fmt::Display for $ty<T> {
+            /// A sum of basis elements: `1 + 1/2*e1inf`; `0` for zero.
+            fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
+                let terms = Self::ELEMENTS.iter().zip(self.iter());
+                let nonzero = terms.filter(|(_, c)| !c.is_exact_zero());
+                f.write_str(&join_terms(nonzero.map(|(n, c)| format_term(&c.to_string(), n))))
+            }
+        }
+
+        impl<T: Ring> ::core::fmt::Debug for $ty<T> {
+            fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
+                write!(f, "{}({})", stringify!($ty), self)
+            }
+        }
+
+        impl<T: Ring> ::core::ops::Add for $ty<T> {
+            type Output = Self;
+            fn add(self, rhs: Self) -> Self {
+                $ty { $($f: self.$f + rhs.$f),* }
+            }
+        }
+
+        impl<T: Ring> ::core::ops::Add for &$ty<T> {
+            type Output = $ty<T>;
+            fn add(self, rhs: Self) -> $ty<T> {
+                $ty { $($f: self.$f.add_ref(&rhs.$f)),* }
+            }
+        }
+
+        impl<T: Ring> ::core::ops::Sub for $ty<T> {
+            type Output = Self;
+            fn sub(self, rhs: Self) -> Self {
+                $ty { $($f: self.$f - rhs.$f),* }
+            }
+        }
+
+        impl<T: Ring> ::core::ops::Sub for &$ty<T> {
+            type Output = $ty<T>;
+            fn sub(self, rhs: Self) -> $ty<T> {
+                $ty { $($f: self.$f.sub_ref(&rhs.$f)),* }
+            }
+        }
+
+        impl<T: Ring> ::core::ops::Neg for $ty<T> {
+            type Output = Self;
+            fn neg(self) -> Self {
+                $ty { $($f: -self.$f),* }
+            }
+        }
+
+        impl<T: Ring> ::core::ops::Neg for &$ty<T> {
+            type Output = $ty<T>;
+            fn neg(self) -> $ty<T> {
+                $ty { $($f: self.$f.neg_ref()),* }
+            }
+        }
+
+        impl<T: Ring> ::core::ops::Mul<T> for $ty<T> {
+            type Output = Self;
+            /// `x * s`: every coefficient multiplied by `s`.
+            fn mul(self, s: T) -> Self {
+                $ty { $($f: self.$f * &s),* }
+            }
+        }
+
+        impl<T: Ring> ::core::ops::Mul<T> for &$ty<T> {
+            type Output = $ty<T>;
+            fn mul(self, s: T) -> $ty<T> {
+                self.scale(&s)
+            }
+        }
+
+        impl<T: Field> ::core::ops::Div<T> for $ty<T> {
+            type Output = Self;
+            /// `x / s`: every coefficient divided by `s`.
+            fn div(self, s: T) -> Self {
+                $ty { $($f: self.$f.div_ref(&s)),* }
+            }
+        }
+
+        impl<T: Field> ::core::ops::Div<T> for &$ty<T> {
+            type Output = $ty<T>;
+            fn div(self, s: T) -> $ty<T> {
+                $ty { $($f: self.$f.div_ref(&s)),* }
+            }
+        }
+
+        impl<T: Ring> ::core::ops::AddAssign for $ty<T> {
+            fn add_assign(&mut self, rhs: Self) {
+                $(self.$f.add_assign_ref(&rhs.$f);)*
+            }
+        }
+
+        impl<T: Ring> ::core::ops::SubAssign for $ty<T> {
+            fn sub_assign(&mut self, rhs: Self) {
+                $(self.$f.sub_assign_ref(&rhs.$f);)*
+            }
+        }
+
+        impl<T: Ring> ::core::ops::MulAssign<T> for $ty<T> {
+            fn mul_assign(&mut self, s: T) {
+                $(self.$f = self.$f.mul_ref(&s);)*
+            }
+        }
+
+        impl<T: Field> ::core::ops::DivAssign<T> for $ty<T> {
+            fn div_assign(&mut self, s: T) {
+                $(self.$f = self.$f.div_ref(&s);)*
+            }
+        }
+
+        scalar_times!($ty { $($f),* } f32);
+        scalar_times!($ty { $($f),* } f64);
+    };
+}
+/// `s * x` for a value or reference `x` of a type of this file and a scalar `s` of a float
+/// type (every coefficient multiplied by `s`).
+macro_rules! scalar_times {
+    ($ty:ident { $($f:ident),* } $float:ident) => {
+        impl ::core::ops::Mul<$ty<$float>> for $float {
+            type Output = $ty<$float>;
+            /// `s * x`: every coefficient multiplied by `s`.
+            fn mul(self, x: $ty<$float>) -> $ty<$float> {
+                $ty { $($f: self * x.$f),* }
+            }
+        }
+
+        impl ::core::ops::Mul<&$ty<$float>> for $float {
+            type Output = $ty<$float>;
+            fn mul(self, x: &$ty<$float>) -> $ty<$float> {
+                $ty { $($f: self * x.$f),* }
+            }
+        }
+    };
+}
+/// The operator of a product (`*` for the geometric product, `^` outer, `|` left contraction,
+/// `&` the join) on values and references, for every listed `Lhs op Rhs = Out`: `a * b`,
+/// `&a * &b`, `a * &b` and `&a * b` all call the product's kernel (`GeometricProduct::gp`).
+macro_rules! product_operators {
+    ($op:ident::$method:ident => $product:ident::$kernel:ident: $($lhs:ident $sym:tt $rhs:ident = $out:ident),* $(,)?) => {$(
+        impl<T: Ring> ::core::ops::$op<&$rhs<T>> for &$lhs<T> {
+            type Output = $out<T>;
+            fn $method(self, rhs: &$rhs<T>) -> $out<T> {
+                $product::$kernel(self, rhs)
+            }
+        }
+
+        impl<T: Ring> ::core::ops::$op<$rhs<T>> for $lhs<T> {
+            type Output = $out<T>;
+            fn $method(self, rhs: $rhs<T>) -> $out<T> {
+                $product::$kernel(&self, &rhs)
+            }
+        }
+
+        impl<T: Ring> ::core::ops::$op<&$rhs<T>> for $lhs<T> {
+            type Output = $out<T>;
+            fn $method(self, rhs: &$rhs<T>) -> $out<T> {
+                $product::$kernel(&self, rhs)
+            }
+        }
+
+        impl<T: Ring> ::core::ops::$op<$rhs<T>> for &$lhs<T> {
+            type Output = $out<T>;
+            fn $method(self, rhs: $rhs<T>) -> $out<T> {
+                $product::$kernel(self, &rhs)
+            }
+        }
+    )*};
+}
 ///Basis elements (blade basis): `e1`, `e2`, `e3`.
 #[derive(Clone, Copy, PartialEq)]
 #[repr(C)]
@@ -21,104 +317,15 @@ pub struct Vector<T> {
     ///Coefficient of `e3`.
     pub e3: T,
 }
+value_type!(
+    Vector[3] { e1, e2, e3 }
+    basis { e1, e2, e3 }
+);
 impl<T: self::Ring> Vector<T> {
     /// The basis names of the fields, in order.
     pub const ELEMENTS: [&'static str; 3usize] = ["e1", "e2", "e3"];
     /// The bitmasks of the fields' basis elements, in order.
     pub const MASKS: [u32; 3usize] = [1u32, 2u32, 4u32];
-    /// A value from its coefficients, in the order of [`Self::ELEMENTS`]: the arguments are the coefficients of `e1`, `e2`, `e3`, in this order.
-    #[allow(clippy::too_many_arguments)]
-    pub fn new(e1: T, e2: T, e3: T) -> Self {
-        Vector { e1, e2, e3 }
-    }
-    /// Zero.
-    pub fn zero() -> Self {
-        Vector {
-            e1: T::zero(),
-            e2: T::zero(),
-            e3: T::zero(),
-        }
-    }
-    /// Every coefficient multiplied by `s`.
-    pub fn scale(&self, s: &T) -> Self {
-        Vector {
-            e1: self.e1.mul_ref(s),
-            e2: self.e2.mul_ref(s),
-            e3: self.e3.mul_ref(s),
-        }
-    }
-    /// The sandwich `f_S(x) = rev(S) x S` of the main paper (eq. 3); a fused kernel typed
-    /// to `x`'s type when `Self` is a versor type (see the `Sandwich` trait).
-    pub fn sandwich<X>(&self, x: &X) -> <Self as self::Sandwich<X>>::Output
-    where
-        Self: self::Sandwich<X>,
-    {
-        self::Sandwich::sandwich(self, x)
-    }
-    /// The action `S x rev(S)` (the klein/GATL/ganja convention); a fused kernel typed to
-    /// `x`'s type when `Self` is a versor type (see the `Apply` trait).
-    pub fn apply<X>(&self, x: &X) -> <Self as self::Apply<X>>::Output
-    where
-        Self: self::Apply<X>,
-    {
-        self::Apply::apply(self, x)
-    }
-    /// `self x rev(self)` for a unit versor (`self rev(self) = 1`), cheaper than
-    /// [`Self::apply`]: `x + (self x - x self) rev(self)`. Not the action otherwise.
-    pub fn apply_unit<X>(&self, x: &X) -> X
-    where
-        Self: self::UnitAction<X>,
-    {
-        self::UnitAction::apply_unit(self, x)
-    }
-    /// `rev(self) x self` for a unit versor, as `x + (rev(self) x - x rev(self)) self`.
-    pub fn sandwich_unit<X>(&self, x: &X) -> X
-    where
-        Self: self::UnitAction<X>,
-    {
-        self::UnitAction::sandwich_unit(self, x)
-    }
-    /// The matrix of the action `x ↦ self x rev(self)` on `X` (see `ActionMatrix`):
-    /// `let m = motor.apply_matrix::<Point<f64>>();` then `Motor::transform(&m, &p)`
-    /// per point equals `motor.apply(&p)`.
-    pub fn apply_matrix<X>(&self) -> <Self as self::ActionMatrix<X>>::Matrix
-    where
-        Self: self::ActionMatrix<X>,
-    {
-        self::ActionMatrix::apply_matrix(self)
-    }
-    /// The matrix of the action `x ↦ rev(self) x self` on `X` (see `ActionMatrix`).
-    pub fn sandwich_matrix<X>(&self) -> <Self as self::ActionMatrix<X>>::Matrix
-    where
-        Self: self::ActionMatrix<X>,
-    {
-        self::ActionMatrix::sandwich_matrix(self)
-    }
-    /// An action matrix of this type applied to `x` (see `ActionMatrix`).
-    pub fn transform<X>(m: &<Self as self::ActionMatrix<X>>::Matrix, x: &X) -> X
-    where
-        Self: self::ActionMatrix<X>,
-    {
-        <Self as self::ActionMatrix<X>>::transform(m, x)
-    }
-    /// The join `self ∨ x` (the regressive product, also `self & x`):
-    /// `undual(dual(self) ^ dual(x))` with the metric-free complements of `dual`, so it
-    /// is the same in degenerate metrics (PGA) as in non-degenerate ones.
-    pub fn join<X>(&self, x: &X) -> <Self as self::RegressiveProduct<X>>::Output
-    where
-        Self: self::RegressiveProduct<X>,
-    {
-        self::RegressiveProduct::regressive(self, x)
-    }
-    /// The geometric product computed only on `O`'s components (the projection of
-    /// `self * x` onto `O`): `let r: Rotor<f64> = a.gp_into(&b);` or
-    /// `a.gp_into::<Rotor<f64>, _>(&b)`. See `GeometricProductInto`.
-    pub fn gp_into<O, X>(&self, x: &X) -> O
-    where
-        Self: self::GeometricProductInto<X, O>,
-    {
-        self::GeometricProductInto::gp_into(self, x)
-    }
     ///The reverse (a linear map; output type chosen at generation).
     pub fn reverse(&self) -> Vector<T> {
         Vector {
@@ -170,269 +377,6 @@ impl<T: self::Ring> Vector<T> {
         n0 + &n1 + &n2
     }
 }
-impl<T: self::Ring> Vector<T> {
-    /// The number of coefficients.
-    pub const LEN: usize = 3usize;
-    ///The basis element `e1` (coefficient 1, every other coefficient 0).
-    pub fn e1() -> Self {
-        Vector {
-            e1: T::one(),
-            e2: T::zero(),
-            e3: T::zero(),
-        }
-    }
-    ///The basis element `e2` (coefficient 1, every other coefficient 0).
-    pub fn e2() -> Self {
-        Vector {
-            e1: T::zero(),
-            e2: T::one(),
-            e3: T::zero(),
-        }
-    }
-    ///The basis element `e3` (coefficient 1, every other coefficient 0).
-    pub fn e3() -> Self {
-        Vector {
-            e1: T::zero(),
-            e2: T::zero(),
-            e3: T::one(),
-        }
-    }
-    /// The coefficients in the order of [`Self::ELEMENTS`] (cloned).
-    pub fn to_array(&self) -> [T; 3usize] {
-        [
-            ::core::clone::Clone::clone(&self.e1),
-            ::core::clone::Clone::clone(&self.e2),
-            ::core::clone::Clone::clone(&self.e3),
-        ]
-    }
-    /// The coefficients in the order of [`Self::ELEMENTS`] (moved out).
-    pub fn into_array(self) -> [T; 3usize] {
-        [self.e1, self.e2, self.e3]
-    }
-    /// A value from its coefficients in the order of [`Self::ELEMENTS`].
-    pub fn from_array(a: [T; 3usize]) -> Self {
-        let [e1, e2, e3] = a;
-        Vector { e1, e2, e3 }
-    }
-    /// An iterator over references to the coefficients, in the order of [`Self::ELEMENTS`].
-    pub fn iter(&self) -> ::core::array::IntoIter<&T, 3usize> {
-        [&self.e1, &self.e2, &self.e3].into_iter()
-    }
-    /// An iterator over mutable references to the coefficients.
-    pub fn iter_mut(&mut self) -> ::core::array::IntoIter<&mut T, 3usize> {
-        [&mut self.e1, &mut self.e2, &mut self.e3].into_iter()
-    }
-}
-impl<T: self::Ring> ::core::default::Default for Vector<T> {
-    /// Zero.
-    fn default() -> Self {
-        Self::zero()
-    }
-}
-impl<T: self::Ring> ::core::convert::From<[T; 3usize]> for Vector<T> {
-    fn from(a: [T; 3usize]) -> Self {
-        Self::from_array(a)
-    }
-}
-impl<T: self::Ring> ::core::convert::From<Vector<T>> for [T; 3usize] {
-    fn from(x: Vector<T>) -> Self {
-        x.into_array()
-    }
-}
-impl<T: self::Ring> ::core::ops::Index<usize> for Vector<T> {
-    type Output = T;
-    /// The coefficient at position `i` of [`Self::ELEMENTS`]; panics if `i >= LEN`, like
-    /// an array.
-    fn index(&self, i: usize) -> &T {
-        match i {
-            0usize => &self.e1,
-            1usize => &self.e2,
-            2usize => &self.e3,
-            _ => {
-                panic!(
-                    "index {} out of range for {} (length {})", i, stringify!(Vector),
-                    3usize
-                )
-            }
-        }
-    }
-}
-impl<T: self::Ring> ::core::ops::IndexMut<usize> for Vector<T> {
-    fn index_mut(&mut self, i: usize) -> &mut T {
-        match i {
-            0usize => &mut self.e1,
-            1usize => &mut self.e2,
-            2usize => &mut self.e3,
-            _ => {
-                panic!(
-                    "index {} out of range for {} (length {})", i, stringify!(Vector),
-                    3usize
-                )
-            }
-        }
-    }
-}
-impl<T: self::Ring> ::core::iter::IntoIterator for Vector<T> {
-    type Item = T;
-    type IntoIter = ::core::array::IntoIter<T, 3usize>;
-    fn into_iter(self) -> Self::IntoIter {
-        self.into_array().into_iter()
-    }
-}
-impl<'a, T: self::Ring> ::core::iter::IntoIterator for &'a Vector<T> {
-    type Item = &'a T;
-    type IntoIter = ::core::array::IntoIter<&'a T, 3usize>;
-    fn into_iter(self) -> Self::IntoIter {
-        self.iter()
-    }
-}
-impl<T: self::Ring> ::core::ops::Mul<T> for Vector<T> {
-    type Output = Self;
-    /// `x * s`: every coefficient multiplied by `s`.
-    fn mul(self, s: T) -> Self {
-        Vector {
-            e1: self.e1 * &s,
-            e2: self.e2 * &s,
-            e3: self.e3 * &s,
-        }
-    }
-}
-impl<T: self::Ring> ::core::ops::Mul<T> for &Vector<T> {
-    type Output = Vector<T>;
-    fn mul(self, s: T) -> Vector<T> {
-        self.scale(&s)
-    }
-}
-impl<T: self::Field> ::core::ops::Div<T> for Vector<T> {
-    type Output = Self;
-    /// `x / s`: every coefficient divided by `s`.
-    fn div(self, s: T) -> Self {
-        Vector {
-            e1: self.e1.div_ref(&s),
-            e2: self.e2.div_ref(&s),
-            e3: self.e3.div_ref(&s),
-        }
-    }
-}
-impl<T: self::Field> ::core::ops::Div<T> for &Vector<T> {
-    type Output = Vector<T>;
-    fn div(self, s: T) -> Vector<T> {
-        Vector {
-            e1: self.e1.div_ref(&s),
-            e2: self.e2.div_ref(&s),
-            e3: self.e3.div_ref(&s),
-        }
-    }
-}
-impl<T: self::Ring> ::core::ops::AddAssign for Vector<T> {
-    fn add_assign(&mut self, rhs: Self) {
-        self.e1.add_assign_ref(&rhs.e1);
-        self.e2.add_assign_ref(&rhs.e2);
-        self.e3.add_assign_ref(&rhs.e3);
-    }
-}
-impl<T: self::Ring> ::core::ops::SubAssign for Vector<T> {
-    fn sub_assign(&mut self, rhs: Self) {
-        self.e1.sub_assign_ref(&rhs.e1);
-        self.e2.sub_assign_ref(&rhs.e2);
-        self.e3.sub_assign_ref(&rhs.e3);
-    }
-}
-impl<T: self::Ring> ::core::ops::MulAssign<T> for Vector<T> {
-    fn mul_assign(&mut self, s: T) {
-        self.e1 = self.e1.mul_ref(&s);
-        self.e2 = self.e2.mul_ref(&s);
-        self.e3 = self.e3.mul_ref(&s);
-    }
-}
-impl<T: self::Field> ::core::ops::DivAssign<T> for Vector<T> {
-    fn div_assign(&mut self, s: T) {
-        self.e1 = self.e1.div_ref(&s);
-        self.e2 = self.e2.div_ref(&s);
-        self.e3 = self.e3.div_ref(&s);
-    }
-}
-impl<T: self::Ring> ::core::fmt::Display for Vector<T> {
-    /// A sum of basis elements: `1 + 1/2*e1inf`; `0` for zero.
-    fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
-        let terms = [("e1", &self.e1), ("e2", &self.e2), ("e3", &self.e3)];
-        f.write_str(
-            &self::join_terms(
-                terms
-                    .iter()
-                    .filter(|(_, c)| !self::Ring::is_exact_zero(*c))
-                    .map(|(n, c)| {
-                        self::format_term(&::std::string::ToString::to_string(c), n)
-                    }),
-            ),
-        )
-    }
-}
-impl<T: self::Ring> ::core::fmt::Debug for Vector<T> {
-    fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
-        write!(f, "{}({})", stringify!(Vector), self)
-    }
-}
-impl<T: self::Ring> ::core::ops::Add for Vector<T> {
-    type Output = Self;
-    fn add(self, rhs: Self) -> Self {
-        Vector {
-            e1: self.e1 + rhs.e1,
-            e2: self.e2 + rhs.e2,
-            e3: self.e3 + rhs.e3,
-        }
-    }
-}
-impl<T: self::Ring> ::core::ops::Add for &Vector<T> {
-    type Output = Vector<T>;
-    fn add(self, rhs: Self) -> Vector<T> {
-        Vector {
-            e1: self.e1.add_ref(&rhs.e1),
-            e2: self.e2.add_ref(&rhs.e2),
-            e3: self.e3.add_ref(&rhs.e3),
-        }
-    }
-}
-impl<T: self::Ring> ::core::ops::Sub for Vector<T> {
-    type Output = Self;
-    fn sub(self, rhs: Self) -> Self {
-        Vector {
-            e1: self.e1 - rhs.e1,
-            e2: self.e2 - rhs.e2,
-            e3: self.e3 - rhs.e3,
-        }
-    }
-}
-impl<T: self::Ring> ::core::ops::Sub for &Vector<T> {
-    type Output = Vector<T>;
-    fn sub(self, rhs: Self) -> Vector<T> {
-        Vector {
-            e1: self.e1.sub_ref(&rhs.e1),
-            e2: self.e2.sub_ref(&rhs.e2),
-            e3: self.e3.sub_ref(&rhs.e3),
-        }
-    }
-}
-impl<T: self::Ring> ::core::ops::Neg for Vector<T> {
-    type Output = Self;
-    fn neg(self) -> Self {
-        Vector {
-            e1: -self.e1,
-            e2: -self.e2,
-            e3: -self.e3,
-        }
-    }
-}
-impl<T: self::Ring> ::core::ops::Neg for &Vector<T> {
-    type Output = Vector<T>;
-    fn neg(self) -> Vector<T> {
-        Vector {
-            e1: self.e1.neg_ref(),
-            e2: self.e2.neg_ref(),
-            e3: self.e3.neg_ref(),
-        }
-    }
-}
 ///Basis elements (blade basis): `1`, `e12`, `e13`, `e23`.
 #[derive(Clone, Copy, PartialEq)]
 #[repr(C)]
@@ -446,51 +390,16 @@ pub struct Rotor<T> {
     ///Coefficient of `e23`.
     pub e23: T,
 }
+value_type!(
+    Rotor[4] { scalar, e12, e13, e23 }
+    basis { e12, e13, e23 }
+    one: scalar
+);
 impl<T: self::Ring> Rotor<T> {
     /// The basis names of the fields, in order.
     pub const ELEMENTS: [&'static str; 4usize] = ["1", "e12", "e13", "e23"];
     /// The bitmasks of the fields' basis elements, in order.
     pub const MASKS: [u32; 4usize] = [0u32, 3u32, 5u32, 6u32];
-    /// A value from its coefficients, in the order of [`Self::ELEMENTS`]: the arguments are the coefficients of `1`, `e12`, `e13`, `e23`, in this order.
-    #[allow(clippy::too_many_arguments)]
-    pub fn new(scalar: T, e12: T, e13: T, e23: T) -> Self {
-        Rotor { scalar, e12, e13, e23 }
-    }
-    /// Zero.
-    pub fn zero() -> Self {
-        Rotor {
-            scalar: T::zero(),
-            e12: T::zero(),
-            e13: T::zero(),
-            e23: T::zero(),
-        }
-    }
-    /// The identity element.
-    pub fn one() -> Self {
-        Rotor {
-            scalar: T::one(),
-            e12: T::zero(),
-            e13: T::zero(),
-            e23: T::zero(),
-        }
-    }
-    /// Every coefficient multiplied by `s`.
-    pub fn scale(&self, s: &T) -> Self {
-        Rotor {
-            scalar: self.scalar.mul_ref(s),
-            e12: self.e12.mul_ref(s),
-            e13: self.e13.mul_ref(s),
-            e23: self.e23.mul_ref(s),
-        }
-    }
-    /// The sandwich `f_S(x) = rev(S) x S` of the main paper (eq. 3); a fused kernel typed
-    /// to `x`'s type when `Self` is a versor type (see the `Sandwich` trait).
-    pub fn sandwich<X>(&self, x: &X) -> <Self as self::Sandwich<X>>::Output
-    where
-        Self: self::Sandwich<X>,
-    {
-        self::Sandwich::sandwich(self, x)
-    }
     /// The action `S x rev(S)` (the klein/GATL/ganja convention); a fused kernel typed to
     /// `x`'s type when `Self` is a versor type (see the `Apply` trait).
     pub fn apply<X>(&self, x: &X) -> <Self as self::Apply<X>>::Output
@@ -506,54 +415,6 @@ impl<T: self::Ring> Rotor<T> {
         Self: self::UnitAction<X>,
     {
         self::UnitAction::apply_unit(self, x)
-    }
-    /// `rev(self) x self` for a unit versor, as `x + (rev(self) x - x rev(self)) self`.
-    pub fn sandwich_unit<X>(&self, x: &X) -> X
-    where
-        Self: self::UnitAction<X>,
-    {
-        self::UnitAction::sandwich_unit(self, x)
-    }
-    /// The matrix of the action `x ↦ self x rev(self)` on `X` (see `ActionMatrix`):
-    /// `let m = motor.apply_matrix::<Point<f64>>();` then `Motor::transform(&m, &p)`
-    /// per point equals `motor.apply(&p)`.
-    pub fn apply_matrix<X>(&self) -> <Self as self::ActionMatrix<X>>::Matrix
-    where
-        Self: self::ActionMatrix<X>,
-    {
-        self::ActionMatrix::apply_matrix(self)
-    }
-    /// The matrix of the action `x ↦ rev(self) x self` on `X` (see `ActionMatrix`).
-    pub fn sandwich_matrix<X>(&self) -> <Self as self::ActionMatrix<X>>::Matrix
-    where
-        Self: self::ActionMatrix<X>,
-    {
-        self::ActionMatrix::sandwich_matrix(self)
-    }
-    /// An action matrix of this type applied to `x` (see `ActionMatrix`).
-    pub fn transform<X>(m: &<Self as self::ActionMatrix<X>>::Matrix, x: &X) -> X
-    where
-        Self: self::ActionMatrix<X>,
-    {
-        <Self as self::ActionMatrix<X>>::transform(m, x)
-    }
-    /// The join `self ∨ x` (the regressive product, also `self & x`):
-    /// `undual(dual(self) ^ dual(x))` with the metric-free complements of `dual`, so it
-    /// is the same in degenerate metrics (PGA) as in non-degenerate ones.
-    pub fn join<X>(&self, x: &X) -> <Self as self::RegressiveProduct<X>>::Output
-    where
-        Self: self::RegressiveProduct<X>,
-    {
-        self::RegressiveProduct::regressive(self, x)
-    }
-    /// The geometric product computed only on `O`'s components (the projection of
-    /// `self * x` onto `O`): `let r: Rotor<f64> = a.gp_into(&b);` or
-    /// `a.gp_into::<Rotor<f64>, _>(&b)`. See `GeometricProductInto`.
-    pub fn gp_into<O, X>(&self, x: &X) -> O
-    where
-        Self: self::GeometricProductInto<X, O>,
-    {
-        self::GeometricProductInto::gp_into(self, x)
     }
     ///The reverse (a linear map; output type chosen at generation).
     pub fn reverse(&self) -> Rotor<T> {
@@ -648,293 +509,6 @@ impl<T: self::Field> Rotor<T> {
         })
     }
 }
-impl<T: self::Ring> Rotor<T> {
-    /// The number of coefficients.
-    pub const LEN: usize = 4usize;
-    ///The basis element `e12` (coefficient 1, every other coefficient 0).
-    pub fn e12() -> Self {
-        Rotor {
-            scalar: T::zero(),
-            e12: T::one(),
-            e13: T::zero(),
-            e23: T::zero(),
-        }
-    }
-    ///The basis element `e13` (coefficient 1, every other coefficient 0).
-    pub fn e13() -> Self {
-        Rotor {
-            scalar: T::zero(),
-            e12: T::zero(),
-            e13: T::one(),
-            e23: T::zero(),
-        }
-    }
-    ///The basis element `e23` (coefficient 1, every other coefficient 0).
-    pub fn e23() -> Self {
-        Rotor {
-            scalar: T::zero(),
-            e12: T::zero(),
-            e13: T::zero(),
-            e23: T::one(),
-        }
-    }
-    /// The coefficients in the order of [`Self::ELEMENTS`] (cloned).
-    pub fn to_array(&self) -> [T; 4usize] {
-        [
-            ::core::clone::Clone::clone(&self.scalar),
-            ::core::clone::Clone::clone(&self.e12),
-            ::core::clone::Clone::clone(&self.e13),
-            ::core::clone::Clone::clone(&self.e23),
-        ]
-    }
-    /// The coefficients in the order of [`Self::ELEMENTS`] (moved out).
-    pub fn into_array(self) -> [T; 4usize] {
-        [self.scalar, self.e12, self.e13, self.e23]
-    }
-    /// A value from its coefficients in the order of [`Self::ELEMENTS`].
-    pub fn from_array(a: [T; 4usize]) -> Self {
-        let [scalar, e12, e13, e23] = a;
-        Rotor { scalar, e12, e13, e23 }
-    }
-    /// An iterator over references to the coefficients, in the order of [`Self::ELEMENTS`].
-    pub fn iter(&self) -> ::core::array::IntoIter<&T, 4usize> {
-        [&self.scalar, &self.e12, &self.e13, &self.e23].into_iter()
-    }
-    /// An iterator over mutable references to the coefficients.
-    pub fn iter_mut(&mut self) -> ::core::array::IntoIter<&mut T, 4usize> {
-        [&mut self.scalar, &mut self.e12, &mut self.e13, &mut self.e23].into_iter()
-    }
-}
-impl<T: self::Ring> ::core::default::Default for Rotor<T> {
-    /// Zero.
-    fn default() -> Self {
-        Self::zero()
-    }
-}
-impl<T: self::Ring> ::core::convert::From<[T; 4usize]> for Rotor<T> {
-    fn from(a: [T; 4usize]) -> Self {
-        Self::from_array(a)
-    }
-}
-impl<T: self::Ring> ::core::convert::From<Rotor<T>> for [T; 4usize] {
-    fn from(x: Rotor<T>) -> Self {
-        x.into_array()
-    }
-}
-impl<T: self::Ring> ::core::ops::Index<usize> for Rotor<T> {
-    type Output = T;
-    /// The coefficient at position `i` of [`Self::ELEMENTS`]; panics if `i >= LEN`, like
-    /// an array.
-    fn index(&self, i: usize) -> &T {
-        match i {
-            0usize => &self.scalar,
-            1usize => &self.e12,
-            2usize => &self.e13,
-            3usize => &self.e23,
-            _ => {
-                panic!(
-                    "index {} out of range for {} (length {})", i, stringify!(Rotor),
-                    4usize
-                )
-            }
-        }
-    }
-}
-impl<T: self::Ring> ::core::ops::IndexMut<usize> for Rotor<T> {
-    fn index_mut(&mut self, i: usize) -> &mut T {
-        match i {
-            0usize => &mut self.scalar,
-            1usize => &mut self.e12,
-            2usize => &mut self.e13,
-            3usize => &mut self.e23,
-            _ => {
-                panic!(
-                    "index {} out of range for {} (length {})", i, stringify!(Rotor),
-                    4usize
-                )
-            }
-        }
-    }
-}
-impl<T: self::Ring> ::core::iter::IntoIterator for Rotor<T> {
-    type Item = T;
-    type IntoIter = ::core::array::IntoIter<T, 4usize>;
-    fn into_iter(self) -> Self::IntoIter {
-        self.into_array().into_iter()
-    }
-}
-impl<'a, T: self::Ring> ::core::iter::IntoIterator for &'a Rotor<T> {
-    type Item = &'a T;
-    type IntoIter = ::core::array::IntoIter<&'a T, 4usize>;
-    fn into_iter(self) -> Self::IntoIter {
-        self.iter()
-    }
-}
-impl<T: self::Ring> ::core::ops::Mul<T> for Rotor<T> {
-    type Output = Self;
-    /// `x * s`: every coefficient multiplied by `s`.
-    fn mul(self, s: T) -> Self {
-        Rotor {
-            scalar: self.scalar * &s,
-            e12: self.e12 * &s,
-            e13: self.e13 * &s,
-            e23: self.e23 * &s,
-        }
-    }
-}
-impl<T: self::Ring> ::core::ops::Mul<T> for &Rotor<T> {
-    type Output = Rotor<T>;
-    fn mul(self, s: T) -> Rotor<T> {
-        self.scale(&s)
-    }
-}
-impl<T: self::Field> ::core::ops::Div<T> for Rotor<T> {
-    type Output = Self;
-    /// `x / s`: every coefficient divided by `s`.
-    fn div(self, s: T) -> Self {
-        Rotor {
-            scalar: self.scalar.div_ref(&s),
-            e12: self.e12.div_ref(&s),
-            e13: self.e13.div_ref(&s),
-            e23: self.e23.div_ref(&s),
-        }
-    }
-}
-impl<T: self::Field> ::core::ops::Div<T> for &Rotor<T> {
-    type Output = Rotor<T>;
-    fn div(self, s: T) -> Rotor<T> {
-        Rotor {
-            scalar: self.scalar.div_ref(&s),
-            e12: self.e12.div_ref(&s),
-            e13: self.e13.div_ref(&s),
-            e23: self.e23.div_ref(&s),
-        }
-    }
-}
-impl<T: self::Ring> ::core::ops::AddAssign for Rotor<T> {
-    fn add_assign(&mut self, rhs: Self) {
-        self.scalar.add_assign_ref(&rhs.scalar);
-        self.e12.add_assign_ref(&rhs.e12);
-        self.e13.add_assign_ref(&rhs.e13);
-        self.e23.add_assign_ref(&rhs.e23);
-    }
-}
-impl<T: self::Ring> ::core::ops::SubAssign for Rotor<T> {
-    fn sub_assign(&mut self, rhs: Self) {
-        self.scalar.sub_assign_ref(&rhs.scalar);
-        self.e12.sub_assign_ref(&rhs.e12);
-        self.e13.sub_assign_ref(&rhs.e13);
-        self.e23.sub_assign_ref(&rhs.e23);
-    }
-}
-impl<T: self::Ring> ::core::ops::MulAssign<T> for Rotor<T> {
-    fn mul_assign(&mut self, s: T) {
-        self.scalar = self.scalar.mul_ref(&s);
-        self.e12 = self.e12.mul_ref(&s);
-        self.e13 = self.e13.mul_ref(&s);
-        self.e23 = self.e23.mul_ref(&s);
-    }
-}
-impl<T: self::Field> ::core::ops::DivAssign<T> for Rotor<T> {
-    fn div_assign(&mut self, s: T) {
-        self.scalar = self.scalar.div_ref(&s);
-        self.e12 = self.e12.div_ref(&s);
-        self.e13 = self.e13.div_ref(&s);
-        self.e23 = self.e23.div_ref(&s);
-    }
-}
-impl<T: self::Ring> ::core::fmt::Display for Rotor<T> {
-    /// A sum of basis elements: `1 + 1/2*e1inf`; `0` for zero.
-    fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
-        let terms = [
-            ("1", &self.scalar),
-            ("e12", &self.e12),
-            ("e13", &self.e13),
-            ("e23", &self.e23),
-        ];
-        f.write_str(
-            &self::join_terms(
-                terms
-                    .iter()
-                    .filter(|(_, c)| !self::Ring::is_exact_zero(*c))
-                    .map(|(n, c)| {
-                        self::format_term(&::std::string::ToString::to_string(c), n)
-                    }),
-            ),
-        )
-    }
-}
-impl<T: self::Ring> ::core::fmt::Debug for Rotor<T> {
-    fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
-        write!(f, "{}({})", stringify!(Rotor), self)
-    }
-}
-impl<T: self::Ring> ::core::ops::Add for Rotor<T> {
-    type Output = Self;
-    fn add(self, rhs: Self) -> Self {
-        Rotor {
-            scalar: self.scalar + rhs.scalar,
-            e12: self.e12 + rhs.e12,
-            e13: self.e13 + rhs.e13,
-            e23: self.e23 + rhs.e23,
-        }
-    }
-}
-impl<T: self::Ring> ::core::ops::Add for &Rotor<T> {
-    type Output = Rotor<T>;
-    fn add(self, rhs: Self) -> Rotor<T> {
-        Rotor {
-            scalar: self.scalar.add_ref(&rhs.scalar),
-            e12: self.e12.add_ref(&rhs.e12),
-            e13: self.e13.add_ref(&rhs.e13),
-            e23: self.e23.add_ref(&rhs.e23),
-        }
-    }
-}
-impl<T: self::Ring> ::core::ops::Sub for Rotor<T> {
-    type Output = Self;
-    fn sub(self, rhs: Self) -> Self {
-        Rotor {
-            scalar: self.scalar - rhs.scalar,
-            e12: self.e12 - rhs.e12,
-            e13: self.e13 - rhs.e13,
-            e23: self.e23 - rhs.e23,
-        }
-    }
-}
-impl<T: self::Ring> ::core::ops::Sub for &Rotor<T> {
-    type Output = Rotor<T>;
-    fn sub(self, rhs: Self) -> Rotor<T> {
-        Rotor {
-            scalar: self.scalar.sub_ref(&rhs.scalar),
-            e12: self.e12.sub_ref(&rhs.e12),
-            e13: self.e13.sub_ref(&rhs.e13),
-            e23: self.e23.sub_ref(&rhs.e23),
-        }
-    }
-}
-impl<T: self::Ring> ::core::ops::Neg for Rotor<T> {
-    type Output = Self;
-    fn neg(self) -> Self {
-        Rotor {
-            scalar: -self.scalar,
-            e12: -self.e12,
-            e13: -self.e13,
-            e23: -self.e23,
-        }
-    }
-}
-impl<T: self::Ring> ::core::ops::Neg for &Rotor<T> {
-    type Output = Rotor<T>;
-    fn neg(self) -> Rotor<T> {
-        Rotor {
-            scalar: self.scalar.neg_ref(),
-            e12: self.e12.neg_ref(),
-            e13: self.e13.neg_ref(),
-            e23: self.e23.neg_ref(),
-        }
-    }
-}
 ///The odd part of the algebra, declared automatically: some product of the declared types lands here.
 ///Basis elements (blade basis): `e1`, `e2`, `e3`, `e123`.
 #[derive(Clone, Copy, PartialEq)]
@@ -949,106 +523,15 @@ pub struct Odd<T> {
     ///Coefficient of `e123`.
     pub e123: T,
 }
+value_type!(
+    Odd[4] { e1, e2, e3, e123 }
+    basis { e1, e2, e3, e123 }
+);
 impl<T: self::Ring> Odd<T> {
     /// The basis names of the fields, in order.
     pub const ELEMENTS: [&'static str; 4usize] = ["e1", "e2", "e3", "e123"];
     /// The bitmasks of the fields' basis elements, in order.
     pub const MASKS: [u32; 4usize] = [1u32, 2u32, 4u32, 7u32];
-    /// A value from its coefficients, in the order of [`Self::ELEMENTS`]: the arguments are the coefficients of `e1`, `e2`, `e3`, `e123`, in this order.
-    #[allow(clippy::too_many_arguments)]
-    pub fn new(e1: T, e2: T, e3: T, e123: T) -> Self {
-        Odd { e1, e2, e3, e123 }
-    }
-    /// Zero.
-    pub fn zero() -> Self {
-        Odd {
-            e1: T::zero(),
-            e2: T::zero(),
-            e3: T::zero(),
-            e123: T::zero(),
-        }
-    }
-    /// Every coefficient multiplied by `s`.
-    pub fn scale(&self, s: &T) -> Self {
-        Odd {
-            e1: self.e1.mul_ref(s),
-            e2: self.e2.mul_ref(s),
-            e3: self.e3.mul_ref(s),
-            e123: self.e123.mul_ref(s),
-        }
-    }
-    /// The sandwich `f_S(x) = rev(S) x S` of the main paper (eq. 3); a fused kernel typed
-    /// to `x`'s type when `Self` is a versor type (see the `Sandwich` trait).
-    pub fn sandwich<X>(&self, x: &X) -> <Self as self::Sandwich<X>>::Output
-    where
-        Self: self::Sandwich<X>,
-    {
-        self::Sandwich::sandwich(self, x)
-    }
-    /// The action `S x rev(S)` (the klein/GATL/ganja convention); a fused kernel typed to
-    /// `x`'s type when `Self` is a versor type (see the `Apply` trait).
-    pub fn apply<X>(&self, x: &X) -> <Self as self::Apply<X>>::Output
-    where
-        Self: self::Apply<X>,
-    {
-        self::Apply::apply(self, x)
-    }
-    /// `self x rev(self)` for a unit versor (`self rev(self) = 1`), cheaper than
-    /// [`Self::apply`]: `x + (self x - x self) rev(self)`. Not the action otherwise.
-    pub fn apply_unit<X>(&self, x: &X) -> X
-    where
-        Self: self::UnitAction<X>,
-    {
-        self::UnitAction::apply_unit(self, x)
-    }
-    /// `rev(self) x self` for a unit versor, as `x + (rev(self) x - x rev(self)) self`.
-    pub fn sandwich_unit<X>(&self, x: &X) -> X
-    where
-        Self: self::UnitAction<X>,
-    {
-        self::UnitAction::sandwich_unit(self, x)
-    }
-    /// The matrix of the action `x ↦ self x rev(self)` on `X` (see `ActionMatrix`):
-    /// `let m = motor.apply_matrix::<Point<f64>>();` then `Motor::transform(&m, &p)`
-    /// per point equals `motor.apply(&p)`.
-    pub fn apply_matrix<X>(&self) -> <Self as self::ActionMatrix<X>>::Matrix
-    where
-        Self: self::ActionMatrix<X>,
-    {
-        self::ActionMatrix::apply_matrix(self)
-    }
-    /// The matrix of the action `x ↦ rev(self) x self` on `X` (see `ActionMatrix`).
-    pub fn sandwich_matrix<X>(&self) -> <Self as self::ActionMatrix<X>>::Matrix
-    where
-        Self: self::ActionMatrix<X>,
-    {
-        self::ActionMatrix::sandwich_matrix(self)
-    }
-    /// An action matrix of this type applied to `x` (see `ActionMatrix`).
-    pub fn transform<X>(m: &<Self as self::ActionMatrix<X>>::Matrix, x: &X) -> X
-    where
-        Self: self::ActionMatrix<X>,
-    {
-        <Self as self::ActionMatrix<X>>::transform(m, x)
-    }
-    /// The join `self ∨ x` (the regressive product, also `self & x`):
-    /// `undual(dual(self) ^ dual(x))` with the metric-free complements of `dual`, so it
-    /// is the same in degenerate metrics (PGA) as in non-degenerate ones.
-    pub fn join<X>(&self, x: &X) -> <Self as self::RegressiveProduct<X>>::Output
-    where
-        Self: self::RegressiveProduct<X>,
-    {
-        self::RegressiveProduct::regressive(self, x)
-    }
-    /// The geometric product computed only on `O`'s components (the projection of
-    /// `self * x` onto `O`): `let r: Rotor<f64> = a.gp_into(&b);` or
-    /// `a.gp_into::<Rotor<f64>, _>(&b)`. See `GeometricProductInto`.
-    pub fn gp_into<O, X>(&self, x: &X) -> O
-    where
-        Self: self::GeometricProductInto<X, O>,
-    {
-        self::GeometricProductInto::gp_into(self, x)
-    }
     ///The reverse (a linear map; output type chosen at generation).
     pub fn reverse(&self) -> Odd<T> {
         Odd {
@@ -1104,302 +587,6 @@ impl<T: self::Ring> Odd<T> {
         n0 + &n1 + &n2 + &n3
     }
 }
-impl<T: self::Ring> Odd<T> {
-    /// The number of coefficients.
-    pub const LEN: usize = 4usize;
-    ///The basis element `e1` (coefficient 1, every other coefficient 0).
-    pub fn e1() -> Self {
-        Odd {
-            e1: T::one(),
-            e2: T::zero(),
-            e3: T::zero(),
-            e123: T::zero(),
-        }
-    }
-    ///The basis element `e2` (coefficient 1, every other coefficient 0).
-    pub fn e2() -> Self {
-        Odd {
-            e1: T::zero(),
-            e2: T::one(),
-            e3: T::zero(),
-            e123: T::zero(),
-        }
-    }
-    ///The basis element `e3` (coefficient 1, every other coefficient 0).
-    pub fn e3() -> Self {
-        Odd {
-            e1: T::zero(),
-            e2: T::zero(),
-            e3: T::one(),
-            e123: T::zero(),
-        }
-    }
-    ///The basis element `e123` (coefficient 1, every other coefficient 0).
-    pub fn e123() -> Self {
-        Odd {
-            e1: T::zero(),
-            e2: T::zero(),
-            e3: T::zero(),
-            e123: T::one(),
-        }
-    }
-    /// The coefficients in the order of [`Self::ELEMENTS`] (cloned).
-    pub fn to_array(&self) -> [T; 4usize] {
-        [
-            ::core::clone::Clone::clone(&self.e1),
-            ::core::clone::Clone::clone(&self.e2),
-            ::core::clone::Clone::clone(&self.e3),
-            ::core::clone::Clone::clone(&self.e123),
-        ]
-    }
-    /// The coefficients in the order of [`Self::ELEMENTS`] (moved out).
-    pub fn into_array(self) -> [T; 4usize] {
-        [self.e1, self.e2, self.e3, self.e123]
-    }
-    /// A value from its coefficients in the order of [`Self::ELEMENTS`].
-    pub fn from_array(a: [T; 4usize]) -> Self {
-        let [e1, e2, e3, e123] = a;
-        Odd { e1, e2, e3, e123 }
-    }
-    /// An iterator over references to the coefficients, in the order of [`Self::ELEMENTS`].
-    pub fn iter(&self) -> ::core::array::IntoIter<&T, 4usize> {
-        [&self.e1, &self.e2, &self.e3, &self.e123].into_iter()
-    }
-    /// An iterator over mutable references to the coefficients.
-    pub fn iter_mut(&mut self) -> ::core::array::IntoIter<&mut T, 4usize> {
-        [&mut self.e1, &mut self.e2, &mut self.e3, &mut self.e123].into_iter()
-    }
-}
-impl<T: self::Ring> ::core::default::Default for Odd<T> {
-    /// Zero.
-    fn default() -> Self {
-        Self::zero()
-    }
-}
-impl<T: self::Ring> ::core::convert::From<[T; 4usize]> for Odd<T> {
-    fn from(a: [T; 4usize]) -> Self {
-        Self::from_array(a)
-    }
-}
-impl<T: self::Ring> ::core::convert::From<Odd<T>> for [T; 4usize] {
-    fn from(x: Odd<T>) -> Self {
-        x.into_array()
-    }
-}
-impl<T: self::Ring> ::core::ops::Index<usize> for Odd<T> {
-    type Output = T;
-    /// The coefficient at position `i` of [`Self::ELEMENTS`]; panics if `i >= LEN`, like
-    /// an array.
-    fn index(&self, i: usize) -> &T {
-        match i {
-            0usize => &self.e1,
-            1usize => &self.e2,
-            2usize => &self.e3,
-            3usize => &self.e123,
-            _ => {
-                panic!(
-                    "index {} out of range for {} (length {})", i, stringify!(Odd),
-                    4usize
-                )
-            }
-        }
-    }
-}
-impl<T: self::Ring> ::core::ops::IndexMut<usize> for Odd<T> {
-    fn index_mut(&mut self, i: usize) -> &mut T {
-        match i {
-            0usize => &mut self.e1,
-            1usize => &mut self.e2,
-            2usize => &mut self.e3,
-            3usize => &mut self.e123,
-            _ => {
-                panic!(
-                    "index {} out of range for {} (length {})", i, stringify!(Odd),
-                    4usize
-                )
-            }
-        }
-    }
-}
-impl<T: self::Ring> ::core::iter::IntoIterator for Odd<T> {
-    type Item = T;
-    type IntoIter = ::core::array::IntoIter<T, 4usize>;
-    fn into_iter(self) -> Self::IntoIter {
-        self.into_array().into_iter()
-    }
-}
-impl<'a, T: self::Ring> ::core::iter::IntoIterator for &'a Odd<T> {
-    type Item = &'a T;
-    type IntoIter = ::core::array::IntoIter<&'a T, 4usize>;
-    fn into_iter(self) -> Self::IntoIter {
-        self.iter()
-    }
-}
-impl<T: self::Ring> ::core::ops::Mul<T> for Odd<T> {
-    type Output = Self;
-    /// `x * s`: every coefficient multiplied by `s`.
-    fn mul(self, s: T) -> Self {
-        Odd {
-            e1: self.e1 * &s,
-            e2: self.e2 * &s,
-            e3: self.e3 * &s,
-            e123: self.e123 * &s,
-        }
-    }
-}
-impl<T: self::Ring> ::core::ops::Mul<T> for &Odd<T> {
-    type Output = Odd<T>;
-    fn mul(self, s: T) -> Odd<T> {
-        self.scale(&s)
-    }
-}
-impl<T: self::Field> ::core::ops::Div<T> for Odd<T> {
-    type Output = Self;
-    /// `x / s`: every coefficient divided by `s`.
-    fn div(self, s: T) -> Self {
-        Odd {
-            e1: self.e1.div_ref(&s),
-            e2: self.e2.div_ref(&s),
-            e3: self.e3.div_ref(&s),
-            e123: self.e123.div_ref(&s),
-        }
-    }
-}
-impl<T: self::Field> ::core::ops::Div<T> for &Odd<T> {
-    type Output = Odd<T>;
-    fn div(self, s: T) -> Odd<T> {
-        Odd {
-            e1: self.e1.div_ref(&s),
-            e2: self.e2.div_ref(&s),
-            e3: self.e3.div_ref(&s),
-            e123: self.e123.div_ref(&s),
-        }
-    }
-}
-impl<T: self::Ring> ::core::ops::AddAssign for Odd<T> {
-    fn add_assign(&mut self, rhs: Self) {
-        self.e1.add_assign_ref(&rhs.e1);
-        self.e2.add_assign_ref(&rhs.e2);
-        self.e3.add_assign_ref(&rhs.e3);
-        self.e123.add_assign_ref(&rhs.e123);
-    }
-}
-impl<T: self::Ring> ::core::ops::SubAssign for Odd<T> {
-    fn sub_assign(&mut self, rhs: Self) {
-        self.e1.sub_assign_ref(&rhs.e1);
-        self.e2.sub_assign_ref(&rhs.e2);
-        self.e3.sub_assign_ref(&rhs.e3);
-        self.e123.sub_assign_ref(&rhs.e123);
-    }
-}
-impl<T: self::Ring> ::core::ops::MulAssign<T> for Odd<T> {
-    fn mul_assign(&mut self, s: T) {
-        self.e1 = self.e1.mul_ref(&s);
-        self.e2 = self.e2.mul_ref(&s);
-        self.e3 = self.e3.mul_ref(&s);
-        self.e123 = self.e123.mul_ref(&s);
-    }
-}
-impl<T: self::Field> ::core::ops::DivAssign<T> for Odd<T> {
-    fn div_assign(&mut self, s: T) {
-        self.e1 = self.e1.div_ref(&s);
-        self.e2 = self.e2.div_ref(&s);
-        self.e3 = self.e3.div_ref(&s);
-        self.e123 = self.e123.div_ref(&s);
-    }
-}
-impl<T: self::Ring> ::core::fmt::Display for Odd<T> {
-    /// A sum of basis elements: `1 + 1/2*e1inf`; `0` for zero.
-    fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
-        let terms = [
-            ("e1", &self.e1),
-            ("e2", &self.e2),
-            ("e3", &self.e3),
-            ("e123", &self.e123),
-        ];
-        f.write_str(
-            &self::join_terms(
-                terms
-                    .iter()
-                    .filter(|(_, c)| !self::Ring::is_exact_zero(*c))
-                    .map(|(n, c)| {
-                        self::format_term(&::std::string::ToString::to_string(c), n)
-                    }),
-            ),
-        )
-    }
-}
-impl<T: self::Ring> ::core::fmt::Debug for Odd<T> {
-    fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
-        write!(f, "{}({})", stringify!(Odd), self)
-    }
-}
-impl<T: self::Ring> ::core::ops::Add for Odd<T> {
-    type Output = Self;
-    fn add(self, rhs: Self) -> Self {
-        Odd {
-            e1: self.e1 + rhs.e1,
-            e2: self.e2 + rhs.e2,
-            e3: self.e3 + rhs.e3,
-            e123: self.e123 + rhs.e123,
-        }
-    }
-}
-impl<T: self::Ring> ::core::ops::Add for &Odd<T> {
-    type Output = Odd<T>;
-    fn add(self, rhs: Self) -> Odd<T> {
-        Odd {
-            e1: self.e1.add_ref(&rhs.e1),
-            e2: self.e2.add_ref(&rhs.e2),
-            e3: self.e3.add_ref(&rhs.e3),
-            e123: self.e123.add_ref(&rhs.e123),
-        }
-    }
-}
-impl<T: self::Ring> ::core::ops::Sub for Odd<T> {
-    type Output = Self;
-    fn sub(self, rhs: Self) -> Self {
-        Odd {
-            e1: self.e1 - rhs.e1,
-            e2: self.e2 - rhs.e2,
-            e3: self.e3 - rhs.e3,
-            e123: self.e123 - rhs.e123,
-        }
-    }
-}
-impl<T: self::Ring> ::core::ops::Sub for &Odd<T> {
-    type Output = Odd<T>;
-    fn sub(self, rhs: Self) -> Odd<T> {
-        Odd {
-            e1: self.e1.sub_ref(&rhs.e1),
-            e2: self.e2.sub_ref(&rhs.e2),
-            e3: self.e3.sub_ref(&rhs.e3),
-            e123: self.e123.sub_ref(&rhs.e123),
-        }
-    }
-}
-impl<T: self::Ring> ::core::ops::Neg for Odd<T> {
-    type Output = Self;
-    fn neg(self) -> Self {
-        Odd {
-            e1: -self.e1,
-            e2: -self.e2,
-            e3: -self.e3,
-            e123: -self.e123,
-        }
-    }
-}
-impl<T: self::Ring> ::core::ops::Neg for &Odd<T> {
-    type Output = Odd<T>;
-    fn neg(self) -> Odd<T> {
-        Odd {
-            e1: self.e1.neg_ref(),
-            e2: self.e2.neg_ref(),
-            e3: self.e3.neg_ref(),
-            e123: self.e123.neg_ref(),
-        }
-    }
-}
 impl<T: self::Ring> self::GeometricProduct<Vector<T>> for Vector<T> {
     type Output = Rotor<T>;
     #[inline]
@@ -1421,30 +608,10 @@ impl<T: self::Ring> self::GeometricProduct<Vector<T>> for Vector<T> {
         }
     }
 }
-impl<T: self::Ring> ::core::ops::Mul<&Vector<T>> for &Vector<T> {
-    type Output = Rotor<T>;
-    fn mul(self, rhs: &Vector<T>) -> Rotor<T> {
-        self::GeometricProduct::gp(self, rhs)
-    }
-}
-impl<T: self::Ring> ::core::ops::Mul<Vector<T>> for Vector<T> {
-    type Output = Rotor<T>;
-    fn mul(self, rhs: Vector<T>) -> Rotor<T> {
-        self::GeometricProduct::gp(&self, &rhs)
-    }
-}
-impl<T: self::Ring> ::core::ops::Mul<&Vector<T>> for Vector<T> {
-    type Output = Rotor<T>;
-    fn mul(self, rhs: &Vector<T>) -> Rotor<T> {
-        self::GeometricProduct::gp(&self, rhs)
-    }
-}
-impl<T: self::Ring> ::core::ops::Mul<Vector<T>> for &Vector<T> {
-    type Output = Rotor<T>;
-    fn mul(self, rhs: Vector<T>) -> Rotor<T> {
-        self::GeometricProduct::gp(self, &rhs)
-    }
-}
+product_operators!(Mul::mul => GeometricProduct::gp:
+    Vector * Vector = Rotor, Vector * Rotor = Odd,
+    Rotor * Vector = Odd, Rotor * Rotor = Rotor,
+);
 impl<T: self::Ring> self::GeometricProduct<Rotor<T>> for Vector<T> {
     type Output = Odd<T>;
     #[inline]
@@ -1469,30 +636,6 @@ impl<T: self::Ring> self::GeometricProduct<Rotor<T>> for Vector<T> {
         }
     }
 }
-impl<T: self::Ring> ::core::ops::Mul<&Rotor<T>> for &Vector<T> {
-    type Output = Odd<T>;
-    fn mul(self, rhs: &Rotor<T>) -> Odd<T> {
-        self::GeometricProduct::gp(self, rhs)
-    }
-}
-impl<T: self::Ring> ::core::ops::Mul<Rotor<T>> for Vector<T> {
-    type Output = Odd<T>;
-    fn mul(self, rhs: Rotor<T>) -> Odd<T> {
-        self::GeometricProduct::gp(&self, &rhs)
-    }
-}
-impl<T: self::Ring> ::core::ops::Mul<&Rotor<T>> for Vector<T> {
-    type Output = Odd<T>;
-    fn mul(self, rhs: &Rotor<T>) -> Odd<T> {
-        self::GeometricProduct::gp(&self, rhs)
-    }
-}
-impl<T: self::Ring> ::core::ops::Mul<Rotor<T>> for &Vector<T> {
-    type Output = Odd<T>;
-    fn mul(self, rhs: Rotor<T>) -> Odd<T> {
-        self::GeometricProduct::gp(self, &rhs)
-    }
-}
 impl<T: self::Ring> self::GeometricProduct<Vector<T>> for Rotor<T> {
     type Output = Odd<T>;
     #[inline]
@@ -1515,30 +658,6 @@ impl<T: self::Ring> self::GeometricProduct<Vector<T>> for Rotor<T> {
             e3: p0_2 - &p2_0 - &p3_1,
             e123: p1_2 - &p2_1 + &p3_0,
         }
-    }
-}
-impl<T: self::Ring> ::core::ops::Mul<&Vector<T>> for &Rotor<T> {
-    type Output = Odd<T>;
-    fn mul(self, rhs: &Vector<T>) -> Odd<T> {
-        self::GeometricProduct::gp(self, rhs)
-    }
-}
-impl<T: self::Ring> ::core::ops::Mul<Vector<T>> for Rotor<T> {
-    type Output = Odd<T>;
-    fn mul(self, rhs: Vector<T>) -> Odd<T> {
-        self::GeometricProduct::gp(&self, &rhs)
-    }
-}
-impl<T: self::Ring> ::core::ops::Mul<&Vector<T>> for Rotor<T> {
-    type Output = Odd<T>;
-    fn mul(self, rhs: &Vector<T>) -> Odd<T> {
-        self::GeometricProduct::gp(&self, rhs)
-    }
-}
-impl<T: self::Ring> ::core::ops::Mul<Vector<T>> for &Rotor<T> {
-    type Output = Odd<T>;
-    fn mul(self, rhs: Vector<T>) -> Odd<T> {
-        self::GeometricProduct::gp(self, &rhs)
     }
 }
 impl<T: self::Ring> self::GeometricProduct<Rotor<T>> for Rotor<T> {
@@ -1569,39 +688,10 @@ impl<T: self::Ring> self::GeometricProduct<Rotor<T>> for Rotor<T> {
         }
     }
 }
-impl<T: self::Ring> ::core::ops::Mul<&Rotor<T>> for &Rotor<T> {
-    type Output = Rotor<T>;
-    fn mul(self, rhs: &Rotor<T>) -> Rotor<T> {
-        self::GeometricProduct::gp(self, rhs)
-    }
-}
-impl<T: self::Ring> ::core::ops::Mul<Rotor<T>> for Rotor<T> {
-    type Output = Rotor<T>;
-    fn mul(self, rhs: Rotor<T>) -> Rotor<T> {
-        self::GeometricProduct::gp(&self, &rhs)
-    }
-}
-impl<T: self::Ring> ::core::ops::Mul<&Rotor<T>> for Rotor<T> {
-    type Output = Rotor<T>;
-    fn mul(self, rhs: &Rotor<T>) -> Rotor<T> {
-        self::GeometricProduct::gp(&self, rhs)
-    }
-}
-impl<T: self::Ring> ::core::ops::Mul<Rotor<T>> for &Rotor<T> {
-    type Output = Rotor<T>;
-    fn mul(self, rhs: Rotor<T>) -> Rotor<T> {
-        self::GeometricProduct::gp(self, &rhs)
-    }
-}
 impl<T: self::Ring> Vector<T> {
     ///The projection onto [`Rotor`]: shared coefficients kept, the others dropped.
     pub fn project_to_rotor(&self) -> Rotor<T> {
-        Rotor {
-            scalar: T::zero(),
-            e12: T::zero(),
-            e13: T::zero(),
-            e23: T::zero(),
-        }
+        Rotor::zero()
     }
 }
 impl<T: self::Ring> ::core::convert::From<&Vector<T>> for Odd<T> {
@@ -1611,29 +701,18 @@ impl<T: self::Ring> ::core::convert::From<&Vector<T>> for Odd<T> {
             e1: ::core::clone::Clone::clone(&x.e1),
             e2: ::core::clone::Clone::clone(&x.e2),
             e3: ::core::clone::Clone::clone(&x.e3),
-            e123: T::zero(),
+            ..Odd::zero()
         }
     }
 }
 impl<T: self::Ring> Rotor<T> {
     ///The projection onto [`Vector`]: shared coefficients kept, the others dropped.
     pub fn project_to_vector(&self) -> Vector<T> {
-        Vector {
-            e1: T::zero(),
-            e2: T::zero(),
-            e3: T::zero(),
-        }
+        Vector::zero()
     }
-}
-impl<T: self::Ring> Rotor<T> {
     ///The projection onto [`Odd`]: shared coefficients kept, the others dropped.
     pub fn project_to_odd(&self) -> Odd<T> {
-        Odd {
-            e1: T::zero(),
-            e2: T::zero(),
-            e3: T::zero(),
-            e123: T::zero(),
-        }
+        Odd::zero()
     }
 }
 impl<T: self::Ring> Odd<T> {
@@ -1645,131 +724,9 @@ impl<T: self::Ring> Odd<T> {
             e3: ::core::clone::Clone::clone(&self.e3),
         }
     }
-}
-impl<T: self::Ring> Odd<T> {
     ///The projection onto [`Rotor`]: shared coefficients kept, the others dropped.
     pub fn project_to_rotor(&self) -> Rotor<T> {
-        Rotor {
-            scalar: T::zero(),
-            e12: T::zero(),
-            e13: T::zero(),
-            e23: T::zero(),
-        }
-    }
-}
-impl<T: self::Ring> self::Sandwich<Vector<T>> for Vector<T> {
-    type Output = Vector<T>;
-    ///`rev(self) x self` in one fused kernel: every component of the full product is a [`Vector`] component.
-    #[inline(always)]
-    fn sandwich(&self, x: &Vector<T>) -> Vector<T> {
-        let t0 = ((self.e1.mul_ref(&x.e1))
-            + &((self.e2.mul_ref(&x.e2)) + &(self.e3.mul_ref(&x.e3))));
-        let t1 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
-        let t2 = ((self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1)));
-        let t3 = ((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2)));
-        Vector {
-            e1: ((t0.mul_ref(&self.e1))
-                + &((t1.mul_ref(&self.e2)) + &(t2.mul_ref(&self.e3)))),
-            e2: ((t0.mul_ref(&self.e2))
-                - &((t1.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e3)))),
-            e3: ((t0.mul_ref(&self.e3))
-                - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
-        }
-    }
-}
-impl<T: self::Ring> self::Apply<Vector<T>> for Vector<T> {
-    type Output = Vector<T>;
-    ///`self x rev(self)` in one fused kernel: every component of the full product is a [`Vector`] component.
-    #[inline(always)]
-    fn apply(&self, x: &Vector<T>) -> Vector<T> {
-        let t0 = ((self.e1.mul_ref(&x.e1))
-            + &((self.e2.mul_ref(&x.e2)) + &(self.e3.mul_ref(&x.e3))));
-        let t1 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
-        let t2 = ((self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1)));
-        let t3 = ((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2)));
-        Vector {
-            e1: ((t0.mul_ref(&self.e1))
-                + &((t1.mul_ref(&self.e2)) + &(t2.mul_ref(&self.e3)))),
-            e2: ((t0.mul_ref(&self.e2))
-                - &((t1.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e3)))),
-            e3: ((t0.mul_ref(&self.e3))
-                - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
-        }
-    }
-}
-impl<T: self::Ring> self::Sandwich<Rotor<T>> for Vector<T> {
-    type Output = Rotor<T>;
-    ///`rev(self) x self` in one fused kernel: every component of the full product is a [`Rotor`] component.
-    #[inline(always)]
-    fn sandwich(&self, x: &Rotor<T>) -> Rotor<T> {
-        let t0 = ((self.e1.mul_ref(&x.scalar))
-            - &((self.e2.mul_ref(&x.e12)) + &(self.e3.mul_ref(&x.e13))));
-        let t1 = ((self.e1.mul_ref(&x.e12))
-            + &((self.e2.mul_ref(&x.scalar)) - &(self.e3.mul_ref(&x.e23))));
-        let t2 = ((self.e1.mul_ref(&x.e13))
-            + &((self.e2.mul_ref(&x.e23)) + &(self.e3.mul_ref(&x.scalar))));
-        let t3 = ((self.e1.mul_ref(&x.e23))
-            - &((self.e2.mul_ref(&x.e13)) - &(self.e3.mul_ref(&x.e12))));
-        Rotor {
-            scalar: ((t0.mul_ref(&self.e1))
-                + &((t1.mul_ref(&self.e2)) + &(t2.mul_ref(&self.e3)))),
-            e12: ((t0.mul_ref(&self.e2))
-                - &((t1.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e3)))),
-            e13: ((t0.mul_ref(&self.e3))
-                - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
-            e23: ((t1.mul_ref(&self.e3))
-                - &((t2.mul_ref(&self.e2)) - &(t3.mul_ref(&self.e1)))),
-        }
-    }
-}
-impl<T: self::Ring> self::Apply<Rotor<T>> for Vector<T> {
-    type Output = Rotor<T>;
-    ///`self x rev(self)` in one fused kernel: every component of the full product is a [`Rotor`] component.
-    #[inline(always)]
-    fn apply(&self, x: &Rotor<T>) -> Rotor<T> {
-        let t0 = ((self.e1.mul_ref(&x.scalar))
-            - &((self.e2.mul_ref(&x.e12)) + &(self.e3.mul_ref(&x.e13))));
-        let t1 = ((self.e1.mul_ref(&x.e12))
-            + &((self.e2.mul_ref(&x.scalar)) - &(self.e3.mul_ref(&x.e23))));
-        let t2 = ((self.e1.mul_ref(&x.e13))
-            + &((self.e2.mul_ref(&x.e23)) + &(self.e3.mul_ref(&x.scalar))));
-        let t3 = ((self.e1.mul_ref(&x.e23))
-            - &((self.e2.mul_ref(&x.e13)) - &(self.e3.mul_ref(&x.e12))));
-        Rotor {
-            scalar: ((t0.mul_ref(&self.e1))
-                + &((t1.mul_ref(&self.e2)) + &(t2.mul_ref(&self.e3)))),
-            e12: ((t0.mul_ref(&self.e2))
-                - &((t1.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e3)))),
-            e13: ((t0.mul_ref(&self.e3))
-                - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
-            e23: ((t1.mul_ref(&self.e3))
-                - &((t2.mul_ref(&self.e2)) - &(t3.mul_ref(&self.e1)))),
-        }
-    }
-}
-impl<T: self::Ring> self::Sandwich<Vector<T>> for Rotor<T> {
-    type Output = Vector<T>;
-    ///`rev(self) x self` in one fused kernel: every component of the full product is a [`Vector`] component.
-    #[inline(always)]
-    fn sandwich(&self, x: &Vector<T>) -> Vector<T> {
-        let t0 = ((self.scalar.mul_ref(&x.e1))
-            - &((self.e12.mul_ref(&x.e2)) + &(self.e13.mul_ref(&x.e3))));
-        let t1 = ((self.scalar.mul_ref(&x.e2))
-            + &((self.e12.mul_ref(&x.e1)) - &(self.e23.mul_ref(&x.e3))));
-        let t2 = ((self.scalar.mul_ref(&x.e3))
-            + &((self.e13.mul_ref(&x.e1)) + &(self.e23.mul_ref(&x.e2))));
-        let t3 = self::Ring::neg_ref(
-            &((self.e12.mul_ref(&x.e3))
-                - &((self.e13.mul_ref(&x.e2)) - &(self.e23.mul_ref(&x.e1)))),
-        );
-        Vector {
-            e1: (((t0.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e12)))
-                - &((t2.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e23)))),
-            e2: (((t0.mul_ref(&self.e12)) + &(t1.mul_ref(&self.scalar)))
-                - &((t2.mul_ref(&self.e23)) - &(t3.mul_ref(&self.e13)))),
-            e3: (((t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23)))
-                + &((t2.mul_ref(&self.scalar)) - &(t3.mul_ref(&self.e12)))),
-        }
+        Rotor::zero()
     }
 }
 impl<T: self::Ring> self::Apply<Vector<T>> for Rotor<T> {
@@ -1796,31 +753,6 @@ impl<T: self::Ring> self::Apply<Vector<T>> for Rotor<T> {
                 &(((t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23)))
                     - &((t2.mul_ref(&self.scalar)) + &(t3.mul_ref(&self.e12)))),
             ),
-        }
-    }
-}
-impl<T: self::Ring> self::Sandwich<Rotor<T>> for Rotor<T> {
-    type Output = Rotor<T>;
-    ///`rev(self) x self` in one fused kernel: every component of the full product is a [`Rotor`] component.
-    #[inline(always)]
-    fn sandwich(&self, x: &Rotor<T>) -> Rotor<T> {
-        let t0 = (((self.scalar.mul_ref(&x.scalar)) + &(self.e12.mul_ref(&x.e12)))
-            + &((self.e13.mul_ref(&x.e13)) + &(self.e23.mul_ref(&x.e23))));
-        let t1 = (((self.scalar.mul_ref(&x.e12)) - &(self.e12.mul_ref(&x.scalar)))
-            + &((self.e13.mul_ref(&x.e23)) - &(self.e23.mul_ref(&x.e13))));
-        let t2 = (((self.scalar.mul_ref(&x.e13)) - &(self.e12.mul_ref(&x.e23)))
-            - &((self.e13.mul_ref(&x.scalar)) - &(self.e23.mul_ref(&x.e12))));
-        let t3 = (((self.scalar.mul_ref(&x.e23)) + &(self.e12.mul_ref(&x.e13)))
-            - &((self.e13.mul_ref(&x.e12)) + &(self.e23.mul_ref(&x.scalar))));
-        Rotor {
-            scalar: (((t0.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e12)))
-                - &((t2.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e23)))),
-            e12: (((t0.mul_ref(&self.e12)) + &(t1.mul_ref(&self.scalar)))
-                - &((t2.mul_ref(&self.e23)) - &(t3.mul_ref(&self.e13)))),
-            e13: (((t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23)))
-                + &((t2.mul_ref(&self.scalar)) - &(t3.mul_ref(&self.e12)))),
-            e23: (((t0.mul_ref(&self.e23)) - &(t1.mul_ref(&self.e13)))
-                + &((t2.mul_ref(&self.e12)) + &(t3.mul_ref(&self.scalar)))),
         }
     }
 }
@@ -1855,145 +787,7 @@ impl<T: self::Ring> self::Apply<Rotor<T>> for Rotor<T> {
         }
     }
 }
-impl<T: self::Ring> self::UnitAction<Vector<T>> for Vector<T> {
-    /// `rev(self) x self` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
-    /// The commutator form `x + (L x - x L) R`: 12 multiplications.
-    /// Every component of the full product is a `Vector` component: this is the whole action.
-    #[inline]
-    fn sandwich_unit(&self, x: &Vector<T>) -> Vector<T> {
-        let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
-        let t1 = ((self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1)));
-        let t2 = ((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2)));
-        Vector {
-            e1: {
-                let y = ((t0.mul_ref(&self.e2)) + &(t1.mul_ref(&self.e3)));
-                x.e1.add_ref(&y) + &y
-            },
-            e2: {
-                let y = self::Ring::neg_ref(
-                    &((t0.mul_ref(&self.e1)) - &(t2.mul_ref(&self.e3))),
-                );
-                x.e2.add_ref(&y) + &y
-            },
-            e3: {
-                let y = self::Ring::neg_ref(
-                    &((t1.mul_ref(&self.e1)) + &(t2.mul_ref(&self.e2))),
-                );
-                x.e3.add_ref(&y) + &y
-            },
-        }
-    }
-    /// `self x rev(self)` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
-    /// The commutator form `x + (L x - x L) R`: 12 multiplications.
-    /// Every component of the full product is a `Vector` component: this is the whole action.
-    #[inline]
-    fn apply_unit(&self, x: &Vector<T>) -> Vector<T> {
-        let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
-        let t1 = ((self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1)));
-        let t2 = ((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2)));
-        Vector {
-            e1: {
-                let y = ((t0.mul_ref(&self.e2)) + &(t1.mul_ref(&self.e3)));
-                x.e1.add_ref(&y) + &y
-            },
-            e2: {
-                let y = self::Ring::neg_ref(
-                    &((t0.mul_ref(&self.e1)) - &(t2.mul_ref(&self.e3))),
-                );
-                x.e2.add_ref(&y) + &y
-            },
-            e3: {
-                let y = self::Ring::neg_ref(
-                    &((t1.mul_ref(&self.e1)) + &(t2.mul_ref(&self.e2))),
-                );
-                x.e3.add_ref(&y) + &y
-            },
-        }
-    }
-}
-impl<T: self::Ring> self::UnitAction<Rotor<T>> for Vector<T> {
-    /// `rev(self) x self` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
-    /// The commutator form `x + (L x - x L) R`: 12 multiplications.
-    /// Every component of the full product is a `Rotor` component: this is the whole action.
-    #[inline]
-    fn sandwich_unit(&self, x: &Rotor<T>) -> Rotor<T> {
-        let t0 = self::Ring::neg_ref(
-            &((self.e2.mul_ref(&x.e12)) + &(self.e3.mul_ref(&x.e13))),
-        );
-        let t1 = ((self.e1.mul_ref(&x.e12)) - &(self.e3.mul_ref(&x.e23)));
-        let t2 = ((self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23)));
-        Rotor {
-            scalar: ::core::clone::Clone::clone(&x.scalar),
-            e12: {
-                let y = ((t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1)));
-                x.e12.add_ref(&y) + &y
-            },
-            e13: {
-                let y = ((t0.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e1)));
-                x.e13.add_ref(&y) + &y
-            },
-            e23: {
-                let y = ((t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e2)));
-                x.e23.add_ref(&y) + &y
-            },
-        }
-    }
-    /// `self x rev(self)` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
-    /// The commutator form `x + (L x - x L) R`: 12 multiplications.
-    /// Every component of the full product is a `Rotor` component: this is the whole action.
-    #[inline]
-    fn apply_unit(&self, x: &Rotor<T>) -> Rotor<T> {
-        let t0 = self::Ring::neg_ref(
-            &((self.e2.mul_ref(&x.e12)) + &(self.e3.mul_ref(&x.e13))),
-        );
-        let t1 = ((self.e1.mul_ref(&x.e12)) - &(self.e3.mul_ref(&x.e23)));
-        let t2 = ((self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23)));
-        Rotor {
-            scalar: ::core::clone::Clone::clone(&x.scalar),
-            e12: {
-                let y = ((t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1)));
-                x.e12.add_ref(&y) + &y
-            },
-            e13: {
-                let y = ((t0.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e1)));
-                x.e13.add_ref(&y) + &y
-            },
-            e23: {
-                let y = ((t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e2)));
-                x.e23.add_ref(&y) + &y
-            },
-        }
-    }
-}
 impl<T: self::Ring> self::UnitAction<Vector<T>> for Rotor<T> {
-    /// `rev(self) x self` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
-    /// The commutator form `x + (L x - x L) R`: 15 multiplications.
-    /// Every component of the full product is a `Vector` component: this is the whole action.
-    #[inline]
-    fn sandwich_unit(&self, x: &Vector<T>) -> Vector<T> {
-        let t0 = self::Ring::neg_ref(
-            &((self.e12.mul_ref(&x.e2)) + &(self.e13.mul_ref(&x.e3))),
-        );
-        let t1 = ((self.e12.mul_ref(&x.e1)) - &(self.e23.mul_ref(&x.e3)));
-        let t2 = ((self.e13.mul_ref(&x.e1)) + &(self.e23.mul_ref(&x.e2)));
-        Vector {
-            e1: {
-                let y = ((t0.mul_ref(&self.scalar))
-                    - &((t1.mul_ref(&self.e12)) + &(t2.mul_ref(&self.e13))));
-                x.e1.add_ref(&y) + &y
-            },
-            e2: {
-                let y = ((t0.mul_ref(&self.e12))
-                    + &((t1.mul_ref(&self.scalar)) - &(t2.mul_ref(&self.e23))));
-                x.e2.add_ref(&y) + &y
-            },
-            e3: {
-                let y = ((t0.mul_ref(&self.e13))
-                    + &((t1.mul_ref(&self.e23)) + &(t2.mul_ref(&self.scalar))));
-                x.e3.add_ref(&y) + &y
-            },
-        }
-    }
     /// `self x rev(self)` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
     /// The commutator form `x + (L x - x L) R`: 15 multiplications.
     /// Every component of the full product is a `Vector` component: this is the whole action.
@@ -2030,37 +824,6 @@ impl<T: self::Ring> self::UnitAction<Vector<T>> for Rotor<T> {
     }
 }
 impl<T: self::Ring> self::UnitAction<Rotor<T>> for Rotor<T> {
-    /// `rev(self) x self` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
-    /// The commutator form `x + (L x - x L) R`: 15 multiplications.
-    /// Every component of the full product is a `Rotor` component: this is the whole action.
-    #[inline]
-    fn sandwich_unit(&self, x: &Rotor<T>) -> Rotor<T> {
-        let t0 = ((self.e13.mul_ref(&x.e23)) - &(self.e23.mul_ref(&x.e13)));
-        let t1 = self::Ring::neg_ref(
-            &((self.e12.mul_ref(&x.e23)) - &(self.e23.mul_ref(&x.e12))),
-        );
-        let t2 = ((self.e12.mul_ref(&x.e13)) - &(self.e13.mul_ref(&x.e12)));
-        Rotor {
-            scalar: ::core::clone::Clone::clone(&x.scalar),
-            e12: {
-                let y = ((t0.mul_ref(&self.scalar))
-                    - &((t1.mul_ref(&self.e23)) - &(t2.mul_ref(&self.e13))));
-                x.e12.add_ref(&y) + &y
-            },
-            e13: {
-                let y = ((t0.mul_ref(&self.e23))
-                    + &((t1.mul_ref(&self.scalar)) - &(t2.mul_ref(&self.e12))));
-                x.e13.add_ref(&y) + &y
-            },
-            e23: {
-                let y = self::Ring::neg_ref(
-                    &((t0.mul_ref(&self.e13))
-                        - &((t1.mul_ref(&self.e12)) + &(t2.mul_ref(&self.scalar)))),
-                );
-                x.e23.add_ref(&y) + &y
-            },
-        }
-    }
     /// `self x rev(self)` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
     /// The commutator form `x + (L x - x L) R`: 15 multiplications.
     /// Every component of the full product is a `Rotor` component: this is the whole action.
@@ -2197,15 +960,8 @@ pub trait ActionMatrix<X> {
     /// The matrix applied to `x` (skipping entries that are structurally zero).
     fn transform(m: &Self::Matrix, x: &X) -> X;
 }
-/// The versor action for *unit* versors (`S rev(S) = 1`), typed and fused as [`Apply`] and
-/// [`Sandwich`] but cheaper: since `x S rev(S) = x`, the action is `x + (S x - x S) rev(S)`,
-/// and the commutator drops every part of `S` that commutes with `x`. Exact over any ring when
-/// `S rev(S) = 1` holds exactly; for other versors the result is not the action. Generated for
-/// every pair with a fused kernel (`apply_unit`/`sandwich_unit`; an example is in `gam_algebras`'
-/// crate docs).
+/// The versor action `S x rev(S)` ([`Apply`]) for *unit* versors (`S rev(S) = 1`), fused and typed but cheaper: since `x S rev(S) = x`, the commutator drops every part of `S` that commutes with `x`. Not the action for other versors. algebra-core's `UnitAction` with the one method this file selects (name `sandwich_unit` in `--ops` for both).
 pub trait UnitAction<X> {
-    /// `rev(self) x self` ([`Sandwich`]) for a unit `self`.
-    fn sandwich_unit(&self, x: &X) -> X;
     /// `self x rev(self)` ([`Apply`]) for a unit `self`.
     fn apply_unit(&self, x: &X) -> X;
 }
@@ -2347,17 +1103,24 @@ fn join_terms(terms: impl IntoIterator<Item = String>) -> String {
 use ::core::fmt::{Debug, Display};
 use ::core::ops::{Add, Div, Mul, Neg, Sub};
 macro_rules! float_scalar {
-    ($($t:ty),*) => {
-        $(impl Ring for $t { fn zero() -> Self { 0.0 } fn one() -> Self { 1.0 } fn
-        from_ratio(num : i64, den : i64) -> Self { num as $t / den as $t } fn
-        is_exact_zero(& self) -> bool { * self == 0.0 } fn magnitude(& self) -> f64 {
-        f64::from(self.abs()) } fn relative_epsilon() -> f64 { f64::from(<$t >::EPSILON)
-        } fn add_ref(& self, rhs : & Self) -> Self { self + rhs } fn sub_ref(& self, rhs
-        : & Self) -> Self { self - rhs } fn mul_ref(& self, rhs : & Self) -> Self { self
-        * rhs } fn neg_ref(& self) -> Self { - self } } impl Field for $t { fn div_ref(&
-        self, rhs : & Self) -> Self { self / rhs } fn try_recip(& self) -> Option < Self
-        > { if * self == 0.0 { None } else { Some(1.0 / self) } } })*
-    };
+    ($($t:ty),*) => {$(
+        impl Ring for $t {
+            fn zero() -> Self { 0.0 }
+            fn one() -> Self { 1.0 }
+            fn from_ratio(num: i64, den: i64) -> Self { num as $t / den as $t }
+            fn is_exact_zero(&self) -> bool { *self == 0.0 }
+            fn magnitude(&self) -> f64 { f64::from(self.abs()) }
+            fn relative_epsilon() -> f64 { f64::from(<$t>::EPSILON) }
+            fn add_ref(&self, rhs: &Self) -> Self { self + rhs }
+            fn sub_ref(&self, rhs: &Self) -> Self { self - rhs }
+            fn mul_ref(&self, rhs: &Self) -> Self { self * rhs }
+            fn neg_ref(&self) -> Self { -self }
+        }
+        impl Field for $t {
+            fn div_ref(&self, rhs: &Self) -> Self { self / rhs }
+            fn try_recip(&self) -> Option<Self> { if *self == 0.0 { None } else { Some(1.0 / self) } }
+        }
+    )*};
 }
 float_scalar!(f32, f64);
 /// Why an operation failed.
