@@ -396,14 +396,14 @@ fn expand(decl: Decl) -> syn::Result<proc_macro2::TokenStream> {
     let plan = Plan::new(spec).map_err(|e| syn::Error::new(decl.name.span(), e))?;
     let mut items = algebra_codegen::emit::module_items(&plan);
     items.extend(algebra_codegen::constraint::methods(&plan).map_err(|e| syn::Error::new(decl.name.span(), e))?);
-    if let Some(engine) = &decl.engine {
-        items = algebra_codegen::paths::with_engine_path(items, engine);
-    }
+    // the items reach the engine through one alias: one import, no pass over the items
+    let engine = algebra_codegen::paths::engine_use(decl.engine.as_ref().unwrap_or(&quote!(::algebra_core)));
     let (attrs, vis, name) = (&decl.attrs, &decl.vis, &decl.name);
     Ok(quote! {
         #(#attrs)*
         #[allow(clippy::all, unused_parens, unused_mut, unused_variables, non_snake_case, missing_docs)]
         #vis mod #name {
+            #engine
             #items
         }
     })

@@ -74,7 +74,7 @@ fn method(spec: &ModuleSpec, names: &Names, r: Request, k: &ConstrainedKernel) -
     let name = format_ident!("{}", method_name(spec, r));
     let body = typed_body(names, r, k, out);
     quote! {
-        impl<T: ::algebra_core::Ring> #vt<T> {
+        impl<T: __gam_engine::Ring> #vt<T> {
             #(#[doc = #doc])*
             pub fn #name(&self) -> #ot<T> {
                 #body
@@ -96,7 +96,7 @@ pub(crate) fn typed_body(names: &Names, r: Request, k: &ConstrainedKernel, out: 
         match k.outputs.iter().position(|o| o.0 == *m) {
             Some(i) if s < 0 => {
                 let o = &outs[i];
-                quote!(#f: ::algebra_core::Ring::neg_ref(&#o))
+                quote!(#f: __gam_engine::Ring::neg_ref(&#o))
             }
             Some(i) => {
                 let o = &outs[i];

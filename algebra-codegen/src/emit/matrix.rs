@@ -55,7 +55,7 @@ pub(crate) fn matrix_items(names: &Names, sandwich: &MatrixKernel, apply: &Matri
     );
     quote! {
         #[doc = #doc]
-        impl<T: ::algebra_core::Ring> ::algebra_core::ops::ActionMatrix<#xt<T>> for #vt<T> {
+        impl<T: __gam_engine::Ring> __gam_engine::ops::ActionMatrix<#xt<T>> for #vt<T> {
             type Matrix = [[T; #n]; #n];
             fn sandwich_matrix(&self) -> [[T; #n]; #n] { #s_body }
             fn apply_matrix(&self) -> [[T; #n]; #n] { #a_body }

@@ -1,8 +1,11 @@
 //! Token emission: a [`Plan`] becomes a Rust module.
 //!
-//! Generated code refers to the engine by absolute paths (`::algebra_core::...`), so a crate
-//! that uses the macro, or vendors the emitted file, depends on `algebra-core` (without its
-//! `rug` feature if it wants no GMP).
+//! Generated items refer to the engine through one alias, `__gam_engine::...`
+//! ([`crate::paths::ENGINE`]). The `algebra!` macro imports it once
+//! ([`crate::paths::engine_use`]: `::algebra_core` by default, the front door's
+//! `$crate::__engine`); [`module_with`] (`gam codegen`) writes the paths out as
+//! `::algebra_core::...`. Either way a crate that uses the macro directly, or vendors the
+//! emitted module, depends on `algebra-core` (without its `rug` feature if it wants no GMP).
 
 use crate::naming::product_name;
 pub use crate::naming::{field_name, snake};
@@ -81,11 +84,7 @@ impl Names {
 
     /// `expr` (a `T` place), cloned, negated when `sign` is `-1`.
     pub(super) fn signed(expr: TokenStream, sign: i64) -> TokenStream {
-        if sign < 0 {
-            quote!(::algebra_core::Ring::neg_ref(&#expr))
-        } else {
-            quote!(::core::clone::Clone::clone(&#expr))
-        }
+        if sign < 0 { quote!(__gam_engine::Ring::neg_ref(&#expr)) } else { quote!(::core::clone::Clone::clone(&#expr)) }
     }
 }
 
@@ -105,10 +104,13 @@ pub fn module(plan: &Plan) -> TokenStream {
 }
 
 /// `pub mod NAME { ... }` around the given items (the module's, plus e.g. the constrained
-/// methods of [`crate::constraint::methods`]).
+/// methods of [`crate::constraint::methods`]), with every engine path written out as
+/// `::algebra_core::...` (the form a vendoring crate reads; the macro imports the alias
+/// instead, [`crate::paths::engine_use`]).
 pub fn module_with(plan: &Plan, items: TokenStream) -> TokenStream {
     let name = ident(&plan.spec.name);
     let docs = plan.spec.doc.iter().map(|d| quote!(#![doc = #d]));
+    let items = crate::paths::with_engine_path(items, &quote!(::algebra_core));
     quote! {
         #[allow(clippy::all, unused_parens, unused_mut, unused_variables, non_snake_case)]
         pub mod #name {
@@ -133,8 +135,8 @@ pub fn module_items(plan: &Plan) -> TokenStream {
         .collect();
     let alg_name = alg.name();
     let basis = match plan.spec.basis {
-        Basis::Blade => quote!(::algebra_core::Basis::Blade),
-        Basis::Product => quote!(::algebra_core::Basis::Product),
+        Basis::Blade => quote!(__gam_engine::Basis::Blade),
+        Basis::Product => quote!(__gam_engine::Basis::Product),
     };
     let structs = (0..names.types.len()).map(|i| type_items(plan, &names, i));
     let binaries = plan.binary.iter().map(|k| binary_items(&names, k));
@@ -146,26 +148,26 @@ pub fn module_items(plan: &Plan) -> TokenStream {
     let closed = closed::module_items(plan, &names);
     let named = named::module_items(plan, &names);
     quote! {
-        pub use ::algebra_core::ops::{
+        pub use __gam_engine::ops::{
             ActionMatrix, AnticommutatorProduct, Apply, CommutatorProduct, GeometricProduct, GeometricProductInto,
             LeftContraction, OuterProduct, RegressiveProduct, RightContraction, Sandwich, ScalarProduct,
         };
-        pub use ::algebra_core::ops::UnitAction;
-        pub use ::algebra_core::{Field, Ring};
+        pub use __gam_engine::ops::UnitAction;
+        pub use __gam_engine::{Field, Ring};
 
         /// The basis the types' fields refer to.
-        pub const BASIS: ::algebra_core::Basis = #basis;
+        pub const BASIS: __gam_engine::Basis = #basis;
 
         /// The runtime algebra of this module (for conversions to and from
         /// [`::algebra_core::Multivector`]), built once.
-        pub fn algebra() -> ::std::sync::Arc<::algebra_core::Algebra> {
-            static ALGEBRA: ::std::sync::OnceLock<::std::sync::Arc<::algebra_core::Algebra>> =
+        pub fn algebra() -> ::std::sync::Arc<__gam_engine::Algebra> {
+            static ALGEBRA: ::std::sync::OnceLock<::std::sync::Arc<__gam_engine::Algebra>> =
                 ::std::sync::OnceLock::new();
             ALGEBRA
                 .get_or_init(|| {
-                    let metric = ::algebra_core::Metric::from_strs(&[#(#labels),*], &[#(#gram),*])
+                    let metric = __gam_engine::Metric::from_strs(&[#(#labels),*], &[#(#gram),*])
                         .expect("the metric was validated at generation");
-                    ::algebra_core::Algebra::new(#alg_name, metric)
+                    __gam_engine::Algebra::new(#alg_name, metric)
                 })
                 .clone()
         }
@@ -229,7 +231,7 @@ fn type_items(plan: &Plan, names: &Names, i: usize) -> TokenStream {
             #(#[doc = #field_docs] pub #fields: T,)*
         }
 
-        impl<T: ::algebra_core::Ring> #ty<T> {
+        impl<T: __gam_engine::Ring> #ty<T> {
             /// The basis names of the fields, in order.
             pub const ELEMENTS: [&'static str; #count] = [#(#elements),*];
             /// The bitmasks of the fields' basis elements, in order.
@@ -248,8 +250,8 @@ fn type_items(plan: &Plan, names: &Names, i: usize) -> TokenStream {
             pub fn scale(&self, s: &T) -> Self { #ty { #(#fields: self.#fields.mul_ref(s)),* } }
 
             /// The same element as a runtime multivector of [`algebra()`].
-            pub fn to_multivector(&self) -> ::algebra_core::Multivector<T> {
-                let mut m = ::algebra_core::Multivector::zero(&algebra(), BASIS);
+            pub fn to_multivector(&self) -> __gam_engine::Multivector<T> {
+                let mut m = __gam_engine::Multivector::zero(&algebra(), BASIS);
                 #(m.coeffs_mut()[#masks as usize] = #to_runtime;)*
                 m
             }
@@ -260,7 +262,7 @@ fn type_items(plan: &Plan, names: &Names, i: usize) -> TokenStream {
             /// # Panics
             /// When `m` belongs to an algebra with fewer basis elements than [`algebra()`]; use
             /// [`Self::try_project`] for multivectors of unknown origin.
-            pub fn project(m: &::algebra_core::Multivector<T>) -> Self {
+            pub fn project(m: &__gam_engine::Multivector<T>) -> Self {
                 let m = m.in_basis(BASIS);
                 #ty { #(#fields: #from_runtime),* }
             }
@@ -269,19 +271,19 @@ fn type_items(plan: &Plan, names: &Names, i: usize) -> TokenStream {
             /// `MvError::AlgebraMismatch` otherwise, so a multivector of another (smaller or
             /// larger) algebra is refused instead of indexed.
             pub fn try_project(
-                m: &::algebra_core::Multivector<T>,
-            ) -> ::core::result::Result<Self, ::algebra_core::MvError> {
+                m: &__gam_engine::Multivector<T>,
+            ) -> ::core::result::Result<Self, __gam_engine::MvError> {
                 Self::check_algebra(m)?;
                 Ok(Self::project(m))
             }
 
             /// `Ok` when `m` belongs to [`algebra()`] (the same metric).
-            fn check_algebra(m: &::algebra_core::Multivector<T>) -> ::core::result::Result<(), ::algebra_core::MvError> {
+            fn check_algebra(m: &__gam_engine::Multivector<T>) -> ::core::result::Result<(), __gam_engine::MvError> {
                 let own = algebra();
                 if ::std::sync::Arc::ptr_eq(m.algebra(), &own) || m.algebra().metric() == own.metric() {
                     Ok(())
                 } else {
-                    Err(::algebra_core::MvError::AlgebraMismatch {
+                    Err(__gam_engine::MvError::AlgebraMismatch {
                         left: ::std::string::String::from(m.algebra().name()),
                         right: ::std::string::String::from(own.name()),
                     })
@@ -293,80 +295,80 @@ fn type_items(plan: &Plan, names: &Names, i: usize) -> TokenStream {
             /// the prefixes `S`, `E`, `I`, `N`, `O`, `Q`, `C` if the results go to sympy.
             pub fn symbolic(prefix: &str) -> Self
             where
-                T: ::algebra_core::Symbolic,
+                T: __gam_engine::Symbolic,
             {
-                #ty { #(#fields: <T as ::algebra_core::Symbolic>::coefficient(prefix, #elements)),* }
+                #ty { #(#fields: <T as __gam_engine::Symbolic>::coefficient(prefix, #elements)),* }
             }
 
             /// The sandwich `f_S(x) = rev(S) x S` of the main paper (eq. 3); a fused kernel typed
             /// to `x`'s type when `Self` is a versor type (see the `Sandwich` trait).
-            pub fn sandwich<X>(&self, x: &X) -> <Self as ::algebra_core::ops::Sandwich<X>>::Output
+            pub fn sandwich<X>(&self, x: &X) -> <Self as __gam_engine::ops::Sandwich<X>>::Output
             where
-                Self: ::algebra_core::ops::Sandwich<X>,
+                Self: __gam_engine::ops::Sandwich<X>,
             {
-                ::algebra_core::ops::Sandwich::sandwich(self, x)
+                __gam_engine::ops::Sandwich::sandwich(self, x)
             }
 
             /// The action `S x rev(S)` (the klein/GATL/ganja convention); a fused kernel typed to
             /// `x`'s type when `Self` is a versor type (see the `Apply` trait).
-            pub fn apply<X>(&self, x: &X) -> <Self as ::algebra_core::ops::Apply<X>>::Output
+            pub fn apply<X>(&self, x: &X) -> <Self as __gam_engine::ops::Apply<X>>::Output
             where
-                Self: ::algebra_core::ops::Apply<X>,
+                Self: __gam_engine::ops::Apply<X>,
             {
-                ::algebra_core::ops::Apply::apply(self, x)
+                __gam_engine::ops::Apply::apply(self, x)
             }
 
             /// `self x rev(self)` for a unit versor (`self rev(self) = 1`), cheaper than
             /// [`Self::apply`]: `x + (self x - x self) rev(self)`. Not the action otherwise.
             pub fn apply_unit<X>(&self, x: &X) -> X
             where
-                Self: ::algebra_core::ops::UnitAction<X>,
+                Self: __gam_engine::ops::UnitAction<X>,
             {
-                ::algebra_core::ops::UnitAction::apply_unit(self, x)
+                __gam_engine::ops::UnitAction::apply_unit(self, x)
             }
 
             /// `rev(self) x self` for a unit versor, as `x + (rev(self) x - x rev(self)) self`.
             pub fn sandwich_unit<X>(&self, x: &X) -> X
             where
-                Self: ::algebra_core::ops::UnitAction<X>,
+                Self: __gam_engine::ops::UnitAction<X>,
             {
-                ::algebra_core::ops::UnitAction::sandwich_unit(self, x)
+                __gam_engine::ops::UnitAction::sandwich_unit(self, x)
             }
 
             /// The matrix of the action `x ↦ self x rev(self)` on `X` (see `ActionMatrix`):
             /// `let m = motor.apply_matrix::<Point<f64>>();` then `Motor::transform(&m, &p)`
             /// per point equals `motor.apply(&p)`.
-            pub fn apply_matrix<X>(&self) -> <Self as ::algebra_core::ops::ActionMatrix<X>>::Matrix
+            pub fn apply_matrix<X>(&self) -> <Self as __gam_engine::ops::ActionMatrix<X>>::Matrix
             where
-                Self: ::algebra_core::ops::ActionMatrix<X>,
+                Self: __gam_engine::ops::ActionMatrix<X>,
             {
-                ::algebra_core::ops::ActionMatrix::apply_matrix(self)
+                __gam_engine::ops::ActionMatrix::apply_matrix(self)
             }
 
             /// The matrix of the action `x ↦ rev(self) x self` on `X` (see `ActionMatrix`).
-            pub fn sandwich_matrix<X>(&self) -> <Self as ::algebra_core::ops::ActionMatrix<X>>::Matrix
+            pub fn sandwich_matrix<X>(&self) -> <Self as __gam_engine::ops::ActionMatrix<X>>::Matrix
             where
-                Self: ::algebra_core::ops::ActionMatrix<X>,
+                Self: __gam_engine::ops::ActionMatrix<X>,
             {
-                ::algebra_core::ops::ActionMatrix::sandwich_matrix(self)
+                __gam_engine::ops::ActionMatrix::sandwich_matrix(self)
             }
 
             /// An action matrix of this type applied to `x` (see `ActionMatrix`).
-            pub fn transform<X>(m: &<Self as ::algebra_core::ops::ActionMatrix<X>>::Matrix, x: &X) -> X
+            pub fn transform<X>(m: &<Self as __gam_engine::ops::ActionMatrix<X>>::Matrix, x: &X) -> X
             where
-                Self: ::algebra_core::ops::ActionMatrix<X>,
+                Self: __gam_engine::ops::ActionMatrix<X>,
             {
-                <Self as ::algebra_core::ops::ActionMatrix<X>>::transform(m, x)
+                <Self as __gam_engine::ops::ActionMatrix<X>>::transform(m, x)
             }
 
             /// The join `self ∨ x` (the regressive product, also `self & x`):
             /// `undual(dual(self) ^ dual(x))` with the metric-free complements of `dual`, so it
             /// is the same in degenerate metrics (PGA) as in non-degenerate ones.
-            pub fn join<X>(&self, x: &X) -> <Self as ::algebra_core::ops::RegressiveProduct<X>>::Output
+            pub fn join<X>(&self, x: &X) -> <Self as __gam_engine::ops::RegressiveProduct<X>>::Output
             where
-                Self: ::algebra_core::ops::RegressiveProduct<X>,
+                Self: __gam_engine::ops::RegressiveProduct<X>,
             {
-                ::algebra_core::ops::RegressiveProduct::regressive(self, x)
+                __gam_engine::ops::RegressiveProduct::regressive(self, x)
             }
 
             /// The geometric product computed only on `O`'s components (the projection of
@@ -374,9 +376,9 @@ fn type_items(plan: &Plan, names: &Names, i: usize) -> TokenStream {
             /// `a.gp_into::<Rotor<f64>, _>(&b)`. See `GeometricProductInto`.
             pub fn gp_into<O, X>(&self, x: &X) -> O
             where
-                Self: ::algebra_core::ops::GeometricProductInto<X, O>,
+                Self: __gam_engine::ops::GeometricProductInto<X, O>,
             {
-                ::algebra_core::ops::GeometricProductInto::gp_into(self, x)
+                __gam_engine::ops::GeometricProductInto::gp_into(self, x)
             }
 
             #(#unaries)*
@@ -386,15 +388,15 @@ fn type_items(plan: &Plan, names: &Names, i: usize) -> TokenStream {
         #inverse
         #values
 
-        impl<T: ::algebra_core::Ring> ::core::convert::TryFrom<&::algebra_core::Multivector<T>> for #ty<T> {
-            type Error = ::algebra_core::MvError;
+        impl<T: __gam_engine::Ring> ::core::convert::TryFrom<&__gam_engine::Multivector<T>> for #ty<T> {
+            type Error = __gam_engine::MvError;
             /// Exact conversion: fails if the multivector has a non-zero coefficient outside this type.
-            fn try_from(m: &::algebra_core::Multivector<T>) -> ::core::result::Result<Self, Self::Error> {
+            fn try_from(m: &__gam_engine::Multivector<T>) -> ::core::result::Result<Self, Self::Error> {
                 Self::check_algebra(m)?;
                 let converted = m.in_basis(BASIS);
                 for (mask, name, _) in converted.terms() {
                     if !Self::MASKS.contains(&mask) {
-                        return Err(::algebra_core::MvError::OutsideType {
+                        return Err(__gam_engine::MvError::OutsideType {
                             ty: ::std::string::String::from(stringify!(#ty)),
                             element: ::std::string::String::from(name),
                         });
@@ -404,49 +406,49 @@ fn type_items(plan: &Plan, names: &Names, i: usize) -> TokenStream {
             }
         }
 
-        impl<T: ::algebra_core::Ring> ::core::convert::From<&#ty<T>> for ::algebra_core::Multivector<T> {
+        impl<T: __gam_engine::Ring> ::core::convert::From<&#ty<T>> for __gam_engine::Multivector<T> {
             fn from(x: &#ty<T>) -> Self { x.to_multivector() }
         }
 
-        impl<T: ::algebra_core::Ring> ::core::fmt::Display for #ty<T> {
+        impl<T: __gam_engine::Ring> ::core::fmt::Display for #ty<T> {
             /// A sum of basis elements: `1 + 1/2*e1inf`; `0` for zero.
             fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
                 let terms = [#((#elements, &self.#fields)),*];
-                f.write_str(&::algebra_core::multivector::display::join_terms(
-                    terms.iter().filter(|(_, c)| !::algebra_core::Ring::is_exact_zero(*c)).map(|(n, c)| {
-                        ::algebra_core::multivector::display::format_term(&::std::string::ToString::to_string(c), n)
+                f.write_str(&__gam_engine::multivector::display::join_terms(
+                    terms.iter().filter(|(_, c)| !__gam_engine::Ring::is_exact_zero(*c)).map(|(n, c)| {
+                        __gam_engine::multivector::display::format_term(&::std::string::ToString::to_string(c), n)
                     }),
                 ))
             }
         }
 
-        impl<T: ::algebra_core::Ring> ::core::fmt::Debug for #ty<T> {
+        impl<T: __gam_engine::Ring> ::core::fmt::Debug for #ty<T> {
             fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
                 write!(f, "{}({})", stringify!(#ty), self)
             }
         }
 
-        impl<T: ::algebra_core::Ring> ::core::ops::Add for #ty<T> {
+        impl<T: __gam_engine::Ring> ::core::ops::Add for #ty<T> {
             type Output = Self;
             fn add(self, rhs: Self) -> Self { #ty { #(#fields: self.#fields + rhs.#fields),* } }
         }
-        impl<T: ::algebra_core::Ring> ::core::ops::Add for &#ty<T> {
+        impl<T: __gam_engine::Ring> ::core::ops::Add for &#ty<T> {
             type Output = #ty<T>;
             fn add(self, rhs: Self) -> #ty<T> { #ty { #(#fields: self.#fields.add_ref(&rhs.#fields)),* } }
         }
-        impl<T: ::algebra_core::Ring> ::core::ops::Sub for #ty<T> {
+        impl<T: __gam_engine::Ring> ::core::ops::Sub for #ty<T> {
             type Output = Self;
             fn sub(self, rhs: Self) -> Self { #ty { #(#fields: self.#fields - rhs.#fields),* } }
         }
-        impl<T: ::algebra_core::Ring> ::core::ops::Sub for &#ty<T> {
+        impl<T: __gam_engine::Ring> ::core::ops::Sub for &#ty<T> {
             type Output = #ty<T>;
             fn sub(self, rhs: Self) -> #ty<T> { #ty { #(#fields: self.#fields.sub_ref(&rhs.#fields)),* } }
         }
-        impl<T: ::algebra_core::Ring> ::core::ops::Neg for #ty<T> {
+        impl<T: __gam_engine::Ring> ::core::ops::Neg for #ty<T> {
             type Output = Self;
             fn neg(self) -> Self { #ty { #(#fields: -self.#fields),* } }
         }
-        impl<T: ::algebra_core::Ring> ::core::ops::Neg for &#ty<T> {
+        impl<T: __gam_engine::Ring> ::core::ops::Neg for &#ty<T> {
             type Output = #ty<T>;
             fn neg(self) -> #ty<T> { #ty { #(#fields: self.#fields.neg_ref()),* } }
         }
@@ -500,9 +502,9 @@ fn inverse_method(plan: &Plan, names: &Names, i: usize) -> TokenStream {
     if !plan.closed[i] {
         let full = &names.types[plan.full];
         return quote! {
-            impl<T: ::algebra_core::Field> #ty<T> {
+            impl<T: __gam_engine::Field> #ty<T> {
                 /// The inverse, computed in the whole algebra (this type is not a subalgebra).
-                pub fn inverse(&self) -> ::core::result::Result<#full<T>, ::algebra_core::MvError> {
+                pub fn inverse(&self) -> ::core::result::Result<#full<T>, __gam_engine::MvError> {
                     Ok(#full::project(&self.to_multivector().inverse()?))
                 }
             }
@@ -538,16 +540,16 @@ fn inverse_method(plan: &Plan, names: &Names, i: usize) -> TokenStream {
     };
     let one_row = masks.iter().position(|&mm| mm == 0).expect("contains 1");
     quote! {
-        impl<T: ::algebra_core::Field> #ty<T> {
+        impl<T: __gam_engine::Field> #ty<T> {
             /// The inverse, which stays in this type (a subalgebra containing 1): solves
             /// `self * y = 1` within it. Fails for zero divisors.
-            pub fn inverse(&self) -> ::core::result::Result<Self, ::algebra_core::MvError> {
+            pub fn inverse(&self) -> ::core::result::Result<Self, __gam_engine::MvError> {
                 let mut l: ::std::vec::Vec<::std::vec::Vec<T>> = ::std::vec![::std::vec![T::zero(); #m]; #m];
                 #fill
                 let mut rhs = ::std::vec![T::zero(); #m];
                 rhs[#one_row] = T::one();
-                let y = ::algebra_core::linalg::solve(l, rhs)
-                    .ok_or_else(|| ::algebra_core::MvError::NotInvertible(::std::string::ToString::to_string(self)))?;
+                let y = __gam_engine::linalg::solve(l, rhs)
+                    .ok_or_else(|| __gam_engine::MvError::NotInvertible(::std::string::ToString::to_string(self)))?;
                 let mut it = y.into_iter();
                 Ok(#ty { #(#fields: it.next().expect("one value per field")),* })
             }
@@ -601,13 +603,13 @@ fn binary_items(names: &Names, k: &BinaryKernel) -> TokenStream {
     let operator = product_operator(k.product).map(|(op_trait, op_method)| {
         let (op_trait, op_method) = (ident(op_trait), ident(op_method));
         quote! {
-            impl<T: ::algebra_core::Ring> ::core::ops::#op_trait<&#rt<T>> for &#lt<T> {
+            impl<T: __gam_engine::Ring> ::core::ops::#op_trait<&#rt<T>> for &#lt<T> {
                 type Output = #ot<T>;
-                fn #op_method(self, rhs: &#rt<T>) -> #ot<T> { ::algebra_core::ops::#trait_name::#method(self, rhs) }
+                fn #op_method(self, rhs: &#rt<T>) -> #ot<T> { __gam_engine::ops::#trait_name::#method(self, rhs) }
             }
-            impl<T: ::algebra_core::Ring> ::core::ops::#op_trait<#rt<T>> for #lt<T> {
+            impl<T: __gam_engine::Ring> ::core::ops::#op_trait<#rt<T>> for #lt<T> {
                 type Output = #ot<T>;
-                fn #op_method(self, rhs: #rt<T>) -> #ot<T> { ::algebra_core::ops::#trait_name::#method(&self, &rhs) }
+                fn #op_method(self, rhs: #rt<T>) -> #ot<T> { __gam_engine::ops::#trait_name::#method(&self, &rhs) }
             }
         }
     });
@@ -616,16 +618,16 @@ fn binary_items(names: &Names, k: &BinaryKernel) -> TokenStream {
     let typed = if k.product == Product::Geometric {
         // `gp_into` with the natural output type is `gp` itself
         quote! {
-            impl<T: ::algebra_core::Ring> ::algebra_core::ops::GeometricProductInto<#rt<T>, #ot<T>> for #lt<T> {
+            impl<T: __gam_engine::Ring> __gam_engine::ops::GeometricProductInto<#rt<T>, #ot<T>> for #lt<T> {
                 #[inline]
-                fn gp_into(&self, rhs: &#rt<T>) -> #ot<T> { ::algebra_core::ops::GeometricProduct::gp(self, rhs) }
+                fn gp_into(&self, rhs: &#rt<T>) -> #ot<T> { __gam_engine::ops::GeometricProduct::gp(self, rhs) }
             }
         }
     } else {
         quote!()
     };
     quote! {
-        impl<T: ::algebra_core::Ring> ::algebra_core::ops::#trait_name<#rt<T>> for #lt<T> {
+        impl<T: __gam_engine::Ring> __gam_engine::ops::#trait_name<#rt<T>> for #lt<T> {
             type Output = #ot<T>;
             #[inline]
             fn #method(&self, rhs: &#rt<T>) -> #ot<T> {
@@ -643,7 +645,7 @@ fn typed_items(names: &Names, k: &BinaryKernel) -> TokenStream {
     let (lt, rt, ot) = (&names.types[k.lhs], &names.types[k.rhs], &names.types[k.out]);
     let body = kernel_body(names, k);
     quote! {
-        impl<T: ::algebra_core::Ring> ::algebra_core::ops::GeometricProductInto<#rt<T>, #ot<T>> for #lt<T> {
+        impl<T: __gam_engine::Ring> __gam_engine::ops::GeometricProductInto<#rt<T>, #ot<T>> for #lt<T> {
             #[inline]
             fn gp_into(&self, rhs: &#rt<T>) -> #ot<T> {
                 #body
@@ -679,7 +681,7 @@ fn conversion_items(names: &Names) -> TokenStream {
             if ma.iter().all(|m| mb.contains(m)) {
                 let vals = vals(quote!(x));
                 items.push(quote! {
-                    impl<T: ::algebra_core::Ring> ::core::convert::From<&#ta<T>> for #tb<T> {
+                    impl<T: __gam_engine::Ring> ::core::convert::From<&#ta<T>> for #tb<T> {
                         /// The embedding (every basis element of the source is in the target).
                         fn from(x: &#ta<T>) -> Self { #tb { #(#fb: #vals),* } }
                     }
@@ -689,7 +691,7 @@ fn conversion_items(names: &Names) -> TokenStream {
                 let method = format_ident!("project_to_{}", snake(&tb.to_string()));
                 let doc = format!("The projection onto [`{tb}`]: shared coefficients kept, the others dropped.");
                 items.push(quote! {
-                    impl<T: ::algebra_core::Ring> #ta<T> {
+                    impl<T: __gam_engine::Ring> #ta<T> {
                         #[doc = #doc]
                         pub fn #method(&self) -> #tb<T> { #tb { #(#fb: #vals),* } }
                     }

@@ -72,35 +72,35 @@ fn function(names: &Names, c: &Constructor) -> Option<TokenStream> {
                 if trig {
                     let what = n.to_string();
                     checks.push(quote!(
-                        ::algebra_core::closed_form::check_finite(#name_str, &#what, #arg.iter())?;
+                        __gam_engine::closed_form::check_finite(#name_str, &#what, #arg.iter())?;
                     ));
                 }
                 arrays += 1;
             }
             Param::Axis(len) => {
                 args.push(quote!(axis: &[T; #len]));
-                checks.push(quote!(::algebra_core::closed_form::check_finite(#name_str, &"axis", axis.iter())?;));
+                checks.push(quote!(__gam_engine::closed_form::check_finite(#name_str, &"axis", axis.iter())?;));
                 let us = (0..*len).map(|k| format_ident!("u{}", k));
                 let idx = 0..*len;
                 lets.push(quote! {
                     let norm2 = axis.iter().fold(T::zero(), |acc, a| acc + &a.mul_ref(a));
-                    if !(norm2 > T::zero()) || !::algebra_core::Ring::is_finite_value(&norm2) {
-                        return Err(::algebra_core::closed_form::undefined(#name_str, "axis".to_string(), "the axis is zero (or too large for this scalar)"));
+                    if !(norm2 > T::zero()) || !__gam_engine::Ring::is_finite_value(&norm2) {
+                        return Err(__gam_engine::closed_form::undefined(#name_str, "axis".to_string(), "the axis is zero (or too large for this scalar)"));
                     }
-                    let inv = T::one().div_ref(&::algebra_core::Real::sqrt(&norm2));
+                    let inv = T::one().div_ref(&__gam_engine::Real::sqrt(&norm2));
                     #(let #us = axis[#idx].mul_ref(&inv);)*
                 });
             }
             Param::Scale => {
                 args.push(quote!(scale: &T));
                 checks.push(
-                    quote!(::algebra_core::closed_form::check_finite(#name_str, &"scale", ::core::iter::once(scale))?;),
+                    quote!(__gam_engine::closed_form::check_finite(#name_str, &"scale", ::core::iter::once(scale))?;),
                 );
                 lets.push(quote! {
                     if !(*scale > T::zero()) {
-                        return Err(::algebra_core::closed_form::undefined(#name_str, "scale".to_string(), "the scale is not positive"));
+                        return Err(__gam_engine::closed_form::undefined(#name_str, "scale".to_string(), "the scale is not positive"));
                     }
-                    let root = ::algebra_core::Real::sqrt(scale);
+                    let root = __gam_engine::Real::sqrt(scale);
                     let inv = T::one().div_ref(&root);
                     let ch = (root.clone() + &inv).mul_ref(&T::from_ratio(1, 2));
                     let sh = (root - &inv).mul_ref(&T::from_ratio(1, 2));
@@ -109,11 +109,11 @@ fn function(names: &Names, c: &Constructor) -> Option<TokenStream> {
             Param::Angle => {
                 args.push(quote!(angle: &T));
                 checks.push(
-                    quote!(::algebra_core::closed_form::check_finite(#name_str, &"angle", ::core::iter::once(angle))?;),
+                    quote!(__gam_engine::closed_form::check_finite(#name_str, &"angle", ::core::iter::once(angle))?;),
                 );
                 lets.push(quote! {
                     let half = angle.mul_ref(&T::from_ratio(1, 2));
-                    let (c, s) = (::algebra_core::Real::cos(&half), ::algebra_core::Real::sin(&half));
+                    let (c, s) = (__gam_engine::Real::cos(&half), __gam_engine::Real::sin(&half));
                 });
             }
         }
@@ -135,7 +135,7 @@ fn function(names: &Names, c: &Constructor) -> Option<TokenStream> {
         quote! {
             #[doc = #doc]
             #[allow(clippy::too_many_arguments)]
-            pub fn #name<T: ::algebra_core::Real>(#(#args),*) -> ::core::result::Result<#ty<T>, ::algebra_core::MvError> {
+            pub fn #name<T: __gam_engine::Real>(#(#args),*) -> ::core::result::Result<#ty<T>, __gam_engine::MvError> {
                 #(#checks)*
                 #(#lets)*
                 Ok(#body)
@@ -144,7 +144,7 @@ fn function(names: &Names, c: &Constructor) -> Option<TokenStream> {
     } else {
         quote! {
             #[doc = #doc]
-            pub fn #name<T: ::algebra_core::Ring>(#(#args),*) -> #ty<T> {
+            pub fn #name<T: __gam_engine::Ring>(#(#args),*) -> #ty<T> {
                 #(#lets)*
                 #body
             }
@@ -174,13 +174,13 @@ fn down_item(names: &Names, d: &Down) -> Option<TokenStream> {
         /// The Euclidean point of the conformal point `x` (any weight): `x_k = (x · g_k) / (-x · ∞)`,
         /// so `down(&up(&p)) == p`. An error when `x · ∞ = 0` (a point at infinity, a plane)
         /// or `x` is not finite.
-        pub fn down<T: ::algebra_core::Field>(x: &#ty<T>) -> ::core::result::Result<[T; #n], ::algebra_core::MvError> {
-            if !x.iter().all(::algebra_core::Ring::is_finite_value) {
-                return Err(::algebra_core::closed_form::undefined("down", "x".to_string(), "coefficients are not finite"));
+        pub fn down<T: __gam_engine::Field>(x: &#ty<T>) -> ::core::result::Result<[T; #n], __gam_engine::MvError> {
+            if !x.iter().all(__gam_engine::Ring::is_finite_value) {
+                return Err(__gam_engine::closed_form::undefined("down", "x".to_string(), "coefficients are not finite"));
             }
             let w = #weight;
-            let inv = w.try_recip().filter(::algebra_core::Ring::is_finite_value).ok_or_else(|| {
-                ::algebra_core::closed_form::undefined("down", "x".to_string(), "its weight -x · ∞ is zero (not a finite point)")
+            let inv = w.try_recip().filter(__gam_engine::Ring::is_finite_value).ok_or_else(|| {
+                __gam_engine::closed_form::undefined("down", "x".to_string(), "its weight -x · ∞ is zero (not a finite point)")
             })?;
             Ok([#(#coords.mul_ref(&inv)),*])
         }

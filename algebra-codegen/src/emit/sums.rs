@@ -24,7 +24,7 @@ impl Build for Tokens {
         if movable { x } else { quote!(::core::clone::Clone::clone(&#x)) }
     }
     fn neg(x: TokenStream) -> TokenStream {
-        quote!(::algebra_core::Ring::neg_ref(&#x))
+        quote!(__gam_engine::Ring::neg_ref(&#x))
     }
     fn scaled(k: Ratio, x: TokenStream) -> TokenStream {
         let k = constant(k);

@@ -30,7 +30,7 @@ fn unit_items(
         .filter(|k| reduced_is_cheaper(spec, u, k))
     {
         Some(k) => typed_body(names, Request { op, left: v, right: x }, k, x),
-        None if large(u) => quote!(::algebra_core::ops::#general(self, x)),
+        None if large(u) => quote!(__gam_engine::ops::#general(self, x)),
         None => unrolled_body(names, u),
     };
     let s_body = body(sandwich, proofs[0], KernelOp::Sandwich, quote!(Sandwich::sandwich));
@@ -38,7 +38,7 @@ fn unit_items(
     let s_doc = doc_lines(spec, "`rev(self) x self` for a unit `self`", sandwich, proofs[0]);
     let a_doc = doc_lines(spec, "`self x rev(self)` for a unit `self`", apply, proofs[1]);
     quote! {
-        impl<T: ::algebra_core::Ring> ::algebra_core::ops::UnitAction<#xt<T>> for #vt<T> {
+        impl<T: __gam_engine::Ring> __gam_engine::ops::UnitAction<#xt<T>> for #vt<T> {
             #(#[doc = #s_doc])*
             #[inline]
             fn sandwich_unit(&self, x: &#xt<T>) -> #xt<T> {

@@ -53,7 +53,7 @@ pub(super) fn type_items(names: &Names, i: usize) -> TokenStream {
         }
     });
     quote! {
-        impl<T: ::algebra_core::Ring> #ty<T> {
+        impl<T: __gam_engine::Ring> #ty<T> {
             /// The number of coefficients.
             pub const LEN: usize = #n;
             #(#constants)*
@@ -77,20 +77,20 @@ pub(super) fn type_items(names: &Names, i: usize) -> TokenStream {
             pub fn iter_mut(&mut self) -> ::core::array::IntoIter<&mut T, #n> { [#(&mut self.#fields),*].into_iter() }
         }
 
-        impl<T: ::algebra_core::Ring> ::core::default::Default for #ty<T> {
+        impl<T: __gam_engine::Ring> ::core::default::Default for #ty<T> {
             /// Zero.
             fn default() -> Self { Self::zero() }
         }
 
-        impl<T: ::algebra_core::Ring> ::core::convert::From<[T; #n]> for #ty<T> {
+        impl<T: __gam_engine::Ring> ::core::convert::From<[T; #n]> for #ty<T> {
             fn from(a: [T; #n]) -> Self { Self::from_array(a) }
         }
 
-        impl<T: ::algebra_core::Ring> ::core::convert::From<#ty<T>> for [T; #n] {
+        impl<T: __gam_engine::Ring> ::core::convert::From<#ty<T>> for [T; #n] {
             fn from(x: #ty<T>) -> Self { x.into_array() }
         }
 
-        impl<T: ::algebra_core::Ring> ::core::ops::Index<usize> for #ty<T> {
+        impl<T: __gam_engine::Ring> ::core::ops::Index<usize> for #ty<T> {
             type Output = T;
             /// The coefficient at position `i` of [`Self::ELEMENTS`]; panics if `i >= LEN`, like
             /// an array.
@@ -102,7 +102,7 @@ pub(super) fn type_items(names: &Names, i: usize) -> TokenStream {
             }
         }
 
-        impl<T: ::algebra_core::Ring> ::core::ops::IndexMut<usize> for #ty<T> {
+        impl<T: __gam_engine::Ring> ::core::ops::IndexMut<usize> for #ty<T> {
             fn index_mut(&mut self, i: usize) -> &mut T {
                 match i {
                     #(#idx => &mut self.#fields,)*
@@ -111,46 +111,46 @@ pub(super) fn type_items(names: &Names, i: usize) -> TokenStream {
             }
         }
 
-        impl<T: ::algebra_core::Ring> ::core::iter::IntoIterator for #ty<T> {
+        impl<T: __gam_engine::Ring> ::core::iter::IntoIterator for #ty<T> {
             type Item = T;
             type IntoIter = ::core::array::IntoIter<T, #n>;
             fn into_iter(self) -> Self::IntoIter { self.into_array().into_iter() }
         }
 
-        impl<'a, T: ::algebra_core::Ring> ::core::iter::IntoIterator for &'a #ty<T> {
+        impl<'a, T: __gam_engine::Ring> ::core::iter::IntoIterator for &'a #ty<T> {
             type Item = &'a T;
             type IntoIter = ::core::array::IntoIter<&'a T, #n>;
             fn into_iter(self) -> Self::IntoIter { self.iter() }
         }
 
-        impl<T: ::algebra_core::Ring> ::core::ops::Mul<T> for #ty<T> {
+        impl<T: __gam_engine::Ring> ::core::ops::Mul<T> for #ty<T> {
             type Output = Self;
             /// `x * s`: every coefficient multiplied by `s`.
             fn mul(self, s: T) -> Self { #ty { #(#fields: self.#fields * &s),* } }
         }
-        impl<T: ::algebra_core::Ring> ::core::ops::Mul<T> for &#ty<T> {
+        impl<T: __gam_engine::Ring> ::core::ops::Mul<T> for &#ty<T> {
             type Output = #ty<T>;
             fn mul(self, s: T) -> #ty<T> { self.scale(&s) }
         }
-        impl<T: ::algebra_core::Field> ::core::ops::Div<T> for #ty<T> {
+        impl<T: __gam_engine::Field> ::core::ops::Div<T> for #ty<T> {
             type Output = Self;
             /// `x / s`: every coefficient divided by `s`.
             fn div(self, s: T) -> Self { #ty { #(#fields: self.#fields.div_ref(&s)),* } }
         }
-        impl<T: ::algebra_core::Field> ::core::ops::Div<T> for &#ty<T> {
+        impl<T: __gam_engine::Field> ::core::ops::Div<T> for &#ty<T> {
             type Output = #ty<T>;
             fn div(self, s: T) -> #ty<T> { #ty { #(#fields: self.#fields.div_ref(&s)),* } }
         }
-        impl<T: ::algebra_core::Ring> ::core::ops::AddAssign for #ty<T> {
+        impl<T: __gam_engine::Ring> ::core::ops::AddAssign for #ty<T> {
             fn add_assign(&mut self, rhs: Self) { #(self.#fields.add_assign_ref(&rhs.#fields);)* }
         }
-        impl<T: ::algebra_core::Ring> ::core::ops::SubAssign for #ty<T> {
+        impl<T: __gam_engine::Ring> ::core::ops::SubAssign for #ty<T> {
             fn sub_assign(&mut self, rhs: Self) { #(self.#fields.sub_assign_ref(&rhs.#fields);)* }
         }
-        impl<T: ::algebra_core::Ring> ::core::ops::MulAssign<T> for #ty<T> {
+        impl<T: __gam_engine::Ring> ::core::ops::MulAssign<T> for #ty<T> {
             fn mul_assign(&mut self, s: T) { #(self.#fields = self.#fields.mul_ref(&s);)* }
         }
-        impl<T: ::algebra_core::Field> ::core::ops::DivAssign<T> for #ty<T> {
+        impl<T: __gam_engine::Field> ::core::ops::DivAssign<T> for #ty<T> {
             fn div_assign(&mut self, s: T) { #(self.#fields = self.#fields.div_ref(&s);)* }
         }
         #(#floats)*
@@ -167,13 +167,13 @@ pub(super) fn mixed_operators(names: &Names, k: &BinaryKernel) -> TokenStream {
         (ident(trait_name), ident(method), ident(op_trait), ident(op_method));
     let (lt, rt, ot) = (&names.types[k.lhs], &names.types[k.rhs], &names.types[k.out]);
     quote! {
-        impl<T: ::algebra_core::Ring> ::core::ops::#op_trait<&#rt<T>> for #lt<T> {
+        impl<T: __gam_engine::Ring> ::core::ops::#op_trait<&#rt<T>> for #lt<T> {
             type Output = #ot<T>;
-            fn #op_method(self, rhs: &#rt<T>) -> #ot<T> { ::algebra_core::ops::#trait_name::#method(&self, rhs) }
+            fn #op_method(self, rhs: &#rt<T>) -> #ot<T> { __gam_engine::ops::#trait_name::#method(&self, rhs) }
         }
-        impl<T: ::algebra_core::Ring> ::core::ops::#op_trait<#rt<T>> for &#lt<T> {
+        impl<T: __gam_engine::Ring> ::core::ops::#op_trait<#rt<T>> for &#lt<T> {
             type Output = #ot<T>;
-            fn #op_method(self, rhs: #rt<T>) -> #ot<T> { ::algebra_core::ops::#trait_name::#method(self, &rhs) }
+            fn #op_method(self, rhs: #rt<T>) -> #ot<T> { __gam_engine::ops::#trait_name::#method(self, &rhs) }
         }
     }
 }

@@ -43,7 +43,7 @@ pub(crate) fn action_items(names: &Names, k: &ActionKernel) -> TokenStream {
         )
     };
     quote! {
-        impl<T: ::algebra_core::Ring> ::algebra_core::ops::#trait_name<#xt<T>> for #vt<T> {
+        impl<T: __gam_engine::Ring> __gam_engine::ops::#trait_name<#xt<T>> for #vt<T> {
             type Output = #xt<T>;
             #[doc = #doc]
             #inline
@@ -132,14 +132,14 @@ fn unrolled_body(names: &Names, k: &ActionKernel) -> TokenStream {
 pub(crate) fn composed_items(names: &Names, v: usize, x: usize, out: (usize, usize)) -> TokenStream {
     let (vt, xt) = (&names.types[v], &names.types[x]);
     let (so, ao) = (&names.types[out.0], &names.types[out.1]);
-    let gp = quote!(::algebra_core::ops::GeometricProduct::gp);
+    let gp = quote!(__gam_engine::ops::GeometricProduct::gp);
     quote! {
-        impl<T: ::algebra_core::Ring> ::algebra_core::ops::Sandwich<#xt<T>> for #vt<T> {
+        impl<T: __gam_engine::Ring> __gam_engine::ops::Sandwich<#xt<T>> for #vt<T> {
             type Output = #so<T>;
             /// `rev(self) x self` as two full products (no fused kernel for this pair).
             fn sandwich(&self, x: &#xt<T>) -> #so<T> { #gp(&#gp(&self.reverse(), x), self) }
         }
-        impl<T: ::algebra_core::Ring> ::algebra_core::ops::Apply<#xt<T>> for #vt<T> {
+        impl<T: __gam_engine::Ring> __gam_engine::ops::Apply<#xt<T>> for #vt<T> {
             type Output = #ao<T>;
             /// `self x rev(self)` as two full products (no fused kernel for this pair).
             fn apply(&self, x: &#xt<T>) -> #ao<T> { #gp(&#gp(self, x), &self.reverse()) }

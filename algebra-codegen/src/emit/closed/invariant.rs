@@ -76,7 +76,7 @@ pub(crate) fn items(plan: &Plan, names: &Names, c: &ClosedForm, inv: &Invariant)
     let b_in_m: Vec<usize> = bm.iter().map(|x| mm.iter().position(|y| y == x).expect("B in M")).collect();
     let w_in_m: Vec<usize> = inv.quad.iter().map(|x| mm.iter().position(|y| y == x).expect("W in M")).collect();
     let scalar_idx = mm.iter().position(|x| *x == 0).expect("1 in M");
-    let cf = quote!(::algebra_core::closed_form);
+    let cf = quote!(__gam_engine::closed_form);
     let load_b = load(names, bi, &b_in_b, "b");
     let inv_b = invariants(inv, nb, "b")?;
     // exp: every field of M
@@ -113,11 +113,11 @@ pub(crate) fn items(plan: &Plan, names: &Names, c: &ClosedForm, inv: &Invariant)
             if names.signs[bi][k] < 0 { quote!(#f: -(#v)) } else { quote!(#f: #v) }
         })
         .collect();
-    let berr = quote!(::core::result::Result<#bt<T>, ::algebra_core::MvError>);
-    let err = quote!(::core::result::Result<Self, ::algebra_core::MvError>);
+    let berr = quote!(::core::result::Result<#bt<T>, __gam_engine::MvError>);
+    let err = quote!(::core::result::Result<Self, __gam_engine::MvError>);
     let (try_exp, sqrt_pow) = (try_exp_item(mt), sqrt_pow_items());
     let m_items = quote! {
-        impl<T: ::algebra_core::Real> #mt<T> {
+        impl<T: __gam_engine::Real> #mt<T> {
             /// `self / sqrt(self rev(self))` when `self rev(self)` is a positive scalar (up to
             /// rounding: every other part within `256 ε Σ coefficient²`), so the result is unit;
             /// elements far from unit scale are first rescaled by a power of two.
@@ -181,7 +181,7 @@ pub(crate) fn items(plan: &Plan, names: &Names, c: &ClosedForm, inv: &Invariant)
     Ok(quote! {
         #m_items
 
-        impl<T: ::algebra_core::Real> #bt<T> {
+        impl<T: __gam_engine::Real> #bt<T> {
             #[doc = #bdoc]
             pub fn exp(&self) -> #mt<T> {
                 #load_b

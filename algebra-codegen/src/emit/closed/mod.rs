@@ -117,11 +117,11 @@ fn items(plan: &Plan, names: &Names, c: &ClosedForm) -> Result<TokenStream, Code
         .map(|x| plan.spec.types[mi].elements.iter().position(|y| y == x).expect("B is inside M"))
         .collect();
     let ctx = Ctx { names, c, in_m };
-    let cf = quote!(::algebra_core::closed_form);
+    let cf = quote!(__gam_engine::closed_form);
     let mfields = &names.fields[mi];
     let scalar_field = &mfields[plan.spec.types[mi].elements.iter().position(|x| *x == 0).expect("1 in M")];
-    let err = quote!(::core::result::Result<Self, ::algebra_core::MvError>);
-    let berr = quote!(::core::result::Result<#bt<T>, ::algebra_core::MvError>);
+    let err = quote!(::core::result::Result<Self, __gam_engine::MvError>);
+    let berr = quote!(::core::result::Result<#bt<T>, __gam_engine::MvError>);
     // exp: the factors, then every field of M
     let (factors, i_index) = match &c.family {
         Family::Invariant(inv) => return invariant::items(plan, names, c, inv),
@@ -323,7 +323,7 @@ fn items(plan: &Plan, names: &Names, c: &ClosedForm) -> Result<TokenStream, Code
     );
     let (try_exp, sqrt_pow) = (try_exp_item(mt), sqrt_pow_items());
     Ok(quote! {
-        impl<T: ::algebra_core::Real> #bt<T> {
+        impl<T: __gam_engine::Real> #bt<T> {
             #[doc = #bdoc]
             pub fn exp(&self) -> #mt<T> {
                 #factors
@@ -334,7 +334,7 @@ fn items(plan: &Plan, names: &Names, c: &ClosedForm) -> Result<TokenStream, Code
             #try_exp
         }
 
-        impl<T: ::algebra_core::Real> #mt<T> {
+        impl<T: __gam_engine::Real> #mt<T> {
             /// `self / sqrt(self rev(self))`, the norm inverted in closed form: a unit element
             /// (`m rev(m) = 1`) when `self rev(self)` has no other part than the scalar (and the
             /// central nilpotent element, if any). Fails when the norm is not positive or a

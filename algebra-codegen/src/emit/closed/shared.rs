@@ -6,12 +6,12 @@ use quote::quote;
 
 /// `try_exp` on a bivector type whose `exp` returns `mt`: shared by every family.
 pub(crate) fn try_exp_item(mt: &proc_macro2::Ident) -> TokenStream {
-    let cf = quote!(::algebra_core::closed_form);
+    let cf = quote!(__gam_engine::closed_form);
     quote! {
         /// [`Self::exp`] after checking that every coefficient is finite:
         /// `MvError::Undefined` ("coefficients are not finite") otherwise, and "the result is
         /// not finite" when a finite bivector is too large for the scalar.
-        pub fn try_exp(&self) -> ::core::result::Result<#mt<T>, ::algebra_core::MvError> {
+        pub fn try_exp(&self) -> ::core::result::Result<#mt<T>, __gam_engine::MvError> {
             #cf::check_finite("exp", self, self.iter())?;
             let out = self.exp();
             #cf::check_finite("exp", self, out.iter()).map_err(|_| {
@@ -25,8 +25,8 @@ pub(crate) fn try_exp_item(mt: &proc_macro2::Ident) -> TokenStream {
 /// `sqrt` and `pow` on an even type with `log` and its bivector type's `exp`: shared by every
 /// family.
 pub(crate) fn sqrt_pow_items() -> TokenStream {
-    let cf = quote!(::algebra_core::closed_form);
-    let err = quote!(::core::result::Result<Self, ::algebra_core::MvError>);
+    let cf = quote!(__gam_engine::closed_form);
+    let err = quote!(::core::result::Result<Self, __gam_engine::MvError>);
     quote! {
         /// The square root of `normalize(self)`: `exp(log(self)/2)`.
         pub fn sqrt(&self) -> #err {
