@@ -44,6 +44,9 @@ struct State<'r> {
     sugar: Vec<u32>,
     active: Vec<bool>,
     pairs: Vec<Pair>,
+    /// `clean[i]`: element `i`'s tail has no term divisible by the leading monomial of an
+    /// element with index below `clean[i]` (it was reduced by all of them).
+    clean: Vec<usize>,
     /// Terms of the active polynomials together (the memory budget of the basis).
     terms: usize,
 }
@@ -116,11 +119,45 @@ impl State<'_> {
         out
     }
 
+    /// Tail-reduces the active elements with large coefficients (a word or more) whose tails
+    /// became reducible by elements added since their last reduction; leading monomials stay,
+    /// so the pairs and criteria are untouched. Run once per sugar degree: on cyclic-6 the
+    /// intermediate basis otherwise carries coefficients of ten thousand bits (the reduced
+    /// basis has fifty), and every later reduction pays for them.
+    fn reduce_tails(&mut self, meter: &mut Meter) -> Result<(), IdealError> {
+        let order = self.ring.order();
+        for i in 0..self.polys.len() {
+            if !self.active[i] || self.polys[i].coefs.iter().all(|c| c.significant_bits() <= 64) {
+                continue;
+            }
+            let since = std::mem::replace(&mut self.clean[i], self.polys.len());
+            let fresh: Vec<Reducer<'_>> =
+                (since..self.polys.len()).filter(|&j| self.active[j]).map(|j| Reducer::new(&self.polys[j])).collect();
+            let g = &self.polys[i];
+            let dirty = (1..g.len()).any(|t| {
+                let (m, mask) = (g.mono(t), order::mask(g.mono(t)));
+                fresh.iter().any(|d| d.mask & !mask == 0 && order::divides(d.poly.lm(), m))
+            });
+            if !dirty {
+                continue;
+            }
+            let others: Vec<Reducer<'_>> = (0..self.polys.len())
+                .filter(|&j| j != i && self.active[j])
+                .map(|j| Reducer::new(&self.polys[j]))
+                .collect();
+            let h = with_tail_reduced(g, &others, order, meter)?;
+            self.terms = self.terms + h.len() - g.len();
+            self.polys[i] = h;
+        }
+        Ok(())
+    }
+
     fn add(&mut self, mut h: DPoly, sugar: u32, meter: &Meter) -> Result<usize, IdealError> {
         h.make_primitive();
         meter.check_basis(self.active.iter().filter(|a| **a).count() + 1, self.terms + h.len())?;
         self.polys.push(h);
         self.sugar.push(sugar);
+        self.clean.push(self.polys.len());
         self.active.push(false);
         Ok(self.polys.len() - 1)
     }
@@ -136,8 +173,15 @@ impl PolyRing {
 
     pub(crate) fn groebner_metered(&self, generators: &[Poly], meter: &mut Meter) -> Result<GroebnerBasis, IdealError> {
         let order = self.order();
-        let mut st =
-            State { ring: self, polys: Vec::new(), sugar: Vec::new(), active: Vec::new(), pairs: Vec::new(), terms: 0 };
+        let mut st = State {
+            ring: self,
+            polys: Vec::new(),
+            sugar: Vec::new(),
+            active: Vec::new(),
+            pairs: Vec::new(),
+            clean: Vec::new(),
+            terms: 0,
+        };
         let mut input: Vec<DPoly> =
             generators.iter().map(|g| self.to_dense(g).map(|d| d.0)).collect::<Result<Vec<_>, _>>()?;
         input.retain(|p| !p.is_zero());
@@ -153,6 +197,7 @@ impl PolyRing {
                 st.update(k);
             }
         }
+        let mut degree = 0;
         while !st.pairs.is_empty() {
             meter.check_time()?;
             // Sugar strategy: least sugar, then least lcm.
@@ -162,6 +207,10 @@ impl PolyRing {
                     p.sugar.cmp(&q.sugar).then_with(|| order.cmp(&p.lcm, &q.lcm))
                 })
                 .expect("non-empty pair list");
+            if st.pairs[best].sugar > degree {
+                degree = st.pairs[best].sugar;
+                st.reduce_tails(meter)?;
+            }
             let pair = st.pairs.swap_remove(best);
             let s = st.spoly(&pair);
             let (r, _) = reduce(s, &st.reducers(), order, meter)?;
@@ -192,18 +241,28 @@ fn interreduce(mut gens: Vec<DPoly>, ring: &PolyRing, meter: &mut Meter) -> Resu
     for i in 0..gens.len() {
         let others: Vec<Reducer<'_>> =
             gens.iter().enumerate().filter(|(j, _)| *j != i).map(|(_, g)| Reducer::new(g)).collect();
-        // r ≡ s·tail with s = n/d, so d·s·g ≡ n·lc·lm + d·r.
-        let (r, s) = reduce(gens[i].tail(1), &others, ring.order(), meter)?;
-        let (n, d) = s.into_numer_denom();
-        let mut h = DPoly::zero(gens[i].w);
-        h.push(gens[i].lm(), n * gens[i].lc());
-        for k in 0..r.len() {
-            h.push(r.mono(k), Integer::from(&d * &r.coefs[k]));
-        }
-        h.make_primitive();
-        out.push(h);
+        out.push(with_tail_reduced(&gens[i], &others, ring.order(), meter)?);
     }
     Ok(out)
+}
+
+/// `g` with its tail fully reduced by `others` (which must not include `g`), primitive.
+fn with_tail_reduced(
+    g: &DPoly,
+    others: &[Reducer<'_>],
+    order: super::MonomialOrder,
+    meter: &mut Meter,
+) -> Result<DPoly, IdealError> {
+    // r ≡ s·tail with s = n/d, so d·s·g ≡ n·lc·lm + d·r.
+    let (r, s) = reduce(g.tail(1), others, order, meter)?;
+    let (n, d) = s.into_numer_denom();
+    let mut h = DPoly::zero(g.w);
+    h.push(g.lm(), n * g.lc());
+    for k in 0..r.len() {
+        h.push(r.mono(k), Integer::from(&d * &r.coefs[k]));
+    }
+    h.make_primitive();
+    Ok(h)
 }
 
 impl GroebnerBasis {
