@@ -1,5 +1,6 @@
 //! Division with remainder by a list of polynomials, and full reduction (normal forms).
 
+use super::bucket::GeoBucket;
 use super::order::{self, Mono};
 use super::{DPoly, IdealError, Meter, MonomialOrder, PolyRing};
 use crate::poly::Poly;
@@ -131,23 +132,50 @@ fn content(p: &DPoly, r: &DPoly) -> Integer {
     g
 }
 
+/// Work polynomials longer than this many terms continue in a [`GeoBucket`]. Below it one merge
+/// per step is as cheap or cheaper (measured on the suite of docs/performance.md, thresholds
+/// 0, 64, 128, 256 and never: the buckets' carries touch about as many terms as a merge of a
+/// short work polynomial and cost more per term; 128 still lost a quarter on katsura-6, whose
+/// works of 128-256 terms carry large coefficients; lemma 3.4's works grow past 256 and gain a
+/// third).
+pub(crate) const LONG_WORK: usize = 256;
+
 /// Full reduction of `f` by `divisors`, fraction-free: returns `(r, s)` with `r ≡ s·f` modulo
 /// the divisors (`s` a positive rational) and no term of `r` divisible by a leading monomial.
-/// Each step is `p := a·p - b·q·g` with `a = lc(g)/d`, `b = c/d`, `d = gcd(c, lc(g))`; the
-/// content of the work is divided out every 16 steps, so coefficients stay small.
+/// Each step is `p := a·p - b·q·g` with `a = lc(g)/d`, `b = c/d`, `d = gcd(c, lc(g))`, for
+/// the first divisor `g` whose leading monomial divides the leading term `c·m` of the work
+/// `p` (`q = m/LM(g)`). While the work is short this is one merge per step
+/// ([`combine`]); when it grows past [`LONG_WORK`] terms it continues in geobuckets
+/// ([`reduce_in_buckets`]). Either way the steps, and so `r/s`, are the same.
 pub(crate) fn reduce(
     f: DPoly,
     divisors: &[Reducer<'_>],
     order: MonomialOrder,
     meter: &mut Meter,
 ) -> Result<(DPoly, Rational), IdealError> {
+    reduce_switching_at(f, divisors, order, meter, LONG_WORK)
+}
+
+/// [`reduce`] with the switch to geobuckets at `long` terms (`0`: buckets from the start;
+/// `usize::MAX`: merges only).
+pub(crate) fn reduce_switching_at(
+    f: DPoly,
+    divisors: &[Reducer<'_>],
+    order: MonomialOrder,
+    meter: &mut Meter,
+    long: usize,
+) -> Result<(DPoly, Rational), IdealError> {
     let w = f.w;
     let mut p = f;
     let mut buf = DPoly::zero(w);
     let mut rem = DPoly::zero(w);
+    // rem + p[start..] ≡ scale·f.
     let mut scale = Rational::from(1);
     let mut start = 0;
     let mut steps = 0u32;
+    if p.len() > long {
+        return reduce_in_buckets(p, rem, scale, divisors, order, meter);
+    }
     while start < p.len() {
         meter.check(p.len() - start + rem.len())?;
         match find_divisor(divisors, p.mono(start)) {
@@ -179,6 +207,9 @@ pub(crate) fn reduce(
                         scale /= &g;
                     }
                 }
+                if p.len() > long {
+                    return reduce_in_buckets(p, rem, scale, divisors, order, meter);
+                }
             }
             None => {
                 let c = std::mem::take(&mut p.coefs[start]);
@@ -188,6 +219,85 @@ pub(crate) fn reduce(
         }
     }
     Ok((rem, scale))
+}
+
+/// The reduction continued from `rem + p ≡ scale·f` with the work `p` in a [`GeoBucket`]
+/// (Yan 1998). Each step takes the work's leading term `c·m`; when `LM(g)` divides `m` it sets
+/// `work := a·work - b·q·g[1..]` (the multiplier `a` is one multiplication per bucket, the
+/// multiple of `g` is added without touching the rest of the work), else it moves the term to
+/// the remainder. The factor `λ` with `λ·work` the exact remainder over Q is tracked apart
+/// (divided by every `a`, multiplied by the content the work sheds every 16 steps), and each
+/// remainder term remembers the `λ` it was taken under, so the remainder is never rescaled
+/// during the reduction.
+fn reduce_in_buckets(
+    p: DPoly,
+    mut rem: DPoly,
+    scale: Rational,
+    divisors: &[Reducer<'_>],
+    order: MonomialOrder,
+    meter: &mut Meter,
+) -> Result<(DPoly, Rational), IdealError> {
+    let w = p.w;
+    let mut work = GeoBucket::new(w, order);
+    work.add(p, Integer::from(1));
+    let mut lambda = Rational::from(scale.recip_ref());
+    // Remainder terms from `segs[k].0` on were taken under `λ = segs[k].1`.
+    let mut segs: Vec<(usize, Rational)> = vec![(0, lambda.clone())];
+    let mut changed = false;
+    let (mut mono, mut q) = (Vec::with_capacity(w), Vec::with_capacity(w));
+    let mut steps = 0u32;
+    while let Some(c) = work.pop_lead(&mut mono) {
+        meter.check(work.terms() + rem.len())?;
+        match find_divisor(divisors, &mono) {
+            Some(g) => {
+                let d = Integer::from(c.gcd_ref(g.lc()));
+                let (mut a, mut b) = (Integer::from(g.lc().div_exact_ref(&d)), Integer::from(c.div_exact_ref(&d)));
+                if a.is_negative() {
+                    a = -a;
+                    b = -b;
+                }
+                q.clear();
+                q.extend(mono.iter().zip(g.lm()).map(|(x, y)| x - y));
+                if a != 1 {
+                    work.scale(&a);
+                    lambda /= &a;
+                    changed = true;
+                }
+                work.add_shifted(&q, g, 1, -b);
+                work.give_back(c);
+                steps += 1;
+                if steps.is_multiple_of(16) {
+                    let content = work.remove_content();
+                    if content != 1 {
+                        lambda *= content;
+                        changed = true;
+                    }
+                }
+            }
+            None => {
+                if changed {
+                    segs.push((rem.len(), lambda.clone()));
+                    changed = false;
+                }
+                rem.push(&mono, c);
+            }
+        }
+    }
+    // r = D·Σ λ_k·(terms of segment k), D the lcm of the denominators of the λ_k: r ≡ D·f.
+    let mut den = Integer::from(1);
+    for (_, l) in &segs {
+        den.lcm_mut(l.denom());
+    }
+    for (k, (from, l)) in segs.iter().enumerate() {
+        let to = segs.get(k + 1).map_or(rem.len(), |s| s.0);
+        let factor = Integer::from(&den / l.denom()) * l.numer();
+        if factor != 1 {
+            for c in &mut rem.coefs[*from..to] {
+                *c *= &factor;
+            }
+        }
+    }
+    Ok((rem, Rational::from(den)))
 }
 
 /// A polynomial with rational coefficients for the textbook division (quotients are needed

@@ -20,6 +20,7 @@
 //! assert!(!g.contains(&y).unwrap());
 //! ```
 
+mod bucket;
 mod division;
 mod groebner;
 mod hypotheses;
