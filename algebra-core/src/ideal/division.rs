@@ -30,22 +30,37 @@ pub struct Division {
     pub remainder: Poly,
 }
 
-/// A divisor ready for reduction: its variable mask and the polynomial.
+/// A divisor ready for reduction: its variable mask, the polynomial and its sugar (Giovini et
+/// al. 1991; 0 where nobody asks).
 pub(crate) struct Reducer<'a> {
     pub(crate) mask: u64,
     pub(crate) poly: &'a DPoly,
+    pub(crate) sugar: u32,
 }
 
 impl<'a> Reducer<'a> {
     pub(crate) fn new(poly: &'a DPoly) -> Self {
-        Reducer { mask: order::mask(poly.lm()), poly }
+        Reducer::with_sugar(poly, 0)
+    }
+
+    pub(crate) fn with_sugar(poly: &'a DPoly, sugar: u32) -> Self {
+        Reducer { mask: order::mask(poly.lm()), poly, sugar }
     }
 }
 
-/// The first divisor whose leading monomial divides `m`.
-fn find_divisor<'a>(divisors: &[Reducer<'a>], m: &Mono) -> Option<&'a DPoly> {
+/// The first divisor whose leading monomial divides `m`, and its sugar.
+fn find_divisor<'a>(divisors: &[Reducer<'a>], m: &Mono) -> Option<(&'a DPoly, u32)> {
     let mask = order::mask(m);
-    divisors.iter().find(|d| d.mask & !mask == 0 && order::divides(d.poly.lm(), m)).map(|d| d.poly)
+    divisors.iter().find(|d| d.mask & !mask == 0 && order::divides(d.poly.lm(), m)).map(|d| (d.poly, d.sugar))
+}
+
+/// The result of a full reduction: `r ≡ s·f` with no term of `r` divisible by a leading
+/// monomial, and the largest sugar `deg(q) + sugar(g)` of the multiples `q·g` subtracted (the
+/// sugar of `r` is the larger of this and the sugar of `f`).
+pub(crate) struct Reduced {
+    pub(crate) r: DPoly,
+    pub(crate) s: Rational,
+    pub(crate) sugar: u32,
 }
 
 /// `out := a * p[from..] - b * q * g[1..]` for `(a, b) = ab`, terms by decreasing monomial
@@ -152,7 +167,7 @@ pub(crate) fn reduce(
     divisors: &[Reducer<'_>],
     order: MonomialOrder,
     meter: &mut Meter,
-) -> Result<(DPoly, Rational), IdealError> {
+) -> Result<Reduced, IdealError> {
     reduce_switching_at(f, divisors, order, meter, LONG_WORK)
 }
 
@@ -164,7 +179,7 @@ pub(crate) fn reduce_switching_at(
     order: MonomialOrder,
     meter: &mut Meter,
     long: usize,
-) -> Result<(DPoly, Rational), IdealError> {
+) -> Result<Reduced, IdealError> {
     let w = f.w;
     let mut p = f;
     let mut buf = DPoly::zero(w);
@@ -173,13 +188,14 @@ pub(crate) fn reduce_switching_at(
     let mut scale = Rational::from(1);
     let mut start = 0;
     let mut steps = 0u32;
+    let mut sugar = 0;
     if p.len() > long {
-        return reduce_in_buckets(p, rem, scale, divisors, order, meter);
+        return reduce_in_buckets(p, rem, scale, sugar, divisors, order, meter);
     }
     while start < p.len() {
         meter.check(p.len() - start + rem.len())?;
         match find_divisor(divisors, p.mono(start)) {
-            Some(g) => {
+            Some((g, g_sugar)) => {
                 let c = &p.coefs[start];
                 let d = Integer::from(c.gcd_ref(g.lc()));
                 let (mut a, mut b) = (Integer::from(g.lc().div_exact_ref(&d)), Integer::from(c.div_exact_ref(&d)));
@@ -188,6 +204,7 @@ pub(crate) fn reduce_switching_at(
                     b = -b;
                 }
                 let q = order::quotient(g.lm(), p.mono(start));
+                sugar = sugar.max(q[0] + g_sugar);
                 combine(&mut p, start + 1, (&a, &b), &q, g, order, &mut buf);
                 std::mem::swap(&mut p, &mut buf);
                 if a != 1 {
@@ -208,7 +225,7 @@ pub(crate) fn reduce_switching_at(
                     }
                 }
                 if p.len() > long {
-                    return reduce_in_buckets(p, rem, scale, divisors, order, meter);
+                    return reduce_in_buckets(p, rem, scale, sugar, divisors, order, meter);
                 }
             }
             None => {
@@ -218,7 +235,7 @@ pub(crate) fn reduce_switching_at(
             }
         }
     }
-    Ok((rem, scale))
+    Ok(Reduced { r: rem, s: scale, sugar })
 }
 
 /// The reduction continued from `rem + p ≡ scale·f` with the work `p` in a [`GeoBucket`]
@@ -233,10 +250,11 @@ fn reduce_in_buckets(
     p: DPoly,
     mut rem: DPoly,
     scale: Rational,
+    mut sugar: u32,
     divisors: &[Reducer<'_>],
     order: MonomialOrder,
     meter: &mut Meter,
-) -> Result<(DPoly, Rational), IdealError> {
+) -> Result<Reduced, IdealError> {
     let w = p.w;
     let mut work = GeoBucket::new(w, order);
     work.add(p, Integer::from(1));
@@ -249,7 +267,7 @@ fn reduce_in_buckets(
     while let Some(c) = work.pop_lead(&mut mono) {
         meter.check(work.terms() + rem.len())?;
         match find_divisor(divisors, &mono) {
-            Some(g) => {
+            Some((g, g_sugar)) => {
                 let d = Integer::from(c.gcd_ref(g.lc()));
                 let (mut a, mut b) = (Integer::from(g.lc().div_exact_ref(&d)), Integer::from(c.div_exact_ref(&d)));
                 if a.is_negative() {
@@ -258,6 +276,7 @@ fn reduce_in_buckets(
                 }
                 q.clear();
                 q.extend(mono.iter().zip(g.lm()).map(|(x, y)| x - y));
+                sugar = sugar.max(q[0] + g_sugar);
                 if a != 1 {
                     work.scale(&a);
                     lambda /= &a;
@@ -297,7 +316,7 @@ fn reduce_in_buckets(
             }
         }
     }
-    Ok((rem, Rational::from(den)))
+    Ok(Reduced { r: rem, s: Rational::from(den), sugar })
 }
 
 /// A polynomial with rational coefficients for the textbook division (quotients are needed

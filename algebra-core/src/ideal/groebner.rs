@@ -53,7 +53,10 @@ struct State<'r> {
 
 impl State<'_> {
     fn reducers(&self) -> Vec<Reducer<'_>> {
-        self.polys.iter().zip(&self.active).filter(|(_, a)| **a).map(|(p, _)| Reducer::new(p)).collect()
+        (0..self.polys.len())
+            .filter(|&i| self.active[i])
+            .map(|i| Reducer::with_sugar(&self.polys[i], self.sugar[i]))
+            .collect()
     }
 
     /// Gebauer–Möller update: installs `h` (index k) into the basis and the pair list.
@@ -119,15 +122,16 @@ impl State<'_> {
         out
     }
 
-    /// Tail-reduces the active elements with large coefficients (a word or more) whose tails
-    /// became reducible by elements added since their last reduction; leading monomials stay,
-    /// so the pairs and criteria are untouched. Run once per sugar degree: on cyclic-6 the
-    /// intermediate basis otherwise carries coefficients of ten thousand bits (the reduced
-    /// basis has fifty), and every later reduction pays for them.
+    /// Tail-reduces the active elements whose tails became reducible by elements added since
+    /// their last reduction; leading monomials stay, so the pairs and criteria are untouched (a
+    /// standard representation of an S-polynomial in the old elements is one in the new). Run
+    /// once per sugar degree: on cyclic-6 the intermediate basis otherwise carries coefficients
+    /// of ten thousand bits (the reduced basis has fifty), and every later reduction pays for
+    /// them; the shorter tails pay on the other ideals of the suite too.
     fn reduce_tails(&mut self, meter: &mut Meter) -> Result<(), IdealError> {
         let order = self.ring.order();
         for i in 0..self.polys.len() {
-            if !self.active[i] || self.polys[i].coefs.iter().all(|c| c.significant_bits() <= 64) {
+            if !self.active[i] {
                 continue;
             }
             let since = std::mem::replace(&mut self.clean[i], self.polys.len());
@@ -187,13 +191,14 @@ impl PolyRing {
         input.retain(|p| !p.is_zero());
         input.sort_by(|a, b| order.cmp(a.lm(), b.lm()));
         for g in input {
-            let (r, _) = reduce(g, &st.reducers(), order, meter)?;
+            let sugar = (0..g.len()).map(|i| g.mono(i)[0]).max().unwrap_or(0);
+            let red = reduce(g, &st.reducers(), order, meter)?;
+            let r = red.r;
             if !r.is_zero() {
                 if r.lm()[0] == 0 {
                     return Ok(GroebnerBasis { ring: self.clone(), basis: vec![unit(self)] });
                 }
-                let s = (0..r.len()).map(|i| r.mono(i)[0]).max().unwrap_or(0);
-                let k = st.add(r, s, meter)?;
+                let k = st.add(r, sugar.max(red.sugar), meter)?;
                 st.update(k);
             }
         }
@@ -213,12 +218,13 @@ impl PolyRing {
             }
             let pair = st.pairs.swap_remove(best);
             let s = st.spoly(&pair);
-            let (r, _) = reduce(s, &st.reducers(), order, meter)?;
+            let red = reduce(s, &st.reducers(), order, meter)?;
+            let r = red.r;
             if !r.is_zero() {
                 if r.lm()[0] == 0 {
                     return Ok(GroebnerBasis { ring: self.clone(), basis: vec![unit(self)] });
                 }
-                let k = st.add(r, pair.sugar, meter)?;
+                let k = st.add(r, pair.sugar.max(red.sugar), meter)?;
                 st.update(k);
             }
         }
@@ -254,7 +260,7 @@ fn with_tail_reduced(
     meter: &mut Meter,
 ) -> Result<DPoly, IdealError> {
     // r ≡ s·tail with s = n/d, so d·s·g ≡ n·lc·lm + d·r.
-    let (r, s) = reduce(g.tail(1), others, order, meter)?;
+    let super::division::Reduced { r, s, .. } = reduce(g.tail(1), others, order, meter)?;
     let (n, d) = s.into_numer_denom();
     let mut h = DPoly::zero(g.w);
     h.push(g.lm(), n * g.lc());
@@ -315,7 +321,7 @@ impl GroebnerBasis {
     pub(crate) fn normal_form_metered(&self, f: &Poly, meter: &mut Meter) -> Result<Poly, IdealError> {
         let (f, den) = self.ring.to_dense(f)?;
         let reducers: Vec<Reducer<'_>> = self.basis.iter().map(Reducer::new).collect();
-        let (r, s) = reduce(f, &reducers, self.ring.order(), meter)?;
+        let super::division::Reduced { r, s, .. } = reduce(f, &reducers, self.ring.order(), meter)?;
         Ok(self.ring.to_poly(&r, &(s * den)))
     }
 

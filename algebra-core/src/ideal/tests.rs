@@ -115,7 +115,8 @@ proptest! {
         let reducers: Vec<division::Reducer<'_>> = ds.iter().map(division::Reducer::new).collect();
         let run = |long: usize| {
             let mut meter = Meter::new(&Budget::default());
-            let (r, s) = division::reduce_switching_at(fd.clone(), &reducers, order, &mut meter, long).unwrap();
+            let division::Reduced { r, s, .. } =
+                division::reduce_switching_at(fd.clone(), &reducers, order, &mut meter, long).unwrap();
             ring.to_poly(&r, &(s * Rational::from(&fden)))
         };
         let merged = run(usize::MAX);
@@ -146,7 +147,7 @@ fn long_reductions_shed_content_and_track_the_scale_exactly() {
         let reducers = [division::Reducer::new(&gd)];
         for long in [0, 3, usize::MAX] {
             let mut meter = Meter::new(&Budget::default());
-            let (r, s) =
+            let division::Reduced { r, s, .. } =
                 division::reduce_switching_at(fd.clone(), &reducers, MonomialOrder::GrevLex, &mut meter, long).unwrap();
             assert_eq!(ring.to_poly(&r, &(s * Rational::from(&fden))), expected, "switch at {long}, g = {g}");
         }
