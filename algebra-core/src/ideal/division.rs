@@ -4,7 +4,7 @@ use super::bucket::GeoBucket;
 use super::order::{self, Mono};
 use super::{DPoly, IdealError, Meter, MonomialOrder, PolyRing};
 use crate::poly::Poly;
-use rug::{Integer, Rational};
+use rug::{Assign, Integer, Rational};
 use std::cmp::Ordering;
 
 /// The result of dividing `f` by `[g_1, ..., g_s]`: `f = sum q_i g_i + r`, where no term of `r`
@@ -63,34 +63,46 @@ pub(crate) struct Reduced {
     pub(crate) sugar: u32,
 }
 
-/// `out := a * p[from..] - b * q * g[1..]` for `(a, b) = ab`, terms by decreasing monomial
+/// `out := a * p[from..] - b * q * g[1..]`, terms by decreasing monomial
 /// (`p`'s coefficients from `from` on are moved out). Both operands are sorted and a monomial
-/// order is compatible with multiplication, so this is one merge.
+/// order is compatible with multiplication, so this is one merge. New coefficients take their
+/// limbs from `pool`, and the integers `out` held before, and those cancelled, go back to it
+/// (GMP allocates for every non-zero value; the pool saves an allocation and a free per term).
 pub(crate) fn combine(
     p: &mut DPoly,
     from: usize,
     (a, b): (&Integer, &Integer),
-    q: &Mono,
-    g: &DPoly,
+    (q, g): (&Mono, &DPoly),
     order: MonomialOrder,
     out: &mut DPoly,
+    pool: &mut Vec<Integer>,
 ) {
     out.exps.clear();
+    if pool.len() < 4096 {
+        pool.extend(out.coefs.drain(..).filter(|c| *c != 0));
+    }
     out.coefs.clear();
+    out.exps.reserve((p.len() - from + g.len()) * p.w);
+    out.coefs.reserve(p.len() - from + g.len());
     let scale = *a != 1;
     let mut lifted: Vec<u32> = Vec::with_capacity(q.len());
     let (mut i, mut j) = (from, 1);
     if j < g.len() {
         order::mul_into(&mut lifted, q, g.mono(j));
     }
+    let take_p = |p: &mut DPoly, i: usize| {
+        let mut c = std::mem::take(&mut p.coefs[i]);
+        if scale {
+            c *= a;
+        }
+        c
+    };
+    let minus_bg = |pool: &mut Vec<Integer>, j: usize| {
+        let mut c = pool.pop().unwrap_or_default();
+        c.assign(b * &g.coefs[j]);
+        -c
+    };
     loop {
-        let take_p = |p: &mut DPoly, i: usize| {
-            let mut c = std::mem::take(&mut p.coefs[i]);
-            if scale {
-                c *= a;
-            }
-            c
-        };
         match (i < p.len(), j < g.len()) {
             (true, true) => match order.cmp(p.mono(i), &lifted) {
                 Ordering::Greater => {
@@ -99,7 +111,7 @@ pub(crate) fn combine(
                     i += 1;
                 }
                 Ordering::Less => {
-                    out.push(&lifted, -Integer::from(b * &g.coefs[j]));
+                    out.push(&lifted, minus_bg(pool, j));
                     j += 1;
                     if j < g.len() {
                         order::mul_into(&mut lifted, q, g.mono(j));
@@ -107,9 +119,11 @@ pub(crate) fn combine(
                 }
                 Ordering::Equal => {
                     let mut c = take_p(p, i);
-                    c -= Integer::from(b * &g.coefs[j]);
+                    c -= b * &g.coefs[j];
                     if c != 0 {
                         out.push(&lifted, c);
+                    } else {
+                        pool.push(c);
                     }
                     i += 1;
                     j += 1;
@@ -124,7 +138,7 @@ pub(crate) fn combine(
                 i += 1;
             }
             (false, true) => {
-                out.push(&lifted, -Integer::from(b * &g.coefs[j]));
+                out.push(&lifted, minus_bg(pool, j));
                 j += 1;
                 if j < g.len() {
                     order::mul_into(&mut lifted, q, g.mono(j));
@@ -133,6 +147,66 @@ pub(crate) fn combine(
             (false, false) => break,
         }
     }
+}
+
+/// `a·mf·f[1..] - b·mg·g[1..]`, terms by decreasing monomial: the S-polynomial of `f` and `g`
+/// when `a·lc(f) = b·lc(g)` and `mf·LM(f) = mg·LM(g)` (the leading terms cancel). One merge
+/// of the two lifted tails, computed on the fly (neither operand is copied).
+pub(crate) fn s_poly(
+    (a, mf, f): (&Integer, &Mono, &DPoly),
+    (b, mg, g): (&Integer, &Mono, &DPoly),
+    order: MonomialOrder,
+) -> DPoly {
+    let mut out = DPoly::zero(f.w);
+    out.exps.reserve((f.len() + g.len()) * f.w);
+    out.coefs.reserve(f.len() + g.len());
+    let (mut lf, mut lg) = (Vec::with_capacity(f.w), Vec::with_capacity(f.w));
+    let (mut i, mut j) = (1, 1);
+    if i < f.len() {
+        order::mul_into(&mut lf, mf, f.mono(i));
+    }
+    if j < g.len() {
+        order::mul_into(&mut lg, mg, g.mono(j));
+    }
+    while i < f.len() || j < g.len() {
+        let ord = match (i < f.len(), j < g.len()) {
+            (true, true) => order.cmp(&lf, &lg),
+            (true, false) => Ordering::Greater,
+            _ => Ordering::Less,
+        };
+        match ord {
+            Ordering::Greater => {
+                out.push(&lf, Integer::from(a * &f.coefs[i]));
+                i += 1;
+                if i < f.len() {
+                    order::mul_into(&mut lf, mf, f.mono(i));
+                }
+            }
+            Ordering::Less => {
+                out.push(&lg, -Integer::from(b * &g.coefs[j]));
+                j += 1;
+                if j < g.len() {
+                    order::mul_into(&mut lg, mg, g.mono(j));
+                }
+            }
+            Ordering::Equal => {
+                let mut c = Integer::from(a * &f.coefs[i]);
+                c -= b * &g.coefs[j];
+                if c != 0 {
+                    out.push(&lf, c);
+                }
+                i += 1;
+                j += 1;
+                if i < f.len() {
+                    order::mul_into(&mut lf, mf, f.mono(i));
+                }
+                if j < g.len() {
+                    order::mul_into(&mut lg, mg, g.mono(j));
+                }
+            }
+        }
+    }
+    out
 }
 
 /// The gcd of the coefficients of `p` and `r` (0 when both are zero).
@@ -189,6 +263,7 @@ pub(crate) fn reduce_switching_at(
     let mut start = 0;
     let mut steps = 0u32;
     let mut sugar = 0;
+    let mut pool: Vec<Integer> = Vec::new();
     if p.len() > long {
         return reduce_in_buckets(p, rem, scale, sugar, divisors, order, meter);
     }
@@ -205,7 +280,7 @@ pub(crate) fn reduce_switching_at(
                 }
                 let q = order::quotient(g.lm(), p.mono(start));
                 sugar = sugar.max(q[0] + g_sugar);
-                combine(&mut p, start + 1, (&a, &b), &q, g, order, &mut buf);
+                combine(&mut p, start + 1, (&a, &b), (&q, g), order, &mut buf, &mut pool);
                 std::mem::swap(&mut p, &mut buf);
                 if a != 1 {
                     for c in &mut rem.coefs {

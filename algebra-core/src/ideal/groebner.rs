@@ -3,7 +3,7 @@
 //! fraction-free (primitive integer polynomials, S-polynomials and reductions by integer
 //! multiples, content removed) on flat exponent vectors.
 
-use super::division::{Reducer, combine, reduce};
+use super::division::{Reducer, reduce, s_poly};
 use super::order;
 use super::{Budget, DPoly, IdealError, Meter, PolyRing};
 use crate::poly::Poly;
@@ -84,8 +84,8 @@ impl State<'_> {
         let polys = &self.polys;
         self.pairs.retain(|p| {
             !(order::divides(&lh, &p.lcm)
-                && order::lcm(polys[p.i].lm(), &lh) != p.lcm
-                && order::lcm(polys[p.j].lm(), &lh) != p.lcm)
+                && !order::lcm_is(polys[p.i].lm(), &lh, &p.lcm)
+                && !order::lcm_is(polys[p.j].lm(), &lh, &p.lcm))
         });
         // Product criterion: coprime leading monomials need no pair.
         for (i, lcm, coprime) in kept {
@@ -111,15 +111,7 @@ impl State<'_> {
         let (mf, mg) = (order::quotient(f.lm(), &p.lcm), order::quotient(g.lm(), &p.lcm));
         let d = Integer::from(f.lc().gcd_ref(g.lc()));
         let (a, b) = (Integer::from(g.lc().div_exact_ref(&d)), Integer::from(f.lc().div_exact_ref(&d)));
-        let mut lifted = DPoly { w: f.w, exps: Vec::with_capacity(f.exps.len()), coefs: f.coefs.clone() };
-        let mut m = Vec::new();
-        for i in 0..f.len() {
-            order::mul_into(&mut m, &mf, f.mono(i));
-            lifted.exps.extend_from_slice(&m);
-        }
-        let mut out = DPoly::zero(f.w);
-        combine(&mut lifted, 1, (&a, &b), &mg, g, self.ring.order(), &mut out);
-        out
+        s_poly((&a, &mf, f), (&b, &mg, g), self.ring.order())
     }
 
     /// Tail-reduces the active elements whose tails became reducible by elements added since
