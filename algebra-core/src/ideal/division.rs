@@ -340,7 +340,8 @@ fn reduce_in_buckets(
     let (mut mono, mut q) = (Vec::with_capacity(w), Vec::with_capacity(w));
     let mut steps = 0u32;
     while let Some(c) = work.pop_lead(&mut mono) {
-        meter.check(work.terms() + rem.len())?;
+        // The work held, its leading term included (as the merges count it), and the remainder.
+        meter.check(work.terms() + 1 + rem.len())?;
         match find_divisor(divisors, &mono) {
             Some((g, g_sugar)) => {
                 let d = Integer::from(c.gcd_ref(g.lc()));

@@ -51,8 +51,9 @@ pub struct Budget {
     pub time: Option<Duration>,
     /// Largest number of polynomials the basis may hold while it is computed.
     pub max_basis: usize,
-    /// Largest number of terms of any intermediate polynomial; the basis together may hold 20
-    /// times as many (the memory of the computation).
+    /// Largest number of terms of any intermediate polynomial (a reduction counts its work and
+    /// its remainder; in geobuckets, the terms the buckets hold, like terms in different buckets
+    /// apart); the basis together may hold 20 times as many (the memory of the computation).
     pub max_terms: usize,
 }
 

@@ -153,3 +153,24 @@ fn long_reductions_shed_content_and_track_the_scale_exactly() {
         }
     }
 }
+
+/// The term budget stops a reduction in either representation with the documented error: the
+/// work of `6·x^40 + 6y` modulo `3x - 2` holds two terms and its remainder grows to two, so a
+/// budget of one term is exceeded at once, whether the work is merged or in geobuckets.
+#[test]
+fn term_budget_stops_merged_and_bucketed_reductions() {
+    let (x, y) = (Poly::var("x"), Poly::var("y"));
+    let ring = PolyRing::new(["x", "y"], MonomialOrder::GrevLex);
+    let f = Poly::from_i64(6) * x.pow_u32(40) + Poly::from_i64(6) * y;
+    let g = Poly::from_i64(3) * x - Poly::from_i64(2);
+    let (fd, gd) = (ring.to_dense(&f).unwrap().0, ring.to_dense(&g).unwrap().0);
+    let reducers = [division::Reducer::new(&gd)];
+    let tiny = Budget { max_terms: 1, ..Budget::default() };
+    for long in [0, usize::MAX] {
+        let mut meter = Meter::new(&tiny);
+        match division::reduce_switching_at(fd.clone(), &reducers, MonomialOrder::GrevLex, &mut meter, long) {
+            Err(IdealError::Undecided { limit: Limit::Terms, .. }) => {}
+            other => panic!("switch at {long}: expected the term limit, got {:?}", other.map(|r| r.r)),
+        }
+    }
+}
