@@ -1,5 +1,5 @@
 //! Geobuckets (Yan 1998, "The geobucket data structure for polynomials", J. Symbolic Comput.
-//! 26(3)): the work polynomial of a reduction kept as a sum of sorted polynomials of
+//! 25(3)): the work polynomial of a reduction kept as a sum of sorted polynomials of
 //! geometrically growing lengths, so that subtracting a multiple `b·q·g` of a short divisor from a
 //! long work polynomial costs about `|g| log |work|` instead of a pass over the whole work.
 //!

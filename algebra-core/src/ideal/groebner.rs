@@ -1,7 +1,8 @@
 //! Buchberger's algorithm with Gebauer–Möller's installation of the product and chain
-//! criteria, the sugar selection strategy, and the final reduction to the unique reduced basis;
-//! fraction-free (primitive integer polynomials, S-polynomials and reductions by integer
-//! multiples, content removed) on flat exponent vectors.
+//! criteria, the sugar selection strategy, the basis tail-reduced once per sugar degree, and the
+//! final reduction to the unique reduced basis; fraction-free (primitive integer polynomials,
+//! S-polynomials and reductions by integer multiples, content removed) on flat exponent
+//! vectors.
 
 use super::division::{Reducer, reduce, s_poly};
 use super::order;

@@ -1,8 +1,9 @@
 //! Polynomial ideals over the rationals for [`Poly`]: monomial orders, division with remainder
 //! by a list, reduced Gröbner bases (Buchberger with the Gebauer–Möller criteria and the sugar
-//! selection strategy, fraction-free over the integers on flat exponent vectors; see
-//! docs/verification.md), normal forms, ideal membership, non-vanishing hypotheses by the
-//! Rabinowitsch trick, and elimination of variables.
+//! selection strategy, the basis kept tail-reduced per sugar degree, fraction-free over the
+//! integers on flat exponent vectors, long reductions in geobuckets; see docs/verification.md),
+//! normal forms, ideal membership, non-vanishing hypotheses by the Rabinowitsch trick, and
+//! elimination of variables.
 //!
 //! Every computation runs under a [`Budget`] (time, basis size, terms per polynomial); when the
 //! budget runs out the result is [`IdealError::Undecided`], never a hang.
