@@ -4,6 +4,7 @@ use super::bucket::GeoBucket;
 use super::order::{self, Mono};
 use super::{DPoly, IdealError, Meter, MonomialOrder, PolyRing};
 use crate::poly::Poly;
+use rug::ops::NegAssign;
 use rug::{Assign, Integer, Rational};
 use std::cmp::Ordering;
 
@@ -63,11 +64,14 @@ pub(crate) struct Reduced {
     pub(crate) sugar: u32,
 }
 
-/// `out := a * p[from..] - b * q * g[1..]`, terms by decreasing monomial
-/// (`p`'s coefficients from `from` on are moved out). Both operands are sorted and a monomial
-/// order is compatible with multiplication, so this is one merge. New coefficients take their
-/// limbs from `pool`, and the integers `out` held before, and those cancelled, go back to it
-/// (GMP allocates for every non-zero value; the pool saves an allocation and a free per term).
+/// `out := a * p[from..] - b * q * g[1..]`, terms by decreasing monomial. Both operands are
+/// sorted and a monomial order is compatible with multiplication, so this is one merge.
+///
+/// No GMP integer is allocated or freed in the steady state: a coefficient of `p` is swapped
+/// into `out`'s slot (leaving `out`'s old integer, limbs and all, in `p`, whose slots from
+/// `from` on are dead), and a new coefficient `-b·c` is computed into the slot's limbs. The
+/// reduction alternates `p` and `out` as its two buffers, so every slot is reused at the next
+/// step; surplus slots of `out` go to `spare`, from which a longer `out` takes them.
 pub(crate) fn combine(
     p: &mut DPoly,
     from: usize,
@@ -75,77 +79,76 @@ pub(crate) fn combine(
     (q, g): (&Mono, &DPoly),
     order: MonomialOrder,
     out: &mut DPoly,
-    pool: &mut Vec<Integer>,
+    spare: &mut Vec<Integer>,
 ) {
     out.exps.clear();
-    if pool.len() < 4096 {
-        pool.extend(out.coefs.drain(..).filter(|c| *c != 0));
-    }
-    out.coefs.clear();
     out.exps.reserve((p.len() - from + g.len()) * p.w);
-    out.coefs.reserve(p.len() - from + g.len());
     let scale = *a != 1;
     let mut lifted: Vec<u32> = Vec::with_capacity(q.len());
     let (mut i, mut j) = (from, 1);
     if j < g.len() {
         order::mul_into(&mut lifted, q, g.mono(j));
     }
-    let take_p = |p: &mut DPoly, i: usize| {
-        let mut c = std::mem::take(&mut p.coefs[i]);
-        if scale {
-            c *= a;
+    // The slot for the `k`-th output term, reused when there is one.
+    let mut k = 0;
+    fn slot<'o>(out: &'o mut DPoly, spare: &mut Vec<Integer>, k: usize) -> &'o mut Integer {
+        if k == out.coefs.len() {
+            out.coefs.push(spare.pop().unwrap_or_default());
         }
-        c
-    };
-    let minus_bg = |pool: &mut Vec<Integer>, j: usize| {
-        let mut c = pool.pop().unwrap_or_default();
-        c.assign(b * &g.coefs[j]);
-        -c
-    };
+        &mut out.coefs[k]
+    }
     loop {
-        match (i < p.len(), j < g.len()) {
-            (true, true) => match order.cmp(p.mono(i), &lifted) {
-                Ordering::Greater => {
-                    let c = take_p(p, i);
-                    out.push(p.mono(i), c);
-                    i += 1;
+        let ord = match (i < p.len(), j < g.len()) {
+            (true, true) => order.cmp(p.mono(i), &lifted),
+            (true, false) => Ordering::Greater,
+            (false, true) => Ordering::Less,
+            (false, false) => break,
+        };
+        match ord {
+            Ordering::Greater => {
+                let c = slot(out, spare, k);
+                std::mem::swap(c, &mut p.coefs[i]);
+                if scale {
+                    *c *= a;
                 }
-                Ordering::Less => {
-                    out.push(&lifted, minus_bg(pool, j));
-                    j += 1;
-                    if j < g.len() {
-                        order::mul_into(&mut lifted, q, g.mono(j));
-                    }
-                }
-                Ordering::Equal => {
-                    let mut c = take_p(p, i);
-                    c -= b * &g.coefs[j];
-                    if c != 0 {
-                        out.push(&lifted, c);
-                    } else {
-                        pool.push(c);
-                    }
-                    i += 1;
-                    j += 1;
-                    if j < g.len() {
-                        order::mul_into(&mut lifted, q, g.mono(j));
-                    }
-                }
-            },
-            (true, false) => {
-                let c = take_p(p, i);
-                out.push(p.mono(i), c);
+                out.exps.extend_from_slice(p.mono(i));
+                k += 1;
                 i += 1;
             }
-            (false, true) => {
-                out.push(&lifted, minus_bg(pool, j));
+            Ordering::Less => {
+                let c = slot(out, spare, k);
+                c.assign(b * &g.coefs[j]);
+                c.neg_assign();
+                out.exps.extend_from_slice(&lifted);
+                k += 1;
                 j += 1;
                 if j < g.len() {
                     order::mul_into(&mut lifted, q, g.mono(j));
                 }
             }
-            (false, false) => break,
+            Ordering::Equal => {
+                let c = slot(out, spare, k);
+                std::mem::swap(c, &mut p.coefs[i]);
+                if scale {
+                    *c *= a;
+                }
+                *c -= b * &g.coefs[j];
+                if *c != 0 {
+                    out.exps.extend_from_slice(&lifted);
+                    k += 1;
+                }
+                i += 1;
+                j += 1;
+                if j < g.len() {
+                    order::mul_into(&mut lifted, q, g.mono(j));
+                }
+            }
         }
+    }
+    if spare.len() < 4096 {
+        spare.extend(out.coefs.drain(k..));
+    } else {
+        out.coefs.truncate(k);
     }
 }
 
@@ -263,7 +266,7 @@ pub(crate) fn reduce_switching_at(
     let mut start = 0;
     let mut steps = 0u32;
     let mut sugar = 0;
-    let mut pool: Vec<Integer> = Vec::new();
+    let mut spare: Vec<Integer> = Vec::new();
     if p.len() > long {
         return reduce_in_buckets(p, rem, scale, sugar, divisors, order, meter);
     }
@@ -280,7 +283,7 @@ pub(crate) fn reduce_switching_at(
                 }
                 let q = order::quotient(g.lm(), p.mono(start));
                 sugar = sugar.max(q[0] + g_sugar);
-                combine(&mut p, start + 1, (&a, &b), (&q, g), order, &mut buf, &mut pool);
+                combine(&mut p, start + 1, (&a, &b), (&q, g), order, &mut buf, &mut spare);
                 std::mem::swap(&mut p, &mut buf);
                 if a != 1 {
                     for c in &mut rem.coefs {
