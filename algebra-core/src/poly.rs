@@ -30,7 +30,7 @@ fn interner() -> &'static RwLock<Interner> {
     I.get_or_init(Default::default)
 }
 
-fn intern(name: &str) -> u32 {
+pub(crate) fn intern(name: &str) -> u32 {
     if let Some(&id) = interner().read().expect("interner lock").ids.get(name) {
         return id;
     }
@@ -44,7 +44,7 @@ fn intern(name: &str) -> u32 {
     id
 }
 
-fn var_name(id: u32) -> String {
+pub(crate) fn var_name(id: u32) -> String {
     interner().read().expect("interner lock").names[id as usize].clone()
 }
 
@@ -335,6 +335,23 @@ impl Poly {
             return Err(TermBudget { estimate, budget: max_terms });
         }
         Ok(self.product(rhs))
+    }
+
+    /// The terms as `([(variable id, exponent)] sorted by id, coefficient)`, ids from
+    /// [`intern`]: the ideal module's conversions, without a name per factor.
+    pub(crate) fn id_terms(&self) -> impl Iterator<Item = (&[(u32, u32)], &Rational)> {
+        self.terms.iter().map(|(m, c)| (m.as_slice(), c))
+    }
+
+    /// The inverse of [`Poly::id_terms`] (like terms are added, zero coefficients dropped;
+    /// each monomial sorted by id with positive exponents).
+    pub(crate) fn from_id_terms(terms: impl IntoIterator<Item = (Vec<(u32, u32)>, Rational)>) -> Self {
+        let mut out = Poly::default();
+        for (m, c) in terms {
+            debug_assert!(m.windows(2).all(|w| w[0].0 < w[1].0) && m.iter().all(|f| f.1 > 0));
+            out.add_term(m, c);
+        }
+        out
     }
 
     fn add_term(&mut self, m: Monomial, c: Rational) {

@@ -1,9 +1,11 @@
 //! Division with remainder by a list of polynomials, and full reduction (normal forms).
 
+use super::bucket::GeoBucket;
 use super::order::{self, Mono};
 use super::{DPoly, IdealError, Meter, MonomialOrder, PolyRing};
 use crate::poly::Poly;
-use rug::{Integer, Rational};
+use rug::ops::NegAssign;
+use rug::{Assign, Integer, Rational};
 use std::cmp::Ordering;
 
 /// The result of dividing `f` by `[g_1, ..., g_s]`: `f = sum q_i g_i + r`, where no term of `r`
@@ -29,94 +31,185 @@ pub struct Division {
     pub remainder: Poly,
 }
 
-/// A divisor ready for reduction: its variable mask and the polynomial.
+/// A divisor ready for reduction: its variable mask, the polynomial and its sugar (Giovini et
+/// al. 1991; 0 where nobody asks).
 pub(crate) struct Reducer<'a> {
     pub(crate) mask: u64,
     pub(crate) poly: &'a DPoly,
+    pub(crate) sugar: u32,
 }
 
 impl<'a> Reducer<'a> {
     pub(crate) fn new(poly: &'a DPoly) -> Self {
-        Reducer { mask: order::mask(poly.lm()), poly }
+        Reducer::with_sugar(poly, 0)
+    }
+
+    pub(crate) fn with_sugar(poly: &'a DPoly, sugar: u32) -> Self {
+        Reducer { mask: order::mask(poly.lm()), poly, sugar }
     }
 }
 
-/// The first divisor whose leading monomial divides `m`.
-fn find_divisor<'a>(divisors: &[Reducer<'a>], m: &Mono) -> Option<&'a DPoly> {
+/// The first divisor whose leading monomial divides `m`, and its sugar.
+fn find_divisor<'a>(divisors: &[Reducer<'a>], m: &Mono) -> Option<(&'a DPoly, u32)> {
     let mask = order::mask(m);
-    divisors.iter().find(|d| d.mask & !mask == 0 && order::divides(d.poly.lm(), m)).map(|d| d.poly)
+    divisors.iter().find(|d| d.mask & !mask == 0 && order::divides(d.poly.lm(), m)).map(|d| (d.poly, d.sugar))
 }
 
-/// `out := a * p[from..] - b * q * g[1..]` for `(a, b) = ab`, terms by decreasing monomial
-/// (`p`'s coefficients from `from` on are moved out). Both operands are sorted and a monomial
-/// order is compatible with multiplication, so this is one merge.
+/// The result of a full reduction: `r ≡ s·f` with no term of `r` divisible by a leading
+/// monomial, and the largest sugar `deg(q) + sugar(g)` of the multiples `q·g` subtracted (the
+/// sugar of `r` is the larger of this and the sugar of `f`).
+pub(crate) struct Reduced {
+    pub(crate) r: DPoly,
+    pub(crate) s: Rational,
+    pub(crate) sugar: u32,
+}
+
+/// `out := a * p[from..] - b * q * g[1..]`, terms by decreasing monomial. Both operands are
+/// sorted and a monomial order is compatible with multiplication, so this is one merge.
+///
+/// No GMP integer is allocated or freed in the steady state: a coefficient of `p` is swapped
+/// into `out`'s slot (leaving `out`'s old integer, limbs and all, in `p`, whose slots from
+/// `from` on are dead), and a new coefficient `-b·c` is computed into the slot's limbs. The
+/// reduction alternates `p` and `out` as its two buffers, so every slot is reused at the next
+/// step; surplus slots of `out` go to `spare`, from which a longer `out` takes them.
 pub(crate) fn combine(
     p: &mut DPoly,
     from: usize,
     (a, b): (&Integer, &Integer),
-    q: &Mono,
-    g: &DPoly,
+    (q, g): (&Mono, &DPoly),
     order: MonomialOrder,
     out: &mut DPoly,
+    spare: &mut Vec<Integer>,
 ) {
     out.exps.clear();
-    out.coefs.clear();
+    out.exps.reserve((p.len() - from + g.len()) * p.w);
     let scale = *a != 1;
     let mut lifted: Vec<u32> = Vec::with_capacity(q.len());
     let (mut i, mut j) = (from, 1);
     if j < g.len() {
         order::mul_into(&mut lifted, q, g.mono(j));
     }
+    // The slot for the `k`-th output term, reused when there is one.
+    let mut k = 0;
+    fn slot<'o>(out: &'o mut DPoly, spare: &mut Vec<Integer>, k: usize) -> &'o mut Integer {
+        if k == out.coefs.len() {
+            out.coefs.push(spare.pop().unwrap_or_default());
+        }
+        &mut out.coefs[k]
+    }
     loop {
-        let take_p = |p: &mut DPoly, i: usize| {
-            let mut c = std::mem::take(&mut p.coefs[i]);
-            if scale {
-                c *= a;
-            }
-            c
+        let ord = match (i < p.len(), j < g.len()) {
+            (true, true) => order.cmp(p.mono(i), &lifted),
+            (true, false) => Ordering::Greater,
+            (false, true) => Ordering::Less,
+            (false, false) => break,
         };
-        match (i < p.len(), j < g.len()) {
-            (true, true) => match order.cmp(p.mono(i), &lifted) {
-                Ordering::Greater => {
-                    let c = take_p(p, i);
-                    out.push(p.mono(i), c);
-                    i += 1;
+        match ord {
+            Ordering::Greater => {
+                let c = slot(out, spare, k);
+                std::mem::swap(c, &mut p.coefs[i]);
+                if scale {
+                    *c *= a;
                 }
-                Ordering::Less => {
-                    out.push(&lifted, -Integer::from(b * &g.coefs[j]));
-                    j += 1;
-                    if j < g.len() {
-                        order::mul_into(&mut lifted, q, g.mono(j));
-                    }
-                }
-                Ordering::Equal => {
-                    let mut c = take_p(p, i);
-                    c -= Integer::from(b * &g.coefs[j]);
-                    if c != 0 {
-                        out.push(&lifted, c);
-                    }
-                    i += 1;
-                    j += 1;
-                    if j < g.len() {
-                        order::mul_into(&mut lifted, q, g.mono(j));
-                    }
-                }
-            },
-            (true, false) => {
-                let c = take_p(p, i);
-                out.push(p.mono(i), c);
+                out.exps.extend_from_slice(p.mono(i));
+                k += 1;
                 i += 1;
             }
-            (false, true) => {
-                out.push(&lifted, -Integer::from(b * &g.coefs[j]));
+            Ordering::Less => {
+                let c = slot(out, spare, k);
+                c.assign(b * &g.coefs[j]);
+                c.neg_assign();
+                out.exps.extend_from_slice(&lifted);
+                k += 1;
                 j += 1;
                 if j < g.len() {
                     order::mul_into(&mut lifted, q, g.mono(j));
                 }
             }
-            (false, false) => break,
+            Ordering::Equal => {
+                let c = slot(out, spare, k);
+                std::mem::swap(c, &mut p.coefs[i]);
+                if scale {
+                    *c *= a;
+                }
+                *c -= b * &g.coefs[j];
+                if *c != 0 {
+                    out.exps.extend_from_slice(&lifted);
+                    k += 1;
+                }
+                i += 1;
+                j += 1;
+                if j < g.len() {
+                    order::mul_into(&mut lifted, q, g.mono(j));
+                }
+            }
         }
     }
+    if spare.len() < 4096 {
+        spare.extend(out.coefs.drain(k..));
+    } else {
+        out.coefs.truncate(k);
+    }
+}
+
+/// `a·mf·f[1..] - b·mg·g[1..]`, terms by decreasing monomial: the S-polynomial of `f` and `g`
+/// when `a·lc(f) = b·lc(g)` and `mf·LM(f) = mg·LM(g)` (the leading terms cancel). One merge
+/// of the two lifted tails, computed on the fly (neither operand is copied).
+pub(crate) fn s_poly(
+    (a, mf, f): (&Integer, &Mono, &DPoly),
+    (b, mg, g): (&Integer, &Mono, &DPoly),
+    order: MonomialOrder,
+) -> DPoly {
+    let mut out = DPoly::zero(f.w);
+    out.exps.reserve((f.len() + g.len()) * f.w);
+    out.coefs.reserve(f.len() + g.len());
+    let (mut lf, mut lg) = (Vec::with_capacity(f.w), Vec::with_capacity(f.w));
+    let (mut i, mut j) = (1, 1);
+    if i < f.len() {
+        order::mul_into(&mut lf, mf, f.mono(i));
+    }
+    if j < g.len() {
+        order::mul_into(&mut lg, mg, g.mono(j));
+    }
+    while i < f.len() || j < g.len() {
+        let ord = match (i < f.len(), j < g.len()) {
+            (true, true) => order.cmp(&lf, &lg),
+            (true, false) => Ordering::Greater,
+            _ => Ordering::Less,
+        };
+        match ord {
+            Ordering::Greater => {
+                out.push(&lf, Integer::from(a * &f.coefs[i]));
+                i += 1;
+                if i < f.len() {
+                    order::mul_into(&mut lf, mf, f.mono(i));
+                }
+            }
+            Ordering::Less => {
+                out.push(&lg, -Integer::from(b * &g.coefs[j]));
+                j += 1;
+                if j < g.len() {
+                    order::mul_into(&mut lg, mg, g.mono(j));
+                }
+            }
+            Ordering::Equal => {
+                let mut c = Integer::from(a * &f.coefs[i]);
+                c -= b * &g.coefs[j];
+                if c != 0 {
+                    out.push(&lf, c);
+                }
+                i += 1;
+                j += 1;
+                if i < f.len() {
+                    order::mul_into(&mut lf, mf, f.mono(i));
+                }
+                if j < g.len() {
+                    order::mul_into(&mut lg, mg, g.mono(j));
+                }
+            }
+        }
+    }
+    out
 }
 
 /// The gcd of the coefficients of `p` and `r` (0 when both are zero).
@@ -131,27 +224,56 @@ fn content(p: &DPoly, r: &DPoly) -> Integer {
     g
 }
 
+/// Work polynomials longer than this many terms continue in a [`GeoBucket`]. Below it one merge
+/// per step is as cheap or cheaper (measured on the suite of docs/performance.md, thresholds
+/// 0, 64, 128, 256 and never: the buckets' carries touch about as many terms as a merge of a
+/// short work polynomial and cost more per term; 128 still lost a quarter on katsura-6, whose
+/// works of 128-256 terms carry large coefficients; lemma 3.4's works grow past 256 and gain a
+/// third).
+pub(crate) const LONG_WORK: usize = 256;
+
 /// Full reduction of `f` by `divisors`, fraction-free: returns `(r, s)` with `r ≡ s·f` modulo
 /// the divisors (`s` a positive rational) and no term of `r` divisible by a leading monomial.
-/// Each step is `p := a·p - b·q·g` with `a = lc(g)/d`, `b = c/d`, `d = gcd(c, lc(g))`; the
-/// content of the work is divided out every 16 steps, so coefficients stay small.
+/// Each step is `p := a·p - b·q·g` with `a = lc(g)/d`, `b = c/d`, `d = gcd(c, lc(g))`, for
+/// the first divisor `g` whose leading monomial divides the leading term `c·m` of the work
+/// `p` (`q = m/LM(g)`). While the work is short this is one merge per step
+/// ([`combine`]); when it grows past [`LONG_WORK`] terms it continues in geobuckets
+/// ([`reduce_in_buckets`]). Either way the steps, and so `r/s`, are the same.
 pub(crate) fn reduce(
     f: DPoly,
     divisors: &[Reducer<'_>],
     order: MonomialOrder,
     meter: &mut Meter,
-) -> Result<(DPoly, Rational), IdealError> {
+) -> Result<Reduced, IdealError> {
+    reduce_switching_at(f, divisors, order, meter, LONG_WORK)
+}
+
+/// [`reduce`] with the switch to geobuckets at `long` terms (`0`: buckets from the start;
+/// `usize::MAX`: merges only).
+pub(crate) fn reduce_switching_at(
+    f: DPoly,
+    divisors: &[Reducer<'_>],
+    order: MonomialOrder,
+    meter: &mut Meter,
+    long: usize,
+) -> Result<Reduced, IdealError> {
     let w = f.w;
     let mut p = f;
     let mut buf = DPoly::zero(w);
     let mut rem = DPoly::zero(w);
+    // rem + p[start..] ≡ scale·f.
     let mut scale = Rational::from(1);
     let mut start = 0;
     let mut steps = 0u32;
+    let mut sugar = 0;
+    let mut spare: Vec<Integer> = Vec::new();
+    if p.len() > long {
+        return reduce_in_buckets(p, rem, scale, sugar, divisors, order, meter);
+    }
     while start < p.len() {
         meter.check(p.len() - start + rem.len())?;
         match find_divisor(divisors, p.mono(start)) {
-            Some(g) => {
+            Some((g, g_sugar)) => {
                 let c = &p.coefs[start];
                 let d = Integer::from(c.gcd_ref(g.lc()));
                 let (mut a, mut b) = (Integer::from(g.lc().div_exact_ref(&d)), Integer::from(c.div_exact_ref(&d)));
@@ -160,7 +282,8 @@ pub(crate) fn reduce(
                     b = -b;
                 }
                 let q = order::quotient(g.lm(), p.mono(start));
-                combine(&mut p, start + 1, (&a, &b), &q, g, order, &mut buf);
+                sugar = sugar.max(q[0] + g_sugar);
+                combine(&mut p, start + 1, (&a, &b), (&q, g), order, &mut buf, &mut spare);
                 std::mem::swap(&mut p, &mut buf);
                 if a != 1 {
                     for c in &mut rem.coefs {
@@ -179,6 +302,9 @@ pub(crate) fn reduce(
                         scale /= &g;
                     }
                 }
+                if p.len() > long {
+                    return reduce_in_buckets(p, rem, scale, sugar, divisors, order, meter);
+                }
             }
             None => {
                 let c = std::mem::take(&mut p.coefs[start]);
@@ -187,7 +313,89 @@ pub(crate) fn reduce(
             }
         }
     }
-    Ok((rem, scale))
+    Ok(Reduced { r: rem, s: scale, sugar })
+}
+
+/// The reduction continued from `rem + p ≡ scale·f` with the work `p` in a [`GeoBucket`]
+/// (Yan 1998). Each step takes the work's leading term `c·m`; when `LM(g)` divides `m` it sets
+/// `work := a·work - b·q·g[1..]` (the multiplier `a` is one multiplication per bucket, the
+/// multiple of `g` is added without touching the rest of the work), else it moves the term to
+/// the remainder. The factor `λ` with `λ·work` the exact remainder over Q is tracked apart
+/// (divided by every `a`, multiplied by the content the work sheds every 16 steps), and each
+/// remainder term remembers the `λ` it was taken under, so the remainder is never rescaled
+/// during the reduction.
+fn reduce_in_buckets(
+    p: DPoly,
+    mut rem: DPoly,
+    scale: Rational,
+    mut sugar: u32,
+    divisors: &[Reducer<'_>],
+    order: MonomialOrder,
+    meter: &mut Meter,
+) -> Result<Reduced, IdealError> {
+    let w = p.w;
+    let mut work = GeoBucket::new(w, order);
+    work.add(p, Integer::from(1));
+    let mut lambda = Rational::from(scale.recip_ref());
+    // Remainder terms from `segs[k].0` on were taken under `λ = segs[k].1`.
+    let mut segs: Vec<(usize, Rational)> = vec![(0, lambda.clone())];
+    let mut changed = false;
+    let (mut mono, mut q) = (Vec::with_capacity(w), Vec::with_capacity(w));
+    let mut steps = 0u32;
+    while let Some(c) = work.pop_lead(&mut mono) {
+        // The work held, its leading term included (as the merges count it), and the remainder.
+        meter.check(work.terms() + 1 + rem.len())?;
+        match find_divisor(divisors, &mono) {
+            Some((g, g_sugar)) => {
+                let d = Integer::from(c.gcd_ref(g.lc()));
+                let (mut a, mut b) = (Integer::from(g.lc().div_exact_ref(&d)), Integer::from(c.div_exact_ref(&d)));
+                if a.is_negative() {
+                    a = -a;
+                    b = -b;
+                }
+                q.clear();
+                q.extend(mono.iter().zip(g.lm()).map(|(x, y)| x - y));
+                sugar = sugar.max(q[0] + g_sugar);
+                if a != 1 {
+                    work.scale(&a);
+                    lambda /= &a;
+                    changed = true;
+                }
+                work.add_shifted(&q, g, 1, -b);
+                work.give_back(c);
+                steps += 1;
+                if steps.is_multiple_of(16) {
+                    let content = work.remove_content();
+                    if content != 1 {
+                        lambda *= content;
+                        changed = true;
+                    }
+                }
+            }
+            None => {
+                if changed {
+                    segs.push((rem.len(), lambda.clone()));
+                    changed = false;
+                }
+                rem.push(&mono, c);
+            }
+        }
+    }
+    // r = D·Σ λ_k·(terms of segment k), D the lcm of the denominators of the λ_k: r ≡ D·f.
+    let mut den = Integer::from(1);
+    for (_, l) in &segs {
+        den.lcm_mut(l.denom());
+    }
+    for (k, (from, l)) in segs.iter().enumerate() {
+        let to = segs.get(k + 1).map_or(rem.len(), |s| s.0);
+        let factor = Integer::from(&den / l.denom()) * l.numer();
+        if factor != 1 {
+            for c in &mut rem.coefs[*from..to] {
+                *c *= &factor;
+            }
+        }
+    }
+    Ok(Reduced { r: rem, s: Rational::from(den), sugar })
 }
 
 /// A polynomial with rational coefficients for the textbook division (quotients are needed

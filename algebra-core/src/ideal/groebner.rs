@@ -1,9 +1,10 @@
 //! Buchberger's algorithm with Gebauer–Möller's installation of the product and chain
-//! criteria, the sugar selection strategy, and the final reduction to the unique reduced basis;
-//! fraction-free (primitive integer polynomials, S-polynomials and reductions by integer
-//! multiples, content removed) on flat exponent vectors.
+//! criteria, the sugar selection strategy, the basis tail-reduced once per sugar degree, and the
+//! final reduction to the unique reduced basis; fraction-free (primitive integer polynomials,
+//! S-polynomials and reductions by integer multiples, content removed) on flat exponent
+//! vectors.
 
-use super::division::{Reducer, combine, reduce};
+use super::division::{Reducer, reduce, s_poly};
 use super::order;
 use super::{Budget, DPoly, IdealError, Meter, PolyRing};
 use crate::poly::Poly;
@@ -44,13 +45,19 @@ struct State<'r> {
     sugar: Vec<u32>,
     active: Vec<bool>,
     pairs: Vec<Pair>,
+    /// `clean[i]`: element `i`'s tail has no term divisible by the leading monomial of an
+    /// element with index below `clean[i]` (it was reduced by all of them).
+    clean: Vec<usize>,
     /// Terms of the active polynomials together (the memory budget of the basis).
     terms: usize,
 }
 
 impl State<'_> {
     fn reducers(&self) -> Vec<Reducer<'_>> {
-        self.polys.iter().zip(&self.active).filter(|(_, a)| **a).map(|(p, _)| Reducer::new(p)).collect()
+        (0..self.polys.len())
+            .filter(|&i| self.active[i])
+            .map(|i| Reducer::with_sugar(&self.polys[i], self.sugar[i]))
+            .collect()
     }
 
     /// Gebauer–Möller update: installs `h` (index k) into the basis and the pair list.
@@ -78,8 +85,8 @@ impl State<'_> {
         let polys = &self.polys;
         self.pairs.retain(|p| {
             !(order::divides(&lh, &p.lcm)
-                && order::lcm(polys[p.i].lm(), &lh) != p.lcm
-                && order::lcm(polys[p.j].lm(), &lh) != p.lcm)
+                && !order::lcm_is(polys[p.i].lm(), &lh, &p.lcm)
+                && !order::lcm_is(polys[p.j].lm(), &lh, &p.lcm))
         });
         // Product criterion: coprime leading monomials need no pair.
         for (i, lcm, coprime) in kept {
@@ -105,15 +112,41 @@ impl State<'_> {
         let (mf, mg) = (order::quotient(f.lm(), &p.lcm), order::quotient(g.lm(), &p.lcm));
         let d = Integer::from(f.lc().gcd_ref(g.lc()));
         let (a, b) = (Integer::from(g.lc().div_exact_ref(&d)), Integer::from(f.lc().div_exact_ref(&d)));
-        let mut lifted = DPoly { w: f.w, exps: Vec::with_capacity(f.exps.len()), coefs: f.coefs.clone() };
-        let mut m = Vec::new();
-        for i in 0..f.len() {
-            order::mul_into(&mut m, &mf, f.mono(i));
-            lifted.exps.extend_from_slice(&m);
+        s_poly((&a, &mf, f), (&b, &mg, g), self.ring.order())
+    }
+
+    /// Tail-reduces the active elements whose tails became reducible by elements added since
+    /// their last reduction; leading monomials stay, so the pairs and criteria are untouched (a
+    /// standard representation of an S-polynomial in the old elements is one in the new). Run
+    /// once per sugar degree: on cyclic-6 the intermediate basis otherwise carries coefficients
+    /// of ten thousand bits (the reduced basis has fifty), and every later reduction pays for
+    /// them; the shorter tails pay on the other ideals of the suite too.
+    fn reduce_tails(&mut self, meter: &mut Meter) -> Result<(), IdealError> {
+        let order = self.ring.order();
+        for i in 0..self.polys.len() {
+            if !self.active[i] {
+                continue;
+            }
+            let since = std::mem::replace(&mut self.clean[i], self.polys.len());
+            let fresh: Vec<Reducer<'_>> =
+                (since..self.polys.len()).filter(|&j| self.active[j]).map(|j| Reducer::new(&self.polys[j])).collect();
+            let g = &self.polys[i];
+            let dirty = (1..g.len()).any(|t| {
+                let (m, mask) = (g.mono(t), order::mask(g.mono(t)));
+                fresh.iter().any(|d| d.mask & !mask == 0 && order::divides(d.poly.lm(), m))
+            });
+            if !dirty {
+                continue;
+            }
+            let others: Vec<Reducer<'_>> = (0..self.polys.len())
+                .filter(|&j| j != i && self.active[j])
+                .map(|j| Reducer::new(&self.polys[j]))
+                .collect();
+            let h = with_tail_reduced(g, &others, order, meter)?;
+            self.terms = self.terms + h.len() - g.len();
+            self.polys[i] = h;
         }
-        let mut out = DPoly::zero(f.w);
-        combine(&mut lifted, 1, (&a, &b), &mg, g, self.ring.order(), &mut out);
-        out
+        Ok(())
     }
 
     fn add(&mut self, mut h: DPoly, sugar: u32, meter: &Meter) -> Result<usize, IdealError> {
@@ -121,6 +154,7 @@ impl State<'_> {
         meter.check_basis(self.active.iter().filter(|a| **a).count() + 1, self.terms + h.len())?;
         self.polys.push(h);
         self.sugar.push(sugar);
+        self.clean.push(self.polys.len());
         self.active.push(false);
         Ok(self.polys.len() - 1)
     }
@@ -136,23 +170,32 @@ impl PolyRing {
 
     pub(crate) fn groebner_metered(&self, generators: &[Poly], meter: &mut Meter) -> Result<GroebnerBasis, IdealError> {
         let order = self.order();
-        let mut st =
-            State { ring: self, polys: Vec::new(), sugar: Vec::new(), active: Vec::new(), pairs: Vec::new(), terms: 0 };
+        let mut st = State {
+            ring: self,
+            polys: Vec::new(),
+            sugar: Vec::new(),
+            active: Vec::new(),
+            pairs: Vec::new(),
+            clean: Vec::new(),
+            terms: 0,
+        };
         let mut input: Vec<DPoly> =
             generators.iter().map(|g| self.to_dense(g).map(|d| d.0)).collect::<Result<Vec<_>, _>>()?;
         input.retain(|p| !p.is_zero());
         input.sort_by(|a, b| order.cmp(a.lm(), b.lm()));
         for g in input {
-            let (r, _) = reduce(g, &st.reducers(), order, meter)?;
+            let sugar = (0..g.len()).map(|i| g.mono(i)[0]).max().unwrap_or(0);
+            let red = reduce(g, &st.reducers(), order, meter)?;
+            let r = red.r;
             if !r.is_zero() {
                 if r.lm()[0] == 0 {
                     return Ok(GroebnerBasis { ring: self.clone(), basis: vec![unit(self)] });
                 }
-                let s = (0..r.len()).map(|i| r.mono(i)[0]).max().unwrap_or(0);
-                let k = st.add(r, s, meter)?;
+                let k = st.add(r, sugar.max(red.sugar), meter)?;
                 st.update(k);
             }
         }
+        let mut degree = 0;
         while !st.pairs.is_empty() {
             meter.check_time()?;
             // Sugar strategy: least sugar, then least lcm.
@@ -162,14 +205,19 @@ impl PolyRing {
                     p.sugar.cmp(&q.sugar).then_with(|| order.cmp(&p.lcm, &q.lcm))
                 })
                 .expect("non-empty pair list");
+            if st.pairs[best].sugar > degree {
+                degree = st.pairs[best].sugar;
+                st.reduce_tails(meter)?;
+            }
             let pair = st.pairs.swap_remove(best);
             let s = st.spoly(&pair);
-            let (r, _) = reduce(s, &st.reducers(), order, meter)?;
+            let red = reduce(s, &st.reducers(), order, meter)?;
+            let r = red.r;
             if !r.is_zero() {
                 if r.lm()[0] == 0 {
                     return Ok(GroebnerBasis { ring: self.clone(), basis: vec![unit(self)] });
                 }
-                let k = st.add(r, pair.sugar, meter)?;
+                let k = st.add(r, pair.sugar.max(red.sugar), meter)?;
                 st.update(k);
             }
         }
@@ -192,18 +240,28 @@ fn interreduce(mut gens: Vec<DPoly>, ring: &PolyRing, meter: &mut Meter) -> Resu
     for i in 0..gens.len() {
         let others: Vec<Reducer<'_>> =
             gens.iter().enumerate().filter(|(j, _)| *j != i).map(|(_, g)| Reducer::new(g)).collect();
-        // r ≡ s·tail with s = n/d, so d·s·g ≡ n·lc·lm + d·r.
-        let (r, s) = reduce(gens[i].tail(1), &others, ring.order(), meter)?;
-        let (n, d) = s.into_numer_denom();
-        let mut h = DPoly::zero(gens[i].w);
-        h.push(gens[i].lm(), n * gens[i].lc());
-        for k in 0..r.len() {
-            h.push(r.mono(k), Integer::from(&d * &r.coefs[k]));
-        }
-        h.make_primitive();
-        out.push(h);
+        out.push(with_tail_reduced(&gens[i], &others, ring.order(), meter)?);
     }
     Ok(out)
+}
+
+/// `g` with its tail fully reduced by `others` (which must not include `g`), primitive.
+fn with_tail_reduced(
+    g: &DPoly,
+    others: &[Reducer<'_>],
+    order: super::MonomialOrder,
+    meter: &mut Meter,
+) -> Result<DPoly, IdealError> {
+    // r ≡ s·tail with s = n/d, so d·s·g ≡ n·lc·lm + d·r.
+    let super::division::Reduced { r, s, .. } = reduce(g.tail(1), others, order, meter)?;
+    let (n, d) = s.into_numer_denom();
+    let mut h = DPoly::zero(g.w);
+    h.push(g.lm(), n * g.lc());
+    for k in 0..r.len() {
+        h.push(r.mono(k), Integer::from(&d * &r.coefs[k]));
+    }
+    h.make_primitive();
+    Ok(h)
 }
 
 impl GroebnerBasis {
@@ -256,7 +314,7 @@ impl GroebnerBasis {
     pub(crate) fn normal_form_metered(&self, f: &Poly, meter: &mut Meter) -> Result<Poly, IdealError> {
         let (f, den) = self.ring.to_dense(f)?;
         let reducers: Vec<Reducer<'_>> = self.basis.iter().map(Reducer::new).collect();
-        let (r, s) = reduce(f, &reducers, self.ring.order(), meter)?;
+        let super::division::Reduced { r, s, .. } = reduce(f, &reducers, self.ring.order(), meter)?;
         Ok(self.ring.to_poly(&r, &(s * den)))
     }
 

@@ -1,8 +1,9 @@
 //! Polynomial ideals over the rationals for [`Poly`]: monomial orders, division with remainder
 //! by a list, reduced Gröbner bases (Buchberger with the Gebauer–Möller criteria and the sugar
-//! selection strategy, fraction-free over the integers on flat exponent vectors; see
-//! docs/verification.md), normal forms, ideal membership, non-vanishing hypotheses by the
-//! Rabinowitsch trick, and elimination of variables.
+//! selection strategy, the basis kept tail-reduced per sugar degree, fraction-free over the
+//! integers on flat exponent vectors, long reductions in geobuckets; see docs/verification.md),
+//! normal forms, ideal membership, non-vanishing hypotheses by the Rabinowitsch trick, and
+//! elimination of variables.
 //!
 //! Every computation runs under a [`Budget`] (time, basis size, terms per polynomial); when the
 //! budget runs out the result is [`IdealError::Undecided`], never a hang.
@@ -20,6 +21,7 @@
 //! assert!(!g.contains(&y).unwrap());
 //! ```
 
+mod bucket;
 mod division;
 mod groebner;
 mod hypotheses;
@@ -50,8 +52,9 @@ pub struct Budget {
     pub time: Option<Duration>,
     /// Largest number of polynomials the basis may hold while it is computed.
     pub max_basis: usize,
-    /// Largest number of terms of any intermediate polynomial; the basis together may hold 20
-    /// times as many (the memory of the computation).
+    /// Largest number of terms of any intermediate polynomial (a reduction counts its work and
+    /// its remainder; in geobuckets, the terms the buckets hold, like terms in different buckets
+    /// apart); the basis together may hold 20 times as many (the memory of the computation).
     pub max_terms: usize,
 }
 
@@ -237,16 +240,23 @@ impl DPoly {
 pub struct PolyRing {
     vars: Vec<String>,
     index: HashMap<String, usize>,
+    /// The interned id of each variable (see `Poly::id_terms`), and the variable of each id.
+    ids: Vec<u32>,
+    by_id: HashMap<u32, usize>,
     order: MonomialOrder,
 }
 
 impl PolyRing {
     /// The ring with these variables (duplicates are ignored) and this order.
     pub fn new<S: AsRef<str>>(vars: impl IntoIterator<Item = S>, order: MonomialOrder) -> Self {
-        let mut out = PolyRing { vars: Vec::new(), index: HashMap::new(), order };
+        let mut out =
+            PolyRing { vars: Vec::new(), index: HashMap::new(), ids: Vec::new(), by_id: HashMap::new(), order };
         for v in vars {
             let v = v.as_ref().to_string();
             if !out.index.contains_key(&v) {
+                let id = crate::poly::intern(&v);
+                out.by_id.insert(id, out.vars.len());
+                out.ids.push(id);
                 out.index.insert(v.clone(), out.vars.len());
                 out.vars.push(v);
             }
@@ -292,34 +302,39 @@ impl PolyRing {
     /// `p = F / den` with `F` integer (not made primitive), terms by decreasing monomial.
     pub(crate) fn to_dense(&self, p: &Poly) -> Result<(DPoly, Integer), IdealError> {
         let w = self.width();
-        let mut terms: Vec<(Vec<u32>, Rational)> = Vec::new();
+        let mut terms: Vec<(Vec<u32>, &Rational)> = Vec::with_capacity(p.term_count());
         let mut den = Integer::from(1);
-        for (c, m) in p.terms() {
+        for (m, c) in p.id_terms() {
             let mut e = vec![0u32; w];
-            for (name, k) in m {
-                let i = *self.index.get(&name).ok_or(IdealError::UnknownVariable(name))?;
+            for &(id, k) in m {
+                let i = *self.by_id.get(&id).ok_or_else(|| IdealError::UnknownVariable(crate::poly::var_name(id)))?;
                 e[i + 1] += k;
                 e[0] += k;
             }
-            den.lcm_mut(c.denom());
-            terms.push((e, c.clone()));
+            if *c.denom() != 1 {
+                den.lcm_mut(c.denom());
+            }
+            terms.push((e, c));
         }
         terms.sort_by(|a, b| self.order.cmp(&b.0, &a.0));
         let mut out = DPoly::zero(w);
+        out.exps.reserve(terms.len() * w);
+        out.coefs.reserve(terms.len());
         for (e, c) in terms {
-            let (num, d) = c.into_numer_denom();
-            out.push(&e, num * Integer::from(&den / &d));
+            let num = if den == 1 { c.numer().clone() } else { Integer::from(&den / c.denom()) * c.numer() };
+            out.push(&e, num);
         }
         Ok((out, den))
     }
 
     /// `p / divisor` as a [`Poly`].
     pub(crate) fn to_poly(&self, p: &DPoly, divisor: &Rational) -> Poly {
-        Poly::from_terms((0..p.len()).map(|i| {
-            let m = p.mono(i);
-            let vars = m[1..].iter().enumerate().filter(|(_, e)| **e > 0);
-            let c = Rational::from(&p.coefs[i]) / divisor;
-            (c, vars.map(|(i, e)| (self.vars[i].clone(), *e)).collect())
+        Poly::from_id_terms((0..p.len()).map(|i| {
+            let mut m: Vec<(u32, u32)> =
+                p.mono(i)[1..].iter().enumerate().filter(|(_, e)| **e > 0).map(|(v, e)| (self.ids[v], *e)).collect();
+            m.sort_unstable();
+            let c = if *divisor == 1 { Rational::from(&p.coefs[i]) } else { Rational::from(&p.coefs[i]) / divisor };
+            (m, c)
         }))
     }
 }

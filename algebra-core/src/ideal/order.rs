@@ -38,12 +38,14 @@ pub enum MonomialOrder {
 pub(crate) type Mono = [u32];
 
 /// `out := a * b`.
+#[inline]
 pub(crate) fn mul_into(out: &mut Vec<u32>, a: &Mono, b: &Mono) {
     out.clear();
     out.extend(a.iter().zip(b).map(|(x, y)| x + y));
 }
 
 /// `a | b`.
+#[inline]
 pub(crate) fn divides(a: &Mono, b: &Mono) -> bool {
     a.iter().zip(b).all(|(x, y)| x <= y)
 }
@@ -60,12 +62,19 @@ pub(crate) fn lcm(a: &Mono, b: &Mono) -> Vec<u32> {
     out
 }
 
+/// `lcm(a, b) == l`, without building the lcm.
+#[inline]
+pub(crate) fn lcm_is(a: &Mono, b: &Mono, l: &Mono) -> bool {
+    a[1..].iter().zip(&b[1..]).zip(&l[1..]).all(|((x, y), z)| x.max(y) == z)
+}
+
 /// No variable occurs in both.
 pub(crate) fn coprime(a: &Mono, b: &Mono) -> bool {
     a[1..].iter().zip(&b[1..]).all(|(x, y)| *x == 0 || *y == 0)
 }
 
 /// Bit `i % 64` set when variable `i` occurs: a cheap necessary test for divisibility.
+#[inline]
 pub(crate) fn mask(a: &Mono) -> u64 {
     a[1..].iter().enumerate().filter(|(_, e)| **e > 0).fold(0, |m, (i, _)| m | 1 << (i % 64))
 }
@@ -77,6 +86,7 @@ fn grevlex(a: &[u32], b: &[u32]) -> Ordering {
 }
 
 /// On equal degrees: the smaller exponent of the last variable where they differ wins.
+#[inline]
 fn reverse_lex(a: &[u32], b: &[u32]) -> Ordering {
     for (x, y) in a.iter().zip(b).rev() {
         if x != y {
@@ -88,6 +98,7 @@ fn reverse_lex(a: &[u32], b: &[u32]) -> Ordering {
 
 impl MonomialOrder {
     /// Compares two monomials (`Greater` = `a` is the larger, i.e. leads).
+    #[inline]
     pub(crate) fn cmp(&self, a: &Mono, b: &Mono) -> Ordering {
         match *self {
             MonomialOrder::Lex => a[1..].cmp(&b[1..]),

@@ -95,3 +95,82 @@ fn rabinowitsch_needs_the_nonvanishing_hypothesis() {
     let bad = Hypotheses { equations: vec![x.clone()], nonzero: vec![x] };
     assert!(decide(&[y], &bad, &Budget::default()).unwrap().inconsistent);
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    /// The geobucket reduction against the merge reduction it continues (the previous engine's)
+    /// and against the textbook division over Q (`PolyRing::divide`, a separate code path with
+    /// rational coefficients): the same remainder, whether the work moves into buckets at once,
+    /// after a few terms, or never. With the first-divisor rule all three take the same steps.
+    #[test]
+    fn geobucket_reduction_matches_merge_and_textbook_division(
+        f in arb_poly(14), gs in prop::collection::vec(arb_poly(4), 1..4), lex in any::<bool>()
+    ) {
+        let order = if lex { MonomialOrder::Lex } else { MonomialOrder::GrevLex };
+        let ring = PolyRing::new(["x", "y", "z"], order);
+        let gs: Vec<Poly> = gs.into_iter().filter(|g| !g.is_exact_zero()).collect();
+        let (fd, fden) = ring.to_dense(&f).unwrap();
+        let ds: Vec<DPoly> = gs.iter().map(|g| ring.to_dense(g).unwrap().0).collect();
+        let reducers: Vec<division::Reducer<'_>> = ds.iter().map(division::Reducer::new).collect();
+        let run = |long: usize| {
+            let mut meter = Meter::new(&Budget::default());
+            let division::Reduced { r, s, .. } =
+                division::reduce_switching_at(fd.clone(), &reducers, order, &mut meter, long).unwrap();
+            ring.to_poly(&r, &(s * Rational::from(&fden)))
+        };
+        let merged = run(usize::MAX);
+        let textbook = ring.divide(&f, &gs, &Budget::default()).unwrap().remainder;
+        prop_assert_eq!(&merged, &textbook);
+        prop_assert_eq!(run(0), merged.clone());
+        prop_assert_eq!(run(3), merged);
+    }
+}
+
+/// Long reductions in one variable whose remainders are known in closed form: `x ≡ 1` modulo
+/// `3x - 3` (the work keeps the content 6 of `f`, which the buckets shed every 16 steps) and
+/// `x ≡ 2/3` modulo `3x - 2` (every step scales the work by 3). Both switch points and the
+/// merges alone give `6·x0^40 + 6y`, with `x0` the root.
+#[test]
+fn long_reductions_shed_content_and_track_the_scale_exactly() {
+    let (x, y) = (Poly::var("x"), Poly::var("y"));
+    let ring = PolyRing::new(["x", "y"], MonomialOrder::GrevLex);
+    let f = Poly::from_i64(6) * x.pow_u32(40) + Poly::from_i64(6) * y.clone();
+    for (g, root) in [
+        (Poly::from_i64(3) * x.clone() - Poly::from_i64(3), Rational::from(1)),
+        (Poly::from_i64(3) * x.clone() - Poly::from_i64(2), Rational::from((2, 3))),
+    ] {
+        let expected = Poly::constant(Rational::from(6) * Rational::from(rug::ops::Pow::pow(&root, 40u32)))
+            + Poly::from_i64(6) * y.clone();
+        let (fd, fden) = ring.to_dense(&f).unwrap();
+        let gd = ring.to_dense(&g).unwrap().0;
+        let reducers = [division::Reducer::new(&gd)];
+        for long in [0, 3, usize::MAX] {
+            let mut meter = Meter::new(&Budget::default());
+            let division::Reduced { r, s, .. } =
+                division::reduce_switching_at(fd.clone(), &reducers, MonomialOrder::GrevLex, &mut meter, long).unwrap();
+            assert_eq!(ring.to_poly(&r, &(s * Rational::from(&fden))), expected, "switch at {long}, g = {g}");
+        }
+    }
+}
+
+/// The term budget stops a reduction in either representation with the documented error: the
+/// work of `6·x^40 + 6y` modulo `3x - 2` holds two terms and its remainder grows to two, so a
+/// budget of one term is exceeded at once, whether the work is merged or in geobuckets.
+#[test]
+fn term_budget_stops_merged_and_bucketed_reductions() {
+    let (x, y) = (Poly::var("x"), Poly::var("y"));
+    let ring = PolyRing::new(["x", "y"], MonomialOrder::GrevLex);
+    let f = Poly::from_i64(6) * x.pow_u32(40) + Poly::from_i64(6) * y;
+    let g = Poly::from_i64(3) * x - Poly::from_i64(2);
+    let (fd, gd) = (ring.to_dense(&f).unwrap().0, ring.to_dense(&g).unwrap().0);
+    let reducers = [division::Reducer::new(&gd)];
+    let tiny = Budget { max_terms: 1, ..Budget::default() };
+    for long in [0, usize::MAX] {
+        let mut meter = Meter::new(&tiny);
+        match division::reduce_switching_at(fd.clone(), &reducers, MonomialOrder::GrevLex, &mut meter, long) {
+            Err(IdealError::Undecided { limit: Limit::Terms, .. }) => {}
+            other => panic!("switch at {long}: expected the term limit, got {:?}", other.map(|r| r.r)),
+        }
+    }
+}
