@@ -43,6 +43,16 @@ fn tiny_angles_and_tiny_motors_are_poses() {
     let v: Value = serde_json::from_str(&ok(&["pose", "--json", r#"{"motor":{"1":1e-300,"e12":1e-300}}"#])).unwrap();
     assert!((v["matrix"][1][0].as_f64().unwrap() - 1.0).abs() < 1e-15, "{v}");
     assert!((v["angle"].as_f64().unwrap() - std::f64::consts::FRAC_PI_2).abs() < 1e-15, "{v}");
+    // a dual quaternion c ((1 + k) + ε i) at any scale: the quarter turn about z, then the
+    // translation 2 Q^ε Q̃⁰/|Q⁰|² = (1, 1, 0) (hand computation); below c ≈ 1e-154 it was
+    // refused as "a zero real part" (|Q⁰|² underflowed)
+    for c in ["1", "1e-200", "1e-300", "1e300"] {
+        let pose = format!(r#"{{"dual_quaternion": [{c}, 0, 0, {c}, 0, {c}, 0, 0]}}"#);
+        let v: Value = serde_json::from_str(&ok(&["pose", "--json", &pose])).unwrap();
+        let m = common::matrix(&v["matrix"]);
+        let want = [[0.0, -1.0, 0.0, 1.0], [1.0, 0.0, 0.0, 1.0], [0.0, 0.0, 1.0, 0.0], [0.0, 0.0, 0.0, 1.0]];
+        assert!(common::max_diff(&m, &want) < 1e-15, "{c}: {v}");
+    }
 }
 
 #[test]
