@@ -222,6 +222,8 @@ impl<'a> Evaluator<'a> {
     /// `x / d`: by a scalar coefficient-wise, otherwise times the inverse of `d`.
     fn divide<T: CliScalar>(&self, x: &Mv<T>, d: &Mv<T>, what: &str, col: usize) -> Result<Mv<T>, CliError> {
         if d.coeffs().iter().skip(1).all(algebra_core::Ring::is_exact_zero) {
+            // coefficient-wise, as costly as the product by the scalar
+            self.charge(&format!("the {what} at column {col}"), T::product_work(x, d, Product::Geometric))?;
             let s = &d.coeffs()[0];
             let coeffs = x
                 .coeffs()
@@ -233,7 +235,7 @@ impl<'a> Evaluator<'a> {
         } else {
             self.charge(&format!("the inverse at column {col}"), T::inverse_work(d))?;
             let inv = T::inverse(d).map_err(|f| failed(what, col, T::NAME, f))?;
-            Ok(x * &inv)
+            self.product(x, &inv, Product::Geometric, col)
         }
     }
 

@@ -160,7 +160,7 @@ impl CliScalar for Q {
     /// Per table entry met by two non-zero coefficients of `b_i` and `b_j` bits, one exact
     /// multiply-add whose gcd is quadratic in the limbs: `((b_i + b_j)/64)²` limb pairs
     /// ([`crate::budget::LIMB_PAIRS_PER_UNIT`] to a unit). Ordinary coefficients cost about
-    /// nothing; two 100,000-digit ones about 1e7 units (4 s).
+    /// nothing; two 100,000-digit ones about 3.6e6 units (1.2 s).
     fn product_work(a: &Multivector<Self>, b: &Multivector<Self>, product: Product) -> f64 {
         let bits = |x: &Multivector<Self>| -> Vec<(u32, f64)> {
             let nonzero = x.coeffs().iter().enumerate().filter(|(_, c)| !c.is_zero());

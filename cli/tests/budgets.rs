@@ -195,21 +195,21 @@ fn exact_products_of_huge_rationals_are_budgeted_in_total() {
     let out = run(None, &pair(50_000));
     assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
     assert_eq!(String::from_utf8_lossy(&out.stdout).trim(), "9".repeat(100_000));
-    // 2 x 2,600 limbs: about 2.7e6 units, refused under a budget of 1e6 before the work
+    // 2 x 2,600 limbs: about 9e5 units, refused under a budget of 4e5 before the work
     let args = ["eval", &pair(50_000)];
-    let out = run(Some("1e6"), &pair(50_000));
+    let out = run(Some("4e5"), &pair(50_000));
     assert_eq!(out.status.code(), Some(2));
     let line = one_error_line(&args, &String::from_utf8_lossy(&out.stderr));
     assert!(
         line.starts_with("error: the product at column 14 needs about") && line.contains("GAM_WORK_BUDGET"),
         "{line}"
     );
-    // 20,000 digits: the first product (4.3e5 units) and the second alone (9.7e5) are within
-    // 1e6, the two together are not
-    let out = run(Some("1e6"), &pair(20_000));
+    // 20,000 digits: the first product (1.4e5 units) and the second alone (3.2e5) are within
+    // 4e5, the two together are not
+    let out = run(Some("4e5"), &pair(20_000));
     assert_eq!(String::from_utf8_lossy(&out.stdout).trim(), "9".repeat(40_000));
     let three = format!("{}*(1E20000 + 3)", pair(20_000));
-    let out = run(Some("1e6"), &three);
+    let out = run(Some("4e5"), &three);
     assert_eq!(out.status.code(), Some(2));
     let line = one_error_line(&args, &String::from_utf8_lossy(&out.stderr));
     assert!(line.contains("the product at column 28 (with the") && line.contains("units before it)"), "{line}");
