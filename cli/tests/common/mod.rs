@@ -42,6 +42,8 @@ pub fn one_error_line(args: &[&str], stderr: &str) -> String {
     let lines: Vec<&str> = stderr.lines().collect();
     assert_eq!(lines.len(), 1, "gam {args:?}: expected one stderr line, got {stderr:?}");
     assert!(lines[0].starts_with("error: "), "{stderr}");
+    // issue 30: an error line names the place and the reason, it does not dump values
+    assert!(lines[0].chars().count() <= 300, "gam {args:?}: an error line of {} characters", lines[0].chars().count());
     lines[0].to_string()
 }
 
