@@ -88,6 +88,12 @@ pub const UNITS_PER_TERM_PRODUCT: f64 = 20.0;
 /// the work: the base's bits times `k`); the default budget allows numbers of 2e8 bits (25 MB).
 pub const UNITS_PER_BIT: f64 = 1.0;
 
+/// Pairs of 64-bit limbs per work unit in an exact rational product (num-bigint's multiply
+/// and the gcds of the normalisation): about 9e7 limb pairs a second with the release build,
+/// against [`UNITS_PER_SECOND`]; `cargo bench -p gam --bench work_estimate` checks products
+/// of 100,000-digit and 30,000-digit rationals within 2x of the time.
+pub const LIMB_PAIRS_PER_UNIT: f64 = 30.0;
+
 /// Work units per exact multiply-add of the product tables ([`algebra_core::Tables::build_work`]).
 pub const UNITS_PER_TABLE_TERM: f64 = 10.0;
 
@@ -195,6 +201,24 @@ impl Tableau {
 pub fn sampling_work(tableau: Tableau, degree: usize, samples: usize, passes: usize) -> f64 {
     let d = degree as f64 + 1.0;
     (passes * samples) as f64 * (tableau.units_per_entry() * d * d + tableau.units_per_sample())
+}
+
+/// How much more a tableau entry costs over the second-order dual numbers of `gam plot` (its
+/// speeds and accelerations) than over the first-order ones of `gam sample`: measured 2.5-2.8
+/// with multiplicative segments of degree 100 and 400 (`cargo bench -p gam --bench
+/// work_estimate`), which the first-order estimate promised 2.7 times too fast.
+pub const SECOND_ORDER_ENTRY_FACTOR: f64 = 2.7;
+
+/// [`sampling_work`] for one pass over `samples` evaluations over second-order dual numbers
+/// (`gam plot`): each tableau entry [`SECOND_ORDER_ENTRY_FACTOR`] times dearer.
+///
+/// ```
+/// use gam::budget::{Tableau, plotting_work};
+/// assert_eq!(plotting_work(Tableau::Slerp, 3, 100), 100.0 * (16.0 * 0.45 * 2.7 + 25.0));
+/// ```
+pub fn plotting_work(tableau: Tableau, degree: usize, samples: usize) -> f64 {
+    let d = degree as f64 + 1.0;
+    samples as f64 * (tableau.units_per_entry() * SECOND_ORDER_ENTRY_FACTOR * d * d + tableau.units_per_sample())
 }
 
 /// The work of building one of Jüttler's global interpolants (`juttler-q-motion`,

@@ -26,7 +26,9 @@ fn log_and_sqrt_of_tiny_elements() {
     assert!((coeff(&v, "1") / 1.098_684_113_467_81e-100 - 1.0).abs() < 1e-14, "{v}");
     assert!((coeff(&v, "e12") / 4.550_898_605_622_273e-101 - 1.0).abs() < 1e-14, "{v}");
     // 1e-200 (1 + e1) is a zero divisor: no logarithm (exit 1), never the nilpotent branch's value
-    fails(&["eval", "--algebra", "g3", "--scalar", "f64", "log(1E-200+1E-200*e1)"], 1);
+    let e = fails(&["eval", "--algebra", "g3", "--scalar", "f64", "log(1E-200+1E-200*e1)"], 1);
+    // the message names the value in exponent notation (it printed 1e-200 as 200 zeros)
+    assert!(e.contains("log is not defined for 1e-200 + 1e-200*e1: no real logarithm"), "{e}");
 }
 
 #[test]
@@ -43,6 +45,16 @@ fn tiny_angles_and_tiny_motors_are_poses() {
     let v: Value = serde_json::from_str(&ok(&["pose", "--json", r#"{"motor":{"1":1e-300,"e12":1e-300}}"#])).unwrap();
     assert!((v["matrix"][1][0].as_f64().unwrap() - 1.0).abs() < 1e-15, "{v}");
     assert!((v["angle"].as_f64().unwrap() - std::f64::consts::FRAC_PI_2).abs() < 1e-15, "{v}");
+    // a dual quaternion c ((1 + k) + ε i) at any scale: the quarter turn about z, then the
+    // translation 2 Q^ε Q̃⁰/|Q⁰|² = (1, 1, 0) (hand computation); below c ≈ 1e-154 it was
+    // refused as "a zero real part" (|Q⁰|² underflowed)
+    for c in ["1", "1e-200", "1e-300", "1e300"] {
+        let pose = format!(r#"{{"dual_quaternion": [{c}, 0, 0, {c}, 0, {c}, 0, 0]}}"#);
+        let v: Value = serde_json::from_str(&ok(&["pose", "--json", &pose])).unwrap();
+        let m = common::matrix(&v["matrix"]);
+        let want = [[0.0, -1.0, 0.0, 1.0], [1.0, 0.0, 0.0, 1.0], [0.0, 0.0, 1.0, 0.0], [0.0, 0.0, 0.0, 1.0]];
+        assert!(common::max_diff(&m, &want) < 1e-15, "{c}: {v}");
+    }
 }
 
 #[test]

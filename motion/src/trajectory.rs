@@ -198,6 +198,11 @@ impl<T: Real> Trajectory<T> {
     /// Builds the motion through `poses` at `times` (module docs); fails with a typed error for
     /// bad input and when a join is not C1 within `1e-9` relative (per-segment shapes).
     ///
+    /// The key poses are used as given, not unitized: a multiple `λS` is the same pose, but its
+    /// scale enters the segments as a weight (by design, docs/robustness.md). For the same
+    /// motion whatever multiples the key poses come as, unitize them first, as
+    /// [`crate::method::Method::build`] (the CLI, the Python package) does.
+    ///
     /// ```
     /// use motion::trajectory::{Trajectory, Velocities};
     /// use motion::{HermiteShapes, Motion, Pose, SegmentKind};

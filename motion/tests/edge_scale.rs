@@ -156,3 +156,26 @@ fn reparametrized_over_the_whole_f64_range_evaluates_at_the_right_place() {
         assert!(max_abs_diff(&p, &[want, 0.0, 0.0]) < 1e-15, "t = {t:e}: {p:?}");
     }
 }
+
+/// A dual quaternion `c ((1 + k) + ε i)` at any scale `c` is the quarter turn about z followed
+/// by the translation `2 Q^ε Q̃⁰/|Q⁰|² = (1, 1, 0)` (hand computation); `|Q⁰|²` underflowed to
+/// 0 below `c ≈ 1e-154`, and the reader refused it as "a zero real part".
+#[test]
+fn dual_quaternions_of_any_size_are_read() {
+    use gam_algebras::DualQuaternion;
+    use motion::repr::dual_quaternion::{from_dual_quaternion, study_cosine};
+    let want = [[0.0, -1.0, 0.0, 1.0], [1.0, 0.0, 0.0, 1.0], [0.0, 0.0, 1.0, 0.0], [0.0, 0.0, 0.0, 1.0]];
+    for c in [1.0, 1e-150, 1e-160, 1e-200, 1e-300, 1e-320, 1e150, 1e200, 1e300] {
+        let q = DualQuaternion::from_coeffs([c, 0.0, 0.0, c, 0.0, c, 0.0, 0.0]);
+        assert_eq!(study_cosine(&q), 0.0, "{c:e}");
+        let s = from_dual_quaternion(&q, &1e-9).unwrap_or_else(|e| panic!("{c:e}: {e}"));
+        let m = s.to_matrix().unwrap();
+        assert!(max_abs_diff(&flat(&m), &flat(&want)) < 1e-15, "{c:e}: {m:?}");
+        // off the Study quadric at every scale too (cosine 1/√2 between real and dual part)
+        let off = DualQuaternion::from_coeffs([c, 0.0, 0.0, c, c, 0.0, 0.0, 0.0]);
+        assert!((study_cosine(&off) - std::f64::consts::FRAC_1_SQRT_2).abs() < 1e-15, "{c:e}");
+        assert!(from_dual_quaternion(&off, &1e-9).is_err(), "{c:e}");
+    }
+    let zero = DualQuaternion::from_coeffs([0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0]);
+    assert!(matches!(from_dual_quaternion(&zero, &1e-9), Err(motion::repr::ReprError::ZeroRealPart)));
+}

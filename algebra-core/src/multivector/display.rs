@@ -57,6 +57,38 @@ impl<T: Ring> Multivector<T> {
     }
 }
 
+/// `coeff` for an error message: a floating-point coefficient in long positional form (f64's
+/// `Display` prints `1e-200` as `0.` and 199 zeros, `1e200` with 200 digits) in exponent
+/// notation instead; every other coefficient as it is.
+fn compact(coeff: String) -> String {
+    let digits = coeff.trim_start_matches('-');
+    let long = digits.starts_with("0.000000000") || digits.split('.').next().is_some_and(|int| int.len() > 21);
+    match coeff.parse::<f64>() {
+        Ok(x) if long && x.is_finite() && x != 0.0 => format!("{x:e}"),
+        _ => coeff,
+    }
+}
+
+impl<T: Ring> Multivector<T> {
+    /// The value as error messages print it: `Display`, with the coefficients of floating-point
+    /// scalars far from unit scale in exponent notation (`1e-200*e1`, not 200 zeros), so that
+    /// a message names the value instead of filling its line with digits.
+    ///
+    /// ```
+    /// use algebra_core::{Algebra, Basis, Multivector, MvError};
+    /// let alg = Algebra::builtin("g3").unwrap();
+    /// let x = Multivector::from_terms(&alg, Basis::Blade, [("1", 1e-200), ("e1", 1e-200)]).unwrap();
+    /// let Err(MvError::Undefined { value, .. }) = x.log() else { panic!() };
+    /// assert_eq!(value, "1e-200 + 1e-200*e1");
+    /// ```
+    pub fn describe(&self) -> String {
+        if T::relative_epsilon() == 0.0 {
+            return self.to_string();
+        }
+        self.format_with(|c| compact(c.to_string()))
+    }
+}
+
 impl<T: Ring> fmt::Debug for Multivector<T> {
     /// `Multivector<cga-null, product>(-2 - e0inf)`: the algebra, the basis and the value
     /// (the tables are not printed).
@@ -95,5 +127,15 @@ mod tests {
         assert_eq!(format_term("1.5e-7", "e1"), "1.5e-7*e1");
         assert_eq!(format_term("-2", "1"), "-2");
         assert_eq!(join_terms(["-2".to_string(), "-e0inf".to_string()]), "-2 - e0inf");
+    }
+
+    #[test]
+    fn compact_coefficients() {
+        assert_eq!(compact(format!("{}", -1e-200)), "-1e-200");
+        assert_eq!(compact(format!("{}", 2.5e200)), "2.5e200");
+        assert_eq!(compact(format!("{}", 1e-9)), "0.000000001");
+        assert_eq!(compact(format!("{}", 0.5)), "0.5");
+        assert_eq!(compact("1/3".to_string()), "1/3");
+        assert_eq!(compact("0".to_string()), "0");
     }
 }

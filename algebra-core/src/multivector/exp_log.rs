@@ -27,7 +27,7 @@ const MAX_GUARD_BITS: u32 = 8192;
 
 impl<T: Real> Multivector<T> {
     pub(super) fn undefined(&self, op: &'static str, why: impl Into<String>) -> MvError {
-        MvError::Undefined { op, value: self.to_string(), why: why.into() }
+        MvError::Undefined { op, value: self.describe(), why: why.into() }
     }
 
     pub(super) fn one_like(&self) -> Self {

@@ -30,7 +30,7 @@ impl<T: Field> Multivector<T> {
     pub fn inverse(&self) -> Result<Self, MvError> {
         if !self.coeffs.iter().all(Ring::is_finite_value) {
             // a NaN pivot would otherwise be reported as "not invertible"
-            let (value, why) = (self.to_string(), "coefficients are not finite".to_string());
+            let (value, why) = (self.describe(), "coefficients are not finite".to_string());
             return Err(MvError::Undefined { op: "inverse", value, why });
         }
         let dim = self.algebra.dim();
@@ -49,7 +49,7 @@ impl<T: Field> Multivector<T> {
         }
         let mut rhs: Vec<T> = vec![T::zero(); dim];
         rhs[0] = T::one();
-        let y = crate::linalg::solve(l, rhs).ok_or_else(|| MvError::NotInvertible(self.to_string()))?;
+        let y = crate::linalg::solve(l, rhs).ok_or_else(|| MvError::NotInvertible(self.describe()))?;
         Ok(Multivector { algebra: self.algebra.clone(), basis: self.basis, coeffs: y })
     }
 

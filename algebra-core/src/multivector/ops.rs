@@ -135,6 +135,42 @@ impl<T: Ring> Multivector<T> {
     pub fn try_sub(&self, rhs: &Self) -> Result<Self, MvError> {
         self.zip(rhs, T::sub_ref)
     }
+
+    /// `self += rhs` in place, failing on an algebra mismatch: an accumulator is not copied,
+    /// so a sum of `n` one-term polynomials costs `O(n log n)`, not the `O(n²)` of
+    /// `acc = &acc + &y`.
+    ///
+    /// ```
+    /// use algebra_core::{Algebra, Basis, Multivector};
+    /// let alg = Algebra::builtin("g3").unwrap();
+    /// let e1 = Multivector::<f64>::basis_element(&alg, Basis::Blade, "e1").unwrap();
+    /// let mut acc = e1.clone();
+    /// acc.try_add_assign(&e1).unwrap();
+    /// acc.try_sub_assign(&Multivector::scalar(&alg, Basis::Blade, 3.0)).unwrap();
+    /// assert_eq!(acc.to_string(), "-3 + 2*e1");
+    /// ```
+    pub fn try_add_assign(&mut self, rhs: &Self) -> Result<(), MvError> {
+        self.zip_assign(rhs, T::add_assign_ref)
+    }
+    /// `self -= rhs` in place, failing on an algebra mismatch (see [`Multivector::try_add_assign`]).
+    pub fn try_sub_assign(&mut self, rhs: &Self) -> Result<(), MvError> {
+        self.zip_assign(rhs, T::sub_assign_ref)
+    }
+
+    fn zip_assign(&mut self, rhs: &Self, f: impl Fn(&mut T, &T)) -> Result<(), MvError> {
+        self.same_algebra(rhs)?;
+        let converted;
+        let rhs = if rhs.basis == self.basis {
+            rhs
+        } else {
+            converted = rhs.in_basis(self.basis);
+            &converted
+        };
+        for (a, b) in self.coeffs.iter_mut().zip(&rhs.coeffs) {
+            f(a, b);
+        }
+        Ok(())
+    }
 }
 
 macro_rules! binop {

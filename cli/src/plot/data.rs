@@ -199,7 +199,7 @@ pub(crate) fn of_motion<M: MapScalar<f64, Jet<Jet<f64>>>>(
     let degree = shape.degree;
     crate::budget::check(
         &format!("plotting {} body points of degree-{degree} segments at {n} values", body_points.len()),
-        crate::budget::sampling_work(shape.tableau, degree, n + k, 1) * body_points.len().max(1) as f64,
+        crate::budget::plotting_work(shape.tableau, degree, n + k) * body_points.len().max(1) as f64,
     )?;
     let key_times = shape.key_times;
     let (t0, t1) = (key_times[0], key_times[key_times.len() - 1]);

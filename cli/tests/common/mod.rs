@@ -42,6 +42,8 @@ pub fn one_error_line(args: &[&str], stderr: &str) -> String {
     let lines: Vec<&str> = stderr.lines().collect();
     assert_eq!(lines.len(), 1, "gam {args:?}: expected one stderr line, got {stderr:?}");
     assert!(lines[0].starts_with("error: "), "{stderr}");
+    // issue 30: an error line names the place and the reason, it does not dump values
+    assert!(lines[0].chars().count() <= 300, "gam {args:?}: an error line of {} characters", lines[0].chars().count());
     lines[0].to_string()
 }
 
@@ -86,19 +88,36 @@ impl Drop for TempFile {
 /// How long one fuzzed run may take before it counts as a hang.
 pub const TIMEOUT: std::time::Duration = std::time::Duration::from_secs(30);
 
+/// The address-space cap of every fuzzed run (`ulimit -v`, in KiB): 4 GB, so that a run that
+/// would exhaust memory fails here (as an abort or a refusal) instead of swapping the machine.
+pub const MEMORY_CAP_KIB: u64 = 4_000_000;
+
 /// Runs gam with a timeout and checks the contract; returns the exit code. Output goes to
 /// files (a full pipe would block the child while this thread waits on it).
 pub fn run_contract(args: &[&str], stdin: &[u8]) -> i32 {
+    run_capped(args, stdin, false).0
+}
+
+/// Runs gam under [`MEMORY_CAP_KIB`] and [`TIMEOUT`] and checks the contract: exit 0 with no
+/// `inf` or `NaN` in its output and no panic, or exit 1/2 with exactly one `error:` line and
+/// an empty stdout (unless `report_on_failure`: `gam prove` and `gam verify` print their
+/// report, then the error line); never a signal (an abort, an allocation failure under the
+/// cap) or a timeout. Returns the exit code and stdout.
+pub fn run_capped(args: &[&str], stdin: &[u8], report_on_failure: bool) -> (i32, String) {
     static COUNTER: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
     let k = COUNTER.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
     let (out_file, err_file) = (TempFile::empty(&format!("fuzz-out-{k}")), TempFile::empty(&format!("fuzz-err-{k}")));
-    let mut child = Command::new(env!("CARGO_BIN_EXE_gam"))
+    // `exec`: the shell becomes gam, so the kill below reaches it
+    let mut child = Command::new("sh")
+        .arg("-c")
+        .arg(format!("ulimit -v {MEMORY_CAP_KIB} && exec \"$0\" \"$@\""))
+        .arg(env!("CARGO_BIN_EXE_gam"))
         .args(args)
         .stdin(Stdio::piped())
         .stdout(std::fs::File::create(out_file.path()).expect("stdout file"))
         .stderr(std::fs::File::create(err_file.path()).expect("stderr file"))
         .spawn()
-        .expect("run gam");
+        .expect("run gam under sh");
     let mut input = child.stdin.take().expect("stdin");
     let _ = input.write_all(stdin);
     drop(input);
@@ -114,18 +133,34 @@ pub fn run_contract(args: &[&str], stdin: &[u8]) -> i32 {
         }
         std::thread::sleep(Duration::from_millis(2));
     };
-    let stdout = std::fs::read(out_file.path()).expect("stdout");
+    let stdout = String::from_utf8_lossy(&std::fs::read(out_file.path()).expect("stdout")).into_owned();
     let stderr = std::fs::read_to_string(err_file.path()).expect("stderr");
     let code = status.code().unwrap_or_else(|| panic!("gam {args:?} was killed by a signal: {stderr}"));
     match code {
         0 => assert!(!stderr.contains("panicked"), "{stderr}"),
         1 | 2 => {
             one_error_line(args, &stderr);
-            assert!(stdout.is_empty(), "gam {args:?} failed but printed to stdout");
+            assert!(stdout.is_empty() || report_on_failure, "gam {args:?} failed but printed to stdout");
         }
         _ => panic!("gam {args:?}: exit {code}: {stderr}"),
     }
-    code
+    // (generated source code and the algebras' descriptions are text, not numbers: `f64::NAN`
+    // may be in the one, the generator label `inf` in the other)
+    let text = args.first() == Some(&"algebras") || (args.first() == Some(&"codegen") && !args.contains(&"stats"));
+    if !text {
+        assert_no_non_finite(args, &stdout);
+    }
+    (code, stdout)
+}
+
+/// No `inf`, `-inf`, `NaN` or `nan` token in `text` (names such as `einf`, `e1inf` are one
+/// token and pass).
+pub fn assert_no_non_finite(args: &[&str], text: &str) {
+    let bad = text.split(|c: char| !(c.is_ascii_alphanumeric() || c == '_')).find(|t| {
+        let t = t.to_ascii_lowercase();
+        t == "inf" || t == "nan"
+    });
+    assert!(bad.is_none(), "gam {args:?} printed {bad:?}: {}", &text[..text.len().min(400)]);
 }
 
 /// A JSON 4x4 matrix (the `matrix` of `gam pose` and of the samples of `gam interpolate`).

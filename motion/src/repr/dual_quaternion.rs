@@ -47,11 +47,11 @@ pub fn study_residual<T: Ring>(q: &DualQuaternion<T>) -> T {
 /// assert_eq!(motion::repr::dual_quaternion::study_cosine(&q), 1.0);
 /// ```
 pub fn study_cosine<T: Real>(q: &DualQuaternion<T>) -> T {
-    let r = Real::sqrt(&q.real.norm_squared());
-    let d = Real::sqrt(&q.dual.norm_squared());
-    let den = r.mul_ref(&d);
-    match den.try_recip() {
-        Some(inv) if !den.is_exact_zero() => study_residual(q).mul_ref(&inv),
+    // the dot product of the two directions, so that no square under- or overflows (a dual
+    // quaternion of size 1e-200 or 1e200 has the cosine of its unit multiple, issue 30)
+    let parts = |x: &Quaternion<T>| [x.w.clone(), x.x.clone(), x.y.clone(), x.z.clone()];
+    match (crate::scaled::direction(&parts(&q.real)), crate::scaled::direction(&parts(&q.dual))) {
+        (Some(r), Some(d)) => r.iter().zip(&d).fold(T::zero(), |acc, (a, b)| acc.add_ref(&a.mul_ref(b))),
         _ => T::zero(),
     }
 }
@@ -274,7 +274,8 @@ pub fn from_dual_quaternion<T: Real>(q: &DualQuaternion<T>, tol: &T) -> Result<P
     if q.coeffs().iter().any(|x| !Real::is_finite(x)) {
         return Err(ReprError::NotFinite);
     }
-    if q.real.norm_squared().is_exact_zero() {
+    // zero means every component zero: |Q⁰|² of a real part of size 1e-200 underflows to 0
+    if [&q.real.w, &q.real.x, &q.real.y, &q.real.z].into_iter().all(Ring::is_exact_zero) {
         return Err(ReprError::ZeroRealPart);
     }
     let cosine = study_cosine(q);
