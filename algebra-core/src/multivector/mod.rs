@@ -481,6 +481,17 @@ impl<T: Ring> Multivector<T> {
             })
         }
     }
+
+    /// `rhs` as the other operand of an operation of `self`: checked to belong to the same
+    /// algebra, and in `self`'s basis (borrowed when it already is).
+    pub(crate) fn operand<'a>(&self, rhs: &'a Self) -> Result<std::borrow::Cow<'a, Self>, MvError> {
+        self.same_algebra(rhs)?;
+        Ok(if rhs.basis == self.basis {
+            std::borrow::Cow::Borrowed(rhs)
+        } else {
+            std::borrow::Cow::Owned(rhs.in_basis(self.basis))
+        })
+    }
 }
 
 impl<T: Ring> PartialEq for Multivector<T> {

@@ -17,14 +17,7 @@ impl<T: Ring> Multivector<T> {
     /// assert_eq!(e0.try_product(&einf, Product::Scalar).unwrap().to_string(), "-1");
     /// ```
     pub fn try_product(&self, rhs: &Self, product: Product) -> Result<Self, MvError> {
-        self.same_algebra(rhs)?;
-        let converted;
-        let rhs = if rhs.basis == self.basis {
-            rhs
-        } else {
-            converted = rhs.in_basis(self.basis);
-            &converted
-        };
+        let rhs = &*self.operand(rhs)?;
         let table = self.algebra.tables().product(self.basis, product);
         let mut out = Self::zero(&self.algebra, self.basis);
         for (a, x) in self.coeffs.iter().enumerate() {
@@ -121,8 +114,7 @@ impl<T: Ring> Multivector<T> {
     }
 
     fn zip(&self, rhs: &Self, f: impl Fn(&T, &T) -> T) -> Result<Self, MvError> {
-        self.same_algebra(rhs)?;
-        let rhs = rhs.in_basis(self.basis);
+        let rhs = self.operand(rhs)?;
         let coeffs = self.coeffs.iter().zip(&rhs.coeffs).map(|(a, b)| f(a, b)).collect();
         Ok(Multivector { algebra: self.algebra.clone(), basis: self.basis, coeffs })
     }
@@ -158,14 +150,7 @@ impl<T: Ring> Multivector<T> {
     }
 
     fn zip_assign(&mut self, rhs: &Self, f: impl Fn(&mut T, &T)) -> Result<(), MvError> {
-        self.same_algebra(rhs)?;
-        let converted;
-        let rhs = if rhs.basis == self.basis {
-            rhs
-        } else {
-            converted = rhs.in_basis(self.basis);
-            &converted
-        };
+        let rhs = self.operand(rhs)?;
         for (a, b) in self.coeffs.iter_mut().zip(&rhs.coeffs) {
             f(a, b);
         }

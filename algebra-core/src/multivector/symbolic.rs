@@ -122,8 +122,7 @@ impl Multivector<Poly> {
     /// assert_eq!(v.product_terms(&v, Product::Geometric).unwrap(), 9);
     /// ```
     pub fn product_terms(&self, rhs: &Self, product: Product) -> Result<u128, MvError> {
-        self.same_algebra(rhs)?;
-        let rhs = rhs.in_basis(self.basis);
+        let rhs = self.operand(rhs)?;
         let table = self.algebra.tables().product(self.basis, product);
         let mut total = 0u128;
         for (a, x) in self.coeffs.iter().enumerate().filter(|(_, x)| !x.is_exact_zero()) {
