@@ -366,16 +366,7 @@ fn main() {
     println!("{}", kernels::Motor::<f64>::zero().normalize().unwrap_err());
 }
 "#;
-    std::fs::write(dir.join("main.rs"), main).unwrap();
-    let rustc = std::process::Command::new("rustc")
-        .args(["--edition", "2024", "-D", "warnings", "-O", "-o"])
-        .arg(dir.join("run"))
-        .arg(dir.join("main.rs"))
-        .output()
-        .expect("rustc runs");
-    assert!(rustc.status.success(), "{}", String::from_utf8_lossy(&rustc.stderr));
-    let run = std::process::Command::new(dir.join("run")).output().expect("the program runs");
-    let text = String::from_utf8(run.stdout).unwrap();
+    let text = compile_and_run(&dir, main, &["-O"]);
     let mut lines = text.lines();
     for angle in [std::f64::consts::FRAC_PI_2, 0.7, 1e-9] {
         let v: Vec<f64> = lines.next().unwrap().split_whitespace().map(|x| x.parse().unwrap()).collect();
@@ -471,17 +462,7 @@ fn main() {
     println!("ok");
 }
 "#;
-    std::fs::write(dir.join("main.rs"), main).unwrap();
-    let rustc = std::process::Command::new("rustc")
-        .args(["--edition", "2024", "-D", "warnings", "-o"])
-        .arg(dir.join("run"))
-        .arg(dir.join("main.rs"))
-        .output()
-        .expect("rustc runs");
-    assert!(rustc.status.success(), "{}", String::from_utf8_lossy(&rustc.stderr));
-    let run = std::process::Command::new(dir.join("run")).output().expect("the program runs");
-    assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stderr));
-    let text = String::from_utf8(run.stdout).unwrap();
+    let text = compile_and_run(&dir, main, &[]);
     let mut rows = text.lines();
     // by hand: the rotation matrix of θ about n (Rodrigues), then + t
     let (theta, n, t) = (0.9_f64, [2.0_f64, -1.0, 2.0].map(|c| c / 3.0), [0.5_f64, -1.25, 2.0]);
@@ -512,4 +493,22 @@ fn main() {
     assert!(roundtrip <= 1e-12, "exp(log(m)) - m: {roundtrip}");
     assert_eq!(rows.next(), Some("ok"), "{text}");
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Writes `main` as `dir/main.rs`, compiles it with rustc alone (`-D warnings`, plus `flags`),
+/// runs it and returns its standard output; fails the test if either step fails.
+fn compile_and_run(dir: &std::path::Path, main: &str, flags: &[&str]) -> String {
+    std::fs::write(dir.join("main.rs"), main).unwrap();
+    let rustc = std::process::Command::new("rustc")
+        .args(["--edition", "2024", "-D", "warnings"])
+        .args(flags)
+        .arg("-o")
+        .arg(dir.join("run"))
+        .arg(dir.join("main.rs"))
+        .output()
+        .expect("rustc runs");
+    assert!(rustc.status.success(), "{}", String::from_utf8_lossy(&rustc.stderr));
+    let run = std::process::Command::new(dir.join("run")).output().expect("the program runs");
+    assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stderr));
+    String::from_utf8(run.stdout).unwrap()
 }
