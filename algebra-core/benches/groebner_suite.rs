@@ -6,7 +6,8 @@
 //! Every ideal is also written to `target/groebner-suite/NAME.sing` (Singular's input
 //! language) and `NAME.py` (sympy), so the comparison can be rerun by hand. Run it with
 //! `tests/bench/groebner-suite.sh` (installs Singular where missing), or
-//! `cargo bench -p algebra-core --features rug --bench groebner_suite [-- NAME...]`.
+//! `cargo bench -p algebra-core --features rug --bench groebner_suite [-- NAME...]`; with
+//! `--gam-only` it times GAM alone (A/B runs of the engine).
 #![allow(missing_docs)]
 
 use algebra_core::ideal::{Budget, MonomialOrder, PolyRing};
@@ -239,7 +240,9 @@ fn main() {
     let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../target/groebner-suite");
     std::fs::create_dir_all(&dir).expect("output directory");
     let budget = Budget { time: Some(Duration::from_secs(120)), ..Budget::default() };
-    let singular = Command::new("Singular").arg("--version").output().is_ok();
+    // `--gam-only`: GAM's times alone (A/B runs of the engine), no Singular or sympy
+    let gam_only = std::env::args().any(|a| a == "--gam-only");
+    let singular = !gam_only && Command::new("Singular").arg("--version").output().is_ok();
     println!("ideal          vars gens basis  GAM ms      Singular ms  GAM/Singular  sympy ms     sympy/GAM");
     for ideal in suite().into_iter().filter(|i| filter.is_empty() || filter.iter().any(|f| i.name.contains(f.as_str())))
     {
@@ -254,8 +257,7 @@ fn main() {
                 external(c, "SINGULAR", Duration::from_secs(300))
             })
             .flatten();
-        let sympy = ideal
-            .sympy
+        let sympy = (ideal.sympy && !gam_only)
             .then(|| {
                 let mut c = Command::new("python3");
                 c.arg(&py_file);

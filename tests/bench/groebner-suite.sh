@@ -3,7 +3,8 @@
 # Installs Singular (Debian package `singular`) and sympy where missing; never run in CI.
 # Writes each ideal to target/groebner-suite/NAME.sing and NAME.py, then prints one table of
 # GAM's in-process time, Singular's rtimer time, sympy's time and the ratios, all in one run.
-# Usage: tests/bench/groebner-suite.sh [NAME...]
+# Usage: tests/bench/groebner-suite.sh [NAME...] [--gam-only]
+# (--gam-only: GAM's times alone, for A/B runs of the engine; Singular and sympy are skipped)
 set -eu
 cd "$(dirname "$0")/../.."
 if ! command -v Singular >/dev/null 2>&1; then
