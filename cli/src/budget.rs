@@ -199,8 +199,14 @@ impl Tableau {
 /// assert_eq!(sampling_work(Tableau::Slerp, 3, 100, 2), 200.0 * (16.0 * 0.45 + 25.0));
 /// ```
 pub fn sampling_work(tableau: Tableau, degree: usize, samples: usize, passes: usize) -> f64 {
+    evaluation_work(tableau, degree, passes * samples, 1.0)
+}
+
+/// `evaluations × (e × entry_factor × (degree + 1)² + s)`: the one formula of
+/// [`sampling_work`] and [`plotting_work`].
+fn evaluation_work(tableau: Tableau, degree: usize, evaluations: usize, entry_factor: f64) -> f64 {
     let d = degree as f64 + 1.0;
-    (passes * samples) as f64 * (tableau.units_per_entry() * d * d + tableau.units_per_sample())
+    evaluations as f64 * (tableau.units_per_entry() * entry_factor * d * d + tableau.units_per_sample())
 }
 
 /// How much more a tableau entry costs over the second-order dual numbers of `gam plot` (its
@@ -217,8 +223,7 @@ pub const SECOND_ORDER_ENTRY_FACTOR: f64 = 2.7;
 /// assert_eq!(plotting_work(Tableau::Slerp, 3, 100), 100.0 * (16.0 * 0.45 * 2.7 + 25.0));
 /// ```
 pub fn plotting_work(tableau: Tableau, degree: usize, samples: usize) -> f64 {
-    let d = degree as f64 + 1.0;
-    samples as f64 * (tableau.units_per_entry() * SECOND_ORDER_ENTRY_FACTOR * d * d + tableau.units_per_sample())
+    evaluation_work(tableau, degree, samples, SECOND_ORDER_ENTRY_FACTOR)
 }
 
 /// The work of building one of Jüttler's global interpolants (`juttler-q-motion`,

@@ -178,7 +178,6 @@ fn build_error(label: &str, spec: &InterpolateSpec<Exact>, source: BuildError) -
     schema_error(label, SchemaError::Build { method: spec.method, source })
 }
 
-/// The budget of a global interpolant, as for f64.
 /// The budget of building a spec's motion in `scalar`: the global interpolants as in f64
 /// ([`crate::budget::global_build_work`]), and `juttler-bspline`'s dense collocation (`50 m³`
 /// units), times [`MotionScalar::cost_factor`].
