@@ -248,3 +248,15 @@ pub fn curve_end(seg: &serde_json::Value, at_end: bool) -> Vec<algebra_core::rat
     });
     p[a].iter().cloned().chain(rates).collect()
 }
+
+/// The segments of `gam trajectory --json --scalar rational SPEC --point POINT`, after checking
+/// with [`curve_end`] that the rational curve is exactly C1 at every break.
+pub fn exact_c1_segments(spec: &str, point: &str) -> Vec<serde_json::Value> {
+    let out = ok(&["trajectory", "--json", "--scalar", "rational", spec, "--point", point]);
+    let tr: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let segs = tr["segments"].as_array().unwrap().clone();
+    for (k, w) in segs.windows(2).enumerate() {
+        assert_eq!(curve_end(&w[0], true), curve_end(&w[1], false), "not C1 at break {}", k + 1);
+    }
+    segs
+}
