@@ -182,7 +182,11 @@ pub fn file_with(plan: &Plan, header: &[String], nest: Option<&str>, selection: 
         }
     }
     let closed = !used.is_empty();
+    let tables = file.items.iter().any(|item| item.to_token_stream().to_string().contains("self :: kernels :: "));
     file.items.extend(shared_items(closed, &used, selection)?);
+    if tables {
+        file.items.push(kernels_module()?);
+    }
     let support: syn::File = syn::parse_str(SUPPORT)?;
     file.items.extend(support.items);
     if closed {
@@ -492,8 +496,8 @@ const VALUE_TRAITS: [&str; 13] = [
 ];
 
 /// The inherent methods `value_type!` writes (besides the basis elements).
-const VALUE_METHODS: [&str; 9] =
-    ["new", "zero", "one", "scale", "to_array", "into_array", "from_array", "iter", "iter_mut"];
+const VALUE_METHODS: [&str; 10] =
+    ["new", "zero", "one", "scale", "to_array", "into_array", "from_array", "each_ref", "iter", "iter_mut"];
 
 /// The product operators `product_operators!` writes: the operator trait, its method, its
 /// symbol (for the invocation's `Lhs * Rhs = Out`), the product trait and its method.
@@ -934,6 +938,28 @@ fn shared_items(closed: bool, used: &BTreeSet<String>, selection: &Selection) ->
         items.push(closed_form_module(used)?);
     }
     Ok(items)
+}
+
+/// The loops of the table-driven kernels (algebra-core's `kernels`), for files holding kernels
+/// above the size threshold or over the types a module adds ([`crate::size::table_driven`]).
+fn kernels_module() -> syn::Result<syn::Item> {
+    let mut body = Vec::new();
+    for mut item in syn::parse_str::<syn::File>(algebra_core::sources::KERNELS)?.items {
+        match &mut item {
+            syn::Item::Use(_) => continue,
+            // the doc examples name algebra-core
+            syn::Item::Fn(f) => set_doc(&mut f.attrs, &format!(" algebra-core's `kernels::{}`.", f.sig.ident)),
+            _ => {}
+        }
+        body.push(item);
+    }
+    Ok(parse_quote! {
+        /// The loops of the table-driven kernels (algebra-core's `kernels`).
+        pub mod kernels {
+            use super::Ring;
+            #(#body)*
+        }
+    })
 }
 
 /// `Real` for `f32` and `f64` through std (the closed forms' scalar functions), as the macro

@@ -21,6 +21,7 @@ pub mod closed_form;
 mod closed_form_inv;
 #[cfg(feature = "rug")]
 pub mod ideal;
+pub mod kernels;
 pub mod linalg;
 pub mod metric;
 pub mod multivector;
@@ -47,8 +48,8 @@ pub use scalar::{MpFloat, MpRational, PrecisionGuard, default_precision, set_def
 pub use symbol::Symbolic;
 pub use tables::{Product, Tables, Unary};
 
-/// The source text of the product traits, the scalar traits, the solver, the printing helper and the
-/// closed-form factors, which
+/// The source text of the product traits, the scalar traits, the solver, the printing helper, the
+/// table-driven kernels' loops and the closed-form factors, which
 /// `gam codegen --standalone` inlines (reduced) into its dependency-free files, so that those
 /// files and this crate share one definition. Not a stable API.
 #[doc(hidden)]
@@ -65,4 +66,6 @@ pub mod sources {
     pub const CLOSED_FORM: &str = include_str!("closed_form.rs");
     /// `closed_form_inv.rs`.
     pub const CLOSED_FORM_INV: &str = include_str!("closed_form_inv.rs");
+    /// `kernels.rs`.
+    pub const KERNELS: &str = include_str!("kernels.rs");
 }

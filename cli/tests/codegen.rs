@@ -133,6 +133,24 @@ fn fallback_full_turns_the_parity_types_off() {
 /// `--table-above N` is the DSL's `table_above N;`: the 48-term g123inf motor product is
 /// straight-line code under the default and a table loop when the threshold is below 48; the
 /// header's regeneration command keeps the option; a bad value is a usage error.
+/// The number of bytes of the byte-string literal `text` starts with (after its `b"`), as Rust
+/// escapes it (`\x01`, `\0`, `\n`, `\"`, printable ASCII).
+fn byte_string_len(text: &str) -> usize {
+    let mut n = 0;
+    let mut chars = text.chars();
+    while let Some(c) = chars.next() {
+        match c {
+            '"' => return n,
+            '\\' if chars.next() == Some('x') => {
+                chars.nth(1);
+            }
+            _ => {}
+        }
+        n += 1;
+    }
+    panic!("an unterminated byte string: {text}")
+}
+
 #[test]
 fn table_above_sets_the_size_policy() {
     let motor_product = |extra: &[&str]| {
@@ -146,11 +164,14 @@ fn table_above_sets_the_size_policy() {
         (source[..source.find("pub use").unwrap()].to_string(), source[start..end].to_string())
     };
     let (_, default) = motor_product(&[]);
-    assert!(!default.contains("TERMS"), "{default}");
+    assert!(!default.contains("bilinear"), "{default}");
     let (_, at_48) = motor_product(&["--table-above", "48"]);
     assert_eq!(at_48, default);
     let (header, at_47) = motor_product(&["--table-above", "47"]);
-    assert!(at_47.contains("const TERMS: [(u16, u16, u16); 48usize]"), "{at_47}");
+    // the 48 terms as one packed table: three two-byte numbers per term
+    assert!(at_47.contains("kernels::bilinear::<") && at_47.contains("8usize,"), "{at_47}");
+    let table = &at_47[at_47.find("b\"").unwrap() + 2..];
+    assert_eq!(byte_string_len(table), 48 * 6, "{at_47}");
     assert!(header.contains("--table-above 47"), "{header}");
     for bad in ["many", "-1", "1.5"] {
         let out = gam(&["codegen", "--algebra", "g3", "--types", "Vector=grade1", "--table-above", bad]);

@@ -69,6 +69,8 @@ pub(super) struct Names {
     pub(super) signs: Vec<Vec<i64>>,
     /// The size policy's threshold ([`crate::ModuleSpec::table_above`]).
     pub(super) table_above: usize,
+    /// How many types the user declared ([`Plan::declared`]); the others are automatic.
+    pub(super) declared: usize,
 }
 
 impl Names {
@@ -79,7 +81,12 @@ impl Names {
         let fields = elements.iter().map(|es| es.iter().map(|e| ident(&field_name(e))).collect()).collect();
         let masks = plan.spec.types.iter().map(|t| t.elements.clone()).collect();
         let signs = plan.spec.types.iter().map(crate::TypeSpec::signs).collect();
-        Names { types, fields, elements, masks, signs, table_above: plan.spec.table_above }
+        Names { types, fields, elements, masks, signs, table_above: plan.spec.table_above, declared: plan.declared }
+    }
+
+    /// Whether a kernel over these types is table-driven ([`crate::size::table_driven`]).
+    pub(super) fn is_large<I: IntoIterator<Item = usize>>(&self, types: &[usize], lens: I) -> bool {
+        crate::size::table_driven(self.table_above, self.declared, types, lens)
     }
 
     /// `expr` (a `T` place), cloned, negated when `sign` is `-1`.
@@ -523,7 +530,7 @@ fn inverse_method(plan: &Plan, names: &Names, i: usize) -> TokenStream {
             entries.entry((row, t.rhs)).or_default().push((t.coef, quote!(self.#f), false));
         }
     }
-    let large = crate::size::is_large(names.table_above, k.outputs.iter().map(Vec::len));
+    let large = names.is_large(&[i], k.outputs.iter().map(Vec::len));
     let fill = if large {
         let mut flat = Vec::new();
         for (ko, terms) in k.outputs.iter().enumerate() {
@@ -557,9 +564,10 @@ fn inverse_method(plan: &Plan, names: &Names, i: usize) -> TokenStream {
     }
 }
 
-/// The body of a binary kernel: straight-line code, or a table loop above the size threshold.
-fn kernel_body(names: &Names, k: &BinaryKernel) -> TokenStream {
-    if crate::size::is_large(names.table_above, k.outputs.iter().map(Vec::len)) {
+/// The body of a binary kernel: straight-line code, or a table loop above the size threshold
+/// or over an automatic type among `types` ([`Names::is_large`]).
+fn kernel_body(names: &Names, k: &BinaryKernel, types: &[usize]) -> TokenStream {
+    if names.is_large(types, k.outputs.iter().map(Vec::len)) {
         return size::binary_body(names, k);
     }
     let (lf, rf, of) = (&names.fields[k.lhs], &names.fields[k.rhs], &names.fields[k.out]);
@@ -614,7 +622,9 @@ fn binary_items(names: &Names, k: &BinaryKernel) -> TokenStream {
         }
     });
     let mixed = value::mixed_operators(names, k);
-    let body = kernel_body(names, k);
+    // a product of declared types stays straight-line when it lands in an automatic type
+    // (`Motor * Plane` in an odd type the plan added)
+    let body = kernel_body(names, k, &[k.lhs, k.rhs]);
     let typed = if k.product == Product::Geometric {
         // `gp_into` with the natural output type is `gp` itself
         quote! {
@@ -643,7 +653,7 @@ fn binary_items(names: &Names, k: &BinaryKernel) -> TokenStream {
 /// An output-typed geometric product (`GeometricProductInto<Rhs, Out>`): only `Out`'s terms.
 fn typed_items(names: &Names, k: &BinaryKernel) -> TokenStream {
     let (lt, rt, ot) = (&names.types[k.lhs], &names.types[k.rhs], &names.types[k.out]);
-    let body = kernel_body(names, k);
+    let body = kernel_body(names, k, &[k.lhs, k.rhs, k.out]);
     quote! {
         impl<T: __gam_engine::Ring> __gam_engine::ops::GeometricProductInto<#rt<T>, #ot<T>> for #lt<T> {
             #[inline]

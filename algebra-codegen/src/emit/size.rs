@@ -5,74 +5,60 @@ use crate::ratio::Ratio;
 use proc_macro2::TokenStream;
 use quote::quote;
 
-/// `out[k] = Σ c · a[i] · b[j]` over the `(i, j, k, c)` in `terms`, as a loop over constant
-/// tables. `a` and `b` are arrays of `&T` already in scope (named by the given tokens); the
-/// result is bound to `out_name` as `[T; n_out]`.
-///
-/// The terms are grouped by output (`STARTS[k]..STARTS[k + 1]`), each output summed in four
-/// interleaved accumulators held in locals (four independent addition chains instead of one
-/// chain through memory), and the constants other than ±1 converted with `T::from_ratio` once
-/// per call (`COEFS`), not once per term. Over exact scalars the result is the same sum.
+/// The coefficient codes of a term table: 0 is `+1`, 1 is `-1`, `2 + n` is the `n`-th of the
+/// returned constants (each listed once).
+fn codes(coefs: impl Iterator<Item = Ratio>) -> (Vec<u16>, Vec<Ratio>) {
+    let mut distinct: Vec<Ratio> = Vec::new();
+    let codes = coefs
+        .map(|c| match c {
+            (1, 1) => 0,
+            (-1, 1) => 1,
+            c => {
+                let n = distinct.iter().position(|x| *x == c).unwrap_or_else(|| {
+                    distinct.push(c);
+                    distinct.len() - 1
+                });
+                (2 + n) as u16
+            }
+        })
+        .collect();
+    (codes, distinct)
+}
+
+/// Numbers as one byte-string literal, two little-endian bytes each: the form the engine's
+/// `kernels` functions read. One token for a whole table, which rustc reads far faster than an
+/// array of tuples (docs/performance.md, "Rebuilding a crate that declares an algebra").
+fn packed(values: impl IntoIterator<Item = usize>) -> proc_macro2::Literal {
+    let bytes: Vec<u8> = values
+        .into_iter()
+        .flat_map(|v| u16::try_from(v).expect("a kernel table index fits in 16 bits").to_le_bytes())
+        .collect();
+    proc_macro2::Literal::byte_string(&bytes)
+}
+
+/// The constants of a table as `&[(num, den), ...]`.
+fn constants(coefs: &[Ratio]) -> TokenStream {
+    let rows = coefs.iter().map(|&(num, den)| quote!((#num, #den)));
+    quote!(&[#(#rows),*])
+}
+
+/// `[T; n_out]` with `out[k] = Σ c · a[i] · b[j]` over the `(i, j, k, c)` in `terms`: a call of
+/// the engine's `kernels::bilinear` on a packed term table (grouped by output; four interleaved
+/// accumulators; the constants other than ±1 converted once per call). `a` and `b` are
+/// expressions of type `[&T; _]`. Over exact scalars the result is the same sum.
 pub(crate) fn table_loop(
     terms: &[(usize, usize, usize, Ratio)],
     a: &TokenStream,
     b: &TokenStream,
-    out_name: &TokenStream,
     n_out: usize,
 ) -> TokenStream {
     let mut sorted = terms.to_vec();
     sorted.sort_by_key(|t| t.2);
-    let mut coefs: Vec<Ratio> = Vec::new();
-    let rows: Vec<TokenStream> = sorted
-        .iter()
-        .map(|&(i, j, _, c)| {
-            // 0: +1, 1: -1, 2 + n: COEFS[n]
-            let code = match c {
-                (1, 1) => 0,
-                (-1, 1) => 1,
-                c => {
-                    2 + coefs.iter().position(|x| *x == c).unwrap_or_else(|| {
-                        coefs.push(c);
-                        coefs.len() - 1
-                    })
-                }
-            };
-            let (i, j, code) = (i as u16, j as u16, code as u16);
-            quote!((#i, #j, #code))
-        })
-        .collect();
-    let starts: Vec<u16> = (0..=n_out).map(|k| sorted.iter().take_while(|t| t.2 < k).count() as u16).collect();
-    let (n, nc, n1) = (sorted.len(), coefs.len(), n_out + 1);
-    let coef_rows = coefs.iter().map(|&(num, den)| quote!((#num, #den)));
-    quote! {
-        const TERMS: [(u16, u16, u16); #n] = [#(#rows),*];
-        const STARTS: [u16; #n1] = [#(#starts),*];
-        const COEFS: [(i64, i64); #nc] = [#(#coef_rows),*];
-        let coefs: [T; #nc] = ::core::array::from_fn(|c| T::from_ratio(COEFS[c].0, COEFS[c].1));
-        let term = |acc: &mut T, &(i, j, c): &(u16, u16, u16)| {
-            let p = #a[i as usize].mul_ref(#b[j as usize]);
-            match c {
-                0 => acc.add_assign_ref(&p),
-                1 => acc.sub_assign_ref(&p),
-                _ => acc.add_assign_ref(&coefs[c as usize - 2].mul_ref(&p)),
-            }
-        };
-        let #out_name: [T; #n_out] = ::core::array::from_fn(|k| {
-            let terms = &TERMS[STARTS[k] as usize..STARTS[k + 1] as usize];
-            let (mut a0, mut a1, mut a2, mut a3) = (T::zero(), T::zero(), T::zero(), T::zero());
-            let mut quads = terms.chunks_exact(4);
-            for q in &mut quads {
-                term(&mut a0, &q[0]);
-                term(&mut a1, &q[1]);
-                term(&mut a2, &q[2]);
-                term(&mut a3, &q[3]);
-            }
-            for r in quads.remainder() {
-                term(&mut a0, r);
-            }
-            a0.add_ref(&a1).add_ref(&a2.add_ref(&a3))
-        });
-    }
+    let (codes, coefs) = codes(sorted.iter().map(|t| t.3));
+    let table = packed(sorted.iter().zip(&codes).flat_map(|(&(i, j, _, _), &c)| [i, j, usize::from(c)]));
+    let starts = packed((0..=n_out).map(|k| sorted.iter().take_while(|t| t.2 < k).count()));
+    let coefs = constants(&coefs);
+    quote!(__gam_engine::kernels::bilinear::<T, #n_out, _>(&#a, &#b, #table, #starts, #coefs))
 }
 
 /// `[&recv.f0, &recv.f1, ...]`.
@@ -84,16 +70,19 @@ pub(crate) fn refs(recv: TokenStream, fields: &[proc_macro2::Ident]) -> TokenStr
 pub(crate) fn binary_body(names: &super::Names, k: &crate::plan::BinaryKernel) -> TokenStream {
     let terms: Vec<(usize, usize, usize, Ratio)> =
         k.outputs.iter().enumerate().flat_map(|(o, ts)| ts.iter().map(move |t| (t.lhs, t.rhs, o, t.coef))).collect();
-    let a = refs(quote!(self), &names.fields[k.lhs]);
-    let b = refs(quote!(rhs), &names.fields[k.rhs]);
     let ot = &names.types[k.out];
-    let body = table_loop(&terms, &quote!(a), &quote!(b), &quote!(out), names.fields[k.out].len());
-    quote! {
-        let a = #a;
-        let b = #b;
-        #body
-        #ot::from_array(out)
-    }
+    let out = table_loop(&terms, &quote!(self.each_ref()), &quote!(rhs.each_ref()), names.fields[k.out].len());
+    quote!(#ot::from_array(#out))
+}
+
+/// The table of an action matrix ([`crate::matrix::MatrixKernel`]): `M[j][b] += c · v[a] ·
+/// v[a2]` for every `(j, b, a, a2, c)`, as a call of the engine's `kernels::quadratic` on
+/// `self`'s coefficients.
+pub(crate) fn quadratic(entries: &[(usize, usize, usize, usize, Ratio)], n: usize) -> TokenStream {
+    let (codes, coefs) = codes(entries.iter().map(|e| e.4));
+    let table = packed(entries.iter().zip(&codes).flat_map(|(&(j, b, a, a2, _), &c)| [j, b, a, a2, usize::from(c)]));
+    let coefs = constants(&coefs);
+    quote!(__gam_engine::kernels::quadratic::<T, #n, _>(&self.each_ref(), #table, #coefs))
 }
 
 /// The matrix of `y ↦ self * y` inside a closed type, filled by a loop: `l[row][col] += c ·

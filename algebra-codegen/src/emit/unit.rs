@@ -23,9 +23,7 @@ fn unit_items(
 ) -> TokenStream {
     let (v, x) = (sandwich.kernel.versor, sandwich.kernel.operand);
     let (vt, xt) = (&names.types[v], &names.types[x]);
-    let large = |u: &UnitKernel| {
-        crate::size::is_large(names.table_above, u.kernel.stage1.iter().chain(&u.kernel.stage2).map(Vec::len))
-    };
+    let large = |u: &UnitKernel| names.is_large(&[v, x], u.kernel.stage1.iter().chain(&u.kernel.stage2).map(Vec::len));
     let body = |u: &UnitKernel, proof: Option<&ConstrainedKernel>, op: KernelOp, general: TokenStream| match proof
         .filter(|k| reduced_is_cheaper(spec, u, k))
     {

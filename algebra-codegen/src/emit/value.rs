@@ -70,6 +70,9 @@ pub(super) fn type_items(names: &Names, i: usize) -> TokenStream {
                 #ty { #(#fields),* }
             }
 
+            /// References to the coefficients, in the order of [`Self::ELEMENTS`].
+            pub fn each_ref(&self) -> [&T; #n] { [#(&self.#fields),*] }
+
             /// An iterator over references to the coefficients, in the order of [`Self::ELEMENTS`].
             pub fn iter(&self) -> ::core::array::IntoIter<&T, #n> { [#(&self.#fields),*].into_iter() }
 

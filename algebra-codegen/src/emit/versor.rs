@@ -23,7 +23,7 @@ pub(crate) fn action_items(names: &Names, k: &ActionKernel) -> TokenStream {
     let (trait_name, method) = names_of(k.convention);
     // straight-line kernels are always inlined: LLVM declined the `#[inline]` hint for the
     // conformal point action, and the call cost 7 % (1.38 → 1.31 × the motor product)
-    let large = crate::size::is_large(names.table_above, k.stage1.iter().chain(&k.stage2).map(Vec::len));
+    let large = names.is_large(&[k.versor, k.operand], k.stage1.iter().chain(&k.stage2).map(Vec::len));
     let (body, inline) = if large {
         (table_body(names, k), quote!(#[inline]))
     } else {
@@ -59,18 +59,13 @@ fn table_body(names: &Names, k: &ActionKernel) -> TokenStream {
     let flat = |stage: &[Vec<(usize, usize, Ratio)>]| -> Vec<(usize, usize, usize, Ratio)> {
         stage.iter().enumerate().flat_map(|(o, ts)| ts.iter().map(move |&(i, j, c)| (i, j, o, c))).collect()
     };
-    let (vf, xf, xt) = (&names.fields[k.versor], &names.fields[k.operand], &names.types[k.operand]);
-    let s = super::size::refs(quote!(self), vf);
-    let x = super::size::refs(quote!(x), xf);
-    let stage1 = super::size::table_loop(&flat(&k.stage1), &quote!(s), &quote!(x), &quote!(t), k.stage1.len());
-    let stage2 = super::size::table_loop(&flat(&k.stage2), &quote!(tr), &quote!(s), &quote!(out), xf.len());
+    let (xf, xt) = (&names.fields[k.operand], &names.types[k.operand]);
+    let stage1 = super::size::table_loop(&flat(&k.stage1), &quote!(s), &quote!(x.each_ref()), k.stage1.len());
+    let stage2 = super::size::table_loop(&flat(&k.stage2), &quote!(t.each_ref()), &quote!(s), xf.len());
     quote! {
-        let s = #s;
-        let x = #x;
-        let t = { #stage1 t };
-        let tr = t.each_ref();
-        let out = { #stage2 out };
-        #xt::from_array(out)
+        let s = self.each_ref();
+        let t = #stage1;
+        #xt::from_array(#stage2)
     }
 }
 

@@ -54,7 +54,8 @@ fn binary(plan: &Plan, k: &BinaryKernel) -> Kernel {
     let (product, lhs, rhs) = (k.product, k.lhs, k.rhs);
     let doc =
         format!("`{}` of a {} and a {}.", product_name(product), plan.spec.types[lhs].name, plan.spec.types[rhs].name);
-    let large = crate::size::is_large(plan.spec.table_above, k.outputs.iter().map(Vec::len));
+    let large =
+        crate::size::table_driven(plan.spec.table_above, plan.declared, &[lhs, rhs], k.outputs.iter().map(Vec::len));
     // the distinct field products, bound in field order (the Rust kernel's `p{a}_{b}`)
     let pairs: BTreeSet<(usize, usize)> =
         if large { BTreeSet::new() } else { k.outputs.iter().flatten().map(|t| (t.lhs, t.rhs)).collect() };
@@ -152,9 +153,10 @@ fn stage2(terms: &[(usize, usize, Ratio)]) -> Expr {
     )
 }
 
-/// Whether an action kernel is table-driven in Rust ([`crate::size`]).
+/// Whether an action kernel is table-driven in Rust ([`crate::size::table_driven`]).
 fn large_action(plan: &Plan, k: &ActionKernel) -> bool {
-    crate::size::is_large(plan.spec.table_above, k.stage1.iter().chain(&k.stage2).map(Vec::len))
+    let lens = k.stage1.iter().chain(&k.stage2).map(Vec::len);
+    crate::size::table_driven(plan.spec.table_above, plan.declared, &[k.versor, k.operand], lens)
 }
 
 /// The two stages of an action: straight-line, or the table form's accumulators.

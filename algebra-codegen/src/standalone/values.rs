@@ -7,8 +7,8 @@
 
 /// The value semantics every type of this file shares (one definition instead of a copy per
 /// type): `LEN`, `new`, `zero`, `one` (for a type holding the scalar), `scale`, the basis
-/// elements (`Motor::e12()`), arrays (`to_array`, `into_array`, `from_array`, `From` both
-/// ways), `Index`/`IndexMut`, iteration (`iter`, `iter_mut`, `IntoIterator` by value and by
+/// elements (`Motor::e12()`), arrays (`to_array`, `into_array`, `from_array`, `each_ref`, `From`
+/// both ways), `Index`/`IndexMut`, iteration (`iter`, `iter_mut`, `IntoIterator` by value and by
 /// reference), `Default` (zero), `Display` (`1 + 2*e12`), `Debug` (`Motor(1 + 2*e12)`), `+`,
 /// `-` and negation on values and references, `x * s` and `x / s` for a scalar `s` (also on
 /// `&x`), `s * x` for `f32` and `f64`, and `+=`, `-=`, `*= s`, `/= s`. Coefficients are in
@@ -63,6 +63,11 @@ macro_rules! value_type {
             pub fn from_array(a: [T; $n]) -> Self {
                 let [$($f),*] = a;
                 $ty { $($f),* }
+            }
+
+            /// References to the coefficients, in the order of [`Self::ELEMENTS`].
+            pub fn each_ref(&self) -> [&T; $n] {
+                [$(&self.$f),*]
             }
 
             /// An iterator over references to the coefficients, in the order of [`Self::ELEMENTS`].

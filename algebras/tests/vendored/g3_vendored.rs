@@ -313,6 +313,10 @@ pub mod g3_vendored {
             let [e1, e2, e3] = a;
             Vector { e1, e2, e3 }
         }
+        /// References to the coefficients, in the order of [`Self::ELEMENTS`].
+        pub fn each_ref(&self) -> [&T; 3usize] {
+            [&self.e1, &self.e2, &self.e3]
+        }
         /// An iterator over references to the coefficients, in the order of [`Self::ELEMENTS`].
         pub fn iter(&self) -> ::core::array::IntoIter<&T, 3usize> {
             [&self.e1, &self.e2, &self.e3].into_iter()
@@ -943,6 +947,10 @@ pub mod g3_vendored {
             let [scalar, e12, e13, e23] = a;
             Rotor { scalar, e12, e13, e23 }
         }
+        /// References to the coefficients, in the order of [`Self::ELEMENTS`].
+        pub fn each_ref(&self) -> [&T; 4usize] {
+            [&self.scalar, &self.e12, &self.e13, &self.e23]
+        }
         /// An iterator over references to the coefficients, in the order of [`Self::ELEMENTS`].
         pub fn iter(&self) -> ::core::array::IntoIter<&T, 4usize> {
             [&self.scalar, &self.e12, &self.e13, &self.e23].into_iter()
@@ -1567,6 +1575,10 @@ pub mod g3_vendored {
         pub fn from_array(a: [T; 4usize]) -> Self {
             let [e1, e2, e3, e123] = a;
             Odd { e1, e2, e3, e123 }
+        }
+        /// References to the coefficients, in the order of [`Self::ELEMENTS`].
+        pub fn each_ref(&self) -> [&T; 4usize] {
+            [&self.e1, &self.e2, &self.e3, &self.e123]
         }
         /// An iterator over references to the coefficients, in the order of [`Self::ELEMENTS`].
         pub fn iter(&self) -> ::core::array::IntoIter<&T, 4usize> {
@@ -2229,70 +2241,94 @@ pub mod g3_vendored {
             let mut l: ::std::vec::Vec<::std::vec::Vec<T>> = ::std::vec![
                 ::std::vec![T::zero(); 8usize]; 8usize
             ];
-            l[0usize][0usize] = ::core::clone::Clone::clone(&self.scalar);
-            l[0usize][1usize] = ::core::clone::Clone::clone(&self.e1);
-            l[0usize][2usize] = ::core::clone::Clone::clone(&self.e2);
-            l[0usize][3usize] = ::core::clone::Clone::clone(&self.e3);
-            l[0usize][4usize] = ::algebra_core::Ring::neg_ref(&self.e12);
-            l[0usize][5usize] = ::algebra_core::Ring::neg_ref(&self.e13);
-            l[0usize][6usize] = ::algebra_core::Ring::neg_ref(&self.e23);
-            l[0usize][7usize] = ::algebra_core::Ring::neg_ref(&self.e123);
-            l[1usize][0usize] = ::core::clone::Clone::clone(&self.e1);
-            l[1usize][1usize] = ::core::clone::Clone::clone(&self.scalar);
-            l[1usize][2usize] = ::core::clone::Clone::clone(&self.e12);
-            l[1usize][3usize] = ::core::clone::Clone::clone(&self.e13);
-            l[1usize][4usize] = ::algebra_core::Ring::neg_ref(&self.e2);
-            l[1usize][5usize] = ::algebra_core::Ring::neg_ref(&self.e3);
-            l[1usize][6usize] = ::algebra_core::Ring::neg_ref(&self.e123);
-            l[1usize][7usize] = ::algebra_core::Ring::neg_ref(&self.e23);
-            l[2usize][0usize] = ::core::clone::Clone::clone(&self.e2);
-            l[2usize][1usize] = ::algebra_core::Ring::neg_ref(&self.e12);
-            l[2usize][2usize] = ::core::clone::Clone::clone(&self.scalar);
-            l[2usize][3usize] = ::core::clone::Clone::clone(&self.e23);
-            l[2usize][4usize] = ::core::clone::Clone::clone(&self.e1);
-            l[2usize][5usize] = ::core::clone::Clone::clone(&self.e123);
-            l[2usize][6usize] = ::algebra_core::Ring::neg_ref(&self.e3);
-            l[2usize][7usize] = ::core::clone::Clone::clone(&self.e13);
-            l[3usize][0usize] = ::core::clone::Clone::clone(&self.e3);
-            l[3usize][1usize] = ::algebra_core::Ring::neg_ref(&self.e13);
-            l[3usize][2usize] = ::algebra_core::Ring::neg_ref(&self.e23);
-            l[3usize][3usize] = ::core::clone::Clone::clone(&self.scalar);
-            l[3usize][4usize] = ::algebra_core::Ring::neg_ref(&self.e123);
-            l[3usize][5usize] = ::core::clone::Clone::clone(&self.e1);
-            l[3usize][6usize] = ::core::clone::Clone::clone(&self.e2);
-            l[3usize][7usize] = ::algebra_core::Ring::neg_ref(&self.e12);
-            l[4usize][0usize] = ::core::clone::Clone::clone(&self.e12);
-            l[4usize][1usize] = ::algebra_core::Ring::neg_ref(&self.e2);
-            l[4usize][2usize] = ::core::clone::Clone::clone(&self.e1);
-            l[4usize][3usize] = ::core::clone::Clone::clone(&self.e123);
-            l[4usize][4usize] = ::core::clone::Clone::clone(&self.scalar);
-            l[4usize][5usize] = ::core::clone::Clone::clone(&self.e23);
-            l[4usize][6usize] = ::algebra_core::Ring::neg_ref(&self.e13);
-            l[4usize][7usize] = ::core::clone::Clone::clone(&self.e3);
-            l[5usize][0usize] = ::core::clone::Clone::clone(&self.e13);
-            l[5usize][1usize] = ::algebra_core::Ring::neg_ref(&self.e3);
-            l[5usize][2usize] = ::algebra_core::Ring::neg_ref(&self.e123);
-            l[5usize][3usize] = ::core::clone::Clone::clone(&self.e1);
-            l[5usize][4usize] = ::algebra_core::Ring::neg_ref(&self.e23);
-            l[5usize][5usize] = ::core::clone::Clone::clone(&self.scalar);
-            l[5usize][6usize] = ::core::clone::Clone::clone(&self.e12);
-            l[5usize][7usize] = ::algebra_core::Ring::neg_ref(&self.e2);
-            l[6usize][0usize] = ::core::clone::Clone::clone(&self.e23);
-            l[6usize][1usize] = ::core::clone::Clone::clone(&self.e123);
-            l[6usize][2usize] = ::algebra_core::Ring::neg_ref(&self.e3);
-            l[6usize][3usize] = ::core::clone::Clone::clone(&self.e2);
-            l[6usize][4usize] = ::core::clone::Clone::clone(&self.e13);
-            l[6usize][5usize] = ::algebra_core::Ring::neg_ref(&self.e12);
-            l[6usize][6usize] = ::core::clone::Clone::clone(&self.scalar);
-            l[6usize][7usize] = ::core::clone::Clone::clone(&self.e1);
-            l[7usize][0usize] = ::core::clone::Clone::clone(&self.e123);
-            l[7usize][1usize] = ::core::clone::Clone::clone(&self.e23);
-            l[7usize][2usize] = ::algebra_core::Ring::neg_ref(&self.e13);
-            l[7usize][3usize] = ::core::clone::Clone::clone(&self.e12);
-            l[7usize][4usize] = ::core::clone::Clone::clone(&self.e3);
-            l[7usize][5usize] = ::algebra_core::Ring::neg_ref(&self.e2);
-            l[7usize][6usize] = ::core::clone::Clone::clone(&self.e1);
-            l[7usize][7usize] = ::core::clone::Clone::clone(&self.scalar);
+            const ENTRIES: [(u16, u16, u16, i64, i64); 64usize] = [
+                (0u16, 0u16, 0u16, 1i64, 1i64),
+                (1u16, 1u16, 0u16, 1i64, 1i64),
+                (2u16, 2u16, 0u16, 1i64, 1i64),
+                (3u16, 3u16, 0u16, 1i64, 1i64),
+                (4u16, 4u16, 0u16, -1i64, 1i64),
+                (5u16, 5u16, 0u16, -1i64, 1i64),
+                (6u16, 6u16, 0u16, -1i64, 1i64),
+                (7u16, 7u16, 0u16, -1i64, 1i64),
+                (0u16, 1u16, 1u16, 1i64, 1i64),
+                (1u16, 0u16, 1u16, 1i64, 1i64),
+                (2u16, 4u16, 1u16, -1i64, 1i64),
+                (3u16, 5u16, 1u16, -1i64, 1i64),
+                (4u16, 2u16, 1u16, 1i64, 1i64),
+                (5u16, 3u16, 1u16, 1i64, 1i64),
+                (6u16, 7u16, 1u16, -1i64, 1i64),
+                (7u16, 6u16, 1u16, -1i64, 1i64),
+                (0u16, 2u16, 2u16, 1i64, 1i64),
+                (1u16, 4u16, 2u16, 1i64, 1i64),
+                (2u16, 0u16, 2u16, 1i64, 1i64),
+                (3u16, 6u16, 2u16, -1i64, 1i64),
+                (4u16, 1u16, 2u16, -1i64, 1i64),
+                (5u16, 7u16, 2u16, 1i64, 1i64),
+                (6u16, 3u16, 2u16, 1i64, 1i64),
+                (7u16, 5u16, 2u16, 1i64, 1i64),
+                (0u16, 3u16, 3u16, 1i64, 1i64),
+                (1u16, 5u16, 3u16, 1i64, 1i64),
+                (2u16, 6u16, 3u16, 1i64, 1i64),
+                (3u16, 0u16, 3u16, 1i64, 1i64),
+                (4u16, 7u16, 3u16, -1i64, 1i64),
+                (5u16, 1u16, 3u16, -1i64, 1i64),
+                (6u16, 2u16, 3u16, -1i64, 1i64),
+                (7u16, 4u16, 3u16, -1i64, 1i64),
+                (0u16, 4u16, 4u16, 1i64, 1i64),
+                (1u16, 2u16, 4u16, 1i64, 1i64),
+                (2u16, 1u16, 4u16, -1i64, 1i64),
+                (3u16, 7u16, 4u16, 1i64, 1i64),
+                (4u16, 0u16, 4u16, 1i64, 1i64),
+                (5u16, 6u16, 4u16, -1i64, 1i64),
+                (6u16, 5u16, 4u16, 1i64, 1i64),
+                (7u16, 3u16, 4u16, 1i64, 1i64),
+                (0u16, 5u16, 5u16, 1i64, 1i64),
+                (1u16, 3u16, 5u16, 1i64, 1i64),
+                (2u16, 7u16, 5u16, -1i64, 1i64),
+                (3u16, 1u16, 5u16, -1i64, 1i64),
+                (4u16, 6u16, 5u16, 1i64, 1i64),
+                (5u16, 0u16, 5u16, 1i64, 1i64),
+                (6u16, 4u16, 5u16, -1i64, 1i64),
+                (7u16, 2u16, 5u16, -1i64, 1i64),
+                (0u16, 6u16, 6u16, 1i64, 1i64),
+                (1u16, 7u16, 6u16, 1i64, 1i64),
+                (2u16, 3u16, 6u16, 1i64, 1i64),
+                (3u16, 2u16, 6u16, -1i64, 1i64),
+                (4u16, 5u16, 6u16, -1i64, 1i64),
+                (5u16, 4u16, 6u16, 1i64, 1i64),
+                (6u16, 0u16, 6u16, 1i64, 1i64),
+                (7u16, 1u16, 6u16, 1i64, 1i64),
+                (0u16, 7u16, 7u16, 1i64, 1i64),
+                (1u16, 6u16, 7u16, 1i64, 1i64),
+                (2u16, 5u16, 7u16, -1i64, 1i64),
+                (3u16, 4u16, 7u16, 1i64, 1i64),
+                (4u16, 3u16, 7u16, 1i64, 1i64),
+                (5u16, 2u16, 7u16, -1i64, 1i64),
+                (6u16, 1u16, 7u16, 1i64, 1i64),
+                (7u16, 0u16, 7u16, 1i64, 1i64),
+            ];
+            let a = [
+                &self.scalar,
+                &self.e1,
+                &self.e2,
+                &self.e3,
+                &self.e12,
+                &self.e13,
+                &self.e23,
+                &self.e123,
+            ];
+            for &(lhs, col, row, num, den) in ENTRIES.iter() {
+                let slot = &mut l[row as usize][col as usize];
+                match (num, den) {
+                    (1, 1) => slot.add_assign_ref(a[lhs as usize]),
+                    (-1, 1) => slot.sub_assign_ref(a[lhs as usize]),
+                    _ => {
+                        slot.add_assign_ref(
+                            &(T::from_ratio(num, den) * a[lhs as usize].clone()),
+                        )
+                    }
+                }
+            }
             let mut rhs = ::std::vec![T::zero(); 8usize];
             rhs[0usize] = T::one();
             let y = ::algebra_core::linalg::solve(l, rhs)
@@ -2445,6 +2481,19 @@ pub mod g3_vendored {
                 e23,
                 e123,
             }
+        }
+        /// References to the coefficients, in the order of [`Self::ELEMENTS`].
+        pub fn each_ref(&self) -> [&T; 8usize] {
+            [
+                &self.scalar,
+                &self.e1,
+                &self.e2,
+                &self.e3,
+                &self.e12,
+                &self.e13,
+                &self.e23,
+                &self.e123,
+            ]
         }
         /// An iterator over references to the coefficients, in the order of [`Self::ELEMENTS`].
         pub fn iter(&self) -> ::core::array::IntoIter<&T, 8usize> {
@@ -2977,24 +3026,19 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn gp(&self, rhs: &Odd<T>) -> Rotor<T> {
-            let p0_0 = self.e1.mul_ref(&rhs.e1);
-            let p0_1 = self.e1.mul_ref(&rhs.e2);
-            let p0_2 = self.e1.mul_ref(&rhs.e3);
-            let p0_3 = self.e1.mul_ref(&rhs.e123);
-            let p1_0 = self.e2.mul_ref(&rhs.e1);
-            let p1_1 = self.e2.mul_ref(&rhs.e2);
-            let p1_2 = self.e2.mul_ref(&rhs.e3);
-            let p1_3 = self.e2.mul_ref(&rhs.e123);
-            let p2_0 = self.e3.mul_ref(&rhs.e1);
-            let p2_1 = self.e3.mul_ref(&rhs.e2);
-            let p2_2 = self.e3.mul_ref(&rhs.e3);
-            let p2_3 = self.e3.mul_ref(&rhs.e123);
-            Rotor {
-                scalar: p0_0 + &p1_1 + &p2_2,
-                e12: p0_1 - &p1_0 + &p2_3,
-                e13: p0_2 - &p1_3 - &p2_0,
-                e23: p0_3 + &p1_2 - &p2_1,
-            }
+            Rotor::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0",
+                    b"\0\0\x03\0\x06\0\t\0\x0C\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -3034,40 +3078,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn gp(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            let p0_0 = self.e1.mul_ref(&rhs.scalar);
-            let p0_1 = self.e1.mul_ref(&rhs.e1);
-            let p0_2 = self.e1.mul_ref(&rhs.e2);
-            let p0_3 = self.e1.mul_ref(&rhs.e3);
-            let p0_4 = self.e1.mul_ref(&rhs.e12);
-            let p0_5 = self.e1.mul_ref(&rhs.e13);
-            let p0_6 = self.e1.mul_ref(&rhs.e23);
-            let p0_7 = self.e1.mul_ref(&rhs.e123);
-            let p1_0 = self.e2.mul_ref(&rhs.scalar);
-            let p1_1 = self.e2.mul_ref(&rhs.e1);
-            let p1_2 = self.e2.mul_ref(&rhs.e2);
-            let p1_3 = self.e2.mul_ref(&rhs.e3);
-            let p1_4 = self.e2.mul_ref(&rhs.e12);
-            let p1_5 = self.e2.mul_ref(&rhs.e13);
-            let p1_6 = self.e2.mul_ref(&rhs.e23);
-            let p1_7 = self.e2.mul_ref(&rhs.e123);
-            let p2_0 = self.e3.mul_ref(&rhs.scalar);
-            let p2_1 = self.e3.mul_ref(&rhs.e1);
-            let p2_2 = self.e3.mul_ref(&rhs.e2);
-            let p2_3 = self.e3.mul_ref(&rhs.e3);
-            let p2_4 = self.e3.mul_ref(&rhs.e12);
-            let p2_5 = self.e3.mul_ref(&rhs.e13);
-            let p2_6 = self.e3.mul_ref(&rhs.e23);
-            let p2_7 = self.e3.mul_ref(&rhs.e123);
-            Multivector {
-                scalar: p0_1 + &p1_2 + &p2_3,
-                e1: p0_0 - &p1_4 - &p2_5,
-                e2: p0_4 + &p1_0 - &p2_6,
-                e3: p0_5 + &p1_6 + &p2_0,
-                e12: p0_2 - &p1_1 + &p2_7,
-                e13: p0_3 - &p1_7 - &p2_1,
-                e23: p0_7 + &p1_3 - &p2_2,
-                e123: p0_6 - &p1_5 + &p2_4,
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\0\0\x04\0\0\0\x01\0\0\0\0\0\x02\0\x06\0\x01\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\x02\0\0\0\0\0\0\0\x02\0\0\0\x01\0\x01\0\x01\0\x02\0\x07\0\0\0\0\0\x03\0\0\0\x01\0\x07\0\x01\0\x02\0\x01\0\x01\0\0\0\x07\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0",
+                    b"\0\0\x03\0\x06\0\t\0\x0C\0\x0F\0\x12\0\x15\0\x18\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -3226,28 +3249,19 @@ pub mod g3_vendored {
         type Output = Odd<T>;
         #[inline]
         fn gp(&self, rhs: &Odd<T>) -> Odd<T> {
-            let p0_0 = self.scalar.mul_ref(&rhs.e1);
-            let p0_1 = self.scalar.mul_ref(&rhs.e2);
-            let p0_2 = self.scalar.mul_ref(&rhs.e3);
-            let p0_3 = self.scalar.mul_ref(&rhs.e123);
-            let p1_0 = self.e12.mul_ref(&rhs.e1);
-            let p1_1 = self.e12.mul_ref(&rhs.e2);
-            let p1_2 = self.e12.mul_ref(&rhs.e3);
-            let p1_3 = self.e12.mul_ref(&rhs.e123);
-            let p2_0 = self.e13.mul_ref(&rhs.e1);
-            let p2_1 = self.e13.mul_ref(&rhs.e2);
-            let p2_2 = self.e13.mul_ref(&rhs.e3);
-            let p2_3 = self.e13.mul_ref(&rhs.e123);
-            let p3_0 = self.e23.mul_ref(&rhs.e1);
-            let p3_1 = self.e23.mul_ref(&rhs.e2);
-            let p3_2 = self.e23.mul_ref(&rhs.e3);
-            let p3_3 = self.e23.mul_ref(&rhs.e123);
-            Odd {
-                e1: p0_0 + &p1_1 + &p2_2 - &p3_3,
-                e2: p0_1 - &p1_0 + &p2_3 + &p3_2,
-                e3: p0_2 - &p1_3 - &p2_0 - &p3_1,
-                e123: p0_3 + &p1_2 - &p2_1 + &p3_0,
-            }
+            Odd::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
+                    b"\0\0\x04\0\x08\0\x0C\0\x10\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -3287,48 +3301,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn gp(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            let p0_0 = self.scalar.mul_ref(&rhs.scalar);
-            let p0_1 = self.scalar.mul_ref(&rhs.e1);
-            let p0_2 = self.scalar.mul_ref(&rhs.e2);
-            let p0_3 = self.scalar.mul_ref(&rhs.e3);
-            let p0_4 = self.scalar.mul_ref(&rhs.e12);
-            let p0_5 = self.scalar.mul_ref(&rhs.e13);
-            let p0_6 = self.scalar.mul_ref(&rhs.e23);
-            let p0_7 = self.scalar.mul_ref(&rhs.e123);
-            let p1_0 = self.e12.mul_ref(&rhs.scalar);
-            let p1_1 = self.e12.mul_ref(&rhs.e1);
-            let p1_2 = self.e12.mul_ref(&rhs.e2);
-            let p1_3 = self.e12.mul_ref(&rhs.e3);
-            let p1_4 = self.e12.mul_ref(&rhs.e12);
-            let p1_5 = self.e12.mul_ref(&rhs.e13);
-            let p1_6 = self.e12.mul_ref(&rhs.e23);
-            let p1_7 = self.e12.mul_ref(&rhs.e123);
-            let p2_0 = self.e13.mul_ref(&rhs.scalar);
-            let p2_1 = self.e13.mul_ref(&rhs.e1);
-            let p2_2 = self.e13.mul_ref(&rhs.e2);
-            let p2_3 = self.e13.mul_ref(&rhs.e3);
-            let p2_4 = self.e13.mul_ref(&rhs.e12);
-            let p2_5 = self.e13.mul_ref(&rhs.e13);
-            let p2_6 = self.e13.mul_ref(&rhs.e23);
-            let p2_7 = self.e13.mul_ref(&rhs.e123);
-            let p3_0 = self.e23.mul_ref(&rhs.scalar);
-            let p3_1 = self.e23.mul_ref(&rhs.e1);
-            let p3_2 = self.e23.mul_ref(&rhs.e2);
-            let p3_3 = self.e23.mul_ref(&rhs.e3);
-            let p3_4 = self.e23.mul_ref(&rhs.e12);
-            let p3_5 = self.e23.mul_ref(&rhs.e13);
-            let p3_6 = self.e23.mul_ref(&rhs.e23);
-            let p3_7 = self.e23.mul_ref(&rhs.e123);
-            Multivector {
-                scalar: p0_0 - &p1_4 - &p2_5 - &p3_6,
-                e1: p0_1 + &p1_2 + &p2_3 - &p3_7,
-                e2: p0_2 - &p1_1 + &p2_7 + &p3_3,
-                e3: p0_3 - &p1_7 - &p2_1 - &p3_2,
-                e12: p0_4 + &p1_0 - &p2_6 + &p3_5,
-                e13: p0_5 + &p1_6 + &p2_0 - &p3_4,
-                e23: p0_6 - &p1_5 + &p2_4 + &p3_0,
-                e123: p0_7 + &p1_3 - &p2_2 + &p3_1,
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\x03\0\x06\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\x07\0\x01\0\0\0\x02\0\0\0\x01\0\x01\0\x01\0\x02\0\x07\0\0\0\x03\0\x03\0\0\0\0\0\x03\0\0\0\x01\0\x07\0\x01\0\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0\0\0\x04\0\0\0\x01\0\0\0\0\0\x02\0\x06\0\x01\0\x03\0\x05\0\0\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\x02\0\0\0\0\0\x03\0\x04\0\x01\0\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0\x03\0\0\0\0\0\0\0\x07\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0",
+                    b"\0\0\x04\0\x08\0\x0C\0\x10\0\x14\0\x18\0\x1C\0 \0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -3369,24 +3354,19 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn gp(&self, rhs: &Vector<T>) -> Rotor<T> {
-            let p0_0 = self.e1.mul_ref(&rhs.e1);
-            let p0_1 = self.e1.mul_ref(&rhs.e2);
-            let p0_2 = self.e1.mul_ref(&rhs.e3);
-            let p1_0 = self.e2.mul_ref(&rhs.e1);
-            let p1_1 = self.e2.mul_ref(&rhs.e2);
-            let p1_2 = self.e2.mul_ref(&rhs.e3);
-            let p2_0 = self.e3.mul_ref(&rhs.e1);
-            let p2_1 = self.e3.mul_ref(&rhs.e2);
-            let p2_2 = self.e3.mul_ref(&rhs.e3);
-            let p3_0 = self.e123.mul_ref(&rhs.e1);
-            let p3_1 = self.e123.mul_ref(&rhs.e2);
-            let p3_2 = self.e123.mul_ref(&rhs.e3);
-            Rotor {
-                scalar: p0_0 + &p1_1 + &p2_2,
-                e12: p0_1 - &p1_0 + &p3_2,
-                e13: p0_2 - &p2_0 - &p3_1,
-                e23: p1_2 - &p2_1 + &p3_0,
-            }
+            Rotor::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
+                    b"\0\0\x03\0\x06\0\t\0\x0C\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -3426,28 +3406,19 @@ pub mod g3_vendored {
         type Output = Odd<T>;
         #[inline]
         fn gp(&self, rhs: &Rotor<T>) -> Odd<T> {
-            let p0_0 = self.e1.mul_ref(&rhs.scalar);
-            let p0_1 = self.e1.mul_ref(&rhs.e12);
-            let p0_2 = self.e1.mul_ref(&rhs.e13);
-            let p0_3 = self.e1.mul_ref(&rhs.e23);
-            let p1_0 = self.e2.mul_ref(&rhs.scalar);
-            let p1_1 = self.e2.mul_ref(&rhs.e12);
-            let p1_2 = self.e2.mul_ref(&rhs.e13);
-            let p1_3 = self.e2.mul_ref(&rhs.e23);
-            let p2_0 = self.e3.mul_ref(&rhs.scalar);
-            let p2_1 = self.e3.mul_ref(&rhs.e12);
-            let p2_2 = self.e3.mul_ref(&rhs.e13);
-            let p2_3 = self.e3.mul_ref(&rhs.e23);
-            let p3_0 = self.e123.mul_ref(&rhs.scalar);
-            let p3_1 = self.e123.mul_ref(&rhs.e12);
-            let p3_2 = self.e123.mul_ref(&rhs.e13);
-            let p3_3 = self.e123.mul_ref(&rhs.e23);
-            Odd {
-                e1: p0_0 - &p1_1 - &p2_2 - &p3_3,
-                e2: p0_1 + &p1_0 - &p2_3 + &p3_2,
-                e3: p0_2 + &p1_3 + &p2_0 - &p3_1,
-                e123: p0_3 - &p1_2 + &p2_1 + &p3_0,
-            }
+            Odd::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x03\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\0\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\x01\0\x02\0\x01\0\0\0\x03\0\0\0\0\0",
+                    b"\0\0\x04\0\x08\0\x0C\0\x10\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -3487,28 +3458,19 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn gp(&self, rhs: &Odd<T>) -> Rotor<T> {
-            let p0_0 = self.e1.mul_ref(&rhs.e1);
-            let p0_1 = self.e1.mul_ref(&rhs.e2);
-            let p0_2 = self.e1.mul_ref(&rhs.e3);
-            let p0_3 = self.e1.mul_ref(&rhs.e123);
-            let p1_0 = self.e2.mul_ref(&rhs.e1);
-            let p1_1 = self.e2.mul_ref(&rhs.e2);
-            let p1_2 = self.e2.mul_ref(&rhs.e3);
-            let p1_3 = self.e2.mul_ref(&rhs.e123);
-            let p2_0 = self.e3.mul_ref(&rhs.e1);
-            let p2_1 = self.e3.mul_ref(&rhs.e2);
-            let p2_2 = self.e3.mul_ref(&rhs.e3);
-            let p2_3 = self.e3.mul_ref(&rhs.e123);
-            let p3_0 = self.e123.mul_ref(&rhs.e1);
-            let p3_1 = self.e123.mul_ref(&rhs.e2);
-            let p3_2 = self.e123.mul_ref(&rhs.e3);
-            let p3_3 = self.e123.mul_ref(&rhs.e123);
-            Rotor {
-                scalar: p0_0 + &p1_1 + &p2_2 - &p3_3,
-                e12: p0_1 - &p1_0 + &p2_3 + &p3_2,
-                e13: p0_2 - &p1_3 - &p2_0 - &p3_1,
-                e23: p0_3 + &p1_2 - &p2_1 + &p3_0,
-            }
+            Rotor::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
+                    b"\0\0\x04\0\x08\0\x0C\0\x10\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -3548,48 +3510,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn gp(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            let p0_0 = self.e1.mul_ref(&rhs.scalar);
-            let p0_1 = self.e1.mul_ref(&rhs.e1);
-            let p0_2 = self.e1.mul_ref(&rhs.e2);
-            let p0_3 = self.e1.mul_ref(&rhs.e3);
-            let p0_4 = self.e1.mul_ref(&rhs.e12);
-            let p0_5 = self.e1.mul_ref(&rhs.e13);
-            let p0_6 = self.e1.mul_ref(&rhs.e23);
-            let p0_7 = self.e1.mul_ref(&rhs.e123);
-            let p1_0 = self.e2.mul_ref(&rhs.scalar);
-            let p1_1 = self.e2.mul_ref(&rhs.e1);
-            let p1_2 = self.e2.mul_ref(&rhs.e2);
-            let p1_3 = self.e2.mul_ref(&rhs.e3);
-            let p1_4 = self.e2.mul_ref(&rhs.e12);
-            let p1_5 = self.e2.mul_ref(&rhs.e13);
-            let p1_6 = self.e2.mul_ref(&rhs.e23);
-            let p1_7 = self.e2.mul_ref(&rhs.e123);
-            let p2_0 = self.e3.mul_ref(&rhs.scalar);
-            let p2_1 = self.e3.mul_ref(&rhs.e1);
-            let p2_2 = self.e3.mul_ref(&rhs.e2);
-            let p2_3 = self.e3.mul_ref(&rhs.e3);
-            let p2_4 = self.e3.mul_ref(&rhs.e12);
-            let p2_5 = self.e3.mul_ref(&rhs.e13);
-            let p2_6 = self.e3.mul_ref(&rhs.e23);
-            let p2_7 = self.e3.mul_ref(&rhs.e123);
-            let p3_0 = self.e123.mul_ref(&rhs.scalar);
-            let p3_1 = self.e123.mul_ref(&rhs.e1);
-            let p3_2 = self.e123.mul_ref(&rhs.e2);
-            let p3_3 = self.e123.mul_ref(&rhs.e3);
-            let p3_4 = self.e123.mul_ref(&rhs.e12);
-            let p3_5 = self.e123.mul_ref(&rhs.e13);
-            let p3_6 = self.e123.mul_ref(&rhs.e23);
-            let p3_7 = self.e123.mul_ref(&rhs.e123);
-            Multivector {
-                scalar: p0_1 + &p1_2 + &p2_3 - &p3_7,
-                e1: p0_0 - &p1_4 - &p2_5 - &p3_6,
-                e2: p0_4 + &p1_0 - &p2_6 + &p3_5,
-                e3: p0_5 + &p1_6 + &p2_0 - &p3_4,
-                e12: p0_2 - &p1_1 + &p2_7 + &p3_3,
-                e13: p0_3 - &p1_7 - &p2_1 - &p3_2,
-                e23: p0_7 + &p1_3 - &p2_2 + &p3_1,
-                e123: p0_6 - &p1_5 + &p2_4 + &p3_0,
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\x07\0\x01\0\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\x03\0\x06\0\x01\0\0\0\x04\0\0\0\x01\0\0\0\0\0\x02\0\x06\0\x01\0\x03\0\x05\0\0\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\x02\0\0\0\0\0\x03\0\x04\0\x01\0\0\0\x02\0\0\0\x01\0\x01\0\x01\0\x02\0\x07\0\0\0\x03\0\x03\0\0\0\0\0\x03\0\0\0\x01\0\x07\0\x01\0\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0\0\0\x07\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0\x03\0\0\0\0\0",
+                    b"\0\0\x04\0\x08\0\x0C\0\x10\0\x14\0\x18\0\x1C\0 \0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -3630,40 +3563,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn gp(&self, rhs: &Vector<T>) -> Multivector<T> {
-            let p0_0 = self.scalar.mul_ref(&rhs.e1);
-            let p0_1 = self.scalar.mul_ref(&rhs.e2);
-            let p0_2 = self.scalar.mul_ref(&rhs.e3);
-            let p1_0 = self.e1.mul_ref(&rhs.e1);
-            let p1_1 = self.e1.mul_ref(&rhs.e2);
-            let p1_2 = self.e1.mul_ref(&rhs.e3);
-            let p2_0 = self.e2.mul_ref(&rhs.e1);
-            let p2_1 = self.e2.mul_ref(&rhs.e2);
-            let p2_2 = self.e2.mul_ref(&rhs.e3);
-            let p3_0 = self.e3.mul_ref(&rhs.e1);
-            let p3_1 = self.e3.mul_ref(&rhs.e2);
-            let p3_2 = self.e3.mul_ref(&rhs.e3);
-            let p4_0 = self.e12.mul_ref(&rhs.e1);
-            let p4_1 = self.e12.mul_ref(&rhs.e2);
-            let p4_2 = self.e12.mul_ref(&rhs.e3);
-            let p5_0 = self.e13.mul_ref(&rhs.e1);
-            let p5_1 = self.e13.mul_ref(&rhs.e2);
-            let p5_2 = self.e13.mul_ref(&rhs.e3);
-            let p6_0 = self.e23.mul_ref(&rhs.e1);
-            let p6_1 = self.e23.mul_ref(&rhs.e2);
-            let p6_2 = self.e23.mul_ref(&rhs.e3);
-            let p7_0 = self.e123.mul_ref(&rhs.e1);
-            let p7_1 = self.e123.mul_ref(&rhs.e2);
-            let p7_2 = self.e123.mul_ref(&rhs.e3);
-            Multivector {
-                scalar: p1_0 + &p2_1 + &p3_2,
-                e1: p0_0 + &p4_1 + &p5_2,
-                e2: p0_1 - &p4_0 + &p6_2,
-                e3: p0_2 - &p5_0 - &p6_1,
-                e12: p1_1 - &p2_0 + &p7_2,
-                e13: p1_2 - &p3_0 - &p7_1,
-                e23: p2_2 - &p3_1 + &p7_0,
-                e123: p4_2 - &p5_1 + &p6_0,
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0\0\0\0\0\0\0\x04\0\x01\0\0\0\x05\0\x02\0\0\0\0\0\x01\0\0\0\x04\0\0\0\x01\0\x06\0\x02\0\0\0\0\0\x02\0\0\0\x05\0\0\0\x01\0\x06\0\x01\0\x01\0\x01\0\x01\0\0\0\x02\0\0\0\x01\0\x07\0\x02\0\0\0\x01\0\x02\0\0\0\x03\0\0\0\x01\0\x07\0\x01\0\x01\0\x02\0\x02\0\0\0\x03\0\x01\0\x01\0\x07\0\0\0\0\0\x04\0\x02\0\0\0\x05\0\x01\0\x01\0\x06\0\0\0\0\0",
+                    b"\0\0\x03\0\x06\0\t\0\x0C\0\x0F\0\x12\0\x15\0\x18\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -3704,48 +3616,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn gp(&self, rhs: &Rotor<T>) -> Multivector<T> {
-            let p0_0 = self.scalar.mul_ref(&rhs.scalar);
-            let p0_1 = self.scalar.mul_ref(&rhs.e12);
-            let p0_2 = self.scalar.mul_ref(&rhs.e13);
-            let p0_3 = self.scalar.mul_ref(&rhs.e23);
-            let p1_0 = self.e1.mul_ref(&rhs.scalar);
-            let p1_1 = self.e1.mul_ref(&rhs.e12);
-            let p1_2 = self.e1.mul_ref(&rhs.e13);
-            let p1_3 = self.e1.mul_ref(&rhs.e23);
-            let p2_0 = self.e2.mul_ref(&rhs.scalar);
-            let p2_1 = self.e2.mul_ref(&rhs.e12);
-            let p2_2 = self.e2.mul_ref(&rhs.e13);
-            let p2_3 = self.e2.mul_ref(&rhs.e23);
-            let p3_0 = self.e3.mul_ref(&rhs.scalar);
-            let p3_1 = self.e3.mul_ref(&rhs.e12);
-            let p3_2 = self.e3.mul_ref(&rhs.e13);
-            let p3_3 = self.e3.mul_ref(&rhs.e23);
-            let p4_0 = self.e12.mul_ref(&rhs.scalar);
-            let p4_1 = self.e12.mul_ref(&rhs.e12);
-            let p4_2 = self.e12.mul_ref(&rhs.e13);
-            let p4_3 = self.e12.mul_ref(&rhs.e23);
-            let p5_0 = self.e13.mul_ref(&rhs.scalar);
-            let p5_1 = self.e13.mul_ref(&rhs.e12);
-            let p5_2 = self.e13.mul_ref(&rhs.e13);
-            let p5_3 = self.e13.mul_ref(&rhs.e23);
-            let p6_0 = self.e23.mul_ref(&rhs.scalar);
-            let p6_1 = self.e23.mul_ref(&rhs.e12);
-            let p6_2 = self.e23.mul_ref(&rhs.e13);
-            let p6_3 = self.e23.mul_ref(&rhs.e23);
-            let p7_0 = self.e123.mul_ref(&rhs.scalar);
-            let p7_1 = self.e123.mul_ref(&rhs.e12);
-            let p7_2 = self.e123.mul_ref(&rhs.e13);
-            let p7_3 = self.e123.mul_ref(&rhs.e23);
-            Multivector {
-                scalar: p0_0 - &p4_1 - &p5_2 - &p6_3,
-                e1: p1_0 - &p2_1 - &p3_2 - &p7_3,
-                e2: p1_1 + &p2_0 - &p3_3 + &p7_2,
-                e3: p1_2 + &p2_3 + &p3_0 - &p7_1,
-                e12: p0_1 + &p4_0 - &p5_3 + &p6_2,
-                e13: p0_2 + &p4_3 + &p5_0 - &p6_1,
-                e23: p0_3 - &p4_2 + &p5_1 + &p6_0,
-                e123: p1_3 - &p2_2 + &p3_1 + &p7_0,
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x04\0\x01\0\x01\0\x05\0\x02\0\x01\0\x06\0\x03\0\x01\0\x01\0\0\0\0\0\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0\x07\0\x03\0\x01\0\x01\0\x01\0\0\0\x02\0\0\0\0\0\x03\0\x03\0\x01\0\x07\0\x02\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\0\0\0\0\x07\0\x01\0\x01\0\0\0\x01\0\0\0\x04\0\0\0\0\0\x05\0\x03\0\x01\0\x06\0\x02\0\0\0\0\0\x02\0\0\0\x04\0\x03\0\0\0\x05\0\0\0\0\0\x06\0\x01\0\x01\0\0\0\x03\0\0\0\x04\0\x02\0\x01\0\x05\0\x01\0\0\0\x06\0\0\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0\x07\0\0\0\0\0",
+                    b"\0\0\x04\0\x08\0\x0C\0\x10\0\x14\0\x18\0\x1C\0 \0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -3786,48 +3669,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn gp(&self, rhs: &Odd<T>) -> Multivector<T> {
-            let p0_0 = self.scalar.mul_ref(&rhs.e1);
-            let p0_1 = self.scalar.mul_ref(&rhs.e2);
-            let p0_2 = self.scalar.mul_ref(&rhs.e3);
-            let p0_3 = self.scalar.mul_ref(&rhs.e123);
-            let p1_0 = self.e1.mul_ref(&rhs.e1);
-            let p1_1 = self.e1.mul_ref(&rhs.e2);
-            let p1_2 = self.e1.mul_ref(&rhs.e3);
-            let p1_3 = self.e1.mul_ref(&rhs.e123);
-            let p2_0 = self.e2.mul_ref(&rhs.e1);
-            let p2_1 = self.e2.mul_ref(&rhs.e2);
-            let p2_2 = self.e2.mul_ref(&rhs.e3);
-            let p2_3 = self.e2.mul_ref(&rhs.e123);
-            let p3_0 = self.e3.mul_ref(&rhs.e1);
-            let p3_1 = self.e3.mul_ref(&rhs.e2);
-            let p3_2 = self.e3.mul_ref(&rhs.e3);
-            let p3_3 = self.e3.mul_ref(&rhs.e123);
-            let p4_0 = self.e12.mul_ref(&rhs.e1);
-            let p4_1 = self.e12.mul_ref(&rhs.e2);
-            let p4_2 = self.e12.mul_ref(&rhs.e3);
-            let p4_3 = self.e12.mul_ref(&rhs.e123);
-            let p5_0 = self.e13.mul_ref(&rhs.e1);
-            let p5_1 = self.e13.mul_ref(&rhs.e2);
-            let p5_2 = self.e13.mul_ref(&rhs.e3);
-            let p5_3 = self.e13.mul_ref(&rhs.e123);
-            let p6_0 = self.e23.mul_ref(&rhs.e1);
-            let p6_1 = self.e23.mul_ref(&rhs.e2);
-            let p6_2 = self.e23.mul_ref(&rhs.e3);
-            let p6_3 = self.e23.mul_ref(&rhs.e123);
-            let p7_0 = self.e123.mul_ref(&rhs.e1);
-            let p7_1 = self.e123.mul_ref(&rhs.e2);
-            let p7_2 = self.e123.mul_ref(&rhs.e3);
-            let p7_3 = self.e123.mul_ref(&rhs.e123);
-            Multivector {
-                scalar: p1_0 + &p2_1 + &p3_2 - &p7_3,
-                e1: p0_0 + &p4_1 + &p5_2 - &p6_3,
-                e2: p0_1 - &p4_0 + &p5_3 + &p6_2,
-                e3: p0_2 - &p4_3 - &p5_0 - &p6_1,
-                e12: p1_1 - &p2_0 + &p3_3 + &p7_2,
-                e13: p1_2 - &p2_3 - &p3_0 - &p7_1,
-                e23: p1_3 + &p2_2 - &p3_1 + &p7_0,
-                e123: p0_3 + &p4_2 - &p5_1 + &p6_0,
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0\x07\0\x03\0\x01\0\0\0\0\0\0\0\x04\0\x01\0\0\0\x05\0\x02\0\0\0\x06\0\x03\0\x01\0\0\0\x01\0\0\0\x04\0\0\0\x01\0\x05\0\x03\0\0\0\x06\0\x02\0\0\0\0\0\x02\0\0\0\x04\0\x03\0\x01\0\x05\0\0\0\x01\0\x06\0\x01\0\x01\0\x01\0\x01\0\0\0\x02\0\0\0\x01\0\x03\0\x03\0\0\0\x07\0\x02\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\x01\0\x03\0\0\0\x01\0\x07\0\x01\0\x01\0\x01\0\x03\0\0\0\x02\0\x02\0\0\0\x03\0\x01\0\x01\0\x07\0\0\0\0\0\0\0\x03\0\0\0\x04\0\x02\0\0\0\x05\0\x01\0\x01\0\x06\0\0\0\0\0",
+                    b"\0\0\x04\0\x08\0\x0C\0\x10\0\x14\0\x18\0\x1C\0 \0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -3868,80 +3722,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn gp(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            let p0_0 = self.scalar.mul_ref(&rhs.scalar);
-            let p0_1 = self.scalar.mul_ref(&rhs.e1);
-            let p0_2 = self.scalar.mul_ref(&rhs.e2);
-            let p0_3 = self.scalar.mul_ref(&rhs.e3);
-            let p0_4 = self.scalar.mul_ref(&rhs.e12);
-            let p0_5 = self.scalar.mul_ref(&rhs.e13);
-            let p0_6 = self.scalar.mul_ref(&rhs.e23);
-            let p0_7 = self.scalar.mul_ref(&rhs.e123);
-            let p1_0 = self.e1.mul_ref(&rhs.scalar);
-            let p1_1 = self.e1.mul_ref(&rhs.e1);
-            let p1_2 = self.e1.mul_ref(&rhs.e2);
-            let p1_3 = self.e1.mul_ref(&rhs.e3);
-            let p1_4 = self.e1.mul_ref(&rhs.e12);
-            let p1_5 = self.e1.mul_ref(&rhs.e13);
-            let p1_6 = self.e1.mul_ref(&rhs.e23);
-            let p1_7 = self.e1.mul_ref(&rhs.e123);
-            let p2_0 = self.e2.mul_ref(&rhs.scalar);
-            let p2_1 = self.e2.mul_ref(&rhs.e1);
-            let p2_2 = self.e2.mul_ref(&rhs.e2);
-            let p2_3 = self.e2.mul_ref(&rhs.e3);
-            let p2_4 = self.e2.mul_ref(&rhs.e12);
-            let p2_5 = self.e2.mul_ref(&rhs.e13);
-            let p2_6 = self.e2.mul_ref(&rhs.e23);
-            let p2_7 = self.e2.mul_ref(&rhs.e123);
-            let p3_0 = self.e3.mul_ref(&rhs.scalar);
-            let p3_1 = self.e3.mul_ref(&rhs.e1);
-            let p3_2 = self.e3.mul_ref(&rhs.e2);
-            let p3_3 = self.e3.mul_ref(&rhs.e3);
-            let p3_4 = self.e3.mul_ref(&rhs.e12);
-            let p3_5 = self.e3.mul_ref(&rhs.e13);
-            let p3_6 = self.e3.mul_ref(&rhs.e23);
-            let p3_7 = self.e3.mul_ref(&rhs.e123);
-            let p4_0 = self.e12.mul_ref(&rhs.scalar);
-            let p4_1 = self.e12.mul_ref(&rhs.e1);
-            let p4_2 = self.e12.mul_ref(&rhs.e2);
-            let p4_3 = self.e12.mul_ref(&rhs.e3);
-            let p4_4 = self.e12.mul_ref(&rhs.e12);
-            let p4_5 = self.e12.mul_ref(&rhs.e13);
-            let p4_6 = self.e12.mul_ref(&rhs.e23);
-            let p4_7 = self.e12.mul_ref(&rhs.e123);
-            let p5_0 = self.e13.mul_ref(&rhs.scalar);
-            let p5_1 = self.e13.mul_ref(&rhs.e1);
-            let p5_2 = self.e13.mul_ref(&rhs.e2);
-            let p5_3 = self.e13.mul_ref(&rhs.e3);
-            let p5_4 = self.e13.mul_ref(&rhs.e12);
-            let p5_5 = self.e13.mul_ref(&rhs.e13);
-            let p5_6 = self.e13.mul_ref(&rhs.e23);
-            let p5_7 = self.e13.mul_ref(&rhs.e123);
-            let p6_0 = self.e23.mul_ref(&rhs.scalar);
-            let p6_1 = self.e23.mul_ref(&rhs.e1);
-            let p6_2 = self.e23.mul_ref(&rhs.e2);
-            let p6_3 = self.e23.mul_ref(&rhs.e3);
-            let p6_4 = self.e23.mul_ref(&rhs.e12);
-            let p6_5 = self.e23.mul_ref(&rhs.e13);
-            let p6_6 = self.e23.mul_ref(&rhs.e23);
-            let p6_7 = self.e23.mul_ref(&rhs.e123);
-            let p7_0 = self.e123.mul_ref(&rhs.scalar);
-            let p7_1 = self.e123.mul_ref(&rhs.e1);
-            let p7_2 = self.e123.mul_ref(&rhs.e2);
-            let p7_3 = self.e123.mul_ref(&rhs.e3);
-            let p7_4 = self.e123.mul_ref(&rhs.e12);
-            let p7_5 = self.e123.mul_ref(&rhs.e13);
-            let p7_6 = self.e123.mul_ref(&rhs.e23);
-            let p7_7 = self.e123.mul_ref(&rhs.e123);
-            Multivector {
-                scalar: p0_0 + &p1_1 + &p2_2 + &p3_3 - &(p4_4 + &p5_5 + &p6_6 + &p7_7),
-                e1: p0_1 + &p1_0 - &p2_4 - &p3_5 + &(p4_2 + &p5_3 - &p6_7 - &p7_6),
-                e2: p0_2 + &p1_4 + &p2_0 - &p3_6 - &(p4_1 - &p5_7 - &p6_3 - &p7_5),
-                e3: p0_3 + &p1_5 + &p2_6 + &p3_0 - &(p4_7 + &p5_1 + &p6_2 + &p7_4),
-                e12: p0_4 + &p1_2 - &p2_1 + &p3_7 + &(p4_0 - &p5_6 + &p6_5 + &p7_3),
-                e13: p0_5 + &p1_3 - &p2_7 - &p3_1 + &(p4_6 + &p5_0 - &p6_4 - &p7_2),
-                e23: p0_6 + &p1_7 + &p2_3 - &p3_2 - &(p4_5 - &p5_4 - &p6_0 - &p7_1),
-                e123: p0_7 + &p1_6 - &p2_5 + &p3_4 + &(p4_3 - &p5_2 + &p6_1 + &p7_0),
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\x04\0\x04\0\x01\0\x05\0\x05\0\x01\0\x06\0\x06\0\x01\0\x07\0\x07\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x04\0\x01\0\x03\0\x05\0\x01\0\x04\0\x02\0\0\0\x05\0\x03\0\0\0\x06\0\x07\0\x01\0\x07\0\x06\0\x01\0\0\0\x02\0\0\0\x01\0\x04\0\0\0\x02\0\0\0\0\0\x03\0\x06\0\x01\0\x04\0\x01\0\x01\0\x05\0\x07\0\0\0\x06\0\x03\0\0\0\x07\0\x05\0\0\0\0\0\x03\0\0\0\x01\0\x05\0\0\0\x02\0\x06\0\0\0\x03\0\0\0\0\0\x04\0\x07\0\x01\0\x05\0\x01\0\x01\0\x06\0\x02\0\x01\0\x07\0\x04\0\x01\0\0\0\x04\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\x07\0\0\0\x04\0\0\0\0\0\x05\0\x06\0\x01\0\x06\0\x05\0\0\0\x07\0\x03\0\0\0\0\0\x05\0\0\0\x01\0\x03\0\0\0\x02\0\x07\0\x01\0\x03\0\x01\0\x01\0\x04\0\x06\0\0\0\x05\0\0\0\0\0\x06\0\x04\0\x01\0\x07\0\x02\0\x01\0\0\0\x06\0\0\0\x01\0\x07\0\0\0\x02\0\x03\0\0\0\x03\0\x02\0\x01\0\x04\0\x05\0\x01\0\x05\0\x04\0\0\0\x06\0\0\0\0\0\x07\0\x01\0\0\0\0\0\x07\0\0\0\x01\0\x06\0\0\0\x02\0\x05\0\x01\0\x03\0\x04\0\0\0\x04\0\x03\0\0\0\x05\0\x02\0\x01\0\x06\0\x01\0\0\0\x07\0\0\0\0\0",
+                    b"\0\0\x08\0\x10\0\x18\0 \0(\x000\08\0@\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -4068,18 +3861,19 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn op(&self, rhs: &Odd<T>) -> Rotor<T> {
-            let p0_1 = self.e1.mul_ref(&rhs.e2);
-            let p0_2 = self.e1.mul_ref(&rhs.e3);
-            let p1_0 = self.e2.mul_ref(&rhs.e1);
-            let p1_2 = self.e2.mul_ref(&rhs.e3);
-            let p2_0 = self.e3.mul_ref(&rhs.e1);
-            let p2_1 = self.e3.mul_ref(&rhs.e2);
-            Rotor {
-                scalar: T::zero(),
-                e12: p0_1 - &p1_0,
-                e13: p0_2 - &p2_0,
-                e23: p1_2 - &p2_1,
-            }
+            Rotor::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0",
+                    b"\0\0\0\0\x02\0\x04\0\x06\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitXor<&Odd<T>> for &Vector<T> {
@@ -4111,28 +3905,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn op(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            let p0_0 = self.e1.mul_ref(&rhs.scalar);
-            let p0_2 = self.e1.mul_ref(&rhs.e2);
-            let p0_3 = self.e1.mul_ref(&rhs.e3);
-            let p0_6 = self.e1.mul_ref(&rhs.e23);
-            let p1_0 = self.e2.mul_ref(&rhs.scalar);
-            let p1_1 = self.e2.mul_ref(&rhs.e1);
-            let p1_3 = self.e2.mul_ref(&rhs.e3);
-            let p1_5 = self.e2.mul_ref(&rhs.e13);
-            let p2_0 = self.e3.mul_ref(&rhs.scalar);
-            let p2_1 = self.e3.mul_ref(&rhs.e1);
-            let p2_2 = self.e3.mul_ref(&rhs.e2);
-            let p2_4 = self.e3.mul_ref(&rhs.e12);
-            Multivector {
-                scalar: T::zero(),
-                e1: p0_0,
-                e2: p1_0,
-                e3: p2_0,
-                e12: p0_2 - &p1_1,
-                e13: p0_3 - &p2_1,
-                e23: p1_3 - &p2_2,
-                e123: p0_6 - &p1_5 + &p2_4,
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\0\0\0\0\x02\0\0\0\x01\0\x01\0\x01\0\0\0\x03\0\0\0\x02\0\x01\0\x01\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0",
+                    b"\0\0\0\0\x01\0\x02\0\x03\0\x05\0\x07\0\t\0\x0C\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitXor<&Multivector<T>> for &Vector<T> {
@@ -4251,19 +4036,19 @@ pub mod g3_vendored {
         type Output = Odd<T>;
         #[inline]
         fn op(&self, rhs: &Odd<T>) -> Odd<T> {
-            let p0_0 = self.scalar.mul_ref(&rhs.e1);
-            let p0_1 = self.scalar.mul_ref(&rhs.e2);
-            let p0_2 = self.scalar.mul_ref(&rhs.e3);
-            let p0_3 = self.scalar.mul_ref(&rhs.e123);
-            let p1_2 = self.e12.mul_ref(&rhs.e3);
-            let p2_1 = self.e13.mul_ref(&rhs.e2);
-            let p3_0 = self.e23.mul_ref(&rhs.e1);
-            Odd {
-                e1: p0_0,
-                e2: p0_1,
-                e3: p0_2,
-                e123: p0_3 + &p1_2 - &p2_1 + &p3_0,
-            }
+            Odd::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
+                    b"\0\0\x01\0\x02\0\x03\0\x07\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitXor<&Odd<T>> for &Rotor<T> {
@@ -4295,30 +4080,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn op(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            let p0_0 = self.scalar.mul_ref(&rhs.scalar);
-            let p0_1 = self.scalar.mul_ref(&rhs.e1);
-            let p0_2 = self.scalar.mul_ref(&rhs.e2);
-            let p0_3 = self.scalar.mul_ref(&rhs.e3);
-            let p0_4 = self.scalar.mul_ref(&rhs.e12);
-            let p0_5 = self.scalar.mul_ref(&rhs.e13);
-            let p0_6 = self.scalar.mul_ref(&rhs.e23);
-            let p0_7 = self.scalar.mul_ref(&rhs.e123);
-            let p1_0 = self.e12.mul_ref(&rhs.scalar);
-            let p1_3 = self.e12.mul_ref(&rhs.e3);
-            let p2_0 = self.e13.mul_ref(&rhs.scalar);
-            let p2_2 = self.e13.mul_ref(&rhs.e2);
-            let p3_0 = self.e23.mul_ref(&rhs.scalar);
-            let p3_1 = self.e23.mul_ref(&rhs.e1);
-            Multivector {
-                scalar: p0_0,
-                e1: p0_1,
-                e2: p0_2,
-                e3: p0_3,
-                e12: p0_4 + &p1_0,
-                e13: p0_5 + &p2_0,
-                e23: p0_6 + &p3_0,
-                e123: p0_7 + &p1_3 - &p2_2 + &p3_1,
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\0\0\x03\0\0\0\0\0\x04\0\0\0\x01\0\0\0\0\0\0\0\x05\0\0\0\x02\0\0\0\0\0\0\0\x06\0\0\0\x03\0\0\0\0\0\0\0\x07\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0",
+                    b"\0\0\x01\0\x02\0\x03\0\x04\0\x06\0\x08\0\n\0\x0E\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitXor<&Multivector<T>> for &Rotor<T> {
@@ -4350,18 +4124,19 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn op(&self, rhs: &Vector<T>) -> Rotor<T> {
-            let p0_1 = self.e1.mul_ref(&rhs.e2);
-            let p0_2 = self.e1.mul_ref(&rhs.e3);
-            let p1_0 = self.e2.mul_ref(&rhs.e1);
-            let p1_2 = self.e2.mul_ref(&rhs.e3);
-            let p2_0 = self.e3.mul_ref(&rhs.e1);
-            let p2_1 = self.e3.mul_ref(&rhs.e2);
-            Rotor {
-                scalar: T::zero(),
-                e12: p0_1 - &p1_0,
-                e13: p0_2 - &p2_0,
-                e23: p1_2 - &p2_1,
-            }
+            Rotor::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0",
+                    b"\0\0\0\0\x02\0\x04\0\x06\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitXor<&Vector<T>> for &Odd<T> {
@@ -4393,19 +4168,19 @@ pub mod g3_vendored {
         type Output = Odd<T>;
         #[inline]
         fn op(&self, rhs: &Rotor<T>) -> Odd<T> {
-            let p0_0 = self.e1.mul_ref(&rhs.scalar);
-            let p0_3 = self.e1.mul_ref(&rhs.e23);
-            let p1_0 = self.e2.mul_ref(&rhs.scalar);
-            let p1_2 = self.e2.mul_ref(&rhs.e13);
-            let p2_0 = self.e3.mul_ref(&rhs.scalar);
-            let p2_1 = self.e3.mul_ref(&rhs.e12);
-            let p3_0 = self.e123.mul_ref(&rhs.scalar);
-            Odd {
-                e1: p0_0,
-                e2: p1_0,
-                e3: p2_0,
-                e123: p0_3 - &p1_2 + &p2_1 + &p3_0,
-            }
+            Odd::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\0\0\0\0\x03\0\0\0\x01\0\x02\0\x01\0\x02\0\x01\0\0\0\x03\0\0\0\0\0",
+                    b"\0\0\x01\0\x02\0\x03\0\x07\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitXor<&Rotor<T>> for &Odd<T> {
@@ -4436,18 +4211,19 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn op(&self, rhs: &Odd<T>) -> Rotor<T> {
-            let p0_1 = self.e1.mul_ref(&rhs.e2);
-            let p0_2 = self.e1.mul_ref(&rhs.e3);
-            let p1_0 = self.e2.mul_ref(&rhs.e1);
-            let p1_2 = self.e2.mul_ref(&rhs.e3);
-            let p2_0 = self.e3.mul_ref(&rhs.e1);
-            let p2_1 = self.e3.mul_ref(&rhs.e2);
-            Rotor {
-                scalar: T::zero(),
-                e12: p0_1 - &p1_0,
-                e13: p0_2 - &p2_0,
-                e23: p1_2 - &p2_1,
-            }
+            Rotor::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0",
+                    b"\0\0\0\0\x02\0\x04\0\x06\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitXor<&Odd<T>> for &Odd<T> {
@@ -4479,29 +4255,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn op(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            let p0_0 = self.e1.mul_ref(&rhs.scalar);
-            let p0_2 = self.e1.mul_ref(&rhs.e2);
-            let p0_3 = self.e1.mul_ref(&rhs.e3);
-            let p0_6 = self.e1.mul_ref(&rhs.e23);
-            let p1_0 = self.e2.mul_ref(&rhs.scalar);
-            let p1_1 = self.e2.mul_ref(&rhs.e1);
-            let p1_3 = self.e2.mul_ref(&rhs.e3);
-            let p1_5 = self.e2.mul_ref(&rhs.e13);
-            let p2_0 = self.e3.mul_ref(&rhs.scalar);
-            let p2_1 = self.e3.mul_ref(&rhs.e1);
-            let p2_2 = self.e3.mul_ref(&rhs.e2);
-            let p2_4 = self.e3.mul_ref(&rhs.e12);
-            let p3_0 = self.e123.mul_ref(&rhs.scalar);
-            Multivector {
-                scalar: T::zero(),
-                e1: p0_0,
-                e2: p1_0,
-                e3: p2_0,
-                e12: p0_2 - &p1_1,
-                e13: p0_3 - &p2_1,
-                e23: p1_3 - &p2_2,
-                e123: p0_6 - &p1_5 + &p2_4 + &p3_0,
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\0\0\0\0\x02\0\0\0\x01\0\x01\0\x01\0\0\0\x03\0\0\0\x02\0\x01\0\x01\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0\x03\0\0\0\0\0",
+                    b"\0\0\0\0\x01\0\x02\0\x03\0\x05\0\x07\0\t\0\r\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitXor<&Multivector<T>> for &Odd<T> {
@@ -4533,28 +4299,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn op(&self, rhs: &Vector<T>) -> Multivector<T> {
-            let p0_0 = self.scalar.mul_ref(&rhs.e1);
-            let p0_1 = self.scalar.mul_ref(&rhs.e2);
-            let p0_2 = self.scalar.mul_ref(&rhs.e3);
-            let p1_1 = self.e1.mul_ref(&rhs.e2);
-            let p1_2 = self.e1.mul_ref(&rhs.e3);
-            let p2_0 = self.e2.mul_ref(&rhs.e1);
-            let p2_2 = self.e2.mul_ref(&rhs.e3);
-            let p3_0 = self.e3.mul_ref(&rhs.e1);
-            let p3_1 = self.e3.mul_ref(&rhs.e2);
-            let p4_2 = self.e12.mul_ref(&rhs.e3);
-            let p5_1 = self.e13.mul_ref(&rhs.e2);
-            let p6_0 = self.e23.mul_ref(&rhs.e1);
-            Multivector {
-                scalar: T::zero(),
-                e1: p0_0,
-                e2: p0_1,
-                e3: p0_2,
-                e12: p1_1 - &p2_0,
-                e13: p1_2 - &p3_0,
-                e23: p2_2 - &p3_1,
-                e123: p4_2 - &p5_1 + &p6_0,
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\x01\0\x01\0\0\0\x02\0\0\0\x01\0\x01\0\x02\0\0\0\x03\0\0\0\x01\0\x02\0\x02\0\0\0\x03\0\x01\0\x01\0\x04\0\x02\0\0\0\x05\0\x01\0\x01\0\x06\0\0\0\0\0",
+                    b"\0\0\0\0\x01\0\x02\0\x03\0\x05\0\x07\0\t\0\x0C\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitXor<&Vector<T>> for &Multivector<T> {
@@ -4586,30 +4343,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn op(&self, rhs: &Rotor<T>) -> Multivector<T> {
-            let p0_0 = self.scalar.mul_ref(&rhs.scalar);
-            let p0_1 = self.scalar.mul_ref(&rhs.e12);
-            let p0_2 = self.scalar.mul_ref(&rhs.e13);
-            let p0_3 = self.scalar.mul_ref(&rhs.e23);
-            let p1_0 = self.e1.mul_ref(&rhs.scalar);
-            let p1_3 = self.e1.mul_ref(&rhs.e23);
-            let p2_0 = self.e2.mul_ref(&rhs.scalar);
-            let p2_2 = self.e2.mul_ref(&rhs.e13);
-            let p3_0 = self.e3.mul_ref(&rhs.scalar);
-            let p3_1 = self.e3.mul_ref(&rhs.e12);
-            let p4_0 = self.e12.mul_ref(&rhs.scalar);
-            let p5_0 = self.e13.mul_ref(&rhs.scalar);
-            let p6_0 = self.e23.mul_ref(&rhs.scalar);
-            let p7_0 = self.e123.mul_ref(&rhs.scalar);
-            Multivector {
-                scalar: p0_0,
-                e1: p1_0,
-                e2: p2_0,
-                e3: p3_0,
-                e12: p0_1 + &p4_0,
-                e13: p0_2 + &p5_0,
-                e23: p0_3 + &p6_0,
-                e123: p1_3 - &p2_2 + &p3_1 + &p7_0,
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\0\0\x03\0\0\0\0\0\0\0\x01\0\0\0\x04\0\0\0\0\0\0\0\x02\0\0\0\x05\0\0\0\0\0\0\0\x03\0\0\0\x06\0\0\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0\x07\0\0\0\0\0",
+                    b"\0\0\x01\0\x02\0\x03\0\x04\0\x06\0\x08\0\n\0\x0E\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitXor<&Rotor<T>> for &Multivector<T> {
@@ -4641,29 +4387,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn op(&self, rhs: &Odd<T>) -> Multivector<T> {
-            let p0_0 = self.scalar.mul_ref(&rhs.e1);
-            let p0_1 = self.scalar.mul_ref(&rhs.e2);
-            let p0_2 = self.scalar.mul_ref(&rhs.e3);
-            let p0_3 = self.scalar.mul_ref(&rhs.e123);
-            let p1_1 = self.e1.mul_ref(&rhs.e2);
-            let p1_2 = self.e1.mul_ref(&rhs.e3);
-            let p2_0 = self.e2.mul_ref(&rhs.e1);
-            let p2_2 = self.e2.mul_ref(&rhs.e3);
-            let p3_0 = self.e3.mul_ref(&rhs.e1);
-            let p3_1 = self.e3.mul_ref(&rhs.e2);
-            let p4_2 = self.e12.mul_ref(&rhs.e3);
-            let p5_1 = self.e13.mul_ref(&rhs.e2);
-            let p6_0 = self.e23.mul_ref(&rhs.e1);
-            Multivector {
-                scalar: T::zero(),
-                e1: p0_0,
-                e2: p0_1,
-                e3: p0_2,
-                e12: p1_1 - &p2_0,
-                e13: p1_2 - &p3_0,
-                e23: p2_2 - &p3_1,
-                e123: p0_3 + &p4_2 - &p5_1 + &p6_0,
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\x01\0\x01\0\0\0\x02\0\0\0\x01\0\x01\0\x02\0\0\0\x03\0\0\0\x01\0\x02\0\x02\0\0\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x04\0\x02\0\0\0\x05\0\x01\0\x01\0\x06\0\0\0\0\0",
+                    b"\0\0\0\0\x01\0\x02\0\x03\0\x05\0\x07\0\t\0\r\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitXor<&Odd<T>> for &Multivector<T> {
@@ -4695,43 +4431,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn op(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            let p0_0 = self.scalar.mul_ref(&rhs.scalar);
-            let p0_1 = self.scalar.mul_ref(&rhs.e1);
-            let p0_2 = self.scalar.mul_ref(&rhs.e2);
-            let p0_3 = self.scalar.mul_ref(&rhs.e3);
-            let p0_4 = self.scalar.mul_ref(&rhs.e12);
-            let p0_5 = self.scalar.mul_ref(&rhs.e13);
-            let p0_6 = self.scalar.mul_ref(&rhs.e23);
-            let p0_7 = self.scalar.mul_ref(&rhs.e123);
-            let p1_0 = self.e1.mul_ref(&rhs.scalar);
-            let p1_2 = self.e1.mul_ref(&rhs.e2);
-            let p1_3 = self.e1.mul_ref(&rhs.e3);
-            let p1_6 = self.e1.mul_ref(&rhs.e23);
-            let p2_0 = self.e2.mul_ref(&rhs.scalar);
-            let p2_1 = self.e2.mul_ref(&rhs.e1);
-            let p2_3 = self.e2.mul_ref(&rhs.e3);
-            let p2_5 = self.e2.mul_ref(&rhs.e13);
-            let p3_0 = self.e3.mul_ref(&rhs.scalar);
-            let p3_1 = self.e3.mul_ref(&rhs.e1);
-            let p3_2 = self.e3.mul_ref(&rhs.e2);
-            let p3_4 = self.e3.mul_ref(&rhs.e12);
-            let p4_0 = self.e12.mul_ref(&rhs.scalar);
-            let p4_3 = self.e12.mul_ref(&rhs.e3);
-            let p5_0 = self.e13.mul_ref(&rhs.scalar);
-            let p5_2 = self.e13.mul_ref(&rhs.e2);
-            let p6_0 = self.e23.mul_ref(&rhs.scalar);
-            let p6_1 = self.e23.mul_ref(&rhs.e1);
-            let p7_0 = self.e123.mul_ref(&rhs.scalar);
-            Multivector {
-                scalar: p0_0,
-                e1: p0_1 + &p1_0,
-                e2: p0_2 + &p2_0,
-                e3: p0_3 + &p3_0,
-                e12: p0_4 + &p1_2 - &p2_1 + &p4_0,
-                e13: p0_5 + &p1_3 - &p3_1 + &p5_0,
-                e23: p0_6 + &p2_3 - &p3_2 + &p6_0,
-                e123: p0_7 + &p1_6 - &p2_5 + &p3_4 + &(p4_3 - &p5_2 + &p6_1 + &p7_0),
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\0\0\x01\0\0\0\x01\0\0\0\0\0\0\0\x02\0\0\0\x02\0\0\0\0\0\0\0\x03\0\0\0\x03\0\0\0\0\0\0\0\x04\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x04\0\0\0\0\0\0\0\x05\0\0\0\x01\0\x03\0\0\0\x03\0\x01\0\x01\0\x05\0\0\0\0\0\0\0\x06\0\0\0\x02\0\x03\0\0\0\x03\0\x02\0\x01\0\x06\0\0\0\0\0\0\0\x07\0\0\0\x01\0\x06\0\0\0\x02\0\x05\0\x01\0\x03\0\x04\0\0\0\x04\0\x03\0\0\0\x05\0\x02\0\x01\0\x06\0\x01\0\0\0\x07\0\0\0\0\0",
+                    b"\0\0\x01\0\x03\0\x05\0\x07\0\x0B\0\x0F\0\x13\0\x1B\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitXor<&Multivector<T>>
@@ -4849,18 +4561,19 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn lc(&self, rhs: &Odd<T>) -> Rotor<T> {
-            let p0_0 = self.e1.mul_ref(&rhs.e1);
-            let p0_3 = self.e1.mul_ref(&rhs.e123);
-            let p1_1 = self.e2.mul_ref(&rhs.e2);
-            let p1_3 = self.e2.mul_ref(&rhs.e123);
-            let p2_2 = self.e3.mul_ref(&rhs.e3);
-            let p2_3 = self.e3.mul_ref(&rhs.e123);
-            Rotor {
-                scalar: p0_0 + &p1_1 + &p2_2,
-                e12: p2_3,
-                e13: ::algebra_core::Ring::neg_ref(&p1_3),
-                e23: p0_3,
-            }
+            Rotor::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x02\0\x03\0\0\0\x01\0\x03\0\x01\0\0\0\x03\0\0\0",
+                    b"\0\0\x03\0\x04\0\x05\0\x06\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitOr<&Odd<T>> for &Vector<T> {
@@ -4892,28 +4605,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn lc(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            let p0_1 = self.e1.mul_ref(&rhs.e1);
-            let p0_4 = self.e1.mul_ref(&rhs.e12);
-            let p0_5 = self.e1.mul_ref(&rhs.e13);
-            let p0_7 = self.e1.mul_ref(&rhs.e123);
-            let p1_2 = self.e2.mul_ref(&rhs.e2);
-            let p1_4 = self.e2.mul_ref(&rhs.e12);
-            let p1_6 = self.e2.mul_ref(&rhs.e23);
-            let p1_7 = self.e2.mul_ref(&rhs.e123);
-            let p2_3 = self.e3.mul_ref(&rhs.e3);
-            let p2_5 = self.e3.mul_ref(&rhs.e13);
-            let p2_6 = self.e3.mul_ref(&rhs.e23);
-            let p2_7 = self.e3.mul_ref(&rhs.e123);
-            Multivector {
-                scalar: p0_1 + &p1_2 + &p2_3,
-                e1: ::algebra_core::Ring::neg_ref(&p1_4) - &p2_5,
-                e2: p0_4 - &p2_6,
-                e3: p0_5 + &p1_6,
-                e12: p2_7,
-                e13: ::algebra_core::Ring::neg_ref(&p1_7),
-                e23: p0_7,
-                e123: T::zero(),
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\0\0\x04\0\0\0\x02\0\x06\0\x01\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\x02\0\x07\0\0\0\x01\0\x07\0\x01\0\0\0\x07\0\0\0",
+                    b"\0\0\x03\0\x05\0\x07\0\t\0\n\0\x0B\0\x0C\0\x0C\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitOr<&Multivector<T>> for &Vector<T> {
@@ -5028,19 +4732,19 @@ pub mod g3_vendored {
         type Output = Odd<T>;
         #[inline]
         fn lc(&self, rhs: &Odd<T>) -> Odd<T> {
-            let p0_0 = self.scalar.mul_ref(&rhs.e1);
-            let p0_1 = self.scalar.mul_ref(&rhs.e2);
-            let p0_2 = self.scalar.mul_ref(&rhs.e3);
-            let p0_3 = self.scalar.mul_ref(&rhs.e123);
-            let p1_3 = self.e12.mul_ref(&rhs.e123);
-            let p2_3 = self.e13.mul_ref(&rhs.e123);
-            let p3_3 = self.e23.mul_ref(&rhs.e123);
-            Odd {
-                e1: p0_0 - &p3_3,
-                e2: p0_1 + &p2_3,
-                e3: p0_2 - &p1_3,
-                e123: p0_3,
-            }
+            Odd::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x02\0\x03\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\0\0\x03\0\0\0",
+                    b"\0\0\x02\0\x04\0\x06\0\x07\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitOr<&Odd<T>> for &Rotor<T> {
@@ -5072,30 +4776,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn lc(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            let p0_0 = self.scalar.mul_ref(&rhs.scalar);
-            let p0_1 = self.scalar.mul_ref(&rhs.e1);
-            let p0_2 = self.scalar.mul_ref(&rhs.e2);
-            let p0_3 = self.scalar.mul_ref(&rhs.e3);
-            let p0_4 = self.scalar.mul_ref(&rhs.e12);
-            let p0_5 = self.scalar.mul_ref(&rhs.e13);
-            let p0_6 = self.scalar.mul_ref(&rhs.e23);
-            let p0_7 = self.scalar.mul_ref(&rhs.e123);
-            let p1_4 = self.e12.mul_ref(&rhs.e12);
-            let p1_7 = self.e12.mul_ref(&rhs.e123);
-            let p2_5 = self.e13.mul_ref(&rhs.e13);
-            let p2_7 = self.e13.mul_ref(&rhs.e123);
-            let p3_6 = self.e23.mul_ref(&rhs.e23);
-            let p3_7 = self.e23.mul_ref(&rhs.e123);
-            Multivector {
-                scalar: p0_0 - &p1_4 - &p2_5 - &p3_6,
-                e1: p0_1 - &p3_7,
-                e2: p0_2 + &p2_7,
-                e3: p0_3 - &p1_7,
-                e12: p0_4,
-                e13: p0_5,
-                e23: p0_6,
-                e123: p0_7,
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\x03\0\x06\0\x01\0\0\0\x01\0\0\0\x03\0\x07\0\x01\0\0\0\x02\0\0\0\x02\0\x07\0\0\0\0\0\x03\0\0\0\x01\0\x07\0\x01\0\0\0\x04\0\0\0\0\0\x05\0\0\0\0\0\x06\0\0\0\0\0\x07\0\0\0",
+                    b"\0\0\x04\0\x06\0\x08\0\n\0\x0B\0\x0C\0\r\0\x0E\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitOr<&Multivector<T>> for &Rotor<T> {
@@ -5127,15 +4820,19 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn lc(&self, rhs: &Vector<T>) -> Rotor<T> {
-            let p0_0 = self.e1.mul_ref(&rhs.e1);
-            let p1_1 = self.e2.mul_ref(&rhs.e2);
-            let p2_2 = self.e3.mul_ref(&rhs.e3);
-            Rotor {
-                scalar: p0_0 + &p1_1 + &p2_2,
-                e12: T::zero(),
-                e13: T::zero(),
-                e23: T::zero(),
-            }
+            Rotor::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0",
+                    b"\0\0\x03\0\x03\0\x03\0\x03\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitOr<&Vector<T>> for &Odd<T> {
@@ -5167,17 +4864,19 @@ pub mod g3_vendored {
         type Output = Vector<T>;
         #[inline]
         fn lc(&self, rhs: &Rotor<T>) -> Vector<T> {
-            let p0_1 = self.e1.mul_ref(&rhs.e12);
-            let p0_2 = self.e1.mul_ref(&rhs.e13);
-            let p1_1 = self.e2.mul_ref(&rhs.e12);
-            let p1_3 = self.e2.mul_ref(&rhs.e23);
-            let p2_2 = self.e3.mul_ref(&rhs.e13);
-            let p2_3 = self.e3.mul_ref(&rhs.e23);
-            Vector {
-                e1: ::algebra_core::Ring::neg_ref(&p1_1) - &p2_2,
-                e2: p0_1 - &p2_3,
-                e3: p0_2 + &p1_3,
-            }
+            Vector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    3usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\0\0\x01\0\0\0\x02\0\x03\0\x01\0\0\0\x02\0\0\0\x01\0\x03\0\0\0",
+                    b"\0\0\x02\0\x04\0\x06\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitOr<&Rotor<T>> for &Odd<T> {
@@ -5209,19 +4908,19 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn lc(&self, rhs: &Odd<T>) -> Rotor<T> {
-            let p0_0 = self.e1.mul_ref(&rhs.e1);
-            let p0_3 = self.e1.mul_ref(&rhs.e123);
-            let p1_1 = self.e2.mul_ref(&rhs.e2);
-            let p1_3 = self.e2.mul_ref(&rhs.e123);
-            let p2_2 = self.e3.mul_ref(&rhs.e3);
-            let p2_3 = self.e3.mul_ref(&rhs.e123);
-            let p3_3 = self.e123.mul_ref(&rhs.e123);
-            Rotor {
-                scalar: p0_0 + &p1_1 + &p2_2 - &p3_3,
-                e12: p2_3,
-                e13: ::algebra_core::Ring::neg_ref(&p1_3),
-                e23: p0_3,
-            }
+            Rotor::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\x02\0\x03\0\0\0\x01\0\x03\0\x01\0\0\0\x03\0\0\0",
+                    b"\0\0\x04\0\x05\0\x06\0\x07\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitOr<&Odd<T>> for &Odd<T> {
@@ -5253,29 +4952,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn lc(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            let p0_1 = self.e1.mul_ref(&rhs.e1);
-            let p0_4 = self.e1.mul_ref(&rhs.e12);
-            let p0_5 = self.e1.mul_ref(&rhs.e13);
-            let p0_7 = self.e1.mul_ref(&rhs.e123);
-            let p1_2 = self.e2.mul_ref(&rhs.e2);
-            let p1_4 = self.e2.mul_ref(&rhs.e12);
-            let p1_6 = self.e2.mul_ref(&rhs.e23);
-            let p1_7 = self.e2.mul_ref(&rhs.e123);
-            let p2_3 = self.e3.mul_ref(&rhs.e3);
-            let p2_5 = self.e3.mul_ref(&rhs.e13);
-            let p2_6 = self.e3.mul_ref(&rhs.e23);
-            let p2_7 = self.e3.mul_ref(&rhs.e123);
-            let p3_7 = self.e123.mul_ref(&rhs.e123);
-            Multivector {
-                scalar: p0_1 + &p1_2 + &p2_3 - &p3_7,
-                e1: ::algebra_core::Ring::neg_ref(&p1_4) - &p2_5,
-                e2: p0_4 - &p2_6,
-                e3: p0_5 + &p1_6,
-                e12: p2_7,
-                e13: ::algebra_core::Ring::neg_ref(&p1_7),
-                e23: p0_7,
-                e123: T::zero(),
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\x07\0\x01\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\0\0\x04\0\0\0\x02\0\x06\0\x01\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\x02\0\x07\0\0\0\x01\0\x07\0\x01\0\0\0\x07\0\0\0",
+                    b"\0\0\x04\0\x06\0\x08\0\n\0\x0B\0\x0C\0\r\0\r\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitOr<&Multivector<T>> for &Odd<T> {
@@ -5307,22 +4996,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn lc(&self, rhs: &Vector<T>) -> Multivector<T> {
-            let p0_0 = self.scalar.mul_ref(&rhs.e1);
-            let p0_1 = self.scalar.mul_ref(&rhs.e2);
-            let p0_2 = self.scalar.mul_ref(&rhs.e3);
-            let p1_0 = self.e1.mul_ref(&rhs.e1);
-            let p2_1 = self.e2.mul_ref(&rhs.e2);
-            let p3_2 = self.e3.mul_ref(&rhs.e3);
-            Multivector {
-                scalar: p1_0 + &p2_1 + &p3_2,
-                e1: p0_0,
-                e2: p0_1,
-                e3: p0_2,
-                e12: T::zero(),
-                e13: T::zero(),
-                e23: T::zero(),
-                e123: T::zero(),
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0\0\0\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0",
+                    b"\0\0\x03\0\x04\0\x05\0\x06\0\x06\0\x06\0\x06\0\x06\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitOr<&Vector<T>> for &Multivector<T> {
@@ -5354,29 +5040,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn lc(&self, rhs: &Rotor<T>) -> Multivector<T> {
-            let p0_0 = self.scalar.mul_ref(&rhs.scalar);
-            let p0_1 = self.scalar.mul_ref(&rhs.e12);
-            let p0_2 = self.scalar.mul_ref(&rhs.e13);
-            let p0_3 = self.scalar.mul_ref(&rhs.e23);
-            let p1_1 = self.e1.mul_ref(&rhs.e12);
-            let p1_2 = self.e1.mul_ref(&rhs.e13);
-            let p2_1 = self.e2.mul_ref(&rhs.e12);
-            let p2_3 = self.e2.mul_ref(&rhs.e23);
-            let p3_2 = self.e3.mul_ref(&rhs.e13);
-            let p3_3 = self.e3.mul_ref(&rhs.e23);
-            let p4_1 = self.e12.mul_ref(&rhs.e12);
-            let p5_2 = self.e13.mul_ref(&rhs.e13);
-            let p6_3 = self.e23.mul_ref(&rhs.e23);
-            Multivector {
-                scalar: p0_0 - &p4_1 - &p5_2 - &p6_3,
-                e1: ::algebra_core::Ring::neg_ref(&p2_1) - &p3_2,
-                e2: p1_1 - &p3_3,
-                e3: p1_2 + &p2_3,
-                e12: p0_1,
-                e13: p0_2,
-                e23: p0_3,
-                e123: T::zero(),
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x04\0\x01\0\x01\0\x05\0\x02\0\x01\0\x06\0\x03\0\x01\0\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0\x01\0\x01\0\0\0\x03\0\x03\0\x01\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\0\0\x03\0\0\0",
+                    b"\0\0\x04\0\x06\0\x08\0\n\0\x0B\0\x0C\0\r\0\r\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitOr<&Rotor<T>> for &Multivector<T> {
@@ -5408,30 +5084,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn lc(&self, rhs: &Odd<T>) -> Multivector<T> {
-            let p0_0 = self.scalar.mul_ref(&rhs.e1);
-            let p0_1 = self.scalar.mul_ref(&rhs.e2);
-            let p0_2 = self.scalar.mul_ref(&rhs.e3);
-            let p0_3 = self.scalar.mul_ref(&rhs.e123);
-            let p1_0 = self.e1.mul_ref(&rhs.e1);
-            let p1_3 = self.e1.mul_ref(&rhs.e123);
-            let p2_1 = self.e2.mul_ref(&rhs.e2);
-            let p2_3 = self.e2.mul_ref(&rhs.e123);
-            let p3_2 = self.e3.mul_ref(&rhs.e3);
-            let p3_3 = self.e3.mul_ref(&rhs.e123);
-            let p4_3 = self.e12.mul_ref(&rhs.e123);
-            let p5_3 = self.e13.mul_ref(&rhs.e123);
-            let p6_3 = self.e23.mul_ref(&rhs.e123);
-            let p7_3 = self.e123.mul_ref(&rhs.e123);
-            Multivector {
-                scalar: p1_0 + &p2_1 + &p3_2 - &p7_3,
-                e1: p0_0 - &p6_3,
-                e2: p0_1 + &p5_3,
-                e3: p0_2 - &p4_3,
-                e12: p3_3,
-                e13: ::algebra_core::Ring::neg_ref(&p2_3),
-                e23: p1_3,
-                e123: p0_3,
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0\x07\0\x03\0\x01\0\0\0\0\0\0\0\x06\0\x03\0\x01\0\0\0\x01\0\0\0\x05\0\x03\0\0\0\0\0\x02\0\0\0\x04\0\x03\0\x01\0\x03\0\x03\0\0\0\x02\0\x03\0\x01\0\x01\0\x03\0\0\0\0\0\x03\0\0\0",
+                    b"\0\0\x04\0\x06\0\x08\0\n\0\x0B\0\x0C\0\r\0\x0E\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitOr<&Odd<T>> for &Multivector<T> {
@@ -5463,43 +5128,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn lc(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            let p0_0 = self.scalar.mul_ref(&rhs.scalar);
-            let p0_1 = self.scalar.mul_ref(&rhs.e1);
-            let p0_2 = self.scalar.mul_ref(&rhs.e2);
-            let p0_3 = self.scalar.mul_ref(&rhs.e3);
-            let p0_4 = self.scalar.mul_ref(&rhs.e12);
-            let p0_5 = self.scalar.mul_ref(&rhs.e13);
-            let p0_6 = self.scalar.mul_ref(&rhs.e23);
-            let p0_7 = self.scalar.mul_ref(&rhs.e123);
-            let p1_1 = self.e1.mul_ref(&rhs.e1);
-            let p1_4 = self.e1.mul_ref(&rhs.e12);
-            let p1_5 = self.e1.mul_ref(&rhs.e13);
-            let p1_7 = self.e1.mul_ref(&rhs.e123);
-            let p2_2 = self.e2.mul_ref(&rhs.e2);
-            let p2_4 = self.e2.mul_ref(&rhs.e12);
-            let p2_6 = self.e2.mul_ref(&rhs.e23);
-            let p2_7 = self.e2.mul_ref(&rhs.e123);
-            let p3_3 = self.e3.mul_ref(&rhs.e3);
-            let p3_5 = self.e3.mul_ref(&rhs.e13);
-            let p3_6 = self.e3.mul_ref(&rhs.e23);
-            let p3_7 = self.e3.mul_ref(&rhs.e123);
-            let p4_4 = self.e12.mul_ref(&rhs.e12);
-            let p4_7 = self.e12.mul_ref(&rhs.e123);
-            let p5_5 = self.e13.mul_ref(&rhs.e13);
-            let p5_7 = self.e13.mul_ref(&rhs.e123);
-            let p6_6 = self.e23.mul_ref(&rhs.e23);
-            let p6_7 = self.e23.mul_ref(&rhs.e123);
-            let p7_7 = self.e123.mul_ref(&rhs.e123);
-            Multivector {
-                scalar: p0_0 + &p1_1 + &p2_2 + &p3_3 - &(p4_4 + &p5_5 + &p6_6 + &p7_7),
-                e1: p0_1 - &p2_4 - &p3_5 - &p6_7,
-                e2: p0_2 + &p1_4 - &p3_6 + &p5_7,
-                e3: p0_3 + &p1_5 + &p2_6 - &p4_7,
-                e12: p0_4 + &p3_7,
-                e13: p0_5 - &p2_7,
-                e23: p0_6 + &p1_7,
-                e123: p0_7,
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\x04\0\x04\0\x01\0\x05\0\x05\0\x01\0\x06\0\x06\0\x01\0\x07\0\x07\0\x01\0\0\0\x01\0\0\0\x02\0\x04\0\x01\0\x03\0\x05\0\x01\0\x06\0\x07\0\x01\0\0\0\x02\0\0\0\x01\0\x04\0\0\0\x03\0\x06\0\x01\0\x05\0\x07\0\0\0\0\0\x03\0\0\0\x01\0\x05\0\0\0\x02\0\x06\0\0\0\x04\0\x07\0\x01\0\0\0\x04\0\0\0\x03\0\x07\0\0\0\0\0\x05\0\0\0\x02\0\x07\0\x01\0\0\0\x06\0\0\0\x01\0\x07\0\0\0\0\0\x07\0\0\0",
+                    b"\0\0\x08\0\x0C\0\x10\0\x14\0\x16\0\x18\0\x1A\0\x1B\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitOr<&Multivector<T>>
@@ -5565,15 +5206,19 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn rc(&self, rhs: &Odd<T>) -> Rotor<T> {
-            let p0_0 = self.e1.mul_ref(&rhs.e1);
-            let p1_1 = self.e2.mul_ref(&rhs.e2);
-            let p2_2 = self.e3.mul_ref(&rhs.e3);
-            Rotor {
-                scalar: p0_0 + &p1_1 + &p2_2,
-                e12: T::zero(),
-                e13: T::zero(),
-                e23: T::zero(),
-            }
+            Rotor::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0",
+                    b"\0\0\x03\0\x03\0\x03\0\x03\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::RightContraction<Multivector<T>>
@@ -5581,22 +5226,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn rc(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            let p0_0 = self.e1.mul_ref(&rhs.scalar);
-            let p0_1 = self.e1.mul_ref(&rhs.e1);
-            let p1_0 = self.e2.mul_ref(&rhs.scalar);
-            let p1_2 = self.e2.mul_ref(&rhs.e2);
-            let p2_0 = self.e3.mul_ref(&rhs.scalar);
-            let p2_3 = self.e3.mul_ref(&rhs.e3);
-            Multivector {
-                scalar: p0_1 + &p1_2 + &p2_3,
-                e1: p0_0,
-                e2: p1_0,
-                e3: p2_0,
-                e12: T::zero(),
-                e13: T::zero(),
-                e23: T::zero(),
-                e123: T::zero(),
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\0\0",
+                    b"\0\0\x03\0\x04\0\x05\0\x06\0\x06\0\x06\0\x06\0\x06\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::RightContraction<Vector<T>>
@@ -5642,17 +5284,19 @@ pub mod g3_vendored {
         type Output = Vector<T>;
         #[inline]
         fn rc(&self, rhs: &Odd<T>) -> Vector<T> {
-            let p1_0 = self.e12.mul_ref(&rhs.e1);
-            let p1_1 = self.e12.mul_ref(&rhs.e2);
-            let p2_0 = self.e13.mul_ref(&rhs.e1);
-            let p2_2 = self.e13.mul_ref(&rhs.e3);
-            let p3_1 = self.e23.mul_ref(&rhs.e2);
-            let p3_2 = self.e23.mul_ref(&rhs.e3);
-            Vector {
-                e1: p1_1 + &p2_2,
-                e2: p3_2 - &p1_0,
-                e3: ::algebra_core::Ring::neg_ref(&p2_0) - &p3_1,
-            }
+            Vector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    3usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0",
+                    b"\0\0\x02\0\x04\0\x06\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::RightContraction<Multivector<T>>
@@ -5660,29 +5304,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn rc(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            let p0_0 = self.scalar.mul_ref(&rhs.scalar);
-            let p1_0 = self.e12.mul_ref(&rhs.scalar);
-            let p1_1 = self.e12.mul_ref(&rhs.e1);
-            let p1_2 = self.e12.mul_ref(&rhs.e2);
-            let p1_4 = self.e12.mul_ref(&rhs.e12);
-            let p2_0 = self.e13.mul_ref(&rhs.scalar);
-            let p2_1 = self.e13.mul_ref(&rhs.e1);
-            let p2_3 = self.e13.mul_ref(&rhs.e3);
-            let p2_5 = self.e13.mul_ref(&rhs.e13);
-            let p3_0 = self.e23.mul_ref(&rhs.scalar);
-            let p3_2 = self.e23.mul_ref(&rhs.e2);
-            let p3_3 = self.e23.mul_ref(&rhs.e3);
-            let p3_6 = self.e23.mul_ref(&rhs.e23);
-            Multivector {
-                scalar: p0_0 - &p1_4 - &p2_5 - &p3_6,
-                e1: p1_2 + &p2_3,
-                e2: p3_3 - &p1_1,
-                e3: ::algebra_core::Ring::neg_ref(&p2_1) - &p3_2,
-                e12: p1_0,
-                e13: p2_0,
-                e23: p3_0,
-                e123: T::zero(),
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\x03\0\x06\0\x01\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x01\0\x01\0\x01\0\x03\0\x03\0\0\0\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0\x01\0\0\0\0\0\x02\0\0\0\0\0\x03\0\0\0\0\0",
+                    b"\0\0\x04\0\x06\0\x08\0\n\0\x0B\0\x0C\0\r\0\r\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::RightContraction<Vector<T>>
@@ -5690,18 +5324,19 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn rc(&self, rhs: &Vector<T>) -> Rotor<T> {
-            let p0_0 = self.e1.mul_ref(&rhs.e1);
-            let p1_1 = self.e2.mul_ref(&rhs.e2);
-            let p2_2 = self.e3.mul_ref(&rhs.e3);
-            let p3_0 = self.e123.mul_ref(&rhs.e1);
-            let p3_1 = self.e123.mul_ref(&rhs.e2);
-            let p3_2 = self.e123.mul_ref(&rhs.e3);
-            Rotor {
-                scalar: p0_0 + &p1_1 + &p2_2,
-                e12: p3_2,
-                e13: ::algebra_core::Ring::neg_ref(&p3_1),
-                e23: p3_0,
-            }
+            Rotor::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x02\0\0\0\x03\0\x01\0\x01\0\x03\0\0\0\0\0",
+                    b"\0\0\x03\0\x04\0\x05\0\x06\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::RightContraction<Rotor<T>>
@@ -5709,19 +5344,19 @@ pub mod g3_vendored {
         type Output = Odd<T>;
         #[inline]
         fn rc(&self, rhs: &Rotor<T>) -> Odd<T> {
-            let p0_0 = self.e1.mul_ref(&rhs.scalar);
-            let p1_0 = self.e2.mul_ref(&rhs.scalar);
-            let p2_0 = self.e3.mul_ref(&rhs.scalar);
-            let p3_0 = self.e123.mul_ref(&rhs.scalar);
-            let p3_1 = self.e123.mul_ref(&rhs.e12);
-            let p3_2 = self.e123.mul_ref(&rhs.e13);
-            let p3_3 = self.e123.mul_ref(&rhs.e23);
-            Odd {
-                e1: p0_0 - &p3_3,
-                e2: p1_0 + &p3_2,
-                e3: p2_0 - &p3_1,
-                e123: p3_0,
-            }
+            Odd::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x03\0\x03\0\x01\0\x01\0\0\0\0\0\x03\0\x02\0\0\0\x02\0\0\0\0\0\x03\0\x01\0\x01\0\x03\0\0\0\0\0",
+                    b"\0\0\x02\0\x04\0\x06\0\x07\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::RightContraction<Odd<T>>
@@ -5729,19 +5364,19 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn rc(&self, rhs: &Odd<T>) -> Rotor<T> {
-            let p0_0 = self.e1.mul_ref(&rhs.e1);
-            let p1_1 = self.e2.mul_ref(&rhs.e2);
-            let p2_2 = self.e3.mul_ref(&rhs.e3);
-            let p3_0 = self.e123.mul_ref(&rhs.e1);
-            let p3_1 = self.e123.mul_ref(&rhs.e2);
-            let p3_2 = self.e123.mul_ref(&rhs.e3);
-            let p3_3 = self.e123.mul_ref(&rhs.e123);
-            Rotor {
-                scalar: p0_0 + &p1_1 + &p2_2 - &p3_3,
-                e12: p3_2,
-                e13: ::algebra_core::Ring::neg_ref(&p3_1),
-                e23: p3_0,
-            }
+            Rotor::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\x03\0\x02\0\0\0\x03\0\x01\0\x01\0\x03\0\0\0\0\0",
+                    b"\0\0\x04\0\x05\0\x06\0\x07\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::RightContraction<Multivector<T>>
@@ -5749,30 +5384,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn rc(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            let p0_0 = self.e1.mul_ref(&rhs.scalar);
-            let p0_1 = self.e1.mul_ref(&rhs.e1);
-            let p1_0 = self.e2.mul_ref(&rhs.scalar);
-            let p1_2 = self.e2.mul_ref(&rhs.e2);
-            let p2_0 = self.e3.mul_ref(&rhs.scalar);
-            let p2_3 = self.e3.mul_ref(&rhs.e3);
-            let p3_0 = self.e123.mul_ref(&rhs.scalar);
-            let p3_1 = self.e123.mul_ref(&rhs.e1);
-            let p3_2 = self.e123.mul_ref(&rhs.e2);
-            let p3_3 = self.e123.mul_ref(&rhs.e3);
-            let p3_4 = self.e123.mul_ref(&rhs.e12);
-            let p3_5 = self.e123.mul_ref(&rhs.e13);
-            let p3_6 = self.e123.mul_ref(&rhs.e23);
-            let p3_7 = self.e123.mul_ref(&rhs.e123);
-            Multivector {
-                scalar: p0_1 + &p1_2 + &p2_3 - &p3_7,
-                e1: p0_0 - &p3_6,
-                e2: p1_0 + &p3_5,
-                e3: p2_0 - &p3_4,
-                e12: p3_3,
-                e13: ::algebra_core::Ring::neg_ref(&p3_2),
-                e23: p3_1,
-                e123: p3_0,
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\x07\0\x01\0\0\0\0\0\0\0\x03\0\x06\0\x01\0\x01\0\0\0\0\0\x03\0\x05\0\0\0\x02\0\0\0\0\0\x03\0\x04\0\x01\0\x03\0\x03\0\0\0\x03\0\x02\0\x01\0\x03\0\x01\0\0\0\x03\0\0\0\0\0",
+                    b"\0\0\x04\0\x06\0\x08\0\n\0\x0B\0\x0C\0\r\0\x0E\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::RightContraction<Vector<T>>
@@ -5780,28 +5404,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn rc(&self, rhs: &Vector<T>) -> Multivector<T> {
-            let p1_0 = self.e1.mul_ref(&rhs.e1);
-            let p2_1 = self.e2.mul_ref(&rhs.e2);
-            let p3_2 = self.e3.mul_ref(&rhs.e3);
-            let p4_0 = self.e12.mul_ref(&rhs.e1);
-            let p4_1 = self.e12.mul_ref(&rhs.e2);
-            let p5_0 = self.e13.mul_ref(&rhs.e1);
-            let p5_2 = self.e13.mul_ref(&rhs.e3);
-            let p6_1 = self.e23.mul_ref(&rhs.e2);
-            let p6_2 = self.e23.mul_ref(&rhs.e3);
-            let p7_0 = self.e123.mul_ref(&rhs.e1);
-            let p7_1 = self.e123.mul_ref(&rhs.e2);
-            let p7_2 = self.e123.mul_ref(&rhs.e3);
-            Multivector {
-                scalar: p1_0 + &p2_1 + &p3_2,
-                e1: p4_1 + &p5_2,
-                e2: p6_2 - &p4_0,
-                e3: ::algebra_core::Ring::neg_ref(&p5_0) - &p6_1,
-                e12: p7_2,
-                e13: ::algebra_core::Ring::neg_ref(&p7_1),
-                e23: p7_0,
-                e123: T::zero(),
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0\x04\0\x01\0\0\0\x05\0\x02\0\0\0\x04\0\0\0\x01\0\x06\0\x02\0\0\0\x05\0\0\0\x01\0\x06\0\x01\0\x01\0\x07\0\x02\0\0\0\x07\0\x01\0\x01\0\x07\0\0\0\0\0",
+                    b"\0\0\x03\0\x05\0\x07\0\t\0\n\0\x0B\0\x0C\0\x0C\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::RightContraction<Rotor<T>>
@@ -5809,30 +5424,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn rc(&self, rhs: &Rotor<T>) -> Multivector<T> {
-            let p0_0 = self.scalar.mul_ref(&rhs.scalar);
-            let p1_0 = self.e1.mul_ref(&rhs.scalar);
-            let p2_0 = self.e2.mul_ref(&rhs.scalar);
-            let p3_0 = self.e3.mul_ref(&rhs.scalar);
-            let p4_0 = self.e12.mul_ref(&rhs.scalar);
-            let p4_1 = self.e12.mul_ref(&rhs.e12);
-            let p5_0 = self.e13.mul_ref(&rhs.scalar);
-            let p5_2 = self.e13.mul_ref(&rhs.e13);
-            let p6_0 = self.e23.mul_ref(&rhs.scalar);
-            let p6_3 = self.e23.mul_ref(&rhs.e23);
-            let p7_0 = self.e123.mul_ref(&rhs.scalar);
-            let p7_1 = self.e123.mul_ref(&rhs.e12);
-            let p7_2 = self.e123.mul_ref(&rhs.e13);
-            let p7_3 = self.e123.mul_ref(&rhs.e23);
-            Multivector {
-                scalar: p0_0 - &p4_1 - &p5_2 - &p6_3,
-                e1: p1_0 - &p7_3,
-                e2: p2_0 + &p7_2,
-                e3: p3_0 - &p7_1,
-                e12: p4_0,
-                e13: p5_0,
-                e23: p6_0,
-                e123: p7_0,
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x04\0\x01\0\x01\0\x05\0\x02\0\x01\0\x06\0\x03\0\x01\0\x01\0\0\0\0\0\x07\0\x03\0\x01\0\x02\0\0\0\0\0\x07\0\x02\0\0\0\x03\0\0\0\0\0\x07\0\x01\0\x01\0\x04\0\0\0\0\0\x05\0\0\0\0\0\x06\0\0\0\0\0\x07\0\0\0\0\0",
+                    b"\0\0\x04\0\x06\0\x08\0\n\0\x0B\0\x0C\0\r\0\x0E\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::RightContraction<Odd<T>>
@@ -5840,29 +5444,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn rc(&self, rhs: &Odd<T>) -> Multivector<T> {
-            let p1_0 = self.e1.mul_ref(&rhs.e1);
-            let p2_1 = self.e2.mul_ref(&rhs.e2);
-            let p3_2 = self.e3.mul_ref(&rhs.e3);
-            let p4_0 = self.e12.mul_ref(&rhs.e1);
-            let p4_1 = self.e12.mul_ref(&rhs.e2);
-            let p5_0 = self.e13.mul_ref(&rhs.e1);
-            let p5_2 = self.e13.mul_ref(&rhs.e3);
-            let p6_1 = self.e23.mul_ref(&rhs.e2);
-            let p6_2 = self.e23.mul_ref(&rhs.e3);
-            let p7_0 = self.e123.mul_ref(&rhs.e1);
-            let p7_1 = self.e123.mul_ref(&rhs.e2);
-            let p7_2 = self.e123.mul_ref(&rhs.e3);
-            let p7_3 = self.e123.mul_ref(&rhs.e123);
-            Multivector {
-                scalar: p1_0 + &p2_1 + &p3_2 - &p7_3,
-                e1: p4_1 + &p5_2,
-                e2: p6_2 - &p4_0,
-                e3: ::algebra_core::Ring::neg_ref(&p5_0) - &p6_1,
-                e12: p7_2,
-                e13: ::algebra_core::Ring::neg_ref(&p7_1),
-                e23: p7_0,
-                e123: T::zero(),
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0\x07\0\x03\0\x01\0\x04\0\x01\0\0\0\x05\0\x02\0\0\0\x04\0\0\0\x01\0\x06\0\x02\0\0\0\x05\0\0\0\x01\0\x06\0\x01\0\x01\0\x07\0\x02\0\0\0\x07\0\x01\0\x01\0\x07\0\0\0\0\0",
+                    b"\0\0\x04\0\x06\0\x08\0\n\0\x0B\0\x0C\0\r\0\r\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::RightContraction<Multivector<T>>
@@ -5870,43 +5464,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn rc(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            let p0_0 = self.scalar.mul_ref(&rhs.scalar);
-            let p1_0 = self.e1.mul_ref(&rhs.scalar);
-            let p1_1 = self.e1.mul_ref(&rhs.e1);
-            let p2_0 = self.e2.mul_ref(&rhs.scalar);
-            let p2_2 = self.e2.mul_ref(&rhs.e2);
-            let p3_0 = self.e3.mul_ref(&rhs.scalar);
-            let p3_3 = self.e3.mul_ref(&rhs.e3);
-            let p4_0 = self.e12.mul_ref(&rhs.scalar);
-            let p4_1 = self.e12.mul_ref(&rhs.e1);
-            let p4_2 = self.e12.mul_ref(&rhs.e2);
-            let p4_4 = self.e12.mul_ref(&rhs.e12);
-            let p5_0 = self.e13.mul_ref(&rhs.scalar);
-            let p5_1 = self.e13.mul_ref(&rhs.e1);
-            let p5_3 = self.e13.mul_ref(&rhs.e3);
-            let p5_5 = self.e13.mul_ref(&rhs.e13);
-            let p6_0 = self.e23.mul_ref(&rhs.scalar);
-            let p6_2 = self.e23.mul_ref(&rhs.e2);
-            let p6_3 = self.e23.mul_ref(&rhs.e3);
-            let p6_6 = self.e23.mul_ref(&rhs.e23);
-            let p7_0 = self.e123.mul_ref(&rhs.scalar);
-            let p7_1 = self.e123.mul_ref(&rhs.e1);
-            let p7_2 = self.e123.mul_ref(&rhs.e2);
-            let p7_3 = self.e123.mul_ref(&rhs.e3);
-            let p7_4 = self.e123.mul_ref(&rhs.e12);
-            let p7_5 = self.e123.mul_ref(&rhs.e13);
-            let p7_6 = self.e123.mul_ref(&rhs.e23);
-            let p7_7 = self.e123.mul_ref(&rhs.e123);
-            Multivector {
-                scalar: p0_0 + &p1_1 + &p2_2 + &p3_3 - &(p4_4 + &p5_5 + &p6_6 + &p7_7),
-                e1: p1_0 + &p4_2 + &p5_3 - &p7_6,
-                e2: p2_0 - &p4_1 + &p6_3 + &p7_5,
-                e3: p3_0 - &p5_1 - &p6_2 - &p7_4,
-                e12: p4_0 + &p7_3,
-                e13: p5_0 - &p7_2,
-                e23: p6_0 + &p7_1,
-                e123: p7_0,
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\x04\0\x04\0\x01\0\x05\0\x05\0\x01\0\x06\0\x06\0\x01\0\x07\0\x07\0\x01\0\x01\0\0\0\0\0\x04\0\x02\0\0\0\x05\0\x03\0\0\0\x07\0\x06\0\x01\0\x02\0\0\0\0\0\x04\0\x01\0\x01\0\x06\0\x03\0\0\0\x07\0\x05\0\0\0\x03\0\0\0\0\0\x05\0\x01\0\x01\0\x06\0\x02\0\x01\0\x07\0\x04\0\x01\0\x04\0\0\0\0\0\x07\0\x03\0\0\0\x05\0\0\0\0\0\x07\0\x02\0\x01\0\x06\0\0\0\0\0\x07\0\x01\0\0\0\x07\0\0\0\0\0",
+                    b"\0\0\x08\0\x0C\0\x10\0\x14\0\x16\0\x18\0\x1A\0\x1B\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::ScalarProduct<Vector<T>>
@@ -5942,15 +5512,19 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn sp(&self, rhs: &Odd<T>) -> Rotor<T> {
-            let p0_0 = self.e1.mul_ref(&rhs.e1);
-            let p1_1 = self.e2.mul_ref(&rhs.e2);
-            let p2_2 = self.e3.mul_ref(&rhs.e3);
-            Rotor {
-                scalar: p0_0 + &p1_1 + &p2_2,
-                e12: T::zero(),
-                e13: T::zero(),
-                e23: T::zero(),
-            }
+            Rotor::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0",
+                    b"\0\0\x03\0\x03\0\x03\0\x03\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::ScalarProduct<Multivector<T>>
@@ -5958,15 +5532,19 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn sp(&self, rhs: &Multivector<T>) -> Rotor<T> {
-            let p0_1 = self.e1.mul_ref(&rhs.e1);
-            let p1_2 = self.e2.mul_ref(&rhs.e2);
-            let p2_3 = self.e3.mul_ref(&rhs.e3);
-            Rotor {
-                scalar: p0_1 + &p1_2 + &p2_3,
-                e12: T::zero(),
-                e13: T::zero(),
-                e23: T::zero(),
-            }
+            Rotor::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0",
+                    b"\0\0\x03\0\x03\0\x03\0\x03\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::ScalarProduct<Vector<T>>
@@ -6015,16 +5593,19 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn sp(&self, rhs: &Multivector<T>) -> Rotor<T> {
-            let p0_0 = self.scalar.mul_ref(&rhs.scalar);
-            let p1_4 = self.e12.mul_ref(&rhs.e12);
-            let p2_5 = self.e13.mul_ref(&rhs.e13);
-            let p3_6 = self.e23.mul_ref(&rhs.e23);
-            Rotor {
-                scalar: p0_0 - &p1_4 - &p2_5 - &p3_6,
-                e12: T::zero(),
-                e13: T::zero(),
-                e23: T::zero(),
-            }
+            Rotor::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\x03\0\x06\0\x01\0",
+                    b"\0\0\x04\0\x04\0\x04\0\x04\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::ScalarProduct<Vector<T>>
@@ -6032,15 +5613,19 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn sp(&self, rhs: &Vector<T>) -> Rotor<T> {
-            let p0_0 = self.e1.mul_ref(&rhs.e1);
-            let p1_1 = self.e2.mul_ref(&rhs.e2);
-            let p2_2 = self.e3.mul_ref(&rhs.e3);
-            Rotor {
-                scalar: p0_0 + &p1_1 + &p2_2,
-                e12: T::zero(),
-                e13: T::zero(),
-                e23: T::zero(),
-            }
+            Rotor::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0",
+                    b"\0\0\x03\0\x03\0\x03\0\x03\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::ScalarProduct<Rotor<T>>
@@ -6059,16 +5644,19 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn sp(&self, rhs: &Odd<T>) -> Rotor<T> {
-            let p0_0 = self.e1.mul_ref(&rhs.e1);
-            let p1_1 = self.e2.mul_ref(&rhs.e2);
-            let p2_2 = self.e3.mul_ref(&rhs.e3);
-            let p3_3 = self.e123.mul_ref(&rhs.e123);
-            Rotor {
-                scalar: p0_0 + &p1_1 + &p2_2 - &p3_3,
-                e12: T::zero(),
-                e13: T::zero(),
-                e23: T::zero(),
-            }
+            Rotor::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0",
+                    b"\0\0\x04\0\x04\0\x04\0\x04\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::ScalarProduct<Multivector<T>>
@@ -6076,16 +5664,19 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn sp(&self, rhs: &Multivector<T>) -> Rotor<T> {
-            let p0_1 = self.e1.mul_ref(&rhs.e1);
-            let p1_2 = self.e2.mul_ref(&rhs.e2);
-            let p2_3 = self.e3.mul_ref(&rhs.e3);
-            let p3_7 = self.e123.mul_ref(&rhs.e123);
-            Rotor {
-                scalar: p0_1 + &p1_2 + &p2_3 - &p3_7,
-                e12: T::zero(),
-                e13: T::zero(),
-                e23: T::zero(),
-            }
+            Rotor::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\x07\0\x01\0",
+                    b"\0\0\x04\0\x04\0\x04\0\x04\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::ScalarProduct<Vector<T>>
@@ -6093,15 +5684,19 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn sp(&self, rhs: &Vector<T>) -> Rotor<T> {
-            let p1_0 = self.e1.mul_ref(&rhs.e1);
-            let p2_1 = self.e2.mul_ref(&rhs.e2);
-            let p3_2 = self.e3.mul_ref(&rhs.e3);
-            Rotor {
-                scalar: p1_0 + &p2_1 + &p3_2,
-                e12: T::zero(),
-                e13: T::zero(),
-                e23: T::zero(),
-            }
+            Rotor::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0",
+                    b"\0\0\x03\0\x03\0\x03\0\x03\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::ScalarProduct<Rotor<T>>
@@ -6109,16 +5704,19 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn sp(&self, rhs: &Rotor<T>) -> Rotor<T> {
-            let p0_0 = self.scalar.mul_ref(&rhs.scalar);
-            let p4_1 = self.e12.mul_ref(&rhs.e12);
-            let p5_2 = self.e13.mul_ref(&rhs.e13);
-            let p6_3 = self.e23.mul_ref(&rhs.e23);
-            Rotor {
-                scalar: p0_0 - &p4_1 - &p5_2 - &p6_3,
-                e12: T::zero(),
-                e13: T::zero(),
-                e23: T::zero(),
-            }
+            Rotor::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x04\0\x01\0\x01\0\x05\0\x02\0\x01\0\x06\0\x03\0\x01\0",
+                    b"\0\0\x04\0\x04\0\x04\0\x04\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::ScalarProduct<Odd<T>>
@@ -6126,16 +5724,19 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn sp(&self, rhs: &Odd<T>) -> Rotor<T> {
-            let p1_0 = self.e1.mul_ref(&rhs.e1);
-            let p2_1 = self.e2.mul_ref(&rhs.e2);
-            let p3_2 = self.e3.mul_ref(&rhs.e3);
-            let p7_3 = self.e123.mul_ref(&rhs.e123);
-            Rotor {
-                scalar: p1_0 + &p2_1 + &p3_2 - &p7_3,
-                e12: T::zero(),
-                e13: T::zero(),
-                e23: T::zero(),
-            }
+            Rotor::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0\x07\0\x03\0\x01\0",
+                    b"\0\0\x04\0\x04\0\x04\0\x04\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::ScalarProduct<Multivector<T>>
@@ -6143,20 +5744,19 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn sp(&self, rhs: &Multivector<T>) -> Rotor<T> {
-            let p0_0 = self.scalar.mul_ref(&rhs.scalar);
-            let p1_1 = self.e1.mul_ref(&rhs.e1);
-            let p2_2 = self.e2.mul_ref(&rhs.e2);
-            let p3_3 = self.e3.mul_ref(&rhs.e3);
-            let p4_4 = self.e12.mul_ref(&rhs.e12);
-            let p5_5 = self.e13.mul_ref(&rhs.e13);
-            let p6_6 = self.e23.mul_ref(&rhs.e23);
-            let p7_7 = self.e123.mul_ref(&rhs.e123);
-            Rotor {
-                scalar: p0_0 + &p1_1 + &p2_2 + &p3_3 - &(p4_4 + &p5_5 + &p6_6 + &p7_7),
-                e12: T::zero(),
-                e13: T::zero(),
-                e23: T::zero(),
-            }
+            Rotor::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\x04\0\x04\0\x01\0\x05\0\x05\0\x01\0\x06\0\x06\0\x01\0\x07\0\x07\0\x01\0",
+                    b"\0\0\x08\0\x08\0\x08\0\x08\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::RegressiveProduct<Vector<T>>
@@ -6240,14 +5840,19 @@ pub mod g3_vendored {
         type Output = Vector<T>;
         #[inline]
         fn regressive(&self, rhs: &Odd<T>) -> Vector<T> {
-            let p0_3 = self.e1.mul_ref(&rhs.e123);
-            let p1_3 = self.e2.mul_ref(&rhs.e123);
-            let p2_3 = self.e3.mul_ref(&rhs.e123);
-            Vector {
-                e1: p0_3,
-                e2: p1_3,
-                e3: p2_3,
-            }
+            Vector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    3usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\x03\0\0\0\x01\0\x03\0\0\0\x02\0\x03\0\0\0",
+                    b"\0\0\x01\0\x02\0\x03\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitAnd<&Odd<T>> for &Vector<T> {
@@ -6279,22 +5884,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn regressive(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            let p0_6 = self.e1.mul_ref(&rhs.e23);
-            let p0_7 = self.e1.mul_ref(&rhs.e123);
-            let p1_5 = self.e2.mul_ref(&rhs.e13);
-            let p1_7 = self.e2.mul_ref(&rhs.e123);
-            let p2_4 = self.e3.mul_ref(&rhs.e12);
-            let p2_7 = self.e3.mul_ref(&rhs.e123);
-            Multivector {
-                scalar: p0_6 - &p1_5 + &p2_4,
-                e1: p0_7,
-                e2: p1_7,
-                e3: p2_7,
-                e12: T::zero(),
-                e13: T::zero(),
-                e23: T::zero(),
-                e123: T::zero(),
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0\0\0\x07\0\0\0\x01\0\x07\0\0\0\x02\0\x07\0\0\0",
+                    b"\0\0\x03\0\x04\0\x05\0\x06\0\x06\0\x06\0\x06\0\x06\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitAnd<&Multivector<T>> for &Vector<T> {
@@ -6408,19 +6010,19 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn regressive(&self, rhs: &Odd<T>) -> Rotor<T> {
-            let p0_3 = self.scalar.mul_ref(&rhs.e123);
-            let p1_2 = self.e12.mul_ref(&rhs.e3);
-            let p1_3 = self.e12.mul_ref(&rhs.e123);
-            let p2_1 = self.e13.mul_ref(&rhs.e2);
-            let p2_3 = self.e13.mul_ref(&rhs.e123);
-            let p3_0 = self.e23.mul_ref(&rhs.e1);
-            let p3_3 = self.e23.mul_ref(&rhs.e123);
-            Rotor {
-                scalar: p0_3 + &p1_2 - &p2_1 + &p3_0,
-                e12: p1_3,
-                e13: p2_3,
-                e23: p3_3,
-            }
+            Rotor::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0\x01\0\x03\0\0\0\x02\0\x03\0\0\0\x03\0\x03\0\0\0",
+                    b"\0\0\x04\0\x05\0\x06\0\x07\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitAnd<&Odd<T>> for &Rotor<T> {
@@ -6452,29 +6054,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn regressive(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            let p0_7 = self.scalar.mul_ref(&rhs.e123);
-            let p1_3 = self.e12.mul_ref(&rhs.e3);
-            let p1_5 = self.e12.mul_ref(&rhs.e13);
-            let p1_6 = self.e12.mul_ref(&rhs.e23);
-            let p1_7 = self.e12.mul_ref(&rhs.e123);
-            let p2_2 = self.e13.mul_ref(&rhs.e2);
-            let p2_4 = self.e13.mul_ref(&rhs.e12);
-            let p2_6 = self.e13.mul_ref(&rhs.e23);
-            let p2_7 = self.e13.mul_ref(&rhs.e123);
-            let p3_1 = self.e23.mul_ref(&rhs.e1);
-            let p3_4 = self.e23.mul_ref(&rhs.e12);
-            let p3_5 = self.e23.mul_ref(&rhs.e13);
-            let p3_7 = self.e23.mul_ref(&rhs.e123);
-            Multivector {
-                scalar: p0_7 + &p1_3 - &p2_2 + &p3_1,
-                e1: p1_5 - &p2_4,
-                e2: p1_6 - &p3_4,
-                e3: p2_6 - &p3_5,
-                e12: p1_7,
-                e13: p2_7,
-                e23: p3_7,
-                e123: T::zero(),
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\x07\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0\x01\0\x05\0\0\0\x02\0\x04\0\x01\0\x01\0\x06\0\0\0\x03\0\x04\0\x01\0\x02\0\x06\0\0\0\x03\0\x05\0\x01\0\x01\0\x07\0\0\0\x02\0\x07\0\0\0\x03\0\x07\0\0\0",
+                    b"\0\0\x04\0\x06\0\x08\0\n\0\x0B\0\x0C\0\r\0\r\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitAnd<&Multivector<T>> for &Rotor<T> {
@@ -6506,14 +6098,19 @@ pub mod g3_vendored {
         type Output = Vector<T>;
         #[inline]
         fn regressive(&self, rhs: &Vector<T>) -> Vector<T> {
-            let p3_0 = self.e123.mul_ref(&rhs.e1);
-            let p3_1 = self.e123.mul_ref(&rhs.e2);
-            let p3_2 = self.e123.mul_ref(&rhs.e3);
-            Vector {
-                e1: p3_0,
-                e2: p3_1,
-                e3: p3_2,
-            }
+            Vector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    3usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\x03\0\0\0\0\0\x03\0\x01\0\0\0\x03\0\x02\0\0\0",
+                    b"\0\0\x01\0\x02\0\x03\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitAnd<&Vector<T>> for &Odd<T> {
@@ -6545,19 +6142,19 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn regressive(&self, rhs: &Rotor<T>) -> Rotor<T> {
-            let p0_3 = self.e1.mul_ref(&rhs.e23);
-            let p1_2 = self.e2.mul_ref(&rhs.e13);
-            let p2_1 = self.e3.mul_ref(&rhs.e12);
-            let p3_0 = self.e123.mul_ref(&rhs.scalar);
-            let p3_1 = self.e123.mul_ref(&rhs.e12);
-            let p3_2 = self.e123.mul_ref(&rhs.e13);
-            let p3_3 = self.e123.mul_ref(&rhs.e23);
-            Rotor {
-                scalar: p0_3 - &p1_2 + &p2_1 + &p3_0,
-                e12: p3_1,
-                e13: p3_2,
-                e23: p3_3,
-            }
+            Rotor::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\x03\0\0\0\x01\0\x02\0\x01\0\x02\0\x01\0\0\0\x03\0\0\0\0\0\x03\0\x01\0\0\0\x03\0\x02\0\0\0\x03\0\x03\0\0\0",
+                    b"\0\0\x04\0\x05\0\x06\0\x07\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitAnd<&Rotor<T>> for &Odd<T> {
@@ -6589,19 +6186,19 @@ pub mod g3_vendored {
         type Output = Odd<T>;
         #[inline]
         fn regressive(&self, rhs: &Odd<T>) -> Odd<T> {
-            let p0_3 = self.e1.mul_ref(&rhs.e123);
-            let p1_3 = self.e2.mul_ref(&rhs.e123);
-            let p2_3 = self.e3.mul_ref(&rhs.e123);
-            let p3_0 = self.e123.mul_ref(&rhs.e1);
-            let p3_1 = self.e123.mul_ref(&rhs.e2);
-            let p3_2 = self.e123.mul_ref(&rhs.e3);
-            let p3_3 = self.e123.mul_ref(&rhs.e123);
-            Odd {
-                e1: p0_3 + &p3_0,
-                e2: p1_3 + &p3_1,
-                e3: p2_3 + &p3_2,
-                e123: p3_3,
-            }
+            Odd::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\x03\0\0\0\x03\0\0\0\0\0\x01\0\x03\0\0\0\x03\0\x01\0\0\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\x03\0\x03\0\0\0",
+                    b"\0\0\x02\0\x04\0\x06\0\x07\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitAnd<&Odd<T>> for &Odd<T> {
@@ -6633,30 +6230,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn regressive(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            let p0_6 = self.e1.mul_ref(&rhs.e23);
-            let p0_7 = self.e1.mul_ref(&rhs.e123);
-            let p1_5 = self.e2.mul_ref(&rhs.e13);
-            let p1_7 = self.e2.mul_ref(&rhs.e123);
-            let p2_4 = self.e3.mul_ref(&rhs.e12);
-            let p2_7 = self.e3.mul_ref(&rhs.e123);
-            let p3_0 = self.e123.mul_ref(&rhs.scalar);
-            let p3_1 = self.e123.mul_ref(&rhs.e1);
-            let p3_2 = self.e123.mul_ref(&rhs.e2);
-            let p3_3 = self.e123.mul_ref(&rhs.e3);
-            let p3_4 = self.e123.mul_ref(&rhs.e12);
-            let p3_5 = self.e123.mul_ref(&rhs.e13);
-            let p3_6 = self.e123.mul_ref(&rhs.e23);
-            let p3_7 = self.e123.mul_ref(&rhs.e123);
-            Multivector {
-                scalar: p0_6 - &p1_5 + &p2_4 + &p3_0,
-                e1: p0_7 + &p3_1,
-                e2: p1_7 + &p3_2,
-                e3: p2_7 + &p3_3,
-                e12: p3_4,
-                e13: p3_5,
-                e23: p3_6,
-                e123: p3_7,
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0\x03\0\0\0\0\0\0\0\x07\0\0\0\x03\0\x01\0\0\0\x01\0\x07\0\0\0\x03\0\x02\0\0\0\x02\0\x07\0\0\0\x03\0\x03\0\0\0\x03\0\x04\0\0\0\x03\0\x05\0\0\0\x03\0\x06\0\0\0\x03\0\x07\0\0\0",
+                    b"\0\0\x04\0\x06\0\x08\0\n\0\x0B\0\x0C\0\r\0\x0E\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitAnd<&Multivector<T>> for &Odd<T> {
@@ -6688,22 +6274,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn regressive(&self, rhs: &Vector<T>) -> Multivector<T> {
-            let p4_2 = self.e12.mul_ref(&rhs.e3);
-            let p5_1 = self.e13.mul_ref(&rhs.e2);
-            let p6_0 = self.e23.mul_ref(&rhs.e1);
-            let p7_0 = self.e123.mul_ref(&rhs.e1);
-            let p7_1 = self.e123.mul_ref(&rhs.e2);
-            let p7_2 = self.e123.mul_ref(&rhs.e3);
-            Multivector {
-                scalar: p4_2 - &p5_1 + &p6_0,
-                e1: p7_0,
-                e2: p7_1,
-                e3: p7_2,
-                e12: T::zero(),
-                e13: T::zero(),
-                e23: T::zero(),
-                e123: T::zero(),
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\x04\0\x02\0\0\0\x05\0\x01\0\x01\0\x06\0\0\0\0\0\x07\0\0\0\0\0\x07\0\x01\0\0\0\x07\0\x02\0\0\0",
+                    b"\0\0\x03\0\x04\0\x05\0\x06\0\x06\0\x06\0\x06\0\x06\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitAnd<&Vector<T>> for &Multivector<T> {
@@ -6735,29 +6318,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn regressive(&self, rhs: &Rotor<T>) -> Multivector<T> {
-            let p1_3 = self.e1.mul_ref(&rhs.e23);
-            let p2_2 = self.e2.mul_ref(&rhs.e13);
-            let p3_1 = self.e3.mul_ref(&rhs.e12);
-            let p4_2 = self.e12.mul_ref(&rhs.e13);
-            let p4_3 = self.e12.mul_ref(&rhs.e23);
-            let p5_1 = self.e13.mul_ref(&rhs.e12);
-            let p5_3 = self.e13.mul_ref(&rhs.e23);
-            let p6_1 = self.e23.mul_ref(&rhs.e12);
-            let p6_2 = self.e23.mul_ref(&rhs.e13);
-            let p7_0 = self.e123.mul_ref(&rhs.scalar);
-            let p7_1 = self.e123.mul_ref(&rhs.e12);
-            let p7_2 = self.e123.mul_ref(&rhs.e13);
-            let p7_3 = self.e123.mul_ref(&rhs.e23);
-            Multivector {
-                scalar: p1_3 - &p2_2 + &p3_1 + &p7_0,
-                e1: p4_2 - &p5_1,
-                e2: p4_3 - &p6_1,
-                e3: p5_3 - &p6_2,
-                e12: p7_1,
-                e13: p7_2,
-                e23: p7_3,
-                e123: T::zero(),
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0\x07\0\0\0\0\0\x04\0\x02\0\0\0\x05\0\x01\0\x01\0\x04\0\x03\0\0\0\x06\0\x01\0\x01\0\x05\0\x03\0\0\0\x06\0\x02\0\x01\0\x07\0\x01\0\0\0\x07\0\x02\0\0\0\x07\0\x03\0\0\0",
+                    b"\0\0\x04\0\x06\0\x08\0\n\0\x0B\0\x0C\0\r\0\r\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitAnd<&Rotor<T>> for &Multivector<T> {
@@ -6789,30 +6362,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn regressive(&self, rhs: &Odd<T>) -> Multivector<T> {
-            let p0_3 = self.scalar.mul_ref(&rhs.e123);
-            let p1_3 = self.e1.mul_ref(&rhs.e123);
-            let p2_3 = self.e2.mul_ref(&rhs.e123);
-            let p3_3 = self.e3.mul_ref(&rhs.e123);
-            let p4_2 = self.e12.mul_ref(&rhs.e3);
-            let p4_3 = self.e12.mul_ref(&rhs.e123);
-            let p5_1 = self.e13.mul_ref(&rhs.e2);
-            let p5_3 = self.e13.mul_ref(&rhs.e123);
-            let p6_0 = self.e23.mul_ref(&rhs.e1);
-            let p6_3 = self.e23.mul_ref(&rhs.e123);
-            let p7_0 = self.e123.mul_ref(&rhs.e1);
-            let p7_1 = self.e123.mul_ref(&rhs.e2);
-            let p7_2 = self.e123.mul_ref(&rhs.e3);
-            let p7_3 = self.e123.mul_ref(&rhs.e123);
-            Multivector {
-                scalar: p0_3 + &p4_2 - &p5_1 + &p6_0,
-                e1: p1_3 + &p7_0,
-                e2: p2_3 + &p7_1,
-                e3: p3_3 + &p7_2,
-                e12: p4_3,
-                e13: p5_3,
-                e23: p6_3,
-                e123: p7_3,
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\x03\0\0\0\x04\0\x02\0\0\0\x05\0\x01\0\x01\0\x06\0\0\0\0\0\x01\0\x03\0\0\0\x07\0\0\0\0\0\x02\0\x03\0\0\0\x07\0\x01\0\0\0\x03\0\x03\0\0\0\x07\0\x02\0\0\0\x04\0\x03\0\0\0\x05\0\x03\0\0\0\x06\0\x03\0\0\0\x07\0\x03\0\0\0",
+                    b"\0\0\x04\0\x06\0\x08\0\n\0\x0B\0\x0C\0\r\0\x0E\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitAnd<&Odd<T>> for &Multivector<T> {
@@ -6844,43 +6406,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn regressive(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            let p0_7 = self.scalar.mul_ref(&rhs.e123);
-            let p1_6 = self.e1.mul_ref(&rhs.e23);
-            let p1_7 = self.e1.mul_ref(&rhs.e123);
-            let p2_5 = self.e2.mul_ref(&rhs.e13);
-            let p2_7 = self.e2.mul_ref(&rhs.e123);
-            let p3_4 = self.e3.mul_ref(&rhs.e12);
-            let p3_7 = self.e3.mul_ref(&rhs.e123);
-            let p4_3 = self.e12.mul_ref(&rhs.e3);
-            let p4_5 = self.e12.mul_ref(&rhs.e13);
-            let p4_6 = self.e12.mul_ref(&rhs.e23);
-            let p4_7 = self.e12.mul_ref(&rhs.e123);
-            let p5_2 = self.e13.mul_ref(&rhs.e2);
-            let p5_4 = self.e13.mul_ref(&rhs.e12);
-            let p5_6 = self.e13.mul_ref(&rhs.e23);
-            let p5_7 = self.e13.mul_ref(&rhs.e123);
-            let p6_1 = self.e23.mul_ref(&rhs.e1);
-            let p6_4 = self.e23.mul_ref(&rhs.e12);
-            let p6_5 = self.e23.mul_ref(&rhs.e13);
-            let p6_7 = self.e23.mul_ref(&rhs.e123);
-            let p7_0 = self.e123.mul_ref(&rhs.scalar);
-            let p7_1 = self.e123.mul_ref(&rhs.e1);
-            let p7_2 = self.e123.mul_ref(&rhs.e2);
-            let p7_3 = self.e123.mul_ref(&rhs.e3);
-            let p7_4 = self.e123.mul_ref(&rhs.e12);
-            let p7_5 = self.e123.mul_ref(&rhs.e13);
-            let p7_6 = self.e123.mul_ref(&rhs.e23);
-            let p7_7 = self.e123.mul_ref(&rhs.e123);
-            Multivector {
-                scalar: p0_7 + &p1_6 - &p2_5 + &p3_4 + &(p4_3 - &p5_2 + &p6_1 + &p7_0),
-                e1: p1_7 + &p4_5 - &p5_4 + &p7_1,
-                e2: p2_7 + &p4_6 - &p6_4 + &p7_2,
-                e3: p3_7 + &p5_6 - &p6_5 + &p7_3,
-                e12: p4_7 + &p7_4,
-                e13: p5_7 + &p7_5,
-                e23: p6_7 + &p7_6,
-                e123: p7_7,
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\x07\0\0\0\x01\0\x06\0\0\0\x02\0\x05\0\x01\0\x03\0\x04\0\0\0\x04\0\x03\0\0\0\x05\0\x02\0\x01\0\x06\0\x01\0\0\0\x07\0\0\0\0\0\x01\0\x07\0\0\0\x04\0\x05\0\0\0\x05\0\x04\0\x01\0\x07\0\x01\0\0\0\x02\0\x07\0\0\0\x04\0\x06\0\0\0\x06\0\x04\0\x01\0\x07\0\x02\0\0\0\x03\0\x07\0\0\0\x05\0\x06\0\0\0\x06\0\x05\0\x01\0\x07\0\x03\0\0\0\x04\0\x07\0\0\0\x07\0\x04\0\0\0\x05\0\x07\0\0\0\x07\0\x05\0\0\0\x06\0\x07\0\0\0\x07\0\x06\0\0\0\x07\0\x07\0\0\0",
+                    b"\0\0\x08\0\x0C\0\x10\0\x14\0\x16\0\x18\0\x1A\0\x1B\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitAnd<&Multivector<T>>
@@ -6953,18 +6491,19 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn commutator(&self, rhs: &Odd<T>) -> Rotor<T> {
-            let p0_1 = self.e1.mul_ref(&rhs.e2);
-            let p0_2 = self.e1.mul_ref(&rhs.e3);
-            let p1_0 = self.e2.mul_ref(&rhs.e1);
-            let p1_2 = self.e2.mul_ref(&rhs.e3);
-            let p2_0 = self.e3.mul_ref(&rhs.e1);
-            let p2_1 = self.e3.mul_ref(&rhs.e2);
-            Rotor {
-                scalar: T::zero(),
-                e12: p0_1 - &p1_0,
-                e13: p0_2 - &p2_0,
-                e23: p1_2 - &p2_1,
-            }
+            Rotor::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0",
+                    b"\0\0\0\0\x02\0\x04\0\x06\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::CommutatorProduct<Multivector<T>>
@@ -6972,28 +6511,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn commutator(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            let p0_2 = self.e1.mul_ref(&rhs.e2);
-            let p0_3 = self.e1.mul_ref(&rhs.e3);
-            let p0_4 = self.e1.mul_ref(&rhs.e12);
-            let p0_5 = self.e1.mul_ref(&rhs.e13);
-            let p1_1 = self.e2.mul_ref(&rhs.e1);
-            let p1_3 = self.e2.mul_ref(&rhs.e3);
-            let p1_4 = self.e2.mul_ref(&rhs.e12);
-            let p1_6 = self.e2.mul_ref(&rhs.e23);
-            let p2_1 = self.e3.mul_ref(&rhs.e1);
-            let p2_2 = self.e3.mul_ref(&rhs.e2);
-            let p2_5 = self.e3.mul_ref(&rhs.e13);
-            let p2_6 = self.e3.mul_ref(&rhs.e23);
-            Multivector {
-                scalar: T::zero(),
-                e1: ::algebra_core::Ring::neg_ref(&p1_4) - &p2_5,
-                e2: p0_4 - &p2_6,
-                e3: p0_5 + &p1_6,
-                e12: p0_2 - &p1_1,
-                e13: p0_3 - &p2_1,
-                e23: p1_3 - &p2_2,
-                e123: T::zero(),
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\0\0\x04\0\0\0\x02\0\x06\0\x01\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\0\0\x02\0\0\0\x01\0\x01\0\x01\0\0\0\x03\0\0\0\x02\0\x01\0\x01\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0",
+                    b"\0\0\0\0\x02\0\x04\0\x06\0\x08\0\n\0\x0C\0\x0C\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::CommutatorProduct<Vector<T>>
@@ -7038,17 +6568,19 @@ pub mod g3_vendored {
         type Output = Vector<T>;
         #[inline]
         fn commutator(&self, rhs: &Odd<T>) -> Vector<T> {
-            let p1_0 = self.e12.mul_ref(&rhs.e1);
-            let p1_1 = self.e12.mul_ref(&rhs.e2);
-            let p2_0 = self.e13.mul_ref(&rhs.e1);
-            let p2_2 = self.e13.mul_ref(&rhs.e3);
-            let p3_1 = self.e23.mul_ref(&rhs.e2);
-            let p3_2 = self.e23.mul_ref(&rhs.e3);
-            Vector {
-                e1: p1_1 + &p2_2,
-                e2: p3_2 - &p1_0,
-                e3: ::algebra_core::Ring::neg_ref(&p2_0) - &p3_1,
-            }
+            Vector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    3usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0",
+                    b"\0\0\x02\0\x04\0\x06\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::CommutatorProduct<Multivector<T>>
@@ -7056,28 +6588,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn commutator(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            let p1_1 = self.e12.mul_ref(&rhs.e1);
-            let p1_2 = self.e12.mul_ref(&rhs.e2);
-            let p1_5 = self.e12.mul_ref(&rhs.e13);
-            let p1_6 = self.e12.mul_ref(&rhs.e23);
-            let p2_1 = self.e13.mul_ref(&rhs.e1);
-            let p2_3 = self.e13.mul_ref(&rhs.e3);
-            let p2_4 = self.e13.mul_ref(&rhs.e12);
-            let p2_6 = self.e13.mul_ref(&rhs.e23);
-            let p3_2 = self.e23.mul_ref(&rhs.e2);
-            let p3_3 = self.e23.mul_ref(&rhs.e3);
-            let p3_4 = self.e23.mul_ref(&rhs.e12);
-            let p3_5 = self.e23.mul_ref(&rhs.e13);
-            Multivector {
-                scalar: T::zero(),
-                e1: p1_2 + &p2_3,
-                e2: p3_3 - &p1_1,
-                e3: ::algebra_core::Ring::neg_ref(&p2_1) - &p3_2,
-                e12: p3_5 - &p2_6,
-                e13: p1_6 - &p3_4,
-                e23: p2_4 - &p1_5,
-                e123: T::zero(),
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x01\0\x01\0\x01\0\x03\0\x03\0\0\0\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0\x02\0\x06\0\x01\0\x03\0\x05\0\0\0\x01\0\x06\0\0\0\x03\0\x04\0\x01\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0",
+                    b"\0\0\0\0\x02\0\x04\0\x06\0\x08\0\n\0\x0C\0\x0C\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::CommutatorProduct<Vector<T>>
@@ -7085,18 +6608,19 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn commutator(&self, rhs: &Vector<T>) -> Rotor<T> {
-            let p0_1 = self.e1.mul_ref(&rhs.e2);
-            let p0_2 = self.e1.mul_ref(&rhs.e3);
-            let p1_0 = self.e2.mul_ref(&rhs.e1);
-            let p1_2 = self.e2.mul_ref(&rhs.e3);
-            let p2_0 = self.e3.mul_ref(&rhs.e1);
-            let p2_1 = self.e3.mul_ref(&rhs.e2);
-            Rotor {
-                scalar: T::zero(),
-                e12: p0_1 - &p1_0,
-                e13: p0_2 - &p2_0,
-                e23: p1_2 - &p2_1,
-            }
+            Rotor::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0",
+                    b"\0\0\0\0\x02\0\x04\0\x06\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::CommutatorProduct<Rotor<T>>
@@ -7104,17 +6628,19 @@ pub mod g3_vendored {
         type Output = Vector<T>;
         #[inline]
         fn commutator(&self, rhs: &Rotor<T>) -> Vector<T> {
-            let p0_1 = self.e1.mul_ref(&rhs.e12);
-            let p0_2 = self.e1.mul_ref(&rhs.e13);
-            let p1_1 = self.e2.mul_ref(&rhs.e12);
-            let p1_3 = self.e2.mul_ref(&rhs.e23);
-            let p2_2 = self.e3.mul_ref(&rhs.e13);
-            let p2_3 = self.e3.mul_ref(&rhs.e23);
-            Vector {
-                e1: ::algebra_core::Ring::neg_ref(&p1_1) - &p2_2,
-                e2: p0_1 - &p2_3,
-                e3: p0_2 + &p1_3,
-            }
+            Vector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    3usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\0\0\x01\0\0\0\x02\0\x03\0\x01\0\0\0\x02\0\0\0\x01\0\x03\0\0\0",
+                    b"\0\0\x02\0\x04\0\x06\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::CommutatorProduct<Odd<T>>
@@ -7122,18 +6648,19 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn commutator(&self, rhs: &Odd<T>) -> Rotor<T> {
-            let p0_1 = self.e1.mul_ref(&rhs.e2);
-            let p0_2 = self.e1.mul_ref(&rhs.e3);
-            let p1_0 = self.e2.mul_ref(&rhs.e1);
-            let p1_2 = self.e2.mul_ref(&rhs.e3);
-            let p2_0 = self.e3.mul_ref(&rhs.e1);
-            let p2_1 = self.e3.mul_ref(&rhs.e2);
-            Rotor {
-                scalar: T::zero(),
-                e12: p0_1 - &p1_0,
-                e13: p0_2 - &p2_0,
-                e23: p1_2 - &p2_1,
-            }
+            Rotor::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0",
+                    b"\0\0\0\0\x02\0\x04\0\x06\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::CommutatorProduct<Multivector<T>>
@@ -7141,28 +6668,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn commutator(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            let p0_2 = self.e1.mul_ref(&rhs.e2);
-            let p0_3 = self.e1.mul_ref(&rhs.e3);
-            let p0_4 = self.e1.mul_ref(&rhs.e12);
-            let p0_5 = self.e1.mul_ref(&rhs.e13);
-            let p1_1 = self.e2.mul_ref(&rhs.e1);
-            let p1_3 = self.e2.mul_ref(&rhs.e3);
-            let p1_4 = self.e2.mul_ref(&rhs.e12);
-            let p1_6 = self.e2.mul_ref(&rhs.e23);
-            let p2_1 = self.e3.mul_ref(&rhs.e1);
-            let p2_2 = self.e3.mul_ref(&rhs.e2);
-            let p2_5 = self.e3.mul_ref(&rhs.e13);
-            let p2_6 = self.e3.mul_ref(&rhs.e23);
-            Multivector {
-                scalar: T::zero(),
-                e1: ::algebra_core::Ring::neg_ref(&p1_4) - &p2_5,
-                e2: p0_4 - &p2_6,
-                e3: p0_5 + &p1_6,
-                e12: p0_2 - &p1_1,
-                e13: p0_3 - &p2_1,
-                e23: p1_3 - &p2_2,
-                e123: T::zero(),
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\0\0\x04\0\0\0\x02\0\x06\0\x01\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\0\0\x02\0\0\0\x01\0\x01\0\x01\0\0\0\x03\0\0\0\x02\0\x01\0\x01\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0",
+                    b"\0\0\0\0\x02\0\x04\0\x06\0\x08\0\n\0\x0C\0\x0C\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::CommutatorProduct<Vector<T>>
@@ -7170,28 +6688,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn commutator(&self, rhs: &Vector<T>) -> Multivector<T> {
-            let p1_1 = self.e1.mul_ref(&rhs.e2);
-            let p1_2 = self.e1.mul_ref(&rhs.e3);
-            let p2_0 = self.e2.mul_ref(&rhs.e1);
-            let p2_2 = self.e2.mul_ref(&rhs.e3);
-            let p3_0 = self.e3.mul_ref(&rhs.e1);
-            let p3_1 = self.e3.mul_ref(&rhs.e2);
-            let p4_0 = self.e12.mul_ref(&rhs.e1);
-            let p4_1 = self.e12.mul_ref(&rhs.e2);
-            let p5_0 = self.e13.mul_ref(&rhs.e1);
-            let p5_2 = self.e13.mul_ref(&rhs.e3);
-            let p6_1 = self.e23.mul_ref(&rhs.e2);
-            let p6_2 = self.e23.mul_ref(&rhs.e3);
-            Multivector {
-                scalar: T::zero(),
-                e1: p4_1 + &p5_2,
-                e2: p6_2 - &p4_0,
-                e3: ::algebra_core::Ring::neg_ref(&p5_0) - &p6_1,
-                e12: p1_1 - &p2_0,
-                e13: p1_2 - &p3_0,
-                e23: p2_2 - &p3_1,
-                e123: T::zero(),
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\x04\0\x01\0\0\0\x05\0\x02\0\0\0\x04\0\0\0\x01\0\x06\0\x02\0\0\0\x05\0\0\0\x01\0\x06\0\x01\0\x01\0\x01\0\x01\0\0\0\x02\0\0\0\x01\0\x01\0\x02\0\0\0\x03\0\0\0\x01\0\x02\0\x02\0\0\0\x03\0\x01\0\x01\0",
+                    b"\0\0\0\0\x02\0\x04\0\x06\0\x08\0\n\0\x0C\0\x0C\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::CommutatorProduct<Rotor<T>>
@@ -7199,28 +6708,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn commutator(&self, rhs: &Rotor<T>) -> Multivector<T> {
-            let p1_1 = self.e1.mul_ref(&rhs.e12);
-            let p1_2 = self.e1.mul_ref(&rhs.e13);
-            let p2_1 = self.e2.mul_ref(&rhs.e12);
-            let p2_3 = self.e2.mul_ref(&rhs.e23);
-            let p3_2 = self.e3.mul_ref(&rhs.e13);
-            let p3_3 = self.e3.mul_ref(&rhs.e23);
-            let p4_2 = self.e12.mul_ref(&rhs.e13);
-            let p4_3 = self.e12.mul_ref(&rhs.e23);
-            let p5_1 = self.e13.mul_ref(&rhs.e12);
-            let p5_3 = self.e13.mul_ref(&rhs.e23);
-            let p6_1 = self.e23.mul_ref(&rhs.e12);
-            let p6_2 = self.e23.mul_ref(&rhs.e13);
-            Multivector {
-                scalar: T::zero(),
-                e1: ::algebra_core::Ring::neg_ref(&p2_1) - &p3_2,
-                e2: p1_1 - &p3_3,
-                e3: p1_2 + &p2_3,
-                e12: p6_2 - &p5_3,
-                e13: p4_3 - &p6_1,
-                e23: p5_1 - &p4_2,
-                e123: T::zero(),
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0\x01\0\x01\0\0\0\x03\0\x03\0\x01\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x05\0\x03\0\x01\0\x06\0\x02\0\0\0\x04\0\x03\0\0\0\x06\0\x01\0\x01\0\x04\0\x02\0\x01\0\x05\0\x01\0\0\0",
+                    b"\0\0\0\0\x02\0\x04\0\x06\0\x08\0\n\0\x0C\0\x0C\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::CommutatorProduct<Odd<T>>
@@ -7228,28 +6728,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn commutator(&self, rhs: &Odd<T>) -> Multivector<T> {
-            let p1_1 = self.e1.mul_ref(&rhs.e2);
-            let p1_2 = self.e1.mul_ref(&rhs.e3);
-            let p2_0 = self.e2.mul_ref(&rhs.e1);
-            let p2_2 = self.e2.mul_ref(&rhs.e3);
-            let p3_0 = self.e3.mul_ref(&rhs.e1);
-            let p3_1 = self.e3.mul_ref(&rhs.e2);
-            let p4_0 = self.e12.mul_ref(&rhs.e1);
-            let p4_1 = self.e12.mul_ref(&rhs.e2);
-            let p5_0 = self.e13.mul_ref(&rhs.e1);
-            let p5_2 = self.e13.mul_ref(&rhs.e3);
-            let p6_1 = self.e23.mul_ref(&rhs.e2);
-            let p6_2 = self.e23.mul_ref(&rhs.e3);
-            Multivector {
-                scalar: T::zero(),
-                e1: p4_1 + &p5_2,
-                e2: p6_2 - &p4_0,
-                e3: ::algebra_core::Ring::neg_ref(&p5_0) - &p6_1,
-                e12: p1_1 - &p2_0,
-                e13: p1_2 - &p3_0,
-                e23: p2_2 - &p3_1,
-                e123: T::zero(),
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\x04\0\x01\0\0\0\x05\0\x02\0\0\0\x04\0\0\0\x01\0\x06\0\x02\0\0\0\x05\0\0\0\x01\0\x06\0\x01\0\x01\0\x01\0\x01\0\0\0\x02\0\0\0\x01\0\x01\0\x02\0\0\0\x03\0\0\0\x01\0\x02\0\x02\0\0\0\x03\0\x01\0\x01\0",
+                    b"\0\0\0\0\x02\0\x04\0\x06\0\x08\0\n\0\x0C\0\x0C\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::CommutatorProduct<Multivector<T>>
@@ -7257,40 +6748,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn commutator(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            let p1_2 = self.e1.mul_ref(&rhs.e2);
-            let p1_3 = self.e1.mul_ref(&rhs.e3);
-            let p1_4 = self.e1.mul_ref(&rhs.e12);
-            let p1_5 = self.e1.mul_ref(&rhs.e13);
-            let p2_1 = self.e2.mul_ref(&rhs.e1);
-            let p2_3 = self.e2.mul_ref(&rhs.e3);
-            let p2_4 = self.e2.mul_ref(&rhs.e12);
-            let p2_6 = self.e2.mul_ref(&rhs.e23);
-            let p3_1 = self.e3.mul_ref(&rhs.e1);
-            let p3_2 = self.e3.mul_ref(&rhs.e2);
-            let p3_5 = self.e3.mul_ref(&rhs.e13);
-            let p3_6 = self.e3.mul_ref(&rhs.e23);
-            let p4_1 = self.e12.mul_ref(&rhs.e1);
-            let p4_2 = self.e12.mul_ref(&rhs.e2);
-            let p4_5 = self.e12.mul_ref(&rhs.e13);
-            let p4_6 = self.e12.mul_ref(&rhs.e23);
-            let p5_1 = self.e13.mul_ref(&rhs.e1);
-            let p5_3 = self.e13.mul_ref(&rhs.e3);
-            let p5_4 = self.e13.mul_ref(&rhs.e12);
-            let p5_6 = self.e13.mul_ref(&rhs.e23);
-            let p6_2 = self.e23.mul_ref(&rhs.e2);
-            let p6_3 = self.e23.mul_ref(&rhs.e3);
-            let p6_4 = self.e23.mul_ref(&rhs.e12);
-            let p6_5 = self.e23.mul_ref(&rhs.e13);
-            Multivector {
-                scalar: T::zero(),
-                e1: p4_2 - &p3_5 - &p2_4 + &p5_3,
-                e2: p1_4 - &p3_6 - &p4_1 + &p6_3,
-                e3: p1_5 + &p2_6 - &p5_1 - &p6_2,
-                e12: p1_2 - &p2_1 - &p5_6 + &p6_5,
-                e13: p1_3 - &p3_1 + &p4_6 - &p6_4,
-                e23: p2_3 - &p3_2 - &p4_5 + &p5_4,
-                e123: T::zero(),
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\x02\0\x04\0\x01\0\x03\0\x05\0\x01\0\x04\0\x02\0\0\0\x05\0\x03\0\0\0\x01\0\x04\0\0\0\x03\0\x06\0\x01\0\x04\0\x01\0\x01\0\x06\0\x03\0\0\0\x01\0\x05\0\0\0\x02\0\x06\0\0\0\x05\0\x01\0\x01\0\x06\0\x02\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x05\0\x06\0\x01\0\x06\0\x05\0\0\0\x01\0\x03\0\0\0\x03\0\x01\0\x01\0\x04\0\x06\0\0\0\x06\0\x04\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\x01\0\x04\0\x05\0\x01\0\x05\0\x04\0\0\0",
+                    b"\0\0\0\0\x04\0\x08\0\x0C\0\x10\0\x14\0\x18\0\x18\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::AnticommutatorProduct<Vector<T>>
@@ -7333,18 +6803,19 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn anticommutator(&self, rhs: &Odd<T>) -> Rotor<T> {
-            let p0_0 = self.e1.mul_ref(&rhs.e1);
-            let p0_3 = self.e1.mul_ref(&rhs.e123);
-            let p1_1 = self.e2.mul_ref(&rhs.e2);
-            let p1_3 = self.e2.mul_ref(&rhs.e123);
-            let p2_2 = self.e3.mul_ref(&rhs.e3);
-            let p2_3 = self.e3.mul_ref(&rhs.e123);
-            Rotor {
-                scalar: p0_0 + &p1_1 + &p2_2,
-                e12: p2_3,
-                e13: ::algebra_core::Ring::neg_ref(&p1_3),
-                e23: p0_3,
-            }
+            Rotor::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x02\0\x03\0\0\0\x01\0\x03\0\x01\0\0\0\x03\0\0\0",
+                    b"\0\0\x03\0\x04\0\x05\0\x06\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -7353,28 +6824,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn anticommutator(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            let p0_0 = self.e1.mul_ref(&rhs.scalar);
-            let p0_1 = self.e1.mul_ref(&rhs.e1);
-            let p0_6 = self.e1.mul_ref(&rhs.e23);
-            let p0_7 = self.e1.mul_ref(&rhs.e123);
-            let p1_0 = self.e2.mul_ref(&rhs.scalar);
-            let p1_2 = self.e2.mul_ref(&rhs.e2);
-            let p1_5 = self.e2.mul_ref(&rhs.e13);
-            let p1_7 = self.e2.mul_ref(&rhs.e123);
-            let p2_0 = self.e3.mul_ref(&rhs.scalar);
-            let p2_3 = self.e3.mul_ref(&rhs.e3);
-            let p2_4 = self.e3.mul_ref(&rhs.e12);
-            let p2_7 = self.e3.mul_ref(&rhs.e123);
-            Multivector {
-                scalar: p0_1 + &p1_2 + &p2_3,
-                e1: p0_0,
-                e2: p1_0,
-                e3: p2_0,
-                e12: p2_7,
-                e13: ::algebra_core::Ring::neg_ref(&p1_7),
-                e23: p0_7,
-                e123: p0_6 - &p1_5 + &p2_4,
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\0\0\x02\0\x07\0\0\0\x01\0\x07\0\x01\0\0\0\x07\0\0\0\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0",
+                    b"\0\0\x03\0\x04\0\x05\0\x06\0\x07\0\x08\0\t\0\x0C\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::AnticommutatorProduct<Vector<T>>
@@ -7424,22 +6886,19 @@ pub mod g3_vendored {
         type Output = Odd<T>;
         #[inline]
         fn anticommutator(&self, rhs: &Odd<T>) -> Odd<T> {
-            let p0_0 = self.scalar.mul_ref(&rhs.e1);
-            let p0_1 = self.scalar.mul_ref(&rhs.e2);
-            let p0_2 = self.scalar.mul_ref(&rhs.e3);
-            let p0_3 = self.scalar.mul_ref(&rhs.e123);
-            let p1_2 = self.e12.mul_ref(&rhs.e3);
-            let p1_3 = self.e12.mul_ref(&rhs.e123);
-            let p2_1 = self.e13.mul_ref(&rhs.e2);
-            let p2_3 = self.e13.mul_ref(&rhs.e123);
-            let p3_0 = self.e23.mul_ref(&rhs.e1);
-            let p3_3 = self.e23.mul_ref(&rhs.e123);
-            Odd {
-                e1: p0_0 - &p3_3,
-                e2: p0_1 + &p2_3,
-                e3: p0_2 - &p1_3,
-                e123: p0_3 + &p1_2 - &p2_1 + &p3_0,
-            }
+            Odd::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x02\0\x03\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
+                    b"\0\0\x02\0\x04\0\x06\0\n\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -7448,36 +6907,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn anticommutator(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            let p0_0 = self.scalar.mul_ref(&rhs.scalar);
-            let p0_1 = self.scalar.mul_ref(&rhs.e1);
-            let p0_2 = self.scalar.mul_ref(&rhs.e2);
-            let p0_3 = self.scalar.mul_ref(&rhs.e3);
-            let p0_4 = self.scalar.mul_ref(&rhs.e12);
-            let p0_5 = self.scalar.mul_ref(&rhs.e13);
-            let p0_6 = self.scalar.mul_ref(&rhs.e23);
-            let p0_7 = self.scalar.mul_ref(&rhs.e123);
-            let p1_0 = self.e12.mul_ref(&rhs.scalar);
-            let p1_3 = self.e12.mul_ref(&rhs.e3);
-            let p1_4 = self.e12.mul_ref(&rhs.e12);
-            let p1_7 = self.e12.mul_ref(&rhs.e123);
-            let p2_0 = self.e13.mul_ref(&rhs.scalar);
-            let p2_2 = self.e13.mul_ref(&rhs.e2);
-            let p2_5 = self.e13.mul_ref(&rhs.e13);
-            let p2_7 = self.e13.mul_ref(&rhs.e123);
-            let p3_0 = self.e23.mul_ref(&rhs.scalar);
-            let p3_1 = self.e23.mul_ref(&rhs.e1);
-            let p3_6 = self.e23.mul_ref(&rhs.e23);
-            let p3_7 = self.e23.mul_ref(&rhs.e123);
-            Multivector {
-                scalar: p0_0 - &p1_4 - &p2_5 - &p3_6,
-                e1: p0_1 - &p3_7,
-                e2: p0_2 + &p2_7,
-                e3: p0_3 - &p1_7,
-                e12: p0_4 + &p1_0,
-                e13: p0_5 + &p2_0,
-                e23: p0_6 + &p3_0,
-                e123: p0_7 + &p1_3 - &p2_2 + &p3_1,
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\x03\0\x06\0\x01\0\0\0\x01\0\0\0\x03\0\x07\0\x01\0\0\0\x02\0\0\0\x02\0\x07\0\0\0\0\0\x03\0\0\0\x01\0\x07\0\x01\0\0\0\x04\0\0\0\x01\0\0\0\0\0\0\0\x05\0\0\0\x02\0\0\0\0\0\0\0\x06\0\0\0\x03\0\0\0\0\0\0\0\x07\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0",
+                    b"\0\0\x04\0\x06\0\x08\0\n\0\x0C\0\x0E\0\x10\0\x14\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::AnticommutatorProduct<Vector<T>>
@@ -7485,18 +6927,19 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn anticommutator(&self, rhs: &Vector<T>) -> Rotor<T> {
-            let p0_0 = self.e1.mul_ref(&rhs.e1);
-            let p1_1 = self.e2.mul_ref(&rhs.e2);
-            let p2_2 = self.e3.mul_ref(&rhs.e3);
-            let p3_0 = self.e123.mul_ref(&rhs.e1);
-            let p3_1 = self.e123.mul_ref(&rhs.e2);
-            let p3_2 = self.e123.mul_ref(&rhs.e3);
-            Rotor {
-                scalar: p0_0 + &p1_1 + &p2_2,
-                e12: p3_2,
-                e13: ::algebra_core::Ring::neg_ref(&p3_1),
-                e23: p3_0,
-            }
+            Rotor::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x02\0\0\0\x03\0\x01\0\x01\0\x03\0\0\0\0\0",
+                    b"\0\0\x03\0\x04\0\x05\0\x06\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::AnticommutatorProduct<Rotor<T>>
@@ -7504,22 +6947,19 @@ pub mod g3_vendored {
         type Output = Odd<T>;
         #[inline]
         fn anticommutator(&self, rhs: &Rotor<T>) -> Odd<T> {
-            let p0_0 = self.e1.mul_ref(&rhs.scalar);
-            let p0_3 = self.e1.mul_ref(&rhs.e23);
-            let p1_0 = self.e2.mul_ref(&rhs.scalar);
-            let p1_2 = self.e2.mul_ref(&rhs.e13);
-            let p2_0 = self.e3.mul_ref(&rhs.scalar);
-            let p2_1 = self.e3.mul_ref(&rhs.e12);
-            let p3_0 = self.e123.mul_ref(&rhs.scalar);
-            let p3_1 = self.e123.mul_ref(&rhs.e12);
-            let p3_2 = self.e123.mul_ref(&rhs.e13);
-            let p3_3 = self.e123.mul_ref(&rhs.e23);
-            Odd {
-                e1: p0_0 - &p3_3,
-                e2: p1_0 + &p3_2,
-                e3: p2_0 - &p3_1,
-                e123: p0_3 - &p1_2 + &p2_1 + &p3_0,
-            }
+            Odd::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x03\0\x03\0\x01\0\x01\0\0\0\0\0\x03\0\x02\0\0\0\x02\0\0\0\0\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\x01\0\x02\0\x01\0\0\0\x03\0\0\0\0\0",
+                    b"\0\0\x02\0\x04\0\x06\0\n\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::AnticommutatorProduct<Odd<T>>
@@ -7527,22 +6967,19 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn anticommutator(&self, rhs: &Odd<T>) -> Rotor<T> {
-            let p0_0 = self.e1.mul_ref(&rhs.e1);
-            let p0_3 = self.e1.mul_ref(&rhs.e123);
-            let p1_1 = self.e2.mul_ref(&rhs.e2);
-            let p1_3 = self.e2.mul_ref(&rhs.e123);
-            let p2_2 = self.e3.mul_ref(&rhs.e3);
-            let p2_3 = self.e3.mul_ref(&rhs.e123);
-            let p3_0 = self.e123.mul_ref(&rhs.e1);
-            let p3_1 = self.e123.mul_ref(&rhs.e2);
-            let p3_2 = self.e123.mul_ref(&rhs.e3);
-            let p3_3 = self.e123.mul_ref(&rhs.e123);
-            Rotor {
-                scalar: p0_0 + &p1_1 + &p2_2 - &p3_3,
-                e12: p2_3 + &p3_2,
-                e13: ::algebra_core::Ring::neg_ref(&p1_3) - &p3_1,
-                e23: p0_3 + &p3_0,
-            }
+            Rotor::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\x01\0\x03\0\x01\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x03\0\0\0\0\0",
+                    b"\0\0\x04\0\x06\0\x08\0\n\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -7551,36 +6988,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn anticommutator(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            let p0_0 = self.e1.mul_ref(&rhs.scalar);
-            let p0_1 = self.e1.mul_ref(&rhs.e1);
-            let p0_6 = self.e1.mul_ref(&rhs.e23);
-            let p0_7 = self.e1.mul_ref(&rhs.e123);
-            let p1_0 = self.e2.mul_ref(&rhs.scalar);
-            let p1_2 = self.e2.mul_ref(&rhs.e2);
-            let p1_5 = self.e2.mul_ref(&rhs.e13);
-            let p1_7 = self.e2.mul_ref(&rhs.e123);
-            let p2_0 = self.e3.mul_ref(&rhs.scalar);
-            let p2_3 = self.e3.mul_ref(&rhs.e3);
-            let p2_4 = self.e3.mul_ref(&rhs.e12);
-            let p2_7 = self.e3.mul_ref(&rhs.e123);
-            let p3_0 = self.e123.mul_ref(&rhs.scalar);
-            let p3_1 = self.e123.mul_ref(&rhs.e1);
-            let p3_2 = self.e123.mul_ref(&rhs.e2);
-            let p3_3 = self.e123.mul_ref(&rhs.e3);
-            let p3_4 = self.e123.mul_ref(&rhs.e12);
-            let p3_5 = self.e123.mul_ref(&rhs.e13);
-            let p3_6 = self.e123.mul_ref(&rhs.e23);
-            let p3_7 = self.e123.mul_ref(&rhs.e123);
-            Multivector {
-                scalar: p0_1 + &p1_2 + &p2_3 - &p3_7,
-                e1: p0_0 - &p3_6,
-                e2: p1_0 + &p3_5,
-                e3: p2_0 - &p3_4,
-                e12: p2_7 + &p3_3,
-                e13: ::algebra_core::Ring::neg_ref(&p1_7) - &p3_2,
-                e23: p0_7 + &p3_1,
-                e123: p0_6 - &p1_5 + &p2_4 + &p3_0,
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\x07\0\x01\0\0\0\0\0\0\0\x03\0\x06\0\x01\0\x01\0\0\0\0\0\x03\0\x05\0\0\0\x02\0\0\0\0\0\x03\0\x04\0\x01\0\x02\0\x07\0\0\0\x03\0\x03\0\0\0\x01\0\x07\0\x01\0\x03\0\x02\0\x01\0\0\0\x07\0\0\0\x03\0\x01\0\0\0\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0\x03\0\0\0\0\0",
+                    b"\0\0\x04\0\x06\0\x08\0\n\0\x0C\0\x0E\0\x10\0\x14\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::AnticommutatorProduct<Vector<T>>
@@ -7588,28 +7008,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn anticommutator(&self, rhs: &Vector<T>) -> Multivector<T> {
-            let p0_0 = self.scalar.mul_ref(&rhs.e1);
-            let p0_1 = self.scalar.mul_ref(&rhs.e2);
-            let p0_2 = self.scalar.mul_ref(&rhs.e3);
-            let p1_0 = self.e1.mul_ref(&rhs.e1);
-            let p2_1 = self.e2.mul_ref(&rhs.e2);
-            let p3_2 = self.e3.mul_ref(&rhs.e3);
-            let p4_2 = self.e12.mul_ref(&rhs.e3);
-            let p5_1 = self.e13.mul_ref(&rhs.e2);
-            let p6_0 = self.e23.mul_ref(&rhs.e1);
-            let p7_0 = self.e123.mul_ref(&rhs.e1);
-            let p7_1 = self.e123.mul_ref(&rhs.e2);
-            let p7_2 = self.e123.mul_ref(&rhs.e3);
-            Multivector {
-                scalar: p1_0 + &p2_1 + &p3_2,
-                e1: p0_0,
-                e2: p0_1,
-                e3: p0_2,
-                e12: p7_2,
-                e13: ::algebra_core::Ring::neg_ref(&p7_1),
-                e23: p7_0,
-                e123: p4_2 - &p5_1 + &p6_0,
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0\0\0\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\x07\0\x02\0\0\0\x07\0\x01\0\x01\0\x07\0\0\0\0\0\x04\0\x02\0\0\0\x05\0\x01\0\x01\0\x06\0\0\0\0\0",
+                    b"\0\0\x03\0\x04\0\x05\0\x06\0\x07\0\x08\0\t\0\x0C\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::AnticommutatorProduct<Rotor<T>>
@@ -7617,36 +7028,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn anticommutator(&self, rhs: &Rotor<T>) -> Multivector<T> {
-            let p0_0 = self.scalar.mul_ref(&rhs.scalar);
-            let p0_1 = self.scalar.mul_ref(&rhs.e12);
-            let p0_2 = self.scalar.mul_ref(&rhs.e13);
-            let p0_3 = self.scalar.mul_ref(&rhs.e23);
-            let p1_0 = self.e1.mul_ref(&rhs.scalar);
-            let p1_3 = self.e1.mul_ref(&rhs.e23);
-            let p2_0 = self.e2.mul_ref(&rhs.scalar);
-            let p2_2 = self.e2.mul_ref(&rhs.e13);
-            let p3_0 = self.e3.mul_ref(&rhs.scalar);
-            let p3_1 = self.e3.mul_ref(&rhs.e12);
-            let p4_0 = self.e12.mul_ref(&rhs.scalar);
-            let p4_1 = self.e12.mul_ref(&rhs.e12);
-            let p5_0 = self.e13.mul_ref(&rhs.scalar);
-            let p5_2 = self.e13.mul_ref(&rhs.e13);
-            let p6_0 = self.e23.mul_ref(&rhs.scalar);
-            let p6_3 = self.e23.mul_ref(&rhs.e23);
-            let p7_0 = self.e123.mul_ref(&rhs.scalar);
-            let p7_1 = self.e123.mul_ref(&rhs.e12);
-            let p7_2 = self.e123.mul_ref(&rhs.e13);
-            let p7_3 = self.e123.mul_ref(&rhs.e23);
-            Multivector {
-                scalar: p0_0 - &p4_1 - &p5_2 - &p6_3,
-                e1: p1_0 - &p7_3,
-                e2: p2_0 + &p7_2,
-                e3: p3_0 - &p7_1,
-                e12: p0_1 + &p4_0,
-                e13: p0_2 + &p5_0,
-                e23: p0_3 + &p6_0,
-                e123: p1_3 - &p2_2 + &p3_1 + &p7_0,
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x04\0\x01\0\x01\0\x05\0\x02\0\x01\0\x06\0\x03\0\x01\0\x01\0\0\0\0\0\x07\0\x03\0\x01\0\x02\0\0\0\0\0\x07\0\x02\0\0\0\x03\0\0\0\0\0\x07\0\x01\0\x01\0\0\0\x01\0\0\0\x04\0\0\0\0\0\0\0\x02\0\0\0\x05\0\0\0\0\0\0\0\x03\0\0\0\x06\0\0\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0\x07\0\0\0\0\0",
+                    b"\0\0\x04\0\x06\0\x08\0\n\0\x0C\0\x0E\0\x10\0\x14\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::AnticommutatorProduct<Odd<T>>
@@ -7654,36 +7048,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn anticommutator(&self, rhs: &Odd<T>) -> Multivector<T> {
-            let p0_0 = self.scalar.mul_ref(&rhs.e1);
-            let p0_1 = self.scalar.mul_ref(&rhs.e2);
-            let p0_2 = self.scalar.mul_ref(&rhs.e3);
-            let p0_3 = self.scalar.mul_ref(&rhs.e123);
-            let p1_0 = self.e1.mul_ref(&rhs.e1);
-            let p1_3 = self.e1.mul_ref(&rhs.e123);
-            let p2_1 = self.e2.mul_ref(&rhs.e2);
-            let p2_3 = self.e2.mul_ref(&rhs.e123);
-            let p3_2 = self.e3.mul_ref(&rhs.e3);
-            let p3_3 = self.e3.mul_ref(&rhs.e123);
-            let p4_2 = self.e12.mul_ref(&rhs.e3);
-            let p4_3 = self.e12.mul_ref(&rhs.e123);
-            let p5_1 = self.e13.mul_ref(&rhs.e2);
-            let p5_3 = self.e13.mul_ref(&rhs.e123);
-            let p6_0 = self.e23.mul_ref(&rhs.e1);
-            let p6_3 = self.e23.mul_ref(&rhs.e123);
-            let p7_0 = self.e123.mul_ref(&rhs.e1);
-            let p7_1 = self.e123.mul_ref(&rhs.e2);
-            let p7_2 = self.e123.mul_ref(&rhs.e3);
-            let p7_3 = self.e123.mul_ref(&rhs.e123);
-            Multivector {
-                scalar: p1_0 + &p2_1 + &p3_2 - &p7_3,
-                e1: p0_0 - &p6_3,
-                e2: p0_1 + &p5_3,
-                e3: p0_2 - &p4_3,
-                e12: p3_3 + &p7_2,
-                e13: ::algebra_core::Ring::neg_ref(&p2_3) - &p7_1,
-                e23: p1_3 + &p7_0,
-                e123: p0_3 + &p4_2 - &p5_1 + &p6_0,
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0\x07\0\x03\0\x01\0\0\0\0\0\0\0\x06\0\x03\0\x01\0\0\0\x01\0\0\0\x05\0\x03\0\0\0\0\0\x02\0\0\0\x04\0\x03\0\x01\0\x03\0\x03\0\0\0\x07\0\x02\0\0\0\x02\0\x03\0\x01\0\x07\0\x01\0\x01\0\x01\0\x03\0\0\0\x07\0\0\0\0\0\0\0\x03\0\0\0\x04\0\x02\0\0\0\x05\0\x01\0\x01\0\x06\0\0\0\0\0",
+                    b"\0\0\x04\0\x06\0\x08\0\n\0\x0C\0\x0E\0\x10\0\x14\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -7692,56 +7069,19 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn anticommutator(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            let p0_0 = self.scalar.mul_ref(&rhs.scalar);
-            let p0_1 = self.scalar.mul_ref(&rhs.e1);
-            let p0_2 = self.scalar.mul_ref(&rhs.e2);
-            let p0_3 = self.scalar.mul_ref(&rhs.e3);
-            let p0_4 = self.scalar.mul_ref(&rhs.e12);
-            let p0_5 = self.scalar.mul_ref(&rhs.e13);
-            let p0_6 = self.scalar.mul_ref(&rhs.e23);
-            let p0_7 = self.scalar.mul_ref(&rhs.e123);
-            let p1_0 = self.e1.mul_ref(&rhs.scalar);
-            let p1_1 = self.e1.mul_ref(&rhs.e1);
-            let p1_6 = self.e1.mul_ref(&rhs.e23);
-            let p1_7 = self.e1.mul_ref(&rhs.e123);
-            let p2_0 = self.e2.mul_ref(&rhs.scalar);
-            let p2_2 = self.e2.mul_ref(&rhs.e2);
-            let p2_5 = self.e2.mul_ref(&rhs.e13);
-            let p2_7 = self.e2.mul_ref(&rhs.e123);
-            let p3_0 = self.e3.mul_ref(&rhs.scalar);
-            let p3_3 = self.e3.mul_ref(&rhs.e3);
-            let p3_4 = self.e3.mul_ref(&rhs.e12);
-            let p3_7 = self.e3.mul_ref(&rhs.e123);
-            let p4_0 = self.e12.mul_ref(&rhs.scalar);
-            let p4_3 = self.e12.mul_ref(&rhs.e3);
-            let p4_4 = self.e12.mul_ref(&rhs.e12);
-            let p4_7 = self.e12.mul_ref(&rhs.e123);
-            let p5_0 = self.e13.mul_ref(&rhs.scalar);
-            let p5_2 = self.e13.mul_ref(&rhs.e2);
-            let p5_5 = self.e13.mul_ref(&rhs.e13);
-            let p5_7 = self.e13.mul_ref(&rhs.e123);
-            let p6_0 = self.e23.mul_ref(&rhs.scalar);
-            let p6_1 = self.e23.mul_ref(&rhs.e1);
-            let p6_6 = self.e23.mul_ref(&rhs.e23);
-            let p6_7 = self.e23.mul_ref(&rhs.e123);
-            let p7_0 = self.e123.mul_ref(&rhs.scalar);
-            let p7_1 = self.e123.mul_ref(&rhs.e1);
-            let p7_2 = self.e123.mul_ref(&rhs.e2);
-            let p7_3 = self.e123.mul_ref(&rhs.e3);
-            let p7_4 = self.e123.mul_ref(&rhs.e12);
-            let p7_5 = self.e123.mul_ref(&rhs.e13);
-            let p7_6 = self.e123.mul_ref(&rhs.e23);
-            let p7_7 = self.e123.mul_ref(&rhs.e123);
-            Multivector {
-                scalar: p0_0 + &p1_1 + &p2_2 + &p3_3 - &(p4_4 + &p5_5 + &p6_6 + &p7_7),
-                e1: p0_1 + &p1_0 - &p6_7 - &p7_6,
-                e2: p0_2 + &p2_0 + &p5_7 + &p7_5,
-                e3: p0_3 + &p3_0 - &p4_7 - &p7_4,
-                e12: p0_4 + &p3_7 + &p4_0 + &p7_3,
-                e13: p0_5 - &p2_7 + &p5_0 - &p7_2,
-                e23: p0_6 + &p1_7 + &p6_0 + &p7_1,
-                e123: p0_7 + &p1_6 - &p2_5 + &p3_4 + &(p4_3 - &p5_2 + &p6_1 + &p7_0),
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\x04\0\x04\0\x01\0\x05\0\x05\0\x01\0\x06\0\x06\0\x01\0\x07\0\x07\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x06\0\x07\0\x01\0\x07\0\x06\0\x01\0\0\0\x02\0\0\0\x02\0\0\0\0\0\x05\0\x07\0\0\0\x07\0\x05\0\0\0\0\0\x03\0\0\0\x03\0\0\0\0\0\x04\0\x07\0\x01\0\x07\0\x04\0\x01\0\0\0\x04\0\0\0\x03\0\x07\0\0\0\x04\0\0\0\0\0\x07\0\x03\0\0\0\0\0\x05\0\0\0\x02\0\x07\0\x01\0\x05\0\0\0\0\0\x07\0\x02\0\x01\0\0\0\x06\0\0\0\x01\0\x07\0\0\0\x06\0\0\0\0\0\x07\0\x01\0\0\0\0\0\x07\0\0\0\x01\0\x06\0\0\0\x02\0\x05\0\x01\0\x03\0\x04\0\0\0\x04\0\x03\0\0\0\x05\0\x02\0\x01\0\x06\0\x01\0\0\0\x07\0\0\0\0\0",
+                    b"\0\0\x08\0\x0C\0\x10\0\x14\0\x18\0\x1C\0 \0(\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -7750,25 +7090,19 @@ pub mod g3_vendored {
     for Vector<T> {
         #[inline]
         fn gp_into(&self, rhs: &Vector<T>) -> Multivector<T> {
-            let p0_0 = self.e1.mul_ref(&rhs.e1);
-            let p0_1 = self.e1.mul_ref(&rhs.e2);
-            let p0_2 = self.e1.mul_ref(&rhs.e3);
-            let p1_0 = self.e2.mul_ref(&rhs.e1);
-            let p1_1 = self.e2.mul_ref(&rhs.e2);
-            let p1_2 = self.e2.mul_ref(&rhs.e3);
-            let p2_0 = self.e3.mul_ref(&rhs.e1);
-            let p2_1 = self.e3.mul_ref(&rhs.e2);
-            let p2_2 = self.e3.mul_ref(&rhs.e3);
-            Multivector {
-                scalar: p0_0 + &p1_1 + &p2_2,
-                e1: T::zero(),
-                e2: T::zero(),
-                e3: T::zero(),
-                e12: p0_1 - &p1_0,
-                e13: p0_2 - &p2_0,
-                e23: p1_2 - &p2_1,
-                e123: T::zero(),
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0",
+                    b"\0\0\x03\0\x03\0\x03\0\x03\0\x05\0\x07\0\t\0\t\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -7797,28 +7131,19 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Rotor<T>, Multivector<T>> for Vector<T> {
         #[inline]
         fn gp_into(&self, rhs: &Rotor<T>) -> Multivector<T> {
-            let p0_0 = self.e1.mul_ref(&rhs.scalar);
-            let p0_1 = self.e1.mul_ref(&rhs.e12);
-            let p0_2 = self.e1.mul_ref(&rhs.e13);
-            let p0_3 = self.e1.mul_ref(&rhs.e23);
-            let p1_0 = self.e2.mul_ref(&rhs.scalar);
-            let p1_1 = self.e2.mul_ref(&rhs.e12);
-            let p1_2 = self.e2.mul_ref(&rhs.e13);
-            let p1_3 = self.e2.mul_ref(&rhs.e23);
-            let p2_0 = self.e3.mul_ref(&rhs.scalar);
-            let p2_1 = self.e3.mul_ref(&rhs.e12);
-            let p2_2 = self.e3.mul_ref(&rhs.e13);
-            let p2_3 = self.e3.mul_ref(&rhs.e23);
-            Multivector {
-                scalar: T::zero(),
-                e1: p0_0 - &p1_1 - &p2_2,
-                e2: p0_1 + &p1_0 - &p2_3,
-                e3: p0_2 + &p1_3 + &p2_0,
-                e12: T::zero(),
-                e13: T::zero(),
-                e23: T::zero(),
-                e123: p0_3 - &p1_2 + &p2_1,
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x03\0\x01\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\0\0\0\0\x03\0\0\0\x01\0\x02\0\x01\0\x02\0\x01\0\0\0",
+                    b"\0\0\0\0\x03\0\x06\0\t\0\t\0\t\0\t\0\x0C\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -7826,28 +7151,19 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Odd<T>, Multivector<T>> for Vector<T> {
         #[inline]
         fn gp_into(&self, rhs: &Odd<T>) -> Multivector<T> {
-            let p0_0 = self.e1.mul_ref(&rhs.e1);
-            let p0_1 = self.e1.mul_ref(&rhs.e2);
-            let p0_2 = self.e1.mul_ref(&rhs.e3);
-            let p0_3 = self.e1.mul_ref(&rhs.e123);
-            let p1_0 = self.e2.mul_ref(&rhs.e1);
-            let p1_1 = self.e2.mul_ref(&rhs.e2);
-            let p1_2 = self.e2.mul_ref(&rhs.e3);
-            let p1_3 = self.e2.mul_ref(&rhs.e123);
-            let p2_0 = self.e3.mul_ref(&rhs.e1);
-            let p2_1 = self.e3.mul_ref(&rhs.e2);
-            let p2_2 = self.e3.mul_ref(&rhs.e3);
-            let p2_3 = self.e3.mul_ref(&rhs.e123);
-            Multivector {
-                scalar: p0_0 + &p1_1 + &p2_2,
-                e1: T::zero(),
-                e2: T::zero(),
-                e3: T::zero(),
-                e12: p0_1 - &p1_0 + &p2_3,
-                e13: p0_2 - &p1_3 - &p2_0,
-                e23: p0_3 + &p1_2 - &p2_1,
-                e123: T::zero(),
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0",
+                    b"\0\0\x03\0\x03\0\x03\0\x03\0\x06\0\t\0\x0C\0\x0C\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -7856,20 +7172,19 @@ pub mod g3_vendored {
     for Vector<T> {
         #[inline]
         fn gp_into(&self, rhs: &Multivector<T>) -> Vector<T> {
-            let p0_0 = self.e1.mul_ref(&rhs.scalar);
-            let p0_4 = self.e1.mul_ref(&rhs.e12);
-            let p0_5 = self.e1.mul_ref(&rhs.e13);
-            let p1_0 = self.e2.mul_ref(&rhs.scalar);
-            let p1_4 = self.e2.mul_ref(&rhs.e12);
-            let p1_6 = self.e2.mul_ref(&rhs.e23);
-            let p2_0 = self.e3.mul_ref(&rhs.scalar);
-            let p2_5 = self.e3.mul_ref(&rhs.e13);
-            let p2_6 = self.e3.mul_ref(&rhs.e23);
-            Vector {
-                e1: p0_0 - &p1_4 - &p2_5,
-                e2: p0_4 + &p1_0 - &p2_6,
-                e3: p0_5 + &p1_6 + &p2_0,
-            }
+            Vector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    3usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\0\0\x04\0\0\0\x01\0\0\0\0\0\x02\0\x06\0\x01\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\x02\0\0\0\0\0",
+                    b"\0\0\x03\0\x06\0\t\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -7877,24 +7192,19 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Multivector<T>, Rotor<T>> for Vector<T> {
         #[inline]
         fn gp_into(&self, rhs: &Multivector<T>) -> Rotor<T> {
-            let p0_1 = self.e1.mul_ref(&rhs.e1);
-            let p0_2 = self.e1.mul_ref(&rhs.e2);
-            let p0_3 = self.e1.mul_ref(&rhs.e3);
-            let p0_7 = self.e1.mul_ref(&rhs.e123);
-            let p1_1 = self.e2.mul_ref(&rhs.e1);
-            let p1_2 = self.e2.mul_ref(&rhs.e2);
-            let p1_3 = self.e2.mul_ref(&rhs.e3);
-            let p1_7 = self.e2.mul_ref(&rhs.e123);
-            let p2_1 = self.e3.mul_ref(&rhs.e1);
-            let p2_2 = self.e3.mul_ref(&rhs.e2);
-            let p2_3 = self.e3.mul_ref(&rhs.e3);
-            let p2_7 = self.e3.mul_ref(&rhs.e123);
-            Rotor {
-                scalar: p0_1 + &p1_2 + &p2_3,
-                e12: p0_2 - &p1_1 + &p2_7,
-                e13: p0_3 - &p1_7 - &p2_1,
-                e23: p0_7 + &p1_3 - &p2_2,
-            }
+            Rotor::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\0\0\x02\0\0\0\x01\0\x01\0\x01\0\x02\0\x07\0\0\0\0\0\x03\0\0\0\x01\0\x07\0\x01\0\x02\0\x01\0\x01\0\0\0\x07\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0",
+                    b"\0\0\x03\0\x06\0\t\0\x0C\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -7902,24 +7212,19 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Multivector<T>, Odd<T>> for Vector<T> {
         #[inline]
         fn gp_into(&self, rhs: &Multivector<T>) -> Odd<T> {
-            let p0_0 = self.e1.mul_ref(&rhs.scalar);
-            let p0_4 = self.e1.mul_ref(&rhs.e12);
-            let p0_5 = self.e1.mul_ref(&rhs.e13);
-            let p0_6 = self.e1.mul_ref(&rhs.e23);
-            let p1_0 = self.e2.mul_ref(&rhs.scalar);
-            let p1_4 = self.e2.mul_ref(&rhs.e12);
-            let p1_5 = self.e2.mul_ref(&rhs.e13);
-            let p1_6 = self.e2.mul_ref(&rhs.e23);
-            let p2_0 = self.e3.mul_ref(&rhs.scalar);
-            let p2_4 = self.e3.mul_ref(&rhs.e12);
-            let p2_5 = self.e3.mul_ref(&rhs.e13);
-            let p2_6 = self.e3.mul_ref(&rhs.e23);
-            Odd {
-                e1: p0_0 - &p1_4 - &p2_5,
-                e2: p0_4 + &p1_0 - &p2_6,
-                e3: p0_5 + &p1_6 + &p2_0,
-                e123: p0_6 - &p1_5 + &p2_4,
-            }
+            Odd::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\0\0\x04\0\0\0\x01\0\0\0\0\0\x02\0\x06\0\x01\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\x02\0\0\0\0\0\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0",
+                    b"\0\0\x03\0\x06\0\t\0\x0C\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -7948,28 +7253,19 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Vector<T>, Multivector<T>> for Rotor<T> {
         #[inline]
         fn gp_into(&self, rhs: &Vector<T>) -> Multivector<T> {
-            let p0_0 = self.scalar.mul_ref(&rhs.e1);
-            let p0_1 = self.scalar.mul_ref(&rhs.e2);
-            let p0_2 = self.scalar.mul_ref(&rhs.e3);
-            let p1_0 = self.e12.mul_ref(&rhs.e1);
-            let p1_1 = self.e12.mul_ref(&rhs.e2);
-            let p1_2 = self.e12.mul_ref(&rhs.e3);
-            let p2_0 = self.e13.mul_ref(&rhs.e1);
-            let p2_1 = self.e13.mul_ref(&rhs.e2);
-            let p2_2 = self.e13.mul_ref(&rhs.e3);
-            let p3_0 = self.e23.mul_ref(&rhs.e1);
-            let p3_1 = self.e23.mul_ref(&rhs.e2);
-            let p3_2 = self.e23.mul_ref(&rhs.e3);
-            Multivector {
-                scalar: T::zero(),
-                e1: p0_0 + &p1_1 + &p2_2,
-                e2: p0_1 - &p1_0 + &p3_2,
-                e3: p0_2 - &p2_0 - &p3_1,
-                e12: T::zero(),
-                e13: T::zero(),
-                e23: T::zero(),
-                e123: p1_2 - &p2_1 + &p3_0,
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
+                    b"\0\0\0\0\x03\0\x06\0\t\0\t\0\t\0\t\0\x0C\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -7977,32 +7273,19 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Rotor<T>, Multivector<T>> for Rotor<T> {
         #[inline]
         fn gp_into(&self, rhs: &Rotor<T>) -> Multivector<T> {
-            let p0_0 = self.scalar.mul_ref(&rhs.scalar);
-            let p0_1 = self.scalar.mul_ref(&rhs.e12);
-            let p0_2 = self.scalar.mul_ref(&rhs.e13);
-            let p0_3 = self.scalar.mul_ref(&rhs.e23);
-            let p1_0 = self.e12.mul_ref(&rhs.scalar);
-            let p1_1 = self.e12.mul_ref(&rhs.e12);
-            let p1_2 = self.e12.mul_ref(&rhs.e13);
-            let p1_3 = self.e12.mul_ref(&rhs.e23);
-            let p2_0 = self.e13.mul_ref(&rhs.scalar);
-            let p2_1 = self.e13.mul_ref(&rhs.e12);
-            let p2_2 = self.e13.mul_ref(&rhs.e13);
-            let p2_3 = self.e13.mul_ref(&rhs.e23);
-            let p3_0 = self.e23.mul_ref(&rhs.scalar);
-            let p3_1 = self.e23.mul_ref(&rhs.e12);
-            let p3_2 = self.e23.mul_ref(&rhs.e13);
-            let p3_3 = self.e23.mul_ref(&rhs.e23);
-            Multivector {
-                scalar: p0_0 - &p1_1 - &p2_2 - &p3_3,
-                e1: T::zero(),
-                e2: T::zero(),
-                e3: T::zero(),
-                e12: p0_1 + &p1_0 - &p2_3 + &p3_2,
-                e13: p0_2 + &p1_3 + &p2_0 - &p3_1,
-                e23: p0_3 - &p1_2 + &p2_1 + &p3_0,
-                e123: T::zero(),
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x03\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\0\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\x01\0\x02\0\x01\0\0\0\x03\0\0\0\0\0",
+                    b"\0\0\x04\0\x04\0\x04\0\x04\0\x08\0\x0C\0\x10\0\x10\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -8010,23 +7293,19 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Odd<T>, Vector<T>> for Rotor<T> {
         #[inline]
         fn gp_into(&self, rhs: &Odd<T>) -> Vector<T> {
-            let p0_0 = self.scalar.mul_ref(&rhs.e1);
-            let p0_1 = self.scalar.mul_ref(&rhs.e2);
-            let p0_2 = self.scalar.mul_ref(&rhs.e3);
-            let p1_0 = self.e12.mul_ref(&rhs.e1);
-            let p1_1 = self.e12.mul_ref(&rhs.e2);
-            let p1_3 = self.e12.mul_ref(&rhs.e123);
-            let p2_0 = self.e13.mul_ref(&rhs.e1);
-            let p2_2 = self.e13.mul_ref(&rhs.e3);
-            let p2_3 = self.e13.mul_ref(&rhs.e123);
-            let p3_1 = self.e23.mul_ref(&rhs.e2);
-            let p3_2 = self.e23.mul_ref(&rhs.e3);
-            let p3_3 = self.e23.mul_ref(&rhs.e123);
-            Vector {
-                e1: p0_0 + &p1_1 + &p2_2 - &p3_3,
-                e2: p0_1 - &p1_0 + &p2_3 + &p3_2,
-                e3: p0_2 - &p1_3 - &p2_0 - &p3_1,
-            }
+            Vector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    3usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0",
+                    b"\0\0\x04\0\x08\0\x0C\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -8034,32 +7313,19 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Odd<T>, Multivector<T>> for Rotor<T> {
         #[inline]
         fn gp_into(&self, rhs: &Odd<T>) -> Multivector<T> {
-            let p0_0 = self.scalar.mul_ref(&rhs.e1);
-            let p0_1 = self.scalar.mul_ref(&rhs.e2);
-            let p0_2 = self.scalar.mul_ref(&rhs.e3);
-            let p0_3 = self.scalar.mul_ref(&rhs.e123);
-            let p1_0 = self.e12.mul_ref(&rhs.e1);
-            let p1_1 = self.e12.mul_ref(&rhs.e2);
-            let p1_2 = self.e12.mul_ref(&rhs.e3);
-            let p1_3 = self.e12.mul_ref(&rhs.e123);
-            let p2_0 = self.e13.mul_ref(&rhs.e1);
-            let p2_1 = self.e13.mul_ref(&rhs.e2);
-            let p2_2 = self.e13.mul_ref(&rhs.e3);
-            let p2_3 = self.e13.mul_ref(&rhs.e123);
-            let p3_0 = self.e23.mul_ref(&rhs.e1);
-            let p3_1 = self.e23.mul_ref(&rhs.e2);
-            let p3_2 = self.e23.mul_ref(&rhs.e3);
-            let p3_3 = self.e23.mul_ref(&rhs.e123);
-            Multivector {
-                scalar: T::zero(),
-                e1: p0_0 + &p1_1 + &p2_2 - &p3_3,
-                e2: p0_1 - &p1_0 + &p2_3 + &p3_2,
-                e3: p0_2 - &p1_3 - &p2_0 - &p3_1,
-                e12: T::zero(),
-                e13: T::zero(),
-                e23: T::zero(),
-                e123: p0_3 + &p1_2 - &p2_1 + &p3_0,
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
+                    b"\0\0\0\0\x04\0\x08\0\x0C\0\x0C\0\x0C\0\x0C\0\x10\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -8067,23 +7333,19 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Multivector<T>, Vector<T>> for Rotor<T> {
         #[inline]
         fn gp_into(&self, rhs: &Multivector<T>) -> Vector<T> {
-            let p0_1 = self.scalar.mul_ref(&rhs.e1);
-            let p0_2 = self.scalar.mul_ref(&rhs.e2);
-            let p0_3 = self.scalar.mul_ref(&rhs.e3);
-            let p1_1 = self.e12.mul_ref(&rhs.e1);
-            let p1_2 = self.e12.mul_ref(&rhs.e2);
-            let p1_7 = self.e12.mul_ref(&rhs.e123);
-            let p2_1 = self.e13.mul_ref(&rhs.e1);
-            let p2_3 = self.e13.mul_ref(&rhs.e3);
-            let p2_7 = self.e13.mul_ref(&rhs.e123);
-            let p3_2 = self.e23.mul_ref(&rhs.e2);
-            let p3_3 = self.e23.mul_ref(&rhs.e3);
-            let p3_7 = self.e23.mul_ref(&rhs.e123);
-            Vector {
-                e1: p0_1 + &p1_2 + &p2_3 - &p3_7,
-                e2: p0_2 - &p1_1 + &p2_7 + &p3_3,
-                e3: p0_3 - &p1_7 - &p2_1 - &p3_2,
-            }
+            Vector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    3usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\x07\0\x01\0\0\0\x02\0\0\0\x01\0\x01\0\x01\0\x02\0\x07\0\0\0\x03\0\x03\0\0\0\0\0\x03\0\0\0\x01\0\x07\0\x01\0\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0",
+                    b"\0\0\x04\0\x08\0\x0C\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -8091,28 +7353,19 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Multivector<T>, Rotor<T>> for Rotor<T> {
         #[inline]
         fn gp_into(&self, rhs: &Multivector<T>) -> Rotor<T> {
-            let p0_0 = self.scalar.mul_ref(&rhs.scalar);
-            let p0_4 = self.scalar.mul_ref(&rhs.e12);
-            let p0_5 = self.scalar.mul_ref(&rhs.e13);
-            let p0_6 = self.scalar.mul_ref(&rhs.e23);
-            let p1_0 = self.e12.mul_ref(&rhs.scalar);
-            let p1_4 = self.e12.mul_ref(&rhs.e12);
-            let p1_5 = self.e12.mul_ref(&rhs.e13);
-            let p1_6 = self.e12.mul_ref(&rhs.e23);
-            let p2_0 = self.e13.mul_ref(&rhs.scalar);
-            let p2_4 = self.e13.mul_ref(&rhs.e12);
-            let p2_5 = self.e13.mul_ref(&rhs.e13);
-            let p2_6 = self.e13.mul_ref(&rhs.e23);
-            let p3_0 = self.e23.mul_ref(&rhs.scalar);
-            let p3_4 = self.e23.mul_ref(&rhs.e12);
-            let p3_5 = self.e23.mul_ref(&rhs.e13);
-            let p3_6 = self.e23.mul_ref(&rhs.e23);
-            Rotor {
-                scalar: p0_0 - &p1_4 - &p2_5 - &p3_6,
-                e12: p0_4 + &p1_0 - &p2_6 + &p3_5,
-                e13: p0_5 + &p1_6 + &p2_0 - &p3_4,
-                e23: p0_6 - &p1_5 + &p2_4 + &p3_0,
-            }
+            Rotor::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\x03\0\x06\0\x01\0\0\0\x04\0\0\0\x01\0\0\0\0\0\x02\0\x06\0\x01\0\x03\0\x05\0\0\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\x02\0\0\0\0\0\x03\0\x04\0\x01\0\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0\x03\0\0\0\0\0",
+                    b"\0\0\x04\0\x08\0\x0C\0\x10\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -8120,28 +7373,19 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Multivector<T>, Odd<T>> for Rotor<T> {
         #[inline]
         fn gp_into(&self, rhs: &Multivector<T>) -> Odd<T> {
-            let p0_1 = self.scalar.mul_ref(&rhs.e1);
-            let p0_2 = self.scalar.mul_ref(&rhs.e2);
-            let p0_3 = self.scalar.mul_ref(&rhs.e3);
-            let p0_7 = self.scalar.mul_ref(&rhs.e123);
-            let p1_1 = self.e12.mul_ref(&rhs.e1);
-            let p1_2 = self.e12.mul_ref(&rhs.e2);
-            let p1_3 = self.e12.mul_ref(&rhs.e3);
-            let p1_7 = self.e12.mul_ref(&rhs.e123);
-            let p2_1 = self.e13.mul_ref(&rhs.e1);
-            let p2_2 = self.e13.mul_ref(&rhs.e2);
-            let p2_3 = self.e13.mul_ref(&rhs.e3);
-            let p2_7 = self.e13.mul_ref(&rhs.e123);
-            let p3_1 = self.e23.mul_ref(&rhs.e1);
-            let p3_2 = self.e23.mul_ref(&rhs.e2);
-            let p3_3 = self.e23.mul_ref(&rhs.e3);
-            let p3_7 = self.e23.mul_ref(&rhs.e123);
-            Odd {
-                e1: p0_1 + &p1_2 + &p2_3 - &p3_7,
-                e2: p0_2 - &p1_1 + &p2_7 + &p3_3,
-                e3: p0_3 - &p1_7 - &p2_1 - &p3_2,
-                e123: p0_7 + &p1_3 - &p2_2 + &p3_1,
-            }
+            Odd::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\x07\0\x01\0\0\0\x02\0\0\0\x01\0\x01\0\x01\0\x02\0\x07\0\0\0\x03\0\x03\0\0\0\0\0\x03\0\0\0\x01\0\x07\0\x01\0\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0\0\0\x07\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0",
+                    b"\0\0\x04\0\x08\0\x0C\0\x10\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -8149,28 +7393,19 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Vector<T>, Multivector<T>> for Odd<T> {
         #[inline]
         fn gp_into(&self, rhs: &Vector<T>) -> Multivector<T> {
-            let p0_0 = self.e1.mul_ref(&rhs.e1);
-            let p0_1 = self.e1.mul_ref(&rhs.e2);
-            let p0_2 = self.e1.mul_ref(&rhs.e3);
-            let p1_0 = self.e2.mul_ref(&rhs.e1);
-            let p1_1 = self.e2.mul_ref(&rhs.e2);
-            let p1_2 = self.e2.mul_ref(&rhs.e3);
-            let p2_0 = self.e3.mul_ref(&rhs.e1);
-            let p2_1 = self.e3.mul_ref(&rhs.e2);
-            let p2_2 = self.e3.mul_ref(&rhs.e3);
-            let p3_0 = self.e123.mul_ref(&rhs.e1);
-            let p3_1 = self.e123.mul_ref(&rhs.e2);
-            let p3_2 = self.e123.mul_ref(&rhs.e3);
-            Multivector {
-                scalar: p0_0 + &p1_1 + &p2_2,
-                e1: T::zero(),
-                e2: T::zero(),
-                e3: T::zero(),
-                e12: p0_1 - &p1_0 + &p3_2,
-                e13: p0_2 - &p2_0 - &p3_1,
-                e23: p1_2 - &p2_1 + &p3_0,
-                e123: T::zero(),
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
+                    b"\0\0\x03\0\x03\0\x03\0\x03\0\x06\0\t\0\x0C\0\x0C\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -8178,23 +7413,19 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Rotor<T>, Vector<T>> for Odd<T> {
         #[inline]
         fn gp_into(&self, rhs: &Rotor<T>) -> Vector<T> {
-            let p0_0 = self.e1.mul_ref(&rhs.scalar);
-            let p0_1 = self.e1.mul_ref(&rhs.e12);
-            let p0_2 = self.e1.mul_ref(&rhs.e13);
-            let p1_0 = self.e2.mul_ref(&rhs.scalar);
-            let p1_1 = self.e2.mul_ref(&rhs.e12);
-            let p1_3 = self.e2.mul_ref(&rhs.e23);
-            let p2_0 = self.e3.mul_ref(&rhs.scalar);
-            let p2_2 = self.e3.mul_ref(&rhs.e13);
-            let p2_3 = self.e3.mul_ref(&rhs.e23);
-            let p3_1 = self.e123.mul_ref(&rhs.e12);
-            let p3_2 = self.e123.mul_ref(&rhs.e13);
-            let p3_3 = self.e123.mul_ref(&rhs.e23);
-            Vector {
-                e1: p0_0 - &p1_1 - &p2_2 - &p3_3,
-                e2: p0_1 + &p1_0 - &p2_3 + &p3_2,
-                e3: p0_2 + &p1_3 + &p2_0 - &p3_1,
-            }
+            Vector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    3usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x03\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\0\0\x03\0\x01\0\x01\0",
+                    b"\0\0\x04\0\x08\0\x0C\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -8202,32 +7433,19 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Rotor<T>, Multivector<T>> for Odd<T> {
         #[inline]
         fn gp_into(&self, rhs: &Rotor<T>) -> Multivector<T> {
-            let p0_0 = self.e1.mul_ref(&rhs.scalar);
-            let p0_1 = self.e1.mul_ref(&rhs.e12);
-            let p0_2 = self.e1.mul_ref(&rhs.e13);
-            let p0_3 = self.e1.mul_ref(&rhs.e23);
-            let p1_0 = self.e2.mul_ref(&rhs.scalar);
-            let p1_1 = self.e2.mul_ref(&rhs.e12);
-            let p1_2 = self.e2.mul_ref(&rhs.e13);
-            let p1_3 = self.e2.mul_ref(&rhs.e23);
-            let p2_0 = self.e3.mul_ref(&rhs.scalar);
-            let p2_1 = self.e3.mul_ref(&rhs.e12);
-            let p2_2 = self.e3.mul_ref(&rhs.e13);
-            let p2_3 = self.e3.mul_ref(&rhs.e23);
-            let p3_0 = self.e123.mul_ref(&rhs.scalar);
-            let p3_1 = self.e123.mul_ref(&rhs.e12);
-            let p3_2 = self.e123.mul_ref(&rhs.e13);
-            let p3_3 = self.e123.mul_ref(&rhs.e23);
-            Multivector {
-                scalar: T::zero(),
-                e1: p0_0 - &p1_1 - &p2_2 - &p3_3,
-                e2: p0_1 + &p1_0 - &p2_3 + &p3_2,
-                e3: p0_2 + &p1_3 + &p2_0 - &p3_1,
-                e12: T::zero(),
-                e13: T::zero(),
-                e23: T::zero(),
-                e123: p0_3 - &p1_2 + &p2_1 + &p3_0,
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x03\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\0\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\x01\0\x02\0\x01\0\0\0\x03\0\0\0\0\0",
+                    b"\0\0\0\0\x04\0\x08\0\x0C\0\x0C\0\x0C\0\x0C\0\x10\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -8235,32 +7453,19 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Odd<T>, Multivector<T>> for Odd<T> {
         #[inline]
         fn gp_into(&self, rhs: &Odd<T>) -> Multivector<T> {
-            let p0_0 = self.e1.mul_ref(&rhs.e1);
-            let p0_1 = self.e1.mul_ref(&rhs.e2);
-            let p0_2 = self.e1.mul_ref(&rhs.e3);
-            let p0_3 = self.e1.mul_ref(&rhs.e123);
-            let p1_0 = self.e2.mul_ref(&rhs.e1);
-            let p1_1 = self.e2.mul_ref(&rhs.e2);
-            let p1_2 = self.e2.mul_ref(&rhs.e3);
-            let p1_3 = self.e2.mul_ref(&rhs.e123);
-            let p2_0 = self.e3.mul_ref(&rhs.e1);
-            let p2_1 = self.e3.mul_ref(&rhs.e2);
-            let p2_2 = self.e3.mul_ref(&rhs.e3);
-            let p2_3 = self.e3.mul_ref(&rhs.e123);
-            let p3_0 = self.e123.mul_ref(&rhs.e1);
-            let p3_1 = self.e123.mul_ref(&rhs.e2);
-            let p3_2 = self.e123.mul_ref(&rhs.e3);
-            let p3_3 = self.e123.mul_ref(&rhs.e123);
-            Multivector {
-                scalar: p0_0 + &p1_1 + &p2_2 - &p3_3,
-                e1: T::zero(),
-                e2: T::zero(),
-                e3: T::zero(),
-                e12: p0_1 - &p1_0 + &p2_3 + &p3_2,
-                e13: p0_2 - &p1_3 - &p2_0 - &p3_1,
-                e23: p0_3 + &p1_2 - &p2_1 + &p3_0,
-                e123: T::zero(),
-            }
+            Multivector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    8usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
+                    b"\0\0\x04\0\x04\0\x04\0\x04\0\x08\0\x0C\0\x10\0\x10\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -8268,23 +7473,19 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Multivector<T>, Vector<T>> for Odd<T> {
         #[inline]
         fn gp_into(&self, rhs: &Multivector<T>) -> Vector<T> {
-            let p0_0 = self.e1.mul_ref(&rhs.scalar);
-            let p0_4 = self.e1.mul_ref(&rhs.e12);
-            let p0_5 = self.e1.mul_ref(&rhs.e13);
-            let p1_0 = self.e2.mul_ref(&rhs.scalar);
-            let p1_4 = self.e2.mul_ref(&rhs.e12);
-            let p1_6 = self.e2.mul_ref(&rhs.e23);
-            let p2_0 = self.e3.mul_ref(&rhs.scalar);
-            let p2_5 = self.e3.mul_ref(&rhs.e13);
-            let p2_6 = self.e3.mul_ref(&rhs.e23);
-            let p3_4 = self.e123.mul_ref(&rhs.e12);
-            let p3_5 = self.e123.mul_ref(&rhs.e13);
-            let p3_6 = self.e123.mul_ref(&rhs.e23);
-            Vector {
-                e1: p0_0 - &p1_4 - &p2_5 - &p3_6,
-                e2: p0_4 + &p1_0 - &p2_6 + &p3_5,
-                e3: p0_5 + &p1_6 + &p2_0 - &p3_4,
-            }
+            Vector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    3usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\x03\0\x06\0\x01\0\0\0\x04\0\0\0\x01\0\0\0\0\0\x02\0\x06\0\x01\0\x03\0\x05\0\0\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\x02\0\0\0\0\0\x03\0\x04\0\x01\0",
+                    b"\0\0\x04\0\x08\0\x0C\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -8292,28 +7493,19 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Multivector<T>, Rotor<T>> for Odd<T> {
         #[inline]
         fn gp_into(&self, rhs: &Multivector<T>) -> Rotor<T> {
-            let p0_1 = self.e1.mul_ref(&rhs.e1);
-            let p0_2 = self.e1.mul_ref(&rhs.e2);
-            let p0_3 = self.e1.mul_ref(&rhs.e3);
-            let p0_7 = self.e1.mul_ref(&rhs.e123);
-            let p1_1 = self.e2.mul_ref(&rhs.e1);
-            let p1_2 = self.e2.mul_ref(&rhs.e2);
-            let p1_3 = self.e2.mul_ref(&rhs.e3);
-            let p1_7 = self.e2.mul_ref(&rhs.e123);
-            let p2_1 = self.e3.mul_ref(&rhs.e1);
-            let p2_2 = self.e3.mul_ref(&rhs.e2);
-            let p2_3 = self.e3.mul_ref(&rhs.e3);
-            let p2_7 = self.e3.mul_ref(&rhs.e123);
-            let p3_1 = self.e123.mul_ref(&rhs.e1);
-            let p3_2 = self.e123.mul_ref(&rhs.e2);
-            let p3_3 = self.e123.mul_ref(&rhs.e3);
-            let p3_7 = self.e123.mul_ref(&rhs.e123);
-            Rotor {
-                scalar: p0_1 + &p1_2 + &p2_3 - &p3_7,
-                e12: p0_2 - &p1_1 + &p2_7 + &p3_3,
-                e13: p0_3 - &p1_7 - &p2_1 - &p3_2,
-                e23: p0_7 + &p1_3 - &p2_2 + &p3_1,
-            }
+            Rotor::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\x07\0\x01\0\0\0\x02\0\0\0\x01\0\x01\0\x01\0\x02\0\x07\0\0\0\x03\0\x03\0\0\0\0\0\x03\0\0\0\x01\0\x07\0\x01\0\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0\0\0\x07\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0",
+                    b"\0\0\x04\0\x08\0\x0C\0\x10\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -8321,28 +7513,19 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Multivector<T>, Odd<T>> for Odd<T> {
         #[inline]
         fn gp_into(&self, rhs: &Multivector<T>) -> Odd<T> {
-            let p0_0 = self.e1.mul_ref(&rhs.scalar);
-            let p0_4 = self.e1.mul_ref(&rhs.e12);
-            let p0_5 = self.e1.mul_ref(&rhs.e13);
-            let p0_6 = self.e1.mul_ref(&rhs.e23);
-            let p1_0 = self.e2.mul_ref(&rhs.scalar);
-            let p1_4 = self.e2.mul_ref(&rhs.e12);
-            let p1_5 = self.e2.mul_ref(&rhs.e13);
-            let p1_6 = self.e2.mul_ref(&rhs.e23);
-            let p2_0 = self.e3.mul_ref(&rhs.scalar);
-            let p2_4 = self.e3.mul_ref(&rhs.e12);
-            let p2_5 = self.e3.mul_ref(&rhs.e13);
-            let p2_6 = self.e3.mul_ref(&rhs.e23);
-            let p3_0 = self.e123.mul_ref(&rhs.scalar);
-            let p3_4 = self.e123.mul_ref(&rhs.e12);
-            let p3_5 = self.e123.mul_ref(&rhs.e13);
-            let p3_6 = self.e123.mul_ref(&rhs.e23);
-            Odd {
-                e1: p0_0 - &p1_4 - &p2_5 - &p3_6,
-                e2: p0_4 + &p1_0 - &p2_6 + &p3_5,
-                e3: p0_5 + &p1_6 + &p2_0 - &p3_4,
-                e123: p0_6 - &p1_5 + &p2_4 + &p3_0,
-            }
+            Odd::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\x03\0\x06\0\x01\0\0\0\x04\0\0\0\x01\0\0\0\0\0\x02\0\x06\0\x01\0\x03\0\x05\0\0\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\x02\0\0\0\0\0\x03\0\x04\0\x01\0\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0\x03\0\0\0\0\0",
+                    b"\0\0\x04\0\x08\0\x0C\0\x10\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -8351,20 +7534,19 @@ pub mod g3_vendored {
     for Multivector<T> {
         #[inline]
         fn gp_into(&self, rhs: &Vector<T>) -> Vector<T> {
-            let p0_0 = self.scalar.mul_ref(&rhs.e1);
-            let p0_1 = self.scalar.mul_ref(&rhs.e2);
-            let p0_2 = self.scalar.mul_ref(&rhs.e3);
-            let p4_0 = self.e12.mul_ref(&rhs.e1);
-            let p4_1 = self.e12.mul_ref(&rhs.e2);
-            let p5_0 = self.e13.mul_ref(&rhs.e1);
-            let p5_2 = self.e13.mul_ref(&rhs.e3);
-            let p6_1 = self.e23.mul_ref(&rhs.e2);
-            let p6_2 = self.e23.mul_ref(&rhs.e3);
-            Vector {
-                e1: p0_0 + &p4_1 + &p5_2,
-                e2: p0_1 - &p4_0 + &p6_2,
-                e3: p0_2 - &p5_0 - &p6_1,
-            }
+            Vector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    3usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x04\0\x01\0\0\0\x05\0\x02\0\0\0\0\0\x01\0\0\0\x04\0\0\0\x01\0\x06\0\x02\0\0\0\0\0\x02\0\0\0\x05\0\0\0\x01\0\x06\0\x01\0\x01\0",
+                    b"\0\0\x03\0\x06\0\t\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -8372,24 +7554,19 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Vector<T>, Rotor<T>> for Multivector<T> {
         #[inline]
         fn gp_into(&self, rhs: &Vector<T>) -> Rotor<T> {
-            let p1_0 = self.e1.mul_ref(&rhs.e1);
-            let p1_1 = self.e1.mul_ref(&rhs.e2);
-            let p1_2 = self.e1.mul_ref(&rhs.e3);
-            let p2_0 = self.e2.mul_ref(&rhs.e1);
-            let p2_1 = self.e2.mul_ref(&rhs.e2);
-            let p2_2 = self.e2.mul_ref(&rhs.e3);
-            let p3_0 = self.e3.mul_ref(&rhs.e1);
-            let p3_1 = self.e3.mul_ref(&rhs.e2);
-            let p3_2 = self.e3.mul_ref(&rhs.e3);
-            let p7_0 = self.e123.mul_ref(&rhs.e1);
-            let p7_1 = self.e123.mul_ref(&rhs.e2);
-            let p7_2 = self.e123.mul_ref(&rhs.e3);
-            Rotor {
-                scalar: p1_0 + &p2_1 + &p3_2,
-                e12: p1_1 - &p2_0 + &p7_2,
-                e13: p1_2 - &p3_0 - &p7_1,
-                e23: p2_2 - &p3_1 + &p7_0,
-            }
+            Rotor::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0\x01\0\x01\0\0\0\x02\0\0\0\x01\0\x07\0\x02\0\0\0\x01\0\x02\0\0\0\x03\0\0\0\x01\0\x07\0\x01\0\x01\0\x02\0\x02\0\0\0\x03\0\x01\0\x01\0\x07\0\0\0\0\0",
+                    b"\0\0\x03\0\x06\0\t\0\x0C\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -8397,24 +7574,19 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Vector<T>, Odd<T>> for Multivector<T> {
         #[inline]
         fn gp_into(&self, rhs: &Vector<T>) -> Odd<T> {
-            let p0_0 = self.scalar.mul_ref(&rhs.e1);
-            let p0_1 = self.scalar.mul_ref(&rhs.e2);
-            let p0_2 = self.scalar.mul_ref(&rhs.e3);
-            let p4_0 = self.e12.mul_ref(&rhs.e1);
-            let p4_1 = self.e12.mul_ref(&rhs.e2);
-            let p4_2 = self.e12.mul_ref(&rhs.e3);
-            let p5_0 = self.e13.mul_ref(&rhs.e1);
-            let p5_1 = self.e13.mul_ref(&rhs.e2);
-            let p5_2 = self.e13.mul_ref(&rhs.e3);
-            let p6_0 = self.e23.mul_ref(&rhs.e1);
-            let p6_1 = self.e23.mul_ref(&rhs.e2);
-            let p6_2 = self.e23.mul_ref(&rhs.e3);
-            Odd {
-                e1: p0_0 + &p4_1 + &p5_2,
-                e2: p0_1 - &p4_0 + &p6_2,
-                e3: p0_2 - &p5_0 - &p6_1,
-                e123: p4_2 - &p5_1 + &p6_0,
-            }
+            Odd::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x04\0\x01\0\0\0\x05\0\x02\0\0\0\0\0\x01\0\0\0\x04\0\0\0\x01\0\x06\0\x02\0\0\0\0\0\x02\0\0\0\x05\0\0\0\x01\0\x06\0\x01\0\x01\0\x04\0\x02\0\0\0\x05\0\x01\0\x01\0\x06\0\0\0\0\0",
+                    b"\0\0\x03\0\x06\0\t\0\x0C\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -8422,23 +7594,19 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Rotor<T>, Vector<T>> for Multivector<T> {
         #[inline]
         fn gp_into(&self, rhs: &Rotor<T>) -> Vector<T> {
-            let p1_0 = self.e1.mul_ref(&rhs.scalar);
-            let p1_1 = self.e1.mul_ref(&rhs.e12);
-            let p1_2 = self.e1.mul_ref(&rhs.e13);
-            let p2_0 = self.e2.mul_ref(&rhs.scalar);
-            let p2_1 = self.e2.mul_ref(&rhs.e12);
-            let p2_3 = self.e2.mul_ref(&rhs.e23);
-            let p3_0 = self.e3.mul_ref(&rhs.scalar);
-            let p3_2 = self.e3.mul_ref(&rhs.e13);
-            let p3_3 = self.e3.mul_ref(&rhs.e23);
-            let p7_1 = self.e123.mul_ref(&rhs.e12);
-            let p7_2 = self.e123.mul_ref(&rhs.e13);
-            let p7_3 = self.e123.mul_ref(&rhs.e23);
-            Vector {
-                e1: p1_0 - &p2_1 - &p3_2 - &p7_3,
-                e2: p1_1 + &p2_0 - &p3_3 + &p7_2,
-                e3: p1_2 + &p2_3 + &p3_0 - &p7_1,
-            }
+            Vector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    3usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\x01\0\0\0\0\0\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0\x07\0\x03\0\x01\0\x01\0\x01\0\0\0\x02\0\0\0\0\0\x03\0\x03\0\x01\0\x07\0\x02\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\0\0\0\0\x07\0\x01\0\x01\0",
+                    b"\0\0\x04\0\x08\0\x0C\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -8446,28 +7614,19 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Rotor<T>, Rotor<T>> for Multivector<T> {
         #[inline]
         fn gp_into(&self, rhs: &Rotor<T>) -> Rotor<T> {
-            let p0_0 = self.scalar.mul_ref(&rhs.scalar);
-            let p0_1 = self.scalar.mul_ref(&rhs.e12);
-            let p0_2 = self.scalar.mul_ref(&rhs.e13);
-            let p0_3 = self.scalar.mul_ref(&rhs.e23);
-            let p4_0 = self.e12.mul_ref(&rhs.scalar);
-            let p4_1 = self.e12.mul_ref(&rhs.e12);
-            let p4_2 = self.e12.mul_ref(&rhs.e13);
-            let p4_3 = self.e12.mul_ref(&rhs.e23);
-            let p5_0 = self.e13.mul_ref(&rhs.scalar);
-            let p5_1 = self.e13.mul_ref(&rhs.e12);
-            let p5_2 = self.e13.mul_ref(&rhs.e13);
-            let p5_3 = self.e13.mul_ref(&rhs.e23);
-            let p6_0 = self.e23.mul_ref(&rhs.scalar);
-            let p6_1 = self.e23.mul_ref(&rhs.e12);
-            let p6_2 = self.e23.mul_ref(&rhs.e13);
-            let p6_3 = self.e23.mul_ref(&rhs.e23);
-            Rotor {
-                scalar: p0_0 - &p4_1 - &p5_2 - &p6_3,
-                e12: p0_1 + &p4_0 - &p5_3 + &p6_2,
-                e13: p0_2 + &p4_3 + &p5_0 - &p6_1,
-                e23: p0_3 - &p4_2 + &p5_1 + &p6_0,
-            }
+            Rotor::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x04\0\x01\0\x01\0\x05\0\x02\0\x01\0\x06\0\x03\0\x01\0\0\0\x01\0\0\0\x04\0\0\0\0\0\x05\0\x03\0\x01\0\x06\0\x02\0\0\0\0\0\x02\0\0\0\x04\0\x03\0\0\0\x05\0\0\0\0\0\x06\0\x01\0\x01\0\0\0\x03\0\0\0\x04\0\x02\0\x01\0\x05\0\x01\0\0\0\x06\0\0\0\0\0",
+                    b"\0\0\x04\0\x08\0\x0C\0\x10\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -8475,28 +7634,19 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Rotor<T>, Odd<T>> for Multivector<T> {
         #[inline]
         fn gp_into(&self, rhs: &Rotor<T>) -> Odd<T> {
-            let p1_0 = self.e1.mul_ref(&rhs.scalar);
-            let p1_1 = self.e1.mul_ref(&rhs.e12);
-            let p1_2 = self.e1.mul_ref(&rhs.e13);
-            let p1_3 = self.e1.mul_ref(&rhs.e23);
-            let p2_0 = self.e2.mul_ref(&rhs.scalar);
-            let p2_1 = self.e2.mul_ref(&rhs.e12);
-            let p2_2 = self.e2.mul_ref(&rhs.e13);
-            let p2_3 = self.e2.mul_ref(&rhs.e23);
-            let p3_0 = self.e3.mul_ref(&rhs.scalar);
-            let p3_1 = self.e3.mul_ref(&rhs.e12);
-            let p3_2 = self.e3.mul_ref(&rhs.e13);
-            let p3_3 = self.e3.mul_ref(&rhs.e23);
-            let p7_0 = self.e123.mul_ref(&rhs.scalar);
-            let p7_1 = self.e123.mul_ref(&rhs.e12);
-            let p7_2 = self.e123.mul_ref(&rhs.e13);
-            let p7_3 = self.e123.mul_ref(&rhs.e23);
-            Odd {
-                e1: p1_0 - &p2_1 - &p3_2 - &p7_3,
-                e2: p1_1 + &p2_0 - &p3_3 + &p7_2,
-                e3: p1_2 + &p2_3 + &p3_0 - &p7_1,
-                e123: p1_3 - &p2_2 + &p3_1 + &p7_0,
-            }
+            Odd::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\x01\0\0\0\0\0\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0\x07\0\x03\0\x01\0\x01\0\x01\0\0\0\x02\0\0\0\0\0\x03\0\x03\0\x01\0\x07\0\x02\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\0\0\0\0\x07\0\x01\0\x01\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0\x07\0\0\0\0\0",
+                    b"\0\0\x04\0\x08\0\x0C\0\x10\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -8504,23 +7654,19 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Odd<T>, Vector<T>> for Multivector<T> {
         #[inline]
         fn gp_into(&self, rhs: &Odd<T>) -> Vector<T> {
-            let p0_0 = self.scalar.mul_ref(&rhs.e1);
-            let p0_1 = self.scalar.mul_ref(&rhs.e2);
-            let p0_2 = self.scalar.mul_ref(&rhs.e3);
-            let p4_0 = self.e12.mul_ref(&rhs.e1);
-            let p4_1 = self.e12.mul_ref(&rhs.e2);
-            let p4_3 = self.e12.mul_ref(&rhs.e123);
-            let p5_0 = self.e13.mul_ref(&rhs.e1);
-            let p5_2 = self.e13.mul_ref(&rhs.e3);
-            let p5_3 = self.e13.mul_ref(&rhs.e123);
-            let p6_1 = self.e23.mul_ref(&rhs.e2);
-            let p6_2 = self.e23.mul_ref(&rhs.e3);
-            let p6_3 = self.e23.mul_ref(&rhs.e123);
-            Vector {
-                e1: p0_0 + &p4_1 + &p5_2 - &p6_3,
-                e2: p0_1 - &p4_0 + &p5_3 + &p6_2,
-                e3: p0_2 - &p4_3 - &p5_0 - &p6_1,
-            }
+            Vector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    3usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x04\0\x01\0\0\0\x05\0\x02\0\0\0\x06\0\x03\0\x01\0\0\0\x01\0\0\0\x04\0\0\0\x01\0\x05\0\x03\0\0\0\x06\0\x02\0\0\0\0\0\x02\0\0\0\x04\0\x03\0\x01\0\x05\0\0\0\x01\0\x06\0\x01\0\x01\0",
+                    b"\0\0\x04\0\x08\0\x0C\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -8528,28 +7674,19 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Odd<T>, Rotor<T>> for Multivector<T> {
         #[inline]
         fn gp_into(&self, rhs: &Odd<T>) -> Rotor<T> {
-            let p1_0 = self.e1.mul_ref(&rhs.e1);
-            let p1_1 = self.e1.mul_ref(&rhs.e2);
-            let p1_2 = self.e1.mul_ref(&rhs.e3);
-            let p1_3 = self.e1.mul_ref(&rhs.e123);
-            let p2_0 = self.e2.mul_ref(&rhs.e1);
-            let p2_1 = self.e2.mul_ref(&rhs.e2);
-            let p2_2 = self.e2.mul_ref(&rhs.e3);
-            let p2_3 = self.e2.mul_ref(&rhs.e123);
-            let p3_0 = self.e3.mul_ref(&rhs.e1);
-            let p3_1 = self.e3.mul_ref(&rhs.e2);
-            let p3_2 = self.e3.mul_ref(&rhs.e3);
-            let p3_3 = self.e3.mul_ref(&rhs.e123);
-            let p7_0 = self.e123.mul_ref(&rhs.e1);
-            let p7_1 = self.e123.mul_ref(&rhs.e2);
-            let p7_2 = self.e123.mul_ref(&rhs.e3);
-            let p7_3 = self.e123.mul_ref(&rhs.e123);
-            Rotor {
-                scalar: p1_0 + &p2_1 + &p3_2 - &p7_3,
-                e12: p1_1 - &p2_0 + &p3_3 + &p7_2,
-                e13: p1_2 - &p2_3 - &p3_0 - &p7_1,
-                e23: p1_3 + &p2_2 - &p3_1 + &p7_0,
-            }
+            Rotor::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0\x07\0\x03\0\x01\0\x01\0\x01\0\0\0\x02\0\0\0\x01\0\x03\0\x03\0\0\0\x07\0\x02\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\x01\0\x03\0\0\0\x01\0\x07\0\x01\0\x01\0\x01\0\x03\0\0\0\x02\0\x02\0\0\0\x03\0\x01\0\x01\0\x07\0\0\0\0\0",
+                    b"\0\0\x04\0\x08\0\x0C\0\x10\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -8557,28 +7694,19 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Odd<T>, Odd<T>> for Multivector<T> {
         #[inline]
         fn gp_into(&self, rhs: &Odd<T>) -> Odd<T> {
-            let p0_0 = self.scalar.mul_ref(&rhs.e1);
-            let p0_1 = self.scalar.mul_ref(&rhs.e2);
-            let p0_2 = self.scalar.mul_ref(&rhs.e3);
-            let p0_3 = self.scalar.mul_ref(&rhs.e123);
-            let p4_0 = self.e12.mul_ref(&rhs.e1);
-            let p4_1 = self.e12.mul_ref(&rhs.e2);
-            let p4_2 = self.e12.mul_ref(&rhs.e3);
-            let p4_3 = self.e12.mul_ref(&rhs.e123);
-            let p5_0 = self.e13.mul_ref(&rhs.e1);
-            let p5_1 = self.e13.mul_ref(&rhs.e2);
-            let p5_2 = self.e13.mul_ref(&rhs.e3);
-            let p5_3 = self.e13.mul_ref(&rhs.e123);
-            let p6_0 = self.e23.mul_ref(&rhs.e1);
-            let p6_1 = self.e23.mul_ref(&rhs.e2);
-            let p6_2 = self.e23.mul_ref(&rhs.e3);
-            let p6_3 = self.e23.mul_ref(&rhs.e123);
-            Odd {
-                e1: p0_0 + &p4_1 + &p5_2 - &p6_3,
-                e2: p0_1 - &p4_0 + &p5_3 + &p6_2,
-                e3: p0_2 - &p4_3 - &p5_0 - &p6_1,
-                e123: p0_3 + &p4_2 - &p5_1 + &p6_0,
-            }
+            Odd::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x04\0\x01\0\0\0\x05\0\x02\0\0\0\x06\0\x03\0\x01\0\0\0\x01\0\0\0\x04\0\0\0\x01\0\x05\0\x03\0\0\0\x06\0\x02\0\0\0\0\0\x02\0\0\0\x04\0\x03\0\x01\0\x05\0\0\0\x01\0\x06\0\x01\0\x01\0\0\0\x03\0\0\0\x04\0\x02\0\0\0\x05\0\x01\0\x01\0\x06\0\0\0\0\0",
+                    b"\0\0\x04\0\x08\0\x0C\0\x10\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -8587,35 +7715,19 @@ pub mod g3_vendored {
     for Multivector<T> {
         #[inline]
         fn gp_into(&self, rhs: &Multivector<T>) -> Vector<T> {
-            let p0_1 = self.scalar.mul_ref(&rhs.e1);
-            let p0_2 = self.scalar.mul_ref(&rhs.e2);
-            let p0_3 = self.scalar.mul_ref(&rhs.e3);
-            let p1_0 = self.e1.mul_ref(&rhs.scalar);
-            let p1_4 = self.e1.mul_ref(&rhs.e12);
-            let p1_5 = self.e1.mul_ref(&rhs.e13);
-            let p2_0 = self.e2.mul_ref(&rhs.scalar);
-            let p2_4 = self.e2.mul_ref(&rhs.e12);
-            let p2_6 = self.e2.mul_ref(&rhs.e23);
-            let p3_0 = self.e3.mul_ref(&rhs.scalar);
-            let p3_5 = self.e3.mul_ref(&rhs.e13);
-            let p3_6 = self.e3.mul_ref(&rhs.e23);
-            let p4_1 = self.e12.mul_ref(&rhs.e1);
-            let p4_2 = self.e12.mul_ref(&rhs.e2);
-            let p4_7 = self.e12.mul_ref(&rhs.e123);
-            let p5_1 = self.e13.mul_ref(&rhs.e1);
-            let p5_3 = self.e13.mul_ref(&rhs.e3);
-            let p5_7 = self.e13.mul_ref(&rhs.e123);
-            let p6_2 = self.e23.mul_ref(&rhs.e2);
-            let p6_3 = self.e23.mul_ref(&rhs.e3);
-            let p6_7 = self.e23.mul_ref(&rhs.e123);
-            let p7_4 = self.e123.mul_ref(&rhs.e12);
-            let p7_5 = self.e123.mul_ref(&rhs.e13);
-            let p7_6 = self.e123.mul_ref(&rhs.e23);
-            Vector {
-                e1: p0_1 + &p1_0 - &p2_4 - &p3_5 + &(p4_2 + &p5_3 - &p6_7 - &p7_6),
-                e2: p0_2 + &p1_4 + &p2_0 - &p3_6 - &(p4_1 - &p5_7 - &p6_3 - &p7_5),
-                e3: p0_3 + &p1_5 + &p2_6 + &p3_0 - &(p4_7 + &p5_1 + &p6_2 + &p7_4),
-            }
+            Vector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    3usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x04\0\x01\0\x03\0\x05\0\x01\0\x04\0\x02\0\0\0\x05\0\x03\0\0\0\x06\0\x07\0\x01\0\x07\0\x06\0\x01\0\0\0\x02\0\0\0\x01\0\x04\0\0\0\x02\0\0\0\0\0\x03\0\x06\0\x01\0\x04\0\x01\0\x01\0\x05\0\x07\0\0\0\x06\0\x03\0\0\0\x07\0\x05\0\0\0\0\0\x03\0\0\0\x01\0\x05\0\0\0\x02\0\x06\0\0\0\x03\0\0\0\0\0\x04\0\x07\0\x01\0\x05\0\x01\0\x01\0\x06\0\x02\0\x01\0\x07\0\x04\0\x01\0",
+                    b"\0\0\x08\0\x10\0\x18\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -8624,44 +7736,19 @@ pub mod g3_vendored {
     for Multivector<T> {
         #[inline]
         fn gp_into(&self, rhs: &Multivector<T>) -> Rotor<T> {
-            let p0_0 = self.scalar.mul_ref(&rhs.scalar);
-            let p0_4 = self.scalar.mul_ref(&rhs.e12);
-            let p0_5 = self.scalar.mul_ref(&rhs.e13);
-            let p0_6 = self.scalar.mul_ref(&rhs.e23);
-            let p1_1 = self.e1.mul_ref(&rhs.e1);
-            let p1_2 = self.e1.mul_ref(&rhs.e2);
-            let p1_3 = self.e1.mul_ref(&rhs.e3);
-            let p1_7 = self.e1.mul_ref(&rhs.e123);
-            let p2_1 = self.e2.mul_ref(&rhs.e1);
-            let p2_2 = self.e2.mul_ref(&rhs.e2);
-            let p2_3 = self.e2.mul_ref(&rhs.e3);
-            let p2_7 = self.e2.mul_ref(&rhs.e123);
-            let p3_1 = self.e3.mul_ref(&rhs.e1);
-            let p3_2 = self.e3.mul_ref(&rhs.e2);
-            let p3_3 = self.e3.mul_ref(&rhs.e3);
-            let p3_7 = self.e3.mul_ref(&rhs.e123);
-            let p4_0 = self.e12.mul_ref(&rhs.scalar);
-            let p4_4 = self.e12.mul_ref(&rhs.e12);
-            let p4_5 = self.e12.mul_ref(&rhs.e13);
-            let p4_6 = self.e12.mul_ref(&rhs.e23);
-            let p5_0 = self.e13.mul_ref(&rhs.scalar);
-            let p5_4 = self.e13.mul_ref(&rhs.e12);
-            let p5_5 = self.e13.mul_ref(&rhs.e13);
-            let p5_6 = self.e13.mul_ref(&rhs.e23);
-            let p6_0 = self.e23.mul_ref(&rhs.scalar);
-            let p6_4 = self.e23.mul_ref(&rhs.e12);
-            let p6_5 = self.e23.mul_ref(&rhs.e13);
-            let p6_6 = self.e23.mul_ref(&rhs.e23);
-            let p7_1 = self.e123.mul_ref(&rhs.e1);
-            let p7_2 = self.e123.mul_ref(&rhs.e2);
-            let p7_3 = self.e123.mul_ref(&rhs.e3);
-            let p7_7 = self.e123.mul_ref(&rhs.e123);
-            Rotor {
-                scalar: p0_0 + &p1_1 + &p2_2 + &p3_3 - &(p4_4 + &p5_5 + &p6_6 + &p7_7),
-                e12: p0_4 + &p1_2 - &p2_1 + &p3_7 + &(p4_0 - &p5_6 + &p6_5 + &p7_3),
-                e13: p0_5 + &p1_3 - &p2_7 - &p3_1 + &(p4_6 + &p5_0 - &p6_4 - &p7_2),
-                e23: p0_6 + &p1_7 + &p2_3 - &p3_2 - &(p4_5 - &p5_4 - &p6_0 - &p7_1),
-            }
+            Rotor::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\x04\0\x04\0\x01\0\x05\0\x05\0\x01\0\x06\0\x06\0\x01\0\x07\0\x07\0\x01\0\0\0\x04\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\x07\0\0\0\x04\0\0\0\0\0\x05\0\x06\0\x01\0\x06\0\x05\0\0\0\x07\0\x03\0\0\0\0\0\x05\0\0\0\x01\0\x03\0\0\0\x02\0\x07\0\x01\0\x03\0\x01\0\x01\0\x04\0\x06\0\0\0\x05\0\0\0\0\0\x06\0\x04\0\x01\0\x07\0\x02\0\x01\0\0\0\x06\0\0\0\x01\0\x07\0\0\0\x02\0\x03\0\0\0\x03\0\x02\0\x01\0\x04\0\x05\0\x01\0\x05\0\x04\0\0\0\x06\0\0\0\0\0\x07\0\x01\0\0\0",
+                    b"\0\0\x08\0\x10\0\x18\0 \0",
+                    &[],
+                ),
+            )
         }
     }
     impl<
@@ -8670,44 +7757,19 @@ pub mod g3_vendored {
     for Multivector<T> {
         #[inline]
         fn gp_into(&self, rhs: &Multivector<T>) -> Odd<T> {
-            let p0_1 = self.scalar.mul_ref(&rhs.e1);
-            let p0_2 = self.scalar.mul_ref(&rhs.e2);
-            let p0_3 = self.scalar.mul_ref(&rhs.e3);
-            let p0_7 = self.scalar.mul_ref(&rhs.e123);
-            let p1_0 = self.e1.mul_ref(&rhs.scalar);
-            let p1_4 = self.e1.mul_ref(&rhs.e12);
-            let p1_5 = self.e1.mul_ref(&rhs.e13);
-            let p1_6 = self.e1.mul_ref(&rhs.e23);
-            let p2_0 = self.e2.mul_ref(&rhs.scalar);
-            let p2_4 = self.e2.mul_ref(&rhs.e12);
-            let p2_5 = self.e2.mul_ref(&rhs.e13);
-            let p2_6 = self.e2.mul_ref(&rhs.e23);
-            let p3_0 = self.e3.mul_ref(&rhs.scalar);
-            let p3_4 = self.e3.mul_ref(&rhs.e12);
-            let p3_5 = self.e3.mul_ref(&rhs.e13);
-            let p3_6 = self.e3.mul_ref(&rhs.e23);
-            let p4_1 = self.e12.mul_ref(&rhs.e1);
-            let p4_2 = self.e12.mul_ref(&rhs.e2);
-            let p4_3 = self.e12.mul_ref(&rhs.e3);
-            let p4_7 = self.e12.mul_ref(&rhs.e123);
-            let p5_1 = self.e13.mul_ref(&rhs.e1);
-            let p5_2 = self.e13.mul_ref(&rhs.e2);
-            let p5_3 = self.e13.mul_ref(&rhs.e3);
-            let p5_7 = self.e13.mul_ref(&rhs.e123);
-            let p6_1 = self.e23.mul_ref(&rhs.e1);
-            let p6_2 = self.e23.mul_ref(&rhs.e2);
-            let p6_3 = self.e23.mul_ref(&rhs.e3);
-            let p6_7 = self.e23.mul_ref(&rhs.e123);
-            let p7_0 = self.e123.mul_ref(&rhs.scalar);
-            let p7_4 = self.e123.mul_ref(&rhs.e12);
-            let p7_5 = self.e123.mul_ref(&rhs.e13);
-            let p7_6 = self.e123.mul_ref(&rhs.e23);
-            Odd {
-                e1: p0_1 + &p1_0 - &p2_4 - &p3_5 + &(p4_2 + &p5_3 - &p6_7 - &p7_6),
-                e2: p0_2 + &p1_4 + &p2_0 - &p3_6 - &(p4_1 - &p5_7 - &p6_3 - &p7_5),
-                e3: p0_3 + &p1_5 + &p2_6 + &p3_0 - &(p4_7 + &p5_1 + &p6_2 + &p7_4),
-                e123: p0_7 + &p1_6 - &p2_5 + &p3_4 + &(p4_3 - &p5_2 + &p6_1 + &p7_0),
-            }
+            Odd::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &self.each_ref(),
+                    &rhs.each_ref(),
+                    b"\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x04\0\x01\0\x03\0\x05\0\x01\0\x04\0\x02\0\0\0\x05\0\x03\0\0\0\x06\0\x07\0\x01\0\x07\0\x06\0\x01\0\0\0\x02\0\0\0\x01\0\x04\0\0\0\x02\0\0\0\0\0\x03\0\x06\0\x01\0\x04\0\x01\0\x01\0\x05\0\x07\0\0\0\x06\0\x03\0\0\0\x07\0\x05\0\0\0\0\0\x03\0\0\0\x01\0\x05\0\0\0\x02\0\x06\0\0\0\x03\0\0\0\0\0\x04\0\x07\0\x01\0\x05\0\x01\0\x01\0\x06\0\x02\0\x01\0\x07\0\x04\0\x01\0\0\0\x07\0\0\0\x01\0\x06\0\0\0\x02\0\x05\0\x01\0\x03\0\x04\0\0\0\x04\0\x03\0\0\0\x05\0\x02\0\x01\0\x06\0\x01\0\0\0\x07\0\0\0\0\0",
+                    b"\0\0\x08\0\x10\0\x18\0 \0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> Vector<T> {
@@ -8945,51 +8007,65 @@ pub mod g3_vendored {
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Sandwich<Odd<T>> for Vector<T> {
         type Output = Odd<T>;
         ///`rev(self) x self` in one fused kernel: every component of the full product is a [`Odd`] component.
-        #[inline(always)]
+        #[inline]
         fn sandwich(&self, x: &Odd<T>) -> Odd<T> {
-            let t0 = ((self.e1.mul_ref(&x.e1))
-                + &((self.e2.mul_ref(&x.e2)) + &(self.e3.mul_ref(&x.e3))));
-            let t1 = ((self.e1.mul_ref(&x.e2))
-                - &((self.e2.mul_ref(&x.e1)) - &(self.e3.mul_ref(&x.e123))));
-            let t2 = ((self.e1.mul_ref(&x.e3))
-                - &((self.e2.mul_ref(&x.e123)) + &(self.e3.mul_ref(&x.e1))));
-            let t3 = ((self.e1.mul_ref(&x.e123))
-                + &((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2))));
-            Odd {
-                e1: ((t0.mul_ref(&self.e1))
-                    + &((t1.mul_ref(&self.e2)) + &(t2.mul_ref(&self.e3)))),
-                e2: ((t0.mul_ref(&self.e2))
-                    - &((t1.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e3)))),
-                e3: ((t0.mul_ref(&self.e3))
-                    - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
-                e123: ((t1.mul_ref(&self.e3))
-                    - &((t2.mul_ref(&self.e2)) - &(t3.mul_ref(&self.e1)))),
-            }
+            let s = self.each_ref();
+            let t = ::algebra_core::kernels::bilinear::<
+                T,
+                4usize,
+                _,
+            >(
+                &s,
+                &x.each_ref(),
+                b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0",
+                b"\0\0\x03\0\x06\0\t\0\x0C\0",
+                &[],
+            );
+            Odd::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &t.each_ref(),
+                    &s,
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
+                    b"\0\0\x03\0\x06\0\t\0\x0C\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Apply<Odd<T>> for Vector<T> {
         type Output = Odd<T>;
         ///`self x rev(self)` in one fused kernel: every component of the full product is a [`Odd`] component.
-        #[inline(always)]
+        #[inline]
         fn apply(&self, x: &Odd<T>) -> Odd<T> {
-            let t0 = ((self.e1.mul_ref(&x.e1))
-                + &((self.e2.mul_ref(&x.e2)) + &(self.e3.mul_ref(&x.e3))));
-            let t1 = ((self.e1.mul_ref(&x.e2))
-                - &((self.e2.mul_ref(&x.e1)) - &(self.e3.mul_ref(&x.e123))));
-            let t2 = ((self.e1.mul_ref(&x.e3))
-                - &((self.e2.mul_ref(&x.e123)) + &(self.e3.mul_ref(&x.e1))));
-            let t3 = ((self.e1.mul_ref(&x.e123))
-                + &((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2))));
-            Odd {
-                e1: ((t0.mul_ref(&self.e1))
-                    + &((t1.mul_ref(&self.e2)) + &(t2.mul_ref(&self.e3)))),
-                e2: ((t0.mul_ref(&self.e2))
-                    - &((t1.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e3)))),
-                e3: ((t0.mul_ref(&self.e3))
-                    - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
-                e123: ((t1.mul_ref(&self.e3))
-                    - &((t2.mul_ref(&self.e2)) - &(t3.mul_ref(&self.e1)))),
-            }
+            let s = self.each_ref();
+            let t = ::algebra_core::kernels::bilinear::<
+                T,
+                4usize,
+                _,
+            >(
+                &s,
+                &x.each_ref(),
+                b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0",
+                b"\0\0\x03\0\x06\0\t\0\x0C\0",
+                &[],
+            );
+            Odd::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &t.each_ref(),
+                    &s,
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
+                    b"\0\0\x03\0\x06\0\t\0\x0C\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Sandwich<Vector<T>> for Rotor<T> {
@@ -9103,207 +8179,257 @@ pub mod g3_vendored {
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Sandwich<Odd<T>> for Rotor<T> {
         type Output = Odd<T>;
         ///`rev(self) x self` in one fused kernel: every component of the full product is a [`Odd`] component.
-        #[inline(always)]
+        #[inline]
         fn sandwich(&self, x: &Odd<T>) -> Odd<T> {
-            let t0 = (((self.scalar.mul_ref(&x.e1)) - &(self.e12.mul_ref(&x.e2)))
-                - &((self.e13.mul_ref(&x.e3)) - &(self.e23.mul_ref(&x.e123))));
-            let t1 = (((self.scalar.mul_ref(&x.e2)) + &(self.e12.mul_ref(&x.e1)))
-                - &((self.e13.mul_ref(&x.e123)) + &(self.e23.mul_ref(&x.e3))));
-            let t2 = (((self.scalar.mul_ref(&x.e3)) + &(self.e12.mul_ref(&x.e123)))
-                + &((self.e13.mul_ref(&x.e1)) + &(self.e23.mul_ref(&x.e2))));
-            let t3 = (((self.scalar.mul_ref(&x.e123)) - &(self.e12.mul_ref(&x.e3)))
-                + &((self.e13.mul_ref(&x.e2)) - &(self.e23.mul_ref(&x.e1))));
-            Odd {
-                e1: (((t0.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e12)))
-                    - &((t2.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e23)))),
-                e2: (((t0.mul_ref(&self.e12)) + &(t1.mul_ref(&self.scalar)))
-                    - &((t2.mul_ref(&self.e23)) - &(t3.mul_ref(&self.e13)))),
-                e3: (((t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23)))
-                    + &((t2.mul_ref(&self.scalar)) - &(t3.mul_ref(&self.e12)))),
-                e123: (((t0.mul_ref(&self.e23)) - &(t1.mul_ref(&self.e13)))
-                    + &((t2.mul_ref(&self.e12)) + &(t3.mul_ref(&self.scalar)))),
-            }
+            let s = self.each_ref();
+            let t = ::algebra_core::kernels::bilinear::<
+                T,
+                4usize,
+                _,
+            >(
+                &s,
+                &x.each_ref(),
+                b"\0\0\0\0\0\0\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x03\0\x01\0\x03\0\x02\0\x01\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\0\0\x03\0\x01\0\0\0\0\0\x03\0\0\0\x01\0\x02\0\x01\0\x02\0\x01\0\0\0\x03\0\0\0\x01\0",
+                b"\0\0\x04\0\x08\0\x0C\0\x10\0",
+                &[],
+            );
+            Odd::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &t.each_ref(),
+                    &s,
+                    b"\0\0\0\0\0\0\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x03\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\0\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\x01\0\x02\0\x01\0\0\0\x03\0\0\0\0\0",
+                    b"\0\0\x04\0\x08\0\x0C\0\x10\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Apply<Odd<T>> for Rotor<T> {
         type Output = Odd<T>;
         ///`self x rev(self)` in one fused kernel: every component of the full product is a [`Odd`] component.
-        #[inline(always)]
+        #[inline]
         fn apply(&self, x: &Odd<T>) -> Odd<T> {
-            let t0 = (((self.scalar.mul_ref(&x.e1)) + &(self.e12.mul_ref(&x.e2)))
-                + &((self.e13.mul_ref(&x.e3)) - &(self.e23.mul_ref(&x.e123))));
-            let t1 = (((self.scalar.mul_ref(&x.e2)) - &(self.e12.mul_ref(&x.e1)))
-                + &((self.e13.mul_ref(&x.e123)) + &(self.e23.mul_ref(&x.e3))));
-            let t2 = (((self.scalar.mul_ref(&x.e3)) - &(self.e12.mul_ref(&x.e123)))
-                - &((self.e13.mul_ref(&x.e1)) + &(self.e23.mul_ref(&x.e2))));
-            let t3 = (((self.scalar.mul_ref(&x.e123)) + &(self.e12.mul_ref(&x.e3)))
-                - &((self.e13.mul_ref(&x.e2)) - &(self.e23.mul_ref(&x.e1))));
-            Odd {
-                e1: (((t0.mul_ref(&self.scalar)) + &(t1.mul_ref(&self.e12)))
-                    + &((t2.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e23)))),
-                e2: ::algebra_core::Ring::neg_ref(
-                    &(((t0.mul_ref(&self.e12)) - &(t1.mul_ref(&self.scalar)))
-                        - &((t2.mul_ref(&self.e23)) - &(t3.mul_ref(&self.e13)))),
+            let s = self.each_ref();
+            let t = ::algebra_core::kernels::bilinear::<
+                T,
+                4usize,
+                _,
+            >(
+                &s,
+                &x.each_ref(),
+                b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
+                b"\0\0\x04\0\x08\0\x0C\0\x10\0",
+                &[],
+            );
+            Odd::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &t.each_ref(),
+                    &s,
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\0\0\x01\0\x01\0\x01\0\0\0\0\0\x02\0\x03\0\0\0\x03\0\x02\0\x01\0\0\0\x02\0\x01\0\x01\0\x03\0\x01\0\x02\0\0\0\0\0\x03\0\x01\0\0\0\0\0\x03\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
+                    b"\0\0\x04\0\x08\0\x0C\0\x10\0",
+                    &[],
                 ),
-                e3: ::algebra_core::Ring::neg_ref(
-                    &(((t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23)))
-                        - &((t2.mul_ref(&self.scalar)) + &(t3.mul_ref(&self.e12)))),
-                ),
-                e123: ::algebra_core::Ring::neg_ref(
-                    &(((t0.mul_ref(&self.e23)) - &(t1.mul_ref(&self.e13)))
-                        + &((t2.mul_ref(&self.e12)) - &(t3.mul_ref(&self.scalar)))),
-                ),
-            }
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Sandwich<Vector<T>> for Odd<T> {
         type Output = Vector<T>;
         ///`rev(self) x self` in one fused kernel: every component of the full product is a [`Vector`] component.
-        #[inline(always)]
+        #[inline]
         fn sandwich(&self, x: &Vector<T>) -> Vector<T> {
-            let t0 = ((self.e1.mul_ref(&x.e1))
-                + &((self.e2.mul_ref(&x.e2)) + &(self.e3.mul_ref(&x.e3))));
-            let t1 = ((self.e1.mul_ref(&x.e2))
-                - &((self.e2.mul_ref(&x.e1)) + &(self.e123.mul_ref(&x.e3))));
-            let t2 = ((self.e1.mul_ref(&x.e3))
-                - &((self.e3.mul_ref(&x.e1)) - &(self.e123.mul_ref(&x.e2))));
-            let t3 = ((self.e2.mul_ref(&x.e3))
-                - &((self.e3.mul_ref(&x.e2)) + &(self.e123.mul_ref(&x.e1))));
-            Vector {
-                e1: (((t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2)))
-                    + &((t2.mul_ref(&self.e3)) - &(t3.mul_ref(&self.e123)))),
-                e2: (((t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1)))
-                    + &((t2.mul_ref(&self.e123)) + &(t3.mul_ref(&self.e3)))),
-                e3: (((t0.mul_ref(&self.e3)) - &(t1.mul_ref(&self.e123)))
-                    - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
-            }
+            let s = self.each_ref();
+            let t = ::algebra_core::kernels::bilinear::<
+                T,
+                4usize,
+                _,
+            >(
+                &s,
+                &x.each_ref(),
+                b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\x01\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\x01\0",
+                b"\0\0\x03\0\x06\0\t\0\x0C\0",
+                &[],
+            );
+            Vector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    3usize,
+                    _,
+                >(
+                    &t.each_ref(),
+                    &s,
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0",
+                    b"\0\0\x04\0\x08\0\x0C\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Apply<Vector<T>> for Odd<T> {
         type Output = Vector<T>;
         ///`self x rev(self)` in one fused kernel: every component of the full product is a [`Vector`] component.
-        #[inline(always)]
+        #[inline]
         fn apply(&self, x: &Vector<T>) -> Vector<T> {
-            let t0 = ((self.e1.mul_ref(&x.e1))
-                + &((self.e2.mul_ref(&x.e2)) + &(self.e3.mul_ref(&x.e3))));
-            let t1 = ((self.e1.mul_ref(&x.e2))
-                - &((self.e2.mul_ref(&x.e1)) - &(self.e123.mul_ref(&x.e3))));
-            let t2 = ((self.e1.mul_ref(&x.e3))
-                - &((self.e3.mul_ref(&x.e1)) + &(self.e123.mul_ref(&x.e2))));
-            let t3 = ((self.e2.mul_ref(&x.e3))
-                - &((self.e3.mul_ref(&x.e2)) - &(self.e123.mul_ref(&x.e1))));
-            Vector {
-                e1: (((t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2)))
-                    + &((t2.mul_ref(&self.e3)) + &(t3.mul_ref(&self.e123)))),
-                e2: (((t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1)))
-                    - &((t2.mul_ref(&self.e123)) - &(t3.mul_ref(&self.e3)))),
-                e3: (((t0.mul_ref(&self.e3)) + &(t1.mul_ref(&self.e123)))
-                    - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
-            }
+            let s = self.each_ref();
+            let t = ::algebra_core::kernels::bilinear::<
+                T,
+                4usize,
+                _,
+            >(
+                &s,
+                &x.each_ref(),
+                b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
+                b"\0\0\x03\0\x06\0\t\0\x0C\0",
+                &[],
+            );
+            Vector::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    3usize,
+                    _,
+                >(
+                    &t.each_ref(),
+                    &s,
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0",
+                    b"\0\0\x04\0\x08\0\x0C\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Sandwich<Rotor<T>> for Odd<T> {
         type Output = Rotor<T>;
         ///`rev(self) x self` in one fused kernel: every component of the full product is a [`Rotor`] component.
-        #[inline(always)]
+        #[inline]
         fn sandwich(&self, x: &Rotor<T>) -> Rotor<T> {
-            let t0 = (((self.e1.mul_ref(&x.scalar)) - &(self.e2.mul_ref(&x.e12)))
-                - &((self.e3.mul_ref(&x.e13)) - &(self.e123.mul_ref(&x.e23))));
-            let t1 = (((self.e1.mul_ref(&x.e12)) + &(self.e2.mul_ref(&x.scalar)))
-                - &((self.e3.mul_ref(&x.e23)) + &(self.e123.mul_ref(&x.e13))));
-            let t2 = (((self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23)))
-                + &((self.e3.mul_ref(&x.scalar)) + &(self.e123.mul_ref(&x.e12))));
-            let t3 = (((self.e1.mul_ref(&x.e23)) - &(self.e2.mul_ref(&x.e13)))
-                + &((self.e3.mul_ref(&x.e12)) - &(self.e123.mul_ref(&x.scalar))));
-            Rotor {
-                scalar: (((t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2)))
-                    + &((t2.mul_ref(&self.e3)) - &(t3.mul_ref(&self.e123)))),
-                e12: (((t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1)))
-                    + &((t2.mul_ref(&self.e123)) + &(t3.mul_ref(&self.e3)))),
-                e13: (((t0.mul_ref(&self.e3)) - &(t1.mul_ref(&self.e123)))
-                    - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
-                e23: (((t0.mul_ref(&self.e123)) + &(t1.mul_ref(&self.e3)))
-                    - &((t2.mul_ref(&self.e2)) - &(t3.mul_ref(&self.e1)))),
-            }
+            let s = self.each_ref();
+            let t = ::algebra_core::kernels::bilinear::<
+                T,
+                4usize,
+                _,
+            >(
+                &s,
+                &x.each_ref(),
+                b"\0\0\0\0\0\0\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x03\0\x01\0\x03\0\x02\0\x01\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\0\0\x03\0\x01\0\0\0\0\0\x03\0\0\0\x01\0\x02\0\x01\0\x02\0\x01\0\0\0\x03\0\0\0\x01\0",
+                b"\0\0\x04\0\x08\0\x0C\0\x10\0",
+                &[],
+            );
+            Rotor::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &t.each_ref(),
+                    &s,
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
+                    b"\0\0\x04\0\x08\0\x0C\0\x10\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Apply<Rotor<T>> for Odd<T> {
         type Output = Rotor<T>;
         ///`self x rev(self)` in one fused kernel: every component of the full product is a [`Rotor`] component.
-        #[inline(always)]
+        #[inline]
         fn apply(&self, x: &Rotor<T>) -> Rotor<T> {
-            let t0 = (((self.e1.mul_ref(&x.scalar)) - &(self.e2.mul_ref(&x.e12)))
-                - &((self.e3.mul_ref(&x.e13)) + &(self.e123.mul_ref(&x.e23))));
-            let t1 = (((self.e1.mul_ref(&x.e12)) + &(self.e2.mul_ref(&x.scalar)))
-                - &((self.e3.mul_ref(&x.e23)) - &(self.e123.mul_ref(&x.e13))));
-            let t2 = (((self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23)))
-                + &((self.e3.mul_ref(&x.scalar)) - &(self.e123.mul_ref(&x.e12))));
-            let t3 = (((self.e1.mul_ref(&x.e23)) - &(self.e2.mul_ref(&x.e13)))
-                + &((self.e3.mul_ref(&x.e12)) + &(self.e123.mul_ref(&x.scalar))));
-            Rotor {
-                scalar: (((t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2)))
-                    + &((t2.mul_ref(&self.e3)) + &(t3.mul_ref(&self.e123)))),
-                e12: (((t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1)))
-                    - &((t2.mul_ref(&self.e123)) - &(t3.mul_ref(&self.e3)))),
-                e13: (((t0.mul_ref(&self.e3)) + &(t1.mul_ref(&self.e123)))
-                    - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
-                e23: ::algebra_core::Ring::neg_ref(
-                    &(((t0.mul_ref(&self.e123)) - &(t1.mul_ref(&self.e3)))
-                        + &((t2.mul_ref(&self.e2)) - &(t3.mul_ref(&self.e1)))),
+            let s = self.each_ref();
+            let t = ::algebra_core::kernels::bilinear::<
+                T,
+                4usize,
+                _,
+            >(
+                &s,
+                &x.each_ref(),
+                b"\0\0\0\0\0\0\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x03\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\0\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\x01\0\x02\0\x01\0\0\0\x03\0\0\0\0\0",
+                b"\0\0\x04\0\x08\0\x0C\0\x10\0",
+                &[],
+            );
+            Rotor::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &t.each_ref(),
+                    &s,
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\0\0\x03\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
+                    b"\0\0\x04\0\x08\0\x0C\0\x10\0",
+                    &[],
                 ),
-            }
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Sandwich<Odd<T>> for Odd<T> {
         type Output = Odd<T>;
         ///`rev(self) x self` in one fused kernel: every component of the full product is a [`Odd`] component.
-        #[inline(always)]
+        #[inline]
         fn sandwich(&self, x: &Odd<T>) -> Odd<T> {
-            let t0 = (((self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2)))
-                + &((self.e3.mul_ref(&x.e3)) + &(self.e123.mul_ref(&x.e123))));
-            let t1 = (((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)))
-                + &((self.e3.mul_ref(&x.e123)) - &(self.e123.mul_ref(&x.e3))));
-            let t2 = (((self.e1.mul_ref(&x.e3)) - &(self.e2.mul_ref(&x.e123)))
-                - &((self.e3.mul_ref(&x.e1)) - &(self.e123.mul_ref(&x.e2))));
-            let t3 = (((self.e1.mul_ref(&x.e123)) + &(self.e2.mul_ref(&x.e3)))
-                - &((self.e3.mul_ref(&x.e2)) + &(self.e123.mul_ref(&x.e1))));
-            Odd {
-                e1: (((t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2)))
-                    + &((t2.mul_ref(&self.e3)) - &(t3.mul_ref(&self.e123)))),
-                e2: (((t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1)))
-                    + &((t2.mul_ref(&self.e123)) + &(t3.mul_ref(&self.e3)))),
-                e3: (((t0.mul_ref(&self.e3)) - &(t1.mul_ref(&self.e123)))
-                    - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
-                e123: (((t0.mul_ref(&self.e123)) + &(t1.mul_ref(&self.e3)))
-                    - &((t2.mul_ref(&self.e2)) - &(t3.mul_ref(&self.e1)))),
-            }
+            let s = self.each_ref();
+            let t = ::algebra_core::kernels::bilinear::<
+                T,
+                4usize,
+                _,
+            >(
+                &s,
+                &x.each_ref(),
+                b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\x01\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\x03\0\x01\0\0\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\x01\0",
+                b"\0\0\x04\0\x08\0\x0C\0\x10\0",
+                &[],
+            );
+            Odd::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &t.each_ref(),
+                    &s,
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
+                    b"\0\0\x04\0\x08\0\x0C\0\x10\0",
+                    &[],
+                ),
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Apply<Odd<T>> for Odd<T> {
         type Output = Odd<T>;
         ///`self x rev(self)` in one fused kernel: every component of the full product is a [`Odd`] component.
-        #[inline(always)]
+        #[inline]
         fn apply(&self, x: &Odd<T>) -> Odd<T> {
-            let t0 = (((self.e1.mul_ref(&x.e1)) + &(self.e2.mul_ref(&x.e2)))
-                + &((self.e3.mul_ref(&x.e3)) - &(self.e123.mul_ref(&x.e123))));
-            let t1 = (((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)))
-                + &((self.e3.mul_ref(&x.e123)) + &(self.e123.mul_ref(&x.e3))));
-            let t2 = (((self.e1.mul_ref(&x.e3)) - &(self.e2.mul_ref(&x.e123)))
-                - &((self.e3.mul_ref(&x.e1)) + &(self.e123.mul_ref(&x.e2))));
-            let t3 = (((self.e1.mul_ref(&x.e123)) + &(self.e2.mul_ref(&x.e3)))
-                - &((self.e3.mul_ref(&x.e2)) - &(self.e123.mul_ref(&x.e1))));
-            Odd {
-                e1: (((t0.mul_ref(&self.e1)) + &(t1.mul_ref(&self.e2)))
-                    + &((t2.mul_ref(&self.e3)) + &(t3.mul_ref(&self.e123)))),
-                e2: (((t0.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e1)))
-                    - &((t2.mul_ref(&self.e123)) - &(t3.mul_ref(&self.e3)))),
-                e3: (((t0.mul_ref(&self.e3)) + &(t1.mul_ref(&self.e123)))
-                    - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
-                e123: ::algebra_core::Ring::neg_ref(
-                    &(((t0.mul_ref(&self.e123)) - &(t1.mul_ref(&self.e3)))
-                        + &((t2.mul_ref(&self.e2)) - &(t3.mul_ref(&self.e1)))),
+            let s = self.each_ref();
+            let t = ::algebra_core::kernels::bilinear::<
+                T,
+                4usize,
+                _,
+            >(
+                &s,
+                &x.each_ref(),
+                b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
+                b"\0\0\x04\0\x08\0\x0C\0\x10\0",
+                &[],
+            );
+            Odd::from_array(
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                >(
+                    &t.each_ref(),
+                    &s,
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\0\0\x03\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
+                    b"\0\0\x04\0\x08\0\x0C\0\x10\0",
+                    &[],
                 ),
-            }
+            )
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Sandwich<Multivector<T>>
@@ -9463,54 +8589,26 @@ pub mod g3_vendored {
     for Vector<T> {
         type Matrix = [[T; 3usize]; 3usize];
         fn sandwich_matrix(&self) -> [[T; 3usize]; 3usize] {
-            let q0_0 = self.e1.mul_ref(&self.e1);
-            let q0_1 = self.e1.mul_ref(&self.e2);
-            let q0_2 = self.e1.mul_ref(&self.e3);
-            let q1_1 = self.e2.mul_ref(&self.e2);
-            let q1_2 = self.e2.mul_ref(&self.e3);
-            let q2_2 = self.e3.mul_ref(&self.e3);
-            [
-                [
-                    ::core::clone::Clone::clone(&q0_0) - &q1_1 - &q2_2,
-                    T::from_ratio(2i64, 1i64) * &q0_1,
-                    T::from_ratio(2i64, 1i64) * &q0_2,
-                ],
-                [
-                    T::from_ratio(2i64, 1i64) * &q0_1,
-                    ::core::clone::Clone::clone(&q1_1) - &q0_0 - &q2_2,
-                    T::from_ratio(2i64, 1i64) * &q1_2,
-                ],
-                [
-                    T::from_ratio(2i64, 1i64) * &q0_2,
-                    T::from_ratio(2i64, 1i64) * &q1_2,
-                    ::core::clone::Clone::clone(&q2_2) - &q1_1 - &q0_0,
-                ],
-            ]
+            ::algebra_core::kernels::quadratic::<
+                T,
+                3usize,
+                _,
+            >(
+                &self.each_ref(),
+                b"\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x01\0\x01\0\x01\0\0\0\0\0\x02\0\x02\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\0\0\x02\0\x02\0\x01\0\0\0\0\0\x01\0\x02\0\x01\0\x01\0\0\0\0\0\x01\0\x01\0\x01\0\x01\0\x01\0\0\0\x01\0\x01\0\x02\0\x02\0\x01\0\x01\0\x02\0\x01\0\x02\0\x02\0\x02\0\0\0\0\0\x02\0\x02\0\x02\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\0\0\x01\0\x02\0\x02\0\x01\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0",
+                &[(2i64, 1i64)],
+            )
         }
         fn apply_matrix(&self) -> [[T; 3usize]; 3usize] {
-            let q0_0 = self.e1.mul_ref(&self.e1);
-            let q0_1 = self.e1.mul_ref(&self.e2);
-            let q0_2 = self.e1.mul_ref(&self.e3);
-            let q1_1 = self.e2.mul_ref(&self.e2);
-            let q1_2 = self.e2.mul_ref(&self.e3);
-            let q2_2 = self.e3.mul_ref(&self.e3);
-            [
-                [
-                    ::core::clone::Clone::clone(&q0_0) - &q1_1 - &q2_2,
-                    T::from_ratio(2i64, 1i64) * &q0_1,
-                    T::from_ratio(2i64, 1i64) * &q0_2,
-                ],
-                [
-                    T::from_ratio(2i64, 1i64) * &q0_1,
-                    ::core::clone::Clone::clone(&q1_1) - &q0_0 - &q2_2,
-                    T::from_ratio(2i64, 1i64) * &q1_2,
-                ],
-                [
-                    T::from_ratio(2i64, 1i64) * &q0_2,
-                    T::from_ratio(2i64, 1i64) * &q1_2,
-                    ::core::clone::Clone::clone(&q2_2) - &q1_1 - &q0_0,
-                ],
-            ]
+            ::algebra_core::kernels::quadratic::<
+                T,
+                3usize,
+                _,
+            >(
+                &self.each_ref(),
+                b"\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x01\0\x01\0\x01\0\0\0\0\0\x02\0\x02\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\0\0\x02\0\x02\0\x01\0\0\0\0\0\x01\0\x02\0\x01\0\x01\0\0\0\0\0\x01\0\x01\0\x01\0\x01\0\x01\0\0\0\x01\0\x01\0\x02\0\x02\0\x01\0\x01\0\x02\0\x01\0\x02\0\x02\0\x02\0\0\0\0\0\x02\0\x02\0\x02\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\0\0\x01\0\x02\0\x02\0\x01\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0",
+                &[(2i64, 1i64)],
+            )
         }
         #[inline]
         fn transform(m: &[[T; 3usize]; 3usize], x: &Vector<T>) -> Vector<T> {
@@ -9532,72 +8630,26 @@ pub mod g3_vendored {
     for Vector<T> {
         type Matrix = [[T; 4usize]; 4usize];
         fn sandwich_matrix(&self) -> [[T; 4usize]; 4usize] {
-            let q0_0 = self.e1.mul_ref(&self.e1);
-            let q0_1 = self.e1.mul_ref(&self.e2);
-            let q0_2 = self.e1.mul_ref(&self.e3);
-            let q1_1 = self.e2.mul_ref(&self.e2);
-            let q1_2 = self.e2.mul_ref(&self.e3);
-            let q2_2 = self.e3.mul_ref(&self.e3);
-            [
-                [
-                    ::core::clone::Clone::clone(&q0_0) + &q1_1 + &q2_2,
-                    T::zero(),
-                    T::zero(),
-                    T::zero(),
-                ],
-                [
-                    T::zero(),
-                    ::core::clone::Clone::clone(&q2_2) - &q1_1 - &q0_0,
-                    T::from_ratio(-2i64, 1i64) * &q1_2,
-                    T::from_ratio(2i64, 1i64) * &q0_2,
-                ],
-                [
-                    T::zero(),
-                    T::from_ratio(-2i64, 1i64) * &q1_2,
-                    ::core::clone::Clone::clone(&q1_1) - &q0_0 - &q2_2,
-                    T::from_ratio(-2i64, 1i64) * &q0_1,
-                ],
-                [
-                    T::zero(),
-                    T::from_ratio(2i64, 1i64) * &q0_2,
-                    T::from_ratio(-2i64, 1i64) * &q0_1,
-                    ::core::clone::Clone::clone(&q0_0) - &q1_1 - &q2_2,
-                ],
-            ]
+            ::algebra_core::kernels::quadratic::<
+                T,
+                4usize,
+                _,
+            >(
+                &self.each_ref(),
+                b"\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x01\0\x01\0\0\0\0\0\0\0\x02\0\x02\0\0\0\x01\0\x01\0\0\0\0\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x02\0\x02\0\0\0\x01\0\x02\0\x01\0\x02\0\x02\0\x01\0\x03\0\0\0\x02\0\x03\0\x02\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\0\0\x01\0\x02\0\x02\0\x01\0\x01\0\0\0\x02\0\x02\0\x02\0\x02\0\x01\0\x02\0\x03\0\0\0\x01\0\x02\0\x03\0\x01\0\0\0\x02\0\x03\0\x03\0\x02\0\0\0\x01\0\x02\0\x03\0\x03\0\0\0\0\0\0\0\x03\0\x03\0\x01\0\x01\0\x01\0\x03\0\x03\0\x02\0\x02\0\x01\0",
+                &[(-2i64, 1i64), (2i64, 1i64)],
+            )
         }
         fn apply_matrix(&self) -> [[T; 4usize]; 4usize] {
-            let q0_0 = self.e1.mul_ref(&self.e1);
-            let q0_1 = self.e1.mul_ref(&self.e2);
-            let q0_2 = self.e1.mul_ref(&self.e3);
-            let q1_1 = self.e2.mul_ref(&self.e2);
-            let q1_2 = self.e2.mul_ref(&self.e3);
-            let q2_2 = self.e3.mul_ref(&self.e3);
-            [
-                [
-                    ::core::clone::Clone::clone(&q0_0) + &q1_1 + &q2_2,
-                    T::zero(),
-                    T::zero(),
-                    T::zero(),
-                ],
-                [
-                    T::zero(),
-                    ::core::clone::Clone::clone(&q2_2) - &q1_1 - &q0_0,
-                    T::from_ratio(-2i64, 1i64) * &q1_2,
-                    T::from_ratio(2i64, 1i64) * &q0_2,
-                ],
-                [
-                    T::zero(),
-                    T::from_ratio(-2i64, 1i64) * &q1_2,
-                    ::core::clone::Clone::clone(&q1_1) - &q0_0 - &q2_2,
-                    T::from_ratio(-2i64, 1i64) * &q0_1,
-                ],
-                [
-                    T::zero(),
-                    T::from_ratio(2i64, 1i64) * &q0_2,
-                    T::from_ratio(-2i64, 1i64) * &q0_1,
-                    ::core::clone::Clone::clone(&q0_0) - &q1_1 - &q2_2,
-                ],
-            ]
+            ::algebra_core::kernels::quadratic::<
+                T,
+                4usize,
+                _,
+            >(
+                &self.each_ref(),
+                b"\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x01\0\x01\0\0\0\0\0\0\0\x02\0\x02\0\0\0\x01\0\x01\0\0\0\0\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x02\0\x02\0\0\0\x01\0\x02\0\x01\0\x02\0\x02\0\x01\0\x03\0\0\0\x02\0\x03\0\x02\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\0\0\x01\0\x02\0\x02\0\x01\0\x01\0\0\0\x02\0\x02\0\x02\0\x02\0\x01\0\x02\0\x03\0\0\0\x01\0\x02\0\x03\0\x01\0\0\0\x02\0\x03\0\x03\0\x02\0\0\0\x01\0\x02\0\x03\0\x03\0\0\0\0\0\0\0\x03\0\x03\0\x01\0\x01\0\x01\0\x03\0\x03\0\x02\0\x02\0\x01\0",
+                &[(-2i64, 1i64), (2i64, 1i64)],
+            )
         }
         #[inline]
         fn transform(m: &[[T; 4usize]; 4usize], x: &Rotor<T>) -> Rotor<T> {
@@ -9620,72 +8672,26 @@ pub mod g3_vendored {
     for Vector<T> {
         type Matrix = [[T; 4usize]; 4usize];
         fn sandwich_matrix(&self) -> [[T; 4usize]; 4usize] {
-            let q0_0 = self.e1.mul_ref(&self.e1);
-            let q0_1 = self.e1.mul_ref(&self.e2);
-            let q0_2 = self.e1.mul_ref(&self.e3);
-            let q1_1 = self.e2.mul_ref(&self.e2);
-            let q1_2 = self.e2.mul_ref(&self.e3);
-            let q2_2 = self.e3.mul_ref(&self.e3);
-            [
-                [
-                    ::core::clone::Clone::clone(&q0_0) - &q1_1 - &q2_2,
-                    T::from_ratio(2i64, 1i64) * &q0_1,
-                    T::from_ratio(2i64, 1i64) * &q0_2,
-                    T::zero(),
-                ],
-                [
-                    T::from_ratio(2i64, 1i64) * &q0_1,
-                    ::core::clone::Clone::clone(&q1_1) - &q0_0 - &q2_2,
-                    T::from_ratio(2i64, 1i64) * &q1_2,
-                    T::zero(),
-                ],
-                [
-                    T::from_ratio(2i64, 1i64) * &q0_2,
-                    T::from_ratio(2i64, 1i64) * &q1_2,
-                    ::core::clone::Clone::clone(&q2_2) - &q1_1 - &q0_0,
-                    T::zero(),
-                ],
-                [
-                    T::zero(),
-                    T::zero(),
-                    T::zero(),
-                    ::core::clone::Clone::clone(&q0_0) + &q1_1 + &q2_2,
-                ],
-            ]
+            ::algebra_core::kernels::quadratic::<
+                T,
+                4usize,
+                _,
+            >(
+                &self.each_ref(),
+                b"\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x01\0\x01\0\x01\0\0\0\0\0\x02\0\x02\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\0\0\x02\0\x02\0\x01\0\0\0\0\0\x01\0\x02\0\x01\0\x01\0\0\0\0\0\x01\0\x01\0\x01\0\x01\0\x01\0\0\0\x01\0\x01\0\x02\0\x02\0\x01\0\x01\0\x02\0\x01\0\x02\0\x02\0\x02\0\0\0\0\0\x02\0\x02\0\x02\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\0\0\x01\0\x02\0\x02\0\x01\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\0\0\0\0\x03\0\x03\0\x01\0\x01\0\0\0\x03\0\x03\0\x02\0\x02\0\0\0",
+                &[(2i64, 1i64)],
+            )
         }
         fn apply_matrix(&self) -> [[T; 4usize]; 4usize] {
-            let q0_0 = self.e1.mul_ref(&self.e1);
-            let q0_1 = self.e1.mul_ref(&self.e2);
-            let q0_2 = self.e1.mul_ref(&self.e3);
-            let q1_1 = self.e2.mul_ref(&self.e2);
-            let q1_2 = self.e2.mul_ref(&self.e3);
-            let q2_2 = self.e3.mul_ref(&self.e3);
-            [
-                [
-                    ::core::clone::Clone::clone(&q0_0) - &q1_1 - &q2_2,
-                    T::from_ratio(2i64, 1i64) * &q0_1,
-                    T::from_ratio(2i64, 1i64) * &q0_2,
-                    T::zero(),
-                ],
-                [
-                    T::from_ratio(2i64, 1i64) * &q0_1,
-                    ::core::clone::Clone::clone(&q1_1) - &q0_0 - &q2_2,
-                    T::from_ratio(2i64, 1i64) * &q1_2,
-                    T::zero(),
-                ],
-                [
-                    T::from_ratio(2i64, 1i64) * &q0_2,
-                    T::from_ratio(2i64, 1i64) * &q1_2,
-                    ::core::clone::Clone::clone(&q2_2) - &q1_1 - &q0_0,
-                    T::zero(),
-                ],
-                [
-                    T::zero(),
-                    T::zero(),
-                    T::zero(),
-                    ::core::clone::Clone::clone(&q0_0) + &q1_1 + &q2_2,
-                ],
-            ]
+            ::algebra_core::kernels::quadratic::<
+                T,
+                4usize,
+                _,
+            >(
+                &self.each_ref(),
+                b"\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x01\0\x01\0\x01\0\0\0\0\0\x02\0\x02\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\0\0\x02\0\x02\0\x01\0\0\0\0\0\x01\0\x02\0\x01\0\x01\0\0\0\0\0\x01\0\x01\0\x01\0\x01\0\x01\0\0\0\x01\0\x01\0\x02\0\x02\0\x01\0\x01\0\x02\0\x01\0\x02\0\x02\0\x02\0\0\0\0\0\x02\0\x02\0\x02\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\0\0\x01\0\x02\0\x02\0\x01\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\0\0\0\0\x03\0\x03\0\x01\0\x01\0\0\0\x03\0\x03\0\x02\0\x02\0\0\0",
+                &[(2i64, 1i64)],
+            )
         }
         #[inline]
         fn transform(m: &[[T; 4usize]; 4usize], x: &Odd<T>) -> Odd<T> {
@@ -9898,92 +8904,26 @@ pub mod g3_vendored {
     for Rotor<T> {
         type Matrix = [[T; 4usize]; 4usize];
         fn sandwich_matrix(&self) -> [[T; 4usize]; 4usize] {
-            let q0_0 = self.scalar.mul_ref(&self.scalar);
-            let q0_1 = self.scalar.mul_ref(&self.e12);
-            let q0_2 = self.scalar.mul_ref(&self.e13);
-            let q0_3 = self.scalar.mul_ref(&self.e23);
-            let q1_1 = self.e12.mul_ref(&self.e12);
-            let q1_2 = self.e12.mul_ref(&self.e13);
-            let q1_3 = self.e12.mul_ref(&self.e23);
-            let q2_2 = self.e13.mul_ref(&self.e13);
-            let q2_3 = self.e13.mul_ref(&self.e23);
-            let q3_3 = self.e23.mul_ref(&self.e23);
-            [
-                [
-                    ::core::clone::Clone::clone(&q0_0) - &q1_1 - &q2_2 + &q3_3,
-                    T::from_ratio(-2i64, 1i64) * &q0_1
-                        - T::from_ratio(2i64, 1i64) * &q2_3,
-                    T::from_ratio(2i64, 1i64) * &q1_3
-                        - T::from_ratio(2i64, 1i64) * &q0_2,
-                    T::zero(),
-                ],
-                [
-                    T::from_ratio(2i64, 1i64) * &q0_1
-                        - T::from_ratio(2i64, 1i64) * &q2_3,
-                    ::core::clone::Clone::clone(&q0_0) - &q1_1 + &q2_2 - &q3_3,
-                    T::from_ratio(-2i64, 1i64) * &q0_3
-                        - T::from_ratio(2i64, 1i64) * &q1_2,
-                    T::zero(),
-                ],
-                [
-                    T::from_ratio(2i64, 1i64) * &q0_2
-                        + T::from_ratio(2i64, 1i64) * &q1_3,
-                    T::from_ratio(2i64, 1i64) * &q0_3
-                        - T::from_ratio(2i64, 1i64) * &q1_2,
-                    ::core::clone::Clone::clone(&q0_0) + &q1_1 - &q2_2 - &q3_3,
-                    T::zero(),
-                ],
-                [
-                    T::zero(),
-                    T::zero(),
-                    T::zero(),
-                    ::core::clone::Clone::clone(&q0_0) + &q1_1 + &q2_2 + &q3_3,
-                ],
-            ]
+            ::algebra_core::kernels::quadratic::<
+                T,
+                4usize,
+                _,
+            >(
+                &self.each_ref(),
+                b"\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x01\0\x01\0\x01\0\0\0\0\0\x02\0\x02\0\x01\0\0\0\0\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\x02\0\0\0\x01\0\x02\0\x03\0\x02\0\0\0\x02\0\0\0\x02\0\x02\0\0\0\x02\0\x01\0\x03\0\x03\0\x01\0\0\0\0\0\x01\0\x03\0\x01\0\0\0\x02\0\x03\0\x02\0\x01\0\x01\0\0\0\0\0\0\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x02\0\x02\0\0\0\x01\0\x01\0\x03\0\x03\0\x01\0\x01\0\x02\0\0\0\x03\0\x02\0\x01\0\x02\0\x01\0\x02\0\x02\0\x02\0\0\0\0\0\x02\0\x03\0\x02\0\0\0\x01\0\x03\0\x03\0\x02\0\x01\0\0\0\x03\0\x03\0\x02\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\0\0\0\0\x02\0\x02\0\x01\0\x01\0\0\0\x02\0\x02\0\x02\0\x02\0\x01\0\x02\0\x02\0\x03\0\x03\0\x01\0\x03\0\x03\0\0\0\0\0\0\0\x03\0\x03\0\x01\0\x01\0\0\0\x03\0\x03\0\x02\0\x02\0\0\0\x03\0\x03\0\x03\0\x03\0\0\0",
+                &[(-2i64, 1i64), (2i64, 1i64)],
+            )
         }
         fn apply_matrix(&self) -> [[T; 4usize]; 4usize] {
-            let q0_0 = self.scalar.mul_ref(&self.scalar);
-            let q0_1 = self.scalar.mul_ref(&self.e12);
-            let q0_2 = self.scalar.mul_ref(&self.e13);
-            let q0_3 = self.scalar.mul_ref(&self.e23);
-            let q1_1 = self.e12.mul_ref(&self.e12);
-            let q1_2 = self.e12.mul_ref(&self.e13);
-            let q1_3 = self.e12.mul_ref(&self.e23);
-            let q2_2 = self.e13.mul_ref(&self.e13);
-            let q2_3 = self.e13.mul_ref(&self.e23);
-            let q3_3 = self.e23.mul_ref(&self.e23);
-            [
-                [
-                    ::core::clone::Clone::clone(&q0_0) - &q1_1 - &q2_2 + &q3_3,
-                    T::from_ratio(2i64, 1i64) * &q0_1
-                        - T::from_ratio(2i64, 1i64) * &q2_3,
-                    T::from_ratio(2i64, 1i64) * &q0_2
-                        + T::from_ratio(2i64, 1i64) * &q1_3,
-                    T::zero(),
-                ],
-                [
-                    T::from_ratio(-2i64, 1i64) * &q0_1
-                        - T::from_ratio(2i64, 1i64) * &q2_3,
-                    ::core::clone::Clone::clone(&q0_0) - &q1_1 + &q2_2 - &q3_3,
-                    T::from_ratio(2i64, 1i64) * &q0_3
-                        - T::from_ratio(2i64, 1i64) * &q1_2,
-                    T::zero(),
-                ],
-                [
-                    T::from_ratio(2i64, 1i64) * &q1_3
-                        - T::from_ratio(2i64, 1i64) * &q0_2,
-                    T::from_ratio(-2i64, 1i64) * &q0_3
-                        - T::from_ratio(2i64, 1i64) * &q1_2,
-                    ::core::clone::Clone::clone(&q0_0) + &q1_1 - &q2_2 - &q3_3,
-                    T::zero(),
-                ],
-                [
-                    T::zero(),
-                    T::zero(),
-                    T::zero(),
-                    ::core::clone::Clone::clone(&q0_0) + &q1_1 + &q2_2 + &q3_3,
-                ],
-            ]
+            ::algebra_core::kernels::quadratic::<
+                T,
+                4usize,
+                _,
+            >(
+                &self.each_ref(),
+                b"\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x01\0\x01\0\x01\0\0\0\0\0\x02\0\x02\0\x01\0\0\0\0\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\x02\0\0\0\x01\0\x02\0\x03\0\x03\0\0\0\x02\0\0\0\x02\0\x02\0\0\0\x02\0\x01\0\x03\0\x02\0\x01\0\0\0\0\0\x01\0\x03\0\x01\0\0\0\x02\0\x03\0\x03\0\x01\0\x01\0\0\0\0\0\0\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x02\0\x02\0\0\0\x01\0\x01\0\x03\0\x03\0\x01\0\x01\0\x02\0\0\0\x03\0\x02\0\x01\0\x02\0\x01\0\x02\0\x03\0\x02\0\0\0\0\0\x02\0\x03\0\x02\0\0\0\x01\0\x03\0\x02\0\x02\0\x01\0\0\0\x03\0\x03\0\x02\0\x01\0\x01\0\x02\0\x03\0\x02\0\x02\0\0\0\0\0\0\0\x02\0\x02\0\x01\0\x01\0\0\0\x02\0\x02\0\x02\0\x02\0\x01\0\x02\0\x02\0\x03\0\x03\0\x01\0\x03\0\x03\0\0\0\0\0\0\0\x03\0\x03\0\x01\0\x01\0\0\0\x03\0\x03\0\x02\0\x02\0\0\0\x03\0\x03\0\x03\0\x03\0\0\0",
+                &[(2i64, 1i64), (-2i64, 1i64)],
+            )
         }
         #[inline]
         fn transform(m: &[[T; 4usize]; 4usize], x: &Odd<T>) -> Odd<T> {
@@ -10006,70 +8946,26 @@ pub mod g3_vendored {
     for Odd<T> {
         type Matrix = [[T; 3usize]; 3usize];
         fn sandwich_matrix(&self) -> [[T; 3usize]; 3usize] {
-            let q0_0 = self.e1.mul_ref(&self.e1);
-            let q0_1 = self.e1.mul_ref(&self.e2);
-            let q0_2 = self.e1.mul_ref(&self.e3);
-            let q0_3 = self.e1.mul_ref(&self.e123);
-            let q1_1 = self.e2.mul_ref(&self.e2);
-            let q1_2 = self.e2.mul_ref(&self.e3);
-            let q1_3 = self.e2.mul_ref(&self.e123);
-            let q2_2 = self.e3.mul_ref(&self.e3);
-            let q2_3 = self.e3.mul_ref(&self.e123);
-            let q3_3 = self.e123.mul_ref(&self.e123);
-            [
-                [
-                    ::core::clone::Clone::clone(&q0_0) - &q1_1 - &q2_2 + &q3_3,
-                    T::from_ratio(2i64, 1i64) * &q0_1
-                        + T::from_ratio(2i64, 1i64) * &q2_3,
-                    T::from_ratio(2i64, 1i64) * &q0_2 - T::from_ratio(2i64, 1i64) * &q1_3,
-                ],
-                [
-                    T::from_ratio(2i64, 1i64) * &q0_1
-                        - T::from_ratio(2i64, 1i64) * &q2_3,
-                    ::core::clone::Clone::clone(&q1_1) - &q0_0 - &q2_2 + &q3_3,
-                    T::from_ratio(2i64, 1i64) * &q0_3 + T::from_ratio(2i64, 1i64) * &q1_2,
-                ],
-                [
-                    T::from_ratio(2i64, 1i64) * &q0_2
-                        + T::from_ratio(2i64, 1i64) * &q1_3,
-                    T::from_ratio(2i64, 1i64) * &q1_2
-                        - T::from_ratio(2i64, 1i64) * &q0_3,
-                    ::core::clone::Clone::clone(&q2_2) - &q1_1 - &q0_0 + &q3_3,
-                ],
-            ]
+            ::algebra_core::kernels::quadratic::<
+                T,
+                3usize,
+                _,
+            >(
+                &self.each_ref(),
+                b"\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x01\0\x01\0\x01\0\0\0\0\0\x02\0\x02\0\x01\0\0\0\0\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\x02\0\0\0\x01\0\x02\0\x03\0\x02\0\0\0\x02\0\0\0\x02\0\x02\0\0\0\x02\0\x01\0\x03\0\x03\0\x01\0\0\0\0\0\x01\0\x02\0\x01\0\0\0\x02\0\x03\0\x03\0\x01\0\x01\0\0\0\0\0\x01\0\x01\0\x01\0\x01\0\x01\0\0\0\x01\0\x01\0\x02\0\x02\0\x01\0\x01\0\x01\0\x03\0\x03\0\0\0\x01\0\x02\0\0\0\x03\0\x02\0\x01\0\x02\0\x01\0\x02\0\x02\0\x02\0\0\0\0\0\x02\0\x02\0\x02\0\0\0\x01\0\x03\0\x02\0\x02\0\x01\0\0\0\x03\0\x03\0\x02\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\0\0\x01\0\x02\0\x02\0\x01\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\x02\0\x02\0\x03\0\x03\0\0\0",
+                &[(2i64, 1i64), (-2i64, 1i64)],
+            )
         }
         fn apply_matrix(&self) -> [[T; 3usize]; 3usize] {
-            let q0_0 = self.e1.mul_ref(&self.e1);
-            let q0_1 = self.e1.mul_ref(&self.e2);
-            let q0_2 = self.e1.mul_ref(&self.e3);
-            let q0_3 = self.e1.mul_ref(&self.e123);
-            let q1_1 = self.e2.mul_ref(&self.e2);
-            let q1_2 = self.e2.mul_ref(&self.e3);
-            let q1_3 = self.e2.mul_ref(&self.e123);
-            let q2_2 = self.e3.mul_ref(&self.e3);
-            let q2_3 = self.e3.mul_ref(&self.e123);
-            let q3_3 = self.e123.mul_ref(&self.e123);
-            [
-                [
-                    ::core::clone::Clone::clone(&q0_0) - &q1_1 - &q2_2 + &q3_3,
-                    T::from_ratio(2i64, 1i64) * &q0_1
-                        - T::from_ratio(2i64, 1i64) * &q2_3,
-                    T::from_ratio(2i64, 1i64) * &q0_2 + T::from_ratio(2i64, 1i64) * &q1_3,
-                ],
-                [
-                    T::from_ratio(2i64, 1i64) * &q0_1
-                        + T::from_ratio(2i64, 1i64) * &q2_3,
-                    ::core::clone::Clone::clone(&q1_1) - &q0_0 - &q2_2 + &q3_3,
-                    T::from_ratio(2i64, 1i64) * &q1_2 - T::from_ratio(2i64, 1i64) * &q0_3,
-                ],
-                [
-                    T::from_ratio(2i64, 1i64) * &q0_2
-                        - T::from_ratio(2i64, 1i64) * &q1_3,
-                    T::from_ratio(2i64, 1i64) * &q0_3
-                        + T::from_ratio(2i64, 1i64) * &q1_2,
-                    ::core::clone::Clone::clone(&q2_2) - &q1_1 - &q0_0 + &q3_3,
-                ],
-            ]
+            ::algebra_core::kernels::quadratic::<
+                T,
+                3usize,
+                _,
+            >(
+                &self.each_ref(),
+                b"\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x01\0\x01\0\x01\0\0\0\0\0\x02\0\x02\0\x01\0\0\0\0\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\x02\0\0\0\x01\0\x02\0\x03\0\x03\0\0\0\x02\0\0\0\x02\0\x02\0\0\0\x02\0\x01\0\x03\0\x02\0\x01\0\0\0\0\0\x01\0\x02\0\x01\0\0\0\x02\0\x03\0\x02\0\x01\0\x01\0\0\0\0\0\x01\0\x01\0\x01\0\x01\0\x01\0\0\0\x01\0\x01\0\x02\0\x02\0\x01\0\x01\0\x01\0\x03\0\x03\0\0\0\x01\0\x02\0\0\0\x03\0\x03\0\x01\0\x02\0\x01\0\x02\0\x02\0\x02\0\0\0\0\0\x02\0\x02\0\x02\0\0\0\x01\0\x03\0\x03\0\x02\0\x01\0\0\0\x03\0\x02\0\x02\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\0\0\x01\0\x02\0\x02\0\x01\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\x02\0\x02\0\x03\0\x03\0\0\0",
+                &[(2i64, 1i64), (-2i64, 1i64)],
+            )
         }
         #[inline]
         fn transform(m: &[[T; 3usize]; 3usize], x: &Vector<T>) -> Vector<T> {
@@ -10091,89 +8987,26 @@ pub mod g3_vendored {
     for Odd<T> {
         type Matrix = [[T; 4usize]; 4usize];
         fn sandwich_matrix(&self) -> [[T; 4usize]; 4usize] {
-            let q0_0 = self.e1.mul_ref(&self.e1);
-            let q0_1 = self.e1.mul_ref(&self.e2);
-            let q0_2 = self.e1.mul_ref(&self.e3);
-            let q0_3 = self.e1.mul_ref(&self.e123);
-            let q1_1 = self.e2.mul_ref(&self.e2);
-            let q1_2 = self.e2.mul_ref(&self.e3);
-            let q1_3 = self.e2.mul_ref(&self.e123);
-            let q2_2 = self.e3.mul_ref(&self.e3);
-            let q2_3 = self.e3.mul_ref(&self.e123);
-            let q3_3 = self.e123.mul_ref(&self.e123);
-            [
-                [
-                    ::core::clone::Clone::clone(&q0_0) + &q1_1 + &q2_2 + &q3_3,
-                    T::zero(),
-                    T::zero(),
-                    T::zero(),
-                ],
-                [
-                    T::zero(),
-                    ::core::clone::Clone::clone(&q2_2) - &q1_1 - &q0_0 + &q3_3,
-                    T::from_ratio(2i64, 1i64) * &q0_3
-                        - T::from_ratio(2i64, 1i64) * &q1_2,
-                    T::from_ratio(2i64, 1i64) * &q0_2 + T::from_ratio(2i64, 1i64) * &q1_3,
-                ],
-                [
-                    T::zero(),
-                    T::from_ratio(-2i64, 1i64) * &q0_3
-                        - T::from_ratio(2i64, 1i64) * &q1_2,
-                    ::core::clone::Clone::clone(&q1_1) - &q0_0 - &q2_2 + &q3_3,
-                    T::from_ratio(2i64, 1i64) * &q2_3 - T::from_ratio(2i64, 1i64) * &q0_1,
-                ],
-                [
-                    T::zero(),
-                    T::from_ratio(2i64, 1i64) * &q0_2
-                        - T::from_ratio(2i64, 1i64) * &q1_3,
-                    T::from_ratio(-2i64, 1i64) * &q0_1
-                        - T::from_ratio(2i64, 1i64) * &q2_3,
-                    ::core::clone::Clone::clone(&q0_0) - &q1_1 - &q2_2 + &q3_3,
-                ],
-            ]
+            ::algebra_core::kernels::quadratic::<
+                T,
+                4usize,
+                _,
+            >(
+                &self.each_ref(),
+                b"\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x01\0\x01\0\0\0\0\0\0\0\x02\0\x02\0\0\0\0\0\0\0\x03\0\x03\0\0\0\x01\0\x01\0\0\0\0\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x02\0\x02\0\0\0\x01\0\x01\0\x03\0\x03\0\0\0\x01\0\x02\0\0\0\x03\0\x02\0\x01\0\x02\0\x01\0\x02\0\x03\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\x03\0\x02\0\x02\0\x01\0\0\0\x03\0\x03\0\x02\0\x01\0\x01\0\x02\0\x03\0\x02\0\x02\0\0\0\0\0\x01\0\x02\0\x02\0\x01\0\x01\0\0\0\x02\0\x02\0\x02\0\x02\0\x01\0\x02\0\x02\0\x03\0\x03\0\0\0\x02\0\x03\0\0\0\x01\0\x03\0\x02\0\x03\0\x02\0\x03\0\x02\0\x03\0\x01\0\0\0\x02\0\x02\0\x03\0\x01\0\x01\0\x03\0\x03\0\x03\0\x02\0\0\0\x01\0\x03\0\x03\0\x02\0\x02\0\x03\0\x03\0\x03\0\x03\0\0\0\0\0\0\0\x03\0\x03\0\x01\0\x01\0\x01\0\x03\0\x03\0\x02\0\x02\0\x01\0\x03\0\x03\0\x03\0\x03\0\0\0",
+                &[(2i64, 1i64), (-2i64, 1i64)],
+            )
         }
         fn apply_matrix(&self) -> [[T; 4usize]; 4usize] {
-            let q0_0 = self.e1.mul_ref(&self.e1);
-            let q0_1 = self.e1.mul_ref(&self.e2);
-            let q0_2 = self.e1.mul_ref(&self.e3);
-            let q0_3 = self.e1.mul_ref(&self.e123);
-            let q1_1 = self.e2.mul_ref(&self.e2);
-            let q1_2 = self.e2.mul_ref(&self.e3);
-            let q1_3 = self.e2.mul_ref(&self.e123);
-            let q2_2 = self.e3.mul_ref(&self.e3);
-            let q2_3 = self.e3.mul_ref(&self.e123);
-            let q3_3 = self.e123.mul_ref(&self.e123);
-            [
-                [
-                    ::core::clone::Clone::clone(&q0_0) + &q1_1 + &q2_2 + &q3_3,
-                    T::zero(),
-                    T::zero(),
-                    T::zero(),
-                ],
-                [
-                    T::zero(),
-                    ::core::clone::Clone::clone(&q2_2) - &q1_1 - &q0_0 + &q3_3,
-                    T::from_ratio(-2i64, 1i64) * &q0_3
-                        - T::from_ratio(2i64, 1i64) * &q1_2,
-                    T::from_ratio(2i64, 1i64) * &q0_2 - T::from_ratio(2i64, 1i64) * &q1_3,
-                ],
-                [
-                    T::zero(),
-                    T::from_ratio(2i64, 1i64) * &q0_3
-                        - T::from_ratio(2i64, 1i64) * &q1_2,
-                    ::core::clone::Clone::clone(&q1_1) - &q0_0 - &q2_2 + &q3_3,
-                    T::from_ratio(-2i64, 1i64) * &q0_1
-                        - T::from_ratio(2i64, 1i64) * &q2_3,
-                ],
-                [
-                    T::zero(),
-                    T::from_ratio(2i64, 1i64) * &q0_2
-                        + T::from_ratio(2i64, 1i64) * &q1_3,
-                    T::from_ratio(2i64, 1i64) * &q2_3
-                        - T::from_ratio(2i64, 1i64) * &q0_1,
-                    ::core::clone::Clone::clone(&q0_0) - &q1_1 - &q2_2 + &q3_3,
-                ],
-            ]
+            ::algebra_core::kernels::quadratic::<
+                T,
+                4usize,
+                _,
+            >(
+                &self.each_ref(),
+                b"\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x01\0\x01\0\0\0\0\0\0\0\x02\0\x02\0\0\0\0\0\0\0\x03\0\x03\0\0\0\x01\0\x01\0\0\0\0\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x02\0\x02\0\0\0\x01\0\x01\0\x03\0\x03\0\0\0\x01\0\x02\0\0\0\x03\0\x02\0\x01\0\x02\0\x01\0\x02\0\x02\0\x01\0\x03\0\0\0\x02\0\x03\0\x01\0\x03\0\x01\0\x03\0\x02\0\x02\0\x01\0\0\0\x03\0\x03\0\x02\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\0\0\x01\0\x02\0\x02\0\x01\0\x01\0\0\0\x02\0\x02\0\x02\0\x02\0\x01\0\x02\0\x02\0\x03\0\x03\0\0\0\x02\0\x03\0\0\0\x01\0\x02\0\x02\0\x03\0\x02\0\x03\0\x02\0\x03\0\x01\0\0\0\x02\0\x03\0\x03\0\x01\0\x01\0\x03\0\x03\0\x03\0\x02\0\0\0\x01\0\x02\0\x03\0\x02\0\x02\0\x03\0\x03\0\x03\0\x03\0\0\0\0\0\0\0\x03\0\x03\0\x01\0\x01\0\x01\0\x03\0\x03\0\x02\0\x02\0\x01\0\x03\0\x03\0\x03\0\x03\0\0\0",
+                &[(-2i64, 1i64), (2i64, 1i64)],
+            )
         }
         #[inline]
         fn transform(m: &[[T; 4usize]; 4usize], x: &Rotor<T>) -> Rotor<T> {
@@ -10195,92 +9028,26 @@ pub mod g3_vendored {
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::ActionMatrix<Odd<T>> for Odd<T> {
         type Matrix = [[T; 4usize]; 4usize];
         fn sandwich_matrix(&self) -> [[T; 4usize]; 4usize] {
-            let q0_0 = self.e1.mul_ref(&self.e1);
-            let q0_1 = self.e1.mul_ref(&self.e2);
-            let q0_2 = self.e1.mul_ref(&self.e3);
-            let q0_3 = self.e1.mul_ref(&self.e123);
-            let q1_1 = self.e2.mul_ref(&self.e2);
-            let q1_2 = self.e2.mul_ref(&self.e3);
-            let q1_3 = self.e2.mul_ref(&self.e123);
-            let q2_2 = self.e3.mul_ref(&self.e3);
-            let q2_3 = self.e3.mul_ref(&self.e123);
-            let q3_3 = self.e123.mul_ref(&self.e123);
-            [
-                [
-                    ::core::clone::Clone::clone(&q0_0) - &q1_1 - &q2_2 + &q3_3,
-                    T::from_ratio(2i64, 1i64) * &q0_1
-                        + T::from_ratio(2i64, 1i64) * &q2_3,
-                    T::from_ratio(2i64, 1i64) * &q0_2
-                        - T::from_ratio(2i64, 1i64) * &q1_3,
-                    T::zero(),
-                ],
-                [
-                    T::from_ratio(2i64, 1i64) * &q0_1
-                        - T::from_ratio(2i64, 1i64) * &q2_3,
-                    ::core::clone::Clone::clone(&q1_1) - &q0_0 - &q2_2 + &q3_3,
-                    T::from_ratio(2i64, 1i64) * &q0_3
-                        + T::from_ratio(2i64, 1i64) * &q1_2,
-                    T::zero(),
-                ],
-                [
-                    T::from_ratio(2i64, 1i64) * &q0_2
-                        + T::from_ratio(2i64, 1i64) * &q1_3,
-                    T::from_ratio(2i64, 1i64) * &q1_2
-                        - T::from_ratio(2i64, 1i64) * &q0_3,
-                    ::core::clone::Clone::clone(&q2_2) - &q1_1 - &q0_0 + &q3_3,
-                    T::zero(),
-                ],
-                [
-                    T::zero(),
-                    T::zero(),
-                    T::zero(),
-                    ::core::clone::Clone::clone(&q0_0) + &q1_1 + &q2_2 + &q3_3,
-                ],
-            ]
+            ::algebra_core::kernels::quadratic::<
+                T,
+                4usize,
+                _,
+            >(
+                &self.each_ref(),
+                b"\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x01\0\x01\0\x01\0\0\0\0\0\x02\0\x02\0\x01\0\0\0\0\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\x02\0\0\0\x01\0\x02\0\x03\0\x02\0\0\0\x02\0\0\0\x02\0\x02\0\0\0\x02\0\x01\0\x03\0\x03\0\x01\0\0\0\0\0\x01\0\x02\0\x01\0\0\0\x02\0\x03\0\x03\0\x01\0\x01\0\0\0\0\0\x01\0\x01\0\x01\0\x01\0\x01\0\0\0\x01\0\x01\0\x02\0\x02\0\x01\0\x01\0\x01\0\x03\0\x03\0\0\0\x01\0\x02\0\0\0\x03\0\x02\0\x01\0\x02\0\x01\0\x02\0\x02\0\x02\0\0\0\0\0\x02\0\x02\0\x02\0\0\0\x01\0\x03\0\x02\0\x02\0\x01\0\0\0\x03\0\x03\0\x02\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\0\0\x01\0\x02\0\x02\0\x01\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\x02\0\x02\0\x03\0\x03\0\0\0\x03\0\x03\0\0\0\0\0\0\0\x03\0\x03\0\x01\0\x01\0\0\0\x03\0\x03\0\x02\0\x02\0\0\0\x03\0\x03\0\x03\0\x03\0\0\0",
+                &[(2i64, 1i64), (-2i64, 1i64)],
+            )
         }
         fn apply_matrix(&self) -> [[T; 4usize]; 4usize] {
-            let q0_0 = self.e1.mul_ref(&self.e1);
-            let q0_1 = self.e1.mul_ref(&self.e2);
-            let q0_2 = self.e1.mul_ref(&self.e3);
-            let q0_3 = self.e1.mul_ref(&self.e123);
-            let q1_1 = self.e2.mul_ref(&self.e2);
-            let q1_2 = self.e2.mul_ref(&self.e3);
-            let q1_3 = self.e2.mul_ref(&self.e123);
-            let q2_2 = self.e3.mul_ref(&self.e3);
-            let q2_3 = self.e3.mul_ref(&self.e123);
-            let q3_3 = self.e123.mul_ref(&self.e123);
-            [
-                [
-                    ::core::clone::Clone::clone(&q0_0) - &q1_1 - &q2_2 + &q3_3,
-                    T::from_ratio(2i64, 1i64) * &q0_1
-                        - T::from_ratio(2i64, 1i64) * &q2_3,
-                    T::from_ratio(2i64, 1i64) * &q0_2
-                        + T::from_ratio(2i64, 1i64) * &q1_3,
-                    T::zero(),
-                ],
-                [
-                    T::from_ratio(2i64, 1i64) * &q0_1
-                        + T::from_ratio(2i64, 1i64) * &q2_3,
-                    ::core::clone::Clone::clone(&q1_1) - &q0_0 - &q2_2 + &q3_3,
-                    T::from_ratio(2i64, 1i64) * &q1_2
-                        - T::from_ratio(2i64, 1i64) * &q0_3,
-                    T::zero(),
-                ],
-                [
-                    T::from_ratio(2i64, 1i64) * &q0_2
-                        - T::from_ratio(2i64, 1i64) * &q1_3,
-                    T::from_ratio(2i64, 1i64) * &q0_3
-                        + T::from_ratio(2i64, 1i64) * &q1_2,
-                    ::core::clone::Clone::clone(&q2_2) - &q1_1 - &q0_0 + &q3_3,
-                    T::zero(),
-                ],
-                [
-                    T::zero(),
-                    T::zero(),
-                    T::zero(),
-                    ::core::clone::Clone::clone(&q0_0) + &q1_1 + &q2_2 + &q3_3,
-                ],
-            ]
+            ::algebra_core::kernels::quadratic::<
+                T,
+                4usize,
+                _,
+            >(
+                &self.each_ref(),
+                b"\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x01\0\x01\0\x01\0\0\0\0\0\x02\0\x02\0\x01\0\0\0\0\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\x02\0\0\0\x01\0\x02\0\x03\0\x03\0\0\0\x02\0\0\0\x02\0\x02\0\0\0\x02\0\x01\0\x03\0\x02\0\x01\0\0\0\0\0\x01\0\x02\0\x01\0\0\0\x02\0\x03\0\x02\0\x01\0\x01\0\0\0\0\0\x01\0\x01\0\x01\0\x01\0\x01\0\0\0\x01\0\x01\0\x02\0\x02\0\x01\0\x01\0\x01\0\x03\0\x03\0\0\0\x01\0\x02\0\0\0\x03\0\x03\0\x01\0\x02\0\x01\0\x02\0\x02\0\x02\0\0\0\0\0\x02\0\x02\0\x02\0\0\0\x01\0\x03\0\x03\0\x02\0\x01\0\0\0\x03\0\x02\0\x02\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\0\0\x01\0\x02\0\x02\0\x01\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\x02\0\x02\0\x03\0\x03\0\0\0\x03\0\x03\0\0\0\0\0\0\0\x03\0\x03\0\x01\0\x01\0\0\0\x03\0\x03\0\x02\0\x02\0\0\0\x03\0\x03\0\x03\0\x03\0\0\0",
+                &[(2i64, 1i64), (-2i64, 1i64)],
+            )
         }
         #[inline]
         fn transform(m: &[[T; 4usize]; 4usize], x: &Odd<T>) -> Odd<T> {
@@ -10416,56 +9183,14 @@ pub mod g3_vendored {
         /// Every component of the full product is a `Odd` component: this is the whole action.
         #[inline]
         fn sandwich_unit(&self, x: &Odd<T>) -> Odd<T> {
-            let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
-            let t1 = ((self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1)));
-            let t2 = ((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2)));
-            Odd {
-                e1: {
-                    let y = ((t0.mul_ref(&self.e2)) + &(t1.mul_ref(&self.e3)));
-                    x.e1.add_ref(&y) + &y
-                },
-                e2: {
-                    let y = ::algebra_core::Ring::neg_ref(
-                        &((t0.mul_ref(&self.e1)) - &(t2.mul_ref(&self.e3))),
-                    );
-                    x.e2.add_ref(&y) + &y
-                },
-                e3: {
-                    let y = ::algebra_core::Ring::neg_ref(
-                        &((t1.mul_ref(&self.e1)) + &(t2.mul_ref(&self.e2))),
-                    );
-                    x.e3.add_ref(&y) + &y
-                },
-                e123: ::core::clone::Clone::clone(&x.e123),
-            }
+            ::algebra_core::ops::Sandwich::sandwich(self, x)
         }
         /// `self x rev(self)` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
         /// The commutator form `x + (L x - x L) R`: 12 multiplications.
         /// Every component of the full product is a `Odd` component: this is the whole action.
         #[inline]
         fn apply_unit(&self, x: &Odd<T>) -> Odd<T> {
-            let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
-            let t1 = ((self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1)));
-            let t2 = ((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2)));
-            Odd {
-                e1: {
-                    let y = ((t0.mul_ref(&self.e2)) + &(t1.mul_ref(&self.e3)));
-                    x.e1.add_ref(&y) + &y
-                },
-                e2: {
-                    let y = ::algebra_core::Ring::neg_ref(
-                        &((t0.mul_ref(&self.e1)) - &(t2.mul_ref(&self.e3))),
-                    );
-                    x.e2.add_ref(&y) + &y
-                },
-                e3: {
-                    let y = ::algebra_core::Ring::neg_ref(
-                        &((t1.mul_ref(&self.e1)) + &(t2.mul_ref(&self.e2))),
-                    );
-                    x.e3.add_ref(&y) + &y
-                },
-                e123: ::core::clone::Clone::clone(&x.e123),
-            }
+            ::algebra_core::ops::Apply::apply(self, x)
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::UnitAction<Vector<T>>
@@ -10606,64 +9331,14 @@ pub mod g3_vendored {
         /// Every component of the full product is a `Odd` component: this is the whole action.
         #[inline]
         fn sandwich_unit(&self, x: &Odd<T>) -> Odd<T> {
-            let t0 = ::algebra_core::Ring::neg_ref(
-                &((self.e12.mul_ref(&x.e2)) + &(self.e13.mul_ref(&x.e3))),
-            );
-            let t1 = ((self.e12.mul_ref(&x.e1)) - &(self.e23.mul_ref(&x.e3)));
-            let t2 = ((self.e13.mul_ref(&x.e1)) + &(self.e23.mul_ref(&x.e2)));
-            Odd {
-                e1: {
-                    let y = ((t0.mul_ref(&self.scalar))
-                        - &((t1.mul_ref(&self.e12)) + &(t2.mul_ref(&self.e13))));
-                    x.e1.add_ref(&y) + &y
-                },
-                e2: {
-                    let y = ((t0.mul_ref(&self.e12))
-                        + &((t1.mul_ref(&self.scalar)) - &(t2.mul_ref(&self.e23))));
-                    x.e2.add_ref(&y) + &y
-                },
-                e3: {
-                    let y = ((t0.mul_ref(&self.e13))
-                        + &((t1.mul_ref(&self.e23)) + &(t2.mul_ref(&self.scalar))));
-                    x.e3.add_ref(&y) + &y
-                },
-                e123: ::core::clone::Clone::clone(&x.e123),
-            }
+            ::algebra_core::ops::Sandwich::sandwich(self, x)
         }
         /// `self x rev(self)` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
         /// The commutator form `x + (L x - x L) R`: 15 multiplications.
         /// Every component of the full product is a `Odd` component: this is the whole action.
         #[inline]
         fn apply_unit(&self, x: &Odd<T>) -> Odd<T> {
-            let t0 = ((self.e12.mul_ref(&x.e2)) + &(self.e13.mul_ref(&x.e3)));
-            let t1 = ::algebra_core::Ring::neg_ref(
-                &((self.e12.mul_ref(&x.e1)) - &(self.e23.mul_ref(&x.e3))),
-            );
-            let t2 = ::algebra_core::Ring::neg_ref(
-                &((self.e13.mul_ref(&x.e1)) + &(self.e23.mul_ref(&x.e2))),
-            );
-            Odd {
-                e1: {
-                    let y = ((t0.mul_ref(&self.scalar))
-                        + &((t1.mul_ref(&self.e12)) + &(t2.mul_ref(&self.e13))));
-                    x.e1.add_ref(&y) + &y
-                },
-                e2: {
-                    let y = ::algebra_core::Ring::neg_ref(
-                        &((t0.mul_ref(&self.e12))
-                            - &((t1.mul_ref(&self.scalar)) + &(t2.mul_ref(&self.e23)))),
-                    );
-                    x.e2.add_ref(&y) + &y
-                },
-                e3: {
-                    let y = ::algebra_core::Ring::neg_ref(
-                        &((t0.mul_ref(&self.e13))
-                            + &((t1.mul_ref(&self.e23)) - &(t2.mul_ref(&self.scalar)))),
-                    );
-                    x.e3.add_ref(&y) + &y
-                },
-                e123: ::core::clone::Clone::clone(&x.e123),
-            }
+            ::algebra_core::ops::Apply::apply(self, x)
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::UnitAction<Vector<T>> for Odd<T> {
@@ -10672,58 +9347,14 @@ pub mod g3_vendored {
         /// Every component of the full product is a `Vector` component: this is the whole action.
         #[inline]
         fn sandwich_unit(&self, x: &Vector<T>) -> Vector<T> {
-            let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
-            let t1 = ((self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1)));
-            let t2 = ((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2)));
-            Vector {
-                e1: {
-                    let y = ((t0.mul_ref(&self.e2))
-                        + &((t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e123))));
-                    x.e1.add_ref(&y) + &y
-                },
-                e2: {
-                    let y = ::algebra_core::Ring::neg_ref(
-                        &((t0.mul_ref(&self.e1))
-                            - &((t1.mul_ref(&self.e123)) + &(t2.mul_ref(&self.e3)))),
-                    );
-                    x.e2.add_ref(&y) + &y
-                },
-                e3: {
-                    let y = ::algebra_core::Ring::neg_ref(
-                        &((t0.mul_ref(&self.e123))
-                            + &((t1.mul_ref(&self.e1)) + &(t2.mul_ref(&self.e2)))),
-                    );
-                    x.e3.add_ref(&y) + &y
-                },
-            }
+            ::algebra_core::ops::Sandwich::sandwich(self, x)
         }
         /// `self x rev(self)` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
         /// The commutator form `x + (L x - x L) R`: 15 multiplications.
         /// Every component of the full product is a `Vector` component: this is the whole action.
         #[inline]
         fn apply_unit(&self, x: &Vector<T>) -> Vector<T> {
-            let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
-            let t1 = ((self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1)));
-            let t2 = ((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2)));
-            Vector {
-                e1: {
-                    let y = ((t0.mul_ref(&self.e2))
-                        + &((t1.mul_ref(&self.e3)) + &(t2.mul_ref(&self.e123))));
-                    x.e1.add_ref(&y) + &y
-                },
-                e2: {
-                    let y = ::algebra_core::Ring::neg_ref(
-                        &((t0.mul_ref(&self.e1))
-                            + &((t1.mul_ref(&self.e123)) - &(t2.mul_ref(&self.e3)))),
-                    );
-                    x.e2.add_ref(&y) + &y
-                },
-                e3: {
-                    let y = ((t0.mul_ref(&self.e123))
-                        - &((t1.mul_ref(&self.e1)) + &(t2.mul_ref(&self.e2))));
-                    x.e3.add_ref(&y) + &y
-                },
-            }
+            ::algebra_core::ops::Apply::apply(self, x)
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::UnitAction<Rotor<T>> for Odd<T> {
@@ -10732,60 +9363,14 @@ pub mod g3_vendored {
         /// Every component of the full product is a `Rotor` component: this is the whole action.
         #[inline]
         fn sandwich_unit(&self, x: &Rotor<T>) -> Rotor<T> {
-            let t0 = ::algebra_core::Ring::neg_ref(
-                &((self.e2.mul_ref(&x.e12)) + &(self.e3.mul_ref(&x.e13))),
-            );
-            let t1 = ((self.e1.mul_ref(&x.e12)) - &(self.e3.mul_ref(&x.e23)));
-            let t2 = ((self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23)));
-            Rotor {
-                scalar: ::core::clone::Clone::clone(&x.scalar),
-                e12: {
-                    let y = ((t0.mul_ref(&self.e2))
-                        - &((t1.mul_ref(&self.e1)) - &(t2.mul_ref(&self.e123))));
-                    x.e12.add_ref(&y) + &y
-                },
-                e13: {
-                    let y = ((t0.mul_ref(&self.e3))
-                        - &((t1.mul_ref(&self.e123)) + &(t2.mul_ref(&self.e1))));
-                    x.e13.add_ref(&y) + &y
-                },
-                e23: {
-                    let y = ((t0.mul_ref(&self.e123))
-                        + &((t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e2))));
-                    x.e23.add_ref(&y) + &y
-                },
-            }
+            ::algebra_core::ops::Sandwich::sandwich(self, x)
         }
         /// `self x rev(self)` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
         /// The commutator form `x + (L x - x L) R`: 15 multiplications.
         /// Every component of the full product is a `Rotor` component: this is the whole action.
         #[inline]
         fn apply_unit(&self, x: &Rotor<T>) -> Rotor<T> {
-            let t0 = ::algebra_core::Ring::neg_ref(
-                &((self.e2.mul_ref(&x.e12)) + &(self.e3.mul_ref(&x.e13))),
-            );
-            let t1 = ((self.e1.mul_ref(&x.e12)) - &(self.e3.mul_ref(&x.e23)));
-            let t2 = ((self.e1.mul_ref(&x.e13)) + &(self.e2.mul_ref(&x.e23)));
-            Rotor {
-                scalar: ::core::clone::Clone::clone(&x.scalar),
-                e12: {
-                    let y = ((t0.mul_ref(&self.e2))
-                        - &((t1.mul_ref(&self.e1)) + &(t2.mul_ref(&self.e123))));
-                    x.e12.add_ref(&y) + &y
-                },
-                e13: {
-                    let y = ((t0.mul_ref(&self.e3))
-                        + &((t1.mul_ref(&self.e123)) - &(t2.mul_ref(&self.e1))));
-                    x.e13.add_ref(&y) + &y
-                },
-                e23: {
-                    let y = ::algebra_core::Ring::neg_ref(
-                        &((t0.mul_ref(&self.e123))
-                            - &((t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e2)))),
-                    );
-                    x.e23.add_ref(&y) + &y
-                },
-            }
+            ::algebra_core::ops::Apply::apply(self, x)
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::UnitAction<Odd<T>> for Odd<T> {
@@ -10794,60 +9379,14 @@ pub mod g3_vendored {
         /// Every component of the full product is a `Odd` component: this is the whole action.
         #[inline]
         fn sandwich_unit(&self, x: &Odd<T>) -> Odd<T> {
-            let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
-            let t1 = ((self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1)));
-            let t2 = ((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2)));
-            Odd {
-                e1: {
-                    let y = ((t0.mul_ref(&self.e2))
-                        + &((t1.mul_ref(&self.e3)) - &(t2.mul_ref(&self.e123))));
-                    x.e1.add_ref(&y) + &y
-                },
-                e2: {
-                    let y = ::algebra_core::Ring::neg_ref(
-                        &((t0.mul_ref(&self.e1))
-                            - &((t1.mul_ref(&self.e123)) + &(t2.mul_ref(&self.e3)))),
-                    );
-                    x.e2.add_ref(&y) + &y
-                },
-                e3: {
-                    let y = ::algebra_core::Ring::neg_ref(
-                        &((t0.mul_ref(&self.e123))
-                            + &((t1.mul_ref(&self.e1)) + &(t2.mul_ref(&self.e2)))),
-                    );
-                    x.e3.add_ref(&y) + &y
-                },
-                e123: ::core::clone::Clone::clone(&x.e123),
-            }
+            ::algebra_core::ops::Sandwich::sandwich(self, x)
         }
         /// `self x rev(self)` for a unit `self`: assumes `self rev(self) = 1`; for any other `self` the result is not the action (use `sandwich`/`apply`).
         /// The commutator form `x + (L x - x L) R`: 15 multiplications.
         /// Every component of the full product is a `Odd` component: this is the whole action.
         #[inline]
         fn apply_unit(&self, x: &Odd<T>) -> Odd<T> {
-            let t0 = ((self.e1.mul_ref(&x.e2)) - &(self.e2.mul_ref(&x.e1)));
-            let t1 = ((self.e1.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e1)));
-            let t2 = ((self.e2.mul_ref(&x.e3)) - &(self.e3.mul_ref(&x.e2)));
-            Odd {
-                e1: {
-                    let y = ((t0.mul_ref(&self.e2))
-                        + &((t1.mul_ref(&self.e3)) + &(t2.mul_ref(&self.e123))));
-                    x.e1.add_ref(&y) + &y
-                },
-                e2: {
-                    let y = ::algebra_core::Ring::neg_ref(
-                        &((t0.mul_ref(&self.e1))
-                            + &((t1.mul_ref(&self.e123)) - &(t2.mul_ref(&self.e3)))),
-                    );
-                    x.e2.add_ref(&y) + &y
-                },
-                e3: {
-                    let y = ((t0.mul_ref(&self.e123))
-                        - &((t1.mul_ref(&self.e1)) + &(t2.mul_ref(&self.e2))));
-                    x.e3.add_ref(&y) + &y
-                },
-                e123: ::core::clone::Clone::clone(&x.e123),
-            }
+            ::algebra_core::ops::Apply::apply(self, x)
         }
     }
     /// The rotation by `angle` (radians) about `axis` through the origin, right-handed: `cos(angle/2) ± sin(angle/2) β(axis/|axis|)`, the sign chosen from the product tables so that `apply` (`x ↦ S x rev(S)`) turns every vector by `+angle` (a quarter turn about `e3` takes `e1` to `e2`). `sandwich` (`rev(S) x S`) turns the other way. An error for a zero or non-finite axis or angle.
