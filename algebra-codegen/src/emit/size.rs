@@ -56,9 +56,14 @@ pub(crate) fn table_loop(
     sorted.sort_by_key(|t| t.2);
     let (codes, coefs) = codes(sorted.iter().map(|t| t.3));
     let table = packed(sorted.iter().zip(&codes).flat_map(|(&(i, j, _, _), &c)| [i, j, usize::from(c)]));
-    let starts = packed((0..=n_out).map(|k| sorted.iter().take_while(|t| t.2 < k).count()));
+    let (n, n1) = (sorted.len(), n_out + 1);
+    let starts = (0..=n_out).map(|k| sorted.iter().take_while(|t| t.2 < k).count() as u16);
     let coefs = constants(&coefs);
-    quote!(__gam_engine::kernels::bilinear::<T, #n_out, _>(&#a, &#b, #table, #starts, #coefs))
+    quote! {{
+        const TERMS: [(u16, u16, u16); #n] = __gam_engine::kernels::unpack(#table);
+        const STARTS: [u16; #n1] = [#(#starts),*];
+        __gam_engine::kernels::bilinear::<T, #n_out, _, _, _, _, _>(#a, #b, &TERMS, &STARTS, #coefs)
+    }}
 }
 
 /// `[&recv.f0, &recv.f1, ...]`.

@@ -3026,19 +3026,21 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn gp(&self, rhs: &Odd<T>) -> Rotor<T> {
-            Rotor::from_array(
+            Rotor::from_array({
+                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 3u16, 6u16, 9u16, 12u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0",
-                    b"\0\0\x03\0\x06\0\t\0\x0C\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -3078,19 +3080,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn gp(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 24usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\0\0\x04\0\0\0\x01\0\0\0\0\0\x02\0\x06\0\x01\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\x02\0\0\0\0\0\0\0\x02\0\0\0\x01\0\x01\0\x01\0\x02\0\x07\0\0\0\0\0\x03\0\0\0\x01\0\x07\0\x01\0\x02\0\x01\0\x01\0\0\0\x07\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 3u16, 6u16, 9u16, 12u16, 15u16, 18u16, 21u16, 24u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\0\0\x04\0\0\0\x01\0\0\0\0\0\x02\0\x06\0\x01\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\x02\0\0\0\0\0\0\0\x02\0\0\0\x01\0\x01\0\x01\0\x02\0\x07\0\0\0\0\0\x03\0\0\0\x01\0\x07\0\x01\0\x02\0\x01\0\x01\0\0\0\x07\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0",
-                    b"\0\0\x03\0\x06\0\t\0\x0C\0\x0F\0\x12\0\x15\0\x18\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -3249,19 +3255,21 @@ pub mod g3_vendored {
         type Output = Odd<T>;
         #[inline]
         fn gp(&self, rhs: &Odd<T>) -> Odd<T> {
-            Odd::from_array(
+            Odd::from_array({
+                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
-                    b"\0\0\x04\0\x08\0\x0C\0\x10\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -3301,19 +3309,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn gp(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 32usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\x03\0\x06\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\x07\0\x01\0\0\0\x02\0\0\0\x01\0\x01\0\x01\0\x02\0\x07\0\0\0\x03\0\x03\0\0\0\0\0\x03\0\0\0\x01\0\x07\0\x01\0\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0\0\0\x04\0\0\0\x01\0\0\0\0\0\x02\0\x06\0\x01\0\x03\0\x05\0\0\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\x02\0\0\0\0\0\x03\0\x04\0\x01\0\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0\x03\0\0\0\0\0\0\0\x07\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 4u16, 8u16, 12u16, 16u16, 20u16, 24u16, 28u16, 32u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\x03\0\x06\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\x07\0\x01\0\0\0\x02\0\0\0\x01\0\x01\0\x01\0\x02\0\x07\0\0\0\x03\0\x03\0\0\0\0\0\x03\0\0\0\x01\0\x07\0\x01\0\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0\0\0\x04\0\0\0\x01\0\0\0\0\0\x02\0\x06\0\x01\0\x03\0\x05\0\0\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\x02\0\0\0\0\0\x03\0\x04\0\x01\0\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0\x03\0\0\0\0\0\0\0\x07\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0",
-                    b"\0\0\x04\0\x08\0\x0C\0\x10\0\x14\0\x18\0\x1C\0 \0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -3354,19 +3366,21 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn gp(&self, rhs: &Vector<T>) -> Rotor<T> {
-            Rotor::from_array(
+            Rotor::from_array({
+                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 3u16, 6u16, 9u16, 12u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
-                    b"\0\0\x03\0\x06\0\t\0\x0C\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -3406,19 +3420,21 @@ pub mod g3_vendored {
         type Output = Odd<T>;
         #[inline]
         fn gp(&self, rhs: &Rotor<T>) -> Odd<T> {
-            Odd::from_array(
+            Odd::from_array({
+                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x03\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\0\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\x01\0\x02\0\x01\0\0\0\x03\0\0\0\0\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x03\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\0\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\x01\0\x02\0\x01\0\0\0\x03\0\0\0\0\0",
-                    b"\0\0\x04\0\x08\0\x0C\0\x10\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -3458,19 +3474,21 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn gp(&self, rhs: &Odd<T>) -> Rotor<T> {
-            Rotor::from_array(
+            Rotor::from_array({
+                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
-                    b"\0\0\x04\0\x08\0\x0C\0\x10\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -3510,19 +3528,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn gp(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 32usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\x07\0\x01\0\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\x03\0\x06\0\x01\0\0\0\x04\0\0\0\x01\0\0\0\0\0\x02\0\x06\0\x01\0\x03\0\x05\0\0\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\x02\0\0\0\0\0\x03\0\x04\0\x01\0\0\0\x02\0\0\0\x01\0\x01\0\x01\0\x02\0\x07\0\0\0\x03\0\x03\0\0\0\0\0\x03\0\0\0\x01\0\x07\0\x01\0\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0\0\0\x07\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0\x03\0\0\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 4u16, 8u16, 12u16, 16u16, 20u16, 24u16, 28u16, 32u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\x07\0\x01\0\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\x03\0\x06\0\x01\0\0\0\x04\0\0\0\x01\0\0\0\0\0\x02\0\x06\0\x01\0\x03\0\x05\0\0\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\x02\0\0\0\0\0\x03\0\x04\0\x01\0\0\0\x02\0\0\0\x01\0\x01\0\x01\0\x02\0\x07\0\0\0\x03\0\x03\0\0\0\0\0\x03\0\0\0\x01\0\x07\0\x01\0\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0\0\0\x07\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0\x03\0\0\0\0\0",
-                    b"\0\0\x04\0\x08\0\x0C\0\x10\0\x14\0\x18\0\x1C\0 \0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -3563,19 +3585,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn gp(&self, rhs: &Vector<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 24usize] = ::algebra_core::kernels::unpack(
+                    b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0\0\0\0\0\0\0\x04\0\x01\0\0\0\x05\0\x02\0\0\0\0\0\x01\0\0\0\x04\0\0\0\x01\0\x06\0\x02\0\0\0\0\0\x02\0\0\0\x05\0\0\0\x01\0\x06\0\x01\0\x01\0\x01\0\x01\0\0\0\x02\0\0\0\x01\0\x07\0\x02\0\0\0\x01\0\x02\0\0\0\x03\0\0\0\x01\0\x07\0\x01\0\x01\0\x02\0\x02\0\0\0\x03\0\x01\0\x01\0\x07\0\0\0\0\0\x04\0\x02\0\0\0\x05\0\x01\0\x01\0\x06\0\0\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 3u16, 6u16, 9u16, 12u16, 15u16, 18u16, 21u16, 24u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0\0\0\0\0\0\0\x04\0\x01\0\0\0\x05\0\x02\0\0\0\0\0\x01\0\0\0\x04\0\0\0\x01\0\x06\0\x02\0\0\0\0\0\x02\0\0\0\x05\0\0\0\x01\0\x06\0\x01\0\x01\0\x01\0\x01\0\0\0\x02\0\0\0\x01\0\x07\0\x02\0\0\0\x01\0\x02\0\0\0\x03\0\0\0\x01\0\x07\0\x01\0\x01\0\x02\0\x02\0\0\0\x03\0\x01\0\x01\0\x07\0\0\0\0\0\x04\0\x02\0\0\0\x05\0\x01\0\x01\0\x06\0\0\0\0\0",
-                    b"\0\0\x03\0\x06\0\t\0\x0C\0\x0F\0\x12\0\x15\0\x18\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -3616,19 +3642,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn gp(&self, rhs: &Rotor<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 32usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x04\0\x01\0\x01\0\x05\0\x02\0\x01\0\x06\0\x03\0\x01\0\x01\0\0\0\0\0\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0\x07\0\x03\0\x01\0\x01\0\x01\0\0\0\x02\0\0\0\0\0\x03\0\x03\0\x01\0\x07\0\x02\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\0\0\0\0\x07\0\x01\0\x01\0\0\0\x01\0\0\0\x04\0\0\0\0\0\x05\0\x03\0\x01\0\x06\0\x02\0\0\0\0\0\x02\0\0\0\x04\0\x03\0\0\0\x05\0\0\0\0\0\x06\0\x01\0\x01\0\0\0\x03\0\0\0\x04\0\x02\0\x01\0\x05\0\x01\0\0\0\x06\0\0\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0\x07\0\0\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 4u16, 8u16, 12u16, 16u16, 20u16, 24u16, 28u16, 32u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x04\0\x01\0\x01\0\x05\0\x02\0\x01\0\x06\0\x03\0\x01\0\x01\0\0\0\0\0\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0\x07\0\x03\0\x01\0\x01\0\x01\0\0\0\x02\0\0\0\0\0\x03\0\x03\0\x01\0\x07\0\x02\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\0\0\0\0\x07\0\x01\0\x01\0\0\0\x01\0\0\0\x04\0\0\0\0\0\x05\0\x03\0\x01\0\x06\0\x02\0\0\0\0\0\x02\0\0\0\x04\0\x03\0\0\0\x05\0\0\0\0\0\x06\0\x01\0\x01\0\0\0\x03\0\0\0\x04\0\x02\0\x01\0\x05\0\x01\0\0\0\x06\0\0\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0\x07\0\0\0\0\0",
-                    b"\0\0\x04\0\x08\0\x0C\0\x10\0\x14\0\x18\0\x1C\0 \0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -3669,19 +3699,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn gp(&self, rhs: &Odd<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 32usize] = ::algebra_core::kernels::unpack(
+                    b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0\x07\0\x03\0\x01\0\0\0\0\0\0\0\x04\0\x01\0\0\0\x05\0\x02\0\0\0\x06\0\x03\0\x01\0\0\0\x01\0\0\0\x04\0\0\0\x01\0\x05\0\x03\0\0\0\x06\0\x02\0\0\0\0\0\x02\0\0\0\x04\0\x03\0\x01\0\x05\0\0\0\x01\0\x06\0\x01\0\x01\0\x01\0\x01\0\0\0\x02\0\0\0\x01\0\x03\0\x03\0\0\0\x07\0\x02\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\x01\0\x03\0\0\0\x01\0\x07\0\x01\0\x01\0\x01\0\x03\0\0\0\x02\0\x02\0\0\0\x03\0\x01\0\x01\0\x07\0\0\0\0\0\0\0\x03\0\0\0\x04\0\x02\0\0\0\x05\0\x01\0\x01\0\x06\0\0\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 4u16, 8u16, 12u16, 16u16, 20u16, 24u16, 28u16, 32u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0\x07\0\x03\0\x01\0\0\0\0\0\0\0\x04\0\x01\0\0\0\x05\0\x02\0\0\0\x06\0\x03\0\x01\0\0\0\x01\0\0\0\x04\0\0\0\x01\0\x05\0\x03\0\0\0\x06\0\x02\0\0\0\0\0\x02\0\0\0\x04\0\x03\0\x01\0\x05\0\0\0\x01\0\x06\0\x01\0\x01\0\x01\0\x01\0\0\0\x02\0\0\0\x01\0\x03\0\x03\0\0\0\x07\0\x02\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\x01\0\x03\0\0\0\x01\0\x07\0\x01\0\x01\0\x01\0\x03\0\0\0\x02\0\x02\0\0\0\x03\0\x01\0\x01\0\x07\0\0\0\0\0\0\0\x03\0\0\0\x04\0\x02\0\0\0\x05\0\x01\0\x01\0\x06\0\0\0\0\0",
-                    b"\0\0\x04\0\x08\0\x0C\0\x10\0\x14\0\x18\0\x1C\0 \0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -3722,19 +3756,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn gp(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 64usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\x04\0\x04\0\x01\0\x05\0\x05\0\x01\0\x06\0\x06\0\x01\0\x07\0\x07\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x04\0\x01\0\x03\0\x05\0\x01\0\x04\0\x02\0\0\0\x05\0\x03\0\0\0\x06\0\x07\0\x01\0\x07\0\x06\0\x01\0\0\0\x02\0\0\0\x01\0\x04\0\0\0\x02\0\0\0\0\0\x03\0\x06\0\x01\0\x04\0\x01\0\x01\0\x05\0\x07\0\0\0\x06\0\x03\0\0\0\x07\0\x05\0\0\0\0\0\x03\0\0\0\x01\0\x05\0\0\0\x02\0\x06\0\0\0\x03\0\0\0\0\0\x04\0\x07\0\x01\0\x05\0\x01\0\x01\0\x06\0\x02\0\x01\0\x07\0\x04\0\x01\0\0\0\x04\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\x07\0\0\0\x04\0\0\0\0\0\x05\0\x06\0\x01\0\x06\0\x05\0\0\0\x07\0\x03\0\0\0\0\0\x05\0\0\0\x01\0\x03\0\0\0\x02\0\x07\0\x01\0\x03\0\x01\0\x01\0\x04\0\x06\0\0\0\x05\0\0\0\0\0\x06\0\x04\0\x01\0\x07\0\x02\0\x01\0\0\0\x06\0\0\0\x01\0\x07\0\0\0\x02\0\x03\0\0\0\x03\0\x02\0\x01\0\x04\0\x05\0\x01\0\x05\0\x04\0\0\0\x06\0\0\0\0\0\x07\0\x01\0\0\0\0\0\x07\0\0\0\x01\0\x06\0\0\0\x02\0\x05\0\x01\0\x03\0\x04\0\0\0\x04\0\x03\0\0\0\x05\0\x02\0\x01\0\x06\0\x01\0\0\0\x07\0\0\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 8u16, 16u16, 24u16, 32u16, 40u16, 48u16, 56u16, 64u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\x04\0\x04\0\x01\0\x05\0\x05\0\x01\0\x06\0\x06\0\x01\0\x07\0\x07\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x04\0\x01\0\x03\0\x05\0\x01\0\x04\0\x02\0\0\0\x05\0\x03\0\0\0\x06\0\x07\0\x01\0\x07\0\x06\0\x01\0\0\0\x02\0\0\0\x01\0\x04\0\0\0\x02\0\0\0\0\0\x03\0\x06\0\x01\0\x04\0\x01\0\x01\0\x05\0\x07\0\0\0\x06\0\x03\0\0\0\x07\0\x05\0\0\0\0\0\x03\0\0\0\x01\0\x05\0\0\0\x02\0\x06\0\0\0\x03\0\0\0\0\0\x04\0\x07\0\x01\0\x05\0\x01\0\x01\0\x06\0\x02\0\x01\0\x07\0\x04\0\x01\0\0\0\x04\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\x07\0\0\0\x04\0\0\0\0\0\x05\0\x06\0\x01\0\x06\0\x05\0\0\0\x07\0\x03\0\0\0\0\0\x05\0\0\0\x01\0\x03\0\0\0\x02\0\x07\0\x01\0\x03\0\x01\0\x01\0\x04\0\x06\0\0\0\x05\0\0\0\0\0\x06\0\x04\0\x01\0\x07\0\x02\0\x01\0\0\0\x06\0\0\0\x01\0\x07\0\0\0\x02\0\x03\0\0\0\x03\0\x02\0\x01\0\x04\0\x05\0\x01\0\x05\0\x04\0\0\0\x06\0\0\0\0\0\x07\0\x01\0\0\0\0\0\x07\0\0\0\x01\0\x06\0\0\0\x02\0\x05\0\x01\0\x03\0\x04\0\0\0\x04\0\x03\0\0\0\x05\0\x02\0\x01\0\x06\0\x01\0\0\0\x07\0\0\0\0\0",
-                    b"\0\0\x08\0\x10\0\x18\0 \0(\x000\08\0@\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -3861,19 +3899,21 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn op(&self, rhs: &Odd<T>) -> Rotor<T> {
-            Rotor::from_array(
+            Rotor::from_array({
+                const TERMS: [(u16, u16, u16); 6usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 0u16, 2u16, 4u16, 6u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0",
-                    b"\0\0\0\0\x02\0\x04\0\x06\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitXor<&Odd<T>> for &Vector<T> {
@@ -3905,19 +3945,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn op(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\0\0\0\0\x02\0\0\0\x01\0\x01\0\x01\0\0\0\x03\0\0\0\x02\0\x01\0\x01\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 0u16, 1u16, 2u16, 3u16, 5u16, 7u16, 9u16, 12u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\0\0\0\0\x02\0\0\0\x01\0\x01\0\x01\0\0\0\x03\0\0\0\x02\0\x01\0\x01\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0",
-                    b"\0\0\0\0\x01\0\x02\0\x03\0\x05\0\x07\0\t\0\x0C\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitXor<&Multivector<T>> for &Vector<T> {
@@ -4036,19 +4080,21 @@ pub mod g3_vendored {
         type Output = Odd<T>;
         #[inline]
         fn op(&self, rhs: &Odd<T>) -> Odd<T> {
-            Odd::from_array(
+            Odd::from_array({
+                const TERMS: [(u16, u16, u16); 7usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 1u16, 2u16, 3u16, 7u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
-                    b"\0\0\x01\0\x02\0\x03\0\x07\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitXor<&Odd<T>> for &Rotor<T> {
@@ -4080,19 +4126,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn op(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 14usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\0\0\x03\0\0\0\0\0\x04\0\0\0\x01\0\0\0\0\0\0\0\x05\0\0\0\x02\0\0\0\0\0\0\0\x06\0\0\0\x03\0\0\0\0\0\0\0\x07\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 1u16, 2u16, 3u16, 4u16, 6u16, 8u16, 10u16, 14u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\0\0\x03\0\0\0\0\0\x04\0\0\0\x01\0\0\0\0\0\0\0\x05\0\0\0\x02\0\0\0\0\0\0\0\x06\0\0\0\x03\0\0\0\0\0\0\0\x07\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0",
-                    b"\0\0\x01\0\x02\0\x03\0\x04\0\x06\0\x08\0\n\0\x0E\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitXor<&Multivector<T>> for &Rotor<T> {
@@ -4124,19 +4174,21 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn op(&self, rhs: &Vector<T>) -> Rotor<T> {
-            Rotor::from_array(
+            Rotor::from_array({
+                const TERMS: [(u16, u16, u16); 6usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 0u16, 2u16, 4u16, 6u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0",
-                    b"\0\0\0\0\x02\0\x04\0\x06\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitXor<&Vector<T>> for &Odd<T> {
@@ -4168,19 +4220,21 @@ pub mod g3_vendored {
         type Output = Odd<T>;
         #[inline]
         fn op(&self, rhs: &Rotor<T>) -> Odd<T> {
-            Odd::from_array(
+            Odd::from_array({
+                const TERMS: [(u16, u16, u16); 7usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\0\0\0\0\x03\0\0\0\x01\0\x02\0\x01\0\x02\0\x01\0\0\0\x03\0\0\0\0\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 1u16, 2u16, 3u16, 7u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\0\0\0\0\x03\0\0\0\x01\0\x02\0\x01\0\x02\0\x01\0\0\0\x03\0\0\0\0\0",
-                    b"\0\0\x01\0\x02\0\x03\0\x07\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitXor<&Rotor<T>> for &Odd<T> {
@@ -4211,19 +4265,21 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn op(&self, rhs: &Odd<T>) -> Rotor<T> {
-            Rotor::from_array(
+            Rotor::from_array({
+                const TERMS: [(u16, u16, u16); 6usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 0u16, 2u16, 4u16, 6u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0",
-                    b"\0\0\0\0\x02\0\x04\0\x06\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitXor<&Odd<T>> for &Odd<T> {
@@ -4255,19 +4311,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn op(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 13usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\0\0\0\0\x02\0\0\0\x01\0\x01\0\x01\0\0\0\x03\0\0\0\x02\0\x01\0\x01\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0\x03\0\0\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 0u16, 1u16, 2u16, 3u16, 5u16, 7u16, 9u16, 13u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\0\0\0\0\x02\0\0\0\x01\0\x01\0\x01\0\0\0\x03\0\0\0\x02\0\x01\0\x01\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0\x03\0\0\0\0\0",
-                    b"\0\0\0\0\x01\0\x02\0\x03\0\x05\0\x07\0\t\0\r\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitXor<&Multivector<T>> for &Odd<T> {
@@ -4299,19 +4359,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn op(&self, rhs: &Vector<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\x01\0\x01\0\0\0\x02\0\0\0\x01\0\x01\0\x02\0\0\0\x03\0\0\0\x01\0\x02\0\x02\0\0\0\x03\0\x01\0\x01\0\x04\0\x02\0\0\0\x05\0\x01\0\x01\0\x06\0\0\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 0u16, 1u16, 2u16, 3u16, 5u16, 7u16, 9u16, 12u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\x01\0\x01\0\0\0\x02\0\0\0\x01\0\x01\0\x02\0\0\0\x03\0\0\0\x01\0\x02\0\x02\0\0\0\x03\0\x01\0\x01\0\x04\0\x02\0\0\0\x05\0\x01\0\x01\0\x06\0\0\0\0\0",
-                    b"\0\0\0\0\x01\0\x02\0\x03\0\x05\0\x07\0\t\0\x0C\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitXor<&Vector<T>> for &Multivector<T> {
@@ -4343,19 +4407,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn op(&self, rhs: &Rotor<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 14usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\0\0\x03\0\0\0\0\0\0\0\x01\0\0\0\x04\0\0\0\0\0\0\0\x02\0\0\0\x05\0\0\0\0\0\0\0\x03\0\0\0\x06\0\0\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0\x07\0\0\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 1u16, 2u16, 3u16, 4u16, 6u16, 8u16, 10u16, 14u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\0\0\x03\0\0\0\0\0\0\0\x01\0\0\0\x04\0\0\0\0\0\0\0\x02\0\0\0\x05\0\0\0\0\0\0\0\x03\0\0\0\x06\0\0\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0\x07\0\0\0\0\0",
-                    b"\0\0\x01\0\x02\0\x03\0\x04\0\x06\0\x08\0\n\0\x0E\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitXor<&Rotor<T>> for &Multivector<T> {
@@ -4387,19 +4455,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn op(&self, rhs: &Odd<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 13usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\x01\0\x01\0\0\0\x02\0\0\0\x01\0\x01\0\x02\0\0\0\x03\0\0\0\x01\0\x02\0\x02\0\0\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x04\0\x02\0\0\0\x05\0\x01\0\x01\0\x06\0\0\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 0u16, 1u16, 2u16, 3u16, 5u16, 7u16, 9u16, 13u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\x01\0\x01\0\0\0\x02\0\0\0\x01\0\x01\0\x02\0\0\0\x03\0\0\0\x01\0\x02\0\x02\0\0\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x04\0\x02\0\0\0\x05\0\x01\0\x01\0\x06\0\0\0\0\0",
-                    b"\0\0\0\0\x01\0\x02\0\x03\0\x05\0\x07\0\t\0\r\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitXor<&Odd<T>> for &Multivector<T> {
@@ -4431,19 +4503,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn op(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 27usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\0\0\x01\0\0\0\x01\0\0\0\0\0\0\0\x02\0\0\0\x02\0\0\0\0\0\0\0\x03\0\0\0\x03\0\0\0\0\0\0\0\x04\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x04\0\0\0\0\0\0\0\x05\0\0\0\x01\0\x03\0\0\0\x03\0\x01\0\x01\0\x05\0\0\0\0\0\0\0\x06\0\0\0\x02\0\x03\0\0\0\x03\0\x02\0\x01\0\x06\0\0\0\0\0\0\0\x07\0\0\0\x01\0\x06\0\0\0\x02\0\x05\0\x01\0\x03\0\x04\0\0\0\x04\0\x03\0\0\0\x05\0\x02\0\x01\0\x06\0\x01\0\0\0\x07\0\0\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 1u16, 3u16, 5u16, 7u16, 11u16, 15u16, 19u16, 27u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\0\0\x01\0\0\0\x01\0\0\0\0\0\0\0\x02\0\0\0\x02\0\0\0\0\0\0\0\x03\0\0\0\x03\0\0\0\0\0\0\0\x04\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x04\0\0\0\0\0\0\0\x05\0\0\0\x01\0\x03\0\0\0\x03\0\x01\0\x01\0\x05\0\0\0\0\0\0\0\x06\0\0\0\x02\0\x03\0\0\0\x03\0\x02\0\x01\0\x06\0\0\0\0\0\0\0\x07\0\0\0\x01\0\x06\0\0\0\x02\0\x05\0\x01\0\x03\0\x04\0\0\0\x04\0\x03\0\0\0\x05\0\x02\0\x01\0\x06\0\x01\0\0\0\x07\0\0\0\0\0",
-                    b"\0\0\x01\0\x03\0\x05\0\x07\0\x0B\0\x0F\0\x13\0\x1B\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitXor<&Multivector<T>>
@@ -4561,19 +4637,21 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn lc(&self, rhs: &Odd<T>) -> Rotor<T> {
-            Rotor::from_array(
+            Rotor::from_array({
+                const TERMS: [(u16, u16, u16); 6usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x02\0\x03\0\0\0\x01\0\x03\0\x01\0\0\0\x03\0\0\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 3u16, 4u16, 5u16, 6u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x02\0\x03\0\0\0\x01\0\x03\0\x01\0\0\0\x03\0\0\0",
-                    b"\0\0\x03\0\x04\0\x05\0\x06\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitOr<&Odd<T>> for &Vector<T> {
@@ -4605,19 +4683,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn lc(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\0\0\x04\0\0\0\x02\0\x06\0\x01\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\x02\0\x07\0\0\0\x01\0\x07\0\x01\0\0\0\x07\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 3u16, 5u16, 7u16, 9u16, 10u16, 11u16, 12u16, 12u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\0\0\x04\0\0\0\x02\0\x06\0\x01\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\x02\0\x07\0\0\0\x01\0\x07\0\x01\0\0\0\x07\0\0\0",
-                    b"\0\0\x03\0\x05\0\x07\0\t\0\n\0\x0B\0\x0C\0\x0C\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitOr<&Multivector<T>> for &Vector<T> {
@@ -4732,19 +4814,21 @@ pub mod g3_vendored {
         type Output = Odd<T>;
         #[inline]
         fn lc(&self, rhs: &Odd<T>) -> Odd<T> {
-            Odd::from_array(
+            Odd::from_array({
+                const TERMS: [(u16, u16, u16); 7usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x02\0\x03\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\0\0\x03\0\0\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 2u16, 4u16, 6u16, 7u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x02\0\x03\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\0\0\x03\0\0\0",
-                    b"\0\0\x02\0\x04\0\x06\0\x07\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitOr<&Odd<T>> for &Rotor<T> {
@@ -4776,19 +4860,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn lc(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 14usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\x03\0\x06\0\x01\0\0\0\x01\0\0\0\x03\0\x07\0\x01\0\0\0\x02\0\0\0\x02\0\x07\0\0\0\0\0\x03\0\0\0\x01\0\x07\0\x01\0\0\0\x04\0\0\0\0\0\x05\0\0\0\0\0\x06\0\0\0\0\0\x07\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 4u16, 6u16, 8u16, 10u16, 11u16, 12u16, 13u16, 14u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\x03\0\x06\0\x01\0\0\0\x01\0\0\0\x03\0\x07\0\x01\0\0\0\x02\0\0\0\x02\0\x07\0\0\0\0\0\x03\0\0\0\x01\0\x07\0\x01\0\0\0\x04\0\0\0\0\0\x05\0\0\0\0\0\x06\0\0\0\0\0\x07\0\0\0",
-                    b"\0\0\x04\0\x06\0\x08\0\n\0\x0B\0\x0C\0\r\0\x0E\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitOr<&Multivector<T>> for &Rotor<T> {
@@ -4820,19 +4908,21 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn lc(&self, rhs: &Vector<T>) -> Rotor<T> {
-            Rotor::from_array(
+            Rotor::from_array({
+                const TERMS: [(u16, u16, u16); 3usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 3u16, 3u16, 3u16, 3u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0",
-                    b"\0\0\x03\0\x03\0\x03\0\x03\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitOr<&Vector<T>> for &Odd<T> {
@@ -4864,19 +4954,21 @@ pub mod g3_vendored {
         type Output = Vector<T>;
         #[inline]
         fn lc(&self, rhs: &Rotor<T>) -> Vector<T> {
-            Vector::from_array(
+            Vector::from_array({
+                const TERMS: [(u16, u16, u16); 6usize] = ::algebra_core::kernels::unpack(
+                    b"\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\0\0\x01\0\0\0\x02\0\x03\0\x01\0\0\0\x02\0\0\0\x01\0\x03\0\0\0",
+                );
+                const STARTS: [u16; 4usize] = [0u16, 2u16, 4u16, 6u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     3usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\0\0\x01\0\0\0\x02\0\x03\0\x01\0\0\0\x02\0\0\0\x01\0\x03\0\0\0",
-                    b"\0\0\x02\0\x04\0\x06\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitOr<&Rotor<T>> for &Odd<T> {
@@ -4908,19 +5000,21 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn lc(&self, rhs: &Odd<T>) -> Rotor<T> {
-            Rotor::from_array(
+            Rotor::from_array({
+                const TERMS: [(u16, u16, u16); 7usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\x02\0\x03\0\0\0\x01\0\x03\0\x01\0\0\0\x03\0\0\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 4u16, 5u16, 6u16, 7u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\x02\0\x03\0\0\0\x01\0\x03\0\x01\0\0\0\x03\0\0\0",
-                    b"\0\0\x04\0\x05\0\x06\0\x07\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitOr<&Odd<T>> for &Odd<T> {
@@ -4952,19 +5046,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn lc(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 13usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\x07\0\x01\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\0\0\x04\0\0\0\x02\0\x06\0\x01\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\x02\0\x07\0\0\0\x01\0\x07\0\x01\0\0\0\x07\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 4u16, 6u16, 8u16, 10u16, 11u16, 12u16, 13u16, 13u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\x07\0\x01\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\0\0\x04\0\0\0\x02\0\x06\0\x01\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\x02\0\x07\0\0\0\x01\0\x07\0\x01\0\0\0\x07\0\0\0",
-                    b"\0\0\x04\0\x06\0\x08\0\n\0\x0B\0\x0C\0\r\0\r\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitOr<&Multivector<T>> for &Odd<T> {
@@ -4996,19 +5094,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn lc(&self, rhs: &Vector<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 6usize] = ::algebra_core::kernels::unpack(
+                    b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0\0\0\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 3u16, 4u16, 5u16, 6u16, 6u16, 6u16, 6u16, 6u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0\0\0\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0",
-                    b"\0\0\x03\0\x04\0\x05\0\x06\0\x06\0\x06\0\x06\0\x06\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitOr<&Vector<T>> for &Multivector<T> {
@@ -5040,19 +5142,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn lc(&self, rhs: &Rotor<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 13usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x04\0\x01\0\x01\0\x05\0\x02\0\x01\0\x06\0\x03\0\x01\0\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0\x01\0\x01\0\0\0\x03\0\x03\0\x01\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\0\0\x03\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 4u16, 6u16, 8u16, 10u16, 11u16, 12u16, 13u16, 13u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x04\0\x01\0\x01\0\x05\0\x02\0\x01\0\x06\0\x03\0\x01\0\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0\x01\0\x01\0\0\0\x03\0\x03\0\x01\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\0\0\x03\0\0\0",
-                    b"\0\0\x04\0\x06\0\x08\0\n\0\x0B\0\x0C\0\r\0\r\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitOr<&Rotor<T>> for &Multivector<T> {
@@ -5084,19 +5190,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn lc(&self, rhs: &Odd<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 14usize] = ::algebra_core::kernels::unpack(
+                    b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0\x07\0\x03\0\x01\0\0\0\0\0\0\0\x06\0\x03\0\x01\0\0\0\x01\0\0\0\x05\0\x03\0\0\0\0\0\x02\0\0\0\x04\0\x03\0\x01\0\x03\0\x03\0\0\0\x02\0\x03\0\x01\0\x01\0\x03\0\0\0\0\0\x03\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 4u16, 6u16, 8u16, 10u16, 11u16, 12u16, 13u16, 14u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0\x07\0\x03\0\x01\0\0\0\0\0\0\0\x06\0\x03\0\x01\0\0\0\x01\0\0\0\x05\0\x03\0\0\0\0\0\x02\0\0\0\x04\0\x03\0\x01\0\x03\0\x03\0\0\0\x02\0\x03\0\x01\0\x01\0\x03\0\0\0\0\0\x03\0\0\0",
-                    b"\0\0\x04\0\x06\0\x08\0\n\0\x0B\0\x0C\0\r\0\x0E\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitOr<&Odd<T>> for &Multivector<T> {
@@ -5128,19 +5238,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn lc(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 27usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\x04\0\x04\0\x01\0\x05\0\x05\0\x01\0\x06\0\x06\0\x01\0\x07\0\x07\0\x01\0\0\0\x01\0\0\0\x02\0\x04\0\x01\0\x03\0\x05\0\x01\0\x06\0\x07\0\x01\0\0\0\x02\0\0\0\x01\0\x04\0\0\0\x03\0\x06\0\x01\0\x05\0\x07\0\0\0\0\0\x03\0\0\0\x01\0\x05\0\0\0\x02\0\x06\0\0\0\x04\0\x07\0\x01\0\0\0\x04\0\0\0\x03\0\x07\0\0\0\0\0\x05\0\0\0\x02\0\x07\0\x01\0\0\0\x06\0\0\0\x01\0\x07\0\0\0\0\0\x07\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 8u16, 12u16, 16u16, 20u16, 22u16, 24u16, 26u16, 27u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\x04\0\x04\0\x01\0\x05\0\x05\0\x01\0\x06\0\x06\0\x01\0\x07\0\x07\0\x01\0\0\0\x01\0\0\0\x02\0\x04\0\x01\0\x03\0\x05\0\x01\0\x06\0\x07\0\x01\0\0\0\x02\0\0\0\x01\0\x04\0\0\0\x03\0\x06\0\x01\0\x05\0\x07\0\0\0\0\0\x03\0\0\0\x01\0\x05\0\0\0\x02\0\x06\0\0\0\x04\0\x07\0\x01\0\0\0\x04\0\0\0\x03\0\x07\0\0\0\0\0\x05\0\0\0\x02\0\x07\0\x01\0\0\0\x06\0\0\0\x01\0\x07\0\0\0\0\0\x07\0\0\0",
-                    b"\0\0\x08\0\x0C\0\x10\0\x14\0\x16\0\x18\0\x1A\0\x1B\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitOr<&Multivector<T>>
@@ -5206,19 +5320,21 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn rc(&self, rhs: &Odd<T>) -> Rotor<T> {
-            Rotor::from_array(
+            Rotor::from_array({
+                const TERMS: [(u16, u16, u16); 3usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 3u16, 3u16, 3u16, 3u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0",
-                    b"\0\0\x03\0\x03\0\x03\0\x03\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::RightContraction<Multivector<T>>
@@ -5226,19 +5342,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn rc(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 6usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 3u16, 4u16, 5u16, 6u16, 6u16, 6u16, 6u16, 6u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\0\0",
-                    b"\0\0\x03\0\x04\0\x05\0\x06\0\x06\0\x06\0\x06\0\x06\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::RightContraction<Vector<T>>
@@ -5284,19 +5404,21 @@ pub mod g3_vendored {
         type Output = Vector<T>;
         #[inline]
         fn rc(&self, rhs: &Odd<T>) -> Vector<T> {
-            Vector::from_array(
+            Vector::from_array({
+                const TERMS: [(u16, u16, u16); 6usize] = ::algebra_core::kernels::unpack(
+                    b"\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0",
+                );
+                const STARTS: [u16; 4usize] = [0u16, 2u16, 4u16, 6u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     3usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0",
-                    b"\0\0\x02\0\x04\0\x06\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::RightContraction<Multivector<T>>
@@ -5304,19 +5426,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn rc(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 13usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\x03\0\x06\0\x01\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x01\0\x01\0\x01\0\x03\0\x03\0\0\0\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0\x01\0\0\0\0\0\x02\0\0\0\0\0\x03\0\0\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 4u16, 6u16, 8u16, 10u16, 11u16, 12u16, 13u16, 13u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\x03\0\x06\0\x01\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x01\0\x01\0\x01\0\x03\0\x03\0\0\0\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0\x01\0\0\0\0\0\x02\0\0\0\0\0\x03\0\0\0\0\0",
-                    b"\0\0\x04\0\x06\0\x08\0\n\0\x0B\0\x0C\0\r\0\r\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::RightContraction<Vector<T>>
@@ -5324,19 +5450,21 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn rc(&self, rhs: &Vector<T>) -> Rotor<T> {
-            Rotor::from_array(
+            Rotor::from_array({
+                const TERMS: [(u16, u16, u16); 6usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x02\0\0\0\x03\0\x01\0\x01\0\x03\0\0\0\0\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 3u16, 4u16, 5u16, 6u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x02\0\0\0\x03\0\x01\0\x01\0\x03\0\0\0\0\0",
-                    b"\0\0\x03\0\x04\0\x05\0\x06\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::RightContraction<Rotor<T>>
@@ -5344,19 +5472,21 @@ pub mod g3_vendored {
         type Output = Odd<T>;
         #[inline]
         fn rc(&self, rhs: &Rotor<T>) -> Odd<T> {
-            Odd::from_array(
+            Odd::from_array({
+                const TERMS: [(u16, u16, u16); 7usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x03\0\x03\0\x01\0\x01\0\0\0\0\0\x03\0\x02\0\0\0\x02\0\0\0\0\0\x03\0\x01\0\x01\0\x03\0\0\0\0\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 2u16, 4u16, 6u16, 7u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x03\0\x03\0\x01\0\x01\0\0\0\0\0\x03\0\x02\0\0\0\x02\0\0\0\0\0\x03\0\x01\0\x01\0\x03\0\0\0\0\0",
-                    b"\0\0\x02\0\x04\0\x06\0\x07\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::RightContraction<Odd<T>>
@@ -5364,19 +5494,21 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn rc(&self, rhs: &Odd<T>) -> Rotor<T> {
-            Rotor::from_array(
+            Rotor::from_array({
+                const TERMS: [(u16, u16, u16); 7usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\x03\0\x02\0\0\0\x03\0\x01\0\x01\0\x03\0\0\0\0\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 4u16, 5u16, 6u16, 7u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\x03\0\x02\0\0\0\x03\0\x01\0\x01\0\x03\0\0\0\0\0",
-                    b"\0\0\x04\0\x05\0\x06\0\x07\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::RightContraction<Multivector<T>>
@@ -5384,19 +5516,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn rc(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 14usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\x07\0\x01\0\0\0\0\0\0\0\x03\0\x06\0\x01\0\x01\0\0\0\0\0\x03\0\x05\0\0\0\x02\0\0\0\0\0\x03\0\x04\0\x01\0\x03\0\x03\0\0\0\x03\0\x02\0\x01\0\x03\0\x01\0\0\0\x03\0\0\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 4u16, 6u16, 8u16, 10u16, 11u16, 12u16, 13u16, 14u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\x07\0\x01\0\0\0\0\0\0\0\x03\0\x06\0\x01\0\x01\0\0\0\0\0\x03\0\x05\0\0\0\x02\0\0\0\0\0\x03\0\x04\0\x01\0\x03\0\x03\0\0\0\x03\0\x02\0\x01\0\x03\0\x01\0\0\0\x03\0\0\0\0\0",
-                    b"\0\0\x04\0\x06\0\x08\0\n\0\x0B\0\x0C\0\r\0\x0E\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::RightContraction<Vector<T>>
@@ -5404,19 +5540,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn rc(&self, rhs: &Vector<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                    b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0\x04\0\x01\0\0\0\x05\0\x02\0\0\0\x04\0\0\0\x01\0\x06\0\x02\0\0\0\x05\0\0\0\x01\0\x06\0\x01\0\x01\0\x07\0\x02\0\0\0\x07\0\x01\0\x01\0\x07\0\0\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 3u16, 5u16, 7u16, 9u16, 10u16, 11u16, 12u16, 12u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0\x04\0\x01\0\0\0\x05\0\x02\0\0\0\x04\0\0\0\x01\0\x06\0\x02\0\0\0\x05\0\0\0\x01\0\x06\0\x01\0\x01\0\x07\0\x02\0\0\0\x07\0\x01\0\x01\0\x07\0\0\0\0\0",
-                    b"\0\0\x03\0\x05\0\x07\0\t\0\n\0\x0B\0\x0C\0\x0C\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::RightContraction<Rotor<T>>
@@ -5424,19 +5564,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn rc(&self, rhs: &Rotor<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 14usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x04\0\x01\0\x01\0\x05\0\x02\0\x01\0\x06\0\x03\0\x01\0\x01\0\0\0\0\0\x07\0\x03\0\x01\0\x02\0\0\0\0\0\x07\0\x02\0\0\0\x03\0\0\0\0\0\x07\0\x01\0\x01\0\x04\0\0\0\0\0\x05\0\0\0\0\0\x06\0\0\0\0\0\x07\0\0\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 4u16, 6u16, 8u16, 10u16, 11u16, 12u16, 13u16, 14u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x04\0\x01\0\x01\0\x05\0\x02\0\x01\0\x06\0\x03\0\x01\0\x01\0\0\0\0\0\x07\0\x03\0\x01\0\x02\0\0\0\0\0\x07\0\x02\0\0\0\x03\0\0\0\0\0\x07\0\x01\0\x01\0\x04\0\0\0\0\0\x05\0\0\0\0\0\x06\0\0\0\0\0\x07\0\0\0\0\0",
-                    b"\0\0\x04\0\x06\0\x08\0\n\0\x0B\0\x0C\0\r\0\x0E\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::RightContraction<Odd<T>>
@@ -5444,19 +5588,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn rc(&self, rhs: &Odd<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 13usize] = ::algebra_core::kernels::unpack(
+                    b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0\x07\0\x03\0\x01\0\x04\0\x01\0\0\0\x05\0\x02\0\0\0\x04\0\0\0\x01\0\x06\0\x02\0\0\0\x05\0\0\0\x01\0\x06\0\x01\0\x01\0\x07\0\x02\0\0\0\x07\0\x01\0\x01\0\x07\0\0\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 4u16, 6u16, 8u16, 10u16, 11u16, 12u16, 13u16, 13u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0\x07\0\x03\0\x01\0\x04\0\x01\0\0\0\x05\0\x02\0\0\0\x04\0\0\0\x01\0\x06\0\x02\0\0\0\x05\0\0\0\x01\0\x06\0\x01\0\x01\0\x07\0\x02\0\0\0\x07\0\x01\0\x01\0\x07\0\0\0\0\0",
-                    b"\0\0\x04\0\x06\0\x08\0\n\0\x0B\0\x0C\0\r\0\r\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::RightContraction<Multivector<T>>
@@ -5464,19 +5612,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn rc(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 27usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\x04\0\x04\0\x01\0\x05\0\x05\0\x01\0\x06\0\x06\0\x01\0\x07\0\x07\0\x01\0\x01\0\0\0\0\0\x04\0\x02\0\0\0\x05\0\x03\0\0\0\x07\0\x06\0\x01\0\x02\0\0\0\0\0\x04\0\x01\0\x01\0\x06\0\x03\0\0\0\x07\0\x05\0\0\0\x03\0\0\0\0\0\x05\0\x01\0\x01\0\x06\0\x02\0\x01\0\x07\0\x04\0\x01\0\x04\0\0\0\0\0\x07\0\x03\0\0\0\x05\0\0\0\0\0\x07\0\x02\0\x01\0\x06\0\0\0\0\0\x07\0\x01\0\0\0\x07\0\0\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 8u16, 12u16, 16u16, 20u16, 22u16, 24u16, 26u16, 27u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\x04\0\x04\0\x01\0\x05\0\x05\0\x01\0\x06\0\x06\0\x01\0\x07\0\x07\0\x01\0\x01\0\0\0\0\0\x04\0\x02\0\0\0\x05\0\x03\0\0\0\x07\0\x06\0\x01\0\x02\0\0\0\0\0\x04\0\x01\0\x01\0\x06\0\x03\0\0\0\x07\0\x05\0\0\0\x03\0\0\0\0\0\x05\0\x01\0\x01\0\x06\0\x02\0\x01\0\x07\0\x04\0\x01\0\x04\0\0\0\0\0\x07\0\x03\0\0\0\x05\0\0\0\0\0\x07\0\x02\0\x01\0\x06\0\0\0\0\0\x07\0\x01\0\0\0\x07\0\0\0\0\0",
-                    b"\0\0\x08\0\x0C\0\x10\0\x14\0\x16\0\x18\0\x1A\0\x1B\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::ScalarProduct<Vector<T>>
@@ -5512,19 +5664,21 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn sp(&self, rhs: &Odd<T>) -> Rotor<T> {
-            Rotor::from_array(
+            Rotor::from_array({
+                const TERMS: [(u16, u16, u16); 3usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 3u16, 3u16, 3u16, 3u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0",
-                    b"\0\0\x03\0\x03\0\x03\0\x03\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::ScalarProduct<Multivector<T>>
@@ -5532,19 +5686,21 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn sp(&self, rhs: &Multivector<T>) -> Rotor<T> {
-            Rotor::from_array(
+            Rotor::from_array({
+                const TERMS: [(u16, u16, u16); 3usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 3u16, 3u16, 3u16, 3u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0",
-                    b"\0\0\x03\0\x03\0\x03\0\x03\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::ScalarProduct<Vector<T>>
@@ -5593,19 +5749,21 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn sp(&self, rhs: &Multivector<T>) -> Rotor<T> {
-            Rotor::from_array(
+            Rotor::from_array({
+                const TERMS: [(u16, u16, u16); 4usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\x03\0\x06\0\x01\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 4u16, 4u16, 4u16, 4u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\x03\0\x06\0\x01\0",
-                    b"\0\0\x04\0\x04\0\x04\0\x04\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::ScalarProduct<Vector<T>>
@@ -5613,19 +5771,21 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn sp(&self, rhs: &Vector<T>) -> Rotor<T> {
-            Rotor::from_array(
+            Rotor::from_array({
+                const TERMS: [(u16, u16, u16); 3usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 3u16, 3u16, 3u16, 3u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0",
-                    b"\0\0\x03\0\x03\0\x03\0\x03\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::ScalarProduct<Rotor<T>>
@@ -5644,19 +5804,21 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn sp(&self, rhs: &Odd<T>) -> Rotor<T> {
-            Rotor::from_array(
+            Rotor::from_array({
+                const TERMS: [(u16, u16, u16); 4usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 4u16, 4u16, 4u16, 4u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0",
-                    b"\0\0\x04\0\x04\0\x04\0\x04\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::ScalarProduct<Multivector<T>>
@@ -5664,19 +5826,21 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn sp(&self, rhs: &Multivector<T>) -> Rotor<T> {
-            Rotor::from_array(
+            Rotor::from_array({
+                const TERMS: [(u16, u16, u16); 4usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\x07\0\x01\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 4u16, 4u16, 4u16, 4u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\x07\0\x01\0",
-                    b"\0\0\x04\0\x04\0\x04\0\x04\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::ScalarProduct<Vector<T>>
@@ -5684,19 +5848,21 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn sp(&self, rhs: &Vector<T>) -> Rotor<T> {
-            Rotor::from_array(
+            Rotor::from_array({
+                const TERMS: [(u16, u16, u16); 3usize] = ::algebra_core::kernels::unpack(
+                    b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 3u16, 3u16, 3u16, 3u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0",
-                    b"\0\0\x03\0\x03\0\x03\0\x03\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::ScalarProduct<Rotor<T>>
@@ -5704,19 +5870,21 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn sp(&self, rhs: &Rotor<T>) -> Rotor<T> {
-            Rotor::from_array(
+            Rotor::from_array({
+                const TERMS: [(u16, u16, u16); 4usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x04\0\x01\0\x01\0\x05\0\x02\0\x01\0\x06\0\x03\0\x01\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 4u16, 4u16, 4u16, 4u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x04\0\x01\0\x01\0\x05\0\x02\0\x01\0\x06\0\x03\0\x01\0",
-                    b"\0\0\x04\0\x04\0\x04\0\x04\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::ScalarProduct<Odd<T>>
@@ -5724,19 +5892,21 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn sp(&self, rhs: &Odd<T>) -> Rotor<T> {
-            Rotor::from_array(
+            Rotor::from_array({
+                const TERMS: [(u16, u16, u16); 4usize] = ::algebra_core::kernels::unpack(
+                    b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0\x07\0\x03\0\x01\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 4u16, 4u16, 4u16, 4u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0\x07\0\x03\0\x01\0",
-                    b"\0\0\x04\0\x04\0\x04\0\x04\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::ScalarProduct<Multivector<T>>
@@ -5744,19 +5914,21 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn sp(&self, rhs: &Multivector<T>) -> Rotor<T> {
-            Rotor::from_array(
+            Rotor::from_array({
+                const TERMS: [(u16, u16, u16); 8usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\x04\0\x04\0\x01\0\x05\0\x05\0\x01\0\x06\0\x06\0\x01\0\x07\0\x07\0\x01\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 8u16, 8u16, 8u16, 8u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\x04\0\x04\0\x01\0\x05\0\x05\0\x01\0\x06\0\x06\0\x01\0\x07\0\x07\0\x01\0",
-                    b"\0\0\x08\0\x08\0\x08\0\x08\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::RegressiveProduct<Vector<T>>
@@ -5840,19 +6012,21 @@ pub mod g3_vendored {
         type Output = Vector<T>;
         #[inline]
         fn regressive(&self, rhs: &Odd<T>) -> Vector<T> {
-            Vector::from_array(
+            Vector::from_array({
+                const TERMS: [(u16, u16, u16); 3usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\x03\0\0\0\x01\0\x03\0\0\0\x02\0\x03\0\0\0",
+                );
+                const STARTS: [u16; 4usize] = [0u16, 1u16, 2u16, 3u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     3usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\x03\0\0\0\x01\0\x03\0\0\0\x02\0\x03\0\0\0",
-                    b"\0\0\x01\0\x02\0\x03\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitAnd<&Odd<T>> for &Vector<T> {
@@ -5884,19 +6058,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn regressive(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 6usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0\0\0\x07\0\0\0\x01\0\x07\0\0\0\x02\0\x07\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 3u16, 4u16, 5u16, 6u16, 6u16, 6u16, 6u16, 6u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0\0\0\x07\0\0\0\x01\0\x07\0\0\0\x02\0\x07\0\0\0",
-                    b"\0\0\x03\0\x04\0\x05\0\x06\0\x06\0\x06\0\x06\0\x06\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitAnd<&Multivector<T>> for &Vector<T> {
@@ -6010,19 +6188,21 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn regressive(&self, rhs: &Odd<T>) -> Rotor<T> {
-            Rotor::from_array(
+            Rotor::from_array({
+                const TERMS: [(u16, u16, u16); 7usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0\x01\0\x03\0\0\0\x02\0\x03\0\0\0\x03\0\x03\0\0\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 4u16, 5u16, 6u16, 7u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0\x01\0\x03\0\0\0\x02\0\x03\0\0\0\x03\0\x03\0\0\0",
-                    b"\0\0\x04\0\x05\0\x06\0\x07\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitAnd<&Odd<T>> for &Rotor<T> {
@@ -6054,19 +6234,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn regressive(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 13usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\x07\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0\x01\0\x05\0\0\0\x02\0\x04\0\x01\0\x01\0\x06\0\0\0\x03\0\x04\0\x01\0\x02\0\x06\0\0\0\x03\0\x05\0\x01\0\x01\0\x07\0\0\0\x02\0\x07\0\0\0\x03\0\x07\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 4u16, 6u16, 8u16, 10u16, 11u16, 12u16, 13u16, 13u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\x07\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0\x01\0\x05\0\0\0\x02\0\x04\0\x01\0\x01\0\x06\0\0\0\x03\0\x04\0\x01\0\x02\0\x06\0\0\0\x03\0\x05\0\x01\0\x01\0\x07\0\0\0\x02\0\x07\0\0\0\x03\0\x07\0\0\0",
-                    b"\0\0\x04\0\x06\0\x08\0\n\0\x0B\0\x0C\0\r\0\r\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitAnd<&Multivector<T>> for &Rotor<T> {
@@ -6098,19 +6282,21 @@ pub mod g3_vendored {
         type Output = Vector<T>;
         #[inline]
         fn regressive(&self, rhs: &Vector<T>) -> Vector<T> {
-            Vector::from_array(
+            Vector::from_array({
+                const TERMS: [(u16, u16, u16); 3usize] = ::algebra_core::kernels::unpack(
+                    b"\x03\0\0\0\0\0\x03\0\x01\0\0\0\x03\0\x02\0\0\0",
+                );
+                const STARTS: [u16; 4usize] = [0u16, 1u16, 2u16, 3u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     3usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\x03\0\0\0\0\0\x03\0\x01\0\0\0\x03\0\x02\0\0\0",
-                    b"\0\0\x01\0\x02\0\x03\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitAnd<&Vector<T>> for &Odd<T> {
@@ -6142,19 +6328,21 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn regressive(&self, rhs: &Rotor<T>) -> Rotor<T> {
-            Rotor::from_array(
+            Rotor::from_array({
+                const TERMS: [(u16, u16, u16); 7usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\x03\0\0\0\x01\0\x02\0\x01\0\x02\0\x01\0\0\0\x03\0\0\0\0\0\x03\0\x01\0\0\0\x03\0\x02\0\0\0\x03\0\x03\0\0\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 4u16, 5u16, 6u16, 7u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\x03\0\0\0\x01\0\x02\0\x01\0\x02\0\x01\0\0\0\x03\0\0\0\0\0\x03\0\x01\0\0\0\x03\0\x02\0\0\0\x03\0\x03\0\0\0",
-                    b"\0\0\x04\0\x05\0\x06\0\x07\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitAnd<&Rotor<T>> for &Odd<T> {
@@ -6186,19 +6374,21 @@ pub mod g3_vendored {
         type Output = Odd<T>;
         #[inline]
         fn regressive(&self, rhs: &Odd<T>) -> Odd<T> {
-            Odd::from_array(
+            Odd::from_array({
+                const TERMS: [(u16, u16, u16); 7usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\x03\0\0\0\x03\0\0\0\0\0\x01\0\x03\0\0\0\x03\0\x01\0\0\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\x03\0\x03\0\0\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 2u16, 4u16, 6u16, 7u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\x03\0\0\0\x03\0\0\0\0\0\x01\0\x03\0\0\0\x03\0\x01\0\0\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\x03\0\x03\0\0\0",
-                    b"\0\0\x02\0\x04\0\x06\0\x07\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitAnd<&Odd<T>> for &Odd<T> {
@@ -6230,19 +6420,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn regressive(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 14usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0\x03\0\0\0\0\0\0\0\x07\0\0\0\x03\0\x01\0\0\0\x01\0\x07\0\0\0\x03\0\x02\0\0\0\x02\0\x07\0\0\0\x03\0\x03\0\0\0\x03\0\x04\0\0\0\x03\0\x05\0\0\0\x03\0\x06\0\0\0\x03\0\x07\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 4u16, 6u16, 8u16, 10u16, 11u16, 12u16, 13u16, 14u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0\x03\0\0\0\0\0\0\0\x07\0\0\0\x03\0\x01\0\0\0\x01\0\x07\0\0\0\x03\0\x02\0\0\0\x02\0\x07\0\0\0\x03\0\x03\0\0\0\x03\0\x04\0\0\0\x03\0\x05\0\0\0\x03\0\x06\0\0\0\x03\0\x07\0\0\0",
-                    b"\0\0\x04\0\x06\0\x08\0\n\0\x0B\0\x0C\0\r\0\x0E\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitAnd<&Multivector<T>> for &Odd<T> {
@@ -6274,19 +6468,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn regressive(&self, rhs: &Vector<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 6usize] = ::algebra_core::kernels::unpack(
+                    b"\x04\0\x02\0\0\0\x05\0\x01\0\x01\0\x06\0\0\0\0\0\x07\0\0\0\0\0\x07\0\x01\0\0\0\x07\0\x02\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 3u16, 4u16, 5u16, 6u16, 6u16, 6u16, 6u16, 6u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\x04\0\x02\0\0\0\x05\0\x01\0\x01\0\x06\0\0\0\0\0\x07\0\0\0\0\0\x07\0\x01\0\0\0\x07\0\x02\0\0\0",
-                    b"\0\0\x03\0\x04\0\x05\0\x06\0\x06\0\x06\0\x06\0\x06\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitAnd<&Vector<T>> for &Multivector<T> {
@@ -6318,19 +6516,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn regressive(&self, rhs: &Rotor<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 13usize] = ::algebra_core::kernels::unpack(
+                    b"\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0\x07\0\0\0\0\0\x04\0\x02\0\0\0\x05\0\x01\0\x01\0\x04\0\x03\0\0\0\x06\0\x01\0\x01\0\x05\0\x03\0\0\0\x06\0\x02\0\x01\0\x07\0\x01\0\0\0\x07\0\x02\0\0\0\x07\0\x03\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 4u16, 6u16, 8u16, 10u16, 11u16, 12u16, 13u16, 13u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0\x07\0\0\0\0\0\x04\0\x02\0\0\0\x05\0\x01\0\x01\0\x04\0\x03\0\0\0\x06\0\x01\0\x01\0\x05\0\x03\0\0\0\x06\0\x02\0\x01\0\x07\0\x01\0\0\0\x07\0\x02\0\0\0\x07\0\x03\0\0\0",
-                    b"\0\0\x04\0\x06\0\x08\0\n\0\x0B\0\x0C\0\r\0\r\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitAnd<&Rotor<T>> for &Multivector<T> {
@@ -6362,19 +6564,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn regressive(&self, rhs: &Odd<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 14usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\x03\0\0\0\x04\0\x02\0\0\0\x05\0\x01\0\x01\0\x06\0\0\0\0\0\x01\0\x03\0\0\0\x07\0\0\0\0\0\x02\0\x03\0\0\0\x07\0\x01\0\0\0\x03\0\x03\0\0\0\x07\0\x02\0\0\0\x04\0\x03\0\0\0\x05\0\x03\0\0\0\x06\0\x03\0\0\0\x07\0\x03\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 4u16, 6u16, 8u16, 10u16, 11u16, 12u16, 13u16, 14u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\x03\0\0\0\x04\0\x02\0\0\0\x05\0\x01\0\x01\0\x06\0\0\0\0\0\x01\0\x03\0\0\0\x07\0\0\0\0\0\x02\0\x03\0\0\0\x07\0\x01\0\0\0\x03\0\x03\0\0\0\x07\0\x02\0\0\0\x04\0\x03\0\0\0\x05\0\x03\0\0\0\x06\0\x03\0\0\0\x07\0\x03\0\0\0",
-                    b"\0\0\x04\0\x06\0\x08\0\n\0\x0B\0\x0C\0\r\0\x0E\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitAnd<&Odd<T>> for &Multivector<T> {
@@ -6406,19 +6612,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn regressive(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 27usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\x07\0\0\0\x01\0\x06\0\0\0\x02\0\x05\0\x01\0\x03\0\x04\0\0\0\x04\0\x03\0\0\0\x05\0\x02\0\x01\0\x06\0\x01\0\0\0\x07\0\0\0\0\0\x01\0\x07\0\0\0\x04\0\x05\0\0\0\x05\0\x04\0\x01\0\x07\0\x01\0\0\0\x02\0\x07\0\0\0\x04\0\x06\0\0\0\x06\0\x04\0\x01\0\x07\0\x02\0\0\0\x03\0\x07\0\0\0\x05\0\x06\0\0\0\x06\0\x05\0\x01\0\x07\0\x03\0\0\0\x04\0\x07\0\0\0\x07\0\x04\0\0\0\x05\0\x07\0\0\0\x07\0\x05\0\0\0\x06\0\x07\0\0\0\x07\0\x06\0\0\0\x07\0\x07\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 8u16, 12u16, 16u16, 20u16, 22u16, 24u16, 26u16, 27u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\x07\0\0\0\x01\0\x06\0\0\0\x02\0\x05\0\x01\0\x03\0\x04\0\0\0\x04\0\x03\0\0\0\x05\0\x02\0\x01\0\x06\0\x01\0\0\0\x07\0\0\0\0\0\x01\0\x07\0\0\0\x04\0\x05\0\0\0\x05\0\x04\0\x01\0\x07\0\x01\0\0\0\x02\0\x07\0\0\0\x04\0\x06\0\0\0\x06\0\x04\0\x01\0\x07\0\x02\0\0\0\x03\0\x07\0\0\0\x05\0\x06\0\0\0\x06\0\x05\0\x01\0\x07\0\x03\0\0\0\x04\0\x07\0\0\0\x07\0\x04\0\0\0\x05\0\x07\0\0\0\x07\0\x05\0\0\0\x06\0\x07\0\0\0\x07\0\x06\0\0\0\x07\0\x07\0\0\0",
-                    b"\0\0\x08\0\x0C\0\x10\0\x14\0\x16\0\x18\0\x1A\0\x1B\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::core::ops::BitAnd<&Multivector<T>>
@@ -6491,19 +6701,21 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn commutator(&self, rhs: &Odd<T>) -> Rotor<T> {
-            Rotor::from_array(
+            Rotor::from_array({
+                const TERMS: [(u16, u16, u16); 6usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 0u16, 2u16, 4u16, 6u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0",
-                    b"\0\0\0\0\x02\0\x04\0\x06\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::CommutatorProduct<Multivector<T>>
@@ -6511,19 +6723,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn commutator(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                    b"\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\0\0\x04\0\0\0\x02\0\x06\0\x01\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\0\0\x02\0\0\0\x01\0\x01\0\x01\0\0\0\x03\0\0\0\x02\0\x01\0\x01\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 0u16, 2u16, 4u16, 6u16, 8u16, 10u16, 12u16, 12u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\0\0\x04\0\0\0\x02\0\x06\0\x01\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\0\0\x02\0\0\0\x01\0\x01\0\x01\0\0\0\x03\0\0\0\x02\0\x01\0\x01\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0",
-                    b"\0\0\0\0\x02\0\x04\0\x06\0\x08\0\n\0\x0C\0\x0C\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::CommutatorProduct<Vector<T>>
@@ -6568,19 +6784,21 @@ pub mod g3_vendored {
         type Output = Vector<T>;
         #[inline]
         fn commutator(&self, rhs: &Odd<T>) -> Vector<T> {
-            Vector::from_array(
+            Vector::from_array({
+                const TERMS: [(u16, u16, u16); 6usize] = ::algebra_core::kernels::unpack(
+                    b"\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0",
+                );
+                const STARTS: [u16; 4usize] = [0u16, 2u16, 4u16, 6u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     3usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0",
-                    b"\0\0\x02\0\x04\0\x06\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::CommutatorProduct<Multivector<T>>
@@ -6588,19 +6806,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn commutator(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                    b"\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x01\0\x01\0\x01\0\x03\0\x03\0\0\0\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0\x02\0\x06\0\x01\0\x03\0\x05\0\0\0\x01\0\x06\0\0\0\x03\0\x04\0\x01\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 0u16, 2u16, 4u16, 6u16, 8u16, 10u16, 12u16, 12u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x01\0\x01\0\x01\0\x03\0\x03\0\0\0\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0\x02\0\x06\0\x01\0\x03\0\x05\0\0\0\x01\0\x06\0\0\0\x03\0\x04\0\x01\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0",
-                    b"\0\0\0\0\x02\0\x04\0\x06\0\x08\0\n\0\x0C\0\x0C\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::CommutatorProduct<Vector<T>>
@@ -6608,19 +6830,21 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn commutator(&self, rhs: &Vector<T>) -> Rotor<T> {
-            Rotor::from_array(
+            Rotor::from_array({
+                const TERMS: [(u16, u16, u16); 6usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 0u16, 2u16, 4u16, 6u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0",
-                    b"\0\0\0\0\x02\0\x04\0\x06\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::CommutatorProduct<Rotor<T>>
@@ -6628,19 +6852,21 @@ pub mod g3_vendored {
         type Output = Vector<T>;
         #[inline]
         fn commutator(&self, rhs: &Rotor<T>) -> Vector<T> {
-            Vector::from_array(
+            Vector::from_array({
+                const TERMS: [(u16, u16, u16); 6usize] = ::algebra_core::kernels::unpack(
+                    b"\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\0\0\x01\0\0\0\x02\0\x03\0\x01\0\0\0\x02\0\0\0\x01\0\x03\0\0\0",
+                );
+                const STARTS: [u16; 4usize] = [0u16, 2u16, 4u16, 6u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     3usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\0\0\x01\0\0\0\x02\0\x03\0\x01\0\0\0\x02\0\0\0\x01\0\x03\0\0\0",
-                    b"\0\0\x02\0\x04\0\x06\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::CommutatorProduct<Odd<T>>
@@ -6648,19 +6874,21 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn commutator(&self, rhs: &Odd<T>) -> Rotor<T> {
-            Rotor::from_array(
+            Rotor::from_array({
+                const TERMS: [(u16, u16, u16); 6usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 0u16, 2u16, 4u16, 6u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0",
-                    b"\0\0\0\0\x02\0\x04\0\x06\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::CommutatorProduct<Multivector<T>>
@@ -6668,19 +6896,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn commutator(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                    b"\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\0\0\x04\0\0\0\x02\0\x06\0\x01\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\0\0\x02\0\0\0\x01\0\x01\0\x01\0\0\0\x03\0\0\0\x02\0\x01\0\x01\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 0u16, 2u16, 4u16, 6u16, 8u16, 10u16, 12u16, 12u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\0\0\x04\0\0\0\x02\0\x06\0\x01\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\0\0\x02\0\0\0\x01\0\x01\0\x01\0\0\0\x03\0\0\0\x02\0\x01\0\x01\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0",
-                    b"\0\0\0\0\x02\0\x04\0\x06\0\x08\0\n\0\x0C\0\x0C\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::CommutatorProduct<Vector<T>>
@@ -6688,19 +6920,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn commutator(&self, rhs: &Vector<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                    b"\x04\0\x01\0\0\0\x05\0\x02\0\0\0\x04\0\0\0\x01\0\x06\0\x02\0\0\0\x05\0\0\0\x01\0\x06\0\x01\0\x01\0\x01\0\x01\0\0\0\x02\0\0\0\x01\0\x01\0\x02\0\0\0\x03\0\0\0\x01\0\x02\0\x02\0\0\0\x03\0\x01\0\x01\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 0u16, 2u16, 4u16, 6u16, 8u16, 10u16, 12u16, 12u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\x04\0\x01\0\0\0\x05\0\x02\0\0\0\x04\0\0\0\x01\0\x06\0\x02\0\0\0\x05\0\0\0\x01\0\x06\0\x01\0\x01\0\x01\0\x01\0\0\0\x02\0\0\0\x01\0\x01\0\x02\0\0\0\x03\0\0\0\x01\0\x02\0\x02\0\0\0\x03\0\x01\0\x01\0",
-                    b"\0\0\0\0\x02\0\x04\0\x06\0\x08\0\n\0\x0C\0\x0C\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::CommutatorProduct<Rotor<T>>
@@ -6708,19 +6944,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn commutator(&self, rhs: &Rotor<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                    b"\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0\x01\0\x01\0\0\0\x03\0\x03\0\x01\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x05\0\x03\0\x01\0\x06\0\x02\0\0\0\x04\0\x03\0\0\0\x06\0\x01\0\x01\0\x04\0\x02\0\x01\0\x05\0\x01\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 0u16, 2u16, 4u16, 6u16, 8u16, 10u16, 12u16, 12u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0\x01\0\x01\0\0\0\x03\0\x03\0\x01\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x05\0\x03\0\x01\0\x06\0\x02\0\0\0\x04\0\x03\0\0\0\x06\0\x01\0\x01\0\x04\0\x02\0\x01\0\x05\0\x01\0\0\0",
-                    b"\0\0\0\0\x02\0\x04\0\x06\0\x08\0\n\0\x0C\0\x0C\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::CommutatorProduct<Odd<T>>
@@ -6728,19 +6968,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn commutator(&self, rhs: &Odd<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                    b"\x04\0\x01\0\0\0\x05\0\x02\0\0\0\x04\0\0\0\x01\0\x06\0\x02\0\0\0\x05\0\0\0\x01\0\x06\0\x01\0\x01\0\x01\0\x01\0\0\0\x02\0\0\0\x01\0\x01\0\x02\0\0\0\x03\0\0\0\x01\0\x02\0\x02\0\0\0\x03\0\x01\0\x01\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 0u16, 2u16, 4u16, 6u16, 8u16, 10u16, 12u16, 12u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\x04\0\x01\0\0\0\x05\0\x02\0\0\0\x04\0\0\0\x01\0\x06\0\x02\0\0\0\x05\0\0\0\x01\0\x06\0\x01\0\x01\0\x01\0\x01\0\0\0\x02\0\0\0\x01\0\x01\0\x02\0\0\0\x03\0\0\0\x01\0\x02\0\x02\0\0\0\x03\0\x01\0\x01\0",
-                    b"\0\0\0\0\x02\0\x04\0\x06\0\x08\0\n\0\x0C\0\x0C\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::CommutatorProduct<Multivector<T>>
@@ -6748,19 +6992,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn commutator(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 24usize] = ::algebra_core::kernels::unpack(
+                    b"\x02\0\x04\0\x01\0\x03\0\x05\0\x01\0\x04\0\x02\0\0\0\x05\0\x03\0\0\0\x01\0\x04\0\0\0\x03\0\x06\0\x01\0\x04\0\x01\0\x01\0\x06\0\x03\0\0\0\x01\0\x05\0\0\0\x02\0\x06\0\0\0\x05\0\x01\0\x01\0\x06\0\x02\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x05\0\x06\0\x01\0\x06\0\x05\0\0\0\x01\0\x03\0\0\0\x03\0\x01\0\x01\0\x04\0\x06\0\0\0\x06\0\x04\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\x01\0\x04\0\x05\0\x01\0\x05\0\x04\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 0u16, 4u16, 8u16, 12u16, 16u16, 20u16, 24u16, 24u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\x02\0\x04\0\x01\0\x03\0\x05\0\x01\0\x04\0\x02\0\0\0\x05\0\x03\0\0\0\x01\0\x04\0\0\0\x03\0\x06\0\x01\0\x04\0\x01\0\x01\0\x06\0\x03\0\0\0\x01\0\x05\0\0\0\x02\0\x06\0\0\0\x05\0\x01\0\x01\0\x06\0\x02\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x05\0\x06\0\x01\0\x06\0\x05\0\0\0\x01\0\x03\0\0\0\x03\0\x01\0\x01\0\x04\0\x06\0\0\0\x06\0\x04\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\x01\0\x04\0\x05\0\x01\0\x05\0\x04\0\0\0",
-                    b"\0\0\0\0\x04\0\x08\0\x0C\0\x10\0\x14\0\x18\0\x18\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::AnticommutatorProduct<Vector<T>>
@@ -6803,19 +7051,21 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn anticommutator(&self, rhs: &Odd<T>) -> Rotor<T> {
-            Rotor::from_array(
+            Rotor::from_array({
+                const TERMS: [(u16, u16, u16); 6usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x02\0\x03\0\0\0\x01\0\x03\0\x01\0\0\0\x03\0\0\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 3u16, 4u16, 5u16, 6u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x02\0\x03\0\0\0\x01\0\x03\0\x01\0\0\0\x03\0\0\0",
-                    b"\0\0\x03\0\x04\0\x05\0\x06\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -6824,19 +7074,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn anticommutator(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\0\0\x02\0\x07\0\0\0\x01\0\x07\0\x01\0\0\0\x07\0\0\0\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 3u16, 4u16, 5u16, 6u16, 7u16, 8u16, 9u16, 12u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\0\0\x02\0\x07\0\0\0\x01\0\x07\0\x01\0\0\0\x07\0\0\0\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0",
-                    b"\0\0\x03\0\x04\0\x05\0\x06\0\x07\0\x08\0\t\0\x0C\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::AnticommutatorProduct<Vector<T>>
@@ -6886,19 +7140,21 @@ pub mod g3_vendored {
         type Output = Odd<T>;
         #[inline]
         fn anticommutator(&self, rhs: &Odd<T>) -> Odd<T> {
-            Odd::from_array(
+            Odd::from_array({
+                const TERMS: [(u16, u16, u16); 10usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x02\0\x03\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 2u16, 4u16, 6u16, 10u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x02\0\x03\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
-                    b"\0\0\x02\0\x04\0\x06\0\n\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -6907,19 +7163,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn anticommutator(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 20usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\x03\0\x06\0\x01\0\0\0\x01\0\0\0\x03\0\x07\0\x01\0\0\0\x02\0\0\0\x02\0\x07\0\0\0\0\0\x03\0\0\0\x01\0\x07\0\x01\0\0\0\x04\0\0\0\x01\0\0\0\0\0\0\0\x05\0\0\0\x02\0\0\0\0\0\0\0\x06\0\0\0\x03\0\0\0\0\0\0\0\x07\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 4u16, 6u16, 8u16, 10u16, 12u16, 14u16, 16u16, 20u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\x03\0\x06\0\x01\0\0\0\x01\0\0\0\x03\0\x07\0\x01\0\0\0\x02\0\0\0\x02\0\x07\0\0\0\0\0\x03\0\0\0\x01\0\x07\0\x01\0\0\0\x04\0\0\0\x01\0\0\0\0\0\0\0\x05\0\0\0\x02\0\0\0\0\0\0\0\x06\0\0\0\x03\0\0\0\0\0\0\0\x07\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0",
-                    b"\0\0\x04\0\x06\0\x08\0\n\0\x0C\0\x0E\0\x10\0\x14\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::AnticommutatorProduct<Vector<T>>
@@ -6927,19 +7187,21 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn anticommutator(&self, rhs: &Vector<T>) -> Rotor<T> {
-            Rotor::from_array(
+            Rotor::from_array({
+                const TERMS: [(u16, u16, u16); 6usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x02\0\0\0\x03\0\x01\0\x01\0\x03\0\0\0\0\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 3u16, 4u16, 5u16, 6u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x02\0\0\0\x03\0\x01\0\x01\0\x03\0\0\0\0\0",
-                    b"\0\0\x03\0\x04\0\x05\0\x06\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::AnticommutatorProduct<Rotor<T>>
@@ -6947,19 +7209,21 @@ pub mod g3_vendored {
         type Output = Odd<T>;
         #[inline]
         fn anticommutator(&self, rhs: &Rotor<T>) -> Odd<T> {
-            Odd::from_array(
+            Odd::from_array({
+                const TERMS: [(u16, u16, u16); 10usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x03\0\x03\0\x01\0\x01\0\0\0\0\0\x03\0\x02\0\0\0\x02\0\0\0\0\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\x01\0\x02\0\x01\0\0\0\x03\0\0\0\0\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 2u16, 4u16, 6u16, 10u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x03\0\x03\0\x01\0\x01\0\0\0\0\0\x03\0\x02\0\0\0\x02\0\0\0\0\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\x01\0\x02\0\x01\0\0\0\x03\0\0\0\0\0",
-                    b"\0\0\x02\0\x04\0\x06\0\n\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::AnticommutatorProduct<Odd<T>>
@@ -6967,19 +7231,21 @@ pub mod g3_vendored {
         type Output = Rotor<T>;
         #[inline]
         fn anticommutator(&self, rhs: &Odd<T>) -> Rotor<T> {
-            Rotor::from_array(
+            Rotor::from_array({
+                const TERMS: [(u16, u16, u16); 10usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\x01\0\x03\0\x01\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x03\0\0\0\0\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 4u16, 6u16, 8u16, 10u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\x01\0\x03\0\x01\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x03\0\0\0\0\0",
-                    b"\0\0\x04\0\x06\0\x08\0\n\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -6988,19 +7254,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn anticommutator(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 20usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\x07\0\x01\0\0\0\0\0\0\0\x03\0\x06\0\x01\0\x01\0\0\0\0\0\x03\0\x05\0\0\0\x02\0\0\0\0\0\x03\0\x04\0\x01\0\x02\0\x07\0\0\0\x03\0\x03\0\0\0\x01\0\x07\0\x01\0\x03\0\x02\0\x01\0\0\0\x07\0\0\0\x03\0\x01\0\0\0\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0\x03\0\0\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 4u16, 6u16, 8u16, 10u16, 12u16, 14u16, 16u16, 20u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\x07\0\x01\0\0\0\0\0\0\0\x03\0\x06\0\x01\0\x01\0\0\0\0\0\x03\0\x05\0\0\0\x02\0\0\0\0\0\x03\0\x04\0\x01\0\x02\0\x07\0\0\0\x03\0\x03\0\0\0\x01\0\x07\0\x01\0\x03\0\x02\0\x01\0\0\0\x07\0\0\0\x03\0\x01\0\0\0\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0\x03\0\0\0\0\0",
-                    b"\0\0\x04\0\x06\0\x08\0\n\0\x0C\0\x0E\0\x10\0\x14\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::AnticommutatorProduct<Vector<T>>
@@ -7008,19 +7278,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn anticommutator(&self, rhs: &Vector<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                    b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0\0\0\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\x07\0\x02\0\0\0\x07\0\x01\0\x01\0\x07\0\0\0\0\0\x04\0\x02\0\0\0\x05\0\x01\0\x01\0\x06\0\0\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 3u16, 4u16, 5u16, 6u16, 7u16, 8u16, 9u16, 12u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0\0\0\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\x07\0\x02\0\0\0\x07\0\x01\0\x01\0\x07\0\0\0\0\0\x04\0\x02\0\0\0\x05\0\x01\0\x01\0\x06\0\0\0\0\0",
-                    b"\0\0\x03\0\x04\0\x05\0\x06\0\x07\0\x08\0\t\0\x0C\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::AnticommutatorProduct<Rotor<T>>
@@ -7028,19 +7302,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn anticommutator(&self, rhs: &Rotor<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 20usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x04\0\x01\0\x01\0\x05\0\x02\0\x01\0\x06\0\x03\0\x01\0\x01\0\0\0\0\0\x07\0\x03\0\x01\0\x02\0\0\0\0\0\x07\0\x02\0\0\0\x03\0\0\0\0\0\x07\0\x01\0\x01\0\0\0\x01\0\0\0\x04\0\0\0\0\0\0\0\x02\0\0\0\x05\0\0\0\0\0\0\0\x03\0\0\0\x06\0\0\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0\x07\0\0\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 4u16, 6u16, 8u16, 10u16, 12u16, 14u16, 16u16, 20u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x04\0\x01\0\x01\0\x05\0\x02\0\x01\0\x06\0\x03\0\x01\0\x01\0\0\0\0\0\x07\0\x03\0\x01\0\x02\0\0\0\0\0\x07\0\x02\0\0\0\x03\0\0\0\0\0\x07\0\x01\0\x01\0\0\0\x01\0\0\0\x04\0\0\0\0\0\0\0\x02\0\0\0\x05\0\0\0\0\0\0\0\x03\0\0\0\x06\0\0\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0\x07\0\0\0\0\0",
-                    b"\0\0\x04\0\x06\0\x08\0\n\0\x0C\0\x0E\0\x10\0\x14\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::AnticommutatorProduct<Odd<T>>
@@ -7048,19 +7326,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn anticommutator(&self, rhs: &Odd<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 20usize] = ::algebra_core::kernels::unpack(
+                    b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0\x07\0\x03\0\x01\0\0\0\0\0\0\0\x06\0\x03\0\x01\0\0\0\x01\0\0\0\x05\0\x03\0\0\0\0\0\x02\0\0\0\x04\0\x03\0\x01\0\x03\0\x03\0\0\0\x07\0\x02\0\0\0\x02\0\x03\0\x01\0\x07\0\x01\0\x01\0\x01\0\x03\0\0\0\x07\0\0\0\0\0\0\0\x03\0\0\0\x04\0\x02\0\0\0\x05\0\x01\0\x01\0\x06\0\0\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 4u16, 6u16, 8u16, 10u16, 12u16, 14u16, 16u16, 20u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0\x07\0\x03\0\x01\0\0\0\0\0\0\0\x06\0\x03\0\x01\0\0\0\x01\0\0\0\x05\0\x03\0\0\0\0\0\x02\0\0\0\x04\0\x03\0\x01\0\x03\0\x03\0\0\0\x07\0\x02\0\0\0\x02\0\x03\0\x01\0\x07\0\x01\0\x01\0\x01\0\x03\0\0\0\x07\0\0\0\0\0\0\0\x03\0\0\0\x04\0\x02\0\0\0\x05\0\x01\0\x01\0\x06\0\0\0\0\0",
-                    b"\0\0\x04\0\x06\0\x08\0\n\0\x0C\0\x0E\0\x10\0\x14\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -7069,19 +7351,23 @@ pub mod g3_vendored {
         type Output = Multivector<T>;
         #[inline]
         fn anticommutator(&self, rhs: &Multivector<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 40usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\x04\0\x04\0\x01\0\x05\0\x05\0\x01\0\x06\0\x06\0\x01\0\x07\0\x07\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x06\0\x07\0\x01\0\x07\0\x06\0\x01\0\0\0\x02\0\0\0\x02\0\0\0\0\0\x05\0\x07\0\0\0\x07\0\x05\0\0\0\0\0\x03\0\0\0\x03\0\0\0\0\0\x04\0\x07\0\x01\0\x07\0\x04\0\x01\0\0\0\x04\0\0\0\x03\0\x07\0\0\0\x04\0\0\0\0\0\x07\0\x03\0\0\0\0\0\x05\0\0\0\x02\0\x07\0\x01\0\x05\0\0\0\0\0\x07\0\x02\0\x01\0\0\0\x06\0\0\0\x01\0\x07\0\0\0\x06\0\0\0\0\0\x07\0\x01\0\0\0\0\0\x07\0\0\0\x01\0\x06\0\0\0\x02\0\x05\0\x01\0\x03\0\x04\0\0\0\x04\0\x03\0\0\0\x05\0\x02\0\x01\0\x06\0\x01\0\0\0\x07\0\0\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 8u16, 12u16, 16u16, 20u16, 24u16, 28u16, 32u16, 40u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\x04\0\x04\0\x01\0\x05\0\x05\0\x01\0\x06\0\x06\0\x01\0\x07\0\x07\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x06\0\x07\0\x01\0\x07\0\x06\0\x01\0\0\0\x02\0\0\0\x02\0\0\0\0\0\x05\0\x07\0\0\0\x07\0\x05\0\0\0\0\0\x03\0\0\0\x03\0\0\0\0\0\x04\0\x07\0\x01\0\x07\0\x04\0\x01\0\0\0\x04\0\0\0\x03\0\x07\0\0\0\x04\0\0\0\0\0\x07\0\x03\0\0\0\0\0\x05\0\0\0\x02\0\x07\0\x01\0\x05\0\0\0\0\0\x07\0\x02\0\x01\0\0\0\x06\0\0\0\x01\0\x07\0\0\0\x06\0\0\0\0\0\x07\0\x01\0\0\0\0\0\x07\0\0\0\x01\0\x06\0\0\0\x02\0\x05\0\x01\0\x03\0\x04\0\0\0\x04\0\x03\0\0\0\x05\0\x02\0\x01\0\x06\0\x01\0\0\0\x07\0\0\0\0\0",
-                    b"\0\0\x08\0\x0C\0\x10\0\x14\0\x18\0\x1C\0 \0(\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -7090,19 +7376,23 @@ pub mod g3_vendored {
     for Vector<T> {
         #[inline]
         fn gp_into(&self, rhs: &Vector<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 9usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 3u16, 3u16, 3u16, 3u16, 5u16, 7u16, 9u16, 9u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0",
-                    b"\0\0\x03\0\x03\0\x03\0\x03\0\x05\0\x07\0\t\0\t\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -7131,19 +7421,23 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Rotor<T>, Multivector<T>> for Vector<T> {
         #[inline]
         fn gp_into(&self, rhs: &Rotor<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x03\0\x01\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\0\0\0\0\x03\0\0\0\x01\0\x02\0\x01\0\x02\0\x01\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 0u16, 3u16, 6u16, 9u16, 9u16, 9u16, 9u16, 12u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x03\0\x01\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\0\0\0\0\x03\0\0\0\x01\0\x02\0\x01\0\x02\0\x01\0\0\0",
-                    b"\0\0\0\0\x03\0\x06\0\t\0\t\0\t\0\t\0\x0C\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -7151,19 +7445,23 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Odd<T>, Multivector<T>> for Vector<T> {
         #[inline]
         fn gp_into(&self, rhs: &Odd<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 3u16, 3u16, 3u16, 3u16, 6u16, 9u16, 12u16, 12u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0",
-                    b"\0\0\x03\0\x03\0\x03\0\x03\0\x06\0\t\0\x0C\0\x0C\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -7172,19 +7470,21 @@ pub mod g3_vendored {
     for Vector<T> {
         #[inline]
         fn gp_into(&self, rhs: &Multivector<T>) -> Vector<T> {
-            Vector::from_array(
+            Vector::from_array({
+                const TERMS: [(u16, u16, u16); 9usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\0\0\x04\0\0\0\x01\0\0\0\0\0\x02\0\x06\0\x01\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\x02\0\0\0\0\0",
+                );
+                const STARTS: [u16; 4usize] = [0u16, 3u16, 6u16, 9u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     3usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\0\0\x04\0\0\0\x01\0\0\0\0\0\x02\0\x06\0\x01\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\x02\0\0\0\0\0",
-                    b"\0\0\x03\0\x06\0\t\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -7192,19 +7492,21 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Multivector<T>, Rotor<T>> for Vector<T> {
         #[inline]
         fn gp_into(&self, rhs: &Multivector<T>) -> Rotor<T> {
-            Rotor::from_array(
+            Rotor::from_array({
+                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\0\0\x02\0\0\0\x01\0\x01\0\x01\0\x02\0\x07\0\0\0\0\0\x03\0\0\0\x01\0\x07\0\x01\0\x02\0\x01\0\x01\0\0\0\x07\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 3u16, 6u16, 9u16, 12u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\0\0\x02\0\0\0\x01\0\x01\0\x01\0\x02\0\x07\0\0\0\0\0\x03\0\0\0\x01\0\x07\0\x01\0\x02\0\x01\0\x01\0\0\0\x07\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0",
-                    b"\0\0\x03\0\x06\0\t\0\x0C\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -7212,19 +7514,21 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Multivector<T>, Odd<T>> for Vector<T> {
         #[inline]
         fn gp_into(&self, rhs: &Multivector<T>) -> Odd<T> {
-            Odd::from_array(
+            Odd::from_array({
+                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\0\0\x04\0\0\0\x01\0\0\0\0\0\x02\0\x06\0\x01\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\x02\0\0\0\0\0\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 3u16, 6u16, 9u16, 12u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\0\0\x04\0\0\0\x01\0\0\0\0\0\x02\0\x06\0\x01\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\x02\0\0\0\0\0\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0",
-                    b"\0\0\x03\0\x06\0\t\0\x0C\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -7253,19 +7557,23 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Vector<T>, Multivector<T>> for Rotor<T> {
         #[inline]
         fn gp_into(&self, rhs: &Vector<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 0u16, 3u16, 6u16, 9u16, 9u16, 9u16, 9u16, 12u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
-                    b"\0\0\0\0\x03\0\x06\0\t\0\t\0\t\0\t\0\x0C\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -7273,19 +7581,23 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Rotor<T>, Multivector<T>> for Rotor<T> {
         #[inline]
         fn gp_into(&self, rhs: &Rotor<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x03\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\0\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\x01\0\x02\0\x01\0\0\0\x03\0\0\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 4u16, 4u16, 4u16, 4u16, 8u16, 12u16, 16u16, 16u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x03\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\0\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\x01\0\x02\0\x01\0\0\0\x03\0\0\0\0\0",
-                    b"\0\0\x04\0\x04\0\x04\0\x04\0\x08\0\x0C\0\x10\0\x10\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -7293,19 +7605,21 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Odd<T>, Vector<T>> for Rotor<T> {
         #[inline]
         fn gp_into(&self, rhs: &Odd<T>) -> Vector<T> {
-            Vector::from_array(
+            Vector::from_array({
+                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0",
+                );
+                const STARTS: [u16; 4usize] = [0u16, 4u16, 8u16, 12u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     3usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0",
-                    b"\0\0\x04\0\x08\0\x0C\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -7313,19 +7627,23 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Odd<T>, Multivector<T>> for Rotor<T> {
         #[inline]
         fn gp_into(&self, rhs: &Odd<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 0u16, 4u16, 8u16, 12u16, 12u16, 12u16, 12u16, 16u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
-                    b"\0\0\0\0\x04\0\x08\0\x0C\0\x0C\0\x0C\0\x0C\0\x10\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -7333,19 +7651,21 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Multivector<T>, Vector<T>> for Rotor<T> {
         #[inline]
         fn gp_into(&self, rhs: &Multivector<T>) -> Vector<T> {
-            Vector::from_array(
+            Vector::from_array({
+                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\x07\0\x01\0\0\0\x02\0\0\0\x01\0\x01\0\x01\0\x02\0\x07\0\0\0\x03\0\x03\0\0\0\0\0\x03\0\0\0\x01\0\x07\0\x01\0\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0",
+                );
+                const STARTS: [u16; 4usize] = [0u16, 4u16, 8u16, 12u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     3usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\x07\0\x01\0\0\0\x02\0\0\0\x01\0\x01\0\x01\0\x02\0\x07\0\0\0\x03\0\x03\0\0\0\0\0\x03\0\0\0\x01\0\x07\0\x01\0\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0",
-                    b"\0\0\x04\0\x08\0\x0C\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -7353,19 +7673,21 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Multivector<T>, Rotor<T>> for Rotor<T> {
         #[inline]
         fn gp_into(&self, rhs: &Multivector<T>) -> Rotor<T> {
-            Rotor::from_array(
+            Rotor::from_array({
+                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\x03\0\x06\0\x01\0\0\0\x04\0\0\0\x01\0\0\0\0\0\x02\0\x06\0\x01\0\x03\0\x05\0\0\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\x02\0\0\0\0\0\x03\0\x04\0\x01\0\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0\x03\0\0\0\0\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\x03\0\x06\0\x01\0\0\0\x04\0\0\0\x01\0\0\0\0\0\x02\0\x06\0\x01\0\x03\0\x05\0\0\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\x02\0\0\0\0\0\x03\0\x04\0\x01\0\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0\x03\0\0\0\0\0",
-                    b"\0\0\x04\0\x08\0\x0C\0\x10\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -7373,19 +7695,21 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Multivector<T>, Odd<T>> for Rotor<T> {
         #[inline]
         fn gp_into(&self, rhs: &Multivector<T>) -> Odd<T> {
-            Odd::from_array(
+            Odd::from_array({
+                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\x07\0\x01\0\0\0\x02\0\0\0\x01\0\x01\0\x01\0\x02\0\x07\0\0\0\x03\0\x03\0\0\0\0\0\x03\0\0\0\x01\0\x07\0\x01\0\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0\0\0\x07\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\x07\0\x01\0\0\0\x02\0\0\0\x01\0\x01\0\x01\0\x02\0\x07\0\0\0\x03\0\x03\0\0\0\0\0\x03\0\0\0\x01\0\x07\0\x01\0\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0\0\0\x07\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0",
-                    b"\0\0\x04\0\x08\0\x0C\0\x10\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -7393,19 +7717,23 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Vector<T>, Multivector<T>> for Odd<T> {
         #[inline]
         fn gp_into(&self, rhs: &Vector<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 3u16, 3u16, 3u16, 3u16, 6u16, 9u16, 12u16, 12u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
-                    b"\0\0\x03\0\x03\0\x03\0\x03\0\x06\0\t\0\x0C\0\x0C\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -7413,19 +7741,21 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Rotor<T>, Vector<T>> for Odd<T> {
         #[inline]
         fn gp_into(&self, rhs: &Rotor<T>) -> Vector<T> {
-            Vector::from_array(
+            Vector::from_array({
+                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x03\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\0\0\x03\0\x01\0\x01\0",
+                );
+                const STARTS: [u16; 4usize] = [0u16, 4u16, 8u16, 12u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     3usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x03\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\0\0\x03\0\x01\0\x01\0",
-                    b"\0\0\x04\0\x08\0\x0C\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -7433,19 +7763,23 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Rotor<T>, Multivector<T>> for Odd<T> {
         #[inline]
         fn gp_into(&self, rhs: &Rotor<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x03\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\0\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\x01\0\x02\0\x01\0\0\0\x03\0\0\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 0u16, 4u16, 8u16, 12u16, 12u16, 12u16, 12u16, 16u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x03\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\0\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\x01\0\x02\0\x01\0\0\0\x03\0\0\0\0\0",
-                    b"\0\0\0\0\x04\0\x08\0\x0C\0\x0C\0\x0C\0\x0C\0\x10\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -7453,19 +7787,23 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Odd<T>, Multivector<T>> for Odd<T> {
         #[inline]
         fn gp_into(&self, rhs: &Odd<T>) -> Multivector<T> {
-            Multivector::from_array(
+            Multivector::from_array({
+                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
+                );
+                const STARTS: [u16; 9usize] = [
+                    0u16, 4u16, 4u16, 4u16, 4u16, 8u16, 12u16, 16u16, 16u16,
+                ];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     8usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
-                    b"\0\0\x04\0\x04\0\x04\0\x04\0\x08\0\x0C\0\x10\0\x10\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -7473,19 +7811,21 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Multivector<T>, Vector<T>> for Odd<T> {
         #[inline]
         fn gp_into(&self, rhs: &Multivector<T>) -> Vector<T> {
-            Vector::from_array(
+            Vector::from_array({
+                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\x03\0\x06\0\x01\0\0\0\x04\0\0\0\x01\0\0\0\0\0\x02\0\x06\0\x01\0\x03\0\x05\0\0\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\x02\0\0\0\0\0\x03\0\x04\0\x01\0",
+                );
+                const STARTS: [u16; 4usize] = [0u16, 4u16, 8u16, 12u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     3usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\x03\0\x06\0\x01\0\0\0\x04\0\0\0\x01\0\0\0\0\0\x02\0\x06\0\x01\0\x03\0\x05\0\0\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\x02\0\0\0\0\0\x03\0\x04\0\x01\0",
-                    b"\0\0\x04\0\x08\0\x0C\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -7493,19 +7833,21 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Multivector<T>, Rotor<T>> for Odd<T> {
         #[inline]
         fn gp_into(&self, rhs: &Multivector<T>) -> Rotor<T> {
-            Rotor::from_array(
+            Rotor::from_array({
+                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\x07\0\x01\0\0\0\x02\0\0\0\x01\0\x01\0\x01\0\x02\0\x07\0\0\0\x03\0\x03\0\0\0\0\0\x03\0\0\0\x01\0\x07\0\x01\0\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0\0\0\x07\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\x07\0\x01\0\0\0\x02\0\0\0\x01\0\x01\0\x01\0\x02\0\x07\0\0\0\x03\0\x03\0\0\0\0\0\x03\0\0\0\x01\0\x07\0\x01\0\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0\0\0\x07\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0",
-                    b"\0\0\x04\0\x08\0\x0C\0\x10\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -7513,19 +7855,21 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Multivector<T>, Odd<T>> for Odd<T> {
         #[inline]
         fn gp_into(&self, rhs: &Multivector<T>) -> Odd<T> {
-            Odd::from_array(
+            Odd::from_array({
+                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\x03\0\x06\0\x01\0\0\0\x04\0\0\0\x01\0\0\0\0\0\x02\0\x06\0\x01\0\x03\0\x05\0\0\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\x02\0\0\0\0\0\x03\0\x04\0\x01\0\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0\x03\0\0\0\0\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\x03\0\x06\0\x01\0\0\0\x04\0\0\0\x01\0\0\0\0\0\x02\0\x06\0\x01\0\x03\0\x05\0\0\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\x02\0\0\0\0\0\x03\0\x04\0\x01\0\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0\x03\0\0\0\0\0",
-                    b"\0\0\x04\0\x08\0\x0C\0\x10\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -7534,19 +7878,21 @@ pub mod g3_vendored {
     for Multivector<T> {
         #[inline]
         fn gp_into(&self, rhs: &Vector<T>) -> Vector<T> {
-            Vector::from_array(
+            Vector::from_array({
+                const TERMS: [(u16, u16, u16); 9usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x04\0\x01\0\0\0\x05\0\x02\0\0\0\0\0\x01\0\0\0\x04\0\0\0\x01\0\x06\0\x02\0\0\0\0\0\x02\0\0\0\x05\0\0\0\x01\0\x06\0\x01\0\x01\0",
+                );
+                const STARTS: [u16; 4usize] = [0u16, 3u16, 6u16, 9u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     3usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x04\0\x01\0\0\0\x05\0\x02\0\0\0\0\0\x01\0\0\0\x04\0\0\0\x01\0\x06\0\x02\0\0\0\0\0\x02\0\0\0\x05\0\0\0\x01\0\x06\0\x01\0\x01\0",
-                    b"\0\0\x03\0\x06\0\t\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -7554,19 +7900,21 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Vector<T>, Rotor<T>> for Multivector<T> {
         #[inline]
         fn gp_into(&self, rhs: &Vector<T>) -> Rotor<T> {
-            Rotor::from_array(
+            Rotor::from_array({
+                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                    b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0\x01\0\x01\0\0\0\x02\0\0\0\x01\0\x07\0\x02\0\0\0\x01\0\x02\0\0\0\x03\0\0\0\x01\0\x07\0\x01\0\x01\0\x02\0\x02\0\0\0\x03\0\x01\0\x01\0\x07\0\0\0\0\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 3u16, 6u16, 9u16, 12u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0\x01\0\x01\0\0\0\x02\0\0\0\x01\0\x07\0\x02\0\0\0\x01\0\x02\0\0\0\x03\0\0\0\x01\0\x07\0\x01\0\x01\0\x02\0\x02\0\0\0\x03\0\x01\0\x01\0\x07\0\0\0\0\0",
-                    b"\0\0\x03\0\x06\0\t\0\x0C\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -7574,19 +7922,21 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Vector<T>, Odd<T>> for Multivector<T> {
         #[inline]
         fn gp_into(&self, rhs: &Vector<T>) -> Odd<T> {
-            Odd::from_array(
+            Odd::from_array({
+                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x04\0\x01\0\0\0\x05\0\x02\0\0\0\0\0\x01\0\0\0\x04\0\0\0\x01\0\x06\0\x02\0\0\0\0\0\x02\0\0\0\x05\0\0\0\x01\0\x06\0\x01\0\x01\0\x04\0\x02\0\0\0\x05\0\x01\0\x01\0\x06\0\0\0\0\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 3u16, 6u16, 9u16, 12u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x04\0\x01\0\0\0\x05\0\x02\0\0\0\0\0\x01\0\0\0\x04\0\0\0\x01\0\x06\0\x02\0\0\0\0\0\x02\0\0\0\x05\0\0\0\x01\0\x06\0\x01\0\x01\0\x04\0\x02\0\0\0\x05\0\x01\0\x01\0\x06\0\0\0\0\0",
-                    b"\0\0\x03\0\x06\0\t\0\x0C\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -7594,19 +7944,21 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Rotor<T>, Vector<T>> for Multivector<T> {
         #[inline]
         fn gp_into(&self, rhs: &Rotor<T>) -> Vector<T> {
-            Vector::from_array(
+            Vector::from_array({
+                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                    b"\x01\0\0\0\0\0\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0\x07\0\x03\0\x01\0\x01\0\x01\0\0\0\x02\0\0\0\0\0\x03\0\x03\0\x01\0\x07\0\x02\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\0\0\0\0\x07\0\x01\0\x01\0",
+                );
+                const STARTS: [u16; 4usize] = [0u16, 4u16, 8u16, 12u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     3usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\x01\0\0\0\0\0\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0\x07\0\x03\0\x01\0\x01\0\x01\0\0\0\x02\0\0\0\0\0\x03\0\x03\0\x01\0\x07\0\x02\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\0\0\0\0\x07\0\x01\0\x01\0",
-                    b"\0\0\x04\0\x08\0\x0C\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -7614,19 +7966,21 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Rotor<T>, Rotor<T>> for Multivector<T> {
         #[inline]
         fn gp_into(&self, rhs: &Rotor<T>) -> Rotor<T> {
-            Rotor::from_array(
+            Rotor::from_array({
+                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x04\0\x01\0\x01\0\x05\0\x02\0\x01\0\x06\0\x03\0\x01\0\0\0\x01\0\0\0\x04\0\0\0\0\0\x05\0\x03\0\x01\0\x06\0\x02\0\0\0\0\0\x02\0\0\0\x04\0\x03\0\0\0\x05\0\0\0\0\0\x06\0\x01\0\x01\0\0\0\x03\0\0\0\x04\0\x02\0\x01\0\x05\0\x01\0\0\0\x06\0\0\0\0\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x04\0\x01\0\x01\0\x05\0\x02\0\x01\0\x06\0\x03\0\x01\0\0\0\x01\0\0\0\x04\0\0\0\0\0\x05\0\x03\0\x01\0\x06\0\x02\0\0\0\0\0\x02\0\0\0\x04\0\x03\0\0\0\x05\0\0\0\0\0\x06\0\x01\0\x01\0\0\0\x03\0\0\0\x04\0\x02\0\x01\0\x05\0\x01\0\0\0\x06\0\0\0\0\0",
-                    b"\0\0\x04\0\x08\0\x0C\0\x10\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -7634,19 +7988,21 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Rotor<T>, Odd<T>> for Multivector<T> {
         #[inline]
         fn gp_into(&self, rhs: &Rotor<T>) -> Odd<T> {
-            Odd::from_array(
+            Odd::from_array({
+                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                    b"\x01\0\0\0\0\0\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0\x07\0\x03\0\x01\0\x01\0\x01\0\0\0\x02\0\0\0\0\0\x03\0\x03\0\x01\0\x07\0\x02\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\0\0\0\0\x07\0\x01\0\x01\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0\x07\0\0\0\0\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\x01\0\0\0\0\0\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0\x07\0\x03\0\x01\0\x01\0\x01\0\0\0\x02\0\0\0\0\0\x03\0\x03\0\x01\0\x07\0\x02\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\0\0\0\0\x07\0\x01\0\x01\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0\x07\0\0\0\0\0",
-                    b"\0\0\x04\0\x08\0\x0C\0\x10\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -7654,19 +8010,21 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Odd<T>, Vector<T>> for Multivector<T> {
         #[inline]
         fn gp_into(&self, rhs: &Odd<T>) -> Vector<T> {
-            Vector::from_array(
+            Vector::from_array({
+                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x04\0\x01\0\0\0\x05\0\x02\0\0\0\x06\0\x03\0\x01\0\0\0\x01\0\0\0\x04\0\0\0\x01\0\x05\0\x03\0\0\0\x06\0\x02\0\0\0\0\0\x02\0\0\0\x04\0\x03\0\x01\0\x05\0\0\0\x01\0\x06\0\x01\0\x01\0",
+                );
+                const STARTS: [u16; 4usize] = [0u16, 4u16, 8u16, 12u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     3usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x04\0\x01\0\0\0\x05\0\x02\0\0\0\x06\0\x03\0\x01\0\0\0\x01\0\0\0\x04\0\0\0\x01\0\x05\0\x03\0\0\0\x06\0\x02\0\0\0\0\0\x02\0\0\0\x04\0\x03\0\x01\0\x05\0\0\0\x01\0\x06\0\x01\0\x01\0",
-                    b"\0\0\x04\0\x08\0\x0C\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -7674,19 +8032,21 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Odd<T>, Rotor<T>> for Multivector<T> {
         #[inline]
         fn gp_into(&self, rhs: &Odd<T>) -> Rotor<T> {
-            Rotor::from_array(
+            Rotor::from_array({
+                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                    b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0\x07\0\x03\0\x01\0\x01\0\x01\0\0\0\x02\0\0\0\x01\0\x03\0\x03\0\0\0\x07\0\x02\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\x01\0\x03\0\0\0\x01\0\x07\0\x01\0\x01\0\x01\0\x03\0\0\0\x02\0\x02\0\0\0\x03\0\x01\0\x01\0\x07\0\0\0\0\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0\x07\0\x03\0\x01\0\x01\0\x01\0\0\0\x02\0\0\0\x01\0\x03\0\x03\0\0\0\x07\0\x02\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\x01\0\x03\0\0\0\x01\0\x07\0\x01\0\x01\0\x01\0\x03\0\0\0\x02\0\x02\0\0\0\x03\0\x01\0\x01\0\x07\0\0\0\0\0",
-                    b"\0\0\x04\0\x08\0\x0C\0\x10\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -7694,19 +8054,21 @@ pub mod g3_vendored {
     > ::algebra_core::ops::GeometricProductInto<Odd<T>, Odd<T>> for Multivector<T> {
         #[inline]
         fn gp_into(&self, rhs: &Odd<T>) -> Odd<T> {
-            Odd::from_array(
+            Odd::from_array({
+                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x04\0\x01\0\0\0\x05\0\x02\0\0\0\x06\0\x03\0\x01\0\0\0\x01\0\0\0\x04\0\0\0\x01\0\x05\0\x03\0\0\0\x06\0\x02\0\0\0\0\0\x02\0\0\0\x04\0\x03\0\x01\0\x05\0\0\0\x01\0\x06\0\x01\0\x01\0\0\0\x03\0\0\0\x04\0\x02\0\0\0\x05\0\x01\0\x01\0\x06\0\0\0\0\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x04\0\x01\0\0\0\x05\0\x02\0\0\0\x06\0\x03\0\x01\0\0\0\x01\0\0\0\x04\0\0\0\x01\0\x05\0\x03\0\0\0\x06\0\x02\0\0\0\0\0\x02\0\0\0\x04\0\x03\0\x01\0\x05\0\0\0\x01\0\x06\0\x01\0\x01\0\0\0\x03\0\0\0\x04\0\x02\0\0\0\x05\0\x01\0\x01\0\x06\0\0\0\0\0",
-                    b"\0\0\x04\0\x08\0\x0C\0\x10\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -7715,19 +8077,21 @@ pub mod g3_vendored {
     for Multivector<T> {
         #[inline]
         fn gp_into(&self, rhs: &Multivector<T>) -> Vector<T> {
-            Vector::from_array(
+            Vector::from_array({
+                const TERMS: [(u16, u16, u16); 24usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x04\0\x01\0\x03\0\x05\0\x01\0\x04\0\x02\0\0\0\x05\0\x03\0\0\0\x06\0\x07\0\x01\0\x07\0\x06\0\x01\0\0\0\x02\0\0\0\x01\0\x04\0\0\0\x02\0\0\0\0\0\x03\0\x06\0\x01\0\x04\0\x01\0\x01\0\x05\0\x07\0\0\0\x06\0\x03\0\0\0\x07\0\x05\0\0\0\0\0\x03\0\0\0\x01\0\x05\0\0\0\x02\0\x06\0\0\0\x03\0\0\0\0\0\x04\0\x07\0\x01\0\x05\0\x01\0\x01\0\x06\0\x02\0\x01\0\x07\0\x04\0\x01\0",
+                );
+                const STARTS: [u16; 4usize] = [0u16, 8u16, 16u16, 24u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     3usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x04\0\x01\0\x03\0\x05\0\x01\0\x04\0\x02\0\0\0\x05\0\x03\0\0\0\x06\0\x07\0\x01\0\x07\0\x06\0\x01\0\0\0\x02\0\0\0\x01\0\x04\0\0\0\x02\0\0\0\0\0\x03\0\x06\0\x01\0\x04\0\x01\0\x01\0\x05\0\x07\0\0\0\x06\0\x03\0\0\0\x07\0\x05\0\0\0\0\0\x03\0\0\0\x01\0\x05\0\0\0\x02\0\x06\0\0\0\x03\0\0\0\0\0\x04\0\x07\0\x01\0\x05\0\x01\0\x01\0\x06\0\x02\0\x01\0\x07\0\x04\0\x01\0",
-                    b"\0\0\x08\0\x10\0\x18\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -7736,19 +8100,21 @@ pub mod g3_vendored {
     for Multivector<T> {
         #[inline]
         fn gp_into(&self, rhs: &Multivector<T>) -> Rotor<T> {
-            Rotor::from_array(
+            Rotor::from_array({
+                const TERMS: [(u16, u16, u16); 32usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\x04\0\x04\0\x01\0\x05\0\x05\0\x01\0\x06\0\x06\0\x01\0\x07\0\x07\0\x01\0\0\0\x04\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\x07\0\0\0\x04\0\0\0\0\0\x05\0\x06\0\x01\0\x06\0\x05\0\0\0\x07\0\x03\0\0\0\0\0\x05\0\0\0\x01\0\x03\0\0\0\x02\0\x07\0\x01\0\x03\0\x01\0\x01\0\x04\0\x06\0\0\0\x05\0\0\0\0\0\x06\0\x04\0\x01\0\x07\0\x02\0\x01\0\0\0\x06\0\0\0\x01\0\x07\0\0\0\x02\0\x03\0\0\0\x03\0\x02\0\x01\0\x04\0\x05\0\x01\0\x05\0\x04\0\0\0\x06\0\0\0\0\0\x07\0\x01\0\0\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 8u16, 16u16, 24u16, 32u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\x04\0\x04\0\x01\0\x05\0\x05\0\x01\0\x06\0\x06\0\x01\0\x07\0\x07\0\x01\0\0\0\x04\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\x07\0\0\0\x04\0\0\0\0\0\x05\0\x06\0\x01\0\x06\0\x05\0\0\0\x07\0\x03\0\0\0\0\0\x05\0\0\0\x01\0\x03\0\0\0\x02\0\x07\0\x01\0\x03\0\x01\0\x01\0\x04\0\x06\0\0\0\x05\0\0\0\0\0\x06\0\x04\0\x01\0\x07\0\x02\0\x01\0\0\0\x06\0\0\0\x01\0\x07\0\0\0\x02\0\x03\0\0\0\x03\0\x02\0\x01\0\x04\0\x05\0\x01\0\x05\0\x04\0\0\0\x06\0\0\0\0\0\x07\0\x01\0\0\0",
-                    b"\0\0\x08\0\x10\0\x18\0 \0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<
@@ -7757,19 +8123,21 @@ pub mod g3_vendored {
     for Multivector<T> {
         #[inline]
         fn gp_into(&self, rhs: &Multivector<T>) -> Odd<T> {
-            Odd::from_array(
+            Odd::from_array({
+                const TERMS: [(u16, u16, u16); 32usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x04\0\x01\0\x03\0\x05\0\x01\0\x04\0\x02\0\0\0\x05\0\x03\0\0\0\x06\0\x07\0\x01\0\x07\0\x06\0\x01\0\0\0\x02\0\0\0\x01\0\x04\0\0\0\x02\0\0\0\0\0\x03\0\x06\0\x01\0\x04\0\x01\0\x01\0\x05\0\x07\0\0\0\x06\0\x03\0\0\0\x07\0\x05\0\0\0\0\0\x03\0\0\0\x01\0\x05\0\0\0\x02\0\x06\0\0\0\x03\0\0\0\0\0\x04\0\x07\0\x01\0\x05\0\x01\0\x01\0\x06\0\x02\0\x01\0\x07\0\x04\0\x01\0\0\0\x07\0\0\0\x01\0\x06\0\0\0\x02\0\x05\0\x01\0\x03\0\x04\0\0\0\x04\0\x03\0\0\0\x05\0\x02\0\x01\0\x06\0\x01\0\0\0\x07\0\0\0\0\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 8u16, 16u16, 24u16, 32u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &self.each_ref(),
-                    &rhs.each_ref(),
-                    b"\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x04\0\x01\0\x03\0\x05\0\x01\0\x04\0\x02\0\0\0\x05\0\x03\0\0\0\x06\0\x07\0\x01\0\x07\0\x06\0\x01\0\0\0\x02\0\0\0\x01\0\x04\0\0\0\x02\0\0\0\0\0\x03\0\x06\0\x01\0\x04\0\x01\0\x01\0\x05\0\x07\0\0\0\x06\0\x03\0\0\0\x07\0\x05\0\0\0\0\0\x03\0\0\0\x01\0\x05\0\0\0\x02\0\x06\0\0\0\x03\0\0\0\0\0\x04\0\x07\0\x01\0\x05\0\x01\0\x01\0\x06\0\x02\0\x01\0\x07\0\x04\0\x01\0\0\0\x07\0\0\0\x01\0\x06\0\0\0\x02\0\x05\0\x01\0\x03\0\x04\0\0\0\x04\0\x03\0\0\0\x05\0\x02\0\x01\0\x06\0\x01\0\0\0\x07\0\0\0\0\0",
-                    b"\0\0\x08\0\x10\0\x18\0 \0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(self.each_ref(), rhs.each_ref(), &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> Vector<T> {
@@ -8010,30 +8378,36 @@ pub mod g3_vendored {
         #[inline]
         fn sandwich(&self, x: &Odd<T>) -> Odd<T> {
             let s = self.each_ref();
-            let t = ::algebra_core::kernels::bilinear::<
-                T,
-                4usize,
-                _,
-            >(
-                &s,
-                &x.each_ref(),
-                b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0",
-                b"\0\0\x03\0\x06\0\t\0\x0C\0",
-                &[],
-            );
-            Odd::from_array(
+            let t = {
+                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 3u16, 6u16, 9u16, 12u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &t.each_ref(),
-                    &s,
+                    _,
+                    _,
+                    _,
+                    _,
+                >(s, x.each_ref(), &TERMS, &STARTS, &[])
+            };
+            Odd::from_array({
+                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
-                    b"\0\0\x03\0\x06\0\t\0\x0C\0",
-                    &[],
-                ),
-            )
+                );
+                const STARTS: [u16; 5usize] = [0u16, 3u16, 6u16, 9u16, 12u16];
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                    _,
+                    _,
+                    _,
+                    _,
+                >(t.each_ref(), s, &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Apply<Odd<T>> for Vector<T> {
@@ -8042,30 +8416,36 @@ pub mod g3_vendored {
         #[inline]
         fn apply(&self, x: &Odd<T>) -> Odd<T> {
             let s = self.each_ref();
-            let t = ::algebra_core::kernels::bilinear::<
-                T,
-                4usize,
-                _,
-            >(
-                &s,
-                &x.each_ref(),
-                b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0",
-                b"\0\0\x03\0\x06\0\t\0\x0C\0",
-                &[],
-            );
-            Odd::from_array(
+            let t = {
+                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 3u16, 6u16, 9u16, 12u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &t.each_ref(),
-                    &s,
+                    _,
+                    _,
+                    _,
+                    _,
+                >(s, x.each_ref(), &TERMS, &STARTS, &[])
+            };
+            Odd::from_array({
+                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
-                    b"\0\0\x03\0\x06\0\t\0\x0C\0",
-                    &[],
-                ),
-            )
+                );
+                const STARTS: [u16; 5usize] = [0u16, 3u16, 6u16, 9u16, 12u16];
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                    _,
+                    _,
+                    _,
+                    _,
+                >(t.each_ref(), s, &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Sandwich<Vector<T>> for Rotor<T> {
@@ -8182,30 +8562,36 @@ pub mod g3_vendored {
         #[inline]
         fn sandwich(&self, x: &Odd<T>) -> Odd<T> {
             let s = self.each_ref();
-            let t = ::algebra_core::kernels::bilinear::<
-                T,
-                4usize,
-                _,
-            >(
-                &s,
-                &x.each_ref(),
-                b"\0\0\0\0\0\0\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x03\0\x01\0\x03\0\x02\0\x01\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\0\0\x03\0\x01\0\0\0\0\0\x03\0\0\0\x01\0\x02\0\x01\0\x02\0\x01\0\0\0\x03\0\0\0\x01\0",
-                b"\0\0\x04\0\x08\0\x0C\0\x10\0",
-                &[],
-            );
-            Odd::from_array(
+            let t = {
+                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x03\0\x01\0\x03\0\x02\0\x01\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\0\0\x03\0\x01\0\0\0\0\0\x03\0\0\0\x01\0\x02\0\x01\0\x02\0\x01\0\0\0\x03\0\0\0\x01\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &t.each_ref(),
-                    &s,
+                    _,
+                    _,
+                    _,
+                    _,
+                >(s, x.each_ref(), &TERMS, &STARTS, &[])
+            };
+            Odd::from_array({
+                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x03\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\0\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\x01\0\x02\0\x01\0\0\0\x03\0\0\0\0\0",
-                    b"\0\0\x04\0\x08\0\x0C\0\x10\0",
-                    &[],
-                ),
-            )
+                );
+                const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                    _,
+                    _,
+                    _,
+                    _,
+                >(t.each_ref(), s, &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Apply<Odd<T>> for Rotor<T> {
@@ -8214,30 +8600,36 @@ pub mod g3_vendored {
         #[inline]
         fn apply(&self, x: &Odd<T>) -> Odd<T> {
             let s = self.each_ref();
-            let t = ::algebra_core::kernels::bilinear::<
-                T,
-                4usize,
-                _,
-            >(
-                &s,
-                &x.each_ref(),
-                b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
-                b"\0\0\x04\0\x08\0\x0C\0\x10\0",
-                &[],
-            );
-            Odd::from_array(
+            let t = {
+                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &t.each_ref(),
-                    &s,
+                    _,
+                    _,
+                    _,
+                    _,
+                >(s, x.each_ref(), &TERMS, &STARTS, &[])
+            };
+            Odd::from_array({
+                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\0\0\x01\0\x01\0\x01\0\0\0\0\0\x02\0\x03\0\0\0\x03\0\x02\0\x01\0\0\0\x02\0\x01\0\x01\0\x03\0\x01\0\x02\0\0\0\0\0\x03\0\x01\0\0\0\0\0\x03\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
-                    b"\0\0\x04\0\x08\0\x0C\0\x10\0",
-                    &[],
-                ),
-            )
+                );
+                const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                    _,
+                    _,
+                    _,
+                    _,
+                >(t.each_ref(), s, &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Sandwich<Vector<T>> for Odd<T> {
@@ -8246,30 +8638,36 @@ pub mod g3_vendored {
         #[inline]
         fn sandwich(&self, x: &Vector<T>) -> Vector<T> {
             let s = self.each_ref();
-            let t = ::algebra_core::kernels::bilinear::<
-                T,
-                4usize,
-                _,
-            >(
-                &s,
-                &x.each_ref(),
-                b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\x01\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\x01\0",
-                b"\0\0\x03\0\x06\0\t\0\x0C\0",
-                &[],
-            );
-            Vector::from_array(
+            let t = {
+                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\x01\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\x01\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 3u16, 6u16, 9u16, 12u16];
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                    _,
+                    _,
+                    _,
+                    _,
+                >(s, x.each_ref(), &TERMS, &STARTS, &[])
+            };
+            Vector::from_array({
+                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0",
+                );
+                const STARTS: [u16; 4usize] = [0u16, 4u16, 8u16, 12u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     3usize,
                     _,
-                >(
-                    &t.each_ref(),
-                    &s,
-                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0",
-                    b"\0\0\x04\0\x08\0\x0C\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(t.each_ref(), s, &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Apply<Vector<T>> for Odd<T> {
@@ -8278,30 +8676,36 @@ pub mod g3_vendored {
         #[inline]
         fn apply(&self, x: &Vector<T>) -> Vector<T> {
             let s = self.each_ref();
-            let t = ::algebra_core::kernels::bilinear::<
-                T,
-                4usize,
-                _,
-            >(
-                &s,
-                &x.each_ref(),
-                b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
-                b"\0\0\x03\0\x06\0\t\0\x0C\0",
-                &[],
-            );
-            Vector::from_array(
+            let t = {
+                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 3u16, 6u16, 9u16, 12u16];
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                    _,
+                    _,
+                    _,
+                    _,
+                >(s, x.each_ref(), &TERMS, &STARTS, &[])
+            };
+            Vector::from_array({
+                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0",
+                );
+                const STARTS: [u16; 4usize] = [0u16, 4u16, 8u16, 12u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     3usize,
                     _,
-                >(
-                    &t.each_ref(),
-                    &s,
-                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0",
-                    b"\0\0\x04\0\x08\0\x0C\0",
-                    &[],
-                ),
-            )
+                    _,
+                    _,
+                    _,
+                    _,
+                >(t.each_ref(), s, &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Sandwich<Rotor<T>> for Odd<T> {
@@ -8310,30 +8714,36 @@ pub mod g3_vendored {
         #[inline]
         fn sandwich(&self, x: &Rotor<T>) -> Rotor<T> {
             let s = self.each_ref();
-            let t = ::algebra_core::kernels::bilinear::<
-                T,
-                4usize,
-                _,
-            >(
-                &s,
-                &x.each_ref(),
-                b"\0\0\0\0\0\0\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x03\0\x01\0\x03\0\x02\0\x01\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\0\0\x03\0\x01\0\0\0\0\0\x03\0\0\0\x01\0\x02\0\x01\0\x02\0\x01\0\0\0\x03\0\0\0\x01\0",
-                b"\0\0\x04\0\x08\0\x0C\0\x10\0",
-                &[],
-            );
-            Rotor::from_array(
+            let t = {
+                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x03\0\x01\0\x03\0\x02\0\x01\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\0\0\x03\0\x01\0\0\0\0\0\x03\0\0\0\x01\0\x02\0\x01\0\x02\0\x01\0\0\0\x03\0\0\0\x01\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &t.each_ref(),
-                    &s,
+                    _,
+                    _,
+                    _,
+                    _,
+                >(s, x.each_ref(), &TERMS, &STARTS, &[])
+            };
+            Rotor::from_array({
+                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
-                    b"\0\0\x04\0\x08\0\x0C\0\x10\0",
-                    &[],
-                ),
-            )
+                );
+                const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                    _,
+                    _,
+                    _,
+                    _,
+                >(t.each_ref(), s, &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Apply<Rotor<T>> for Odd<T> {
@@ -8342,30 +8752,36 @@ pub mod g3_vendored {
         #[inline]
         fn apply(&self, x: &Rotor<T>) -> Rotor<T> {
             let s = self.each_ref();
-            let t = ::algebra_core::kernels::bilinear::<
-                T,
-                4usize,
-                _,
-            >(
-                &s,
-                &x.each_ref(),
-                b"\0\0\0\0\0\0\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x03\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\0\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\x01\0\x02\0\x01\0\0\0\x03\0\0\0\0\0",
-                b"\0\0\x04\0\x08\0\x0C\0\x10\0",
-                &[],
-            );
-            Rotor::from_array(
+            let t = {
+                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x03\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\0\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\x01\0\x02\0\x01\0\0\0\x03\0\0\0\0\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &t.each_ref(),
-                    &s,
+                    _,
+                    _,
+                    _,
+                    _,
+                >(s, x.each_ref(), &TERMS, &STARTS, &[])
+            };
+            Rotor::from_array({
+                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\0\0\x03\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
-                    b"\0\0\x04\0\x08\0\x0C\0\x10\0",
-                    &[],
-                ),
-            )
+                );
+                const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                    _,
+                    _,
+                    _,
+                    _,
+                >(t.each_ref(), s, &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Sandwich<Odd<T>> for Odd<T> {
@@ -8374,30 +8790,36 @@ pub mod g3_vendored {
         #[inline]
         fn sandwich(&self, x: &Odd<T>) -> Odd<T> {
             let s = self.each_ref();
-            let t = ::algebra_core::kernels::bilinear::<
-                T,
-                4usize,
-                _,
-            >(
-                &s,
-                &x.each_ref(),
-                b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\x01\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\x03\0\x01\0\0\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\x01\0",
-                b"\0\0\x04\0\x08\0\x0C\0\x10\0",
-                &[],
-            );
-            Odd::from_array(
+            let t = {
+                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\x01\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\x03\0\x01\0\0\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\x01\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &t.each_ref(),
-                    &s,
+                    _,
+                    _,
+                    _,
+                    _,
+                >(s, x.each_ref(), &TERMS, &STARTS, &[])
+            };
+            Odd::from_array({
+                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
-                    b"\0\0\x04\0\x08\0\x0C\0\x10\0",
-                    &[],
-                ),
-            )
+                );
+                const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                    _,
+                    _,
+                    _,
+                    _,
+                >(t.each_ref(), s, &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Apply<Odd<T>> for Odd<T> {
@@ -8406,30 +8828,36 @@ pub mod g3_vendored {
         #[inline]
         fn apply(&self, x: &Odd<T>) -> Odd<T> {
             let s = self.each_ref();
-            let t = ::algebra_core::kernels::bilinear::<
-                T,
-                4usize,
-                _,
-            >(
-                &s,
-                &x.each_ref(),
-                b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
-                b"\0\0\x04\0\x08\0\x0C\0\x10\0",
-                &[],
-            );
-            Odd::from_array(
+            let t = {
+                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
+                );
+                const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
                 ::algebra_core::kernels::bilinear::<
                     T,
                     4usize,
                     _,
-                >(
-                    &t.each_ref(),
-                    &s,
+                    _,
+                    _,
+                    _,
+                    _,
+                >(s, x.each_ref(), &TERMS, &STARTS, &[])
+            };
+            Odd::from_array({
+                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\0\0\x03\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
-                    b"\0\0\x04\0\x08\0\x0C\0\x10\0",
-                    &[],
-                ),
-            )
+                );
+                const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
+                ::algebra_core::kernels::bilinear::<
+                    T,
+                    4usize,
+                    _,
+                    _,
+                    _,
+                    _,
+                    _,
+                >(t.each_ref(), s, &TERMS, &STARTS, &[])
+            })
         }
     }
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::Sandwich<Multivector<T>>
