@@ -48,6 +48,8 @@
 //!   directly (the workspace's `gam-algebras`, `motion`); the front door `gam_ga::algebra!`
 //!   passes `crate $crate::__engine;`, so its users need no other dependency.
 
+mod cache;
+
 use algebra_codegen::constraint::ConstraintKind;
 use algebra_codegen::{ModuleSpec, TypeSpec, plan::Plan};
 use algebra_core::rational::{Q, q};
@@ -60,8 +62,9 @@ use syn::{Attribute, Ident, LitInt, LitStr, Token, Visibility, braced, bracketed
 /// Declares an algebra and generates its multivector types and kernels. See the crate docs.
 #[proc_macro]
 pub fn algebra(input: TokenStream) -> TokenStream {
+    let invocation = input.to_string();
     let decl = syn::parse_macro_input!(input as Decl);
-    match expand(decl) {
+    match expand(decl, &invocation) {
         Ok(ts) => ts.into(),
         Err(e) => e.to_compile_error().into(),
     }
@@ -325,7 +328,9 @@ fn doc_lines(attrs: &[Attribute]) -> Vec<String> {
         .collect()
 }
 
-fn expand(decl: Decl) -> syn::Result<proc_macro2::TokenStream> {
+/// The module of a declaration; `invocation` (the macro's input as text) keys the expansion
+/// cache ([`cache`]).
+fn expand(decl: Decl, invocation: &str) -> syn::Result<proc_macro2::TokenStream> {
     let metric = match &decl.metric {
         MetricDecl::Builtin(name) => {
             Algebra::builtin(&name.value()).map_err(|e| syn::Error::new(name.span(), e))?.metric().clone()
@@ -393,9 +398,25 @@ fn expand(decl: Decl) -> syn::Result<proc_macro2::TokenStream> {
     if let Some(n) = decl.table_above {
         spec.table_above = n;
     }
-    let plan = Plan::new(spec).map_err(|e| syn::Error::new(decl.name.span(), e))?;
-    let mut items = algebra_codegen::emit::module_items(&plan);
-    items.extend(algebra_codegen::constraint::methods(&plan).map_err(|e| syn::Error::new(decl.name.span(), e))?);
+    // the generated items, read back from the cache when neither the invocation nor the
+    // generator changed; the engine's import and the module's name stay tokens of this call
+    let key = cache::Key::new(invocation, &decl.name.to_string());
+    // (the compiler's lexer directly: proc-macro2's `parse` first re-lexes the text with its own
+    // unoptimised lexer, which took longer than the expansion it replaces)
+    let cached = key.as_ref().and_then(cache::Key::lookup).and_then(|text| text.parse::<TokenStream>().ok());
+    let items: proc_macro2::TokenStream = match cached {
+        Some(items) => items.into(),
+        None => {
+            let plan = Plan::new(spec).map_err(|e| syn::Error::new(decl.name.span(), e))?;
+            let mut items = algebra_codegen::emit::module_items(&plan);
+            items
+                .extend(algebra_codegen::constraint::methods(&plan).map_err(|e| syn::Error::new(decl.name.span(), e))?);
+            if let Some(key) = &key {
+                key.store(&items.to_string());
+            }
+            items
+        }
+    };
     // the items reach the engine through one alias: one import, no pass over the items
     let engine = algebra_codegen::paths::engine_use(decl.engine.as_ref().unwrap_or(&quote!(::algebra_core)));
     let (attrs, vis, name) = (&decl.attrs, &decl.vis, &decl.name);
