@@ -211,7 +211,8 @@ fn type_items(plan: &Plan, names: &Names, i: usize) -> TokenStream {
     let field_docs = elements.iter().map(|e| format!("Coefficient of `{e}`."));
     let new_doc = format!(
         " A value from its coefficients, in the order of [`Self::ELEMENTS`]: the arguments are the \
-         coefficients of {}, in this order.",
+         coefficients of {}, in this order. A `const fn`, for geometry known at compile time \
+         (`const AXIS: Line<f64> = Line::new(...);`), which the inlined kernels fold.",
         elements.iter().map(|e| format!("`{e}`")).collect::<Vec<_>>().join(", ")
     );
     let one = if masks.contains(&0) {
@@ -246,7 +247,7 @@ fn type_items(plan: &Plan, names: &Names, i: usize) -> TokenStream {
 
             #[doc = #new_doc]
             #[allow(clippy::too_many_arguments)]
-            pub fn new(#(#fields: T),*) -> Self { #ty { #(#fields),* } }
+            pub const fn new(#(#fields: T),*) -> Self { #ty { #(#fields),* } }
 
             /// Zero.
             pub fn zero() -> Self { #ty { #(#fields: T::zero()),* } }

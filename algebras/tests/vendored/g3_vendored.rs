@@ -44,9 +44,9 @@ pub mod g3_vendored {
         pub const ELEMENTS: [&'static str; 3usize] = ["e1", "e2", "e3"];
         /// The bitmasks of the fields' basis elements, in order.
         pub const MASKS: [u32; 3usize] = [1u32, 2u32, 4u32];
-        /// A value from its coefficients, in the order of [`Self::ELEMENTS`]: the arguments are the coefficients of `e1`, `e2`, `e3`, in this order.
+        /// A value from its coefficients, in the order of [`Self::ELEMENTS`]: the arguments are the coefficients of `e1`, `e2`, `e3`, in this order. A `const fn`, for geometry known at compile time (`const AXIS: Line<f64> = Line::new(...);`), which the inlined kernels fold.
         #[allow(clippy::too_many_arguments)]
-        pub fn new(e1: T, e2: T, e3: T) -> Self {
+        pub const fn new(e1: T, e2: T, e3: T) -> Self {
             Vector { e1, e2, e3 }
         }
         /// Zero.
@@ -626,9 +626,9 @@ pub mod g3_vendored {
         pub const ELEMENTS: [&'static str; 4usize] = ["1", "e12", "e13", "e23"];
         /// The bitmasks of the fields' basis elements, in order.
         pub const MASKS: [u32; 4usize] = [0u32, 3u32, 5u32, 6u32];
-        /// A value from its coefficients, in the order of [`Self::ELEMENTS`]: the arguments are the coefficients of `1`, `e12`, `e13`, `e23`, in this order.
+        /// A value from its coefficients, in the order of [`Self::ELEMENTS`]: the arguments are the coefficients of `1`, `e12`, `e13`, `e23`, in this order. A `const fn`, for geometry known at compile time (`const AXIS: Line<f64> = Line::new(...);`), which the inlined kernels fold.
         #[allow(clippy::too_many_arguments)]
-        pub fn new(scalar: T, e12: T, e13: T, e23: T) -> Self {
+        pub const fn new(scalar: T, e12: T, e13: T, e23: T) -> Self {
             Rotor { scalar, e12, e13, e23 }
         }
         /// Zero.
@@ -1285,9 +1285,9 @@ pub mod g3_vendored {
         pub const ELEMENTS: [&'static str; 4usize] = ["e1", "e2", "e3", "e123"];
         /// The bitmasks of the fields' basis elements, in order.
         pub const MASKS: [u32; 4usize] = [1u32, 2u32, 4u32, 7u32];
-        /// A value from its coefficients, in the order of [`Self::ELEMENTS`]: the arguments are the coefficients of `e1`, `e2`, `e3`, `e123`, in this order.
+        /// A value from its coefficients, in the order of [`Self::ELEMENTS`]: the arguments are the coefficients of `e1`, `e2`, `e3`, `e123`, in this order. A `const fn`, for geometry known at compile time (`const AXIS: Line<f64> = Line::new(...);`), which the inlined kernels fold.
         #[allow(clippy::too_many_arguments)]
-        pub fn new(e1: T, e2: T, e3: T, e123: T) -> Self {
+        pub const fn new(e1: T, e2: T, e3: T, e123: T) -> Self {
             Odd { e1, e2, e3, e123 }
         }
         /// Zero.
@@ -1933,9 +1933,9 @@ pub mod g3_vendored {
         pub const MASKS: [u32; 8usize] = [
             0u32, 1u32, 2u32, 4u32, 3u32, 5u32, 6u32, 7u32,
         ];
-        /// A value from its coefficients, in the order of [`Self::ELEMENTS`]: the arguments are the coefficients of `1`, `e1`, `e2`, `e3`, `e12`, `e13`, `e23`, `e123`, in this order.
+        /// A value from its coefficients, in the order of [`Self::ELEMENTS`]: the arguments are the coefficients of `1`, `e1`, `e2`, `e3`, `e12`, `e13`, `e23`, `e123`, in this order. A `const fn`, for geometry known at compile time (`const AXIS: Line<f64> = Line::new(...);`), which the inlined kernels fold.
         #[allow(clippy::too_many_arguments)]
-        pub fn new(
+        pub const fn new(
             scalar: T,
             e1: T,
             e2: T,

@@ -26,7 +26,7 @@ macro_rules! value_type {
 
             /// A value from its coefficients, in the order of [`Self::ELEMENTS`].
             #[allow(clippy::too_many_arguments)]
-            pub fn new($($f: T),*) -> Self {
+            pub const fn new($($f: T),*) -> Self {
                 $ty { $($f),* }
             }
 
