@@ -109,9 +109,9 @@ fn constants_built_by_new_at_compile_time() {
     const AXIS: g3::Bivector<f64> = g3::Bivector::new(0.0, 0.0, 1.0);
     const X: g3::Vector<f64> = g3::Vector::new(1.0, 2.0, 3.0);
     const PAIR: [g3::Vector<f64>; 2] = [g3::Vector::new(1.0, 0.0, 0.0), X];
-    let r = &X * &AXIS;
+    let r = X * AXIS;
     assert_eq!(r.to_multivector(), X.to_multivector().gp(&AXIS.to_multivector()));
     assert_eq!(PAIR[1], X);
     // e23 * (e1 + 2 e2 + 3 e3) = e123 - 2 e3 + 3 e2 (blade order e1 e2 e3)
-    assert_eq!((&AXIS * &X).to_multivector().to_string(), "3*e2 - 2*e3 + e123");
+    assert_eq!((AXIS * X).to_multivector().to_string(), "3*e2 - 2*e3 + e123");
 }
