@@ -43,7 +43,10 @@ struct State<'r> {
     ring: &'r PolyRing,
     polys: Vec<DPoly>,
     sugar: Vec<u32>,
+    /// The variable mask of each leading monomial (`order::mask`), computed once.
+    masks: Vec<u64>,
     active: Vec<bool>,
+    /// The pending pairs, sorted by decreasing (sugar, lcm): the next pair is the last.
     pairs: Vec<Pair>,
     /// `clean[i]`: element `i`'s tail has no term divisible by the leading monomial of an
     /// element with index below `clean[i]` (it was reduced by all of them).
@@ -56,7 +59,7 @@ impl State<'_> {
     fn reducers(&self) -> Vec<Reducer<'_>> {
         (0..self.polys.len())
             .filter(|&i| self.active[i])
-            .map(|i| Reducer::with_sugar(&self.polys[i], self.sugar[i]))
+            .map(|i| Reducer { mask: self.masks[i], poly: &self.polys[i], sugar: self.sugar[i] })
             .collect()
     }
 
@@ -89,12 +92,18 @@ impl State<'_> {
                 && !order::lcm_is(polys[p.j].lm(), &lh, &p.lcm))
         });
         // Product criterion: coprime leading monomials need no pair.
+        let before = self.pairs.len();
         for (i, lcm, coprime) in kept {
             if !coprime {
                 let si = self.sugar[i] + lcm[0] - self.polys[i].lm()[0];
                 let sk = self.sugar[k] + lcm[0] - lh[0];
                 self.pairs.push(Pair { i, j: k, lcm, sugar: si.max(sk) });
             }
+        }
+        // Keep the list sorted by decreasing (sugar, lcm), the next pair last (a stable sort of
+        // a sorted run and a short appended one; the new pairs go before older equal ones).
+        if self.pairs.len() > before {
+            self.pairs.sort_by(|p, q| q.sugar.cmp(&p.sugar).then_with(|| order.cmp(&q.lcm, &p.lcm)));
         }
         for i in 0..k {
             if self.active[i] && order::divides(&lh, self.polys[i].lm()) {
@@ -152,6 +161,7 @@ impl State<'_> {
     fn add(&mut self, mut h: DPoly, sugar: u32, meter: &Meter) -> Result<usize, IdealError> {
         h.make_primitive();
         meter.check_basis(self.active.iter().filter(|a| **a).count() + 1, self.terms + h.len())?;
+        self.masks.push(order::mask(h.lm()));
         self.polys.push(h);
         self.sugar.push(sugar);
         self.clean.push(self.polys.len());
@@ -174,6 +184,7 @@ impl PolyRing {
             ring: self,
             polys: Vec::new(),
             sugar: Vec::new(),
+            masks: Vec::new(),
             active: Vec::new(),
             pairs: Vec::new(),
             clean: Vec::new(),
@@ -198,18 +209,13 @@ impl PolyRing {
         let mut degree = 0;
         while !st.pairs.is_empty() {
             meter.check_time()?;
-            // Sugar strategy: least sugar, then least lcm.
-            let best = (0..st.pairs.len())
-                .min_by(|&a, &b| {
-                    let (p, q) = (&st.pairs[a], &st.pairs[b]);
-                    p.sugar.cmp(&q.sugar).then_with(|| order.cmp(&p.lcm, &q.lcm))
-                })
-                .expect("non-empty pair list");
-            if st.pairs[best].sugar > degree {
-                degree = st.pairs[best].sugar;
+            // Sugar strategy: least sugar, then least lcm (the list is sorted, the least last).
+            let next = st.pairs.last().expect("non-empty pair list").sugar;
+            if next > degree {
+                degree = next;
                 st.reduce_tails(meter)?;
             }
-            let pair = st.pairs.swap_remove(best);
+            let pair = st.pairs.pop().expect("non-empty pair list");
             let s = st.spoly(&pair);
             let red = reduce(s, &st.reducers(), order, meter)?;
             let r = red.r;
