@@ -80,14 +80,14 @@ pub(crate) fn combine(
     order: MonomialOrder,
     out: &mut DPoly,
     spare: &mut Vec<Integer>,
+    lifted: &mut Vec<u32>,
 ) {
     out.exps.clear();
     out.exps.reserve((p.len() - from + g.len()) * p.w);
     let scale = *a != 1;
-    let mut lifted: Vec<u32> = Vec::with_capacity(q.len());
     let (mut i, mut j) = (from, 1);
     if j < g.len() {
-        order::mul_into(&mut lifted, q, g.mono(j));
+        order::mul_into(lifted, q, g.mono(j));
     }
     // The slot for the `k`-th output term, reused when there is one.
     let mut k = 0;
@@ -99,7 +99,7 @@ pub(crate) fn combine(
     }
     loop {
         let ord = match (i < p.len(), j < g.len()) {
-            (true, true) => order.cmp(p.mono(i), &lifted),
+            (true, true) => order.cmp(p.mono(i), lifted),
             (true, false) => Ordering::Greater,
             (false, true) => Ordering::Less,
             (false, false) => break,
@@ -119,11 +119,11 @@ pub(crate) fn combine(
                 let c = slot(out, spare, k);
                 c.assign(b * &g.coefs[j]);
                 c.neg_assign();
-                out.exps.extend_from_slice(&lifted);
+                out.exps.extend_from_slice(lifted);
                 k += 1;
                 j += 1;
                 if j < g.len() {
-                    order::mul_into(&mut lifted, q, g.mono(j));
+                    order::mul_into(lifted, q, g.mono(j));
                 }
             }
             Ordering::Equal => {
@@ -134,13 +134,13 @@ pub(crate) fn combine(
                 }
                 *c -= b * &g.coefs[j];
                 if *c != 0 {
-                    out.exps.extend_from_slice(&lifted);
+                    out.exps.extend_from_slice(lifted);
                     k += 1;
                 }
                 i += 1;
                 j += 1;
                 if j < g.len() {
-                    order::mul_into(&mut lifted, q, g.mono(j));
+                    order::mul_into(lifted, q, g.mono(j));
                 }
             }
         }
@@ -267,6 +267,10 @@ pub(crate) fn reduce_switching_at(
     let mut steps = 0u32;
     let mut sugar = 0;
     let mut spare: Vec<Integer> = Vec::new();
+    // Per-step temporaries, reused: the gcd, the multipliers, the quotient monomial and the
+    // lifted monomial of the merge.
+    let (mut d, mut a, mut b) = (Integer::new(), Integer::new(), Integer::new());
+    let (mut q, mut lifted): (Vec<u32>, Vec<u32>) = (Vec::with_capacity(w), Vec::with_capacity(w));
     if p.len() > long {
         return reduce_in_buckets(p, rem, scale, sugar, divisors, order, meter);
     }
@@ -275,15 +279,17 @@ pub(crate) fn reduce_switching_at(
         match find_divisor(divisors, p.mono(start)) {
             Some((g, g_sugar)) => {
                 let c = &p.coefs[start];
-                let d = Integer::from(c.gcd_ref(g.lc()));
-                let (mut a, mut b) = (Integer::from(g.lc().div_exact_ref(&d)), Integer::from(c.div_exact_ref(&d)));
+                d.assign(c.gcd_ref(g.lc()));
+                a.assign(g.lc().div_exact_ref(&d));
+                b.assign(c.div_exact_ref(&d));
                 if a.is_negative() {
-                    a = -a;
-                    b = -b;
+                    a.neg_assign();
+                    b.neg_assign();
                 }
-                let q = order::quotient(g.lm(), p.mono(start));
+                q.clear();
+                q.extend(p.mono(start).iter().zip(g.lm()).map(|(x, y)| x - y));
                 sugar = sugar.max(q[0] + g_sugar);
-                combine(&mut p, start + 1, (&a, &b), (&q, g), order, &mut buf, &mut spare);
+                combine(&mut p, start + 1, (&a, &b), (&q, g), order, &mut buf, &mut spare, &mut lifted);
                 std::mem::swap(&mut p, &mut buf);
                 if a != 1 {
                     for c in &mut rem.coefs {
