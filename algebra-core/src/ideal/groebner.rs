@@ -36,6 +36,8 @@ struct Pair {
     i: usize,
     j: usize,
     lcm: Vec<u32>,
+    /// `order::mask(lcm)`: most divisibility tests of the criteria fail on it.
+    mask: u64,
     sugar: u32,
 }
 
@@ -86,8 +88,10 @@ impl State<'_> {
         }
         // Old pairs (i, j): drop when LM(h) divides lcm(i, j) and both new lcms differ from it.
         let polys = &self.polys;
+        let mh = self.masks[k];
         self.pairs.retain(|p| {
-            !(order::divides(&lh, &p.lcm)
+            !(mh & !p.mask == 0
+                && order::divides(&lh, &p.lcm)
                 && !order::lcm_is(polys[p.i].lm(), &lh, &p.lcm)
                 && !order::lcm_is(polys[p.j].lm(), &lh, &p.lcm))
         });
@@ -97,13 +101,25 @@ impl State<'_> {
             if !coprime {
                 let si = self.sugar[i] + lcm[0] - self.polys[i].lm()[0];
                 let sk = self.sugar[k] + lcm[0] - lh[0];
-                self.pairs.push(Pair { i, j: k, lcm, sugar: si.max(sk) });
+                let mask = order::mask(&lcm);
+                self.pairs.push(Pair { i, j: k, lcm, mask, sugar: si.max(sk) });
             }
         }
-        // Keep the list sorted by decreasing (sugar, lcm), the next pair last (a stable sort of
-        // a sorted run and a short appended one; the new pairs go before older equal ones).
+        // Keep the list sorted by decreasing (sugar, lcm), the next pair last: the new pairs
+        // sorted apart and merged in (older equal ones first, as a stable sort would put them).
         if self.pairs.len() > before {
-            self.pairs.sort_by(|p, q| q.sugar.cmp(&p.sugar).then_with(|| order.cmp(&q.lcm, &p.lcm)));
+            let later = |p: &Pair, q: &Pair| q.sugar.cmp(&p.sugar).then_with(|| order.cmp(&q.lcm, &p.lcm));
+            let mut new = self.pairs.split_off(before);
+            new.sort_by(later);
+            let old = std::mem::take(&mut self.pairs);
+            self.pairs.reserve(old.len() + new.len());
+            let (mut old, mut new) = (old.into_iter().peekable(), new.into_iter().peekable());
+            while let (Some(o), Some(n)) = (old.peek(), new.peek()) {
+                let next = if later(n, o) == std::cmp::Ordering::Less { new.next() } else { old.next() };
+                self.pairs.extend(next);
+            }
+            self.pairs.extend(old);
+            self.pairs.extend(new);
         }
         for i in 0..k {
             if self.active[i] && order::divides(&lh, self.polys[i].lm()) {
