@@ -71,7 +71,8 @@ pub(crate) struct Reduced {
 /// into `out`'s slot (leaving `out`'s old integer, limbs and all, in `p`, whose slots from
 /// `from` on are dead), and a new coefficient `-b·c` is computed into the slot's limbs. The
 /// reduction alternates `p` and `out` as its two buffers, so every slot is reused at the next
-/// step; surplus slots of `out` go to `spare`, from which a longer `out` takes them.
+/// step; surplus slots of `out` go to `spare`, from which a longer `out` takes them. `lifted` is
+/// scratch space for the lifted monomials of `g`.
 pub(crate) fn combine(
     p: &mut DPoly,
     from: usize,
@@ -79,8 +80,7 @@ pub(crate) fn combine(
     (q, g): (&Mono, &DPoly),
     order: MonomialOrder,
     out: &mut DPoly,
-    spare: &mut Vec<Integer>,
-    lifted: &mut Vec<u32>,
+    (spare, lifted): (&mut Vec<Integer>, &mut Vec<u32>),
 ) {
     out.exps.clear();
     out.exps.reserve((p.len() - from + g.len()) * p.w);
@@ -289,7 +289,7 @@ pub(crate) fn reduce_switching_at(
                 q.clear();
                 q.extend(p.mono(start).iter().zip(g.lm()).map(|(x, y)| x - y));
                 sugar = sugar.max(q[0] + g_sugar);
-                combine(&mut p, start + 1, (&a, &b), (&q, g), order, &mut buf, &mut spare, &mut lifted);
+                combine(&mut p, start + 1, (&a, &b), (&q, g), order, &mut buf, (&mut spare, &mut lifted));
                 std::mem::swap(&mut p, &mut buf);
                 if a != 1 {
                     for c in &mut rem.coefs {

@@ -90,10 +90,10 @@ impl State<'_> {
         let polys = &self.polys;
         let mh = self.masks[k];
         self.pairs.retain(|p| {
-            !(mh & !p.mask == 0
-                && order::divides(&lh, &p.lcm)
-                && !order::lcm_is(polys[p.i].lm(), &lh, &p.lcm)
-                && !order::lcm_is(polys[p.j].lm(), &lh, &p.lcm))
+            mh & !p.mask != 0
+                || !order::divides(&lh, &p.lcm)
+                || order::lcm_is(polys[p.i].lm(), &lh, &p.lcm)
+                || order::lcm_is(polys[p.j].lm(), &lh, &p.lcm)
         });
         // Product criterion: coprime leading monomials need no pair.
         let before = self.pairs.len();
