@@ -6,6 +6,7 @@ use super::{DPoly, IdealError, Meter, MonomialOrder, PolyRing};
 use crate::poly::Poly;
 use rug::ops::NegAssign;
 use rug::{Assign, Integer, Rational};
+use std::cell::RefCell;
 use std::cmp::Ordering;
 
 /// The result of dividing `f` by `[g_1, ..., g_s]`: `f = sum q_i g_i + r`, where no term of `r`
@@ -160,6 +161,7 @@ pub(crate) fn s_poly(
     (b, mg, g): (&Integer, &Mono, &DPoly),
     order: MonomialOrder,
 ) -> DPoly {
+    let mut pool = POOL.with(|p| std::mem::take(&mut *p.borrow_mut()));
     let mut out = DPoly::zero(f.w);
     out.exps.reserve((f.len() + g.len()) * f.w);
     out.coefs.reserve(f.len() + g.len());
@@ -179,24 +181,32 @@ pub(crate) fn s_poly(
         };
         match ord {
             Ordering::Greater => {
-                out.push(&lf, Integer::from(a * &f.coefs[i]));
+                let mut c = pool.pop().unwrap_or_default();
+                c.assign(a * &f.coefs[i]);
+                out.push(&lf, c);
                 i += 1;
                 if i < f.len() {
                     order::mul_into(&mut lf, mf, f.mono(i));
                 }
             }
             Ordering::Less => {
-                out.push(&lg, -Integer::from(b * &g.coefs[j]));
+                let mut c = pool.pop().unwrap_or_default();
+                c.assign(b * &g.coefs[j]);
+                c.neg_assign();
+                out.push(&lg, c);
                 j += 1;
                 if j < g.len() {
                     order::mul_into(&mut lg, mg, g.mono(j));
                 }
             }
             Ordering::Equal => {
-                let mut c = Integer::from(a * &f.coefs[i]);
+                let mut c = pool.pop().unwrap_or_default();
+                c.assign(a * &f.coefs[i]);
                 c -= b * &g.coefs[j];
                 if c != 0 {
                     out.push(&lf, c);
+                } else {
+                    pool.push(c);
                 }
                 i += 1;
                 j += 1;
@@ -209,7 +219,29 @@ pub(crate) fn s_poly(
             }
         }
     }
+    POOL.with(|p| *p.borrow_mut() = pool);
     out
+}
+
+thread_local! {
+    /// GMP integers left over by finished merge reductions (their limbs allocated), taken by
+    /// the next S-polynomials: without it every S-polynomial term is a `malloc` and every
+    /// reduction ends in as many `free`s.
+    static POOL: RefCell<Vec<Integer>> = const { RefCell::new(Vec::new()) };
+}
+
+/// The most integers [`POOL`] keeps (a few hundred kilobytes of small limbs at most).
+const POOL_MAX: usize = 4096;
+
+/// Gives the integers of `vs` to [`POOL`], up to [`POOL_MAX`]; the rest are freed.
+fn recycle(vs: impl IntoIterator<Item = Vec<Integer>>) {
+    POOL.with(|p| {
+        let mut pool = p.borrow_mut();
+        for v in vs {
+            let room = POOL_MAX.saturating_sub(pool.len());
+            pool.extend(v.into_iter().take(room));
+        }
+    });
 }
 
 /// The gcd of the coefficients of `p` and `r` (0 when both are zero).
@@ -319,6 +351,7 @@ pub(crate) fn reduce_switching_at(
             }
         }
     }
+    recycle([p.coefs, buf.coefs, spare]);
     Ok(Reduced { r: rem, s: scale, sugar })
 }
 
