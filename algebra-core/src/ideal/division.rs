@@ -38,6 +38,9 @@ pub(crate) struct Reducer<'a> {
     pub(crate) mask: u64,
     pub(crate) poly: &'a DPoly,
     pub(crate) sugar: u32,
+    /// The coefficients as machine words when all fit (`super::small`), where the caller keeps
+    /// them; `None` otherwise.
+    pub(crate) small: Option<&'a [i64]>,
 }
 
 impl<'a> Reducer<'a> {
@@ -46,7 +49,7 @@ impl<'a> Reducer<'a> {
     }
 
     pub(crate) fn with_sugar(poly: &'a DPoly, sugar: u32) -> Self {
-        Reducer { mask: order::mask(poly.lm()), poly, sugar }
+        Reducer { mask: order::mask(poly.lm()), poly, sugar, small: None }
     }
 }
 
@@ -277,11 +280,14 @@ pub(crate) fn reduce(
     order: MonomialOrder,
     meter: &mut Meter,
 ) -> Result<Reduced, IdealError> {
-    reduce_switching_at(f, divisors, order, meter, LONG_WORK)
+    // Machine words while everything fits (`super::small`), continued in GMP integers from the
+    // first step that would overflow.
+    super::small::reduce(f, divisors, order, meter)
 }
 
 /// [`reduce`] with the switch to geobuckets at `long` terms (`0`: buckets from the start;
 /// `usize::MAX`: merges only).
+#[cfg(test)]
 pub(crate) fn reduce_switching_at(
     f: DPoly,
     divisors: &[Reducer<'_>],
@@ -290,14 +296,23 @@ pub(crate) fn reduce_switching_at(
     long: usize,
 ) -> Result<Reduced, IdealError> {
     let w = f.w;
-    let mut p = f;
+    reduce_from((f, DPoly::zero(w), Rational::from(1), 0), divisors, order, meter, long)
+}
+
+/// The merge reduction continued from `rem + p ≡ scale·f` with the sugar so far (see
+/// [`reduce`]).
+pub(crate) fn reduce_from(
+    (mut p, mut rem, mut scale, mut sugar): (DPoly, DPoly, Rational, u32),
+    divisors: &[Reducer<'_>],
+    order: MonomialOrder,
+    meter: &mut Meter,
+    long: usize,
+) -> Result<Reduced, IdealError> {
+    let w = p.w;
     let mut buf = DPoly::zero(w);
-    let mut rem = DPoly::zero(w);
     // rem + p[start..] ≡ scale·f.
-    let mut scale = Rational::from(1);
     let mut start = 0;
     let mut steps = 0u32;
-    let mut sugar = 0;
     let mut spare: Vec<Integer> = Vec::new();
     // Per-step temporaries, reused: the gcd, the multipliers, the quotient monomial and the
     // lifted monomial of the merge.
@@ -363,7 +378,7 @@ pub(crate) fn reduce_switching_at(
 /// (divided by every `a`, multiplied by the content the work sheds every 16 steps), and each
 /// remainder term remembers the `λ` it was taken under, so the remainder is never rescaled
 /// during the reduction.
-fn reduce_in_buckets(
+pub(crate) fn reduce_in_buckets(
     p: DPoly,
     mut rem: DPoly,
     scale: Rational,

@@ -6,6 +6,7 @@
 
 use super::division::{Reducer, reduce, s_poly};
 use super::order;
+use super::small::small_coefs;
 use super::{Budget, DPoly, IdealError, Meter, PolyRing};
 use crate::poly::Poly;
 use rug::{Integer, Rational};
@@ -47,6 +48,8 @@ struct State<'r> {
     sugar: Vec<u32>,
     /// The variable mask of each leading monomial (`order::mask`), computed once.
     masks: Vec<u64>,
+    /// Each element's coefficients as machine words, when all fit (`super::small`).
+    small: Vec<Option<Vec<i64>>>,
     active: Vec<bool>,
     /// The pending pairs, sorted by decreasing (sugar, lcm): the next pair is the last.
     pairs: Vec<Pair>,
@@ -61,7 +64,12 @@ impl State<'_> {
     fn reducers(&self) -> Vec<Reducer<'_>> {
         (0..self.polys.len())
             .filter(|&i| self.active[i])
-            .map(|i| Reducer { mask: self.masks[i], poly: &self.polys[i], sugar: self.sugar[i] })
+            .map(|i| Reducer {
+                mask: self.masks[i],
+                poly: &self.polys[i],
+                sugar: self.sugar[i],
+                small: self.small[i].as_deref(),
+            })
             .collect()
     }
 
@@ -169,6 +177,7 @@ impl State<'_> {
                 .collect();
             let h = with_tail_reduced(g, &others, order, meter)?;
             self.terms = self.terms + h.len() - g.len();
+            self.small[i] = small_coefs(&h);
             self.polys[i] = h;
         }
         Ok(())
@@ -178,6 +187,7 @@ impl State<'_> {
         h.make_primitive();
         meter.check_basis(self.active.iter().filter(|a| **a).count() + 1, self.terms + h.len())?;
         self.masks.push(order::mask(h.lm()));
+        self.small.push(small_coefs(&h));
         self.polys.push(h);
         self.sugar.push(sugar);
         self.clean.push(self.polys.len());
@@ -201,6 +211,7 @@ impl PolyRing {
             polys: Vec::new(),
             sugar: Vec::new(),
             masks: Vec::new(),
+            small: Vec::new(),
             active: Vec::new(),
             pairs: Vec::new(),
             clean: Vec::new(),
