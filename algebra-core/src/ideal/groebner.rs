@@ -6,7 +6,7 @@
 
 use super::division::{Reducer, reduce, s_poly};
 use super::order;
-use super::small::small_coefs;
+use super::small::{self, small_coefs};
 use super::{Budget, DPoly, IdealError, Meter, PolyRing};
 use crate::poly::Poly;
 use rug::{Integer, Rational};
@@ -148,6 +148,15 @@ impl State<'_> {
         s_poly((&a, &mf, f), (&b, &mg, g), self.ring.order())
     }
 
+    /// [`Self::spoly`] in machine words when both elements have theirs and nothing overflows.
+    fn small_spoly(&self, p: &Pair) -> Option<small::Work> {
+        let (f, g) = (&self.polys[p.i], &self.polys[p.j]);
+        let (fc, gc) = (self.small[p.i].as_deref()?, self.small[p.j].as_deref()?);
+        let (mf, mg) = (order::quotient(f.lm(), &p.lcm), order::quotient(g.lm(), &p.lcm));
+        let d = small::gcd(fc[0].unsigned_abs(), gc[0].unsigned_abs()) as i64;
+        small::s_poly((gc[0] / d, &mf, f, fc), (fc[0] / d, &mg, g, gc), self.ring.order())
+    }
+
     /// Tail-reduces the active elements whose tails became reducible by elements added since
     /// their last reduction; leading monomials stay, so the pairs and criteria are untouched (a
     /// standard representation of an S-polynomial in the old elements is one in the new). Run
@@ -243,8 +252,16 @@ impl PolyRing {
                 st.reduce_tails(meter)?;
             }
             let pair = st.pairs.pop().expect("non-empty pair list");
-            let s = st.spoly(&pair);
-            let red = reduce(s, &st.reducers(), order, meter)?;
+            let reducers = st.reducers();
+            let words = match st.small_spoly(&pair) {
+                Some(s) if reducers.iter().all(|d| d.small.is_some()) => Some(s),
+                _ => None,
+            };
+            let red = match words {
+                Some(s) => small::reduce_work(s, self.width(), &reducers, order, meter)?,
+                None => reduce(st.spoly(&pair), &reducers, order, meter)?,
+            };
+            drop(reducers);
             let r = red.r;
             if !r.is_zero() {
                 if r.lm()[0] == 0 {

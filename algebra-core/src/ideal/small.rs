@@ -25,7 +25,7 @@ fn fit(v: i128) -> Option<i64> {
     i64::try_from(v).ok().filter(|&x| x != i64::MIN)
 }
 
-fn gcd(mut a: u64, mut b: u64) -> u64 {
+pub(crate) fn gcd(mut a: u64, mut b: u64) -> u64 {
     while b != 0 {
         (a, b) = (b, a % b);
     }
@@ -33,9 +33,63 @@ fn gcd(mut a: u64, mut b: u64) -> u64 {
 }
 
 /// A polynomial with machine-word coefficients (the layout of [`DPoly`]).
-struct Work {
+pub(crate) struct Work {
     exps: Vec<u32>,
     coefs: Vec<i64>,
+}
+
+/// The S-polynomial of [`super::division::s_poly`] (`a·mf·f[1..] - b·mg·g[1..]`) in machine
+/// words, from the coefficients `fc`, `gc` of `f`, `g` as words; `None` on overflow.
+pub(crate) fn s_poly(
+    (a, mf, f, fc): (i64, &Mono, &DPoly, &[i64]),
+    (b, mg, g, gc): (i64, &Mono, &DPoly, &[i64]),
+    order: MonomialOrder,
+) -> Option<Work> {
+    let w = f.w;
+    let mut out =
+        Work { exps: Vec::with_capacity((f.len() + g.len()) * w), coefs: Vec::with_capacity(f.len() + g.len()) };
+    let (a, b) = (i128::from(a), i128::from(b));
+    let (mut lf, mut lg) = (Vec::with_capacity(w), Vec::with_capacity(w));
+    let (mut i, mut j) = (1, 1);
+    if i < f.len() {
+        order::mul_into(&mut lf, mf, f.mono(i));
+    }
+    if j < g.len() {
+        order::mul_into(&mut lg, mg, g.mono(j));
+    }
+    while i < f.len() || j < g.len() {
+        let ord = match (i < f.len(), j < g.len()) {
+            (true, true) => order.cmp(&lf, &lg),
+            (true, false) => Ordering::Greater,
+            _ => Ordering::Less,
+        };
+        if ord != Ordering::Less {
+            let mut v = a * i128::from(fc[i]);
+            if ord == Ordering::Equal {
+                v -= b * i128::from(gc[j]);
+                j += 1;
+                if j < g.len() {
+                    order::mul_into(&mut lg, mg, g.mono(j));
+                }
+            }
+            if v != 0 {
+                out.coefs.push(fit(v)?);
+                out.exps.extend_from_slice(&lf);
+            }
+            i += 1;
+            if i < f.len() {
+                order::mul_into(&mut lf, mf, f.mono(i));
+            }
+        } else {
+            out.coefs.push(fit(-b * i128::from(gc[j]))?);
+            out.exps.extend_from_slice(&lg);
+            j += 1;
+            if j < g.len() {
+                order::mul_into(&mut lg, mg, g.mono(j));
+            }
+        }
+    }
+    Some(out)
 }
 
 impl Work {
@@ -125,7 +179,27 @@ pub(crate) fn reduce(
     let Some(coefs) = coefs else {
         return reduce_from((f, DPoly::zero(w), Rational::from(1), 0), divisors, order, meter, LONG_WORK);
     };
-    let mut p = Work { exps: f.exps, coefs };
+    reduce_work(Work { exps: f.exps, coefs }, w, divisors, order, meter)
+}
+
+/// [`reduce`] of a polynomial already in machine words (`w` words per monomial); every divisor
+/// must have its words (`small`).
+pub(crate) fn reduce_work(
+    mut p: Work,
+    w: usize,
+    divisors: &[Reducer<'_>],
+    order: MonomialOrder,
+    meter: &mut Meter,
+) -> Result<Reduced, IdealError> {
+    if p.coefs.len() > LONG_WORK {
+        return reduce_from(
+            (p.into_dpoly(w, 0), DPoly::zero(w), Rational::from(1), 0),
+            divisors,
+            order,
+            meter,
+            LONG_WORK,
+        );
+    }
     let mut buf = Work { exps: Vec::new(), coefs: Vec::new() };
     let mut rem = Work { exps: Vec::new(), coefs: Vec::new() };
     // rem + p[start..] ≡ scale·f.
