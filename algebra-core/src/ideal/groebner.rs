@@ -182,7 +182,7 @@ impl State<'_> {
             }
             let others: Vec<Reducer<'_>> = (0..self.polys.len())
                 .filter(|&j| j != i && self.active[j])
-                .map(|j| Reducer::new(&self.polys[j]))
+                .map(|j| Reducer { small: self.small[j].as_deref(), ..Reducer::new(&self.polys[j]) })
                 .collect();
             let h = with_tail_reduced(g, &others, order, meter)?;
             self.terms = self.terms + h.len() - g.len();
@@ -287,9 +287,12 @@ fn unit(ring: &PolyRing) -> DPoly {
 fn interreduce(mut gens: Vec<DPoly>, ring: &PolyRing, meter: &mut Meter) -> Result<Vec<DPoly>, IdealError> {
     gens.sort_by(|a, b| ring.order().cmp(a.lm(), b.lm()));
     let mut out: Vec<DPoly> = Vec::with_capacity(gens.len());
+    let small: Vec<Option<Vec<i64>>> = gens.iter().map(small_coefs).collect();
     for i in 0..gens.len() {
-        let others: Vec<Reducer<'_>> =
-            gens.iter().enumerate().filter(|(j, _)| *j != i).map(|(_, g)| Reducer::new(g)).collect();
+        let others: Vec<Reducer<'_>> = (0..gens.len())
+            .filter(|&j| j != i)
+            .map(|j| Reducer { small: small[j].as_deref(), ..Reducer::new(&gens[j]) })
+            .collect();
         out.push(with_tail_reduced(&gens[i], &others, ring.order(), meter)?);
     }
     Ok(out)
@@ -363,7 +366,9 @@ impl GroebnerBasis {
     /// `f = F / D`, and `r ≡ s·F`: the normal form of `f` is `r / (s·D)`.
     pub(crate) fn normal_form_metered(&self, f: &Poly, meter: &mut Meter) -> Result<Poly, IdealError> {
         let (f, den) = self.ring.to_dense(f)?;
-        let reducers: Vec<Reducer<'_>> = self.basis.iter().map(Reducer::new).collect();
+        let small: Vec<Option<Vec<i64>>> = self.basis.iter().map(small_coefs).collect();
+        let reducers: Vec<Reducer<'_>> =
+            self.basis.iter().zip(&small).map(|(g, w)| Reducer { small: w.as_deref(), ..Reducer::new(g) }).collect();
         let super::division::Reduced { r, s, .. } = reduce(f, &reducers, self.ring.order(), meter)?;
         Ok(self.ring.to_poly(&r, &(s * den)))
     }
