@@ -77,26 +77,27 @@ impl State<'_> {
     fn update(&mut self, k: usize) {
         let lh = self.polys[k].lm().to_vec();
         let order = self.ring.order();
-        // New pairs (i, k) for active i.
-        let mut cands: Vec<(usize, Vec<u32>, bool)> = (0..k)
+        // New pairs (i, k) for active i, with the variable mask of their lcm.
+        let mh = self.masks[k];
+        let mut cands: Vec<(usize, Vec<u32>, bool, u64)> = (0..k)
             .filter(|&i| self.active[i])
             .map(|i| {
                 let li = self.polys[i].lm();
-                (i, order::lcm(li, &lh), order::coprime(li, &lh))
+                let coprime = self.masks[i] & mh == 0 || order::coprime(li, &lh);
+                (i, order::lcm(li, &lh), coprime, self.masks[i] | mh)
             })
             .collect();
         // Chain criterion among the new pairs: drop (i, k) if another new pair's lcm divides
         // it; equal lcms keep one, preferring a coprime (product-criterion) one.
         cands.sort_by(|a, b| order.cmp(&a.1, &b.1).then_with(|| b.2.cmp(&a.2)));
-        let mut kept: Vec<(usize, Vec<u32>, bool)> = Vec::new();
+        let mut kept: Vec<(usize, Vec<u32>, bool, u64)> = Vec::new();
         for c in cands {
-            if !kept.iter().any(|d| order::divides(&d.1, &c.1)) {
+            if !kept.iter().any(|d| d.3 & !c.3 == 0 && order::divides(&d.1, &c.1)) {
                 kept.push(c);
             }
         }
         // Old pairs (i, j): drop when LM(h) divides lcm(i, j) and both new lcms differ from it.
         let polys = &self.polys;
-        let mh = self.masks[k];
         self.pairs.retain(|p| {
             mh & !p.mask != 0
                 || !order::divides(&lh, &p.lcm)
@@ -105,11 +106,10 @@ impl State<'_> {
         });
         // Product criterion: coprime leading monomials need no pair.
         let before = self.pairs.len();
-        for (i, lcm, coprime) in kept {
+        for (i, lcm, coprime, mask) in kept {
             if !coprime {
                 let si = self.sugar[i] + lcm[0] - self.polys[i].lm()[0];
                 let sk = self.sugar[k] + lcm[0] - lh[0];
-                let mask = order::mask(&lcm);
                 self.pairs.push(Pair { i, j: k, lcm, mask, sugar: si.max(sk) });
             }
         }
