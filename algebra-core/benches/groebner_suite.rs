@@ -86,6 +86,196 @@ fn study(k: usize) -> Ideal {
     Ideal { name, gens, claims: quadric(&product), sympy: k == 1 }
 }
 
+/// A quaternion `w + x i + y j + z k` with polynomial coordinates (Jüttler's `H`).
+type Quat = [Poly; 4];
+
+fn quat_var(prefix: &str) -> Quat {
+    ["0", "1", "2", "3"].map(|c| Poly::var(&format!("{prefix}{c}")))
+}
+
+/// Pure quaternion `0 + v` (Jüttler's vectors of R³ inside `H`).
+fn pure(prefix: &str) -> Quat {
+    let v = quat_var(prefix);
+    [Poly::zero(), v[1].clone(), v[2].clone(), v[3].clone()]
+}
+
+/// Hamilton product: `(a0, a)(b0, b) = (a0 b0 - a·b, a0 b + b0 a + a × b)`.
+fn qmul(a: &Quat, b: &Quat) -> Quat {
+    let m = |i: usize, j: usize| a[i].clone() * &b[j];
+    [
+        m(0, 0) - m(1, 1) - m(2, 2) - m(3, 3),
+        m(0, 1) + m(1, 0) + m(2, 3) - m(3, 2),
+        m(0, 2) + m(2, 0) + m(3, 1) - m(1, 3),
+        m(0, 3) + m(3, 0) + m(1, 2) - m(2, 1),
+    ]
+}
+
+fn qsub(a: &Quat, b: &Quat) -> Quat {
+    [0, 1, 2, 3].map(|c| a[c].clone() - &b[c])
+}
+
+fn qscale(s: &Poly, a: &Quat) -> Quat {
+    [0, 1, 2, 3].map(|c| s.clone() * &a[c])
+}
+
+/// `|a|² = a ã` (a real number).
+fn qnorm2(a: &Quat) -> Poly {
+    a.iter().fold(Poly::zero(), |s, c| s + c.clone() * c)
+}
+
+/// Bernstein polynomial `b_j^k(t) = C(k, j) t^j (1 - t)^(k - j)`.
+fn bernstein(k: usize, j: usize, t: &Poly) -> Poly {
+    let binom = (0..j).fold(1i64, |b, i| b * (k - i) as i64 / (i as i64 + 1));
+    let mut p = Poly::from_i64(binom);
+    for _ in 0..j {
+        p = p * t;
+    }
+    for _ in j..k {
+        p = p * &(Poly::one() - t);
+    }
+    p
+}
+
+/// The Bézier quaternion curve `Σ_j b_j^k(t) C_j` at `t` (Jüttler (17)).
+fn bezier(cs: &[Quat], t: &Poly) -> Quat {
+    let k = cs.len() - 1;
+    cs.iter().enumerate().fold([(); 4].map(|_| Poly::zero()), |acc, (j, c)| {
+        let b = bernstein(k, j, t);
+        [0, 1, 2, 3].map(|i| acc[i].clone() + b.clone() * &c[i])
+    })
+}
+
+/// `u Π_{i<l} (t_l - t_i) - 1`: the parameters are distinct (Rabinowitsch).
+fn distinct(ts: &[Poly], u: &str) -> Poly {
+    let mut p = Poly::var(u);
+    for l in 0..ts.len() {
+        for i in 0..l {
+            p = p * &(ts[l].clone() - &ts[i]);
+        }
+    }
+    p - Poly::one()
+}
+
+/// Jüttler's Proposition 1 (the affine method), `m + 1` symbolic rotations `R_i = r_i0 + r_i`
+/// at symbolic parameters `t_i`: two solutions `C`, `C'` of the system (21) (denominators
+/// cleared: `r_i0 Σ_j b_j^m(t_i) Vec C_j = r_i`, `Scal C_j = 1`), the parameters distinct and
+/// `r_i0 != 0` (Rabinowitsch). Claims: `C_j = C'_j` (uniqueness) and `r_i0 Q_rot(t_i) = R_i`,
+/// i.e. (18) with λ_i = 1/r_i0 (20). The dependence on the fixed frame is not a membership
+/// statement and is not encoded.
+fn juttler_1(m: usize) -> Ideal {
+    let ts: Vec<Poly> = (0..=m).map(|i| Poly::var(&format!("t{i}"))).collect();
+    let rs: Vec<Quat> = (0..=m).map(|i| quat_var(&format!("r{i}"))).collect();
+    let mut gens = vec![distinct(&ts, "u")];
+    let mut solutions = Vec::new();
+    for name in ["c", "d"] {
+        let cs: Vec<Quat> = (0..=m).map(|j| quat_var(&format!("{name}{j}"))).collect();
+        gens.extend(cs.iter().map(|c| c[0].clone() - Poly::one()));
+        for (t, r) in ts.iter().zip(&rs) {
+            let q = bezier(&cs, t);
+            gens.extend((1..4).map(|c| r[0].clone() * &q[c] - &r[c]));
+        }
+        solutions.push(cs);
+    }
+    for (i, r) in rs.iter().enumerate() {
+        gens.push(Poly::var(&format!("w{i}")) * &r[0] - Poly::one());
+    }
+    let mut claims: Vec<Poly> = solutions[0].iter().zip(&solutions[1]).flat_map(|(c, d)| qsub(c, d)).collect();
+    for (t, r) in ts.iter().zip(&rs) {
+        claims.extend(qsub(&qscale(&r[0], &bezier(&solutions[0], t)), r));
+    }
+    Ideal { name: "juttler-1", gens, claims, sympy: false }
+}
+
+/// Jüttler's Proposition 2 (the elliptic method), `m + 1` symbolic unit rotations `R_i`
+/// (`|R_i|² = 1`, (23)) at distinct symbolic parameters, a symbolic unit rotation `D`: two
+/// solutions `C`, `C'` of (25). Claims: `C_j = C'_j` (uniqueness); the rotated motions
+/// `D Q_rot` and `Q_rot D` satisfy (25) for the data `D R_i`, `R_i D` and the normalisation
+/// (22) (the paper's proof of the invariance: with uniqueness, they are the elliptic
+/// interpolants of the rotated data). The invariance as `C'_j = D C_j` for `C'` solving (25)
+/// for `D R_i` was out of reach of both engines (the data `D R_i` are quadratic, so grevlex
+/// leads with them: Singular had no basis after two minutes, even at fixed parameters). The
+/// sign choice (24) is an inequality and is not encoded.
+fn juttler_2(m: usize) -> Ideal {
+    let ts: Vec<Poly> = (0..=m).map(|i| Poly::var(&format!("t{i}"))).collect();
+    let rs: Vec<Quat> = (0..=m).map(|i| quat_var(&format!("r{i}"))).collect();
+    let d = quat_var("q");
+    let mut gens = vec![distinct(&ts, "u"), qnorm2(&d) - Poly::one()];
+    gens.extend(rs.iter().map(|r| qnorm2(r) - Poly::one()));
+    let mut solutions = Vec::new();
+    for name in ["c", "e"] {
+        let cs: Vec<Quat> = (0..=m).map(|j| quat_var(&format!("{name}{j}"))).collect();
+        for (t, r) in ts.iter().zip(&rs) {
+            gens.extend(qsub(&bezier(&cs, t), r));
+        }
+        solutions.push(cs);
+    }
+    let mut claims: Vec<Poly> = solutions[0].iter().zip(&solutions[1]).flat_map(|(c, e)| qsub(c, e)).collect();
+    for (t, r) in ts.iter().zip(&rs) {
+        let q = bezier(&solutions[0], t);
+        let (fixed, moving) = (qmul(&d, &q), qmul(&q, &d));
+        claims.extend(qsub(&fixed, &qmul(&d, r)));
+        claims.extend(qsub(&moving, &qmul(r, &d)));
+        claims.push(qnorm2(&fixed) - Poly::one());
+        claims.push(qnorm2(&moving) - Poly::one());
+    }
+    Ideal { name: "juttler-2", gens, claims, sympy: false }
+}
+
+/// `r_0 Vec(q) - Scal(q) r` (Jüttler (27)): `q` is a real multiple of `r` when `r_0 != 0`.
+fn projective_condition(q: &Quat, r: &Quat) -> Vec<Poly> {
+    (1..4).map(|c| r[0].clone() * &q[c] - q[0].clone() * &r[c]).collect()
+}
+
+/// Jüttler's Proposition 3 (the projective method), at one interpolation point: `q =
+/// Q_rot(t_i)` and `R = Rot(P_i)` symbolic quaternions satisfying (27), `r_0 != 0`
+/// (Rabinowitsch), `D` a symbolic quaternion. Claims: (18) with `λ = q_0 / r_0`
+/// (`r_0 q = q_0 R`), and (27) again for `D q, D R` and for `q D, R D` (the invariance under
+/// the orientations of the fixed and the moving space). Uniqueness up to real factors is a
+/// rank statement about (28) (`verify`'s `juttler/proposition-3`), not encoded here.
+fn juttler_3() -> Ideal {
+    let (q, r, d) = (quat_var("q"), quat_var("r"), quat_var("d"));
+    let mut gens = projective_condition(&q, &r);
+    gens.push(Poly::var("v") * &r[0] - Poly::one());
+    let mut claims = qsub(&qscale(&r[0], &q), &qscale(&q[0], &r)).to_vec();
+    claims.extend(projective_condition(&qmul(&d, &q), &qmul(&d, &r)));
+    claims.extend(projective_condition(&qmul(&q, &d), &qmul(&r, &d)));
+    Ideal { name: "juttler-3", gens, claims, sympy: false }
+}
+
+/// Jüttler's Proposition 4 (the TR method), `m + 1` symbolic positions `P_i = (2 + ε s_i) R_i`
+/// at distinct symbolic parameters: a rotational motion `Q_rot` of degree `m` (symbolic
+/// coefficients) with `Q_rot(t_i) = λ_i R_i` (18), two solutions `p`, `p'` of (31). Claims:
+/// `p_j = p'_j` (uniqueness) and the interpolation `Q(t_i) = λ_i P_i` of the motion (30), real
+/// and dual part (`2 Q_rot(t_i) = 2 λ_i R_i`, `p(t_i) Q_rot(t_i) = λ_i s_i R_i`). The degree
+/// `k + m` and the dependence on the origin are not membership statements and are not encoded.
+fn juttler_4(m: usize) -> Ideal {
+    let ts: Vec<Poly> = (0..=m).map(|i| Poly::var(&format!("t{i}"))).collect();
+    let rs: Vec<Quat> = (0..=m).map(|i| quat_var(&format!("r{i}"))).collect();
+    let ss: Vec<Quat> = (0..=m).map(|i| pure(&format!("s{i}"))).collect();
+    let lambda: Vec<Poly> = (0..=m).map(|i| Poly::var(&format!("l{i}"))).collect();
+    let cs: Vec<Quat> = (0..=m).map(|j| quat_var(&format!("c{j}"))).collect();
+    let mut gens = vec![distinct(&ts, "u")];
+    for ((t, r), l) in ts.iter().zip(&rs).zip(&lambda) {
+        gens.extend(qsub(&bezier(&cs, t), &qscale(l, r)));
+    }
+    let mut solutions = Vec::new();
+    for name in ["p", "q"] {
+        let ps: Vec<Quat> = (0..=m).map(|j| pure(&format!("{name}{j}"))).collect();
+        for (t, s) in ts.iter().zip(&ss) {
+            gens.extend(qsub(&bezier(&ps, t), s).into_iter().skip(1));
+        }
+        solutions.push(ps);
+    }
+    let mut claims: Vec<Poly> =
+        solutions[0].iter().zip(&solutions[1]).flat_map(|(p, q)| qsub(p, q).into_iter().skip(1)).collect();
+    for (((t, r), s), l) in ts.iter().zip(&rs).zip(&ss).zip(&lambda) {
+        let rot = bezier(&cs, t);
+        claims.extend(qsub(&qscale(&Poly::from_i64(2), &rot), &qscale(&Poly::from_i64(2), &qscale(l, r))));
+        claims.extend(qsub(&qmul(&bezier(&solutions[0], t), &rot), &qscale(l, &qmul(s, r))));
+    }
+    Ideal { name: "juttler-4", gens, claims, sympy: false }
+}
+
 fn vars(prefix: &str, n: usize) -> Vec<Poly> {
     (0..n).map(|i| Poly::var(&format!("{prefix}{i}"))).collect()
 }
@@ -112,6 +302,9 @@ fn katsura(n: usize) -> Vec<Poly> {
     eqs
 }
 
+/// The number of intervals `m` of the Jüttler ideals (`m + 1` positions).
+const JUTTLER_M: usize = 1;
+
 fn suite() -> Vec<Ideal> {
     let std = |name, gens, sympy| Ideal { name, gens, claims: vec![], sympy };
     vec![
@@ -121,6 +314,10 @@ fn suite() -> Vec<Ideal> {
         study(1),
         study(2),
         study(3),
+        juttler_1(JUTTLER_M),
+        juttler_2(JUTTLER_M),
+        juttler_3(),
+        juttler_4(JUTTLER_M),
         std("cyclic-5", cyclic(5), true),
         std("cyclic-6", cyclic(6), false),
         std("katsura-5", katsura(5), true),

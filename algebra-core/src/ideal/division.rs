@@ -6,6 +6,7 @@ use super::{DPoly, IdealError, Meter, MonomialOrder, PolyRing};
 use crate::poly::Poly;
 use rug::ops::NegAssign;
 use rug::{Assign, Integer, Rational};
+use std::cell::RefCell;
 use std::cmp::Ordering;
 
 /// The result of dividing `f` by `[g_1, ..., g_s]`: `f = sum q_i g_i + r`, where no term of `r`
@@ -37,6 +38,9 @@ pub(crate) struct Reducer<'a> {
     pub(crate) mask: u64,
     pub(crate) poly: &'a DPoly,
     pub(crate) sugar: u32,
+    /// The coefficients as machine words when all fit (`super::small`), where the caller keeps
+    /// them; `None` otherwise.
+    pub(crate) small: Option<&'a [i64]>,
 }
 
 impl<'a> Reducer<'a> {
@@ -45,7 +49,7 @@ impl<'a> Reducer<'a> {
     }
 
     pub(crate) fn with_sugar(poly: &'a DPoly, sugar: u32) -> Self {
-        Reducer { mask: order::mask(poly.lm()), poly, sugar }
+        Reducer { mask: order::mask(poly.lm()), poly, sugar, small: None }
     }
 }
 
@@ -71,7 +75,8 @@ pub(crate) struct Reduced {
 /// into `out`'s slot (leaving `out`'s old integer, limbs and all, in `p`, whose slots from
 /// `from` on are dead), and a new coefficient `-b·c` is computed into the slot's limbs. The
 /// reduction alternates `p` and `out` as its two buffers, so every slot is reused at the next
-/// step; surplus slots of `out` go to `spare`, from which a longer `out` takes them.
+/// step; surplus slots of `out` go to `spare`, from which a longer `out` takes them. `lifted` is
+/// scratch space for the lifted monomials of `g`.
 pub(crate) fn combine(
     p: &mut DPoly,
     from: usize,
@@ -79,15 +84,14 @@ pub(crate) fn combine(
     (q, g): (&Mono, &DPoly),
     order: MonomialOrder,
     out: &mut DPoly,
-    spare: &mut Vec<Integer>,
+    (spare, lifted): (&mut Vec<Integer>, &mut Vec<u32>),
 ) {
     out.exps.clear();
     out.exps.reserve((p.len() - from + g.len()) * p.w);
     let scale = *a != 1;
-    let mut lifted: Vec<u32> = Vec::with_capacity(q.len());
     let (mut i, mut j) = (from, 1);
     if j < g.len() {
-        order::mul_into(&mut lifted, q, g.mono(j));
+        order::mul_into(lifted, q, g.mono(j));
     }
     // The slot for the `k`-th output term, reused when there is one.
     let mut k = 0;
@@ -99,7 +103,7 @@ pub(crate) fn combine(
     }
     loop {
         let ord = match (i < p.len(), j < g.len()) {
-            (true, true) => order.cmp(p.mono(i), &lifted),
+            (true, true) => order.cmp(p.mono(i), lifted),
             (true, false) => Ordering::Greater,
             (false, true) => Ordering::Less,
             (false, false) => break,
@@ -119,11 +123,11 @@ pub(crate) fn combine(
                 let c = slot(out, spare, k);
                 c.assign(b * &g.coefs[j]);
                 c.neg_assign();
-                out.exps.extend_from_slice(&lifted);
+                out.exps.extend_from_slice(lifted);
                 k += 1;
                 j += 1;
                 if j < g.len() {
-                    order::mul_into(&mut lifted, q, g.mono(j));
+                    order::mul_into(lifted, q, g.mono(j));
                 }
             }
             Ordering::Equal => {
@@ -134,13 +138,13 @@ pub(crate) fn combine(
                 }
                 *c -= b * &g.coefs[j];
                 if *c != 0 {
-                    out.exps.extend_from_slice(&lifted);
+                    out.exps.extend_from_slice(lifted);
                     k += 1;
                 }
                 i += 1;
                 j += 1;
                 if j < g.len() {
-                    order::mul_into(&mut lifted, q, g.mono(j));
+                    order::mul_into(lifted, q, g.mono(j));
                 }
             }
         }
@@ -160,6 +164,7 @@ pub(crate) fn s_poly(
     (b, mg, g): (&Integer, &Mono, &DPoly),
     order: MonomialOrder,
 ) -> DPoly {
+    let mut pool = POOL.with(|p| std::mem::take(&mut *p.borrow_mut()));
     let mut out = DPoly::zero(f.w);
     out.exps.reserve((f.len() + g.len()) * f.w);
     out.coefs.reserve(f.len() + g.len());
@@ -179,24 +184,32 @@ pub(crate) fn s_poly(
         };
         match ord {
             Ordering::Greater => {
-                out.push(&lf, Integer::from(a * &f.coefs[i]));
+                let mut c = pool.pop().unwrap_or_default();
+                c.assign(a * &f.coefs[i]);
+                out.push(&lf, c);
                 i += 1;
                 if i < f.len() {
                     order::mul_into(&mut lf, mf, f.mono(i));
                 }
             }
             Ordering::Less => {
-                out.push(&lg, -Integer::from(b * &g.coefs[j]));
+                let mut c = pool.pop().unwrap_or_default();
+                c.assign(b * &g.coefs[j]);
+                c.neg_assign();
+                out.push(&lg, c);
                 j += 1;
                 if j < g.len() {
                     order::mul_into(&mut lg, mg, g.mono(j));
                 }
             }
             Ordering::Equal => {
-                let mut c = Integer::from(a * &f.coefs[i]);
+                let mut c = pool.pop().unwrap_or_default();
+                c.assign(a * &f.coefs[i]);
                 c -= b * &g.coefs[j];
                 if c != 0 {
                     out.push(&lf, c);
+                } else {
+                    pool.push(c);
                 }
                 i += 1;
                 j += 1;
@@ -209,7 +222,29 @@ pub(crate) fn s_poly(
             }
         }
     }
+    POOL.with(|p| *p.borrow_mut() = pool);
     out
+}
+
+thread_local! {
+    /// GMP integers left over by finished merge reductions (their limbs allocated), taken by
+    /// the next S-polynomials: without it every S-polynomial term is a `malloc` and every
+    /// reduction ends in as many `free`s.
+    static POOL: RefCell<Vec<Integer>> = const { RefCell::new(Vec::new()) };
+}
+
+/// The most integers [`POOL`] keeps (a few hundred kilobytes of small limbs at most).
+const POOL_MAX: usize = 4096;
+
+/// Gives the integers of `vs` to [`POOL`], up to [`POOL_MAX`]; the rest are freed.
+fn recycle(vs: impl IntoIterator<Item = Vec<Integer>>) {
+    POOL.with(|p| {
+        let mut pool = p.borrow_mut();
+        for v in vs {
+            let room = POOL_MAX.saturating_sub(pool.len());
+            pool.extend(v.into_iter().take(room));
+        }
+    });
 }
 
 /// The gcd of the coefficients of `p` and `r` (0 when both are zero).
@@ -245,11 +280,14 @@ pub(crate) fn reduce(
     order: MonomialOrder,
     meter: &mut Meter,
 ) -> Result<Reduced, IdealError> {
-    reduce_switching_at(f, divisors, order, meter, LONG_WORK)
+    // Machine words while everything fits (`super::small`), continued in GMP integers from the
+    // first step that would overflow.
+    super::small::reduce(f, divisors, order, meter)
 }
 
 /// [`reduce`] with the switch to geobuckets at `long` terms (`0`: buckets from the start;
 /// `usize::MAX`: merges only).
+#[cfg(test)]
 pub(crate) fn reduce_switching_at(
     f: DPoly,
     divisors: &[Reducer<'_>],
@@ -258,15 +296,28 @@ pub(crate) fn reduce_switching_at(
     long: usize,
 ) -> Result<Reduced, IdealError> {
     let w = f.w;
-    let mut p = f;
+    reduce_from((f, DPoly::zero(w), Rational::from(1), 0), divisors, order, meter, long)
+}
+
+/// The merge reduction continued from `rem + p ≡ scale·f` with the sugar so far (see
+/// [`reduce`]).
+pub(crate) fn reduce_from(
+    (mut p, mut rem, mut scale, mut sugar): (DPoly, DPoly, Rational, u32),
+    divisors: &[Reducer<'_>],
+    order: MonomialOrder,
+    meter: &mut Meter,
+    long: usize,
+) -> Result<Reduced, IdealError> {
+    let w = p.w;
     let mut buf = DPoly::zero(w);
-    let mut rem = DPoly::zero(w);
     // rem + p[start..] ≡ scale·f.
-    let mut scale = Rational::from(1);
     let mut start = 0;
     let mut steps = 0u32;
-    let mut sugar = 0;
     let mut spare: Vec<Integer> = Vec::new();
+    // Per-step temporaries, reused: the gcd, the multipliers, the quotient monomial and the
+    // lifted monomial of the merge.
+    let (mut d, mut a, mut b) = (Integer::new(), Integer::new(), Integer::new());
+    let (mut q, mut lifted): (Vec<u32>, Vec<u32>) = (Vec::with_capacity(w), Vec::with_capacity(w));
     if p.len() > long {
         return reduce_in_buckets(p, rem, scale, sugar, divisors, order, meter);
     }
@@ -275,15 +326,17 @@ pub(crate) fn reduce_switching_at(
         match find_divisor(divisors, p.mono(start)) {
             Some((g, g_sugar)) => {
                 let c = &p.coefs[start];
-                let d = Integer::from(c.gcd_ref(g.lc()));
-                let (mut a, mut b) = (Integer::from(g.lc().div_exact_ref(&d)), Integer::from(c.div_exact_ref(&d)));
+                d.assign(c.gcd_ref(g.lc()));
+                a.assign(g.lc().div_exact_ref(&d));
+                b.assign(c.div_exact_ref(&d));
                 if a.is_negative() {
-                    a = -a;
-                    b = -b;
+                    a.neg_assign();
+                    b.neg_assign();
                 }
-                let q = order::quotient(g.lm(), p.mono(start));
+                q.clear();
+                q.extend(p.mono(start).iter().zip(g.lm()).map(|(x, y)| x - y));
                 sugar = sugar.max(q[0] + g_sugar);
-                combine(&mut p, start + 1, (&a, &b), (&q, g), order, &mut buf, &mut spare);
+                combine(&mut p, start + 1, (&a, &b), (&q, g), order, &mut buf, (&mut spare, &mut lifted));
                 std::mem::swap(&mut p, &mut buf);
                 if a != 1 {
                     for c in &mut rem.coefs {
@@ -313,6 +366,7 @@ pub(crate) fn reduce_switching_at(
             }
         }
     }
+    recycle([p.coefs, buf.coefs, spare]);
     Ok(Reduced { r: rem, s: scale, sugar })
 }
 
@@ -324,7 +378,7 @@ pub(crate) fn reduce_switching_at(
 /// (divided by every `a`, multiplied by the content the work sheds every 16 steps), and each
 /// remainder term remembers the `λ` it was taken under, so the remainder is never rescaled
 /// during the reduction.
-fn reduce_in_buckets(
+pub(crate) fn reduce_in_buckets(
     p: DPoly,
     mut rem: DPoly,
     scale: Rational,

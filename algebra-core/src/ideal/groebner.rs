@@ -6,6 +6,7 @@
 
 use super::division::{Reducer, reduce, s_poly};
 use super::order;
+use super::small::{self, small_coefs};
 use super::{Budget, DPoly, IdealError, Meter, PolyRing};
 use crate::poly::Poly;
 use rug::{Integer, Rational};
@@ -36,6 +37,8 @@ struct Pair {
     i: usize,
     j: usize,
     lcm: Vec<u32>,
+    /// `order::mask(lcm)`: most divisibility tests of the criteria fail on it.
+    mask: u64,
     sugar: u32,
 }
 
@@ -43,7 +46,12 @@ struct State<'r> {
     ring: &'r PolyRing,
     polys: Vec<DPoly>,
     sugar: Vec<u32>,
+    /// The variable mask of each leading monomial (`order::mask`), computed once.
+    masks: Vec<u64>,
+    /// Each element's coefficients as machine words, when all fit (`super::small`).
+    small: Vec<Option<Vec<i64>>>,
     active: Vec<bool>,
+    /// The pending pairs, sorted by decreasing (sugar, lcm): the next pair is the last.
     pairs: Vec<Pair>,
     /// `clean[i]`: element `i`'s tail has no term divisible by the leading monomial of an
     /// element with index below `clean[i]` (it was reduced by all of them).
@@ -56,7 +64,12 @@ impl State<'_> {
     fn reducers(&self) -> Vec<Reducer<'_>> {
         (0..self.polys.len())
             .filter(|&i| self.active[i])
-            .map(|i| Reducer::with_sugar(&self.polys[i], self.sugar[i]))
+            .map(|i| Reducer {
+                mask: self.masks[i],
+                poly: &self.polys[i],
+                sugar: self.sugar[i],
+                small: self.small[i].as_deref(),
+            })
             .collect()
     }
 
@@ -64,37 +77,57 @@ impl State<'_> {
     fn update(&mut self, k: usize) {
         let lh = self.polys[k].lm().to_vec();
         let order = self.ring.order();
-        // New pairs (i, k) for active i.
-        let mut cands: Vec<(usize, Vec<u32>, bool)> = (0..k)
+        // New pairs (i, k) for active i, with the variable mask of their lcm.
+        let mh = self.masks[k];
+        let mut cands: Vec<(usize, Vec<u32>, bool, u64)> = (0..k)
             .filter(|&i| self.active[i])
             .map(|i| {
                 let li = self.polys[i].lm();
-                (i, order::lcm(li, &lh), order::coprime(li, &lh))
+                let coprime = self.masks[i] & mh == 0 || order::coprime(li, &lh);
+                (i, order::lcm(li, &lh), coprime, self.masks[i] | mh)
             })
             .collect();
         // Chain criterion among the new pairs: drop (i, k) if another new pair's lcm divides
         // it; equal lcms keep one, preferring a coprime (product-criterion) one.
         cands.sort_by(|a, b| order.cmp(&a.1, &b.1).then_with(|| b.2.cmp(&a.2)));
-        let mut kept: Vec<(usize, Vec<u32>, bool)> = Vec::new();
+        let mut kept: Vec<(usize, Vec<u32>, bool, u64)> = Vec::new();
         for c in cands {
-            if !kept.iter().any(|d| order::divides(&d.1, &c.1)) {
+            if !kept.iter().any(|d| d.3 & !c.3 == 0 && order::divides(&d.1, &c.1)) {
                 kept.push(c);
             }
         }
         // Old pairs (i, j): drop when LM(h) divides lcm(i, j) and both new lcms differ from it.
         let polys = &self.polys;
         self.pairs.retain(|p| {
-            !(order::divides(&lh, &p.lcm)
-                && !order::lcm_is(polys[p.i].lm(), &lh, &p.lcm)
-                && !order::lcm_is(polys[p.j].lm(), &lh, &p.lcm))
+            mh & !p.mask != 0
+                || !order::divides(&lh, &p.lcm)
+                || order::lcm_is(polys[p.i].lm(), &lh, &p.lcm)
+                || order::lcm_is(polys[p.j].lm(), &lh, &p.lcm)
         });
         // Product criterion: coprime leading monomials need no pair.
-        for (i, lcm, coprime) in kept {
+        let before = self.pairs.len();
+        for (i, lcm, coprime, mask) in kept {
             if !coprime {
                 let si = self.sugar[i] + lcm[0] - self.polys[i].lm()[0];
                 let sk = self.sugar[k] + lcm[0] - lh[0];
-                self.pairs.push(Pair { i, j: k, lcm, sugar: si.max(sk) });
+                self.pairs.push(Pair { i, j: k, lcm, mask, sugar: si.max(sk) });
             }
+        }
+        // Keep the list sorted by decreasing (sugar, lcm), the next pair last: the new pairs
+        // sorted apart and merged in (older equal ones first, as a stable sort would put them).
+        if self.pairs.len() > before {
+            let later = |p: &Pair, q: &Pair| q.sugar.cmp(&p.sugar).then_with(|| order.cmp(&q.lcm, &p.lcm));
+            let mut new = self.pairs.split_off(before);
+            new.sort_by(later);
+            let old = std::mem::take(&mut self.pairs);
+            self.pairs.reserve(old.len() + new.len());
+            let (mut old, mut new) = (old.into_iter().peekable(), new.into_iter().peekable());
+            while let (Some(o), Some(n)) = (old.peek(), new.peek()) {
+                let next = if later(n, o) == std::cmp::Ordering::Less { new.next() } else { old.next() };
+                self.pairs.extend(next);
+            }
+            self.pairs.extend(old);
+            self.pairs.extend(new);
         }
         for i in 0..k {
             if self.active[i] && order::divides(&lh, self.polys[i].lm()) {
@@ -113,6 +146,15 @@ impl State<'_> {
         let d = Integer::from(f.lc().gcd_ref(g.lc()));
         let (a, b) = (Integer::from(g.lc().div_exact_ref(&d)), Integer::from(f.lc().div_exact_ref(&d)));
         s_poly((&a, &mf, f), (&b, &mg, g), self.ring.order())
+    }
+
+    /// [`Self::spoly`] in machine words when both elements have theirs and nothing overflows.
+    fn small_spoly(&self, p: &Pair) -> Option<small::Work> {
+        let (f, g) = (&self.polys[p.i], &self.polys[p.j]);
+        let (fc, gc) = (self.small[p.i].as_deref()?, self.small[p.j].as_deref()?);
+        let (mf, mg) = (order::quotient(f.lm(), &p.lcm), order::quotient(g.lm(), &p.lcm));
+        let d = small::gcd(fc[0].unsigned_abs(), gc[0].unsigned_abs()) as i64;
+        small::s_poly((gc[0] / d, &mf, f, fc), (fc[0] / d, &mg, g, gc), self.ring.order())
     }
 
     /// Tail-reduces the active elements whose tails became reducible by elements added since
@@ -140,10 +182,11 @@ impl State<'_> {
             }
             let others: Vec<Reducer<'_>> = (0..self.polys.len())
                 .filter(|&j| j != i && self.active[j])
-                .map(|j| Reducer::new(&self.polys[j]))
+                .map(|j| Reducer { small: self.small[j].as_deref(), ..Reducer::new(&self.polys[j]) })
                 .collect();
             let h = with_tail_reduced(g, &others, order, meter)?;
             self.terms = self.terms + h.len() - g.len();
+            self.small[i] = small_coefs(&h);
             self.polys[i] = h;
         }
         Ok(())
@@ -152,6 +195,8 @@ impl State<'_> {
     fn add(&mut self, mut h: DPoly, sugar: u32, meter: &Meter) -> Result<usize, IdealError> {
         h.make_primitive();
         meter.check_basis(self.active.iter().filter(|a| **a).count() + 1, self.terms + h.len())?;
+        self.masks.push(order::mask(h.lm()));
+        self.small.push(small_coefs(&h));
         self.polys.push(h);
         self.sugar.push(sugar);
         self.clean.push(self.polys.len());
@@ -174,6 +219,8 @@ impl PolyRing {
             ring: self,
             polys: Vec::new(),
             sugar: Vec::new(),
+            masks: Vec::new(),
+            small: Vec::new(),
             active: Vec::new(),
             pairs: Vec::new(),
             clean: Vec::new(),
@@ -198,20 +245,23 @@ impl PolyRing {
         let mut degree = 0;
         while !st.pairs.is_empty() {
             meter.check_time()?;
-            // Sugar strategy: least sugar, then least lcm.
-            let best = (0..st.pairs.len())
-                .min_by(|&a, &b| {
-                    let (p, q) = (&st.pairs[a], &st.pairs[b]);
-                    p.sugar.cmp(&q.sugar).then_with(|| order.cmp(&p.lcm, &q.lcm))
-                })
-                .expect("non-empty pair list");
-            if st.pairs[best].sugar > degree {
-                degree = st.pairs[best].sugar;
+            // Sugar strategy: least sugar, then least lcm (the list is sorted, the least last).
+            let next = st.pairs.last().expect("non-empty pair list").sugar;
+            if next > degree {
+                degree = next;
                 st.reduce_tails(meter)?;
             }
-            let pair = st.pairs.swap_remove(best);
-            let s = st.spoly(&pair);
-            let red = reduce(s, &st.reducers(), order, meter)?;
+            let pair = st.pairs.pop().expect("non-empty pair list");
+            let reducers = st.reducers();
+            let words = match st.small_spoly(&pair) {
+                Some(s) if reducers.iter().all(|d| d.small.is_some()) => Some(s),
+                _ => None,
+            };
+            let red = match words {
+                Some(s) => small::reduce_work(s, self.width(), &reducers, order, meter)?,
+                None => reduce(st.spoly(&pair), &reducers, order, meter)?,
+            };
+            drop(reducers);
             let r = red.r;
             if !r.is_zero() {
                 if r.lm()[0] == 0 {
@@ -237,9 +287,12 @@ fn unit(ring: &PolyRing) -> DPoly {
 fn interreduce(mut gens: Vec<DPoly>, ring: &PolyRing, meter: &mut Meter) -> Result<Vec<DPoly>, IdealError> {
     gens.sort_by(|a, b| ring.order().cmp(a.lm(), b.lm()));
     let mut out: Vec<DPoly> = Vec::with_capacity(gens.len());
+    let small: Vec<Option<Vec<i64>>> = gens.iter().map(small_coefs).collect();
     for i in 0..gens.len() {
-        let others: Vec<Reducer<'_>> =
-            gens.iter().enumerate().filter(|(j, _)| *j != i).map(|(_, g)| Reducer::new(g)).collect();
+        let others: Vec<Reducer<'_>> = (0..gens.len())
+            .filter(|&j| j != i)
+            .map(|j| Reducer { small: small[j].as_deref(), ..Reducer::new(&gens[j]) })
+            .collect();
         out.push(with_tail_reduced(&gens[i], &others, ring.order(), meter)?);
     }
     Ok(out)
@@ -313,7 +366,9 @@ impl GroebnerBasis {
     /// `f = F / D`, and `r ≡ s·F`: the normal form of `f` is `r / (s·D)`.
     pub(crate) fn normal_form_metered(&self, f: &Poly, meter: &mut Meter) -> Result<Poly, IdealError> {
         let (f, den) = self.ring.to_dense(f)?;
-        let reducers: Vec<Reducer<'_>> = self.basis.iter().map(Reducer::new).collect();
+        let small: Vec<Option<Vec<i64>>> = self.basis.iter().map(small_coefs).collect();
+        let reducers: Vec<Reducer<'_>> =
+            self.basis.iter().zip(&small).map(|(g, w)| Reducer { small: w.as_deref(), ..Reducer::new(g) }).collect();
         let super::division::Reduced { r, s, .. } = reduce(f, &reducers, self.ring.order(), meter)?;
         Ok(self.ring.to_poly(&r, &(s * den)))
     }

@@ -26,6 +26,7 @@ mod division;
 mod groebner;
 mod hypotheses;
 mod order;
+mod small;
 
 pub use division::Division;
 pub use groebner::GroebnerBasis;

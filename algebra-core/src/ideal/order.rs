@@ -85,8 +85,14 @@ fn grevlex(a: &[u32], b: &[u32]) -> Ordering {
     da.cmp(&db).then_with(|| reverse_lex(a, b))
 }
 
+/// Grevlex on monomials with their degree word.
+#[inline(always)]
+fn grevlex_cmp(a: &Mono, b: &Mono) -> Ordering {
+    a[0].cmp(&b[0]).then_with(|| reverse_lex(&a[1..], &b[1..]))
+}
+
 /// On equal degrees: the smaller exponent of the last variable where they differ wins.
-#[inline]
+#[inline(always)]
 fn reverse_lex(a: &[u32], b: &[u32]) -> Ordering {
     for (x, y) in a.iter().zip(b).rev() {
         if x != y {
@@ -97,12 +103,21 @@ fn reverse_lex(a: &[u32], b: &[u32]) -> Ordering {
 }
 
 impl MonomialOrder {
-    /// Compares two monomials (`Greater` = `a` is the larger, i.e. leads).
-    #[inline]
+    /// Compares two monomials (`Greater` = `a` is the larger, i.e. leads). Inlined into the
+    /// merges with grevlex, the order of every proof, inline; the others are calls.
+    #[inline(always)]
     pub(crate) fn cmp(&self, a: &Mono, b: &Mono) -> Ordering {
         match *self {
+            MonomialOrder::GrevLex => grevlex_cmp(a, b),
+            _ => self.cmp_other(a, b),
+        }
+    }
+
+    #[inline(never)]
+    fn cmp_other(&self, a: &Mono, b: &Mono) -> Ordering {
+        match *self {
             MonomialOrder::Lex => a[1..].cmp(&b[1..]),
-            MonomialOrder::GrevLex => a[0].cmp(&b[0]).then_with(|| reverse_lex(&a[1..], &b[1..])),
+            MonomialOrder::GrevLex => grevlex_cmp(a, b),
             MonomialOrder::Elimination { first } => {
                 let k = (first + 1).min(a.len());
                 grevlex(&a[1..k], &b[1..k]).then_with(|| grevlex(&a[k..], &b[k..]))

@@ -174,3 +174,66 @@ fn term_budget_stops_merged_and_bucketed_reductions() {
         }
     }
 }
+
+/// Divisors with their machine-word coefficients (what the Gröbner engine's state keeps).
+fn with_small(ds: &[DPoly]) -> Vec<(DPoly, Option<Vec<i64>>)> {
+    ds.iter().map(|d| (d.clone(), small::small_coefs(d))).collect()
+}
+
+fn small_reducers(ds: &[(DPoly, Option<Vec<i64>>)]) -> Vec<division::Reducer<'_>> {
+    ds.iter().map(|(d, s)| division::Reducer { small: s.as_deref(), ..division::Reducer::new(d) }).collect()
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    /// The machine-word reduction against the textbook division over Q (`PolyRing::divide`,
+    /// rational coefficients, a separate code path), `f` scaled by 7^k (up to 7^24 > 2^67: some
+    /// reductions start over GMP) and the divisors by 11^j (up to 11^18 < 2^63: every step
+    /// multiplies the work by up to 11^j, so some reductions overflow the words after a step or
+    /// a few, and some never do).
+    #[test]
+    fn machine_word_reduction_matches_textbook_division(
+        f in arb_poly(14), gs in prop::collection::vec(arb_poly(4), 1..4), k in 0u32..=24, j in 0u32..=18,
+        lex in any::<bool>()
+    ) {
+        let order = if lex { MonomialOrder::Lex } else { MonomialOrder::GrevLex };
+        let ring = PolyRing::new(["x", "y", "z"], order);
+        let power = |b: u32, e: u32| Rational::from(rug::ops::Pow::pow(Integer::from(b), e));
+        let gs: Vec<Poly> =
+            gs.into_iter().filter(|g| !g.is_exact_zero()).map(|g| g.scale(&power(11, j))).collect();
+        let f = f.scale(&power(7, k));
+        let (fd, fden) = ring.to_dense(&f).unwrap();
+        let ds: Vec<DPoly> = gs.iter().map(|g| ring.to_dense(g).unwrap().0).collect();
+        let ds = with_small(&ds);
+        let reducers = small_reducers(&ds);
+        let mut meter = Meter::new(&Budget::default());
+        let division::Reduced { r, s, .. } = small::reduce(fd, &reducers, order, &mut meter).unwrap();
+        let textbook = ring.divide(&f, &gs, &Budget::default()).unwrap().remainder;
+        prop_assert_eq!(ring.to_poly(&r, &(s * Rational::from(&fden))), textbook);
+    }
+}
+
+/// The machine-word reduction past the words, in closed form: `6·x^40 + 6y` modulo `3x - 2`
+/// scales the work by 3 at every step, so after about 40 steps its coefficients pass 2^63
+/// (3^40 > 2^63) and the reduction continues over GMP from there; the remainder is
+/// `6·(2/3)^40 + 6y` (by hand: `x ≡ 2/3`). Modulo `3x - 3` (`x ≡ 1`) the words never overflow.
+#[test]
+fn machine_word_reduction_overflows_into_gmp_exactly() {
+    let (x, y) = (Poly::var("x"), Poly::var("y"));
+    let ring = PolyRing::new(["x", "y"], MonomialOrder::GrevLex);
+    let f = Poly::from_i64(6) * x.pow_u32(40) + Poly::from_i64(6) * y.clone();
+    for (g, root) in [
+        (Poly::from_i64(3) * x.clone() - Poly::from_i64(2), Rational::from((2, 3))),
+        (Poly::from_i64(3) * x.clone() - Poly::from_i64(3), Rational::from(1)),
+    ] {
+        let expected = Poly::constant(Rational::from(6) * Rational::from(rug::ops::Pow::pow(&root, 40u32)))
+            + Poly::from_i64(6) * y.clone();
+        let (fd, fden) = ring.to_dense(&f).unwrap();
+        let ds = with_small(&[ring.to_dense(&g).unwrap().0]);
+        let reducers = small_reducers(&ds);
+        let mut meter = Meter::new(&Budget::default());
+        let division::Reduced { r, s, .. } = small::reduce(fd, &reducers, MonomialOrder::GrevLex, &mut meter).unwrap();
+        assert_eq!(ring.to_poly(&r, &(s * Rational::from(&fden))), expected, "g = {g}");
+    }
+}

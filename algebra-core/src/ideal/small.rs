@@ -1,0 +1,271 @@
+//! The merge reduction of [`super::division::reduce`] on machine-word coefficients: while the
+//! work polynomial, the remainder and every divisor have coefficients that fit an `i64`, each
+//! step is the same fraction-free step (`p := a·p - b·q·g`, `d = gcd(c, lc g)`, content removed
+//! every 16 steps) in `i64`/`i128` arithmetic, with no GMP call and no heap integer per term
+//! (Singular keeps small coefficients immediate the same way). Every product is checked: the
+//! step that would overflow is instead the first step of the GMP merge reduction, continued from
+//! the state before it, so the result is exact either way. A work polynomial that grows past
+//! [`super::division::LONG_WORK`] terms continues in geobuckets over GMP from where it is.
+
+use super::division::{LONG_WORK, Reduced, Reducer, reduce_from, reduce_in_buckets};
+use super::order::{self, Mono};
+use super::{DPoly, IdealError, Meter, MonomialOrder};
+use rug::{Integer, Rational};
+use std::cmp::Ordering;
+
+/// The coefficients of `p` as machine words, when all fit (`i64::MIN` excluded, so that every
+/// value can be negated).
+pub(crate) fn small_coefs(p: &DPoly) -> Option<Vec<i64>> {
+    p.coefs.iter().map(|c| c.to_i64().filter(|&x| x != i64::MIN)).collect()
+}
+
+/// An `i128` as a coefficient, when it fits (`i64::MIN` excluded).
+#[inline(always)]
+fn fit(v: i128) -> Option<i64> {
+    i64::try_from(v).ok().filter(|&x| x != i64::MIN)
+}
+
+pub(crate) fn gcd(mut a: u64, mut b: u64) -> u64 {
+    while b != 0 {
+        (a, b) = (b, a % b);
+    }
+    a
+}
+
+/// A polynomial with machine-word coefficients (the layout of [`DPoly`]).
+pub(crate) struct Work {
+    exps: Vec<u32>,
+    coefs: Vec<i64>,
+}
+
+/// The S-polynomial of [`super::division::s_poly`] (`a·mf·f[1..] - b·mg·g[1..]`) in machine
+/// words, from the coefficients `fc`, `gc` of `f`, `g` as words; `None` on overflow.
+pub(crate) fn s_poly(
+    (a, mf, f, fc): (i64, &Mono, &DPoly, &[i64]),
+    (b, mg, g, gc): (i64, &Mono, &DPoly, &[i64]),
+    order: MonomialOrder,
+) -> Option<Work> {
+    let w = f.w;
+    let mut out =
+        Work { exps: Vec::with_capacity((f.len() + g.len()) * w), coefs: Vec::with_capacity(f.len() + g.len()) };
+    let (a, b) = (i128::from(a), i128::from(b));
+    let (mut lf, mut lg) = (Vec::with_capacity(w), Vec::with_capacity(w));
+    let (mut i, mut j) = (1, 1);
+    if i < f.len() {
+        order::mul_into(&mut lf, mf, f.mono(i));
+    }
+    if j < g.len() {
+        order::mul_into(&mut lg, mg, g.mono(j));
+    }
+    while i < f.len() || j < g.len() {
+        let ord = match (i < f.len(), j < g.len()) {
+            (true, true) => order.cmp(&lf, &lg),
+            (true, false) => Ordering::Greater,
+            _ => Ordering::Less,
+        };
+        if ord != Ordering::Less {
+            let mut v = a * i128::from(fc[i]);
+            if ord == Ordering::Equal {
+                v -= b * i128::from(gc[j]);
+                j += 1;
+                if j < g.len() {
+                    order::mul_into(&mut lg, mg, g.mono(j));
+                }
+            }
+            if v != 0 {
+                out.coefs.push(fit(v)?);
+                out.exps.extend_from_slice(&lf);
+            }
+            i += 1;
+            if i < f.len() {
+                order::mul_into(&mut lf, mf, f.mono(i));
+            }
+        } else {
+            out.coefs.push(fit(-b * i128::from(gc[j]))?);
+            out.exps.extend_from_slice(&lg);
+            j += 1;
+            if j < g.len() {
+                order::mul_into(&mut lg, mg, g.mono(j));
+            }
+        }
+    }
+    Some(out)
+}
+
+impl Work {
+    /// The terms from `from` on, over GMP.
+    fn into_dpoly(self, w: usize, from: usize) -> DPoly {
+        DPoly {
+            w,
+            exps: self.exps[from * w..].to_vec(),
+            coefs: self.coefs[from..].iter().map(|&c| Integer::from(c)).collect(),
+        }
+    }
+}
+
+/// `out := a·p[from..] - b·q·g[1..]` (see [`super::division::combine`]); `None` on overflow.
+#[allow(clippy::too_many_arguments)]
+fn combine(
+    p: &Work,
+    from: usize,
+    (a, b): (i64, i64),
+    (q, g, gc): (&Mono, &DPoly, &[i64]),
+    w: usize,
+    order: MonomialOrder,
+    out: &mut Work,
+    lifted: &mut Vec<u32>,
+) -> Option<()> {
+    out.exps.clear();
+    out.coefs.clear();
+    let n = p.coefs.len();
+    out.exps.reserve((n - from + g.len()) * w);
+    out.coefs.reserve(n - from + g.len());
+    let (a, b) = (i128::from(a), i128::from(b));
+    let (mut i, mut j) = (from, 1);
+    if j < g.len() {
+        order::mul_into(lifted, q, g.mono(j));
+    }
+    loop {
+        let ord = match (i < n, j < g.len()) {
+            (true, true) => order.cmp(&p.exps[i * w..(i + 1) * w], lifted),
+            (true, false) => Ordering::Greater,
+            (false, true) => Ordering::Less,
+            (false, false) => break,
+        };
+        match ord {
+            Ordering::Greater => {
+                out.coefs.push(fit(a * i128::from(p.coefs[i]))?);
+                out.exps.extend_from_slice(&p.exps[i * w..(i + 1) * w]);
+                i += 1;
+            }
+            Ordering::Less => {
+                out.coefs.push(fit(-b * i128::from(gc[j]))?);
+                out.exps.extend_from_slice(lifted);
+                j += 1;
+                if j < g.len() {
+                    order::mul_into(lifted, q, g.mono(j));
+                }
+            }
+            Ordering::Equal => {
+                // |a·c|, |b·g| < 2^126: the difference fits an i128.
+                let v = fit(a * i128::from(p.coefs[i]) - b * i128::from(gc[j]))?;
+                if v != 0 {
+                    out.coefs.push(v);
+                    out.exps.extend_from_slice(lifted);
+                }
+                i += 1;
+                j += 1;
+                if j < g.len() {
+                    order::mul_into(lifted, q, g.mono(j));
+                }
+            }
+        }
+    }
+    Some(())
+}
+
+/// [`super::division::reduce`]: in machine words when `f` and every divisor have small
+/// coefficients (`divisors[k].small`), from the first overflow on (or from the start, when
+/// they do not) over GMP.
+pub(crate) fn reduce(
+    f: DPoly,
+    divisors: &[Reducer<'_>],
+    order: MonomialOrder,
+    meter: &mut Meter,
+) -> Result<Reduced, IdealError> {
+    let w = f.w;
+    let small = f.len() <= LONG_WORK && divisors.iter().all(|d| d.small.is_some());
+    let coefs = if small { small_coefs(&f) } else { None };
+    let Some(coefs) = coefs else {
+        return reduce_from((f, DPoly::zero(w), Rational::from(1), 0), divisors, order, meter, LONG_WORK);
+    };
+    reduce_work(Work { exps: f.exps, coefs }, w, divisors, order, meter)
+}
+
+/// [`reduce`] of a polynomial already in machine words (`w` words per monomial); every divisor
+/// must have its words (`small`).
+pub(crate) fn reduce_work(
+    mut p: Work,
+    w: usize,
+    divisors: &[Reducer<'_>],
+    order: MonomialOrder,
+    meter: &mut Meter,
+) -> Result<Reduced, IdealError> {
+    if p.coefs.len() > LONG_WORK {
+        return reduce_from(
+            (p.into_dpoly(w, 0), DPoly::zero(w), Rational::from(1), 0),
+            divisors,
+            order,
+            meter,
+            LONG_WORK,
+        );
+    }
+    let mut buf = Work { exps: Vec::new(), coefs: Vec::new() };
+    let mut rem = Work { exps: Vec::new(), coefs: Vec::new() };
+    // rem + p[start..] ≡ scale·f.
+    let mut scale = Rational::from(1);
+    let (mut start, mut steps, mut sugar) = (0, 0u32, 0);
+    let (mut q, mut lifted): (Vec<u32>, Vec<u32>) = (Vec::with_capacity(w), Vec::with_capacity(w));
+    while start < p.coefs.len() {
+        meter.check(p.coefs.len() - start + rem.coefs.len())?;
+        let m = &p.exps[start * w..(start + 1) * w];
+        let mask = order::mask(m);
+        match divisors.iter().find(|d| d.mask & !mask == 0 && order::divides(d.poly.lm(), m)) {
+            Some(d) => {
+                let (g, gc) = (d.poly, d.small.expect("checked above"));
+                let (c, lc) = (p.coefs[start], gc[0]);
+                // |c|, |lc| <= 2^63 - 1, so the quotients and their negations fit.
+                let e = gcd(c.unsigned_abs(), lc.unsigned_abs()) as i64;
+                let (mut a, mut b) = (lc / e, c / e);
+                if a < 0 {
+                    (a, b) = (-a, -b);
+                }
+                q.clear();
+                q.extend(m.iter().zip(g.lm()).map(|(x, y)| x - y));
+                sugar = sugar.max(q[0] + d.sugar);
+                let fits = combine(&p, start + 1, (a, b), (&q, g, gc), w, order, &mut buf, &mut lifted).is_some()
+                    && rem.coefs.iter().all(|&c| fit(i128::from(c) * i128::from(a)).is_some());
+                if !fits {
+                    // This step overflows: the reduction continues in GMP from the state before it.
+                    let state = (p.into_dpoly(w, start), rem.into_dpoly(w, 0), scale, sugar);
+                    return reduce_from(state, divisors, order, meter, LONG_WORK);
+                }
+                std::mem::swap(&mut p, &mut buf);
+                if a != 1 {
+                    for c in &mut rem.coefs {
+                        *c *= a;
+                    }
+                    scale *= a;
+                }
+                start = 0;
+                steps += 1;
+                if steps.is_multiple_of(16) {
+                    let mut g = 0u64;
+                    for c in p.coefs.iter().chain(&rem.coefs) {
+                        g = gcd(g, c.unsigned_abs());
+                        if g == 1 {
+                            break;
+                        }
+                    }
+                    if g > 1 {
+                        let g = g as i64;
+                        for c in p.coefs.iter_mut().chain(rem.coefs.iter_mut()) {
+                            *c /= g;
+                        }
+                        scale /= g;
+                    }
+                }
+                if p.coefs.len() > LONG_WORK {
+                    let (p, rem) = (p.into_dpoly(w, 0), rem.into_dpoly(w, 0));
+                    return reduce_in_buckets(p, rem, scale, sugar, divisors, order, meter);
+                }
+            }
+            None => {
+                rem.exps.extend_from_slice(m);
+                rem.coefs.push(p.coefs[start]);
+                start += 1;
+            }
+        }
+    }
+    Ok(Reduced { r: rem.into_dpoly(w, 0), s: scale, sugar })
+}
