@@ -131,10 +131,16 @@ impl<T: Real> Pose<T> {
         let (f, g) = log_factors_fixed(&u0, &x, &sin, &th);
         let q_u = s.e123inf.sub_ref(&m.mul_ref(&s.scalar)).mul_ref(&rho);
         let tf = t.mul_ref(&f);
-        // u' = (tθ)², from θ itself where it is used (fewer roundings than (t f)² s²), from
-        // the series' f near zero rotation (no √ there, for dual numbers' derivatives)
-        let u1 = if x.to_f64() > SMALL_X { t.mul_ref(&th) } else { tf.mul_ref(&sin) };
-        let [cc, sn, tt] = exp_kernel_fixed(&u1.mul_ref(&u1));
+        // u' = (tθ)², from θ itself where it is used (fewer roundings than (t f)² s²), and as
+        // (t f)² sin² θ from the series' f near zero rotation: no √ there, whose derivative
+        // at a pure translation would make a dual number's result non-finite
+        let u1 = if x.to_f64() > SMALL_X {
+            let tt = t.mul_ref(&th);
+            tt.mul_ref(&tt)
+        } else {
+            tf.mul_ref(&tf).mul_ref(&x)
+        };
+        let [cc, sn, tt] = exp_kernel_fixed(&u1);
         let w1 = t.mul_ref(&tf).mul_ref(&q_u);
         let p1 = t.mul_ref(&m);
         let e = exp_fixed(&ln_fixed(alpha).mul_ref(&half).mul_ref(t));
