@@ -48,6 +48,7 @@ algebra_macros::algebra! {
         metric { (e1, e1) = 1, (e2, e2) = 1, (e3, e3) = 1, (eo, einf) = -1 }
         types {
             Vector = grade 1;
+            Bivector = grade 2;
             Motor = [1, e12, e13, e23, e1inf, e2inf, e3inf, e123inf];
         }
     }
@@ -114,6 +115,7 @@ struct Versor {
     /// `cga` (diagonal R^{4,1}) on conformal points, and `g3` rotors on vectors.
     gatl_motors: Vec<gatl_cga::Motor<f64>>,
     gatl_points: Vec<gatl_cga::Vector<f64>>,
+    gatl_bivectors: Vec<gatl_cga::Bivector<f64>>,
     cga_points: Vec<cga::Vector<f64>>,
     g3_rotors: Vec<g3::Rotor<f64>>,
     g3_vectors: Vec<g3::Vector<f64>>,
@@ -190,6 +192,7 @@ fn versor_data() -> Versor {
         points: Vec::new(),
         gatl_motors: Vec::new(),
         gatl_points: Vec::new(),
+        gatl_bivectors: Vec::new(),
         cga_points: Vec::new(),
         g3_rotors: Vec::new(),
         g3_vectors: Vec::new(),
@@ -233,6 +236,7 @@ fn versor_data() -> Versor {
         d.gatl_motors.push(gatl_cga::Motor::from_array(c));
         // ELEMENTS order e1, e2, e3, eo, einf
         d.gatl_points.push(gatl_cga::Vector::from_array([p[0], p[1], p[2], 1.0, p2]));
+        d.gatl_bivectors.push(gatl_cga::Bivector::from_array([(); 10].map(|_| rng.symmetric())));
         // cga: eo = (e5 - e4)/2, einf = e4 + e5
         d.cga_points.push(cga::Vector::from_array([p[0], p[1], p[2], p2 - 0.5, p2 + 0.5]));
         d.g3_rotors.push(g3::Rotor::from_array([c[0], c[1], c[2], c[3]]));
@@ -330,6 +334,7 @@ pairs!(cga_sandwich_point, cga_motors, cga_points, |s, p| s.sandwich(p));
 pairs!(gatl_motor_product, gatl_motors, gatl_motors, |x, y| x * y);
 pairs!(gatl_sandwich_point, gatl_motors, gatl_points, |s, p| s.sandwich(p));
 pairs!(gatl_apply_point, gatl_motors, gatl_points, |s, p| s.apply(p));
+pairs!(gatl_bivector_product, gatl_bivectors, gatl_bivectors, |x, y| x * y);
 pairs!(pga_motor_product, pga_motors, pga_motors, |x, y| x * y);
 pairs!(pga_sandwich_point, pga_motors, pga_points, |s, p| s.sandwich(p));
 pairs!(g3_rotor_product, g3_rotors, g3_rotors, |x, y| x * y);
@@ -505,6 +510,7 @@ const VERSOR_GROUPS: [(&str, &[(&str, Kernel)]); 11] = [
             ("gatl_cga Motor * Motor", gatl_motor_product),
             ("gatl_cga Motor.sandwich(Vector)", gatl_sandwich_point),
             ("gatl_cga Motor.apply(Vector)", gatl_apply_point),
+            ("gatl_cga Bivector * Bivector", gatl_bivector_product),
         ],
     ),
     (
