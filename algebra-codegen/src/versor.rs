@@ -15,6 +15,7 @@
 
 use super::{CodegenError, ModuleSpec};
 use crate::ratio::{Ratio, to_ratio};
+use algebra_core::Basis;
 use algebra_core::rational::Q;
 use algebra_core::tables::{Product, Unary};
 use num_traits::Zero;
@@ -99,8 +100,25 @@ fn action(spec: &ModuleSpec, convention: Convention, v: usize, x: usize) -> Resu
     action_kernel(spec, convention, v, x, false)
 }
 
+/// Whether the blade of `mask` is also the geometric product of its generators: every pair of
+/// them is orthogonal, so the element is the same in the blade and the product basis.
+fn same_in_both_bases(spec: &ModuleSpec, mask: u32) -> bool {
+    let metric = spec.algebra.metric();
+    let gens: Vec<usize> = (0..32).filter(|i| mask >> i & 1 == 1).collect();
+    gens.iter().enumerate().all(|(n, &i)| gens[n + 1..].iter().all(|&j| metric.gram(i, j).is_ok_and(Zero::is_zero)))
+}
+
 /// The two stages of an action; with `commutator`, stage 1 is `L(S) x - x L(S)` instead of
 /// `L(S) x` (the unit-versor form of [`super::unit`]).
+///
+/// In a blade basis with a non-diagonal metric (GATL's conformal `eo, einf`), the intermediate
+/// `L(S) x` expanded in blades such as `e1 ∧ eo ∧ einf` multiplies out into more terms than in
+/// the product basis (`e1 eo einf`), where a null pair's products stay single terms. When
+/// every field of `S` and `x` is the same element in both bases (their generators pairwise
+/// orthogonal: motors and points of the conformal model), the intermediate may be taken in
+/// either: the kernel with fewer operations is kept (the module's own basis on a tie), its
+/// inputs and outputs unchanged. The components dropped outside `x` are named in the
+/// module's basis.
 pub(super) fn action_kernel(
     spec: &ModuleSpec,
     convention: Convention,
@@ -108,9 +126,34 @@ pub(super) fn action_kernel(
     x: usize,
     commutator: bool,
 ) -> Result<ActionKernel, CodegenError> {
+    let own = action_kernel_in(spec, spec.basis, convention, v, x, commutator)?;
+    let (vm, xm) = (&spec.types[v].elements, &spec.types[x].elements);
+    let other = match spec.basis {
+        Basis::Blade => Basis::Product,
+        Basis::Product => return Ok(own),
+    };
+    if spec.algebra.metric().is_diagonal() || !vm.iter().chain(xm).all(|&m| same_in_both_bases(spec, m)) {
+        return Ok(own);
+    }
+    let alt = action_kernel_in(spec, other, convention, v, x, commutator)?;
+    let cost = |k: &ActionKernel| {
+        let (m, a) = k.counts();
+        m + a
+    };
+    Ok(if cost(&alt) < cost(&own) { ActionKernel { outside: own.outside, ..alt } } else { own })
+}
+
+fn action_kernel_in(
+    spec: &ModuleSpec,
+    basis: Basis,
+    convention: Convention,
+    v: usize,
+    x: usize,
+    commutator: bool,
+) -> Result<ActionKernel, CodegenError> {
     let tables = spec.algebra.tables();
-    let gp = tables.product(spec.basis, Product::Geometric);
-    let rev = tables.unary(spec.basis, Unary::Reverse);
+    let gp = tables.product(basis, Product::Geometric);
+    let rev = tables.unary(basis, Unary::Reverse);
     let (vm, xm) = (&spec.types[v].elements, &spec.types[x].elements);
     // the versor's field `a` as a sum of basis elements, reversed or not
     let image = |a: usize, reversed: bool| -> Vec<(u32, Q)> {
@@ -188,4 +231,56 @@ pub(super) fn action_kernel(
         })
         .collect::<Result<Vec<_>, _>>()?;
     Ok(ActionKernel { convention, versor: v, operand: x, stage1, stage2, outside })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::spec::TypeSpec;
+    use algebra_core::{Algebra, Metric, Multivector};
+
+    /// GATL's conformal declaration (blade basis, `eo · einf = -1`): the intermediate is taken
+    /// in the product basis (fewer operations), and the kernel still gives the blade-basis
+    /// action computed by the runtime product `rev(S) x S` / `S x rev(S)` (exact rationals).
+    #[test]
+    fn null_pair_in_a_blade_basis_takes_the_cheaper_intermediate() {
+        let z = "0";
+        let gram: [&[&str]; 5] =
+            [&["1", z, z, z, z], &[z, "1", z, z, z], &[z, z, "1", z, z], &[z, z, z, z, "-1"], &[z, z, z, "-1", z]];
+        let metric = Metric::from_strs(&["1", "2", "3", "o", "inf"], &gram).unwrap();
+        let alg = Algebra::new("gatl", metric.clone());
+        let types =
+            ModuleSpec::parse_types("Motor=1,e12,e13,e23,e1inf,e2inf,e3inf,e123inf;Vector=grade1", &alg).unwrap();
+        let spec = ModuleSpec::new("gatl", metric, Basis::Blade, types).unwrap();
+        let alg = spec.algebra.clone();
+        let q = |n: i64| Q::from_integer(n.into());
+        let s: Vec<Q> = [3, -1, 2, 5, -4, 7, 1, -2].into_iter().map(q).collect();
+        let x: Vec<Q> = [2, -3, 1, 4, -5].into_iter().map(q).collect();
+        let mv = |t: &TypeSpec, c: &[Q]| {
+            let mut coeffs = vec![Q::zero(); alg.dim()];
+            for (m, v) in t.elements.iter().zip(c) {
+                coeffs[*m as usize] = v.clone();
+            }
+            Multivector::from_coeffs(&alg, Basis::Blade, coeffs).unwrap()
+        };
+        let (sm, xm) = (mv(&spec.types[0], &s), mv(&spec.types[1], &x));
+        for convention in [Convention::Sandwich, Convention::Apply] {
+            let k = action_kernel(&spec, convention, 0, 1, false).unwrap();
+            let blade = action_kernel_in(&spec, Basis::Blade, convention, 0, 1, false).unwrap();
+            let (total, blade_total) = (k.counts().0 + k.counts().1, blade.counts().0 + blade.counts().1);
+            assert!(total < blade_total, "{convention:?}: {total} vs {blade_total}");
+            let r = |c: (i64, i64)| Q::new(c.0.into(), c.1.into());
+            let t: Vec<Q> =
+                k.stage1.iter().map(|row| row.iter().map(|&(a, b, c)| r(c) * &s[a] * &x[b]).sum()).collect();
+            let out: Vec<Q> =
+                k.stage2.iter().map(|row| row.iter().map(|&(i, a, c)| r(c) * &t[i] * &s[a]).sum()).collect();
+            let reference = match convention {
+                Convention::Sandwich => &(&sm.reverse() * &xm) * &sm,
+                Convention::Apply => &(&sm * &xm) * &sm.reverse(),
+            };
+            for (j, m) in spec.types[1].elements.iter().enumerate() {
+                assert_eq!(&out[j], reference.coeff(*m).unwrap(), "{convention:?} component {m:#b}");
+            }
+        }
+    }
 }

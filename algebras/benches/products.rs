@@ -32,11 +32,27 @@
 use algebra_core::test_support::Xorshift;
 use algebra_core::{Algebra, Multivector, Product, Ring};
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group};
-use gam_algebras::{DualQuaternion, cga, cga_null, g123inf, pga3};
+use gam_algebras::{DualQuaternion, cga, cga_null, g3, g123inf, pga3};
 use nalgebra::{Isometry3, Point3, Quaternion, Translation3, UnitDualQuaternion, UnitQuaternion, Vector3};
 use std::hint::black_box;
 use std::sync::OnceLock;
 use std::time::{Duration, Instant};
+
+algebra_macros::algebra! {
+    /// The conformal model as GATL (and the ga-benchmark suite) declare it: generators
+    /// `e1, e2, e3, eo, einf` with `eo · einf = -1`, in the blade basis (the default), motors
+    /// on the same eight blades as `cga_null`'s: the fused action in another basis, order and
+    /// metric than the predefined product-basis module.
+    pub mod gatl_cga {
+        generators { e1, e2, e3, eo, einf }
+        metric { (e1, e1) = 1, (e2, e2) = 1, (e3, e3) = 1, (eo, einf) = -1 }
+        types {
+            Vector = grade 1;
+            Bivector = grade 2;
+            Motor = [1, e12, e13, e23, e1inf, e2inf, e3inf, e123inf];
+        }
+    }
+}
 
 /// Products per criterion iteration.
 const BATCH: usize = 1024;
@@ -95,6 +111,14 @@ struct Versor {
     unit_dq: Vec<UnitDualQuaternion<f64>>,
     iso: Vec<Isometry3<f64>>,
     points: Vec<Point3<f64>>,
+    /// The action's ratio to the motor product in each basis: GATL's conformal declaration,
+    /// `cga` (diagonal R^{4,1}) on conformal points, and `g3` rotors on vectors.
+    gatl_motors: Vec<gatl_cga::Motor<f64>>,
+    gatl_points: Vec<gatl_cga::Vector<f64>>,
+    gatl_bivectors: Vec<gatl_cga::Bivector<f64>>,
+    cga_points: Vec<cga::Vector<f64>>,
+    g3_rotors: Vec<g3::Rotor<f64>>,
+    g3_vectors: Vec<g3::Vector<f64>>,
 }
 
 fn data() -> &'static Data {
@@ -166,6 +190,12 @@ fn versor_data() -> Versor {
         unit_dq: Vec::new(),
         iso: Vec::new(),
         points: Vec::new(),
+        gatl_motors: Vec::new(),
+        gatl_points: Vec::new(),
+        gatl_bivectors: Vec::new(),
+        cga_points: Vec::new(),
+        g3_rotors: Vec::new(),
+        g3_vectors: Vec::new(),
     };
     for _ in 0..2 * BATCH {
         let c = [(); 8].map(|_| rng.symmetric());
@@ -203,6 +233,14 @@ fn versor_data() -> Versor {
         d.unit_dq.push(UnitDualQuaternion::from_parts(tr, rot));
         d.iso.push(Isometry3::from_parts(tr, rot));
         d.points.push(Point3::from(Vector3::new(p[0], p[1], p[2])));
+        d.gatl_motors.push(gatl_cga::Motor::from_array(c));
+        // ELEMENTS order e1, e2, e3, eo, einf
+        d.gatl_points.push(gatl_cga::Vector::from_array([p[0], p[1], p[2], 1.0, p2]));
+        d.gatl_bivectors.push(gatl_cga::Bivector::from_array([(); 10].map(|_| rng.symmetric())));
+        // cga: eo = (e5 - e4)/2, einf = e4 + e5
+        d.cga_points.push(cga::Vector::from_array([p[0], p[1], p[2], p2 - 0.5, p2 + 0.5]));
+        d.g3_rotors.push(g3::Rotor::from_array([c[0], c[1], c[2], c[3]]));
+        d.g3_vectors.push(g3::Vector::from_array(p));
     }
     // sanity: the unit kernel agrees with the general one on the unit motors
     let (u, p) = (&d.pga_units[0], &d.pga_points[0]);
@@ -215,6 +253,11 @@ fn versor_data() -> Versor {
     // sanity: on unit motors the unit action is the fused one
     let (u, x) = (&d.cn_units[0], &d.cn_points[0]);
     assert!(u.sandwich_unit(x).iter().zip(u.sandwich(x).iter()).all(|(a, b)| (a - b).abs() < 1e-12));
+    // sanity: GATL's declaration acts as cga_null does (the motor blades are the same
+    // products of orthogonal generators; points reordered e0 first)
+    let g = d.gatl_motors[0].sandwich(&d.gatl_points[0]).to_array();
+    let n = d.cn_motors[0].sandwich(&d.cn_points[0]).to_array();
+    assert!([g[3], g[0], g[1], g[2], g[4]].iter().zip(n).all(|(a, b)| (a - b).abs() < 1e-12));
     d
 }
 
@@ -287,6 +330,16 @@ pairs!(pga_apply_unit_point, pga_units, pga_points, |s, p| s.apply_unit(p));
 pairs!(na_unit_dq_point, unit_dq, points, |s, p| s.transform_point(p));
 pairs!(na_iso_point, iso, points, |s, p| s.transform_point(p));
 pairs!(cga_motor_product, cga_motors, cga_motors, |x, y| x * y);
+pairs!(cga_sandwich_point, cga_motors, cga_points, |s, p| s.sandwich(p));
+pairs!(gatl_motor_product, gatl_motors, gatl_motors, |x, y| x * y);
+pairs!(gatl_sandwich_point, gatl_motors, gatl_points, |s, p| s.sandwich(p));
+pairs!(gatl_apply_point, gatl_motors, gatl_points, |s, p| s.apply(p));
+pairs!(gatl_bivector_product, gatl_bivectors, gatl_bivectors, |x, y| x * y);
+pairs!(pga_motor_product, pga_motors, pga_motors, |x, y| x * y);
+pairs!(pga_sandwich_point, pga_motors, pga_points, |s, p| s.sandwich(p));
+pairs!(g3_rotor_product, g3_rotors, g3_rotors, |x, y| x * y);
+pairs!(g3_sandwich_vector, g3_rotors, g3_vectors, |s, p| s.sandwich(p));
+pairs!(cn_apply_point, cn_motors, cn_points, |s, p| s.apply(p));
 
 fn motor_exp(d: &Data, n: usize) {
     for b in &d.versor.bivectors[..n] {
@@ -442,7 +495,36 @@ fn interleaved_report() {
 }
 
 /// The versor-action, nalgebra and closed-form groups (docs/performance.md).
-const VERSOR_GROUPS: [(&str, &[(&str, Kernel)]); 6] = [
+const VERSOR_GROUPS: [(&str, &[(&str, Kernel)]); 11] = [
+    (
+        "fused action / motor product: cga_null (product basis, e0 first)",
+        &[
+            ("cga_null Motor * Motor", cn_motor_product),
+            ("cga_null Motor.sandwich(Vector)", cn_sandwich_fused),
+            ("cga_null Motor.apply(Vector)", cn_apply_point),
+        ],
+    ),
+    (
+        "fused action / motor product: GATL's declaration (blade basis, e1 e2 e3 eo einf)",
+        &[
+            ("gatl_cga Motor * Motor", gatl_motor_product),
+            ("gatl_cga Motor.sandwich(Vector)", gatl_sandwich_point),
+            ("gatl_cga Motor.apply(Vector)", gatl_apply_point),
+            ("gatl_cga Bivector * Bivector", gatl_bivector_product),
+        ],
+    ),
+    (
+        "fused action / motor product: cga (diagonal R^{4,1}, 16-component motors)",
+        &[("cga Motor * Motor", cga_motor_product), ("cga Motor.sandwich(Vector)", cga_sandwich_point)],
+    ),
+    (
+        "fused action / motor product: pga3 (f64, points as trivectors)",
+        &[("pga3 Motor * Motor", pga_motor_product), ("pga3 Motor.sandwich(Trivector)", pga_sandwich_point)],
+    ),
+    (
+        "fused action / motor product: g3 (rotors on vectors)",
+        &[("g3 Rotor * Rotor", g3_rotor_product), ("g3 Rotor.sandwich(Vector)", g3_sandwich_vector)],
+    ),
     (
         "conformal point (cga_null, f64)",
         &[

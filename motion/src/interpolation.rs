@@ -12,6 +12,9 @@
 //! assert_eq!(Pose::lerp(&a, &b, &0.5), Pose::translation(&[1.0, 0.0, 0.0]));
 //! ```
 
+use crate::exp_log::{assemble, dot, split};
+use crate::pose::is_positive;
+use crate::series::{SMALL_X, exp_fixed, exp_kernel_fixed, ln_fixed, log_factors_fixed};
 use crate::{MotionError, Pose};
 use algebra_core::{Real, Ring};
 
@@ -53,7 +56,7 @@ impl<T: Real> Pose<T> {
         if crate::series::at_most_f64::<T>() {
             // the direct path: a non-finite `a`, `b` or `t` cannot give a finite result (every
             // coefficient enters a product), so one test of the result replaces the checks
-            let out = (&a.reverse() * b).power_direct(t).map(|p| a * &p);
+            let out = (&a.reverse() * b).power_direct_untested(t).map(|p| a * &p);
             if let Some(out) = out.filter(Pose::is_finite) {
                 return Ok(out);
             }
@@ -66,11 +69,88 @@ impl<T: Real> Pose<T> {
 }
 
 impl<T: Real> Pose<T> {
-    /// [`Pose::power`] by the direct paths of `log` and `exp` alone (ordinary input at `f64`
-    /// precision or less); `None` sends the input to the careful path, which names a failure.
+    /// [`Pose::power`] for ordinary input at `f64` precision or less; `None` sends the input to
+    /// the careful path, which names a failure. With `S∅ ≥ 0` (the slerp's short way) `exp(t
+    /// log S)` is fused into one closed form in the coefficients of `S` (see
+    /// [`Pose::power_fused`]); otherwise the direct paths of `log` and `exp` in turn.
     fn power_direct(&self, t: &T) -> Option<Self> {
+        if !crate::series::at_most_f64::<T>() {
+            return None;
+        }
+        if self.scalar >= T::zero() {
+            return self.power_fused(t).filter(Pose::is_finite);
+        }
         let l = self.log_direct()?;
         Pose::exp_direct(&l.scale(t))
+    }
+
+    /// [`Pose::power_direct`] without the test of the result, for a caller that multiplies it
+    /// into a result it tests (a non-finite coefficient of a factor makes the product
+    /// non-finite: every coefficient enters a product).
+    fn power_direct_untested(&self, t: &T) -> Option<Self> {
+        if !crate::series::at_most_f64::<T>() {
+            return None;
+        }
+        if self.scalar >= T::zero() {
+            return self.power_fused(t);
+        }
+        let l = self.log_direct()?;
+        Pose::exp_direct(&l.scale(t))
+    }
+
+    /// `S^t = exp(t log S)` for `S∅ ≥ 0`, with `α` tame and positive, as one closed form (the
+    /// module docs of [`crate::exp_log`] for the notation): with `rev(S) S = α + βω`,
+    /// `m = β/2α`, `1/√α = ρ`, the unit `U = ρ(1 - mω)S` has `u0 = ρS∅`, `s = sin θ = ρ|a|`,
+    /// `c_U = ρ(c + m a)`, `q_U = ρ(q - m S∅)`, and `log S = ½ ln α + f ρ a e123 + ρ(f c +
+    /// (f m + g q_U) a) einf + mω`. Its multiple by `t` has `u' = (tθ)² = (t f)² s²` and, since
+    /// `a_U·c_U = u0 q_U` and `f u0 + g s² = 1`, `w' = t² f q_U`; the exp formula then gives
+    /// `S^t = e^{tσ}[C' + λ (a e123 + c einf) + λ₂ a einf + (w'S' + t m C')ω]` with
+    /// `λ = t ρ f S'` and `λ₂ = t ρ (S'(f m + g q_U) - f(w'T' + t m S'))`.
+    ///
+    /// The same operations as `log` then `exp`, without the normalised pose, its logarithm and
+    /// their dot products in between: the exp kernel's polynomials start as soon as `θ` and
+    /// `f` are known. `None` for an unusual `α`; the result is not tested here.
+    fn power_fused(&self, t: &T) -> Option<Self> {
+        let s = self;
+        let n2 = s.pseudo_norm_squared();
+        let alpha = &n2.scalar;
+        if !crate::scaled::tame(alpha) || !is_positive(alpha) {
+            return None;
+        }
+        let (a, c) = split(s);
+        let xr = dot(&a, &a);
+        let rho = T::one().div_ref(&Real::sqrt(alpha));
+        let rho2 = rho.mul_ref(&rho);
+        let half = T::from_ratio(1, 2);
+        let m = n2.e123inf.mul_ref(&rho2).mul_ref(&half);
+        let s_raw = Real::sqrt(&xr);
+        let th = s_raw.fast_atan2(&s.scalar);
+        let sin = s_raw.mul_ref(&rho);
+        let x = xr.mul_ref(&rho2);
+        let u0 = s.scalar.mul_ref(&rho);
+        let (f, g) = log_factors_fixed(&u0, &x, &sin, &th);
+        let q_u = s.e123inf.sub_ref(&m.mul_ref(&s.scalar)).mul_ref(&rho);
+        let tf = t.mul_ref(&f);
+        // u' = (tθ)², from θ itself where it is used (fewer roundings than (t f)² s²), and as
+        // (t f)² sin² θ from the series' f near zero rotation: no √ there, whose derivative
+        // at a pure translation would make a dual number's result non-finite
+        let u1 = if x.to_f64() > SMALL_X {
+            let tt = t.mul_ref(&th);
+            tt.mul_ref(&tt)
+        } else {
+            tf.mul_ref(&tf).mul_ref(&x)
+        };
+        let [cc, sn, tt] = exp_kernel_fixed(&u1);
+        let w1 = t.mul_ref(&tf).mul_ref(&q_u);
+        let p1 = t.mul_ref(&m);
+        let e = exp_fixed(&ln_fixed(alpha).mul_ref(&half).mul_ref(t));
+        let et = e.mul_ref(t).mul_ref(&rho);
+        let lam = et.mul_ref(&sn).mul_ref(&f);
+        let k = f.mul_ref(&m).add_ref(&g.mul_ref(&q_u));
+        let lam2 = et.mul_ref(&sn.mul_ref(&k).sub_ref(&f.mul_ref(&w1.mul_ref(&tt).add_ref(&p1.mul_ref(&sn)))));
+        let omega = e.mul_ref(&w1.mul_ref(&sn).add_ref(&p1.mul_ref(&cc)));
+        let c_out = std::array::from_fn(|i| c[i].mul_ref(&lam).add_ref(&a[i].mul_ref(&lam2)));
+        Some(assemble(e.mul_ref(&cc), a.map(|x| x.mul_ref(&lam)), c_out, omega))
     }
 }
 

@@ -158,7 +158,7 @@ pub(crate) fn ln_fixed<T: Real>(alpha: &T) -> T {
 }
 
 /// `2^-20`: below it the log factors' series of [`log_factors_fixed`] is exact to `f64`.
-const SMALL_X: f64 = 9.5367431640625e-7;
+pub(crate) const SMALL_X: f64 = 9.5367431640625e-7;
 
 /// The power series of the exp kernel `[C, S, T]` at `u`, summed until `done(k, terms)` holds
 /// after the `k`-th terms (or `MAX_TERMS`): the `Real` kernel stops at negligible terms, the
