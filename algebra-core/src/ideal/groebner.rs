@@ -77,22 +77,26 @@ impl State<'_> {
     fn update(&mut self, k: usize) {
         let lh = self.polys[k].lm().to_vec();
         let order = self.ring.order();
-        // New pairs (i, k) for active i, with the variable mask of their lcm.
+        // New pairs (i, k) for active i, with the variable mask of their lcm; the lcms side by
+        // side in one buffer (`w` words each), not one allocation per candidate.
         let mh = self.masks[k];
-        let mut cands: Vec<(usize, Vec<u32>, bool, u64)> = (0..k)
-            .filter(|&i| self.active[i])
-            .map(|i| {
-                let li = self.polys[i].lm();
-                let coprime = self.masks[i] & mh == 0 || order::coprime(li, &lh);
-                (i, order::lcm(li, &lh), coprime, self.masks[i] | mh)
-            })
-            .collect();
+        let w = lh.len();
+        let mut lcms: Vec<u32> = Vec::new();
+        let mut cands: Vec<(usize, usize, bool, u64)> = Vec::new();
+        for i in (0..k).filter(|&i| self.active[i]) {
+            let li = self.polys[i].lm();
+            let coprime = self.masks[i] & mh == 0 || order::coprime(li, &lh);
+            let at = lcms.len();
+            order::lcm_into(&mut lcms, li, &lh);
+            cands.push((i, at, coprime, self.masks[i] | mh));
+        }
+        let lcm_of = |at: usize| &lcms[at..at + w];
         // Chain criterion among the new pairs: drop (i, k) if another new pair's lcm divides
         // it; equal lcms keep one, preferring a coprime (product-criterion) one.
-        cands.sort_by(|a, b| order.cmp(&a.1, &b.1).then_with(|| b.2.cmp(&a.2)));
-        let mut kept: Vec<(usize, Vec<u32>, bool, u64)> = Vec::new();
+        cands.sort_by(|a, b| order.cmp(lcm_of(a.1), lcm_of(b.1)).then_with(|| b.2.cmp(&a.2)));
+        let mut kept: Vec<(usize, usize, bool, u64)> = Vec::with_capacity(cands.len());
         for c in cands {
-            if !kept.iter().any(|d| d.3 & !c.3 == 0 && order::divides(&d.1, &c.1)) {
+            if !kept.iter().any(|d| d.3 & !c.3 == 0 && order::divides(lcm_of(d.1), lcm_of(c.1))) {
                 kept.push(c);
             }
         }
@@ -106,8 +110,9 @@ impl State<'_> {
         });
         // Product criterion: coprime leading monomials need no pair.
         let before = self.pairs.len();
-        for (i, lcm, coprime, mask) in kept {
+        for (i, at, coprime, mask) in kept {
             if !coprime {
+                let lcm = lcm_of(at).to_vec();
                 let si = self.sugar[i] + lcm[0] - self.polys[i].lm()[0];
                 let sk = self.sugar[k] + lcm[0] - lh[0];
                 self.pairs.push(Pair { i, j: k, lcm, mask, sugar: si.max(sk) });

@@ -55,11 +55,13 @@ pub(crate) fn quotient(a: &Mono, b: &Mono) -> Vec<u32> {
     b.iter().zip(a).map(|(x, y)| x - y).collect()
 }
 
-/// `lcm(a, b)`.
-pub(crate) fn lcm(a: &Mono, b: &Mono) -> Vec<u32> {
-    let mut out: Vec<u32> = a.iter().zip(b).map(|(x, y)| *x.max(y)).collect();
-    out[0] = out[1..].iter().sum();
-    out
+/// Appends `lcm(a, b)` to `out` (a buffer of monomials side by side).
+#[inline]
+pub(crate) fn lcm_into(out: &mut Vec<u32>, a: &Mono, b: &Mono) {
+    let at = out.len();
+    out.push(0);
+    out.extend(a[1..].iter().zip(&b[1..]).map(|(x, y)| *x.max(y)));
+    out[at] = out[at + 1..].iter().sum();
 }
 
 /// `lcm(a, b) == l`, without building the lcm.
@@ -146,5 +148,15 @@ mod tests {
         let e = MonomialOrder::Elimination { first: 1 };
         assert_eq!(e.cmp(&m(&[1, 0, 0]), &m(&[0, 5, 5])), Greater);
         assert_eq!(e.cmp(&m(&[1, 0, 1]), &m(&[1, 1, 0])), Less);
+    }
+
+    #[test]
+    fn lcm_into_appends_side_by_side() {
+        // lcm(x^2 z, x y^3) = x^2 y^3 z, then lcm(1, y) = y after it in the same buffer.
+        let mut buf = vec![7];
+        lcm_into(&mut buf, &m(&[2, 0, 1]), &m(&[1, 3, 0]));
+        lcm_into(&mut buf, &m(&[0, 0, 0]), &m(&[0, 1, 0]));
+        assert_eq!(buf, [7, 6, 2, 3, 1, 1, 0, 1, 0]);
+        assert!(lcm_is(&m(&[2, 0, 1]), &m(&[1, 3, 0]), &buf[1..5]));
     }
 }
