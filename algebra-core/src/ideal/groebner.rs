@@ -58,7 +58,13 @@ struct State<'r> {
     clean: Vec<usize>,
     /// Terms of the active polynomials together (the memory budget of the basis).
     terms: usize,
+    /// The update's candidate lcms and candidates, kept between updates for their capacity.
+    scratch: (Vec<u32>, Vec<Cand>),
 }
+
+/// A candidate new pair `(i, k)` of the update: `i`, the offset of its lcm in the lcm buffer,
+/// whether the two leading monomials are coprime, the lcm's mask.
+type Cand = (usize, usize, bool, u64);
 
 impl State<'_> {
     fn reducers(&self) -> Vec<Reducer<'_>> {
@@ -81,8 +87,9 @@ impl State<'_> {
         // side in one buffer (`w` words each), not one allocation per candidate.
         let mh = self.masks[k];
         let w = lh.len();
-        let mut lcms: Vec<u32> = Vec::new();
-        let mut cands: Vec<(usize, usize, bool, u64)> = Vec::new();
+        let (mut lcms, mut cands) = std::mem::take(&mut self.scratch);
+        lcms.clear();
+        cands.clear();
         for i in (0..k).filter(|&i| self.active[i]) {
             let li = self.polys[i].lm();
             let coprime = self.masks[i] & mh == 0 || order::coprime(li, &lh);
@@ -94,10 +101,13 @@ impl State<'_> {
         // Chain criterion among the new pairs: drop (i, k) if another new pair's lcm divides
         // it; equal lcms keep one, preferring a coprime (product-criterion) one.
         cands.sort_by(|a, b| order.cmp(lcm_of(a.1), lcm_of(b.1)).then_with(|| b.2.cmp(&a.2)));
-        let mut kept: Vec<(usize, usize, bool, u64)> = Vec::with_capacity(cands.len());
-        for c in cands {
-            if !kept.iter().any(|d| d.3 & !c.3 == 0 && order::divides(lcm_of(d.1), lcm_of(c.1))) {
-                kept.push(c);
+        // Kept in place: the first `kept` candidates.
+        let mut kept = 0;
+        for c in 0..cands.len() {
+            let (at, mask) = (cands[c].1, cands[c].3);
+            if !cands[..kept].iter().any(|d| d.3 & !mask == 0 && order::divides(lcm_of(d.1), lcm_of(at))) {
+                cands[kept] = cands[c];
+                kept += 1;
             }
         }
         // Old pairs (i, j): drop when LM(h) divides lcm(i, j) and both new lcms differ from it.
@@ -110,7 +120,7 @@ impl State<'_> {
         });
         // Product criterion: coprime leading monomials need no pair.
         let before = self.pairs.len();
-        for (i, at, coprime, mask) in kept {
+        for &(i, at, coprime, mask) in &cands[..kept] {
             if !coprime {
                 let lcm = lcm_of(at).to_vec();
                 let si = self.sugar[i] + lcm[0] - self.polys[i].lm()[0];
@@ -118,6 +128,7 @@ impl State<'_> {
                 self.pairs.push(Pair { i, j: k, lcm, mask, sugar: si.max(sk) });
             }
         }
+        self.scratch = (lcms, cands);
         // Keep the list sorted by decreasing (sugar, lcm), the next pair last: the new pairs
         // sorted apart and merged in (older equal ones first, as a stable sort would put them).
         if self.pairs.len() > before {
@@ -230,6 +241,7 @@ impl PolyRing {
             pairs: Vec::new(),
             clean: Vec::new(),
             terms: 0,
+            scratch: (Vec::new(), Vec::new()),
         };
         let mut input: Vec<DPoly> =
             generators.iter().map(|g| self.to_dense(g).map(|d| d.0)).collect::<Result<Vec<_>, _>>()?;
