@@ -101,13 +101,7 @@ pub const STANDALONE_OPS: [&str; 14] = [
 /// form for unit `V`), of the kinematic versor types ([`is_kinematic`]) on every declared type.
 pub const DEFAULT_OPS: [&str; 3] = ["gp", "apply", "apply_unit"];
 
-/// Whether a type is a kinematic versor type (a motor or rotor): every basis element even, and
-/// the scalar `1` among them (so it holds the identity motion). The default standalone file
-/// keeps the actions of these types only; bivector types (`Line`) and odd versors
-/// (reflections in planes, point reflections) act through `--ops` or `--every-type`.
-pub fn is_kinematic(elements: &[u32]) -> bool {
-    elements.contains(&0) && elements.iter().all(|m| m.count_ones() % 2 == 0)
-}
+pub use crate::versor::is_kinematic;
 
 impl Selection {
     /// Whether the actions of the versor type `versor` are kept: those of every versor type

@@ -96,6 +96,22 @@ pub fn plan_actions(spec: &ModuleSpec, full: usize) -> Result<Vec<ActionKernel>,
     Ok(out)
 }
 
+/// Whether a type is a kinematic versor type (a motor or rotor): every basis element even, and
+/// the scalar `1` among them (so it holds the identity motion). Their action matrices stay
+/// straight-line code (`emit::matrix`, the batch transforms); the default standalone file keeps
+/// the actions of these types only, and bivector types (`Line`) and odd versors (reflections in
+/// planes, point reflections) act there through `--ops` or `--every-type`.
+///
+/// ```
+/// use algebra_codegen::versor::is_kinematic;
+/// assert!(is_kinematic(&[0, 0b011, 0b101, 0b110])); // 1, e12, e13, e23: a rotor
+/// assert!(!is_kinematic(&[0b011, 0b101, 0b110])); // bivectors: no identity
+/// assert!(!is_kinematic(&[0, 0b001])); // 1 + e1: not even
+/// ```
+pub fn is_kinematic(elements: &[u32]) -> bool {
+    elements.contains(&0) && elements.iter().all(|m| m.count_ones() % 2 == 0)
+}
+
 fn action(spec: &ModuleSpec, convention: Convention, v: usize, x: usize) -> Result<ActionKernel, CodegenError> {
     action_kernel(spec, convention, v, x, false)
 }

@@ -41,7 +41,7 @@ pub(crate) fn matrix_items(names: &Names, sandwich: &MatrixKernel, apply: &Matri
     // straight-line code for the matrices of motors and rotors on declared types (the batch
     // transforms); a loop over a table for the other versors (reflections, lines, odd types),
     // whose matrices were 14 % of a 3D PGA module's tokens, and over automatic types
-    let kinematic = crate::standalone::is_kinematic(&names.masks[sandwich.versor]);
+    let kinematic = crate::versor::is_kinematic(&names.masks[sandwich.versor]);
     let table = |m: &MatrixKernel| {
         let counts = m.entries.iter().flatten().map(Vec::len);
         (!kinematic || names.is_large(&[sandwich.versor, sandwich.operand], counts)).then(|| table_body(names, m))

@@ -538,7 +538,7 @@ fn inverse_method(plan: &Plan, names: &Names, i: usize) -> TokenStream {
             let row = masks.iter().position(|&mm| mm == names.masks[k.out][ko]).expect("closed type");
             flat.extend(terms.iter().map(|t| (t.lhs, t.rhs, row, t.coef)));
         }
-        size::matrix_fill(&flat, fields)
+        size::matrix_fill(&flat)
     } else {
         let sets = entries.into_iter().map(|((r, c), terms)| {
             let e = sum(terms);

@@ -60,15 +60,10 @@ pub(crate) fn table_loop(
     let starts = (0..=n_out).map(|k| sorted.iter().take_while(|t| t.2 < k).count() as u16);
     let coefs = constants(&coefs);
     quote! {{
-        const TERMS: [(u16, u16, u16); #n] = __gam_engine::kernels::unpack(#table);
+        const TERMS: [[u16; 3]; #n] = __gam_engine::kernels::unpack(#table);
         const STARTS: [u16; #n1] = [#(#starts),*];
         __gam_engine::kernels::bilinear::<T, #n_out, _, _, _, _, _>(#a, #b, &TERMS, &STARTS, #coefs)
     }}
-}
-
-/// `[&recv.f0, &recv.f1, ...]`.
-pub(crate) fn refs(recv: TokenStream, fields: &[proc_macro2::Ident]) -> TokenStream {
-    quote!([#(&#recv.#fields),*])
 }
 
 /// The table-driven body of a binary kernel.
@@ -86,22 +81,25 @@ pub(crate) fn binary_body(names: &super::Names, k: &crate::plan::BinaryKernel) -
 pub(crate) fn quadratic(entries: &[(usize, usize, usize, usize, Ratio)], n: usize) -> TokenStream {
     let (codes, coefs) = codes(entries.iter().map(|e| e.4));
     let table = packed(entries.iter().zip(&codes).flat_map(|(&(j, b, a, a2, _), &c)| [j, b, a, a2, usize::from(c)]));
+    let len = entries.len();
     let coefs = constants(&coefs);
-    quote!(__gam_engine::kernels::quadratic::<T, #n, _>(&self.each_ref(), #table, #coefs))
+    quote! {{
+        const ENTRIES: [[u16; 5]; #len] = __gam_engine::kernels::unpack(#table);
+        __gam_engine::kernels::quadratic::<T, #n, _, _>(&self.each_ref(), &ENTRIES, #coefs)
+    }}
 }
 
 /// The matrix of `y ↦ self * y` inside a closed type, filled by a loop: `l[row][col] += c ·
 /// self[lhs]` for every `(lhs, col, row, c)`.
-pub(crate) fn matrix_fill(entries: &[(usize, usize, usize, Ratio)], fields: &[proc_macro2::Ident]) -> TokenStream {
+pub(crate) fn matrix_fill(entries: &[(usize, usize, usize, Ratio)]) -> TokenStream {
     let n = entries.len();
-    let a = refs(quote!(self), fields);
     let rows = entries.iter().map(|&(lhs, col, row, (num, den))| {
         let (lhs, col, row) = (lhs as u16, col as u16, row as u16);
         quote!((#lhs, #col, #row, #num, #den))
     });
     quote! {
         const ENTRIES: [(u16, u16, u16, i64, i64); #n] = [#(#rows),*];
-        let a = #a;
+        let a = self.each_ref();
         for &(lhs, col, row, num, den) in ENTRIES.iter() {
             let slot = &mut l[row as usize][col as usize];
             match (num, den) {

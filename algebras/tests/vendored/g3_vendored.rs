@@ -2307,16 +2307,7 @@ pub mod g3_vendored {
                 (6u16, 1u16, 7u16, 1i64, 1i64),
                 (7u16, 0u16, 7u16, 1i64, 1i64),
             ];
-            let a = [
-                &self.scalar,
-                &self.e1,
-                &self.e2,
-                &self.e3,
-                &self.e12,
-                &self.e13,
-                &self.e23,
-                &self.e123,
-            ];
+            let a = self.each_ref();
             for &(lhs, col, row, num, den) in ENTRIES.iter() {
                 let slot = &mut l[row as usize][col as usize];
                 match (num, den) {
@@ -3027,7 +3018,7 @@ pub mod g3_vendored {
         #[inline]
         fn gp(&self, rhs: &Odd<T>) -> Rotor<T> {
             Rotor::from_array({
-                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 12usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 3u16, 6u16, 9u16, 12u16];
@@ -3081,7 +3072,7 @@ pub mod g3_vendored {
         #[inline]
         fn gp(&self, rhs: &Multivector<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 24usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 24usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\0\0\x04\0\0\0\x01\0\0\0\0\0\x02\0\x06\0\x01\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\x02\0\0\0\0\0\0\0\x02\0\0\0\x01\0\x01\0\x01\0\x02\0\x07\0\0\0\0\0\x03\0\0\0\x01\0\x07\0\x01\0\x02\0\x01\0\x01\0\0\0\x07\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -3256,7 +3247,7 @@ pub mod g3_vendored {
         #[inline]
         fn gp(&self, rhs: &Odd<T>) -> Odd<T> {
             Odd::from_array({
-                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 16usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
@@ -3310,7 +3301,7 @@ pub mod g3_vendored {
         #[inline]
         fn gp(&self, rhs: &Multivector<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 32usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 32usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\x03\0\x06\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\x07\0\x01\0\0\0\x02\0\0\0\x01\0\x01\0\x01\0\x02\0\x07\0\0\0\x03\0\x03\0\0\0\0\0\x03\0\0\0\x01\0\x07\0\x01\0\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0\0\0\x04\0\0\0\x01\0\0\0\0\0\x02\0\x06\0\x01\0\x03\0\x05\0\0\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\x02\0\0\0\0\0\x03\0\x04\0\x01\0\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0\x03\0\0\0\0\0\0\0\x07\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -3367,7 +3358,7 @@ pub mod g3_vendored {
         #[inline]
         fn gp(&self, rhs: &Vector<T>) -> Rotor<T> {
             Rotor::from_array({
-                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 12usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 3u16, 6u16, 9u16, 12u16];
@@ -3421,7 +3412,7 @@ pub mod g3_vendored {
         #[inline]
         fn gp(&self, rhs: &Rotor<T>) -> Odd<T> {
             Odd::from_array({
-                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 16usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x03\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\0\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\x01\0\x02\0\x01\0\0\0\x03\0\0\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
@@ -3475,7 +3466,7 @@ pub mod g3_vendored {
         #[inline]
         fn gp(&self, rhs: &Odd<T>) -> Rotor<T> {
             Rotor::from_array({
-                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 16usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
@@ -3529,7 +3520,7 @@ pub mod g3_vendored {
         #[inline]
         fn gp(&self, rhs: &Multivector<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 32usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 32usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\x07\0\x01\0\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\x03\0\x06\0\x01\0\0\0\x04\0\0\0\x01\0\0\0\0\0\x02\0\x06\0\x01\0\x03\0\x05\0\0\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\x02\0\0\0\0\0\x03\0\x04\0\x01\0\0\0\x02\0\0\0\x01\0\x01\0\x01\0\x02\0\x07\0\0\0\x03\0\x03\0\0\0\0\0\x03\0\0\0\x01\0\x07\0\x01\0\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0\0\0\x07\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0\x03\0\0\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -3586,7 +3577,7 @@ pub mod g3_vendored {
         #[inline]
         fn gp(&self, rhs: &Vector<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 24usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 24usize] = ::algebra_core::kernels::unpack(
                     b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0\0\0\0\0\0\0\x04\0\x01\0\0\0\x05\0\x02\0\0\0\0\0\x01\0\0\0\x04\0\0\0\x01\0\x06\0\x02\0\0\0\0\0\x02\0\0\0\x05\0\0\0\x01\0\x06\0\x01\0\x01\0\x01\0\x01\0\0\0\x02\0\0\0\x01\0\x07\0\x02\0\0\0\x01\0\x02\0\0\0\x03\0\0\0\x01\0\x07\0\x01\0\x01\0\x02\0\x02\0\0\0\x03\0\x01\0\x01\0\x07\0\0\0\0\0\x04\0\x02\0\0\0\x05\0\x01\0\x01\0\x06\0\0\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -3643,7 +3634,7 @@ pub mod g3_vendored {
         #[inline]
         fn gp(&self, rhs: &Rotor<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 32usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 32usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x04\0\x01\0\x01\0\x05\0\x02\0\x01\0\x06\0\x03\0\x01\0\x01\0\0\0\0\0\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0\x07\0\x03\0\x01\0\x01\0\x01\0\0\0\x02\0\0\0\0\0\x03\0\x03\0\x01\0\x07\0\x02\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\0\0\0\0\x07\0\x01\0\x01\0\0\0\x01\0\0\0\x04\0\0\0\0\0\x05\0\x03\0\x01\0\x06\0\x02\0\0\0\0\0\x02\0\0\0\x04\0\x03\0\0\0\x05\0\0\0\0\0\x06\0\x01\0\x01\0\0\0\x03\0\0\0\x04\0\x02\0\x01\0\x05\0\x01\0\0\0\x06\0\0\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0\x07\0\0\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -3700,7 +3691,7 @@ pub mod g3_vendored {
         #[inline]
         fn gp(&self, rhs: &Odd<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 32usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 32usize] = ::algebra_core::kernels::unpack(
                     b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0\x07\0\x03\0\x01\0\0\0\0\0\0\0\x04\0\x01\0\0\0\x05\0\x02\0\0\0\x06\0\x03\0\x01\0\0\0\x01\0\0\0\x04\0\0\0\x01\0\x05\0\x03\0\0\0\x06\0\x02\0\0\0\0\0\x02\0\0\0\x04\0\x03\0\x01\0\x05\0\0\0\x01\0\x06\0\x01\0\x01\0\x01\0\x01\0\0\0\x02\0\0\0\x01\0\x03\0\x03\0\0\0\x07\0\x02\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\x01\0\x03\0\0\0\x01\0\x07\0\x01\0\x01\0\x01\0\x03\0\0\0\x02\0\x02\0\0\0\x03\0\x01\0\x01\0\x07\0\0\0\0\0\0\0\x03\0\0\0\x04\0\x02\0\0\0\x05\0\x01\0\x01\0\x06\0\0\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -3757,7 +3748,7 @@ pub mod g3_vendored {
         #[inline]
         fn gp(&self, rhs: &Multivector<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 64usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 64usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\x04\0\x04\0\x01\0\x05\0\x05\0\x01\0\x06\0\x06\0\x01\0\x07\0\x07\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x04\0\x01\0\x03\0\x05\0\x01\0\x04\0\x02\0\0\0\x05\0\x03\0\0\0\x06\0\x07\0\x01\0\x07\0\x06\0\x01\0\0\0\x02\0\0\0\x01\0\x04\0\0\0\x02\0\0\0\0\0\x03\0\x06\0\x01\0\x04\0\x01\0\x01\0\x05\0\x07\0\0\0\x06\0\x03\0\0\0\x07\0\x05\0\0\0\0\0\x03\0\0\0\x01\0\x05\0\0\0\x02\0\x06\0\0\0\x03\0\0\0\0\0\x04\0\x07\0\x01\0\x05\0\x01\0\x01\0\x06\0\x02\0\x01\0\x07\0\x04\0\x01\0\0\0\x04\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\x07\0\0\0\x04\0\0\0\0\0\x05\0\x06\0\x01\0\x06\0\x05\0\0\0\x07\0\x03\0\0\0\0\0\x05\0\0\0\x01\0\x03\0\0\0\x02\0\x07\0\x01\0\x03\0\x01\0\x01\0\x04\0\x06\0\0\0\x05\0\0\0\0\0\x06\0\x04\0\x01\0\x07\0\x02\0\x01\0\0\0\x06\0\0\0\x01\0\x07\0\0\0\x02\0\x03\0\0\0\x03\0\x02\0\x01\0\x04\0\x05\0\x01\0\x05\0\x04\0\0\0\x06\0\0\0\0\0\x07\0\x01\0\0\0\0\0\x07\0\0\0\x01\0\x06\0\0\0\x02\0\x05\0\x01\0\x03\0\x04\0\0\0\x04\0\x03\0\0\0\x05\0\x02\0\x01\0\x06\0\x01\0\0\0\x07\0\0\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -3900,7 +3891,7 @@ pub mod g3_vendored {
         #[inline]
         fn op(&self, rhs: &Odd<T>) -> Rotor<T> {
             Rotor::from_array({
-                const TERMS: [(u16, u16, u16); 6usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 6usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 0u16, 2u16, 4u16, 6u16];
@@ -3946,7 +3937,7 @@ pub mod g3_vendored {
         #[inline]
         fn op(&self, rhs: &Multivector<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 12usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\0\0\0\0\x02\0\0\0\x01\0\x01\0\x01\0\0\0\x03\0\0\0\x02\0\x01\0\x01\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -4081,7 +4072,7 @@ pub mod g3_vendored {
         #[inline]
         fn op(&self, rhs: &Odd<T>) -> Odd<T> {
             Odd::from_array({
-                const TERMS: [(u16, u16, u16); 7usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 7usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 1u16, 2u16, 3u16, 7u16];
@@ -4127,7 +4118,7 @@ pub mod g3_vendored {
         #[inline]
         fn op(&self, rhs: &Multivector<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 14usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 14usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\0\0\x03\0\0\0\0\0\x04\0\0\0\x01\0\0\0\0\0\0\0\x05\0\0\0\x02\0\0\0\0\0\0\0\x06\0\0\0\x03\0\0\0\0\0\0\0\x07\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -4175,7 +4166,7 @@ pub mod g3_vendored {
         #[inline]
         fn op(&self, rhs: &Vector<T>) -> Rotor<T> {
             Rotor::from_array({
-                const TERMS: [(u16, u16, u16); 6usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 6usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 0u16, 2u16, 4u16, 6u16];
@@ -4221,7 +4212,7 @@ pub mod g3_vendored {
         #[inline]
         fn op(&self, rhs: &Rotor<T>) -> Odd<T> {
             Odd::from_array({
-                const TERMS: [(u16, u16, u16); 7usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 7usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\0\0\0\0\x03\0\0\0\x01\0\x02\0\x01\0\x02\0\x01\0\0\0\x03\0\0\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 1u16, 2u16, 3u16, 7u16];
@@ -4266,7 +4257,7 @@ pub mod g3_vendored {
         #[inline]
         fn op(&self, rhs: &Odd<T>) -> Rotor<T> {
             Rotor::from_array({
-                const TERMS: [(u16, u16, u16); 6usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 6usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 0u16, 2u16, 4u16, 6u16];
@@ -4312,7 +4303,7 @@ pub mod g3_vendored {
         #[inline]
         fn op(&self, rhs: &Multivector<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 13usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 13usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\0\0\0\0\x02\0\0\0\x01\0\x01\0\x01\0\0\0\x03\0\0\0\x02\0\x01\0\x01\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0\x03\0\0\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -4360,7 +4351,7 @@ pub mod g3_vendored {
         #[inline]
         fn op(&self, rhs: &Vector<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 12usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\x01\0\x01\0\0\0\x02\0\0\0\x01\0\x01\0\x02\0\0\0\x03\0\0\0\x01\0\x02\0\x02\0\0\0\x03\0\x01\0\x01\0\x04\0\x02\0\0\0\x05\0\x01\0\x01\0\x06\0\0\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -4408,7 +4399,7 @@ pub mod g3_vendored {
         #[inline]
         fn op(&self, rhs: &Rotor<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 14usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 14usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\0\0\x03\0\0\0\0\0\0\0\x01\0\0\0\x04\0\0\0\0\0\0\0\x02\0\0\0\x05\0\0\0\0\0\0\0\x03\0\0\0\x06\0\0\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0\x07\0\0\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -4456,7 +4447,7 @@ pub mod g3_vendored {
         #[inline]
         fn op(&self, rhs: &Odd<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 13usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 13usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\x01\0\x01\0\0\0\x02\0\0\0\x01\0\x01\0\x02\0\0\0\x03\0\0\0\x01\0\x02\0\x02\0\0\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x04\0\x02\0\0\0\x05\0\x01\0\x01\0\x06\0\0\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -4504,7 +4495,7 @@ pub mod g3_vendored {
         #[inline]
         fn op(&self, rhs: &Multivector<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 27usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 27usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\0\0\x01\0\0\0\x01\0\0\0\0\0\0\0\x02\0\0\0\x02\0\0\0\0\0\0\0\x03\0\0\0\x03\0\0\0\0\0\0\0\x04\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x04\0\0\0\0\0\0\0\x05\0\0\0\x01\0\x03\0\0\0\x03\0\x01\0\x01\0\x05\0\0\0\0\0\0\0\x06\0\0\0\x02\0\x03\0\0\0\x03\0\x02\0\x01\0\x06\0\0\0\0\0\0\0\x07\0\0\0\x01\0\x06\0\0\0\x02\0\x05\0\x01\0\x03\0\x04\0\0\0\x04\0\x03\0\0\0\x05\0\x02\0\x01\0\x06\0\x01\0\0\0\x07\0\0\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -4638,7 +4629,7 @@ pub mod g3_vendored {
         #[inline]
         fn lc(&self, rhs: &Odd<T>) -> Rotor<T> {
             Rotor::from_array({
-                const TERMS: [(u16, u16, u16); 6usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 6usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x02\0\x03\0\0\0\x01\0\x03\0\x01\0\0\0\x03\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 3u16, 4u16, 5u16, 6u16];
@@ -4684,7 +4675,7 @@ pub mod g3_vendored {
         #[inline]
         fn lc(&self, rhs: &Multivector<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 12usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\0\0\x04\0\0\0\x02\0\x06\0\x01\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\x02\0\x07\0\0\0\x01\0\x07\0\x01\0\0\0\x07\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -4815,7 +4806,7 @@ pub mod g3_vendored {
         #[inline]
         fn lc(&self, rhs: &Odd<T>) -> Odd<T> {
             Odd::from_array({
-                const TERMS: [(u16, u16, u16); 7usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 7usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x02\0\x03\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\0\0\x03\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 2u16, 4u16, 6u16, 7u16];
@@ -4861,7 +4852,7 @@ pub mod g3_vendored {
         #[inline]
         fn lc(&self, rhs: &Multivector<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 14usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 14usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\x03\0\x06\0\x01\0\0\0\x01\0\0\0\x03\0\x07\0\x01\0\0\0\x02\0\0\0\x02\0\x07\0\0\0\0\0\x03\0\0\0\x01\0\x07\0\x01\0\0\0\x04\0\0\0\0\0\x05\0\0\0\0\0\x06\0\0\0\0\0\x07\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -4909,7 +4900,7 @@ pub mod g3_vendored {
         #[inline]
         fn lc(&self, rhs: &Vector<T>) -> Rotor<T> {
             Rotor::from_array({
-                const TERMS: [(u16, u16, u16); 3usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 3usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 3u16, 3u16, 3u16, 3u16];
@@ -4955,7 +4946,7 @@ pub mod g3_vendored {
         #[inline]
         fn lc(&self, rhs: &Rotor<T>) -> Vector<T> {
             Vector::from_array({
-                const TERMS: [(u16, u16, u16); 6usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 6usize] = ::algebra_core::kernels::unpack(
                     b"\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\0\0\x01\0\0\0\x02\0\x03\0\x01\0\0\0\x02\0\0\0\x01\0\x03\0\0\0",
                 );
                 const STARTS: [u16; 4usize] = [0u16, 2u16, 4u16, 6u16];
@@ -5001,7 +4992,7 @@ pub mod g3_vendored {
         #[inline]
         fn lc(&self, rhs: &Odd<T>) -> Rotor<T> {
             Rotor::from_array({
-                const TERMS: [(u16, u16, u16); 7usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 7usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\x02\0\x03\0\0\0\x01\0\x03\0\x01\0\0\0\x03\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 4u16, 5u16, 6u16, 7u16];
@@ -5047,7 +5038,7 @@ pub mod g3_vendored {
         #[inline]
         fn lc(&self, rhs: &Multivector<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 13usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 13usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\x07\0\x01\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\0\0\x04\0\0\0\x02\0\x06\0\x01\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\x02\0\x07\0\0\0\x01\0\x07\0\x01\0\0\0\x07\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -5095,7 +5086,7 @@ pub mod g3_vendored {
         #[inline]
         fn lc(&self, rhs: &Vector<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 6usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 6usize] = ::algebra_core::kernels::unpack(
                     b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0\0\0\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -5143,7 +5134,7 @@ pub mod g3_vendored {
         #[inline]
         fn lc(&self, rhs: &Rotor<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 13usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 13usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x04\0\x01\0\x01\0\x05\0\x02\0\x01\0\x06\0\x03\0\x01\0\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0\x01\0\x01\0\0\0\x03\0\x03\0\x01\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\0\0\x03\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -5191,7 +5182,7 @@ pub mod g3_vendored {
         #[inline]
         fn lc(&self, rhs: &Odd<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 14usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 14usize] = ::algebra_core::kernels::unpack(
                     b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0\x07\0\x03\0\x01\0\0\0\0\0\0\0\x06\0\x03\0\x01\0\0\0\x01\0\0\0\x05\0\x03\0\0\0\0\0\x02\0\0\0\x04\0\x03\0\x01\0\x03\0\x03\0\0\0\x02\0\x03\0\x01\0\x01\0\x03\0\0\0\0\0\x03\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -5239,7 +5230,7 @@ pub mod g3_vendored {
         #[inline]
         fn lc(&self, rhs: &Multivector<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 27usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 27usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\x04\0\x04\0\x01\0\x05\0\x05\0\x01\0\x06\0\x06\0\x01\0\x07\0\x07\0\x01\0\0\0\x01\0\0\0\x02\0\x04\0\x01\0\x03\0\x05\0\x01\0\x06\0\x07\0\x01\0\0\0\x02\0\0\0\x01\0\x04\0\0\0\x03\0\x06\0\x01\0\x05\0\x07\0\0\0\0\0\x03\0\0\0\x01\0\x05\0\0\0\x02\0\x06\0\0\0\x04\0\x07\0\x01\0\0\0\x04\0\0\0\x03\0\x07\0\0\0\0\0\x05\0\0\0\x02\0\x07\0\x01\0\0\0\x06\0\0\0\x01\0\x07\0\0\0\0\0\x07\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -5321,7 +5312,7 @@ pub mod g3_vendored {
         #[inline]
         fn rc(&self, rhs: &Odd<T>) -> Rotor<T> {
             Rotor::from_array({
-                const TERMS: [(u16, u16, u16); 3usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 3usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 3u16, 3u16, 3u16, 3u16];
@@ -5343,7 +5334,7 @@ pub mod g3_vendored {
         #[inline]
         fn rc(&self, rhs: &Multivector<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 6usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 6usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -5405,7 +5396,7 @@ pub mod g3_vendored {
         #[inline]
         fn rc(&self, rhs: &Odd<T>) -> Vector<T> {
             Vector::from_array({
-                const TERMS: [(u16, u16, u16); 6usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 6usize] = ::algebra_core::kernels::unpack(
                     b"\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0",
                 );
                 const STARTS: [u16; 4usize] = [0u16, 2u16, 4u16, 6u16];
@@ -5427,7 +5418,7 @@ pub mod g3_vendored {
         #[inline]
         fn rc(&self, rhs: &Multivector<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 13usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 13usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\x03\0\x06\0\x01\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x01\0\x01\0\x01\0\x03\0\x03\0\0\0\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0\x01\0\0\0\0\0\x02\0\0\0\0\0\x03\0\0\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -5451,7 +5442,7 @@ pub mod g3_vendored {
         #[inline]
         fn rc(&self, rhs: &Vector<T>) -> Rotor<T> {
             Rotor::from_array({
-                const TERMS: [(u16, u16, u16); 6usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 6usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x02\0\0\0\x03\0\x01\0\x01\0\x03\0\0\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 3u16, 4u16, 5u16, 6u16];
@@ -5473,7 +5464,7 @@ pub mod g3_vendored {
         #[inline]
         fn rc(&self, rhs: &Rotor<T>) -> Odd<T> {
             Odd::from_array({
-                const TERMS: [(u16, u16, u16); 7usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 7usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x03\0\x03\0\x01\0\x01\0\0\0\0\0\x03\0\x02\0\0\0\x02\0\0\0\0\0\x03\0\x01\0\x01\0\x03\0\0\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 2u16, 4u16, 6u16, 7u16];
@@ -5495,7 +5486,7 @@ pub mod g3_vendored {
         #[inline]
         fn rc(&self, rhs: &Odd<T>) -> Rotor<T> {
             Rotor::from_array({
-                const TERMS: [(u16, u16, u16); 7usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 7usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\x03\0\x02\0\0\0\x03\0\x01\0\x01\0\x03\0\0\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 4u16, 5u16, 6u16, 7u16];
@@ -5517,7 +5508,7 @@ pub mod g3_vendored {
         #[inline]
         fn rc(&self, rhs: &Multivector<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 14usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 14usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\x07\0\x01\0\0\0\0\0\0\0\x03\0\x06\0\x01\0\x01\0\0\0\0\0\x03\0\x05\0\0\0\x02\0\0\0\0\0\x03\0\x04\0\x01\0\x03\0\x03\0\0\0\x03\0\x02\0\x01\0\x03\0\x01\0\0\0\x03\0\0\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -5541,7 +5532,7 @@ pub mod g3_vendored {
         #[inline]
         fn rc(&self, rhs: &Vector<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 12usize] = ::algebra_core::kernels::unpack(
                     b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0\x04\0\x01\0\0\0\x05\0\x02\0\0\0\x04\0\0\0\x01\0\x06\0\x02\0\0\0\x05\0\0\0\x01\0\x06\0\x01\0\x01\0\x07\0\x02\0\0\0\x07\0\x01\0\x01\0\x07\0\0\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -5565,7 +5556,7 @@ pub mod g3_vendored {
         #[inline]
         fn rc(&self, rhs: &Rotor<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 14usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 14usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x04\0\x01\0\x01\0\x05\0\x02\0\x01\0\x06\0\x03\0\x01\0\x01\0\0\0\0\0\x07\0\x03\0\x01\0\x02\0\0\0\0\0\x07\0\x02\0\0\0\x03\0\0\0\0\0\x07\0\x01\0\x01\0\x04\0\0\0\0\0\x05\0\0\0\0\0\x06\0\0\0\0\0\x07\0\0\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -5589,7 +5580,7 @@ pub mod g3_vendored {
         #[inline]
         fn rc(&self, rhs: &Odd<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 13usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 13usize] = ::algebra_core::kernels::unpack(
                     b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0\x07\0\x03\0\x01\0\x04\0\x01\0\0\0\x05\0\x02\0\0\0\x04\0\0\0\x01\0\x06\0\x02\0\0\0\x05\0\0\0\x01\0\x06\0\x01\0\x01\0\x07\0\x02\0\0\0\x07\0\x01\0\x01\0\x07\0\0\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -5613,7 +5604,7 @@ pub mod g3_vendored {
         #[inline]
         fn rc(&self, rhs: &Multivector<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 27usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 27usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\x04\0\x04\0\x01\0\x05\0\x05\0\x01\0\x06\0\x06\0\x01\0\x07\0\x07\0\x01\0\x01\0\0\0\0\0\x04\0\x02\0\0\0\x05\0\x03\0\0\0\x07\0\x06\0\x01\0\x02\0\0\0\0\0\x04\0\x01\0\x01\0\x06\0\x03\0\0\0\x07\0\x05\0\0\0\x03\0\0\0\0\0\x05\0\x01\0\x01\0\x06\0\x02\0\x01\0\x07\0\x04\0\x01\0\x04\0\0\0\0\0\x07\0\x03\0\0\0\x05\0\0\0\0\0\x07\0\x02\0\x01\0\x06\0\0\0\0\0\x07\0\x01\0\0\0\x07\0\0\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -5665,7 +5656,7 @@ pub mod g3_vendored {
         #[inline]
         fn sp(&self, rhs: &Odd<T>) -> Rotor<T> {
             Rotor::from_array({
-                const TERMS: [(u16, u16, u16); 3usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 3usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 3u16, 3u16, 3u16, 3u16];
@@ -5687,7 +5678,7 @@ pub mod g3_vendored {
         #[inline]
         fn sp(&self, rhs: &Multivector<T>) -> Rotor<T> {
             Rotor::from_array({
-                const TERMS: [(u16, u16, u16); 3usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 3usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 3u16, 3u16, 3u16, 3u16];
@@ -5750,7 +5741,7 @@ pub mod g3_vendored {
         #[inline]
         fn sp(&self, rhs: &Multivector<T>) -> Rotor<T> {
             Rotor::from_array({
-                const TERMS: [(u16, u16, u16); 4usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 4usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\x03\0\x06\0\x01\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 4u16, 4u16, 4u16, 4u16];
@@ -5772,7 +5763,7 @@ pub mod g3_vendored {
         #[inline]
         fn sp(&self, rhs: &Vector<T>) -> Rotor<T> {
             Rotor::from_array({
-                const TERMS: [(u16, u16, u16); 3usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 3usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 3u16, 3u16, 3u16, 3u16];
@@ -5805,7 +5796,7 @@ pub mod g3_vendored {
         #[inline]
         fn sp(&self, rhs: &Odd<T>) -> Rotor<T> {
             Rotor::from_array({
-                const TERMS: [(u16, u16, u16); 4usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 4usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 4u16, 4u16, 4u16, 4u16];
@@ -5827,7 +5818,7 @@ pub mod g3_vendored {
         #[inline]
         fn sp(&self, rhs: &Multivector<T>) -> Rotor<T> {
             Rotor::from_array({
-                const TERMS: [(u16, u16, u16); 4usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 4usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\x07\0\x01\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 4u16, 4u16, 4u16, 4u16];
@@ -5849,7 +5840,7 @@ pub mod g3_vendored {
         #[inline]
         fn sp(&self, rhs: &Vector<T>) -> Rotor<T> {
             Rotor::from_array({
-                const TERMS: [(u16, u16, u16); 3usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 3usize] = ::algebra_core::kernels::unpack(
                     b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 3u16, 3u16, 3u16, 3u16];
@@ -5871,7 +5862,7 @@ pub mod g3_vendored {
         #[inline]
         fn sp(&self, rhs: &Rotor<T>) -> Rotor<T> {
             Rotor::from_array({
-                const TERMS: [(u16, u16, u16); 4usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 4usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x04\0\x01\0\x01\0\x05\0\x02\0\x01\0\x06\0\x03\0\x01\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 4u16, 4u16, 4u16, 4u16];
@@ -5893,7 +5884,7 @@ pub mod g3_vendored {
         #[inline]
         fn sp(&self, rhs: &Odd<T>) -> Rotor<T> {
             Rotor::from_array({
-                const TERMS: [(u16, u16, u16); 4usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 4usize] = ::algebra_core::kernels::unpack(
                     b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0\x07\0\x03\0\x01\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 4u16, 4u16, 4u16, 4u16];
@@ -5915,7 +5906,7 @@ pub mod g3_vendored {
         #[inline]
         fn sp(&self, rhs: &Multivector<T>) -> Rotor<T> {
             Rotor::from_array({
-                const TERMS: [(u16, u16, u16); 8usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 8usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\x04\0\x04\0\x01\0\x05\0\x05\0\x01\0\x06\0\x06\0\x01\0\x07\0\x07\0\x01\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 8u16, 8u16, 8u16, 8u16];
@@ -6013,7 +6004,7 @@ pub mod g3_vendored {
         #[inline]
         fn regressive(&self, rhs: &Odd<T>) -> Vector<T> {
             Vector::from_array({
-                const TERMS: [(u16, u16, u16); 3usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 3usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\x03\0\0\0\x01\0\x03\0\0\0\x02\0\x03\0\0\0",
                 );
                 const STARTS: [u16; 4usize] = [0u16, 1u16, 2u16, 3u16];
@@ -6059,7 +6050,7 @@ pub mod g3_vendored {
         #[inline]
         fn regressive(&self, rhs: &Multivector<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 6usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 6usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0\0\0\x07\0\0\0\x01\0\x07\0\0\0\x02\0\x07\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -6189,7 +6180,7 @@ pub mod g3_vendored {
         #[inline]
         fn regressive(&self, rhs: &Odd<T>) -> Rotor<T> {
             Rotor::from_array({
-                const TERMS: [(u16, u16, u16); 7usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 7usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0\x01\0\x03\0\0\0\x02\0\x03\0\0\0\x03\0\x03\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 4u16, 5u16, 6u16, 7u16];
@@ -6235,7 +6226,7 @@ pub mod g3_vendored {
         #[inline]
         fn regressive(&self, rhs: &Multivector<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 13usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 13usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\x07\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0\x01\0\x05\0\0\0\x02\0\x04\0\x01\0\x01\0\x06\0\0\0\x03\0\x04\0\x01\0\x02\0\x06\0\0\0\x03\0\x05\0\x01\0\x01\0\x07\0\0\0\x02\0\x07\0\0\0\x03\0\x07\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -6283,7 +6274,7 @@ pub mod g3_vendored {
         #[inline]
         fn regressive(&self, rhs: &Vector<T>) -> Vector<T> {
             Vector::from_array({
-                const TERMS: [(u16, u16, u16); 3usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 3usize] = ::algebra_core::kernels::unpack(
                     b"\x03\0\0\0\0\0\x03\0\x01\0\0\0\x03\0\x02\0\0\0",
                 );
                 const STARTS: [u16; 4usize] = [0u16, 1u16, 2u16, 3u16];
@@ -6329,7 +6320,7 @@ pub mod g3_vendored {
         #[inline]
         fn regressive(&self, rhs: &Rotor<T>) -> Rotor<T> {
             Rotor::from_array({
-                const TERMS: [(u16, u16, u16); 7usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 7usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\x03\0\0\0\x01\0\x02\0\x01\0\x02\0\x01\0\0\0\x03\0\0\0\0\0\x03\0\x01\0\0\0\x03\0\x02\0\0\0\x03\0\x03\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 4u16, 5u16, 6u16, 7u16];
@@ -6375,7 +6366,7 @@ pub mod g3_vendored {
         #[inline]
         fn regressive(&self, rhs: &Odd<T>) -> Odd<T> {
             Odd::from_array({
-                const TERMS: [(u16, u16, u16); 7usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 7usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\x03\0\0\0\x03\0\0\0\0\0\x01\0\x03\0\0\0\x03\0\x01\0\0\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\x03\0\x03\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 2u16, 4u16, 6u16, 7u16];
@@ -6421,7 +6412,7 @@ pub mod g3_vendored {
         #[inline]
         fn regressive(&self, rhs: &Multivector<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 14usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 14usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0\x03\0\0\0\0\0\0\0\x07\0\0\0\x03\0\x01\0\0\0\x01\0\x07\0\0\0\x03\0\x02\0\0\0\x02\0\x07\0\0\0\x03\0\x03\0\0\0\x03\0\x04\0\0\0\x03\0\x05\0\0\0\x03\0\x06\0\0\0\x03\0\x07\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -6469,7 +6460,7 @@ pub mod g3_vendored {
         #[inline]
         fn regressive(&self, rhs: &Vector<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 6usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 6usize] = ::algebra_core::kernels::unpack(
                     b"\x04\0\x02\0\0\0\x05\0\x01\0\x01\0\x06\0\0\0\0\0\x07\0\0\0\0\0\x07\0\x01\0\0\0\x07\0\x02\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -6517,7 +6508,7 @@ pub mod g3_vendored {
         #[inline]
         fn regressive(&self, rhs: &Rotor<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 13usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 13usize] = ::algebra_core::kernels::unpack(
                     b"\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0\x07\0\0\0\0\0\x04\0\x02\0\0\0\x05\0\x01\0\x01\0\x04\0\x03\0\0\0\x06\0\x01\0\x01\0\x05\0\x03\0\0\0\x06\0\x02\0\x01\0\x07\0\x01\0\0\0\x07\0\x02\0\0\0\x07\0\x03\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -6565,7 +6556,7 @@ pub mod g3_vendored {
         #[inline]
         fn regressive(&self, rhs: &Odd<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 14usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 14usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\x03\0\0\0\x04\0\x02\0\0\0\x05\0\x01\0\x01\0\x06\0\0\0\0\0\x01\0\x03\0\0\0\x07\0\0\0\0\0\x02\0\x03\0\0\0\x07\0\x01\0\0\0\x03\0\x03\0\0\0\x07\0\x02\0\0\0\x04\0\x03\0\0\0\x05\0\x03\0\0\0\x06\0\x03\0\0\0\x07\0\x03\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -6613,7 +6604,7 @@ pub mod g3_vendored {
         #[inline]
         fn regressive(&self, rhs: &Multivector<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 27usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 27usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\x07\0\0\0\x01\0\x06\0\0\0\x02\0\x05\0\x01\0\x03\0\x04\0\0\0\x04\0\x03\0\0\0\x05\0\x02\0\x01\0\x06\0\x01\0\0\0\x07\0\0\0\0\0\x01\0\x07\0\0\0\x04\0\x05\0\0\0\x05\0\x04\0\x01\0\x07\0\x01\0\0\0\x02\0\x07\0\0\0\x04\0\x06\0\0\0\x06\0\x04\0\x01\0\x07\0\x02\0\0\0\x03\0\x07\0\0\0\x05\0\x06\0\0\0\x06\0\x05\0\x01\0\x07\0\x03\0\0\0\x04\0\x07\0\0\0\x07\0\x04\0\0\0\x05\0\x07\0\0\0\x07\0\x05\0\0\0\x06\0\x07\0\0\0\x07\0\x06\0\0\0\x07\0\x07\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -6702,7 +6693,7 @@ pub mod g3_vendored {
         #[inline]
         fn commutator(&self, rhs: &Odd<T>) -> Rotor<T> {
             Rotor::from_array({
-                const TERMS: [(u16, u16, u16); 6usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 6usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 0u16, 2u16, 4u16, 6u16];
@@ -6724,7 +6715,7 @@ pub mod g3_vendored {
         #[inline]
         fn commutator(&self, rhs: &Multivector<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 12usize] = ::algebra_core::kernels::unpack(
                     b"\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\0\0\x04\0\0\0\x02\0\x06\0\x01\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\0\0\x02\0\0\0\x01\0\x01\0\x01\0\0\0\x03\0\0\0\x02\0\x01\0\x01\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -6785,7 +6776,7 @@ pub mod g3_vendored {
         #[inline]
         fn commutator(&self, rhs: &Odd<T>) -> Vector<T> {
             Vector::from_array({
-                const TERMS: [(u16, u16, u16); 6usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 6usize] = ::algebra_core::kernels::unpack(
                     b"\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0",
                 );
                 const STARTS: [u16; 4usize] = [0u16, 2u16, 4u16, 6u16];
@@ -6807,7 +6798,7 @@ pub mod g3_vendored {
         #[inline]
         fn commutator(&self, rhs: &Multivector<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 12usize] = ::algebra_core::kernels::unpack(
                     b"\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x01\0\x01\0\x01\0\x03\0\x03\0\0\0\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0\x02\0\x06\0\x01\0\x03\0\x05\0\0\0\x01\0\x06\0\0\0\x03\0\x04\0\x01\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -6831,7 +6822,7 @@ pub mod g3_vendored {
         #[inline]
         fn commutator(&self, rhs: &Vector<T>) -> Rotor<T> {
             Rotor::from_array({
-                const TERMS: [(u16, u16, u16); 6usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 6usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 0u16, 2u16, 4u16, 6u16];
@@ -6853,7 +6844,7 @@ pub mod g3_vendored {
         #[inline]
         fn commutator(&self, rhs: &Rotor<T>) -> Vector<T> {
             Vector::from_array({
-                const TERMS: [(u16, u16, u16); 6usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 6usize] = ::algebra_core::kernels::unpack(
                     b"\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\0\0\x01\0\0\0\x02\0\x03\0\x01\0\0\0\x02\0\0\0\x01\0\x03\0\0\0",
                 );
                 const STARTS: [u16; 4usize] = [0u16, 2u16, 4u16, 6u16];
@@ -6875,7 +6866,7 @@ pub mod g3_vendored {
         #[inline]
         fn commutator(&self, rhs: &Odd<T>) -> Rotor<T> {
             Rotor::from_array({
-                const TERMS: [(u16, u16, u16); 6usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 6usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 0u16, 2u16, 4u16, 6u16];
@@ -6897,7 +6888,7 @@ pub mod g3_vendored {
         #[inline]
         fn commutator(&self, rhs: &Multivector<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 12usize] = ::algebra_core::kernels::unpack(
                     b"\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\0\0\x04\0\0\0\x02\0\x06\0\x01\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\0\0\x02\0\0\0\x01\0\x01\0\x01\0\0\0\x03\0\0\0\x02\0\x01\0\x01\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -6921,7 +6912,7 @@ pub mod g3_vendored {
         #[inline]
         fn commutator(&self, rhs: &Vector<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 12usize] = ::algebra_core::kernels::unpack(
                     b"\x04\0\x01\0\0\0\x05\0\x02\0\0\0\x04\0\0\0\x01\0\x06\0\x02\0\0\0\x05\0\0\0\x01\0\x06\0\x01\0\x01\0\x01\0\x01\0\0\0\x02\0\0\0\x01\0\x01\0\x02\0\0\0\x03\0\0\0\x01\0\x02\0\x02\0\0\0\x03\0\x01\0\x01\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -6945,7 +6936,7 @@ pub mod g3_vendored {
         #[inline]
         fn commutator(&self, rhs: &Rotor<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 12usize] = ::algebra_core::kernels::unpack(
                     b"\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0\x01\0\x01\0\0\0\x03\0\x03\0\x01\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x05\0\x03\0\x01\0\x06\0\x02\0\0\0\x04\0\x03\0\0\0\x06\0\x01\0\x01\0\x04\0\x02\0\x01\0\x05\0\x01\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -6969,7 +6960,7 @@ pub mod g3_vendored {
         #[inline]
         fn commutator(&self, rhs: &Odd<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 12usize] = ::algebra_core::kernels::unpack(
                     b"\x04\0\x01\0\0\0\x05\0\x02\0\0\0\x04\0\0\0\x01\0\x06\0\x02\0\0\0\x05\0\0\0\x01\0\x06\0\x01\0\x01\0\x01\0\x01\0\0\0\x02\0\0\0\x01\0\x01\0\x02\0\0\0\x03\0\0\0\x01\0\x02\0\x02\0\0\0\x03\0\x01\0\x01\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -6993,7 +6984,7 @@ pub mod g3_vendored {
         #[inline]
         fn commutator(&self, rhs: &Multivector<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 24usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 24usize] = ::algebra_core::kernels::unpack(
                     b"\x02\0\x04\0\x01\0\x03\0\x05\0\x01\0\x04\0\x02\0\0\0\x05\0\x03\0\0\0\x01\0\x04\0\0\0\x03\0\x06\0\x01\0\x04\0\x01\0\x01\0\x06\0\x03\0\0\0\x01\0\x05\0\0\0\x02\0\x06\0\0\0\x05\0\x01\0\x01\0\x06\0\x02\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x05\0\x06\0\x01\0\x06\0\x05\0\0\0\x01\0\x03\0\0\0\x03\0\x01\0\x01\0\x04\0\x06\0\0\0\x06\0\x04\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\x01\0\x04\0\x05\0\x01\0\x05\0\x04\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -7052,7 +7043,7 @@ pub mod g3_vendored {
         #[inline]
         fn anticommutator(&self, rhs: &Odd<T>) -> Rotor<T> {
             Rotor::from_array({
-                const TERMS: [(u16, u16, u16); 6usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 6usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x02\0\x03\0\0\0\x01\0\x03\0\x01\0\0\0\x03\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 3u16, 4u16, 5u16, 6u16];
@@ -7075,7 +7066,7 @@ pub mod g3_vendored {
         #[inline]
         fn anticommutator(&self, rhs: &Multivector<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 12usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\0\0\x02\0\x07\0\0\0\x01\0\x07\0\x01\0\0\0\x07\0\0\0\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -7141,7 +7132,7 @@ pub mod g3_vendored {
         #[inline]
         fn anticommutator(&self, rhs: &Odd<T>) -> Odd<T> {
             Odd::from_array({
-                const TERMS: [(u16, u16, u16); 10usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 10usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x02\0\x03\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 2u16, 4u16, 6u16, 10u16];
@@ -7164,7 +7155,7 @@ pub mod g3_vendored {
         #[inline]
         fn anticommutator(&self, rhs: &Multivector<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 20usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 20usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\x03\0\x06\0\x01\0\0\0\x01\0\0\0\x03\0\x07\0\x01\0\0\0\x02\0\0\0\x02\0\x07\0\0\0\0\0\x03\0\0\0\x01\0\x07\0\x01\0\0\0\x04\0\0\0\x01\0\0\0\0\0\0\0\x05\0\0\0\x02\0\0\0\0\0\0\0\x06\0\0\0\x03\0\0\0\0\0\0\0\x07\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -7188,7 +7179,7 @@ pub mod g3_vendored {
         #[inline]
         fn anticommutator(&self, rhs: &Vector<T>) -> Rotor<T> {
             Rotor::from_array({
-                const TERMS: [(u16, u16, u16); 6usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 6usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x02\0\0\0\x03\0\x01\0\x01\0\x03\0\0\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 3u16, 4u16, 5u16, 6u16];
@@ -7210,7 +7201,7 @@ pub mod g3_vendored {
         #[inline]
         fn anticommutator(&self, rhs: &Rotor<T>) -> Odd<T> {
             Odd::from_array({
-                const TERMS: [(u16, u16, u16); 10usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 10usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x03\0\x03\0\x01\0\x01\0\0\0\0\0\x03\0\x02\0\0\0\x02\0\0\0\0\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\x01\0\x02\0\x01\0\0\0\x03\0\0\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 2u16, 4u16, 6u16, 10u16];
@@ -7232,7 +7223,7 @@ pub mod g3_vendored {
         #[inline]
         fn anticommutator(&self, rhs: &Odd<T>) -> Rotor<T> {
             Rotor::from_array({
-                const TERMS: [(u16, u16, u16); 10usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 10usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\x01\0\x03\0\x01\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x03\0\0\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 4u16, 6u16, 8u16, 10u16];
@@ -7255,7 +7246,7 @@ pub mod g3_vendored {
         #[inline]
         fn anticommutator(&self, rhs: &Multivector<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 20usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 20usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\x07\0\x01\0\0\0\0\0\0\0\x03\0\x06\0\x01\0\x01\0\0\0\0\0\x03\0\x05\0\0\0\x02\0\0\0\0\0\x03\0\x04\0\x01\0\x02\0\x07\0\0\0\x03\0\x03\0\0\0\x01\0\x07\0\x01\0\x03\0\x02\0\x01\0\0\0\x07\0\0\0\x03\0\x01\0\0\0\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0\x03\0\0\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -7279,7 +7270,7 @@ pub mod g3_vendored {
         #[inline]
         fn anticommutator(&self, rhs: &Vector<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 12usize] = ::algebra_core::kernels::unpack(
                     b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0\0\0\0\0\0\0\0\0\x01\0\0\0\0\0\x02\0\0\0\x07\0\x02\0\0\0\x07\0\x01\0\x01\0\x07\0\0\0\0\0\x04\0\x02\0\0\0\x05\0\x01\0\x01\0\x06\0\0\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -7303,7 +7294,7 @@ pub mod g3_vendored {
         #[inline]
         fn anticommutator(&self, rhs: &Rotor<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 20usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 20usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x04\0\x01\0\x01\0\x05\0\x02\0\x01\0\x06\0\x03\0\x01\0\x01\0\0\0\0\0\x07\0\x03\0\x01\0\x02\0\0\0\0\0\x07\0\x02\0\0\0\x03\0\0\0\0\0\x07\0\x01\0\x01\0\0\0\x01\0\0\0\x04\0\0\0\0\0\0\0\x02\0\0\0\x05\0\0\0\0\0\0\0\x03\0\0\0\x06\0\0\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0\x07\0\0\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -7327,7 +7318,7 @@ pub mod g3_vendored {
         #[inline]
         fn anticommutator(&self, rhs: &Odd<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 20usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 20usize] = ::algebra_core::kernels::unpack(
                     b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0\x07\0\x03\0\x01\0\0\0\0\0\0\0\x06\0\x03\0\x01\0\0\0\x01\0\0\0\x05\0\x03\0\0\0\0\0\x02\0\0\0\x04\0\x03\0\x01\0\x03\0\x03\0\0\0\x07\0\x02\0\0\0\x02\0\x03\0\x01\0\x07\0\x01\0\x01\0\x01\0\x03\0\0\0\x07\0\0\0\0\0\0\0\x03\0\0\0\x04\0\x02\0\0\0\x05\0\x01\0\x01\0\x06\0\0\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -7352,7 +7343,7 @@ pub mod g3_vendored {
         #[inline]
         fn anticommutator(&self, rhs: &Multivector<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 40usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 40usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\x04\0\x04\0\x01\0\x05\0\x05\0\x01\0\x06\0\x06\0\x01\0\x07\0\x07\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x06\0\x07\0\x01\0\x07\0\x06\0\x01\0\0\0\x02\0\0\0\x02\0\0\0\0\0\x05\0\x07\0\0\0\x07\0\x05\0\0\0\0\0\x03\0\0\0\x03\0\0\0\0\0\x04\0\x07\0\x01\0\x07\0\x04\0\x01\0\0\0\x04\0\0\0\x03\0\x07\0\0\0\x04\0\0\0\0\0\x07\0\x03\0\0\0\0\0\x05\0\0\0\x02\0\x07\0\x01\0\x05\0\0\0\0\0\x07\0\x02\0\x01\0\0\0\x06\0\0\0\x01\0\x07\0\0\0\x06\0\0\0\0\0\x07\0\x01\0\0\0\0\0\x07\0\0\0\x01\0\x06\0\0\0\x02\0\x05\0\x01\0\x03\0\x04\0\0\0\x04\0\x03\0\0\0\x05\0\x02\0\x01\0\x06\0\x01\0\0\0\x07\0\0\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -7377,7 +7368,7 @@ pub mod g3_vendored {
         #[inline]
         fn gp_into(&self, rhs: &Vector<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 9usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 9usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -7422,7 +7413,7 @@ pub mod g3_vendored {
         #[inline]
         fn gp_into(&self, rhs: &Rotor<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 12usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x03\0\x01\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\0\0\0\0\x03\0\0\0\x01\0\x02\0\x01\0\x02\0\x01\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -7446,7 +7437,7 @@ pub mod g3_vendored {
         #[inline]
         fn gp_into(&self, rhs: &Odd<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 12usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -7471,7 +7462,7 @@ pub mod g3_vendored {
         #[inline]
         fn gp_into(&self, rhs: &Multivector<T>) -> Vector<T> {
             Vector::from_array({
-                const TERMS: [(u16, u16, u16); 9usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 9usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\0\0\x04\0\0\0\x01\0\0\0\0\0\x02\0\x06\0\x01\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\x02\0\0\0\0\0",
                 );
                 const STARTS: [u16; 4usize] = [0u16, 3u16, 6u16, 9u16];
@@ -7493,7 +7484,7 @@ pub mod g3_vendored {
         #[inline]
         fn gp_into(&self, rhs: &Multivector<T>) -> Rotor<T> {
             Rotor::from_array({
-                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 12usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\0\0\x02\0\0\0\x01\0\x01\0\x01\0\x02\0\x07\0\0\0\0\0\x03\0\0\0\x01\0\x07\0\x01\0\x02\0\x01\0\x01\0\0\0\x07\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 3u16, 6u16, 9u16, 12u16];
@@ -7515,7 +7506,7 @@ pub mod g3_vendored {
         #[inline]
         fn gp_into(&self, rhs: &Multivector<T>) -> Odd<T> {
             Odd::from_array({
-                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 12usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\0\0\x04\0\0\0\x01\0\0\0\0\0\x02\0\x06\0\x01\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\x02\0\0\0\0\0\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 3u16, 6u16, 9u16, 12u16];
@@ -7558,7 +7549,7 @@ pub mod g3_vendored {
         #[inline]
         fn gp_into(&self, rhs: &Vector<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 12usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -7582,7 +7573,7 @@ pub mod g3_vendored {
         #[inline]
         fn gp_into(&self, rhs: &Rotor<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 16usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x03\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\0\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\x01\0\x02\0\x01\0\0\0\x03\0\0\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -7606,7 +7597,7 @@ pub mod g3_vendored {
         #[inline]
         fn gp_into(&self, rhs: &Odd<T>) -> Vector<T> {
             Vector::from_array({
-                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 12usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0",
                 );
                 const STARTS: [u16; 4usize] = [0u16, 4u16, 8u16, 12u16];
@@ -7628,7 +7619,7 @@ pub mod g3_vendored {
         #[inline]
         fn gp_into(&self, rhs: &Odd<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 16usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -7652,7 +7643,7 @@ pub mod g3_vendored {
         #[inline]
         fn gp_into(&self, rhs: &Multivector<T>) -> Vector<T> {
             Vector::from_array({
-                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 12usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\x07\0\x01\0\0\0\x02\0\0\0\x01\0\x01\0\x01\0\x02\0\x07\0\0\0\x03\0\x03\0\0\0\0\0\x03\0\0\0\x01\0\x07\0\x01\0\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0",
                 );
                 const STARTS: [u16; 4usize] = [0u16, 4u16, 8u16, 12u16];
@@ -7674,7 +7665,7 @@ pub mod g3_vendored {
         #[inline]
         fn gp_into(&self, rhs: &Multivector<T>) -> Rotor<T> {
             Rotor::from_array({
-                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 16usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\x03\0\x06\0\x01\0\0\0\x04\0\0\0\x01\0\0\0\0\0\x02\0\x06\0\x01\0\x03\0\x05\0\0\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\x02\0\0\0\0\0\x03\0\x04\0\x01\0\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0\x03\0\0\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
@@ -7696,7 +7687,7 @@ pub mod g3_vendored {
         #[inline]
         fn gp_into(&self, rhs: &Multivector<T>) -> Odd<T> {
             Odd::from_array({
-                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 16usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\x07\0\x01\0\0\0\x02\0\0\0\x01\0\x01\0\x01\0\x02\0\x07\0\0\0\x03\0\x03\0\0\0\0\0\x03\0\0\0\x01\0\x07\0\x01\0\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0\0\0\x07\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
@@ -7718,7 +7709,7 @@ pub mod g3_vendored {
         #[inline]
         fn gp_into(&self, rhs: &Vector<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 12usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -7742,7 +7733,7 @@ pub mod g3_vendored {
         #[inline]
         fn gp_into(&self, rhs: &Rotor<T>) -> Vector<T> {
             Vector::from_array({
-                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 12usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x03\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\0\0\x03\0\x01\0\x01\0",
                 );
                 const STARTS: [u16; 4usize] = [0u16, 4u16, 8u16, 12u16];
@@ -7764,7 +7755,7 @@ pub mod g3_vendored {
         #[inline]
         fn gp_into(&self, rhs: &Rotor<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 16usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x03\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\0\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\x01\0\x02\0\x01\0\0\0\x03\0\0\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -7788,7 +7779,7 @@ pub mod g3_vendored {
         #[inline]
         fn gp_into(&self, rhs: &Odd<T>) -> Multivector<T> {
             Multivector::from_array({
-                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 16usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
                 );
                 const STARTS: [u16; 9usize] = [
@@ -7812,7 +7803,7 @@ pub mod g3_vendored {
         #[inline]
         fn gp_into(&self, rhs: &Multivector<T>) -> Vector<T> {
             Vector::from_array({
-                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 12usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\x03\0\x06\0\x01\0\0\0\x04\0\0\0\x01\0\0\0\0\0\x02\0\x06\0\x01\0\x03\0\x05\0\0\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\x02\0\0\0\0\0\x03\0\x04\0\x01\0",
                 );
                 const STARTS: [u16; 4usize] = [0u16, 4u16, 8u16, 12u16];
@@ -7834,7 +7825,7 @@ pub mod g3_vendored {
         #[inline]
         fn gp_into(&self, rhs: &Multivector<T>) -> Rotor<T> {
             Rotor::from_array({
-                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 16usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\x07\0\x01\0\0\0\x02\0\0\0\x01\0\x01\0\x01\0\x02\0\x07\0\0\0\x03\0\x03\0\0\0\0\0\x03\0\0\0\x01\0\x07\0\x01\0\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0\0\0\x07\0\0\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
@@ -7856,7 +7847,7 @@ pub mod g3_vendored {
         #[inline]
         fn gp_into(&self, rhs: &Multivector<T>) -> Odd<T> {
             Odd::from_array({
-                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 16usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x04\0\x01\0\x02\0\x05\0\x01\0\x03\0\x06\0\x01\0\0\0\x04\0\0\0\x01\0\0\0\0\0\x02\0\x06\0\x01\0\x03\0\x05\0\0\0\0\0\x05\0\0\0\x01\0\x06\0\0\0\x02\0\0\0\0\0\x03\0\x04\0\x01\0\0\0\x06\0\0\0\x01\0\x05\0\x01\0\x02\0\x04\0\0\0\x03\0\0\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
@@ -7879,7 +7870,7 @@ pub mod g3_vendored {
         #[inline]
         fn gp_into(&self, rhs: &Vector<T>) -> Vector<T> {
             Vector::from_array({
-                const TERMS: [(u16, u16, u16); 9usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 9usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x04\0\x01\0\0\0\x05\0\x02\0\0\0\0\0\x01\0\0\0\x04\0\0\0\x01\0\x06\0\x02\0\0\0\0\0\x02\0\0\0\x05\0\0\0\x01\0\x06\0\x01\0\x01\0",
                 );
                 const STARTS: [u16; 4usize] = [0u16, 3u16, 6u16, 9u16];
@@ -7901,7 +7892,7 @@ pub mod g3_vendored {
         #[inline]
         fn gp_into(&self, rhs: &Vector<T>) -> Rotor<T> {
             Rotor::from_array({
-                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 12usize] = ::algebra_core::kernels::unpack(
                     b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0\x01\0\x01\0\0\0\x02\0\0\0\x01\0\x07\0\x02\0\0\0\x01\0\x02\0\0\0\x03\0\0\0\x01\0\x07\0\x01\0\x01\0\x02\0\x02\0\0\0\x03\0\x01\0\x01\0\x07\0\0\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 3u16, 6u16, 9u16, 12u16];
@@ -7923,7 +7914,7 @@ pub mod g3_vendored {
         #[inline]
         fn gp_into(&self, rhs: &Vector<T>) -> Odd<T> {
             Odd::from_array({
-                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 12usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x04\0\x01\0\0\0\x05\0\x02\0\0\0\0\0\x01\0\0\0\x04\0\0\0\x01\0\x06\0\x02\0\0\0\0\0\x02\0\0\0\x05\0\0\0\x01\0\x06\0\x01\0\x01\0\x04\0\x02\0\0\0\x05\0\x01\0\x01\0\x06\0\0\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 3u16, 6u16, 9u16, 12u16];
@@ -7945,7 +7936,7 @@ pub mod g3_vendored {
         #[inline]
         fn gp_into(&self, rhs: &Rotor<T>) -> Vector<T> {
             Vector::from_array({
-                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 12usize] = ::algebra_core::kernels::unpack(
                     b"\x01\0\0\0\0\0\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0\x07\0\x03\0\x01\0\x01\0\x01\0\0\0\x02\0\0\0\0\0\x03\0\x03\0\x01\0\x07\0\x02\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\0\0\0\0\x07\0\x01\0\x01\0",
                 );
                 const STARTS: [u16; 4usize] = [0u16, 4u16, 8u16, 12u16];
@@ -7967,7 +7958,7 @@ pub mod g3_vendored {
         #[inline]
         fn gp_into(&self, rhs: &Rotor<T>) -> Rotor<T> {
             Rotor::from_array({
-                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 16usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x04\0\x01\0\x01\0\x05\0\x02\0\x01\0\x06\0\x03\0\x01\0\0\0\x01\0\0\0\x04\0\0\0\0\0\x05\0\x03\0\x01\0\x06\0\x02\0\0\0\0\0\x02\0\0\0\x04\0\x03\0\0\0\x05\0\0\0\0\0\x06\0\x01\0\x01\0\0\0\x03\0\0\0\x04\0\x02\0\x01\0\x05\0\x01\0\0\0\x06\0\0\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
@@ -7989,7 +7980,7 @@ pub mod g3_vendored {
         #[inline]
         fn gp_into(&self, rhs: &Rotor<T>) -> Odd<T> {
             Odd::from_array({
-                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 16usize] = ::algebra_core::kernels::unpack(
                     b"\x01\0\0\0\0\0\x02\0\x01\0\x01\0\x03\0\x02\0\x01\0\x07\0\x03\0\x01\0\x01\0\x01\0\0\0\x02\0\0\0\0\0\x03\0\x03\0\x01\0\x07\0\x02\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\0\0\x03\0\0\0\0\0\x07\0\x01\0\x01\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\0\0\x07\0\0\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
@@ -8011,7 +8002,7 @@ pub mod g3_vendored {
         #[inline]
         fn gp_into(&self, rhs: &Odd<T>) -> Vector<T> {
             Vector::from_array({
-                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 12usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x04\0\x01\0\0\0\x05\0\x02\0\0\0\x06\0\x03\0\x01\0\0\0\x01\0\0\0\x04\0\0\0\x01\0\x05\0\x03\0\0\0\x06\0\x02\0\0\0\0\0\x02\0\0\0\x04\0\x03\0\x01\0\x05\0\0\0\x01\0\x06\0\x01\0\x01\0",
                 );
                 const STARTS: [u16; 4usize] = [0u16, 4u16, 8u16, 12u16];
@@ -8033,7 +8024,7 @@ pub mod g3_vendored {
         #[inline]
         fn gp_into(&self, rhs: &Odd<T>) -> Rotor<T> {
             Rotor::from_array({
-                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 16usize] = ::algebra_core::kernels::unpack(
                     b"\x01\0\0\0\0\0\x02\0\x01\0\0\0\x03\0\x02\0\0\0\x07\0\x03\0\x01\0\x01\0\x01\0\0\0\x02\0\0\0\x01\0\x03\0\x03\0\0\0\x07\0\x02\0\0\0\x01\0\x02\0\0\0\x02\0\x03\0\x01\0\x03\0\0\0\x01\0\x07\0\x01\0\x01\0\x01\0\x03\0\0\0\x02\0\x02\0\0\0\x03\0\x01\0\x01\0\x07\0\0\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
@@ -8055,7 +8046,7 @@ pub mod g3_vendored {
         #[inline]
         fn gp_into(&self, rhs: &Odd<T>) -> Odd<T> {
             Odd::from_array({
-                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 16usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x04\0\x01\0\0\0\x05\0\x02\0\0\0\x06\0\x03\0\x01\0\0\0\x01\0\0\0\x04\0\0\0\x01\0\x05\0\x03\0\0\0\x06\0\x02\0\0\0\0\0\x02\0\0\0\x04\0\x03\0\x01\0\x05\0\0\0\x01\0\x06\0\x01\0\x01\0\0\0\x03\0\0\0\x04\0\x02\0\0\0\x05\0\x01\0\x01\0\x06\0\0\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
@@ -8078,7 +8069,7 @@ pub mod g3_vendored {
         #[inline]
         fn gp_into(&self, rhs: &Multivector<T>) -> Vector<T> {
             Vector::from_array({
-                const TERMS: [(u16, u16, u16); 24usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 24usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x04\0\x01\0\x03\0\x05\0\x01\0\x04\0\x02\0\0\0\x05\0\x03\0\0\0\x06\0\x07\0\x01\0\x07\0\x06\0\x01\0\0\0\x02\0\0\0\x01\0\x04\0\0\0\x02\0\0\0\0\0\x03\0\x06\0\x01\0\x04\0\x01\0\x01\0\x05\0\x07\0\0\0\x06\0\x03\0\0\0\x07\0\x05\0\0\0\0\0\x03\0\0\0\x01\0\x05\0\0\0\x02\0\x06\0\0\0\x03\0\0\0\0\0\x04\0\x07\0\x01\0\x05\0\x01\0\x01\0\x06\0\x02\0\x01\0\x07\0\x04\0\x01\0",
                 );
                 const STARTS: [u16; 4usize] = [0u16, 8u16, 16u16, 24u16];
@@ -8101,7 +8092,7 @@ pub mod g3_vendored {
         #[inline]
         fn gp_into(&self, rhs: &Multivector<T>) -> Rotor<T> {
             Rotor::from_array({
-                const TERMS: [(u16, u16, u16); 32usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 32usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\x04\0\x04\0\x01\0\x05\0\x05\0\x01\0\x06\0\x06\0\x01\0\x07\0\x07\0\x01\0\0\0\x04\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\x07\0\0\0\x04\0\0\0\0\0\x05\0\x06\0\x01\0\x06\0\x05\0\0\0\x07\0\x03\0\0\0\0\0\x05\0\0\0\x01\0\x03\0\0\0\x02\0\x07\0\x01\0\x03\0\x01\0\x01\0\x04\0\x06\0\0\0\x05\0\0\0\0\0\x06\0\x04\0\x01\0\x07\0\x02\0\x01\0\0\0\x06\0\0\0\x01\0\x07\0\0\0\x02\0\x03\0\0\0\x03\0\x02\0\x01\0\x04\0\x05\0\x01\0\x05\0\x04\0\0\0\x06\0\0\0\0\0\x07\0\x01\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 8u16, 16u16, 24u16, 32u16];
@@ -8124,7 +8115,7 @@ pub mod g3_vendored {
         #[inline]
         fn gp_into(&self, rhs: &Multivector<T>) -> Odd<T> {
             Odd::from_array({
-                const TERMS: [(u16, u16, u16); 32usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 32usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x04\0\x01\0\x03\0\x05\0\x01\0\x04\0\x02\0\0\0\x05\0\x03\0\0\0\x06\0\x07\0\x01\0\x07\0\x06\0\x01\0\0\0\x02\0\0\0\x01\0\x04\0\0\0\x02\0\0\0\0\0\x03\0\x06\0\x01\0\x04\0\x01\0\x01\0\x05\0\x07\0\0\0\x06\0\x03\0\0\0\x07\0\x05\0\0\0\0\0\x03\0\0\0\x01\0\x05\0\0\0\x02\0\x06\0\0\0\x03\0\0\0\0\0\x04\0\x07\0\x01\0\x05\0\x01\0\x01\0\x06\0\x02\0\x01\0\x07\0\x04\0\x01\0\0\0\x07\0\0\0\x01\0\x06\0\0\0\x02\0\x05\0\x01\0\x03\0\x04\0\0\0\x04\0\x03\0\0\0\x05\0\x02\0\x01\0\x06\0\x01\0\0\0\x07\0\0\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 8u16, 16u16, 24u16, 32u16];
@@ -8379,7 +8370,7 @@ pub mod g3_vendored {
         fn sandwich(&self, x: &Odd<T>) -> Odd<T> {
             let s = self.each_ref();
             let t = {
-                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 12usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 3u16, 6u16, 9u16, 12u16];
@@ -8394,7 +8385,7 @@ pub mod g3_vendored {
                 >(s, x.each_ref(), &TERMS, &STARTS, &[])
             };
             Odd::from_array({
-                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 12usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 3u16, 6u16, 9u16, 12u16];
@@ -8417,7 +8408,7 @@ pub mod g3_vendored {
         fn apply(&self, x: &Odd<T>) -> Odd<T> {
             let s = self.each_ref();
             let t = {
-                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 12usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 3u16, 6u16, 9u16, 12u16];
@@ -8432,7 +8423,7 @@ pub mod g3_vendored {
                 >(s, x.each_ref(), &TERMS, &STARTS, &[])
             };
             Odd::from_array({
-                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 12usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 3u16, 6u16, 9u16, 12u16];
@@ -8563,7 +8554,7 @@ pub mod g3_vendored {
         fn sandwich(&self, x: &Odd<T>) -> Odd<T> {
             let s = self.each_ref();
             let t = {
-                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 16usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x03\0\x01\0\x03\0\x02\0\x01\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\0\0\x03\0\x01\0\0\0\0\0\x03\0\0\0\x01\0\x02\0\x01\0\x02\0\x01\0\0\0\x03\0\0\0\x01\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
@@ -8578,7 +8569,7 @@ pub mod g3_vendored {
                 >(s, x.each_ref(), &TERMS, &STARTS, &[])
             };
             Odd::from_array({
-                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 16usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x03\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\0\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\x01\0\x02\0\x01\0\0\0\x03\0\0\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
@@ -8601,7 +8592,7 @@ pub mod g3_vendored {
         fn apply(&self, x: &Odd<T>) -> Odd<T> {
             let s = self.each_ref();
             let t = {
-                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 16usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
@@ -8616,7 +8607,7 @@ pub mod g3_vendored {
                 >(s, x.each_ref(), &TERMS, &STARTS, &[])
             };
             Odd::from_array({
-                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 16usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\0\0\x01\0\x01\0\x01\0\0\0\0\0\x02\0\x03\0\0\0\x03\0\x02\0\x01\0\0\0\x02\0\x01\0\x01\0\x03\0\x01\0\x02\0\0\0\0\0\x03\0\x01\0\0\0\0\0\x03\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
@@ -8639,7 +8630,7 @@ pub mod g3_vendored {
         fn sandwich(&self, x: &Vector<T>) -> Vector<T> {
             let s = self.each_ref();
             let t = {
-                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 12usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\x01\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\x01\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 3u16, 6u16, 9u16, 12u16];
@@ -8654,7 +8645,7 @@ pub mod g3_vendored {
                 >(s, x.each_ref(), &TERMS, &STARTS, &[])
             };
             Vector::from_array({
-                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 12usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0",
                 );
                 const STARTS: [u16; 4usize] = [0u16, 4u16, 8u16, 12u16];
@@ -8677,7 +8668,7 @@ pub mod g3_vendored {
         fn apply(&self, x: &Vector<T>) -> Vector<T> {
             let s = self.each_ref();
             let t = {
-                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 12usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 3u16, 6u16, 9u16, 12u16];
@@ -8692,7 +8683,7 @@ pub mod g3_vendored {
                 >(s, x.each_ref(), &TERMS, &STARTS, &[])
             };
             Vector::from_array({
-                const TERMS: [(u16, u16, u16); 12usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 12usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0",
                 );
                 const STARTS: [u16; 4usize] = [0u16, 4u16, 8u16, 12u16];
@@ -8715,7 +8706,7 @@ pub mod g3_vendored {
         fn sandwich(&self, x: &Rotor<T>) -> Rotor<T> {
             let s = self.each_ref();
             let t = {
-                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 16usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x03\0\x01\0\x03\0\x02\0\x01\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\0\0\x03\0\x01\0\0\0\0\0\x03\0\0\0\x01\0\x02\0\x01\0\x02\0\x01\0\0\0\x03\0\0\0\x01\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
@@ -8730,7 +8721,7 @@ pub mod g3_vendored {
                 >(s, x.each_ref(), &TERMS, &STARTS, &[])
             };
             Rotor::from_array({
-                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 16usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
@@ -8753,7 +8744,7 @@ pub mod g3_vendored {
         fn apply(&self, x: &Rotor<T>) -> Rotor<T> {
             let s = self.each_ref();
             let t = {
-                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 16usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x03\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\0\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\x01\0\x02\0\x01\0\0\0\x03\0\0\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
@@ -8768,7 +8759,7 @@ pub mod g3_vendored {
                 >(s, x.each_ref(), &TERMS, &STARTS, &[])
             };
             Rotor::from_array({
-                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 16usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\0\0\x03\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
@@ -8791,7 +8782,7 @@ pub mod g3_vendored {
         fn sandwich(&self, x: &Odd<T>) -> Odd<T> {
             let s = self.each_ref();
             let t = {
-                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 16usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\x01\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\x03\0\x01\0\0\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\x01\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
@@ -8806,7 +8797,7 @@ pub mod g3_vendored {
                 >(s, x.each_ref(), &TERMS, &STARTS, &[])
             };
             Odd::from_array({
-                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 16usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
@@ -8829,7 +8820,7 @@ pub mod g3_vendored {
         fn apply(&self, x: &Odd<T>) -> Odd<T> {
             let s = self.each_ref();
             let t = {
-                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 16usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
@@ -8844,7 +8835,7 @@ pub mod g3_vendored {
                 >(s, x.each_ref(), &TERMS, &STARTS, &[])
             };
             Odd::from_array({
-                const TERMS: [(u16, u16, u16); 16usize] = ::algebra_core::kernels::unpack(
+                const TERMS: [[u16; 3]; 16usize] = ::algebra_core::kernels::unpack(
                     b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\0\0\x03\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
@@ -9017,26 +9008,30 @@ pub mod g3_vendored {
     for Vector<T> {
         type Matrix = [[T; 3usize]; 3usize];
         fn sandwich_matrix(&self) -> [[T; 3usize]; 3usize] {
-            ::algebra_core::kernels::quadratic::<
-                T,
-                3usize,
-                _,
-            >(
-                &self.each_ref(),
-                b"\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x01\0\x01\0\x01\0\0\0\0\0\x02\0\x02\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\0\0\x02\0\x02\0\x01\0\0\0\0\0\x01\0\x02\0\x01\0\x01\0\0\0\0\0\x01\0\x01\0\x01\0\x01\0\x01\0\0\0\x01\0\x01\0\x02\0\x02\0\x01\0\x01\0\x02\0\x01\0\x02\0\x02\0\x02\0\0\0\0\0\x02\0\x02\0\x02\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\0\0\x01\0\x02\0\x02\0\x01\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0",
-                &[(2i64, 1i64)],
-            )
+            {
+                const ENTRIES: [[u16; 5]; 15usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x01\0\x01\0\x01\0\0\0\0\0\x02\0\x02\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\0\0\x02\0\x02\0\x01\0\0\0\0\0\x01\0\x02\0\x01\0\x01\0\0\0\0\0\x01\0\x01\0\x01\0\x01\0\x01\0\0\0\x01\0\x01\0\x02\0\x02\0\x01\0\x01\0\x02\0\x01\0\x02\0\x02\0\x02\0\0\0\0\0\x02\0\x02\0\x02\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\0\0\x01\0\x02\0\x02\0\x01\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0",
+                );
+                ::algebra_core::kernels::quadratic::<
+                    T,
+                    3usize,
+                    _,
+                    _,
+                >(&self.each_ref(), &ENTRIES, &[(2i64, 1i64)])
+            }
         }
         fn apply_matrix(&self) -> [[T; 3usize]; 3usize] {
-            ::algebra_core::kernels::quadratic::<
-                T,
-                3usize,
-                _,
-            >(
-                &self.each_ref(),
-                b"\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x01\0\x01\0\x01\0\0\0\0\0\x02\0\x02\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\0\0\x02\0\x02\0\x01\0\0\0\0\0\x01\0\x02\0\x01\0\x01\0\0\0\0\0\x01\0\x01\0\x01\0\x01\0\x01\0\0\0\x01\0\x01\0\x02\0\x02\0\x01\0\x01\0\x02\0\x01\0\x02\0\x02\0\x02\0\0\0\0\0\x02\0\x02\0\x02\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\0\0\x01\0\x02\0\x02\0\x01\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0",
-                &[(2i64, 1i64)],
-            )
+            {
+                const ENTRIES: [[u16; 5]; 15usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x01\0\x01\0\x01\0\0\0\0\0\x02\0\x02\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\0\0\x02\0\x02\0\x01\0\0\0\0\0\x01\0\x02\0\x01\0\x01\0\0\0\0\0\x01\0\x01\0\x01\0\x01\0\x01\0\0\0\x01\0\x01\0\x02\0\x02\0\x01\0\x01\0\x02\0\x01\0\x02\0\x02\0\x02\0\0\0\0\0\x02\0\x02\0\x02\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\0\0\x01\0\x02\0\x02\0\x01\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0",
+                );
+                ::algebra_core::kernels::quadratic::<
+                    T,
+                    3usize,
+                    _,
+                    _,
+                >(&self.each_ref(), &ENTRIES, &[(2i64, 1i64)])
+            }
         }
         #[inline]
         fn transform(m: &[[T; 3usize]; 3usize], x: &Vector<T>) -> Vector<T> {
@@ -9058,26 +9053,30 @@ pub mod g3_vendored {
     for Vector<T> {
         type Matrix = [[T; 4usize]; 4usize];
         fn sandwich_matrix(&self) -> [[T; 4usize]; 4usize] {
-            ::algebra_core::kernels::quadratic::<
-                T,
-                4usize,
-                _,
-            >(
-                &self.each_ref(),
-                b"\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x01\0\x01\0\0\0\0\0\0\0\x02\0\x02\0\0\0\x01\0\x01\0\0\0\0\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x02\0\x02\0\0\0\x01\0\x02\0\x01\0\x02\0\x02\0\x01\0\x03\0\0\0\x02\0\x03\0\x02\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\0\0\x01\0\x02\0\x02\0\x01\0\x01\0\0\0\x02\0\x02\0\x02\0\x02\0\x01\0\x02\0\x03\0\0\0\x01\0\x02\0\x03\0\x01\0\0\0\x02\0\x03\0\x03\0\x02\0\0\0\x01\0\x02\0\x03\0\x03\0\0\0\0\0\0\0\x03\0\x03\0\x01\0\x01\0\x01\0\x03\0\x03\0\x02\0\x02\0\x01\0",
-                &[(-2i64, 1i64), (2i64, 1i64)],
-            )
+            {
+                const ENTRIES: [[u16; 5]; 18usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x01\0\x01\0\0\0\0\0\0\0\x02\0\x02\0\0\0\x01\0\x01\0\0\0\0\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x02\0\x02\0\0\0\x01\0\x02\0\x01\0\x02\0\x02\0\x01\0\x03\0\0\0\x02\0\x03\0\x02\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\0\0\x01\0\x02\0\x02\0\x01\0\x01\0\0\0\x02\0\x02\0\x02\0\x02\0\x01\0\x02\0\x03\0\0\0\x01\0\x02\0\x03\0\x01\0\0\0\x02\0\x03\0\x03\0\x02\0\0\0\x01\0\x02\0\x03\0\x03\0\0\0\0\0\0\0\x03\0\x03\0\x01\0\x01\0\x01\0\x03\0\x03\0\x02\0\x02\0\x01\0",
+                );
+                ::algebra_core::kernels::quadratic::<
+                    T,
+                    4usize,
+                    _,
+                    _,
+                >(&self.each_ref(), &ENTRIES, &[(-2i64, 1i64), (2i64, 1i64)])
+            }
         }
         fn apply_matrix(&self) -> [[T; 4usize]; 4usize] {
-            ::algebra_core::kernels::quadratic::<
-                T,
-                4usize,
-                _,
-            >(
-                &self.each_ref(),
-                b"\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x01\0\x01\0\0\0\0\0\0\0\x02\0\x02\0\0\0\x01\0\x01\0\0\0\0\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x02\0\x02\0\0\0\x01\0\x02\0\x01\0\x02\0\x02\0\x01\0\x03\0\0\0\x02\0\x03\0\x02\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\0\0\x01\0\x02\0\x02\0\x01\0\x01\0\0\0\x02\0\x02\0\x02\0\x02\0\x01\0\x02\0\x03\0\0\0\x01\0\x02\0\x03\0\x01\0\0\0\x02\0\x03\0\x03\0\x02\0\0\0\x01\0\x02\0\x03\0\x03\0\0\0\0\0\0\0\x03\0\x03\0\x01\0\x01\0\x01\0\x03\0\x03\0\x02\0\x02\0\x01\0",
-                &[(-2i64, 1i64), (2i64, 1i64)],
-            )
+            {
+                const ENTRIES: [[u16; 5]; 18usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x01\0\x01\0\0\0\0\0\0\0\x02\0\x02\0\0\0\x01\0\x01\0\0\0\0\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x02\0\x02\0\0\0\x01\0\x02\0\x01\0\x02\0\x02\0\x01\0\x03\0\0\0\x02\0\x03\0\x02\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\0\0\x01\0\x02\0\x02\0\x01\0\x01\0\0\0\x02\0\x02\0\x02\0\x02\0\x01\0\x02\0\x03\0\0\0\x01\0\x02\0\x03\0\x01\0\0\0\x02\0\x03\0\x03\0\x02\0\0\0\x01\0\x02\0\x03\0\x03\0\0\0\0\0\0\0\x03\0\x03\0\x01\0\x01\0\x01\0\x03\0\x03\0\x02\0\x02\0\x01\0",
+                );
+                ::algebra_core::kernels::quadratic::<
+                    T,
+                    4usize,
+                    _,
+                    _,
+                >(&self.each_ref(), &ENTRIES, &[(-2i64, 1i64), (2i64, 1i64)])
+            }
         }
         #[inline]
         fn transform(m: &[[T; 4usize]; 4usize], x: &Rotor<T>) -> Rotor<T> {
@@ -9100,26 +9099,30 @@ pub mod g3_vendored {
     for Vector<T> {
         type Matrix = [[T; 4usize]; 4usize];
         fn sandwich_matrix(&self) -> [[T; 4usize]; 4usize] {
-            ::algebra_core::kernels::quadratic::<
-                T,
-                4usize,
-                _,
-            >(
-                &self.each_ref(),
-                b"\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x01\0\x01\0\x01\0\0\0\0\0\x02\0\x02\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\0\0\x02\0\x02\0\x01\0\0\0\0\0\x01\0\x02\0\x01\0\x01\0\0\0\0\0\x01\0\x01\0\x01\0\x01\0\x01\0\0\0\x01\0\x01\0\x02\0\x02\0\x01\0\x01\0\x02\0\x01\0\x02\0\x02\0\x02\0\0\0\0\0\x02\0\x02\0\x02\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\0\0\x01\0\x02\0\x02\0\x01\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\0\0\0\0\x03\0\x03\0\x01\0\x01\0\0\0\x03\0\x03\0\x02\0\x02\0\0\0",
-                &[(2i64, 1i64)],
-            )
+            {
+                const ENTRIES: [[u16; 5]; 18usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x01\0\x01\0\x01\0\0\0\0\0\x02\0\x02\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\0\0\x02\0\x02\0\x01\0\0\0\0\0\x01\0\x02\0\x01\0\x01\0\0\0\0\0\x01\0\x01\0\x01\0\x01\0\x01\0\0\0\x01\0\x01\0\x02\0\x02\0\x01\0\x01\0\x02\0\x01\0\x02\0\x02\0\x02\0\0\0\0\0\x02\0\x02\0\x02\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\0\0\x01\0\x02\0\x02\0\x01\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\0\0\0\0\x03\0\x03\0\x01\0\x01\0\0\0\x03\0\x03\0\x02\0\x02\0\0\0",
+                );
+                ::algebra_core::kernels::quadratic::<
+                    T,
+                    4usize,
+                    _,
+                    _,
+                >(&self.each_ref(), &ENTRIES, &[(2i64, 1i64)])
+            }
         }
         fn apply_matrix(&self) -> [[T; 4usize]; 4usize] {
-            ::algebra_core::kernels::quadratic::<
-                T,
-                4usize,
-                _,
-            >(
-                &self.each_ref(),
-                b"\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x01\0\x01\0\x01\0\0\0\0\0\x02\0\x02\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\0\0\x02\0\x02\0\x01\0\0\0\0\0\x01\0\x02\0\x01\0\x01\0\0\0\0\0\x01\0\x01\0\x01\0\x01\0\x01\0\0\0\x01\0\x01\0\x02\0\x02\0\x01\0\x01\0\x02\0\x01\0\x02\0\x02\0\x02\0\0\0\0\0\x02\0\x02\0\x02\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\0\0\x01\0\x02\0\x02\0\x01\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\0\0\0\0\x03\0\x03\0\x01\0\x01\0\0\0\x03\0\x03\0\x02\0\x02\0\0\0",
-                &[(2i64, 1i64)],
-            )
+            {
+                const ENTRIES: [[u16; 5]; 18usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x01\0\x01\0\x01\0\0\0\0\0\x02\0\x02\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\0\0\x02\0\x02\0\x01\0\0\0\0\0\x01\0\x02\0\x01\0\x01\0\0\0\0\0\x01\0\x01\0\x01\0\x01\0\x01\0\0\0\x01\0\x01\0\x02\0\x02\0\x01\0\x01\0\x02\0\x01\0\x02\0\x02\0\x02\0\0\0\0\0\x02\0\x02\0\x02\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\0\0\x01\0\x02\0\x02\0\x01\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\0\0\0\0\x03\0\x03\0\x01\0\x01\0\0\0\x03\0\x03\0\x02\0\x02\0\0\0",
+                );
+                ::algebra_core::kernels::quadratic::<
+                    T,
+                    4usize,
+                    _,
+                    _,
+                >(&self.each_ref(), &ENTRIES, &[(2i64, 1i64)])
+            }
         }
         #[inline]
         fn transform(m: &[[T; 4usize]; 4usize], x: &Odd<T>) -> Odd<T> {
@@ -9332,26 +9335,30 @@ pub mod g3_vendored {
     for Rotor<T> {
         type Matrix = [[T; 4usize]; 4usize];
         fn sandwich_matrix(&self) -> [[T; 4usize]; 4usize] {
-            ::algebra_core::kernels::quadratic::<
-                T,
-                4usize,
-                _,
-            >(
-                &self.each_ref(),
-                b"\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x01\0\x01\0\x01\0\0\0\0\0\x02\0\x02\0\x01\0\0\0\0\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\x02\0\0\0\x01\0\x02\0\x03\0\x02\0\0\0\x02\0\0\0\x02\0\x02\0\0\0\x02\0\x01\0\x03\0\x03\0\x01\0\0\0\0\0\x01\0\x03\0\x01\0\0\0\x02\0\x03\0\x02\0\x01\0\x01\0\0\0\0\0\0\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x02\0\x02\0\0\0\x01\0\x01\0\x03\0\x03\0\x01\0\x01\0\x02\0\0\0\x03\0\x02\0\x01\0\x02\0\x01\0\x02\0\x02\0\x02\0\0\0\0\0\x02\0\x03\0\x02\0\0\0\x01\0\x03\0\x03\0\x02\0\x01\0\0\0\x03\0\x03\0\x02\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\0\0\0\0\x02\0\x02\0\x01\0\x01\0\0\0\x02\0\x02\0\x02\0\x02\0\x01\0\x02\0\x02\0\x03\0\x03\0\x01\0\x03\0\x03\0\0\0\0\0\0\0\x03\0\x03\0\x01\0\x01\0\0\0\x03\0\x03\0\x02\0\x02\0\0\0\x03\0\x03\0\x03\0\x03\0\0\0",
-                &[(-2i64, 1i64), (2i64, 1i64)],
-            )
+            {
+                const ENTRIES: [[u16; 5]; 28usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x01\0\x01\0\x01\0\0\0\0\0\x02\0\x02\0\x01\0\0\0\0\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\x02\0\0\0\x01\0\x02\0\x03\0\x02\0\0\0\x02\0\0\0\x02\0\x02\0\0\0\x02\0\x01\0\x03\0\x03\0\x01\0\0\0\0\0\x01\0\x03\0\x01\0\0\0\x02\0\x03\0\x02\0\x01\0\x01\0\0\0\0\0\0\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x02\0\x02\0\0\0\x01\0\x01\0\x03\0\x03\0\x01\0\x01\0\x02\0\0\0\x03\0\x02\0\x01\0\x02\0\x01\0\x02\0\x02\0\x02\0\0\0\0\0\x02\0\x03\0\x02\0\0\0\x01\0\x03\0\x03\0\x02\0\x01\0\0\0\x03\0\x03\0\x02\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\0\0\0\0\x02\0\x02\0\x01\0\x01\0\0\0\x02\0\x02\0\x02\0\x02\0\x01\0\x02\0\x02\0\x03\0\x03\0\x01\0\x03\0\x03\0\0\0\0\0\0\0\x03\0\x03\0\x01\0\x01\0\0\0\x03\0\x03\0\x02\0\x02\0\0\0\x03\0\x03\0\x03\0\x03\0\0\0",
+                );
+                ::algebra_core::kernels::quadratic::<
+                    T,
+                    4usize,
+                    _,
+                    _,
+                >(&self.each_ref(), &ENTRIES, &[(-2i64, 1i64), (2i64, 1i64)])
+            }
         }
         fn apply_matrix(&self) -> [[T; 4usize]; 4usize] {
-            ::algebra_core::kernels::quadratic::<
-                T,
-                4usize,
-                _,
-            >(
-                &self.each_ref(),
-                b"\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x01\0\x01\0\x01\0\0\0\0\0\x02\0\x02\0\x01\0\0\0\0\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\x02\0\0\0\x01\0\x02\0\x03\0\x03\0\0\0\x02\0\0\0\x02\0\x02\0\0\0\x02\0\x01\0\x03\0\x02\0\x01\0\0\0\0\0\x01\0\x03\0\x01\0\0\0\x02\0\x03\0\x03\0\x01\0\x01\0\0\0\0\0\0\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x02\0\x02\0\0\0\x01\0\x01\0\x03\0\x03\0\x01\0\x01\0\x02\0\0\0\x03\0\x02\0\x01\0\x02\0\x01\0\x02\0\x03\0\x02\0\0\0\0\0\x02\0\x03\0\x02\0\0\0\x01\0\x03\0\x02\0\x02\0\x01\0\0\0\x03\0\x03\0\x02\0\x01\0\x01\0\x02\0\x03\0\x02\0\x02\0\0\0\0\0\0\0\x02\0\x02\0\x01\0\x01\0\0\0\x02\0\x02\0\x02\0\x02\0\x01\0\x02\0\x02\0\x03\0\x03\0\x01\0\x03\0\x03\0\0\0\0\0\0\0\x03\0\x03\0\x01\0\x01\0\0\0\x03\0\x03\0\x02\0\x02\0\0\0\x03\0\x03\0\x03\0\x03\0\0\0",
-                &[(2i64, 1i64), (-2i64, 1i64)],
-            )
+            {
+                const ENTRIES: [[u16; 5]; 28usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x01\0\x01\0\x01\0\0\0\0\0\x02\0\x02\0\x01\0\0\0\0\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\x02\0\0\0\x01\0\x02\0\x03\0\x03\0\0\0\x02\0\0\0\x02\0\x02\0\0\0\x02\0\x01\0\x03\0\x02\0\x01\0\0\0\0\0\x01\0\x03\0\x01\0\0\0\x02\0\x03\0\x03\0\x01\0\x01\0\0\0\0\0\0\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x02\0\x02\0\0\0\x01\0\x01\0\x03\0\x03\0\x01\0\x01\0\x02\0\0\0\x03\0\x02\0\x01\0\x02\0\x01\0\x02\0\x03\0\x02\0\0\0\0\0\x02\0\x03\0\x02\0\0\0\x01\0\x03\0\x02\0\x02\0\x01\0\0\0\x03\0\x03\0\x02\0\x01\0\x01\0\x02\0\x03\0\x02\0\x02\0\0\0\0\0\0\0\x02\0\x02\0\x01\0\x01\0\0\0\x02\0\x02\0\x02\0\x02\0\x01\0\x02\0\x02\0\x03\0\x03\0\x01\0\x03\0\x03\0\0\0\0\0\0\0\x03\0\x03\0\x01\0\x01\0\0\0\x03\0\x03\0\x02\0\x02\0\0\0\x03\0\x03\0\x03\0\x03\0\0\0",
+                );
+                ::algebra_core::kernels::quadratic::<
+                    T,
+                    4usize,
+                    _,
+                    _,
+                >(&self.each_ref(), &ENTRIES, &[(2i64, 1i64), (-2i64, 1i64)])
+            }
         }
         #[inline]
         fn transform(m: &[[T; 4usize]; 4usize], x: &Odd<T>) -> Odd<T> {
@@ -9374,26 +9381,30 @@ pub mod g3_vendored {
     for Odd<T> {
         type Matrix = [[T; 3usize]; 3usize];
         fn sandwich_matrix(&self) -> [[T; 3usize]; 3usize] {
-            ::algebra_core::kernels::quadratic::<
-                T,
-                3usize,
-                _,
-            >(
-                &self.each_ref(),
-                b"\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x01\0\x01\0\x01\0\0\0\0\0\x02\0\x02\0\x01\0\0\0\0\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\x02\0\0\0\x01\0\x02\0\x03\0\x02\0\0\0\x02\0\0\0\x02\0\x02\0\0\0\x02\0\x01\0\x03\0\x03\0\x01\0\0\0\0\0\x01\0\x02\0\x01\0\0\0\x02\0\x03\0\x03\0\x01\0\x01\0\0\0\0\0\x01\0\x01\0\x01\0\x01\0\x01\0\0\0\x01\0\x01\0\x02\0\x02\0\x01\0\x01\0\x01\0\x03\0\x03\0\0\0\x01\0\x02\0\0\0\x03\0\x02\0\x01\0\x02\0\x01\0\x02\0\x02\0\x02\0\0\0\0\0\x02\0\x02\0\x02\0\0\0\x01\0\x03\0\x02\0\x02\0\x01\0\0\0\x03\0\x03\0\x02\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\0\0\x01\0\x02\0\x02\0\x01\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\x02\0\x02\0\x03\0\x03\0\0\0",
-                &[(2i64, 1i64), (-2i64, 1i64)],
-            )
+            {
+                const ENTRIES: [[u16; 5]; 24usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x01\0\x01\0\x01\0\0\0\0\0\x02\0\x02\0\x01\0\0\0\0\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\x02\0\0\0\x01\0\x02\0\x03\0\x02\0\0\0\x02\0\0\0\x02\0\x02\0\0\0\x02\0\x01\0\x03\0\x03\0\x01\0\0\0\0\0\x01\0\x02\0\x01\0\0\0\x02\0\x03\0\x03\0\x01\0\x01\0\0\0\0\0\x01\0\x01\0\x01\0\x01\0\x01\0\0\0\x01\0\x01\0\x02\0\x02\0\x01\0\x01\0\x01\0\x03\0\x03\0\0\0\x01\0\x02\0\0\0\x03\0\x02\0\x01\0\x02\0\x01\0\x02\0\x02\0\x02\0\0\0\0\0\x02\0\x02\0\x02\0\0\0\x01\0\x03\0\x02\0\x02\0\x01\0\0\0\x03\0\x03\0\x02\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\0\0\x01\0\x02\0\x02\0\x01\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\x02\0\x02\0\x03\0\x03\0\0\0",
+                );
+                ::algebra_core::kernels::quadratic::<
+                    T,
+                    3usize,
+                    _,
+                    _,
+                >(&self.each_ref(), &ENTRIES, &[(2i64, 1i64), (-2i64, 1i64)])
+            }
         }
         fn apply_matrix(&self) -> [[T; 3usize]; 3usize] {
-            ::algebra_core::kernels::quadratic::<
-                T,
-                3usize,
-                _,
-            >(
-                &self.each_ref(),
-                b"\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x01\0\x01\0\x01\0\0\0\0\0\x02\0\x02\0\x01\0\0\0\0\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\x02\0\0\0\x01\0\x02\0\x03\0\x03\0\0\0\x02\0\0\0\x02\0\x02\0\0\0\x02\0\x01\0\x03\0\x02\0\x01\0\0\0\0\0\x01\0\x02\0\x01\0\0\0\x02\0\x03\0\x02\0\x01\0\x01\0\0\0\0\0\x01\0\x01\0\x01\0\x01\0\x01\0\0\0\x01\0\x01\0\x02\0\x02\0\x01\0\x01\0\x01\0\x03\0\x03\0\0\0\x01\0\x02\0\0\0\x03\0\x03\0\x01\0\x02\0\x01\0\x02\0\x02\0\x02\0\0\0\0\0\x02\0\x02\0\x02\0\0\0\x01\0\x03\0\x03\0\x02\0\x01\0\0\0\x03\0\x02\0\x02\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\0\0\x01\0\x02\0\x02\0\x01\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\x02\0\x02\0\x03\0\x03\0\0\0",
-                &[(2i64, 1i64), (-2i64, 1i64)],
-            )
+            {
+                const ENTRIES: [[u16; 5]; 24usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x01\0\x01\0\x01\0\0\0\0\0\x02\0\x02\0\x01\0\0\0\0\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\x02\0\0\0\x01\0\x02\0\x03\0\x03\0\0\0\x02\0\0\0\x02\0\x02\0\0\0\x02\0\x01\0\x03\0\x02\0\x01\0\0\0\0\0\x01\0\x02\0\x01\0\0\0\x02\0\x03\0\x02\0\x01\0\x01\0\0\0\0\0\x01\0\x01\0\x01\0\x01\0\x01\0\0\0\x01\0\x01\0\x02\0\x02\0\x01\0\x01\0\x01\0\x03\0\x03\0\0\0\x01\0\x02\0\0\0\x03\0\x03\0\x01\0\x02\0\x01\0\x02\0\x02\0\x02\0\0\0\0\0\x02\0\x02\0\x02\0\0\0\x01\0\x03\0\x03\0\x02\0\x01\0\0\0\x03\0\x02\0\x02\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\0\0\x01\0\x02\0\x02\0\x01\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\x02\0\x02\0\x03\0\x03\0\0\0",
+                );
+                ::algebra_core::kernels::quadratic::<
+                    T,
+                    3usize,
+                    _,
+                    _,
+                >(&self.each_ref(), &ENTRIES, &[(2i64, 1i64), (-2i64, 1i64)])
+            }
         }
         #[inline]
         fn transform(m: &[[T; 3usize]; 3usize], x: &Vector<T>) -> Vector<T> {
@@ -9415,26 +9426,30 @@ pub mod g3_vendored {
     for Odd<T> {
         type Matrix = [[T; 4usize]; 4usize];
         fn sandwich_matrix(&self) -> [[T; 4usize]; 4usize] {
-            ::algebra_core::kernels::quadratic::<
-                T,
-                4usize,
-                _,
-            >(
-                &self.each_ref(),
-                b"\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x01\0\x01\0\0\0\0\0\0\0\x02\0\x02\0\0\0\0\0\0\0\x03\0\x03\0\0\0\x01\0\x01\0\0\0\0\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x02\0\x02\0\0\0\x01\0\x01\0\x03\0\x03\0\0\0\x01\0\x02\0\0\0\x03\0\x02\0\x01\0\x02\0\x01\0\x02\0\x03\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\x03\0\x02\0\x02\0\x01\0\0\0\x03\0\x03\0\x02\0\x01\0\x01\0\x02\0\x03\0\x02\0\x02\0\0\0\0\0\x01\0\x02\0\x02\0\x01\0\x01\0\0\0\x02\0\x02\0\x02\0\x02\0\x01\0\x02\0\x02\0\x03\0\x03\0\0\0\x02\0\x03\0\0\0\x01\0\x03\0\x02\0\x03\0\x02\0\x03\0\x02\0\x03\0\x01\0\0\0\x02\0\x02\0\x03\0\x01\0\x01\0\x03\0\x03\0\x03\0\x02\0\0\0\x01\0\x03\0\x03\0\x02\0\x02\0\x03\0\x03\0\x03\0\x03\0\0\0\0\0\0\0\x03\0\x03\0\x01\0\x01\0\x01\0\x03\0\x03\0\x02\0\x02\0\x01\0\x03\0\x03\0\x03\0\x03\0\0\0",
-                &[(2i64, 1i64), (-2i64, 1i64)],
-            )
+            {
+                const ENTRIES: [[u16; 5]; 28usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x01\0\x01\0\0\0\0\0\0\0\x02\0\x02\0\0\0\0\0\0\0\x03\0\x03\0\0\0\x01\0\x01\0\0\0\0\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x02\0\x02\0\0\0\x01\0\x01\0\x03\0\x03\0\0\0\x01\0\x02\0\0\0\x03\0\x02\0\x01\0\x02\0\x01\0\x02\0\x03\0\x01\0\x03\0\0\0\x02\0\x02\0\x01\0\x03\0\x01\0\x03\0\x02\0\x02\0\x01\0\0\0\x03\0\x03\0\x02\0\x01\0\x01\0\x02\0\x03\0\x02\0\x02\0\0\0\0\0\x01\0\x02\0\x02\0\x01\0\x01\0\0\0\x02\0\x02\0\x02\0\x02\0\x01\0\x02\0\x02\0\x03\0\x03\0\0\0\x02\0\x03\0\0\0\x01\0\x03\0\x02\0\x03\0\x02\0\x03\0\x02\0\x03\0\x01\0\0\0\x02\0\x02\0\x03\0\x01\0\x01\0\x03\0\x03\0\x03\0\x02\0\0\0\x01\0\x03\0\x03\0\x02\0\x02\0\x03\0\x03\0\x03\0\x03\0\0\0\0\0\0\0\x03\0\x03\0\x01\0\x01\0\x01\0\x03\0\x03\0\x02\0\x02\0\x01\0\x03\0\x03\0\x03\0\x03\0\0\0",
+                );
+                ::algebra_core::kernels::quadratic::<
+                    T,
+                    4usize,
+                    _,
+                    _,
+                >(&self.each_ref(), &ENTRIES, &[(2i64, 1i64), (-2i64, 1i64)])
+            }
         }
         fn apply_matrix(&self) -> [[T; 4usize]; 4usize] {
-            ::algebra_core::kernels::quadratic::<
-                T,
-                4usize,
-                _,
-            >(
-                &self.each_ref(),
-                b"\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x01\0\x01\0\0\0\0\0\0\0\x02\0\x02\0\0\0\0\0\0\0\x03\0\x03\0\0\0\x01\0\x01\0\0\0\0\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x02\0\x02\0\0\0\x01\0\x01\0\x03\0\x03\0\0\0\x01\0\x02\0\0\0\x03\0\x02\0\x01\0\x02\0\x01\0\x02\0\x02\0\x01\0\x03\0\0\0\x02\0\x03\0\x01\0\x03\0\x01\0\x03\0\x02\0\x02\0\x01\0\0\0\x03\0\x03\0\x02\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\0\0\x01\0\x02\0\x02\0\x01\0\x01\0\0\0\x02\0\x02\0\x02\0\x02\0\x01\0\x02\0\x02\0\x03\0\x03\0\0\0\x02\0\x03\0\0\0\x01\0\x02\0\x02\0\x03\0\x02\0\x03\0\x02\0\x03\0\x01\0\0\0\x02\0\x03\0\x03\0\x01\0\x01\0\x03\0\x03\0\x03\0\x02\0\0\0\x01\0\x02\0\x03\0\x02\0\x02\0\x03\0\x03\0\x03\0\x03\0\0\0\0\0\0\0\x03\0\x03\0\x01\0\x01\0\x01\0\x03\0\x03\0\x02\0\x02\0\x01\0\x03\0\x03\0\x03\0\x03\0\0\0",
-                &[(-2i64, 1i64), (2i64, 1i64)],
-            )
+            {
+                const ENTRIES: [[u16; 5]; 28usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x01\0\x01\0\0\0\0\0\0\0\x02\0\x02\0\0\0\0\0\0\0\x03\0\x03\0\0\0\x01\0\x01\0\0\0\0\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x01\0\x02\0\x02\0\0\0\x01\0\x01\0\x03\0\x03\0\0\0\x01\0\x02\0\0\0\x03\0\x02\0\x01\0\x02\0\x01\0\x02\0\x02\0\x01\0\x03\0\0\0\x02\0\x03\0\x01\0\x03\0\x01\0\x03\0\x02\0\x02\0\x01\0\0\0\x03\0\x03\0\x02\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\0\0\x01\0\x02\0\x02\0\x01\0\x01\0\0\0\x02\0\x02\0\x02\0\x02\0\x01\0\x02\0\x02\0\x03\0\x03\0\0\0\x02\0\x03\0\0\0\x01\0\x02\0\x02\0\x03\0\x02\0\x03\0\x02\0\x03\0\x01\0\0\0\x02\0\x03\0\x03\0\x01\0\x01\0\x03\0\x03\0\x03\0\x02\0\0\0\x01\0\x02\0\x03\0\x02\0\x02\0\x03\0\x03\0\x03\0\x03\0\0\0\0\0\0\0\x03\0\x03\0\x01\0\x01\0\x01\0\x03\0\x03\0\x02\0\x02\0\x01\0\x03\0\x03\0\x03\0\x03\0\0\0",
+                );
+                ::algebra_core::kernels::quadratic::<
+                    T,
+                    4usize,
+                    _,
+                    _,
+                >(&self.each_ref(), &ENTRIES, &[(-2i64, 1i64), (2i64, 1i64)])
+            }
         }
         #[inline]
         fn transform(m: &[[T; 4usize]; 4usize], x: &Rotor<T>) -> Rotor<T> {
@@ -9456,26 +9471,30 @@ pub mod g3_vendored {
     impl<T: ::algebra_core::Ring> ::algebra_core::ops::ActionMatrix<Odd<T>> for Odd<T> {
         type Matrix = [[T; 4usize]; 4usize];
         fn sandwich_matrix(&self) -> [[T; 4usize]; 4usize] {
-            ::algebra_core::kernels::quadratic::<
-                T,
-                4usize,
-                _,
-            >(
-                &self.each_ref(),
-                b"\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x01\0\x01\0\x01\0\0\0\0\0\x02\0\x02\0\x01\0\0\0\0\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\x02\0\0\0\x01\0\x02\0\x03\0\x02\0\0\0\x02\0\0\0\x02\0\x02\0\0\0\x02\0\x01\0\x03\0\x03\0\x01\0\0\0\0\0\x01\0\x02\0\x01\0\0\0\x02\0\x03\0\x03\0\x01\0\x01\0\0\0\0\0\x01\0\x01\0\x01\0\x01\0\x01\0\0\0\x01\0\x01\0\x02\0\x02\0\x01\0\x01\0\x01\0\x03\0\x03\0\0\0\x01\0\x02\0\0\0\x03\0\x02\0\x01\0\x02\0\x01\0\x02\0\x02\0\x02\0\0\0\0\0\x02\0\x02\0\x02\0\0\0\x01\0\x03\0\x02\0\x02\0\x01\0\0\0\x03\0\x03\0\x02\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\0\0\x01\0\x02\0\x02\0\x01\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\x02\0\x02\0\x03\0\x03\0\0\0\x03\0\x03\0\0\0\0\0\0\0\x03\0\x03\0\x01\0\x01\0\0\0\x03\0\x03\0\x02\0\x02\0\0\0\x03\0\x03\0\x03\0\x03\0\0\0",
-                &[(2i64, 1i64), (-2i64, 1i64)],
-            )
+            {
+                const ENTRIES: [[u16; 5]; 28usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x01\0\x01\0\x01\0\0\0\0\0\x02\0\x02\0\x01\0\0\0\0\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\x02\0\0\0\x01\0\x02\0\x03\0\x02\0\0\0\x02\0\0\0\x02\0\x02\0\0\0\x02\0\x01\0\x03\0\x03\0\x01\0\0\0\0\0\x01\0\x02\0\x01\0\0\0\x02\0\x03\0\x03\0\x01\0\x01\0\0\0\0\0\x01\0\x01\0\x01\0\x01\0\x01\0\0\0\x01\0\x01\0\x02\0\x02\0\x01\0\x01\0\x01\0\x03\0\x03\0\0\0\x01\0\x02\0\0\0\x03\0\x02\0\x01\0\x02\0\x01\0\x02\0\x02\0\x02\0\0\0\0\0\x02\0\x02\0\x02\0\0\0\x01\0\x03\0\x02\0\x02\0\x01\0\0\0\x03\0\x03\0\x02\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\0\0\x01\0\x02\0\x02\0\x01\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\x02\0\x02\0\x03\0\x03\0\0\0\x03\0\x03\0\0\0\0\0\0\0\x03\0\x03\0\x01\0\x01\0\0\0\x03\0\x03\0\x02\0\x02\0\0\0\x03\0\x03\0\x03\0\x03\0\0\0",
+                );
+                ::algebra_core::kernels::quadratic::<
+                    T,
+                    4usize,
+                    _,
+                    _,
+                >(&self.each_ref(), &ENTRIES, &[(2i64, 1i64), (-2i64, 1i64)])
+            }
         }
         fn apply_matrix(&self) -> [[T; 4usize]; 4usize] {
-            ::algebra_core::kernels::quadratic::<
-                T,
-                4usize,
-                _,
-            >(
-                &self.each_ref(),
-                b"\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x01\0\x01\0\x01\0\0\0\0\0\x02\0\x02\0\x01\0\0\0\0\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\x02\0\0\0\x01\0\x02\0\x03\0\x03\0\0\0\x02\0\0\0\x02\0\x02\0\0\0\x02\0\x01\0\x03\0\x02\0\x01\0\0\0\0\0\x01\0\x02\0\x01\0\0\0\x02\0\x03\0\x02\0\x01\0\x01\0\0\0\0\0\x01\0\x01\0\x01\0\x01\0\x01\0\0\0\x01\0\x01\0\x02\0\x02\0\x01\0\x01\0\x01\0\x03\0\x03\0\0\0\x01\0\x02\0\0\0\x03\0\x03\0\x01\0\x02\0\x01\0\x02\0\x02\0\x02\0\0\0\0\0\x02\0\x02\0\x02\0\0\0\x01\0\x03\0\x03\0\x02\0\x01\0\0\0\x03\0\x02\0\x02\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\0\0\x01\0\x02\0\x02\0\x01\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\x02\0\x02\0\x03\0\x03\0\0\0\x03\0\x03\0\0\0\0\0\0\0\x03\0\x03\0\x01\0\x01\0\0\0\x03\0\x03\0\x02\0\x02\0\0\0\x03\0\x03\0\x03\0\x03\0\0\0",
-                &[(2i64, 1i64), (-2i64, 1i64)],
-            )
+            {
+                const ENTRIES: [[u16; 5]; 28usize] = ::algebra_core::kernels::unpack(
+                    b"\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x01\0\x01\0\x01\0\0\0\0\0\x02\0\x02\0\x01\0\0\0\0\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\x02\0\0\0\x01\0\x02\0\x03\0\x03\0\0\0\x02\0\0\0\x02\0\x02\0\0\0\x02\0\x01\0\x03\0\x02\0\x01\0\0\0\0\0\x01\0\x02\0\x01\0\0\0\x02\0\x03\0\x02\0\x01\0\x01\0\0\0\0\0\x01\0\x01\0\x01\0\x01\0\x01\0\0\0\x01\0\x01\0\x02\0\x02\0\x01\0\x01\0\x01\0\x03\0\x03\0\0\0\x01\0\x02\0\0\0\x03\0\x03\0\x01\0\x02\0\x01\0\x02\0\x02\0\x02\0\0\0\0\0\x02\0\x02\0\x02\0\0\0\x01\0\x03\0\x03\0\x02\0\x01\0\0\0\x03\0\x02\0\x02\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\0\0\x01\0\x02\0\x02\0\x01\0\x01\0\x01\0\x02\0\x02\0\x02\0\x02\0\0\0\x02\0\x02\0\x03\0\x03\0\0\0\x03\0\x03\0\0\0\0\0\0\0\x03\0\x03\0\x01\0\x01\0\0\0\x03\0\x03\0\x02\0\x02\0\0\0\x03\0\x03\0\x03\0\x03\0\0\0",
+                );
+                ::algebra_core::kernels::quadratic::<
+                    T,
+                    4usize,
+                    _,
+                    _,
+                >(&self.each_ref(), &ENTRIES, &[(2i64, 1i64), (-2i64, 1i64)])
+            }
         }
         #[inline]
         fn transform(m: &[[T; 4usize]; 4usize], x: &Odd<T>) -> Odd<T> {
