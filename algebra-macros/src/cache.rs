@@ -9,7 +9,9 @@
 //! - the invocation, as text (`TokenStream::to_string`), compared in full, not by hash;
 //! - the generator: the path, size, modification time and inode of the dynamic library this
 //!   macro was loaded from (found in `/proc/self/maps` from the address of one of its
-//!   functions), which any rebuild of the macro or of a crate it links replaces.
+//!   functions), which any rebuild of the macro or of a crate it links replaces. The file on
+//!   disk must still be the mapped one (same inode): a long-running process holding an older
+//!   build neither reads nor writes entries.
 //!
 //! Entries live beside that library, in `gam-algebra-cache/` of the target's profile directory
 //! (`target/debug/`), so `cargo clean` removes them and nothing is written outside the build.
@@ -41,8 +43,13 @@ impl Key {
         if std::env::var_os("GAM_ALGEBRA_CACHE").is_some_and(|v| v == "off") {
             return None;
         }
-        let library = own_library()?;
+        let (library, inode) = own_library()?;
         let meta = std::fs::metadata(&library).ok()?;
+        // the file on disk must be the one loaded: a long-running process (an editor's
+        // proc-macro server) may hold an older build whose file was since replaced
+        if !same_inode(&meta, inode) {
+            return None;
+        }
         let dir = library.parent()?.parent()?.join("gam-algebra-cache");
         if !trusted(&dir, &meta) {
             return None;
@@ -121,22 +128,32 @@ fn identity(library: &Path, meta: &std::fs::Metadata) -> String {
     format!("{} {} {:?} {inode}", library.display(), meta.len(), modified.map(|d| d.as_nanos()))
 }
 
-/// The dynamic library holding this function: the `/proc/self/maps` line whose address range
-/// contains it.
-fn own_library() -> Option<PathBuf> {
-    let here = own_library as fn() -> Option<PathBuf> as usize;
+/// Whether `meta` is the file of the mapped inode.
+fn same_inode(meta: &std::fs::Metadata, inode: u64) -> bool {
+    #[cfg(unix)]
+    return std::os::unix::fs::MetadataExt::ino(meta) == inode;
+    #[cfg(not(unix))]
+    return meta.is_file() && inode == 0;
+}
+
+/// The dynamic library holding this function and the inode it was mapped from: the
+/// `/proc/self/maps` line whose address range contains it.
+fn own_library() -> Option<(PathBuf, u64)> {
+    let here = own_library as fn() -> Option<(PathBuf, u64)> as usize;
     let maps = std::fs::read_to_string("/proc/self/maps").ok()?;
     library_at(&maps, here)
 }
 
-/// The path of the mapping of `maps` (the `/proc/PID/maps` format) that contains `address`.
-fn library_at(maps: &str, address: usize) -> Option<PathBuf> {
+/// The path and inode of the mapping of `maps` (the `/proc/PID/maps` format) that contains
+/// `address`.
+fn library_at(maps: &str, address: usize) -> Option<(PathBuf, u64)> {
     maps.lines().find_map(|line| {
         let mut fields = line.split_whitespace();
         let (start, end) = fields.next()?.split_once('-')?;
         let (start, end) = (usize::from_str_radix(start, 16).ok()?, usize::from_str_radix(end, 16).ok()?);
-        let path = fields.nth(4)?;
-        (start <= address && address < end && path.starts_with('/')).then(|| PathBuf::from(path))
+        let inode = fields.nth(3)?.parse().ok()?;
+        let path = fields.next()?;
+        (start <= address && address < end && path.starts_with('/')).then(|| (PathBuf::from(path), inode))
     })
 }
 
@@ -215,11 +232,17 @@ mod tests {
 7f0000100000-7f0000200000 rw-p 00000000 00:00 0
 7ffd00000000-7ffd00021000 rw-p 00000000 00:00 0 [stack]
 ";
-        assert_eq!(library_at(maps, 0x7f0000000010), Some(PathBuf::from("/t/debug/deps/libalgebra_macros-1.so")));
+        assert_eq!(
+            library_at(maps, 0x7f0000000010),
+            Some((PathBuf::from("/t/debug/deps/libalgebra_macros-1.so"), 456))
+        );
         assert_eq!(library_at(maps, 0x7f0000100010), None);
         assert_eq!(library_at(maps, 0x7ffd00000010), None);
         assert_eq!(library_at(maps, 0x1000), None);
-        // in this test binary, the function is in the test executable itself
-        assert!(own_library().is_some_and(|p| p.exists()));
+        // in this test binary, the function is in the test executable itself, mapped from the
+        // file on disk
+        let (path, inode) = own_library().unwrap();
+        assert!(same_inode(&std::fs::metadata(&path).unwrap(), inode));
+        assert!(!same_inode(&std::fs::metadata(&path).unwrap(), inode + 1));
     }
 }
