@@ -74,14 +74,9 @@ impl<T: Real> Pose<T> {
     /// log S)` is fused into one closed form in the coefficients of `S` (see
     /// [`Pose::power_fused`]); otherwise the direct paths of `log` and `exp` in turn.
     fn power_direct(&self, t: &T) -> Option<Self> {
-        if !crate::series::at_most_f64::<T>() {
-            return None;
-        }
-        if self.scalar >= T::zero() {
-            return self.power_fused(t).filter(Pose::is_finite);
-        }
-        let l = self.log_direct()?;
-        Pose::exp_direct(&l.scale(t))
+        let p = self.power_direct_untested(t)?;
+        // the fused form is not tested where it is computed; `exp_direct` tests its own result
+        if self.scalar >= T::zero() { Some(p).filter(Pose::is_finite) } else { Some(p) }
     }
 
     /// [`Pose::power_direct`] without the test of the result, for a caller that multiplies it
