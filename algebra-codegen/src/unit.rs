@@ -23,7 +23,7 @@
 //! Those impls are emitted by [`crate::constraint::methods`], which reads the reduced kernels;
 //! every other pair's by the Rust emitter's `emit::unit` (this module is the plan: the kernels).
 
-use super::versor::{ActionKernel, Convention, action_kernel};
+use super::versor::{ActionKernel, Convention, action_kernel, keeps_operand};
 use super::{CodegenError, ModuleSpec};
 use crate::ratio::Ratio;
 use algebra_core::rational::Q;
@@ -73,6 +73,11 @@ pub fn plan_unit_actions(spec: &ModuleSpec, full: usize) -> Result<Vec<UnitKerne
     let mut out = Vec::new();
     for v in (0..spec.types.len()).filter(|&v| super::versor::is_versor_type(spec, full, v)) {
         for x in (0..spec.types.len()).filter(|&x| x != full) {
+            // the pairs with a fused kernel ([`super::versor::keeps_operand`])
+            let fused = |c| action_kernel(spec, c, v, x, false).map(|k| keeps_operand(spec, &k));
+            if !(fused(Convention::Sandwich)? && fused(Convention::Apply)?) {
+                continue;
+            }
             for convention in [Convention::Sandwich, Convention::Apply] {
                 out.push(unit_kernel(spec, convention, v, x)?);
             }

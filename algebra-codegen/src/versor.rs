@@ -15,9 +15,9 @@
 
 use super::{CodegenError, ModuleSpec};
 use crate::ratio::{Ratio, to_ratio};
-use algebra_core::Basis;
 use algebra_core::rational::Q;
 use algebra_core::tables::{Product, Unary};
+use algebra_core::{Basis, Multivector};
 use num_traits::Zero;
 use std::collections::BTreeMap;
 
@@ -79,8 +79,10 @@ pub fn is_versor_type(spec: &ModuleSpec, full: usize, i: usize) -> bool {
 /// let types = ModuleSpec::parse_types("Motor=1,e12,e13,e23,e1inf,e2inf,e3inf,e123inf;Vector=grade1", &alg).unwrap();
 /// let spec = ModuleSpec::new("cga_null", alg.metric().clone(), Basis::Product, types).unwrap();
 /// let actions = plan_actions(&spec, 2).unwrap();
-/// // Motor and Vector are versor types; each acts on both, in both conventions
-/// assert_eq!(actions.len(), 8);
+/// // Motor and Vector are versor types; each acts on vectors, in both conventions, and the
+/// // motor on motors. A vector (a sphere inversion) takes a motor out of the `Motor` type, so
+/// // that pair has no fused kernel ([`keeps_operand`]).
+/// assert_eq!(actions.len(), 6);
 /// let k = actions.iter().find(|k| (k.versor, k.operand, k.convention) == (0, 1, Convention::Sandwich)).unwrap();
 /// assert_eq!(k.counts(), (64, 43)); // the pose on a conformal point (motor product: 48, 40)
 /// ```
@@ -88,12 +90,49 @@ pub fn plan_actions(spec: &ModuleSpec, full: usize) -> Result<Vec<ActionKernel>,
     let mut out = Vec::new();
     for v in (0..spec.types.len()).filter(|&v| is_versor_type(spec, full, v)) {
         for x in (0..spec.types.len()).filter(|&x| x != full) {
-            for convention in [Convention::Sandwich, Convention::Apply] {
-                out.push(action(spec, convention, v, x)?);
+            let pair = [Convention::Sandwich, Convention::Apply].map(|c| action(spec, c, v, x));
+            let [s, a] = pair;
+            let (s, a) = (s?, a?);
+            if keeps_operand(spec, &s) && keeps_operand(spec, &a) {
+                out.extend([s, a]);
             }
         }
     }
     Ok(out)
+}
+
+/// Whether a fused kernel is the action of every versor of its type: each component it drops
+/// (outside the operand type) has a grade the operand type does not have, so it vanishes for
+/// every versor, whose action preserves grades. A dropped component of one of the operand's
+/// own grades is a real part of the image: a translation moves the plane `e1` of 3D PGA,
+/// declared as `Direction = [e1, e2, e3]`, to `e1 + d e0`, and a projection onto `Direction`
+/// would silently lose `d`. Such a pair gets no fused kernel (nor a unit one, nor an action
+/// matrix): its `sandwich` and `apply` are the composed full products, whose type holds the
+/// whole image. Grades are those of the blade expansion, so a product-basis element such as
+/// `e0 einf` (grades 0 and 2) counts as both.
+///
+/// ```
+/// use algebra_core::{Algebra, Basis};
+/// use algebra_codegen::{ModuleSpec, versor::{keeps_operand, plan_actions}};
+/// let alg = Algebra::builtin("pga3").unwrap();
+/// let types = ModuleSpec::parse_types("Motor=even;Plane=grade1;Direction=e1,e2,e3", &alg).unwrap();
+/// let spec = ModuleSpec::new("p", alg.metric().clone(), Basis::Blade, types).unwrap();
+/// let actions = plan_actions(&spec, 3).unwrap();
+/// // the motor acts on planes through a fused kernel, on `Direction` through full products
+/// // (so do planes: a reflection in a plane off the origin moves `e1` off it); reflections in
+/// // `Direction`s keep a `Direction` one
+/// assert!(actions.iter().any(|k| (k.versor, k.operand) == (0, 1)));
+/// assert!(!actions.iter().any(|k| k.operand == 2 && k.versor != 2));
+/// assert!(actions.iter().any(|k| (k.versor, k.operand) == (2, 2)));
+/// assert!(actions.iter().all(|k| keeps_operand(&spec, k)));
+/// ```
+pub fn keeps_operand(spec: &ModuleSpec, k: &ActionKernel) -> bool {
+    let grades = |mask: u32| -> Vec<u32> {
+        let m = Multivector::<Q>::from_mask(&spec.algebra, spec.basis, mask).expect("a mask of the spec's algebra");
+        m.in_basis(Basis::Blade).terms().filter(|(_, _, c)| !c.is_zero()).map(|(b, _, _)| b.count_ones()).collect()
+    };
+    let own: Vec<u32> = spec.types[k.operand].elements.iter().flat_map(|&m| grades(m)).collect();
+    k.outside.iter().all(|&m| grades(m).iter().all(|g| !own.contains(g)))
 }
 
 /// Whether a type is a kinematic versor type (a motor or rotor): every basis element even, and

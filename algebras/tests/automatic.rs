@@ -201,3 +201,37 @@ fn kernels_over_automatic_types_agree_in_floating_point() {
         assert!((f(e) - x).abs() <= 1e-12 * (1.0 + f(e).abs()), "{} vs {x}", f(e));
     }
 }
+
+algebra! {
+    /// 3D PGA with a type that is part of a grade: planes through the origin.
+    pub mod partial {
+        metric builtin "pga3";
+        types {
+            Motor = even;
+            Direction = [e1, e2, e3];
+        }
+    }
+}
+
+/// A versor that moves an operand out of its declared type (a motor takes a plane through the
+/// origin, declared as `Direction = [e1, e2, e3]`, to a plane off it) has no fused kernel for
+/// that pair: `apply` and `sandwich` are the full products, whose type holds the `e0` part a
+/// projection onto `Direction` would silently drop.
+#[test]
+fn actions_that_leave_the_operand_type_keep_the_whole_image() {
+    let mut r = Rationals(23);
+    for _ in 0..8 {
+        use partial::{Direction, Motor};
+        let (m, d) = (value!(Motor, r), value!(Direction, r));
+        let (mm, dm): (Mv<Q>, Mv<Q>) = (m.to_multivector(), d.to_multivector());
+        assert_eq!(m.apply(&d).to_multivector(), mm.gp(&dm).gp(&mm.reverse()));
+        assert_eq!(m.sandwich(&d).to_multivector(), mm.reverse().gp(&dm).gp(&mm));
+    }
+    // the translation by 2 along e1 (`1 + e01` in pga3's convention up to sign) moves the
+    // plane x = 0 off the origin: the image has an e0 part
+    let mut t = partial::Motor::<Q>::one();
+    t.e01 = ratio(1, 1);
+    let x0 = partial::Direction::<Q> { e1: ratio(1, 1), e2: ratio(0, 1), e3: ratio(0, 1) };
+    let image = t.apply(&x0).to_multivector();
+    assert_ne!(*image.coeff_by_name("e0").unwrap(), ratio(0, 1), "{image:?}");
+}

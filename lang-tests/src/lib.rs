@@ -16,17 +16,18 @@ pub use algebra_core::ops;
 
 /// A [`Registry`] of every kernel of a generated module `$m` at scalar `$s`: the products
 /// among `types`, their unary maps and norms, the actions (`sandwich`, `apply` and their unit
-/// forms) of each of `versors` on each of `on`, and `exp`/`log_unit`/`normalize` of the
+/// forms) of each of `versors` on each of `on` (one or more such groups: the pairs with a fused
+/// kernel, `algebra_codegen::versor::keeps_operand`), and `exp`/`log_unit`/`normalize` of the
 /// `closed` (bivector => even) pairs.
 #[macro_export]
 macro_rules! registry {
-    ($m:ident, $s:ty; types [$($t:ident),*]; versors [$($v:ident),*] on [$($x:ident),*]; closed [$($b:ident => $ev:ident),*]) => {{
+    ($m:ident, $s:ty; types [$($t:ident),*]; $(versors [$($v:ident),*] on [$($x:ident),*];)+ closed [$($b:ident => $ev:ident),*]) => {{
         let mut r = $crate::Registry::<$s>::default();
         $( registry!(@closed r, $m, $s, $b, $ev); )*
         $( r.elements.insert(stringify!($t).to_string(), $m::$t::<$s>::ELEMENTS.iter().map(|e| e.to_string()).collect()); )*
         registry!(@rows r, $m, $s; [$($t),*]; $($t),*);
         $( registry!(@unary r, $m, $s, $t); )*
-        registry!(@actions r, $m, $s; [$($x),*]; $($v),*);
+        $( registry!(@actions r, $m, $s; [$($x),*]; $($v),*); )+
         r
     }};
     (@rows $r:ident, $m:ident, $s:ty; $all:tt; $($a:ident),*) => { $( registry!(@row $r, $m, $s, $a; $all); )* };

@@ -193,6 +193,6 @@ fn euclidean_rotor_header_equals_the_rust_kernels() {
 fn product_basis_cga_header_equals_the_rust_kernels() {
     let plan =
         plan("cga-null", Basis::Product, "Motor=1,e12,e13,e23,e1inf,e2inf,e3inf,e123inf;Vector=grade1", "cga_null");
-    let r64 = registry!(cga_null, f64; types [Motor, Vector, Even, Odd, Multivector]; versors [Motor, Vector, Even, Odd] on [Motor, Vector, Even, Odd]; closed []);
+    let r64 = registry!(cga_null, f64; types [Motor, Vector, Even, Odd, Multivector]; versors [Motor, Vector, Even, Odd] on [Vector, Even, Odd]; versors [Motor] on [Motor]; closed []);
     check_f64(&plan, &r64);
 }
