@@ -19,6 +19,10 @@ const IDS: &[&str] = &[
     "juttler/theorem-6-converse",
     // symbolic-under-hypotheses (tests in tests/tests/under_hypotheses.rs)
     "juttler/eq-9-symbolic",
+    "juttler/proposition-1-symbolic",
+    "juttler/proposition-2-symbolic",
+    "juttler/proposition-3-symbolic",
+    "juttler/proposition-4-symbolic",
 ];
 
 #[test]

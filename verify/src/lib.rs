@@ -60,6 +60,7 @@ pub fn statements() -> impl Iterator<Item = &'static Statement> {
         .chain(juttler::interpolation::STATEMENTS)
         .chain(juttler::converse::STATEMENTS)
         .chain(under_hypotheses::juttler::STATEMENTS)
+        .chain(under_hypotheses::juttler_interpolation::STATEMENTS)
         .chain(angelidis::STATEMENTS)
         .chain(under_hypotheses::angelidis::STATEMENTS)
 }

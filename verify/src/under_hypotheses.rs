@@ -8,11 +8,13 @@
 //! in the paper's product basis, with symbolic elements (`Multivector::symbolic`), no motion
 //! types. The other papers' statements are in the submodules, registered after each paper's
 //! own statements: [`juttler::STATEMENTS`] (eq. (9) on the Study quadric),
+//! [`juttler_interpolation::STATEMENTS`] (Propositions 1-4 with symbolic data),
 //! [`wareham_lasenby::STATEMENTS`] (Lemma 1, Theorem 8 under P n = n P, P² = -1) and
 //! [`angelidis::STATEMENTS`] (the rotation case of (14) under ω·m = 0).
 
 pub mod angelidis;
 pub mod juttler;
+pub mod juttler_interpolation;
 pub mod wareham_lasenby;
 
 use crate::check::Checker;
