@@ -42,6 +42,7 @@ const IDS: &[&str] = &[
     "cross2022/lemma-2.2-null",
     "cross2022/lemma-2.2-inner-product",
     "cross2022/lemma-3.4-symbolic",
+    "cross2022/theorem-3.2-symbolic",
 ];
 
 #[test]

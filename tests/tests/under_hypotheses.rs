@@ -29,6 +29,14 @@ fn lemma_3_4_symbolic() {
     holds_and_needs_its_hypothesis("cross2022/lemma-3.4-symbolic");
 }
 
+/// Eq. (14) and Corollary 3.3 for a symbolic non-unit pose, its derivative and a body point:
+/// nine checks (the weight of the image, two claims non-trivial, in the ideal, consistent, the
+/// γ part, and the counterexample without α != 0).
+#[test]
+fn theorem_3_2_symbolic() {
+    assert_eq!(needs_each("cross2022/theorem-3.2-symbolic", &["α != 0"]).checks, 9);
+}
+
 /// The counterexample notes of `id` (each hypothesis dropped in turn must leave the claim
 /// outside the ideal), checked to name every one of `dropped`.
 fn needs_each(id: &str, dropped: &[&str]) -> gam_verify::Outcome {

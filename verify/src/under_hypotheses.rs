@@ -59,6 +59,19 @@ pub const STATEMENTS: &[Statement] = &[
                      the claim is not in the ideal (S = 1 + t has Ψ = 2 (1 + t), a scalar)",
         check: lemma_3_4,
     },
+    Statement {
+        id: "cross2022/theorem-3.2-symbolic",
+        paper: Paper::Cross2022,
+        label: "Theorem 3.2 and Corollary 3.3 (symbolic)",
+        statement: "for a pose S of G_123inf with α = <S rev(S)>_0 != 0, a derivative Ṡ and a body point p, the \
+                    point q = F_S(p) moves with v = dq/dt = u + Ω × q, where Ψ = 2 S⁻¹ Ṡ = γ + ν, γ a pseudoscalar \
+                    (1, ω) and ν = Ω e123 + u einf (eq. 14); and ν = Ω e123 + v einf + (Ω ∧ q) ω (Corollary 3.3); \
+                    S, Ṡ and p fully symbolic, not unit",
+        method: Method::SymbolicUnderHypotheses,
+        hypotheses: "α != 0 (S non-singular; its Rabinowitsch inverse makes S⁻¹ and F_S polynomial) is needed: \
+                     without it the claim is not in the ideal",
+        check: theorem_3_2,
+    },
 ];
 
 fn algebra() -> std::sync::Arc<algebra_core::Algebra> {
@@ -106,8 +119,18 @@ pub(crate) fn holds_under(c: &mut Checker, what: &str, claims: &[Poly], hyps: &H
 /// `without` (the hypotheses less `dropped`); the note gives the first non-zero normal form.
 pub(crate) fn needs(c: &mut Checker, what: &str, dropped: &str, claims: &[Poly], without: &Hypotheses) {
     if let Some(d) = c.ok(what, decide(claims, without, &Budget::default())) {
-        let found = d.failures.first().map(|(_, nf)| format!("normal form {nf}")).unwrap_or_default();
+        let found = d.failures.first().map(|(_, nf)| format!("normal form {}", abbreviated(nf))).unwrap_or_default();
         c.counterexample(format!("{what} without {dropped}"), d.holds, found);
+    }
+}
+
+/// A polynomial as text, its first 160 characters and its number of terms when longer (a normal
+/// form of a large claim runs to thousands of terms).
+fn abbreviated(p: &Poly) -> String {
+    let text = p.to_string();
+    match text.char_indices().nth(160) {
+        Some((cut, _)) => format!("{} ... ({} terms)", &text[..cut], p.term_count()),
+        None => text,
     }
 }
 
@@ -146,4 +169,76 @@ fn lemma_3_4(c: &mut Checker) {
     let derivative = equations(&(&(&d.reverse() * &s) + &(&s.reverse() * &d)));
     let hyps = Hypotheses { equations: unitary(&s).into_iter().chain(derivative).collect(), nonzero: vec![] };
     proves(c, "Ψ - <Ψ>_2 = 0", &claim, &hyps, &Hypotheses::default());
+}
+
+/// The conformal point `e0 + p + |p|²/2 einf` of symbols `p1, p2, p3`.
+fn conformal_point(prefix: &str) -> (Mv, [Poly; 3]) {
+    let p = [1, 2, 3].map(|i| Poly::var(&format!("{prefix}{i}")));
+    let half_square = p
+        .iter()
+        .fold(Poly::zero(), |s, x| s.add_ref(&x.mul_ref(x)))
+        .mul_ref(&Poly::from_q(&algebra_core::rational::ratio(1, 2)));
+    let terms =
+        [("e0", Poly::one()), ("e1", p[0].clone()), ("e2", p[1].clone()), ("e3", p[2].clone()), ("einf", half_square)];
+    (
+        Multivector::from_terms(&algebra(), Basis::Product, terms.iter().map(|(n, c)| (*n, c.clone())))
+            .expect("vector names"),
+        p,
+    )
+}
+
+fn coeff(m: &Mv, name: &str) -> Poly {
+    m.coeff_by_name(name).expect("a basis name").clone()
+}
+
+fn theorem_3_2(c: &mut Checker) {
+    let (s, d) = (pose("S"), pose("D"));
+    let (x, _) = conformal_point("p");
+    let r = Poly::var("r");
+    let norm = &s * &s.reverse();
+    let (alpha, beta) = (coeff(&norm, "1"), coeff(&norm, "e123inf"));
+    // S⁻¹ = rev(S) (α - β ω) / α² with r = 1/α
+    let inv_norm = Multivector::from_terms(
+        &algebra(),
+        Basis::Product,
+        [("1", r.mul_ref(&r).mul_ref(&alpha)), ("e123inf", r.mul_ref(&r).mul_ref(&beta).neg_ref())],
+    )
+    .expect("names");
+    let psi = (&(&inv_norm * &s.reverse()) * &d).scale(&Poly::from_i64(2));
+    let omega = [coeff(&psi, "e23"), coeff(&psi, "e13").neg_ref(), coeff(&psi, "e12")];
+    let u = [coeff(&psi, "e1inf"), coeff(&psi, "e2inf"), coeff(&psi, "e3inf")];
+    // F_S(X) = rev(S) X S, a multiple w of the image's conformal point; q = Y / w
+    let y = &(&s.reverse() * &x) * &s;
+    let ydot = &(&(&d.reverse() * &x) * &s) + &(&(&s.reverse() * &x) * &d);
+    // the weight of the image is α (checked: Y's e0 coefficient), so q = Y r and
+    // v = d/dt (Y / α) = (Ẏ α - Y α̇) r² with α̇ = Ẏ's e0 coefficient
+    c.check("the weight of rev(S) X S is α", coeff(&y, "e0").sub_ref(&alpha).is_exact_zero());
+    let (adot, r2) = (coeff(&ydot, "e0"), r.mul_ref(&r));
+    let names = ["e1", "e2", "e3"];
+    let q = names.map(|n| coeff(&y, n).mul_ref(&r));
+    let v = names.map(|n| coeff(&ydot, n).mul_ref(&alpha).sub_ref(&coeff(&y, n).mul_ref(&adot)).mul_ref(&r2));
+    let cross = |a: &[Poly; 3], b: &[Poly; 3]| {
+        [(1, 2), (2, 0), (0, 1)].map(|(i, j)| a[i].mul_ref(&b[j]).sub_ref(&a[j].mul_ref(&b[i])))
+    };
+    let wq = cross(&omega, &q);
+    let claims: Vec<Poly> = (0..3).map(|i| v[i].sub_ref(&u[i]).sub_ref(&wq[i])).collect();
+    let inverse = r.mul_ref(&alpha).sub_ref(&Poly::one());
+    let hyps = Hypotheses { equations: vec![inverse], nonzero: vec![] };
+    holds_under(c, "v = u + Ω × q (eq. 14)", &claims, &hyps);
+    needs(c, "v = u + Ω × q (eq. 14)", "α != 0", &claims, &Hypotheses::default());
+    // Corollary 3.3 at the body point q with velocity v: ν = Ω e123 + v einf + (Ω ∧ q) ω, the
+    // paper's ∧ of vectors being the commutator product
+    let vec3 = |c: &[Poly; 3]| {
+        Multivector::from_terms(&algebra(), Basis::Product, names.iter().zip(c).map(|(n, x)| (*n, x.clone())))
+            .expect("vector names")
+    };
+    let el = |n: &str| Multivector::from_terms(&algebra(), Basis::Product, [(n, Poly::one())]).expect("a name");
+    let (om, qv, vv) = (vec3(&omega), vec3(&q), vec3(&v));
+    let formula = &(&(&om * &el("e123")) + &(&vv * &el("einf"))) + &(&om.commutator(&qv) * &el("e123inf"));
+    holds_under(c, "ν = Ω e123 + v einf + (Ω ∧ q) ω (Corollary 3.3)", &equations(&(&psi.grade(2) - &formula)), &hyps);
+    // Ψ = γ + ν: besides ν, only the scalar and ω parts (γ); and for unit S, γ = 0 is Lemma 3.4
+    let rest = &psi - &psi.grade(2);
+    let gamma_only: Vec<Poly> =
+        rest.terms().filter(|(_, n, _)| *n != "1" && *n != "e123inf").map(|(_, _, p)| p.clone()).collect();
+    c.check("Ψ - ν has only the parts 1 and ω (γ)", gamma_only.iter().all(Poly::is_exact_zero));
 }
