@@ -292,7 +292,7 @@ impl Plan {
             });
         }
         // the unit-versor kernels (`apply_unit`, `sandwich_unit`; [`super::unit`])
-        for u in super::unit::plan_unit_actions(&self.spec, self.full).unwrap_or_default() {
+        for u in super::unit::plan_unit_actions(&self.spec, &self.actions).unwrap_or_default() {
             let (mul, add) = u.counts();
             let op = match u.kernel.convention {
                 super::versor::Convention::Sandwich => "sandwich_unit",

@@ -23,7 +23,7 @@
 //! Those impls are emitted by [`crate::constraint::methods`], which reads the reduced kernels;
 //! every other pair's by the Rust emitter's `emit::unit` (this module is the plan: the kernels).
 
-use super::versor::{ActionKernel, Convention, action_kernel, keeps_operand};
+use super::versor::{ActionKernel, Convention, action_kernel};
 use super::{CodegenError, ModuleSpec};
 use crate::ratio::Ratio;
 use algebra_core::rational::Q;
@@ -46,11 +46,11 @@ impl UnitKernel {
     ///
     /// ```
     /// use algebra_core::{Algebra, Basis};
-    /// use algebra_codegen::{ModuleSpec, unit::plan_unit_actions, versor::Convention};
+    /// use algebra_codegen::{ModuleSpec, unit::plan_unit_actions, versor::{Convention, plan_actions}};
     /// let alg = Algebra::builtin("pga3").unwrap();
     /// let types = ModuleSpec::parse_types("Motor=even;Point=grade3", &alg).unwrap();
     /// let spec = ModuleSpec::new("pga", alg.metric().clone(), Basis::Blade, types).unwrap();
-    /// let k = plan_unit_actions(&spec, usize::MAX).unwrap();
+    /// let k = plan_unit_actions(&spec, &plan_actions(&spec, usize::MAX).unwrap()).unwrap();
     /// let k = k.iter().find(|k| (k.kernel.versor, k.kernel.operand, k.kernel.convention) == (0, 1, Convention::Apply)).unwrap();
     /// // the general fused kernel needs 48 multiplications; the point's weight is copied
     /// assert_eq!(k.counts(), (22, 21));
@@ -67,20 +67,15 @@ impl UnitKernel {
     }
 }
 
-/// The unit-versor kernels of every fused (versor type, operand type) pair of the module
-/// (those [`super::versor::plan_actions`] plans), in both conventions.
-pub fn plan_unit_actions(spec: &ModuleSpec, full: usize) -> Result<Vec<UnitKernel>, CodegenError> {
+/// The unit-versor kernels of every fused (versor type, operand type) pair of the module, in
+/// both conventions: the pairs of `actions` (the module's fused kernels,
+/// [`super::versor::plan_actions`]; pairs that [`super::versor::keeps_operand`] refuses have
+/// neither kind).
+pub fn plan_unit_actions(spec: &ModuleSpec, actions: &[ActionKernel]) -> Result<Vec<UnitKernel>, CodegenError> {
     let mut out = Vec::new();
-    for v in (0..spec.types.len()).filter(|&v| super::versor::is_versor_type(spec, full, v)) {
-        for x in (0..spec.types.len()).filter(|&x| x != full) {
-            // the pairs with a fused kernel ([`super::versor::keeps_operand`])
-            let fused = |c| action_kernel(spec, c, v, x, false).map(|k| keeps_operand(spec, &k));
-            if !(fused(Convention::Sandwich)? && fused(Convention::Apply)?) {
-                continue;
-            }
-            for convention in [Convention::Sandwich, Convention::Apply] {
-                out.push(unit_kernel(spec, convention, v, x)?);
-            }
+    for k in actions.iter().filter(|k| k.convention == Convention::Sandwich) {
+        for convention in [Convention::Sandwich, Convention::Apply] {
+            out.push(unit_kernel(spec, convention, k.versor, k.operand)?);
         }
     }
     Ok(out)

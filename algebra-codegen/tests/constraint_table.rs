@@ -96,7 +96,7 @@ fn the_precomputed_table_is_up_to_date() {
     let mut seen = std::collections::BTreeSet::new();
     for (alg, basis, types) in modules() {
         let plan = plan(&alg, basis, &types);
-        for r in requests(&plan.spec, plan.full) {
+        for r in requests(&plan) {
             let key = table::key(&plan.spec, r);
             if seen.insert(key.clone()) {
                 let k = algebra_codegen::constraint::compute(&plan.spec, r).unwrap();
@@ -116,7 +116,7 @@ fn the_precomputed_table_is_up_to_date() {
 fn table_kernels_equal_computed_kernels() {
     for (alg, basis, types) in modules() {
         let plan = plan(&alg, basis, &types);
-        for r in requests(&plan.spec, plan.full) {
+        for r in requests(&plan) {
             let from_table = algebra_codegen::constraint::kernel(&plan.spec, r).unwrap();
             assert_eq!(from_table, algebra_codegen::constraint::compute(&plan.spec, r).unwrap(), "{r:?}");
         }

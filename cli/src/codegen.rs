@@ -376,7 +376,7 @@ impl ConstrainedRow {
 fn constrained_rows(plan: &Plan) -> Result<Vec<ConstrainedRow>, CliError> {
     let spec = &plan.spec;
     let name = |t: Option<usize>| t.map_or_else(|| "-".to_string(), |t| spec.types[t].name.clone());
-    requests(spec, plan.full)
+    requests(plan)
         .into_iter()
         .map(|r: Request| {
             let kernel = kernel(spec, r).map_err(|e| CliError::usage(format!("constraints: {e}")))?;

@@ -43,7 +43,7 @@ pub fn methods(plan: &Plan) -> Result<TokenStream, ConstraintError> {
     let names = Names::new(plan);
     let mut items = Vec::new();
     let mut actions: Vec<(Request, ConstrainedKernel)> = Vec::new();
-    for r in requests(spec, plan.full) {
+    for r in requests(plan) {
         let k = kernel(spec, r)?;
         match r.op {
             KernelOp::Square if worth_a_method(&k) => items.push(method(spec, &names, r, &k)),

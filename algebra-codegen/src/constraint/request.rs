@@ -4,29 +4,33 @@
 
 use super::{ConstrainedKernel, ConstraintError, ConstraintKind, KernelOp, Request, smallest_type, table};
 use crate::ModuleSpec;
+use crate::plan::Plan;
 use crate::versor::is_versor_type;
 
-/// The constrained kernels a module's declared constraints call for (`full`: the index of the
-/// module's full type, never an operand).
+/// The constrained kernels a module's declared constraints call for: the unit actions of a
+/// `where unit` versor type on every operand it has a fused kernel for (the plan's actions;
+/// [`crate::versor::keeps_operand`]), and the squares of `where null` and `where simple` types.
 ///
 /// ```
 /// use algebra_core::{Algebra, Basis};
-/// use algebra_codegen::ModuleSpec;
+/// use algebra_codegen::{ModuleSpec, plan::Plan};
 /// use algebra_codegen::constraint::{KernelOp, Request, requests};
 /// let alg = Algebra::builtin("pga3").unwrap();
 /// let types = ModuleSpec::parse_types("Motor=even where unit;Line=grade2 where simple;Full=all", &alg).unwrap();
-/// let spec = ModuleSpec::new("pga3", alg.metric().clone(), Basis::Blade, types).unwrap();
-/// let r = requests(&spec, 2);
+/// let plan = Plan::new(ModuleSpec::new("pga3", alg.metric().clone(), Basis::Blade, types).unwrap()).unwrap();
+/// let r = requests(&plan);
 /// assert!(r.contains(&Request { op: KernelOp::Sandwich, left: 0, right: 1 }));
 /// assert!(r.contains(&Request { op: KernelOp::Square, left: 1, right: 1 }));
 /// assert_eq!(r.len(), 5); // sandwich and apply on Motor and Line, the square of Line
 /// ```
-pub fn requests(spec: &ModuleSpec, full: usize) -> Vec<Request> {
+pub fn requests(plan: &Plan) -> Vec<Request> {
+    let (spec, full) = (&plan.spec, plan.full);
+    let fused = |v: usize, x: usize| plan.actions.iter().any(|k| (k.versor, k.operand) == (v, x));
     let mut out = Vec::new();
     for (v, t) in spec.types.iter().enumerate() {
         match t.constraint {
             Some(ConstraintKind::Unit) if is_versor_type(spec, full, v) => {
-                for right in (0..spec.types.len()).filter(|&x| x != full) {
+                for right in (0..spec.types.len()).filter(|&x| x != full && fused(v, x)) {
                     for op in [KernelOp::Sandwich, KernelOp::Apply] {
                         out.push(Request { op, left: v, right });
                     }

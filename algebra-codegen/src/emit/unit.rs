@@ -156,7 +156,7 @@ fn unrolled_body(names: &Names, u: &UnitKernel) -> TokenStream {
 /// Every `UnitAction` impl of the module (one per fused pair) except those of a versor type
 /// declared `where unit`, which [`crate::constraint::methods`] emits with the reduced kernels.
 pub(crate) fn module_items(plan: &crate::plan::Plan, names: &Names) -> TokenStream {
-    let kernels = match plan_unit_actions(&plan.spec, plan.full) {
+    let kernels = match plan_unit_actions(&plan.spec, &plan.actions) {
         Ok(k) => k,
         Err(e) => {
             let msg = e.to_string();

@@ -41,7 +41,7 @@ pub(super) fn kernels(plan: &Plan) -> Result<Vec<Kernel>, CodegenError> {
     for k in &plan.actions {
         out.push(action(plan, k, name(k.versor), name(k.operand)));
     }
-    for u in plan_unit_actions(&plan.spec, plan.full)? {
+    for u in plan_unit_actions(&plan.spec, &plan.actions)? {
         out.push(unit_action(plan, &u, name(u.kernel.versor), name(u.kernel.operand)));
     }
     Ok(out)
