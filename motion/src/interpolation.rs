@@ -106,25 +106,54 @@ impl<T: Real> Pose<T> {
     /// their dot products in between: the exp kernel's polynomials start as soon as `θ` and
     /// `f` are known. `None` for an unusual `α`; the result is not tested here.
     fn power_fused(&self, t: &T) -> Option<Self> {
-        let s = self;
-        let n2 = s.pseudo_norm_squared();
+        let n2 = self.pseudo_norm_squared();
         let alpha = &n2.scalar;
         if !crate::scaled::tame(alpha) || !is_positive(alpha) {
             return None;
         }
+        Some(self.power_fused_with::<false>(t, alpha, &n2.e123inf))
+    }
+
+    /// The direct path of [`crate::UnitPose::slerp`] (`a`, `b` unit): `rev(a) b` with
+    /// non-negative scalar part, at `f64` precision or less, and one test of the result (a
+    /// non-finite `t` enters every coefficient's product); `None` sends the rest to
+    /// [`Pose::slerp`].
+    pub(crate) fn slerp_unit_direct(a: &Self, b: &Self, t: &T) -> Option<Self> {
+        if !crate::series::at_most_f64::<T>() {
+            return None;
+        }
+        let rel = &a.reverse() * b;
+        if rel.scalar < T::zero() {
+            return None;
+        }
+        Some(a * &rel.power_fused_unit(t)).filter(Pose::is_finite)
+    }
+
+    /// [`Pose::power_fused`] for a unit `S` (`α = 1`, `β = 0`; `S∅ ≥ 0`): `ρ = 1`, `m = 0`
+    /// and `e^{tσ} = 1`, so no square root, division, `ln` or `exp` of `α`
+    /// ([`crate::UnitPose::slerp`]). The result is not tested here.
+    pub(crate) fn power_fused_unit(&self, t: &T) -> Self {
+        let one = T::one();
+        self.power_fused_with::<true>(t, &one, &T::zero())
+    }
+
+    /// The closed form of [`Pose::power_fused`] given `rev(S) S = α + βω`; with `UNIT` the
+    /// caller promises `α = 1` and `β = 0`, and the factors they give are left out.
+    #[inline]
+    fn power_fused_with<const UNIT: bool>(&self, t: &T, alpha: &T, beta: &T) -> Self {
+        let s = self;
         let (a, c) = split(s);
         let xr = dot(&a, &a);
-        let rho = T::one().div_ref(&Real::sqrt(alpha));
+        let rho = if UNIT { T::one() } else { T::one().div_ref(&Real::sqrt(alpha)) };
         let rho2 = rho.mul_ref(&rho);
+        let by_rho = |x: T, r: &T| if UNIT { x } else { x.mul_ref(r) };
         let half = T::from_ratio(1, 2);
-        let m = n2.e123inf.mul_ref(&rho2).mul_ref(&half);
         let s_raw = Real::sqrt(&xr);
         let th = s_raw.fast_atan2(&s.scalar);
-        let sin = s_raw.mul_ref(&rho);
-        let x = xr.mul_ref(&rho2);
-        let u0 = s.scalar.mul_ref(&rho);
+        let sin = by_rho(s_raw, &rho);
+        let x = by_rho(xr, &rho2);
+        let u0 = by_rho(s.scalar.clone(), &rho);
         let (f, g) = log_factors_fixed(&u0, &x, &sin, &th);
-        let q_u = s.e123inf.sub_ref(&m.mul_ref(&s.scalar)).mul_ref(&rho);
         let tf = t.mul_ref(&f);
         // u' = (tθ)², from θ itself where it is used (fewer roundings than (t f)² s²), and as
         // (t f)² sin² θ from the series' f near zero rotation: no √ there, whose derivative
@@ -136,6 +165,17 @@ impl<T: Real> Pose<T> {
             tf.mul_ref(&tf).mul_ref(&x)
         };
         let [cc, sn, tt] = exp_kernel_fixed(&u1);
+        if UNIT {
+            // m = 0, e = 1: q_U = Sω, λ = t f S', λ₂ = t (S' g q_U - f w' T')
+            let w1 = t.mul_ref(&tf).mul_ref(&s.e123inf);
+            let lam = tf.mul_ref(&sn);
+            let lam2 = t.mul_ref(&sn.mul_ref(&g.mul_ref(&s.e123inf)).sub_ref(&f.mul_ref(&w1.mul_ref(&tt))));
+            let omega = w1.mul_ref(&sn);
+            let c_out = std::array::from_fn(|i| c[i].mul_ref(&lam).add_ref(&a[i].mul_ref(&lam2)));
+            return assemble(cc, a.map(|x| x.mul_ref(&lam)), c_out, omega);
+        }
+        let m = beta.mul_ref(&rho2).mul_ref(&half);
+        let q_u = s.e123inf.sub_ref(&m.mul_ref(&s.scalar)).mul_ref(&rho);
         let w1 = t.mul_ref(&tf).mul_ref(&q_u);
         let p1 = t.mul_ref(&m);
         let e = exp_fixed(&ln_fixed(alpha).mul_ref(&half).mul_ref(t));
@@ -145,7 +185,7 @@ impl<T: Real> Pose<T> {
         let lam2 = et.mul_ref(&sn.mul_ref(&k).sub_ref(&f.mul_ref(&w1.mul_ref(&tt).add_ref(&p1.mul_ref(&sn)))));
         let omega = e.mul_ref(&w1.mul_ref(&sn).add_ref(&p1.mul_ref(&cc)));
         let c_out = std::array::from_fn(|i| c[i].mul_ref(&lam).add_ref(&a[i].mul_ref(&lam2)));
-        Some(assemble(e.mul_ref(&cc), a.map(|x| x.mul_ref(&lam)), c_out, omega))
+        assemble(e.mul_ref(&cc), a.map(|x| x.mul_ref(&lam)), c_out, omega)
     }
 }
 
