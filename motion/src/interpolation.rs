@@ -14,7 +14,7 @@
 
 use crate::exp_log::{assemble, dot, split};
 use crate::pose::is_positive;
-use crate::series::{SMALL_X, exp_fixed, exp_kernel_fixed, ln_fixed, log_factors_fixed};
+use crate::series::{angle_factors_fixed, exp_fixed, exp_kernel_fixed, ln_fixed};
 use crate::{MotionError, Pose};
 use algebra_core::{Real, Ring};
 
@@ -103,8 +103,10 @@ impl<T: Real> Pose<T> {
     /// `λ = t ρ f S'` and `λ₂ = t ρ (S'(f m + g q_U) - f(w'T' + t m S'))`.
     ///
     /// The same operations as `log` then `exp`, without the normalised pose, its logarithm and
-    /// their dot products in between: the exp kernel's polynomials start as soon as `θ` and
-    /// `f` are known. `None` for an unusual `α`; the result is not tested here.
+    /// their dot products in between: the exp kernel's polynomials start as soon as `θ²` and
+    /// `f` are known, and `θ²` comes from `sin² θ = |a|²/α` and `cos² θ = S∅²/α` by one
+    /// division and a polynomial (`series::angle_factors_fixed`), with no square root or
+    /// arctangent on that chain. `None` for an unusual `α`; the result is not tested here.
     fn power_fused(&self, t: &T) -> Option<Self> {
         let n2 = self.pseudo_norm_squared();
         let alpha = &n2.scalar;
@@ -144,26 +146,26 @@ impl<T: Real> Pose<T> {
         let s = self;
         let (a, c) = split(s);
         let xr = dot(&a, &a);
-        let rho = if UNIT { T::one() } else { T::one().div_ref(&Real::sqrt(alpha)) };
-        let rho2 = rho.mul_ref(&rho);
-        let by_rho = |x: T, r: &T| if UNIT { x } else { x.mul_ref(r) };
-        let half = T::from_ratio(1, 2);
-        let s_raw = Real::sqrt(&xr);
-        let th = s_raw.fast_atan2(&s.scalar);
-        let sin = by_rho(s_raw, &rho);
-        let x = by_rho(xr, &rho2);
-        let u0 = by_rho(s.scalar.clone(), &rho);
-        let (f, g) = log_factors_fixed(&u0, &x, &sin, &th);
-        let tf = t.mul_ref(&f);
-        // u' = (tθ)², from θ itself where it is used (fewer roundings than (t f)² s²), and as
-        // (t f)² sin² θ from the series' f near zero rotation: no √ there, whose derivative
-        // at a pure translation would make a dual number's result non-finite
-        let u1 = if x.to_f64() > SMALL_X {
-            let tt = t.mul_ref(&th);
-            tt.mul_ref(&tt)
+        // x = sin² θ and y = cos² θ of the unit S/√α by one division (no square root on the
+        // way to θ², which starts the exp kernel); ρ = 1/√α beside the angle's polynomial
+        let (inv_alpha, rho) = if UNIT {
+            (T::one(), T::one())
         } else {
-            tf.mul_ref(&tf).mul_ref(&x)
+            let inv = T::one().div_ref(alpha);
+            let rho = Real::sqrt(&inv);
+            (inv, rho)
         };
+        let by = |x: T, r: &T| if UNIT { x } else { x.mul_ref(r) };
+        let half = T::from_ratio(1, 2);
+        let x = by(xr.clone(), &inv_alpha);
+        let y = by(s.scalar.mul_ref(&s.scalar), &inv_alpha);
+        let u0 = by(s.scalar.clone(), &rho);
+        let sin = by(Real::sqrt(&xr), &rho);
+        let (th2, f, g) = angle_factors_fixed(&x, &y, &u0, &sin);
+        let tf = t.mul_ref(&f);
+        // u' = (tθ)² = t² θ²: θ² comes without a square root, whose derivative at a pure
+        // translation would make a dual number's result non-finite
+        let u1 = t.mul_ref(t).mul_ref(&th2);
         let [cc, sn, tt] = exp_kernel_fixed(&u1);
         if UNIT {
             // m = 0, e = 1: q_U = Sω, λ = t f S', λ₂ = t (S' g q_U - f w' T')
@@ -174,7 +176,7 @@ impl<T: Real> Pose<T> {
             let c_out = std::array::from_fn(|i| c[i].mul_ref(&lam).add_ref(&a[i].mul_ref(&lam2)));
             return assemble(cc, a.map(|x| x.mul_ref(&lam)), c_out, omega);
         }
-        let m = beta.mul_ref(&rho2).mul_ref(&half);
+        let m = beta.mul_ref(&inv_alpha).mul_ref(&half);
         let q_u = s.e123inf.sub_ref(&m.mul_ref(&s.scalar)).mul_ref(&rho);
         let w1 = t.mul_ref(&tf).mul_ref(&q_u);
         let p1 = t.mul_ref(&m);
