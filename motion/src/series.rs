@@ -172,7 +172,7 @@ const PI_2: (f64, f64) = (std::f64::consts::FRAC_PI_2, 6.123_233_995_736_766e-17
 /// and `f = F(x)`, when `x ≤ y`; else `θ = π/2 - u0 F(y)` and `f = θ/s`. Then `g` from the
 /// series of [`log_factors_fixed`] in `θ²` up to `x = 1/4` (`g = P(θ²) f³`, no cancellation),
 /// above it `(1 - f u0)/x`. Below `x = 2^-20` the three-term series, exact at a translation.
-#[inline]
+#[inline(always)]
 pub(crate) fn angle_factors_fixed<T: Real>(x: &T, y: &T, u0: &T, s: &T) -> (T, T, T) {
     if x.to_f64() <= SMALL_X {
         let f = poly(&[1.0, 1.0 / 6.0, 3.0 / 40.0, 5.0 / 112.0], x);

@@ -203,3 +203,32 @@ fn transform_point_equals_nalgebra() {
         }
     }
 }
+
+#[test]
+fn power_and_slerp_of_poses_unit_in_value_keep_the_derivative_of_the_norm() {
+    // Pose::power and Pose::slerp take the unit form when rev(S) S = 1 up to rounding; over
+    // dual numbers every part must be: S = (1 + kε) U is unit in value, and
+    // d/dε S^t = t k U^t, d/dε slerp(S, B; t) = (1 + t) k slerp(U, B; t) (eq. 16).
+    for (i, u) in unit_poses().iter().enumerate() {
+        let u = u.to_unit().unwrap();
+        let b = unit_poses()[(i * 3 + 2) % unit_poses().len()].to_unit().unwrap();
+        let k = 0.75;
+        let s = u.map_scalar(&|x: &f64| Dual64::new(*x, k * x));
+        let lift = |p: &Pose<f64>| p.map_scalar(&|x: &f64| Dual64::from(*x));
+        for t in [0.3, 1.0] {
+            let scale = size(&*u).max(1.0) * size(&*b).max(1.0);
+            if u.scalar >= 0.0 {
+                let (value, derivative) = value_and_derivative(&s.power(&Dual64::from(t)).unwrap());
+                let expected = u.power(&t).unwrap();
+                assert!(diff(&value, &expected) <= 1e-14 * scale, "{u:?} {t}");
+                assert!(diff(&derivative, &expected.scale(&(t * k))) <= 1e-14 * scale, "{u:?} {t}: {derivative}");
+            }
+            let (value, derivative) = value_and_derivative(&Pose::slerp(&s, &lift(&b), &Dual64::from(t)).unwrap());
+            let expected = Pose::slerp(&u, &b, &t).unwrap();
+            let cond = log_condition(&(u.reverse() * *b));
+            assert!(diff(&value, &expected) <= 1e-14 * scale * cond, "{u:?} {b:?} {t}");
+            let d = expected.scale(&((1.0 + t) * k));
+            assert!(diff(&derivative, &d) <= 1e-14 * scale * cond, "{u:?} {b:?} {t}: {derivative} vs {d}");
+        }
+    }
+}
