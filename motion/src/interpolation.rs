@@ -56,7 +56,16 @@ impl<T: Real> Pose<T> {
         if crate::series::at_most_f64::<T>() {
             // the direct path: a non-finite `a`, `b` or `t` cannot give a finite result (every
             // coefficient enters a product), so one test of the result replaces the checks
-            let out = (&a.reverse() * b).power_direct_untested(t).map(|p| a * &p);
+            let rel = &a.reverse() * b;
+            // unit key poses (nalgebra's only case): the unit form inlined here, since a call
+            // returns the power through memory on the slerp's one chain; the rest by the call
+            let power = if rel.scalar >= T::zero() && rel.unit_to_rounding(&rel.pseudo_norm_squared()) {
+                let one = T::one();
+                Some(rel.power_fused_with::<true>(t, &one, &T::zero()))
+            } else {
+                rel.power_direct_untested(t)
+            };
+            let out = power.map(|p| a * &p);
             if let Some(out) = out.filter(Pose::is_finite) {
                 return Ok(out);
             }
@@ -118,17 +127,22 @@ impl<T: Real> Pose<T> {
         if !crate::scaled::tame(alpha) || !is_positive(alpha) {
             return None;
         }
+        if self.unit_to_rounding(&n2) {
+            return Some(self.power_fused_unit(t));
+        }
+        Some(self.power_fused_general(t, alpha, &n2.e123inf))
+    }
+
+    /// `rev(S) S = α + βω` is `1` up to rounding ([`UNIT_ULPS`]; every part, for dual numbers,
+    /// so a derivative of the norm is kept): the factors of `α` and `β` would change the power
+    /// by no more than that rounding, and the unit form may leave them out.
+    #[inline]
+    fn unit_to_rounding(&self, n2: &crate::Pseudoscalar<T>) -> bool {
         let one = T::one();
-        // unit up to rounding (every part, for dual numbers: a derivative of the norm is kept):
-        // the factors of α and β would change the result by no more than that rounding
-        let beta = &n2.e123inf;
         let beta_scale = [&self.e1inf, &self.e2inf, &self.e3inf, &self.e123inf]
             .into_iter()
             .fold(one.clone(), |acc, x| acc.add_ref(&Real::abs(x)));
-        if alpha.sub_ref(&one).is_negligible(&one, UNIT_ULPS) && beta.is_negligible(&beta_scale, UNIT_ULPS) {
-            return Some(self.power_fused_unit(t));
-        }
-        Some(self.power_fused_general(t, alpha, beta))
+        n2.scalar.sub_ref(&one).is_negligible(&one, UNIT_ULPS) && n2.e123inf.is_negligible(&beta_scale, UNIT_ULPS)
     }
 
     /// [`Pose::power_fused_with`] for non-unit `S`, out of line: with the unit form beside it
@@ -150,7 +164,9 @@ impl<T: Real> Pose<T> {
         if rel.scalar < T::zero() {
             return None;
         }
-        Some(a * &rel.power_fused_unit(t)).filter(Pose::is_finite)
+        // the unit form inlined here (a call returns the pose through memory, on the chain)
+        let one = T::one();
+        Some(a * &rel.power_fused_with::<true>(t, &one, &T::zero())).filter(Pose::is_finite)
     }
 
     /// [`Pose::power_fused`] for a unit `S` (`α = 1`, `β = 0`; `S∅ ≥ 0`): `ρ = 1`, `m = 0`
