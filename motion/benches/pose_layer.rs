@@ -8,7 +8,9 @@
 //! - `Pose::transform_point` / nalgebra `UnitDualQuaternion::transform_point` (<= 1.0x);
 //! - `Pose::slerp` / nalgebra `UnitDualQuaternion::sclerp` (<= 1.0x), and `Pose::power`;
 //! - the same action and slerp of `UnitPose` (normalised once, like nalgebra's unit type) /
-//!   the same nalgebra rows: like with like, both promise a unit pose.
+//!   the same nalgebra rows: like with like, both promise a unit pose;
+//! - for scale, `Pose::slerp` between the same poses made non-unit (`A` times 1.5, `B` times
+//!   `0.8 + 0.3ω`), which takes the general form: the same motions, so / nalgebra's `sclerp`.
 //!
 //! ```text
 //! cargo bench -p motion --features nalgebra --bench pose_layer
@@ -21,7 +23,7 @@ mod interleaved;
 use algebra_core::test_support::Xorshift;
 use gam_algebras::g123inf;
 use interleaved::{Kernel, median, print_medians, ratio, times};
-use motion::{Even, Pose, UnitPose};
+use motion::{Even, Pose, Pseudoscalar, UnitPose};
 use nalgebra::{Point3, UnitDualQuaternion};
 use std::hint::black_box;
 
@@ -32,6 +34,8 @@ struct Data {
     poses: Vec<Pose<f64>>,
     others: Vec<Pose<f64>>,
     units: Vec<UnitPose<f64>>,
+    scaled: Vec<Pose<f64>>,
+    other_scaled: Vec<Pose<f64>>,
     other_units: Vec<UnitPose<f64>>,
     generators: Vec<Even<f64>>,
     bivectors: Vec<g123inf::Bivector<f64>>,
@@ -68,13 +72,30 @@ fn data() -> Data {
     let to_unit = |p: &Pose<f64>| p.to_unit().expect("unit pose");
     let units = poses.iter().map(to_unit).collect();
     let other_units = others.iter().map(to_unit).collect();
+    let scaled = poses.iter().map(|p| p.scale(&1.5)).collect();
+    let other_scaled = others.iter().map(|p| p.scale_pseudoscalar(&Pseudoscalar::new(0.8, 0.3))).collect();
     let dual = |p: &Pose<f64>| p.to_unit_dual_quaternion().expect("unit pose");
     let duals = poses.iter().map(dual).collect();
     let other_duals = others.iter().map(dual).collect();
     let points: Vec<[f64; 3]> = (0..BATCH).map(|_| [3.0 * draw(), 3.0 * draw(), 3.0 * draw()]).collect();
     let na_points = points.iter().map(|p| Point3::new(p[0], p[1], p[2])).collect();
     let ts = (0..BATCH).map(|_| 0.5 + 0.5 * draw()).collect();
-    Data { poses, others, units, other_units, generators, bivectors, motors, duals, other_duals, points, na_points, ts }
+    Data {
+        poses,
+        others,
+        units,
+        scaled,
+        other_scaled,
+        other_units,
+        generators,
+        bivectors,
+        motors,
+        duals,
+        other_duals,
+        points,
+        na_points,
+        ts,
+    }
 }
 
 fn kernel_exp(d: &Data) -> f64 {
@@ -124,12 +145,17 @@ fn unit_slerp(d: &Data) -> f64 {
     pairs.map(|((a, b), t)| black_box(UnitPose::slerp(black_box(a), black_box(b), t)).map_or(0.0, |s| s.e1inf)).sum()
 }
 
+fn pose_slerp_non_unit(d: &Data) -> f64 {
+    let pairs = d.scaled.iter().zip(&d.other_scaled).zip(&d.ts);
+    pairs.map(|((a, b), t)| black_box(Pose::slerp(black_box(a), black_box(b), t)).map_or(0.0, |s| s.e1inf)).sum()
+}
+
 fn pose_power(d: &Data) -> f64 {
     d.poses.iter().zip(&d.ts).map(|(s, t)| black_box(black_box(s).power(t)).map_or(0.0, |p| p.e1inf)).sum()
 }
 
 /// The kernels; each pose-layer row follows the reference it is compared with.
-const KERNELS: [(&str, Kernel<Data>); 11] = [
+const KERNELS: [(&str, Kernel<Data>); 12] = [
     ("g123inf Bivector::exp", kernel_exp),
     ("Pose::exp", pose_exp),
     ("g123inf Motor::log_unit", kernel_log_unit),
@@ -141,11 +167,20 @@ const KERNELS: [(&str, Kernel<Data>); 11] = [
     ("Pose::power", pose_power),
     ("UnitPose::transform_point", unit_transform_point),
     ("UnitPose::slerp", unit_slerp),
+    ("Pose::slerp, non-unit poses", pose_slerp_non_unit),
 ];
 
 /// (pose-layer row, reference row, target ratio)
-const RATIOS: [(usize, usize, f64); 7] =
-    [(1, 0, 1.4), (3, 2, 1.7), (5, 4, 1.0), (9, 4, 1.0), (7, 6, 1.0), (10, 6, 1.0), (8, 6, f64::NAN)];
+const RATIOS: [(usize, usize, f64); 8] = [
+    (1, 0, 1.4),
+    (3, 2, 1.7),
+    (5, 4, 1.0),
+    (9, 4, 1.0),
+    (7, 6, 1.0),
+    (10, 6, 1.0),
+    (11, 6, f64::NAN),
+    (8, 6, f64::NAN),
+];
 
 fn main() {
     let d = data();
@@ -163,6 +198,8 @@ fn main() {
         let us = UnitPose::slerp(&d.units[i], &d.other_units[i], &d.ts[i]).unwrap();
         let ps = Pose::slerp(s, &d.others[i], &d.ts[i]).unwrap();
         assert!((us.as_pose() - &ps).components().iter().all(|x| x.abs() < 1e-12), "UnitPose::slerp {i}");
+        let ns = Pose::slerp(&d.scaled[i], &d.other_scaled[i], &d.ts[i]).unwrap();
+        assert!(ns.is_equivalent(&ps, &1e-12).unwrap(), "non-unit slerp {i}");
     }
     let rounds = std::env::args().nth(1).and_then(|a| a.parse().ok()).unwrap_or(2001);
     let t = times(&KERNELS, &d, rounds, BATCH);
