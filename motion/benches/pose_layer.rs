@@ -6,7 +6,11 @@
 //! - `Pose::exp` / the generated `g123inf::Bivector::exp` (target <= 1.4x);
 //! - `Pose::log` / the generated `g123inf::Motor::log_unit` on unit motors (target <= 1.7x);
 //! - `Pose::transform_point` / nalgebra `UnitDualQuaternion::transform_point` (<= 1.0x);
-//! - `Pose::slerp` / nalgebra `UnitDualQuaternion::sclerp` (<= 1.0x), and `Pose::power`.
+//! - `Pose::slerp` / nalgebra `UnitDualQuaternion::sclerp` (<= 1.0x), and `Pose::power`;
+//! - the same action and slerp of `UnitPose` (normalised once, like nalgebra's unit type) /
+//!   the same nalgebra rows: like with like, both promise a unit pose;
+//! - for scale, `Pose::slerp` between the same poses made non-unit (`A` times 1.5, `B` times
+//!   `0.8 + 0.3ω`), which takes the general form: the same motions, so / nalgebra's `sclerp`.
 //!
 //! ```text
 //! cargo bench -p motion --features nalgebra --bench pose_layer
@@ -19,7 +23,7 @@ mod interleaved;
 use algebra_core::test_support::Xorshift;
 use gam_algebras::g123inf;
 use interleaved::{Kernel, median, print_medians, ratio, times};
-use motion::{Even, Pose};
+use motion::{Even, Pose, Pseudoscalar, UnitPose};
 use nalgebra::{Point3, UnitDualQuaternion};
 use std::hint::black_box;
 
@@ -29,6 +33,10 @@ const BATCH: usize = 256;
 struct Data {
     poses: Vec<Pose<f64>>,
     others: Vec<Pose<f64>>,
+    units: Vec<UnitPose<f64>>,
+    scaled: Vec<Pose<f64>>,
+    other_scaled: Vec<Pose<f64>>,
+    other_units: Vec<UnitPose<f64>>,
     generators: Vec<Even<f64>>,
     bivectors: Vec<g123inf::Bivector<f64>>,
     motors: Vec<g123inf::Motor<f64>>,
@@ -61,13 +69,33 @@ fn data() -> Data {
         .map(|g| g123inf::Bivector::from_array([g.e12, g.e13, g.e23, g.e1inf, g.e2inf, g.e3inf]))
         .collect();
     let motors = poses.iter().map(Pose::to_motor).collect();
+    let to_unit = |p: &Pose<f64>| p.to_unit().expect("unit pose");
+    let units = poses.iter().map(to_unit).collect();
+    let other_units = others.iter().map(to_unit).collect();
+    let scaled = poses.iter().map(|p| p.scale(&1.5)).collect();
+    let other_scaled = others.iter().map(|p| p.scale_pseudoscalar(&Pseudoscalar::new(0.8, 0.3))).collect();
     let dual = |p: &Pose<f64>| p.to_unit_dual_quaternion().expect("unit pose");
     let duals = poses.iter().map(dual).collect();
     let other_duals = others.iter().map(dual).collect();
     let points: Vec<[f64; 3]> = (0..BATCH).map(|_| [3.0 * draw(), 3.0 * draw(), 3.0 * draw()]).collect();
     let na_points = points.iter().map(|p| Point3::new(p[0], p[1], p[2])).collect();
     let ts = (0..BATCH).map(|_| 0.5 + 0.5 * draw()).collect();
-    Data { poses, others, generators, bivectors, motors, duals, other_duals, points, na_points, ts }
+    Data {
+        poses,
+        others,
+        units,
+        scaled,
+        other_scaled,
+        other_units,
+        generators,
+        bivectors,
+        motors,
+        duals,
+        other_duals,
+        points,
+        na_points,
+        ts,
+    }
 }
 
 fn kernel_exp(d: &Data) -> f64 {
@@ -98,6 +126,10 @@ fn pose_transform_point(d: &Data) -> f64 {
         .sum()
 }
 
+fn unit_transform_point(d: &Data) -> f64 {
+    d.units.iter().zip(&d.points).map(|(s, p)| black_box(black_box(s).transform_point(black_box(p)))[0]).sum()
+}
+
 fn nalgebra_sclerp(d: &Data) -> f64 {
     let pairs = d.duals.iter().zip(&d.other_duals).zip(&d.ts);
     pairs.map(|((a, b), t)| black_box(black_box(a).sclerp(black_box(b), *t)).dual.w).sum()
@@ -108,12 +140,22 @@ fn pose_slerp(d: &Data) -> f64 {
     pairs.map(|((a, b), t)| black_box(Pose::slerp(black_box(a), black_box(b), t)).map_or(0.0, |s| s.e1inf)).sum()
 }
 
+fn unit_slerp(d: &Data) -> f64 {
+    let pairs = d.units.iter().zip(&d.other_units).zip(&d.ts);
+    pairs.map(|((a, b), t)| black_box(UnitPose::slerp(black_box(a), black_box(b), t)).map_or(0.0, |s| s.e1inf)).sum()
+}
+
+fn pose_slerp_non_unit(d: &Data) -> f64 {
+    let pairs = d.scaled.iter().zip(&d.other_scaled).zip(&d.ts);
+    pairs.map(|((a, b), t)| black_box(Pose::slerp(black_box(a), black_box(b), t)).map_or(0.0, |s| s.e1inf)).sum()
+}
+
 fn pose_power(d: &Data) -> f64 {
     d.poses.iter().zip(&d.ts).map(|(s, t)| black_box(black_box(s).power(t)).map_or(0.0, |p| p.e1inf)).sum()
 }
 
 /// The kernels; each pose-layer row follows the reference it is compared with.
-const KERNELS: [(&str, Kernel<Data>); 9] = [
+const KERNELS: [(&str, Kernel<Data>); 12] = [
     ("g123inf Bivector::exp", kernel_exp),
     ("Pose::exp", pose_exp),
     ("g123inf Motor::log_unit", kernel_log_unit),
@@ -123,10 +165,22 @@ const KERNELS: [(&str, Kernel<Data>); 9] = [
     ("nalgebra sclerp", nalgebra_sclerp),
     ("Pose::slerp", pose_slerp),
     ("Pose::power", pose_power),
+    ("UnitPose::transform_point", unit_transform_point),
+    ("UnitPose::slerp", unit_slerp),
+    ("Pose::slerp, non-unit poses", pose_slerp_non_unit),
 ];
 
 /// (pose-layer row, reference row, target ratio)
-const RATIOS: [(usize, usize, f64); 5] = [(1, 0, 1.4), (3, 2, 1.7), (5, 4, 1.0), (7, 6, 1.0), (8, 6, f64::NAN)];
+const RATIOS: [(usize, usize, f64); 8] = [
+    (1, 0, 1.4),
+    (3, 2, 1.7),
+    (5, 4, 1.0),
+    (9, 4, 1.0),
+    (7, 6, 1.0),
+    (10, 6, 1.0),
+    (11, 6, f64::NAN),
+    (8, 6, f64::NAN),
+];
 
 fn main() {
     let d = data();
@@ -139,16 +193,23 @@ fn main() {
         let close = (p.into_inner().as_ref().iter().zip(n.into_inner().as_ref())).all(|(x, y)| (x - y).abs() < 1e-12);
         let flipped = (p.into_inner().as_ref().iter().zip(n.into_inner().as_ref())).all(|(x, y)| (x + y).abs() < 1e-12);
         assert!(close || flipped, "slerp {i}");
+        let u = d.units[i].transform_point(&d.points[i]);
+        assert!((0..3).all(|k| (u[k] - a[k]).abs() < 1e-12), "UnitPose::transform_point {i}");
+        let us = UnitPose::slerp(&d.units[i], &d.other_units[i], &d.ts[i]).unwrap();
+        let ps = Pose::slerp(s, &d.others[i], &d.ts[i]).unwrap();
+        assert!((us.as_pose() - &ps).components().iter().all(|x| x.abs() < 1e-12), "UnitPose::slerp {i}");
+        let ns = Pose::slerp(&d.scaled[i], &d.other_scaled[i], &d.ts[i]).unwrap();
+        assert!(ns.is_equivalent(&ps, &1e-12).unwrap(), "non-unit slerp {i}");
     }
     let rounds = std::env::args().nth(1).and_then(|a| a.parse().ok()).unwrap_or(2001);
     let t = times(&KERNELS, &d, rounds, BATCH);
     println!("pose layer, interleaved ({rounds} rounds of {BATCH} elements), median ns per element:");
     print_medians(&KERNELS, &t);
-    println!("\n  {:<44} {:>7} {:>8}", "ratio (median of per-round ratios)", "ratio", "target");
+    println!("\n  {:<50} {:>7} {:>8}", "ratio (median of per-round ratios)", "ratio", "target");
     for (a, b, target) in RATIOS {
         let name = format!("{} / {}", KERNELS[a].0, KERNELS[b].0);
         let target = if target.is_nan() { "-".to_string() } else { format!("<= {target}") };
-        println!("  {name:<44} {:>6.2}x {target:>8}", ratio(&t, a, b));
+        println!("  {name:<50} {:>6.2}x {target:>8}", ratio(&t, a, b));
     }
     black_box(median(t[0].clone()));
 }

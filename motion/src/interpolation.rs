@@ -14,7 +14,7 @@
 
 use crate::exp_log::{assemble, dot, split};
 use crate::pose::is_positive;
-use crate::series::{SMALL_X, exp_fixed, exp_kernel_fixed, ln_fixed, log_factors_fixed};
+use crate::series::{angle_factors_fixed, exp_fixed, exp_kernel_fixed, ln_fixed};
 use crate::{MotionError, Pose};
 use algebra_core::{Real, Ring};
 
@@ -56,7 +56,16 @@ impl<T: Real> Pose<T> {
         if crate::series::at_most_f64::<T>() {
             // the direct path: a non-finite `a`, `b` or `t` cannot give a finite result (every
             // coefficient enters a product), so one test of the result replaces the checks
-            let out = (&a.reverse() * b).power_direct_untested(t).map(|p| a * &p);
+            let rel = &a.reverse() * b;
+            // unit key poses (nalgebra's only case): the unit form inlined here, since a call
+            // returns the power through memory on the slerp's one chain; the rest by the call
+            let power = if rel.scalar >= T::zero() && rel.unit_to_rounding(&rel.pseudo_norm_squared()) {
+                let one = T::one();
+                Some(rel.power_fused_with::<true>(t, &one, &T::zero()))
+            } else {
+                rel.power_direct_untested(t)
+            };
+            let out = power.map(|p| a * &p);
             if let Some(out) = out.filter(Pose::is_finite) {
                 return Ok(out);
             }
@@ -67,6 +76,11 @@ impl<T: Real> Pose<T> {
         Ok(a * &rel.power(t)?)
     }
 }
+
+/// `rev(S) S = α + βω` within this many rounding errors of `1` (`α` against 1, `β` against
+/// `1 + |S1∞| + |S2∞| + |S3∞| + |Sω|`, the scale of its products) makes the fused power take
+/// the unit form ([`Pose::power_fused_unit`]).
+const UNIT_ULPS: u32 = 8;
 
 impl<T: Real> Pose<T> {
     /// [`Pose::power`] for ordinary input at `f64` precision or less; `None` sends the input to
@@ -103,39 +117,107 @@ impl<T: Real> Pose<T> {
     /// `λ = t ρ f S'` and `λ₂ = t ρ (S'(f m + g q_U) - f(w'T' + t m S'))`.
     ///
     /// The same operations as `log` then `exp`, without the normalised pose, its logarithm and
-    /// their dot products in between: the exp kernel's polynomials start as soon as `θ` and
-    /// `f` are known. `None` for an unusual `α`; the result is not tested here.
+    /// their dot products in between: the exp kernel's polynomials start as soon as `θ²` and
+    /// `f` are known, and `θ²` comes from `sin² θ = |a|²/α` and `cos² θ = S∅²/α` by one
+    /// division and a polynomial (`series::angle_factors_fixed`), with no square root or
+    /// arctangent on that chain. `None` for an unusual `α`; the result is not tested here.
     fn power_fused(&self, t: &T) -> Option<Self> {
-        let s = self;
-        let n2 = s.pseudo_norm_squared();
+        let n2 = self.pseudo_norm_squared();
         let alpha = &n2.scalar;
         if !crate::scaled::tame(alpha) || !is_positive(alpha) {
             return None;
         }
+        if self.unit_to_rounding(&n2) {
+            return Some(self.power_fused_unit(t));
+        }
+        Some(self.power_fused_general(t, alpha, &n2.e123inf))
+    }
+
+    /// `rev(S) S = α + βω` is `1` up to rounding ([`UNIT_ULPS`]; every part, for dual numbers,
+    /// so a derivative of the norm is kept): the factors of `α` and `β` would change the power
+    /// by no more than that rounding, and the unit form may leave them out.
+    #[inline]
+    fn unit_to_rounding(&self, n2: &crate::Pseudoscalar<T>) -> bool {
+        let one = T::one();
+        let beta_scale = [&self.e1inf, &self.e2inf, &self.e3inf, &self.e123inf]
+            .into_iter()
+            .fold(one.clone(), |acc, x| acc.add_ref(&Real::abs(x)));
+        n2.scalar.sub_ref(&one).is_negligible(&one, UNIT_ULPS) && n2.e123inf.is_negligible(&beta_scale, UNIT_ULPS)
+    }
+
+    /// [`Pose::power_fused_with`] for non-unit `S`, out of line: with the unit form beside it
+    /// in one function, the registers spill (slerp 1.13x nalgebra against 1.07x).
+    #[inline(never)]
+    fn power_fused_general(&self, t: &T, alpha: &T, beta: &T) -> Self {
+        self.power_fused_with::<false>(t, alpha, beta)
+    }
+
+    /// The direct path of [`crate::UnitPose::slerp`] (`a`, `b` unit): `rev(a) b` with
+    /// non-negative scalar part, at `f64` precision or less, and one test of the result (a
+    /// non-finite `t` enters every coefficient's product); `None` sends the rest to
+    /// [`Pose::slerp`].
+    pub(crate) fn slerp_unit_direct(a: &Self, b: &Self, t: &T) -> Option<Self> {
+        if !crate::series::at_most_f64::<T>() {
+            return None;
+        }
+        let rel = &a.reverse() * b;
+        if rel.scalar < T::zero() {
+            return None;
+        }
+        // the unit form inlined here (a call returns the pose through memory, on the chain)
+        let one = T::one();
+        Some(a * &rel.power_fused_with::<true>(t, &one, &T::zero())).filter(Pose::is_finite)
+    }
+
+    /// [`Pose::power_fused`] for a unit `S` (`α = 1`, `β = 0`; `S∅ ≥ 0`): `ρ = 1`, `m = 0`
+    /// and `e^{tσ} = 1`, so no square root, division, `ln` or `exp` of `α`
+    /// ([`crate::UnitPose::slerp`]). The result is not tested here.
+    #[inline(never)]
+    pub(crate) fn power_fused_unit(&self, t: &T) -> Self {
+        let one = T::one();
+        self.power_fused_with::<true>(t, &one, &T::zero())
+    }
+
+    /// The closed form of [`Pose::power_fused`] given `rev(S) S = α + βω`; with `UNIT` the
+    /// caller promises `α = 1` and `β = 0`, and the factors they give are left out.
+    // always: its two instances (unit and not) must not become calls that return through memory
+    #[inline(always)]
+    fn power_fused_with<const UNIT: bool>(&self, t: &T, alpha: &T, beta: &T) -> Self {
+        let s = self;
         let (a, c) = split(s);
         let xr = dot(&a, &a);
-        let rho = T::one().div_ref(&Real::sqrt(alpha));
-        let rho2 = rho.mul_ref(&rho);
-        let half = T::from_ratio(1, 2);
-        let m = n2.e123inf.mul_ref(&rho2).mul_ref(&half);
-        let s_raw = Real::sqrt(&xr);
-        let th = s_raw.fast_atan2(&s.scalar);
-        let sin = s_raw.mul_ref(&rho);
-        let x = xr.mul_ref(&rho2);
-        let u0 = s.scalar.mul_ref(&rho);
-        let (f, g) = log_factors_fixed(&u0, &x, &sin, &th);
-        let q_u = s.e123inf.sub_ref(&m.mul_ref(&s.scalar)).mul_ref(&rho);
-        let tf = t.mul_ref(&f);
-        // u' = (tθ)², from θ itself where it is used (fewer roundings than (t f)² s²), and as
-        // (t f)² sin² θ from the series' f near zero rotation: no √ there, whose derivative
-        // at a pure translation would make a dual number's result non-finite
-        let u1 = if x.to_f64() > SMALL_X {
-            let tt = t.mul_ref(&th);
-            tt.mul_ref(&tt)
+        // x = sin² θ and y = cos² θ of the unit S/√α by one division (no square root on the
+        // way to θ², which starts the exp kernel); ρ = 1/√α beside the angle's polynomial
+        let (inv_alpha, rho) = if UNIT {
+            (T::one(), T::one())
         } else {
-            tf.mul_ref(&tf).mul_ref(&x)
+            let inv = T::one().div_ref(alpha);
+            let rho = Real::sqrt(&inv);
+            (inv, rho)
         };
+        let by = |x: T, r: &T| if UNIT { x } else { x.mul_ref(r) };
+        let half = T::from_ratio(1, 2);
+        let x = by(xr.clone(), &inv_alpha);
+        let y = by(s.scalar.mul_ref(&s.scalar), &inv_alpha);
+        let u0 = by(s.scalar.clone(), &rho);
+        let sin = by(Real::sqrt(&xr), &rho);
+        let (th2, f, g) = angle_factors_fixed(&x, &y, &u0, &sin);
+        let tf = t.mul_ref(&f);
+        // u' = (tθ)² = t² θ²: θ² comes without a square root, whose derivative at a pure
+        // translation would make a dual number's result non-finite
+        let u1 = t.mul_ref(t).mul_ref(&th2);
         let [cc, sn, tt] = exp_kernel_fixed(&u1);
+        if UNIT {
+            // m = 0, e = 1: q_U = Sω, λ = t f S', λ₂ = t (S' g q_U - f w' T')
+            let w1 = t.mul_ref(&tf).mul_ref(&s.e123inf);
+            let lam = tf.mul_ref(&sn);
+            let lam2 = t.mul_ref(&sn.mul_ref(&g.mul_ref(&s.e123inf)).sub_ref(&f.mul_ref(&w1.mul_ref(&tt))));
+            let omega = w1.mul_ref(&sn);
+            let c_out = std::array::from_fn(|i| c[i].mul_ref(&lam).add_ref(&a[i].mul_ref(&lam2)));
+            return assemble(cc, a.map(|x| x.mul_ref(&lam)), c_out, omega);
+        }
+        let m = beta.mul_ref(&inv_alpha).mul_ref(&half);
+        let q_u = s.e123inf.sub_ref(&m.mul_ref(&s.scalar)).mul_ref(&rho);
         let w1 = t.mul_ref(&tf).mul_ref(&q_u);
         let p1 = t.mul_ref(&m);
         let e = exp_fixed(&ln_fixed(alpha).mul_ref(&half).mul_ref(t));
@@ -145,7 +227,7 @@ impl<T: Real> Pose<T> {
         let lam2 = et.mul_ref(&sn.mul_ref(&k).sub_ref(&f.mul_ref(&w1.mul_ref(&tt).add_ref(&p1.mul_ref(&sn)))));
         let omega = e.mul_ref(&w1.mul_ref(&sn).add_ref(&p1.mul_ref(&cc)));
         let c_out = std::array::from_fn(|i| c[i].mul_ref(&lam).add_ref(&a[i].mul_ref(&lam2)));
-        Some(assemble(e.mul_ref(&cc), a.map(|x| x.mul_ref(&lam)), c_out, omega))
+        assemble(e.mul_ref(&cc), a.map(|x| x.mul_ref(&lam)), c_out, omega)
     }
 }
 

@@ -18,6 +18,7 @@
 //! | [`pose`] | [`Pose`], [`Bivector`], [`Pseudoscalar`] (generated), [`Even`]; constructors, norm, unitize, inverse, equivalence (Lemmas 2.4-2.6, Thm 2.8) |
 //! | [`vec3`] | [`Vec3`]: dot, cross, `a ↦ a e123`, `c ↦ c einf`; `ν = Ω e123 + u einf` both ways |
 //! | [`action`] | `F_S` on points and directions (eqs. 6-9) |
+//! | [`unit_pose`] | [`UnitPose`]: a pose normalised once, whose action and slerp skip the normalisation |
 //! | [`matrix`] | 4x4 homogeneous matrices both ways |
 //! | `ops` (private) | [`Pose::then`], [`Pose::after`], `From` with gam-algebras' [`Motor`] |
 //! | [`pseudoscalar`] | `a + bω`: inverse, square root, exp, ln, pow (Lemma 2.4) |
@@ -89,6 +90,7 @@ mod series;
 pub mod spec;
 mod stable_slerp;
 pub mod trajectory;
+pub mod unit_pose;
 pub mod vec3;
 pub mod velocity;
 pub mod wareham_lasenby;
@@ -105,5 +107,6 @@ pub use matrix::Matrix4;
 pub use piecewise::{AnyMotion, Piecewise, Reparametrized};
 pub use pose::{Bivector, Even, Pose, Pseudoscalar};
 pub use quaternion::Quaternion;
+pub use unit_pose::UnitPose;
 pub use vec3::Vec3;
 pub use velocity::{Twist, velocity_bivector, velocity_indicatrix};

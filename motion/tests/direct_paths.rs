@@ -2,7 +2,7 @@
 //! `log`, `transform_point`, `power` and `slerp` take fixed-length polynomials and one test on
 //! the result instead of the careful path's checks, rescaling and term-by-term series. Each
 //! is checked here against an independent reference over inputs that cross every threshold
-//! of the direct paths (half-angles near 0, near `2^-10`, at `π/6`, at 1, near and past `π/2`, at 2;
+//! of the direct paths (half-angles near 0, near `2^-10`, at `π/6`, at `π/4`, at 1, near and past `π/2`, at 2;
 //! non-unit poses; large translations): the same operation in 256-bit MPFR (which takes the
 //! careful path), the generated `cga_null` sandwich, and exact rationals.
 
@@ -52,6 +52,9 @@ fn generators() -> Vec<Even<f64>> {
         2.0 + 1e-9,
         2.5,
         3.1,
+        // last, so that the draws for the half-angles above stay as they were
+        std::f64::consts::FRAC_PI_4 - 1e-9,
+        std::f64::consts::FRAC_PI_4 + 1e-9,
     ];
     let mut out = Vec::new();
     for half in halves {
