@@ -241,22 +241,23 @@ impl DPoly {
 pub struct PolyRing {
     vars: Vec<String>,
     index: HashMap<String, usize>,
-    /// The interned id of each variable (see `Poly::id_terms`), and the variable of each id.
+    /// The interned id of each variable (see `Poly::id_terms`), and the variable of each id
+    /// as `(id, variable)` sorted by id (a binary search per factor in [`Self::to_dense`]).
     ids: Vec<u32>,
-    by_id: HashMap<u32, usize>,
+    by_id: Vec<(u32, usize)>,
     order: MonomialOrder,
 }
 
 impl PolyRing {
     /// The ring with these variables (duplicates are ignored) and this order.
     pub fn new<S: AsRef<str>>(vars: impl IntoIterator<Item = S>, order: MonomialOrder) -> Self {
-        let mut out =
-            PolyRing { vars: Vec::new(), index: HashMap::new(), ids: Vec::new(), by_id: HashMap::new(), order };
+        let mut out = PolyRing { vars: Vec::new(), index: HashMap::new(), ids: Vec::new(), by_id: Vec::new(), order };
         for v in vars {
             let v = v.as_ref().to_string();
             if !out.index.contains_key(&v) {
                 let id = crate::poly::intern(&v);
-                out.by_id.insert(id, out.vars.len());
+                let at = out.by_id.partition_point(|e| e.0 < id);
+                out.by_id.insert(at, (id, out.vars.len()));
                 out.ids.push(id);
                 out.index.insert(v.clone(), out.vars.len());
                 out.vars.push(v);
@@ -300,30 +301,46 @@ impl PolyRing {
         self.vars.len() + 1
     }
 
+    /// The variable of an interned id.
+    fn variable_of(&self, id: u32) -> Result<usize, IdealError> {
+        match self.by_id.binary_search_by_key(&id, |e| e.0) {
+            Ok(at) => Ok(self.by_id[at].1),
+            Err(_) => Err(IdealError::UnknownVariable(crate::poly::var_name(id))),
+        }
+    }
+
     /// `p = F / den` with `F` integer (not made primitive), terms by decreasing monomial.
+    ///
+    /// The exponent vectors are written side by side into one buffer and an index is sorted
+    /// (no allocation per term; monomials of a [`Poly`] are distinct, so the unstable sort is
+    /// deterministic).
     pub(crate) fn to_dense(&self, p: &Poly) -> Result<(DPoly, Integer), IdealError> {
         let w = self.width();
-        let mut terms: Vec<(Vec<u32>, &Rational)> = Vec::with_capacity(p.term_count());
+        let n = p.term_count();
+        let mut exps = vec![0u32; n * w];
+        let mut coefs: Vec<&Rational> = Vec::with_capacity(n);
         let mut den = Integer::from(1);
-        for (m, c) in p.id_terms() {
-            let mut e = vec![0u32; w];
+        for (t, (m, c)) in p.id_terms().enumerate() {
+            let e = &mut exps[t * w..(t + 1) * w];
             for &(id, k) in m {
-                let i = *self.by_id.get(&id).ok_or_else(|| IdealError::UnknownVariable(crate::poly::var_name(id)))?;
-                e[i + 1] += k;
+                e[self.variable_of(id)? + 1] += k;
                 e[0] += k;
             }
             if *c.denom() != 1 {
                 den.lcm_mut(c.denom());
             }
-            terms.push((e, c));
+            coefs.push(c);
         }
-        terms.sort_by(|a, b| self.order.cmp(&b.0, &a.0));
+        let mut idx: Vec<usize> = (0..coefs.len()).collect();
+        let mono = |t: usize| &exps[t * w..(t + 1) * w];
+        idx.sort_unstable_by(|&a, &b| self.order.cmp(mono(b), mono(a)));
         let mut out = DPoly::zero(w);
-        out.exps.reserve(terms.len() * w);
-        out.coefs.reserve(terms.len());
-        for (e, c) in terms {
+        out.exps.reserve(idx.len() * w);
+        out.coefs.reserve(idx.len());
+        for t in idx {
+            let c = coefs[t];
             let num = if den == 1 { c.numer().clone() } else { Integer::from(&den / c.denom()) * c.numer() };
-            out.push(&e, num);
+            out.push(mono(t), num);
         }
         Ok((out, den))
     }

@@ -237,3 +237,23 @@ fn machine_word_reduction_overflows_into_gmp_exactly() {
         assert_eq!(ring.to_poly(&r, &(s * Rational::from(&fden))), expected, "g = {g}");
     }
 }
+
+#[test]
+fn dense_form_follows_the_ring_variables_not_the_interned_ids() {
+    // Interned in the order q_late, q_early; the ring lists them the other way round, so the
+    // sorted id table and the variable order disagree.
+    let (late, early) = (Poly::var("dense_q_late"), Poly::var("dense_q_early"));
+    let ring = PolyRing::new(["dense_q_early", "dense_q_late"], MonomialOrder::GrevLex);
+    let p = late.clone() * late.clone() * Poly::from_i64(3) + early.clone() * Poly::from_i64(5)
+        - early.clone() * late.clone() * Poly::from_i64(7)
+        + Poly::constant(Rational::from((1, 2)));
+    let (d, den) = ring.to_dense(&p).unwrap();
+    assert_eq!(den, 2);
+    // Degree 2 first (early*late > late^2 in grevlex: smaller exponent of the last variable),
+    // then early, then the constant; coefficients times the denominator 2.
+    assert_eq!(d.exps, [2, 1, 1, 2, 0, 2, 1, 1, 0, 0, 0, 0]);
+    assert_eq!(d.coefs, [Integer::from(-14), Integer::from(6), Integer::from(10), Integer::from(1)]);
+    assert_eq!(ring.to_poly(&d, &Rational::from(den)), p);
+    let other = PolyRing::new(["dense_q_early"], MonomialOrder::GrevLex);
+    assert_eq!(other.to_dense(&late).unwrap_err(), IdealError::UnknownVariable("dense_q_late".into()));
+}
