@@ -310,11 +310,46 @@ impl PolyRing {
     }
 
     /// `p = F / den` with `F` integer (not made primitive), terms by decreasing monomial.
-    ///
-    /// The exponent vectors are written side by side into one buffer and an index is sorted
-    /// (no allocation per term; monomials of a [`Poly`] are distinct, so the unstable sort is
-    /// deterministic).
     pub(crate) fn to_dense(&self, p: &Poly) -> Result<(DPoly, Integer), IdealError> {
+        let (exps, coefs, order, den) = self.sorted_terms(p)?;
+        let w = self.width();
+        let mut out = DPoly::zero(w);
+        out.exps.reserve(order.len() * w);
+        out.coefs.reserve(order.len());
+        for t in order {
+            let c = coefs[t];
+            let num = if den == 1 { c.numer().clone() } else { Integer::from(&den / c.denom()) * c.numer() };
+            out.push(&exps[t * w..(t + 1) * w], num);
+        }
+        Ok((out, den))
+    }
+
+    /// [`Self::to_dense`] with machine-word coefficients (`None` when `p` has a non-integer or
+    /// a coefficient outside `i64`, `i64::MIN` excluded as in `small::small_coefs`): no GMP
+    /// integer per term on the way to a machine-word reduction.
+    pub(crate) fn to_words(&self, p: &Poly) -> Result<Option<(Vec<u32>, Vec<i64>)>, IdealError> {
+        let (exps, coefs, order, den) = self.sorted_terms(p)?;
+        if den != 1 {
+            return Ok(None);
+        }
+        let w = self.width();
+        let mut words = Vec::with_capacity(order.len());
+        let mut sorted = Vec::with_capacity(order.len() * w);
+        for t in order {
+            match coefs[t].numer().to_i64().filter(|&x| x != i64::MIN) {
+                Some(c) => words.push(c),
+                None => return Ok(None),
+            }
+            sorted.extend_from_slice(&exps[t * w..(t + 1) * w]);
+        }
+        Ok(Some((sorted, words)))
+    }
+
+    /// The terms of `p`: exponent vectors side by side in one buffer (no allocation per term),
+    /// the coefficients, the term indices by decreasing monomial (monomials of a [`Poly`] are
+    /// distinct, so the unstable sort is deterministic), the lcm of the denominators.
+    #[allow(clippy::type_complexity)]
+    fn sorted_terms<'p>(&self, p: &'p Poly) -> Result<(Vec<u32>, Vec<&'p Rational>, Vec<usize>, Integer), IdealError> {
         let w = self.width();
         let n = p.term_count();
         let mut exps = vec![0u32; n * w];
@@ -331,18 +366,10 @@ impl PolyRing {
             }
             coefs.push(c);
         }
-        let mut idx: Vec<usize> = (0..coefs.len()).collect();
+        let mut order: Vec<usize> = (0..coefs.len()).collect();
         let mono = |t: usize| &exps[t * w..(t + 1) * w];
-        idx.sort_unstable_by(|&a, &b| self.order.cmp(mono(b), mono(a)));
-        let mut out = DPoly::zero(w);
-        out.exps.reserve(idx.len() * w);
-        out.coefs.reserve(idx.len());
-        for t in idx {
-            let c = coefs[t];
-            let num = if den == 1 { c.numer().clone() } else { Integer::from(&den / c.denom()) * c.numer() };
-            out.push(mono(t), num);
-        }
-        Ok((out, den))
+        order.sort_unstable_by(|&a, &b| self.order.cmp(mono(b), mono(a)));
+        Ok((exps, coefs, order, den))
     }
 
     /// `p / divisor` as a [`Poly`].

@@ -93,6 +93,11 @@ pub(crate) fn s_poly(
 }
 
 impl Work {
+    /// The polynomial with these monomials (`w` words each, decreasing) and coefficients.
+    pub(crate) fn new(exps: Vec<u32>, coefs: Vec<i64>) -> Self {
+        Work { exps, coefs }
+    }
+
     /// The terms from `from` on, over GMP.
     fn into_dpoly(self, w: usize, from: usize) -> DPoly {
         DPoly {

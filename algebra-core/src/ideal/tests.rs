@@ -257,3 +257,32 @@ fn dense_form_follows_the_ring_variables_not_the_interned_ids() {
     let other = PolyRing::new(["dense_q_early"], MonomialOrder::GrevLex);
     assert_eq!(other.to_dense(&late).unwrap_err(), IdealError::UnknownVariable("dense_q_late".into()));
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    /// The machine-word form of a polynomial is its dense form with the coefficients as words
+    /// (integer coefficients that fit), and the normal forms taken through either agree.
+    #[test]
+    fn word_form_agrees_with_the_dense_form(f in arb_poly(6), g in arb_poly(3), big in any::<bool>()) {
+        let ring = PolyRing::new(["x", "y", "z"], MonomialOrder::GrevLex);
+        let f = if big { f * Poly::constant(Rational::from(Integer::from(1) << 70u32)) } else { f };
+        let (d, den) = ring.to_dense(&f).unwrap();
+        match ring.to_words(&f).unwrap() {
+            Some((exps, coefs)) => {
+                prop_assert!(!big || d.is_zero());
+                prop_assert_eq!(den, 1);
+                prop_assert_eq!(exps, d.exps);
+                prop_assert_eq!(coefs.iter().map(|&c| Integer::from(c)).collect::<Vec<_>>(), d.coefs);
+            }
+            None => prop_assert!(big && !d.is_zero()),
+        }
+        let half = f.clone() * Poly::constant(Rational::from((1, 2)));
+        let halved_den = ring.to_dense(&half).unwrap().1;
+        prop_assert!(halved_den == 1 || ring.to_words(&half).unwrap().is_none());
+        // Normal forms: words path (f), GMP path (f/2, then doubled).
+        let basis = ring.groebner(&[g], &Budget::default()).unwrap();
+        let via_gmp = basis.normal_form(&half).unwrap() * Poly::from_i64(2);
+        prop_assert_eq!(basis.normal_form(&f).unwrap(), via_gmp);
+    }
+}
