@@ -245,13 +245,24 @@ pub struct PolyRing {
     /// as `(id, variable)` sorted by id (a binary search per factor in [`Self::to_dense`]).
     ids: Vec<u32>,
     by_id: Vec<(u32, usize)>,
+    /// The variable of id `by_id[0].0 + k` at `slot[k]` (`u32::MAX`: none), when the ids span
+    /// a short range (they are interned together, mostly): one load per factor. Empty
+    /// otherwise (the binary search).
+    slot: Vec<u32>,
     order: MonomialOrder,
 }
 
 impl PolyRing {
     /// The ring with these variables (duplicates are ignored) and this order.
     pub fn new<S: AsRef<str>>(vars: impl IntoIterator<Item = S>, order: MonomialOrder) -> Self {
-        let mut out = PolyRing { vars: Vec::new(), index: HashMap::new(), ids: Vec::new(), by_id: Vec::new(), order };
+        let mut out = PolyRing {
+            vars: Vec::new(),
+            index: HashMap::new(),
+            ids: Vec::new(),
+            by_id: Vec::new(),
+            slot: Vec::new(),
+            order,
+        };
         for v in vars {
             let v = v.as_ref().to_string();
             if !out.index.contains_key(&v) {
@@ -261,6 +272,15 @@ impl PolyRing {
                 out.ids.push(id);
                 out.index.insert(v.clone(), out.vars.len());
                 out.vars.push(v);
+            }
+        }
+        if let (Some(lo), Some(hi)) = (out.by_id.first(), out.by_id.last()) {
+            let span = (hi.0 - lo.0) as usize + 1;
+            if span <= 16 * out.vars.len() + 256 {
+                out.slot = vec![u32::MAX; span];
+                for &(id, v) in &out.by_id {
+                    out.slot[(id - lo.0) as usize] = v as u32;
+                }
             }
         }
         out
@@ -303,6 +323,13 @@ impl PolyRing {
 
     /// The variable of an interned id.
     fn variable_of(&self, id: u32) -> Result<usize, IdealError> {
+        if !self.slot.is_empty() {
+            let at = id.wrapping_sub(self.by_id[0].0) as usize;
+            return match self.slot.get(at) {
+                Some(&v) if v != u32::MAX => Ok(v as usize),
+                _ => Err(IdealError::UnknownVariable(crate::poly::var_name(id))),
+            };
+        }
         match self.by_id.binary_search_by_key(&id, |e| e.0) {
             Ok(at) => Ok(self.by_id[at].1),
             Err(_) => Err(IdealError::UnknownVariable(crate::poly::var_name(id))),

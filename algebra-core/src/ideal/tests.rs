@@ -286,3 +286,29 @@ proptest! {
         prop_assert_eq!(basis.normal_form(&f).unwrap(), via_gmp);
     }
 }
+
+#[test]
+fn variable_lookup_by_table_and_by_binary_search_agree() {
+    // Ids interned in the order below, lo, mid, 400 others, hi: the ring {lo, mid} has a short
+    // id span (the table), {lo, hi} a long one (the binary search).
+    let below = Poly::var("lookup_below");
+    let (lo, mid) = (Poly::var("lookup_lo"), Poly::var("lookup_mid"));
+    let gap: Vec<Poly> = (0..400).map(|k| Poly::var(&format!("lookup_gap_{k}"))).collect();
+    let hi = Poly::var("lookup_hi");
+    let short = PolyRing::new(["lookup_mid", "lookup_lo"], MonomialOrder::GrevLex);
+    let long = PolyRing::new(["lookup_hi", "lookup_lo"], MonomialOrder::GrevLex);
+    assert!(!short.slot.is_empty() && long.slot.is_empty());
+    let p = lo.clone() * mid.clone() * mid.clone() + lo.clone();
+    assert_eq!(short.to_dense(&p).unwrap().0.exps, [3, 2, 1, 1, 0, 1]);
+    let q = lo.clone() * hi.clone() * hi.clone() + lo.clone();
+    assert_eq!(long.to_dense(&q).unwrap().0.exps, [3, 2, 1, 1, 0, 1]);
+    // {lo, gap_1}: mid and gap_0 fall inside the table's range, on empty slots.
+    let holes = PolyRing::new(["lookup_lo", "lookup_gap_1"], MonomialOrder::GrevLex);
+    assert!(!holes.slot.is_empty());
+    assert_eq!(holes.to_dense(&(gap[1].clone() * lo.clone())).unwrap().0.exps, [2, 1, 1]);
+    let strangers = [(&short, &below), (&short, &gap[0]), (&short, &hi), (&long, &below), (&long, &mid)];
+    for (ring, stranger) in strangers.into_iter().chain([(&holes, &mid), (&holes, &gap[0]), (&holes, &below)]) {
+        let name = stranger.variables()[0].clone();
+        assert_eq!(ring.to_dense(stranger).unwrap_err(), IdealError::UnknownVariable(name));
+    }
+}
