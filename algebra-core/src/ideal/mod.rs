@@ -338,7 +338,7 @@ impl PolyRing {
 
     /// `p = F / den` with `F` integer (not made primitive), terms by decreasing monomial.
     pub(crate) fn to_dense(&self, p: &Poly) -> Result<(DPoly, Integer), IdealError> {
-        let (exps, coefs, order, den) = self.sorted_terms(p)?;
+        let Terms { exps, coefs, order, den } = self.sorted_terms(p)?;
         let w = self.width();
         let mut out = DPoly::zero(w);
         out.exps.reserve(order.len() * w);
@@ -354,8 +354,8 @@ impl PolyRing {
     /// [`Self::to_dense`] with machine-word coefficients (`None` when `p` has a non-integer or
     /// a coefficient outside `i64`, `i64::MIN` excluded as in `small::small_coefs`): no GMP
     /// integer per term on the way to a machine-word reduction.
-    pub(crate) fn to_words(&self, p: &Poly) -> Result<Option<(Vec<u32>, Vec<i64>)>, IdealError> {
-        let (exps, coefs, order, den) = self.sorted_terms(p)?;
+    pub(crate) fn to_words(&self, p: &Poly) -> Result<Option<Words>, IdealError> {
+        let Terms { exps, coefs, order, den } = self.sorted_terms(p)?;
         if den != 1 {
             return Ok(None);
         }
@@ -372,11 +372,8 @@ impl PolyRing {
         Ok(Some((sorted, words)))
     }
 
-    /// The terms of `p`: exponent vectors side by side in one buffer (no allocation per term),
-    /// the coefficients, the term indices by decreasing monomial (monomials of a [`Poly`] are
-    /// distinct, so the unstable sort is deterministic), the lcm of the denominators.
-    #[allow(clippy::type_complexity)]
-    fn sorted_terms<'p>(&self, p: &'p Poly) -> Result<(Vec<u32>, Vec<&'p Rational>, Vec<usize>, Integer), IdealError> {
+    /// The terms of `p` (see [`Terms`]).
+    fn sorted_terms<'p>(&self, p: &'p Poly) -> Result<Terms<'p>, IdealError> {
         let w = self.width();
         let n = p.term_count();
         let mut exps = vec![0u32; n * w];
@@ -396,7 +393,7 @@ impl PolyRing {
         let mut order: Vec<usize> = (0..coefs.len()).collect();
         let mono = |t: usize| &exps[t * w..(t + 1) * w];
         order.sort_unstable_by(|&a, &b| self.order.cmp(mono(b), mono(a)));
-        Ok((exps, coefs, order, den))
+        Ok(Terms { exps, coefs, order, den })
     }
 
     /// `p / divisor` as a [`Poly`].
@@ -409,6 +406,23 @@ impl PolyRing {
             (m, c)
         }))
     }
+}
+
+/// Monomials (`w` words each, decreasing) and machine-word coefficients.
+pub(crate) type Words = (Vec<u32>, Vec<i64>);
+
+/// The terms of a [`Poly`] in a ring's exponent vectors.
+struct Terms<'p> {
+    /// Exponent vectors side by side in one buffer (no allocation per term), in the order of
+    /// the `Poly`'s terms.
+    exps: Vec<u32>,
+    /// The coefficients, in the same order.
+    coefs: Vec<&'p Rational>,
+    /// The term indices by decreasing monomial (monomials of a [`Poly`] are distinct, so the
+    /// unstable sort is deterministic).
+    order: Vec<usize>,
+    /// The lcm of the denominators.
+    den: Integer,
 }
 
 impl DPoly {
