@@ -31,6 +31,9 @@ use rug::{Integer, Rational};
 pub struct GroebnerBasis {
     ring: PolyRing,
     basis: Vec<DPoly>,
+    /// Each element's coefficients as machine words, when all fit (`super::small`): computed
+    /// once, for every normal form after.
+    small: Vec<Option<Vec<i64>>>,
 }
 
 struct Pair {
@@ -253,7 +256,7 @@ impl PolyRing {
             let r = red.r;
             if !r.is_zero() {
                 if r.lm()[0] == 0 {
-                    return Ok(GroebnerBasis { ring: self.clone(), basis: vec![unit(self)] });
+                    return Ok(GroebnerBasis::new(self.clone(), vec![unit(self)]));
                 }
                 let k = st.add(r, sugar.max(red.sugar), meter)?;
                 st.update(k);
@@ -282,14 +285,14 @@ impl PolyRing {
             let r = red.r;
             if !r.is_zero() {
                 if r.lm()[0] == 0 {
-                    return Ok(GroebnerBasis { ring: self.clone(), basis: vec![unit(self)] });
+                    return Ok(GroebnerBasis::new(self.clone(), vec![unit(self)]));
                 }
                 let k = st.add(r, pair.sugar.max(red.sugar), meter)?;
                 st.update(k);
             }
         }
         let gens: Vec<DPoly> = st.polys.into_iter().zip(st.active).filter(|(_, a)| *a).map(|(p, _)| p).collect();
-        Ok(GroebnerBasis { ring: self.clone(), basis: interreduce(gens, self, meter)? })
+        Ok(GroebnerBasis::new(self.clone(), interreduce(gens, self, meter)?))
     }
 }
 
@@ -335,6 +338,11 @@ fn with_tail_reduced(
 }
 
 impl GroebnerBasis {
+    fn new(ring: PolyRing, basis: Vec<DPoly>) -> Self {
+        let small = basis.iter().map(small_coefs).collect();
+        GroebnerBasis { ring, basis, small }
+    }
+
     /// The ring (variables and order) of the basis.
     pub fn ring(&self) -> &PolyRing {
         &self.ring
@@ -381,12 +389,26 @@ impl GroebnerBasis {
     }
 
     /// `f = F / D`, and `r ≡ s·F`: the normal form of `f` is `r / (s·D)`.
+    /// With integer coefficients that fit machine words and a basis that has its words, `f`
+    /// goes to the machine-word reduction directly (no GMP integer per term on the way).
     pub(crate) fn normal_form_metered(&self, f: &Poly, meter: &mut Meter) -> Result<Poly, IdealError> {
+        let reducers: Vec<Reducer<'_>> = self
+            .basis
+            .iter()
+            .zip(&self.small)
+            .map(|(g, w)| Reducer { small: w.as_deref(), ..Reducer::new(g) })
+            .collect();
+        let order = self.ring.order();
+        if reducers.iter().all(|d| d.small.is_some())
+            && let Some((exps, coefs)) = self.ring.to_words(f)?
+        {
+            let w = self.ring.width();
+            let super::division::Reduced { r, s, .. } =
+                small::reduce_work(small::Work::new(exps, coefs), w, &reducers, order, meter)?;
+            return Ok(self.ring.to_poly(&r, &s));
+        }
         let (f, den) = self.ring.to_dense(f)?;
-        let small: Vec<Option<Vec<i64>>> = self.basis.iter().map(small_coefs).collect();
-        let reducers: Vec<Reducer<'_>> =
-            self.basis.iter().zip(&small).map(|(g, w)| Reducer { small: w.as_deref(), ..Reducer::new(g) }).collect();
-        let super::division::Reduced { r, s, .. } = reduce(f, &reducers, self.ring.order(), meter)?;
+        let super::division::Reduced { r, s, .. } = reduce(f, &reducers, order, meter)?;
         Ok(self.ring.to_poly(&r, &(s * den)))
     }
 

@@ -241,25 +241,46 @@ impl DPoly {
 pub struct PolyRing {
     vars: Vec<String>,
     index: HashMap<String, usize>,
-    /// The interned id of each variable (see `Poly::id_terms`), and the variable of each id.
+    /// The interned id of each variable (see `Poly::id_terms`), and the variable of each id
+    /// as `(id, variable)` sorted by id (a binary search per factor in [`Self::to_dense`]).
     ids: Vec<u32>,
-    by_id: HashMap<u32, usize>,
+    by_id: Vec<(u32, usize)>,
+    /// The variable of id `by_id[0].0 + k` at `slot[k]` (`u32::MAX`: none), when the ids span
+    /// a short range (they are interned together, mostly): one load per factor. Empty
+    /// otherwise (the binary search).
+    slot: Vec<u32>,
     order: MonomialOrder,
 }
 
 impl PolyRing {
     /// The ring with these variables (duplicates are ignored) and this order.
     pub fn new<S: AsRef<str>>(vars: impl IntoIterator<Item = S>, order: MonomialOrder) -> Self {
-        let mut out =
-            PolyRing { vars: Vec::new(), index: HashMap::new(), ids: Vec::new(), by_id: HashMap::new(), order };
+        let mut out = PolyRing {
+            vars: Vec::new(),
+            index: HashMap::new(),
+            ids: Vec::new(),
+            by_id: Vec::new(),
+            slot: Vec::new(),
+            order,
+        };
         for v in vars {
             let v = v.as_ref().to_string();
             if !out.index.contains_key(&v) {
                 let id = crate::poly::intern(&v);
-                out.by_id.insert(id, out.vars.len());
+                let at = out.by_id.partition_point(|e| e.0 < id);
+                out.by_id.insert(at, (id, out.vars.len()));
                 out.ids.push(id);
                 out.index.insert(v.clone(), out.vars.len());
                 out.vars.push(v);
+            }
+        }
+        if let (Some(lo), Some(hi)) = (out.by_id.first(), out.by_id.last()) {
+            let span = (hi.0 - lo.0) as usize + 1;
+            if span <= 16 * out.vars.len() + 256 {
+                out.slot = vec![u32::MAX; span];
+                for &(id, v) in &out.by_id {
+                    out.slot[(id - lo.0) as usize] = v as u32;
+                }
             }
         }
         out
@@ -300,32 +321,79 @@ impl PolyRing {
         self.vars.len() + 1
     }
 
+    /// The variable of an interned id.
+    fn variable_of(&self, id: u32) -> Result<usize, IdealError> {
+        if !self.slot.is_empty() {
+            let at = id.wrapping_sub(self.by_id[0].0) as usize;
+            return match self.slot.get(at) {
+                Some(&v) if v != u32::MAX => Ok(v as usize),
+                _ => Err(IdealError::UnknownVariable(crate::poly::var_name(id))),
+            };
+        }
+        match self.by_id.binary_search_by_key(&id, |e| e.0) {
+            Ok(at) => Ok(self.by_id[at].1),
+            Err(_) => Err(IdealError::UnknownVariable(crate::poly::var_name(id))),
+        }
+    }
+
     /// `p = F / den` with `F` integer (not made primitive), terms by decreasing monomial.
     pub(crate) fn to_dense(&self, p: &Poly) -> Result<(DPoly, Integer), IdealError> {
+        let Terms { exps, coefs, order, den } = self.sorted_terms(p)?;
         let w = self.width();
-        let mut terms: Vec<(Vec<u32>, &Rational)> = Vec::with_capacity(p.term_count());
+        let mut out = DPoly::zero(w);
+        out.exps.reserve(order.len() * w);
+        out.coefs.reserve(order.len());
+        for t in order {
+            let c = coefs[t];
+            let num = if den == 1 { c.numer().clone() } else { Integer::from(&den / c.denom()) * c.numer() };
+            out.push(&exps[t * w..(t + 1) * w], num);
+        }
+        Ok((out, den))
+    }
+
+    /// [`Self::to_dense`] with machine-word coefficients (`None` when `p` has a non-integer or
+    /// a coefficient outside `i64`, `i64::MIN` excluded as in `small::small_coefs`): no GMP
+    /// integer per term on the way to a machine-word reduction.
+    pub(crate) fn to_words(&self, p: &Poly) -> Result<Option<Words>, IdealError> {
+        let Terms { exps, coefs, order, den } = self.sorted_terms(p)?;
+        if den != 1 {
+            return Ok(None);
+        }
+        let w = self.width();
+        let mut words = Vec::with_capacity(order.len());
+        let mut sorted = Vec::with_capacity(order.len() * w);
+        for t in order {
+            match coefs[t].numer().to_i64().filter(|&x| x != i64::MIN) {
+                Some(c) => words.push(c),
+                None => return Ok(None),
+            }
+            sorted.extend_from_slice(&exps[t * w..(t + 1) * w]);
+        }
+        Ok(Some((sorted, words)))
+    }
+
+    /// The terms of `p` (see [`Terms`]).
+    fn sorted_terms<'p>(&self, p: &'p Poly) -> Result<Terms<'p>, IdealError> {
+        let w = self.width();
+        let n = p.term_count();
+        let mut exps = vec![0u32; n * w];
+        let mut coefs: Vec<&Rational> = Vec::with_capacity(n);
         let mut den = Integer::from(1);
-        for (m, c) in p.id_terms() {
-            let mut e = vec![0u32; w];
+        for (t, (m, c)) in p.id_terms().enumerate() {
+            let e = &mut exps[t * w..(t + 1) * w];
             for &(id, k) in m {
-                let i = *self.by_id.get(&id).ok_or_else(|| IdealError::UnknownVariable(crate::poly::var_name(id)))?;
-                e[i + 1] += k;
+                e[self.variable_of(id)? + 1] += k;
                 e[0] += k;
             }
             if *c.denom() != 1 {
                 den.lcm_mut(c.denom());
             }
-            terms.push((e, c));
+            coefs.push(c);
         }
-        terms.sort_by(|a, b| self.order.cmp(&b.0, &a.0));
-        let mut out = DPoly::zero(w);
-        out.exps.reserve(terms.len() * w);
-        out.coefs.reserve(terms.len());
-        for (e, c) in terms {
-            let num = if den == 1 { c.numer().clone() } else { Integer::from(&den / c.denom()) * c.numer() };
-            out.push(&e, num);
-        }
-        Ok((out, den))
+        let mut order: Vec<usize> = (0..coefs.len()).collect();
+        let mono = |t: usize| &exps[t * w..(t + 1) * w];
+        order.sort_unstable_by(|&a, &b| self.order.cmp(mono(b), mono(a)));
+        Ok(Terms { exps, coefs, order, den })
     }
 
     /// `p / divisor` as a [`Poly`].
@@ -338,6 +406,23 @@ impl PolyRing {
             (m, c)
         }))
     }
+}
+
+/// Monomials (`w` words each, decreasing) and machine-word coefficients.
+pub(crate) type Words = (Vec<u32>, Vec<i64>);
+
+/// The terms of a [`Poly`] in a ring's exponent vectors.
+struct Terms<'p> {
+    /// Exponent vectors side by side in one buffer (no allocation per term), in the order of
+    /// the `Poly`'s terms.
+    exps: Vec<u32>,
+    /// The coefficients, in the same order.
+    coefs: Vec<&'p Rational>,
+    /// The term indices by decreasing monomial (monomials of a [`Poly`] are distinct, so the
+    /// unstable sort is deterministic).
+    order: Vec<usize>,
+    /// The lcm of the denominators.
+    den: Integer,
 }
 
 impl DPoly {

@@ -237,3 +237,78 @@ fn machine_word_reduction_overflows_into_gmp_exactly() {
         assert_eq!(ring.to_poly(&r, &(s * Rational::from(&fden))), expected, "g = {g}");
     }
 }
+
+#[test]
+fn dense_form_follows_the_ring_variables_not_the_interned_ids() {
+    // Interned in the order q_late, q_early; the ring lists them the other way round, so the
+    // sorted id table and the variable order disagree.
+    let (late, early) = (Poly::var("dense_q_late"), Poly::var("dense_q_early"));
+    let ring = PolyRing::new(["dense_q_early", "dense_q_late"], MonomialOrder::GrevLex);
+    let p = late.clone() * late.clone() * Poly::from_i64(3) + early.clone() * Poly::from_i64(5)
+        - early.clone() * late.clone() * Poly::from_i64(7)
+        + Poly::constant(Rational::from((1, 2)));
+    let (d, den) = ring.to_dense(&p).unwrap();
+    assert_eq!(den, 2);
+    // Degree 2 first (early*late > late^2 in grevlex: smaller exponent of the last variable),
+    // then early, then the constant; coefficients times the denominator 2.
+    assert_eq!(d.exps, [2, 1, 1, 2, 0, 2, 1, 1, 0, 0, 0, 0]);
+    assert_eq!(d.coefs, [Integer::from(-14), Integer::from(6), Integer::from(10), Integer::from(1)]);
+    assert_eq!(ring.to_poly(&d, &Rational::from(den)), p);
+    let other = PolyRing::new(["dense_q_early"], MonomialOrder::GrevLex);
+    assert_eq!(other.to_dense(&late).unwrap_err(), IdealError::UnknownVariable("dense_q_late".into()));
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    /// The machine-word form of a polynomial is its dense form with the coefficients as words
+    /// (integer coefficients that fit), and the normal forms taken through either agree.
+    #[test]
+    fn word_form_agrees_with_the_dense_form(f in arb_poly(6), g in arb_poly(3), big in any::<bool>()) {
+        let ring = PolyRing::new(["x", "y", "z"], MonomialOrder::GrevLex);
+        let f = if big { f * Poly::constant(Rational::from(Integer::from(1) << 70u32)) } else { f };
+        let (d, den) = ring.to_dense(&f).unwrap();
+        match ring.to_words(&f).unwrap() {
+            Some((exps, coefs)) => {
+                prop_assert!(!big || d.is_zero());
+                prop_assert_eq!(den, 1);
+                prop_assert_eq!(exps, d.exps);
+                prop_assert_eq!(coefs.iter().map(|&c| Integer::from(c)).collect::<Vec<_>>(), d.coefs);
+            }
+            None => prop_assert!(big && !d.is_zero()),
+        }
+        let half = f.clone() * Poly::constant(Rational::from((1, 2)));
+        let halved_den = ring.to_dense(&half).unwrap().1;
+        prop_assert!(halved_den == 1 || ring.to_words(&half).unwrap().is_none());
+        // Normal forms: words path (f), GMP path (f/2, then doubled).
+        let basis = ring.groebner(&[g], &Budget::default()).unwrap();
+        let via_gmp = basis.normal_form(&half).unwrap() * Poly::from_i64(2);
+        prop_assert_eq!(basis.normal_form(&f).unwrap(), via_gmp);
+    }
+}
+
+#[test]
+fn variable_lookup_by_table_and_by_binary_search_agree() {
+    // Ids interned in the order below, lo, mid, 400 others, hi: the ring {lo, mid} has a short
+    // id span (the table), {lo, hi} a long one (the binary search).
+    let below = Poly::var("lookup_below");
+    let (lo, mid) = (Poly::var("lookup_lo"), Poly::var("lookup_mid"));
+    let gap: Vec<Poly> = (0..400).map(|k| Poly::var(&format!("lookup_gap_{k}"))).collect();
+    let hi = Poly::var("lookup_hi");
+    let short = PolyRing::new(["lookup_mid", "lookup_lo"], MonomialOrder::GrevLex);
+    let long = PolyRing::new(["lookup_hi", "lookup_lo"], MonomialOrder::GrevLex);
+    assert!(!short.slot.is_empty() && long.slot.is_empty());
+    let p = lo.clone() * mid.clone() * mid.clone() + lo.clone();
+    assert_eq!(short.to_dense(&p).unwrap().0.exps, [3, 2, 1, 1, 0, 1]);
+    let q = lo.clone() * hi.clone() * hi.clone() + lo.clone();
+    assert_eq!(long.to_dense(&q).unwrap().0.exps, [3, 2, 1, 1, 0, 1]);
+    // {lo, gap_1}: mid and gap_0 fall inside the table's range, on empty slots.
+    let holes = PolyRing::new(["lookup_lo", "lookup_gap_1"], MonomialOrder::GrevLex);
+    assert!(!holes.slot.is_empty());
+    assert_eq!(holes.to_dense(&(gap[1].clone() * lo.clone())).unwrap().0.exps, [2, 1, 1]);
+    let strangers = [(&short, &below), (&short, &gap[0]), (&short, &hi), (&long, &below), (&long, &mid)];
+    for (ring, stranger) in strangers.into_iter().chain([(&holes, &mid), (&holes, &gap[0]), (&holes, &below)]) {
+        let name = stranger.variables()[0].clone();
+        assert_eq!(ring.to_dense(stranger).unwrap_err(), IdealError::UnknownVariable(name));
+    }
+}
