@@ -56,20 +56,7 @@ fn generators() -> Vec<Even<f64>> {
         std::f64::consts::FRAC_PI_4 - 1e-9,
         std::f64::consts::FRAC_PI_4 + 1e-9,
     ];
-    let mut out = Vec::new();
-    for half in halves {
-        for k in 0..6 {
-            let mut d = || rng.symmetric();
-            let n = [d(), d(), d() + 0.1];
-            let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
-            let a = n.map(|x| half * x / len);
-            let big = if k == 5 { 1e4 } else { 2.0 };
-            let c = [big * d(), big * d(), big * d()];
-            let (sigma, p) = if k % 2 == 1 { (0.5 * d(), d()) } else { (0.0, 0.0) };
-            out.push(Even::new(sigma, a[2], -a[1], a[0], c[0], c[1], c[2], p));
-        }
-    }
-    out
+    common::generators_at(&mut rng, &halves, true)
 }
 
 #[test]

@@ -10,7 +10,7 @@ mod common;
 use algebra_core::test_support::Xorshift;
 use algebra_core::{MpFloat, PrecisionGuard, Real};
 use common::{cga_null_action, diff, size, value_and_derivative};
-use motion::{Even, MotionError, Pose, Pseudoscalar, UnitPose};
+use motion::{MotionError, Pose, Pseudoscalar, UnitPose};
 use num_dual::Dual64;
 
 /// Unit generators' poses `exp(θ n e123 + c einf)` at the half-angles that bracket the
@@ -32,19 +32,7 @@ fn unit_poses() -> Vec<Pose<f64>> {
         2.0,
         3.1,
     ];
-    let mut out = Vec::new();
-    for half in halves {
-        for k in 0..6 {
-            let mut d = || rng.symmetric();
-            let n = [d(), d(), d() + 0.1];
-            let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
-            let a = n.map(|x| half * x / len);
-            let big = if k == 5 { 1e4 } else { 2.0 };
-            let c = [big * d(), big * d(), big * d()];
-            out.push(Pose::exp(&Even::new(0.0, a[2], -a[1], a[0], c[0], c[1], c[2], 0.0)).unwrap());
-        }
-    }
-    out
+    common::generators_at(&mut rng, &halves, false).iter().map(|g| Pose::exp(g).unwrap()).collect()
 }
 
 /// The condition of the logarithm of `s` (grows like `1/sin θ` near a rotation by 2π).

@@ -176,3 +176,24 @@ pub use algebra_core::test_support::Xorshift;
 pub fn centered(rng: &mut Xorshift) -> f64 {
     rng.unit() - 0.5
 }
+
+/// Generators `σ + θ n e123 + c einf + p ω` at each half-angle `θ` of `halves`, six per angle
+/// with random unit axes `n` (from `rng`), translations up to 2 (10⁴ for every sixth), and,
+/// with `non_unit`, a scale `σ` and a pseudoscalar part `p` for every second. The draws per
+/// angle are fixed, so appending half-angles keeps the earlier generators.
+pub fn generators_at(rng: &mut algebra_core::test_support::Xorshift, halves: &[f64], non_unit: bool) -> Vec<Even<f64>> {
+    let mut out = Vec::new();
+    for &half in halves {
+        for k in 0..6 {
+            let mut d = || rng.symmetric();
+            let n = [d(), d(), d() + 0.1];
+            let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+            let a = n.map(|x| half * x / len);
+            let big = if k == 5 { 1e4 } else { 2.0 };
+            let c = [big * d(), big * d(), big * d()];
+            let (sigma, p) = if non_unit && k % 2 == 1 { (0.5 * d(), d()) } else { (0.0, 0.0) };
+            out.push(Even::new(sigma, a[2], -a[1], a[0], c[0], c[1], c[2], p));
+        }
+    }
+    out
+}
