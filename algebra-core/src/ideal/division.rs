@@ -156,18 +156,27 @@ pub(crate) fn combine(
     }
 }
 
-/// `a·mf·f[1..] - b·mg·g[1..]`, terms by decreasing monomial: the S-polynomial of `f` and `g`
-/// when `a·lc(f) = b·lc(g)` and `mf·LM(f) = mg·LM(g)` (the leading terms cancel). One merge
-/// of the two lifted tails, computed on the fly (neither operand is copied).
-pub(crate) fn s_poly(
-    (a, mf, f): (&Integer, &Mono, &DPoly),
-    (b, mg, g): (&Integer, &Mono, &DPoly),
+/// Where a term of the merge of two lifted tails comes from: `mf·f[i]` alone, `mg·g[j]` alone,
+/// or both at the same monomial.
+#[derive(Clone, Copy)]
+pub(crate) enum Side {
+    F(usize),
+    G(usize),
+    Both(usize, usize),
+}
+
+/// The merge of the lifted tails `mf·f[1..]` and `mg·g[1..]` by decreasing monomial, computed
+/// on the fly (neither operand is copied): `visit` gets each monomial and where its terms are,
+/// and stops the walk by returning `false`. Returns whether the walk ran to the end. The one
+/// walk of both S-polynomials, over GMP ([`s_poly`]) and machine words
+/// ([`super::small::s_poly`]).
+#[inline(always)]
+pub(crate) fn merge_lifted_tails(
+    (mf, f): (&Mono, &DPoly),
+    (mg, g): (&Mono, &DPoly),
     order: MonomialOrder,
-) -> DPoly {
-    let mut pool = POOL.with(|p| std::mem::take(&mut *p.borrow_mut()));
-    let mut out = DPoly::zero(f.w);
-    out.exps.reserve((f.len() + g.len()) * f.w);
-    out.coefs.reserve(f.len() + g.len());
+    mut visit: impl FnMut(&[u32], Side) -> bool,
+) -> bool {
     let (mut lf, mut lg) = (Vec::with_capacity(f.w), Vec::with_capacity(f.w));
     let (mut i, mut j) = (1, 1);
     if i < f.len() {
@@ -182,46 +191,62 @@ pub(crate) fn s_poly(
             (true, false) => Ordering::Greater,
             _ => Ordering::Less,
         };
-        match ord {
-            Ordering::Greater => {
-                let mut c = pool.pop().unwrap_or_default();
-                c.assign(a * &f.coefs[i]);
-                out.push(&lf, c);
-                i += 1;
-                if i < f.len() {
-                    order::mul_into(&mut lf, mf, f.mono(i));
-                }
+        let (go, next_f, next_g) = match ord {
+            Ordering::Greater => (visit(&lf, Side::F(i)), true, false),
+            Ordering::Less => (visit(&lg, Side::G(j)), false, true),
+            Ordering::Equal => (visit(&lf, Side::Both(i, j)), true, true),
+        };
+        if !go {
+            return false;
+        }
+        if next_f {
+            i += 1;
+            if i < f.len() {
+                order::mul_into(&mut lf, mf, f.mono(i));
             }
-            Ordering::Less => {
-                let mut c = pool.pop().unwrap_or_default();
-                c.assign(b * &g.coefs[j]);
-                c.neg_assign();
-                out.push(&lg, c);
-                j += 1;
-                if j < g.len() {
-                    order::mul_into(&mut lg, mg, g.mono(j));
-                }
-            }
-            Ordering::Equal => {
-                let mut c = pool.pop().unwrap_or_default();
-                c.assign(a * &f.coefs[i]);
-                c -= b * &g.coefs[j];
-                if c != 0 {
-                    out.push(&lf, c);
-                } else {
-                    pool.push(c);
-                }
-                i += 1;
-                j += 1;
-                if i < f.len() {
-                    order::mul_into(&mut lf, mf, f.mono(i));
-                }
-                if j < g.len() {
-                    order::mul_into(&mut lg, mg, g.mono(j));
-                }
+        }
+        if next_g {
+            j += 1;
+            if j < g.len() {
+                order::mul_into(&mut lg, mg, g.mono(j));
             }
         }
     }
+    true
+}
+
+/// `a·mf·f[1..] - b·mg·g[1..]`, terms by decreasing monomial: the S-polynomial of `f` and `g`
+/// when `a·lc(f) = b·lc(g)` and `mf·LM(f) = mg·LM(g)` (the leading terms cancel). One merge
+/// of the two lifted tails ([`merge_lifted_tails`]).
+pub(crate) fn s_poly(
+    (a, mf, f): (&Integer, &Mono, &DPoly),
+    (b, mg, g): (&Integer, &Mono, &DPoly),
+    order: MonomialOrder,
+) -> DPoly {
+    let mut pool = POOL.with(|p| std::mem::take(&mut *p.borrow_mut()));
+    let mut out = DPoly::zero(f.w);
+    out.exps.reserve((f.len() + g.len()) * f.w);
+    out.coefs.reserve(f.len() + g.len());
+    merge_lifted_tails((mf, f), (mg, g), order, |m, side| {
+        let mut c = pool.pop().unwrap_or_default();
+        match side {
+            Side::F(i) => c.assign(a * &f.coefs[i]),
+            Side::G(j) => {
+                c.assign(b * &g.coefs[j]);
+                c.neg_assign();
+            }
+            Side::Both(i, j) => {
+                c.assign(a * &f.coefs[i]);
+                c -= b * &g.coefs[j];
+                if c == 0 {
+                    pool.push(c);
+                    return true;
+                }
+            }
+        }
+        out.push(m, c);
+        true
+    });
     POOL.with(|p| *p.borrow_mut() = pool);
     out
 }

@@ -7,7 +7,7 @@
 //! the state before it, so the result is exact either way. A work polynomial that grows past
 //! [`super::division::LONG_WORK`] terms continues in geobuckets over GMP from where it is.
 
-use super::division::{LONG_WORK, Reduced, Reducer, reduce_from, reduce_in_buckets};
+use super::division::{LONG_WORK, Reduced, Reducer, Side, merge_lifted_tails, reduce_from, reduce_in_buckets};
 use super::order::{self, Mono};
 use super::{DPoly, IdealError, Meter, MonomialOrder};
 use rug::{Integer, Rational};
@@ -76,47 +76,21 @@ pub(crate) fn s_poly(
     out.exps.reserve((f.len() + g.len()) * w);
     out.coefs.reserve(f.len() + g.len());
     let (a, b) = (i128::from(a), i128::from(b));
-    let (mut lf, mut lg) = (Vec::with_capacity(w), Vec::with_capacity(w));
-    let (mut i, mut j) = (1, 1);
-    if i < f.len() {
-        order::mul_into(&mut lf, mf, f.mono(i));
-    }
-    if j < g.len() {
-        order::mul_into(&mut lg, mg, g.mono(j));
-    }
-    while i < f.len() || j < g.len() {
-        let ord = match (i < f.len(), j < g.len()) {
-            (true, true) => order.cmp(&lf, &lg),
-            (true, false) => Ordering::Greater,
-            _ => Ordering::Less,
+    let done = merge_lifted_tails((mf, f), (mg, g), order, |m, side| {
+        let v = match side {
+            Side::F(i) => a * i128::from(fc[i]),
+            Side::G(j) => -b * i128::from(gc[j]),
+            Side::Both(i, j) => a * i128::from(fc[i]) - b * i128::from(gc[j]),
         };
-        if ord != Ordering::Less {
-            let mut v = a * i128::from(fc[i]);
-            if ord == Ordering::Equal {
-                v -= b * i128::from(gc[j]);
-                j += 1;
-                if j < g.len() {
-                    order::mul_into(&mut lg, mg, g.mono(j));
-                }
-            }
-            if v != 0 {
-                out.coefs.push(fit(v)?);
-                out.exps.extend_from_slice(&lf);
-            }
-            i += 1;
-            if i < f.len() {
-                order::mul_into(&mut lf, mf, f.mono(i));
-            }
-        } else {
-            out.coefs.push(fit(-b * i128::from(gc[j]))?);
-            out.exps.extend_from_slice(&lg);
-            j += 1;
-            if j < g.len() {
-                order::mul_into(&mut lg, mg, g.mono(j));
-            }
+        if v == 0 && !matches!(side, Side::G(_)) {
+            return true;
         }
-    }
-    Some(out)
+        let Some(c) = fit(v) else { return false };
+        out.coefs.push(c);
+        out.exps.extend_from_slice(m);
+        true
+    });
+    done.then_some(out)
 }
 
 impl Work {
