@@ -90,9 +90,7 @@ pub fn plan_actions(spec: &ModuleSpec, full: usize) -> Result<Vec<ActionKernel>,
     let mut out = Vec::new();
     for v in (0..spec.types.len()).filter(|&v| is_versor_type(spec, full, v)) {
         for x in (0..spec.types.len()).filter(|&x| x != full) {
-            let pair = [Convention::Sandwich, Convention::Apply].map(|c| action(spec, c, v, x));
-            let [s, a] = pair;
-            let (s, a) = (s?, a?);
+            let (s, a) = (action(spec, Convention::Sandwich, v, x)?, action(spec, Convention::Apply, v, x)?);
             if keeps_operand(spec, &s) && keeps_operand(spec, &a) {
                 out.extend([s, a]);
             }

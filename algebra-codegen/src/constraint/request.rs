@@ -5,7 +5,7 @@
 use super::{ConstrainedKernel, ConstraintError, ConstraintKind, KernelOp, Request, smallest_type, table};
 use crate::ModuleSpec;
 use crate::plan::Plan;
-use crate::versor::is_versor_type;
+use crate::versor::Convention;
 
 /// The constrained kernels a module's declared constraints call for: the unit actions of a
 /// `where unit` versor type on every operand it has a fused kernel for (the plan's actions;
@@ -24,19 +24,18 @@ use crate::versor::is_versor_type;
 /// assert_eq!(r.len(), 5); // sandwich and apply on Motor and Line, the square of Line
 /// ```
 pub fn requests(plan: &Plan) -> Vec<Request> {
-    let (spec, full) = (&plan.spec, plan.full);
-    let fused = |v: usize, x: usize| plan.actions.iter().any(|k| (k.versor, k.operand) == (v, x));
     let mut out = Vec::new();
-    for (v, t) in spec.types.iter().enumerate() {
+    for (v, t) in plan.spec.types.iter().enumerate() {
         match t.constraint {
-            Some(ConstraintKind::Unit) if is_versor_type(spec, full, v) => {
-                for right in (0..spec.types.len()).filter(|&x| x != full && fused(v, x)) {
+            Some(ConstraintKind::Unit) => {
+                // the fused pairs of `v`, one per operand (each is planned in both conventions)
+                for k in plan.actions.iter().filter(|k| k.versor == v && k.convention == Convention::Sandwich) {
                     for op in [KernelOp::Sandwich, KernelOp::Apply] {
-                        out.push(Request { op, left: v, right });
+                        out.push(Request { op, left: v, right: k.operand });
                     }
                 }
             }
-            Some(ConstraintKind::Null | ConstraintKind::Simple) if v != full => {
+            Some(ConstraintKind::Null | ConstraintKind::Simple) if v != plan.full => {
                 out.push(Request { op: KernelOp::Square, left: v, right: v });
             }
             _ => {}
