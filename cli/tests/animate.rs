@@ -8,7 +8,7 @@
 //! installs Debian's `chromium` and runs it): two frames differ where the body moved and on
 //! the speed panel, and agree on the title.
 
-mod common;
+use crate::common;
 
 use common::{TempFile, fails, ok};
 

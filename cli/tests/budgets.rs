@@ -2,7 +2,7 @@
 //! too long and a `poly` product with too many term products are one `error:` line (exit 2)
 //! naming `GAM_WORK_BUDGET`, before any of the work; raising the budget lets them run.
 
-mod common;
+use crate::common;
 
 use common::{TempFile, fails, gam, ok, one_error_line};
 use std::process::Command;

@@ -1,7 +1,7 @@
 //! End-to-end tests of the `gam` binary: the contract's examples (shared/cli.md), every
 //! scalar type, tables, and the error rules (one `error:` line, exit 2 or 1, empty stdout).
 
-mod common;
+use crate::common;
 
 use common::{TempFile, fails, gam, ok};
 use serde_json::Value;

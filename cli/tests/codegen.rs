@@ -2,7 +2,7 @@
 //! compile and check against the runtime), the stats are the documented counts, and bad type
 //! lists are usage errors.
 
-mod common;
+use crate::common;
 
 use common::gam;
 

@@ -2,7 +2,7 @@
 //! the key), never silently last-wins (issue 30, item 4): in `gam pose`, in every spec of
 //! `gam interpolate`, `trajectory`, `sample`, `plot` and `gam hermite`.
 
-mod common;
+use crate::common;
 
 use common::{CONTRACT_EXAMPLE, TempFile, fails};
 

@@ -2,7 +2,7 @@
 //! standard output is an error. References: mpmath (tests/fixtures/mpmath/edge_scale.json,
 //! whose values are quoted here) and hand computations.
 
-mod common;
+use crate::common;
 
 use common::{TempFile, fails, gam, ok};
 use serde_json::Value;

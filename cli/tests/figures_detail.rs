@@ -5,7 +5,7 @@
 //! cube) and Fig. 5a's parabola drawn as the moving body, each checked in the data
 //! (`gam figures --json`) against Rodrigues matrices of the key poses, and counted in the SVGs.
 
-mod common;
+use crate::common;
 
 use common::{ok, rodrigues};
 use serde_json::Value;

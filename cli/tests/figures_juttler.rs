@@ -5,7 +5,7 @@
 //! projective method (Fig. 2) makes one extra turn that the elliptic one (Fig. 1) does not;
 //! the kinematic surface's iso-curves at `v` fixed are the trajectories of `x(v)`.
 
-mod common;
+use crate::common;
 
 use common::{TempFile, ok, rodrigues};
 use serde_json::Value;

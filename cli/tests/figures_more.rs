@@ -3,7 +3,7 @@
 //! end conditions of Sec. 5.1/5.2, the Jaklič path `c(t)` and its derivative, the helix
 //! geometry of W-L Sec. 4.1), and the committed SVGs equal to what `gam figures` writes.
 
-mod common;
+use crate::common;
 
 use common::ok;
 use serde_json::Value;

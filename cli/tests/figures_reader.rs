@@ -12,7 +12,7 @@
 //!
 //! Equal scales in the 3-D view are checked where the box is built (`plot::axes3d`'s tests).
 
-mod common;
+use crate::common;
 
 use common::{TempFile, ok};
 use std::collections::BTreeMap;

@@ -9,7 +9,7 @@
 //! `inf`/`NaN` printed). The number of runs per command is printed (`--nocapture`) and in
 //! docs/robustness.md.
 
-mod common;
+use crate::common;
 
 use algebra_core::rational::{Q, parse_rational, rational_to_f64};
 use algebra_core::test_support::Xorshift;

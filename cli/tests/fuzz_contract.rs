@@ -7,7 +7,7 @@
 //! profile, which keeps integer-overflow checks on (asserted below), so an overflow in a parser
 //! would show up here as a panic.
 
-mod common;
+use crate::common;
 
 use common::{TempFile, run_contract as run};
 

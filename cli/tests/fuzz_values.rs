@@ -11,7 +11,7 @@
 //!
 //! The counts of inputs and checks are printed (`--nocapture`) and in docs/robustness.md.
 
-mod common;
+use crate::common;
 
 use algebra_core::test_support::Xorshift;
 use common::{TempFile, matrix, max_diff, rodrigues};

@@ -3,7 +3,7 @@
 //! JSON shape (keys, basis order, zeros omitted, shortest round-trip f64 strings, identical to
 //! the library), the human form, and the error rules (one `error:` line, exit 2 or 1).
 
-mod common;
+use crate::common;
 
 use common::{CONTRACT_EXAMPLE, TempFile, fails, ok};
 use motion::hermite::hermite_segment;

@@ -4,7 +4,7 @@
 //! library), given velocities reproduced at the key poses, sign alignment, the error contract,
 //! and `gam sample` / `gam plot` accepting the spec.
 
-mod common;
+use crate::common;
 
 use common::{TempFile, fails, matrix, max_diff, ok, rodrigues};
 use serde_json::Value;

@@ -4,7 +4,7 @@
 //! series exponential of the averaged hexanions, point velocities against central differences
 //! of the sampled points, and the error contract (exit 2).
 
-mod common;
+use crate::common;
 
 use common::{TempFile, assert_velocities_match_differences, fails, max_diff, ok, rodrigues};
 use serde_json::Value;

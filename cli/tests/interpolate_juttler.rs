@@ -9,7 +9,7 @@
 //! C1), given spline velocities reproduced, TRT's split and singular system, and the error
 //! contract.
 
-mod common;
+use crate::common;
 
 use common::{
     TempFile, assert_velocities_match_differences, exact_c1_segments, fails, max_diff, ok, rodrigues, rodrigues_wxyz,

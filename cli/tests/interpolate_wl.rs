@@ -4,7 +4,7 @@
 //! here, not by the library), point velocities against central differences of the sampled
 //! points, and the error contract (exit 2 for keys W-L does not use and too few poses).
 
-mod common;
+use crate::common;
 
 use common::{TempFile, assert_velocities_match_differences, fails, ok, rodrigues};
 use serde_json::Value;

@@ -4,7 +4,7 @@
 //! of series, every method of `gam interpolate` plotted in every view, overlays, and the
 //! error rules.
 
-mod common;
+use crate::common;
 
 use common::{TempFile, fails, ok, rodrigues};
 use serde_json::Value;

@@ -3,7 +3,7 @@
 //! (DejaVu Sans, bundled; no system font) sit in the title's box, `--format` overrides
 //! the extension, and an unwritable path is one `error:` line with exit status 2.
 
-mod common;
+use crate::common;
 
 use common::{TempFile, fails, ok};
 

@@ -5,7 +5,7 @@
 //! the `dual_quaternion`/`hexanion` pose forms and `segments[].dual_quaternions` in
 //! `gam interpolate`.
 
-mod common;
+use crate::common;
 
 use common::{TempFile, fails, ok};
 use serde_json::Value;

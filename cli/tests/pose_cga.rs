@@ -2,7 +2,7 @@
 //! computed by `gam eval --algebra cga` (the runtime algebra, not the motion library), against
 //! `F(M x)` with `M` the Rodrigues matrix built here; `R rev(R) = 1`; the contract's sign rule.
 
-mod common;
+use crate::common;
 
 use common::{ok, rodrigues};
 use serde_json::Value;

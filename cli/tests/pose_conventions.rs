@@ -4,7 +4,7 @@
 //! quaternion `[pw, px, py, pz, qw, qx, qy, qz]` with the dual part `1/2 t p`
 //! (docs/conventions.md, "Other tools' conventions").
 
-mod common;
+use crate::common;
 
 use serde_json::Value;
 

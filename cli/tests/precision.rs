@@ -11,7 +11,7 @@
 //! - refusals: methods and pose forms that need square roots or transcendental functions exit 2
 //!   naming the method or the key.
 
-mod common;
+use crate::common;
 
 use algebra_core::rational::{Q, parse_rational, rational_to_f64};
 use common::{TempFile, exact, exact_c1_segments, fails, ok};

@@ -5,7 +5,7 @@
 //! line; never a panic, a signal or a timeout (`common::run_contract`). Failing inputs are
 //! shrunk by proptest to a minimal expression or spec.
 
-mod common;
+use crate::common;
 
 use common::{TempFile, run_contract};
 use proptest::prelude::*;

@@ -1,6 +1,6 @@
 //! `gam prove` and the relations / `diff` of `gam eval` (shared/cli.md, Wave 2 contract).
 
-mod common;
+use crate::common;
 use common::{fails, gam, ok, one_error_line};
 use serde_json::Value;
 

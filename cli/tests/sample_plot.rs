@@ -4,7 +4,7 @@
 //! `body_point`, the sample-count rules, the SVG, and the error rules (one `error:` line,
 //! exit 2).
 
-mod common;
+use crate::common;
 
 use common::{CONTRACT_EXAMPLE, TempFile, fails, ok};
 use motion::hermite::hermite_segment;

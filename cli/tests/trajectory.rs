@@ -4,7 +4,7 @@
 //! the degree bound 2n; and the error contract (methods whose motions are not rational, a bad
 //! `--point`).
 
-mod common;
+use crate::common;
 
 use common::{TempFile, fails, ok};
 use serde_json::Value;

@@ -1,6 +1,6 @@
 //! `gam verify`: the papers' statements as a report (JSON list or text table), filtered.
 
-mod common;
+use crate::common;
 
 use common::{fails, ok};
 use serde_json::Value;

@@ -3,7 +3,7 @@
 //! type `f64`, for a four-lane test type (remainders that are not a multiple of the width),
 //! over exact rationals, and for the parallel variants; bad input gives typed errors.
 
-mod common;
+use crate::common;
 
 use algebra_core::rational::{Q, q, ratio};
 use algebra_core::{Field, Ring};

@@ -4,7 +4,7 @@
 //! (de Boor against Cox-de Boor basis functions, Bezier knots, knot validation) and piecewise
 //! motions.
 
-mod common;
+use crate::common;
 
 use algebra_core::Real;
 use algebra_core::rational::{Q, q, ratio};

@@ -2,7 +2,7 @@
 //! off unit exponentially: 4e-7 at degree 20, failure from about 40), and agree with the plain
 //! definition (de Casteljau with `Pose::slerp`) evaluated at 256 bits.
 
-mod common;
+use crate::common;
 
 use algebra_core::{MpFloat, PrecisionGuard, Real};
 use common::{Xorshift, centered};

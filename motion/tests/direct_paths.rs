@@ -6,7 +6,7 @@
 //! non-unit poses; large translations): the same operation in 256-bit MPFR (which takes the
 //! careful path), the generated `cga_null` sandwich, and exact rationals.
 
-mod common;
+use crate::common;
 
 use algebra_core::rational::{Q, ratio};
 use algebra_core::test_support::Xorshift;

@@ -4,7 +4,7 @@
 //! `1 + e12` about e3) and the same call at unit scale (a power-of-ten rescaling is not exact
 //! in binary, so it exercises more than the code's power-of-two path).
 
-mod common;
+use crate::common;
 
 use common::{Xorshift, centered};
 use motion::{MotionError, Pose};

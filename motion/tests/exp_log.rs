@@ -4,7 +4,7 @@
 //! `Multivector::exp`/`log` (a different algorithm: scaling and squaring, Denman–Beavers);
 //! derivatives from dual numbers through the same code; typed errors, never NaN.
 
-mod common;
+use crate::common;
 
 use algebra_core::{Jet, MpFloat, PrecisionGuard, Real, Ring};
 use common::*;

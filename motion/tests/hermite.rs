@@ -4,7 +4,7 @@
 //! derivatives of a local Bernstein sum or de Casteljau tableau; per-pose (C1) and
 //! per-segment (G1) shapes; non-uniform parameters; higher degrees; errors; 256-bit floats.
 
-mod common;
+use crate::common;
 
 use algebra_core::{MpFloat, PrecisionGuard, Real};
 use common::{bernstein, de_casteljau, diff, size, value_and_derivative};

@@ -1,7 +1,7 @@
 //! Powers, slerp (eq. 15) and the additive interpolation (eq. 17): endpoints, constant speed,
 //! eq. (16) and its hidden hypothesis, exact additive motions over Q.
 
-mod common;
+use crate::common;
 
 use algebra_core::rational::{Q, q, ratio};
 use algebra_core::{MpFloat, PrecisionGuard, Ring};

@@ -6,7 +6,7 @@
 //! de Casteljau tableau (multiplicative): exact for additive segments at both ends, and for
 //! multiplicative ones exact at the start and exact in ν (only) at the end.
 
-mod common;
+use crate::common;
 
 use algebra_core::Ring;
 use algebra_core::rational::{Q, q, ratio};

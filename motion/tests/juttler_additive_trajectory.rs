@@ -11,8 +11,7 @@ use motion::juttler::{QMotion, RationalMotion};
 use motion::repr::dual_quaternion::to_dual_quaternion_exact;
 use motion::{AdditiveBezier, Motion, Pose};
 
-mod common;
-mod juttler_common;
+use crate::juttler_common;
 use juttler_common::worst_at_1000;
 
 /// A cubic through general even elements: non-unit, with `e123∞` parts (off the Study quadric).

@@ -3,8 +3,7 @@
 //! the motion and with the (higher-degree) trajectories of the Q-motion (36), the matrix (35)
 //! against the trajectory; a general w0*; f64 through the elliptic method.
 
-mod common;
-mod juttler_common;
+use crate::juttler_common;
 
 use algebra_core::rational::{Q, q, ratio};
 use gam_algebras::dual_quaternion::Quaternion;

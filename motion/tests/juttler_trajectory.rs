@@ -9,8 +9,7 @@ use gam_algebras::dual_quaternion::Quaternion;
 use motion::Motion;
 use motion::juttler::{JuttlerError, QMotion, RationalBezier};
 
-mod common;
-mod juttler_common;
+use crate::juttler_common;
 use juttler_common::worst_at_1000;
 
 fn quat(c: [i64; 4]) -> Quaternion<Q> {

@@ -2,11 +2,10 @@
 //! split l1 + l2 = m - 1, independence of the moving origin (TRT) against the dependence of
 //! the TR method (Prop. 4), both exactly on a random rational instance; typed errors.
 
+use crate::juttler_common;
 use algebra_core::rational::{q, ratio};
 use gam_algebras::DualQuaternion;
 use gam_algebras::dual_quaternion::Quaternion;
-mod common;
-mod juttler_common;
 
 use juttler_common::{f64_poses, instance, position, rot_of};
 use motion::juttler::JuttlerError;

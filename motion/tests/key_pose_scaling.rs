@@ -3,7 +3,7 @@
 //! through `2·S` key poses failed its C1 check). Reference: the same method on the unit key
 //! poses, compared through the sampled rigid matrices.
 
-mod common;
+use crate::common;
 
 use common::{Xorshift, centered};
 use motion::method::{Method, MethodInput};

@@ -2,7 +2,7 @@
 //! intermediate square (axes, norms, unitize, log), checked against the same computation on
 //! a moderately scaled input (an exact power-of-ten rescaling of the same geometry).
 
-mod common;
+use crate::common;
 
 use motion::{MotionError, Pose};
 

@@ -2,7 +2,7 @@
 //! points and directions against Rodrigues' formula and the G_{0123inf} sandwich, and 4x4
 //! matrices both ways. Exact over rationals wherever no square root is involved.
 
-mod common;
+use crate::common;
 
 use algebra_core::rational::{Q, q, ratio};
 use algebra_core::{MpFloat, PrecisionGuard, Real, Ring};

@@ -5,7 +5,7 @@
 //! form against a second algorithm (the matrix exponential series, the pose exp/log, Rodrigues,
 //! a projection formula); typed errors for bad input.
 
-mod common;
+use crate::common;
 
 use algebra_core::rational::{Q, q};
 use algebra_core::{MpFloat, PrecisionGuard, Real, Ring};

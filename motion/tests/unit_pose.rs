@@ -5,7 +5,7 @@
 //! feature (below, `#[cfg]`). Inputs cross the thresholds of the direct paths (half-angles
 //! near 0, at π/6, near π/2 and past it), with non-unit, huge and tiny poses before `to_unit`.
 
-mod common;
+use crate::common;
 
 use algebra_core::test_support::Xorshift;
 use algebra_core::{MpFloat, PrecisionGuard, Real};

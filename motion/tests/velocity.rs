@@ -5,7 +5,7 @@
 //! and eq. (14) against dual numbers and finite differences, Corollary 3.3, Lemma 3.4,
 //! second derivatives against num-dual's `Dual2_64`, and B-spline continuity at a knot.
 
-mod common;
+use crate::common;
 
 use algebra_core::rational::{Q, q, ratio};
 use algebra_core::{Jet, MpFloat, PrecisionGuard, Ring};

@@ -62,8 +62,12 @@ pub struct TempFile(PathBuf);
 
 impl TempFile {
     /// A path for a file the test (or gam) will write.
+    /// Unique within the run: the test files are modules of one binary whose tests run in
+    /// parallel, and two of them may use the same `name`.
     pub fn empty(name: &str) -> Self {
-        TempFile(std::env::temp_dir().join(format!("gam-cli-test-{}-{name}", std::process::id())))
+        static NEXT: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+        let k = NEXT.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+        TempFile(std::env::temp_dir().join(format!("gam-cli-test-{}-{k}-{name}", std::process::id())))
     }
 
     /// A file holding `text`.
