@@ -249,6 +249,10 @@ enum Command {
         /// Only the statements whose id, label, paper or method contains TEXT (case-insensitive).
         #[arg(long, value_name = "TEXT")]
         filter: Option<String>,
+        /// List the selected statements (id, label, paper, method; with --json also the
+        /// statement and its hypotheses) without running them.
+        #[arg(long)]
+        list: bool,
     },
 }
 
@@ -292,7 +296,8 @@ fn run(command: Command) -> Result<(String, Option<CliError>), CliError> {
             let args = prove::ProveArgs { algebra, basis, assume, timeout, max_basis, max_terms, json, claim };
             return prove::prove(&args);
         }
-        Command::Verify { json, filter } => {
+        Command::Verify { json, filter, list: true } => verify::list(filter.as_deref(), json),
+        Command::Verify { json, filter, list: false } => {
             return verify::verify(filter.as_deref(), json).map(|v| (v.output, v.failure));
         }
     };

@@ -2,7 +2,7 @@
 
 use crate::error::CliError;
 use crate::output::text_table;
-use gam_verify::Report;
+use gam_verify::{Report, Statement};
 use serde_json::{Value, json};
 
 /// The printed report and, when some statement does not hold, the error that sets the exit
@@ -14,9 +14,9 @@ pub struct Verified {
     pub failure: Option<CliError>,
 }
 
-/// Runs every statement whose id, label or paper matches `filter` (case-insensitive
-/// substring; all when `None`).
-pub fn verify(filter: Option<&str>, json: bool) -> Result<Verified, CliError> {
+/// The statements whose id, label, paper or method contains `filter` (case-insensitive; all
+/// when `None`); a filter that matches nothing is a usage error.
+fn select(filter: Option<&str>) -> Result<Vec<&'static Statement>, CliError> {
     let needle = filter.map(str::to_lowercase);
     let selected: Vec<_> = gam_verify::statements()
         .filter(|s| {
@@ -31,6 +31,48 @@ pub fn verify(filter: Option<&str>, json: bool) -> Result<Verified, CliError> {
             filter.unwrap_or_default()
         )));
     }
+    Ok(selected)
+}
+
+/// `gam verify --list`: the statements `filter` selects, without running them: a table of id,
+/// label, paper and method, or (`json`) a list of `{"id", "paper", "label", "statement",
+/// "method", "hypotheses"}`.
+///
+/// ```
+/// let out = gam::verify::list(Some("lemma-2.2-iii"), false)?;
+/// assert!(out.contains("cross2022/lemma-2.2-iii") && out.ends_with("\n1 statement"));
+/// # Ok::<(), gam::error::CliError>(())
+/// ```
+pub fn list(filter: Option<&str>, json: bool) -> Result<String, CliError> {
+    let selected = select(filter)?;
+    if json {
+        let list: Vec<Value> = selected
+            .iter()
+            .map(|s| {
+                json!({
+                    "id": s.id,
+                    "paper": s.paper.key(),
+                    "label": s.label,
+                    "statement": s.statement,
+                    "method": s.method.key(),
+                    "hypotheses": s.hypotheses,
+                })
+            })
+            .collect();
+        return Ok(serde_json::to_string_pretty(&Value::Array(list)).unwrap_or_default());
+    }
+    let mut rows = vec![["id", "label", "paper", "method"].map(String::from).to_vec()];
+    rows.extend(
+        selected.iter().map(|s| vec![s.id.into(), s.label.into(), s.paper.key().into(), s.method.key().into()]),
+    );
+    let n = selected.len();
+    Ok(format!("{}\n{n} statement{}", text_table(&rows), if n == 1 { "" } else { "s" }))
+}
+
+/// Runs every statement whose id, label, paper or method matches `filter` (case-insensitive
+/// substring; all when `None`).
+pub fn verify(filter: Option<&str>, json: bool) -> Result<Verified, CliError> {
+    let selected = select(filter)?;
     // A check that panics is reported as a failed statement; keep stderr for the error line.
     let previous_hook = std::panic::take_hook();
     std::panic::set_hook(Box::new(|_| {}));

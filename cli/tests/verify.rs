@@ -38,11 +38,15 @@ fn notes_carry_the_implicit_hypotheses() {
     assert!(note.contains("counterexample"), "{note}");
 }
 
+/// `--list --json`: the selection, not run (the filters below are the same code as a run's;
+/// `listing_names_what_a_run_runs` checks that the two agree).
+fn listed(filter: &str) -> Vec<Value> {
+    verify_json(&["--list", "--filter", filter])
+}
+
 #[test]
 fn filter_selects_by_id_label_paper_or_method() {
-    let ids = |f: &str| -> Vec<String> {
-        verify_json(&["--filter", f]).iter().map(|e| e["id"].as_str().unwrap().to_string()).collect()
-    };
+    let ids = |f: &str| -> Vec<String> { listed(f).iter().map(|e| e["id"].as_str().unwrap().to_string()).collect() };
     assert_eq!(
         ids("lemma-2.2"),
         [
@@ -55,11 +59,37 @@ fn filter_selects_by_id_label_paper_or_method() {
     );
     assert_eq!(ids("LEMMA 2.2 (II)"), ["cross2022/lemma-2.2-ii"]);
     assert!(ids("juttler").iter().all(|id| id.starts_with("juttler/")));
-    assert!(
-        verify_json(&["--filter", "symbolic"]).iter().all(|e| e["method"].as_str().unwrap().starts_with("symbolic"))
-    );
-    let under = verify_json(&["--filter", "symbolic-under-hypotheses"]);
+    assert!(listed("symbolic").iter().all(|e| e["method"].as_str().unwrap().starts_with("symbolic")));
+    let under = listed("symbolic-under-hypotheses");
     assert!(under.len() >= 3 && under.iter().all(|e| e["method"] == "symbolic-under-hypotheses"));
+    let all = verify_json(&["--list"]);
+    assert_eq!(all.len(), gam_verify::statements().count());
+    assert_eq!(
+        ids("juttler"),
+        all.iter().filter(|e| e["paper"] == "juttler").map(|e| e["id"].as_str().unwrap()).collect::<Vec<_>>()
+    );
+}
+
+/// The listing names exactly what a run with the same filter runs, with the same fields, and
+/// its text form is a table with a count; a filter that matches nothing fails the same way.
+#[test]
+fn listing_names_what_a_run_runs() {
+    for filter in ["lemma-2.2", "eq-1"] {
+        let (list, run) = (listed(filter), verify_json(&["--filter", filter]));
+        assert_eq!(list.len(), run.len(), "{filter}");
+        for (l, r) in list.iter().zip(&run) {
+            for key in ["id", "paper", "label", "statement", "method"] {
+                assert_eq!(l[key], r[key], "{filter}: {key}");
+            }
+            assert!(l["hypotheses"].is_string() && l.get("holds").is_none(), "{l}");
+        }
+    }
+    let out = ok(&["verify", "--list", "--filter", "lemma-2.2"]);
+    assert!(out.lines().next().unwrap().starts_with("id "), "{out}");
+    assert_eq!(out.lines().filter(|l| l.starts_with("cross2022/lemma-2.2-")).count(), 5, "{out}");
+    assert_eq!(out.lines().last(), Some("5 statements"), "{out}");
+    let line = fails(&["verify", "--list", "--filter", "lemma-99"], 2);
+    assert!(line.contains("lemma-99"), "{line}");
 }
 
 #[test]
