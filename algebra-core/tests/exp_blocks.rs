@@ -3,7 +3,7 @@
 //! series) at 256 bits on the same (exactly representable) argument. Before the block
 //! decomposition these arguments were refused as ill-conditioned.
 
-mod common;
+use crate::common;
 
 use algebra_core::{Algebra, Basis, F64_GENERAL_BOUND, Metric, MpFloat, Multivector, PrecisionGuard, Real};
 use common::Xorshift;

@@ -7,7 +7,7 @@
 //! maps basis name -> exact rational, all in the file's basis. Every key of every case is
 //! compared exactly, in that basis, and every coefficient of the result (missing = 0).
 
-mod common;
+use crate::common;
 
 use algebra_core::rational::{Q, parse_rational, q};
 use algebra_core::{Algebra, Basis};

@@ -2,7 +2,7 @@
 //! (fixture: tests/fixtures/sympy/groebner.json, written by the committed script
 //! tests/fixtures/sympy/groebner.py).
 
-mod sympy_fixture;
+use crate::sympy_fixture;
 
 use algebra_core::ideal::{Budget, MonomialOrder, PolyRing};
 use algebra_core::{Poly, Ring};

@@ -5,7 +5,7 @@
 //! regressions for the exp scaling bug and for tiny exact pivots.
 #![cfg(feature = "rug")]
 
-mod common;
+use crate::common;
 
 use algebra_core::rational::{Q, parse_rational, ratio};
 use algebra_core::{

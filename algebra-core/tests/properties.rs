@@ -6,7 +6,7 @@
 //! a value computed here from the Gram matrix or the combinatorial rule); none compares the
 //! library with a value it produced itself.
 
-mod common;
+use crate::common;
 
 use algebra_core::rational::{Q, q, ratio};
 use algebra_core::{Basis, Product};

@@ -13,7 +13,7 @@
 //!    `F_T = Σ_S det(P[T, S]) E_S` (minors), and product-basis elements by multiplying the
 //!    generators `e_j = Σ_i (P^{-1})_ji f_i` left to right.
 
-mod common;
+use crate::common;
 
 use algebra_core::rational::{Q, q, ratio};
 use algebra_core::{Algebra, Basis, Metric, Multivector, Product};
@@ -606,7 +606,7 @@ fn eight_generators_build_all_tables() {
 /// large: about 1.5 minutes for `build_all` (most of it in the product-basis tables obtained
 /// by conjugating the blade ones), so it is ignored by default.
 #[test]
-#[ignore = "slow (minutes): cargo test --release -p algebra-core --test reference -- --ignored --nocapture"]
+#[ignore = "slow (minutes): cargo test --release -p algebra-core --test all -- --ignored --nocapture reference::"]
 fn eight_generators_dense_build_all_tables() {
     let mut rng = Lcg(0x5eed_0008);
     let g = dense_8_generator_metric(&mut rng);

@@ -2,7 +2,7 @@
 //! the same action on points, round trips both ways, and composition order
 //! (`U * V` applies `U` first, nalgebra's `v * u` applies `u` first).
 //!
-//! Run with `cargo test -p motion --features nalgebra --test nalgebra_conv`.
+//! Run with `cargo test -p motion --features nalgebra --test all -- nalgebra_conv::`.
 #![cfg(feature = "nalgebra")]
 
 use algebra_core::test_support::Xorshift;
