@@ -6,13 +6,14 @@
 # Prints one line per run and appends it to $OUT (default target/build-times.txt).
 # Needs the README's prerequisites (m4). Takes about an hour on a 2-core machine; never run in
 # CI. Give it the machine: other builds running beside it inflate every number.
-# Usage: tests/bench/build-times.sh [BASE] [ROUNDS]
+# Usage: tests/bench/build-times.sh [BASE] [ROUNDS]; COMMANDS=test (or main) times one command.
 set -eu
 cd "$(dirname "$0")/../.."
 repo=$PWD
 base=${1:-39613c5}
 rounds=${2:-2}
 out=${OUT:-$repo/target/build-times.txt}
+commands=${COMMANDS:-main test}
 work=$(mktemp -d)
 mkdir -p "$(dirname "$out")"
 git clone -q "$repo" "$work/base" && git -C "$work/base" checkout -q "$base"
@@ -37,12 +38,16 @@ run() { # run LABEL DIR COMMAND...
 }
 i=1
 while [ "$i" -le "$rounds" ]; do
-    # shellcheck disable=SC2086 # the command's words are split on purpose
-    run "base-main-$i" "$work/base" $base_main
-    # shellcheck disable=SC2086
-    run "head-main-$i" "$work/head" $head_main
-    run "base-test-$i" "$work/base" cargo test --workspace
-    run "head-test-$i" "$work/head" cargo test --workspace
+    case " $commands " in *" main "*)
+        # shellcheck disable=SC2086 # the command's words are split on purpose
+        run "base-main-$i" "$work/base" $base_main
+        # shellcheck disable=SC2086
+        run "head-main-$i" "$work/head" $head_main
+    esac
+    case " $commands " in *" test "*)
+        run "base-test-$i" "$work/base" cargo test --workspace
+        run "head-test-$i" "$work/head" cargo test --workspace
+    esac
     i=$((i + 1))
 done
 rm -rf "$work"
