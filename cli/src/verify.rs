@@ -49,14 +49,9 @@ pub fn list(filter: Option<&str>, json: bool) -> Result<String, CliError> {
         let list: Vec<Value> = selected
             .iter()
             .map(|s| {
-                json!({
-                    "id": s.id,
-                    "paper": s.paper.key(),
-                    "label": s.label,
-                    "statement": s.statement,
-                    "method": s.method.key(),
-                    "hypotheses": s.hypotheses,
-                })
+                let mut entry = identity(s);
+                entry.insert("hypotheses".into(), s.hypotheses.into());
+                Value::Object(entry)
             })
             .collect();
         return Ok(serde_json::to_string_pretty(&Value::Array(list)).unwrap_or_default());
@@ -97,6 +92,18 @@ fn note(r: &Report) -> String {
     parts.join("; ")
 }
 
+/// The fields that name a statement, first in both JSON forms (the listing and the report).
+fn identity(s: &Statement) -> serde_json::Map<String, Value> {
+    let fields = json!({
+        "id": s.id,
+        "paper": s.paper.key(),
+        "label": s.label,
+        "statement": s.statement,
+        "method": s.method.key(),
+    });
+    fields.as_object().cloned().unwrap_or_default()
+}
+
 fn millis(r: &Report) -> f64 {
     r.elapsed.as_secs_f64() * 1e3
 }
@@ -105,19 +112,20 @@ fn json_report(reports: &[Report]) -> String {
     let list: Vec<Value> = reports
         .iter()
         .map(|r| {
-            let s = r.statement;
-            json!({
-                "id": s.id,
-                "paper": s.paper.key(),
-                "label": s.label,
-                "statement": s.statement,
-                "method": s.method.key(),
-                "holds": r.outcome.holds(),
-                "checks": r.outcome.checks,
-                "failures": r.outcome.failures,
-                "note": note(r),
-                "time_ms": (millis(r) * 1e3).round() / 1e3,
-            })
+            let mut entry = identity(r.statement);
+            entry.extend(
+                json!({
+                    "holds": r.outcome.holds(),
+                    "checks": r.outcome.checks,
+                    "failures": r.outcome.failures,
+                    "note": note(r),
+                    "time_ms": (millis(r) * 1e3).round() / 1e3,
+                })
+                .as_object()
+                .cloned()
+                .unwrap_or_default(),
+            );
+            Value::Object(entry)
         })
         .collect();
     serde_json::to_string_pretty(&Value::Array(list)).unwrap_or_default()
