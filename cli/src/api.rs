@@ -111,6 +111,18 @@ pub fn verify(filter: Option<&str>) -> Result<Value, CliError> {
     value(&crate::verify::verify(filter, true)?.output)
 }
 
+/// `gam verify --json --list [--filter TEXT]`: the selected statements (id, paper, label,
+/// statement, method, hypotheses) without running them.
+///
+/// ```
+/// let v = gam::api::verify_list(Some("lemma-2.2"))?;
+/// assert_eq!(v.as_array().map(Vec::len), Some(5));
+/// # Ok::<(), gam::api::CliError>(())
+/// ```
+pub fn verify_list(filter: Option<&str>) -> Result<Value, CliError> {
+    value(&crate::verify::list(filter, true)?)
+}
+
 /// `gam pose --json POSE_JSON`, with the pose object as a value (named `POSE_JSON` in
 /// messages, as the command names an inline pose).
 ///

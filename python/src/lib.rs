@@ -90,11 +90,12 @@ fn prove<'py>(
     mirror(py, || api::prove(claim, algebra, basis, &assume, timeout))
 }
 
-/// `gam verify --json`: the report on the papers' statements (all, or those matching `filter`).
+/// `gam verify --json`: the report on the papers' statements (all, or those matching `filter`);
+/// with `list=True` (`gam verify --json --list`) the selected statements, not run.
 #[pyfunction]
-#[pyo3(signature = (filter = None))]
-fn verify<'py>(py: Python<'py>, filter: Option<&str>) -> PyResult<Bound<'py, PyAny>> {
-    mirror(py, || api::verify(filter))
+#[pyo3(signature = (filter = None, list = false))]
+fn verify<'py>(py: Python<'py>, filter: Option<&str>, list: bool) -> PyResult<Bound<'py, PyAny>> {
+    if list { mirror(py, || api::verify_list(filter)) } else { mirror(py, || api::verify(filter)) }
 }
 
 /// `gam pose --json [--scalar S]`: one pose object (any form of the contract) in every

@@ -105,6 +105,14 @@ def test_verify(cli):
     assert all(g["holds"] for g in got)
 
 
+def test_verify_list(cli):
+    want = cli.json("verify", "--json", "--list", "--filter", "lemma-2.2")
+    got = gam.verify(filter="lemma-2.2", list=True)
+    assert got == want
+    assert [g["id"] for g in got] == [r["id"] for r in gam.verify(filter="lemma-2.2")]
+    assert all("holds" not in g and isinstance(g["hypotheses"], str) for g in got)
+
+
 POSES = [
     {"position": [1, 2, 3], "axis": [0, 0, 1], "angle": 1.5707963267948966},
     {"position": [1, 1, 0], "quaternion": [0.5, 0.5, -0.5, 0.5]},
