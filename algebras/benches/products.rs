@@ -24,7 +24,9 @@
 //!   `Isometry3::transform_point`,
 //!   and a batch of points by one pose; closed-form `g123inf` `Bivector::exp` and `Motor::log`
 //!   relative to `Motor * Motor`, and `cga_null` `PoseBivector::exp` and `Motor::log_unit`
-//!   relative to the `cga_null` motor product.
+//!   relative to the `cga_null` motor product. The `g3` action group also times two
+//!   hand-written forms of the rotor action (the 3x3 matrix, two cross products) as
+//!   references for the generated one (checked against it at start-up).
 //!
 //! Run with `cargo bench -p gam-algebras --bench products`.
 #![allow(missing_docs)]
@@ -339,6 +341,44 @@ pairs!(pga_motor_product, pga_motors, pga_motors, |x, y| x * y);
 pairs!(pga_sandwich_point, pga_motors, pga_points, |s, p| s.sandwich(p));
 pairs!(g3_rotor_product, g3_rotors, g3_rotors, |x, y| x * y);
 pairs!(g3_sandwich_vector, g3_rotors, g3_vectors, |s, p| s.sandwich(p));
+/// Reference rows for issue 31 (target B), hand-written, not generated: `rev(R) x R` for a
+/// rotor `R = w + B` by the 3x3 matrix of `R`'s quadratic products (19 multiplications).
+#[inline(always)]
+fn g3_matrix_form(s: &g3::Rotor<f64>, x: &g3::Vector<f64>) -> g3::Vector<f64> {
+    let [w, e12, e13, e23] = s.to_array();
+    let (v0, v1, v2) = (e23, -e13, e12);
+    let x = x.to_array();
+    let (t0, t1, t2) = (v0 + v0, v1 + v1, v2 + v2);
+    let (ww, d0, d1, d2) = (w * w, v0 * v0, v1 * v1, v2 * v2);
+    let (a01, a02, a12) = (t0 * v1, t0 * v2, t1 * v2);
+    let (w0, w1, w2) = (w * t0, w * t1, w * t2);
+    let m = [
+        [(ww + d0) - (d1 + d2), a01 - w2, a02 + w1],
+        [a01 + w2, (ww + d1) - (d0 + d2), a12 - w0],
+        [a02 - w1, a12 + w0, (ww + d2) - (d0 + d1)],
+    ];
+    g3::Vector::from_array(std::array::from_fn(|i| m[i][0] * x[0] + m[i][1] * x[1] + m[i][2] * x[2]))
+}
+/// The same action by two cross products, as `motion`'s point action: with `v = (B23, -B13,
+/// B12)`, `m = v × x`, `rev(R) x R = α x + 2(w m + v × m)` (22 multiplications).
+#[inline(always)]
+fn g3_cross_form(s: &g3::Rotor<f64>, x: &g3::Vector<f64>) -> g3::Vector<f64> {
+    let [w, e12, e13, e23] = s.to_array();
+    let v = [e23, -e13, e12];
+    let x = x.to_array();
+    let cr =
+        |a: &[f64; 3], b: &[f64; 3]| [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+    let alpha = (w * w + v[0] * v[0]) + (v[1] * v[1] + v[2] * v[2]);
+    let m = cr(&v, &x);
+    let vm = cr(&v, &m);
+    g3::Vector::from_array(std::array::from_fn(|i| {
+        let h = w * m[i] + vm[i];
+        alpha * x[i] + (h + h)
+    }))
+}
+pairs!(g3_sandwich_matrix, g3_rotors, g3_vectors, |s, p| g3_matrix_form(s, p));
+pairs!(g3_sandwich_cross, g3_rotors, g3_vectors, |s, p| g3_cross_form(s, p));
+
 pairs!(cn_apply_point, cn_motors, cn_points, |s, p| s.apply(p));
 
 fn motor_exp(d: &Data, n: usize) {
@@ -523,7 +563,12 @@ const VERSOR_GROUPS: [(&str, &[(&str, Kernel)]); 11] = [
     ),
     (
         "fused action / motor product: g3 (rotors on vectors)",
-        &[("g3 Rotor * Rotor", g3_rotor_product), ("g3 Rotor.sandwich(Vector)", g3_sandwich_vector)],
+        &[
+            ("g3 Rotor * Rotor", g3_rotor_product),
+            ("g3 Rotor.sandwich(Vector)", g3_sandwich_vector),
+            ("g3 matrix form", g3_sandwich_matrix),
+            ("g3 cross form", g3_sandwich_cross),
+        ],
     ),
     (
         "conformal point (cga_null, f64)",
@@ -609,6 +654,19 @@ criterion_group! {
 }
 
 fn main() {
+    // the hand-written g3 reference forms agree with the generated sandwich
+    {
+        let mut rng = Xorshift(0x1234_5678_9abc_def1);
+        for _ in 0..100 {
+            let c: Vec<f64> = (0..7).map(|_| rng.symmetric()).collect();
+            let r = g3::Rotor::from_array([c[0], c[1], c[2], c[3]]);
+            let x = g3::Vector::from_array([c[4], c[5], c[6]]);
+            let (a, b, e) =
+                (r.sandwich(&x).to_array(), g3_matrix_form(&r, &x).to_array(), g3_cross_form(&r, &x).to_array());
+            let close = a.iter().zip(&b).zip(&e).all(|((a, b), e)| (a - b).abs() < 1e-12 && (a - e).abs() < 1e-12);
+            assert!(close, "g3 hand-written forms disagree with the fused sandwich: {a:?} {b:?} {e:?}");
+        }
+    }
     benches();
     Criterion::default().configure_from_args().final_summary();
     // `cargo bench` passes `--bench`; skip the report when the bench is run as a test.
