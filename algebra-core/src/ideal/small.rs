@@ -133,31 +133,27 @@ fn combine(
     out.coefs.reserve(n - from + g.len());
     let (a, b) = (i128::from(a), i128::from(b));
     let (mut i, mut j) = (from, 1);
+    // `p`'s terms from `run` to `i` are in `out.coefs` but not yet in `out.exps`: a run of
+    // them is copied with one `memcpy` (one per term was an eighth of the docs' example).
+    let mut run = from;
     if j < g.len() {
         order::mul_into(lifted, q, g.mono(j));
     }
-    loop {
-        let ord = match (i < n, j < g.len()) {
-            (true, true) => order.cmp(&p.exps[i * w..(i + 1) * w], lifted),
-            (true, false) => Ordering::Greater,
-            (false, true) => Ordering::Less,
-            (false, false) => break,
-        };
-        match ord {
+    while i < n && j < g.len() {
+        match order.cmp(&p.exps[i * w..(i + 1) * w], lifted) {
             Ordering::Greater => {
                 out.coefs.push(fit(a * i128::from(p.coefs[i]))?);
-                out.exps.extend_from_slice(&p.exps[i * w..(i + 1) * w]);
                 i += 1;
+                continue;
             }
             Ordering::Less => {
+                out.exps.extend_from_slice(&p.exps[run * w..i * w]);
+                run = i;
                 out.coefs.push(fit(-b * i128::from(gc[j]))?);
                 out.exps.extend_from_slice(lifted);
-                j += 1;
-                if j < g.len() {
-                    order::mul_into(lifted, q, g.mono(j));
-                }
             }
             Ordering::Equal => {
+                out.exps.extend_from_slice(&p.exps[run * w..i * w]);
                 // |a·c|, |b·g| < 2^126: the difference fits an i128.
                 let v = fit(a * i128::from(p.coefs[i]) - b * i128::from(gc[j]))?;
                 if v != 0 {
@@ -165,13 +161,31 @@ fn combine(
                     out.exps.extend_from_slice(lifted);
                 }
                 i += 1;
-                j += 1;
-                if j < g.len() {
-                    order::mul_into(lifted, q, g.mono(j));
-                }
+                run = i;
             }
         }
+        j += 1;
+        if j < g.len() {
+            order::mul_into(lifted, q, g.mono(j));
+        }
     }
+    out.exps.extend_from_slice(&p.exps[run * w..i * w]);
+    while j < g.len() {
+        out.coefs.push(fit(-b * i128::from(gc[j]))?);
+        out.exps.extend_from_slice(lifted);
+        j += 1;
+        if j < g.len() {
+            order::mul_into(lifted, q, g.mono(j));
+        }
+    }
+    if a == 1 {
+        out.coefs.extend_from_slice(&p.coefs[i..n]);
+    } else {
+        for &c in &p.coefs[i..n] {
+            out.coefs.push(fit(a * i128::from(c))?);
+        }
+    }
+    out.exps.extend_from_slice(&p.exps[i * w..n * w]);
     Some(())
 }
 
