@@ -208,6 +208,7 @@ impl Plan {
         let mut plan = Plan { spec, declared, full, binary, unary, norm, closed, actions, typed, matrices: Vec::new() };
         fold_signs(&mut plan);
         plan.matrices = super::matrix::plan_matrices(&plan.actions);
+        plan.actions.iter_mut().for_each(super::versor::order_for_pairing);
         Ok(plan)
     }
 

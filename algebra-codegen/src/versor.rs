@@ -99,6 +99,68 @@ pub fn plan_actions(spec: &ModuleSpec, full: usize) -> Result<Vec<ActionKernel>,
     Ok(out)
 }
 
+/// The mean number of terms per output at or below which [`order_for_pairing`] reorders a
+/// kernel's terms (measured, docs/performance.md "Term order of the fused actions").
+const PAIRING_MEAN_TERMS: usize = 6;
+
+/// Reorders the terms of a fused kernel for LLVM's SLP vectoriser, which packs two adjacent
+/// outputs (and two adjacent intermediates) into one SSE register when their expression trees
+/// have the same shape. Only the order of the summands changes, so every value over exact
+/// scalars is the same (and the other languages' kernels, printed from the same terms, keep
+/// adding in the Rust kernel's order).
+///
+/// - Stage 2 (each output a sum of `t[k] · s[a]`): the terms in the order of the versor field
+///   `a` (then `k`), so term `i` of two neighbouring outputs multiplies the same versor
+///   coefficient (one broadcast) by two intermediates, instead of the intermediate-major order
+///   of the tables, where it multiplies one intermediate by two versor fields in no particular
+///   order.
+///   A row that would start with a negative term starts with its first positive one instead
+///   (no negation of the whole sum).
+/// - Stage 1 of `sandwich` (`rev(S) x`, where the reverse scatters the signs): the positive
+///   terms first (stable), so neighbouring intermediates more often have the same tree of
+///   additions and subtractions. `apply`'s stage 1 (`S x`) keeps its order: sorting it was
+///   slower.
+///
+/// Applied only when the outputs have at most [`PAIRING_MEAN_TERMS`] terms on average: the
+/// conformal point actions (4-8 terms) and `g3`'s rotor action (4) got faster, `pga3`'s
+/// point action (4-8, mean 7) and `cga`'s 16-term outputs slower, where the tables' order
+/// already gives neighbouring outputs the same deep trees.
+///
+/// ```
+/// use algebra_core::{Algebra, Basis};
+/// use algebra_codegen::{ModuleSpec, plan::Plan, versor::Convention};
+/// let alg = Algebra::builtin("g3").unwrap();
+/// let types = ModuleSpec::parse_types("Vector=grade1;Rotor=even", &alg).unwrap();
+/// let plan = Plan::new(ModuleSpec::new("g3", alg.metric().clone(), Basis::Blade, types).unwrap()).unwrap();
+/// let k = plan.actions.iter().find(|k| (k.versor, k.operand, k.convention) == (1, 0, Convention::Sandwich)).unwrap();
+/// // each output's terms by the rotor's field: 1, e12, e13, e23
+/// assert!(k.stage2.iter().all(|row| row.iter().map(|t| t.1).collect::<Vec<_>>() == [0, 1, 2, 3]));
+/// // each intermediate's positive terms first
+/// assert!(k.stage1.iter().all(|row| row.windows(2).all(|w| w[0].2.0 > 0 || w[1].2.0 < 0)));
+/// ```
+pub fn order_for_pairing(k: &mut ActionKernel) {
+    let terms: usize = k.stage2.iter().map(Vec::len).sum();
+    if terms > PAIRING_MEAN_TERMS * k.stage2.len() {
+        return;
+    }
+    for row in &mut k.stage2 {
+        row.sort_by_key(|&(t, a, _)| (a, t));
+        // a positive term first, as the chains do, so that the sum is not negated at the end
+        // (the reflections' outputs; the motors' and rotors' start positive already)
+        if row.first().is_some_and(|t| t.2.0 < 0)
+            && let Some(p) = row.iter().position(|t| t.2.0 > 0)
+        {
+            let first = row.remove(p);
+            row.insert(0, first);
+        }
+    }
+    if k.convention == Convention::Sandwich {
+        for row in &mut k.stage1 {
+            row.sort_by_key(|t| t.2.0 < 0);
+        }
+    }
+}
+
 /// Whether a fused kernel is the action of every versor of its type: each component it drops
 /// (outside the operand type) has a grade the operand type does not have, so it vanishes for
 /// every versor, whose action preserves grades. A dropped component of one of the operand's

@@ -625,9 +625,17 @@ const VERSOR_GROUPS: [(&str, &[(&str, Kernel)]); 11] = [
 ];
 
 fn versor_report() {
+    // `GAM_REPORT_ONLY=fused` runs only the groups whose title contains it (A/B runs)
+    let only = std::env::var("GAM_REPORT_ONLY").ok();
     for (title, kernels) in VERSOR_GROUPS {
+        if only.as_ref().is_some_and(|o| !title.contains(o.as_str())) {
+            continue;
+        }
         let kernels: Vec<(&str, Kernel, usize)> = kernels.iter().map(|&(n, k)| (n, k, BATCH)).collect();
         interleaved(title, &kernels, 2000, 1);
+    }
+    if only.is_some() {
+        return;
     }
     interleaved(
         "closed-form rigid motions in R^{4,1} (cga, f64)",
@@ -671,7 +679,9 @@ fn main() {
     Criterion::default().configure_from_args().final_summary();
     // `cargo bench` passes `--bench`; skip the report when the bench is run as a test.
     if std::env::args().any(|a| a == "--bench") {
-        interleaved_report();
+        if std::env::var_os("GAM_REPORT_ONLY").is_none() {
+            interleaved_report();
+        }
         versor_report();
     }
 }

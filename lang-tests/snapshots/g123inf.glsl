@@ -521,22 +521,22 @@ float g123inf_bivector_norm_squared(g123inf_Bivector x) {
 // rev(S) x S for a Motor S and a Motor x, in one fused kernel.
 g123inf_Motor g123inf_motor_sandwich_motor(g123inf_Motor s, g123inf_Motor x) {
     float t0 = ((s.scalar * x.scalar) + (s.e12 * x.e12)) + ((s.e13 * x.e13) + (s.e23 * x.e23));
-    float t1 = ((s.scalar * x.e12) - (s.e12 * x.scalar)) + ((s.e13 * x.e23) - (s.e23 * x.e13));
-    float t2 = ((s.scalar * x.e13) - (s.e12 * x.e23)) - ((s.e13 * x.scalar) - (s.e23 * x.e12));
+    float t1 = ((s.scalar * x.e12) + (s.e13 * x.e23)) - ((s.e12 * x.scalar) + (s.e23 * x.e13));
+    float t2 = ((s.scalar * x.e13) + (s.e23 * x.e12)) - ((s.e12 * x.e23) + (s.e13 * x.scalar));
     float t3 = ((s.scalar * x.e23) + (s.e12 * x.e13)) - ((s.e13 * x.e12) + (s.e23 * x.scalar));
-    float t4 = (((s.scalar * x.e1inf) - (s.e12 * x.e2inf)) - ((s.e13 * x.e3inf) - (s.e23 * x.e123inf))) - (((s.e1inf * x.scalar) - (s.e2inf * x.e12)) - ((s.e3inf * x.e13) - (s.e123inf * x.e23)));
-    float t5 = (((s.scalar * x.e2inf) + (s.e12 * x.e1inf)) - ((s.e13 * x.e123inf) + (s.e23 * x.e3inf))) - (((s.e1inf * x.e12) + (s.e2inf * x.scalar)) - ((s.e3inf * x.e23) + (s.e123inf * x.e13)));
+    float t4 = (((s.scalar * x.e1inf) + (s.e23 * x.e123inf)) + ((s.e2inf * x.e12) + (s.e3inf * x.e13))) - (((s.e12 * x.e2inf) + (s.e13 * x.e3inf)) + ((s.e1inf * x.scalar) + (s.e123inf * x.e23)));
+    float t5 = (((s.scalar * x.e2inf) + (s.e12 * x.e1inf)) + ((s.e3inf * x.e23) + (s.e123inf * x.e13))) - (((s.e13 * x.e123inf) + (s.e23 * x.e3inf)) + ((s.e1inf * x.e12) + (s.e2inf * x.scalar)));
     float t6 = (((s.scalar * x.e3inf) + (s.e12 * x.e123inf)) + ((s.e13 * x.e1inf) + (s.e23 * x.e2inf))) - (((s.e1inf * x.e13) + (s.e2inf * x.e23)) + ((s.e3inf * x.scalar) + (s.e123inf * x.e12)));
-    float t7 = (((s.scalar * x.e123inf) - (s.e12 * x.e3inf)) + ((s.e13 * x.e2inf) - (s.e23 * x.e1inf))) - (((s.e1inf * x.e23) - (s.e2inf * x.e13)) + ((s.e3inf * x.e12) - (s.e123inf * x.scalar)));
+    float t7 = (((s.scalar * x.e123inf) + (s.e13 * x.e2inf)) + ((s.e2inf * x.e13) + (s.e123inf * x.scalar))) - (((s.e12 * x.e3inf) + (s.e23 * x.e1inf)) + ((s.e1inf * x.e23) + (s.e3inf * x.e12)));
     return g123inf_Motor(
         ((t0 * s.scalar) - (t1 * s.e12)) - ((t2 * s.e13) + (t3 * s.e23)),
-        ((t0 * s.e12) + (t1 * s.scalar)) - ((t2 * s.e23) - (t3 * s.e13)),
-        ((t0 * s.e13) + (t1 * s.e23)) + ((t2 * s.scalar) - (t3 * s.e12)),
-        ((t0 * s.e23) - (t1 * s.e13)) + ((t2 * s.e12) + (t3 * s.scalar)),
-        (((t0 * s.e1inf) + (t1 * s.e2inf)) + ((t2 * s.e3inf) - (t3 * s.e123inf))) + (((t4 * s.scalar) - (t5 * s.e12)) - ((t6 * s.e13) + (t7 * s.e23))),
-        (((t0 * s.e2inf) - (t1 * s.e1inf)) + ((t2 * s.e123inf) + (t3 * s.e3inf))) + (((t4 * s.e12) + (t5 * s.scalar)) - ((t6 * s.e23) - (t7 * s.e13))),
-        (((t0 * s.e3inf) - (t1 * s.e123inf)) - ((t2 * s.e1inf) + (t3 * s.e2inf))) + (((t4 * s.e13) + (t5 * s.e23)) + ((t6 * s.scalar) - (t7 * s.e12))),
-        (((t0 * s.e123inf) + (t1 * s.e3inf)) - ((t2 * s.e2inf) - (t3 * s.e1inf))) + (((t4 * s.e23) - (t5 * s.e13)) + ((t6 * s.e12) + (t7 * s.scalar)))
+        ((t1 * s.scalar) + (t0 * s.e12)) + ((t3 * s.e13) - (t2 * s.e23)),
+        ((t2 * s.scalar) - (t3 * s.e12)) + ((t0 * s.e13) + (t1 * s.e23)),
+        ((t3 * s.scalar) + (t2 * s.e12)) - ((t1 * s.e13) - (t0 * s.e23)),
+        (((t4 * s.scalar) - (t5 * s.e12)) - ((t6 * s.e13) + (t7 * s.e23))) + (((t0 * s.e1inf) + (t1 * s.e2inf)) + ((t2 * s.e3inf) - (t3 * s.e123inf))),
+        (((t5 * s.scalar) + (t4 * s.e12)) + ((t7 * s.e13) - (t6 * s.e23))) - (((t1 * s.e1inf) - (t0 * s.e2inf)) - ((t3 * s.e3inf) + (t2 * s.e123inf))),
+        (((t6 * s.scalar) - (t7 * s.e12)) + ((t4 * s.e13) + (t5 * s.e23))) - (((t2 * s.e1inf) + (t3 * s.e2inf)) - ((t0 * s.e3inf) - (t1 * s.e123inf))),
+        (((t7 * s.scalar) + (t6 * s.e12)) - ((t5 * s.e13) - (t4 * s.e23))) + (((t3 * s.e1inf) - (t2 * s.e2inf)) + ((t1 * s.e3inf) + (t0 * s.e123inf)))
     );
 }
 
@@ -545,16 +545,16 @@ g123inf_Vector g123inf_motor_sandwich_vector(g123inf_Motor s, g123inf_Vector x) 
     float t0 = (s.scalar * x.e1) - ((s.e12 * x.e2) + (s.e13 * x.e3));
     float t1 = (s.scalar * x.e2) + ((s.e12 * x.e1) - (s.e23 * x.e3));
     float t2 = (s.scalar * x.e3) + ((s.e13 * x.e1) + (s.e23 * x.e2));
-    float t3 = -((s.e12 * x.e3) - ((s.e13 * x.e2) - (s.e23 * x.e1)));
+    float t3 = (s.e13 * x.e2) - ((s.e12 * x.e3) + (s.e23 * x.e1));
     float t4 = ((s.scalar * x.einf) + (s.e1inf * x.e1)) + ((s.e2inf * x.e2) + (s.e3inf * x.e3));
-    float t5 = -(((s.e12 * x.einf) - (s.e1inf * x.e2)) + ((s.e2inf * x.e1) + (s.e123inf * x.e3)));
-    float t6 = -(((s.e13 * x.einf) - (s.e1inf * x.e3)) + ((s.e3inf * x.e1) - (s.e123inf * x.e2)));
-    float t7 = -(((s.e23 * x.einf) - (s.e2inf * x.e3)) + ((s.e3inf * x.e2) + (s.e123inf * x.e1)));
+    float t5 = ((s.e1inf * x.e2) - (s.e12 * x.einf)) - ((s.e2inf * x.e1) + (s.e123inf * x.e3));
+    float t6 = ((s.e1inf * x.e3) + (s.e123inf * x.e2)) - ((s.e13 * x.einf) + (s.e3inf * x.e1));
+    float t7 = ((s.e2inf * x.e3) - (s.e23 * x.einf)) - ((s.e3inf * x.e2) + (s.e123inf * x.e1));
     return g123inf_Vector(
         ((t0 * s.scalar) - (t1 * s.e12)) - ((t2 * s.e13) + (t3 * s.e23)),
-        ((t0 * s.e12) + (t1 * s.scalar)) - ((t2 * s.e23) - (t3 * s.e13)),
-        ((t0 * s.e13) + (t1 * s.e23)) + ((t2 * s.scalar) - (t3 * s.e12)),
-        (((t0 * s.e1inf) + (t1 * s.e2inf)) + ((t2 * s.e3inf) - (t3 * s.e123inf))) + (((t4 * s.scalar) - (t5 * s.e12)) - ((t6 * s.e13) + (t7 * s.e23)))
+        ((t1 * s.scalar) + (t0 * s.e12)) + ((t3 * s.e13) - (t2 * s.e23)),
+        ((t2 * s.scalar) - (t3 * s.e12)) + ((t0 * s.e13) + (t1 * s.e23)),
+        (((t4 * s.scalar) - (t5 * s.e12)) - ((t6 * s.e13) + (t7 * s.e23))) + (((t0 * s.e1inf) + (t1 * s.e2inf)) + ((t2 * s.e3inf) - (t3 * s.e123inf)))
     );
 }
 
@@ -562,19 +562,19 @@ g123inf_Vector g123inf_motor_sandwich_vector(g123inf_Motor s, g123inf_Vector x) 
 g123inf_Bivector g123inf_motor_sandwich_bivector(g123inf_Motor s, g123inf_Bivector x) {
     float t0 = (s.e12 * x.e12) + ((s.e13 * x.e13) + (s.e23 * x.e23));
     float t1 = (s.scalar * x.e12) + ((s.e13 * x.e23) - (s.e23 * x.e13));
-    float t2 = (s.scalar * x.e13) - ((s.e12 * x.e23) - (s.e23 * x.e12));
+    float t2 = (s.scalar * x.e13) + ((s.e23 * x.e12) - (s.e12 * x.e23));
     float t3 = (s.scalar * x.e23) + ((s.e12 * x.e13) - (s.e13 * x.e12));
-    float t4 = ((s.scalar * x.e1inf) - ((s.e12 * x.e2inf) + (s.e13 * x.e3inf))) + ((s.e2inf * x.e12) + ((s.e3inf * x.e13) - (s.e123inf * x.e23)));
-    float t5 = ((s.scalar * x.e2inf) + ((s.e12 * x.e1inf) - (s.e23 * x.e3inf))) - ((s.e1inf * x.e12) - ((s.e3inf * x.e23) + (s.e123inf * x.e13)));
+    float t4 = ((s.scalar * x.e1inf) + ((s.e2inf * x.e12) + (s.e3inf * x.e13))) - ((s.e12 * x.e2inf) + ((s.e13 * x.e3inf) + (s.e123inf * x.e23)));
+    float t5 = ((s.scalar * x.e2inf) + ((s.e12 * x.e1inf) + (s.e3inf * x.e23))) + ((s.e123inf * x.e13) - ((s.e23 * x.e3inf) + (s.e1inf * x.e12)));
     float t6 = ((s.scalar * x.e3inf) + ((s.e13 * x.e1inf) + (s.e23 * x.e2inf))) - ((s.e1inf * x.e13) + ((s.e2inf * x.e23) + (s.e123inf * x.e12)));
-    float t7 = -(((s.e12 * x.e3inf) - ((s.e13 * x.e2inf) - (s.e23 * x.e1inf))) + ((s.e1inf * x.e23) - ((s.e2inf * x.e13) - (s.e3inf * x.e12))));
+    float t7 = ((s.e13 * x.e2inf) + ((s.e2inf * x.e13) - (s.e12 * x.e3inf))) - ((s.e23 * x.e1inf) + ((s.e1inf * x.e23) + (s.e3inf * x.e12)));
     return g123inf_Bivector(
-        ((t0 * s.e12) + (t1 * s.scalar)) - ((t2 * s.e23) - (t3 * s.e13)),
-        ((t0 * s.e13) + (t1 * s.e23)) + ((t2 * s.scalar) - (t3 * s.e12)),
-        ((t0 * s.e23) - (t1 * s.e13)) + ((t2 * s.e12) + (t3 * s.scalar)),
-        (((t0 * s.e1inf) + (t1 * s.e2inf)) + ((t2 * s.e3inf) - (t3 * s.e123inf))) + (((t4 * s.scalar) - (t5 * s.e12)) - ((t6 * s.e13) + (t7 * s.e23))),
-        (((t0 * s.e2inf) - (t1 * s.e1inf)) + ((t2 * s.e123inf) + (t3 * s.e3inf))) + (((t4 * s.e12) + (t5 * s.scalar)) - ((t6 * s.e23) - (t7 * s.e13))),
-        (((t0 * s.e3inf) - (t1 * s.e123inf)) - ((t2 * s.e1inf) + (t3 * s.e2inf))) + (((t4 * s.e13) + (t5 * s.e23)) + ((t6 * s.scalar) - (t7 * s.e12)))
+        ((t1 * s.scalar) + (t0 * s.e12)) + ((t3 * s.e13) - (t2 * s.e23)),
+        ((t2 * s.scalar) - (t3 * s.e12)) + ((t0 * s.e13) + (t1 * s.e23)),
+        ((t3 * s.scalar) + (t2 * s.e12)) - ((t1 * s.e13) - (t0 * s.e23)),
+        (((t4 * s.scalar) - (t5 * s.e12)) - ((t6 * s.e13) + (t7 * s.e23))) + (((t0 * s.e1inf) + (t1 * s.e2inf)) + ((t2 * s.e3inf) - (t3 * s.e123inf))),
+        (((t5 * s.scalar) + (t4 * s.e12)) + ((t7 * s.e13) - (t6 * s.e23))) - (((t1 * s.e1inf) - (t0 * s.e2inf)) - ((t3 * s.e3inf) + (t2 * s.e123inf))),
+        (((t6 * s.scalar) - (t7 * s.e12)) + ((t4 * s.e13) + (t5 * s.e23))) - (((t2 * s.e1inf) + (t3 * s.e2inf)) - ((t0 * s.e3inf) - (t1 * s.e123inf)))
     );
 }
 
@@ -583,20 +583,20 @@ g123inf_Motor g123inf_vector_sandwich_motor(g123inf_Vector s, g123inf_Motor x) {
     float t0 = (s.e1 * x.scalar) - ((s.e2 * x.e12) + (s.e3 * x.e13));
     float t1 = (s.e1 * x.e12) + ((s.e2 * x.scalar) - (s.e3 * x.e23));
     float t2 = (s.e1 * x.e13) + ((s.e2 * x.e23) + (s.e3 * x.scalar));
-    float t3 = (s.e1 * x.e23) - ((s.e2 * x.e13) - (s.e3 * x.e12));
+    float t3 = (s.e1 * x.e23) + ((s.e3 * x.e12) - (s.e2 * x.e13));
     float t4 = ((s.e1 * x.e1inf) + (s.e2 * x.e2inf)) + ((s.e3 * x.e3inf) + (s.einf * x.scalar));
-    float t5 = ((s.e1 * x.e2inf) - (s.e2 * x.e1inf)) + ((s.e3 * x.e123inf) + (s.einf * x.e12));
-    float t6 = ((s.e1 * x.e3inf) - (s.e2 * x.e123inf)) - ((s.e3 * x.e1inf) - (s.einf * x.e13));
-    float t7 = ((s.e1 * x.e123inf) + (s.e2 * x.e3inf)) - ((s.e3 * x.e2inf) - (s.einf * x.e23));
+    float t5 = ((s.e1 * x.e2inf) + (s.e3 * x.e123inf)) + ((s.einf * x.e12) - (s.e2 * x.e1inf));
+    float t6 = ((s.e1 * x.e3inf) + (s.einf * x.e13)) - ((s.e2 * x.e123inf) + (s.e3 * x.e1inf));
+    float t7 = ((s.e1 * x.e123inf) + (s.e2 * x.e3inf)) + ((s.einf * x.e23) - (s.e3 * x.e2inf));
     return g123inf_Motor(
         (t0 * s.e1) + ((t1 * s.e2) + (t2 * s.e3)),
         (t0 * s.e2) - ((t1 * s.e1) - (t3 * s.e3)),
         (t0 * s.e3) - ((t2 * s.e1) + (t3 * s.e2)),
-        (t1 * s.e3) - ((t2 * s.e2) - (t3 * s.e1)),
+        (t3 * s.e1) - ((t2 * s.e2) - (t1 * s.e3)),
         ((t0 * s.einf) - (t4 * s.e1)) - ((t5 * s.e2) + (t6 * s.e3)),
-        ((t1 * s.einf) - (t4 * s.e2)) + ((t5 * s.e1) - (t7 * s.e3)),
-        ((t2 * s.einf) - (t4 * s.e3)) + ((t6 * s.e1) + (t7 * s.e2)),
-        ((t3 * s.einf) - (t5 * s.e3)) + ((t6 * s.e2) - (t7 * s.e1))
+        ((t5 * s.e1) - (t4 * s.e2)) - ((t7 * s.e3) - (t1 * s.einf)),
+        ((t6 * s.e1) + (t7 * s.e2)) - ((t4 * s.e3) - (t2 * s.einf)),
+        ((t6 * s.e2) - (t7 * s.e1)) - ((t5 * s.e3) - (t3 * s.einf))
     );
 }
 
@@ -622,40 +622,40 @@ g123inf_Bivector g123inf_vector_sandwich_bivector(g123inf_Vector s, g123inf_Bive
     float t0 = -((s.e2 * x.e12) + (s.e3 * x.e13));
     float t1 = (s.e1 * x.e12) - (s.e3 * x.e23);
     float t2 = (s.e1 * x.e13) + (s.e2 * x.e23);
-    float t3 = (s.e1 * x.e23) - ((s.e2 * x.e13) - (s.e3 * x.e12));
+    float t3 = (s.e1 * x.e23) + ((s.e3 * x.e12) - (s.e2 * x.e13));
     float t4 = (s.e1 * x.e1inf) + ((s.e2 * x.e2inf) + (s.e3 * x.e3inf));
-    float t5 = (s.e1 * x.e2inf) - ((s.e2 * x.e1inf) - (s.einf * x.e12));
-    float t6 = (s.e1 * x.e3inf) - ((s.e3 * x.e1inf) - (s.einf * x.e13));
-    float t7 = (s.e2 * x.e3inf) - ((s.e3 * x.e2inf) - (s.einf * x.e23));
+    float t5 = (s.e1 * x.e2inf) + ((s.einf * x.e12) - (s.e2 * x.e1inf));
+    float t6 = (s.e1 * x.e3inf) + ((s.einf * x.e13) - (s.e3 * x.e1inf));
+    float t7 = (s.e2 * x.e3inf) + ((s.einf * x.e23) - (s.e3 * x.e2inf));
     return g123inf_Bivector(
         (t0 * s.e2) - ((t1 * s.e1) - (t3 * s.e3)),
         (t0 * s.e3) - ((t2 * s.e1) + (t3 * s.e2)),
-        (t1 * s.e3) - ((t2 * s.e2) - (t3 * s.e1)),
+        (t3 * s.e1) - ((t2 * s.e2) - (t1 * s.e3)),
         ((t0 * s.einf) - (t4 * s.e1)) - ((t5 * s.e2) + (t6 * s.e3)),
-        ((t1 * s.einf) - (t4 * s.e2)) + ((t5 * s.e1) - (t7 * s.e3)),
-        ((t2 * s.einf) - (t4 * s.e3)) + ((t6 * s.e1) + (t7 * s.e2))
+        ((t5 * s.e1) - (t4 * s.e2)) - ((t7 * s.e3) - (t1 * s.einf)),
+        ((t6 * s.e1) + (t7 * s.e2)) - ((t4 * s.e3) - (t2 * s.einf))
     );
 }
 
 // rev(S) x S for a Bivector S and a Motor x, in one fused kernel.
 g123inf_Motor g123inf_bivector_sandwich_motor(g123inf_Bivector s, g123inf_Motor x) {
     float t0 = (s.e12 * x.e12) + ((s.e13 * x.e13) + (s.e23 * x.e23));
-    float t1 = -((s.e12 * x.scalar) - ((s.e13 * x.e23) - (s.e23 * x.e13)));
-    float t2 = -((s.e12 * x.e23) + ((s.e13 * x.scalar) - (s.e23 * x.e12)));
+    float t1 = (s.e13 * x.e23) - ((s.e12 * x.scalar) + (s.e23 * x.e13));
+    float t2 = (s.e23 * x.e12) - ((s.e12 * x.e23) + (s.e13 * x.scalar));
     float t3 = (s.e12 * x.e13) - ((s.e13 * x.e12) + (s.e23 * x.scalar));
-    float t4 = -(((s.e12 * x.e2inf) + ((s.e13 * x.e3inf) - (s.e23 * x.e123inf))) + ((s.e1inf * x.scalar) - ((s.e2inf * x.e12) + (s.e3inf * x.e13))));
-    float t5 = ((s.e12 * x.e1inf) - ((s.e13 * x.e123inf) + (s.e23 * x.e3inf))) - ((s.e1inf * x.e12) + ((s.e2inf * x.scalar) - (s.e3inf * x.e23)));
+    float t4 = ((s.e23 * x.e123inf) + ((s.e2inf * x.e12) + (s.e3inf * x.e13))) - ((s.e12 * x.e2inf) + ((s.e13 * x.e3inf) + (s.e1inf * x.scalar)));
+    float t5 = ((s.e12 * x.e1inf) + ((s.e3inf * x.e23) - (s.e13 * x.e123inf))) - ((s.e23 * x.e3inf) + ((s.e1inf * x.e12) + (s.e2inf * x.scalar)));
     float t6 = ((s.e12 * x.e123inf) + ((s.e13 * x.e1inf) + (s.e23 * x.e2inf))) - ((s.e1inf * x.e13) + ((s.e2inf * x.e23) + (s.e3inf * x.scalar)));
-    float t7 = -(((s.e12 * x.e3inf) - ((s.e13 * x.e2inf) - (s.e23 * x.e1inf))) + ((s.e1inf * x.e23) - ((s.e2inf * x.e13) - (s.e3inf * x.e12))));
+    float t7 = ((s.e13 * x.e2inf) + ((s.e2inf * x.e13) - (s.e12 * x.e3inf))) - ((s.e23 * x.e1inf) + ((s.e1inf * x.e23) + (s.e3inf * x.e12)));
     return g123inf_Motor(
         -((t1 * s.e12) + ((t2 * s.e13) + (t3 * s.e23))),
-        (t0 * s.e12) - ((t2 * s.e23) - (t3 * s.e13)),
-        (t0 * s.e13) + ((t1 * s.e23) - (t3 * s.e12)),
-        (t0 * s.e23) - ((t1 * s.e13) - (t2 * s.e12)),
-        ((t0 * s.e1inf) + ((t1 * s.e2inf) + (t2 * s.e3inf))) - ((t5 * s.e12) + ((t6 * s.e13) + (t7 * s.e23))),
-        ((t0 * s.e2inf) - ((t1 * s.e1inf) - (t3 * s.e3inf))) + ((t4 * s.e12) - ((t6 * s.e23) - (t7 * s.e13))),
-        ((t0 * s.e3inf) - ((t2 * s.e1inf) + (t3 * s.e2inf))) + ((t4 * s.e13) + ((t5 * s.e23) - (t7 * s.e12))),
-        ((t1 * s.e3inf) - ((t2 * s.e2inf) - (t3 * s.e1inf))) + ((t4 * s.e23) - ((t5 * s.e13) - (t6 * s.e12)))
+        (t0 * s.e12) + ((t3 * s.e13) - (t2 * s.e23)),
+        (t0 * s.e13) - ((t3 * s.e12) - (t1 * s.e23)),
+        (t2 * s.e12) - ((t1 * s.e13) - (t0 * s.e23)),
+        ((t0 * s.e1inf) - ((t5 * s.e12) + (t6 * s.e13))) - ((t7 * s.e23) - ((t1 * s.e2inf) + (t2 * s.e3inf))),
+        ((t4 * s.e12) + ((t7 * s.e13) - (t6 * s.e23))) - ((t1 * s.e1inf) - ((t0 * s.e2inf) + (t3 * s.e3inf))),
+        ((t4 * s.e13) - ((t7 * s.e12) - (t5 * s.e23))) - ((t2 * s.e1inf) + ((t3 * s.e2inf) - (t0 * s.e3inf))),
+        ((t6 * s.e12) - ((t5 * s.e13) - (t4 * s.e23))) + ((t3 * s.e1inf) - ((t2 * s.e2inf) - (t1 * s.e3inf)))
     );
 }
 
@@ -664,15 +664,15 @@ g123inf_Vector g123inf_bivector_sandwich_vector(g123inf_Bivector s, g123inf_Vect
     float t0 = -((s.e12 * x.e2) + (s.e13 * x.e3));
     float t1 = (s.e12 * x.e1) - (s.e23 * x.e3);
     float t2 = (s.e13 * x.e1) + (s.e23 * x.e2);
-    float t3 = -((s.e12 * x.e3) - ((s.e13 * x.e2) - (s.e23 * x.e1)));
-    float t4 = -((s.e12 * x.einf) - ((s.e1inf * x.e2) - (s.e2inf * x.e1)));
-    float t5 = -((s.e13 * x.einf) - ((s.e1inf * x.e3) - (s.e3inf * x.e1)));
-    float t6 = -((s.e23 * x.einf) - ((s.e2inf * x.e3) - (s.e3inf * x.e2)));
+    float t3 = (s.e13 * x.e2) - ((s.e12 * x.e3) + (s.e23 * x.e1));
+    float t4 = (s.e1inf * x.e2) - ((s.e12 * x.einf) + (s.e2inf * x.e1));
+    float t5 = (s.e1inf * x.e3) - ((s.e13 * x.einf) + (s.e3inf * x.e1));
+    float t6 = (s.e2inf * x.e3) - ((s.e23 * x.einf) + (s.e3inf * x.e2));
     return g123inf_Vector(
         -((t1 * s.e12) + ((t2 * s.e13) + (t3 * s.e23))),
-        (t0 * s.e12) - ((t2 * s.e23) - (t3 * s.e13)),
-        (t0 * s.e13) + ((t1 * s.e23) - (t3 * s.e12)),
-        ((t0 * s.e1inf) + ((t1 * s.e2inf) + (t2 * s.e3inf))) - ((t4 * s.e12) + ((t5 * s.e13) + (t6 * s.e23)))
+        (t0 * s.e12) + ((t3 * s.e13) - (t2 * s.e23)),
+        (t0 * s.e13) - ((t3 * s.e12) - (t1 * s.e23)),
+        ((t0 * s.e1inf) - ((t4 * s.e12) + (t5 * s.e13))) - ((t6 * s.e23) - ((t1 * s.e2inf) + (t2 * s.e3inf)))
     );
 }
 
@@ -680,19 +680,19 @@ g123inf_Vector g123inf_bivector_sandwich_vector(g123inf_Bivector s, g123inf_Vect
 g123inf_Bivector g123inf_bivector_sandwich_bivector(g123inf_Bivector s, g123inf_Bivector x) {
     float t0 = (s.e12 * x.e12) + ((s.e13 * x.e13) + (s.e23 * x.e23));
     float t1 = (s.e13 * x.e23) - (s.e23 * x.e13);
-    float t2 = -((s.e12 * x.e23) - (s.e23 * x.e12));
+    float t2 = (s.e23 * x.e12) - (s.e12 * x.e23);
     float t3 = (s.e12 * x.e13) - (s.e13 * x.e12);
-    float t4 = -(((s.e12 * x.e2inf) + (s.e13 * x.e3inf)) - ((s.e2inf * x.e12) + (s.e3inf * x.e13)));
-    float t5 = ((s.e12 * x.e1inf) - (s.e23 * x.e3inf)) - ((s.e1inf * x.e12) - (s.e3inf * x.e23));
+    float t4 = ((s.e2inf * x.e12) + (s.e3inf * x.e13)) - ((s.e12 * x.e2inf) + (s.e13 * x.e3inf));
+    float t5 = ((s.e12 * x.e1inf) + (s.e3inf * x.e23)) - ((s.e23 * x.e3inf) + (s.e1inf * x.e12));
     float t6 = ((s.e13 * x.e1inf) + (s.e23 * x.e2inf)) - ((s.e1inf * x.e13) + (s.e2inf * x.e23));
-    float t7 = -(((s.e12 * x.e3inf) - ((s.e13 * x.e2inf) - (s.e23 * x.e1inf))) + ((s.e1inf * x.e23) - ((s.e2inf * x.e13) - (s.e3inf * x.e12))));
+    float t7 = ((s.e13 * x.e2inf) + ((s.e2inf * x.e13) - (s.e12 * x.e3inf))) - ((s.e23 * x.e1inf) + ((s.e1inf * x.e23) + (s.e3inf * x.e12)));
     return g123inf_Bivector(
-        (t0 * s.e12) - ((t2 * s.e23) - (t3 * s.e13)),
-        (t0 * s.e13) + ((t1 * s.e23) - (t3 * s.e12)),
-        (t0 * s.e23) - ((t1 * s.e13) - (t2 * s.e12)),
-        ((t0 * s.e1inf) + ((t1 * s.e2inf) + (t2 * s.e3inf))) - ((t5 * s.e12) + ((t6 * s.e13) + (t7 * s.e23))),
-        ((t0 * s.e2inf) - ((t1 * s.e1inf) - (t3 * s.e3inf))) + ((t4 * s.e12) - ((t6 * s.e23) - (t7 * s.e13))),
-        ((t0 * s.e3inf) - ((t2 * s.e1inf) + (t3 * s.e2inf))) + ((t4 * s.e13) + ((t5 * s.e23) - (t7 * s.e12)))
+        (t0 * s.e12) + ((t3 * s.e13) - (t2 * s.e23)),
+        (t0 * s.e13) - ((t3 * s.e12) - (t1 * s.e23)),
+        (t2 * s.e12) - ((t1 * s.e13) - (t0 * s.e23)),
+        ((t0 * s.e1inf) - ((t5 * s.e12) + (t6 * s.e13))) - ((t7 * s.e23) - ((t1 * s.e2inf) + (t2 * s.e3inf))),
+        ((t4 * s.e12) + ((t7 * s.e13) - (t6 * s.e23))) - ((t1 * s.e1inf) - ((t0 * s.e2inf) + (t3 * s.e3inf))),
+        ((t4 * s.e13) - ((t7 * s.e12) - (t5 * s.e23))) - ((t2 * s.e1inf) + ((t3 * s.e2inf) - (t0 * s.e3inf)))
     );
 }
 

@@ -530,22 +530,22 @@ static inline double g123inf_bivector_norm_squared(g123inf_Bivector x) {
 /* rev(S) x S for a Motor S and a Motor x, in one fused kernel. */
 static inline g123inf_Motor g123inf_motor_sandwich_motor(g123inf_Motor s, g123inf_Motor x) {
     const double t0 = ((s.scalar * x.scalar) + (s.e12 * x.e12)) + ((s.e13 * x.e13) + (s.e23 * x.e23));
-    const double t1 = ((s.scalar * x.e12) - (s.e12 * x.scalar)) + ((s.e13 * x.e23) - (s.e23 * x.e13));
-    const double t2 = ((s.scalar * x.e13) - (s.e12 * x.e23)) - ((s.e13 * x.scalar) - (s.e23 * x.e12));
+    const double t1 = ((s.scalar * x.e12) + (s.e13 * x.e23)) - ((s.e12 * x.scalar) + (s.e23 * x.e13));
+    const double t2 = ((s.scalar * x.e13) + (s.e23 * x.e12)) - ((s.e12 * x.e23) + (s.e13 * x.scalar));
     const double t3 = ((s.scalar * x.e23) + (s.e12 * x.e13)) - ((s.e13 * x.e12) + (s.e23 * x.scalar));
-    const double t4 = (((s.scalar * x.e1inf) - (s.e12 * x.e2inf)) - ((s.e13 * x.e3inf) - (s.e23 * x.e123inf))) - (((s.e1inf * x.scalar) - (s.e2inf * x.e12)) - ((s.e3inf * x.e13) - (s.e123inf * x.e23)));
-    const double t5 = (((s.scalar * x.e2inf) + (s.e12 * x.e1inf)) - ((s.e13 * x.e123inf) + (s.e23 * x.e3inf))) - (((s.e1inf * x.e12) + (s.e2inf * x.scalar)) - ((s.e3inf * x.e23) + (s.e123inf * x.e13)));
+    const double t4 = (((s.scalar * x.e1inf) + (s.e23 * x.e123inf)) + ((s.e2inf * x.e12) + (s.e3inf * x.e13))) - (((s.e12 * x.e2inf) + (s.e13 * x.e3inf)) + ((s.e1inf * x.scalar) + (s.e123inf * x.e23)));
+    const double t5 = (((s.scalar * x.e2inf) + (s.e12 * x.e1inf)) + ((s.e3inf * x.e23) + (s.e123inf * x.e13))) - (((s.e13 * x.e123inf) + (s.e23 * x.e3inf)) + ((s.e1inf * x.e12) + (s.e2inf * x.scalar)));
     const double t6 = (((s.scalar * x.e3inf) + (s.e12 * x.e123inf)) + ((s.e13 * x.e1inf) + (s.e23 * x.e2inf))) - (((s.e1inf * x.e13) + (s.e2inf * x.e23)) + ((s.e3inf * x.scalar) + (s.e123inf * x.e12)));
-    const double t7 = (((s.scalar * x.e123inf) - (s.e12 * x.e3inf)) + ((s.e13 * x.e2inf) - (s.e23 * x.e1inf))) - (((s.e1inf * x.e23) - (s.e2inf * x.e13)) + ((s.e3inf * x.e12) - (s.e123inf * x.scalar)));
+    const double t7 = (((s.scalar * x.e123inf) + (s.e13 * x.e2inf)) + ((s.e2inf * x.e13) + (s.e123inf * x.scalar))) - (((s.e12 * x.e3inf) + (s.e23 * x.e1inf)) + ((s.e1inf * x.e23) + (s.e3inf * x.e12)));
     g123inf_Motor r;
     r.scalar = ((t0 * s.scalar) - (t1 * s.e12)) - ((t2 * s.e13) + (t3 * s.e23));
-    r.e12 = ((t0 * s.e12) + (t1 * s.scalar)) - ((t2 * s.e23) - (t3 * s.e13));
-    r.e13 = ((t0 * s.e13) + (t1 * s.e23)) + ((t2 * s.scalar) - (t3 * s.e12));
-    r.e23 = ((t0 * s.e23) - (t1 * s.e13)) + ((t2 * s.e12) + (t3 * s.scalar));
-    r.e1inf = (((t0 * s.e1inf) + (t1 * s.e2inf)) + ((t2 * s.e3inf) - (t3 * s.e123inf))) + (((t4 * s.scalar) - (t5 * s.e12)) - ((t6 * s.e13) + (t7 * s.e23)));
-    r.e2inf = (((t0 * s.e2inf) - (t1 * s.e1inf)) + ((t2 * s.e123inf) + (t3 * s.e3inf))) + (((t4 * s.e12) + (t5 * s.scalar)) - ((t6 * s.e23) - (t7 * s.e13)));
-    r.e3inf = (((t0 * s.e3inf) - (t1 * s.e123inf)) - ((t2 * s.e1inf) + (t3 * s.e2inf))) + (((t4 * s.e13) + (t5 * s.e23)) + ((t6 * s.scalar) - (t7 * s.e12)));
-    r.e123inf = (((t0 * s.e123inf) + (t1 * s.e3inf)) - ((t2 * s.e2inf) - (t3 * s.e1inf))) + (((t4 * s.e23) - (t5 * s.e13)) + ((t6 * s.e12) + (t7 * s.scalar)));
+    r.e12 = ((t1 * s.scalar) + (t0 * s.e12)) + ((t3 * s.e13) - (t2 * s.e23));
+    r.e13 = ((t2 * s.scalar) - (t3 * s.e12)) + ((t0 * s.e13) + (t1 * s.e23));
+    r.e23 = ((t3 * s.scalar) + (t2 * s.e12)) - ((t1 * s.e13) - (t0 * s.e23));
+    r.e1inf = (((t4 * s.scalar) - (t5 * s.e12)) - ((t6 * s.e13) + (t7 * s.e23))) + (((t0 * s.e1inf) + (t1 * s.e2inf)) + ((t2 * s.e3inf) - (t3 * s.e123inf)));
+    r.e2inf = (((t5 * s.scalar) + (t4 * s.e12)) + ((t7 * s.e13) - (t6 * s.e23))) - (((t1 * s.e1inf) - (t0 * s.e2inf)) - ((t3 * s.e3inf) + (t2 * s.e123inf)));
+    r.e3inf = (((t6 * s.scalar) - (t7 * s.e12)) + ((t4 * s.e13) + (t5 * s.e23))) - (((t2 * s.e1inf) + (t3 * s.e2inf)) - ((t0 * s.e3inf) - (t1 * s.e123inf)));
+    r.e123inf = (((t7 * s.scalar) + (t6 * s.e12)) - ((t5 * s.e13) - (t4 * s.e23))) + (((t3 * s.e1inf) - (t2 * s.e2inf)) + ((t1 * s.e3inf) + (t0 * s.e123inf)));
     return r;
 }
 
@@ -554,16 +554,16 @@ static inline g123inf_Vector g123inf_motor_sandwich_vector(g123inf_Motor s, g123
     const double t0 = (s.scalar * x.e1) - ((s.e12 * x.e2) + (s.e13 * x.e3));
     const double t1 = (s.scalar * x.e2) + ((s.e12 * x.e1) - (s.e23 * x.e3));
     const double t2 = (s.scalar * x.e3) + ((s.e13 * x.e1) + (s.e23 * x.e2));
-    const double t3 = -((s.e12 * x.e3) - ((s.e13 * x.e2) - (s.e23 * x.e1)));
+    const double t3 = (s.e13 * x.e2) - ((s.e12 * x.e3) + (s.e23 * x.e1));
     const double t4 = ((s.scalar * x.einf) + (s.e1inf * x.e1)) + ((s.e2inf * x.e2) + (s.e3inf * x.e3));
-    const double t5 = -(((s.e12 * x.einf) - (s.e1inf * x.e2)) + ((s.e2inf * x.e1) + (s.e123inf * x.e3)));
-    const double t6 = -(((s.e13 * x.einf) - (s.e1inf * x.e3)) + ((s.e3inf * x.e1) - (s.e123inf * x.e2)));
-    const double t7 = -(((s.e23 * x.einf) - (s.e2inf * x.e3)) + ((s.e3inf * x.e2) + (s.e123inf * x.e1)));
+    const double t5 = ((s.e1inf * x.e2) - (s.e12 * x.einf)) - ((s.e2inf * x.e1) + (s.e123inf * x.e3));
+    const double t6 = ((s.e1inf * x.e3) + (s.e123inf * x.e2)) - ((s.e13 * x.einf) + (s.e3inf * x.e1));
+    const double t7 = ((s.e2inf * x.e3) - (s.e23 * x.einf)) - ((s.e3inf * x.e2) + (s.e123inf * x.e1));
     g123inf_Vector r;
     r.e1 = ((t0 * s.scalar) - (t1 * s.e12)) - ((t2 * s.e13) + (t3 * s.e23));
-    r.e2 = ((t0 * s.e12) + (t1 * s.scalar)) - ((t2 * s.e23) - (t3 * s.e13));
-    r.e3 = ((t0 * s.e13) + (t1 * s.e23)) + ((t2 * s.scalar) - (t3 * s.e12));
-    r.einf = (((t0 * s.e1inf) + (t1 * s.e2inf)) + ((t2 * s.e3inf) - (t3 * s.e123inf))) + (((t4 * s.scalar) - (t5 * s.e12)) - ((t6 * s.e13) + (t7 * s.e23)));
+    r.e2 = ((t1 * s.scalar) + (t0 * s.e12)) + ((t3 * s.e13) - (t2 * s.e23));
+    r.e3 = ((t2 * s.scalar) - (t3 * s.e12)) + ((t0 * s.e13) + (t1 * s.e23));
+    r.einf = (((t4 * s.scalar) - (t5 * s.e12)) - ((t6 * s.e13) + (t7 * s.e23))) + (((t0 * s.e1inf) + (t1 * s.e2inf)) + ((t2 * s.e3inf) - (t3 * s.e123inf)));
     return r;
 }
 
@@ -571,19 +571,19 @@ static inline g123inf_Vector g123inf_motor_sandwich_vector(g123inf_Motor s, g123
 static inline g123inf_Bivector g123inf_motor_sandwich_bivector(g123inf_Motor s, g123inf_Bivector x) {
     const double t0 = (s.e12 * x.e12) + ((s.e13 * x.e13) + (s.e23 * x.e23));
     const double t1 = (s.scalar * x.e12) + ((s.e13 * x.e23) - (s.e23 * x.e13));
-    const double t2 = (s.scalar * x.e13) - ((s.e12 * x.e23) - (s.e23 * x.e12));
+    const double t2 = (s.scalar * x.e13) + ((s.e23 * x.e12) - (s.e12 * x.e23));
     const double t3 = (s.scalar * x.e23) + ((s.e12 * x.e13) - (s.e13 * x.e12));
-    const double t4 = ((s.scalar * x.e1inf) - ((s.e12 * x.e2inf) + (s.e13 * x.e3inf))) + ((s.e2inf * x.e12) + ((s.e3inf * x.e13) - (s.e123inf * x.e23)));
-    const double t5 = ((s.scalar * x.e2inf) + ((s.e12 * x.e1inf) - (s.e23 * x.e3inf))) - ((s.e1inf * x.e12) - ((s.e3inf * x.e23) + (s.e123inf * x.e13)));
+    const double t4 = ((s.scalar * x.e1inf) + ((s.e2inf * x.e12) + (s.e3inf * x.e13))) - ((s.e12 * x.e2inf) + ((s.e13 * x.e3inf) + (s.e123inf * x.e23)));
+    const double t5 = ((s.scalar * x.e2inf) + ((s.e12 * x.e1inf) + (s.e3inf * x.e23))) + ((s.e123inf * x.e13) - ((s.e23 * x.e3inf) + (s.e1inf * x.e12)));
     const double t6 = ((s.scalar * x.e3inf) + ((s.e13 * x.e1inf) + (s.e23 * x.e2inf))) - ((s.e1inf * x.e13) + ((s.e2inf * x.e23) + (s.e123inf * x.e12)));
-    const double t7 = -(((s.e12 * x.e3inf) - ((s.e13 * x.e2inf) - (s.e23 * x.e1inf))) + ((s.e1inf * x.e23) - ((s.e2inf * x.e13) - (s.e3inf * x.e12))));
+    const double t7 = ((s.e13 * x.e2inf) + ((s.e2inf * x.e13) - (s.e12 * x.e3inf))) - ((s.e23 * x.e1inf) + ((s.e1inf * x.e23) + (s.e3inf * x.e12)));
     g123inf_Bivector r;
-    r.e12 = ((t0 * s.e12) + (t1 * s.scalar)) - ((t2 * s.e23) - (t3 * s.e13));
-    r.e13 = ((t0 * s.e13) + (t1 * s.e23)) + ((t2 * s.scalar) - (t3 * s.e12));
-    r.e23 = ((t0 * s.e23) - (t1 * s.e13)) + ((t2 * s.e12) + (t3 * s.scalar));
-    r.e1inf = (((t0 * s.e1inf) + (t1 * s.e2inf)) + ((t2 * s.e3inf) - (t3 * s.e123inf))) + (((t4 * s.scalar) - (t5 * s.e12)) - ((t6 * s.e13) + (t7 * s.e23)));
-    r.e2inf = (((t0 * s.e2inf) - (t1 * s.e1inf)) + ((t2 * s.e123inf) + (t3 * s.e3inf))) + (((t4 * s.e12) + (t5 * s.scalar)) - ((t6 * s.e23) - (t7 * s.e13)));
-    r.e3inf = (((t0 * s.e3inf) - (t1 * s.e123inf)) - ((t2 * s.e1inf) + (t3 * s.e2inf))) + (((t4 * s.e13) + (t5 * s.e23)) + ((t6 * s.scalar) - (t7 * s.e12)));
+    r.e12 = ((t1 * s.scalar) + (t0 * s.e12)) + ((t3 * s.e13) - (t2 * s.e23));
+    r.e13 = ((t2 * s.scalar) - (t3 * s.e12)) + ((t0 * s.e13) + (t1 * s.e23));
+    r.e23 = ((t3 * s.scalar) + (t2 * s.e12)) - ((t1 * s.e13) - (t0 * s.e23));
+    r.e1inf = (((t4 * s.scalar) - (t5 * s.e12)) - ((t6 * s.e13) + (t7 * s.e23))) + (((t0 * s.e1inf) + (t1 * s.e2inf)) + ((t2 * s.e3inf) - (t3 * s.e123inf)));
+    r.e2inf = (((t5 * s.scalar) + (t4 * s.e12)) + ((t7 * s.e13) - (t6 * s.e23))) - (((t1 * s.e1inf) - (t0 * s.e2inf)) - ((t3 * s.e3inf) + (t2 * s.e123inf)));
+    r.e3inf = (((t6 * s.scalar) - (t7 * s.e12)) + ((t4 * s.e13) + (t5 * s.e23))) - (((t2 * s.e1inf) + (t3 * s.e2inf)) - ((t0 * s.e3inf) - (t1 * s.e123inf)));
     return r;
 }
 
@@ -592,20 +592,20 @@ static inline g123inf_Motor g123inf_vector_sandwich_motor(g123inf_Vector s, g123
     const double t0 = (s.e1 * x.scalar) - ((s.e2 * x.e12) + (s.e3 * x.e13));
     const double t1 = (s.e1 * x.e12) + ((s.e2 * x.scalar) - (s.e3 * x.e23));
     const double t2 = (s.e1 * x.e13) + ((s.e2 * x.e23) + (s.e3 * x.scalar));
-    const double t3 = (s.e1 * x.e23) - ((s.e2 * x.e13) - (s.e3 * x.e12));
+    const double t3 = (s.e1 * x.e23) + ((s.e3 * x.e12) - (s.e2 * x.e13));
     const double t4 = ((s.e1 * x.e1inf) + (s.e2 * x.e2inf)) + ((s.e3 * x.e3inf) + (s.einf * x.scalar));
-    const double t5 = ((s.e1 * x.e2inf) - (s.e2 * x.e1inf)) + ((s.e3 * x.e123inf) + (s.einf * x.e12));
-    const double t6 = ((s.e1 * x.e3inf) - (s.e2 * x.e123inf)) - ((s.e3 * x.e1inf) - (s.einf * x.e13));
-    const double t7 = ((s.e1 * x.e123inf) + (s.e2 * x.e3inf)) - ((s.e3 * x.e2inf) - (s.einf * x.e23));
+    const double t5 = ((s.e1 * x.e2inf) + (s.e3 * x.e123inf)) + ((s.einf * x.e12) - (s.e2 * x.e1inf));
+    const double t6 = ((s.e1 * x.e3inf) + (s.einf * x.e13)) - ((s.e2 * x.e123inf) + (s.e3 * x.e1inf));
+    const double t7 = ((s.e1 * x.e123inf) + (s.e2 * x.e3inf)) + ((s.einf * x.e23) - (s.e3 * x.e2inf));
     g123inf_Motor r;
     r.scalar = (t0 * s.e1) + ((t1 * s.e2) + (t2 * s.e3));
     r.e12 = (t0 * s.e2) - ((t1 * s.e1) - (t3 * s.e3));
     r.e13 = (t0 * s.e3) - ((t2 * s.e1) + (t3 * s.e2));
-    r.e23 = (t1 * s.e3) - ((t2 * s.e2) - (t3 * s.e1));
+    r.e23 = (t3 * s.e1) - ((t2 * s.e2) - (t1 * s.e3));
     r.e1inf = ((t0 * s.einf) - (t4 * s.e1)) - ((t5 * s.e2) + (t6 * s.e3));
-    r.e2inf = ((t1 * s.einf) - (t4 * s.e2)) + ((t5 * s.e1) - (t7 * s.e3));
-    r.e3inf = ((t2 * s.einf) - (t4 * s.e3)) + ((t6 * s.e1) + (t7 * s.e2));
-    r.e123inf = ((t3 * s.einf) - (t5 * s.e3)) + ((t6 * s.e2) - (t7 * s.e1));
+    r.e2inf = ((t5 * s.e1) - (t4 * s.e2)) - ((t7 * s.e3) - (t1 * s.einf));
+    r.e3inf = ((t6 * s.e1) + (t7 * s.e2)) - ((t4 * s.e3) - (t2 * s.einf));
+    r.e123inf = ((t6 * s.e2) - (t7 * s.e1)) - ((t5 * s.e3) - (t3 * s.einf));
     return r;
 }
 
@@ -631,40 +631,40 @@ static inline g123inf_Bivector g123inf_vector_sandwich_bivector(g123inf_Vector s
     const double t0 = -((s.e2 * x.e12) + (s.e3 * x.e13));
     const double t1 = (s.e1 * x.e12) - (s.e3 * x.e23);
     const double t2 = (s.e1 * x.e13) + (s.e2 * x.e23);
-    const double t3 = (s.e1 * x.e23) - ((s.e2 * x.e13) - (s.e3 * x.e12));
+    const double t3 = (s.e1 * x.e23) + ((s.e3 * x.e12) - (s.e2 * x.e13));
     const double t4 = (s.e1 * x.e1inf) + ((s.e2 * x.e2inf) + (s.e3 * x.e3inf));
-    const double t5 = (s.e1 * x.e2inf) - ((s.e2 * x.e1inf) - (s.einf * x.e12));
-    const double t6 = (s.e1 * x.e3inf) - ((s.e3 * x.e1inf) - (s.einf * x.e13));
-    const double t7 = (s.e2 * x.e3inf) - ((s.e3 * x.e2inf) - (s.einf * x.e23));
+    const double t5 = (s.e1 * x.e2inf) + ((s.einf * x.e12) - (s.e2 * x.e1inf));
+    const double t6 = (s.e1 * x.e3inf) + ((s.einf * x.e13) - (s.e3 * x.e1inf));
+    const double t7 = (s.e2 * x.e3inf) + ((s.einf * x.e23) - (s.e3 * x.e2inf));
     g123inf_Bivector r;
     r.e12 = (t0 * s.e2) - ((t1 * s.e1) - (t3 * s.e3));
     r.e13 = (t0 * s.e3) - ((t2 * s.e1) + (t3 * s.e2));
-    r.e23 = (t1 * s.e3) - ((t2 * s.e2) - (t3 * s.e1));
+    r.e23 = (t3 * s.e1) - ((t2 * s.e2) - (t1 * s.e3));
     r.e1inf = ((t0 * s.einf) - (t4 * s.e1)) - ((t5 * s.e2) + (t6 * s.e3));
-    r.e2inf = ((t1 * s.einf) - (t4 * s.e2)) + ((t5 * s.e1) - (t7 * s.e3));
-    r.e3inf = ((t2 * s.einf) - (t4 * s.e3)) + ((t6 * s.e1) + (t7 * s.e2));
+    r.e2inf = ((t5 * s.e1) - (t4 * s.e2)) - ((t7 * s.e3) - (t1 * s.einf));
+    r.e3inf = ((t6 * s.e1) + (t7 * s.e2)) - ((t4 * s.e3) - (t2 * s.einf));
     return r;
 }
 
 /* rev(S) x S for a Bivector S and a Motor x, in one fused kernel. */
 static inline g123inf_Motor g123inf_bivector_sandwich_motor(g123inf_Bivector s, g123inf_Motor x) {
     const double t0 = (s.e12 * x.e12) + ((s.e13 * x.e13) + (s.e23 * x.e23));
-    const double t1 = -((s.e12 * x.scalar) - ((s.e13 * x.e23) - (s.e23 * x.e13)));
-    const double t2 = -((s.e12 * x.e23) + ((s.e13 * x.scalar) - (s.e23 * x.e12)));
+    const double t1 = (s.e13 * x.e23) - ((s.e12 * x.scalar) + (s.e23 * x.e13));
+    const double t2 = (s.e23 * x.e12) - ((s.e12 * x.e23) + (s.e13 * x.scalar));
     const double t3 = (s.e12 * x.e13) - ((s.e13 * x.e12) + (s.e23 * x.scalar));
-    const double t4 = -(((s.e12 * x.e2inf) + ((s.e13 * x.e3inf) - (s.e23 * x.e123inf))) + ((s.e1inf * x.scalar) - ((s.e2inf * x.e12) + (s.e3inf * x.e13))));
-    const double t5 = ((s.e12 * x.e1inf) - ((s.e13 * x.e123inf) + (s.e23 * x.e3inf))) - ((s.e1inf * x.e12) + ((s.e2inf * x.scalar) - (s.e3inf * x.e23)));
+    const double t4 = ((s.e23 * x.e123inf) + ((s.e2inf * x.e12) + (s.e3inf * x.e13))) - ((s.e12 * x.e2inf) + ((s.e13 * x.e3inf) + (s.e1inf * x.scalar)));
+    const double t5 = ((s.e12 * x.e1inf) + ((s.e3inf * x.e23) - (s.e13 * x.e123inf))) - ((s.e23 * x.e3inf) + ((s.e1inf * x.e12) + (s.e2inf * x.scalar)));
     const double t6 = ((s.e12 * x.e123inf) + ((s.e13 * x.e1inf) + (s.e23 * x.e2inf))) - ((s.e1inf * x.e13) + ((s.e2inf * x.e23) + (s.e3inf * x.scalar)));
-    const double t7 = -(((s.e12 * x.e3inf) - ((s.e13 * x.e2inf) - (s.e23 * x.e1inf))) + ((s.e1inf * x.e23) - ((s.e2inf * x.e13) - (s.e3inf * x.e12))));
+    const double t7 = ((s.e13 * x.e2inf) + ((s.e2inf * x.e13) - (s.e12 * x.e3inf))) - ((s.e23 * x.e1inf) + ((s.e1inf * x.e23) + (s.e3inf * x.e12)));
     g123inf_Motor r;
     r.scalar = -((t1 * s.e12) + ((t2 * s.e13) + (t3 * s.e23)));
-    r.e12 = (t0 * s.e12) - ((t2 * s.e23) - (t3 * s.e13));
-    r.e13 = (t0 * s.e13) + ((t1 * s.e23) - (t3 * s.e12));
-    r.e23 = (t0 * s.e23) - ((t1 * s.e13) - (t2 * s.e12));
-    r.e1inf = ((t0 * s.e1inf) + ((t1 * s.e2inf) + (t2 * s.e3inf))) - ((t5 * s.e12) + ((t6 * s.e13) + (t7 * s.e23)));
-    r.e2inf = ((t0 * s.e2inf) - ((t1 * s.e1inf) - (t3 * s.e3inf))) + ((t4 * s.e12) - ((t6 * s.e23) - (t7 * s.e13)));
-    r.e3inf = ((t0 * s.e3inf) - ((t2 * s.e1inf) + (t3 * s.e2inf))) + ((t4 * s.e13) + ((t5 * s.e23) - (t7 * s.e12)));
-    r.e123inf = ((t1 * s.e3inf) - ((t2 * s.e2inf) - (t3 * s.e1inf))) + ((t4 * s.e23) - ((t5 * s.e13) - (t6 * s.e12)));
+    r.e12 = (t0 * s.e12) + ((t3 * s.e13) - (t2 * s.e23));
+    r.e13 = (t0 * s.e13) - ((t3 * s.e12) - (t1 * s.e23));
+    r.e23 = (t2 * s.e12) - ((t1 * s.e13) - (t0 * s.e23));
+    r.e1inf = ((t0 * s.e1inf) - ((t5 * s.e12) + (t6 * s.e13))) - ((t7 * s.e23) - ((t1 * s.e2inf) + (t2 * s.e3inf)));
+    r.e2inf = ((t4 * s.e12) + ((t7 * s.e13) - (t6 * s.e23))) - ((t1 * s.e1inf) - ((t0 * s.e2inf) + (t3 * s.e3inf)));
+    r.e3inf = ((t4 * s.e13) - ((t7 * s.e12) - (t5 * s.e23))) - ((t2 * s.e1inf) + ((t3 * s.e2inf) - (t0 * s.e3inf)));
+    r.e123inf = ((t6 * s.e12) - ((t5 * s.e13) - (t4 * s.e23))) + ((t3 * s.e1inf) - ((t2 * s.e2inf) - (t1 * s.e3inf)));
     return r;
 }
 
@@ -673,15 +673,15 @@ static inline g123inf_Vector g123inf_bivector_sandwich_vector(g123inf_Bivector s
     const double t0 = -((s.e12 * x.e2) + (s.e13 * x.e3));
     const double t1 = (s.e12 * x.e1) - (s.e23 * x.e3);
     const double t2 = (s.e13 * x.e1) + (s.e23 * x.e2);
-    const double t3 = -((s.e12 * x.e3) - ((s.e13 * x.e2) - (s.e23 * x.e1)));
-    const double t4 = -((s.e12 * x.einf) - ((s.e1inf * x.e2) - (s.e2inf * x.e1)));
-    const double t5 = -((s.e13 * x.einf) - ((s.e1inf * x.e3) - (s.e3inf * x.e1)));
-    const double t6 = -((s.e23 * x.einf) - ((s.e2inf * x.e3) - (s.e3inf * x.e2)));
+    const double t3 = (s.e13 * x.e2) - ((s.e12 * x.e3) + (s.e23 * x.e1));
+    const double t4 = (s.e1inf * x.e2) - ((s.e12 * x.einf) + (s.e2inf * x.e1));
+    const double t5 = (s.e1inf * x.e3) - ((s.e13 * x.einf) + (s.e3inf * x.e1));
+    const double t6 = (s.e2inf * x.e3) - ((s.e23 * x.einf) + (s.e3inf * x.e2));
     g123inf_Vector r;
     r.e1 = -((t1 * s.e12) + ((t2 * s.e13) + (t3 * s.e23)));
-    r.e2 = (t0 * s.e12) - ((t2 * s.e23) - (t3 * s.e13));
-    r.e3 = (t0 * s.e13) + ((t1 * s.e23) - (t3 * s.e12));
-    r.einf = ((t0 * s.e1inf) + ((t1 * s.e2inf) + (t2 * s.e3inf))) - ((t4 * s.e12) + ((t5 * s.e13) + (t6 * s.e23)));
+    r.e2 = (t0 * s.e12) + ((t3 * s.e13) - (t2 * s.e23));
+    r.e3 = (t0 * s.e13) - ((t3 * s.e12) - (t1 * s.e23));
+    r.einf = ((t0 * s.e1inf) - ((t4 * s.e12) + (t5 * s.e13))) - ((t6 * s.e23) - ((t1 * s.e2inf) + (t2 * s.e3inf)));
     return r;
 }
 
@@ -689,19 +689,19 @@ static inline g123inf_Vector g123inf_bivector_sandwich_vector(g123inf_Bivector s
 static inline g123inf_Bivector g123inf_bivector_sandwich_bivector(g123inf_Bivector s, g123inf_Bivector x) {
     const double t0 = (s.e12 * x.e12) + ((s.e13 * x.e13) + (s.e23 * x.e23));
     const double t1 = (s.e13 * x.e23) - (s.e23 * x.e13);
-    const double t2 = -((s.e12 * x.e23) - (s.e23 * x.e12));
+    const double t2 = (s.e23 * x.e12) - (s.e12 * x.e23);
     const double t3 = (s.e12 * x.e13) - (s.e13 * x.e12);
-    const double t4 = -(((s.e12 * x.e2inf) + (s.e13 * x.e3inf)) - ((s.e2inf * x.e12) + (s.e3inf * x.e13)));
-    const double t5 = ((s.e12 * x.e1inf) - (s.e23 * x.e3inf)) - ((s.e1inf * x.e12) - (s.e3inf * x.e23));
+    const double t4 = ((s.e2inf * x.e12) + (s.e3inf * x.e13)) - ((s.e12 * x.e2inf) + (s.e13 * x.e3inf));
+    const double t5 = ((s.e12 * x.e1inf) + (s.e3inf * x.e23)) - ((s.e23 * x.e3inf) + (s.e1inf * x.e12));
     const double t6 = ((s.e13 * x.e1inf) + (s.e23 * x.e2inf)) - ((s.e1inf * x.e13) + (s.e2inf * x.e23));
-    const double t7 = -(((s.e12 * x.e3inf) - ((s.e13 * x.e2inf) - (s.e23 * x.e1inf))) + ((s.e1inf * x.e23) - ((s.e2inf * x.e13) - (s.e3inf * x.e12))));
+    const double t7 = ((s.e13 * x.e2inf) + ((s.e2inf * x.e13) - (s.e12 * x.e3inf))) - ((s.e23 * x.e1inf) + ((s.e1inf * x.e23) + (s.e3inf * x.e12)));
     g123inf_Bivector r;
-    r.e12 = (t0 * s.e12) - ((t2 * s.e23) - (t3 * s.e13));
-    r.e13 = (t0 * s.e13) + ((t1 * s.e23) - (t3 * s.e12));
-    r.e23 = (t0 * s.e23) - ((t1 * s.e13) - (t2 * s.e12));
-    r.e1inf = ((t0 * s.e1inf) + ((t1 * s.e2inf) + (t2 * s.e3inf))) - ((t5 * s.e12) + ((t6 * s.e13) + (t7 * s.e23)));
-    r.e2inf = ((t0 * s.e2inf) - ((t1 * s.e1inf) - (t3 * s.e3inf))) + ((t4 * s.e12) - ((t6 * s.e23) - (t7 * s.e13)));
-    r.e3inf = ((t0 * s.e3inf) - ((t2 * s.e1inf) + (t3 * s.e2inf))) + ((t4 * s.e13) + ((t5 * s.e23) - (t7 * s.e12)));
+    r.e12 = (t0 * s.e12) + ((t3 * s.e13) - (t2 * s.e23));
+    r.e13 = (t0 * s.e13) - ((t3 * s.e12) - (t1 * s.e23));
+    r.e23 = (t2 * s.e12) - ((t1 * s.e13) - (t0 * s.e23));
+    r.e1inf = ((t0 * s.e1inf) - ((t5 * s.e12) + (t6 * s.e13))) - ((t7 * s.e23) - ((t1 * s.e2inf) + (t2 * s.e3inf)));
+    r.e2inf = ((t4 * s.e12) + ((t7 * s.e13) - (t6 * s.e23))) - ((t1 * s.e1inf) - ((t0 * s.e2inf) + (t3 * s.e3inf)));
+    r.e3inf = ((t4 * s.e13) - ((t7 * s.e12) - (t5 * s.e23))) - ((t2 * s.e1inf) + ((t3 * s.e2inf) - (t0 * s.e3inf)));
     return r;
 }
 
@@ -1493,22 +1493,22 @@ static inline float g123inf_bivector_norm_squaredf(g123inf_Bivectorf x) {
 /* rev(S) x S for a Motor S and a Motor x, in one fused kernel. */
 static inline g123inf_Motorf g123inf_motor_sandwich_motorf(g123inf_Motorf s, g123inf_Motorf x) {
     const float t0 = ((s.scalar * x.scalar) + (s.e12 * x.e12)) + ((s.e13 * x.e13) + (s.e23 * x.e23));
-    const float t1 = ((s.scalar * x.e12) - (s.e12 * x.scalar)) + ((s.e13 * x.e23) - (s.e23 * x.e13));
-    const float t2 = ((s.scalar * x.e13) - (s.e12 * x.e23)) - ((s.e13 * x.scalar) - (s.e23 * x.e12));
+    const float t1 = ((s.scalar * x.e12) + (s.e13 * x.e23)) - ((s.e12 * x.scalar) + (s.e23 * x.e13));
+    const float t2 = ((s.scalar * x.e13) + (s.e23 * x.e12)) - ((s.e12 * x.e23) + (s.e13 * x.scalar));
     const float t3 = ((s.scalar * x.e23) + (s.e12 * x.e13)) - ((s.e13 * x.e12) + (s.e23 * x.scalar));
-    const float t4 = (((s.scalar * x.e1inf) - (s.e12 * x.e2inf)) - ((s.e13 * x.e3inf) - (s.e23 * x.e123inf))) - (((s.e1inf * x.scalar) - (s.e2inf * x.e12)) - ((s.e3inf * x.e13) - (s.e123inf * x.e23)));
-    const float t5 = (((s.scalar * x.e2inf) + (s.e12 * x.e1inf)) - ((s.e13 * x.e123inf) + (s.e23 * x.e3inf))) - (((s.e1inf * x.e12) + (s.e2inf * x.scalar)) - ((s.e3inf * x.e23) + (s.e123inf * x.e13)));
+    const float t4 = (((s.scalar * x.e1inf) + (s.e23 * x.e123inf)) + ((s.e2inf * x.e12) + (s.e3inf * x.e13))) - (((s.e12 * x.e2inf) + (s.e13 * x.e3inf)) + ((s.e1inf * x.scalar) + (s.e123inf * x.e23)));
+    const float t5 = (((s.scalar * x.e2inf) + (s.e12 * x.e1inf)) + ((s.e3inf * x.e23) + (s.e123inf * x.e13))) - (((s.e13 * x.e123inf) + (s.e23 * x.e3inf)) + ((s.e1inf * x.e12) + (s.e2inf * x.scalar)));
     const float t6 = (((s.scalar * x.e3inf) + (s.e12 * x.e123inf)) + ((s.e13 * x.e1inf) + (s.e23 * x.e2inf))) - (((s.e1inf * x.e13) + (s.e2inf * x.e23)) + ((s.e3inf * x.scalar) + (s.e123inf * x.e12)));
-    const float t7 = (((s.scalar * x.e123inf) - (s.e12 * x.e3inf)) + ((s.e13 * x.e2inf) - (s.e23 * x.e1inf))) - (((s.e1inf * x.e23) - (s.e2inf * x.e13)) + ((s.e3inf * x.e12) - (s.e123inf * x.scalar)));
+    const float t7 = (((s.scalar * x.e123inf) + (s.e13 * x.e2inf)) + ((s.e2inf * x.e13) + (s.e123inf * x.scalar))) - (((s.e12 * x.e3inf) + (s.e23 * x.e1inf)) + ((s.e1inf * x.e23) + (s.e3inf * x.e12)));
     g123inf_Motorf r;
     r.scalar = ((t0 * s.scalar) - (t1 * s.e12)) - ((t2 * s.e13) + (t3 * s.e23));
-    r.e12 = ((t0 * s.e12) + (t1 * s.scalar)) - ((t2 * s.e23) - (t3 * s.e13));
-    r.e13 = ((t0 * s.e13) + (t1 * s.e23)) + ((t2 * s.scalar) - (t3 * s.e12));
-    r.e23 = ((t0 * s.e23) - (t1 * s.e13)) + ((t2 * s.e12) + (t3 * s.scalar));
-    r.e1inf = (((t0 * s.e1inf) + (t1 * s.e2inf)) + ((t2 * s.e3inf) - (t3 * s.e123inf))) + (((t4 * s.scalar) - (t5 * s.e12)) - ((t6 * s.e13) + (t7 * s.e23)));
-    r.e2inf = (((t0 * s.e2inf) - (t1 * s.e1inf)) + ((t2 * s.e123inf) + (t3 * s.e3inf))) + (((t4 * s.e12) + (t5 * s.scalar)) - ((t6 * s.e23) - (t7 * s.e13)));
-    r.e3inf = (((t0 * s.e3inf) - (t1 * s.e123inf)) - ((t2 * s.e1inf) + (t3 * s.e2inf))) + (((t4 * s.e13) + (t5 * s.e23)) + ((t6 * s.scalar) - (t7 * s.e12)));
-    r.e123inf = (((t0 * s.e123inf) + (t1 * s.e3inf)) - ((t2 * s.e2inf) - (t3 * s.e1inf))) + (((t4 * s.e23) - (t5 * s.e13)) + ((t6 * s.e12) + (t7 * s.scalar)));
+    r.e12 = ((t1 * s.scalar) + (t0 * s.e12)) + ((t3 * s.e13) - (t2 * s.e23));
+    r.e13 = ((t2 * s.scalar) - (t3 * s.e12)) + ((t0 * s.e13) + (t1 * s.e23));
+    r.e23 = ((t3 * s.scalar) + (t2 * s.e12)) - ((t1 * s.e13) - (t0 * s.e23));
+    r.e1inf = (((t4 * s.scalar) - (t5 * s.e12)) - ((t6 * s.e13) + (t7 * s.e23))) + (((t0 * s.e1inf) + (t1 * s.e2inf)) + ((t2 * s.e3inf) - (t3 * s.e123inf)));
+    r.e2inf = (((t5 * s.scalar) + (t4 * s.e12)) + ((t7 * s.e13) - (t6 * s.e23))) - (((t1 * s.e1inf) - (t0 * s.e2inf)) - ((t3 * s.e3inf) + (t2 * s.e123inf)));
+    r.e3inf = (((t6 * s.scalar) - (t7 * s.e12)) + ((t4 * s.e13) + (t5 * s.e23))) - (((t2 * s.e1inf) + (t3 * s.e2inf)) - ((t0 * s.e3inf) - (t1 * s.e123inf)));
+    r.e123inf = (((t7 * s.scalar) + (t6 * s.e12)) - ((t5 * s.e13) - (t4 * s.e23))) + (((t3 * s.e1inf) - (t2 * s.e2inf)) + ((t1 * s.e3inf) + (t0 * s.e123inf)));
     return r;
 }
 
@@ -1517,16 +1517,16 @@ static inline g123inf_Vectorf g123inf_motor_sandwich_vectorf(g123inf_Motorf s, g
     const float t0 = (s.scalar * x.e1) - ((s.e12 * x.e2) + (s.e13 * x.e3));
     const float t1 = (s.scalar * x.e2) + ((s.e12 * x.e1) - (s.e23 * x.e3));
     const float t2 = (s.scalar * x.e3) + ((s.e13 * x.e1) + (s.e23 * x.e2));
-    const float t3 = -((s.e12 * x.e3) - ((s.e13 * x.e2) - (s.e23 * x.e1)));
+    const float t3 = (s.e13 * x.e2) - ((s.e12 * x.e3) + (s.e23 * x.e1));
     const float t4 = ((s.scalar * x.einf) + (s.e1inf * x.e1)) + ((s.e2inf * x.e2) + (s.e3inf * x.e3));
-    const float t5 = -(((s.e12 * x.einf) - (s.e1inf * x.e2)) + ((s.e2inf * x.e1) + (s.e123inf * x.e3)));
-    const float t6 = -(((s.e13 * x.einf) - (s.e1inf * x.e3)) + ((s.e3inf * x.e1) - (s.e123inf * x.e2)));
-    const float t7 = -(((s.e23 * x.einf) - (s.e2inf * x.e3)) + ((s.e3inf * x.e2) + (s.e123inf * x.e1)));
+    const float t5 = ((s.e1inf * x.e2) - (s.e12 * x.einf)) - ((s.e2inf * x.e1) + (s.e123inf * x.e3));
+    const float t6 = ((s.e1inf * x.e3) + (s.e123inf * x.e2)) - ((s.e13 * x.einf) + (s.e3inf * x.e1));
+    const float t7 = ((s.e2inf * x.e3) - (s.e23 * x.einf)) - ((s.e3inf * x.e2) + (s.e123inf * x.e1));
     g123inf_Vectorf r;
     r.e1 = ((t0 * s.scalar) - (t1 * s.e12)) - ((t2 * s.e13) + (t3 * s.e23));
-    r.e2 = ((t0 * s.e12) + (t1 * s.scalar)) - ((t2 * s.e23) - (t3 * s.e13));
-    r.e3 = ((t0 * s.e13) + (t1 * s.e23)) + ((t2 * s.scalar) - (t3 * s.e12));
-    r.einf = (((t0 * s.e1inf) + (t1 * s.e2inf)) + ((t2 * s.e3inf) - (t3 * s.e123inf))) + (((t4 * s.scalar) - (t5 * s.e12)) - ((t6 * s.e13) + (t7 * s.e23)));
+    r.e2 = ((t1 * s.scalar) + (t0 * s.e12)) + ((t3 * s.e13) - (t2 * s.e23));
+    r.e3 = ((t2 * s.scalar) - (t3 * s.e12)) + ((t0 * s.e13) + (t1 * s.e23));
+    r.einf = (((t4 * s.scalar) - (t5 * s.e12)) - ((t6 * s.e13) + (t7 * s.e23))) + (((t0 * s.e1inf) + (t1 * s.e2inf)) + ((t2 * s.e3inf) - (t3 * s.e123inf)));
     return r;
 }
 
@@ -1534,19 +1534,19 @@ static inline g123inf_Vectorf g123inf_motor_sandwich_vectorf(g123inf_Motorf s, g
 static inline g123inf_Bivectorf g123inf_motor_sandwich_bivectorf(g123inf_Motorf s, g123inf_Bivectorf x) {
     const float t0 = (s.e12 * x.e12) + ((s.e13 * x.e13) + (s.e23 * x.e23));
     const float t1 = (s.scalar * x.e12) + ((s.e13 * x.e23) - (s.e23 * x.e13));
-    const float t2 = (s.scalar * x.e13) - ((s.e12 * x.e23) - (s.e23 * x.e12));
+    const float t2 = (s.scalar * x.e13) + ((s.e23 * x.e12) - (s.e12 * x.e23));
     const float t3 = (s.scalar * x.e23) + ((s.e12 * x.e13) - (s.e13 * x.e12));
-    const float t4 = ((s.scalar * x.e1inf) - ((s.e12 * x.e2inf) + (s.e13 * x.e3inf))) + ((s.e2inf * x.e12) + ((s.e3inf * x.e13) - (s.e123inf * x.e23)));
-    const float t5 = ((s.scalar * x.e2inf) + ((s.e12 * x.e1inf) - (s.e23 * x.e3inf))) - ((s.e1inf * x.e12) - ((s.e3inf * x.e23) + (s.e123inf * x.e13)));
+    const float t4 = ((s.scalar * x.e1inf) + ((s.e2inf * x.e12) + (s.e3inf * x.e13))) - ((s.e12 * x.e2inf) + ((s.e13 * x.e3inf) + (s.e123inf * x.e23)));
+    const float t5 = ((s.scalar * x.e2inf) + ((s.e12 * x.e1inf) + (s.e3inf * x.e23))) + ((s.e123inf * x.e13) - ((s.e23 * x.e3inf) + (s.e1inf * x.e12)));
     const float t6 = ((s.scalar * x.e3inf) + ((s.e13 * x.e1inf) + (s.e23 * x.e2inf))) - ((s.e1inf * x.e13) + ((s.e2inf * x.e23) + (s.e123inf * x.e12)));
-    const float t7 = -(((s.e12 * x.e3inf) - ((s.e13 * x.e2inf) - (s.e23 * x.e1inf))) + ((s.e1inf * x.e23) - ((s.e2inf * x.e13) - (s.e3inf * x.e12))));
+    const float t7 = ((s.e13 * x.e2inf) + ((s.e2inf * x.e13) - (s.e12 * x.e3inf))) - ((s.e23 * x.e1inf) + ((s.e1inf * x.e23) + (s.e3inf * x.e12)));
     g123inf_Bivectorf r;
-    r.e12 = ((t0 * s.e12) + (t1 * s.scalar)) - ((t2 * s.e23) - (t3 * s.e13));
-    r.e13 = ((t0 * s.e13) + (t1 * s.e23)) + ((t2 * s.scalar) - (t3 * s.e12));
-    r.e23 = ((t0 * s.e23) - (t1 * s.e13)) + ((t2 * s.e12) + (t3 * s.scalar));
-    r.e1inf = (((t0 * s.e1inf) + (t1 * s.e2inf)) + ((t2 * s.e3inf) - (t3 * s.e123inf))) + (((t4 * s.scalar) - (t5 * s.e12)) - ((t6 * s.e13) + (t7 * s.e23)));
-    r.e2inf = (((t0 * s.e2inf) - (t1 * s.e1inf)) + ((t2 * s.e123inf) + (t3 * s.e3inf))) + (((t4 * s.e12) + (t5 * s.scalar)) - ((t6 * s.e23) - (t7 * s.e13)));
-    r.e3inf = (((t0 * s.e3inf) - (t1 * s.e123inf)) - ((t2 * s.e1inf) + (t3 * s.e2inf))) + (((t4 * s.e13) + (t5 * s.e23)) + ((t6 * s.scalar) - (t7 * s.e12)));
+    r.e12 = ((t1 * s.scalar) + (t0 * s.e12)) + ((t3 * s.e13) - (t2 * s.e23));
+    r.e13 = ((t2 * s.scalar) - (t3 * s.e12)) + ((t0 * s.e13) + (t1 * s.e23));
+    r.e23 = ((t3 * s.scalar) + (t2 * s.e12)) - ((t1 * s.e13) - (t0 * s.e23));
+    r.e1inf = (((t4 * s.scalar) - (t5 * s.e12)) - ((t6 * s.e13) + (t7 * s.e23))) + (((t0 * s.e1inf) + (t1 * s.e2inf)) + ((t2 * s.e3inf) - (t3 * s.e123inf)));
+    r.e2inf = (((t5 * s.scalar) + (t4 * s.e12)) + ((t7 * s.e13) - (t6 * s.e23))) - (((t1 * s.e1inf) - (t0 * s.e2inf)) - ((t3 * s.e3inf) + (t2 * s.e123inf)));
+    r.e3inf = (((t6 * s.scalar) - (t7 * s.e12)) + ((t4 * s.e13) + (t5 * s.e23))) - (((t2 * s.e1inf) + (t3 * s.e2inf)) - ((t0 * s.e3inf) - (t1 * s.e123inf)));
     return r;
 }
 
@@ -1555,20 +1555,20 @@ static inline g123inf_Motorf g123inf_vector_sandwich_motorf(g123inf_Vectorf s, g
     const float t0 = (s.e1 * x.scalar) - ((s.e2 * x.e12) + (s.e3 * x.e13));
     const float t1 = (s.e1 * x.e12) + ((s.e2 * x.scalar) - (s.e3 * x.e23));
     const float t2 = (s.e1 * x.e13) + ((s.e2 * x.e23) + (s.e3 * x.scalar));
-    const float t3 = (s.e1 * x.e23) - ((s.e2 * x.e13) - (s.e3 * x.e12));
+    const float t3 = (s.e1 * x.e23) + ((s.e3 * x.e12) - (s.e2 * x.e13));
     const float t4 = ((s.e1 * x.e1inf) + (s.e2 * x.e2inf)) + ((s.e3 * x.e3inf) + (s.einf * x.scalar));
-    const float t5 = ((s.e1 * x.e2inf) - (s.e2 * x.e1inf)) + ((s.e3 * x.e123inf) + (s.einf * x.e12));
-    const float t6 = ((s.e1 * x.e3inf) - (s.e2 * x.e123inf)) - ((s.e3 * x.e1inf) - (s.einf * x.e13));
-    const float t7 = ((s.e1 * x.e123inf) + (s.e2 * x.e3inf)) - ((s.e3 * x.e2inf) - (s.einf * x.e23));
+    const float t5 = ((s.e1 * x.e2inf) + (s.e3 * x.e123inf)) + ((s.einf * x.e12) - (s.e2 * x.e1inf));
+    const float t6 = ((s.e1 * x.e3inf) + (s.einf * x.e13)) - ((s.e2 * x.e123inf) + (s.e3 * x.e1inf));
+    const float t7 = ((s.e1 * x.e123inf) + (s.e2 * x.e3inf)) + ((s.einf * x.e23) - (s.e3 * x.e2inf));
     g123inf_Motorf r;
     r.scalar = (t0 * s.e1) + ((t1 * s.e2) + (t2 * s.e3));
     r.e12 = (t0 * s.e2) - ((t1 * s.e1) - (t3 * s.e3));
     r.e13 = (t0 * s.e3) - ((t2 * s.e1) + (t3 * s.e2));
-    r.e23 = (t1 * s.e3) - ((t2 * s.e2) - (t3 * s.e1));
+    r.e23 = (t3 * s.e1) - ((t2 * s.e2) - (t1 * s.e3));
     r.e1inf = ((t0 * s.einf) - (t4 * s.e1)) - ((t5 * s.e2) + (t6 * s.e3));
-    r.e2inf = ((t1 * s.einf) - (t4 * s.e2)) + ((t5 * s.e1) - (t7 * s.e3));
-    r.e3inf = ((t2 * s.einf) - (t4 * s.e3)) + ((t6 * s.e1) + (t7 * s.e2));
-    r.e123inf = ((t3 * s.einf) - (t5 * s.e3)) + ((t6 * s.e2) - (t7 * s.e1));
+    r.e2inf = ((t5 * s.e1) - (t4 * s.e2)) - ((t7 * s.e3) - (t1 * s.einf));
+    r.e3inf = ((t6 * s.e1) + (t7 * s.e2)) - ((t4 * s.e3) - (t2 * s.einf));
+    r.e123inf = ((t6 * s.e2) - (t7 * s.e1)) - ((t5 * s.e3) - (t3 * s.einf));
     return r;
 }
 
@@ -1594,40 +1594,40 @@ static inline g123inf_Bivectorf g123inf_vector_sandwich_bivectorf(g123inf_Vector
     const float t0 = -((s.e2 * x.e12) + (s.e3 * x.e13));
     const float t1 = (s.e1 * x.e12) - (s.e3 * x.e23);
     const float t2 = (s.e1 * x.e13) + (s.e2 * x.e23);
-    const float t3 = (s.e1 * x.e23) - ((s.e2 * x.e13) - (s.e3 * x.e12));
+    const float t3 = (s.e1 * x.e23) + ((s.e3 * x.e12) - (s.e2 * x.e13));
     const float t4 = (s.e1 * x.e1inf) + ((s.e2 * x.e2inf) + (s.e3 * x.e3inf));
-    const float t5 = (s.e1 * x.e2inf) - ((s.e2 * x.e1inf) - (s.einf * x.e12));
-    const float t6 = (s.e1 * x.e3inf) - ((s.e3 * x.e1inf) - (s.einf * x.e13));
-    const float t7 = (s.e2 * x.e3inf) - ((s.e3 * x.e2inf) - (s.einf * x.e23));
+    const float t5 = (s.e1 * x.e2inf) + ((s.einf * x.e12) - (s.e2 * x.e1inf));
+    const float t6 = (s.e1 * x.e3inf) + ((s.einf * x.e13) - (s.e3 * x.e1inf));
+    const float t7 = (s.e2 * x.e3inf) + ((s.einf * x.e23) - (s.e3 * x.e2inf));
     g123inf_Bivectorf r;
     r.e12 = (t0 * s.e2) - ((t1 * s.e1) - (t3 * s.e3));
     r.e13 = (t0 * s.e3) - ((t2 * s.e1) + (t3 * s.e2));
-    r.e23 = (t1 * s.e3) - ((t2 * s.e2) - (t3 * s.e1));
+    r.e23 = (t3 * s.e1) - ((t2 * s.e2) - (t1 * s.e3));
     r.e1inf = ((t0 * s.einf) - (t4 * s.e1)) - ((t5 * s.e2) + (t6 * s.e3));
-    r.e2inf = ((t1 * s.einf) - (t4 * s.e2)) + ((t5 * s.e1) - (t7 * s.e3));
-    r.e3inf = ((t2 * s.einf) - (t4 * s.e3)) + ((t6 * s.e1) + (t7 * s.e2));
+    r.e2inf = ((t5 * s.e1) - (t4 * s.e2)) - ((t7 * s.e3) - (t1 * s.einf));
+    r.e3inf = ((t6 * s.e1) + (t7 * s.e2)) - ((t4 * s.e3) - (t2 * s.einf));
     return r;
 }
 
 /* rev(S) x S for a Bivector S and a Motor x, in one fused kernel. */
 static inline g123inf_Motorf g123inf_bivector_sandwich_motorf(g123inf_Bivectorf s, g123inf_Motorf x) {
     const float t0 = (s.e12 * x.e12) + ((s.e13 * x.e13) + (s.e23 * x.e23));
-    const float t1 = -((s.e12 * x.scalar) - ((s.e13 * x.e23) - (s.e23 * x.e13)));
-    const float t2 = -((s.e12 * x.e23) + ((s.e13 * x.scalar) - (s.e23 * x.e12)));
+    const float t1 = (s.e13 * x.e23) - ((s.e12 * x.scalar) + (s.e23 * x.e13));
+    const float t2 = (s.e23 * x.e12) - ((s.e12 * x.e23) + (s.e13 * x.scalar));
     const float t3 = (s.e12 * x.e13) - ((s.e13 * x.e12) + (s.e23 * x.scalar));
-    const float t4 = -(((s.e12 * x.e2inf) + ((s.e13 * x.e3inf) - (s.e23 * x.e123inf))) + ((s.e1inf * x.scalar) - ((s.e2inf * x.e12) + (s.e3inf * x.e13))));
-    const float t5 = ((s.e12 * x.e1inf) - ((s.e13 * x.e123inf) + (s.e23 * x.e3inf))) - ((s.e1inf * x.e12) + ((s.e2inf * x.scalar) - (s.e3inf * x.e23)));
+    const float t4 = ((s.e23 * x.e123inf) + ((s.e2inf * x.e12) + (s.e3inf * x.e13))) - ((s.e12 * x.e2inf) + ((s.e13 * x.e3inf) + (s.e1inf * x.scalar)));
+    const float t5 = ((s.e12 * x.e1inf) + ((s.e3inf * x.e23) - (s.e13 * x.e123inf))) - ((s.e23 * x.e3inf) + ((s.e1inf * x.e12) + (s.e2inf * x.scalar)));
     const float t6 = ((s.e12 * x.e123inf) + ((s.e13 * x.e1inf) + (s.e23 * x.e2inf))) - ((s.e1inf * x.e13) + ((s.e2inf * x.e23) + (s.e3inf * x.scalar)));
-    const float t7 = -(((s.e12 * x.e3inf) - ((s.e13 * x.e2inf) - (s.e23 * x.e1inf))) + ((s.e1inf * x.e23) - ((s.e2inf * x.e13) - (s.e3inf * x.e12))));
+    const float t7 = ((s.e13 * x.e2inf) + ((s.e2inf * x.e13) - (s.e12 * x.e3inf))) - ((s.e23 * x.e1inf) + ((s.e1inf * x.e23) + (s.e3inf * x.e12)));
     g123inf_Motorf r;
     r.scalar = -((t1 * s.e12) + ((t2 * s.e13) + (t3 * s.e23)));
-    r.e12 = (t0 * s.e12) - ((t2 * s.e23) - (t3 * s.e13));
-    r.e13 = (t0 * s.e13) + ((t1 * s.e23) - (t3 * s.e12));
-    r.e23 = (t0 * s.e23) - ((t1 * s.e13) - (t2 * s.e12));
-    r.e1inf = ((t0 * s.e1inf) + ((t1 * s.e2inf) + (t2 * s.e3inf))) - ((t5 * s.e12) + ((t6 * s.e13) + (t7 * s.e23)));
-    r.e2inf = ((t0 * s.e2inf) - ((t1 * s.e1inf) - (t3 * s.e3inf))) + ((t4 * s.e12) - ((t6 * s.e23) - (t7 * s.e13)));
-    r.e3inf = ((t0 * s.e3inf) - ((t2 * s.e1inf) + (t3 * s.e2inf))) + ((t4 * s.e13) + ((t5 * s.e23) - (t7 * s.e12)));
-    r.e123inf = ((t1 * s.e3inf) - ((t2 * s.e2inf) - (t3 * s.e1inf))) + ((t4 * s.e23) - ((t5 * s.e13) - (t6 * s.e12)));
+    r.e12 = (t0 * s.e12) + ((t3 * s.e13) - (t2 * s.e23));
+    r.e13 = (t0 * s.e13) - ((t3 * s.e12) - (t1 * s.e23));
+    r.e23 = (t2 * s.e12) - ((t1 * s.e13) - (t0 * s.e23));
+    r.e1inf = ((t0 * s.e1inf) - ((t5 * s.e12) + (t6 * s.e13))) - ((t7 * s.e23) - ((t1 * s.e2inf) + (t2 * s.e3inf)));
+    r.e2inf = ((t4 * s.e12) + ((t7 * s.e13) - (t6 * s.e23))) - ((t1 * s.e1inf) - ((t0 * s.e2inf) + (t3 * s.e3inf)));
+    r.e3inf = ((t4 * s.e13) - ((t7 * s.e12) - (t5 * s.e23))) - ((t2 * s.e1inf) + ((t3 * s.e2inf) - (t0 * s.e3inf)));
+    r.e123inf = ((t6 * s.e12) - ((t5 * s.e13) - (t4 * s.e23))) + ((t3 * s.e1inf) - ((t2 * s.e2inf) - (t1 * s.e3inf)));
     return r;
 }
 
@@ -1636,15 +1636,15 @@ static inline g123inf_Vectorf g123inf_bivector_sandwich_vectorf(g123inf_Bivector
     const float t0 = -((s.e12 * x.e2) + (s.e13 * x.e3));
     const float t1 = (s.e12 * x.e1) - (s.e23 * x.e3);
     const float t2 = (s.e13 * x.e1) + (s.e23 * x.e2);
-    const float t3 = -((s.e12 * x.e3) - ((s.e13 * x.e2) - (s.e23 * x.e1)));
-    const float t4 = -((s.e12 * x.einf) - ((s.e1inf * x.e2) - (s.e2inf * x.e1)));
-    const float t5 = -((s.e13 * x.einf) - ((s.e1inf * x.e3) - (s.e3inf * x.e1)));
-    const float t6 = -((s.e23 * x.einf) - ((s.e2inf * x.e3) - (s.e3inf * x.e2)));
+    const float t3 = (s.e13 * x.e2) - ((s.e12 * x.e3) + (s.e23 * x.e1));
+    const float t4 = (s.e1inf * x.e2) - ((s.e12 * x.einf) + (s.e2inf * x.e1));
+    const float t5 = (s.e1inf * x.e3) - ((s.e13 * x.einf) + (s.e3inf * x.e1));
+    const float t6 = (s.e2inf * x.e3) - ((s.e23 * x.einf) + (s.e3inf * x.e2));
     g123inf_Vectorf r;
     r.e1 = -((t1 * s.e12) + ((t2 * s.e13) + (t3 * s.e23)));
-    r.e2 = (t0 * s.e12) - ((t2 * s.e23) - (t3 * s.e13));
-    r.e3 = (t0 * s.e13) + ((t1 * s.e23) - (t3 * s.e12));
-    r.einf = ((t0 * s.e1inf) + ((t1 * s.e2inf) + (t2 * s.e3inf))) - ((t4 * s.e12) + ((t5 * s.e13) + (t6 * s.e23)));
+    r.e2 = (t0 * s.e12) + ((t3 * s.e13) - (t2 * s.e23));
+    r.e3 = (t0 * s.e13) - ((t3 * s.e12) - (t1 * s.e23));
+    r.einf = ((t0 * s.e1inf) - ((t4 * s.e12) + (t5 * s.e13))) - ((t6 * s.e23) - ((t1 * s.e2inf) + (t2 * s.e3inf)));
     return r;
 }
 
@@ -1652,19 +1652,19 @@ static inline g123inf_Vectorf g123inf_bivector_sandwich_vectorf(g123inf_Bivector
 static inline g123inf_Bivectorf g123inf_bivector_sandwich_bivectorf(g123inf_Bivectorf s, g123inf_Bivectorf x) {
     const float t0 = (s.e12 * x.e12) + ((s.e13 * x.e13) + (s.e23 * x.e23));
     const float t1 = (s.e13 * x.e23) - (s.e23 * x.e13);
-    const float t2 = -((s.e12 * x.e23) - (s.e23 * x.e12));
+    const float t2 = (s.e23 * x.e12) - (s.e12 * x.e23);
     const float t3 = (s.e12 * x.e13) - (s.e13 * x.e12);
-    const float t4 = -(((s.e12 * x.e2inf) + (s.e13 * x.e3inf)) - ((s.e2inf * x.e12) + (s.e3inf * x.e13)));
-    const float t5 = ((s.e12 * x.e1inf) - (s.e23 * x.e3inf)) - ((s.e1inf * x.e12) - (s.e3inf * x.e23));
+    const float t4 = ((s.e2inf * x.e12) + (s.e3inf * x.e13)) - ((s.e12 * x.e2inf) + (s.e13 * x.e3inf));
+    const float t5 = ((s.e12 * x.e1inf) + (s.e3inf * x.e23)) - ((s.e23 * x.e3inf) + (s.e1inf * x.e12));
     const float t6 = ((s.e13 * x.e1inf) + (s.e23 * x.e2inf)) - ((s.e1inf * x.e13) + (s.e2inf * x.e23));
-    const float t7 = -(((s.e12 * x.e3inf) - ((s.e13 * x.e2inf) - (s.e23 * x.e1inf))) + ((s.e1inf * x.e23) - ((s.e2inf * x.e13) - (s.e3inf * x.e12))));
+    const float t7 = ((s.e13 * x.e2inf) + ((s.e2inf * x.e13) - (s.e12 * x.e3inf))) - ((s.e23 * x.e1inf) + ((s.e1inf * x.e23) + (s.e3inf * x.e12)));
     g123inf_Bivectorf r;
-    r.e12 = (t0 * s.e12) - ((t2 * s.e23) - (t3 * s.e13));
-    r.e13 = (t0 * s.e13) + ((t1 * s.e23) - (t3 * s.e12));
-    r.e23 = (t0 * s.e23) - ((t1 * s.e13) - (t2 * s.e12));
-    r.e1inf = ((t0 * s.e1inf) + ((t1 * s.e2inf) + (t2 * s.e3inf))) - ((t5 * s.e12) + ((t6 * s.e13) + (t7 * s.e23)));
-    r.e2inf = ((t0 * s.e2inf) - ((t1 * s.e1inf) - (t3 * s.e3inf))) + ((t4 * s.e12) - ((t6 * s.e23) - (t7 * s.e13)));
-    r.e3inf = ((t0 * s.e3inf) - ((t2 * s.e1inf) + (t3 * s.e2inf))) + ((t4 * s.e13) + ((t5 * s.e23) - (t7 * s.e12)));
+    r.e12 = (t0 * s.e12) + ((t3 * s.e13) - (t2 * s.e23));
+    r.e13 = (t0 * s.e13) - ((t3 * s.e12) - (t1 * s.e23));
+    r.e23 = (t2 * s.e12) - ((t1 * s.e13) - (t0 * s.e23));
+    r.e1inf = ((t0 * s.e1inf) - ((t5 * s.e12) + (t6 * s.e13))) - ((t7 * s.e23) - ((t1 * s.e2inf) + (t2 * s.e3inf)));
+    r.e2inf = ((t4 * s.e12) + ((t7 * s.e13) - (t6 * s.e23))) - ((t1 * s.e1inf) - ((t0 * s.e2inf) + (t3 * s.e3inf)));
+    r.e3inf = ((t4 * s.e13) - ((t7 * s.e12) - (t5 * s.e23))) - ((t2 * s.e1inf) + ((t3 * s.e2inf) - (t0 * s.e3inf)));
     return r;
 }
 

@@ -501,13 +501,13 @@ static inline pga3_Motor pga3_motor_apply_motor(pga3_Motor s, pga3_Motor x) {
     const double t7 = (((s.scalar * x.e0123) + (s.e01 * x.e23)) - ((s.e02 * x.e13) - (s.e12 * x.e03))) + (((s.e03 * x.e12) - (s.e13 * x.e02)) + ((s.e23 * x.e01) + (s.e0123 * x.scalar)));
     pga3_Motor r;
     r.scalar = ((t0 * s.scalar) + (t3 * s.e12)) + ((t5 * s.e13) + (t6 * s.e23));
-    r.e01 = -((((t0 * s.e01) - (t1 * s.scalar)) - ((t2 * s.e12) - (t3 * s.e02))) - (((t4 * s.e13) - (t5 * s.e03)) - ((t6 * s.e0123) - (t7 * s.e23))));
-    r.e02 = -((((t0 * s.e02) + (t1 * s.e12)) - ((t2 * s.scalar) + (t3 * s.e01))) - (((t4 * s.e23) + (t5 * s.e0123)) - ((t6 * s.e03) + (t7 * s.e13))));
-    r.e12 = -(((t0 * s.e12) - (t3 * s.scalar)) - ((t5 * s.e23) - (t6 * s.e13)));
-    r.e03 = -((((t0 * s.e03) + (t1 * s.e13)) + ((t2 * s.e23) + (t3 * s.e0123))) - (((t4 * s.scalar) + (t5 * s.e01)) + ((t6 * s.e02) + (t7 * s.e12))));
-    r.e13 = -(((t0 * s.e13) + (t3 * s.e23)) - ((t5 * s.scalar) + (t6 * s.e12)));
-    r.e23 = -(((t0 * s.e23) - (t3 * s.e13)) + ((t5 * s.e12) - (t6 * s.scalar)));
-    r.e0123 = (((t0 * s.e0123) - (t1 * s.e23)) + ((t2 * s.e13) - (t3 * s.e03))) - (((t4 * s.e12) - (t5 * s.e02)) + ((t6 * s.e01) - (t7 * s.scalar)));
+    r.e01 = (((t1 * s.scalar) - (t0 * s.e01)) - ((t3 * s.e02) - (t2 * s.e12))) - (((t5 * s.e03) - (t4 * s.e13)) - ((t7 * s.e23) - (t6 * s.e0123)));
+    r.e02 = (((t2 * s.scalar) + (t3 * s.e01)) - ((t0 * s.e02) + (t1 * s.e12))) - (((t6 * s.e03) + (t7 * s.e13)) - ((t4 * s.e23) + (t5 * s.e0123)));
+    r.e12 = ((t3 * s.scalar) - (t0 * s.e12)) - ((t6 * s.e13) - (t5 * s.e23));
+    r.e03 = (((t4 * s.scalar) + (t5 * s.e01)) + ((t6 * s.e02) + (t7 * s.e12))) - (((t0 * s.e03) + (t1 * s.e13)) + ((t2 * s.e23) + (t3 * s.e0123)));
+    r.e13 = ((t5 * s.scalar) + (t6 * s.e12)) - ((t0 * s.e13) + (t3 * s.e23));
+    r.e23 = ((t6 * s.scalar) - (t5 * s.e12)) + ((t3 * s.e13) - (t0 * s.e23));
+    r.e0123 = (((t7 * s.scalar) - (t6 * s.e01)) + ((t5 * s.e02) - (t4 * s.e12))) - (((t3 * s.e03) - (t2 * s.e13)) + ((t1 * s.e23) - (t0 * s.e0123)));
     return r;
 }
 
@@ -540,12 +540,12 @@ static inline pga3_Line pga3_motor_apply_line(pga3_Motor s, pga3_Line x) {
     const double t6 = (s.scalar * x.e23) - ((s.e12 * x.e13) - (s.e13 * x.e12));
     const double t7 = ((s.e01 * x.e23) - ((s.e02 * x.e13) - (s.e12 * x.e03))) + ((s.e03 * x.e12) - ((s.e13 * x.e02) - (s.e23 * x.e01)));
     pga3_Line r;
-    r.e01 = -((((t0 * s.e01) - (t1 * s.scalar)) - ((t2 * s.e12) - (t3 * s.e02))) - (((t4 * s.e13) - (t5 * s.e03)) - ((t6 * s.e0123) - (t7 * s.e23))));
-    r.e02 = -((((t0 * s.e02) + (t1 * s.e12)) - ((t2 * s.scalar) + (t3 * s.e01))) - (((t4 * s.e23) + (t5 * s.e0123)) - ((t6 * s.e03) + (t7 * s.e13))));
-    r.e12 = -(((t0 * s.e12) - (t3 * s.scalar)) - ((t5 * s.e23) - (t6 * s.e13)));
-    r.e03 = -((((t0 * s.e03) + (t1 * s.e13)) + ((t2 * s.e23) + (t3 * s.e0123))) - (((t4 * s.scalar) + (t5 * s.e01)) + ((t6 * s.e02) + (t7 * s.e12))));
-    r.e13 = -(((t0 * s.e13) + (t3 * s.e23)) - ((t5 * s.scalar) + (t6 * s.e12)));
-    r.e23 = -(((t0 * s.e23) - (t3 * s.e13)) + ((t5 * s.e12) - (t6 * s.scalar)));
+    r.e01 = (((t1 * s.scalar) - (t0 * s.e01)) - ((t3 * s.e02) - (t2 * s.e12))) - (((t5 * s.e03) - (t4 * s.e13)) - ((t7 * s.e23) - (t6 * s.e0123)));
+    r.e02 = (((t2 * s.scalar) + (t3 * s.e01)) - ((t0 * s.e02) + (t1 * s.e12))) - (((t6 * s.e03) + (t7 * s.e13)) - ((t4 * s.e23) + (t5 * s.e0123)));
+    r.e12 = ((t3 * s.scalar) - (t0 * s.e12)) - ((t6 * s.e13) - (t5 * s.e23));
+    r.e03 = (((t4 * s.scalar) + (t5 * s.e01)) + ((t6 * s.e02) + (t7 * s.e12))) - (((t0 * s.e03) + (t1 * s.e13)) + ((t2 * s.e23) + (t3 * s.e0123)));
+    r.e13 = ((t5 * s.scalar) + (t6 * s.e12)) - ((t0 * s.e13) + (t3 * s.e23));
+    r.e23 = ((t6 * s.scalar) - (t5 * s.e12)) + ((t3 * s.e13) - (t0 * s.e23));
     return r;
 }
 
@@ -561,13 +561,13 @@ static inline pga3_Motor pga3_point_apply_motor(pga3_Point s, pga3_Motor x) {
     const double t7 = s.e123 * x.scalar;
     pga3_Motor r;
     r.scalar = t7 * s.e123;
-    r.e01 = -(((t2 * s.e012) + (t4 * s.e013)) - ((t6 * s.e123) - (t7 * s.e023)));
-    r.e02 = ((t1 * s.e012) - (t4 * s.e023)) - ((t5 * s.e123) - (t7 * s.e013));
+    r.e01 = ((t6 * s.e123) - (t2 * s.e012)) - ((t4 * s.e013) + (t7 * s.e023));
+    r.e02 = ((t1 * s.e012) + (t7 * s.e013)) - ((t4 * s.e023) + (t5 * s.e123));
     r.e12 = -(t4 * s.e123);
-    r.e03 = ((t1 * s.e013) + (t2 * s.e023)) + ((t3 * s.e123) - (t7 * s.e012));
+    r.e03 = ((t1 * s.e013) - (t7 * s.e012)) + ((t2 * s.e023) + (t3 * s.e123));
     r.e13 = t2 * s.e123;
     r.e23 = -(t1 * s.e123);
-    r.e0123 = -(((t0 * s.e123) - (t1 * s.e023)) + ((t2 * s.e013) - (t4 * s.e012)));
+    r.e0123 = ((t4 * s.e012) - (t2 * s.e013)) + ((t1 * s.e023) - (t0 * s.e123));
     return r;
 }
 
@@ -579,7 +579,7 @@ static inline pga3_Point pga3_point_apply_point(pga3_Point s, pga3_Point x) {
     const double t3 = -((s.e012 * x.e123) - (s.e123 * x.e012));
     pga3_Point r;
     r.e012 = -((t0 * s.e012) + (t3 * s.e123));
-    r.e013 = -((t0 * s.e013) - (t2 * s.e123));
+    r.e013 = (t2 * s.e123) - (t0 * s.e013);
     r.e023 = -((t0 * s.e023) + (t1 * s.e123));
     r.e123 = -(t0 * s.e123);
     return r;
@@ -594,7 +594,7 @@ static inline pga3_Line pga3_point_apply_line(pga3_Point s, pga3_Line x) {
     const double t4 = (s.e012 * x.e23) - ((s.e023 * x.e12) - (s.e123 * x.e02));
     const double t5 = -((s.e012 * x.e13) - ((s.e013 * x.e12) - (s.e123 * x.e01)));
     pga3_Line r;
-    r.e01 = -((t1 * s.e012) + ((t3 * s.e013) - (t5 * s.e123)));
+    r.e01 = (t5 * s.e123) - ((t1 * s.e012) + (t3 * s.e013));
     r.e02 = (t0 * s.e012) - ((t3 * s.e023) + (t4 * s.e123));
     r.e12 = -(t3 * s.e123);
     r.e03 = (t0 * s.e013) + ((t1 * s.e023) + (t2 * s.e123));
@@ -615,13 +615,13 @@ static inline pga3_Motor pga3_line_apply_motor(pga3_Line s, pga3_Motor x) {
     const double t7 = ((s.e01 * x.e23) - ((s.e02 * x.e13) - (s.e12 * x.e03))) + ((s.e03 * x.e12) - ((s.e13 * x.e02) - (s.e23 * x.e01)));
     pga3_Motor r;
     r.scalar = (t3 * s.e12) + ((t5 * s.e13) + (t6 * s.e23));
-    r.e01 = -(((t0 * s.e01) - ((t2 * s.e12) - (t3 * s.e02))) - ((t4 * s.e13) - ((t5 * s.e03) - (t7 * s.e23))));
-    r.e02 = -(((t0 * s.e02) + ((t1 * s.e12) - (t3 * s.e01))) - ((t4 * s.e23) - ((t6 * s.e03) + (t7 * s.e13))));
-    r.e12 = -((t0 * s.e12) - ((t5 * s.e23) - (t6 * s.e13)));
-    r.e03 = -(((t0 * s.e03) + ((t1 * s.e13) + (t2 * s.e23))) - ((t5 * s.e01) + ((t6 * s.e02) + (t7 * s.e12))));
-    r.e13 = -((t0 * s.e13) + ((t3 * s.e23) - (t6 * s.e12)));
-    r.e23 = -((t0 * s.e23) - ((t3 * s.e13) - (t5 * s.e12)));
-    r.e0123 = -(((t1 * s.e23) - ((t2 * s.e13) - (t3 * s.e03))) + ((t4 * s.e12) - ((t5 * s.e02) - (t6 * s.e01))));
+    r.e01 = ((t2 * s.e12) - ((t0 * s.e01) + (t3 * s.e02))) - ((t5 * s.e03) - ((t4 * s.e13) + (t7 * s.e23)));
+    r.e02 = ((t3 * s.e01) - ((t0 * s.e02) + (t1 * s.e12))) - ((t6 * s.e03) + ((t7 * s.e13) - (t4 * s.e23)));
+    r.e12 = (t5 * s.e23) - ((t0 * s.e12) + (t6 * s.e13));
+    r.e03 = ((t5 * s.e01) + ((t6 * s.e02) + (t7 * s.e12))) - ((t0 * s.e03) + ((t1 * s.e13) + (t2 * s.e23)));
+    r.e13 = (t6 * s.e12) - ((t0 * s.e13) + (t3 * s.e23));
+    r.e23 = (t3 * s.e13) - ((t5 * s.e12) + (t0 * s.e23));
+    r.e0123 = ((t5 * s.e02) - ((t6 * s.e01) + (t4 * s.e12))) - ((t3 * s.e03) - ((t2 * s.e13) - (t1 * s.e23)));
     return r;
 }
 
@@ -635,10 +635,10 @@ static inline pga3_Point pga3_line_apply_point(pga3_Line s, pga3_Point x) {
     const double t5 = -((s.e02 * x.e123) - ((s.e12 * x.e023) - (s.e23 * x.e012)));
     const double t6 = (s.e01 * x.e123) - ((s.e12 * x.e013) - (s.e13 * x.e012));
     pga3_Point r;
-    r.e012 = -(((t0 * s.e12) - (t1 * s.e02)) + ((t2 * s.e01) - ((t5 * s.e23) - (t6 * s.e13))));
-    r.e013 = -(((t0 * s.e13) - (t1 * s.e03)) + ((t3 * s.e23) + ((t4 * s.e01) - (t6 * s.e12))));
-    r.e023 = -(((t0 * s.e23) - (t2 * s.e03)) - ((t3 * s.e13) - ((t4 * s.e02) + (t5 * s.e12))));
-    r.e123 = -((t1 * s.e23) - ((t2 * s.e13) - (t4 * s.e12)));
+    r.e012 = ((t1 * s.e02) - (t2 * s.e01)) - ((t0 * s.e12) + ((t6 * s.e13) - (t5 * s.e23)));
+    r.e013 = ((t6 * s.e12) - (t4 * s.e01)) + ((t1 * s.e03) - ((t0 * s.e13) + (t3 * s.e23)));
+    r.e023 = ((t2 * s.e03) - (t4 * s.e02)) - ((t5 * s.e12) - ((t3 * s.e13) - (t0 * s.e23)));
+    r.e123 = (t2 * s.e13) - ((t4 * s.e12) + (t1 * s.e23));
     return r;
 }
 
@@ -653,12 +653,12 @@ static inline pga3_Line pga3_line_apply_line(pga3_Line s, pga3_Line x) {
     const double t6 = -((s.e12 * x.e13) - (s.e13 * x.e12));
     const double t7 = ((s.e01 * x.e23) - ((s.e02 * x.e13) - (s.e12 * x.e03))) + ((s.e03 * x.e12) - ((s.e13 * x.e02) - (s.e23 * x.e01)));
     pga3_Line r;
-    r.e01 = -(((t0 * s.e01) - ((t2 * s.e12) - (t3 * s.e02))) - ((t4 * s.e13) - ((t5 * s.e03) - (t7 * s.e23))));
-    r.e02 = -(((t0 * s.e02) + ((t1 * s.e12) - (t3 * s.e01))) - ((t4 * s.e23) - ((t6 * s.e03) + (t7 * s.e13))));
-    r.e12 = -((t0 * s.e12) - ((t5 * s.e23) - (t6 * s.e13)));
-    r.e03 = -(((t0 * s.e03) + ((t1 * s.e13) + (t2 * s.e23))) - ((t5 * s.e01) + ((t6 * s.e02) + (t7 * s.e12))));
-    r.e13 = -((t0 * s.e13) + ((t3 * s.e23) - (t6 * s.e12)));
-    r.e23 = -((t0 * s.e23) - ((t3 * s.e13) - (t5 * s.e12)));
+    r.e01 = ((t2 * s.e12) - ((t0 * s.e01) + (t3 * s.e02))) - ((t5 * s.e03) - ((t4 * s.e13) + (t7 * s.e23)));
+    r.e02 = ((t3 * s.e01) - ((t0 * s.e02) + (t1 * s.e12))) - ((t6 * s.e03) + ((t7 * s.e13) - (t4 * s.e23)));
+    r.e12 = (t5 * s.e23) - ((t0 * s.e12) + (t6 * s.e13));
+    r.e03 = ((t5 * s.e01) + ((t6 * s.e02) + (t7 * s.e12))) - ((t0 * s.e03) + ((t1 * s.e13) + (t2 * s.e23)));
+    r.e13 = (t6 * s.e12) - ((t0 * s.e13) + (t3 * s.e23));
+    r.e23 = (t3 * s.e13) - ((t5 * s.e12) + (t0 * s.e23));
     return r;
 }
 
@@ -1402,13 +1402,13 @@ static inline pga3_Motorf pga3_motor_apply_motorf(pga3_Motorf s, pga3_Motorf x) 
     const float t7 = (((s.scalar * x.e0123) + (s.e01 * x.e23)) - ((s.e02 * x.e13) - (s.e12 * x.e03))) + (((s.e03 * x.e12) - (s.e13 * x.e02)) + ((s.e23 * x.e01) + (s.e0123 * x.scalar)));
     pga3_Motorf r;
     r.scalar = ((t0 * s.scalar) + (t3 * s.e12)) + ((t5 * s.e13) + (t6 * s.e23));
-    r.e01 = -((((t0 * s.e01) - (t1 * s.scalar)) - ((t2 * s.e12) - (t3 * s.e02))) - (((t4 * s.e13) - (t5 * s.e03)) - ((t6 * s.e0123) - (t7 * s.e23))));
-    r.e02 = -((((t0 * s.e02) + (t1 * s.e12)) - ((t2 * s.scalar) + (t3 * s.e01))) - (((t4 * s.e23) + (t5 * s.e0123)) - ((t6 * s.e03) + (t7 * s.e13))));
-    r.e12 = -(((t0 * s.e12) - (t3 * s.scalar)) - ((t5 * s.e23) - (t6 * s.e13)));
-    r.e03 = -((((t0 * s.e03) + (t1 * s.e13)) + ((t2 * s.e23) + (t3 * s.e0123))) - (((t4 * s.scalar) + (t5 * s.e01)) + ((t6 * s.e02) + (t7 * s.e12))));
-    r.e13 = -(((t0 * s.e13) + (t3 * s.e23)) - ((t5 * s.scalar) + (t6 * s.e12)));
-    r.e23 = -(((t0 * s.e23) - (t3 * s.e13)) + ((t5 * s.e12) - (t6 * s.scalar)));
-    r.e0123 = (((t0 * s.e0123) - (t1 * s.e23)) + ((t2 * s.e13) - (t3 * s.e03))) - (((t4 * s.e12) - (t5 * s.e02)) + ((t6 * s.e01) - (t7 * s.scalar)));
+    r.e01 = (((t1 * s.scalar) - (t0 * s.e01)) - ((t3 * s.e02) - (t2 * s.e12))) - (((t5 * s.e03) - (t4 * s.e13)) - ((t7 * s.e23) - (t6 * s.e0123)));
+    r.e02 = (((t2 * s.scalar) + (t3 * s.e01)) - ((t0 * s.e02) + (t1 * s.e12))) - (((t6 * s.e03) + (t7 * s.e13)) - ((t4 * s.e23) + (t5 * s.e0123)));
+    r.e12 = ((t3 * s.scalar) - (t0 * s.e12)) - ((t6 * s.e13) - (t5 * s.e23));
+    r.e03 = (((t4 * s.scalar) + (t5 * s.e01)) + ((t6 * s.e02) + (t7 * s.e12))) - (((t0 * s.e03) + (t1 * s.e13)) + ((t2 * s.e23) + (t3 * s.e0123)));
+    r.e13 = ((t5 * s.scalar) + (t6 * s.e12)) - ((t0 * s.e13) + (t3 * s.e23));
+    r.e23 = ((t6 * s.scalar) - (t5 * s.e12)) + ((t3 * s.e13) - (t0 * s.e23));
+    r.e0123 = (((t7 * s.scalar) - (t6 * s.e01)) + ((t5 * s.e02) - (t4 * s.e12))) - (((t3 * s.e03) - (t2 * s.e13)) + ((t1 * s.e23) - (t0 * s.e0123)));
     return r;
 }
 
@@ -1441,12 +1441,12 @@ static inline pga3_Linef pga3_motor_apply_linef(pga3_Motorf s, pga3_Linef x) {
     const float t6 = (s.scalar * x.e23) - ((s.e12 * x.e13) - (s.e13 * x.e12));
     const float t7 = ((s.e01 * x.e23) - ((s.e02 * x.e13) - (s.e12 * x.e03))) + ((s.e03 * x.e12) - ((s.e13 * x.e02) - (s.e23 * x.e01)));
     pga3_Linef r;
-    r.e01 = -((((t0 * s.e01) - (t1 * s.scalar)) - ((t2 * s.e12) - (t3 * s.e02))) - (((t4 * s.e13) - (t5 * s.e03)) - ((t6 * s.e0123) - (t7 * s.e23))));
-    r.e02 = -((((t0 * s.e02) + (t1 * s.e12)) - ((t2 * s.scalar) + (t3 * s.e01))) - (((t4 * s.e23) + (t5 * s.e0123)) - ((t6 * s.e03) + (t7 * s.e13))));
-    r.e12 = -(((t0 * s.e12) - (t3 * s.scalar)) - ((t5 * s.e23) - (t6 * s.e13)));
-    r.e03 = -((((t0 * s.e03) + (t1 * s.e13)) + ((t2 * s.e23) + (t3 * s.e0123))) - (((t4 * s.scalar) + (t5 * s.e01)) + ((t6 * s.e02) + (t7 * s.e12))));
-    r.e13 = -(((t0 * s.e13) + (t3 * s.e23)) - ((t5 * s.scalar) + (t6 * s.e12)));
-    r.e23 = -(((t0 * s.e23) - (t3 * s.e13)) + ((t5 * s.e12) - (t6 * s.scalar)));
+    r.e01 = (((t1 * s.scalar) - (t0 * s.e01)) - ((t3 * s.e02) - (t2 * s.e12))) - (((t5 * s.e03) - (t4 * s.e13)) - ((t7 * s.e23) - (t6 * s.e0123)));
+    r.e02 = (((t2 * s.scalar) + (t3 * s.e01)) - ((t0 * s.e02) + (t1 * s.e12))) - (((t6 * s.e03) + (t7 * s.e13)) - ((t4 * s.e23) + (t5 * s.e0123)));
+    r.e12 = ((t3 * s.scalar) - (t0 * s.e12)) - ((t6 * s.e13) - (t5 * s.e23));
+    r.e03 = (((t4 * s.scalar) + (t5 * s.e01)) + ((t6 * s.e02) + (t7 * s.e12))) - (((t0 * s.e03) + (t1 * s.e13)) + ((t2 * s.e23) + (t3 * s.e0123)));
+    r.e13 = ((t5 * s.scalar) + (t6 * s.e12)) - ((t0 * s.e13) + (t3 * s.e23));
+    r.e23 = ((t6 * s.scalar) - (t5 * s.e12)) + ((t3 * s.e13) - (t0 * s.e23));
     return r;
 }
 
@@ -1462,13 +1462,13 @@ static inline pga3_Motorf pga3_point_apply_motorf(pga3_Pointf s, pga3_Motorf x) 
     const float t7 = s.e123 * x.scalar;
     pga3_Motorf r;
     r.scalar = t7 * s.e123;
-    r.e01 = -(((t2 * s.e012) + (t4 * s.e013)) - ((t6 * s.e123) - (t7 * s.e023)));
-    r.e02 = ((t1 * s.e012) - (t4 * s.e023)) - ((t5 * s.e123) - (t7 * s.e013));
+    r.e01 = ((t6 * s.e123) - (t2 * s.e012)) - ((t4 * s.e013) + (t7 * s.e023));
+    r.e02 = ((t1 * s.e012) + (t7 * s.e013)) - ((t4 * s.e023) + (t5 * s.e123));
     r.e12 = -(t4 * s.e123);
-    r.e03 = ((t1 * s.e013) + (t2 * s.e023)) + ((t3 * s.e123) - (t7 * s.e012));
+    r.e03 = ((t1 * s.e013) - (t7 * s.e012)) + ((t2 * s.e023) + (t3 * s.e123));
     r.e13 = t2 * s.e123;
     r.e23 = -(t1 * s.e123);
-    r.e0123 = -(((t0 * s.e123) - (t1 * s.e023)) + ((t2 * s.e013) - (t4 * s.e012)));
+    r.e0123 = ((t4 * s.e012) - (t2 * s.e013)) + ((t1 * s.e023) - (t0 * s.e123));
     return r;
 }
 
@@ -1480,7 +1480,7 @@ static inline pga3_Pointf pga3_point_apply_pointf(pga3_Pointf s, pga3_Pointf x) 
     const float t3 = -((s.e012 * x.e123) - (s.e123 * x.e012));
     pga3_Pointf r;
     r.e012 = -((t0 * s.e012) + (t3 * s.e123));
-    r.e013 = -((t0 * s.e013) - (t2 * s.e123));
+    r.e013 = (t2 * s.e123) - (t0 * s.e013);
     r.e023 = -((t0 * s.e023) + (t1 * s.e123));
     r.e123 = -(t0 * s.e123);
     return r;
@@ -1495,7 +1495,7 @@ static inline pga3_Linef pga3_point_apply_linef(pga3_Pointf s, pga3_Linef x) {
     const float t4 = (s.e012 * x.e23) - ((s.e023 * x.e12) - (s.e123 * x.e02));
     const float t5 = -((s.e012 * x.e13) - ((s.e013 * x.e12) - (s.e123 * x.e01)));
     pga3_Linef r;
-    r.e01 = -((t1 * s.e012) + ((t3 * s.e013) - (t5 * s.e123)));
+    r.e01 = (t5 * s.e123) - ((t1 * s.e012) + (t3 * s.e013));
     r.e02 = (t0 * s.e012) - ((t3 * s.e023) + (t4 * s.e123));
     r.e12 = -(t3 * s.e123);
     r.e03 = (t0 * s.e013) + ((t1 * s.e023) + (t2 * s.e123));
@@ -1516,13 +1516,13 @@ static inline pga3_Motorf pga3_line_apply_motorf(pga3_Linef s, pga3_Motorf x) {
     const float t7 = ((s.e01 * x.e23) - ((s.e02 * x.e13) - (s.e12 * x.e03))) + ((s.e03 * x.e12) - ((s.e13 * x.e02) - (s.e23 * x.e01)));
     pga3_Motorf r;
     r.scalar = (t3 * s.e12) + ((t5 * s.e13) + (t6 * s.e23));
-    r.e01 = -(((t0 * s.e01) - ((t2 * s.e12) - (t3 * s.e02))) - ((t4 * s.e13) - ((t5 * s.e03) - (t7 * s.e23))));
-    r.e02 = -(((t0 * s.e02) + ((t1 * s.e12) - (t3 * s.e01))) - ((t4 * s.e23) - ((t6 * s.e03) + (t7 * s.e13))));
-    r.e12 = -((t0 * s.e12) - ((t5 * s.e23) - (t6 * s.e13)));
-    r.e03 = -(((t0 * s.e03) + ((t1 * s.e13) + (t2 * s.e23))) - ((t5 * s.e01) + ((t6 * s.e02) + (t7 * s.e12))));
-    r.e13 = -((t0 * s.e13) + ((t3 * s.e23) - (t6 * s.e12)));
-    r.e23 = -((t0 * s.e23) - ((t3 * s.e13) - (t5 * s.e12)));
-    r.e0123 = -(((t1 * s.e23) - ((t2 * s.e13) - (t3 * s.e03))) + ((t4 * s.e12) - ((t5 * s.e02) - (t6 * s.e01))));
+    r.e01 = ((t2 * s.e12) - ((t0 * s.e01) + (t3 * s.e02))) - ((t5 * s.e03) - ((t4 * s.e13) + (t7 * s.e23)));
+    r.e02 = ((t3 * s.e01) - ((t0 * s.e02) + (t1 * s.e12))) - ((t6 * s.e03) + ((t7 * s.e13) - (t4 * s.e23)));
+    r.e12 = (t5 * s.e23) - ((t0 * s.e12) + (t6 * s.e13));
+    r.e03 = ((t5 * s.e01) + ((t6 * s.e02) + (t7 * s.e12))) - ((t0 * s.e03) + ((t1 * s.e13) + (t2 * s.e23)));
+    r.e13 = (t6 * s.e12) - ((t0 * s.e13) + (t3 * s.e23));
+    r.e23 = (t3 * s.e13) - ((t5 * s.e12) + (t0 * s.e23));
+    r.e0123 = ((t5 * s.e02) - ((t6 * s.e01) + (t4 * s.e12))) - ((t3 * s.e03) - ((t2 * s.e13) - (t1 * s.e23)));
     return r;
 }
 
@@ -1536,10 +1536,10 @@ static inline pga3_Pointf pga3_line_apply_pointf(pga3_Linef s, pga3_Pointf x) {
     const float t5 = -((s.e02 * x.e123) - ((s.e12 * x.e023) - (s.e23 * x.e012)));
     const float t6 = (s.e01 * x.e123) - ((s.e12 * x.e013) - (s.e13 * x.e012));
     pga3_Pointf r;
-    r.e012 = -(((t0 * s.e12) - (t1 * s.e02)) + ((t2 * s.e01) - ((t5 * s.e23) - (t6 * s.e13))));
-    r.e013 = -(((t0 * s.e13) - (t1 * s.e03)) + ((t3 * s.e23) + ((t4 * s.e01) - (t6 * s.e12))));
-    r.e023 = -(((t0 * s.e23) - (t2 * s.e03)) - ((t3 * s.e13) - ((t4 * s.e02) + (t5 * s.e12))));
-    r.e123 = -((t1 * s.e23) - ((t2 * s.e13) - (t4 * s.e12)));
+    r.e012 = ((t1 * s.e02) - (t2 * s.e01)) - ((t0 * s.e12) + ((t6 * s.e13) - (t5 * s.e23)));
+    r.e013 = ((t6 * s.e12) - (t4 * s.e01)) + ((t1 * s.e03) - ((t0 * s.e13) + (t3 * s.e23)));
+    r.e023 = ((t2 * s.e03) - (t4 * s.e02)) - ((t5 * s.e12) - ((t3 * s.e13) - (t0 * s.e23)));
+    r.e123 = (t2 * s.e13) - ((t4 * s.e12) + (t1 * s.e23));
     return r;
 }
 
@@ -1554,12 +1554,12 @@ static inline pga3_Linef pga3_line_apply_linef(pga3_Linef s, pga3_Linef x) {
     const float t6 = -((s.e12 * x.e13) - (s.e13 * x.e12));
     const float t7 = ((s.e01 * x.e23) - ((s.e02 * x.e13) - (s.e12 * x.e03))) + ((s.e03 * x.e12) - ((s.e13 * x.e02) - (s.e23 * x.e01)));
     pga3_Linef r;
-    r.e01 = -(((t0 * s.e01) - ((t2 * s.e12) - (t3 * s.e02))) - ((t4 * s.e13) - ((t5 * s.e03) - (t7 * s.e23))));
-    r.e02 = -(((t0 * s.e02) + ((t1 * s.e12) - (t3 * s.e01))) - ((t4 * s.e23) - ((t6 * s.e03) + (t7 * s.e13))));
-    r.e12 = -((t0 * s.e12) - ((t5 * s.e23) - (t6 * s.e13)));
-    r.e03 = -(((t0 * s.e03) + ((t1 * s.e13) + (t2 * s.e23))) - ((t5 * s.e01) + ((t6 * s.e02) + (t7 * s.e12))));
-    r.e13 = -((t0 * s.e13) + ((t3 * s.e23) - (t6 * s.e12)));
-    r.e23 = -((t0 * s.e23) - ((t3 * s.e13) - (t5 * s.e12)));
+    r.e01 = ((t2 * s.e12) - ((t0 * s.e01) + (t3 * s.e02))) - ((t5 * s.e03) - ((t4 * s.e13) + (t7 * s.e23)));
+    r.e02 = ((t3 * s.e01) - ((t0 * s.e02) + (t1 * s.e12))) - ((t6 * s.e03) + ((t7 * s.e13) - (t4 * s.e23)));
+    r.e12 = (t5 * s.e23) - ((t0 * s.e12) + (t6 * s.e13));
+    r.e03 = ((t5 * s.e01) + ((t6 * s.e02) + (t7 * s.e12))) - ((t0 * s.e03) + ((t1 * s.e13) + (t2 * s.e23)));
+    r.e13 = (t6 * s.e12) - ((t0 * s.e13) + (t3 * s.e23));
+    r.e23 = (t3 * s.e13) - ((t5 * s.e12) + (t0 * s.e23));
     return r;
 }
 

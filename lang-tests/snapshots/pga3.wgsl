@@ -492,13 +492,13 @@ fn pga3_motor_apply_motor(s: pga3_Motor, x: pga3_Motor) -> pga3_Motor {
     let t7 = (((s.scalar * x.e0123) + (s.e01 * x.e23)) - ((s.e02 * x.e13) - (s.e12 * x.e03))) + (((s.e03 * x.e12) - (s.e13 * x.e02)) + ((s.e23 * x.e01) + (s.e0123 * x.scalar)));
     return pga3_Motor(
         ((t0 * s.scalar) + (t3 * s.e12)) + ((t5 * s.e13) + (t6 * s.e23)),
-        -((((t0 * s.e01) - (t1 * s.scalar)) - ((t2 * s.e12) - (t3 * s.e02))) - (((t4 * s.e13) - (t5 * s.e03)) - ((t6 * s.e0123) - (t7 * s.e23)))),
-        -((((t0 * s.e02) + (t1 * s.e12)) - ((t2 * s.scalar) + (t3 * s.e01))) - (((t4 * s.e23) + (t5 * s.e0123)) - ((t6 * s.e03) + (t7 * s.e13)))),
-        -(((t0 * s.e12) - (t3 * s.scalar)) - ((t5 * s.e23) - (t6 * s.e13))),
-        -((((t0 * s.e03) + (t1 * s.e13)) + ((t2 * s.e23) + (t3 * s.e0123))) - (((t4 * s.scalar) + (t5 * s.e01)) + ((t6 * s.e02) + (t7 * s.e12)))),
-        -(((t0 * s.e13) + (t3 * s.e23)) - ((t5 * s.scalar) + (t6 * s.e12))),
-        -(((t0 * s.e23) - (t3 * s.e13)) + ((t5 * s.e12) - (t6 * s.scalar))),
-        (((t0 * s.e0123) - (t1 * s.e23)) + ((t2 * s.e13) - (t3 * s.e03))) - (((t4 * s.e12) - (t5 * s.e02)) + ((t6 * s.e01) - (t7 * s.scalar))),
+        (((t1 * s.scalar) - (t0 * s.e01)) - ((t3 * s.e02) - (t2 * s.e12))) - (((t5 * s.e03) - (t4 * s.e13)) - ((t7 * s.e23) - (t6 * s.e0123))),
+        (((t2 * s.scalar) + (t3 * s.e01)) - ((t0 * s.e02) + (t1 * s.e12))) - (((t6 * s.e03) + (t7 * s.e13)) - ((t4 * s.e23) + (t5 * s.e0123))),
+        ((t3 * s.scalar) - (t0 * s.e12)) - ((t6 * s.e13) - (t5 * s.e23)),
+        (((t4 * s.scalar) + (t5 * s.e01)) + ((t6 * s.e02) + (t7 * s.e12))) - (((t0 * s.e03) + (t1 * s.e13)) + ((t2 * s.e23) + (t3 * s.e0123))),
+        ((t5 * s.scalar) + (t6 * s.e12)) - ((t0 * s.e13) + (t3 * s.e23)),
+        ((t6 * s.scalar) - (t5 * s.e12)) + ((t3 * s.e13) - (t0 * s.e23)),
+        (((t7 * s.scalar) - (t6 * s.e01)) + ((t5 * s.e02) - (t4 * s.e12))) - (((t3 * s.e03) - (t2 * s.e13)) + ((t1 * s.e23) - (t0 * s.e0123))),
     );
 }
 
@@ -531,12 +531,12 @@ fn pga3_motor_apply_line(s: pga3_Motor, x: pga3_Line) -> pga3_Line {
     let t6 = (s.scalar * x.e23) - ((s.e12 * x.e13) - (s.e13 * x.e12));
     let t7 = ((s.e01 * x.e23) - ((s.e02 * x.e13) - (s.e12 * x.e03))) + ((s.e03 * x.e12) - ((s.e13 * x.e02) - (s.e23 * x.e01)));
     return pga3_Line(
-        -((((t0 * s.e01) - (t1 * s.scalar)) - ((t2 * s.e12) - (t3 * s.e02))) - (((t4 * s.e13) - (t5 * s.e03)) - ((t6 * s.e0123) - (t7 * s.e23)))),
-        -((((t0 * s.e02) + (t1 * s.e12)) - ((t2 * s.scalar) + (t3 * s.e01))) - (((t4 * s.e23) + (t5 * s.e0123)) - ((t6 * s.e03) + (t7 * s.e13)))),
-        -(((t0 * s.e12) - (t3 * s.scalar)) - ((t5 * s.e23) - (t6 * s.e13))),
-        -((((t0 * s.e03) + (t1 * s.e13)) + ((t2 * s.e23) + (t3 * s.e0123))) - (((t4 * s.scalar) + (t5 * s.e01)) + ((t6 * s.e02) + (t7 * s.e12)))),
-        -(((t0 * s.e13) + (t3 * s.e23)) - ((t5 * s.scalar) + (t6 * s.e12))),
-        -(((t0 * s.e23) - (t3 * s.e13)) + ((t5 * s.e12) - (t6 * s.scalar))),
+        (((t1 * s.scalar) - (t0 * s.e01)) - ((t3 * s.e02) - (t2 * s.e12))) - (((t5 * s.e03) - (t4 * s.e13)) - ((t7 * s.e23) - (t6 * s.e0123))),
+        (((t2 * s.scalar) + (t3 * s.e01)) - ((t0 * s.e02) + (t1 * s.e12))) - (((t6 * s.e03) + (t7 * s.e13)) - ((t4 * s.e23) + (t5 * s.e0123))),
+        ((t3 * s.scalar) - (t0 * s.e12)) - ((t6 * s.e13) - (t5 * s.e23)),
+        (((t4 * s.scalar) + (t5 * s.e01)) + ((t6 * s.e02) + (t7 * s.e12))) - (((t0 * s.e03) + (t1 * s.e13)) + ((t2 * s.e23) + (t3 * s.e0123))),
+        ((t5 * s.scalar) + (t6 * s.e12)) - ((t0 * s.e13) + (t3 * s.e23)),
+        ((t6 * s.scalar) - (t5 * s.e12)) + ((t3 * s.e13) - (t0 * s.e23)),
     );
 }
 
@@ -552,13 +552,13 @@ fn pga3_point_apply_motor(s: pga3_Point, x: pga3_Motor) -> pga3_Motor {
     let t7 = s.e123 * x.scalar;
     return pga3_Motor(
         t7 * s.e123,
-        -(((t2 * s.e012) + (t4 * s.e013)) - ((t6 * s.e123) - (t7 * s.e023))),
-        ((t1 * s.e012) - (t4 * s.e023)) - ((t5 * s.e123) - (t7 * s.e013)),
+        ((t6 * s.e123) - (t2 * s.e012)) - ((t4 * s.e013) + (t7 * s.e023)),
+        ((t1 * s.e012) + (t7 * s.e013)) - ((t4 * s.e023) + (t5 * s.e123)),
         -(t4 * s.e123),
-        ((t1 * s.e013) + (t2 * s.e023)) + ((t3 * s.e123) - (t7 * s.e012)),
+        ((t1 * s.e013) - (t7 * s.e012)) + ((t2 * s.e023) + (t3 * s.e123)),
         t2 * s.e123,
         -(t1 * s.e123),
-        -(((t0 * s.e123) - (t1 * s.e023)) + ((t2 * s.e013) - (t4 * s.e012))),
+        ((t4 * s.e012) - (t2 * s.e013)) + ((t1 * s.e023) - (t0 * s.e123)),
     );
 }
 
@@ -570,7 +570,7 @@ fn pga3_point_apply_point(s: pga3_Point, x: pga3_Point) -> pga3_Point {
     let t3 = -((s.e012 * x.e123) - (s.e123 * x.e012));
     return pga3_Point(
         -((t0 * s.e012) + (t3 * s.e123)),
-        -((t0 * s.e013) - (t2 * s.e123)),
+        (t2 * s.e123) - (t0 * s.e013),
         -((t0 * s.e023) + (t1 * s.e123)),
         -(t0 * s.e123),
     );
@@ -585,7 +585,7 @@ fn pga3_point_apply_line(s: pga3_Point, x: pga3_Line) -> pga3_Line {
     let t4 = (s.e012 * x.e23) - ((s.e023 * x.e12) - (s.e123 * x.e02));
     let t5 = -((s.e012 * x.e13) - ((s.e013 * x.e12) - (s.e123 * x.e01)));
     return pga3_Line(
-        -((t1 * s.e012) + ((t3 * s.e013) - (t5 * s.e123))),
+        (t5 * s.e123) - ((t1 * s.e012) + (t3 * s.e013)),
         (t0 * s.e012) - ((t3 * s.e023) + (t4 * s.e123)),
         -(t3 * s.e123),
         (t0 * s.e013) + ((t1 * s.e023) + (t2 * s.e123)),
@@ -606,13 +606,13 @@ fn pga3_line_apply_motor(s: pga3_Line, x: pga3_Motor) -> pga3_Motor {
     let t7 = ((s.e01 * x.e23) - ((s.e02 * x.e13) - (s.e12 * x.e03))) + ((s.e03 * x.e12) - ((s.e13 * x.e02) - (s.e23 * x.e01)));
     return pga3_Motor(
         (t3 * s.e12) + ((t5 * s.e13) + (t6 * s.e23)),
-        -(((t0 * s.e01) - ((t2 * s.e12) - (t3 * s.e02))) - ((t4 * s.e13) - ((t5 * s.e03) - (t7 * s.e23)))),
-        -(((t0 * s.e02) + ((t1 * s.e12) - (t3 * s.e01))) - ((t4 * s.e23) - ((t6 * s.e03) + (t7 * s.e13)))),
-        -((t0 * s.e12) - ((t5 * s.e23) - (t6 * s.e13))),
-        -(((t0 * s.e03) + ((t1 * s.e13) + (t2 * s.e23))) - ((t5 * s.e01) + ((t6 * s.e02) + (t7 * s.e12)))),
-        -((t0 * s.e13) + ((t3 * s.e23) - (t6 * s.e12))),
-        -((t0 * s.e23) - ((t3 * s.e13) - (t5 * s.e12))),
-        -(((t1 * s.e23) - ((t2 * s.e13) - (t3 * s.e03))) + ((t4 * s.e12) - ((t5 * s.e02) - (t6 * s.e01)))),
+        ((t2 * s.e12) - ((t0 * s.e01) + (t3 * s.e02))) - ((t5 * s.e03) - ((t4 * s.e13) + (t7 * s.e23))),
+        ((t3 * s.e01) - ((t0 * s.e02) + (t1 * s.e12))) - ((t6 * s.e03) + ((t7 * s.e13) - (t4 * s.e23))),
+        (t5 * s.e23) - ((t0 * s.e12) + (t6 * s.e13)),
+        ((t5 * s.e01) + ((t6 * s.e02) + (t7 * s.e12))) - ((t0 * s.e03) + ((t1 * s.e13) + (t2 * s.e23))),
+        (t6 * s.e12) - ((t0 * s.e13) + (t3 * s.e23)),
+        (t3 * s.e13) - ((t5 * s.e12) + (t0 * s.e23)),
+        ((t5 * s.e02) - ((t6 * s.e01) + (t4 * s.e12))) - ((t3 * s.e03) - ((t2 * s.e13) - (t1 * s.e23))),
     );
 }
 
@@ -626,10 +626,10 @@ fn pga3_line_apply_point(s: pga3_Line, x: pga3_Point) -> pga3_Point {
     let t5 = -((s.e02 * x.e123) - ((s.e12 * x.e023) - (s.e23 * x.e012)));
     let t6 = (s.e01 * x.e123) - ((s.e12 * x.e013) - (s.e13 * x.e012));
     return pga3_Point(
-        -(((t0 * s.e12) - (t1 * s.e02)) + ((t2 * s.e01) - ((t5 * s.e23) - (t6 * s.e13)))),
-        -(((t0 * s.e13) - (t1 * s.e03)) + ((t3 * s.e23) + ((t4 * s.e01) - (t6 * s.e12)))),
-        -(((t0 * s.e23) - (t2 * s.e03)) - ((t3 * s.e13) - ((t4 * s.e02) + (t5 * s.e12)))),
-        -((t1 * s.e23) - ((t2 * s.e13) - (t4 * s.e12))),
+        ((t1 * s.e02) - (t2 * s.e01)) - ((t0 * s.e12) + ((t6 * s.e13) - (t5 * s.e23))),
+        ((t6 * s.e12) - (t4 * s.e01)) + ((t1 * s.e03) - ((t0 * s.e13) + (t3 * s.e23))),
+        ((t2 * s.e03) - (t4 * s.e02)) - ((t5 * s.e12) - ((t3 * s.e13) - (t0 * s.e23))),
+        (t2 * s.e13) - ((t4 * s.e12) + (t1 * s.e23)),
     );
 }
 
@@ -644,12 +644,12 @@ fn pga3_line_apply_line(s: pga3_Line, x: pga3_Line) -> pga3_Line {
     let t6 = -((s.e12 * x.e13) - (s.e13 * x.e12));
     let t7 = ((s.e01 * x.e23) - ((s.e02 * x.e13) - (s.e12 * x.e03))) + ((s.e03 * x.e12) - ((s.e13 * x.e02) - (s.e23 * x.e01)));
     return pga3_Line(
-        -(((t0 * s.e01) - ((t2 * s.e12) - (t3 * s.e02))) - ((t4 * s.e13) - ((t5 * s.e03) - (t7 * s.e23)))),
-        -(((t0 * s.e02) + ((t1 * s.e12) - (t3 * s.e01))) - ((t4 * s.e23) - ((t6 * s.e03) + (t7 * s.e13)))),
-        -((t0 * s.e12) - ((t5 * s.e23) - (t6 * s.e13))),
-        -(((t0 * s.e03) + ((t1 * s.e13) + (t2 * s.e23))) - ((t5 * s.e01) + ((t6 * s.e02) + (t7 * s.e12)))),
-        -((t0 * s.e13) + ((t3 * s.e23) - (t6 * s.e12))),
-        -((t0 * s.e23) - ((t3 * s.e13) - (t5 * s.e12))),
+        ((t2 * s.e12) - ((t0 * s.e01) + (t3 * s.e02))) - ((t5 * s.e03) - ((t4 * s.e13) + (t7 * s.e23))),
+        ((t3 * s.e01) - ((t0 * s.e02) + (t1 * s.e12))) - ((t6 * s.e03) + ((t7 * s.e13) - (t4 * s.e23))),
+        (t5 * s.e23) - ((t0 * s.e12) + (t6 * s.e13)),
+        ((t5 * s.e01) + ((t6 * s.e02) + (t7 * s.e12))) - ((t0 * s.e03) + ((t1 * s.e13) + (t2 * s.e23))),
+        (t6 * s.e12) - ((t0 * s.e13) + (t3 * s.e23)),
+        (t3 * s.e13) - ((t5 * s.e12) + (t0 * s.e23)),
     );
 }
 

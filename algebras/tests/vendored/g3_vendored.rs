@@ -8325,7 +8325,7 @@ pub mod g3_vendored {
             let t2 = ((self.e1.mul_ref(&x.e13))
                 + &((self.e2.mul_ref(&x.e23)) + &(self.e3.mul_ref(&x.scalar))));
             let t3 = ((self.e1.mul_ref(&x.e23))
-                - &((self.e2.mul_ref(&x.e13)) - &(self.e3.mul_ref(&x.e12))));
+                + &((self.e3.mul_ref(&x.e12)) - &(self.e2.mul_ref(&x.e13))));
             Rotor {
                 scalar: ((t0.mul_ref(&self.e1))
                     + &((t1.mul_ref(&self.e2)) + &(t2.mul_ref(&self.e3)))),
@@ -8333,8 +8333,8 @@ pub mod g3_vendored {
                     - &((t1.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e3)))),
                 e13: ((t0.mul_ref(&self.e3))
                     - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
-                e23: ((t1.mul_ref(&self.e3))
-                    - &((t2.mul_ref(&self.e2)) - &(t3.mul_ref(&self.e1)))),
+                e23: ((t3.mul_ref(&self.e1))
+                    - &((t2.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e3)))),
             }
         }
     }
@@ -8358,8 +8358,8 @@ pub mod g3_vendored {
                     - &((t1.mul_ref(&self.e1)) - &(t3.mul_ref(&self.e3)))),
                 e13: ((t0.mul_ref(&self.e3))
                     - &((t2.mul_ref(&self.e1)) + &(t3.mul_ref(&self.e2)))),
-                e23: ((t1.mul_ref(&self.e3))
-                    - &((t2.mul_ref(&self.e2)) - &(t3.mul_ref(&self.e1)))),
+                e23: ((t3.mul_ref(&self.e1))
+                    - &((t2.mul_ref(&self.e2)) - &(t1.mul_ref(&self.e3)))),
             }
         }
     }
@@ -8371,7 +8371,7 @@ pub mod g3_vendored {
             let s = self.each_ref();
             let t = {
                 const TERMS: [[u16; 3]; 12usize] = ::algebra_core::kernels::unpack(
-                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0",
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x02\0\x03\0\0\0\x01\0\0\0\x01\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 3u16, 6u16, 9u16, 12u16];
                 ::algebra_core::kernels::bilinear::<
@@ -8386,7 +8386,7 @@ pub mod g3_vendored {
             };
             Odd::from_array({
                 const TERMS: [[u16; 3]; 12usize] = ::algebra_core::kernels::unpack(
-                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\x03\0\0\0\0\0\x02\0\x01\0\x01\0\x01\0\x02\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 3u16, 6u16, 9u16, 12u16];
                 ::algebra_core::kernels::bilinear::<
@@ -8424,7 +8424,7 @@ pub mod g3_vendored {
             };
             Odd::from_array({
                 const TERMS: [[u16; 3]; 12usize] = ::algebra_core::kernels::unpack(
-                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\x03\0\0\0\0\0\x02\0\x01\0\x01\0\x01\0\x02\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 3u16, 6u16, 9u16, 12u16];
                 ::algebra_core::kernels::bilinear::<
@@ -8450,17 +8450,15 @@ pub mod g3_vendored {
                 + &((self.e12.mul_ref(&x.e1)) - &(self.e23.mul_ref(&x.e3))));
             let t2 = ((self.scalar.mul_ref(&x.e3))
                 + &((self.e13.mul_ref(&x.e1)) + &(self.e23.mul_ref(&x.e2))));
-            let t3 = ::algebra_core::Ring::neg_ref(
-                &((self.e12.mul_ref(&x.e3))
-                    - &((self.e13.mul_ref(&x.e2)) - &(self.e23.mul_ref(&x.e1)))),
-            );
+            let t3 = ((self.e13.mul_ref(&x.e2))
+                - &((self.e12.mul_ref(&x.e3)) + &(self.e23.mul_ref(&x.e1))));
             Vector {
                 e1: (((t0.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e12)))
                     - &((t2.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e23)))),
-                e2: (((t0.mul_ref(&self.e12)) + &(t1.mul_ref(&self.scalar)))
-                    - &((t2.mul_ref(&self.e23)) - &(t3.mul_ref(&self.e13)))),
-                e3: (((t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23)))
-                    + &((t2.mul_ref(&self.scalar)) - &(t3.mul_ref(&self.e12)))),
+                e2: (((t1.mul_ref(&self.scalar)) + &(t0.mul_ref(&self.e12)))
+                    + &((t3.mul_ref(&self.e13)) - &(t2.mul_ref(&self.e23)))),
+                e3: (((t2.mul_ref(&self.scalar)) - &(t3.mul_ref(&self.e12)))
+                    + &((t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23)))),
             }
         }
     }
@@ -8480,14 +8478,10 @@ pub mod g3_vendored {
             Vector {
                 e1: (((t0.mul_ref(&self.scalar)) + &(t1.mul_ref(&self.e12)))
                     + &((t2.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e23)))),
-                e2: ::algebra_core::Ring::neg_ref(
-                    &(((t0.mul_ref(&self.e12)) - &(t1.mul_ref(&self.scalar)))
-                        - &((t2.mul_ref(&self.e23)) - &(t3.mul_ref(&self.e13)))),
-                ),
-                e3: ::algebra_core::Ring::neg_ref(
-                    &(((t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23)))
-                        - &((t2.mul_ref(&self.scalar)) + &(t3.mul_ref(&self.e12)))),
-                ),
+                e2: (((t1.mul_ref(&self.scalar)) - &(t0.mul_ref(&self.e12)))
+                    - &((t3.mul_ref(&self.e13)) - &(t2.mul_ref(&self.e23)))),
+                e3: (((t2.mul_ref(&self.scalar)) + &(t3.mul_ref(&self.e12)))
+                    - &((t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23)))),
             }
         }
     }
@@ -8498,21 +8492,21 @@ pub mod g3_vendored {
         fn sandwich(&self, x: &Rotor<T>) -> Rotor<T> {
             let t0 = (((self.scalar.mul_ref(&x.scalar)) + &(self.e12.mul_ref(&x.e12)))
                 + &((self.e13.mul_ref(&x.e13)) + &(self.e23.mul_ref(&x.e23))));
-            let t1 = (((self.scalar.mul_ref(&x.e12)) - &(self.e12.mul_ref(&x.scalar)))
-                + &((self.e13.mul_ref(&x.e23)) - &(self.e23.mul_ref(&x.e13))));
-            let t2 = (((self.scalar.mul_ref(&x.e13)) - &(self.e12.mul_ref(&x.e23)))
-                - &((self.e13.mul_ref(&x.scalar)) - &(self.e23.mul_ref(&x.e12))));
+            let t1 = (((self.scalar.mul_ref(&x.e12)) + &(self.e13.mul_ref(&x.e23)))
+                - &((self.e12.mul_ref(&x.scalar)) + &(self.e23.mul_ref(&x.e13))));
+            let t2 = (((self.scalar.mul_ref(&x.e13)) + &(self.e23.mul_ref(&x.e12)))
+                - &((self.e12.mul_ref(&x.e23)) + &(self.e13.mul_ref(&x.scalar))));
             let t3 = (((self.scalar.mul_ref(&x.e23)) + &(self.e12.mul_ref(&x.e13)))
                 - &((self.e13.mul_ref(&x.e12)) + &(self.e23.mul_ref(&x.scalar))));
             Rotor {
                 scalar: (((t0.mul_ref(&self.scalar)) - &(t1.mul_ref(&self.e12)))
                     - &((t2.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e23)))),
-                e12: (((t0.mul_ref(&self.e12)) + &(t1.mul_ref(&self.scalar)))
-                    - &((t2.mul_ref(&self.e23)) - &(t3.mul_ref(&self.e13)))),
-                e13: (((t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23)))
-                    + &((t2.mul_ref(&self.scalar)) - &(t3.mul_ref(&self.e12)))),
-                e23: (((t0.mul_ref(&self.e23)) - &(t1.mul_ref(&self.e13)))
-                    + &((t2.mul_ref(&self.e12)) + &(t3.mul_ref(&self.scalar)))),
+                e12: (((t1.mul_ref(&self.scalar)) + &(t0.mul_ref(&self.e12)))
+                    + &((t3.mul_ref(&self.e13)) - &(t2.mul_ref(&self.e23)))),
+                e13: (((t2.mul_ref(&self.scalar)) - &(t3.mul_ref(&self.e12)))
+                    + &((t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23)))),
+                e23: (((t3.mul_ref(&self.scalar)) + &(t2.mul_ref(&self.e12)))
+                    - &((t1.mul_ref(&self.e13)) - &(t0.mul_ref(&self.e23)))),
             }
         }
     }
@@ -8532,18 +8526,12 @@ pub mod g3_vendored {
             Rotor {
                 scalar: (((t0.mul_ref(&self.scalar)) + &(t1.mul_ref(&self.e12)))
                     + &((t2.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e23)))),
-                e12: ::algebra_core::Ring::neg_ref(
-                    &(((t0.mul_ref(&self.e12)) - &(t1.mul_ref(&self.scalar)))
-                        - &((t2.mul_ref(&self.e23)) - &(t3.mul_ref(&self.e13)))),
-                ),
-                e13: ::algebra_core::Ring::neg_ref(
-                    &(((t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23)))
-                        - &((t2.mul_ref(&self.scalar)) + &(t3.mul_ref(&self.e12)))),
-                ),
-                e23: ::algebra_core::Ring::neg_ref(
-                    &(((t0.mul_ref(&self.e23)) - &(t1.mul_ref(&self.e13)))
-                        + &((t2.mul_ref(&self.e12)) - &(t3.mul_ref(&self.scalar)))),
-                ),
+                e12: (((t1.mul_ref(&self.scalar)) - &(t0.mul_ref(&self.e12)))
+                    - &((t3.mul_ref(&self.e13)) - &(t2.mul_ref(&self.e23)))),
+                e13: (((t2.mul_ref(&self.scalar)) + &(t3.mul_ref(&self.e12)))
+                    - &((t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23)))),
+                e23: (((t3.mul_ref(&self.scalar)) - &(t2.mul_ref(&self.e12)))
+                    + &((t1.mul_ref(&self.e13)) - &(t0.mul_ref(&self.e23)))),
             }
         }
     }
@@ -8555,7 +8543,7 @@ pub mod g3_vendored {
             let s = self.each_ref();
             let t = {
                 const TERMS: [[u16; 3]; 16usize] = ::algebra_core::kernels::unpack(
-                    b"\0\0\0\0\0\0\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x03\0\x01\0\x03\0\x02\0\x01\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\0\0\x03\0\x01\0\0\0\0\0\x03\0\0\0\x01\0\x02\0\x01\0\x02\0\x01\0\0\0\x03\0\0\0\x01\0",
+                    b"\0\0\0\0\0\0\x03\0\x03\0\0\0\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x03\0\x01\0\x03\0\x02\0\x01\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\0\0\x03\0\x01\0\0\0\0\0\x03\0\0\0\x02\0\x01\0\0\0\x01\0\x02\0\x01\0\x03\0\0\0\x01\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
                 ::algebra_core::kernels::bilinear::<
@@ -8570,7 +8558,7 @@ pub mod g3_vendored {
             };
             Odd::from_array({
                 const TERMS: [[u16; 3]; 16usize] = ::algebra_core::kernels::unpack(
-                    b"\0\0\0\0\0\0\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x03\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\0\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\x01\0\x02\0\x01\0\0\0\x03\0\0\0\0\0",
+                    b"\0\0\0\0\0\0\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\x03\0\x03\0\x01\0\x01\0\0\0\0\0\0\0\x01\0\0\0\x03\0\x02\0\0\0\x02\0\x03\0\x01\0\x02\0\0\0\0\0\x03\0\x01\0\x01\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x03\0\0\0\0\0\x02\0\x01\0\0\0\x01\0\x02\0\x01\0\0\0\x03\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
                 ::algebra_core::kernels::bilinear::<
@@ -8608,7 +8596,7 @@ pub mod g3_vendored {
             };
             Odd::from_array({
                 const TERMS: [[u16; 3]; 16usize] = ::algebra_core::kernels::unpack(
-                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\0\0\x01\0\x01\0\x01\0\0\0\0\0\x02\0\x03\0\0\0\x03\0\x02\0\x01\0\0\0\x02\0\x01\0\x01\0\x03\0\x01\0\x02\0\0\0\0\0\x03\0\x01\0\0\0\0\0\x03\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\x01\0\0\0\0\0\0\0\x01\0\x01\0\x03\0\x02\0\x01\0\x02\0\x03\0\0\0\x02\0\0\0\0\0\x03\0\x01\0\0\0\0\0\x02\0\x01\0\x01\0\x03\0\x01\0\x03\0\0\0\0\0\x02\0\x01\0\x01\0\x01\0\x02\0\0\0\0\0\x03\0\x01\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
                 ::algebra_core::kernels::bilinear::<
@@ -8631,7 +8619,7 @@ pub mod g3_vendored {
             let s = self.each_ref();
             let t = {
                 const TERMS: [[u16; 3]; 12usize] = ::algebra_core::kernels::unpack(
-                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\x01\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\x01\0",
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\x01\0\0\0\x02\0\0\0\x03\0\x01\0\0\0\x02\0\0\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\x01\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 3u16, 6u16, 9u16, 12u16];
                 ::algebra_core::kernels::bilinear::<
@@ -8646,7 +8634,7 @@ pub mod g3_vendored {
             };
             Vector::from_array({
                 const TERMS: [[u16; 3]; 12usize] = ::algebra_core::kernels::unpack(
-                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0",
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\0\0\x02\0\x03\0\0\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\x01\0\x03\0\x01\0",
                 );
                 const STARTS: [u16; 4usize] = [0u16, 4u16, 8u16, 12u16];
                 ::algebra_core::kernels::bilinear::<
@@ -8684,7 +8672,7 @@ pub mod g3_vendored {
             };
             Vector::from_array({
                 const TERMS: [[u16; 3]; 12usize] = ::algebra_core::kernels::unpack(
-                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0",
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\0\0\x02\0\x03\0\x01\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\x01\0\x03\0\0\0",
                 );
                 const STARTS: [u16; 4usize] = [0u16, 4u16, 8u16, 12u16];
                 ::algebra_core::kernels::bilinear::<
@@ -8707,7 +8695,7 @@ pub mod g3_vendored {
             let s = self.each_ref();
             let t = {
                 const TERMS: [[u16; 3]; 16usize] = ::algebra_core::kernels::unpack(
-                    b"\0\0\0\0\0\0\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x03\0\x01\0\x03\0\x02\0\x01\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\0\0\x03\0\x01\0\0\0\0\0\x03\0\0\0\x01\0\x02\0\x01\0\x02\0\x01\0\0\0\x03\0\0\0\x01\0",
+                    b"\0\0\0\0\0\0\x03\0\x03\0\0\0\x01\0\x01\0\x01\0\x02\0\x02\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\0\0\x02\0\x03\0\x01\0\x03\0\x02\0\x01\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\0\0\x03\0\x01\0\0\0\0\0\x03\0\0\0\x02\0\x01\0\0\0\x01\0\x02\0\x01\0\x03\0\0\0\x01\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
                 ::algebra_core::kernels::bilinear::<
@@ -8722,7 +8710,7 @@ pub mod g3_vendored {
             };
             Rotor::from_array({
                 const TERMS: [[u16; 3]; 16usize] = ::algebra_core::kernels::unpack(
-                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\0\0\x02\0\x03\0\0\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\x01\0\x03\0\x01\0\x03\0\0\0\0\0\x02\0\x01\0\x01\0\x01\0\x02\0\0\0\0\0\x03\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
                 ::algebra_core::kernels::bilinear::<
@@ -8760,7 +8748,7 @@ pub mod g3_vendored {
             };
             Rotor::from_array({
                 const TERMS: [[u16; 3]; 16usize] = ::algebra_core::kernels::unpack(
-                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\0\0\x03\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\0\0\x02\0\x03\0\x01\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\x01\0\x03\0\0\0\x03\0\0\0\0\0\x02\0\x01\0\x01\0\x01\0\x02\0\0\0\0\0\x03\0\x01\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
                 ::algebra_core::kernels::bilinear::<
@@ -8783,7 +8771,7 @@ pub mod g3_vendored {
             let s = self.each_ref();
             let t = {
                 const TERMS: [[u16; 3]; 16usize] = ::algebra_core::kernels::unpack(
-                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\x01\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\x03\0\x01\0\0\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\x01\0",
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x02\0\x03\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\x01\0\0\0\x02\0\0\0\x03\0\x01\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\x01\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
                 ::algebra_core::kernels::bilinear::<
@@ -8798,7 +8786,7 @@ pub mod g3_vendored {
             };
             Odd::from_array({
                 const TERMS: [[u16; 3]; 16usize] = ::algebra_core::kernels::unpack(
-                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\0\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\0\0\x03\0\0\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\x01\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\0\0\x02\0\x03\0\0\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\x01\0\x03\0\x01\0\x03\0\0\0\0\0\x02\0\x01\0\x01\0\x01\0\x02\0\0\0\0\0\x03\0\0\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
                 ::algebra_core::kernels::bilinear::<
@@ -8836,7 +8824,7 @@ pub mod g3_vendored {
             };
             Odd::from_array({
                 const TERMS: [[u16; 3]; 16usize] = ::algebra_core::kernels::unpack(
-                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x02\0\x03\0\x01\0\x03\0\x02\0\0\0\0\0\x02\0\0\0\x01\0\x03\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\0\0\x03\0\x01\0\x01\0\x02\0\0\0\x02\0\x01\0\x01\0\x03\0\0\0\0\0",
+                    b"\0\0\0\0\0\0\x01\0\x01\0\0\0\x02\0\x02\0\0\0\x03\0\x03\0\0\0\0\0\x01\0\0\0\x01\0\0\0\x01\0\x03\0\x02\0\0\0\x02\0\x03\0\x01\0\0\0\x02\0\0\0\x02\0\0\0\x01\0\x03\0\x01\0\x01\0\x01\0\x03\0\0\0\x03\0\0\0\0\0\x02\0\x01\0\x01\0\x01\0\x02\0\0\0\0\0\x03\0\x01\0",
                 );
                 const STARTS: [u16; 5usize] = [0u16, 4u16, 8u16, 12u16, 16u16];
                 ::algebra_core::kernels::bilinear::<

@@ -750,14 +750,10 @@ impl<T: self::Ring> self::Apply<Vector<T>> for Rotor<T> {
         Vector {
             e1: (((t0.mul_ref(&self.scalar)) + &(t1.mul_ref(&self.e12)))
                 + &((t2.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e23)))),
-            e2: self::Ring::neg_ref(
-                &(((t0.mul_ref(&self.e12)) - &(t1.mul_ref(&self.scalar)))
-                    - &((t2.mul_ref(&self.e23)) - &(t3.mul_ref(&self.e13)))),
-            ),
-            e3: self::Ring::neg_ref(
-                &(((t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23)))
-                    - &((t2.mul_ref(&self.scalar)) + &(t3.mul_ref(&self.e12)))),
-            ),
+            e2: (((t1.mul_ref(&self.scalar)) - &(t0.mul_ref(&self.e12)))
+                - &((t3.mul_ref(&self.e13)) - &(t2.mul_ref(&self.e23)))),
+            e3: (((t2.mul_ref(&self.scalar)) + &(t3.mul_ref(&self.e12)))
+                - &((t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23)))),
         }
     }
 }
@@ -777,18 +773,12 @@ impl<T: self::Ring> self::Apply<Rotor<T>> for Rotor<T> {
         Rotor {
             scalar: (((t0.mul_ref(&self.scalar)) + &(t1.mul_ref(&self.e12)))
                 + &((t2.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e23)))),
-            e12: self::Ring::neg_ref(
-                &(((t0.mul_ref(&self.e12)) - &(t1.mul_ref(&self.scalar)))
-                    - &((t2.mul_ref(&self.e23)) - &(t3.mul_ref(&self.e13)))),
-            ),
-            e13: self::Ring::neg_ref(
-                &(((t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23)))
-                    - &((t2.mul_ref(&self.scalar)) + &(t3.mul_ref(&self.e12)))),
-            ),
-            e23: self::Ring::neg_ref(
-                &(((t0.mul_ref(&self.e23)) - &(t1.mul_ref(&self.e13)))
-                    + &((t2.mul_ref(&self.e12)) - &(t3.mul_ref(&self.scalar)))),
-            ),
+            e12: (((t1.mul_ref(&self.scalar)) - &(t0.mul_ref(&self.e12)))
+                - &((t3.mul_ref(&self.e13)) - &(t2.mul_ref(&self.e23)))),
+            e13: (((t2.mul_ref(&self.scalar)) + &(t3.mul_ref(&self.e12)))
+                - &((t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23)))),
+            e23: (((t3.mul_ref(&self.scalar)) - &(t2.mul_ref(&self.e12)))
+                + &((t1.mul_ref(&self.e13)) - &(t0.mul_ref(&self.e23)))),
         }
     }
 }
