@@ -121,7 +121,7 @@ const PAIRING_MEAN_TERMS: usize = 6;
 ///   additions and subtractions. `apply`'s stage 1 (`S x`) keeps its order: sorting it was
 ///   slower.
 ///
-/// Applied only when the outputs have at most [`PAIRING_MEAN_TERMS`] terms on average: the
+/// Applied only when the outputs have at most 6 terms on average (`PAIRING_MEAN_TERMS`): the
 /// conformal point actions (4-8 terms) and `g3`'s rotor action (4) got faster, `pga3`'s
 /// point action (4-8, mean 7) and `cga`'s 16-term outputs slower, where the tables' order
 /// already gives neighbouring outputs the same deep trees.
