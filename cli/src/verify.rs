@@ -4,7 +4,7 @@ use crate::error::CliError;
 use crate::output::text_table;
 use gam_verify::{Report, Statement};
 use rayon::prelude::*;
-use serde_json::{Value, json};
+use serde_json::{Map, Value, json};
 
 /// The printed report and, when some statement does not hold, the error that sets the exit
 /// status (the report is still printed: it says which and why).
@@ -95,15 +95,14 @@ fn note(r: &Report) -> String {
 }
 
 /// The fields that name a statement, first in both JSON forms (the listing and the report).
-fn identity(s: &Statement) -> serde_json::Map<String, Value> {
-    let fields = json!({
-        "id": s.id,
-        "paper": s.paper.key(),
-        "label": s.label,
-        "statement": s.statement,
-        "method": s.method.key(),
-    });
-    fields.as_object().cloned().unwrap_or_default()
+fn identity(s: &Statement) -> Map<String, Value> {
+    let mut m = Map::new();
+    m.insert("id".into(), s.id.into());
+    m.insert("paper".into(), s.paper.key().into());
+    m.insert("label".into(), s.label.into());
+    m.insert("statement".into(), s.statement.into());
+    m.insert("method".into(), s.method.key().into());
+    m
 }
 
 fn millis(r: &Report) -> f64 {
@@ -115,18 +114,11 @@ fn json_report(reports: &[Report]) -> String {
         .iter()
         .map(|r| {
             let mut entry = identity(r.statement);
-            entry.extend(
-                json!({
-                    "holds": r.outcome.holds(),
-                    "checks": r.outcome.checks,
-                    "failures": r.outcome.failures,
-                    "note": note(r),
-                    "time_ms": (millis(r) * 1e3).round() / 1e3,
-                })
-                .as_object()
-                .cloned()
-                .unwrap_or_default(),
-            );
+            entry.insert("holds".into(), r.outcome.holds().into());
+            entry.insert("checks".into(), r.outcome.checks.into());
+            entry.insert("failures".into(), json!(r.outcome.failures));
+            entry.insert("note".into(), note(r).into());
+            entry.insert("time_ms".into(), json!((millis(r) * 1e3).round() / 1e3));
             Value::Object(entry)
         })
         .collect();
