@@ -208,7 +208,13 @@ impl Plan {
         let mut plan = Plan { spec, declared, full, binary, unary, norm, closed, actions, typed, matrices: Vec::new() };
         fold_signs(&mut plan);
         plan.matrices = super::matrix::plan_matrices(&plan.actions);
-        plan.actions.iter_mut().for_each(super::versor::order_for_pairing);
+        super::versor::norm_forms(&mut plan)?;
+        let (table_above, declared) = (plan.spec.table_above, plan.declared);
+        for k in &mut plan.actions {
+            let lens = k.stage1.iter().chain(&k.stage2).map(Vec::len);
+            let table_driven = super::size::table_driven(table_above, declared, &[k.versor, k.operand], lens);
+            super::versor::order_for_pairing(k, table_driven);
+        }
         Ok(plan)
     }
 

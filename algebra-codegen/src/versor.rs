@@ -46,6 +46,32 @@ pub struct ActionKernel {
     /// The basis masks outside the operand type where the full product is structurally
     /// non-zero: the kernel drops them (they vanish for versors only).
     pub outside: Vec<u32>,
+    /// Whether each stage's sums are chains (`a + b - c + d`) rather than balanced trees
+    /// (`(a + b) + (d - c)`, the default): chosen per kernel by [`order_for_pairing`].
+    pub chains: [bool; 2],
+    /// The scalar-norm form ([`NormForm`]), when the versor type's norm is a scalar for every
+    /// element and the form is cheaper: then stage 1 is the scaled commutator and stage 2 the
+    /// correction, as in [`super::unit`].
+    pub norm: Option<NormForm>,
+    /// The versor fields used negated (bit `a`: `s[a]` enters every product as `-s[a]`, the
+    /// coefficients of its terms negated to match), chosen per kernel by [`order_for_pairing`]
+    /// so that neighbouring sums have the same signs (a cross product's `v = (b23, -b13,
+    /// b12)`); the negation is of the versor's coefficient, off the operand's chain.
+    pub flip: u32,
+}
+
+/// `out_j = n · x_j + scale · Σ stage2_j` with `n = Σ c · s[a] · s[b]` (the scalar
+/// `rev(S) S` of `sandwich`, `S rev(S)` of `apply`): the identity
+/// `rev(S) x S = x (rev(S) S) + (rev(S) x - x rev(S)) S`, where `x (rev(S) S) = n x` because
+/// the norm is a scalar for every element of the versor type (checked symbolically,
+/// [`scalar_norm`]). The generalised quaternion (Rodrigues) form
+/// `|R|² x + 2 s (b × x) + 2 b × (b × x)` of a rotor's action is this form in `g3`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct NormForm {
+    /// The norm's terms `(a, b, c)`, `a <= b`: `n = Σ c · s[a] · s[b]`.
+    pub terms: Vec<(usize, usize, Ratio)>,
+    /// The common factor taken out of stage 1 (2 for rotors).
+    pub scale: Ratio,
 }
 
 impl ActionKernel {
@@ -59,7 +85,17 @@ impl ActionKernel {
         };
         let (m1, a1) = terms(&self.stage1);
         let (m2, a2) = terms(&self.stage2);
-        (m1 + m2, a1 + a2)
+        let Some(norm) = &self.norm else { return (m1 + m2, a1 + a2) };
+        // the norm, `n · x_j` per output, and `+ scale · y` per corrected output
+        let nm = norm.terms.len() + norm.terms.iter().filter(|t| t.2.0.abs() != 1 || t.2.1 != 1).count();
+        let na = norm.terms.len().saturating_sub(1);
+        let corrected = self.stage2.iter().filter(|r| !r.is_empty()).count();
+        let (sm, sa) = match norm.scale {
+            (1, 1) => (0, corrected),
+            (2, 1) => (0, 2 * corrected),
+            _ => (corrected, corrected),
+        };
+        (m1 + m2 + nm + self.stage2.len() + sm, a1 + a2 + na + sa)
     }
 }
 
@@ -100,14 +136,208 @@ pub fn plan_actions(spec: &ModuleSpec, full: usize) -> Result<Vec<ActionKernel>,
 }
 
 /// The mean number of terms per output at or below which [`order_for_pairing`] reorders a
-/// kernel's terms (measured, docs/performance.md "Term order of the fused actions").
+/// kernel's terms by its default rule (measured, docs/performance.md "Term order of the fused
+/// actions").
 const PAIRING_MEAN_TERMS: usize = 6;
+
+/// The order of one stage's summands. Stage 1 sums `c · s[a] · x[b]` (versor field `a`,
+/// operand field `b`), stage 2 sums `c · t[k] · s[a]` (intermediate `k`, versor field `a`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum RowOrder {
+    /// The tables' order: stage 1 by `(a, b)`, stage 2 by `(k, a)`.
+    Tables,
+    /// By the versor's field first (stage 1 `(a, b)`, stage 2 `(a, k)`); a row that would start
+    /// with a negative term starts with its first positive one (no negation of the sum).
+    Versor,
+    /// By the other factor first (stage 1 `(b, a)`, stage 2 `(k, a)`), the same sign rule.
+    Other,
+    /// The positive terms first, each part in the tables' order.
+    PositiveFirst,
+    /// The positive terms first, each part by the versor's field.
+    PositiveVersor,
+    /// The positive terms first, each part by the other factor.
+    PositiveOther,
+}
+
+/// The order and shape of a fused kernel's sums: one entry of the pairing wisdom
+/// ([`order_for_pairing`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct TermOrder {
+    /// Stage 1's summand order.
+    pub stage1: RowOrder,
+    /// Stage 2's summand order.
+    pub stage2: RowOrder,
+    /// Chains instead of balanced trees (stage 1, stage 2).
+    pub chains: [bool; 2],
+    /// The versor fields used negated ([`ActionKernel::flip`]).
+    pub flip: u32,
+    /// The order of the norm's terms in the scalar-norm form ([`NormForm`]).
+    pub norm: NormOrder,
+}
+
+/// The order of the norm's terms `c · s[a] · s[b]` (summed as a balanced tree).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum NormOrder {
+    /// By `(a, b)`: `(s0² + s1²) + (s2² + s3²)`.
+    Tables,
+    /// First with last, second with second-to-last: `(s0² + s3²) + (s1² + s2²)`.
+    Outside,
+    /// First half beside second half: `(s0² + s2²) + (s1² + s3²)`.
+    Halves,
+}
+
+impl TermOrder {
+    /// The tables' order, balanced trees: the kernel as planned.
+    pub const TABLES: TermOrder = TermOrder {
+        stage1: RowOrder::Tables,
+        stage2: RowOrder::Tables,
+        chains: [false, false],
+        flip: 0,
+        norm: NormOrder::Tables,
+    };
+}
+
+fn order_row(row: &mut [(usize, usize, Ratio)], order: RowOrder, stage2: bool) {
+    // the tables' order is `(t.0, t.1)` in both stages: stage 1 `(a, b)`, stage 2 `(k, a)`
+    let versor = |t: &(usize, usize, Ratio)| if stage2 { (t.1, t.0) } else { (t.0, t.1) };
+    let other = |t: &(usize, usize, Ratio)| if stage2 { (t.0, t.1) } else { (t.1, t.0) };
+    let neg = |t: &(usize, usize, Ratio)| t.2.0 < 0;
+    match order {
+        RowOrder::Tables => row.sort_by_key(|t| (t.0, t.1)),
+        RowOrder::Versor => row.sort_by_key(versor),
+        RowOrder::Other => row.sort_by_key(other),
+        RowOrder::PositiveFirst => row.sort_by_key(|t| (neg(t), t.0, t.1)),
+        RowOrder::PositiveVersor => row.sort_by_key(|t| (neg(t), versor(t))),
+        RowOrder::PositiveOther => row.sort_by_key(|t| (neg(t), other(t))),
+    }
+    if matches!(order, RowOrder::Versor | RowOrder::Other)
+        && row.first().is_some_and(neg)
+        && let Some(p) = row.iter().position(|t| t.2.0 > 0)
+    {
+        row[..=p].rotate_right(1);
+    }
+}
+
+/// Puts a kernel's terms in `order` (from any order: each row is sorted from scratch).
+/// Only the order of the summands and the shape of the sums change, so every value over
+/// exact scalars is the same.
+pub fn apply_order(k: &mut ActionKernel, order: TermOrder) {
+    // the versor's negated fields: from `k.flip` to `order.flip`
+    let change = k.flip ^ order.flip;
+    let negate = |c: &mut Ratio| c.0 = -c.0;
+    for (a, _, c) in k.stage1.iter_mut().flatten() {
+        if change >> *a & 1 == 1 {
+            negate(c);
+        }
+    }
+    for (_, a, c) in k.stage2.iter_mut().flatten() {
+        if change >> *a & 1 == 1 {
+            negate(c);
+        }
+    }
+    k.flip = order.flip;
+    k.stage1.iter_mut().for_each(|row| order_row(row, order.stage1, false));
+    k.stage2.iter_mut().for_each(|row| order_row(row, order.stage2, true));
+    k.chains = order.chains;
+    if let Some(norm) = &mut k.norm {
+        norm.terms.sort_by_key(|t| (t.0, t.1));
+        let n = norm.terms.len();
+        let perm: Vec<usize> = match order.norm {
+            NormOrder::Tables => (0..n).collect(),
+            NormOrder::Outside => (0..n).map(|i| if i % 2 == 0 { i / 2 } else { n - 1 - i / 2 }).collect(),
+            NormOrder::Halves => (0..n).map(|i| if i % 2 == 0 { i / 2 } else { n.div_ceil(2) + i / 2 }).collect(),
+        };
+        norm.terms = perm.iter().map(|&i| norm.terms[i]).collect();
+    }
+}
+
+/// A fingerprint of a kernel's structure: its convention, form and terms in the tables'
+/// order (FNV-1a), the key of the pairing wisdom ([`WISDOM`]). Independent of the kernel's
+/// current term order.
+pub fn fingerprint(k: &ActionKernel) -> u64 {
+    let mut canonical = k.clone();
+    apply_order(&mut canonical, TermOrder::TABLES);
+    let text = format!(
+        "{:?} {:?} {:?} {:?}",
+        canonical.convention,
+        canonical.norm.as_ref().map(|n| (&n.terms, n.scale)),
+        canonical.stage1,
+        canonical.stage2
+    );
+    text.bytes().fold(0xcbf2_9ce4_8422_2325_u64, |h, b| (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3))
+}
+
+/// Orders chosen per kernel by measurement (the "wisdom", as FFTW's): fingerprint
+/// ([`fingerprint`]), the kernel it was measured on, and the order. Kernels not listed take
+/// [`default_order`]. Re-derive with `cargo run --release -p algebra-codegen --example
+/// pairing_wisdom` (docs/performance.md, "fifth session"): it times every candidate order of
+/// the benched kernels beside their module's motor product in one `rustc -O` program (the
+/// generated kernel bodies, interleaved rounds, pinned to one core) and prints the table.
+/// Measured on a 2-core AMD EPYC VM, baseline x86-64 (SSE2), rustc 1.95.
+pub const WISDOM: &[(u64, &str, TermOrder)] = {
+    use NormOrder::{Halves, Outside, Tables as NormTables};
+    use RowOrder::{Other, PositiveFirst, PositiveVersor, Tables, Versor};
+    const fn o(stage1: RowOrder, stage2: RowOrder, chains: [bool; 2], flip: u32, norm: NormOrder) -> TermOrder {
+        TermOrder { stage1, stage2, chains, flip, norm }
+    }
+    &[
+        // `g3::Rotor::sandwich(&Vector)`, scalar-norm form: `-b12`, `-b23` (a cross product's
+        // signs), the norm `(s² + b13²) + (b12² + b23²)`: 1.217 (default order 1.543)
+        (0x4be0_8e33_f956_df99, "g3 Rotor sandwich Vector", o(Tables, PositiveFirst, [true, false], 0b1010, Halves)),
+        // `g3::Rotor::apply(&Vector)`, scalar-norm form: `-s`, `-b13`, the norm
+        // `(s² + b23²) + (b12² + b13²)`: 1.303 (the general kernel 1.384)
+        (0xfb5b_ad7b_ab55_ccde, "g3 Rotor apply Vector", o(Tables, Versor, [true, false], 0b0101, Outside)),
+        // `cga_null::Motor::sandwich(&Vector)`: 1.215 (default 1.349)
+        (0x0bbd_d462_89ea_dd15, "cga_null Motor sandwich Vector", o(Versor, Versor, [false, false], 0, NormTables)),
+        // `cga_null::Motor::apply(&Vector)`, `-e1inf`, `-e3inf`: 1.207 (default 1.266)
+        (
+            0xa047_aee2_1f55_280f,
+            "cga_null Motor apply Vector",
+            o(PositiveFirst, PositiveVersor, [true, false], 0b101_0000, NormTables),
+        ),
+        // GATL's declaration `Motor::sandwich(&Vector)`, `-e1inf`: 1.263 (default 1.381)
+        (
+            0x171c_29ca_63e8_7e55,
+            "gatl Motor sandwich Vector",
+            o(Versor, PositiveFirst, [true, false], 0b1_0000, NormTables),
+        ),
+        // GATL's declaration `Motor::apply(&Vector)`, `-e12`, `-e1inf`: 1.217 (default 1.358)
+        (0x1f16_4979_183b_f233, "gatl Motor apply Vector", o(Other, Other, [true, false], 0b1_0010, NormTables)),
+        // `pga3::Motor::sandwich(&Trivector)` (the point action), `-s`, `-e02`, `-e12`, `-e03`,
+        // `-e13`, `-e0123`: 0.739 (default, the tables' order, 0.899)
+        (
+            0x98c1_083b_349d_a2f6,
+            "pga3 Motor sandwich Trivector",
+            o(PositiveFirst, PositiveVersor, [false, false], 0b1011_1101, NormTables),
+        ),
+        // `cga::Motor::sandwich(&Vector)` (16-field motors): 0.529 (the tables' order 0.577)
+        (0x7a11_e143_2ccc_12ba, "cga Motor sandwich Vector", o(Tables, Versor, [false, true], 0, NormTables)),
+    ]
+};
+
+/// The order of a kernel without wisdom: in kernels whose outputs have at most six terms on
+/// average, stage 2 by the versor's field and `sandwich`'s stage 1 positive terms first
+/// (`apply`'s in the tables' order), trees; longer kernels keep the tables' order.
+pub fn default_order(k: &ActionKernel) -> TermOrder {
+    let terms: usize = k.stage2.iter().map(Vec::len).sum();
+    if terms > PAIRING_MEAN_TERMS * k.stage2.len() {
+        return TermOrder::TABLES;
+    }
+    let stage1 = match k.convention {
+        Convention::Sandwich => RowOrder::PositiveFirst,
+        Convention::Apply => RowOrder::Tables,
+    };
+    TermOrder { stage1, stage2: RowOrder::Versor, chains: [false, false], flip: 0, norm: NormOrder::Tables }
+}
 
 /// Reorders the terms of a fused kernel for LLVM's SLP vectoriser, which packs two adjacent
 /// outputs (and two adjacent intermediates) into one SSE register when their expression trees
-/// have the same shape. Only the order of the summands changes, so every value over exact
-/// scalars is the same (and the other languages' kernels, printed from the same terms, keep
-/// adding in the Rust kernel's order).
+/// have the same shape. Only the order of the summands (and the shape of the sums: trees or
+/// chains) changes, so every value over exact scalars is the same (and the other languages'
+/// kernels, printed from the same terms, keep adding in the Rust kernel's order).
+///
+/// A kernel listed in [`WISDOM`] (by its [`fingerprint`]) takes the order measured fastest
+/// for it; every other kernel [`default_order`]:
 ///
 /// - Stage 2 (each output a sum of `t[k] · s[a]`): the terms in the order of the versor field
 ///   `a` (then `k`), so term `i` of two neighbouring outputs multiplies the same versor
@@ -132,33 +362,127 @@ const PAIRING_MEAN_TERMS: usize = 6;
 /// let alg = Algebra::builtin("g3").unwrap();
 /// let types = ModuleSpec::parse_types("Vector=grade1;Rotor=even", &alg).unwrap();
 /// let plan = Plan::new(ModuleSpec::new("g3", alg.metric().clone(), Basis::Blade, types).unwrap()).unwrap();
-/// let k = plan.actions.iter().find(|k| (k.versor, k.operand, k.convention) == (1, 0, Convention::Sandwich)).unwrap();
-/// // each output's terms by the rotor's field: 1, e12, e13, e23
-/// assert!(k.stage2.iter().all(|row| row.iter().map(|t| t.1).collect::<Vec<_>>() == [0, 1, 2, 3]));
+/// let k = plan.actions.iter().find(|k| (k.versor, k.operand, k.convention) == (1, 1, Convention::Sandwich)).unwrap();
+/// // each output's terms by the rotor's field
+/// assert!(k.stage2.iter().all(|row| row.windows(2).all(|w| w[0].1 <= w[1].1)));
 /// // each intermediate's positive terms first
 /// assert!(k.stage1.iter().all(|row| row.windows(2).all(|w| w[0].2.0 > 0 || w[1].2.0 < 0)));
 /// ```
-pub fn order_for_pairing(k: &mut ActionKernel) {
-    let terms: usize = k.stage2.iter().map(Vec::len).sum();
-    if terms > PAIRING_MEAN_TERMS * k.stage2.len() {
-        return;
-    }
-    for row in &mut k.stage2 {
-        row.sort_by_key(|&(t, a, _)| (a, t));
-        // a positive term first, as the chains do, so that the sum is not negated at the end
-        // (the reflections' outputs; the motors' and rotors' start positive already)
-        if row.first().is_some_and(|t| t.2.0 < 0)
-            && let Some(p) = row.iter().position(|t| t.2.0 > 0)
-        {
-            let first = row.remove(p);
-            row.insert(0, first);
+///
+/// A table-driven kernel (above the size threshold, [`crate::size`]) takes [`default_order`]:
+/// the table loops read the versor's fields as they are, so they cannot negate one.
+pub fn order_for_pairing(k: &mut ActionKernel, table_driven: bool) {
+    let f = fingerprint(k);
+    let wisdom = WISDOM.iter().find(|w| w.0 == f).filter(|_| !table_driven);
+    let order = wisdom.map_or_else(|| default_order(k), |w| w.2);
+    apply_order(k, order);
+}
+
+/// Whether the norm of the versor type `v` in `convention` (`rev(S) S` for `sandwich`,
+/// `S rev(S)` for `apply`) is a scalar for *every* element `S` of the type, decided exactly:
+/// the product is expanded from the exact rational tables as a polynomial in the type's
+/// coefficients (the monomials `s_a s_b`), and every component but the scalar must be the zero
+/// polynomial. True for `g3`'s rotors
+/// (quaternions) and for vectors; false for motors with a translation part, whose norm has a
+/// pseudoscalar part (`α + β ω`) unless they are versors.
+///
+/// ```
+/// use algebra_core::{Algebra, Basis};
+/// use algebra_codegen::{ModuleSpec, versor::{Convention, scalar_norm}};
+/// let g3 = Algebra::builtin("g3").unwrap();
+/// let types = ModuleSpec::parse_types("Rotor=even", &g3).unwrap();
+/// let spec = ModuleSpec::new("g3", g3.metric().clone(), Basis::Blade, types).unwrap();
+/// assert!(scalar_norm(&spec, 0, Convention::Sandwich) && scalar_norm(&spec, 0, Convention::Apply));
+/// let pga = Algebra::builtin("pga3").unwrap();
+/// let types = ModuleSpec::parse_types("Motor=even", &pga).unwrap();
+/// let spec = ModuleSpec::new("pga3", pga.metric().clone(), Basis::Blade, types).unwrap();
+/// assert!(!scalar_norm(&spec, 0, Convention::Sandwich)); // `rev(M) M = α + β e0123`
+/// ```
+pub fn scalar_norm(spec: &ModuleSpec, v: usize, convention: Convention) -> bool {
+    let tables = spec.algebra.tables();
+    let (gp, rev) = (tables.product(spec.basis, Product::Geometric), tables.unary(spec.basis, Unary::Reverse));
+    let vm = &spec.types[v].elements;
+    // the product as a polynomial per basis mask: monomial `s_a s_a'` keyed `(min, max)`
+    let mut poly: BTreeMap<u32, BTreeMap<(usize, usize), Q>> = BTreeMap::new();
+    for (a, &ma) in vm.iter().enumerate() {
+        for (b, &mb) in vm.iter().enumerate() {
+            let (left, right) = match convention {
+                Convention::Sandwich => (
+                    rev.image(ma).expect("a mask of the spec's algebra").to_vec(),
+                    vec![(mb, Q::from_integer(1.into()))],
+                ),
+                Convention::Apply => (
+                    vec![(ma, Q::from_integer(1.into()))],
+                    rev.image(mb).expect("a mask of the spec's algebra").to_vec(),
+                ),
+            };
+            for (l, cl) in &left {
+                for (r, cr) in &right {
+                    for (k, c) in gp.get(*l, *r).expect("a mask of the spec's algebra") {
+                        *poly.entry(*k).or_default().entry((a.min(b), a.max(b))).or_insert_with(Q::zero) += cl * cr * c;
+                    }
+                }
+            }
         }
     }
-    if k.convention == Convention::Sandwich {
-        for row in &mut k.stage1 {
-            row.sort_by_key(|t| t.2.0 < 0);
+    poly.iter().all(|(&k, p)| k == 0 || p.values().all(Zero::is_zero))
+}
+
+/// Replaces each fused kernel of `plan` by its scalar-norm form ([`norm_form`]) when the
+/// versor type's norm is a scalar for every element ([`scalar_norm`]), the general kernel is
+/// straight-line code (not table-driven, [`crate::size`]), the form needs fewer operations
+/// (multiplications plus additions), and its term order was measured ([`WISDOM`]): in the
+/// default order the form was *slower* than the general kernel (`g3`'s rotor on a vector
+/// 1.54x the rotor product against 1.40x), with the measured order (a cross product's signs)
+/// 1.21x. The form is exact over any ring for every element of the type, as the general
+/// kernel is. `g3`'s rotor on a vector: 22 multiplications and 18 additions against 24 and 18
+/// (docs/performance.md, "fifth session"). Run after the action matrices are composed (they
+/// use the general form).
+///
+/// ```
+/// use algebra_core::{Algebra, Basis};
+/// use algebra_codegen::{ModuleSpec, plan::Plan, versor::{self, Convention}};
+/// let alg = Algebra::builtin("g3").unwrap();
+/// let types = ModuleSpec::parse_types("Vector=grade1;Rotor=even", &alg).unwrap();
+/// let plan = Plan::new(ModuleSpec::new("g3", alg.metric().clone(), Basis::Blade, types).unwrap()).unwrap();
+/// let k = plan.actions.iter().find(|k| (k.versor, k.operand, k.convention) == (1, 0, Convention::Sandwich)).unwrap();
+/// let form = versor::norm_form(&plan, k).unwrap().unwrap();
+/// let norm = form.norm.as_ref().unwrap();
+/// assert_eq!((norm.terms.len(), norm.scale), (4, (2, 1))); // s² + b12² + b13² + b23², 2
+/// assert_eq!(form.counts(), (22, 18)); // the general kernel: 24, 18
+/// // the plan takes it for this kernel: cheaper, and its order is in the wisdom
+/// assert!(k.norm.is_some());
+/// ```
+pub(crate) fn norm_forms(plan: &mut crate::plan::Plan) -> Result<(), CodegenError> {
+    for i in 0..plan.actions.len() {
+        let k = &plan.actions[i];
+        let Some(form) = norm_form(plan, k)? else { continue };
+        let cost = |k: &ActionKernel| k.counts().0 + k.counts().1;
+        let f = fingerprint(&form);
+        if cost(&form) < cost(k) && WISDOM.iter().any(|w| w.0 == f) {
+            plan.actions[i] = form;
         }
     }
+    Ok(())
+}
+
+/// The scalar-norm form ([`NormForm`]) of a planned fused kernel, in the tables' order, when
+/// it is exact for every element of the versor type ([`scalar_norm`]) and the kernel is
+/// straight-line code; `None` otherwise. The plan uses it only where it is cheaper and its
+/// order was measured ([`WISDOM`]); `examples/pairing_wisdom.rs` times both forms.
+///
+/// # Errors
+/// A coefficient does not fit `i64/i64`.
+pub fn norm_form(plan: &crate::plan::Plan, k: &ActionKernel) -> Result<Option<ActionKernel>, CodegenError> {
+    let lens = k.stage1.iter().chain(&k.stage2).map(Vec::len);
+    if crate::size::table_driven(plan.spec.table_above, plan.declared, &[k.versor, k.operand], lens)
+        || !scalar_norm(&plan.spec, k.versor, k.convention)
+    {
+        return Ok(None);
+    }
+    let u = super::unit::unit_kernel(&plan.spec, k.convention, k.versor, k.operand)?;
+    let terms = plan.norm[k.versor].iter().map(|t| (t.lhs, t.rhs, t.coef)).collect();
+    Ok(Some(ActionKernel { outside: k.outside.clone(), norm: Some(NormForm { terms, scale: u.scale }), ..u.kernel }))
 }
 
 /// Whether a fused kernel is the action of every versor of its type: each component it drops
@@ -345,7 +669,17 @@ fn action_kernel_in(
                 .unwrap_or(Ok(Vec::new()))
         })
         .collect::<Result<Vec<_>, _>>()?;
-    Ok(ActionKernel { convention, versor: v, operand: x, stage1, stage2, outside })
+    Ok(ActionKernel {
+        convention,
+        versor: v,
+        operand: x,
+        stage1,
+        stage2,
+        outside,
+        chains: [false; 2],
+        norm: None,
+        flip: 0,
+    })
 }
 
 #[cfg(test)]
@@ -353,6 +687,91 @@ mod tests {
     use super::*;
     use crate::spec::TypeSpec;
     use algebra_core::{Algebra, Metric, Multivector};
+
+    /// A planned kernel evaluated over `Q` as the emitters print it: flipped versor fields
+    /// enter negated (their coefficients are stored negated), and the scalar-norm form adds
+    /// `n · x_j` to the scaled correction.
+    fn eval_q(k: &ActionKernel, s: &[Q], x: &[Q]) -> Vec<Q> {
+        let r = |c: Ratio| Q::new(c.0.into(), c.1.into());
+        let sf: Vec<Q> =
+            s.iter().enumerate().map(|(a, v)| if k.flip >> a & 1 == 1 { -v.clone() } else { v.clone() }).collect();
+        let t: Vec<Q> = k.stage1.iter().map(|row| row.iter().map(|&(a, b, c)| r(c) * &sf[a] * &x[b]).sum()).collect();
+        let y = k.stage2.iter().map(|row| row.iter().map(|&(i, a, c)| r(c) * &t[i] * &sf[a]).sum::<Q>());
+        match &k.norm {
+            None => y.collect(),
+            Some(norm) => {
+                let n: Q = norm.terms.iter().map(|&(a, b, c)| r(c) * &s[a] * &s[b]).sum();
+                y.zip(x).map(|(y, xj)| &n * xj + r(norm.scale) * y).collect()
+            }
+        }
+    }
+
+    /// Every planned fused kernel (the wisdom's orders and flips, the scalar-norm forms) of
+    /// the benched declarations and of the reflections gives exactly the operand's part of the
+    /// runtime `rev(S) x S` / `S x rev(S)` over `Q`, for arbitrary (non-versor) elements.
+    #[test]
+    fn planned_kernels_are_the_projected_products_over_q() {
+        let z = "0";
+        let gram: [&[&str]; 5] =
+            [&["1", z, z, z, z], &[z, "1", z, z, z], &[z, z, "1", z, z], &[z, z, z, z, "-1"], &[z, z, z, "-1", z]];
+        let gatl = Metric::from_strs(&["1", "2", "3", "o", "inf"], &gram).unwrap();
+        let motor = "Motor=1,e12,e13,e23,e1inf,e2inf,e3inf,e123inf";
+        let builtin = |n: &str| Algebra::builtin(n).unwrap().metric().clone();
+        let specs = [
+            (gatl, Basis::Blade, format!("Vector=grade1;{motor}"), None),
+            (builtin("cga-null"), Basis::Product, format!("Vector=grade1;{motor}"), None),
+            (builtin("g3"), Basis::Blade, "Vector=grade1;Bivector=grade2;Rotor=even".to_string(), None),
+            (builtin("pga3"), Basis::Blade, "Vector=grade1;Trivector=grade3;Motor=even".to_string(), None),
+            // as the predefined `cga` module: straight-line kernels up to 256 terms
+            (builtin("cga"), Basis::Blade, "Vector=grade1;Motor=even".to_string(), Some(256)),
+        ];
+        let (mut flipped, mut normed, mut wise) = (0, 0, 0);
+        for (metric, basis, types, table_above) in specs {
+            let alg = Algebra::new("m", metric.clone());
+            let types = ModuleSpec::parse_types(&types, &alg).unwrap();
+            let mut spec = ModuleSpec::new("m", metric, basis, types).unwrap();
+            spec.table_above = table_above.unwrap_or(spec.table_above);
+            let plan = crate::plan::Plan::new(spec).unwrap();
+            let spec = &plan.spec;
+            let mv = |t: &TypeSpec, c: &[Q]| {
+                let mut coeffs = vec![Q::zero(); spec.algebra.dim()];
+                for ((m, v), sign) in t.elements.iter().zip(c).zip(t.signs()) {
+                    coeffs[*m as usize] = v * Q::from_integer(sign.into());
+                }
+                Multivector::from_coeffs(&spec.algebra, basis, coeffs).unwrap()
+            };
+            for (n, k) in plan.actions.iter().enumerate() {
+                let (vt, xt) = (&spec.types[k.versor], &spec.types[k.operand]);
+                let q = |i: usize| {
+                    Q::new(
+                        ((i * 7 + n * 3) % 11).cast_signed().wrapping_sub(5).into(),
+                        ((i % 3) + 1).cast_signed().into(),
+                    )
+                };
+                let s: Vec<Q> = (0..vt.elements.len()).map(q).collect();
+                let x: Vec<Q> = (0..xt.elements.len()).map(|i| q(i + 13)).collect();
+                let (sm, xm) = (mv(vt, &s), mv(xt, &x));
+                let reference = match k.convention {
+                    Convention::Sandwich => &(&sm.reverse() * &xm) * &sm,
+                    Convention::Apply => &(&sm * &xm) * &sm.reverse(),
+                };
+                let out = eval_q(k, &s, &x);
+                for (j, (m, sign)) in xt.elements.iter().zip(xt.signs()).enumerate() {
+                    let want = reference.coeff(*m).unwrap() * Q::from_integer(sign.into());
+                    assert_eq!(
+                        out[j], want,
+                        "{} {:?} {} on {}: component {m:#b}",
+                        spec.name, k.convention, vt.name, xt.name
+                    );
+                }
+                flipped += usize::from(k.flip != 0);
+                normed += usize::from(k.norm.is_some());
+                wise += usize::from(WISDOM.iter().any(|w| w.0 == fingerprint(k)));
+            }
+        }
+        // the wisdom's eight kernels, six with flips, two in the scalar-norm form
+        assert_eq!((wise, flipped, normed), (8, 6, 2));
+    }
 
     /// GATL's conformal declaration (blade basis, `eo · einf = -1`): the intermediate is taken
     /// in the product basis (fewer operations), and the kernel still gives the blade-basis

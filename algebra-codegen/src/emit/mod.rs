@@ -58,6 +58,14 @@ pub(super) fn ident(s: &str) -> Ident {
     Ident::new(s, Span::call_site())
 }
 
+/// The straight-line body of a fused action kernel as the `Sandwich`/`Apply` impls emit it
+/// (`self` the versor, `x` the operand, the scalar `T`, engine paths `__gam_engine::`), for
+/// the tool that times term orders (`algebra-codegen/examples/pairing_wisdom.rs`).
+#[doc(hidden)]
+pub fn action_body(plan: &Plan, k: &crate::versor::ActionKernel) -> TokenStream {
+    versor::unrolled_body(&Names::new(plan), k)
+}
+
 /// The fields, element names and orientation signs of every type of a plan.
 pub(super) struct Names {
     pub(super) types: Vec<Ident>,

@@ -3,7 +3,7 @@
 //! kernel.
 
 use super::Names;
-use super::sums::{SumTerm, tree_sum as sum};
+use super::sums::{SumTerm, sum as chain, tree_sum};
 use crate::ratio::Ratio;
 use crate::versor::{ActionKernel, Convention};
 use algebra_core::tables::{Product, Unary};
@@ -56,6 +56,7 @@ pub(crate) fn action_items(names: &Names, k: &ActionKernel) -> TokenStream {
 
 /// The two stages as loops over constant tables (the size policy, [`super::size`]).
 fn table_body(names: &Names, k: &ActionKernel) -> TokenStream {
+    debug_assert!(k.norm.is_none() && k.flip == 0, "table-driven kernels keep the general form, unflipped");
     let flat = |stage: &[Vec<(usize, usize, Ratio)>]| -> Vec<(usize, usize, usize, Ratio)> {
         stage.iter().enumerate().flat_map(|(o, ts)| ts.iter().map(move |&(i, j, c)| (i, j, o, c))).collect()
     };
@@ -73,14 +74,16 @@ fn table_body(names: &Names, k: &ActionKernel) -> TokenStream {
 /// multiplies the versor's coefficient, which does not depend on the operand, so it leaves the
 /// operand's dependency chain (the conformal point action: 1.31 → 1.28 × the motor product,
 /// docs/performance.md). The same value exactly over any ring, and in floating point for a
-/// power of two such as the 2 of the conformal action.
-fn scaled(c: Ratio, field: &proc_macro2::Ident) -> (Ratio, TokenStream) {
+/// power of two such as the 2 of the conformal action. A field the kernel uses negated
+/// ([`ActionKernel::flip`]) is `(-self.field)`.
+fn scaled(c: Ratio, field: &proc_macro2::Ident, flipped: bool) -> (Ratio, TokenStream) {
     let (n, d) = c;
+    let f = if flipped { quote!((__gam_engine::Ring::neg_ref(&self.#field))) } else { quote!(self.#field) };
     if n.abs() == 1 && d == 1 {
-        return (c, quote!(self.#field));
+        return (c, f);
     }
     let k = n.abs();
-    ((n.signum(), 1), quote!((T::from_ratio(#k, #d) * &self.#field)))
+    ((n.signum(), 1), quote!((T::from_ratio(#k, #d) * &#f)))
 }
 
 /// The first stage as bindings `let t0 = ...;` (sums of `self` fields times `x` fields).
@@ -91,32 +94,58 @@ pub(crate) fn stage1_binds(names: &Names, k: &ActionKernel) -> Vec<TokenStream> 
         let summands: Vec<SumTerm> = terms
             .iter()
             .map(|&(a, b, c)| {
-                let (c, fa) = scaled(c, &vf[a]);
+                let (c, fa) = scaled(c, &vf[a], k.flip >> a & 1 == 1);
                 let fb = &xf[b];
                 (c, quote!((#fa.mul_ref(&x.#fb))), true)
             })
             .collect();
         let ti = format_ident!("t{}", i);
-        let e = sum(summands);
+        let e = if k.chains[0] { chain(summands) } else { tree_sum(summands) };
         binds.push(quote!(let #ti = #e;));
     }
     binds
 }
 
-/// The two stages as straight-line code.
-fn unrolled_body(names: &Names, k: &ActionKernel) -> TokenStream {
+/// The two stages as straight-line code; in the scalar-norm form ([`crate::versor::NormForm`])
+/// the norm `n` is bound after the intermediates and each output is `n · x_j` plus its scaled
+/// correction.
+pub(super) fn unrolled_body(names: &Names, k: &ActionKernel) -> TokenStream {
     let (xt, vf, xf) = (&names.types[k.operand], &names.fields[k.versor], &names.fields[k.operand]);
-    let binds = stage1_binds(names, k);
-    let outs = k.stage2.iter().map(|terms| {
-        sum(terms
+    let mut binds = stage1_binds(names, k);
+    let outs = k.stage2.iter().zip(xf).map(|(terms, f)| {
+        let terms: Vec<SumTerm> = terms
             .iter()
             .map(|&(i, a, c)| {
-                let (c, fa) = scaled(c, &vf[a]);
+                let (c, fa) = scaled(c, &vf[a], k.flip >> a & 1 == 1);
                 let ti = format_ident!("t{}", i);
                 (c, quote!((#ti.mul_ref(&#fa))), true)
             })
-            .collect())
+            .collect();
+        let Some(norm) = &k.norm else {
+            return if k.chains[1] { chain(terms) } else { tree_sum(terms) };
+        };
+        if terms.is_empty() {
+            return quote!(n.mul_ref(&x.#f));
+        }
+        let y = if k.chains[1] { chain(terms) } else { tree_sum(terms) };
+        match norm.scale {
+            (1, 1) => quote!(n.mul_ref(&x.#f) + &(#y)),
+            (2, 1) => quote!({ let y = #y; n.mul_ref(&x.#f) + &(y.add_ref(&y)) }),
+            (p, q) => quote!(n.mul_ref(&x.#f) + &(T::from_ratio(#p, #q) * &(#y))),
+        }
     });
+    if let Some(norm) = &k.norm {
+        let terms = norm
+            .terms
+            .iter()
+            .map(|&(a, b, c)| {
+                let (fa, fb) = (&vf[a], &vf[b]);
+                (c, quote!((self.#fa.mul_ref(&self.#fb))), true)
+            })
+            .collect();
+        let n = tree_sum(terms);
+        binds.push(quote!(let n = #n;));
+    }
     quote! {
         #(#binds)*
         #xt { #(#xf: #outs),* }

@@ -115,14 +115,12 @@ fn norm(ty: usize, terms: &[PlanTerm], name: &str) -> Kernel {
 }
 
 /// `c · s[a]` as `(±1, |c| · s[a])`: the constant multiplies the versor's coefficient
-/// (as [`crate::versor`]'s kernels do).
-fn scaled(c: Ratio, a: usize) -> (Ratio, Expr) {
+/// (as [`crate::versor`]'s kernels do); a field used negated ([`ActionKernel::flip`]) is
+/// `-s[a]`.
+fn scaled(c: Ratio, a: usize, flip: u32) -> (Ratio, Expr) {
     let (n, d) = c;
-    if n.abs() == 1 && d == 1 {
-        (c, field(0, a))
-    } else {
-        ((n.signum(), 1), mul(Expr::Const((n.abs(), d)), field(0, a)))
-    }
+    let f = if flip >> a & 1 == 1 { <Ir as Build>::neg(field(0, a)) } else { field(0, a) };
+    if n.abs() == 1 && d == 1 { (c, f) } else { ((n.signum(), 1), mul(Expr::Const((n.abs(), d)), f)) }
 }
 
 fn stage1(k: &ActionKernel) -> Vec<Expr> {
@@ -132,25 +130,29 @@ fn stage1(k: &ActionKernel) -> Vec<Expr> {
             let summands: Vec<Term<Expr>> = terms
                 .iter()
                 .map(|&(a, b, c)| {
-                    let (c, s) = scaled(c, a);
+                    let (c, s) = scaled(c, a, k.flip);
                     (c, mul(s, field(1, b)), true)
                 })
                 .collect();
-            tree_sum_in::<Ir>(summands)
+            if k.chains[0] { sum_in::<Ir>(summands) } else { tree_sum_in::<Ir>(summands) }
         })
         .collect()
 }
 
 fn stage2(terms: &[(usize, usize, Ratio)]) -> Expr {
-    tree_sum_in::<Ir>(
-        terms
-            .iter()
-            .map(|&(i, a, c)| {
-                let (c, s) = scaled(c, a);
-                (c, mul(Expr::Local(i), s), true)
-            })
-            .collect(),
-    )
+    stage2_shaped(terms, false, 0)
+}
+
+/// A stage-2 sum as a chain (`chain`) or a balanced tree (the Rust kernel's shape).
+fn stage2_shaped(terms: &[(usize, usize, Ratio)], chain: bool, flip: u32) -> Expr {
+    let terms = terms
+        .iter()
+        .map(|&(i, a, c)| {
+            let (c, s) = scaled(c, a, flip);
+            (c, mul(Expr::Local(i), s), true)
+        })
+        .collect();
+    if chain { sum_in::<Ir>(terms) } else { tree_sum_in::<Ir>(terms) }
 }
 
 /// Whether an action kernel is table-driven in Rust ([`crate::size::table_driven`]).
@@ -165,9 +167,42 @@ fn stages(plan: &Plan, k: &ActionKernel) -> (Vec<Expr>, Vec<Expr>) {
         let t = table_rows(&k.stage1, |a| field(0, a), |b| field(1, b));
         let out = table_rows(&k.stage2, Expr::Local, |a| field(0, a));
         (t, out)
+    } else if let Some(norm) = &k.norm {
+        // the scalar-norm form, as the Rust kernel: the intermediates, then `n`, then
+        // `n · x_j + scale · y_j` (`y + y` for the scale 2)
+        let mut lets = stage1(k);
+        let n = sum_in_tree(norm.terms.iter().map(|&(a, b, c)| (c, mul(field(0, a), field(0, b)), true)).collect());
+        lets.push(n);
+        let n = Expr::Local(lets.len() - 1);
+        let out = k
+            .stage2
+            .iter()
+            .enumerate()
+            .map(|(j, terms)| {
+                let nx = mul(n.clone(), field(1, j));
+                if terms.is_empty() {
+                    return nx;
+                }
+                let y = stage2_shaped(terms, k.chains[1], k.flip);
+                match norm.scale {
+                    (1, 1) => add(nx, y, false),
+                    (2, 1) => {
+                        lets.push(y);
+                        let y = Expr::Local(lets.len() - 1);
+                        add(nx, add(y.clone(), y, false), false)
+                    }
+                    c => add(nx, mul(Expr::Const(c), y), false),
+                }
+            })
+            .collect();
+        (lets, out)
     } else {
-        (stage1(k), k.stage2.iter().map(|t| stage2(t)).collect())
+        (stage1(k), k.stage2.iter().map(|t| stage2_shaped(t, k.chains[1], k.flip)).collect())
     }
+}
+
+fn sum_in_tree(terms: Vec<Term<Expr>>) -> Expr {
+    tree_sum_in::<Ir>(terms)
 }
 
 fn action(plan: &Plan, k: &ActionKernel, versor: &str, operand: &str) -> Kernel {

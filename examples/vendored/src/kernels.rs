@@ -739,21 +739,32 @@ impl<T: self::Ring> self::Apply<Vector<T>> for Rotor<T> {
     ///`self x rev(self)` in one fused kernel: every component of the full product is a [`Vector`] component.
     #[inline(always)]
     fn apply(&self, x: &Vector<T>) -> Vector<T> {
-        let t0 = ((self.scalar.mul_ref(&x.e1))
-            + &((self.e12.mul_ref(&x.e2)) + &(self.e13.mul_ref(&x.e3))));
-        let t1 = ((self.scalar.mul_ref(&x.e2))
-            - &((self.e12.mul_ref(&x.e1)) - &(self.e23.mul_ref(&x.e3))));
-        let t2 = ((self.scalar.mul_ref(&x.e3))
-            - &((self.e13.mul_ref(&x.e1)) + &(self.e23.mul_ref(&x.e2))));
-        let t3 = ((self.e12.mul_ref(&x.e3))
-            - &((self.e13.mul_ref(&x.e2)) - &(self.e23.mul_ref(&x.e1))));
+        let t0 = (self.e12.mul_ref(&x.e2))
+            - &((self::Ring::neg_ref(&self.e13)).mul_ref(&x.e3));
+        let t1 = (self.e23.mul_ref(&x.e3)) - &(self.e12.mul_ref(&x.e1));
+        let t2 = ((self::Ring::neg_ref(&self.e13)).mul_ref(&x.e1))
+            - &(self.e23.mul_ref(&x.e2));
+        let n = (((self.scalar.mul_ref(&self.scalar)) + &(self.e23.mul_ref(&self.e23)))
+            + &((self.e12.mul_ref(&self.e12)) + &(self.e13.mul_ref(&self.e13))));
         Vector {
-            e1: (((t0.mul_ref(&self.scalar)) + &(t1.mul_ref(&self.e12)))
-                + &((t2.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e23)))),
-            e2: (((t1.mul_ref(&self.scalar)) - &(t0.mul_ref(&self.e12)))
-                - &((t3.mul_ref(&self.e13)) - &(t2.mul_ref(&self.e23)))),
-            e3: (((t2.mul_ref(&self.scalar)) + &(t3.mul_ref(&self.e12)))
-                - &((t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23)))),
+            e1: {
+                let y = ((t1.mul_ref(&self.e12))
+                    - &((t0.mul_ref(&(self::Ring::neg_ref(&self.scalar))))
+                        + &(t2.mul_ref(&(self::Ring::neg_ref(&self.e13))))));
+                n.mul_ref(&x.e1) + &(y.add_ref(&y))
+            },
+            e2: {
+                let y = ((t2.mul_ref(&self.e23))
+                    - &((t1.mul_ref(&(self::Ring::neg_ref(&self.scalar))))
+                        + &(t0.mul_ref(&self.e12))));
+                n.mul_ref(&x.e2) + &(y.add_ref(&y))
+            },
+            e3: {
+                let y = ((t0.mul_ref(&(self::Ring::neg_ref(&self.e13))))
+                    - &((t2.mul_ref(&(self::Ring::neg_ref(&self.scalar))))
+                        + &(t1.mul_ref(&self.e23))));
+                n.mul_ref(&x.e3) + &(y.add_ref(&y))
+            },
         }
     }
 }
