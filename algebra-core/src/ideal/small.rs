@@ -5,10 +5,12 @@
 //! (Singular keeps small coefficients immediate the same way). Every product is checked: the
 //! step that would overflow is instead the first step of the GMP merge reduction, continued from
 //! the state before it, so the result is exact either way. A work polynomial that grows past
-//! [`super::division::LONG_WORK`] terms continues in geobuckets over GMP from where it is.
+//! [`super::division::LONG_WORK`] terms continues in geobuckets over machine words
+//! ([`super::small_bucket`]) from where it is, and those over GMP from their first overflow.
 
-use super::division::{LONG_WORK, Reduced, Reducer, Side, merge_lifted_tails, reduce_from, reduce_in_buckets};
+use super::division::{LONG_WORK, Reduced, Reducer, Side, merge_lifted_tails, reduce_from};
 use super::order::{self, Mono};
+use super::small_bucket::reduce_in_word_buckets;
 use super::{DPoly, IdealError, Meter, MonomialOrder};
 use rug::{Integer, Rational};
 use std::cell::RefCell;
@@ -47,7 +49,7 @@ pub(crate) fn small_coefs(p: &DPoly) -> Option<Vec<i64>> {
 
 /// An `i128` as a coefficient, when it fits (`i64::MIN` excluded).
 #[inline(always)]
-fn fit(v: i128) -> Option<i64> {
+pub(crate) fn fit(v: i128) -> Option<i64> {
     i64::try_from(v).ok().filter(|&x| x != i64::MIN)
 }
 
@@ -99,8 +101,29 @@ impl Work {
         Work { exps, coefs }
     }
 
+    /// The monomials and the coefficients.
+    pub(crate) fn into_parts(self) -> (Vec<u32>, Vec<i64>) {
+        (self.exps, self.coefs)
+    }
+
+    /// Number of terms.
+    pub(crate) fn len(&self) -> usize {
+        self.coefs.len()
+    }
+
+    /// Appends the term `c·m`.
+    pub(crate) fn push(&mut self, m: &Mono, c: i64) {
+        self.exps.extend_from_slice(m);
+        self.coefs.push(c);
+    }
+
+    /// Keeps the buffers for the next reductions on this thread.
+    pub(crate) fn give_back(self) {
+        give_back(self);
+    }
+
     /// The polynomial over GMP.
-    fn to_dpoly(&self, w: usize) -> DPoly {
+    pub(crate) fn to_dpoly(&self, w: usize) -> DPoly {
         DPoly { w, exps: self.exps.clone(), coefs: self.coefs.iter().map(|&c| Integer::from(c)).collect() }
     }
 
@@ -198,32 +221,50 @@ pub(crate) fn reduce(
     order: MonomialOrder,
     meter: &mut Meter,
 ) -> Result<Reduced, IdealError> {
+    reduce_switching_at(f, divisors, order, meter, LONG_WORK)
+}
+
+/// [`reduce`] with the switch from merges to geobuckets at `long` terms (`0`: buckets from the
+/// start; `usize::MAX`: merges only), in words and over GMP alike.
+pub(crate) fn reduce_switching_at(
+    f: DPoly,
+    divisors: &[Reducer<'_>],
+    order: MonomialOrder,
+    meter: &mut Meter,
+    long: usize,
+) -> Result<Reduced, IdealError> {
     let w = f.w;
-    let small = f.len() <= LONG_WORK && divisors.iter().all(|d| d.small.is_some());
+    let small = divisors.iter().all(|d| d.small.is_some());
     let coefs = if small { small_coefs(&f) } else { None };
     let Some(coefs) = coefs else {
-        return reduce_from((f, DPoly::zero(w), Rational::from(1), 0), divisors, order, meter, LONG_WORK);
+        return reduce_from((f, DPoly::zero(w), Rational::from(1), 0), divisors, order, meter, long);
     };
-    reduce_work(Work { exps: f.exps, coefs }, w, divisors, order, meter)
+    reduce_work_switching_at(Work { exps: f.exps, coefs }, w, divisors, order, meter, long)
 }
 
 /// [`reduce`] of a polynomial already in machine words (`w` words per monomial); every divisor
 /// must have its words (`small`).
 pub(crate) fn reduce_work(
-    mut p: Work,
+    p: Work,
     w: usize,
     divisors: &[Reducer<'_>],
     order: MonomialOrder,
     meter: &mut Meter,
 ) -> Result<Reduced, IdealError> {
-    if p.coefs.len() > LONG_WORK {
-        return reduce_from(
-            (p.into_dpoly(w, 0), DPoly::zero(w), Rational::from(1), 0),
-            divisors,
-            order,
-            meter,
-            LONG_WORK,
-        );
+    reduce_work_switching_at(p, w, divisors, order, meter, LONG_WORK)
+}
+
+/// [`reduce_work`] with the switch to the word geobuckets at `long` terms.
+fn reduce_work_switching_at(
+    mut p: Work,
+    w: usize,
+    divisors: &[Reducer<'_>],
+    order: MonomialOrder,
+    meter: &mut Meter,
+    long: usize,
+) -> Result<Reduced, IdealError> {
+    if p.coefs.len() > long {
+        return reduce_in_word_buckets(p, take_work(), Rational::from(1), 0, w, divisors, order, meter);
     }
     let mut buf = take_work();
     let mut rem = take_work();
@@ -253,7 +294,7 @@ pub(crate) fn reduce_work(
                 if !fits {
                     // This step overflows: the reduction continues in GMP from the state before it.
                     let state = (p.into_dpoly(w, start), rem.into_dpoly(w, 0), scale, sugar);
-                    return reduce_from(state, divisors, order, meter, LONG_WORK);
+                    return reduce_from(state, divisors, order, meter, long);
                 }
                 std::mem::swap(&mut p, &mut buf);
                 if a != 1 {
@@ -280,9 +321,9 @@ pub(crate) fn reduce_work(
                         scale /= g;
                     }
                 }
-                if p.coefs.len() > LONG_WORK {
-                    let (p, rem) = (p.into_dpoly(w, 0), rem.into_dpoly(w, 0));
-                    return reduce_in_buckets(p, rem, scale, sugar, divisors, order, meter);
+                if p.coefs.len() > long {
+                    give_back(buf);
+                    return reduce_in_word_buckets(p, rem, scale, sugar, w, divisors, order, meter);
                 }
             }
             None => {

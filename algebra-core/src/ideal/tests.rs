@@ -207,11 +207,56 @@ proptest! {
         let ds: Vec<DPoly> = gs.iter().map(|g| ring.to_dense(g).unwrap().0).collect();
         let ds = with_small(&ds);
         let reducers = small_reducers(&ds);
-        let mut meter = Meter::new(&Budget::default());
-        let division::Reduced { r, s, .. } = small::reduce(fd, &reducers, order, &mut meter).unwrap();
         let textbook = ring.divide(&f, &gs, &Budget::default()).unwrap().remainder;
-        prop_assert_eq!(ring.to_poly(&r, &(s * Rational::from(&fden))), textbook);
+        // Merges until 256 terms (never, here), word geobuckets from the start or after 3 terms.
+        for long in [division::LONG_WORK, 0, 3] {
+            let mut meter = Meter::new(&Budget::default());
+            let division::Reduced { r, s, .. } =
+                small::reduce_switching_at(fd.clone(), &reducers, order, &mut meter, long).unwrap();
+            prop_assert_eq!(ring.to_poly(&r, &(s * Rational::from(&fden))), textbook.clone(), "switch at {}", long);
+        }
     }
+}
+
+/// The word geobuckets against the textbook division over Q on random reductions whose
+/// coefficients pass 2^63 at different points, and each of the three ways of handing over to
+/// the GMP buckets taken at least once (a leading coefficient that does not fit, a scaling of
+/// the multipliers, a merge): divisors scaled by 11^j or with one coefficient near 2^62, the
+/// work from the start in buckets.
+#[test]
+fn word_geobuckets_hand_over_to_gmp_exactly() {
+    use proptest::strategy::ValueTree;
+    use proptest::test_runner::{Config, TestRunner};
+    let mut runner = TestRunner::new(Config::default());
+    let strategy = (arb_poly(14), prop::collection::vec(arb_poly(4), 1..4), 0u32..=18, 0u32..=3);
+    small_bucket::HANDED_OVER.with(|h| h.set([0; 3]));
+    let ring = PolyRing::new(["x", "y", "z"], MonomialOrder::GrevLex);
+    for _ in 0..400 {
+        let (f, gs, j, big) = strategy.new_tree(&mut runner).unwrap().current();
+        let power = |b: u32, e: u32| Rational::from(rug::ops::Pow::pow(Integer::from(b), e));
+        let near = Poly::constant(Rational::from((Integer::from(1) << 62u32) - 1));
+        let gs: Vec<Poly> = gs
+            .into_iter()
+            .filter(|g| !g.is_exact_zero())
+            .enumerate()
+            .map(|(k, g)| {
+                let g = g.scale(&power(11, j));
+                // One divisor with a coefficient near 2^62 (`big` of 3 times).
+                if k == 0 && big == 0 { g + near.clone() * Poly::var("z").pow_u32(3) } else { g }
+            })
+            .collect();
+        let (fd, fden) = ring.to_dense(&f).unwrap();
+        let ds: Vec<DPoly> = gs.iter().map(|g| ring.to_dense(g).unwrap().0).collect();
+        let ds = with_small(&ds);
+        let reducers = small_reducers(&ds);
+        let textbook = ring.divide(&f, &gs, &Budget::default()).unwrap().remainder;
+        let mut meter = Meter::new(&Budget::default());
+        let division::Reduced { r, s, .. } =
+            small::reduce_switching_at(fd.clone(), &reducers, MonomialOrder::GrevLex, &mut meter, 0).unwrap();
+        assert_eq!(ring.to_poly(&r, &(s * Rational::from(&fden))), textbook, "f = {f}, gs = {gs:?}");
+    }
+    let handed = small_bucket::HANDED_OVER.with(|h| h.get());
+    assert!(handed.iter().all(|&n| n > 0), "hand-overs by lead, scale, merge: {handed:?}");
 }
 
 /// The machine-word reduction past the words, in closed form: `6·x^40 + 6y` modulo `3x - 2`
@@ -232,9 +277,13 @@ fn machine_word_reduction_overflows_into_gmp_exactly() {
         let (fd, fden) = ring.to_dense(&f).unwrap();
         let ds = with_small(&[ring.to_dense(&g).unwrap().0]);
         let reducers = small_reducers(&ds);
-        let mut meter = Meter::new(&Budget::default());
-        let division::Reduced { r, s, .. } = small::reduce(fd, &reducers, MonomialOrder::GrevLex, &mut meter).unwrap();
-        assert_eq!(ring.to_poly(&r, &(s * Rational::from(&fden))), expected, "g = {g}");
+        // Word merges, and word geobuckets from the start (whose multipliers overflow instead).
+        for long in [division::LONG_WORK, 0] {
+            let mut meter = Meter::new(&Budget::default());
+            let division::Reduced { r, s, .. } =
+                small::reduce_switching_at(fd.clone(), &reducers, MonomialOrder::GrevLex, &mut meter, long).unwrap();
+            assert_eq!(ring.to_poly(&r, &(s * Rational::from(&fden))), expected, "g = {g}, switch at {long}");
+        }
     }
 }
 
