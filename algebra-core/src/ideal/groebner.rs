@@ -315,12 +315,25 @@ fn interreduce(mut gens: Vec<DPoly>, ring: &PolyRing, meter: &mut Meter) -> Resu
     gens.sort_by(|a, b| ring.order().cmp(a.lm(), b.lm()));
     let mut out: Vec<DPoly> = Vec::with_capacity(gens.len());
     let small: Vec<Option<Vec<i64>>> = gens.iter().map(small_coefs).collect();
+    let masks: Vec<u64> = gens.iter().map(|g| order::mask(g.lm())).collect();
     for i in 0..gens.len() {
+        // Mostly the basis is reduced already (its tails are reduced once per sugar degree): an
+        // element no other leading monomial divides a term of is kept as it is (primitive
+        // already), without a reduction that would take no step.
+        let g = &gens[i];
+        let dirty = (1..g.len()).any(|t| {
+            let (m, mask) = (g.mono(t), order::mask(g.mono(t)));
+            (0..gens.len()).any(|j| j != i && masks[j] & !mask == 0 && order::divides(gens[j].lm(), m))
+        });
+        if !dirty {
+            out.push(g.clone());
+            continue;
+        }
         let others: Vec<Reducer<'_>> = (0..gens.len())
             .filter(|&j| j != i)
             .map(|j| Reducer { small: small[j].as_deref(), ..Reducer::new(&gens[j]) })
             .collect();
-        out.push(with_tail_reduced(&gens[i], &others, ring.order(), meter)?);
+        out.push(with_tail_reduced(g, &others, ring.order(), meter)?);
     }
     Ok(out)
 }
