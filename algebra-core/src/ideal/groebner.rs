@@ -194,21 +194,28 @@ impl State<'_> {
         let order = self.ring.order();
         for i in 0..self.polys.len() {
             let since = std::mem::replace(&mut self.clean[i], self.polys.len());
-            let fresh: Vec<Reducer<'_>> =
-                (since..self.polys.len()).filter(|&j| self.active[j]).map(|j| Reducer::new(&self.polys[j])).collect();
+            // The added elements' leading masks and monomials, read in place (no list per
+            // element: most elements are not dirty).
             let g = &self.polys[i];
-            let dirty = (1..g.len()).any(|t| {
-                let (m, mask) = (g.mono(t), order::mask(g.mono(t)));
-                fresh.iter().any(|d| d.mask & !mask == 0 && order::divides(d.poly.lm(), m))
-            });
+            let (masks, polys, active) = (&self.masks, &self.polys, &self.active);
+            let dirty = (since..polys.len()).any(|j| active[j])
+                && (1..g.len()).any(|t| {
+                    let (m, mask) = (g.mono(t), order::mask(g.mono(t)));
+                    (since..polys.len()).any(|j| active[j] && masks[j] & !mask == 0 && order::divides(polys[j].lm(), m))
+                });
             if !dirty {
                 continue;
             }
             let others: Vec<Reducer<'_>> = (0..self.polys.len())
                 .filter(|&j| j != i && self.active[j])
-                .map(|j| Reducer { small: self.small[j].as_deref(), ..Reducer::new(&self.polys[j]) })
+                .map(|j| Reducer {
+                    mask: self.masks[j],
+                    poly: &self.polys[j],
+                    sugar: 0,
+                    small: self.small[j].as_deref(),
+                })
                 .collect();
-            let h = with_tail_reduced(g, &others, order, meter)?;
+            let h = with_tail_reduced(g, self.small[i].as_deref(), &others, order, meter)?;
             if self.active[i] {
                 self.terms = self.terms + h.len() - g.len();
             }
@@ -331,22 +338,31 @@ fn interreduce(mut gens: Vec<DPoly>, ring: &PolyRing, meter: &mut Meter) -> Resu
         }
         let others: Vec<Reducer<'_>> = (0..gens.len())
             .filter(|&j| j != i)
-            .map(|j| Reducer { small: small[j].as_deref(), ..Reducer::new(&gens[j]) })
+            .map(|j| Reducer { mask: masks[j], poly: &gens[j], sugar: 0, small: small[j].as_deref() })
             .collect();
-        out.push(with_tail_reduced(g, &others, ring.order(), meter)?);
+        out.push(with_tail_reduced(g, small[i].as_deref(), &others, ring.order(), meter)?);
     }
     Ok(out)
 }
 
-/// `g` with its tail fully reduced by `others` (which must not include `g`), primitive.
+/// `g` with its tail fully reduced by `others` (which must not include `g`), primitive;
+/// `words`: `g`'s coefficients as machine words, when they fit (the tail goes to the
+/// machine-word reduction without a GMP copy).
 fn with_tail_reduced(
     g: &DPoly,
+    words: Option<&[i64]>,
     others: &[Reducer<'_>],
     order: super::MonomialOrder,
     meter: &mut Meter,
 ) -> Result<DPoly, IdealError> {
     // r ≡ s·tail with s = n/d, so d·s·g ≡ n·lc·lm + d·r.
-    let super::division::Reduced { r, s, .. } = reduce(g.tail(1), others, order, meter)?;
+    let super::division::Reduced { r, s, .. } = match words {
+        Some(c) if others.iter().all(|d| d.small.is_some()) => {
+            let tail = small::Work::new(g.exps[g.w..].to_vec(), c[1..].to_vec());
+            small::reduce_work(tail, g.w, others, order, meter)?
+        }
+        _ => reduce(g.tail(1), others, order, meter)?,
+    };
     let (n, d) = s.into_numer_denom();
     let mut h = DPoly::zero(g.w);
     h.push(g.lm(), n * g.lc());
