@@ -440,7 +440,7 @@ impl GroebnerBasis {
         {
             let w = self.ring.width();
             let super::division::Reduced { r, s, .. } =
-                small::reduce_work(small::Work::new(exps, coefs), w, &reducers, order, meter)?;
+                small::reduce_work_in_place(small::Work::new(exps, coefs), w, &reducers, order, meter)?;
             return Ok(self.ring.to_poly(&r, &s));
         }
         let (f, den) = self.ring.to_dense(f)?;

@@ -208,12 +208,15 @@ proptest! {
         let ds = with_small(&ds);
         let reducers = small_reducers(&ds);
         let textbook = ring.divide(&f, &gs, &Budget::default()).unwrap().remainder;
-        // Merges until 256 terms (never, here), word geobuckets from the start or after 3 terms.
-        for long in [division::LONG_WORK, 0, 3] {
+        // Merges until 256 terms (never, here), word geobuckets from the start or after 3 terms;
+        // merge steps tried in place first (as for normal forms) or not.
+        for (long, in_place) in [(division::LONG_WORK, false), (division::LONG_WORK, true), (0, false), (3, true)] {
             let mut meter = Meter::new(&Budget::default());
             let division::Reduced { r, s, .. } =
-                small::reduce_switching_at(fd.clone(), &reducers, order, &mut meter, long).unwrap();
-            prop_assert_eq!(ring.to_poly(&r, &(s * Rational::from(&fden))), textbook.clone(), "switch at {}", long);
+                small::reduce_switching_at(fd.clone(), &reducers, order, &mut meter, long, in_place).unwrap();
+            prop_assert_eq!(
+                ring.to_poly(&r, &(s * Rational::from(&fden))), textbook.clone(), "switch at {}, in place {}", long, in_place
+            );
         }
     }
 }
@@ -252,11 +255,52 @@ fn word_geobuckets_hand_over_to_gmp_exactly() {
         let textbook = ring.divide(&f, &gs, &Budget::default()).unwrap().remainder;
         let mut meter = Meter::new(&Budget::default());
         let division::Reduced { r, s, .. } =
-            small::reduce_switching_at(fd.clone(), &reducers, MonomialOrder::GrevLex, &mut meter, 0).unwrap();
+            small::reduce_switching_at(fd.clone(), &reducers, MonomialOrder::GrevLex, &mut meter, 0, false).unwrap();
         assert_eq!(ring.to_poly(&r, &(s * Rational::from(&fden))), textbook, "f = {f}, gs = {gs:?}");
     }
     let handed = small_bucket::HANDED_OVER.with(|h| h.get());
     assert!(handed.iter().all(|&n| n > 0), "hand-overs by lead, scale, merge: {handed:?}");
+}
+
+/// Steps done where the work stands (normal forms), against the textbook division over Q on
+/// random reductions in three variables (many monomials in common, so many steps only cancel or
+/// update terms the work has), and both of the new paths taken: a step in place, and a merge
+/// after steps in place that dropped the terms they left with the coefficient 0.
+#[test]
+fn steps_in_place_match_textbook_division() {
+    use proptest::strategy::ValueTree;
+    use proptest::test_runner::{Config, TestRunner};
+    let mut runner = TestRunner::new(Config::default());
+    let strategy = (arb_poly(20), prop::collection::vec(arb_poly(4), 1..4), 0u32..=2);
+    small::IN_PLACE.with(|c| c.set([0; 2]));
+    let ring = PolyRing::new(["x", "y", "z"], MonomialOrder::GrevLex);
+    for _ in 0..300 {
+        let (h, gs, k) = strategy.new_tree(&mut runner).unwrap().current();
+        let gs: Vec<Poly> = gs.into_iter().filter(|g| !g.is_exact_zero()).collect();
+        // Mostly multiples of the divisors (as a claim that holds), plus a little of `h`.
+        let mut f = h.clone() * Poly::from_i64(i64::from(k));
+        for (n, g) in gs.iter().enumerate() {
+            f = f + g.clone() * (h.clone() + Poly::var(["x", "y", "z"][n % 3]));
+        }
+        let (fd, fden) = ring.to_dense(&f).unwrap();
+        let ds: Vec<DPoly> = gs.iter().map(|g| ring.to_dense(g).unwrap().0).collect();
+        let ds = with_small(&ds);
+        let reducers = small_reducers(&ds);
+        let textbook = ring.divide(&f, &gs, &Budget::default()).unwrap().remainder;
+        let mut meter = Meter::new(&Budget::default());
+        let division::Reduced { r, s, .. } = small::reduce_switching_at(
+            fd.clone(),
+            &reducers,
+            MonomialOrder::GrevLex,
+            &mut meter,
+            division::LONG_WORK,
+            true,
+        )
+        .unwrap();
+        assert_eq!(ring.to_poly(&r, &(s * Rational::from(&fden))), textbook, "f = {f}, gs = {gs:?}");
+    }
+    let taken = small::IN_PLACE.with(|c| c.get());
+    assert!(taken.iter().all(|&n| n > 0), "steps in place, merges after them: {taken:?}");
 }
 
 /// The machine-word reduction past the words, in closed form: `6·x^40 + 6y` modulo `3x - 2`
@@ -277,11 +321,13 @@ fn machine_word_reduction_overflows_into_gmp_exactly() {
         let (fd, fden) = ring.to_dense(&f).unwrap();
         let ds = with_small(&[ring.to_dense(&g).unwrap().0]);
         let reducers = small_reducers(&ds);
-        // Word merges, and word geobuckets from the start (whose multipliers overflow instead).
-        for long in [division::LONG_WORK, 0] {
+        // Word merges (steps in place or not), and word geobuckets from the start (whose
+        // multipliers overflow instead).
+        for (long, in_place) in [(division::LONG_WORK, false), (division::LONG_WORK, true), (0, false)] {
             let mut meter = Meter::new(&Budget::default());
             let division::Reduced { r, s, .. } =
-                small::reduce_switching_at(fd.clone(), &reducers, MonomialOrder::GrevLex, &mut meter, long).unwrap();
+                small::reduce_switching_at(fd.clone(), &reducers, MonomialOrder::GrevLex, &mut meter, long, in_place)
+                    .unwrap();
             assert_eq!(ring.to_poly(&r, &(s * Rational::from(&fden))), expected, "g = {g}, switch at {long}");
         }
     }
