@@ -229,8 +229,8 @@ proptest! {
 #[test]
 fn word_geobuckets_hand_over_to_gmp_exactly() {
     use proptest::strategy::ValueTree;
-    use proptest::test_runner::{Config, TestRunner};
-    let mut runner = TestRunner::new(Config::default());
+    use proptest::test_runner::TestRunner;
+    let mut runner = TestRunner::deterministic();
     let strategy = (arb_poly(14), prop::collection::vec(arb_poly(4), 1..4), 0u32..=18, 0u32..=3);
     small_bucket::HANDED_OVER.with(|h| h.set([0; 3]));
     let ring = PolyRing::new(["x", "y", "z"], MonomialOrder::GrevLex);
@@ -258,6 +258,19 @@ fn word_geobuckets_hand_over_to_gmp_exactly() {
             small::reduce_switching_at(fd.clone(), &reducers, MonomialOrder::GrevLex, &mut meter, 0, false).unwrap();
         assert_eq!(ring.to_poly(&r, &(s * Rational::from(&fden))), textbook, "f = {f}, gs = {gs:?}");
     }
+    // And one whose multipliers overflow for sure: 6·x^40 + 6y modulo 3x - 2 scales the work by
+    // 3 at every step (3^40 > 2^63).
+    let (x, y) = (Poly::var("x"), Poly::var("y"));
+    let f = Poly::from_i64(6) * x.pow_u32(40) + Poly::from_i64(6) * y.clone();
+    let g = Poly::from_i64(3) * x.clone() - Poly::from_i64(2);
+    let (fd, fden) = ring.to_dense(&f).unwrap();
+    let ds = with_small(&[ring.to_dense(&g).unwrap().0]);
+    let reducers = small_reducers(&ds);
+    let mut meter = Meter::new(&Budget::default());
+    let division::Reduced { r, s, .. } =
+        small::reduce_switching_at(fd, &reducers, MonomialOrder::GrevLex, &mut meter, 0, false).unwrap();
+    let textbook = ring.divide(&f, &[g], &Budget::default()).unwrap().remainder;
+    assert_eq!(ring.to_poly(&r, &(s * Rational::from(&fden))), textbook);
     let handed = small_bucket::HANDED_OVER.with(|h| h.get());
     assert!(handed.iter().all(|&n| n > 0), "hand-overs by lead, scale, merge: {handed:?}");
 }
@@ -269,8 +282,8 @@ fn word_geobuckets_hand_over_to_gmp_exactly() {
 #[test]
 fn steps_in_place_match_textbook_division() {
     use proptest::strategy::ValueTree;
-    use proptest::test_runner::{Config, TestRunner};
-    let mut runner = TestRunner::new(Config::default());
+    use proptest::test_runner::TestRunner;
+    let mut runner = TestRunner::deterministic();
     let strategy = (arb_poly(20), prop::collection::vec(arb_poly(4), 1..4), 0u32..=2);
     small::IN_PLACE.with(|c| c.set([0; 2]));
     let ring = PolyRing::new(["x", "y", "z"], MonomialOrder::GrevLex);
