@@ -365,10 +365,18 @@ fn with_tail_reduced(
     };
     let (n, d) = s.into_numer_denom();
     let mut h = DPoly::zero(g.w);
+    h.exps.reserve((r.len() + 1) * g.w);
+    h.coefs.reserve(r.len() + 1);
     h.push(g.lm(), n * g.lc());
-    for k in 0..r.len() {
-        h.push(r.mono(k), Integer::from(&d * &r.coefs[k]));
+    h.exps.extend_from_slice(&r.exps);
+    // The remainder's integers are moved, not copied (multiplied when `d != 1`).
+    let mut rest = r.coefs;
+    if d != 1 {
+        for c in &mut rest {
+            *c *= &d;
+        }
     }
+    h.coefs.append(&mut rest);
     h.make_primitive();
     Ok(h)
 }
