@@ -156,7 +156,8 @@ fn long_reductions_shed_content_and_track_the_scale_exactly() {
 
 /// The term budget stops a reduction in either representation with the documented error: the
 /// work of `6·x^40 + 6y` modulo `3x - 2` holds two terms and its remainder grows to two, so a
-/// budget of one term is exceeded at once, whether the work is merged or in geobuckets.
+/// budget of one term is exceeded at once, whether the work is merged or in geobuckets, over
+/// GMP or in machine words.
 #[test]
 fn term_budget_stops_merged_and_bucketed_reductions() {
     let (x, y) = (Poly::var("x"), Poly::var("y"));
@@ -171,6 +172,16 @@ fn term_budget_stops_merged_and_bucketed_reductions() {
         match division::reduce_switching_at(fd.clone(), &reducers, MonomialOrder::GrevLex, &mut meter, long) {
             Err(IdealError::Undecided { limit: Limit::Terms, .. }) => {}
             other => panic!("switch at {long}: expected the term limit, got {:?}", other.map(|r| r.r)),
+        }
+    }
+    // The same in machine words: merges (steps in place or not) and word geobuckets.
+    let ds = with_small(std::slice::from_ref(&gd));
+    let reducers = small_reducers(&ds);
+    for (long, in_place) in [(0, false), (usize::MAX, false), (usize::MAX, true)] {
+        let mut meter = Meter::new(&tiny);
+        match small::reduce_switching_at(fd.clone(), &reducers, MonomialOrder::GrevLex, &mut meter, long, in_place) {
+            Err(IdealError::Undecided { limit: Limit::Terms, .. }) => {}
+            other => panic!("words, switch at {long}: expected the term limit, got {:?}", other.map(|r| r.r)),
         }
     }
 }
