@@ -431,3 +431,58 @@ fn variable_lookup_by_table_and_by_binary_search_agree() {
         assert_eq!(ring.to_dense(stranger).unwrap_err(), IdealError::UnknownVariable(name));
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(200))]
+
+    /// The chain criterion among new pairs, candidates sorted by lcm degree, against the same
+    /// filter after a sort by the monomial order (the engine's before) and against its
+    /// definition: a candidate is kept exactly when no other candidate's lcm properly divides its
+    /// lcm and no candidate with the same lcm comes first (coprime first, then least `i`).
+    #[test]
+    fn chain_criterion_by_degree_keeps_the_same_pairs(
+        ms in prop::collection::vec(([0u32..3, 0u32..3, 0u32..3], any::<bool>()), 0..24)
+    ) {
+        let w = 4;
+        let mut lcms = Vec::new();
+        let mut cands: Vec<groebner::Cand> = Vec::new();
+        for (i, (e, coprime)) in ms.iter().enumerate() {
+            let at = lcms.len();
+            lcms.push(e.iter().sum());
+            lcms.extend_from_slice(e);
+            cands.push((i, at, *coprime, order::mask(&lcms[at..at + w])));
+        }
+        let lcm_of = |at: usize| &lcms[at..at + w];
+        let mut fast = cands.clone();
+        let kept = groebner::chain_among_new(&mut fast, &lcms, w);
+        let mut fast: Vec<usize> = fast[..kept].iter().map(|c| c.0).collect();
+        fast.sort_unstable();
+        // The engine's before: sorted by the monomial order, coprime first, then the filter.
+        let order = MonomialOrder::GrevLex;
+        let mut old = cands.clone();
+        old.sort_by(|a, b| order.cmp(lcm_of(a.1), lcm_of(b.1)).then_with(|| b.2.cmp(&a.2)));
+        let mut kept_old: Vec<groebner::Cand> = Vec::new();
+        for c in old {
+            if !kept_old.iter().any(|d| order::divides(lcm_of(d.1), lcm_of(c.1))) {
+                kept_old.push(c);
+            }
+        }
+        let mut old: Vec<usize> = kept_old.iter().map(|c| c.0).collect();
+        old.sort_unstable();
+        prop_assert_eq!(&fast, &old);
+        // The definition.
+        let first = |c: &groebner::Cand, d: &groebner::Cand| (!d.2, d.0) < (!c.2, c.0);
+        let mut def: Vec<usize> = cands
+            .iter()
+            .filter(|c| {
+                !cands.iter().any(|d| {
+                    let (lc, ld) = (lcm_of(c.1), lcm_of(d.1));
+                    (ld != lc && order::divides(ld, lc)) || (ld == lc && first(c, d))
+                })
+            })
+            .map(|c| c.0)
+            .collect();
+        def.sort_unstable();
+        prop_assert_eq!(fast, def);
+    }
+}
