@@ -405,25 +405,68 @@ pub(crate) fn reduce_from(
 /// during the reduction.
 pub(crate) fn reduce_in_buckets(
     p: DPoly,
-    mut rem: DPoly,
+    rem: DPoly,
     scale: Rational,
-    mut sugar: u32,
+    sugar: u32,
     divisors: &[Reducer<'_>],
     order: MonomialOrder,
     meter: &mut Meter,
 ) -> Result<Reduced, IdealError> {
-    let w = p.w;
-    let mut work = GeoBucket::new(w, order);
+    let mut work = GeoBucket::new(p.w, order);
     work.add(p, Integer::from(1));
-    let mut lambda = Rational::from(scale.recip_ref());
-    // Remainder terms from `segs[k].0` on were taken under `λ = segs[k].1`.
-    let mut segs: Vec<(usize, Rational)> = vec![(0, lambda.clone())];
-    let mut changed = false;
+    let lambda = Rational::from(scale.recip_ref());
+    let segs = vec![(0, lambda.clone())];
+    let run = BucketRun { rem, lambda, segs, changed: false, sugar, steps: 0 };
+    continue_in_buckets(work, run, divisors, meter)
+}
+
+/// The state of a bucket reduction besides its work: `f ≡ Σ_k λ_k·(remainder terms of segment
+/// k) + λ·work`, the remainder's terms from `segs[k].0` on taken under `λ_k = segs[k].1`
+/// (`changed`: `λ` moved since the last segment began), the sugar so far and the steps taken
+/// (the content is shed every 16th). Shared by the buckets over GMP and over machine words
+/// ([`super::small_bucket`]), which hands its state over here when a step would overflow.
+pub(crate) struct BucketRun<R> {
+    pub(crate) rem: R,
+    pub(crate) lambda: Rational,
+    pub(crate) segs: Vec<(usize, Rational)>,
+    pub(crate) changed: bool,
+    pub(crate) sugar: u32,
+    pub(crate) steps: u32,
+}
+
+impl<R> BucketRun<R> {
+    /// `r = D·Σ λ_k·(terms of segment k)`, `D` the lcm of the denominators of the `λ_k`, from
+    /// the remainder's coefficients as integers: `r ≡ D·f`.
+    pub(crate) fn finish(&self, mut rem: DPoly) -> Reduced {
+        let mut den = Integer::from(1);
+        for (_, l) in &self.segs {
+            den.lcm_mut(l.denom());
+        }
+        for (k, (from, l)) in self.segs.iter().enumerate() {
+            let to = self.segs.get(k + 1).map_or(rem.len(), |s| s.0);
+            let factor = Integer::from(&den / l.denom()) * l.numer();
+            if factor != 1 {
+                for c in &mut rem.coefs[*from..to] {
+                    *c *= &factor;
+                }
+            }
+        }
+        Reduced { r: rem, s: Rational::from(den), sugar: self.sugar }
+    }
+}
+
+/// [`reduce_in_buckets`] from its state: the work in `work`, the rest in `run`.
+pub(crate) fn continue_in_buckets(
+    mut work: GeoBucket,
+    mut run: BucketRun<DPoly>,
+    divisors: &[Reducer<'_>],
+    meter: &mut Meter,
+) -> Result<Reduced, IdealError> {
+    let w = run.rem.w;
     let (mut mono, mut q) = (Vec::with_capacity(w), Vec::with_capacity(w));
-    let mut steps = 0u32;
     while let Some(c) = work.pop_lead(&mut mono) {
         // The work held, its leading term included (as the merges count it), and the remainder.
-        meter.check(work.terms() + 1 + rem.len())?;
+        meter.check(work.terms() + 1 + run.rem.len())?;
         match find_divisor(divisors, &mono) {
             Some((g, g_sugar)) => {
                 let d = Integer::from(c.gcd_ref(g.lc()));
@@ -434,47 +477,34 @@ pub(crate) fn reduce_in_buckets(
                 }
                 q.clear();
                 q.extend(mono.iter().zip(g.lm()).map(|(x, y)| x - y));
-                sugar = sugar.max(q[0] + g_sugar);
+                run.sugar = run.sugar.max(q[0] + g_sugar);
                 if a != 1 {
                     work.scale(&a);
-                    lambda /= &a;
-                    changed = true;
+                    run.lambda /= &a;
+                    run.changed = true;
                 }
                 work.add_shifted(&q, g, 1, -b);
                 work.give_back(c);
-                steps += 1;
-                if steps.is_multiple_of(16) {
+                run.steps += 1;
+                if run.steps.is_multiple_of(16) {
                     let content = work.remove_content();
                     if content != 1 {
-                        lambda *= content;
-                        changed = true;
+                        run.lambda *= content;
+                        run.changed = true;
                     }
                 }
             }
             None => {
-                if changed {
-                    segs.push((rem.len(), lambda.clone()));
-                    changed = false;
+                if run.changed {
+                    run.segs.push((run.rem.len(), run.lambda.clone()));
+                    run.changed = false;
                 }
-                rem.push(&mono, c);
+                run.rem.push(&mono, c);
             }
         }
     }
-    // r = D·Σ λ_k·(terms of segment k), D the lcm of the denominators of the λ_k: r ≡ D·f.
-    let mut den = Integer::from(1);
-    for (_, l) in &segs {
-        den.lcm_mut(l.denom());
-    }
-    for (k, (from, l)) in segs.iter().enumerate() {
-        let to = segs.get(k + 1).map_or(rem.len(), |s| s.0);
-        let factor = Integer::from(&den / l.denom()) * l.numer();
-        if factor != 1 {
-            for c in &mut rem.coefs[*from..to] {
-                *c *= &factor;
-            }
-        }
-    }
-    Ok(Reduced { r: rem, s: Rational::from(den), sugar })
+    let rem = std::mem::replace(&mut run.rem, DPoly::zero(w));
+    Ok(run.finish(rem))
 }
 
 /// A polynomial with rational coefficients for the textbook division (quotients are needed

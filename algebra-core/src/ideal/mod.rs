@@ -27,6 +27,7 @@ mod groebner;
 mod hypotheses;
 mod order;
 mod small;
+mod small_bucket;
 
 pub use division::Division;
 pub use groebner::GroebnerBasis;

@@ -5,10 +5,12 @@
 //! (Singular keeps small coefficients immediate the same way). Every product is checked: the
 //! step that would overflow is instead the first step of the GMP merge reduction, continued from
 //! the state before it, so the result is exact either way. A work polynomial that grows past
-//! [`super::division::LONG_WORK`] terms continues in geobuckets over GMP from where it is.
+//! [`super::division::LONG_WORK`] terms continues in geobuckets over machine words
+//! ([`super::small_bucket`]) from where it is, and those over GMP from their first overflow.
 
-use super::division::{LONG_WORK, Reduced, Reducer, Side, merge_lifted_tails, reduce_from, reduce_in_buckets};
+use super::division::{LONG_WORK, Reduced, Reducer, Side, merge_lifted_tails, reduce_from};
 use super::order::{self, Mono};
+use super::small_bucket::reduce_in_word_buckets;
 use super::{DPoly, IdealError, Meter, MonomialOrder};
 use rug::{Integer, Rational};
 use std::cell::RefCell;
@@ -47,7 +49,7 @@ pub(crate) fn small_coefs(p: &DPoly) -> Option<Vec<i64>> {
 
 /// An `i128` as a coefficient, when it fits (`i64::MIN` excluded).
 #[inline(always)]
-fn fit(v: i128) -> Option<i64> {
+pub(crate) fn fit(v: i128) -> Option<i64> {
     i64::try_from(v).ok().filter(|&x| x != i64::MIN)
 }
 
@@ -99,18 +101,58 @@ impl Work {
         Work { exps, coefs }
     }
 
+    /// The monomials and the coefficients.
+    pub(crate) fn into_parts(self) -> (Vec<u32>, Vec<i64>) {
+        (self.exps, self.coefs)
+    }
+
+    /// Number of terms.
+    pub(crate) fn len(&self) -> usize {
+        self.coefs.len()
+    }
+
+    /// Appends the term `c·m`.
+    pub(crate) fn push(&mut self, m: &Mono, c: i64) {
+        self.exps.extend_from_slice(m);
+        self.coefs.push(c);
+    }
+
+    /// Keeps the buffers for the next reductions on this thread.
+    pub(crate) fn give_back(self) {
+        give_back(self);
+    }
+
     /// The polynomial over GMP.
-    fn to_dpoly(&self, w: usize) -> DPoly {
+    pub(crate) fn to_dpoly(&self, w: usize) -> DPoly {
         DPoly { w, exps: self.exps.clone(), coefs: self.coefs.iter().map(|&c| Integer::from(c)).collect() }
     }
 
-    /// The terms from `from` on, over GMP.
-    fn into_dpoly(self, w: usize, from: usize) -> DPoly {
-        DPoly {
-            w,
-            exps: self.exps[from * w..].to_vec(),
-            coefs: self.coefs[from..].iter().map(|&c| Integer::from(c)).collect(),
+    /// The terms from `from` on with a non-zero coefficient, over GMP.
+    fn into_dpoly(mut self, w: usize, from: usize) -> DPoly {
+        self.compact(w, from);
+        DPoly { w, exps: self.exps, coefs: self.coefs.iter().map(|&c| Integer::from(c)).collect() }
+    }
+
+    /// Keeps the terms from `from` on with a non-zero coefficient (those left with 0 by steps
+    /// done in place).
+    fn compact(&mut self, w: usize, from: usize) {
+        self.squeeze(w, from, 0);
+    }
+
+    /// Keeps the terms before `to` and the non-zero ones from `from` on, after them.
+    fn squeeze(&mut self, w: usize, from: usize, to: usize) {
+        let mut k = to;
+        for i in from..self.coefs.len() {
+            if self.coefs[i] != 0 {
+                if k != i {
+                    self.coefs[k] = self.coefs[i];
+                    self.exps.copy_within(i * w..(i + 1) * w, k * w);
+                }
+                k += 1;
+            }
         }
+        self.coefs.truncate(k);
+        self.exps.truncate(k * w);
     }
 }
 
@@ -189,6 +231,200 @@ fn combine(
     Some(())
 }
 
+/// [`combine`] resuming a failed [`in_place`] scan: the terms `p[from..i0]` are copied as one
+/// block, scaled by `a`, the matched ones (`at`, for `g[1..j0]`) updated, and the merge goes on
+/// from `p[i0]` and `g[j0]`, whose lifted monomial is in `lifted`. Terms with the coefficient 0
+/// (left by this step or, `dead > 0`, by earlier steps in place) are dropped.
+#[allow(clippy::too_many_arguments)]
+fn combine_resume(
+    p: &Work,
+    from: usize,
+    (a, b): (i64, i64),
+    (q, g, gc): (&Mono, &DPoly, &[i64]),
+    (at, i0, j0): (&[usize], usize, usize),
+    dead: usize,
+    w: usize,
+    order: MonomialOrder,
+    out: &mut Work,
+    lifted: &mut Vec<u32>,
+) -> Option<()> {
+    out.exps.clear();
+    out.coefs.clear();
+    let n = p.coefs.len();
+    out.exps.reserve((n - from + g.len()) * w);
+    out.coefs.reserve(n - from + g.len());
+    let (a, b) = (i128::from(a), i128::from(b));
+    out.exps.extend_from_slice(&p.exps[from * w..i0 * w]);
+    if a == 1 {
+        out.coefs.extend_from_slice(&p.coefs[from..i0]);
+    } else {
+        for &c in &p.coefs[from..i0] {
+            out.coefs.push(fit(a * i128::from(c))?);
+        }
+    }
+    let mut zeros = dead > 0;
+    for (k, &i) in at.iter().enumerate() {
+        let c = &mut out.coefs[i - from];
+        *c = fit(i128::from(*c) - b * i128::from(gc[k + 1]))?;
+        zeros |= *c == 0;
+    }
+    if zeros {
+        out.compact(w, 0);
+    }
+    let (mut i, mut j) = (i0, j0);
+    // `p`'s terms from `run` to `i` are in `out.coefs` but not yet in `out.exps`: a run of
+    // them is copied with one `memcpy` (one per term was an eighth of the docs' example).
+    let mut run = i0;
+    while i < n && j < g.len() {
+        match order.cmp(&p.exps[i * w..(i + 1) * w], lifted) {
+            Ordering::Greater => {
+                if p.coefs[i] == 0 {
+                    // A term left with 0 by a step done in place: dropped.
+                    out.exps.extend_from_slice(&p.exps[run * w..i * w]);
+                    run = i + 1;
+                } else {
+                    out.coefs.push(fit(a * i128::from(p.coefs[i]))?);
+                }
+                i += 1;
+                continue;
+            }
+            Ordering::Less => {
+                out.exps.extend_from_slice(&p.exps[run * w..i * w]);
+                run = i;
+                out.coefs.push(fit(-b * i128::from(gc[j]))?);
+                out.exps.extend_from_slice(lifted);
+            }
+            Ordering::Equal => {
+                out.exps.extend_from_slice(&p.exps[run * w..i * w]);
+                // |a·c|, |b·g| < 2^126: the difference fits an i128.
+                let v = fit(a * i128::from(p.coefs[i]) - b * i128::from(gc[j]))?;
+                if v != 0 {
+                    out.coefs.push(v);
+                    out.exps.extend_from_slice(lifted);
+                }
+                i += 1;
+                run = i;
+            }
+        }
+        j += 1;
+        if j < g.len() {
+            order::mul_into(lifted, q, g.mono(j));
+        }
+    }
+    out.exps.extend_from_slice(&p.exps[run * w..i * w]);
+    while j < g.len() {
+        out.coefs.push(fit(-b * i128::from(gc[j]))?);
+        out.exps.extend_from_slice(lifted);
+        j += 1;
+        if j < g.len() {
+            order::mul_into(lifted, q, g.mono(j));
+        }
+    }
+    let tail = out.coefs.len();
+    if a == 1 {
+        out.coefs.extend_from_slice(&p.coefs[i..n]);
+    } else {
+        for &c in &p.coefs[i..n] {
+            out.coefs.push(fit(a * i128::from(c))?);
+        }
+    }
+    out.exps.extend_from_slice(&p.exps[i * w..n * w]);
+    if dead > 0 {
+        out.squeeze(w, tail, tail);
+    }
+    Some(())
+}
+
+#[cfg(test)]
+thread_local! {
+    /// Steps done in place, and merges that dropped terms left with 0 by them (tests check that
+    /// both paths are taken).
+    pub(crate) static IN_PLACE: std::cell::Cell<[u32; 2]> = const { std::cell::Cell::new([0; 2]) };
+}
+
+#[cfg(test)]
+fn count_in_place(k: usize) {
+    IN_PLACE.with(|c| {
+        let mut v = c.get();
+        v[k] += 1;
+        c.set(v);
+    });
+}
+
+/// How a step of the word reduction went: done where the work stands, or the first monomial
+/// `q·g[j]` that is not a term of the work (it goes before `p[i]`), or a coefficient that
+/// would overflow.
+enum Scan {
+    /// Not tried: a plain merge ([`combine`]).
+    Merge,
+    Done,
+    Missing(usize, usize),
+    Overflow,
+}
+
+/// The step `p := a·p - b·q·g[1..]` (the leading term `p[start]` cancelled) done where `p`
+/// stands, when every monomial of `q·g[1..]` is already a term of `p[start + 1..]` (in
+/// reductions to zero, mostly): the matching coefficients updated, the others scaled by `a`,
+/// no exponent vector copied (a merge copies the whole work at every step; on the Study quadric
+/// with three poses the claim's 192 terms cancel four at a time). A coefficient that becomes 0
+/// stays as a term with the coefficient 0 (`dead` counts them). Otherwise `p` is untouched and
+/// the scan so far (`at`: the positions of the monomials of `q·g[1..j]`, `lifted`: `q·g[j]`)
+/// is where [`combine`] resumes.
+#[allow(clippy::too_many_arguments)]
+fn in_place(
+    p: &mut Work,
+    start: usize,
+    (a, b): (i64, i64),
+    (q, g, gc): (&Mono, &DPoly, &[i64]),
+    w: usize,
+    order: MonomialOrder,
+    (at, lifted): (&mut Vec<usize>, &mut Vec<u32>),
+    dead: &mut usize,
+) -> Scan {
+    let n = p.coefs.len();
+    at.clear();
+    let mut i = start + 1;
+    for (j, &gj) in gc.iter().enumerate().take(g.len()).skip(1) {
+        order::mul_into(lifted, q, g.mono(j));
+        loop {
+            if i >= n {
+                return Scan::Missing(i, j);
+            }
+            match order.cmp(&p.exps[i * w..(i + 1) * w], lifted) {
+                Ordering::Greater => i += 1,
+                Ordering::Equal => break,
+                Ordering::Less => return Scan::Missing(i, j),
+            }
+        }
+        // a·c - b·g_j: |a·c|, |b·g_j| < 2^126, the difference fits an i128.
+        if fit(i128::from(a) * i128::from(p.coefs[i]) - i128::from(b) * i128::from(gj)).is_none() {
+            return Scan::Overflow;
+        }
+        at.push(i);
+        i += 1;
+    }
+    if a != 1 {
+        if p.coefs[start + 1..].iter().any(|&c| fit(i128::from(a) * i128::from(c)).is_none()) {
+            return Scan::Overflow;
+        }
+        for c in &mut p.coefs[start + 1..] {
+            *c *= a;
+        }
+    }
+    for (j, &i) in at.iter().enumerate() {
+        let old = p.coefs[i];
+        // Fits: checked above (`old` is a·c now).
+        let new = (i128::from(old) - i128::from(b) * i128::from(gc[j + 1])) as i64;
+        p.coefs[i] = new;
+        if old == 0 && new != 0 {
+            *dead -= 1;
+        } else if old != 0 && new == 0 {
+            *dead += 1;
+        }
+    }
+    Scan::Done
+}
+
 /// [`super::division::reduce`]: in machine words when `f` and every divisor have small
 /// coefficients (`divisors[k].small`), from the first overflow on (or from the start, when
 /// they do not) over GMP.
@@ -198,41 +434,91 @@ pub(crate) fn reduce(
     order: MonomialOrder,
     meter: &mut Meter,
 ) -> Result<Reduced, IdealError> {
+    reduce_switching_at(f, divisors, order, meter, LONG_WORK, false)
+}
+
+/// [`reduce`] with the switch from merges to geobuckets at `long` terms (`0`: buckets from the
+/// start; `usize::MAX`: merges only), in words and over GMP alike; `in_place`: the word merges
+/// first try the step where the work stands ([`in_place`], as for normal forms).
+pub(crate) fn reduce_switching_at(
+    f: DPoly,
+    divisors: &[Reducer<'_>],
+    order: MonomialOrder,
+    meter: &mut Meter,
+    long: usize,
+    in_place: bool,
+) -> Result<Reduced, IdealError> {
     let w = f.w;
-    let small = f.len() <= LONG_WORK && divisors.iter().all(|d| d.small.is_some());
+    let small = divisors.iter().all(|d| d.small.is_some());
     let coefs = if small { small_coefs(&f) } else { None };
     let Some(coefs) = coefs else {
-        return reduce_from((f, DPoly::zero(w), Rational::from(1), 0), divisors, order, meter, LONG_WORK);
+        return reduce_from((f, DPoly::zero(w), Rational::from(1), 0), divisors, order, meter, long);
     };
-    reduce_work(Work { exps: f.exps, coefs }, w, divisors, order, meter)
+    let p = Work { exps: f.exps, coefs };
+    if in_place {
+        reduce_work_switching_at::<true>(p, w, divisors, order, meter, long)
+    } else {
+        reduce_work_switching_at::<false>(p, w, divisors, order, meter, long)
+    }
 }
 
 /// [`reduce`] of a polynomial already in machine words (`w` words per monomial); every divisor
 /// must have its words (`small`).
 pub(crate) fn reduce_work(
-    mut p: Work,
+    p: Work,
     w: usize,
     divisors: &[Reducer<'_>],
     order: MonomialOrder,
     meter: &mut Meter,
 ) -> Result<Reduced, IdealError> {
-    if p.coefs.len() > LONG_WORK {
-        return reduce_from(
-            (p.into_dpoly(w, 0), DPoly::zero(w), Rational::from(1), 0),
-            divisors,
-            order,
-            meter,
-            LONG_WORK,
-        );
+    reduce_work_switching_at::<false>(p, w, divisors, order, meter, LONG_WORK)
+}
+
+/// [`reduce_work`] for a normal form: each step is first tried where the work stands
+/// ([`in_place`]). A claim that holds reduces to zero, and its steps mostly cancel terms the work
+/// has (the 3-pose Study quadric's claim: 192 terms, four cancelled per step); in the
+/// S-polynomials' reductions the scan failed too often to pay (Jüttler's Props. 1/2/4 6-14%
+/// slower, docs/performance.md).
+pub(crate) fn reduce_work_in_place(
+    p: Work,
+    w: usize,
+    divisors: &[Reducer<'_>],
+    order: MonomialOrder,
+    meter: &mut Meter,
+) -> Result<Reduced, IdealError> {
+    reduce_work_switching_at::<true>(p, w, divisors, order, meter, LONG_WORK)
+}
+
+/// [`reduce_work`] with the switch to the word geobuckets at `long` terms, steps tried in place
+/// first when `IN_PLACE`.
+/// (A const parameter: each variant is compiled on its own, and the merges of the
+/// S-polynomials' reductions run the code they ran before the steps in place were added.)
+fn reduce_work_switching_at<const IN_PLACE: bool>(
+    mut p: Work,
+    w: usize,
+    divisors: &[Reducer<'_>],
+    order: MonomialOrder,
+    meter: &mut Meter,
+    long: usize,
+) -> Result<Reduced, IdealError> {
+    if p.coefs.len() > long {
+        return reduce_in_word_buckets(p, take_work(), Rational::from(1), 0, w, divisors, order, meter);
     }
     let mut buf = take_work();
     let mut rem = take_work();
-    // rem + p[start..] ≡ scale·f.
+    // rem + p[start..] ≡ scale·f; `dead` of the terms of p[start..] have the coefficient 0
+    // (left by steps done in place, below).
     let mut scale = Rational::from(1);
-    let (mut start, mut steps, mut sugar) = (0, 0u32, 0);
+    let (mut start, mut dead, mut steps, mut sugar) = (0, 0, 0u32, 0);
     let (mut q, mut lifted): (Vec<u32>, Vec<u32>) = (Vec::with_capacity(w), Vec::with_capacity(w));
+    let mut at: Vec<usize> = Vec::new();
     while start < p.coefs.len() {
-        meter.check(p.coefs.len() - start + rem.coefs.len())?;
+        if p.coefs[start] == 0 {
+            start += 1;
+            dead -= 1;
+            continue;
+        }
+        meter.check(p.coefs.len() - start - dead + rem.coefs.len())?;
         let m = &p.exps[start * w..(start + 1) * w];
         let mask = order::mask(m);
         match divisors.iter().find(|d| d.mask & !mask == 0 && order::divides(d.poly.lm(), m)) {
@@ -248,25 +534,70 @@ pub(crate) fn reduce_work(
                 q.clear();
                 q.extend(m.iter().zip(g.lm()).map(|(x, y)| x - y));
                 sugar = sugar.max(q[0] + d.sugar);
-                let fits = combine(&p, start + 1, (a, b), (&q, g, gc), w, order, &mut buf, &mut lifted).is_some()
-                    && rem.coefs.iter().all(|&c| fit(i128::from(c) * i128::from(a)).is_some());
+                let rem_fits = a == 1 || rem.coefs.iter().all(|&c| fit(i128::from(c) * i128::from(a)).is_some());
+                let scan = if !rem_fits {
+                    Scan::Overflow
+                } else if IN_PLACE {
+                    in_place(&mut p, start, (a, b), (&q, g, gc), w, order, (&mut at, &mut lifted), &mut dead)
+                } else {
+                    Scan::Merge
+                };
+                let fits = match scan {
+                    Scan::Merge => {
+                        let merged = combine(&p, start + 1, (a, b), (&q, g, gc), w, order, &mut buf, &mut lifted);
+                        if merged.is_some() {
+                            std::mem::swap(&mut p, &mut buf);
+                            start = 0;
+                        }
+                        merged.is_some()
+                    }
+                    // Every monomial of q·g[1..] was a term of the work: updated where it stands.
+                    Scan::Done => {
+                        #[cfg(test)]
+                        count_in_place(0);
+                        start += 1;
+                        true
+                    }
+                    Scan::Missing(i, j) => {
+                        #[cfg(test)]
+                        if dead > 0 {
+                            count_in_place(1);
+                        }
+                        let merged = combine_resume(
+                            &p,
+                            start + 1,
+                            (a, b),
+                            (&q, g, gc),
+                            (&at, i, j),
+                            dead,
+                            w,
+                            order,
+                            &mut buf,
+                            &mut lifted,
+                        );
+                        if merged.is_some() {
+                            std::mem::swap(&mut p, &mut buf);
+                            (start, dead) = (0, 0);
+                        }
+                        merged.is_some()
+                    }
+                    Scan::Overflow => false,
+                };
                 if !fits {
                     // This step overflows: the reduction continues in GMP from the state before it.
                     let state = (p.into_dpoly(w, start), rem.into_dpoly(w, 0), scale, sugar);
-                    return reduce_from(state, divisors, order, meter, LONG_WORK);
+                    return reduce_from(state, divisors, order, meter, long);
                 }
-                std::mem::swap(&mut p, &mut buf);
                 if a != 1 {
                     for c in &mut rem.coefs {
                         *c *= a;
                     }
                     scale *= a;
                 }
-                start = 0;
                 steps += 1;
                 if steps.is_multiple_of(16) {
                     let mut g = 0u64;
-                    for c in p.coefs.iter().chain(&rem.coefs) {
+                    for c in p.coefs[start..].iter().chain(&rem.coefs) {
                         g = gcd(g, c.unsigned_abs());
                         if g == 1 {
                             break;
@@ -274,15 +605,16 @@ pub(crate) fn reduce_work(
                     }
                     if g > 1 {
                         let g = g as i64;
-                        for c in p.coefs.iter_mut().chain(rem.coefs.iter_mut()) {
+                        for c in p.coefs[start..].iter_mut().chain(rem.coefs.iter_mut()) {
                             *c /= g;
                         }
                         scale /= g;
                     }
                 }
-                if p.coefs.len() > LONG_WORK {
-                    let (p, rem) = (p.into_dpoly(w, 0), rem.into_dpoly(w, 0));
-                    return reduce_in_buckets(p, rem, scale, sugar, divisors, order, meter);
+                if p.coefs.len() - start > long {
+                    p.compact(w, start);
+                    give_back(buf);
+                    return reduce_in_word_buckets(p, rem, scale, sugar, w, divisors, order, meter);
                 }
             }
             None => {

@@ -156,7 +156,8 @@ fn long_reductions_shed_content_and_track_the_scale_exactly() {
 
 /// The term budget stops a reduction in either representation with the documented error: the
 /// work of `6·x^40 + 6y` modulo `3x - 2` holds two terms and its remainder grows to two, so a
-/// budget of one term is exceeded at once, whether the work is merged or in geobuckets.
+/// budget of one term is exceeded at once, whether the work is merged or in geobuckets, over
+/// GMP or in machine words.
 #[test]
 fn term_budget_stops_merged_and_bucketed_reductions() {
     let (x, y) = (Poly::var("x"), Poly::var("y"));
@@ -171,6 +172,16 @@ fn term_budget_stops_merged_and_bucketed_reductions() {
         match division::reduce_switching_at(fd.clone(), &reducers, MonomialOrder::GrevLex, &mut meter, long) {
             Err(IdealError::Undecided { limit: Limit::Terms, .. }) => {}
             other => panic!("switch at {long}: expected the term limit, got {:?}", other.map(|r| r.r)),
+        }
+    }
+    // The same in machine words: merges (steps in place or not) and word geobuckets.
+    let ds = with_small(std::slice::from_ref(&gd));
+    let reducers = small_reducers(&ds);
+    for (long, in_place) in [(0, false), (usize::MAX, false), (usize::MAX, true)] {
+        let mut meter = Meter::new(&tiny);
+        match small::reduce_switching_at(fd.clone(), &reducers, MonomialOrder::GrevLex, &mut meter, long, in_place) {
+            Err(IdealError::Undecided { limit: Limit::Terms, .. }) => {}
+            other => panic!("words, switch at {long}: expected the term limit, got {:?}", other.map(|r| r.r)),
         }
     }
 }
@@ -207,11 +218,113 @@ proptest! {
         let ds: Vec<DPoly> = gs.iter().map(|g| ring.to_dense(g).unwrap().0).collect();
         let ds = with_small(&ds);
         let reducers = small_reducers(&ds);
-        let mut meter = Meter::new(&Budget::default());
-        let division::Reduced { r, s, .. } = small::reduce(fd, &reducers, order, &mut meter).unwrap();
         let textbook = ring.divide(&f, &gs, &Budget::default()).unwrap().remainder;
-        prop_assert_eq!(ring.to_poly(&r, &(s * Rational::from(&fden))), textbook);
+        // Merges until 256 terms (never, here), word geobuckets from the start or after 3 terms;
+        // merge steps tried in place first (as for normal forms) or not.
+        for (long, in_place) in [(division::LONG_WORK, false), (division::LONG_WORK, true), (0, false), (3, true)] {
+            let mut meter = Meter::new(&Budget::default());
+            let division::Reduced { r, s, .. } =
+                small::reduce_switching_at(fd.clone(), &reducers, order, &mut meter, long, in_place).unwrap();
+            prop_assert_eq!(
+                ring.to_poly(&r, &(s * Rational::from(&fden))), textbook.clone(), "switch at {}, in place {}", long, in_place
+            );
+        }
     }
+}
+
+/// The word geobuckets against the textbook division over Q on random reductions whose
+/// coefficients pass 2^63 at different points, and each of the three ways of handing over to
+/// the GMP buckets taken at least once (a leading coefficient that does not fit, a scaling of
+/// the multipliers, a merge): divisors scaled by 11^j or with one coefficient near 2^62, the
+/// work from the start in buckets.
+#[test]
+fn word_geobuckets_hand_over_to_gmp_exactly() {
+    use proptest::strategy::ValueTree;
+    use proptest::test_runner::TestRunner;
+    let mut runner = TestRunner::deterministic();
+    let strategy = (arb_poly(14), prop::collection::vec(arb_poly(4), 1..4), 0u32..=18, 0u32..=3);
+    small_bucket::HANDED_OVER.with(|h| h.set([0; 3]));
+    let ring = PolyRing::new(["x", "y", "z"], MonomialOrder::GrevLex);
+    for _ in 0..400 {
+        let (f, gs, j, big) = strategy.new_tree(&mut runner).unwrap().current();
+        let power = |b: u32, e: u32| Rational::from(rug::ops::Pow::pow(Integer::from(b), e));
+        let near = Poly::constant(Rational::from((Integer::from(1) << 62u32) - 1));
+        let gs: Vec<Poly> = gs
+            .into_iter()
+            .filter(|g| !g.is_exact_zero())
+            .enumerate()
+            .map(|(k, g)| {
+                let g = g.scale(&power(11, j));
+                // One divisor with a coefficient near 2^62 (`big` of 3 times).
+                if k == 0 && big == 0 { g + near.clone() * Poly::var("z").pow_u32(3) } else { g }
+            })
+            .collect();
+        let (fd, fden) = ring.to_dense(&f).unwrap();
+        let ds: Vec<DPoly> = gs.iter().map(|g| ring.to_dense(g).unwrap().0).collect();
+        let ds = with_small(&ds);
+        let reducers = small_reducers(&ds);
+        let textbook = ring.divide(&f, &gs, &Budget::default()).unwrap().remainder;
+        let mut meter = Meter::new(&Budget::default());
+        let division::Reduced { r, s, .. } =
+            small::reduce_switching_at(fd.clone(), &reducers, MonomialOrder::GrevLex, &mut meter, 0, false).unwrap();
+        assert_eq!(ring.to_poly(&r, &(s * Rational::from(&fden))), textbook, "f = {f}, gs = {gs:?}");
+    }
+    // And one whose multipliers overflow for sure: 6·x^40 + 6y modulo 3x - 2 scales the work by
+    // 3 at every step (3^40 > 2^63).
+    let (x, y) = (Poly::var("x"), Poly::var("y"));
+    let f = Poly::from_i64(6) * x.pow_u32(40) + Poly::from_i64(6) * y.clone();
+    let g = Poly::from_i64(3) * x.clone() - Poly::from_i64(2);
+    let (fd, fden) = ring.to_dense(&f).unwrap();
+    let ds = with_small(&[ring.to_dense(&g).unwrap().0]);
+    let reducers = small_reducers(&ds);
+    let mut meter = Meter::new(&Budget::default());
+    let division::Reduced { r, s, .. } =
+        small::reduce_switching_at(fd, &reducers, MonomialOrder::GrevLex, &mut meter, 0, false).unwrap();
+    let textbook = ring.divide(&f, &[g], &Budget::default()).unwrap().remainder;
+    assert_eq!(ring.to_poly(&r, &(s * Rational::from(&fden))), textbook);
+    let handed = small_bucket::HANDED_OVER.with(|h| h.get());
+    assert!(handed.iter().all(|&n| n > 0), "hand-overs by lead, scale, merge: {handed:?}");
+}
+
+/// Steps done where the work stands (normal forms), against the textbook division over Q on
+/// random reductions in three variables (many monomials in common, so many steps only cancel or
+/// update terms the work has), and both of the new paths taken: a step in place, and a merge
+/// after steps in place that dropped the terms they left with the coefficient 0.
+#[test]
+fn steps_in_place_match_textbook_division() {
+    use proptest::strategy::ValueTree;
+    use proptest::test_runner::TestRunner;
+    let mut runner = TestRunner::deterministic();
+    let strategy = (arb_poly(20), prop::collection::vec(arb_poly(4), 1..4), 0u32..=2);
+    small::IN_PLACE.with(|c| c.set([0; 2]));
+    let ring = PolyRing::new(["x", "y", "z"], MonomialOrder::GrevLex);
+    for _ in 0..300 {
+        let (h, gs, k) = strategy.new_tree(&mut runner).unwrap().current();
+        let gs: Vec<Poly> = gs.into_iter().filter(|g| !g.is_exact_zero()).collect();
+        // Mostly multiples of the divisors (as a claim that holds), plus a little of `h`.
+        let mut f = h.clone() * Poly::from_i64(i64::from(k));
+        for (n, g) in gs.iter().enumerate() {
+            f = f + g.clone() * (h.clone() + Poly::var(["x", "y", "z"][n % 3]));
+        }
+        let (fd, fden) = ring.to_dense(&f).unwrap();
+        let ds: Vec<DPoly> = gs.iter().map(|g| ring.to_dense(g).unwrap().0).collect();
+        let ds = with_small(&ds);
+        let reducers = small_reducers(&ds);
+        let textbook = ring.divide(&f, &gs, &Budget::default()).unwrap().remainder;
+        let mut meter = Meter::new(&Budget::default());
+        let division::Reduced { r, s, .. } = small::reduce_switching_at(
+            fd.clone(),
+            &reducers,
+            MonomialOrder::GrevLex,
+            &mut meter,
+            division::LONG_WORK,
+            true,
+        )
+        .unwrap();
+        assert_eq!(ring.to_poly(&r, &(s * Rational::from(&fden))), textbook, "f = {f}, gs = {gs:?}");
+    }
+    let taken = small::IN_PLACE.with(|c| c.get());
+    assert!(taken.iter().all(|&n| n > 0), "steps in place, merges after them: {taken:?}");
 }
 
 /// The machine-word reduction past the words, in closed form: `6·x^40 + 6y` modulo `3x - 2`
@@ -232,9 +345,15 @@ fn machine_word_reduction_overflows_into_gmp_exactly() {
         let (fd, fden) = ring.to_dense(&f).unwrap();
         let ds = with_small(&[ring.to_dense(&g).unwrap().0]);
         let reducers = small_reducers(&ds);
-        let mut meter = Meter::new(&Budget::default());
-        let division::Reduced { r, s, .. } = small::reduce(fd, &reducers, MonomialOrder::GrevLex, &mut meter).unwrap();
-        assert_eq!(ring.to_poly(&r, &(s * Rational::from(&fden))), expected, "g = {g}");
+        // Word merges (steps in place or not), and word geobuckets from the start (whose
+        // multipliers overflow instead).
+        for (long, in_place) in [(division::LONG_WORK, false), (division::LONG_WORK, true), (0, false)] {
+            let mut meter = Meter::new(&Budget::default());
+            let division::Reduced { r, s, .. } =
+                small::reduce_switching_at(fd.clone(), &reducers, MonomialOrder::GrevLex, &mut meter, long, in_place)
+                    .unwrap();
+            assert_eq!(ring.to_poly(&r, &(s * Rational::from(&fden))), expected, "g = {g}, switch at {long}");
+        }
     }
 }
 
@@ -310,5 +429,60 @@ fn variable_lookup_by_table_and_by_binary_search_agree() {
     for (ring, stranger) in strangers.into_iter().chain([(&holes, &mid), (&holes, &gap[0]), (&holes, &below)]) {
         let name = stranger.variables()[0].clone();
         assert_eq!(ring.to_dense(stranger).unwrap_err(), IdealError::UnknownVariable(name));
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(200))]
+
+    /// The chain criterion among new pairs, candidates sorted by lcm degree, against the same
+    /// filter after a sort by the monomial order (the engine's before) and against its
+    /// definition: a candidate is kept exactly when no other candidate's lcm properly divides its
+    /// lcm and no candidate with the same lcm comes first (coprime first, then least `i`).
+    #[test]
+    fn chain_criterion_by_degree_keeps_the_same_pairs(
+        ms in prop::collection::vec(([0u32..3, 0u32..3, 0u32..3], any::<bool>()), 0..24)
+    ) {
+        let w = 4;
+        let mut lcms = Vec::new();
+        let mut cands: Vec<groebner::Cand> = Vec::new();
+        for (i, (e, coprime)) in ms.iter().enumerate() {
+            let at = lcms.len();
+            lcms.push(e.iter().sum());
+            lcms.extend_from_slice(e);
+            cands.push((i, at, *coprime, order::mask(&lcms[at..at + w])));
+        }
+        let lcm_of = |at: usize| &lcms[at..at + w];
+        let mut fast = cands.clone();
+        let kept = groebner::chain_among_new(&mut fast, &lcms, w);
+        let mut fast: Vec<usize> = fast[..kept].iter().map(|c| c.0).collect();
+        fast.sort_unstable();
+        // The engine's before: sorted by the monomial order, coprime first, then the filter.
+        let order = MonomialOrder::GrevLex;
+        let mut old = cands.clone();
+        old.sort_by(|a, b| order.cmp(lcm_of(a.1), lcm_of(b.1)).then_with(|| b.2.cmp(&a.2)));
+        let mut kept_old: Vec<groebner::Cand> = Vec::new();
+        for c in old {
+            if !kept_old.iter().any(|d| order::divides(lcm_of(d.1), lcm_of(c.1))) {
+                kept_old.push(c);
+            }
+        }
+        let mut old: Vec<usize> = kept_old.iter().map(|c| c.0).collect();
+        old.sort_unstable();
+        prop_assert_eq!(&fast, &old);
+        // The definition.
+        let first = |c: &groebner::Cand, d: &groebner::Cand| (!d.2, d.0) < (!c.2, c.0);
+        let mut def: Vec<usize> = cands
+            .iter()
+            .filter(|c| {
+                !cands.iter().any(|d| {
+                    let (lc, ld) = (lcm_of(c.1), lcm_of(d.1));
+                    (ld != lc && order::divides(ld, lc)) || (ld == lc && first(c, d))
+                })
+            })
+            .map(|c| c.0)
+            .collect();
+        def.sort_unstable();
+        prop_assert_eq!(fast, def);
     }
 }
