@@ -147,15 +147,23 @@ impl<T: Field> Pose<T> {
     /// ```
     pub fn transform_point(&self, p: &[T; 3]) -> Result<[T; 3], MotionError> {
         let alpha = self.alpha();
-        if crate::scaled::tame(&alpha) {
-            // tame: non-zero, and for floats 1/α is a normal number
-            // 2/α in one step: one addition less on the point's chain than 1/α + 1/α
-            let out = self.image_with_twice(p, &T::from_i64(2).div_ref(&alpha));
-            // one test for the three: a sum of finite values that is not finite overflowed,
-            // and any infinity or NaN makes the sum non-finite (the careful path then names it)
-            if out[0].add_ref(&out[1]).add_ref(&out[2]).is_finite_value() {
-                return Ok(out);
+        // 2/α in one step: one addition less on the point's chain than 1/α + 1/α
+        let two = T::from_i64(2);
+        if T::relative_epsilon() == 0.0 {
+            // exact scalars: α = 0 is the only case to decline (nothing overflows)
+            if alpha.is_exact_zero() {
+                return self.transform_point_careful(p);
             }
+            return Ok(self.image_with_twice(p, &two.div_ref(&alpha)));
+        }
+        // floats: the image first (a zero or tiny α gives infinities, never a trap), then one
+        // test for both conditions, off the division's chain: α tame (1/α a normal number)
+        // and each coordinate finite (tested apart, not as a sum: two additions less on the
+        // chain). The careful path names whatever failed.
+        let out = self.image_with_twice(p, &two.div_ref(&alpha));
+        let finite = out[0].is_finite_value() & out[1].is_finite_value() & out[2].is_finite_value();
+        if crate::scaled::tame(&alpha) & finite {
+            return Ok(out);
         }
         self.transform_point_careful(p)
     }
