@@ -176,19 +176,43 @@ impl<T: Real> Pose<T> {
         if !crate::scaled::tame(alpha) || !is_positive(alpha) {
             return None;
         }
+        // the half-angle from S itself (scale-invariant)
+        let (a, c) = split(self);
+        let s_raw2 = dot(&a, &a);
+        let s_raw = Real::sqrt(&s_raw2);
+        let th = s_raw.fast_atan2(&self.scalar);
         // one division: 1/√α, and β/(2α) = ½ β (1/√α)²
         let inv_root = T::one().div_ref(&Real::sqrt(alpha));
-        let m = n2.e123inf.mul_ref(&inv_root).mul_ref(&inv_root).mul_ref(&T::from_ratio(1, 2));
-        let unit = &Pseudoscalar::new(inv_root.clone(), m.mul_ref(&inv_root).neg_ref()) * self;
-        // the half-angle from S itself (scale-invariant): beside the normalisation, not after
-        let (a, _) = split(self);
-        let s_raw = Real::sqrt(&dot(&a, &a));
-        let th = s_raw.fast_atan2(&self.scalar);
         let s = s_raw.mul_ref(&inv_root);
-        let mut l = unit_log_with(&unit, |u0, x| log_factors_fixed(u0, x, &s, &th));
+        let m = n2.e123inf.mul_ref(&inv_root).mul_ref(&inv_root).mul_ref(&T::from_ratio(1, 2));
+        let mut l = if self.scalar >= T::zero() {
+            // `unit_log_with` of U = (r - m r ω) S (r = 1/√α) without forming U: U's parts are
+            // a_U = r a, c_U = r (c + m a), U∅ = r S∅, U_ω = r (Sω - m S∅) (ω S has einf part
+            // -a), so its log f a_U, f c_U + g U_ω a_U is F a, F c + H a with F = f r and
+            // H = F m + g r² (Sω - m S∅): seven products instead of the normalisation's twelve
+            let r2 = inv_root.mul_ref(&inv_root);
+            let (u0, x) = (self.scalar.mul_ref(&inv_root), s_raw2.mul_ref(&r2));
+            let (f, g) = log_factors_fixed(&u0, &x, &s, &th);
+            let big_f = f.mul_ref(&inv_root);
+            let u_omega = self.e123inf.sub_ref(&m.mul_ref(&self.scalar));
+            let h = big_f.mul_ref(&m).add_ref(&g.mul_ref(&r2).mul_ref(&u_omega));
+            let c_out = std::array::from_fn(|i| c[i].mul_ref(&big_f).add_ref(&a[i].mul_ref(&h)));
+            assemble(T::zero(), a.map(|x| x.mul_ref(&big_f)), c_out, T::zero())
+        } else {
+            self.log_direct_obtuse(&inv_root, &m, &s, &th)
+        };
         l.scalar = ln_fixed(alpha).mul_ref(&T::from_ratio(1, 2));
         l.e123inf = m;
         l.is_finite().then_some(l)
+    }
+
+    /// [`Pose::log_direct`]'s bivector part for `S∅ < 0` (a rotation by more than π), given
+    /// `1/√α`, `m = β/(2α)`, `sin θ` and `θ`: the normalised element's [`unit_log_with`].
+    /// Out of line, so that the common case's registers are its own.
+    #[inline(never)]
+    fn log_direct_obtuse(&self, inv_root: &T, m: &T, s: &T, th: &T) -> Even<T> {
+        let unit = &Pseudoscalar::new(inv_root.clone(), m.mul_ref(inv_root).neg_ref()) * self;
+        unit_log_with(&unit, |u0, x| log_factors_fixed(u0, x, s, th))
     }
 
     /// The logarithm of whichever of `±S` has non-negative scalar part (the same transform,

@@ -166,11 +166,8 @@ impl<T: Ring> Pose<T> {
     /// `α = S∅² + S12² + S13² + S23²`, the scalar part of [`Pose::pseudo_norm_squared`] alone
     /// (what the point action divides by).
     pub(crate) fn alpha(&self) -> T {
-        // summed as a tree, (S∅² + S13²) + (S12² + S23²): two additions deep instead of three
-        // (the fields lie in that order, so the first sums pair two lanes), which the division
-        // by α in the point action waits for
         let s = self;
-        (s.scalar.mul_ref(&s.scalar) + s.e13.mul_ref(&s.e13)) + (s.e12.mul_ref(&s.e12) + s.e23.mul_ref(&s.e23))
+        s.scalar.mul_ref(&s.scalar) + s.e12.mul_ref(&s.e12) + s.e13.mul_ref(&s.e13) + s.e23.mul_ref(&s.e23)
     }
 
     /// True when `S` is exactly singular: the scalar part of `rev(S) S` is exactly zero, so

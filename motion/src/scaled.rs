@@ -18,7 +18,10 @@ pub(crate) fn tame<T: Ring>(alpha: &T) -> bool {
     if T::relative_epsilon() == 0.0 {
         return !alpha.is_exact_zero();
     }
-    (TAME_ALPHA_LO..TAME_ALPHA_HI).contains(&alpha.magnitude())
+    // `LO <= m < HI` on the bits (one integer comparison, off the floating-point ports): the
+    // order of non-negative floats is their bits' order, and a NaN's bits lie above `HI`'s
+    let m = alpha.magnitude().to_bits();
+    m.wrapping_sub(TAME_ALPHA_LO.to_bits()) < TAME_ALPHA_HI.to_bits() - TAME_ALPHA_LO.to_bits()
 }
 
 /// `2^(-2·TAME_LOG2)`, exactly.
@@ -137,5 +140,44 @@ pub(crate) fn require_finite<'a, T: Ring + 'a>(
         Ok(())
     } else {
         Err(MotionError::NotFinite { op, value: s.to_string() })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{TAME_ALPHA_HI, TAME_ALPHA_LO, tame};
+
+    /// `tame` on the bits agrees with the range it stands for, `LO <= |α| < HI`, at and beside
+    /// both ends and on the values that are not numbers.
+    #[test]
+    fn tame_is_the_range_test() {
+        let up = |x: f64| f64::from_bits(x.to_bits() + 1);
+        let down = |x: f64| f64::from_bits(x.to_bits() - 1);
+        let values = [
+            0.0,
+            -0.0,
+            f64::MIN_POSITIVE,
+            5e-324,
+            1.0,
+            -1.0,
+            TAME_ALPHA_LO,
+            down(TAME_ALPHA_LO),
+            up(TAME_ALPHA_LO),
+            TAME_ALPHA_HI,
+            down(TAME_ALPHA_HI),
+            -down(TAME_ALPHA_HI),
+            f64::MAX,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NAN,
+            -f64::NAN,
+        ];
+        for a in values {
+            let by_range = (TAME_ALPHA_LO..TAME_ALPHA_HI).contains(&a.abs());
+            assert_eq!(tame(&a), by_range, "{a:e}");
+        }
+        assert!(tame(&1.0) && tame(&TAME_ALPHA_LO) && !tame(&TAME_ALPHA_HI) && !tame(&down(TAME_ALPHA_LO)));
+        // f32 through its magnitude (an f64)
+        assert!(tame(&1.5f32) && !tame(&0.0f32));
     }
 }
