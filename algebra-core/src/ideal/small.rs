@@ -173,62 +173,10 @@ fn combine(
     let n = p.coefs.len();
     out.exps.reserve((n - from + g.len()) * w);
     out.coefs.reserve(n - from + g.len());
-    let (a, b) = (i128::from(a), i128::from(b));
-    let (mut i, mut j) = (from, 1);
-    // `p`'s terms from `run` to `i` are in `out.coefs` but not yet in `out.exps`: a run of
-    // them is copied with one `memcpy` (one per term was an eighth of the docs' example).
-    let mut run = from;
-    if j < g.len() {
-        order::mul_into(lifted, q, g.mono(j));
+    if 1 < g.len() {
+        order::mul_into(lifted, q, g.mono(1));
     }
-    while i < n && j < g.len() {
-        match order.cmp(&p.exps[i * w..(i + 1) * w], lifted) {
-            Ordering::Greater => {
-                out.coefs.push(fit(a * i128::from(p.coefs[i]))?);
-                i += 1;
-                continue;
-            }
-            Ordering::Less => {
-                out.exps.extend_from_slice(&p.exps[run * w..i * w]);
-                run = i;
-                out.coefs.push(fit(-b * i128::from(gc[j]))?);
-                out.exps.extend_from_slice(lifted);
-            }
-            Ordering::Equal => {
-                out.exps.extend_from_slice(&p.exps[run * w..i * w]);
-                // |a·c|, |b·g| < 2^126: the difference fits an i128.
-                let v = fit(a * i128::from(p.coefs[i]) - b * i128::from(gc[j]))?;
-                if v != 0 {
-                    out.coefs.push(v);
-                    out.exps.extend_from_slice(lifted);
-                }
-                i += 1;
-                run = i;
-            }
-        }
-        j += 1;
-        if j < g.len() {
-            order::mul_into(lifted, q, g.mono(j));
-        }
-    }
-    out.exps.extend_from_slice(&p.exps[run * w..i * w]);
-    while j < g.len() {
-        out.coefs.push(fit(-b * i128::from(gc[j]))?);
-        out.exps.extend_from_slice(lifted);
-        j += 1;
-        if j < g.len() {
-            order::mul_into(lifted, q, g.mono(j));
-        }
-    }
-    if a == 1 {
-        out.coefs.extend_from_slice(&p.coefs[i..n]);
-    } else {
-        for &c in &p.coefs[i..n] {
-            out.coefs.push(fit(a * i128::from(c))?);
-        }
-    }
-    out.exps.extend_from_slice(&p.exps[i * w..n * w]);
-    Some(())
+    merge_from::<false>(p, (i128::from(a), i128::from(b)), (q, g, gc), (from, 1), w, order, out, lifted).map(|_| ())
 }
 
 /// [`combine`] resuming a failed [`in_place`] scan: the terms `p[from..i0]` are copied as one
@@ -271,6 +219,32 @@ fn combine_resume(
     if zeros {
         out.compact(w, 0);
     }
+    let tail = merge_from::<true>(p, (a, b), (q, g, gc), (i0, j0), w, order, out, lifted)?;
+    if dead > 0 {
+        out.squeeze(w, tail, tail);
+    }
+    Some(())
+}
+
+/// The merge shared by [`combine`] and [`combine_resume`]: `out` (holding the result up to
+/// `p[i]`, exclusive) gets `a·p[i..] - b·q·g[j..]`, the lifted monomial `q·g[j]` being in
+/// `lifted`. With `DROP_ZEROS`, terms of `p` with the coefficient 0 (left by steps done in
+/// place) are dropped; compiled apart, so that [`combine`]'s loop has no such test. Returns
+/// where the copied rest of `p` starts in `out.coefs` (terms with 0 may follow there when
+/// `DROP_ZEROS`: the caller squeezes them out); `None` on overflow.
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn merge_from<const DROP_ZEROS: bool>(
+    p: &Work,
+    (a, b): (i128, i128),
+    (q, g, gc): (&Mono, &DPoly, &[i64]),
+    (i0, j0): (usize, usize),
+    w: usize,
+    order: MonomialOrder,
+    out: &mut Work,
+    lifted: &mut Vec<u32>,
+) -> Option<usize> {
+    let n = p.coefs.len();
     let (mut i, mut j) = (i0, j0);
     // `p`'s terms from `run` to `i` are in `out.coefs` but not yet in `out.exps`: a run of
     // them is copied with one `memcpy` (one per term was an eighth of the docs' example).
@@ -278,7 +252,7 @@ fn combine_resume(
     while i < n && j < g.len() {
         match order.cmp(&p.exps[i * w..(i + 1) * w], lifted) {
             Ordering::Greater => {
-                if p.coefs[i] == 0 {
+                if DROP_ZEROS && p.coefs[i] == 0 {
                     // A term left with 0 by a step done in place: dropped.
                     out.exps.extend_from_slice(&p.exps[run * w..i * w]);
                     run = i + 1;
@@ -329,10 +303,7 @@ fn combine_resume(
         }
     }
     out.exps.extend_from_slice(&p.exps[i * w..n * w]);
-    if dead > 0 {
-        out.squeeze(w, tail, tail);
-    }
-    Some(())
+    Some(tail)
 }
 
 #[cfg(test)]
