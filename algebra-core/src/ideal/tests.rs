@@ -486,3 +486,38 @@ proptest! {
         prop_assert_eq!(fast, def);
     }
 }
+
+/// The byte keys of `sorted_terms` order the terms as the grevlex comparison does (the
+/// reference: `order::grevlex_cmp` on every pair of neighbours, and the fallback comparator
+/// for degrees above 255), over random polynomials in twelve variables with one degree for
+/// most terms (the case where the comparison scans furthest).
+#[test]
+fn byte_keys_sort_like_grevlex() {
+    let names: Vec<String> = (0..12).map(|i| format!("v{i}")).collect();
+    let ring = PolyRing::new(names.iter().map(String::as_str), MonomialOrder::GrevLex);
+    let mut rng = crate::test_support::Xorshift(0x0DDB_1A5E_5BAD_5EED);
+    for case in 0..200 {
+        let big = case % 10 == 0; // degrees above 255: the word-by-word fallback
+        let terms = (0..60).map(|_| {
+            let mut left = if big { 600 } else { 6 };
+            let mono = names
+                .iter()
+                .filter_map(|n| {
+                    let e = (rng.next_u64() % 3) as u32 * if big { 200 } else { 1 };
+                    let e = e.min(left);
+                    left -= e;
+                    (e > 0).then(|| (n.clone(), e))
+                })
+                .collect();
+            (Rational::from(1 + (rng.next_u64() % 7) as i64), mono)
+        });
+        let p = Poly::from_terms(terms);
+        let w = ring.width();
+        let t = ring.sorted_terms(&p).unwrap();
+        assert_eq!(t.order.len(), p.term_count());
+        let mono = |k: usize| &t.exps[t.order[k] * w..(t.order[k] + 1) * w];
+        for k in 1..t.order.len() {
+            assert_eq!(MonomialOrder::GrevLex.cmp(mono(k - 1), mono(k)), std::cmp::Ordering::Greater, "case {case}");
+        }
+    }
+}
