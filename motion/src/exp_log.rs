@@ -171,8 +171,7 @@ impl<T: Real> Pose<T> {
         if !crate::series::at_most_f64::<T>() {
             return None;
         }
-        let n2 = self.pseudo_norm_squared();
-        let alpha = &n2.scalar;
+        let alpha = &self.alpha();
         if !crate::scaled::tame(alpha) || !is_positive(alpha) {
             return None;
         }
@@ -181,10 +180,11 @@ impl<T: Real> Pose<T> {
         let s_raw2 = dot(&a, &a);
         let s_raw = Real::sqrt(&s_raw2);
         let th = s_raw.fast_atan2(&self.scalar);
-        // one division: 1/√α, and β/(2α) = ½ β (1/√α)²
+        // one division: 1/√α, and β/(2α) = (β/2) (1/√α)² (the same bits as ½ β (1/√α)²:
+        // scaling by 2 and ½ is exact)
         let inv_root = T::one().div_ref(&Real::sqrt(alpha));
         let s = s_raw.mul_ref(&inv_root);
-        let m = n2.e123inf.mul_ref(&inv_root).mul_ref(&inv_root).mul_ref(&T::from_ratio(1, 2));
+        let m = self.half_beta().mul_ref(&inv_root).mul_ref(&inv_root);
         let mut l = if self.scalar >= T::zero() {
             // `unit_log_with` of U = (r - m r ω) S (r = 1/√α) without forming U: U's parts are
             // a_U = r a, c_U = r (c + m a), U∅ = r S∅, U_ω = r (Sω - m S∅) (ω S has einf part

@@ -157,10 +157,15 @@ impl<T: Ring> Pose<T> {
     /// assert_eq!(s.norm_squared(), q(5)); // the generated scalar part <S rev(S)>_0 = α
     /// ```
     pub fn pseudo_norm_squared(&self) -> Pseudoscalar<T> {
-        let s = self;
-        let half_beta =
-            s.scalar.mul_ref(&s.e123inf) - s.e12.mul_ref(&s.e3inf) + s.e13.mul_ref(&s.e2inf) - s.e23.mul_ref(&s.e1inf);
+        let half_beta = self.half_beta();
         Pseudoscalar::new(self.alpha(), half_beta.add_ref(&half_beta))
+    }
+
+    /// `β/2 = S∅ Sω - S12 S3∞ + S13 S2∞ - S23 S1∞`, half the ω part of
+    /// [`Pose::pseudo_norm_squared`].
+    pub(crate) fn half_beta(&self) -> T {
+        let s = self;
+        s.scalar.mul_ref(&s.e123inf) - s.e12.mul_ref(&s.e3inf) + s.e13.mul_ref(&s.e2inf) - s.e23.mul_ref(&s.e1inf)
     }
 
     /// `α = S∅² + S12² + S13² + S23²`, the scalar part of [`Pose::pseudo_norm_squared`] alone
