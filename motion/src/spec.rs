@@ -403,7 +403,7 @@ fn qualify_missing_field(message: &str, text: &str) -> String {
 /// ```
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum SpecError {
-    /// The text is not JSON (serde_json's message, with line and column; [`HermiteSpec::from_json`]).
+    /// The text is not JSON (serde_json's message, with line and column; `HermiteSpec::from_json`, feature `serde`).
     #[error("invalid JSON: {0}")]
     Json(String),
     /// The JSON is not a spec: a wrong type, an unknown, missing or repeated field (serde's
