@@ -393,7 +393,7 @@ impl PolyRing {
         }
         let mut order: Vec<usize> = (0..coefs.len()).collect();
         // (below 32 terms building the keys costs more than the comparisons they save)
-        match if n >= 32 { grevlex_keys(&exps, w, self.order) } else { None } {
+        match if n >= 32 { self.order.sort_keys(&exps, w) } else { None } {
             // a few word comparisons per pair instead of a scan of the monomials (a claim of
             // the 3-pose Study quadric: 192 terms of one degree in 24 variables, where the
             // word-by-word scan of the exponents made the sort a third of the proof)
@@ -419,31 +419,6 @@ impl PolyRing {
             (m, c)
         }))
     }
-}
-
-/// Keys that order like grevlex (`w` words per monomial in `exps`, the degree first), `kw`
-/// words per monomial: the degree's four bytes, then `255 - e` for the exponents from the last
-/// variable to the first, packed big-endian into `u64` words, so that comparing two keys word
-/// by word compares the degrees, then finds the last variable where the exponents differ, the
-/// smaller exponent leading (`order::grevlex_cmp`). `None` for other orders and for a degree
-/// above 255. Returns the keys and `kw`.
-fn grevlex_keys(exps: &[u32], w: usize, order: MonomialOrder) -> Option<(Vec<u64>, usize)> {
-    // an exponent is at most its monomial's degree: one test per monomial
-    if order != MonomialOrder::GrevLex || exps.chunks_exact(w).any(|m| m[0] > 255) {
-        return None;
-    }
-    let kw = (w + 3).div_ceil(8);
-    let mut keys = Vec::with_capacity(exps.len() / w * kw);
-    let mut bytes = vec![0u8; kw * 8];
-    for m in exps.chunks_exact(w) {
-        bytes[..4].copy_from_slice(&m[0].to_be_bytes());
-        for (b, &e) in bytes[4..].iter_mut().zip(m[1..].iter().rev()) {
-            // `e <= degree <= 255`
-            *b = 255 - e as u8;
-        }
-        keys.extend(bytes.chunks_exact(8).map(|c| u64::from_be_bytes(c.try_into().expect("8 bytes"))));
-    }
-    Some((keys, kw))
 }
 
 /// Monomials (`w` words each, decreasing) and machine-word coefficients.

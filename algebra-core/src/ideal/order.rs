@@ -115,6 +115,31 @@ impl MonomialOrder {
         }
     }
 
+    /// Keys that order like `self` (`w` words per monomial in `exps`, the degree first), `kw`
+    /// words per monomial, for grevlex: the degree's four bytes, then `255 - e` for the
+    /// exponents from the last variable to the first, packed big-endian into `u64` words, so
+    /// that comparing two keys word by word compares the degrees, then finds the last variable
+    /// where the exponents differ, the smaller exponent leading ([`grevlex_cmp`]). `None` for
+    /// the other orders and for a degree above 255. Returns the keys and `kw`.
+    pub(crate) fn sort_keys(&self, exps: &[u32], w: usize) -> Option<(Vec<u64>, usize)> {
+        // an exponent is at most its monomial's degree: one test per monomial
+        if *self != MonomialOrder::GrevLex || exps.chunks_exact(w).any(|m| m[0] > 255) {
+            return None;
+        }
+        let kw = (w + 3).div_ceil(8);
+        let mut keys = Vec::with_capacity(exps.len() / w * kw);
+        let mut bytes = vec![0u8; kw * 8];
+        for m in exps.chunks_exact(w) {
+            bytes[..4].copy_from_slice(&m[0].to_be_bytes());
+            for (b, &e) in bytes[4..].iter_mut().zip(m[1..].iter().rev()) {
+                // `e <= degree <= 255`
+                *b = 255 - e as u8;
+            }
+            keys.extend(bytes.chunks_exact(8).map(|c| u64::from_be_bytes(c.try_into().expect("8 bytes"))));
+        }
+        Some((keys, kw))
+    }
+
     #[inline(never)]
     fn cmp_other(&self, a: &Mono, b: &Mono) -> Ordering {
         match *self {
