@@ -11,7 +11,7 @@ use crate::error::CliError;
 use crate::eval::Evaluator;
 use crate::expr::{self, Node};
 use crate::scalar::{CliScalar, Failure, ScalarKind};
-use algebra_core::ideal::{Budget, Decision, Hypotheses, IdealError, decide};
+use algebra_core::ideal::{Budget, Decision, Hypotheses, IdealError, Limit, decide};
 use algebra_core::multivector::symbolic::Part;
 use algebra_core::rational::Q;
 use algebra_core::{Algebra, Basis, Multivector, Poly, Ring};
@@ -318,8 +318,9 @@ fn witness(problem: &Problem, d: &Decision, deadline: Instant) -> Value {
     w
 }
 
-/// The output of `gam prove` when a budget ran out (exit 1 after printing it).
-fn undecided(args: &ProveArgs, reason: &str) -> (String, Option<CliError>) {
+/// The output of `gam prove` when a budget ran out (exit 1 after printing it); `options`: the
+/// limit is one of the budget's options (not the engine's largest degree).
+fn undecided(args: &ProveArgs, reason: &str, options: bool) -> (String, Option<CliError>) {
     let out = if args.json {
         json!({"holds": false, "undecided": true, "method": "groebner", "basis_size": null,
                "time_ms": null, "witness": null, "reason": reason})
@@ -327,7 +328,8 @@ fn undecided(args: &ProveArgs, reason: &str) -> (String, Option<CliError>) {
     } else {
         format!("undecided: {reason}")
     };
-    (out, Some(CliError::math(format!("{reason} (raise --timeout, --max-basis or --max-terms)"))))
+    let hint = if options { " (raise --timeout, --max-basis or --max-terms)" } else { "" };
+    (out, Some(CliError::math(format!("{reason}{hint}"))))
 }
 
 /// `gam prove`: the output, and the failure (exit 1) to report after printing it.
@@ -343,7 +345,7 @@ pub fn prove(args: &ProveArgs) -> Result<(String, Option<CliError>), CliError> {
     let deadline = start + limit;
     let problem = match parse_problem(args, deadline) {
         Ok(p) => p,
-        Err(e) if crate::eval::is_timeout(&e) => return Ok(undecided(args, &e.message)),
+        Err(e) if crate::eval::is_timeout(&e) => return Ok(undecided(args, &e.message, true)),
         Err(e) => return Err(e),
     };
     let remaining = deadline.saturating_duration_since(Instant::now());
@@ -353,7 +355,7 @@ pub fn prove(args: &ProveArgs) -> Result<(String, Option<CliError>), CliError> {
         Ok(d) => d,
         Err(IdealError::Undecided { limit: which, .. }) => {
             let e = IdealError::Undecided { limit: which, elapsed_ms: start.elapsed().as_millis() };
-            return Ok(undecided(args, &e.to_string()));
+            return Ok(undecided(args, &e.to_string(), which != Limit::Degree));
         }
         Err(e) => return Err(CliError::usage(e.to_string())),
     };

@@ -126,6 +126,19 @@ fn undecided_within_budget_is_exit_1_never_a_hang() {
 }
 
 #[test]
+fn a_degree_past_the_engine_is_undecided_exit_1() {
+    // x**40000 is past the packed monomials' 32767: undecided, not a budget option to raise;
+    // x**30000 is within it and decided.
+    let args = ["prove", "--algebra", "g3", "--assume", "x = 0", "x**40000 = 0"];
+    let out = gam(&args);
+    assert_eq!(out.status.code(), Some(1));
+    let line = one_error_line(&args, &String::from_utf8_lossy(&out.stderr));
+    assert!(line.contains("undecided within budget: degree limit") && line.contains("32767"), "{line}");
+    assert!(!line.contains("--timeout"), "{line}");
+    assert!(ok(&["prove", "--algebra", "g3", "--assume", "x = 0", "x**30000 = 0"]).starts_with("holds"));
+}
+
+#[test]
 fn eval_relations_and_diff() {
     assert_eq!(ok(&["eval", "--scalar", "poly", "(a+b)*(a+b) == a*a + 2*a*b + b*b"]), "true");
     assert_eq!(ok(&["eval", "--scalar", "poly", "a*e1 != b*e1"]), "true");

@@ -8,7 +8,7 @@
 //! bucket, and the factor enters the coefficients only when buckets are merged (by the gcd of
 //! the two multipliers).
 
-use super::order::Mono;
+use super::order::{Mono, Word};
 use super::{DPoly, MonomialOrder};
 use rug::{Assign, Integer};
 use std::cmp::Ordering;
@@ -218,7 +218,7 @@ impl GeoBucket {
 
     /// Removes and returns the leading term of the value (monomial into `mono`), `None` when the
     /// value is zero.
-    pub(crate) fn pop_lead(&mut self, mono: &mut Vec<u32>) -> Option<Integer> {
+    pub(crate) fn pop_lead(&mut self, mono: &mut Vec<Word>) -> Option<Integer> {
         // Slots whose head is the largest monomial (at most one per slot; few slots).
         let mut at: [usize; 64] = [0; 64];
         loop {

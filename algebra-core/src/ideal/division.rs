@@ -1,7 +1,7 @@
 //! Division with remainder by a list of polynomials, and full reduction (normal forms).
 
 use super::bucket::GeoBucket;
-use super::order::{self, Mono};
+use super::order::{self, Mono, Word};
 use super::{DPoly, IdealError, Meter, MonomialOrder, PolyRing};
 use crate::poly::Poly;
 use rug::ops::NegAssign;
@@ -37,7 +37,10 @@ pub struct Division {
 pub(crate) struct Reducer<'a> {
     pub(crate) mask: u64,
     pub(crate) poly: &'a DPoly,
-    pub(crate) sugar: u32,
+    pub(crate) sugar: u64,
+    /// The largest degree of a term of `poly` ([`DPoly::top`]): a step by this reducer forms
+    /// products of degree at most `deg(q) + top` ([`step_sugar`]).
+    pub(crate) top: u64,
     /// The coefficients as machine words when all fit (`super::small`), where the caller keeps
     /// them; `None` otherwise.
     pub(crate) small: Option<&'a [i64]>,
@@ -48,15 +51,28 @@ impl<'a> Reducer<'a> {
         Reducer::with_sugar(poly, 0)
     }
 
-    pub(crate) fn with_sugar(poly: &'a DPoly, sugar: u32) -> Self {
-        Reducer { mask: order::mask(poly.lm()), poly, sugar, small: None }
+    pub(crate) fn with_sugar(poly: &'a DPoly, sugar: u64) -> Self {
+        Reducer { mask: order::mask(poly.lm()), poly, sugar, top: poly.top(), small: None }
     }
 }
 
-/// The first divisor whose leading monomial divides `m`, and its sugar.
-fn find_divisor<'a>(divisors: &[Reducer<'a>], m: &Mono) -> Option<(&'a DPoly, u32)> {
+/// The first divisor whose leading monomial divides `m`.
+fn find_divisor<'r, 'a>(divisors: &'r [Reducer<'a>], m: &Mono) -> Option<&'r Reducer<'a>> {
     let mask = order::mask(m);
-    divisors.iter().find(|d| d.mask & !mask == 0 && order::divides(d.poly.lm(), m)).map(|d| (d.poly, d.sugar))
+    divisors.iter().find(|d| d.mask & !mask == 0 && order::divides(d.poly.lm(), m))
+}
+
+/// The sugar `deg(q) + sugar(g)` of the step that subtracts a multiple of `q·g` (`g` the
+/// reducer `d`), after checking that the products `q·g_j` stay within
+/// [`order::MAX_DEGREE`] ([`super::Limit::Degree`] otherwise: the packed fields would
+/// overflow). One comparison per step; under grevlex it never fails (`q·LM(g)` is the work's
+/// leading monomial, of the largest degree).
+#[inline]
+pub(crate) fn step_sugar(q: &Mono, d: &Reducer<'_>, meter: &Meter) -> Result<u64, IdealError> {
+    if q[0] + d.top > order::MAX_DEGREE {
+        return Err(meter.degree_limit());
+    }
+    Ok(q[0] + d.sugar)
 }
 
 /// The result of a full reduction: `r ≡ s·f` with no term of `r` divisible by a leading
@@ -65,7 +81,7 @@ fn find_divisor<'a>(divisors: &[Reducer<'a>], m: &Mono) -> Option<(&'a DPoly, u3
 pub(crate) struct Reduced {
     pub(crate) r: DPoly,
     pub(crate) s: Rational,
-    pub(crate) sugar: u32,
+    pub(crate) sugar: u64,
 }
 
 /// `out := a * p[from..] - b * q * g[1..]`, terms by decreasing monomial. Both operands are
@@ -84,7 +100,7 @@ pub(crate) fn combine(
     (q, g): (&Mono, &DPoly),
     order: MonomialOrder,
     out: &mut DPoly,
-    (spare, lifted): (&mut Vec<Integer>, &mut Vec<u32>),
+    (spare, lifted): (&mut Vec<Integer>, &mut Vec<Word>),
 ) {
     out.exps.clear();
     out.exps.reserve((p.len() - from + g.len()) * p.w);
@@ -175,7 +191,7 @@ pub(crate) fn merge_lifted_tails(
     (mf, f): (&Mono, &DPoly),
     (mg, g): (&Mono, &DPoly),
     order: MonomialOrder,
-    mut visit: impl FnMut(&[u32], Side) -> bool,
+    mut visit: impl FnMut(&[Word], Side) -> bool,
 ) -> bool {
     let (mut lf, mut lg) = (Vec::with_capacity(f.w), Vec::with_capacity(f.w));
     let (mut i, mut j) = (1, 1);
@@ -327,7 +343,7 @@ pub(crate) fn reduce_switching_at(
 /// The merge reduction continued from `rem + p ≡ scale·f` with the sugar so far (see
 /// [`reduce`]).
 pub(crate) fn reduce_from(
-    (mut p, mut rem, mut scale, mut sugar): (DPoly, DPoly, Rational, u32),
+    (mut p, mut rem, mut scale, mut sugar): (DPoly, DPoly, Rational, u64),
     divisors: &[Reducer<'_>],
     order: MonomialOrder,
     meter: &mut Meter,
@@ -342,14 +358,15 @@ pub(crate) fn reduce_from(
     // Per-step temporaries, reused: the gcd, the multipliers, the quotient monomial and the
     // lifted monomial of the merge.
     let (mut d, mut a, mut b) = (Integer::new(), Integer::new(), Integer::new());
-    let (mut q, mut lifted): (Vec<u32>, Vec<u32>) = (Vec::with_capacity(w), Vec::with_capacity(w));
+    let (mut q, mut lifted): (Vec<Word>, Vec<Word>) = (Vec::with_capacity(w), Vec::with_capacity(w));
     if p.len() > long {
         return reduce_in_buckets(p, rem, scale, sugar, divisors, order, meter);
     }
     while start < p.len() {
         meter.check(p.len() - start + rem.len())?;
         match find_divisor(divisors, p.mono(start)) {
-            Some((g, g_sugar)) => {
+            Some(r) => {
+                let g = r.poly;
                 let c = &p.coefs[start];
                 d.assign(c.gcd_ref(g.lc()));
                 a.assign(g.lc().div_exact_ref(&d));
@@ -358,9 +375,8 @@ pub(crate) fn reduce_from(
                     a.neg_assign();
                     b.neg_assign();
                 }
-                q.clear();
-                q.extend(p.mono(start).iter().zip(g.lm()).map(|(x, y)| x - y));
-                sugar = sugar.max(q[0] + g_sugar);
+                order::quotient_into(&mut q, g.lm(), p.mono(start));
+                sugar = sugar.max(step_sugar(&q, r, meter)?);
                 combine(&mut p, start + 1, (&a, &b), (&q, g), order, &mut buf, (&mut spare, &mut lifted));
                 std::mem::swap(&mut p, &mut buf);
                 if a != 1 {
@@ -407,7 +423,7 @@ pub(crate) fn reduce_in_buckets(
     p: DPoly,
     rem: DPoly,
     scale: Rational,
-    sugar: u32,
+    sugar: u64,
     divisors: &[Reducer<'_>],
     order: MonomialOrder,
     meter: &mut Meter,
@@ -430,7 +446,7 @@ pub(crate) struct BucketRun<R> {
     pub(crate) lambda: Rational,
     pub(crate) segs: Vec<(usize, Rational)>,
     pub(crate) changed: bool,
-    pub(crate) sugar: u32,
+    pub(crate) sugar: u64,
     pub(crate) steps: u32,
 }
 
@@ -468,16 +484,16 @@ pub(crate) fn continue_in_buckets(
         // The work held, its leading term included (as the merges count it), and the remainder.
         meter.check(work.terms() + 1 + run.rem.len())?;
         match find_divisor(divisors, &mono) {
-            Some((g, g_sugar)) => {
+            Some(r) => {
+                let g = r.poly;
                 let d = Integer::from(c.gcd_ref(g.lc()));
                 let (mut a, mut b) = (Integer::from(g.lc().div_exact_ref(&d)), Integer::from(c.div_exact_ref(&d)));
                 if a.is_negative() {
                     a = -a;
                     b = -b;
                 }
-                q.clear();
-                q.extend(mono.iter().zip(g.lm()).map(|(x, y)| x - y));
-                run.sugar = run.sugar.max(q[0] + g_sugar);
+                order::quotient_into(&mut q, g.lm(), &mono);
+                run.sugar = run.sugar.max(step_sugar(&q, r, meter)?);
                 if a != 1 {
                     work.scale(&a);
                     run.lambda /= &a;
@@ -509,7 +525,7 @@ pub(crate) fn continue_in_buckets(
 
 /// A polynomial with rational coefficients for the textbook division (quotients are needed
 /// over Q there), terms by decreasing monomial.
-type RPoly = Vec<(Vec<u32>, Rational)>;
+type RPoly = Vec<(Vec<Word>, Rational)>;
 
 fn rational(p: &DPoly, den: &Integer) -> RPoly {
     (0..p.len()).map(|i| (p.mono(i).to_vec(), Rational::from((p.coefs[i].clone(), den.clone())))).collect()
@@ -519,7 +535,7 @@ fn rational(p: &DPoly, den: &Integer) -> RPoly {
 fn sub_mul(p: &RPoly, c: &Rational, q: &Mono, g: &RPoly, order: MonomialOrder) -> RPoly {
     let mut out = Vec::with_capacity(p.len() + g.len());
     let (mut i, mut j) = (1, 1);
-    let lift = |j: usize| -> (Vec<u32>, Rational) {
+    let lift = |j: usize| -> (Vec<Word>, Rational) {
         let mut m = Vec::new();
         order::mul_into(&mut m, q, &g[j].0);
         (m, Rational::from(c * &g[j].1))
@@ -568,8 +584,12 @@ impl PolyRing {
         let (fd, fden) = self.to_dense(f)?;
         let mut p = rational(&fd, &fden);
         let mut gs: Vec<RPoly> = Vec::with_capacity(divisors.len());
+        // the largest degree of each divisor's terms: a step's products stay within
+        // `order::MAX_DEGREE` (see `step_sugar`)
+        let mut tops = Vec::with_capacity(divisors.len());
         for g in divisors {
             let (d, den) = self.to_dense(g)?;
+            tops.push(d.top());
             gs.push(rational(&d, &den));
         }
         let mut qs: Vec<RPoly> = vec![Vec::new(); gs.len()];
@@ -580,6 +600,9 @@ impl PolyRing {
             match gs.iter().position(|g| !g.is_empty() && order::divides(&g[0].0, &lead.0)) {
                 Some(k) => {
                     let q = order::quotient(&gs[k][0].0, &lead.0);
+                    if q[0] + tops[k] > order::MAX_DEGREE {
+                        return Err(meter.degree_limit());
+                    }
                     let c = Rational::from(&lead.1 / &gs[k][0].1);
                     p = sub_mul(&p, &c, &q, &gs[k], self.order());
                     qs[k].push((q, c));

@@ -1,11 +1,11 @@
 //! Buchberger's algorithm with Gebauer–Möller's installation of the product and chain
 //! criteria, the sugar selection strategy, the basis tail-reduced once per sugar degree, and the
 //! final reduction to the unique reduced basis; fraction-free (primitive integer polynomials,
-//! S-polynomials and reductions by integer multiples, content removed) on flat exponent
-//! vectors.
+//! S-polynomials and reductions by integer multiples, content removed) on packed
+//! monomials.
 
 use super::division::{Reducer, reduce, s_poly};
-use super::order;
+use super::order::{self, Word};
 use super::small::{self, small_coefs};
 use super::{Budget, DPoly, IdealError, Meter, PolyRing};
 use crate::poly::Poly;
@@ -39,18 +39,20 @@ pub struct GroebnerBasis {
 struct Pair {
     i: usize,
     j: usize,
-    lcm: Vec<u32>,
+    lcm: Vec<Word>,
     /// `order::mask(lcm)`: most divisibility tests of the criteria fail on it.
     mask: u64,
-    sugar: u32,
+    sugar: u64,
 }
 
 struct State<'r> {
     ring: &'r PolyRing,
     polys: Vec<DPoly>,
-    sugar: Vec<u32>,
+    sugar: Vec<u64>,
     /// The variable mask of each leading monomial (`order::mask`), computed once.
     masks: Vec<u64>,
+    /// The largest degree of each element's terms (`DPoly::top`), computed once.
+    tops: Vec<u64>,
     /// Each element's coefficients as machine words, when all fit (`super::small`).
     small: Vec<Option<Vec<i64>>>,
     active: Vec<bool>,
@@ -62,7 +64,7 @@ struct State<'r> {
     /// Terms of the active polynomials together (the memory budget of the basis).
     terms: usize,
     /// The update's candidate lcms and candidates, kept between updates for their capacity.
-    scratch: (Vec<u32>, Vec<Cand>),
+    scratch: (Vec<Word>, Vec<Cand>),
 }
 
 /// A candidate new pair `(i, k)` of the update: `i`, the offset of its lcm in the lcm buffer,
@@ -78,7 +80,7 @@ pub(super) type Cand = (usize, usize, bool, u64);
 /// the monomial order: a proper divisor has a smaller degree and equal lcms keep their order,
 /// so the kept set is the same, without comparing whole lcms (that sort was an eighth of
 /// Jüttler's Prop. 4).
-pub(super) fn chain_among_new(cands: &mut [Cand], lcms: &[u32], w: usize) -> usize {
+pub(super) fn chain_among_new(cands: &mut [Cand], lcms: &[Word], w: usize) -> usize {
     let lcm_of = |at: usize| &lcms[at..at + w];
     cands.sort_by_key(|c| (lcms[c.1], !c.2));
     // Kept in place: the first `kept` candidates.
@@ -106,6 +108,7 @@ impl State<'_> {
                 mask: self.masks[i],
                 poly: &self.polys[i],
                 sugar: self.sugar[i],
+                top: self.tops[i],
                 small: self.small[i].as_deref(),
             })
             .collect()
@@ -176,6 +179,14 @@ impl State<'_> {
         self.terms += self.polys[k].len();
     }
 
+    /// [`Limit::Degree`](super::Limit::Degree) when the S-polynomial of `p` would form a
+    /// product of degree above [`order::MAX_DEGREE`] (`deg(lcm/lm f) + top(f)`; under grevlex
+    /// this is the lcm's degree).
+    fn check_degree(&self, p: &Pair, meter: &Meter) -> Result<(), IdealError> {
+        let over = |i: usize| p.lcm[0] - self.polys[i].lm()[0] + self.tops[i] > order::MAX_DEGREE;
+        if over(p.i) || over(p.j) { Err(meter.degree_limit()) } else { Ok(()) }
+    }
+
     /// The S-polynomial `(lc g/d)(lcm/lm f) f - (lc f/d)(lcm/lm g) g`, `d = gcd(lc f, lc g)`.
     fn spoly(&self, p: &Pair) -> DPoly {
         let (f, g) = (&self.polys[p.i], &self.polys[p.j]);
@@ -225,6 +236,7 @@ impl State<'_> {
                     mask: self.masks[j],
                     poly: &self.polys[j],
                     sugar: 0,
+                    top: self.tops[j],
                     small: self.small[j].as_deref(),
                 })
                 .collect();
@@ -233,15 +245,17 @@ impl State<'_> {
                 self.terms = self.terms + h.len() - g.len();
             }
             self.small[i] = small_coefs(&h);
+            self.tops[i] = h.top();
             self.polys[i] = h;
         }
         Ok(())
     }
 
-    fn add(&mut self, mut h: DPoly, sugar: u32, meter: &Meter) -> Result<usize, IdealError> {
+    fn add(&mut self, mut h: DPoly, sugar: u64, meter: &Meter) -> Result<usize, IdealError> {
         h.make_primitive();
         meter.check_basis(self.active.iter().filter(|a| **a).count() + 1, self.terms + h.len())?;
         self.masks.push(order::mask(h.lm()));
+        self.tops.push(h.top());
         self.small.push(small_coefs(&h));
         self.polys.push(h);
         self.sugar.push(sugar);
@@ -266,6 +280,7 @@ impl PolyRing {
             polys: Vec::new(),
             sugar: Vec::new(),
             masks: Vec::new(),
+            tops: Vec::new(),
             small: Vec::new(),
             active: Vec::new(),
             pairs: Vec::new(),
@@ -299,6 +314,7 @@ impl PolyRing {
                 st.reduce_tails(meter)?;
             }
             let pair = st.pairs.pop().expect("non-empty pair list");
+            st.check_degree(&pair, meter)?;
             let reducers = st.reducers();
             let words = match st.small_spoly(&pair) {
                 Some(s) if reducers.iter().all(|d| d.small.is_some()) => Some(s),
@@ -351,7 +367,13 @@ fn interreduce(mut gens: Vec<DPoly>, ring: &PolyRing, meter: &mut Meter) -> Resu
         }
         let others: Vec<Reducer<'_>> = (0..gens.len())
             .filter(|&j| j != i)
-            .map(|j| Reducer { mask: masks[j], poly: &gens[j], sugar: 0, small: small[j].as_deref() })
+            .map(|j| Reducer {
+                mask: masks[j],
+                poly: &gens[j],
+                sugar: 0,
+                top: gens[j].top(),
+                small: small[j].as_deref(),
+            })
             .collect();
         out.push(with_tail_reduced(g, small[i].as_deref(), &others, ring.order(), meter)?);
     }
@@ -491,7 +513,7 @@ impl GroebnerBasis {
     pub fn eliminate(&self, k: usize) -> Vec<Poly> {
         self.basis
             .iter()
-            .filter(|p| (0..p.len()).all(|i| p.mono(i)[1..=k.min(p.w - 1)].iter().all(|e| *e == 0)))
+            .filter(|p| (0..p.len()).all(|i| (0..k).all(|v| order::exponent(p.mono(i), v) == 0)))
             .map(|p| self.ring.to_poly(p, &Rational::from(p.lc())))
             .collect()
     }

@@ -1,7 +1,7 @@
 //! Polynomial ideals over the rationals for [`Poly`]: monomial orders, division with remainder
 //! by a list, reduced Gröbner bases (Buchberger with the Gebauer–Möller criteria and the sugar
 //! selection strategy, the basis kept tail-reduced per sugar degree, fraction-free over the
-//! integers on flat exponent vectors, long reductions in geobuckets; see docs/verification.md),
+//! integers on packed monomials, long reductions in geobuckets; see docs/verification.md),
 //! normal forms, ideal membership, non-vanishing hypotheses by the Rabinowitsch trick, and
 //! elimination of variables.
 //!
@@ -35,7 +35,7 @@ pub use hypotheses::{Decision, Hypotheses, decide};
 pub use order::MonomialOrder;
 
 use crate::poly::Poly;
-use order::Mono;
+use order::{Mono, Packing, Word};
 use rug::{Integer, Rational};
 use std::collections::HashMap;
 use std::fmt;
@@ -76,6 +76,9 @@ pub enum Limit {
     BasisSize,
     /// The terms-per-polynomial limit.
     Terms,
+    /// A total degree above the engine's largest, 32767: exponents are 16-bit fields of
+    /// packed monomials (a polynomial or a product formed on the way would exceed it).
+    Degree,
 }
 
 /// Errors of the ideal computations.
@@ -95,6 +98,11 @@ pub enum IdealError {
 impl fmt::Display for IdealError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
+            IdealError::Undecided { limit: Limit::Degree, elapsed_ms } => write!(
+                f,
+                "undecided within budget: degree limit reached after {elapsed_ms} ms (total degrees up to {})",
+                order::MAX_DEGREE
+            ),
             IdealError::Undecided { limit, elapsed_ms } => {
                 write!(f, "undecided within budget: {limit} limit reached after {elapsed_ms} ms")
             }
@@ -111,6 +119,7 @@ impl fmt::Display for Limit {
             Limit::Time => "time",
             Limit::BasisSize => "basis size",
             Limit::Terms => "term count",
+            Limit::Degree => "degree",
         })
     }
 }
@@ -129,6 +138,11 @@ impl Meter {
 
     fn fail(&self, limit: Limit) -> IdealError {
         IdealError::Undecided { limit, elapsed_ms: self.start.elapsed().as_millis() }
+    }
+
+    /// [`Limit::Degree`]: a product would pass [`order::MAX_DEGREE`].
+    pub(crate) fn degree_limit(&self) -> IdealError {
+        self.fail(Limit::Degree)
     }
 
     /// Checks the time (every call is cheap: the clock is read every 64th call) and a size.
@@ -164,12 +178,12 @@ impl Meter {
 }
 
 /// A polynomial with integer coefficients, its monomials stored flat (`w` words each: the
-/// degree, then the exponents; see [`order::Mono`]) by decreasing monomial. The Gröbner
+/// degree, then the packed exponents; see [`order::Packing`]) by decreasing monomial. The Gröbner
 /// engine works fraction-free: a polynomial over Q is kept as a primitive integer multiple.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub(crate) struct DPoly {
     pub(crate) w: usize,
-    pub(crate) exps: Vec<u32>,
+    pub(crate) exps: Vec<Word>,
     pub(crate) coefs: Vec<Integer>,
 }
 
@@ -196,6 +210,11 @@ impl DPoly {
 
     pub(crate) fn lc(&self) -> &Integer {
         &self.coefs[0]
+    }
+
+    /// The largest degree of a term (the leading term's under grevlex), 0 for zero.
+    pub(crate) fn top(&self) -> u64 {
+        self.exps.chunks_exact(self.w).map(|m| m[0]).max().unwrap_or(0)
     }
 
     pub(crate) fn push(&mut self, m: &Mono, c: Integer) {
@@ -317,9 +336,14 @@ impl PolyRing {
         Ok((!d.is_zero()).then(|| self.to_poly(&d.head(), &Rational::from(den))))
     }
 
-    /// Words per monomial: the degree and one exponent per variable.
+    /// Words per monomial: the degree and the packed exponents.
     pub(crate) fn width(&self) -> usize {
-        self.vars.len() + 1
+        self.packing().w
+    }
+
+    /// The packed layout of the ring's monomials.
+    pub(crate) fn packing(&self) -> Packing {
+        Packing::new(self.vars.len())
     }
 
     /// The variable of an interned id.
@@ -373,18 +397,22 @@ impl PolyRing {
         Ok(Some((sorted, words)))
     }
 
-    /// The terms of `p` (see [`Terms`]).
+    /// The terms of `p` (see [`Terms`]); [`Limit::Degree`] for a degree above
+    /// [`order::MAX_DEGREE`].
     fn sorted_terms<'p>(&self, p: &'p Poly) -> Result<Terms<'p>, IdealError> {
-        let w = self.width();
+        let packing = self.packing();
+        let w = packing.w;
         let n = p.term_count();
-        let mut exps = vec![0u32; n * w];
+        let mut exps = vec![0; n * w];
         let mut coefs: Vec<&Rational> = Vec::with_capacity(n);
         let mut den = Integer::from(1);
         for (t, (m, c)) in p.id_terms().enumerate() {
             let e = &mut exps[t * w..(t + 1) * w];
             for &(id, k) in m {
-                e[self.variable_of(id)? + 1] += k;
-                e[0] += k;
+                packing.add_exponent(e, self.variable_of(id)?, k);
+            }
+            if e[0] > order::MAX_DEGREE {
+                return Err(IdealError::Undecided { limit: Limit::Degree, elapsed_ms: 0 });
             }
             if *c.denom() != 1 {
                 den.lcm_mut(c.denom());
@@ -392,28 +420,21 @@ impl PolyRing {
             coefs.push(c);
         }
         let mut order: Vec<usize> = (0..coefs.len()).collect();
-        // (below 32 terms building the keys costs more than the comparisons they save)
-        match if n >= 32 { self.order.sort_keys(&exps, w) } else { None } {
-            // a few word comparisons per pair instead of a scan of the monomials (a claim of
-            // the 3-pose Study quadric: 192 terms of one degree in 24 variables, where the
-            // word-by-word scan of the exponents made the sort a third of the proof)
-            Some((keys, kw)) => {
-                let key = |t: usize| &keys[t * kw..(t + 1) * kw];
-                order.sort_unstable_by(|&a, &b| key(b).cmp(key(a)));
-            }
-            None => {
-                let mono = |t: usize| &exps[t * w..(t + 1) * w];
-                order.sort_unstable_by(|&a, &b| self.order.cmp(mono(b), mono(a)));
-            }
-        }
+        // (grevlex on packed monomials: the degree word, then four exponents per word)
+        let mono = |t: usize| &exps[t * w..(t + 1) * w];
+        order.sort_unstable_by(|&a, &b| self.order.cmp(mono(b), mono(a)));
         Ok(Terms { exps, coefs, order, den })
     }
 
     /// `p / divisor` as a [`Poly`].
     pub(crate) fn to_poly(&self, p: &DPoly, divisor: &Rational) -> Poly {
         Poly::from_id_terms((0..p.len()).map(|i| {
-            let mut m: Vec<(u32, u32)> =
-                p.mono(i)[1..].iter().enumerate().filter(|(_, e)| **e > 0).map(|(v, e)| (self.ids[v], *e)).collect();
+            let mono = p.mono(i);
+            let mut m: Vec<(u32, u32)> = (0..self.vars.len())
+                .map(|v| (v, order::exponent(mono, v)))
+                .filter(|(_, e)| *e > 0)
+                .map(|(v, e)| (self.ids[v], e))
+                .collect();
             m.sort_unstable();
             let c = if *divisor == 1 { Rational::from(&p.coefs[i]) } else { Rational::from(&p.coefs[i]) / divisor };
             (m, c)
@@ -422,13 +443,13 @@ impl PolyRing {
 }
 
 /// Monomials (`w` words each, decreasing) and machine-word coefficients.
-pub(crate) type Words = (Vec<u32>, Vec<i64>);
+pub(crate) type Words = (Vec<Word>, Vec<i64>);
 
 /// The terms of a [`Poly`] in a ring's exponent vectors.
 struct Terms<'p> {
-    /// Exponent vectors side by side in one buffer (no allocation per term), in the order of
+    /// Packed monomials side by side in one buffer (no allocation per term), in the order of
     /// the `Poly`'s terms.
-    exps: Vec<u32>,
+    exps: Vec<Word>,
     /// The coefficients, in the same order.
     coefs: Vec<&'p Rational>,
     /// The term indices by decreasing monomial (monomials of a [`Poly`] are distinct, so the

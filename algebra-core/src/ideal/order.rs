@@ -1,4 +1,6 @@
-//! Monomial orders on exponent vectors: lex, grevlex, and the block (elimination) order.
+//! Monomial orders on packed monomials (lex, grevlex, the block (elimination) order) and the
+//! packed layout itself: degree word, 16-bit exponent fields, word-parallel divisibility,
+//! lcm and coprimality.
 
 use std::cmp::Ordering;
 
@@ -32,14 +34,67 @@ pub enum MonomialOrder {
     },
 }
 
-/// Monomials are exponent slices `[degree, e_0, ..., e_{n-1}]` (the total degree first, so
-/// that graded orders decide most comparisons on one word), stored flat in each polynomial
-/// (`super::DPoly`): no allocation per term.
-pub(crate) type Mono = [u32];
+/// One word of a packed monomial.
+pub(crate) type Word = u64;
+
+/// Monomials are packed words `[degree, ...]` (see [`Packing`]), stored flat in each polynomial
+/// (`super::DPoly`): no allocation per term, a few words per monomial, and grevlex compares
+/// four exponents per word comparison.
+pub(crate) type Mono = [Word];
+
+/// The largest total degree (and so exponent) of a monomial the engine represents: exponents
+/// are 16-bit fields with a guard bit, so that divisibility, lcm and coprimality are a few word
+/// operations per four variables. A computation that would form a larger degree stops with
+/// [`super::Limit::Degree`].
+pub(crate) const MAX_DEGREE: u64 = 0x7FFF;
+
+/// The guard bit of each 16-bit field.
+const HIGH: u64 = 0x8000_8000_8000_8000;
+/// The value bits of each field.
+const LOW: u64 = 0x7FFF_7FFF_7FFF_7FFF;
+
+/// The packed layout of a ring's monomials: word 0 the total degree, then the exponents in
+/// 16-bit fields, four per word, variable `i` in word `w - 1 - i / 4` at bit `16 (i % 4)`. The
+/// last variable sits in the most significant field of word 1, so that after the degree,
+/// comparing the words as integers (the smaller leading) is the reverse lexicographic tie-break
+/// of grevlex; unused fields are 0. Every field is at most [`MAX_DEGREE`] (bit 15 clear), so
+/// sums of two fields never carry into the next and the guard bit of `(b | HIGH) - a` tells
+/// `a <= b` field by field.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct Packing {
+    /// Words per monomial.
+    pub(crate) w: usize,
+}
+
+impl Packing {
+    /// The layout for `n` variables.
+    pub(crate) fn new(n: usize) -> Self {
+        Packing { w: 1 + n.div_ceil(4) }
+    }
+
+    /// Adds `k` to the exponent of variable `i` in `m` (and to its degree). Fields may carry
+    /// past [`MAX_DEGREE`] here: the caller rejects the monomial by its degree afterwards.
+    #[inline]
+    pub(crate) fn add_exponent(&self, m: &mut [Word], i: usize, k: u32) {
+        let at = self.w - 1 - i / 4;
+        m[at] = m[at].wrapping_add(u64::from(k) << (16 * (i % 4)));
+        m[0] += u64::from(k);
+    }
+}
+
+/// The exponent of variable `i` in `m` (0 past the ring's variables).
+#[inline]
+pub(crate) fn exponent(m: &Mono, i: usize) -> u32 {
+    let w = m.len();
+    if i / 4 + 1 >= w {
+        return 0;
+    }
+    ((m[w - 1 - i / 4] >> (16 * (i % 4))) & 0xFFFF) as u32
+}
 
 /// `out := a * b`.
 #[inline]
-pub(crate) fn mul_into(out: &mut Vec<u32>, a: &Mono, b: &Mono) {
+pub(crate) fn mul_into(out: &mut Vec<Word>, a: &Mono, b: &Mono) {
     out.clear();
     out.extend(a.iter().zip(b).map(|(x, y)| x + y));
 }
@@ -47,44 +102,74 @@ pub(crate) fn mul_into(out: &mut Vec<u32>, a: &Mono, b: &Mono) {
 /// `a | b`.
 #[inline]
 pub(crate) fn divides(a: &Mono, b: &Mono) -> bool {
-    a.iter().zip(b).all(|(x, y)| x <= y)
+    a[0] <= b[0] && a[1..].iter().zip(&b[1..]).all(|(x, y)| ((y | HIGH) - x) & HIGH == HIGH)
 }
 
 /// `b / a`, assuming `a | b`.
-pub(crate) fn quotient(a: &Mono, b: &Mono) -> Vec<u32> {
+pub(crate) fn quotient(a: &Mono, b: &Mono) -> Vec<Word> {
     b.iter().zip(a).map(|(x, y)| x - y).collect()
 }
 
-/// Appends `lcm(a, b)` to `out` (a buffer of monomials side by side).
+/// `q := b / a`, assuming `a | b`.
 #[inline]
-pub(crate) fn lcm_into(out: &mut Vec<u32>, a: &Mono, b: &Mono) {
+pub(crate) fn quotient_into(q: &mut Vec<Word>, a: &Mono, b: &Mono) {
+    q.clear();
+    q.extend(b.iter().zip(a).map(|(x, y)| x - y));
+}
+
+/// The larger of each pair of fields.
+#[inline]
+fn field_max(x: u64, y: u64) -> u64 {
+    let ge = ((x | HIGH) - y) & HIGH;
+    let pick = (ge >> 15) * 0xFFFF;
+    (x & pick) | (y & !pick)
+}
+
+/// The sum of a word's four fields.
+#[inline]
+fn field_sum(x: u64) -> u64 {
+    (x & 0xFFFF) + ((x >> 16) & 0xFFFF) + ((x >> 32) & 0xFFFF) + (x >> 48)
+}
+
+/// The guard bit of each non-zero field.
+#[inline]
+fn nonzero(x: u64) -> u64 {
+    (x + LOW) & HIGH
+}
+
+/// Appends `lcm(a, b)` to `out` (a buffer of monomials side by side). The lcm of two monomials
+/// of the engine is one (its fields are the larger of two valid fields); its degree may exceed
+/// [`MAX_DEGREE`], which the pair's sugar check catches.
+#[inline]
+pub(crate) fn lcm_into(out: &mut Vec<Word>, a: &Mono, b: &Mono) {
     let at = out.len();
     out.push(0);
-    out.extend(a[1..].iter().zip(&b[1..]).map(|(x, y)| *x.max(y)));
-    out[at] = out[at + 1..].iter().sum();
+    out.extend(a[1..].iter().zip(&b[1..]).map(|(x, y)| field_max(*x, *y)));
+    out[at] = out[at + 1..].iter().map(|&x| field_sum(x)).sum();
 }
 
 /// `lcm(a, b) == l`, without building the lcm.
 #[inline]
 pub(crate) fn lcm_is(a: &Mono, b: &Mono, l: &Mono) -> bool {
-    a[1..].iter().zip(&b[1..]).zip(&l[1..]).all(|((x, y), z)| x.max(y) == z)
+    a[1..].iter().zip(&b[1..]).zip(&l[1..]).all(|((x, y), z)| field_max(*x, *y) == *z)
 }
 
 /// No variable occurs in both.
 pub(crate) fn coprime(a: &Mono, b: &Mono) -> bool {
-    a[1..].iter().zip(&b[1..]).all(|(x, y)| *x == 0 || *y == 0)
+    a[1..].iter().zip(&b[1..]).all(|(x, y)| nonzero(*x) & nonzero(*y) == 0)
 }
 
 /// Bit `i % 64` set when variable `i` occurs: a cheap necessary test for divisibility.
 #[inline]
 pub(crate) fn mask(a: &Mono) -> u64 {
-    a[1..].iter().enumerate().filter(|(_, e)| **e > 0).fold(0, |m, (i, _)| m | 1 << (i % 64))
-}
-
-/// Graded reverse lexicographic comparison of two exponent vectors (no degree word).
-fn grevlex(a: &[u32], b: &[u32]) -> Ordering {
-    let (da, db): (u64, u64) = (a.iter().map(|&x| u64::from(x)).sum(), b.iter().map(|&x| u64::from(x)).sum());
-    da.cmp(&db).then_with(|| reverse_lex(a, b))
+    let w = a.len();
+    let mut m = 0u64;
+    for (k, &x) in a.iter().enumerate().skip(1) {
+        let b = nonzero(x);
+        let bits = ((b >> 15) & 1) | ((b >> 30) & 2) | ((b >> 45) & 4) | ((b >> 60) & 8);
+        m |= bits.rotate_left((4 * (w - 1 - k) % 64) as u32);
+    }
+    m
 }
 
 /// Grevlex on monomials with their degree word.
@@ -93,15 +178,30 @@ fn grevlex_cmp(a: &Mono, b: &Mono) -> Ordering {
     a[0].cmp(&b[0]).then_with(|| reverse_lex(&a[1..], &b[1..]))
 }
 
-/// On equal degrees: the smaller exponent of the last variable where they differ wins.
+/// On equal degrees: the smaller exponent of the last variable where they differ wins (the
+/// last variable is the most significant field: the smaller word wins).
 #[inline(always)]
-fn reverse_lex(a: &[u32], b: &[u32]) -> Ordering {
-    for (x, y) in a.iter().zip(b).rev() {
+fn reverse_lex(a: &[Word], b: &[Word]) -> Ordering {
+    for (x, y) in a.iter().zip(b) {
         if x != y {
             return y.cmp(x);
         }
     }
     Ordering::Equal
+}
+
+/// Grevlex on the variables `range` alone, read field by field (the block orders).
+fn block_grevlex(a: &Mono, b: &Mono, range: std::ops::Range<usize>) -> Ordering {
+    let deg = |m: &Mono| range.clone().map(|i| u64::from(exponent(m, i))).sum::<u64>();
+    deg(a).cmp(&deg(b)).then_with(|| {
+        for i in range.clone().rev() {
+            let (x, y) = (exponent(a, i), exponent(b, i));
+            if x != y {
+                return y.cmp(&x);
+            }
+        }
+        Ordering::Equal
+    })
 }
 
 impl MonomialOrder {
@@ -115,50 +215,106 @@ impl MonomialOrder {
         }
     }
 
-    /// Keys that order like `self` (`w` words per monomial in `exps`, the degree first), `kw`
-    /// words per monomial, for grevlex: the degree's four bytes, then `255 - e` for the
-    /// exponents from the last variable to the first, packed big-endian into `u64` words, so
-    /// that comparing two keys word by word compares the degrees, then finds the last variable
-    /// where the exponents differ, the smaller exponent leading ([`grevlex_cmp`]). `None` for
-    /// the other orders and for a degree above 255. Returns the keys and `kw`.
-    pub(crate) fn sort_keys(&self, exps: &[u32], w: usize) -> Option<(Vec<u64>, usize)> {
-        // an exponent is at most its monomial's degree: one test per monomial
-        if *self != MonomialOrder::GrevLex || exps.chunks_exact(w).any(|m| m[0] > 255) {
-            return None;
-        }
-        let kw = (w + 3).div_ceil(8);
-        let mut keys = Vec::with_capacity(exps.len() / w * kw);
-        let mut bytes = vec![0u8; kw * 8];
-        for m in exps.chunks_exact(w) {
-            bytes[..4].copy_from_slice(&m[0].to_be_bytes());
-            for (b, &e) in bytes[4..].iter_mut().zip(m[1..].iter().rev()) {
-                // `e <= degree <= 255`
-                *b = 255 - e as u8;
-            }
-            keys.extend(bytes.chunks_exact(8).map(|c| u64::from_be_bytes(c.try_into().expect("8 bytes"))));
-        }
-        Some((keys, kw))
-    }
-
     #[inline(never)]
     fn cmp_other(&self, a: &Mono, b: &Mono) -> Ordering {
         match *self {
-            MonomialOrder::Lex => a[1..].cmp(&b[1..]),
+            MonomialOrder::Lex => lex_cmp(a, b),
             MonomialOrder::GrevLex => grevlex_cmp(a, b),
             MonomialOrder::Elimination { first } => {
-                let k = (first + 1).min(a.len());
-                grevlex(&a[1..k], &b[1..k]).then_with(|| grevlex(&a[k..], &b[k..]))
+                let all = 4 * (a.len() - 1);
+                let first = first.min(all);
+                block_grevlex(a, b, 0..first).then_with(|| block_grevlex(a, b, first..all))
             }
         }
     }
+}
+
+/// Lex: the larger exponent of the first variable where they differ wins (the first variable
+/// is the least significant field of the last word).
+fn lex_cmp(a: &Mono, b: &Mono) -> Ordering {
+    for (x, y) in a[1..].iter().zip(&b[1..]).rev() {
+        if x != y {
+            for s in 0..4 {
+                let (fx, fy) = ((x >> (16 * s)) & 0xFFFF, (y >> (16 * s)) & 0xFFFF);
+                if fx != fy {
+                    return fx.cmp(&fy);
+                }
+            }
+        }
+    }
+    Ordering::Equal
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    fn m(e: &[u32]) -> Vec<u32> {
-        std::iter::once(e.iter().sum()).chain(e.iter().copied()).collect()
+    /// The packed monomial of the exponents `e`.
+    fn m(e: &[u32]) -> Vec<Word> {
+        let p = Packing::new(e.len());
+        let mut out = vec![0; p.w];
+        for (i, &k) in e.iter().enumerate() {
+            p.add_exponent(&mut out, i, k);
+        }
+        out
+    }
+
+    /// The reference orders on plain exponent vectors (the textbook definitions).
+    fn reference(order: MonomialOrder, a: &[u32], b: &[u32]) -> Ordering {
+        let grevlex = |a: &[u32], b: &[u32]| {
+            let d = |v: &[u32]| v.iter().map(|&x| u64::from(x)).sum::<u64>();
+            d(a).cmp(&d(b))
+                .then_with(|| a.iter().zip(b).rev().find(|(x, y)| x != y).map_or(Ordering::Equal, |(x, y)| y.cmp(x)))
+        };
+        match order {
+            MonomialOrder::Lex => a.cmp(b),
+            MonomialOrder::GrevLex => grevlex(a, b),
+            MonomialOrder::Elimination { first } => {
+                let k = first.min(a.len());
+                grevlex(&a[..k], &b[..k]).then_with(|| grevlex(&a[k..], &b[k..]))
+            }
+        }
+    }
+
+    /// Every packed operation against its definition on plain exponent vectors: random
+    /// monomials in 1 to 13 variables (one to four words, padding fields included), exponents
+    /// small (so that many compare equal field by field) or up to the limit.
+    #[test]
+    fn packed_operations_match_their_definitions() {
+        let mut rng = crate::test_support::Xorshift(0x5EED_0FFA_C701_2500);
+        for case in 0..4000 {
+            let n = 1 + (rng.next_u64() % 13) as usize;
+            let top = if case % 5 == 0 { MAX_DEGREE / n as u64 } else { 3 };
+            let mut exps = || -> Vec<u32> { (0..n).map(|_| (rng.next_u64() % (top + 1)) as u32).collect() };
+            let (a, b) = (exps(), exps());
+            let (pa, pb) = (m(&a), m(&b));
+            for (i, &e) in a.iter().enumerate() {
+                assert_eq!(exponent(&pa, i), e);
+            }
+            for order in [MonomialOrder::Lex, MonomialOrder::GrevLex, MonomialOrder::Elimination { first: n / 2 }] {
+                assert_eq!(order.cmp(&pa, &pb), reference(order, &a, &b), "{order:?} {a:?} {b:?}");
+            }
+            let divides_ref = a.iter().zip(&b).all(|(x, y)| x <= y);
+            assert_eq!(divides(&pa, &pb), divides_ref, "{a:?} | {b:?}");
+            let l: Vec<u32> = a.iter().zip(&b).map(|(x, y)| *x.max(y)).collect();
+            let mut buf = Vec::new();
+            lcm_into(&mut buf, &pa, &pb);
+            assert_eq!(buf, m(&l));
+            assert!(lcm_is(&pa, &pb, &m(&l)));
+            assert_eq!(coprime(&pa, &pb), a.iter().zip(&b).all(|(x, y)| *x == 0 || *y == 0));
+            let bits = a.iter().enumerate().filter(|(_, e)| **e > 0).fold(0u64, |k, (i, _)| k | 1 << (i % 64));
+            assert_eq!(mask(&pa), bits);
+            let mut prod = Vec::new();
+            mul_into(&mut prod, &pa, &pb);
+            assert_eq!(prod, m(&a.iter().zip(&b).map(|(x, y)| x + y).collect::<Vec<_>>()));
+            if divides_ref {
+                assert_eq!(quotient(&pa, &pb), m(&a.iter().zip(&b).map(|(x, y)| y - x).collect::<Vec<_>>()));
+            }
+        }
+        // Past 16 words the variable mask wraps: variable 70 is bit 6.
+        let mut wide = vec![0; 71];
+        wide[70] = 1;
+        assert_eq!(mask(&m(&wide)), 1 << 6);
     }
 
     #[test]
@@ -181,7 +337,7 @@ mod tests {
         let mut buf = vec![7];
         lcm_into(&mut buf, &m(&[2, 0, 1]), &m(&[1, 3, 0]));
         lcm_into(&mut buf, &m(&[0, 0, 0]), &m(&[0, 1, 0]));
-        assert_eq!(buf, [7, 6, 2, 3, 1, 1, 0, 1, 0]);
-        assert!(lcm_is(&m(&[2, 0, 1]), &m(&[1, 3, 0]), &buf[1..5]));
+        assert_eq!(buf, [7, 6, 0x0001_0003_0002, 1, 0x0001_0000]);
+        assert!(lcm_is(&m(&[2, 0, 1]), &m(&[1, 3, 0]), &buf[1..3]));
     }
 }

@@ -8,8 +8,8 @@
 //! [`super::division::LONG_WORK`] terms continues in geobuckets over machine words
 //! ([`super::small_bucket`]) from where it is, and those over GMP from their first overflow.
 
-use super::division::{LONG_WORK, Reduced, Reducer, Side, merge_lifted_tails, reduce_from};
-use super::order::{self, Mono};
+use super::division::{LONG_WORK, Reduced, Reducer, Side, merge_lifted_tails, reduce_from, step_sugar};
+use super::order::{self, Mono, Word};
 use super::small_bucket::reduce_in_word_buckets;
 use super::{DPoly, IdealError, Meter, MonomialOrder};
 use rug::{Integer, Rational};
@@ -62,7 +62,7 @@ pub(crate) fn gcd(mut a: u64, mut b: u64) -> u64 {
 
 /// A polynomial with machine-word coefficients (the layout of [`DPoly`]).
 pub(crate) struct Work {
-    exps: Vec<u32>,
+    exps: Vec<Word>,
     coefs: Vec<i64>,
 }
 
@@ -97,12 +97,12 @@ pub(crate) fn s_poly(
 
 impl Work {
     /// The polynomial with these monomials (`w` words each, decreasing) and coefficients.
-    pub(crate) fn new(exps: Vec<u32>, coefs: Vec<i64>) -> Self {
+    pub(crate) fn new(exps: Vec<Word>, coefs: Vec<i64>) -> Self {
         Work { exps, coefs }
     }
 
     /// The monomials and the coefficients.
-    pub(crate) fn into_parts(self) -> (Vec<u32>, Vec<i64>) {
+    pub(crate) fn into_parts(self) -> (Vec<Word>, Vec<i64>) {
         (self.exps, self.coefs)
     }
 
@@ -166,7 +166,7 @@ fn combine(
     w: usize,
     order: MonomialOrder,
     out: &mut Work,
-    lifted: &mut Vec<u32>,
+    lifted: &mut Vec<Word>,
 ) -> Option<()> {
     out.exps.clear();
     out.coefs.clear();
@@ -194,7 +194,7 @@ fn combine_resume(
     w: usize,
     order: MonomialOrder,
     out: &mut Work,
-    lifted: &mut Vec<u32>,
+    lifted: &mut Vec<Word>,
 ) -> Option<()> {
     out.exps.clear();
     out.coefs.clear();
@@ -242,7 +242,7 @@ fn merge_from<const DROP_ZEROS: bool>(
     w: usize,
     order: MonomialOrder,
     out: &mut Work,
-    lifted: &mut Vec<u32>,
+    lifted: &mut Vec<Word>,
 ) -> Option<usize> {
     let n = p.coefs.len();
     let (mut i, mut j) = (i0, j0);
@@ -349,7 +349,7 @@ fn in_place(
     (q, g, gc): (&Mono, &DPoly, &[i64]),
     w: usize,
     order: MonomialOrder,
-    (at, lifted): (&mut Vec<usize>, &mut Vec<u32>),
+    (at, lifted): (&mut Vec<usize>, &mut Vec<Word>),
     dead: &mut usize,
 ) -> Scan {
     let n = p.coefs.len();
@@ -481,7 +481,7 @@ fn reduce_work_switching_at<const IN_PLACE: bool>(
     // (left by steps done in place, below).
     let mut scale = Rational::from(1);
     let (mut start, mut dead, mut steps, mut sugar) = (0, 0, 0u32, 0);
-    let (mut q, mut lifted): (Vec<u32>, Vec<u32>) = (Vec::with_capacity(w), Vec::with_capacity(w));
+    let (mut q, mut lifted): (Vec<Word>, Vec<Word>) = (Vec::with_capacity(w), Vec::with_capacity(w));
     let mut at: Vec<usize> = Vec::new();
     while start < p.coefs.len() {
         if p.coefs[start] == 0 {
@@ -502,9 +502,8 @@ fn reduce_work_switching_at<const IN_PLACE: bool>(
                 if a < 0 {
                     (a, b) = (-a, -b);
                 }
-                q.clear();
-                q.extend(m.iter().zip(g.lm()).map(|(x, y)| x - y));
-                sugar = sugar.max(q[0] + d.sugar);
+                order::quotient_into(&mut q, g.lm(), m);
+                sugar = sugar.max(step_sugar(&q, d, meter)?);
                 let rem_fits = a == 1 || rem.coefs.iter().all(|&c| fit(i128::from(c) * i128::from(a)).is_some());
                 let scan = if !rem_fits {
                     Scan::Overflow

@@ -14,8 +14,8 @@
 //! GMP buckets, which redo or finish it, so the result is exact either way.
 
 use super::bucket::GeoBucket;
-use super::division::{BucketRun, Reduced, Reducer, continue_in_buckets};
-use super::order::{self, Mono};
+use super::division::{BucketRun, Reduced, Reducer, continue_in_buckets, step_sugar};
+use super::order::{self, Mono, Word};
 use super::small::{Work, fit, gcd};
 use super::{DPoly, IdealError, Meter, MonomialOrder};
 use rug::{Integer, Rational};
@@ -29,7 +29,7 @@ fn capacity(i: usize) -> usize {
 /// A sorted polynomial from `head` on, times `mult` (`w` words per monomial).
 #[derive(Default)]
 struct Slot {
-    exps: Vec<u32>,
+    exps: Vec<Word>,
     coefs: Vec<i64>,
     head: usize,
     mult: i64,
@@ -158,7 +158,7 @@ impl WordBucket {
     /// Removes the leading term of the value (monomial into `mono`) and returns its
     /// coefficient: `Ok(None)` when the value is zero, `Err(())` (nothing changed) when the
     /// coefficient does not fit a word.
-    fn pop_lead(&mut self, mono: &mut Vec<u32>) -> Result<Option<i64>, ()> {
+    fn pop_lead(&mut self, mono: &mut Vec<Word>) -> Result<Option<i64>, ()> {
         let w = self.w;
         // Slots whose head is the largest monomial (at most one per slot; few slots).
         let mut at: [usize; 64] = [0; 64];
@@ -342,7 +342,7 @@ pub(crate) fn reduce_in_word_buckets(
     p: Work,
     rem: Work,
     scale: Rational,
-    sugar: u32,
+    sugar: u64,
     w: usize,
     divisors: &[Reducer<'_>],
     order: MonomialOrder,
@@ -379,9 +379,8 @@ pub(crate) fn reduce_in_word_buckets(
                     let lead = Slot { exps: mono.clone(), coefs: vec![c], head: 0, mult: 1 };
                     return hand_over(Why::Scale, work, Some(lead), run, w, divisors, meter);
                 }
-                q.clear();
-                q.extend(mono.iter().zip(g.lm()).map(|(x, y)| x - y));
-                run.sugar = run.sugar.max(q[0] + d.sugar);
+                order::quotient_into(&mut q, g.lm(), &mono);
+                run.sugar = run.sugar.max(step_sugar(&q, d, meter)?);
                 if a != 1 {
                     run.lambda /= a;
                     run.changed = true;

@@ -65,6 +65,32 @@ fn budget_gives_undecided_not_a_hang() {
     assert!(matches!(ring.groebner(&gens, &no_time), Err(IdealError::Undecided { limit: Limit::Time, .. })));
 }
 
+/// Degrees past the packed monomials' 32767 (16-bit exponent fields) are `Limit::Degree`,
+/// wherever they would first be formed: in the input, in an S-polynomial (grevlex: the lcm
+/// of `x^20000 y` and `x y^20000`), in a reduction step (lex: `x^2` reduced by
+/// `x - y^20000` reaches `y^40000`), in the textbook division; up to the limit, exact.
+#[test]
+fn degrees_past_the_packed_fields_are_undecided() {
+    let (x, y) = (Poly::var("x"), Poly::var("y"));
+    let degree = |r: Result<_, IdealError>| matches!(r, Err(IdealError::Undecided { limit: Limit::Degree, .. }));
+    let grevlex = PolyRing::new(["x", "y"], MonomialOrder::GrevLex);
+    assert!(degree(grevlex.to_dense(&x.pow_u32(40_000)).map(|_| ())));
+    assert!(degree(grevlex.groebner(&[x.pow_u32(32_768)], &Budget::default()).map(|_| ())));
+    let g = grevlex.groebner(&[x.pow_u32(32_767) - y.clone()], &Budget::default()).unwrap();
+    assert!(g.contains(&(Poly::from_i64(3) * x.pow_u32(32_767) - Poly::from_i64(3) * y.clone())).unwrap());
+    assert!(!g.contains(&(x.pow_u32(32_766) - y.clone())).unwrap());
+    let gens = [x.pow_u32(20_000) * y.clone() - Poly::one(), x.clone() * y.pow_u32(20_000) - Poly::one()];
+    assert!(degree(grevlex.groebner(&gens, &Budget::default()).map(|_| ())));
+    let lex = PolyRing::new(["x", "y"], MonomialOrder::Lex);
+    let g = lex.groebner(&[x.clone() - y.pow_u32(20_000)], &Budget::default()).unwrap();
+    assert!(degree(g.normal_form(&(x.clone() * x.clone())).map(|_| ())));
+    assert_eq!(g.normal_form(&x).unwrap(), y.pow_u32(20_000));
+    let d = lex.divide(&(x.clone() * x.clone()), &[x.clone() - y.pow_u32(20_000)], &Budget::default());
+    assert!(degree(d.map(|_| ())));
+    let e = grevlex.to_dense(&x.pow_u32(40_000)).unwrap_err();
+    assert!(e.to_string().contains("degree limit") && e.to_string().contains("32767"), "{e}");
+}
+
 #[test]
 fn unknown_variables_and_inconsistent_systems() {
     let x = Poly::var("x");
@@ -357,6 +383,16 @@ fn machine_word_reduction_overflows_into_gmp_exactly() {
     }
 }
 
+/// `d`'s monomials as plain exponent vectors `[degree, e_0, ..., e_{n-1}]` side by side.
+fn plain(d: &DPoly, n: usize) -> Vec<u32> {
+    (0..d.len())
+        .flat_map(|t| {
+            let m = d.mono(t);
+            std::iter::once(m[0] as u32).chain((0..n).map(move |v| order::exponent(m, v)))
+        })
+        .collect()
+}
+
 #[test]
 fn dense_form_follows_the_ring_variables_not_the_interned_ids() {
     // Interned in the order q_late, q_early; the ring lists them the other way round, so the
@@ -370,7 +406,7 @@ fn dense_form_follows_the_ring_variables_not_the_interned_ids() {
     assert_eq!(den, 2);
     // Degree 2 first (early*late > late^2 in grevlex: smaller exponent of the last variable),
     // then early, then the constant; coefficients times the denominator 2.
-    assert_eq!(d.exps, [2, 1, 1, 2, 0, 2, 1, 1, 0, 0, 0, 0]);
+    assert_eq!(plain(&d, 2), [2, 1, 1, 2, 0, 2, 1, 1, 0, 0, 0, 0]);
     assert_eq!(d.coefs, [Integer::from(-14), Integer::from(6), Integer::from(10), Integer::from(1)]);
     assert_eq!(ring.to_poly(&d, &Rational::from(den)), p);
     let other = PolyRing::new(["dense_q_early"], MonomialOrder::GrevLex);
@@ -418,13 +454,13 @@ fn variable_lookup_by_table_and_by_binary_search_agree() {
     let long = PolyRing::new(["lookup_hi", "lookup_lo"], MonomialOrder::GrevLex);
     assert!(!short.slot.is_empty() && long.slot.is_empty());
     let p = lo.clone() * mid.clone() * mid.clone() + lo.clone();
-    assert_eq!(short.to_dense(&p).unwrap().0.exps, [3, 2, 1, 1, 0, 1]);
+    assert_eq!(plain(&short.to_dense(&p).unwrap().0, 2), [3, 2, 1, 1, 0, 1]);
     let q = lo.clone() * hi.clone() * hi.clone() + lo.clone();
-    assert_eq!(long.to_dense(&q).unwrap().0.exps, [3, 2, 1, 1, 0, 1]);
+    assert_eq!(plain(&long.to_dense(&q).unwrap().0, 2), [3, 2, 1, 1, 0, 1]);
     // {lo, gap_1}: mid and gap_0 fall inside the table's range, on empty slots.
     let holes = PolyRing::new(["lookup_lo", "lookup_gap_1"], MonomialOrder::GrevLex);
     assert!(!holes.slot.is_empty());
-    assert_eq!(holes.to_dense(&(gap[1].clone() * lo.clone())).unwrap().0.exps, [2, 1, 1]);
+    assert_eq!(plain(&holes.to_dense(&(gap[1].clone() * lo.clone())).unwrap().0, 2), [2, 1, 1]);
     let strangers = [(&short, &below), (&short, &gap[0]), (&short, &hi), (&long, &below), (&long, &mid)];
     for (ring, stranger) in strangers.into_iter().chain([(&holes, &mid), (&holes, &gap[0]), (&holes, &below)]) {
         let name = stranger.variables()[0].clone();
@@ -443,13 +479,16 @@ proptest! {
     fn chain_criterion_by_degree_keeps_the_same_pairs(
         ms in prop::collection::vec(([0u32..3, 0u32..3, 0u32..3], any::<bool>()), 0..24)
     ) {
-        let w = 4;
+        let packing = order::Packing::new(3);
+        let w = packing.w;
         let mut lcms = Vec::new();
         let mut cands: Vec<groebner::Cand> = Vec::new();
         for (i, (e, coprime)) in ms.iter().enumerate() {
             let at = lcms.len();
-            lcms.push(e.iter().sum());
-            lcms.extend_from_slice(e);
+            lcms.resize(at + w, 0);
+            for (v, &k) in e.iter().enumerate() {
+                packing.add_exponent(&mut lcms[at..at + w], v, k);
+            }
             cands.push((i, at, *coprime, order::mask(&lcms[at..at + w])));
         }
         let lcm_of = |at: usize| &lcms[at..at + w];
@@ -487,17 +526,17 @@ proptest! {
     }
 }
 
-/// The byte keys of `sorted_terms` order the terms as the grevlex comparison does (the
-/// reference: `order::grevlex_cmp` on every pair of neighbours, and the fallback comparator
-/// for degrees above 255), over random polynomials in twelve variables with one degree for
-/// most terms (the case where the comparison scans furthest).
+/// `sorted_terms` orders the terms by the packed grevlex comparison as the textbook definition
+/// on plain exponent vectors does (degree, then the smaller exponent of the last variable where
+/// they differ), over random polynomials in twelve variables with one degree for most terms
+/// (the case where the comparison scans furthest) and with degrees in the thousands.
 #[test]
-fn byte_keys_sort_like_grevlex() {
+fn packed_sort_is_grevlex() {
     let names: Vec<String> = (0..12).map(|i| format!("v{i}")).collect();
     let ring = PolyRing::new(names.iter().map(String::as_str), MonomialOrder::GrevLex);
     let mut rng = crate::test_support::Xorshift(0x0DDB_1A5E_5BAD_5EED);
     for case in 0..200 {
-        let big = case % 10 == 0; // degrees above 255: the word-by-word fallback
+        let big = case % 10 == 0; // degrees in the hundreds: several words decide
         let terms = (0..60).map(|_| {
             let mut left = if big { 600 } else { 6 };
             let mono = names
@@ -515,9 +554,18 @@ fn byte_keys_sort_like_grevlex() {
         let w = ring.width();
         let t = ring.sorted_terms(&p).unwrap();
         assert_eq!(t.order.len(), p.term_count());
-        let mono = |k: usize| &t.exps[t.order[k] * w..(t.order[k] + 1) * w];
+        let plain = |k: usize| -> Vec<u32> {
+            let m = &t.exps[t.order[k] * w..(t.order[k] + 1) * w];
+            (0..names.len()).map(|v| order::exponent(m, v)).collect()
+        };
         for k in 1..t.order.len() {
-            assert_eq!(MonomialOrder::GrevLex.cmp(mono(k - 1), mono(k)), std::cmp::Ordering::Greater, "case {case}");
+            let (a, b) = (plain(k - 1), plain(k));
+            let degree = |e: &[u32]| e.iter().sum::<u32>();
+            let last_differing = a.iter().zip(&b).rev().find(|(x, y)| x != y).expect("distinct monomials");
+            assert!(
+                degree(&a) > degree(&b) || (degree(&a) == degree(&b) && last_differing.0 < last_differing.1),
+                "case {case}: {a:?} before {b:?}"
+            );
         }
     }
 }
