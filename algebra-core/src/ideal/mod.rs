@@ -419,10 +419,24 @@ impl PolyRing {
             }
             coefs.push(c);
         }
-        let mut order: Vec<usize> = (0..coefs.len()).collect();
-        // (grevlex on packed monomials: the degree word, then four exponents per word)
-        let mono = |t: usize| &exps[t * w..(t + 1) * w];
-        order.sort_unstable_by(|&a, &b| self.order.cmp(mono(b), mono(a)));
+        let order = match (self.order, w) {
+            // grevlex on up to 32 variables: the monomials sorted by value as fixed-size keys
+            // (no index to follow, no bounds to check per comparison)
+            (MonomialOrder::GrevLex, 2) => grevlex_order::<2>(&exps),
+            (MonomialOrder::GrevLex, 3) => grevlex_order::<3>(&exps),
+            (MonomialOrder::GrevLex, 4) => grevlex_order::<4>(&exps),
+            (MonomialOrder::GrevLex, 5) => grevlex_order::<5>(&exps),
+            (MonomialOrder::GrevLex, 6) => grevlex_order::<6>(&exps),
+            (MonomialOrder::GrevLex, 7) => grevlex_order::<7>(&exps),
+            (MonomialOrder::GrevLex, 8) => grevlex_order::<8>(&exps),
+            (MonomialOrder::GrevLex, 9) => grevlex_order::<9>(&exps),
+            _ => {
+                let mut order: Vec<usize> = (0..coefs.len()).collect();
+                let mono = |t: usize| &exps[t * w..(t + 1) * w];
+                order.sort_unstable_by(|&a, &b| self.order.cmp(mono(b), mono(a)));
+                order
+            }
+        };
         Ok(Terms { exps, coefs, order, den })
     }
 
@@ -440,6 +454,24 @@ impl PolyRing {
             (m, c)
         }))
     }
+}
+
+/// The indices of the packed monomials `exps` (`K` words each) by decreasing grevlex: each
+/// monomial becomes the key `[!degree, word 1, ...]`, whose increasing order as an array is
+/// the decreasing grevlex order (the larger degree first, then the smaller exponent words:
+/// see [`order::Packing`]), sorted by value with its index.
+fn grevlex_order<const K: usize>(exps: &[Word]) -> Vec<usize> {
+    let mut keys: Vec<([Word; K], u32)> = exps
+        .chunks_exact(K)
+        .enumerate()
+        .map(|(t, m)| {
+            let mut k: [Word; K] = m.try_into().expect("K words");
+            k[0] = !k[0];
+            (k, t as u32)
+        })
+        .collect();
+    keys.sort_unstable();
+    keys.iter().map(|k| k.1 as usize).collect()
 }
 
 /// Monomials (`w` words each, decreasing) and machine-word coefficients.

@@ -528,15 +528,17 @@ proptest! {
 
 /// `sorted_terms` orders the terms by the packed grevlex comparison as the textbook definition
 /// on plain exponent vectors does (degree, then the smaller exponent of the last variable where
-/// they differ), over random polynomials in twelve variables with one degree for most terms
-/// (the case where the comparison scans furthest) and with degrees in the thousands.
+/// they differ), over random polynomials in 3, 12 and 40 variables (sorted as fixed-size keys
+/// or through an index) with one degree for most terms (the case where the comparison scans
+/// furthest) and with degrees in the hundreds.
 #[test]
 fn packed_sort_is_grevlex() {
-    let names: Vec<String> = (0..12).map(|i| format!("v{i}")).collect();
-    let ring = PolyRing::new(names.iter().map(String::as_str), MonomialOrder::GrevLex);
     let mut rng = crate::test_support::Xorshift(0x0DDB_1A5E_5BAD_5EED);
-    for case in 0..200 {
-        let big = case % 10 == 0; // degrees in the hundreds: several words decide
+    for case in 0..300 {
+        // 3, 12 and 40 variables: two and four words sorted as fixed-size keys, eleven by index
+        let names: Vec<String> = (0..[3, 12, 40][case % 3]).map(|i| format!("v{i}")).collect();
+        let ring = PolyRing::new(names.iter().map(String::as_str), MonomialOrder::GrevLex);
+        let big = case % 10 < 3; // degrees in the hundreds: several words decide
         let terms = (0..60).map(|_| {
             let mut left = if big { 600 } else { 6 };
             let mono = names
