@@ -46,12 +46,20 @@ pub(crate) type Mono = [Word];
 /// are 16-bit fields with a guard bit, so that divisibility, lcm and coprimality are a few word
 /// operations per four variables. A computation that would form a larger degree stops with
 /// [`super::Limit::Degree`].
-pub(crate) const MAX_DEGREE: u64 = 0x7FFF;
+pub(crate) const MAX_DEGREE: u64 = (1 << (BITS - 1)) - 1;
 
-/// The guard bit of each 16-bit field.
-const HIGH: u64 = 0x8000_8000_8000_8000;
+/// Bits per exponent field.
+const BITS: u32 = 16;
+/// Fields per word.
+const FIELDS: usize = (64 / BITS) as usize;
+/// One field's bits.
+const FIELD: u64 = (1 << BITS) - 1;
+/// The lowest bit of each field.
+const ONES: u64 = u64::MAX / FIELD;
+/// The guard bit of each field.
+const HIGH: u64 = ONES << (BITS - 1);
 /// The value bits of each field.
-const LOW: u64 = 0x7FFF_7FFF_7FFF_7FFF;
+const LOW: u64 = HIGH - ONES;
 
 /// The packed layout of a ring's monomials: word 0 the total degree, then the exponents in
 /// 16-bit fields, four per word, variable `i` in word `w - 1 - i / 4` at bit `16 (i % 4)`. The
@@ -69,15 +77,15 @@ pub(crate) struct Packing {
 impl Packing {
     /// The layout for `n` variables.
     pub(crate) fn new(n: usize) -> Self {
-        Packing { w: 1 + n.div_ceil(4) }
+        Packing { w: 1 + n.div_ceil(FIELDS) }
     }
 
     /// Adds `k` to the exponent of variable `i` in `m` (and to its degree). Fields may carry
     /// past [`MAX_DEGREE`] here: the caller rejects the monomial by its degree afterwards.
     #[inline]
     pub(crate) fn add_exponent(&self, m: &mut [Word], i: usize, k: u32) {
-        let at = self.w - 1 - i / 4;
-        m[at] = m[at].wrapping_add(u64::from(k) << (16 * (i % 4)));
+        let at = self.w - 1 - i / FIELDS;
+        m[at] = m[at].wrapping_add(u64::from(k) << (BITS as usize * (i % FIELDS)));
         m[0] += u64::from(k);
     }
 }
@@ -86,10 +94,10 @@ impl Packing {
 #[inline]
 pub(crate) fn exponent(m: &Mono, i: usize) -> u32 {
     let w = m.len();
-    if i / 4 + 1 >= w {
+    if i / FIELDS + 1 >= w {
         return 0;
     }
-    ((m[w - 1 - i / 4] >> (16 * (i % 4))) & 0xFFFF) as u32
+    ((m[w - 1 - i / FIELDS] >> (BITS as usize * (i % FIELDS))) & FIELD) as u32
 }
 
 /// `out := a * b`.
@@ -121,14 +129,14 @@ pub(crate) fn quotient_into(q: &mut Vec<Word>, a: &Mono, b: &Mono) {
 #[inline]
 fn field_max(x: u64, y: u64) -> u64 {
     let ge = ((x | HIGH) - y) & HIGH;
-    let pick = (ge >> 15) * 0xFFFF;
+    let pick = (ge >> (BITS - 1)) * FIELD;
     (x & pick) | (y & !pick)
 }
 
-/// The sum of a word's four fields.
+/// The sum of a word's fields.
 #[inline]
 fn field_sum(x: u64) -> u64 {
-    (x & 0xFFFF) + ((x >> 16) & 0xFFFF) + ((x >> 32) & 0xFFFF) + (x >> 48)
+    (0..FIELDS).map(|f| (x >> (BITS as usize * f)) & FIELD).sum()
 }
 
 /// The guard bit of each non-zero field.
@@ -166,8 +174,8 @@ pub(crate) fn mask(a: &Mono) -> u64 {
     let mut m = 0u64;
     for (k, &x) in a.iter().enumerate().skip(1) {
         let b = nonzero(x);
-        let bits = ((b >> 15) & 1) | ((b >> 30) & 2) | ((b >> 45) & 4) | ((b >> 60) & 8);
-        m |= bits.rotate_left((4 * (w - 1 - k) % 64) as u32);
+        let bits = (0..FIELDS).fold(0, |acc, f| acc | ((b >> (BITS as usize * f + BITS as usize - 1)) & 1) << f);
+        m |= bits.rotate_left((FIELDS * (w - 1 - k) % 64) as u32);
     }
     m
 }
@@ -221,7 +229,7 @@ impl MonomialOrder {
             MonomialOrder::Lex => lex_cmp(a, b),
             MonomialOrder::GrevLex => grevlex_cmp(a, b),
             MonomialOrder::Elimination { first } => {
-                let all = 4 * (a.len() - 1);
+                let all = FIELDS * (a.len() - 1);
                 let first = first.min(all);
                 block_grevlex(a, b, 0..first).then_with(|| block_grevlex(a, b, first..all))
             }
@@ -234,8 +242,8 @@ impl MonomialOrder {
 fn lex_cmp(a: &Mono, b: &Mono) -> Ordering {
     for (x, y) in a[1..].iter().zip(&b[1..]).rev() {
         if x != y {
-            for s in 0..4 {
-                let (fx, fy) = ((x >> (16 * s)) & 0xFFFF, (y >> (16 * s)) & 0xFFFF);
+            for s in 0..FIELDS {
+                let (fx, fy) = ((x >> (BITS as usize * s)) & FIELD, (y >> (BITS as usize * s)) & FIELD);
                 if fx != fy {
                     return fx.cmp(&fy);
                 }
