@@ -244,32 +244,62 @@ fn merge_from<const DROP_ZEROS: bool>(
     out: &mut Work,
     lifted: &mut Vec<Word>,
 ) -> Option<usize> {
+    if a == 1 {
+        merge_runs::<DROP_ZEROS, true>(p, (a, b), (q, g, gc), (i0, j0), w, order, out, lifted)
+    } else {
+        merge_runs::<DROP_ZEROS, false>(p, (a, b), (q, g, gc), (i0, j0), w, order, out, lifted)
+    }
+}
+
+/// [`merge_from`]'s loop; `UNSCALED` (`a = 1`): `p`'s coefficients are copied by runs with its
+/// monomials, not multiplied one by one.
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn merge_runs<const DROP_ZEROS: bool, const UNSCALED: bool>(
+    p: &Work,
+    (a, b): (i128, i128),
+    (q, g, gc): (&Mono, &DPoly, &[i64]),
+    (i0, j0): (usize, usize),
+    w: usize,
+    order: MonomialOrder,
+    out: &mut Work,
+    lifted: &mut Vec<Word>,
+) -> Option<usize> {
     let n = p.coefs.len();
     let (mut i, mut j) = (i0, j0);
-    // `p`'s terms from `run` to `i` are in `out.coefs` but not yet in `out.exps`: a run of
-    // them is copied with one `memcpy` (one per term was an eighth of the docs' example).
+    // `p`'s terms from `run` to `i` are not yet in `out.exps` (nor, `UNSCALED`, in
+    // `out.coefs`): a run of them is copied with one `memcpy` (one per term was an eighth of
+    // the docs' example).
     let mut run = i0;
+    let flush = |out: &mut Work, run: usize, i: usize| {
+        if run < i {
+            out.exps.extend_from_slice(&p.exps[run * w..i * w]);
+            if UNSCALED {
+                out.coefs.extend_from_slice(&p.coefs[run..i]);
+            }
+        }
+    };
     while i < n && j < g.len() {
         match order.cmp(&p.exps[i * w..(i + 1) * w], lifted) {
             Ordering::Greater => {
                 if DROP_ZEROS && p.coefs[i] == 0 {
                     // A term left with 0 by a step done in place: dropped.
-                    out.exps.extend_from_slice(&p.exps[run * w..i * w]);
+                    flush(out, run, i);
                     run = i + 1;
-                } else {
+                } else if !UNSCALED {
                     out.coefs.push(fit(a * i128::from(p.coefs[i]))?);
                 }
                 i += 1;
                 continue;
             }
             Ordering::Less => {
-                out.exps.extend_from_slice(&p.exps[run * w..i * w]);
+                flush(out, run, i);
                 run = i;
                 out.coefs.push(fit(-b * i128::from(gc[j]))?);
                 out.exps.extend_from_slice(lifted);
             }
             Ordering::Equal => {
-                out.exps.extend_from_slice(&p.exps[run * w..i * w]);
+                flush(out, run, i);
                 // |a·c|, |b·g| < 2^126: the difference fits an i128.
                 let v = fit(a * i128::from(p.coefs[i]) - b * i128::from(gc[j]))?;
                 if v != 0 {
@@ -285,7 +315,7 @@ fn merge_from<const DROP_ZEROS: bool>(
             order::mul_into(lifted, q, g.mono(j));
         }
     }
-    out.exps.extend_from_slice(&p.exps[run * w..i * w]);
+    flush(out, run, i);
     while j < g.len() {
         out.coefs.push(fit(-b * i128::from(gc[j]))?);
         out.exps.extend_from_slice(lifted);
@@ -295,7 +325,7 @@ fn merge_from<const DROP_ZEROS: bool>(
         }
     }
     let tail = out.coefs.len();
-    if a == 1 {
+    if UNSCALED {
         out.coefs.extend_from_slice(&p.coefs[i..n]);
     } else {
         for &c in &p.coefs[i..n] {
