@@ -176,7 +176,7 @@ fn combine(
     if 1 < g.len() {
         order::mul_into(lifted, q, g.mono(1));
     }
-    merge_from::<false>(p, (i128::from(a), i128::from(b)), (q, g, gc), (from, 1), w, order, out, lifted).map(|_| ())
+    merge_from::<false>((p, (i128::from(a), i128::from(b)), (q, g, gc), (from, 1), w, order), out, lifted).map(|_| ())
 }
 
 /// [`combine`] resuming a failed [`in_place`] scan: the terms `p[from..i0]` are copied as one
@@ -219,7 +219,7 @@ fn combine_resume(
     if zeros {
         out.compact(w, 0);
     }
-    let tail = merge_from::<true>(p, (a, b), (q, g, gc), (i0, j0), w, order, out, lifted)?;
+    let tail = merge_from::<true>((p, (a, b), (q, g, gc), (i0, j0), w, order), out, lifted)?;
     if dead > 0 {
         out.squeeze(w, tail, tail);
     }
@@ -232,36 +232,24 @@ fn combine_resume(
 /// place) are dropped; compiled apart, so that [`combine`]'s loop has no such test. Returns
 /// where the copied rest of `p` starts in `out.coefs` (terms with 0 may follow there when
 /// `DROP_ZEROS`: the caller squeezes them out); `None` on overflow.
-#[allow(clippy::too_many_arguments)]
 #[inline(always)]
-fn merge_from<const DROP_ZEROS: bool>(
-    p: &Work,
-    (a, b): (i128, i128),
-    (q, g, gc): (&Mono, &DPoly, &[i64]),
-    (i0, j0): (usize, usize),
-    w: usize,
-    order: MonomialOrder,
-    out: &mut Work,
-    lifted: &mut Vec<Word>,
-) -> Option<usize> {
-    if a == 1 {
-        merge_runs::<DROP_ZEROS, true>(p, (a, b), (q, g, gc), (i0, j0), w, order, out, lifted)
+fn merge_from<const DROP_ZEROS: bool>(m: Merge<'_>, out: &mut Work, lifted: &mut Vec<Word>) -> Option<usize> {
+    if m.1.0 == 1 {
+        merge_runs::<DROP_ZEROS, true>(m, out, lifted)
     } else {
-        merge_runs::<DROP_ZEROS, false>(p, (a, b), (q, g, gc), (i0, j0), w, order, out, lifted)
+        merge_runs::<DROP_ZEROS, false>(m, out, lifted)
     }
 }
 
+/// What a merge reads: the work `p`, the multipliers `(a, b)`, the multiple `q·g` with `g`'s
+/// coefficients as words, where the merge starts in `p` and `g`, the width and the order.
+type Merge<'a> = (&'a Work, (i128, i128), (&'a Mono, &'a DPoly, &'a [i64]), (usize, usize), usize, MonomialOrder);
+
 /// [`merge_from`]'s loop; `UNSCALED` (`a = 1`): `p`'s coefficients are copied by runs with its
 /// monomials, not multiplied one by one.
-#[allow(clippy::too_many_arguments)]
 #[inline(always)]
 fn merge_runs<const DROP_ZEROS: bool, const UNSCALED: bool>(
-    p: &Work,
-    (a, b): (i128, i128),
-    (q, g, gc): (&Mono, &DPoly, &[i64]),
-    (i0, j0): (usize, usize),
-    w: usize,
-    order: MonomialOrder,
+    (p, (a, b), (q, g, gc), (i0, j0), w, order): Merge<'_>,
     out: &mut Work,
     lifted: &mut Vec<Word>,
 ) -> Option<usize> {
