@@ -6,7 +6,9 @@
 //! elimination of variables.
 //!
 //! Every computation runs under a [`Budget`] (time, basis size, terms per polynomial); when the
-//! budget runs out the result is [`IdealError::Undecided`], never a hang.
+//! budget runs out the result is [`IdealError::Undecided`], never a hang. So is a total degree
+//! above 32767 ([`Limit::Degree`]): exponents are 16-bit fields of packed monomials, and the
+//! engine checks wherever a degree could first pass the limit, never overflowing silently.
 //!
 //! ```
 //! use algebra_core::ideal::{Budget, MonomialOrder, PolyRing};
