@@ -69,7 +69,7 @@ fn find_divisor<'r, 'a>(divisors: &'r [Reducer<'a>], m: &Mono) -> Option<&'r Red
 /// leading monomial, of the largest degree).
 #[inline]
 pub(crate) fn step_sugar(q: &Mono, d: &Reducer<'_>, meter: &Meter) -> Result<u64, IdealError> {
-    if q[0] + d.top > order::MAX_DEGREE {
+    if !order::products_fit(q[0], d.top) {
         return Err(meter.degree_limit());
     }
     Ok(q[0] + d.sugar)
@@ -600,7 +600,7 @@ impl PolyRing {
             match gs.iter().position(|g| !g.is_empty() && order::divides(&g[0].0, &lead.0)) {
                 Some(k) => {
                     let q = order::quotient(&gs[k][0].0, &lead.0);
-                    if q[0] + tops[k] > order::MAX_DEGREE {
+                    if !order::products_fit(q[0], tops[k]) {
                         return Err(meter.degree_limit());
                     }
                     let c = Rational::from(&lead.1 / &gs[k][0].1);

@@ -183,7 +183,7 @@ impl State<'_> {
     /// product of degree above [`order::MAX_DEGREE`] (`deg(lcm/lm f) + top(f)`; under grevlex
     /// this is the lcm's degree).
     fn check_degree(&self, p: &Pair, meter: &Meter) -> Result<(), IdealError> {
-        let over = |i: usize| p.lcm[0] - self.polys[i].lm()[0] + self.tops[i] > order::MAX_DEGREE;
+        let over = |i: usize| !order::products_fit(p.lcm[0] - self.polys[i].lm()[0], self.tops[i]);
         if over(p.i) || over(p.j) { Err(meter.degree_limit()) } else { Ok(()) }
     }
 
@@ -352,6 +352,7 @@ fn interreduce(mut gens: Vec<DPoly>, ring: &PolyRing, meter: &mut Meter) -> Resu
     let mut out: Vec<DPoly> = Vec::with_capacity(gens.len());
     let small: Vec<Option<Vec<i64>>> = gens.iter().map(small_coefs).collect();
     let masks: Vec<u64> = gens.iter().map(|g| order::mask(g.lm())).collect();
+    let tops: Vec<u64> = gens.iter().map(DPoly::top).collect();
     for i in 0..gens.len() {
         // Mostly the basis is reduced already (its tails are reduced once per sugar degree): an
         // element no other leading monomial divides a term of is kept as it is (primitive
@@ -367,13 +368,7 @@ fn interreduce(mut gens: Vec<DPoly>, ring: &PolyRing, meter: &mut Meter) -> Resu
         }
         let others: Vec<Reducer<'_>> = (0..gens.len())
             .filter(|&j| j != i)
-            .map(|j| Reducer {
-                mask: masks[j],
-                poly: &gens[j],
-                sugar: 0,
-                top: gens[j].top(),
-                small: small[j].as_deref(),
-            })
+            .map(|j| Reducer { mask: masks[j], poly: &gens[j], sugar: 0, top: tops[j], small: small[j].as_deref() })
             .collect();
         out.push(with_tail_reduced(g, small[i].as_deref(), &others, ring.order(), meter)?);
     }

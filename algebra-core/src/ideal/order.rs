@@ -115,7 +115,9 @@ pub(crate) fn divides(a: &Mono, b: &Mono) -> bool {
 
 /// `b / a`, assuming `a | b`.
 pub(crate) fn quotient(a: &Mono, b: &Mono) -> Vec<Word> {
-    b.iter().zip(a).map(|(x, y)| x - y).collect()
+    let mut q = Vec::with_capacity(b.len());
+    quotient_into(&mut q, a, b);
+    q
 }
 
 /// `q := b / a`, assuming `a | b`.
@@ -123,6 +125,14 @@ pub(crate) fn quotient(a: &Mono, b: &Mono) -> Vec<Word> {
 pub(crate) fn quotient_into(q: &mut Vec<Word>, a: &Mono, b: &Mono) {
     q.clear();
     q.extend(b.iter().zip(a).map(|(x, y)| x - y));
+}
+
+/// Whether the products of a monomial of degree `q_degree` with the terms of a polynomial whose
+/// largest degree is `top` stay within [`MAX_DEGREE`] (so no field overflows): the one check
+/// before every multiple `q·g` the engine forms (reduction steps, S-polynomials, division).
+#[inline]
+pub(crate) fn products_fit(q_degree: u64, top: u64) -> bool {
+    q_degree + top <= MAX_DEGREE
 }
 
 /// The larger of each pair of fields.
