@@ -51,6 +51,7 @@ pub mod naming;
 pub mod orient;
 pub mod paths;
 pub mod plan;
+pub mod product_order;
 mod ratio;
 pub mod size;
 pub mod spec;

@@ -36,6 +36,9 @@ pub struct BinaryKernel {
     pub out: usize,
     /// For each field of the output type, its terms.
     pub outputs: Vec<Vec<Term>>,
+    /// The longest chain of additions an output's sum is written as
+    /// ([`crate::product_order::ProductOrder::chain`]).
+    pub chain: usize,
 }
 
 /// One generated linear unary kernel: each output field is `Σ c · x[field]`.
@@ -170,10 +173,17 @@ impl Plan {
                     };
                     if product == Product::Geometric {
                         for o in (0..sets.len()).filter(|&o| o != out && !sets[o].is_disjoint(&support)) {
-                            typed.push(BinaryKernel { product, lhs: li, rhs: ri, out: o, outputs: restrict(o) });
+                            typed.push(BinaryKernel {
+                                product,
+                                lhs: li,
+                                rhs: ri,
+                                out: o,
+                                outputs: restrict(o),
+                                chain: 4,
+                            });
                         }
                     }
-                    binary.push(BinaryKernel { product, lhs: li, rhs: ri, out, outputs: restrict(out) });
+                    binary.push(BinaryKernel { product, lhs: li, rhs: ri, out, outputs: restrict(out), chain: 4 });
                 }
             }
         }
@@ -207,6 +217,9 @@ impl Plan {
         let actions = super::versor::plan_actions(&spec, full)?;
         let mut plan = Plan { spec, declared, full, binary, unary, norm, closed, actions, typed, matrices: Vec::new() };
         fold_signs(&mut plan);
+        for k in plan.binary.iter_mut().chain(plan.typed.iter_mut()) {
+            super::product_order::order_for_pairing(k);
+        }
         plan.matrices = super::matrix::plan_matrices(&plan.actions);
         super::versor::norm_forms(&mut plan)?;
         let (table_above, declared) = (plan.spec.table_above, plan.declared);

@@ -1,5 +1,6 @@
 //! Sums of `coefficient x operand` terms in the three shapes the kernels use: a chain
-//! ([`sum`]), chains of at most four ([`chunked_sum`], the binary products) and a balanced
+//! ([`sum`]), chains of at most four or a kernel's measured length ([`chunked_sum`], the binary
+//! products; [`crate::product_order`]) and a balanced
 //! tree ([`tree_sum`], the versor actions). The shape changes only the order of the
 //! floating-point additions (and so the speed and the rounding), never the exact value.
 //!
@@ -65,23 +66,21 @@ pub(crate) fn sum_in<B: Build>(mut terms: Vec<Term<B::E>>) -> B::E {
     acc
 }
 
-/// The longest chain [`chunked_sum`] emits before starting a new one.
-const CHUNK: usize = 4;
-
-/// [`chunked_sum`] over any [`Build`].
-pub(crate) fn chunked_sum_in<B: Build>(terms: Vec<Term<B::E>>) -> B::E {
-    if terms.len() <= CHUNK {
+/// [`chunked_sum`] over any [`Build`]: chains of at most `chunk` terms.
+pub(crate) fn chunked_sum_in<B: Build>(terms: Vec<Term<B::E>>, chunk: usize) -> B::E {
+    let chunk = chunk.max(1);
+    if terms.len() <= chunk {
         return sum_in::<B>(terms);
     }
     let mut chunks = Vec::new();
     let mut rest = terms;
     while !rest.is_empty() {
-        let tail = rest.split_off(rest.len().min(CHUNK));
+        let tail = rest.split_off(rest.len().min(chunk));
         chunks.push(rest);
         rest = tail;
     }
     let mut it = chunks.into_iter();
-    let mut acc = sum_in::<B>(it.next().expect("more than CHUNK terms"));
+    let mut acc = sum_in::<B>(it.next().expect("more than `chunk` terms"));
     for mut chunk in it {
         if chunk.len() == 1 {
             // a lone term joins the chain (no clone of a borrowed operand)

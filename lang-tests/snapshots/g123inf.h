@@ -132,13 +132,13 @@ static inline g123inf_Motor g123inf_motor_gp_motor(g123inf_Motor a, g123inf_Moto
     const double t47 = a.e123inf * b.e23;
     g123inf_Motor r;
     r.scalar = ((t0 - t9) - t18) - t27;
-    r.e12 = ((t1 + t8) - t19) + t26;
+    r.e12 = ((t1 + t8) + t26) - t19;
     r.e13 = ((t2 + t11) + t16) - t25;
-    r.e23 = ((t3 - t10) + t17) + t24;
-    r.e1inf = (((t4 + t13) + t22) - t31) + (((t32 - t37) - t42) - t47);
-    r.e2inf = (((t5 - t12) + t23) + t30) + (((t33 + t36) - t43) + t46);
-    r.e3inf = (((t6 - t15) - t20) - t29) + (((t34 + t39) + t40) - t45);
-    r.e123inf = (((t7 + t14) - t21) + t28) + (((t35 - t38) + t41) + t44);
+    r.e23 = ((t3 + t17) + t24) - t10;
+    r.e1inf = ((((((t4 + t13) + t22) - t31) + t32) - t37) - t42) - t47;
+    r.e2inf = ((((((t5 + t23) + t30) - t12) + t33) + t36) + t46) - t43;
+    r.e3inf = ((((((t6 - t15) - t20) - t29) + t34) + t39) + t40) - t45;
+    r.e123inf = ((((((t7 + t14) + t28) - t21) + t35) + t41) + t44) - t38;
     return r;
 }
 
@@ -1095,13 +1095,13 @@ static inline g123inf_Motorf g123inf_motor_gp_motorf(g123inf_Motorf a, g123inf_M
     const float t47 = a.e123inf * b.e23;
     g123inf_Motorf r;
     r.scalar = ((t0 - t9) - t18) - t27;
-    r.e12 = ((t1 + t8) - t19) + t26;
+    r.e12 = ((t1 + t8) + t26) - t19;
     r.e13 = ((t2 + t11) + t16) - t25;
-    r.e23 = ((t3 - t10) + t17) + t24;
-    r.e1inf = (((t4 + t13) + t22) - t31) + (((t32 - t37) - t42) - t47);
-    r.e2inf = (((t5 - t12) + t23) + t30) + (((t33 + t36) - t43) + t46);
-    r.e3inf = (((t6 - t15) - t20) - t29) + (((t34 + t39) + t40) - t45);
-    r.e123inf = (((t7 + t14) - t21) + t28) + (((t35 - t38) + t41) + t44);
+    r.e23 = ((t3 + t17) + t24) - t10;
+    r.e1inf = ((((((t4 + t13) + t22) - t31) + t32) - t37) - t42) - t47;
+    r.e2inf = ((((((t5 + t23) + t30) - t12) + t33) + t36) + t46) - t43;
+    r.e3inf = ((((((t6 - t15) - t20) - t29) + t34) + t39) + t40) - t45;
+    r.e123inf = ((((((t7 + t14) + t28) - t21) + t35) + t41) + t44) - t38;
     return r;
 }
 

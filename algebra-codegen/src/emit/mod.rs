@@ -66,6 +66,14 @@ pub fn action_body(plan: &Plan, k: &crate::versor::ActionKernel) -> TokenStream 
     versor::unrolled_body(&Names::new(plan), k)
 }
 
+/// The body of a binary product kernel as its impl emits it (`self` and `rhs` the operands,
+/// straight-line or table-driven by the plan's size policy), for the tool that times term
+/// orders (`algebra-codegen/examples/product_wisdom.rs`).
+#[doc(hidden)]
+pub fn product_body(plan: &Plan, k: &BinaryKernel) -> TokenStream {
+    kernel_body(&Names::new(plan), k, &[k.lhs, k.rhs])
+}
+
 /// The fields, element names and orientation signs of every type of a plan.
 pub(super) struct Names {
     pub(super) types: Vec<Ident>,
@@ -604,6 +612,7 @@ fn kernel_body(names: &Names, k: &BinaryKernel, types: &[usize]) -> TokenStream 
                         (t.coef, quote!(#p), movable)
                     })
                     .collect(),
+                k.chain,
             )
         })
         .collect();

@@ -59,17 +59,20 @@ pub(crate) fn sum(terms: Vec<SumTerm>) -> TokenStream {
     sum_in::<Tokens>(terms)
 }
 
-/// [`sum`] as chains of at most [`CHUNK`] terms, added left to right:
+/// [`sum`] as chains of at most `chunk` terms (the kernel's
+/// [`crate::product_order::ProductOrder::chain`], four unless measured otherwise), added left to right:
 /// `(a + b - c + d) + (e - f - g + h)`. Used by the binary product kernels. A motor product's
 /// translation outputs have 8 terms, 4 from `R x T` and 4 from `T x R`; as two chains of 4
 /// they have the shape of nalgebra's dual-quaternion product (two quaternion products, then
 /// one addition), which halves the dependency depth and lets LLVM's SLP vectoriser pack
 /// neighbouring outputs. Measured (docs/performance.md, "Motor product shape"): 8 % to 11 %
-/// faster than one chain of 8 on `g123inf` `Motor * Motor`, where a balanced tree was slower.
+/// faster than one chain of 8 in the tables' order on `g123inf` `Motor * Motor` (AMD EPYC),
+/// where a balanced tree was slower; per-kernel exceptions are measured and listed in
+/// [`crate::product_order::WISDOM`].
 /// A chunk whose first term is negative is negated and subtracted, so each chunk keeps its
 /// term order (the same order in neighbouring outputs) and no term is negated on its own.
-pub(crate) fn chunked_sum(terms: Vec<SumTerm>) -> TokenStream {
-    chunked_sum_in::<Tokens>(terms)
+pub(crate) fn chunked_sum(terms: Vec<SumTerm>, chunk: usize) -> TokenStream {
+    chunked_sum_in::<Tokens>(terms, chunk)
 }
 
 /// [`sum`] as a balanced tree (`(a + b) + (c - d)`) rather than a chain, so its dependency
@@ -107,7 +110,7 @@ mod tests {
     #[test]
     fn short_sums_are_one_chain() {
         let t = terms(&[1, -1, 1, 1]);
-        assert_eq!(text(chunked_sum(t.clone())), text(sum(t)));
+        assert_eq!(text(chunked_sum(t.clone(), 4)), text(sum(t)));
         assert_eq!(text(sum(terms(&[1, -1, 1, 1]))), "::core::clone::Clone::clone(&p0)-&p1+&p2+&p3");
     }
 
@@ -115,9 +118,9 @@ mod tests {
     /// two chains in the written order, the second subtracted when it starts negative.
     #[test]
     fn eight_terms_are_two_chains_of_four_in_order() {
-        let got = text(chunked_sum(terms(&[1, 1, 1, -1, 1, -1, -1, -1])));
+        let got = text(chunked_sum(terms(&[1, 1, 1, -1, 1, -1, -1, -1]), 4));
         assert_eq!(got, "::core::clone::Clone::clone(&p0)+&p1+&p2-&p3+&(::core::clone::Clone::clone(&p4)-&p5-&p6-&p7)");
-        let got = text(chunked_sum(terms(&[1, -1, 1, 1, -1, 1, 1, -1, 1])));
+        let got = text(chunked_sum(terms(&[1, -1, 1, 1, -1, 1, 1, -1, 1]), 4));
         assert_eq!(
             got,
             "::core::clone::Clone::clone(&p0)-&p1+&p2+&p3-&(::core::clone::Clone::clone(&p4)-&p5-&p6+&p7)+&p8"

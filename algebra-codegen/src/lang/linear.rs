@@ -70,6 +70,7 @@ fn binary(plan: &Plan, k: &BinaryKernel) -> Kernel {
             } else {
                 chunked_sum_in::<Ir>(
                     terms.iter().map(|t| (t.coef, Expr::Local(local[&(t.lhs, t.rhs)]), true)).collect(),
+                    k.chain,
                 )
             }
         })
