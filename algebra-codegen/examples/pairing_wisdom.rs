@@ -25,7 +25,8 @@ use algebra_codegen::versor::{
 use algebra_codegen::{ModuleSpec, emit};
 use algebra_core::{Algebra, Basis, Metric};
 use std::fmt::Write as _;
-use std::process::Command;
+
+mod common;
 
 /// One benched module: name, plan, versor and operand type names, the operand's generator.
 struct Case {
@@ -233,17 +234,7 @@ fn measure(
         }
     }
     harness(&mut src, case, &kernels, rounds);
-    let path = dir.join(format!("{}.rs", case.name));
-    std::fs::write(&path, &src).expect("write");
-    let exe = dir.join(case.name);
-    let status =
-        Command::new("rustc").args(["-O", "--edition", "2024", "-o"]).arg(&exe).arg(&path).status().expect("rustc");
-    assert!(status.success(), "rustc failed on {}", path.display());
-    let out = Command::new("taskset").args(["-c", core]).arg(&exe).output().expect("run");
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
-    let text = String::from_utf8_lossy(&out.stdout);
-    let ratios: Vec<f64> = text.lines().filter_map(|l| l.split_whitespace().nth(1)?.parse().ok()).collect();
-    assert_eq!(ratios.len(), kernels.len(), "one ratio per kernel:\n{text}");
+    let ratios = common::compile_and_time(dir, case.name, &src, core, kernels.len());
     (kernels, ratios)
 }
 
@@ -315,8 +306,7 @@ fn harness(src: &mut String, case: &Case, kernels: &Kernels, rounds: usize) {
         r#"
 fn main() {{
     use m::*;
-    let mut state = 0x1234_5678_9abc_def1u64;
-    let mut rng = move || {{ state ^= state << 13; state ^= state >> 7; state ^= state << 17; (state >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0 }};
+    {rng}
     let len = {vt}::<f64>::zero().to_array().len();
     let (mut s, mut t, mut x) = (Vec::new(), Vec::new(), Vec::new());
     for _ in 0..1024 {{
@@ -352,6 +342,7 @@ fn main() {{
     }}
 }}
 "#,
+        rng = common::RNG,
         point = case.point,
         calls = calls.join(", "),
         names = kernels.iter().map(|k| k.3.as_str()).collect::<Vec<_>>().join(", "),

@@ -26,7 +26,8 @@ use algebra_codegen::{ModuleSpec, emit};
 use algebra_core::tables::Product;
 use algebra_core::{Algebra, Basis};
 use std::fmt::Write as _;
-use std::process::Command;
+
+mod common;
 
 /// One benched product: a label, the module's plan, the type multiplied by itself.
 struct Case {
@@ -95,17 +96,7 @@ fn measure(case: &Case, dir: &std::path::Path, rounds: usize, core: &str) -> (u6
         kept.push(order);
     }
     harness(&mut src, case.ty, kept.len(), rounds);
-    let path = dir.join(format!("{}.rs", case.name));
-    std::fs::write(&path, &src).expect("write");
-    let exe = dir.join(case.name);
-    let status =
-        Command::new("rustc").args(["-O", "--edition", "2024", "-o"]).arg(&exe).arg(&path).status().expect("rustc");
-    assert!(status.success(), "rustc failed on {}", path.display());
-    let out = Command::new("taskset").args(["-c", core]).arg(&exe).output().expect("run");
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
-    let text = String::from_utf8_lossy(&out.stdout);
-    let ratios: Vec<f64> = text.lines().filter_map(|l| l.split_whitespace().nth(1)?.parse().ok()).collect();
-    assert_eq!(ratios.len(), kept.len(), "one ratio per kernel:\n{text}");
+    let ratios = common::compile_and_time(dir, case.name, &src, core, kept.len());
     (fingerprint(&base), kept.into_iter().zip(ratios).collect())
 }
 
@@ -118,8 +109,7 @@ fn harness(src: &mut String, t: &str, n: usize, rounds: usize) {
         r#"
 fn main() {{
     use m::*;
-    let mut state = 0x1234_5678_9abc_def1u64;
-    let mut rng = move || {{ state ^= state << 13; state ^= state >> 7; state ^= state << 17; (state >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0 }};
+    {rng}
     let len = {t}::<f64>::zero().to_array().len();
     let mut x = Vec::new();
     for _ in 0..2048 {{
@@ -151,6 +141,7 @@ fn main() {{
     }}
 }}
 "#,
+        rng = common::RNG,
         names = names.join(", "),
         runs = runs.join(", "),
     )
