@@ -52,9 +52,19 @@ struct WordBucket {
     terms: usize,
 }
 
+thread_local! {
+    /// Slots of finished reductions, reused by the next ones on this thread (their buffers
+    /// would otherwise grow from empty once per reduction).
+    static SPARE_SLOTS: std::cell::RefCell<Vec<Slot>> = const { std::cell::RefCell::new(Vec::new()) };
+}
+
+/// The most slots [`SPARE_SLOTS`] keeps, and the largest buffer it keeps (in words).
+const POOL: (usize, usize) = (32, 1 << 18);
+
 impl WordBucket {
     fn new(w: usize, order: MonomialOrder) -> Self {
-        WordBucket { w, order, slots: Vec::new(), spare: Vec::new(), terms: 0 }
+        let spare = SPARE_SLOTS.with_borrow_mut(std::mem::take);
+        WordBucket { w, order, slots: Vec::new(), spare, terms: 0 }
     }
 
     /// Terms held, an upper bound of the number of terms of the value.
@@ -71,7 +81,7 @@ impl WordBucket {
     }
 
     fn recycle(&mut self, s: Slot) {
-        if self.spare.len() < 16 {
+        if self.spare.len() < POOL.0 {
             self.spare.push(s);
         }
     }
@@ -272,6 +282,21 @@ fn gcd128(mut a: u128, mut b: u128) -> u128 {
         (a, b) = (b, a % b);
     }
     a
+}
+
+impl Drop for WordBucket {
+    /// Hands the slots' buffers to [`SPARE_SLOTS`] for the next reduction.
+    fn drop(&mut self) {
+        let mut spare = std::mem::take(&mut self.spare);
+        spare.append(&mut self.slots);
+        spare.retain(|s| s.exps.capacity() <= POOL.1);
+        spare.truncate(POOL.0);
+        SPARE_SLOTS.with_borrow_mut(|pool| {
+            if pool.len() < spare.len() {
+                *pool = spare;
+            }
+        });
+    }
 }
 
 /// `out := a + b` with the multiplier `gcd(a.mult, b.mult)`; `None` (operands untouched) on
