@@ -135,7 +135,8 @@ fn phase1(k: &ActionKernel) -> Vec<TermOrder> {
 
 fn phase2(best: &[TermOrder]) -> Vec<TermOrder> {
     use RowOrder::*;
-    let rows = [Tables, Versor, Other, PositiveFirst, PositiveVersor, PositiveOther];
+    let rows =
+        [Tables, Versor, Other, PositiveFirst, PositiveVersor, PositiveOther, PositiveHalves, PositiveHalvesVersor];
     let mut out = Vec::new();
     for b in best {
         for chains in [[false, false], [true, false], [false, true], [true, true]] {

@@ -157,6 +157,11 @@ pub enum RowOrder {
     PositiveVersor,
     /// The positive terms first, each part by the other factor.
     PositiveOther,
+    /// The tables' order, the positive terms first within each half of the row (as the
+    /// motor product's measured order does within its `R x T` and `T x R` halves).
+    PositiveHalves,
+    /// By the versor's field, the positive terms first within each half of the row.
+    PositiveHalvesVersor,
 }
 
 /// The order and shape of a fused kernel's sums: one entry of the pairing wisdom
@@ -209,6 +214,17 @@ fn order_row(row: &mut [(usize, usize, Ratio)], order: RowOrder, stage2: bool) {
         RowOrder::PositiveFirst => row.sort_by_key(|t| (neg(t), t.0, t.1)),
         RowOrder::PositiveVersor => row.sort_by_key(|t| (neg(t), versor(t))),
         RowOrder::PositiveOther => row.sort_by_key(|t| (neg(t), other(t))),
+        RowOrder::PositiveHalves | RowOrder::PositiveHalvesVersor => {
+            if order == RowOrder::PositiveHalves {
+                row.sort_by_key(|t| (t.0, t.1));
+            } else {
+                row.sort_by_key(versor);
+            }
+            let half = row.len().div_ceil(2);
+            let (a, b) = row.split_at_mut(half);
+            a.sort_by_key(neg);
+            b.sort_by_key(neg);
+        }
     }
     if matches!(order, RowOrder::Versor | RowOrder::Other)
         && row.first().is_some_and(neg)
@@ -273,10 +289,11 @@ pub fn fingerprint(k: &ActionKernel) -> u64 {
 /// pairing_wisdom` (docs/performance.md, "fifth session"): it times every candidate order of
 /// the benched kernels beside their module's motor product in one `rustc -O` program (the
 /// generated kernel bodies, interleaved rounds, pinned to one core) and prints the table.
-/// Measured on a 2-core AMD EPYC VM, baseline x86-64 (SSE2), rustc 1.95.
+/// Measured on 2-core VMs, baseline x86-64 (SSE2), rustc 1.95: an AMD EPYC, and an Intel Xeon for
+/// the four conformal point actions (the comment above them).
 pub const WISDOM: &[(u64, &str, TermOrder)] = {
     use NormOrder::{Halves, Outside, Tables as NormTables};
-    use RowOrder::{PositiveFirst, PositiveVersor, Tables, Versor};
+    use RowOrder::{PositiveFirst, PositiveHalves, PositiveVersor, Tables, Versor};
     const fn o(stage1: RowOrder, stage2: RowOrder, chains: [bool; 2], flip: u32, norm: NormOrder) -> TermOrder {
         TermOrder { stage1, stage2, chains, flip, norm }
     }
@@ -287,7 +304,7 @@ pub const WISDOM: &[(u64, &str, TermOrder)] = {
         // `g3::Rotor::apply(&Vector)`, scalar-norm form: `-s`, `-b13`, the norm
         // `(s² + b23²) + (b12² + b13²)`: 1.303 (the general kernel 1.384)
         (0xfb5b_ad7b_ab55_ccde, "g3 Rotor apply Vector", o(Tables, Versor, [true, false], 0b0101, Outside)),
-        // The four conformal entries below were measured on an Intel Xeon (sixth machine,
+        // The four conformal entries below were measured on an Intel Xeon (the third machine,
         // 2026-12-05) against the motor product in its measured order
         // (`crate::product_order::WISDOM`); the AMD EPYC orders they replace are in
         // docs/performance.md, "Orders measured per kernel".
@@ -303,12 +320,13 @@ pub const WISDOM: &[(u64, &str, TermOrder)] = {
             "cga_null Motor apply Vector",
             o(PositiveFirst, PositiveFirst, [true, true], 0b100_0000, NormTables),
         ),
-        // GATL's declaration `Motor::sandwich(&Vector)`, `-e12`, `-e23`, `-e123inf`: 1.349
-        // (default 1.434)
+        // GATL's declaration `Motor::sandwich(&Vector)`, `-e123inf`, stage 1 sign-sorted by
+        // halves: 1.312 (default 1.409; the products bench 1.344, against 1.365 for the best
+        // order without halves)
         (
             0x171c_29ca_63e8_7e55,
             "gatl Motor sandwich Vector",
-            o(PositiveFirst, Versor, [false, false], 0b1000_1010, NormTables),
+            o(PositiveHalves, Versor, [false, false], 0b1000_0000, NormTables),
         ),
         // GATL's declaration `Motor::apply(&Vector)`, `-e23`: 1.348 (default 1.362)
         (0x1f16_4979_183b_f233, "gatl Motor apply Vector", o(PositiveFirst, Versor, [true, false], 0b1000, NormTables)),
@@ -696,6 +714,32 @@ mod tests {
     use super::*;
     use crate::spec::TypeSpec;
     use algebra_core::{Algebra, Metric, Multivector};
+
+    /// `PositiveHalves` sorts each half of a row by sign and keeps the tables' order within
+    /// each sign; `PositiveHalvesVersor` the same from the versor's field order.
+    #[test]
+    fn halves_sort_signs_within_each_half() {
+        let row: Vec<(usize, usize, Ratio)> =
+            vec![(0, 1, (-1, 1)), (1, 0, (1, 1)), (2, 3, (-1, 1)), (0, 0, (1, 2)), (3, 2, (1, 1)), (1, 1, (-2, 1))];
+        let mut t = row.clone();
+        order_row(&mut t, RowOrder::PositiveHalves, false);
+        // tables' order (0,0) (0,1) (1,0) | (1,1) (2,3) (3,2), then signs within each half
+        let want = [(0, 0), (1, 0), (0, 1), (3, 2), (1, 1), (2, 3)];
+        assert_eq!(t.iter().map(|x| (x.0, x.1)).collect::<Vec<_>>(), want);
+        let mut v = row;
+        order_row(&mut v, RowOrder::PositiveHalvesVersor, true);
+        // stage 2's versor field is the second index: (0,0) (1,0) (0,1) | (1,1) (3,2) (2,3),
+        // then signs within each half
+        let want = [(0, 0), (1, 0), (0, 1), (3, 2), (1, 1), (2, 3)];
+        assert_eq!(v.iter().map(|x| (x.0, x.1)).collect::<Vec<_>>(), want);
+        // where the two orders put a term in different halves
+        let row: Vec<(usize, usize, Ratio)> = vec![(0, 5, (1, 1)), (1, 0, (1, 1)), (2, 1, (1, 1)), (3, 2, (1, 1))];
+        let (mut t, mut v) = (row.clone(), row);
+        order_row(&mut t, RowOrder::PositiveHalves, true);
+        order_row(&mut v, RowOrder::PositiveHalvesVersor, true);
+        assert_eq!(t.iter().map(|x| (x.0, x.1)).collect::<Vec<_>>(), [(0, 5), (1, 0), (2, 1), (3, 2)]);
+        assert_eq!(v.iter().map(|x| (x.0, x.1)).collect::<Vec<_>>(), [(1, 0), (2, 1), (3, 2), (0, 5)]);
+    }
 
     /// A planned kernel evaluated over `Q` as the emitters print it: flipped versor fields
     /// enter negated (their coefficients are stored negated), and the scalar-norm form adds
