@@ -46,6 +46,9 @@ pub const WISDOM: &[(u64, &str, ProductOrder)] = &[
     // outputs as one chain, the positive terms of each quaternion product (`R x T`, `T x R`)
     // first: 0.91x the tables' chains of four (Intel Xeon, baseline x86-64)
     (0x845e_62fe_fba4_f5ea, "g123inf Motor gp Motor", ProductOrder { positive_first: 4, chain: 8 }),
+    // `cga` `Motor * Motor` (16 even fields, 16 terms per output): one chain, the positive
+    // terms first within each pair of terms: 0.899x the tables' chains of four
+    (0x022a_7650_fb28_894e, "cga Motor gp Motor", ProductOrder { positive_first: 2, chain: 16 }),
 ];
 
 /// A kernel's structure, independent of its current term order: FNV-1a of the product and
@@ -175,5 +178,13 @@ mod tests {
         let mut tables = other.clone();
         apply_order(&mut tables, ProductOrder::TABLES);
         assert_eq!(other.outputs, tables.outputs);
+        // `cga`'s 16-field motor product: one chain, signs sorted within each pair of terms
+        let p = plan("cga", "Motor=even");
+        let motor = p.kernel(algebra_core::tables::Product::Geometric, 0, 0);
+        assert_eq!(motor.chain, 16);
+        for out in &motor.outputs {
+            assert_eq!(out.len(), 16);
+            assert!(out.chunks(2).all(|pair| pair[0].coef.0 > 0 || pair[1].coef.0 < 0));
+        }
     }
 }
