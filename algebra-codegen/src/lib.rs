@@ -61,3 +61,9 @@ pub mod unit;
 pub mod versor;
 
 pub use spec::{CodegenError, ModuleSpec, TypeSpec};
+
+/// FNV-1a of `text`: the key of the measured-order tables ([`versor::fingerprint`],
+/// [`product_order::fingerprint`]), stable across builds and platforms.
+pub(crate) fn fnv1a(text: &str) -> u64 {
+    text.bytes().fold(0xcbf2_9ce4_8422_2325_u64, |h, b| (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3))
+}

@@ -2,6 +2,7 @@
 //! receives each result. Everything here is decided from the exact tables at expansion time.
 
 pub use crate::naming::{UNARY_OPS, unary_name};
+use crate::product_order::ProductOrder;
 pub use crate::ratio::Ratio;
 use crate::ratio::to_ratio;
 use crate::spec::{CodegenError, ModuleSpec, TypeSpec};
@@ -11,6 +12,9 @@ use algebra_core::rational::Q;
 use algebra_core::tables::{Product, Unary};
 use num_traits::Zero;
 use std::collections::BTreeSet;
+
+/// The chain length a kernel is planned with, before [`crate::product_order`] orders it.
+const TABLES_CHAIN: usize = ProductOrder::TABLES.chain;
 
 /// `c · lhs[lhs] · rhs[rhs]`: one term of a binary kernel (field indices into the types).
 #[derive(Debug, Clone, PartialEq)]
@@ -179,11 +183,18 @@ impl Plan {
                                 rhs: ri,
                                 out: o,
                                 outputs: restrict(o),
-                                chain: 4,
+                                chain: TABLES_CHAIN,
                             });
                         }
                     }
-                    binary.push(BinaryKernel { product, lhs: li, rhs: ri, out, outputs: restrict(out), chain: 4 });
+                    binary.push(BinaryKernel {
+                        product,
+                        lhs: li,
+                        rhs: ri,
+                        out,
+                        outputs: restrict(out),
+                        chain: TABLES_CHAIN,
+                    });
                 }
             }
         }
@@ -217,6 +228,7 @@ impl Plan {
         let actions = super::versor::plan_actions(&spec, full)?;
         let mut plan = Plan { spec, declared, full, binary, unary, norm, closed, actions, typed, matrices: Vec::new() };
         fold_signs(&mut plan);
+        // each product's term order: the tables' (chains of `TABLES_CHAIN`) or a measured one
         for k in plan.binary.iter_mut().chain(plan.typed.iter_mut()) {
             super::product_order::order_for_pairing(k);
         }

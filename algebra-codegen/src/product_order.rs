@@ -68,7 +68,7 @@ pub fn fingerprint(k: &BinaryKernel) -> u64 {
     let mut canonical = k.clone();
     apply_order(&mut canonical, ProductOrder::TABLES);
     let text = format!("{:?} {:?}", canonical.product, canonical.outputs);
-    text.bytes().fold(0xcbf2_9ce4_8422_2325_u64, |h, b| (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3))
+    crate::fnv1a(&text)
 }
 
 /// Puts `k`'s terms in `order` (a permutation of each output's terms) and sets its chain

@@ -280,7 +280,7 @@ pub fn fingerprint(k: &ActionKernel) -> u64 {
         canonical.stage1,
         canonical.stage2
     );
-    text.bytes().fold(0xcbf2_9ce4_8422_2325_u64, |h, b| (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3))
+    crate::fnv1a(&text)
 }
 
 /// Orders chosen per kernel by measurement (the "wisdom", as FFTW's): fingerprint
