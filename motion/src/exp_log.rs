@@ -134,9 +134,16 @@ impl<T: Real> Pose<T> {
     /// assert!(Pose::<f64>::identity().scale(&0.0).log().is_err());
     /// ```
     pub fn log(&self) -> Result<Even<T>, MotionError> {
-        if let Some(l) = self.log_direct() {
-            return Ok(l);
+        match self.log_direct() {
+            Some(l) => Ok(l),
+            None => self.log_careful(),
         }
+    }
+
+    /// [`Pose::log`] for the inputs its direct path declines: out of line, so that the common
+    /// case's code is the direct path's alone.
+    #[inline(never)]
+    fn log_careful(&self) -> Result<Even<T>, MotionError> {
         self.check_finite("log")?;
         // log(m S') = ln m + log S' for m > 0: the squares of S' = S/m stay in range.
         let (scale, s) = crate::scaled::rotational_scale(self).ok_or_else(|| self.singular("log"))?;
@@ -180,6 +187,9 @@ impl<T: Real> Pose<T> {
         let s_raw2 = dot(&a, &a);
         let s_raw = Real::sqrt(&s_raw2);
         let th = s_raw.fast_atan2(&self.scalar);
+        if self.scalar >= T::zero() && s_raw2.to_f64() > crate::series::SMALL_X * alpha.to_f64() {
+            return self.log_direct_acute(alpha, &a, &c, &s_raw2, &s_raw, &th);
+        }
         // one division: 1/√α, and β/(2α) = (β/2) (1/√α)² (the same bits as ½ β (1/√α)²:
         // scaling by 2 and ½ is exact)
         let inv_root = T::one().div_ref(&Real::sqrt(alpha));
@@ -204,6 +214,33 @@ impl<T: Real> Pose<T> {
         l.scalar = ln_fixed(alpha).mul_ref(&T::from_ratio(1, 2));
         l.e123inf = m;
         l.is_finite().then_some(l)
+    }
+
+    /// [`Pose::log_direct`] for `S∅ ≥ 0` and `|a|² > 2^-20 α` (`a e123` the rotational
+    /// bivector part, `s_raw = |a|`, `th` the half-angle): `1/√α` and `1/|a|` from one division
+    /// `d = 1/(|a| √α)` (`1/√α = |a| d`, `1/|a| = √α d`), and the factors of `unit_log_with`
+    /// of `U = (r - m r ω) S` (`r = 1/√α`, `m = β/(2α)`) without forming `U`: its log
+    /// `f a_U e123 + (f c_U + g U_ω a_U) einf` is `F a e123 + (F c + H a) einf` with `F = θ/|a|`,
+    /// `H = F m + G (Sω - m S∅)` and `G = g/α = (|a| - θ S∅)/|a|³` (the numerator by its series
+    /// in `θ` up to `θ = π/6`, `4|a|² ≤ α`: no cancellation), each an exact regrouping of the
+    /// unit element's factors.
+    #[inline]
+    fn log_direct_acute(&self, alpha: &T, a: &[T; 3], c: &[T; 3], s_raw2: &T, s_raw: &T, th: &T) -> Option<Even<T>> {
+        let root = Real::sqrt(alpha);
+        let d = T::one().div_ref(&s_raw.mul_ref(&root));
+        let (inv_root, q) = (s_raw.mul_ref(&d), root.mul_ref(&d));
+        let m = self.half_beta().mul_ref(&inv_root).mul_ref(&inv_root);
+        let series = s_raw2.mul_ref(&T::from_f64(4.0)) <= *alpha;
+        let num = crate::series::sin_minus_theta_cos_raw(th, s_raw, &self.scalar, &root, series);
+        let big_f = th.mul_ref(&q);
+        let g = num.mul_ref(&q.mul_ref(&q).mul_ref(&q));
+        let u_omega = self.e123inf.sub_ref(&m.mul_ref(&self.scalar));
+        let h = big_f.mul_ref(&m).add_ref(&g.mul_ref(&u_omega));
+        let c_out = std::array::from_fn(|i| c[i].mul_ref(&big_f).add_ref(&a[i].mul_ref(&h)));
+        let mut l = assemble(T::zero(), a.clone().map(|x| x.mul_ref(&big_f)), c_out, T::zero());
+        l.scalar = ln_fixed(alpha).mul_ref(&T::from_ratio(1, 2));
+        l.e123inf = m;
+        (self.modest_f64() || l.all_finite_value()).then_some(l)
     }
 
     /// [`Pose::log_direct`]'s bivector part for `S∅ < 0` (a rotation by more than π), given

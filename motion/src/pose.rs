@@ -423,10 +423,34 @@ impl<T: Real> Pose<T> {
         self.components().into_iter().all(Real::is_finite)
     }
 
+    /// [`Pose::is_finite`] as one test: every coefficient's finiteness and-ed without
+    /// short-circuit (one branch for the direct paths instead of eight).
+    #[inline]
+    pub(crate) fn all_finite_value(&self) -> bool {
+        self.components().iter().fold(true, |ok, x| ok & x.is_finite_value())
+    }
+
+    /// True when `T` is a plain `f64` (one component of `f64` precision: not a dual number,
+    /// a jet or lanes) and every coefficient is finite and below `2^200` in magnitude: one
+    /// integer comparison on the largest of the magnitudes' bits (a NaN's bits lie above those
+    /// of every finite number). The direct paths then bound their results a priori instead of
+    /// testing them.
+    #[inline]
+    pub(crate) fn modest_f64(&self) -> bool {
+        if !(std::mem::size_of::<T>() == 8 && T::relative_epsilon() == f64::EPSILON) {
+            return false;
+        }
+        let m = self.components().iter().fold(0u64, |m, x| m.max(x.to_f64().abs().to_bits()));
+        m < MODEST.to_bits()
+    }
+
     pub(crate) fn check_finite(&self, op: &'static str) -> Result<(), MotionError> {
         if self.is_finite() { Ok(()) } else { Err(MotionError::NotFinite { op, value: self.to_string() }) }
     }
 }
+
+/// `2^200`, the bound of [`Pose::modest_f64`].
+const MODEST: f64 = f64::from_bits((1023 + 200) << 52);
 
 /// `axis / |axis|`, or [`MotionError::ZeroAxis`].
 pub(crate) fn unit_axis<T: Real>(axis: &[T; 3]) -> Result<[T; 3], MotionError> {

@@ -133,6 +133,21 @@ pub(crate) fn log_factors_fixed<T: Real>(u0: &T, x: &T, s: &T, th: &T) -> (T, T)
     (th.mul_ref(&r), num.mul_ref(&r.mul_ref(&r).mul_ref(&r)))
 }
 
+/// `√α (sin θ - θ cos θ)` of a pose with `rev(S) S = α + βω`, given `|a| = √α sin θ`,
+/// `S∅ = √α cos θ ≥ 0`, `θ` and `√α`: `|a| - θ S∅` directly, or with `series` (`θ ≤ π/6`)
+/// `√α θ³ P(θ²)` by [`SIN_MINUS_THETA_COS`] (no cancellation). A branch, not a select of both:
+/// on the pose bench (the same 256 poses each round) computing both cost 6 ns more than the
+/// branch's mispredictions.
+#[inline]
+pub(crate) fn sin_minus_theta_cos_raw<T: Real>(th: &T, s_raw: &T, s0: &T, root: &T, series: bool) -> T {
+    if series {
+        let t2 = th.mul_ref(th);
+        poly(&SIN_MINUS_THETA_COS, &t2).mul_ref(&t2).mul_ref(&th.mul_ref(root))
+    } else {
+        s_raw.sub_ref(&th.mul_ref(s0))
+    }
+}
+
 /// `G(z) = (asin(√z)/√z - 1)/z` on `[0, 1/2]` as a polynomial in `z - 1/4`, lowest degree
 /// first: a degree-18 Chebyshev fit (error 2.1e-17) from the committed script
 /// `tests/fixtures/mpmath/asin_poly.py`, which also measures the evaluation below: `F = 1 + z G`

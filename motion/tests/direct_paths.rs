@@ -138,3 +138,33 @@ fn transform_point_is_exact_over_the_rationals() {
         assert_eq!(s.transform_point(&p).unwrap(), cga_null_action(&s, &p).0, "{s} on {p:?}");
     }
 }
+
+/// `Pose::log` of plain `f64` poses skips the test of its result when every coefficient is
+/// finite and below `2^200` (the result is then bounded a priori): translations on both sides
+/// of that bound, and rotational parts scaled to the edges of the direct path's range
+/// (`α = 2^±480`), against the 256-bit careful path. Where the reference is finite in `f64`
+/// the fast result equals it; where it is not, the fast path declines with an error.
+#[test]
+fn log_of_large_translations_equals_the_careful_path_or_fails() {
+    let _g = PrecisionGuard::new(256);
+    for half in [0.3, 0.9, 1.4] {
+        for t in [1e3, 1e59, 1.6e60, 1.7e60, 1e100, 1e250, 1e300, 1.7e308] {
+            for k in [1.0, 2f64.powi(-240), 2f64.powi(240)] {
+                let s = Pose::from_axis_angle_translation(&[0.6, -0.8, 0.0], &(2.0 * half), &[t, -0.5 * t, 0.25 * t])
+                    .unwrap()
+                    .scale(&k);
+                if !s.is_finite() {
+                    continue;
+                }
+                let reference = to_f64(&to_mp(&s).log().unwrap());
+                let fast = s.log();
+                if size(&reference).is_finite() {
+                    let fast = fast.unwrap_or_else(|e| panic!("log({s}) failed: {e}"));
+                    assert!(diff(&fast, &reference) <= 1e-15 * size(&reference), "log({s}): {fast} vs {reference}");
+                } else {
+                    assert!(fast.is_err(), "log({s}) = {fast:?}, reference {reference}");
+                }
+            }
+        }
+    }
+}
