@@ -58,6 +58,31 @@ pub struct ActionKernel {
     /// so that neighbouring sums have the same signs (a cross product's `v = (b23, -b13,
     /// b12)`); the negation is of the versor's coefficient, off the operand's chain.
     pub flip: u32,
+    /// Outputs computed as one operand coefficient times a quadratic form in the versor's
+    /// coefficients ([`Factored`], [`factor_outputs`]), indexed by output (empty or `None`:
+    /// the output is its stage-2 sum). Their stage-2 rows stay, for the fingerprint and the
+    /// exact checks; intermediates no other output reads are then not computed.
+    pub factored: Vec<Option<Factored>>,
+    /// Stage 1's constants other than ±1 multiply the operand's coefficient, bound once per
+    /// (constant, field) before the intermediates (`let xc = 2 · x.eo;`, then `s.e1inf · xc`),
+    /// instead of the versor's coefficient in each term (`(2 · s.e1inf) · x.eo`): one
+    /// multiplication per distinct pair instead of one per term. Set by the plan for every
+    /// straight-line general kernel (the conformal point actions: `2 xo` read by four
+    /// intermediates).
+    pub operand_constants: bool,
+}
+
+/// An output `x[operand] · Σ c · s[a] · s[b]` (`a <= b`, the versor's fields as declared, not
+/// negated by [`ActionKernel::flip`]): the stage-2 sum `Σ c2 · t[k] · s[a]` when each `t[k]` it
+/// reads is one product `c1 · s[a1] · x[operand]`, regrouped. A conformal point's `eo` under a
+/// motor is `xo (s² + b12² + b13² + b23²)`: 5 multiplications and 3 additions instead of the
+/// four intermediates' 4 and the sum's 4 and 3.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Factored {
+    /// The operand field that multiplies the form.
+    pub operand: usize,
+    /// The form's terms `(a, b, c)`, `a <= b`.
+    pub terms: Vec<(usize, usize, Ratio)>,
 }
 
 /// `out_j = n · x_j + scale · Σ stage2_j` with `n = Σ c · s[a] · s[b]` (the scalar
@@ -75,16 +100,81 @@ pub struct NormForm {
 }
 
 impl ActionKernel {
+    /// The factored form of output `j`, if it has one ([`ActionKernel::factored`]).
+    ///
+    /// ```
+    /// use algebra_core::{Algebra, Basis, Metric};
+    /// use algebra_codegen::{ModuleSpec, plan::Plan, versor::Convention};
+    /// // GATL's conformal declaration, whose point actions are factored (`versor::FACTORED`)
+    /// let z = "0";
+    /// let gram: [&[&str]; 5] = [&["1", z, z, z, z], &[z, "1", z, z, z], &[z, z, "1", z, z], &[z, z, z, z, "-1"], &[z, z, z, "-1", z]];
+    /// let metric = Metric::from_strs(&["1", "2", "3", "o", "inf"], &gram).unwrap();
+    /// let alg = Algebra::new("gatl", metric.clone());
+    /// let types = ModuleSpec::parse_types("Vector=grade1;Motor=1,e12,e13,e23,e1inf,e2inf,e3inf,e123inf", &alg).unwrap();
+    /// let plan = Plan::new(ModuleSpec::new("gatl", metric, Basis::Blade, types).unwrap()).unwrap();
+    /// let k = plan.actions.iter().find(|k| (k.versor, k.operand, k.convention) == (1, 0, Convention::Apply)).unwrap();
+    /// // `eo` (field 3) is `xo` times the rotational part's squared norm; the others are sums
+    /// assert_eq!(k.factor(3).map(|f| (f.operand, f.terms.len())), Some((3, 4)));
+    /// assert!((0..5).filter(|&j| j != 3).all(|j| k.factor(j).is_none()));
+    /// // its four intermediates `s xo`, `b12 xo`, ... are no longer computed
+    /// assert_eq!(k.used_intermediates().iter().filter(|u| !**u).count(), 4);
+    /// ```
+    pub fn factor(&self, j: usize) -> Option<&Factored> {
+        self.factored.get(j).and_then(Option::as_ref)
+    }
+
+    /// The distinct `(|c|, operand field)` of stage 1's constants other than ±1 (in the
+    /// intermediates that are computed), in order of first use: the bindings of
+    /// [`ActionKernel::operand_constants`].
+    pub fn operand_constant_fields(&self) -> Vec<(Ratio, usize)> {
+        let used = self.used_intermediates();
+        let mut out: Vec<(Ratio, usize)> = Vec::new();
+        for &(_, b, c) in self.stage1.iter().zip(&used).filter(|r| *r.1).flat_map(|r| r.0.iter()) {
+            let key = ((c.0.abs(), c.1), b);
+            if (c.0.abs() != 1 || c.1 != 1) && !out.contains(&key) {
+                out.push(key);
+            }
+        }
+        out
+    }
+
+    /// Which intermediates an output that is not factored reads: the others are not computed
+    /// (example at [`ActionKernel::factor`]).
+    pub fn used_intermediates(&self) -> Vec<bool> {
+        let mut used = vec![false; self.stage1.len()];
+        for (j, row) in self.stage2.iter().enumerate() {
+            if self.factor(j).is_none() {
+                row.iter().for_each(|t| used[t.0] = true);
+            }
+        }
+        used
+    }
+
     /// Multiplications and additions (as [`super::plan::KernelStats`] counts them).
     pub fn counts(&self) -> (usize, usize) {
-        let terms = |s: &[Vec<(usize, usize, Ratio)>]| -> (usize, usize) {
-            let consts = s.iter().flatten().filter(|t| t.2.0.abs() != 1 || t.2.1 != 1).count();
-            let products = s.iter().map(Vec::len).sum::<usize>();
+        let is_const = |c: &Ratio| c.0.abs() != 1 || c.1 != 1;
+        let terms = |s: &[&Vec<(usize, usize, Ratio)>]| -> (usize, usize) {
+            let consts = s.iter().copied().flatten().filter(|t| is_const(&t.2)).count();
+            let products = s.iter().map(|r| r.len()).sum::<usize>();
             let adds = s.iter().map(|o| o.len().saturating_sub(1)).sum();
             (products + consts, adds)
         };
-        let (m1, a1) = terms(&self.stage1);
-        let (m2, a2) = terms(&self.stage2);
+        let used = self.used_intermediates();
+        let rows1: Vec<_> = self.stage1.iter().zip(&used).filter(|r| *r.1).map(|r| r.0).collect();
+        let rows2: Vec<_> =
+            self.stage2.iter().enumerate().filter(|r| self.factor(r.0).is_none()).map(|r| r.1).collect();
+        let (mut m1, a1) = terms(&rows1);
+        if self.operand_constants {
+            // one product per distinct (constant, operand field) instead of one per term
+            let per_term = rows1.iter().copied().flatten().filter(|t| is_const(&t.2)).count();
+            m1 = m1 - per_term + self.operand_constant_fields().len();
+        }
+        let (mut m2, mut a2) = terms(&rows2);
+        for f in self.factored.iter().flatten() {
+            // the form's products (and constants), its sum, and the operand's product
+            m2 += 2 * f.terms.len() - f.terms.iter().filter(|t| !is_const(&t.2)).count() + 1;
+            a2 += f.terms.len().saturating_sub(1);
+        }
         let Some(norm) = &self.norm else { return (m1 + m2, a1 + a2) };
         // the norm, `n · x_j` per output, and `+ scale · y` per corrected output
         let nm = norm.terms.len() + norm.terms.iter().filter(|t| t.2.0.abs() != 1 || t.2.1 != 1).count();
@@ -706,7 +796,105 @@ fn action_kernel_in(
         chains: [false; 2],
         norm: None,
         flip: 0,
+        factored: Vec::new(),
+        operand_constants: false,
     })
+}
+
+/// The kernels whose factored outputs ([`factor_outputs`]) were measured faster, by
+/// [`fingerprint`]; the plan factors only these. On the products bench (Intel Xeon VM,
+/// 2026-12-05, ratios to the module's motor product): GATL's declaration `sandwich` 1.345 →
+/// 1.298, `apply` 1.354 → 1.291; the same factoring made `cga_null`'s (product basis, `e0`
+/// first) 1.328 → 1.500 and 1.280 → 1.495, so it is not the default.
+///
+/// ```
+/// use algebra_codegen::versor::{FACTORED, WISDOM};
+/// // each factored kernel's term order was measured too
+/// assert!(FACTORED.iter().all(|f| WISDOM.iter().any(|w| w.0 == f.0)));
+/// ```
+pub const FACTORED: &[(u64, &str)] =
+    &[(0x171c_29ca_63e8_7e55, "gatl Motor sandwich Vector"), (0x1f16_4979_183b_f233, "gatl Motor apply Vector")];
+
+/// [`factor_outputs`] for the kernels listed in [`FACTORED`] (the plan's rule).
+pub(crate) fn factor_measured(k: &mut ActionKernel) {
+    if FACTORED.iter().any(|f| f.0 == fingerprint(k)) {
+        factor_outputs(k);
+    }
+}
+
+/// Factors each output of a straight-line general kernel ([`ActionKernel::norm`] `None`)
+/// whose stage-2 sum reads only intermediates that are one product `c1 · s[a1] · x[b]` with
+/// the same operand field `b`, when that costs fewer operations (the intermediates no other
+/// output reads included): the output becomes `x[b] · Σ c · s[a] · s[a']` ([`Factored`]), the
+/// same polynomial, so the kernel's value over exact scalars is unchanged. Run after the term
+/// order ([`order_for_pairing`]): the fingerprint and the orders read the stage-2 rows, which
+/// stay.
+///
+/// ```
+/// use algebra_core::{Algebra, Basis};
+/// use algebra_codegen::{ModuleSpec, plan::Plan, versor::{self, Convention}};
+/// let alg = Algebra::builtin("cga-null").unwrap();
+/// let types = ModuleSpec::parse_types("Vector=grade1;Motor=1,e12,e13,e23,e1inf,e2inf,e3inf,e123inf", &alg).unwrap();
+/// let plan = Plan::new(ModuleSpec::new("c", alg.metric().clone(), Basis::Product, types).unwrap()).unwrap();
+/// let mut k = plan.actions.iter().find(|k| (k.versor, k.operand, k.convention) == (1, 0, Convention::Sandwich)).unwrap().clone();
+/// assert!(k.factor(0).is_none()); // not in `FACTORED`: measured slower for this module
+/// versor::factor_outputs(&mut k);
+/// // the point's e0 coefficient: x0 (s² + b12² + b13² + b23²), four squares
+/// let f = k.factor(0).unwrap();
+/// assert_eq!((f.operand, f.terms.len()), (0, 4));
+/// // unfactored: 61 and 43; 64 and 43 with the constants on the versor's side (`operand_constants`)
+/// assert_eq!(k.counts(), (58, 43));
+/// ```
+pub fn factor_outputs(k: &mut ActionKernel) {
+    if k.norm.is_some() {
+        return;
+    }
+    let sign = |a: usize| if k.flip >> a & 1 == 1 { -1 } else { 1 };
+    let mut readers = vec![0usize; k.stage1.len()];
+    k.stage2.iter().flatten().for_each(|t| readers[t.0] += 1);
+    let is_const = |c: &Ratio| c.0.abs() != 1 || c.1 != 1;
+    let mut factored = vec![None; k.stage2.len()];
+    for (j, row) in k.stage2.iter().enumerate() {
+        let Some(&(t0, _, _)) = row.first() else { continue };
+        let Some(&(_, b, _)) = k.stage1[t0].first() else { continue };
+        if !row.iter().all(|t| k.stage1[t.0].len() == 1 && k.stage1[t.0][0].1 == b) {
+            continue;
+        }
+        let mut form: BTreeMap<(usize, usize), Q> = BTreeMap::new();
+        for &(t, a, c2) in row {
+            let (a1, _, c1) = k.stage1[t][0];
+            let c = Q::new(c1.0.into(), c1.1.into())
+                * Q::new(c2.0.into(), c2.1.into())
+                * Q::from_integer((sign(a) * sign(a1)).into());
+            *form.entry((a.min(a1), a.max(a1))).or_insert_with(Q::zero) += c;
+        }
+        let Ok(terms) = form
+            .into_iter()
+            .filter(|(_, c)| !c.is_zero())
+            .map(|((a, a1), c)| to_ratio(&c).map(|c| (a, a1, c)))
+            .collect::<Result<Vec<_>, _>>()
+        else {
+            continue;
+        };
+        if terms.is_empty() {
+            continue;
+        }
+        // before: the row (and the intermediates only it reads); after: the form and x[b]
+        let mut distinct: Vec<usize> = row.iter().map(|t| t.0).collect();
+        distinct.sort_unstable();
+        distinct.dedup();
+        let own: usize = distinct
+            .iter()
+            .filter(|&&t| readers[t] == row.iter().filter(|r| r.0 == t).count())
+            .map(|&t| 1 + usize::from(is_const(&k.stage1[t][0].2)))
+            .sum();
+        let before = own + 2 * row.len() - 1 + row.iter().filter(|t| is_const(&t.2)).count();
+        let after = 2 * terms.len() + terms.iter().filter(|t| is_const(&t.2)).count();
+        if after < before {
+            factored[j] = Some(Factored { operand: b, terms });
+        }
+    }
+    k.factored = if factored.iter().any(Option::is_some) { factored } else { Vec::new() };
 }
 
 #[cfg(test)]
@@ -749,7 +937,10 @@ mod tests {
         let sf: Vec<Q> =
             s.iter().enumerate().map(|(a, v)| if k.flip >> a & 1 == 1 { -v.clone() } else { v.clone() }).collect();
         let t: Vec<Q> = k.stage1.iter().map(|row| row.iter().map(|&(a, b, c)| r(c) * &sf[a] * &x[b]).sum()).collect();
-        let y = k.stage2.iter().map(|row| row.iter().map(|&(i, a, c)| r(c) * &t[i] * &sf[a]).sum::<Q>());
+        let y = k.stage2.iter().enumerate().map(|(j, row)| match k.factor(j) {
+            Some(f) => f.terms.iter().map(|&(a, b, c)| r(c) * &s[a] * &s[b]).sum::<Q>() * &x[f.operand],
+            None => row.iter().map(|&(i, a, c)| r(c) * &t[i] * &sf[a]).sum::<Q>(),
+        });
         match &k.norm {
             None => y.collect(),
             Some(norm) => {
@@ -778,7 +969,7 @@ mod tests {
             // as the predefined `cga` module: straight-line kernels up to 256 terms
             (builtin("cga"), Basis::Blade, "Vector=grade1;Motor=even".to_string(), Some(256)),
         ];
-        let (mut flipped, mut normed, mut wise) = (0, 0, 0);
+        let (mut flipped, mut normed, mut wise, mut factored) = (0, 0, 0, 0);
         for (metric, basis, types, table_above) in specs {
             let alg = Algebra::new("m", metric.clone());
             let types = ModuleSpec::parse_types(&types, &alg).unwrap();
@@ -820,10 +1011,12 @@ mod tests {
                 flipped += usize::from(k.flip != 0);
                 normed += usize::from(k.norm.is_some());
                 wise += usize::from(WISDOM.iter().any(|w| w.0 == fingerprint(k)));
+                factored += k.factored.iter().flatten().count();
             }
         }
-        // the wisdom's eight kernels, seven with flips, two in the scalar-norm form
-        assert_eq!((wise, flipped, normed), (8, 7, 2));
+        // the wisdom's eight kernels, seven with flips, two in the scalar-norm form; the
+        // conformal point's eo output factored in GATL's declaration (`FACTORED`)
+        assert_eq!((wise, flipped, normed, factored), (8, 7, 2, 2));
     }
 
     /// GATL's conformal declaration (blade basis, `eo · einf = -1`): the intermediate is taken

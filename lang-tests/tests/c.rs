@@ -58,6 +58,16 @@ algebra_macros::algebra! {
     }
 }
 
+algebra_macros::algebra! {
+    /// The conformal model as GATL declares it (blade basis, `eo · einf = -1`): its point
+    /// actions have a factored output (`algebra_codegen::versor::FACTORED`).
+    pub mod gatl {
+        generators { e1, e2, e3, eo, einf }
+        metric { (e1, e1) = 1, (e2, e2) = 1, (e3, e3) = 1, (eo, einf) = -1 }
+        types { Vector = grade 1; Motor = [1, e12, e13, e23, e1inf, e2inf, e3inf, e123inf]; }
+    }
+}
+
 const SAMPLES: usize = 3;
 
 /// Runs every kernel of the plan's C header in `double` (or `float`) and compares with the
@@ -204,5 +214,22 @@ fn product_basis_cga_header_equals_the_rust_kernels() {
     let plan =
         plan("cga-null", Basis::Product, "Motor=1,e12,e13,e23,e1inf,e2inf,e3inf,e123inf;Vector=grade1", "cga_null");
     let r64 = registry!(cga_null, f64; types [Motor, Vector, Even, Odd, Multivector]; versors [Motor, Vector, Even, Odd] on [Vector, Even, Odd]; versors [Motor] on [Motor]; closed []);
+    check_f64(&plan, &r64);
+}
+
+#[test]
+fn gatl_declaration_header_equals_the_rust_kernels() {
+    use algebra_codegen::ModuleSpec;
+    use algebra_core::{Algebra, Metric};
+    let z = "0";
+    let gram: [&[&str]; 5] =
+        [&["1", z, z, z, z], &[z, "1", z, z, z], &[z, z, "1", z, z], &[z, z, z, z, "-1"], &[z, z, z, "-1", z]];
+    let metric = Metric::from_strs(&["1", "2", "3", "o", "inf"], &gram).unwrap();
+    let alg = Algebra::new("gatl", metric.clone());
+    let types = ModuleSpec::parse_types("Vector=grade1;Motor=1,e12,e13,e23,e1inf,e2inf,e3inf,e123inf", &alg).unwrap();
+    let plan = Plan::new(ModuleSpec::new("gatl", metric, Basis::Blade, types).unwrap()).unwrap();
+    // the factored outputs are printed in C as in Rust
+    assert_eq!(plan.actions.iter().filter(|k| !k.factored.is_empty()).count(), 2);
+    let r64 = registry!(gatl, f64; types [Vector, Motor, Even, Odd, Multivector]; versors [Motor, Vector, Even, Odd] on [Vector, Even, Odd]; versors [Motor] on [Motor]; closed []);
     check_f64(&plan, &r64);
 }

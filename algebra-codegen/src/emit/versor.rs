@@ -90,10 +90,24 @@ fn scaled(c: Ratio, field: &proc_macro2::Ident, flipped: bool) -> (Ratio, TokenS
 pub(crate) fn stage1_binds(names: &Names, k: &ActionKernel) -> Vec<TokenStream> {
     let (vf, xf) = (&names.fields[k.versor], &names.fields[k.operand]);
     let mut binds = Vec::new();
-    for (i, terms) in k.stage1.iter().enumerate() {
+    let used = k.used_intermediates();
+    // `let xc_N_D_B = N/D · x.B;` ([`ActionKernel::operand_constants`])
+    let xc = |(n, d): Ratio, b: usize| format_ident!("xc_{}_{}_{}", n.unsigned_abs(), d.unsigned_abs(), b);
+    if k.operand_constants {
+        for ((n, d), b) in k.operand_constant_fields() {
+            let (name, fb) = (xc((n, d), b), &xf[b]);
+            binds.push(quote!(let #name = T::from_ratio(#n, #d) * &x.#fb;));
+        }
+    }
+    for (i, terms) in k.stage1.iter().enumerate().filter(|(i, _)| used[*i]) {
         let summands: Vec<SumTerm> = terms
             .iter()
             .map(|&(a, b, c)| {
+                if k.operand_constants && (c.0.abs() != 1 || c.1 != 1) {
+                    let (_, fa) = scaled((1, 1), &vf[a], k.flip >> a & 1 == 1);
+                    let name = xc(c, b);
+                    return ((c.0.signum(), 1), quote!((#fa.mul_ref(&#name))), true);
+                }
                 let (c, fa) = scaled(c, &vf[a], k.flip >> a & 1 == 1);
                 let fb = &xf[b];
                 (c, quote!((#fa.mul_ref(&x.#fb))), true)
@@ -112,7 +126,21 @@ pub(crate) fn stage1_binds(names: &Names, k: &ActionKernel) -> Vec<TokenStream> 
 pub(super) fn unrolled_body(names: &Names, k: &ActionKernel) -> TokenStream {
     let (xt, vf, xf) = (&names.types[k.operand], &names.fields[k.versor], &names.fields[k.operand]);
     let mut binds = stage1_binds(names, k);
-    let outs = k.stage2.iter().zip(xf).map(|(terms, f)| {
+    let outs = k.stage2.iter().zip(xf).enumerate().map(|(j, (terms, f))| {
+        if let Some(form) = k.factor(j) {
+            // `x[b] · Σ c · s[a] · s[a']` ([`crate::versor::Factored`])
+            let terms = form
+                .terms
+                .iter()
+                .map(|&(a, b, c)| {
+                    let (c, fa) = scaled(c, &vf[a], false);
+                    let fb = &vf[b];
+                    (c, quote!((#fa.mul_ref(&self.#fb))), true)
+                })
+                .collect();
+            let (q, xb) = (tree_sum(terms), &xf[form.operand]);
+            return quote!((#q).mul_ref(&x.#xb));
+        }
         let terms: Vec<SumTerm> = terms
             .iter()
             .map(|&(i, a, c)| {

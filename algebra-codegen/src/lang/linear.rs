@@ -124,18 +124,44 @@ fn scaled(c: Ratio, a: usize, flip: u32) -> (Ratio, Expr) {
     if n.abs() == 1 && d == 1 { (c, f) } else { ((n.signum(), 1), mul(Expr::Const((n.abs(), d)), f)) }
 }
 
+/// The first stage's locals: the operand's constants first when the kernel binds them
+/// ([`ActionKernel::operand_constants`]), then the intermediates every output reads (all of
+/// them, but those read only by factored outputs, [`ActionKernel::factored`]).
 fn stage1(k: &ActionKernel) -> Vec<Expr> {
-    k.stage1
-        .iter()
-        .map(|terms| {
-            let summands: Vec<Term<Expr>> = terms
-                .iter()
-                .map(|&(a, b, c)| {
-                    let (c, s) = scaled(c, a, k.flip);
-                    (c, mul(s, field(1, b)), true)
-                })
-                .collect();
-            if k.chains[0] { sum_in::<Ir>(summands) } else { tree_sum_in::<Ir>(summands) }
+    let used = k.used_intermediates();
+    let consts = if k.operand_constants { k.operand_constant_fields() } else { Vec::new() };
+    let mut lets: Vec<Expr> = consts.iter().map(|&(c, b)| mul(Expr::Const(c), field(1, b))).collect();
+    let temps = k.stage1.iter().zip(used).filter(|(_, u)| *u).map(|(terms, _)| {
+        let summands: Vec<Term<Expr>> = terms
+            .iter()
+            .map(|&(a, b, c)| {
+                if k.operand_constants && (c.0.abs() != 1 || c.1 != 1) {
+                    let (_, s) = scaled((1, 1), a, k.flip);
+                    let local = consts.iter().position(|&x| x == ((c.0.abs(), c.1), b)).expect("bound");
+                    return ((c.0.signum(), 1), mul(s, Expr::Local(local)), true);
+                }
+                let (c, s) = scaled(c, a, k.flip);
+                (c, mul(s, field(1, b)), true)
+            })
+            .collect();
+        if k.chains[0] { sum_in::<Ir>(summands) } else { tree_sum_in::<Ir>(summands) }
+    });
+    lets.extend(temps);
+    lets
+}
+
+/// The local of each intermediate in [`stage1`]'s numbering (`usize::MAX` when not computed).
+fn intermediate_locals(k: &ActionKernel) -> Vec<usize> {
+    let first = if k.operand_constants { k.operand_constant_fields().len() } else { 0 };
+    let used = k.used_intermediates();
+    used.iter()
+        .scan(first, |n, &u| {
+            Some(if u {
+                *n += 1;
+                *n - 1
+            } else {
+                usize::MAX
+            })
         })
         .collect()
 }
@@ -154,6 +180,34 @@ fn stage2_shaped(terms: &[(usize, usize, Ratio)], chain: bool, flip: u32) -> Exp
         })
         .collect();
     if chain { sum_in::<Ir>(terms) } else { tree_sum_in::<Ir>(terms) }
+}
+
+/// The outputs of a straight-line general kernel: each stage-2 sum over the intermediates'
+/// locals ([`stage1`]'s numbering), or a factored output `x[b] · Σ c · s[a] · s[a']` as the
+/// Rust kernel computes it.
+fn stage2_outputs(k: &ActionKernel) -> Vec<Expr> {
+    let local = intermediate_locals(k);
+    k.stage2
+        .iter()
+        .enumerate()
+        .map(|(j, terms)| match k.factor(j) {
+            Some(f) => {
+                let form = f
+                    .terms
+                    .iter()
+                    .map(|&(a, b, c)| {
+                        let (c, s) = scaled(c, a, 0);
+                        (c, mul(s, field(0, b)), true)
+                    })
+                    .collect();
+                mul(tree_sum_in::<Ir>(form), field(1, f.operand))
+            }
+            None => {
+                let renumbered: Vec<_> = terms.iter().map(|&(i, a, c)| (local[i], a, c)).collect();
+                stage2_shaped(&renumbered, k.chains[1], k.flip)
+            }
+        })
+        .collect()
 }
 
 /// Whether an action kernel is table-driven in Rust ([`crate::size::table_driven`]).
@@ -198,7 +252,7 @@ fn stages(plan: &Plan, k: &ActionKernel) -> (Vec<Expr>, Vec<Expr>) {
             .collect();
         (lets, out)
     } else {
-        (stage1(k), k.stage2.iter().map(|t| stage2_shaped(t, k.chains[1], k.flip)).collect())
+        (stage1(k), stage2_outputs(k))
     }
 }
 
