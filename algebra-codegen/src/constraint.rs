@@ -334,7 +334,7 @@ impl ConstrainedKernel {
                     inner.iter().map(|t| (t.coeff.0.abs(), t.coeff.1)).filter(|&c| c != (1, 1)).collect();
                 setup += factors.len();
                 let constant_unit =
-                    inner.len() == 1 && inner[0].left.is_none() && inner[0].coeff.0.abs() == 1 && inner[0].coeff.1 == 1;
+                    inner.len() == 1 && inner[0].left.is_none() && crate::ratio::is_unit(inner[0].coeff);
                 apply += degree(right).saturating_sub(1);
                 if !right.is_empty() && !constant_unit {
                     apply += 1;

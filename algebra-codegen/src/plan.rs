@@ -4,7 +4,7 @@
 pub use crate::naming::{UNARY_OPS, unary_name};
 use crate::product_order::ProductOrder;
 pub use crate::ratio::Ratio;
-use crate::ratio::to_ratio;
+use crate::ratio::{is_unit, to_ratio};
 use crate::spec::{CodegenError, ModuleSpec, TypeSpec};
 use algebra_core::basis::Basis;
 use algebra_core::multivector::Multivector;
@@ -108,7 +108,7 @@ pub struct Plan {
 /// Counts of a kernel given its per-output terms.
 fn count(outputs: &[Vec<Term>]) -> (usize, usize) {
     let pairs: BTreeSet<(usize, usize)> = outputs.iter().flatten().map(|t| (t.lhs, t.rhs)).collect();
-    let consts = outputs.iter().flatten().filter(|t| t.coef.0.abs() != 1 || t.coef.1 != 1).count();
+    let consts = outputs.iter().flatten().filter(|t| !is_unit(t.coef)).count();
     let adds = outputs.iter().map(|o| o.len().saturating_sub(1)).sum();
     (pairs.len() + consts, adds)
 }
@@ -301,7 +301,7 @@ impl Plan {
             });
         }
         for k in &self.unary {
-            let mul = k.outputs.iter().flatten().filter(|(_, c)| c.0.abs() != 1 || c.1 != 1).count();
+            let mul = k.outputs.iter().flatten().filter(|(_, c)| !is_unit(*c)).count();
             let add = k.outputs.iter().map(|o| o.len().saturating_sub(1)).sum();
             out.push(KernelStats {
                 op: unary_name(k.op).to_string(),

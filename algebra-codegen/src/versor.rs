@@ -14,7 +14,7 @@
 //! all have the same parity; every other pair keeps the composed full product.
 
 use super::{CodegenError, ModuleSpec};
-use crate::ratio::{Ratio, to_ratio};
+use crate::ratio::{Ratio, is_unit, to_ratio};
 use algebra_core::rational::Q;
 use algebra_core::tables::{Product, Unary};
 use algebra_core::{Basis, Multivector};
@@ -131,7 +131,7 @@ impl ActionKernel {
         let mut out: Vec<(Ratio, usize)> = Vec::new();
         for &(_, b, c) in self.stage1.iter().zip(&used).filter(|r| *r.1).flat_map(|r| r.0.iter()) {
             let key = ((c.0.abs(), c.1), b);
-            if (c.0.abs() != 1 || c.1 != 1) && !out.contains(&key) {
+            if !is_unit(c) && !out.contains(&key) {
                 out.push(key);
             }
         }
@@ -152,7 +152,7 @@ impl ActionKernel {
 
     /// Multiplications and additions (as [`super::plan::KernelStats`] counts them).
     pub fn counts(&self) -> (usize, usize) {
-        let is_const = |c: &Ratio| c.0.abs() != 1 || c.1 != 1;
+        let is_const = |c: &Ratio| !is_unit(*c);
         let terms = |s: &[&Vec<(usize, usize, Ratio)>]| -> (usize, usize) {
             let consts = s.iter().copied().flatten().filter(|t| is_const(&t.2)).count();
             let products = s.iter().map(|r| r.len()).sum::<usize>();
@@ -177,7 +177,7 @@ impl ActionKernel {
         }
         let Some(norm) = &self.norm else { return (m1 + m2, a1 + a2) };
         // the norm, `n · x_j` per output, and `+ scale · y` per corrected output
-        let nm = norm.terms.len() + norm.terms.iter().filter(|t| t.2.0.abs() != 1 || t.2.1 != 1).count();
+        let nm = norm.terms.len() + norm.terms.iter().filter(|t| !is_unit(t.2)).count();
         let na = norm.terms.len().saturating_sub(1);
         let corrected = self.stage2.iter().filter(|r| !r.is_empty()).count();
         let (sm, sa) = match norm.scale {
@@ -852,7 +852,7 @@ pub fn factor_outputs(k: &mut ActionKernel) {
     let sign = |a: usize| if k.flip >> a & 1 == 1 { -1 } else { 1 };
     let mut readers = vec![0usize; k.stage1.len()];
     k.stage2.iter().flatten().for_each(|t| readers[t.0] += 1);
-    let is_const = |c: &Ratio| c.0.abs() != 1 || c.1 != 1;
+    let is_const = |c: &Ratio| !is_unit(*c);
     let mut factored = vec![None; k.stage2.len()];
     for (j, row) in k.stage2.iter().enumerate() {
         let Some(&(t0, _, _)) = row.first() else { continue };

@@ -79,7 +79,7 @@ fn table_body(names: &Names, k: &ActionKernel) -> TokenStream {
 fn scaled(c: Ratio, field: &proc_macro2::Ident, flipped: bool) -> (Ratio, TokenStream) {
     let (n, d) = c;
     let f = if flipped { quote!((__gam_engine::Ring::neg_ref(&self.#field))) } else { quote!(self.#field) };
-    if n.abs() == 1 && d == 1 {
+    if crate::ratio::is_unit(c) {
         return (c, f);
     }
     let k = n.abs();
@@ -103,7 +103,7 @@ pub(crate) fn stage1_binds(names: &Names, k: &ActionKernel) -> Vec<TokenStream> 
         let summands: Vec<SumTerm> = terms
             .iter()
             .map(|&(a, b, c)| {
-                if k.operand_constants && (c.0.abs() != 1 || c.1 != 1) {
+                if k.operand_constants && !crate::ratio::is_unit(c) {
                     let (_, fa) = scaled((1, 1), &vf[a], k.flip >> a & 1 == 1);
                     let name = xc(c, b);
                     return ((c.0.signum(), 1), quote!((#fa.mul_ref(&#name))), true);

@@ -121,7 +121,7 @@ fn norm(ty: usize, terms: &[PlanTerm], name: &str) -> Kernel {
 fn scaled(c: Ratio, a: usize, flip: u32) -> (Ratio, Expr) {
     let (n, d) = c;
     let f = if flip >> a & 1 == 1 { <Ir as Build>::neg(field(0, a)) } else { field(0, a) };
-    if n.abs() == 1 && d == 1 { (c, f) } else { ((n.signum(), 1), mul(Expr::Const((n.abs(), d)), f)) }
+    if crate::ratio::is_unit(c) { (c, f) } else { ((n.signum(), 1), mul(Expr::Const((n.abs(), d)), f)) }
 }
 
 /// The first stage's locals: the operand's constants first when the kernel binds them
@@ -135,7 +135,7 @@ fn stage1(k: &ActionKernel) -> Vec<Expr> {
         let summands: Vec<Term<Expr>> = terms
             .iter()
             .map(|&(a, b, c)| {
-                if k.operand_constants && (c.0.abs() != 1 || c.1 != 1) {
+                if k.operand_constants && !crate::ratio::is_unit(c) {
                     let (_, s) = scaled((1, 1), a, k.flip);
                     let local = consts.iter().position(|&x| x == ((c.0.abs(), c.1), b)).expect("bound");
                     return ((c.0.signum(), 1), mul(s, Expr::Local(local)), true);
