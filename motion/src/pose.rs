@@ -440,7 +440,7 @@ impl<T: Real> Pose<T> {
     /// testing them.
     #[inline]
     pub(crate) fn modest_f64(&self) -> bool {
-        if !(std::mem::size_of::<T>() == 8 && T::relative_epsilon() == f64::EPSILON) {
+        if !crate::series::plain_f64::<T>() {
             return false;
         }
         let m = self.components().iter().fold(0u64, |m, x| m.max(x.to_f64().abs().to_bits()));

@@ -36,6 +36,14 @@ pub(crate) fn at_most_f64<T: Ring>() -> bool {
     T::relative_epsilon() >= f64::EPSILON
 }
 
+/// Whether `T` is one `f64` (not a dual number, jet, lanes or `f32`): eight bytes with
+/// `f64`'s precision. Then `magnitude` is `|x|` (NaN for NaN) and the direct paths can fold
+/// their finiteness tests into one number ([`crate::Pose::transform_point`]) or skip them for
+/// inputs of bounded size (`Pose::modest_f64`).
+pub(crate) fn plain_f64<T: Ring>() -> bool {
+    std::mem::size_of::<T>() == 8 && T::relative_epsilon() == f64::EPSILON
+}
+
 /// Terms of the fixed exp polynomials, used up to `u = 4` (half-angles up to 2): there the
 /// first omitted term is below `4^14/28! < 2^-69` (Estrin's scheme evaluates 14 terms in as
 /// many dependent steps as 10).

@@ -168,3 +168,70 @@ fn log_of_large_translations_equals_the_careful_path_or_fails() {
         }
     }
 }
+
+/// `Pose::transform_point` at `f64` folds its tests (`α` tame, each coordinate finite) into one
+/// number, `α + Σ (o_i - o_i)`: images that overflow in exactly one coordinate (each of the
+/// three in turn), translations and points up to `1.7e308`, rotational scales `2^±240` and
+/// `2^±260` (outside the tame range: the careful path), against the 256-bit careful path.
+/// Where the reference is finite in `f64` the fast result equals it; where it is not, the fast
+/// path declines with `NotFinite`. A NaN or infinite coordinate of the point, in any place,
+/// fails the same way.
+#[test]
+fn transform_point_overflowing_in_one_coordinate_equals_the_careful_path_or_fails() {
+    let _g = PrecisionGuard::new(256);
+    let mp = |x: f64| MpFloat::from_f64(x);
+    let mut checked = [0usize; 2];
+    for axis in 0..3 {
+        for t in [1.0, 1e300, 8e307, 9e307, 1.7e308] {
+            for x in [0.5, 1e300, 8e307, 9e307, 1.7e308] {
+                for k in [1.0, 2f64.powi(-240), 2f64.powi(240), 2f64.powi(-260), 2f64.powi(260)] {
+                    let mut shift = [0.0; 3];
+                    shift[axis] = t;
+                    // a quarter turn about the axis itself: the other coordinates stay small
+                    let mut n = [0.0; 3];
+                    n[axis] = 1.0;
+                    let s =
+                        Pose::from_axis_angle_translation(&n, &std::f64::consts::FRAC_PI_2, &shift).unwrap().scale(&k);
+                    let mut p = [0.25, -0.5, 0.75];
+                    p[axis] = x;
+                    if !s.is_finite() {
+                        continue;
+                    }
+                    let reference = to_mp(&s).transform_point(&p.map(mp)).unwrap().map(|c| c.to_f64());
+                    let fast = s.transform_point(&p);
+                    // `α = k²` within `2^±500`: the direct path; else the careful one, which
+                    // may decline an image within a factor 4 of `f64::MAX` (its rescaled pose
+                    // has `α` in [1, 4), so `α t` overflows first)
+                    let direct = k.log2().abs() <= 250.0;
+                    if !direct && fast.is_err() && reference.iter().any(|c| c.abs() > 4e307) {
+                        continue;
+                    }
+                    if reference.iter().all(|c| c.is_finite()) {
+                        let fast = fast.unwrap_or_else(|e| panic!("{s} on {p:?} failed: {e}"));
+                        for (f, r) in fast.iter().zip(&reference) {
+                            assert!(
+                                (f - r).abs() <= 4e-16 * (1.0 + r.abs()) * 4.0,
+                                "{s} on {p:?}: {fast:?} vs {reference:?}"
+                            );
+                        }
+                        checked[0] += 1;
+                    } else {
+                        assert!(
+                            matches!(fast, Err(motion::MotionError::NotFinite { .. })),
+                            "{s} on {p:?} = {fast:?}, reference {reference:?}"
+                        );
+                        checked[1] += 1;
+                    }
+                }
+            }
+        }
+        let s = Pose::from_axis_angle_translation(&[0.0, 0.6, 0.8], &1.0, &[1.0, 2.0, 3.0]).unwrap();
+        for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+            let mut p = [1.0, 2.0, 3.0];
+            p[axis] = bad;
+            assert!(matches!(s.transform_point(&p), Err(motion::MotionError::NotFinite { .. })), "{p:?}");
+        }
+    }
+    // both outcomes occur, on each side of the tame range
+    assert!(checked[0] > 100 && checked[1] > 30, "{checked:?}");
+}
