@@ -46,6 +46,32 @@ pub(crate) struct Reducer<'a> {
     pub(crate) small: Option<&'a [i64]>,
 }
 
+/// The buffer of a reducer list, kept from one list to the next (the engine builds one per
+/// S-pair and one per tail reduction). A list borrows the basis, which changes in between, so
+/// the list itself cannot be kept; its allocation can. Lists of 30-40 reducers take 1.5-2 KB,
+/// which glibc serves from its large bins after merging every freed small chunk
+/// (`malloc_consolidate`): docs/performance.md, "tenth session".
+#[derive(Default)]
+pub(crate) struct ReducerBuffer(Vec<Reducer<'static>>);
+
+impl ReducerBuffer {
+    /// An empty list in the kept buffer: collecting a `map` over an empty vector into a vector
+    /// of an element of the same layout reuses its allocation (`Vec`'s in-place collection);
+    /// only the lifetime changes.
+    pub(crate) fn take<'a>(&mut self) -> Vec<Reducer<'a>> {
+        std::mem::take(&mut self.0)
+            .into_iter()
+            .map(|_| -> Reducer<'a> { unreachable!("the kept list is empty") })
+            .collect()
+    }
+
+    /// Keeps `list`'s buffer for the next [`Self::take`].
+    pub(crate) fn keep(&mut self, mut list: Vec<Reducer<'_>>) {
+        list.clear();
+        self.0 = list.into_iter().map(|_| -> Reducer<'static> { unreachable!("the list was cleared") }).collect();
+    }
+}
+
 impl<'a> Reducer<'a> {
     pub(crate) fn new(poly: &'a DPoly) -> Self {
         Reducer::with_sugar(poly, 0)

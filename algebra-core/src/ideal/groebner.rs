@@ -4,7 +4,7 @@
 //! S-polynomials and reductions by integer multiples, content removed) on packed
 //! monomials.
 
-use super::division::{Reducer, reduce, s_poly};
+use super::division::{Reducer, ReducerBuffer, reduce, s_poly};
 use super::order::{self, Word};
 use super::small::{self, small_coefs};
 use super::{Budget, DPoly, IdealError, Meter, PolyRing};
@@ -102,16 +102,16 @@ impl State<'_> {
     /// (as Singular reduces by its set `T` of all elements) takes other, shorter paths: on the
     /// docs' example 110 S-pairs and 31 new elements instead of 177 and 67 (Singular: 113 and
     /// 31), on cyclic-6 356 S-pairs instead of 411 (docs/performance.md).
-    fn reducers(&self) -> Vec<Reducer<'_>> {
-        (0..self.polys.len())
-            .map(|i| Reducer {
-                mask: self.masks[i],
-                poly: &self.polys[i],
-                sugar: self.sugar[i],
-                top: self.tops[i],
-                small: self.small[i].as_deref(),
-            })
-            .collect()
+    fn reducers<'s>(&'s self, buffer: &mut ReducerBuffer) -> Vec<Reducer<'s>> {
+        let mut list = buffer.take();
+        list.extend((0..self.polys.len()).map(|i| Reducer {
+            mask: self.masks[i],
+            poly: &self.polys[i],
+            sugar: self.sugar[i],
+            top: self.tops[i],
+            small: self.small[i].as_deref(),
+        }));
+        list
     }
 
     /// Gebauer–Möller update: installs `h` (index k) into the basis and the pair list.
@@ -214,7 +214,7 @@ impl State<'_> {
     /// are kept reduced as well, since they still reduce (see [`Self::reducers`]): with their
     /// tails left as they were, the docs' example took as long with 110 S-pairs as with 177
     /// (2.3 ms, against 1.5 ms); cyclic-5 pays about 15% for it.
-    fn reduce_tails(&mut self, meter: &mut Meter) -> Result<(), IdealError> {
+    fn reduce_tails(&mut self, buffer: &mut ReducerBuffer, meter: &mut Meter) -> Result<(), IdealError> {
         let order = self.ring.order();
         for i in 0..self.polys.len() {
             let since = std::mem::replace(&mut self.clean[i], self.polys.len());
@@ -230,17 +230,16 @@ impl State<'_> {
             if !dirty {
                 continue;
             }
-            let others: Vec<Reducer<'_>> = (0..self.polys.len())
-                .filter(|&j| j != i && self.active[j])
-                .map(|j| Reducer {
-                    mask: self.masks[j],
-                    poly: &self.polys[j],
-                    sugar: 0,
-                    top: self.tops[j],
-                    small: self.small[j].as_deref(),
-                })
-                .collect();
+            let mut others = buffer.take();
+            others.extend((0..self.polys.len()).filter(|&j| j != i && self.active[j]).map(|j| Reducer {
+                mask: self.masks[j],
+                poly: &self.polys[j],
+                sugar: 0,
+                top: self.tops[j],
+                small: self.small[j].as_deref(),
+            }));
             let h = with_tail_reduced(g, self.small[i].as_deref(), &others, order, meter)?;
+            buffer.keep(others);
             if self.active[i] {
                 self.terms = self.terms + h.len() - g.len();
             }
@@ -275,6 +274,7 @@ impl PolyRing {
 
     pub(crate) fn groebner_metered(&self, generators: &[Poly], meter: &mut Meter) -> Result<GroebnerBasis, IdealError> {
         let order = self.order();
+        let mut buffer = ReducerBuffer::default();
         let mut st = State {
             ring: self,
             polys: Vec::new(),
@@ -294,7 +294,9 @@ impl PolyRing {
         input.sort_by(|a, b| order.cmp(a.lm(), b.lm()));
         for g in input {
             let sugar = (0..g.len()).map(|i| g.mono(i)[0]).max().unwrap_or(0);
-            let red = reduce(g, &st.reducers(), order, meter)?;
+            let reducers = st.reducers(&mut buffer);
+            let red = reduce(g, &reducers, order, meter)?;
+            buffer.keep(reducers);
             let r = red.r;
             if !r.is_zero() {
                 if r.lm()[0] == 0 {
@@ -311,11 +313,11 @@ impl PolyRing {
             let next = st.pairs.last().expect("non-empty pair list").sugar;
             if next > degree {
                 degree = next;
-                st.reduce_tails(meter)?;
+                st.reduce_tails(&mut buffer, meter)?;
             }
             let pair = st.pairs.pop().expect("non-empty pair list");
             st.check_degree(&pair, meter)?;
-            let reducers = st.reducers();
+            let reducers = st.reducers(&mut buffer);
             let words = match st.small_spoly(&pair) {
                 Some(s) if reducers.iter().all(|d| d.small.is_some()) => Some(s),
                 _ => None,
@@ -324,7 +326,7 @@ impl PolyRing {
                 Some(s) => small::reduce_work(s, self.width(), &reducers, order, meter)?,
                 None => reduce(st.spoly(&pair), &reducers, order, meter)?,
             };
-            drop(reducers);
+            buffer.keep(reducers);
             let r = red.r;
             if !r.is_zero() {
                 if r.lm()[0] == 0 {
@@ -349,7 +351,9 @@ fn unit(ring: &PolyRing) -> DPoly {
 /// element's tail fully reduced by the others, primitive, sorted by increasing leading monomial.
 fn interreduce(mut gens: Vec<DPoly>, ring: &PolyRing, meter: &mut Meter) -> Result<Vec<DPoly>, IdealError> {
     gens.sort_by(|a, b| ring.order().cmp(a.lm(), b.lm()));
-    let mut out: Vec<DPoly> = Vec::with_capacity(gens.len());
+    // The reduced elements by index; the clean ones are moved out of `gens` at the end (they
+    // reduce the others until then), not cloned: a clone allocates every GMP coefficient anew.
+    let mut reduced: Vec<Option<DPoly>> = Vec::with_capacity(gens.len());
     let small: Vec<Option<Vec<i64>>> = gens.iter().map(small_coefs).collect();
     let masks: Vec<u64> = gens.iter().map(|g| order::mask(g.lm())).collect();
     let tops: Vec<u64> = gens.iter().map(DPoly::top).collect();
@@ -363,16 +367,16 @@ fn interreduce(mut gens: Vec<DPoly>, ring: &PolyRing, meter: &mut Meter) -> Resu
             (0..gens.len()).any(|j| j != i && masks[j] & !mask == 0 && order::divides(gens[j].lm(), m))
         });
         if !dirty {
-            out.push(g.clone());
+            reduced.push(None);
             continue;
         }
         let others: Vec<Reducer<'_>> = (0..gens.len())
             .filter(|&j| j != i)
             .map(|j| Reducer { mask: masks[j], poly: &gens[j], sugar: 0, top: tops[j], small: small[j].as_deref() })
             .collect();
-        out.push(with_tail_reduced(g, small[i].as_deref(), &others, ring.order(), meter)?);
+        reduced.push(Some(with_tail_reduced(g, small[i].as_deref(), &others, ring.order(), meter)?));
     }
-    Ok(out)
+    Ok(gens.into_iter().zip(reduced).map(|(g, r)| r.unwrap_or(g)).collect())
 }
 
 /// `g` with its tail fully reduced by `others` (which must not include `g`), primitive;

@@ -21,6 +21,9 @@ thread_local! {
     /// work, merge buffer and remainder grow by reallocation from empty otherwise, once per
     /// reduction (about 8% of the docs' example).
     static SPARE: RefCell<Vec<Work>> = const { RefCell::new(Vec::new()) };
+    /// The quotient monomial and the lifted monomial of the word reductions' steps, kept
+    /// between reductions (two allocations per reduction otherwise).
+    static MONOS: RefCell<(Vec<Word>, Vec<Word>)> = const { RefCell::new((Vec::new(), Vec::new())) };
 }
 
 /// An empty [`Work`], with the capacity of a finished one when there is one.
@@ -499,7 +502,9 @@ fn reduce_work_switching_at<const IN_PLACE: bool>(
     // (left by steps done in place, below).
     let mut scale = Rational::from(1);
     let (mut start, mut dead, mut steps, mut sugar) = (0, 0, 0u32, 0);
-    let (mut q, mut lifted): (Vec<Word>, Vec<Word>) = (Vec::with_capacity(w), Vec::with_capacity(w));
+    // the quotient's and the lifted monomial's buffers, kept on the thread between reductions
+    let (mut q_buf, mut lifted_buf) = MONOS.with_borrow_mut(std::mem::take);
+    let (q, lifted) = (&mut q_buf, &mut lifted_buf);
     let mut at: Vec<usize> = Vec::new();
     while start < p.coefs.len() {
         if p.coefs[start] == 0 {
@@ -520,19 +525,19 @@ fn reduce_work_switching_at<const IN_PLACE: bool>(
                 if a < 0 {
                     (a, b) = (-a, -b);
                 }
-                order::quotient_into(&mut q, g.lm(), m);
-                sugar = sugar.max(step_sugar(&q, d, meter)?);
+                order::quotient_into(q, g.lm(), m);
+                sugar = sugar.max(step_sugar(q, d, meter)?);
                 let rem_fits = a == 1 || rem.coefs.iter().all(|&c| fit(i128::from(c) * i128::from(a)).is_some());
                 let scan = if !rem_fits {
                     Scan::Overflow
                 } else if IN_PLACE {
-                    in_place(&mut p, start, (a, b), (&q, g, gc), w, order, (&mut at, &mut lifted), &mut dead)
+                    in_place(&mut p, start, (a, b), (q, g, gc), w, order, (&mut at, lifted), &mut dead)
                 } else {
                     Scan::Merge
                 };
                 let fits = match scan {
                     Scan::Merge => {
-                        let merged = combine(&p, start + 1, (a, b), (&q, g, gc), w, order, &mut buf, &mut lifted);
+                        let merged = combine(&p, start + 1, (a, b), (q, g, gc), w, order, &mut buf, lifted);
                         if merged.is_some() {
                             std::mem::swap(&mut p, &mut buf);
                             start = 0;
@@ -555,13 +560,13 @@ fn reduce_work_switching_at<const IN_PLACE: bool>(
                             &p,
                             start + 1,
                             (a, b),
-                            (&q, g, gc),
+                            (q, g, gc),
                             (&at, i, j),
                             dead,
                             w,
                             order,
                             &mut buf,
-                            &mut lifted,
+                            lifted,
                         );
                         if merged.is_some() {
                             std::mem::swap(&mut p, &mut buf);
@@ -613,6 +618,7 @@ fn reduce_work_switching_at<const IN_PLACE: bool>(
         }
     }
     let r = rem.to_dpoly(w);
+    MONOS.with_borrow_mut(|m| *m = (q_buf, lifted_buf));
     for spent in [p, buf, rem] {
         give_back(spent);
     }

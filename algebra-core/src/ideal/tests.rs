@@ -571,3 +571,19 @@ fn packed_sort_is_grevlex() {
         }
     }
 }
+
+/// A reducer list handed back to its [`division::ReducerBuffer`] gives its allocation to the
+/// next list (the engine builds one per S-pair), empty.
+#[test]
+fn a_kept_reducer_list_lends_its_buffer_to_the_next() {
+    let ring = PolyRing::new(["x", "y", "z"], MonomialOrder::GrevLex);
+    let (p, _) = ring.to_dense(&poly_from(&[(2, [1, 0, 0]), (-3, [0, 1, 1])])).unwrap();
+    let mut buffer = division::ReducerBuffer::default();
+    let mut list = buffer.take();
+    list.extend((0..40).map(|_| division::Reducer::new(&p)));
+    let (capacity, at) = (list.capacity(), list.as_ptr() as usize);
+    buffer.keep(list);
+    let next = buffer.take();
+    assert!(next.is_empty());
+    assert_eq!((next.capacity(), next.as_ptr() as usize), (capacity, at));
+}
