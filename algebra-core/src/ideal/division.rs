@@ -314,6 +314,29 @@ fn recycle(vs: impl IntoIterator<Item = Vec<Integer>>) {
     });
 }
 
+/// `words` as GMP integers, taken from [`POOL`] where it has some (their limbs allocated, so
+/// assigning a word allocates nothing): the word reductions' remainders become elements of
+/// the basis this way, once per new element and per tail reduction.
+pub(crate) fn integers_from(words: &[i64]) -> Vec<Integer> {
+    POOL.with(|p| {
+        let mut pool = p.borrow_mut();
+        words
+            .iter()
+            .map(|&x| {
+                let mut c = pool.pop().unwrap_or_default();
+                c.assign(x);
+                c
+            })
+            .collect()
+    })
+}
+
+/// Gives the coefficients of a polynomial that is no longer needed to [`POOL`] (for
+/// [`integers_from`] and the GMP merges).
+pub(crate) fn give_integers(coefs: Vec<Integer>) {
+    recycle([coefs]);
+}
+
 /// The gcd of the coefficients of `p` and `r` (0 when both are zero).
 fn content(p: &DPoly, r: &DPoly) -> Integer {
     let mut g = Integer::new();

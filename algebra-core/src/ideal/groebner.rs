@@ -4,7 +4,7 @@
 //! S-polynomials and reductions by integer multiples, content removed) on packed
 //! monomials.
 
-use super::division::{Reducer, ReducerBuffer, reduce, s_poly};
+use super::division::{Reducer, ReducerBuffer, give_integers, reduce, s_poly};
 use super::order::{self, Word};
 use super::small::{self, small_coefs};
 use super::{Budget, DPoly, IdealError, Meter, PolyRing};
@@ -245,7 +245,8 @@ impl State<'_> {
             }
             self.small[i] = small_coefs(&h);
             self.tops[i] = h.top();
-            self.polys[i] = h;
+            let old = std::mem::replace(&mut self.polys[i], h);
+            give_integers(old.coefs);
         }
         Ok(())
     }

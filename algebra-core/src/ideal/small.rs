@@ -12,7 +12,7 @@ use super::division::{LONG_WORK, Reduced, Reducer, Side, merge_lifted_tails, red
 use super::order::{self, Mono, Word};
 use super::small_bucket::reduce_in_word_buckets;
 use super::{DPoly, IdealError, Meter, MonomialOrder};
-use rug::{Integer, Rational};
+use rug::Rational;
 use std::cell::RefCell;
 use std::cmp::Ordering;
 
@@ -127,13 +127,14 @@ impl Work {
 
     /// The polynomial over GMP.
     pub(crate) fn to_dpoly(&self, w: usize) -> DPoly {
-        DPoly { w, exps: self.exps.clone(), coefs: self.coefs.iter().map(|&c| Integer::from(c)).collect() }
+        DPoly { w, exps: self.exps.clone(), coefs: super::division::integers_from(&self.coefs) }
     }
 
     /// The terms from `from` on with a non-zero coefficient, over GMP.
     fn into_dpoly(mut self, w: usize, from: usize) -> DPoly {
         self.compact(w, from);
-        DPoly { w, exps: self.exps, coefs: self.coefs.iter().map(|&c| Integer::from(c)).collect() }
+        let coefs = super::division::integers_from(&self.coefs);
+        DPoly { w, exps: self.exps, coefs }
     }
 
     /// Keeps the terms from `from` on with a non-zero coefficient (those left with 0 by steps

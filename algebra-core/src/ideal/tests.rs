@@ -587,3 +587,15 @@ fn a_kept_reducer_list_lends_its_buffer_to_the_next() {
     assert!(next.is_empty());
     assert_eq!((next.capacity(), next.as_ptr() as usize), (capacity, at));
 }
+
+/// Words made GMP integers from the pool of spent coefficients are the words, whatever the
+/// pooled integers held (a 200-bit one, a negative one).
+#[test]
+fn integers_from_the_pool_are_the_words() {
+    let big = Integer::from(1) << 200u32;
+    division::give_integers(vec![big, Integer::from(-7), Integer::from(0)]);
+    let words = [5i64, -(1 << 62), 0, i64::MAX, 1];
+    let got = division::integers_from(&words);
+    let want: Vec<Integer> = words.iter().map(|&x| Integer::from(x)).collect();
+    assert_eq!(got, want);
+}
