@@ -222,7 +222,10 @@ impl State<'_> {
             // element: most elements are not dirty).
             let g = &self.polys[i];
             let (masks, polys, active) = (&self.masks, &self.polys, &self.active);
-            let dirty = (since..polys.len()).any(|j| active[j])
+            // A term of degree below every added leading monomial's is divisible by none of
+            // them: elements of lower degree are skipped without a look at their terms.
+            let least = (since..polys.len()).filter(|&j| active[j]).map(|j| polys[j].lm()[0]).min();
+            let dirty = least.is_some_and(|d| self.tops[i] >= d)
                 && (1..g.len()).any(|t| {
                     let (m, mask) = (g.mono(t), order::mask(g.mono(t)));
                     (since..polys.len()).any(|j| active[j] && masks[j] & !mask == 0 && order::divides(polys[j].lm(), m))
