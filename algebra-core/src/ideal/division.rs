@@ -303,8 +303,9 @@ thread_local! {
 /// The most integers [`POOL`] keeps (a few hundred kilobytes of small limbs at most).
 const POOL_MAX: usize = 4096;
 
-/// Gives the integers of `vs` to [`POOL`], up to [`POOL_MAX`]; the rest are freed.
-fn recycle(vs: impl IntoIterator<Item = Vec<Integer>>) {
+/// Gives the integers of `vs` to [`POOL`], up to [`POOL_MAX`]; the rest are freed (for the GMP
+/// merges and [`integers_from`]).
+pub(crate) fn recycle(vs: impl IntoIterator<Item = Vec<Integer>>) {
     POOL.with(|p| {
         let mut pool = p.borrow_mut();
         for v in vs {
@@ -329,12 +330,6 @@ pub(crate) fn integers_from(words: &[i64]) -> Vec<Integer> {
             })
             .collect()
     })
-}
-
-/// Gives the coefficients of a polynomial that is no longer needed to [`POOL`] (for
-/// [`integers_from`] and the GMP merges).
-pub(crate) fn give_integers(coefs: Vec<Integer>) {
-    recycle([coefs]);
 }
 
 /// The gcd of the coefficients of `p` and `r` (0 when both are zero).

@@ -4,7 +4,7 @@
 //! S-polynomials and reductions by integer multiples, content removed) on packed
 //! monomials.
 
-use super::division::{Reducer, ReducerBuffer, give_integers, reduce, s_poly};
+use super::division::{Reducer, ReducerBuffer, recycle, reduce, s_poly};
 use super::order::{self, Word};
 use super::small::{self, small_coefs};
 use super::{Budget, DPoly, IdealError, Meter, PolyRing};
@@ -104,14 +104,13 @@ impl State<'_> {
     /// 31), on cyclic-6 356 S-pairs instead of 411 (docs/performance.md).
     fn reducers<'s>(&'s self, buffer: &mut ReducerBuffer) -> Vec<Reducer<'s>> {
         let mut list = buffer.take();
-        list.extend((0..self.polys.len()).map(|i| Reducer {
-            mask: self.masks[i],
-            poly: &self.polys[i],
-            sugar: self.sugar[i],
-            top: self.tops[i],
-            small: self.small[i].as_deref(),
-        }));
+        list.extend((0..self.polys.len()).map(|i| self.reducer(i, self.sugar[i])));
         list
+    }
+
+    /// Element `i` as a reducer of the given sugar (0 for tail reductions, where nobody asks).
+    fn reducer(&self, i: usize, sugar: u64) -> Reducer<'_> {
+        Reducer { mask: self.masks[i], poly: &self.polys[i], sugar, top: self.tops[i], small: self.small[i].as_deref() }
     }
 
     /// Gebauer–Möller update: installs `h` (index k) into the basis and the pair list.
@@ -234,13 +233,7 @@ impl State<'_> {
                 continue;
             }
             let mut others = buffer.take();
-            others.extend((0..self.polys.len()).filter(|&j| j != i && self.active[j]).map(|j| Reducer {
-                mask: self.masks[j],
-                poly: &self.polys[j],
-                sugar: 0,
-                top: self.tops[j],
-                small: self.small[j].as_deref(),
-            }));
+            others.extend((0..self.polys.len()).filter(|&j| j != i && self.active[j]).map(|j| self.reducer(j, 0)));
             let h = with_tail_reduced(g, self.small[i].as_deref(), &others, order, meter)?;
             buffer.keep(others);
             if self.active[i] {
@@ -249,7 +242,7 @@ impl State<'_> {
             self.small[i] = small_coefs(&h);
             self.tops[i] = h.top();
             let old = std::mem::replace(&mut self.polys[i], h);
-            give_integers(old.coefs);
+            recycle([old.coefs]);
         }
         Ok(())
     }

@@ -593,7 +593,7 @@ fn a_kept_reducer_list_lends_its_buffer_to_the_next() {
 #[test]
 fn integers_from_the_pool_are_the_words() {
     let big = Integer::from(1) << 200u32;
-    division::give_integers(vec![big, Integer::from(-7), Integer::from(0)]);
+    division::recycle([vec![big, Integer::from(-7), Integer::from(0)]]);
     let words = [5i64, -(1 << 62), 0, i64::MAX, 1];
     let got = division::integers_from(&words);
     let want: Vec<Integer> = words.iter().map(|&x| Integer::from(x)).collect();
