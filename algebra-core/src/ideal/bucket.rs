@@ -8,8 +8,8 @@
 //! bucket, and the factor enters the coefficients only when buckets are merged (by the gcd of
 //! the two multipliers).
 
-use super::order::{Mono, Word};
-use super::{DPoly, MonomialOrder};
+use super::DPoly;
+use super::order::{Mono, Order, Word};
 use rug::{Assign, Integer};
 use std::cmp::Ordering;
 
@@ -34,7 +34,7 @@ impl Slot {
 /// The sum of the buckets' values.
 pub(crate) struct GeoBucket {
     w: usize,
-    order: MonomialOrder,
+    order: Order,
     slots: Vec<Slot>,
     /// Emptied polynomials whose vectors are reused (no allocation churn in the merges).
     spare: Vec<DPoly>,
@@ -46,8 +46,13 @@ pub(crate) struct GeoBucket {
 }
 
 impl GeoBucket {
-    pub(crate) fn new(w: usize, order: MonomialOrder) -> Self {
+    pub(crate) fn new(w: usize, order: Order) -> Self {
         GeoBucket { w, order, slots: Vec::new(), spare: Vec::new(), pool: Vec::new(), terms: 0 }
+    }
+
+    /// The order the buckets' monomials are merged in.
+    pub(crate) fn order(&self) -> Order {
+        self.order
     }
 
     /// Terms held, an upper bound of the number of terms of the value.

@@ -1,8 +1,8 @@
 //! Division with remainder by a list of polynomials, and full reduction (normal forms).
 
 use super::bucket::GeoBucket;
-use super::order::{self, Mono, Word};
-use super::{DPoly, IdealError, Meter, MonomialOrder, PolyRing};
+use super::order::{self, Fields, Mono, Order, Word};
+use super::{DPoly, IdealError, Meter, PolyRing};
 use crate::poly::Poly;
 use rug::ops::NegAssign;
 use rug::{Assign, Integer, Rational};
@@ -73,29 +73,26 @@ impl ReducerBuffer {
 }
 
 impl<'a> Reducer<'a> {
-    pub(crate) fn new(poly: &'a DPoly) -> Self {
-        Reducer::with_sugar(poly, 0)
-    }
-
-    pub(crate) fn with_sugar(poly: &'a DPoly, sugar: u64) -> Self {
-        Reducer { mask: order::mask(poly.lm()), poly, sugar, top: poly.top(), small: None }
+    /// The reducer `poly` (monomials in fields of `fields`), sugar 0, no machine words.
+    pub(crate) fn new(poly: &'a DPoly, fields: Fields) -> Self {
+        Reducer { mask: fields.mask(poly.lm()), poly, sugar: 0, top: poly.top(), small: None }
     }
 }
 
 /// The first divisor whose leading monomial divides `m`.
-fn find_divisor<'r, 'a>(divisors: &'r [Reducer<'a>], m: &Mono) -> Option<&'r Reducer<'a>> {
-    let mask = order::mask(m);
-    divisors.iter().find(|d| d.mask & !mask == 0 && order::divides(d.poly.lm(), m))
+fn find_divisor<'r, 'a>(divisors: &'r [Reducer<'a>], m: &Mono, order: Order) -> Option<&'r Reducer<'a>> {
+    let mask = order.mask(m);
+    divisors.iter().find(|d| d.mask & !mask == 0 && order.divides(d.poly.lm(), m))
 }
 
 /// The sugar `deg(q) + sugar(g)` of the step that subtracts a multiple of `q·g` (`g` the
 /// reducer `d`), after checking that the products `q·g_j` stay within
-/// [`order::MAX_DEGREE`] ([`super::Limit::Degree`] otherwise: the packed fields would
+/// the largest degree of the layout ([`super::Limit::Degree`] otherwise: the packed fields would
 /// overflow). One comparison per step; under grevlex it never fails (`q·LM(g)` is the work's
 /// leading monomial, of the largest degree).
 #[inline]
-pub(crate) fn step_sugar(q: &Mono, d: &Reducer<'_>, meter: &Meter) -> Result<u64, IdealError> {
-    if !order::products_fit(q[0], d.top) {
+pub(crate) fn step_sugar(q: &Mono, d: &Reducer<'_>, fields: Fields, meter: &Meter) -> Result<u64, IdealError> {
+    if !fields.products_fit(q[0], d.top) {
         return Err(meter.degree_limit());
     }
     Ok(q[0] + d.sugar)
@@ -124,7 +121,7 @@ pub(crate) fn combine(
     from: usize,
     (a, b): (&Integer, &Integer),
     (q, g): (&Mono, &DPoly),
-    order: MonomialOrder,
+    order: Order,
     out: &mut DPoly,
     (spare, lifted): (&mut Vec<Integer>, &mut Vec<Word>),
 ) {
@@ -216,7 +213,7 @@ pub(crate) enum Side {
 pub(crate) fn merge_lifted_tails(
     (mf, f): (&Mono, &DPoly),
     (mg, g): (&Mono, &DPoly),
-    order: MonomialOrder,
+    order: Order,
     mut visit: impl FnMut(&[Word], Side) -> bool,
 ) -> bool {
     let (mut lf, mut lg) = (Vec::with_capacity(f.w), Vec::with_capacity(f.w));
@@ -263,7 +260,7 @@ pub(crate) fn merge_lifted_tails(
 pub(crate) fn s_poly(
     (a, mf, f): (&Integer, &Mono, &DPoly),
     (b, mg, g): (&Integer, &Mono, &DPoly),
-    order: MonomialOrder,
+    order: Order,
 ) -> DPoly {
     let mut pool = POOL.with(|p| std::mem::take(&mut *p.borrow_mut()));
     let mut out = DPoly::zero(f.w);
@@ -362,7 +359,7 @@ pub(crate) const LONG_WORK: usize = 256;
 pub(crate) fn reduce(
     f: DPoly,
     divisors: &[Reducer<'_>],
-    order: MonomialOrder,
+    order: Order,
     meter: &mut Meter,
 ) -> Result<Reduced, IdealError> {
     // Machine words while everything fits (`super::small`), continued in GMP integers from the
@@ -376,7 +373,7 @@ pub(crate) fn reduce(
 pub(crate) fn reduce_switching_at(
     f: DPoly,
     divisors: &[Reducer<'_>],
-    order: MonomialOrder,
+    order: Order,
     meter: &mut Meter,
     long: usize,
 ) -> Result<Reduced, IdealError> {
@@ -389,7 +386,7 @@ pub(crate) fn reduce_switching_at(
 pub(crate) fn reduce_from(
     (mut p, mut rem, mut scale, mut sugar): (DPoly, DPoly, Rational, u64),
     divisors: &[Reducer<'_>],
-    order: MonomialOrder,
+    order: Order,
     meter: &mut Meter,
     long: usize,
 ) -> Result<Reduced, IdealError> {
@@ -408,7 +405,7 @@ pub(crate) fn reduce_from(
     }
     while start < p.len() {
         meter.check(p.len() - start + rem.len())?;
-        match find_divisor(divisors, p.mono(start)) {
+        match find_divisor(divisors, p.mono(start), order) {
             Some(r) => {
                 let g = r.poly;
                 let c = &p.coefs[start];
@@ -420,7 +417,7 @@ pub(crate) fn reduce_from(
                     b.neg_assign();
                 }
                 order::quotient_into(&mut q, g.lm(), p.mono(start));
-                sugar = sugar.max(step_sugar(&q, r, meter)?);
+                sugar = sugar.max(step_sugar(&q, r, order.fields, meter)?);
                 combine(&mut p, start + 1, (&a, &b), (&q, g), order, &mut buf, (&mut spare, &mut lifted));
                 std::mem::swap(&mut p, &mut buf);
                 if a != 1 {
@@ -469,7 +466,7 @@ pub(crate) fn reduce_in_buckets(
     scale: Rational,
     sugar: u64,
     divisors: &[Reducer<'_>],
-    order: MonomialOrder,
+    order: Order,
     meter: &mut Meter,
 ) -> Result<Reduced, IdealError> {
     let mut work = GeoBucket::new(p.w, order);
@@ -522,12 +519,12 @@ pub(crate) fn continue_in_buckets(
     divisors: &[Reducer<'_>],
     meter: &mut Meter,
 ) -> Result<Reduced, IdealError> {
-    let w = run.rem.w;
+    let (w, order) = (run.rem.w, work.order());
     let (mut mono, mut q) = (Vec::with_capacity(w), Vec::with_capacity(w));
     while let Some(c) = work.pop_lead(&mut mono) {
         // The work held, its leading term included (as the merges count it), and the remainder.
         meter.check(work.terms() + 1 + run.rem.len())?;
-        match find_divisor(divisors, &mono) {
+        match find_divisor(divisors, &mono, order) {
             Some(r) => {
                 let g = r.poly;
                 let d = Integer::from(c.gcd_ref(g.lc()));
@@ -537,7 +534,7 @@ pub(crate) fn continue_in_buckets(
                     b = -b;
                 }
                 order::quotient_into(&mut q, g.lm(), &mono);
-                run.sugar = run.sugar.max(step_sugar(&q, r, meter)?);
+                run.sugar = run.sugar.max(step_sugar(&q, r, order.fields, meter)?);
                 if a != 1 {
                     work.scale(&a);
                     run.lambda /= &a;
@@ -576,7 +573,7 @@ fn rational(p: &DPoly, den: &Integer) -> RPoly {
 }
 
 /// `p - c·q·g`, whose leading terms cancel.
-fn sub_mul(p: &RPoly, c: &Rational, q: &Mono, g: &RPoly, order: MonomialOrder) -> RPoly {
+fn sub_mul(p: &RPoly, c: &Rational, q: &Mono, g: &RPoly, order: Order) -> RPoly {
     let mut out = Vec::with_capacity(p.len() + g.len());
     let (mut i, mut j) = (1, 1);
     let lift = |j: usize| -> (Vec<Word>, Rational) {
@@ -625,11 +622,12 @@ impl PolyRing {
     /// of the list unless the list is a Gröbner basis.
     pub fn divide(&self, f: &Poly, divisors: &[Poly], budget: &super::Budget) -> Result<Division, IdealError> {
         let mut meter = Meter::new(budget);
+        let order = self.ord();
         let (fd, fden) = self.to_dense(f)?;
         let mut p = rational(&fd, &fden);
         let mut gs: Vec<RPoly> = Vec::with_capacity(divisors.len());
         // the largest degree of each divisor's terms: a step's products stay within
-        // `order::MAX_DEGREE` (see `step_sugar`)
+        // the layout's largest degree (see `step_sugar`)
         let mut tops = Vec::with_capacity(divisors.len());
         for g in divisors {
             let (d, den) = self.to_dense(g)?;
@@ -641,14 +639,14 @@ impl PolyRing {
         while !p.is_empty() {
             meter.check(p.len())?;
             let lead = &p[0];
-            match gs.iter().position(|g| !g.is_empty() && order::divides(&g[0].0, &lead.0)) {
+            match gs.iter().position(|g| !g.is_empty() && order.divides(&g[0].0, &lead.0)) {
                 Some(k) => {
                     let q = order::quotient(&gs[k][0].0, &lead.0);
-                    if !order::products_fit(q[0], tops[k]) {
+                    if !order.products_fit(q[0], tops[k]) {
                         return Err(meter.degree_limit());
                     }
                     let c = Rational::from(&lead.1 / &gs[k][0].1);
-                    p = sub_mul(&p, &c, &q, &gs[k], self.order());
+                    p = sub_mul(&p, &c, &q, &gs[k], order);
                     qs[k].push((q, c));
                 }
                 None => rem.push(p.remove(0)),

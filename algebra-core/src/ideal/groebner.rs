@@ -5,7 +5,7 @@
 //! monomials.
 
 use super::division::{Reducer, ReducerBuffer, recycle, reduce, s_poly};
-use super::order::{self, Word};
+use super::order::{self, Fields, Word};
 use super::small::{self, small_coefs};
 use super::{Budget, DPoly, IdealError, Meter, PolyRing};
 use crate::poly::Poly;
@@ -27,7 +27,7 @@ use rug::{Integer, Rational};
 /// let shown: Vec<String> = g.polys().iter().map(|p| p.to_string()).collect();
 /// assert_eq!(shown, ["y**2 - 1/2*x", "x*y", "x**2"]);
 /// ```
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug)]
 pub struct GroebnerBasis {
     ring: PolyRing,
     basis: Vec<DPoly>,
@@ -36,11 +36,24 @@ pub struct GroebnerBasis {
     small: Vec<Option<Vec<i64>>>,
 }
 
+impl PartialEq for GroebnerBasis {
+    /// The same ring and the same polynomials, whichever exponent fields each was computed in.
+    fn eq(&self, other: &Self) -> bool {
+        if self.ring.fields() == other.ring.fields() {
+            self.ring == other.ring && self.basis == other.basis
+        } else {
+            self.ring == other.ring && self.widened().basis == other.widened().basis
+        }
+    }
+}
+
+impl Eq for GroebnerBasis {}
+
 struct Pair {
     i: usize,
     j: usize,
     lcm: Vec<Word>,
-    /// `order::mask(lcm)`: most divisibility tests of the criteria fail on it.
+    /// `order.mask(lcm)`: most divisibility tests of the criteria fail on it.
     mask: u64,
     sugar: u64,
 }
@@ -80,14 +93,14 @@ pub(super) type Cand = (usize, usize, bool, u64);
 /// the monomial order: a proper divisor has a smaller degree and equal lcms keep their order,
 /// so the kept set is the same, without comparing whole lcms (that sort was an eighth of
 /// Jüttler's Prop. 4).
-pub(super) fn chain_among_new(cands: &mut [Cand], lcms: &[Word], w: usize) -> usize {
+pub(super) fn chain_among_new(cands: &mut [Cand], lcms: &[Word], w: usize, fields: Fields) -> usize {
     let lcm_of = |at: usize| &lcms[at..at + w];
     cands.sort_by_key(|c| (lcms[c.1], !c.2));
     // Kept in place: the first `kept` candidates.
     let mut kept = 0;
     for c in 0..cands.len() {
         let (at, mask) = (cands[c].1, cands[c].3);
-        if !cands[..kept].iter().any(|d| d.3 & !mask == 0 && order::divides(lcm_of(d.1), lcm_of(at))) {
+        if !cands[..kept].iter().any(|d| d.3 & !mask == 0 && fields.divides(lcm_of(d.1), lcm_of(at))) {
             cands[kept] = cands[c];
             kept += 1;
         }
@@ -116,7 +129,7 @@ impl State<'_> {
     /// Gebauer–Möller update: installs `h` (index k) into the basis and the pair list.
     fn update(&mut self, k: usize) {
         let lh = self.polys[k].lm().to_vec();
-        let order = self.ring.order();
+        let order = self.ring.ord();
         // New pairs (i, k) for active i, with the variable mask of their lcm; the lcms side by
         // side in one buffer (`w` words each), not one allocation per candidate.
         let mh = self.masks[k];
@@ -126,20 +139,20 @@ impl State<'_> {
         cands.clear();
         for i in (0..k).filter(|&i| self.active[i]) {
             let li = self.polys[i].lm();
-            let coprime = self.masks[i] & mh == 0 || order::coprime(li, &lh);
+            let coprime = self.masks[i] & mh == 0 || order.coprime(li, &lh);
             let at = lcms.len();
-            order::lcm_into(&mut lcms, li, &lh);
+            order.lcm_into(&mut lcms, li, &lh);
             cands.push((i, at, coprime, self.masks[i] | mh));
         }
         let lcm_of = |at: usize| &lcms[at..at + w];
-        let kept = chain_among_new(&mut cands, &lcms, w);
+        let kept = chain_among_new(&mut cands, &lcms, w, order.fields);
         // Old pairs (i, j): drop when LM(h) divides lcm(i, j) and both new lcms differ from it.
         let polys = &self.polys;
         self.pairs.retain(|p| {
             mh & !p.mask != 0
-                || !order::divides(&lh, &p.lcm)
-                || order::lcm_is(polys[p.i].lm(), &lh, &p.lcm)
-                || order::lcm_is(polys[p.j].lm(), &lh, &p.lcm)
+                || !order.divides(&lh, &p.lcm)
+                || order.lcm_is(polys[p.i].lm(), &lh, &p.lcm)
+                || order.lcm_is(polys[p.j].lm(), &lh, &p.lcm)
         });
         // Product criterion: coprime leading monomials need no pair.
         let before = self.pairs.len();
@@ -169,7 +182,7 @@ impl State<'_> {
             self.pairs.extend(new);
         }
         for i in 0..k {
-            if self.active[i] && order::divides(&lh, self.polys[i].lm()) {
+            if self.active[i] && order.divides(&lh, self.polys[i].lm()) {
                 self.active[i] = false;
                 self.terms -= self.polys[i].len();
             }
@@ -179,10 +192,11 @@ impl State<'_> {
     }
 
     /// [`Limit::Degree`](super::Limit::Degree) when the S-polynomial of `p` would form a
-    /// product of degree above [`order::MAX_DEGREE`] (`deg(lcm/lm f) + top(f)`; under grevlex
+    /// product of degree above the layout's largest (`deg(lcm/lm f) + top(f)`; under grevlex
     /// this is the lcm's degree).
     fn check_degree(&self, p: &Pair, meter: &Meter) -> Result<(), IdealError> {
-        let over = |i: usize| !order::products_fit(p.lcm[0] - self.polys[i].lm()[0], self.tops[i]);
+        let fields = self.ring.fields();
+        let over = |i: usize| !fields.products_fit(p.lcm[0] - self.polys[i].lm()[0], self.tops[i]);
         if over(p.i) || over(p.j) { Err(meter.degree_limit()) } else { Ok(()) }
     }
 
@@ -192,7 +206,7 @@ impl State<'_> {
         let (mf, mg) = (order::quotient(f.lm(), &p.lcm), order::quotient(g.lm(), &p.lcm));
         let d = Integer::from(f.lc().gcd_ref(g.lc()));
         let (a, b) = (Integer::from(g.lc().div_exact_ref(&d)), Integer::from(f.lc().div_exact_ref(&d)));
-        s_poly((&a, &mf, f), (&b, &mg, g), self.ring.order())
+        s_poly((&a, &mf, f), (&b, &mg, g), self.ring.ord())
     }
 
     /// [`Self::spoly`] in machine words when both elements have theirs and nothing overflows.
@@ -201,7 +215,7 @@ impl State<'_> {
         let (fc, gc) = (self.small[p.i].as_deref()?, self.small[p.j].as_deref()?);
         let (mf, mg) = (order::quotient(f.lm(), &p.lcm), order::quotient(g.lm(), &p.lcm));
         let d = small::gcd(fc[0].unsigned_abs(), gc[0].unsigned_abs()) as i64;
-        small::s_poly((gc[0] / d, &mf, f, fc), (fc[0] / d, &mg, g, gc), self.ring.order())
+        small::s_poly((gc[0] / d, &mf, f, fc), (fc[0] / d, &mg, g, gc), self.ring.ord())
     }
 
     /// Tail-reduces the elements whose tails became reducible by elements added since their
@@ -214,7 +228,7 @@ impl State<'_> {
     /// tails left as they were, the docs' example took as long with 110 S-pairs as with 177
     /// (2.3 ms, against 1.5 ms); cyclic-5 pays about 15% for it.
     fn reduce_tails(&mut self, buffer: &mut ReducerBuffer, meter: &mut Meter) -> Result<(), IdealError> {
-        let order = self.ring.order();
+        let order = self.ring.ord();
         for i in 0..self.polys.len() {
             let since = std::mem::replace(&mut self.clean[i], self.polys.len());
             // The added elements' leading masks and monomials, read in place (no list per
@@ -226,8 +240,8 @@ impl State<'_> {
             let least = (since..polys.len()).filter(|&j| active[j]).map(|j| polys[j].lm()[0]).min();
             let dirty = least.is_some_and(|d| self.tops[i] >= d)
                 && (1..g.len()).any(|t| {
-                    let (m, mask) = (g.mono(t), order::mask(g.mono(t)));
-                    (since..polys.len()).any(|j| active[j] && masks[j] & !mask == 0 && order::divides(polys[j].lm(), m))
+                    let (m, mask) = (g.mono(t), order.mask(g.mono(t)));
+                    (since..polys.len()).any(|j| active[j] && masks[j] & !mask == 0 && order.divides(polys[j].lm(), m))
                 });
             if !dirty {
                 continue;
@@ -250,7 +264,7 @@ impl State<'_> {
     fn add(&mut self, mut h: DPoly, sugar: u64, meter: &Meter) -> Result<usize, IdealError> {
         h.make_primitive();
         meter.check_basis(self.active.iter().filter(|a| **a).count() + 1, self.terms + h.len())?;
-        self.masks.push(order::mask(h.lm()));
+        self.masks.push(self.ring.fields().mask(h.lm()));
         self.tops.push(h.top());
         self.small.push(small_coefs(&h));
         self.polys.push(h);
@@ -269,8 +283,25 @@ impl PolyRing {
         self.groebner_metered(generators, &mut Meter::new(budget))
     }
 
+    /// [`Self::groebner`] under a running meter: in 8-bit exponent fields first
+    /// ([`Fields::Narrow`]: fewer words per monomial to copy and compare), and again in the
+    /// ring's 16-bit fields when a degree on the way passes 127 (the input's, or a product's:
+    /// the engine checks before it forms one, so the first run stops with
+    /// [`Limit::Degree`](super::Limit::Degree) and nothing wrong is computed). The basis keeps
+    /// the layout it was computed in.
     pub(crate) fn groebner_metered(&self, generators: &[Poly], meter: &mut Meter) -> Result<GroebnerBasis, IdealError> {
-        let order = self.order();
+        if self.fields() == Fields::Wide {
+            match self.with_fields(Fields::Narrow).groebner_in(generators, meter) {
+                Err(IdealError::Undecided { limit: super::Limit::Degree, .. }) => {}
+                done => return done,
+            }
+        }
+        self.groebner_in(generators, meter)
+    }
+
+    /// [`Self::groebner_metered`] in the ring's own layout.
+    pub(crate) fn groebner_in(&self, generators: &[Poly], meter: &mut Meter) -> Result<GroebnerBasis, IdealError> {
+        let order = self.ord();
         let mut buffer = ReducerBuffer::default();
         let mut st = State {
             ring: self,
@@ -347,12 +378,13 @@ fn unit(ring: &PolyRing) -> DPoly {
 /// Minimal basis (no leading monomial divides another; the active set already is), then each
 /// element's tail fully reduced by the others, primitive, sorted by increasing leading monomial.
 fn interreduce(mut gens: Vec<DPoly>, ring: &PolyRing, meter: &mut Meter) -> Result<Vec<DPoly>, IdealError> {
-    gens.sort_by(|a, b| ring.order().cmp(a.lm(), b.lm()));
+    let order = ring.ord();
+    gens.sort_by(|a, b| order.cmp(a.lm(), b.lm()));
     // The reduced elements by index; the clean ones are moved out of `gens` at the end (they
     // reduce the others until then), not cloned: a clone allocates every GMP coefficient anew.
     let mut reduced: Vec<Option<DPoly>> = Vec::with_capacity(gens.len());
     let small: Vec<Option<Vec<i64>>> = gens.iter().map(small_coefs).collect();
-    let masks: Vec<u64> = gens.iter().map(|g| order::mask(g.lm())).collect();
+    let masks: Vec<u64> = gens.iter().map(|g| order.mask(g.lm())).collect();
     let tops: Vec<u64> = gens.iter().map(DPoly::top).collect();
     for i in 0..gens.len() {
         // Mostly the basis is reduced already (its tails are reduced once per sugar degree): an
@@ -360,8 +392,8 @@ fn interreduce(mut gens: Vec<DPoly>, ring: &PolyRing, meter: &mut Meter) -> Resu
         // already), without a reduction that would take no step.
         let g = &gens[i];
         let dirty = (1..g.len()).any(|t| {
-            let (m, mask) = (g.mono(t), order::mask(g.mono(t)));
-            (0..gens.len()).any(|j| j != i && masks[j] & !mask == 0 && order::divides(gens[j].lm(), m))
+            let (m, mask) = (g.mono(t), order.mask(g.mono(t)));
+            (0..gens.len()).any(|j| j != i && masks[j] & !mask == 0 && order.divides(gens[j].lm(), m))
         });
         if !dirty {
             reduced.push(None);
@@ -371,7 +403,7 @@ fn interreduce(mut gens: Vec<DPoly>, ring: &PolyRing, meter: &mut Meter) -> Resu
             .filter(|&j| j != i)
             .map(|j| Reducer { mask: masks[j], poly: &gens[j], sugar: 0, top: tops[j], small: small[j].as_deref() })
             .collect();
-        reduced.push(Some(with_tail_reduced(g, small[i].as_deref(), &others, ring.order(), meter)?));
+        reduced.push(Some(with_tail_reduced(g, small[i].as_deref(), &others, order, meter)?));
     }
     Ok(gens.into_iter().zip(reduced).map(|(g, r)| r.unwrap_or(g)).collect())
 }
@@ -383,7 +415,7 @@ fn with_tail_reduced(
     g: &DPoly,
     words: Option<&[i64]>,
     others: &[Reducer<'_>],
-    order: super::MonomialOrder,
+    order: super::order::Order,
     meter: &mut Meter,
 ) -> Result<DPoly, IdealError> {
     // r ≡ s·tail with s = n/d, so d·s·g ≡ n·lc·lm + d·r.
@@ -466,14 +498,35 @@ impl GroebnerBasis {
     /// `f = F / D`, and `r ≡ s·F`: the normal form of `f` is `r / (s·D)`.
     /// With integer coefficients that fit machine words and a basis that has its words, `f`
     /// goes to the machine-word reduction directly (no GMP integer per term on the way).
+    /// A basis computed in 8-bit fields whose normal form meets a degree above 127 (in `f`, or
+    /// in a product on the way, which the engine checks before forming it) starts again with
+    /// the basis repacked in 16-bit fields.
     pub(crate) fn normal_form_metered(&self, f: &Poly, meter: &mut Meter) -> Result<Poly, IdealError> {
+        match self.normal_form_in(f, meter) {
+            Err(IdealError::Undecided { limit: super::Limit::Degree, .. }) if self.ring.fields() == Fields::Narrow => {
+                self.widened().normal_form_in(f, meter)
+            }
+            r => r,
+        }
+    }
+
+    /// The basis in the ring's 16-bit fields.
+    fn widened(&self) -> GroebnerBasis {
+        let ring = self.ring.with_fields(Fields::Wide);
+        let (from, to) = (self.ring.packing(), ring.packing());
+        let basis = self.basis.iter().map(|p| p.repacked(from, to)).collect();
+        GroebnerBasis::new(ring, basis)
+    }
+
+    /// [`Self::normal_form_metered`] in the basis's own layout.
+    fn normal_form_in(&self, f: &Poly, meter: &mut Meter) -> Result<Poly, IdealError> {
         let reducers: Vec<Reducer<'_>> = self
             .basis
             .iter()
             .zip(&self.small)
-            .map(|(g, w)| Reducer { small: w.as_deref(), ..Reducer::new(g) })
+            .map(|(g, w)| Reducer { small: w.as_deref(), ..Reducer::new(g, self.ring.fields()) })
             .collect();
-        let order = self.ring.order();
+        let order = self.ring.ord();
         if reducers.iter().all(|d| d.small.is_some())
             && let Some((exps, coefs)) = self.ring.to_words(f)?
         {
@@ -509,7 +562,7 @@ impl GroebnerBasis {
     pub fn eliminate(&self, k: usize) -> Vec<Poly> {
         self.basis
             .iter()
-            .filter(|p| (0..p.len()).all(|i| (0..k).all(|v| order::exponent(p.mono(i), v) == 0)))
+            .filter(|p| (0..p.len()).all(|i| (0..k).all(|v| self.ring.fields().exponent(p.mono(i), v) == 0)))
             .map(|p| self.ring.to_poly(p, &Rational::from(p.lc())))
             .collect()
     }

@@ -37,10 +37,11 @@ pub use hypotheses::{Decision, Hypotheses, decide};
 pub use order::MonomialOrder;
 
 use crate::poly::Poly;
-use order::{Mono, Packing, Word};
+use order::{Fields, Mono, Order, Packing, Word};
 use rug::{Integer, Rational};
 use std::collections::HashMap;
 use std::fmt;
+use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 /// What an ideal computation may spend before it answers [`IdealError::Undecided`].
@@ -259,53 +260,74 @@ impl DPoly {
 /// let ring = PolyRing::new(["x", "y", "z"], MonomialOrder::Lex);
 /// assert_eq!(ring.variables(), ["x", "y", "z"]);
 /// ```
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug)]
 pub struct PolyRing {
-    vars: Vec<String>,
+    /// Shared between the ring and the copies a computation makes (a narrow copy, the ring
+    /// of its basis): cloning a ring does not copy its names and tables.
+    vars: Arc<Variables>,
+    order: MonomialOrder,
+    /// The exponent fields of the ring's packed monomials: [`Fields::Wide`] as built; a
+    /// computation whose input allows runs in a [`Fields::Narrow`] copy
+    /// ([`PolyRing::with_fields`]). Not part of the ring's identity (`==`).
+    fields: Fields,
+}
+
+/// A ring's variables: names and the tables that find a variable's index.
+#[derive(Debug)]
+struct Variables {
+    names: Vec<String>,
     index: HashMap<String, usize>,
     /// The interned id of each variable (see `Poly::id_terms`), and the variable of each id
-    /// as `(id, variable)` sorted by id (a binary search per factor in [`Self::to_dense`]).
+    /// as `(id, variable)` sorted by id (a binary search per factor in [`PolyRing::to_dense`]).
     ids: Vec<u32>,
     by_id: Vec<(u32, usize)>,
     /// The variable of id `by_id[0].0 + k` at `slot[k]` (`u32::MAX`: none), when the ids span
     /// a short range (they are interned together, mostly): one load per factor. Empty
     /// otherwise (the binary search).
     slot: Vec<u32>,
-    order: MonomialOrder,
 }
+
+impl PartialEq for PolyRing {
+    /// The same variables in the same order, and the same monomial order (the packed layout a
+    /// computation chose is not compared).
+    fn eq(&self, other: &Self) -> bool {
+        self.vars.names == other.vars.names && self.order == other.order
+    }
+}
+
+impl Eq for PolyRing {}
 
 impl PolyRing {
     /// The ring with these variables (duplicates are ignored) and this order.
     pub fn new<S: AsRef<str>>(vars: impl IntoIterator<Item = S>, order: MonomialOrder) -> Self {
-        let mut out = PolyRing {
-            vars: Vec::new(),
+        let mut out = Variables {
+            names: Vec::new(),
             index: HashMap::new(),
             ids: Vec::new(),
             by_id: Vec::new(),
             slot: Vec::new(),
-            order,
         };
         for v in vars {
             let v = v.as_ref().to_string();
             if !out.index.contains_key(&v) {
                 let id = crate::poly::intern(&v);
                 let at = out.by_id.partition_point(|e| e.0 < id);
-                out.by_id.insert(at, (id, out.vars.len()));
+                out.by_id.insert(at, (id, out.names.len()));
                 out.ids.push(id);
-                out.index.insert(v.clone(), out.vars.len());
-                out.vars.push(v);
+                out.index.insert(v.clone(), out.names.len());
+                out.names.push(v);
             }
         }
         if let (Some(lo), Some(hi)) = (out.by_id.first(), out.by_id.last()) {
             let span = (hi.0 - lo.0) as usize + 1;
-            if span <= 16 * out.vars.len() + 256 {
+            if span <= 16 * out.names.len() + 256 {
                 out.slot = vec![u32::MAX; span];
                 for &(id, v) in &out.by_id {
                     out.slot[(id - lo.0) as usize] = v as u32;
                 }
             }
         }
-        out
+        PolyRing { vars: Arc::new(out), order, fields: Fields::Wide }
     }
 
     /// The ring of all variables occurring in `polys`, sorted by name.
@@ -324,7 +346,7 @@ impl PolyRing {
 
     /// The variables, largest first.
     pub fn variables(&self) -> &[String] {
-        &self.vars
+        &self.vars.names
     }
 
     /// The monomial order.
@@ -345,20 +367,36 @@ impl PolyRing {
 
     /// The packed layout of the ring's monomials.
     pub(crate) fn packing(&self) -> Packing {
-        Packing::new(self.vars.len())
+        Packing::new(self.vars.names.len(), self.fields)
+    }
+
+    /// The monomial order on the ring's packed monomials.
+    pub(crate) fn ord(&self) -> Order {
+        Order::new(self.order, self.fields)
+    }
+
+    /// The same ring with its monomials packed in fields of `fields`.
+    pub(crate) fn with_fields(&self, fields: Fields) -> PolyRing {
+        PolyRing { fields, ..self.clone() }
+    }
+
+    /// The exponent fields of the ring's packed monomials.
+    pub(crate) fn fields(&self) -> Fields {
+        self.fields
     }
 
     /// The variable of an interned id.
     fn variable_of(&self, id: u32) -> Result<usize, IdealError> {
-        if !self.slot.is_empty() {
-            let at = id.wrapping_sub(self.by_id[0].0) as usize;
-            return match self.slot.get(at) {
+        let t = &*self.vars;
+        if !t.slot.is_empty() {
+            let at = id.wrapping_sub(t.by_id[0].0) as usize;
+            return match t.slot.get(at) {
                 Some(&v) if v != u32::MAX => Ok(v as usize),
                 _ => Err(IdealError::UnknownVariable(crate::poly::var_name(id))),
             };
         }
-        match self.by_id.binary_search_by_key(&id, |e| e.0) {
-            Ok(at) => Ok(self.by_id[at].1),
+        match t.by_id.binary_search_by_key(&id, |e| e.0) {
+            Ok(at) => Ok(t.by_id[at].1),
             Err(_) => Err(IdealError::UnknownVariable(crate::poly::var_name(id))),
         }
     }
@@ -399,8 +437,8 @@ impl PolyRing {
         Ok(Some((sorted, words)))
     }
 
-    /// The terms of `p` (see [`Terms`]); [`Limit::Degree`] for a degree above
-    /// [`order::MAX_DEGREE`].
+    /// The terms of `p` (see [`Terms`]); [`Limit::Degree`] for a degree above the layout's
+    /// largest ([`Fields::max_degree`]).
     fn sorted_terms<'p>(&self, p: &'p Poly) -> Result<Terms<'p>, IdealError> {
         let packing = self.packing();
         let w = packing.w;
@@ -413,7 +451,7 @@ impl PolyRing {
             for &(id, k) in m {
                 packing.add_exponent(e, self.variable_of(id)?, k);
             }
-            if e[0] > order::MAX_DEGREE {
+            if e[0] > packing.fields.max_degree() {
                 return Err(IdealError::Undecided { limit: Limit::Degree, elapsed_ms: 0 });
             }
             if *c.denom() != 1 {
@@ -435,7 +473,8 @@ impl PolyRing {
             _ => {
                 let mut order: Vec<usize> = (0..coefs.len()).collect();
                 let mono = |t: usize| &exps[t * w..(t + 1) * w];
-                order.sort_unstable_by(|&a, &b| self.order.cmp(mono(b), mono(a)));
+                let cmp = self.ord();
+                order.sort_unstable_by(|&a, &b| cmp.cmp(mono(b), mono(a)));
                 order
             }
         };
@@ -446,10 +485,10 @@ impl PolyRing {
     pub(crate) fn to_poly(&self, p: &DPoly, divisor: &Rational) -> Poly {
         Poly::from_id_terms((0..p.len()).map(|i| {
             let mono = p.mono(i);
-            let mut m: Vec<(u32, u32)> = (0..self.vars.len())
-                .map(|v| (v, order::exponent(mono, v)))
+            let mut m: Vec<(u32, u32)> = (0..self.vars.names.len())
+                .map(|v| (v, self.fields.exponent(mono, v)))
                 .filter(|(_, e)| *e > 0)
-                .map(|(v, e)| (self.ids[v], e))
+                .map(|(v, e)| (self.vars.ids[v], e))
                 .collect();
             m.sort_unstable();
             let c = if *divisor == 1 { Rational::from(&p.coefs[i]) } else { Rational::from(&p.coefs[i]) / divisor };
@@ -494,6 +533,23 @@ struct Terms<'p> {
 }
 
 impl DPoly {
+    /// The same polynomial with its monomials packed in `to` instead of `from` (the same
+    /// variables; the order of the terms is kept: every order compares exponents, not words).
+    fn repacked(&self, from: Packing, to: Packing) -> DPoly {
+        let n = self.len();
+        let mut exps = vec![0; n * to.w];
+        for t in 0..n {
+            let m = &mut exps[t * to.w..(t + 1) * to.w];
+            for v in 0..(from.w - 1) * from.fields.per_word() {
+                let k = from.fields.exponent(self.mono(t), v);
+                if k > 0 {
+                    to.add_exponent(m, v, k);
+                }
+            }
+        }
+        DPoly { w: to.w, exps, coefs: self.coefs.clone() }
+    }
+
     /// The leading term alone.
     fn head(&self) -> DPoly {
         DPoly { w: self.w, exps: self.lm().to_vec(), coefs: vec![self.lc().clone()] }

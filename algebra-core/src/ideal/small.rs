@@ -9,9 +9,9 @@
 //! ([`super::small_bucket`]) from where it is, and those over GMP from their first overflow.
 
 use super::division::{LONG_WORK, Reduced, Reducer, Side, merge_lifted_tails, reduce_from, step_sugar};
-use super::order::{self, Mono, Word};
+use super::order::{self, Mono, Order, Word};
 use super::small_bucket::reduce_in_word_buckets;
-use super::{DPoly, IdealError, Meter, MonomialOrder};
+use super::{DPoly, IdealError, Meter};
 use rug::Rational;
 use std::cell::RefCell;
 use std::cmp::Ordering;
@@ -74,7 +74,7 @@ pub(crate) struct Work {
 pub(crate) fn s_poly(
     (a, mf, f, fc): (i64, &Mono, &DPoly, &[i64]),
     (b, mg, g, gc): (i64, &Mono, &DPoly, &[i64]),
-    order: MonomialOrder,
+    order: Order,
 ) -> Option<Work> {
     let w = f.w;
     let mut out = take_work();
@@ -168,7 +168,7 @@ fn combine(
     (a, b): (i64, i64),
     (q, g, gc): (&Mono, &DPoly, &[i64]),
     w: usize,
-    order: MonomialOrder,
+    order: Order,
     out: &mut Work,
     lifted: &mut Vec<Word>,
 ) -> Option<()> {
@@ -196,7 +196,7 @@ fn combine_resume(
     (at, i0, j0): (&[usize], usize, usize),
     dead: usize,
     w: usize,
-    order: MonomialOrder,
+    order: Order,
     out: &mut Work,
     lifted: &mut Vec<Word>,
 ) -> Option<()> {
@@ -247,7 +247,7 @@ fn merge_from<const DROP_ZEROS: bool>(m: Merge<'_>, out: &mut Work, lifted: &mut
 
 /// What a merge reads: the work `p`, the multipliers `(a, b)`, the multiple `q·g` with `g`'s
 /// coefficients as words, where the merge starts in `p` and `g`, the width and the order.
-type Merge<'a> = (&'a Work, (i128, i128), (&'a Mono, &'a DPoly, &'a [i64]), (usize, usize), usize, MonomialOrder);
+type Merge<'a> = (&'a Work, (i128, i128), (&'a Mono, &'a DPoly, &'a [i64]), (usize, usize), usize, Order);
 
 /// [`merge_from`]'s loop; `UNSCALED` (`a = 1`): `p`'s coefficients are copied by runs with its
 /// monomials, not multiplied one by one.
@@ -370,7 +370,7 @@ fn in_place(
     (a, b): (i64, i64),
     (q, g, gc): (&Mono, &DPoly, &[i64]),
     w: usize,
-    order: MonomialOrder,
+    order: Order,
     (at, lifted): (&mut Vec<usize>, &mut Vec<Word>),
     dead: &mut usize,
 ) -> Scan {
@@ -424,7 +424,7 @@ fn in_place(
 pub(crate) fn reduce(
     f: DPoly,
     divisors: &[Reducer<'_>],
-    order: MonomialOrder,
+    order: Order,
     meter: &mut Meter,
 ) -> Result<Reduced, IdealError> {
     reduce_switching_at(f, divisors, order, meter, LONG_WORK, false)
@@ -436,7 +436,7 @@ pub(crate) fn reduce(
 pub(crate) fn reduce_switching_at(
     f: DPoly,
     divisors: &[Reducer<'_>],
-    order: MonomialOrder,
+    order: Order,
     meter: &mut Meter,
     long: usize,
     in_place: bool,
@@ -461,7 +461,7 @@ pub(crate) fn reduce_work(
     p: Work,
     w: usize,
     divisors: &[Reducer<'_>],
-    order: MonomialOrder,
+    order: Order,
     meter: &mut Meter,
 ) -> Result<Reduced, IdealError> {
     reduce_work_switching_at::<false>(p, w, divisors, order, meter, LONG_WORK)
@@ -476,7 +476,7 @@ pub(crate) fn reduce_work_in_place(
     p: Work,
     w: usize,
     divisors: &[Reducer<'_>],
-    order: MonomialOrder,
+    order: Order,
     meter: &mut Meter,
 ) -> Result<Reduced, IdealError> {
     reduce_work_switching_at::<true>(p, w, divisors, order, meter, LONG_WORK)
@@ -490,7 +490,7 @@ fn reduce_work_switching_at<const IN_PLACE: bool>(
     mut p: Work,
     w: usize,
     divisors: &[Reducer<'_>],
-    order: MonomialOrder,
+    order: Order,
     meter: &mut Meter,
     long: usize,
 ) -> Result<Reduced, IdealError> {
@@ -515,8 +515,8 @@ fn reduce_work_switching_at<const IN_PLACE: bool>(
         }
         meter.check(p.coefs.len() - start - dead + rem.coefs.len())?;
         let m = &p.exps[start * w..(start + 1) * w];
-        let mask = order::mask(m);
-        match divisors.iter().find(|d| d.mask & !mask == 0 && order::divides(d.poly.lm(), m)) {
+        let mask = order.mask(m);
+        match divisors.iter().find(|d| d.mask & !mask == 0 && order.divides(d.poly.lm(), m)) {
             Some(d) => {
                 let (g, gc) = (d.poly, d.small.expect("checked above"));
                 let (c, lc) = (p.coefs[start], gc[0]);
@@ -527,7 +527,7 @@ fn reduce_work_switching_at<const IN_PLACE: bool>(
                     (a, b) = (-a, -b);
                 }
                 order::quotient_into(q, g.lm(), m);
-                sugar = sugar.max(step_sugar(q, d, meter)?);
+                sugar = sugar.max(step_sugar(q, d, order.fields, meter)?);
                 let rem_fits = a == 1 || rem.coefs.iter().all(|&c| fit(i128::from(c) * i128::from(a)).is_some());
                 let scan = if !rem_fits {
                     Scan::Overflow

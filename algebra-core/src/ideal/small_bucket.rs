@@ -15,9 +15,9 @@
 
 use super::bucket::GeoBucket;
 use super::division::{BucketRun, Reduced, Reducer, continue_in_buckets, step_sugar};
-use super::order::{self, Mono, Word};
+use super::order::{self, Mono, Order, Word};
 use super::small::{Work, fit, gcd};
-use super::{DPoly, IdealError, Meter, MonomialOrder};
+use super::{DPoly, IdealError, Meter};
 use rug::{Integer, Rational};
 use std::cmp::Ordering;
 
@@ -44,7 +44,7 @@ impl Slot {
 /// The sum of the buckets' values, coefficients and multipliers in machine words.
 struct WordBucket {
     w: usize,
-    order: MonomialOrder,
+    order: Order,
     slots: Vec<Slot>,
     /// Emptied slots whose vectors are reused.
     spare: Vec<Slot>,
@@ -62,7 +62,7 @@ thread_local! {
 const POOL: (usize, usize) = (32, 1 << 18);
 
 impl WordBucket {
-    fn new(w: usize, order: MonomialOrder) -> Self {
+    fn new(w: usize, order: Order) -> Self {
         let spare = SPARE_SLOTS.with_borrow_mut(std::mem::take);
         WordBucket { w, order, slots: Vec::new(), spare, terms: 0 }
     }
@@ -301,7 +301,7 @@ impl Drop for WordBucket {
 
 /// `out := a + b` with the multiplier `gcd(a.mult, b.mult)`; `None` (operands untouched) on
 /// overflow.
-fn merge(a: &Slot, b: &Slot, w: usize, order: MonomialOrder, out: &mut Slot) -> Option<()> {
+fn merge(a: &Slot, b: &Slot, w: usize, order: Order, out: &mut Slot) -> Option<()> {
     let (x, y, u) = if a.mult == b.mult {
         (1i128, 1i128, a.mult)
     } else {
@@ -370,7 +370,7 @@ pub(crate) fn reduce_in_word_buckets(
     sugar: u64,
     w: usize,
     divisors: &[Reducer<'_>],
-    order: MonomialOrder,
+    order: Order,
     meter: &mut Meter,
 ) -> Result<Reduced, IdealError> {
     let mut work = WordBucket::new(w, order);
@@ -389,8 +389,8 @@ pub(crate) fn reduce_in_word_buckets(
         };
         // The work held, its leading term included (as the merges count it), and the remainder.
         meter.check(work.terms() + 1 + run.rem.len())?;
-        let mask = order::mask(&mono);
-        match divisors.iter().find(|d| d.mask & !mask == 0 && order::divides(d.poly.lm(), &mono)) {
+        let mask = order.mask(&mono);
+        match divisors.iter().find(|d| d.mask & !mask == 0 && order.divides(d.poly.lm(), &mono)) {
             Some(d) => {
                 let (g, gc) = (d.poly, d.small.expect("word buckets need the divisors' words"));
                 // |c|, |lc| <= 2^63 - 1, so the quotients and their negations fit.
@@ -405,7 +405,7 @@ pub(crate) fn reduce_in_word_buckets(
                     return hand_over(Why::Scale, work, Some(lead), run, w, divisors, meter);
                 }
                 order::quotient_into(&mut q, g.lm(), &mono);
-                run.sugar = run.sugar.max(step_sugar(&q, d, meter)?);
+                run.sugar = run.sugar.max(step_sugar(&q, d, order.fields, meter)?);
                 if a != 1 {
                     run.lambda /= a;
                     run.changed = true;

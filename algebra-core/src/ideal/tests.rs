@@ -91,6 +91,43 @@ fn degrees_past_the_packed_fields_are_undecided() {
     assert!(e.to_string().contains("degree limit") && e.to_string().contains("32767"), "{e}");
 }
 
+/// A computation runs in 8-bit exponent fields while its degrees stay within 127 and again in
+/// 16-bit fields when one would pass it: an S-polynomial of degree 200 (the lcm of `x^100 y`
+/// and `x y^100`) stops the narrow run with `Limit::Degree` and the basis comes from the wide
+/// run; a basis of low degree stays narrow, and a target of degree 131 is reduced by it
+/// repacked. The results themselves are checked against sympy's in `tests/groebner_sympy.rs`
+/// (systems `binomial-past-127`, `target-past-127`); here, that each path is taken and agrees
+/// with the other layout.
+#[test]
+fn narrow_fields_hand_over_to_wide_past_degree_127() {
+    use order::Fields;
+    let (x, y, z) = (Poly::var("x"), Poly::var("y"), Poly::var("z"));
+    let ring = PolyRing::new(["x", "y"], MonomialOrder::GrevLex);
+    let gens = [x.pow_u32(100) * y.clone() - Poly::one(), x.clone() * y.pow_u32(100) - Poly::one()];
+    let narrow = ring.with_fields(Fields::Narrow);
+    assert!(matches!(
+        narrow.groebner(&gens, &Budget::default()),
+        Err(IdealError::Undecided { limit: Limit::Degree, .. })
+    ));
+    let g = ring.groebner(&gens, &Budget::default()).unwrap();
+    assert_eq!((g.ring().fields(), g.ring() == &ring), (Fields::Wide, true));
+    assert!(g.polys().iter().any(|p| p.to_string() == "x**99 - y**99"), "{:?}", g.polys());
+
+    let ring = PolyRing::new(["x", "y", "z"], MonomialOrder::GrevLex);
+    let gens = [x.pow_u32(2) - y.clone() * z.clone(), y.pow_u32(2) - z.clone()];
+    let g = ring.groebner(&gens, &Budget::default()).unwrap();
+    assert_eq!(g.ring().fields(), Fields::Narrow);
+    let target = x.pow_u32(131) + y.pow_u32(130) * z.clone() + x.clone() * y.clone();
+    let wide = ring.with_fields(Fields::Wide).groebner_in(&gens, &mut Meter::new(&Budget::default())).unwrap();
+    assert_eq!(wide.ring().fields(), Fields::Wide);
+    assert_eq!(wide.polys(), g.polys());
+    assert_eq!(wide, g);
+    assert_eq!(g.normal_form(&target).unwrap(), wide.normal_form(&target).unwrap());
+    // The textbook division by a Gröbner basis leaves the normal form (a third code path, over Q).
+    let textbook = ring.divide(&target, &g.polys(), &Budget::default()).unwrap().remainder;
+    assert_eq!(g.normal_form(&target).unwrap(), textbook);
+}
+
 #[test]
 fn unknown_variables_and_inconsistent_systems() {
     let x = Poly::var("x");
@@ -138,11 +175,11 @@ proptest! {
         let gs: Vec<Poly> = gs.into_iter().filter(|g| !g.is_exact_zero()).collect();
         let (fd, fden) = ring.to_dense(&f).unwrap();
         let ds: Vec<DPoly> = gs.iter().map(|g| ring.to_dense(g).unwrap().0).collect();
-        let reducers: Vec<division::Reducer<'_>> = ds.iter().map(division::Reducer::new).collect();
+        let reducers: Vec<division::Reducer<'_>> = ds.iter().map(|d| division::Reducer::new(d, ring.fields())).collect();
         let run = |long: usize| {
             let mut meter = Meter::new(&Budget::default());
             let division::Reduced { r, s, .. } =
-                division::reduce_switching_at(fd.clone(), &reducers, order, &mut meter, long).unwrap();
+                division::reduce_switching_at(fd.clone(), &reducers, ring.ord(), &mut meter, long).unwrap();
             ring.to_poly(&r, &(s * Rational::from(&fden)))
         };
         let merged = run(usize::MAX);
@@ -170,11 +207,11 @@ fn long_reductions_shed_content_and_track_the_scale_exactly() {
             + Poly::from_i64(6) * y.clone();
         let (fd, fden) = ring.to_dense(&f).unwrap();
         let gd = ring.to_dense(&g).unwrap().0;
-        let reducers = [division::Reducer::new(&gd)];
+        let reducers = [division::Reducer::new(&gd, ring.fields())];
         for long in [0, 3, usize::MAX] {
             let mut meter = Meter::new(&Budget::default());
             let division::Reduced { r, s, .. } =
-                division::reduce_switching_at(fd.clone(), &reducers, MonomialOrder::GrevLex, &mut meter, long).unwrap();
+                division::reduce_switching_at(fd.clone(), &reducers, ring.ord(), &mut meter, long).unwrap();
             assert_eq!(ring.to_poly(&r, &(s * Rational::from(&fden))), expected, "switch at {long}, g = {g}");
         }
     }
@@ -191,11 +228,11 @@ fn term_budget_stops_merged_and_bucketed_reductions() {
     let f = Poly::from_i64(6) * x.pow_u32(40) + Poly::from_i64(6) * y;
     let g = Poly::from_i64(3) * x - Poly::from_i64(2);
     let (fd, gd) = (ring.to_dense(&f).unwrap().0, ring.to_dense(&g).unwrap().0);
-    let reducers = [division::Reducer::new(&gd)];
+    let reducers = [division::Reducer::new(&gd, ring.fields())];
     let tiny = Budget { max_terms: 1, ..Budget::default() };
     for long in [0, usize::MAX] {
         let mut meter = Meter::new(&tiny);
-        match division::reduce_switching_at(fd.clone(), &reducers, MonomialOrder::GrevLex, &mut meter, long) {
+        match division::reduce_switching_at(fd.clone(), &reducers, ring.ord(), &mut meter, long) {
             Err(IdealError::Undecided { limit: Limit::Terms, .. }) => {}
             other => panic!("switch at {long}: expected the term limit, got {:?}", other.map(|r| r.r)),
         }
@@ -205,7 +242,7 @@ fn term_budget_stops_merged_and_bucketed_reductions() {
     let reducers = small_reducers(&ds);
     for (long, in_place) in [(0, false), (usize::MAX, false), (usize::MAX, true)] {
         let mut meter = Meter::new(&tiny);
-        match small::reduce_switching_at(fd.clone(), &reducers, MonomialOrder::GrevLex, &mut meter, long, in_place) {
+        match small::reduce_switching_at(fd.clone(), &reducers, ring.ord(), &mut meter, long, in_place) {
             Err(IdealError::Undecided { limit: Limit::Terms, .. }) => {}
             other => panic!("words, switch at {long}: expected the term limit, got {:?}", other.map(|r| r.r)),
         }
@@ -218,7 +255,9 @@ fn with_small(ds: &[DPoly]) -> Vec<(DPoly, Option<Vec<i64>>)> {
 }
 
 fn small_reducers(ds: &[(DPoly, Option<Vec<i64>>)]) -> Vec<division::Reducer<'_>> {
-    ds.iter().map(|(d, s)| division::Reducer { small: s.as_deref(), ..division::Reducer::new(d) }).collect()
+    ds.iter()
+        .map(|(d, s)| division::Reducer { small: s.as_deref(), ..division::Reducer::new(d, order::Fields::Wide) })
+        .collect()
 }
 
 proptest! {
@@ -250,7 +289,7 @@ proptest! {
         for (long, in_place) in [(division::LONG_WORK, false), (division::LONG_WORK, true), (0, false), (3, true)] {
             let mut meter = Meter::new(&Budget::default());
             let division::Reduced { r, s, .. } =
-                small::reduce_switching_at(fd.clone(), &reducers, order, &mut meter, long, in_place).unwrap();
+                small::reduce_switching_at(fd.clone(), &reducers, ring.ord(), &mut meter, long, in_place).unwrap();
             prop_assert_eq!(
                 ring.to_poly(&r, &(s * Rational::from(&fden))), textbook.clone(), "switch at {}, in place {}", long, in_place
             );
@@ -292,7 +331,7 @@ fn word_geobuckets_hand_over_to_gmp_exactly() {
         let textbook = ring.divide(&f, &gs, &Budget::default()).unwrap().remainder;
         let mut meter = Meter::new(&Budget::default());
         let division::Reduced { r, s, .. } =
-            small::reduce_switching_at(fd.clone(), &reducers, MonomialOrder::GrevLex, &mut meter, 0, false).unwrap();
+            small::reduce_switching_at(fd.clone(), &reducers, ring.ord(), &mut meter, 0, false).unwrap();
         assert_eq!(ring.to_poly(&r, &(s * Rational::from(&fden))), textbook, "f = {f}, gs = {gs:?}");
     }
     // And one whose multipliers overflow for sure: 6·x^40 + 6y modulo 3x - 2 scales the work by
@@ -305,7 +344,7 @@ fn word_geobuckets_hand_over_to_gmp_exactly() {
     let reducers = small_reducers(&ds);
     let mut meter = Meter::new(&Budget::default());
     let division::Reduced { r, s, .. } =
-        small::reduce_switching_at(fd, &reducers, MonomialOrder::GrevLex, &mut meter, 0, false).unwrap();
+        small::reduce_switching_at(fd, &reducers, ring.ord(), &mut meter, 0, false).unwrap();
     let textbook = ring.divide(&f, &[g], &Budget::default()).unwrap().remainder;
     assert_eq!(ring.to_poly(&r, &(s * Rational::from(&fden))), textbook);
     let handed = small_bucket::HANDED_OVER.with(|h| h.get());
@@ -338,15 +377,9 @@ fn steps_in_place_match_textbook_division() {
         let reducers = small_reducers(&ds);
         let textbook = ring.divide(&f, &gs, &Budget::default()).unwrap().remainder;
         let mut meter = Meter::new(&Budget::default());
-        let division::Reduced { r, s, .. } = small::reduce_switching_at(
-            fd.clone(),
-            &reducers,
-            MonomialOrder::GrevLex,
-            &mut meter,
-            division::LONG_WORK,
-            true,
-        )
-        .unwrap();
+        let division::Reduced { r, s, .. } =
+            small::reduce_switching_at(fd.clone(), &reducers, ring.ord(), &mut meter, division::LONG_WORK, true)
+                .unwrap();
         assert_eq!(ring.to_poly(&r, &(s * Rational::from(&fden))), textbook, "f = {f}, gs = {gs:?}");
     }
     let taken = small::IN_PLACE.with(|c| c.get());
@@ -376,8 +409,7 @@ fn machine_word_reduction_overflows_into_gmp_exactly() {
         for (long, in_place) in [(division::LONG_WORK, false), (division::LONG_WORK, true), (0, false)] {
             let mut meter = Meter::new(&Budget::default());
             let division::Reduced { r, s, .. } =
-                small::reduce_switching_at(fd.clone(), &reducers, MonomialOrder::GrevLex, &mut meter, long, in_place)
-                    .unwrap();
+                small::reduce_switching_at(fd.clone(), &reducers, ring.ord(), &mut meter, long, in_place).unwrap();
             assert_eq!(ring.to_poly(&r, &(s * Rational::from(&fden))), expected, "g = {g}, switch at {long}");
         }
     }
@@ -388,7 +420,7 @@ fn plain(d: &DPoly, n: usize) -> Vec<u32> {
     (0..d.len())
         .flat_map(|t| {
             let m = d.mono(t);
-            std::iter::once(m[0] as u32).chain((0..n).map(move |v| order::exponent(m, v)))
+            std::iter::once(m[0] as u32).chain((0..n).map(move |v| order::Fields::Wide.exponent(m, v)))
         })
         .collect()
 }
@@ -452,14 +484,14 @@ fn variable_lookup_by_table_and_by_binary_search_agree() {
     let hi = Poly::var("lookup_hi");
     let short = PolyRing::new(["lookup_mid", "lookup_lo"], MonomialOrder::GrevLex);
     let long = PolyRing::new(["lookup_hi", "lookup_lo"], MonomialOrder::GrevLex);
-    assert!(!short.slot.is_empty() && long.slot.is_empty());
+    assert!(!short.vars.slot.is_empty() && long.vars.slot.is_empty());
     let p = lo.clone() * mid.clone() * mid.clone() + lo.clone();
     assert_eq!(plain(&short.to_dense(&p).unwrap().0, 2), [3, 2, 1, 1, 0, 1]);
     let q = lo.clone() * hi.clone() * hi.clone() + lo.clone();
     assert_eq!(plain(&long.to_dense(&q).unwrap().0, 2), [3, 2, 1, 1, 0, 1]);
     // {lo, gap_1}: mid and gap_0 fall inside the table's range, on empty slots.
     let holes = PolyRing::new(["lookup_lo", "lookup_gap_1"], MonomialOrder::GrevLex);
-    assert!(!holes.slot.is_empty());
+    assert!(!holes.vars.slot.is_empty());
     assert_eq!(plain(&holes.to_dense(&(gap[1].clone() * lo.clone())).unwrap().0, 2), [2, 1, 1]);
     let strangers = [(&short, &below), (&short, &gap[0]), (&short, &hi), (&long, &below), (&long, &mid)];
     for (ring, stranger) in strangers.into_iter().chain([(&holes, &mid), (&holes, &gap[0]), (&holes, &below)]) {
@@ -479,7 +511,7 @@ proptest! {
     fn chain_criterion_by_degree_keeps_the_same_pairs(
         ms in prop::collection::vec(([0u32..3, 0u32..3, 0u32..3], any::<bool>()), 0..24)
     ) {
-        let packing = order::Packing::new(3);
+        let packing = order::Packing::new(3, order::Fields::Wide);
         let w = packing.w;
         let mut lcms = Vec::new();
         let mut cands: Vec<groebner::Cand> = Vec::new();
@@ -489,20 +521,20 @@ proptest! {
             for (v, &k) in e.iter().enumerate() {
                 packing.add_exponent(&mut lcms[at..at + w], v, k);
             }
-            cands.push((i, at, *coprime, order::mask(&lcms[at..at + w])));
+            cands.push((i, at, *coprime, packing.fields.mask(&lcms[at..at + w])));
         }
         let lcm_of = |at: usize| &lcms[at..at + w];
         let mut fast = cands.clone();
-        let kept = groebner::chain_among_new(&mut fast, &lcms, w);
+        let kept = groebner::chain_among_new(&mut fast, &lcms, w, packing.fields);
         let mut fast: Vec<usize> = fast[..kept].iter().map(|c| c.0).collect();
         fast.sort_unstable();
         // The engine's before: sorted by the monomial order, coprime first, then the filter.
-        let order = MonomialOrder::GrevLex;
+        let order = order::Order::new(MonomialOrder::GrevLex, packing.fields);
         let mut old = cands.clone();
         old.sort_by(|a, b| order.cmp(lcm_of(a.1), lcm_of(b.1)).then_with(|| b.2.cmp(&a.2)));
         let mut kept_old: Vec<groebner::Cand> = Vec::new();
         for c in old {
-            if !kept_old.iter().any(|d| order::divides(lcm_of(d.1), lcm_of(c.1))) {
+            if !kept_old.iter().any(|d| order.divides(lcm_of(d.1), lcm_of(c.1))) {
                 kept_old.push(c);
             }
         }
@@ -516,7 +548,7 @@ proptest! {
             .filter(|c| {
                 !cands.iter().any(|d| {
                     let (lc, ld) = (lcm_of(c.1), lcm_of(d.1));
-                    (ld != lc && order::divides(ld, lc)) || (ld == lc && first(c, d))
+                    (ld != lc && order.divides(ld, lc)) || (ld == lc && first(c, d))
                 })
             })
             .map(|c| c.0)
@@ -558,7 +590,7 @@ fn packed_sort_is_grevlex() {
         assert_eq!(t.order.len(), p.term_count());
         let plain = |k: usize| -> Vec<u32> {
             let m = &t.exps[t.order[k] * w..(t.order[k] + 1) * w];
-            (0..names.len()).map(|v| order::exponent(m, v)).collect()
+            (0..names.len()).map(|v| ring.fields().exponent(m, v)).collect()
         };
         for k in 1..t.order.len() {
             let (a, b) = (plain(k - 1), plain(k));
@@ -580,7 +612,7 @@ fn a_kept_reducer_list_lends_its_buffer_to_the_next() {
     let (p, _) = ring.to_dense(&poly_from(&[(2, [1, 0, 0]), (-3, [0, 1, 1])])).unwrap();
     let mut buffer = division::ReducerBuffer::default();
     let mut list = buffer.take();
-    list.extend((0..40).map(|_| division::Reducer::new(&p)));
+    list.extend((0..40).map(|_| division::Reducer::new(&p, ring.fields())));
     let (capacity, at) = (list.capacity(), list.as_ptr() as usize);
     buffer.keep(list);
     let next = buffer.take();
