@@ -67,10 +67,12 @@ impl GeoBucket {
         p
     }
 
+    /// Keeps `p`'s vectors for a later [`Self::fresh`]; a polynomial without any (the empty
+    /// slot a carry leaves behind) is dropped, as in the word buckets.
     fn recycle(&mut self, mut p: DPoly) {
         p.exps.clear();
         p.coefs.clear();
-        if self.spare.len() < 16 {
+        if self.spare.len() < 16 && p.exps.capacity() > 0 {
             self.spare.push(p);
         }
     }

@@ -79,10 +79,14 @@ impl<'a> Reducer<'a> {
     }
 }
 
-/// The first divisor whose leading monomial divides `m`.
-fn find_divisor<'r, 'a>(divisors: &'r [Reducer<'a>], m: &Mono, order: Order) -> Option<&'r Reducer<'a>> {
-    let mask = order.mask(m);
-    divisors.iter().find(|d| d.mask & !mask == 0 && order.divides(d.poly.lm(), m))
+/// The first divisor whose leading monomial divides `m`: the search of every reduction step
+/// (over GMP, machine words and in geobuckets alike). Not inlined: inside the word reduction's
+/// large loop the compiler kept the scan's pointer on the stack, a store and a load per
+/// reducer (docs/performance.md, "eleventh session").
+#[inline(never)]
+pub(crate) fn find_divisor<'r, 'a>(divisors: &'r [Reducer<'a>], m: &Mono, fields: Fields) -> Option<&'r Reducer<'a>> {
+    let mask = fields.mask(m);
+    divisors.iter().find(|d| d.mask & !mask == 0 && fields.divides(d.poly.lm(), m))
 }
 
 /// The sugar `deg(q) + sugar(g)` of the step that subtracts a multiple of `q·g` (`g` the
@@ -405,7 +409,7 @@ pub(crate) fn reduce_from(
     }
     while start < p.len() {
         meter.check(p.len() - start + rem.len())?;
-        match find_divisor(divisors, p.mono(start), order) {
+        match find_divisor(divisors, p.mono(start), order.fields) {
             Some(r) => {
                 let g = r.poly;
                 let c = &p.coefs[start];
@@ -524,7 +528,7 @@ pub(crate) fn continue_in_buckets(
     while let Some(c) = work.pop_lead(&mut mono) {
         // The work held, its leading term included (as the merges count it), and the remainder.
         meter.check(work.terms() + 1 + run.rem.len())?;
-        match find_divisor(divisors, &mono, order) {
+        match find_divisor(divisors, &mono, order.fields) {
             Some(r) => {
                 let g = r.poly;
                 let d = Integer::from(c.gcd_ref(g.lc()));

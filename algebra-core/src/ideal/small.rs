@@ -8,7 +8,7 @@
 //! [`super::division::LONG_WORK`] terms continues in geobuckets over machine words
 //! ([`super::small_bucket`]) from where it is, and those over GMP from their first overflow.
 
-use super::division::{LONG_WORK, Reduced, Reducer, Side, merge_lifted_tails, reduce_from, step_sugar};
+use super::division::{LONG_WORK, Reduced, Reducer, Side, find_divisor, merge_lifted_tails, reduce_from, step_sugar};
 use super::order::{self, Mono, Order, Word};
 use super::small_bucket::reduce_in_word_buckets;
 use super::{DPoly, IdealError, Meter};
@@ -515,8 +515,7 @@ fn reduce_work_switching_at<const IN_PLACE: bool>(
         }
         meter.check(p.coefs.len() - start - dead + rem.coefs.len())?;
         let m = &p.exps[start * w..(start + 1) * w];
-        let mask = order.mask(m);
-        match divisors.iter().find(|d| d.mask & !mask == 0 && order.divides(d.poly.lm(), m)) {
+        match find_divisor(divisors, m, order.fields) {
             Some(d) => {
                 let (g, gc) = (d.poly, d.small.expect("checked above"));
                 let (c, lc) = (p.coefs[start], gc[0]);
