@@ -258,7 +258,7 @@ impl GeoBucket {
             }
             mono.clear();
             let first = &self.slots[at[0]];
-            mono.extend_from_slice(first.poly.mono(first.head));
+            super::order::push_mono(mono, first.poly.mono(first.head));
             let mut sum = self.pool.pop().unwrap_or_default();
             sum.assign(0);
             for &i in &at[..n] {

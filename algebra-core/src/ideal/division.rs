@@ -158,7 +158,7 @@ pub(crate) fn combine(
                 if scale {
                     *c *= a;
                 }
-                out.exps.extend_from_slice(p.mono(i));
+                order::push_mono(&mut out.exps, p.mono(i));
                 k += 1;
                 i += 1;
             }
@@ -166,7 +166,7 @@ pub(crate) fn combine(
                 let c = slot(out, spare, k);
                 c.assign(b * &g.coefs[j]);
                 c.neg_assign();
-                out.exps.extend_from_slice(lifted);
+                order::push_mono(&mut out.exps, lifted);
                 k += 1;
                 j += 1;
                 if j < g.len() {
@@ -181,7 +181,7 @@ pub(crate) fn combine(
                 }
                 *c -= b * &g.coefs[j];
                 if *c != 0 {
-                    out.exps.extend_from_slice(lifted);
+                    order::push_mono(&mut out.exps, lifted);
                     k += 1;
                 }
                 i += 1;

@@ -221,7 +221,7 @@ impl DPoly {
     }
 
     pub(crate) fn push(&mut self, m: &Mono, c: Integer) {
-        self.exps.extend_from_slice(m);
+        order::push_mono(&mut self.exps, m);
         self.coefs.push(c);
     }
 

@@ -251,6 +251,20 @@ impl std::ops::Deref for Order {
     }
 }
 
+/// Appends the monomial `m` to `out` (monomials side by side). A copy of a slice whose
+/// length is known only at run time is a call to `memcpy`, per term of every merge; for the
+/// usual widths the copy is of a fixed-size array, a few moves inline.
+#[inline(always)]
+pub(crate) fn push_mono(out: &mut Vec<Word>, m: &Mono) {
+    match m.len() {
+        2 => out.extend_from_slice(&[m[0], m[1]]),
+        3 => out.extend_from_slice(&[m[0], m[1], m[2]]),
+        4 => out.extend_from_slice(&[m[0], m[1], m[2], m[3]]),
+        5 => out.extend_from_slice(&[m[0], m[1], m[2], m[3], m[4]]),
+        _ => out.extend_from_slice(m),
+    }
+}
+
 /// `out := a * b`.
 #[inline]
 pub(crate) fn mul_into(out: &mut Vec<Word>, a: &Mono, b: &Mono) {

@@ -92,7 +92,7 @@ pub(crate) fn s_poly(
         }
         let Some(c) = fit(v) else { return false };
         out.coefs.push(c);
-        out.exps.extend_from_slice(m);
+        order::push_mono(&mut out.exps, m);
         true
     });
     done.then_some(out)
@@ -116,7 +116,7 @@ impl Work {
 
     /// Appends the term `c·m`.
     pub(crate) fn push(&mut self, m: &Mono, c: i64) {
-        self.exps.extend_from_slice(m);
+        order::push_mono(&mut self.exps, m);
         self.coefs.push(c);
     }
 
@@ -288,7 +288,7 @@ fn merge_runs<const DROP_ZEROS: bool, const UNSCALED: bool>(
                 flush(out, run, i);
                 run = i;
                 out.coefs.push(fit(-b * i128::from(gc[j]))?);
-                out.exps.extend_from_slice(lifted);
+                order::push_mono(&mut out.exps, lifted);
             }
             Ordering::Equal => {
                 flush(out, run, i);
@@ -296,7 +296,7 @@ fn merge_runs<const DROP_ZEROS: bool, const UNSCALED: bool>(
                 let v = fit(a * i128::from(p.coefs[i]) - b * i128::from(gc[j]))?;
                 if v != 0 {
                     out.coefs.push(v);
-                    out.exps.extend_from_slice(lifted);
+                    order::push_mono(&mut out.exps, lifted);
                 }
                 i += 1;
                 run = i;
@@ -310,7 +310,7 @@ fn merge_runs<const DROP_ZEROS: bool, const UNSCALED: bool>(
     flush(out, run, i);
     while j < g.len() {
         out.coefs.push(fit(-b * i128::from(gc[j]))?);
-        out.exps.extend_from_slice(lifted);
+        order::push_mono(&mut out.exps, lifted);
         j += 1;
         if j < g.len() {
             order::mul_into(lifted, q, g.mono(j));
@@ -611,7 +611,7 @@ fn reduce_work_switching_at<const IN_PLACE: bool>(
                 }
             }
             None => {
-                rem.exps.extend_from_slice(m);
+                order::push_mono(&mut rem.exps, m);
                 rem.coefs.push(p.coefs[start]);
                 start += 1;
             }

@@ -211,7 +211,7 @@ impl WordBucket {
             let sum = if sum == 0 { 0 } else { fit(sum).ok_or(())? };
             mono.clear();
             let first = &self.slots[at[0]];
-            mono.extend_from_slice(&first.exps[first.head * w..(first.head + 1) * w]);
+            order::push_mono(mono, &first.exps[first.head * w..(first.head + 1) * w]);
             for &i in &at[..n] {
                 self.slots[i].head += 1;
             }
@@ -323,12 +323,12 @@ fn merge(a: &Slot, b: &Slot, w: usize, order: Order, out: &mut Slot) -> Option<(
         match order.cmp(ma, mb) {
             Ordering::Greater => {
                 out.coefs.push(fit(x * i128::from(a.coefs[i]))?);
-                out.exps.extend_from_slice(ma);
+                order::push_mono(&mut out.exps, ma);
                 i += 1;
             }
             Ordering::Less => {
                 out.coefs.push(fit(y * i128::from(b.coefs[j]))?);
-                out.exps.extend_from_slice(mb);
+                order::push_mono(&mut out.exps, mb);
                 j += 1;
             }
             Ordering::Equal => {
@@ -336,7 +336,7 @@ fn merge(a: &Slot, b: &Slot, w: usize, order: Order, out: &mut Slot) -> Option<(
                 let v = x * i128::from(a.coefs[i]) + y * i128::from(b.coefs[j]);
                 if v != 0 {
                     out.coefs.push(fit(v)?);
-                    out.exps.extend_from_slice(ma);
+                    order::push_mono(&mut out.exps, ma);
                 }
                 i += 1;
                 j += 1;
