@@ -261,6 +261,7 @@ pub(crate) fn push_mono(out: &mut Vec<Word>, m: &Mono) {
         3 => out.extend_from_slice(&[m[0], m[1], m[2]]),
         4 => out.extend_from_slice(&[m[0], m[1], m[2], m[3]]),
         5 => out.extend_from_slice(&[m[0], m[1], m[2], m[3], m[4]]),
+        6 => out.extend_from_slice(&[m[0], m[1], m[2], m[3], m[4], m[5]]),
         _ => out.extend_from_slice(m),
     }
 }

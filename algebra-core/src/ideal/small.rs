@@ -239,9 +239,26 @@ fn combine_resume(
 #[inline(always)]
 fn merge_from<const DROP_ZEROS: bool>(m: Merge<'_>, out: &mut Work, lifted: &mut Vec<Word>) -> Option<usize> {
     if m.1.0 == 1 {
-        merge_runs::<DROP_ZEROS, true>(m, out, lifted)
+        merge_width::<DROP_ZEROS, true>(m, out, lifted)
     } else {
-        merge_runs::<DROP_ZEROS, false>(m, out, lifted)
+        merge_width::<DROP_ZEROS, false>(m, out, lifted)
+    }
+}
+
+/// [`merge_runs`] with the usual widths as constants.
+#[inline(always)]
+fn merge_width<const DROP_ZEROS: bool, const UNSCALED: bool>(
+    m: Merge<'_>,
+    out: &mut Work,
+    lifted: &mut Vec<Word>,
+) -> Option<usize> {
+    match m.4 {
+        2 => merge_runs::<DROP_ZEROS, UNSCALED, 2>(m, out, lifted),
+        3 => merge_runs::<DROP_ZEROS, UNSCALED, 3>(m, out, lifted),
+        4 => merge_runs::<DROP_ZEROS, UNSCALED, 4>(m, out, lifted),
+        5 => merge_runs::<DROP_ZEROS, UNSCALED, 5>(m, out, lifted),
+        6 => merge_runs::<DROP_ZEROS, UNSCALED, 6>(m, out, lifted),
+        _ => merge_runs::<DROP_ZEROS, UNSCALED, 0>(m, out, lifted),
     }
 }
 
@@ -251,12 +268,15 @@ type Merge<'a> = (&'a Work, (i128, i128), (&'a Mono, &'a DPoly, &'a [i64]), (usi
 
 /// [`merge_from`]'s loop; `UNSCALED` (`a = 1`): `p`'s coefficients are copied by runs with its
 /// monomials, not multiplied one by one.
-#[inline(always)]
-fn merge_runs<const DROP_ZEROS: bool, const UNSCALED: bool>(
+#[inline(never)]
+fn merge_runs<const DROP_ZEROS: bool, const UNSCALED: bool, const W: usize>(
     (p, (a, b), (q, g, gc), (i0, j0), w, order): Merge<'_>,
     out: &mut Work,
     lifted: &mut Vec<Word>,
 ) -> Option<usize> {
+    let w = if W == 0 { w } else { W };
+    let q = &q[..w];
+    let lift = |lifted: &mut Vec<Word>, j: usize| order::mul_into(lifted, q, &g.exps[j * w..(j + 1) * w]);
     let n = p.coefs.len();
     let (mut i, mut j) = (i0, j0);
     // `p`'s terms from `run` to `i` are not yet in `out.exps` (nor, `UNSCALED`, in
@@ -272,7 +292,7 @@ fn merge_runs<const DROP_ZEROS: bool, const UNSCALED: bool>(
         }
     };
     while i < n && j < g.len() {
-        match order.cmp(&p.exps[i * w..(i + 1) * w], lifted) {
+        match order.cmp(&p.exps[i * w..(i + 1) * w], &lifted[..w]) {
             Ordering::Greater => {
                 if DROP_ZEROS && p.coefs[i] == 0 {
                     // A term left with 0 by a step done in place: dropped.
@@ -288,7 +308,7 @@ fn merge_runs<const DROP_ZEROS: bool, const UNSCALED: bool>(
                 flush(out, run, i);
                 run = i;
                 out.coefs.push(fit(-b * i128::from(gc[j]))?);
-                order::push_mono(&mut out.exps, lifted);
+                order::push_mono(&mut out.exps, &lifted[..w]);
             }
             Ordering::Equal => {
                 flush(out, run, i);
@@ -296,7 +316,7 @@ fn merge_runs<const DROP_ZEROS: bool, const UNSCALED: bool>(
                 let v = fit(a * i128::from(p.coefs[i]) - b * i128::from(gc[j]))?;
                 if v != 0 {
                     out.coefs.push(v);
-                    order::push_mono(&mut out.exps, lifted);
+                    order::push_mono(&mut out.exps, &lifted[..w]);
                 }
                 i += 1;
                 run = i;
@@ -304,16 +324,16 @@ fn merge_runs<const DROP_ZEROS: bool, const UNSCALED: bool>(
         }
         j += 1;
         if j < g.len() {
-            order::mul_into(lifted, q, g.mono(j));
+            lift(lifted, j);
         }
     }
     flush(out, run, i);
     while j < g.len() {
         out.coefs.push(fit(-b * i128::from(gc[j]))?);
-        order::push_mono(&mut out.exps, lifted);
+        order::push_mono(&mut out.exps, &lifted[..w]);
         j += 1;
         if j < g.len() {
-            order::mul_into(lifted, q, g.mono(j));
+            lift(lifted, j);
         }
     }
     let tail = out.coefs.len();

@@ -302,8 +302,22 @@ impl Drop for WordBucket {
 }
 
 /// `out := a + b` with the multiplier `gcd(a.mult, b.mult)`; `None` (operands untouched) on
-/// overflow.
+/// overflow. The usual widths are constants of their own copies of the loop (see
+/// [`super::small`]'s merges).
 fn merge(a: &Slot, b: &Slot, w: usize, order: Order, out: &mut Slot) -> Option<()> {
+    match w {
+        2 => merge_in::<2>(a, b, w, order, out),
+        3 => merge_in::<3>(a, b, w, order, out),
+        4 => merge_in::<4>(a, b, w, order, out),
+        5 => merge_in::<5>(a, b, w, order, out),
+        6 => merge_in::<6>(a, b, w, order, out),
+        _ => merge_in::<0>(a, b, w, order, out),
+    }
+}
+
+/// [`merge`] with `w = W` (`W = 0`: `w` as given).
+fn merge_in<const W: usize>(a: &Slot, b: &Slot, w: usize, order: Order, out: &mut Slot) -> Option<()> {
+    let w = if W == 0 { w } else { W };
     let (x, y, u) = if a.mult == b.mult {
         (1i128, 1i128, a.mult)
     } else {

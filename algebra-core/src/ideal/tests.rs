@@ -239,7 +239,7 @@ fn term_budget_stops_merged_and_bucketed_reductions() {
     }
     // The same in machine words: merges (steps in place or not) and word geobuckets.
     let ds = with_small(std::slice::from_ref(&gd));
-    let reducers = small_reducers(&ds);
+    let reducers = small_reducers(&ds, ring.fields());
     for (long, in_place) in [(0, false), (usize::MAX, false), (usize::MAX, true)] {
         let mut meter = Meter::new(&tiny);
         match small::reduce_switching_at(fd.clone(), &reducers, ring.ord(), &mut meter, long, in_place) {
@@ -254,10 +254,8 @@ fn with_small(ds: &[DPoly]) -> Vec<(DPoly, Option<Vec<i64>>)> {
     ds.iter().map(|d| (d.clone(), small::small_coefs(d))).collect()
 }
 
-fn small_reducers(ds: &[(DPoly, Option<Vec<i64>>)]) -> Vec<division::Reducer<'_>> {
-    ds.iter()
-        .map(|(d, s)| division::Reducer { small: s.as_deref(), ..division::Reducer::new(d, order::Fields::Wide) })
-        .collect()
+fn small_reducers(ds: &[(DPoly, Option<Vec<i64>>)], fields: order::Fields) -> Vec<division::Reducer<'_>> {
+    ds.iter().map(|(d, s)| division::Reducer { small: s.as_deref(), ..division::Reducer::new(d, fields) }).collect()
 }
 
 proptest! {
@@ -267,14 +265,22 @@ proptest! {
     /// rational coefficients, a separate code path), `f` scaled by 7^k (up to 7^24 > 2^67: some
     /// reductions start over GMP) and the divisors by 11^j (up to 11^18 < 2^63: every step
     /// multiplies the work by up to 11^j, so some reductions overflow the words after a step or
-    /// a few, and some never do).
+    /// a few, and some never do). The ring has 0 to 61 unused variables after `x, y, z` and
+    /// 8- or 16-bit exponent fields, so that monomials take 2 to 17 words: every width the
+    /// merges have a copy of (2-6) and the general one.
     #[test]
     fn machine_word_reduction_matches_textbook_division(
         f in arb_poly(14), gs in prop::collection::vec(arb_poly(4), 1..4), k in 0u32..=24, j in 0u32..=18,
-        lex in any::<bool>()
+        lex in any::<bool>(), pad in 0usize..6, narrow in any::<bool>()
     ) {
         let order = if lex { MonomialOrder::Lex } else { MonomialOrder::GrevLex };
-        let ring = PolyRing::new(["x", "y", "z"], order);
+        let names: Vec<String> = ["x", "y", "z"]
+            .into_iter()
+            .map(String::from)
+            .chain((0..[0, 13, 21, 29, 37, 61][pad]).map(|i| format!("u{i}")))
+            .collect();
+        let ring = PolyRing::new(&names, order)
+            .with_fields(if narrow { order::Fields::Narrow } else { order::Fields::Wide });
         let power = |b: u32, e: u32| Rational::from(rug::ops::Pow::pow(Integer::from(b), e));
         let gs: Vec<Poly> =
             gs.into_iter().filter(|g| !g.is_exact_zero()).map(|g| g.scale(&power(11, j))).collect();
@@ -282,7 +288,7 @@ proptest! {
         let (fd, fden) = ring.to_dense(&f).unwrap();
         let ds: Vec<DPoly> = gs.iter().map(|g| ring.to_dense(g).unwrap().0).collect();
         let ds = with_small(&ds);
-        let reducers = small_reducers(&ds);
+        let reducers = small_reducers(&ds, ring.fields());
         let textbook = ring.divide(&f, &gs, &Budget::default()).unwrap().remainder;
         // Merges until 256 terms (never, here), word geobuckets from the start or after 3 terms;
         // merge steps tried in place first (as for normal forms) or not.
@@ -301,7 +307,9 @@ proptest! {
 /// coefficients pass 2^63 at different points, and each of the three ways of handing over to
 /// the GMP buckets taken at least once (a leading coefficient that does not fit, a scaling of
 /// the multipliers, a merge): divisors scaled by 11^j or with one coefficient near 2^62, the
-/// work from the start in buckets.
+/// work from the start in buckets. The rings take turns: 0 to 61 unused variables after
+/// `x, y, z`, 8- or 16-bit fields (monomials of 2 to 17 words: each width the bucket merges
+/// have a copy of, and the general one).
 #[test]
 fn word_geobuckets_hand_over_to_gmp_exactly() {
     use proptest::strategy::ValueTree;
@@ -309,8 +317,17 @@ fn word_geobuckets_hand_over_to_gmp_exactly() {
     let mut runner = TestRunner::deterministic();
     let strategy = (arb_poly(14), prop::collection::vec(arb_poly(4), 1..4), 0u32..=18, 0u32..=3);
     small_bucket::HANDED_OVER.with(|h| h.set([0; 3]));
-    let ring = PolyRing::new(["x", "y", "z"], MonomialOrder::GrevLex);
-    for _ in 0..400 {
+    let rings: Vec<PolyRing> = [0, 13, 21, 29, 37, 61]
+        .into_iter()
+        .flat_map(|pad| {
+            let names: Vec<String> =
+                ["x", "y", "z"].into_iter().map(String::from).chain((0..pad).map(|i| format!("u{i}"))).collect();
+            let ring = PolyRing::new(&names, MonomialOrder::GrevLex);
+            [ring.with_fields(order::Fields::Narrow), ring]
+        })
+        .collect();
+    for case in 0..400 {
+        let ring = &rings[case % rings.len()];
         let (f, gs, j, big) = strategy.new_tree(&mut runner).unwrap().current();
         let power = |b: u32, e: u32| Rational::from(rug::ops::Pow::pow(Integer::from(b), e));
         let near = Poly::constant(Rational::from((Integer::from(1) << 62u32) - 1));
@@ -327,7 +344,7 @@ fn word_geobuckets_hand_over_to_gmp_exactly() {
         let (fd, fden) = ring.to_dense(&f).unwrap();
         let ds: Vec<DPoly> = gs.iter().map(|g| ring.to_dense(g).unwrap().0).collect();
         let ds = with_small(&ds);
-        let reducers = small_reducers(&ds);
+        let reducers = small_reducers(&ds, ring.fields());
         let textbook = ring.divide(&f, &gs, &Budget::default()).unwrap().remainder;
         let mut meter = Meter::new(&Budget::default());
         let division::Reduced { r, s, .. } =
@@ -339,9 +356,10 @@ fn word_geobuckets_hand_over_to_gmp_exactly() {
     let (x, y) = (Poly::var("x"), Poly::var("y"));
     let f = Poly::from_i64(6) * x.pow_u32(40) + Poly::from_i64(6) * y.clone();
     let g = Poly::from_i64(3) * x.clone() - Poly::from_i64(2);
+    let ring = &rings[0];
     let (fd, fden) = ring.to_dense(&f).unwrap();
     let ds = with_small(&[ring.to_dense(&g).unwrap().0]);
-    let reducers = small_reducers(&ds);
+    let reducers = small_reducers(&ds, ring.fields());
     let mut meter = Meter::new(&Budget::default());
     let division::Reduced { r, s, .. } =
         small::reduce_switching_at(fd, &reducers, ring.ord(), &mut meter, 0, false).unwrap();
@@ -374,7 +392,7 @@ fn steps_in_place_match_textbook_division() {
         let (fd, fden) = ring.to_dense(&f).unwrap();
         let ds: Vec<DPoly> = gs.iter().map(|g| ring.to_dense(g).unwrap().0).collect();
         let ds = with_small(&ds);
-        let reducers = small_reducers(&ds);
+        let reducers = small_reducers(&ds, ring.fields());
         let textbook = ring.divide(&f, &gs, &Budget::default()).unwrap().remainder;
         let mut meter = Meter::new(&Budget::default());
         let division::Reduced { r, s, .. } =
@@ -403,7 +421,7 @@ fn machine_word_reduction_overflows_into_gmp_exactly() {
             + Poly::from_i64(6) * y.clone();
         let (fd, fden) = ring.to_dense(&f).unwrap();
         let ds = with_small(&[ring.to_dense(&g).unwrap().0]);
-        let reducers = small_reducers(&ds);
+        let reducers = small_reducers(&ds, ring.fields());
         // Word merges (steps in place or not), and word geobuckets from the start (whose
         // multipliers overflow instead).
         for (long, in_place) in [(division::LONG_WORK, false), (division::LONG_WORK, true), (0, false)] {
