@@ -57,15 +57,14 @@ impl<T: Real> Pose<T> {
             // the direct path: a non-finite `a`, `b` or `t` cannot give a finite result (every
             // coefficient enters a product), so one test of the result replaces the checks
             let rel = &a.reverse() * b;
-            // unit key poses (nalgebra's only case): the unit form inlined here, since a call
-            // returns the power through memory on the slerp's one chain; the rest by the call
-            let power = if rel.scalar >= T::zero() && rel.unit_to_rounding(&rel.pseudo_norm_squared()) {
-                let one = T::one();
-                Some(rel.power_fused_with::<true>(t, &one, &T::zero()))
+            // `rev(a) b` unit (nalgebra's only case): the power's dual-scalar weights applied to
+            // `a` and `b` (no last motor product, `slerp_unit_weights`); the rest by the power
+            // and the product
+            let out = if rel.scalar >= T::zero() && rel.unit_to_rounding(&rel.pseudo_norm_squared()) {
+                Some(Pose::slerp_unit_weights(a, b, &rel, t))
             } else {
-                rel.power_direct_untested(t)
+                rel.power_direct_untested(t).map(|p| a * &p)
             };
-            let out = power.map(|p| a * &p);
             if let Some(out) = out.filter(Pose::is_finite) {
                 return Ok(out);
             }
@@ -152,26 +151,26 @@ impl<T: Real> Pose<T> {
         self.power_fused_with::<false>(t, alpha, beta)
     }
 
-    /// The direct path of [`crate::UnitPose::slerp`] (`a`, `b` unit): `rev(a) b` with
-    /// non-negative scalar part, at `f64` precision or less, and one test of the result (a
-    /// non-finite `t` enters every coefficient's product); `None` sends the rest to
-    /// [`Pose::slerp`].
+    /// The direct path of [`crate::UnitPose::slerp`] (`a`, `b` unit): `rev(a) b` unit to
+    /// rounding with non-negative scalar part, at `f64` precision or less, by the weights'
+    /// form ([`Pose::slerp_unit_weights`]) and one test of the result (a non-finite `t` enters
+    /// every coefficient's product); `None` sends the rest to [`Pose::slerp`].
     pub(crate) fn slerp_unit_direct(a: &Self, b: &Self, t: &T) -> Option<Self> {
         if !crate::series::at_most_f64::<T>() {
             return None;
         }
         let rel = &a.reverse() * b;
-        if rel.scalar < T::zero() {
+        // unit keys whose `rev(a) b` is unit to rounding (what the weights' form assumes, past
+        // `t = ½`); the rest go to `Pose::slerp`, which takes the power and the product
+        if rel.scalar < T::zero() || !rel.unit_to_rounding(&rel.pseudo_norm_squared()) {
             return None;
         }
-        // the unit form inlined here (a call returns the pose through memory, on the chain)
-        let one = T::one();
-        Some(a * &rel.power_fused_with::<true>(t, &one, &T::zero())).filter(Pose::is_finite)
+        Some(Pose::slerp_unit_weights(a, b, &rel, t)).filter(Pose::is_finite)
     }
 
     /// [`Pose::power_fused`] for a unit `S` (`α = 1`, `β = 0`; `S∅ ≥ 0`): `ρ = 1`, `m = 0`
-    /// and `e^{tσ} = 1`, so no square root, division, `ln` or `exp` of `α`
-    /// ([`crate::UnitPose::slerp`]). The result is not tested here.
+    /// and `e^{tσ} = 1`, so no square root, division, `ln` or `exp` of `α` ([`Pose::power`]
+    /// of a unit pose). The result is not tested here.
     #[inline(never)]
     pub(crate) fn power_fused_unit(&self, t: &T) -> Self {
         let one = T::one();
@@ -208,11 +207,7 @@ impl<T: Real> Pose<T> {
         let u1 = t.mul_ref(t).mul_ref(&th2);
         let [cc, sn, tt] = exp_kernel_fixed(&u1);
         if UNIT {
-            // m = 0, e = 1: q_U = Sω, λ = t f S', λ₂ = t (S' g q_U - f w' T')
-            let w1 = t.mul_ref(&tf).mul_ref(&s.e123inf);
-            let lam = tf.mul_ref(&sn);
-            let lam2 = t.mul_ref(&sn.mul_ref(&g.mul_ref(&s.e123inf)).sub_ref(&f.mul_ref(&w1.mul_ref(&tt))));
-            let omega = w1.mul_ref(&sn);
+            let [cc, lam, lam2, omega] = unit_weights(s, t, [tf, f, g], [cc, sn, tt]);
             let c_out = std::array::from_fn(|i| c[i].mul_ref(&lam).add_ref(&a[i].mul_ref(&lam2)));
             return assemble(cc, a.map(|x| x.mul_ref(&lam)), c_out, omega);
         }
@@ -228,6 +223,85 @@ impl<T: Real> Pose<T> {
         let omega = e.mul_ref(&w1.mul_ref(&sn).add_ref(&p1.mul_ref(&cc)));
         let c_out = std::array::from_fn(|i| c[i].mul_ref(&lam).add_ref(&a[i].mul_ref(&lam2)));
         assemble(e.mul_ref(&cc), a.map(|x| x.mul_ref(&lam)), c_out, omega)
+    }
+}
+
+/// The unit power's weights `[cos, λ, λ₂, Ω]`: `S^t = cos + λ a e123 + (λ c + λ₂ a) einf + Ωω`
+/// for a unit `S = S∅ + a e123 + c einf + Sω ω` (`m = 0`, `e = 1`: `q_U = Sω`, `λ = t f sin`,
+/// `λ₂ = t (sin g q_U - f w' T)`, `Ω = w' sin` with `w' = t² f Sω`), from the angle's factors
+/// `[t f, f, g]` and the exp kernel's `[cos, sin, T]` at `u' = (tθ)²`.
+#[inline(always)]
+fn unit_weights<T: Real>(s: &Pose<T>, t: &T, [tf, f, g]: [T; 3], [cc, sn, tt]: [T; 3]) -> [T; 4] {
+    let w1 = t.mul_ref(&tf).mul_ref(&s.e123inf);
+    let lam = tf.mul_ref(&sn);
+    let lam2 = t.mul_ref(&sn.mul_ref(&g.mul_ref(&s.e123inf)).sub_ref(&f.mul_ref(&w1.mul_ref(&tt))));
+    let omega = w1.mul_ref(&sn);
+    [cc, lam, lam2, omega]
+}
+
+/// `d·X` for a dual scalar `d = d0 + d1 ω` (`ω = e123inf`, central in the even subalgebra,
+/// `ω²= 0`): `ω (σ + a e123 + c einf + pω) = σω - a einf`, so 12 products instead of a motor
+/// product's 64.
+#[inline(always)]
+fn dual_scale<T: Ring>(d0: &T, d1: &T, x: &Pose<T>) -> [T; 8] {
+    [
+        d0.mul_ref(&x.scalar),
+        d0.mul_ref(&x.e12),
+        d0.mul_ref(&x.e13),
+        d0.mul_ref(&x.e23),
+        // c' = d0 c - d1 a with a = (e23, -e13, e12)
+        d0.mul_ref(&x.e1inf).sub_ref(&d1.mul_ref(&x.e23)),
+        d0.mul_ref(&x.e2inf).add_ref(&d1.mul_ref(&x.e13)),
+        d0.mul_ref(&x.e3inf).sub_ref(&d1.mul_ref(&x.e12)),
+        d0.mul_ref(&x.e123inf).add_ref(&d1.mul_ref(&x.scalar)),
+    ]
+}
+
+impl<T: Real> Pose<T> {
+    /// `a (rev(a) b)^t` for a unit `rel = rev(a) b` with `rel∅ ≥ 0`, without the last motor
+    /// product. The power lies in the dual plane of `rel`: `rel^t = A + B rel` with the dual
+    /// scalars `A = (cos - λ rel∅) + (Ω - λ relω + λ₂ rel∅) ω` and `B = λ - λ₂ ω` (the weights
+    /// of [`unit_weights`] at `t`), and `a rel = a rev(a) b = N_a b` with
+    /// `N_a = a rev(a) = α_a + β_a ω` (`α_a = a∅² + |a e123|²`, `β_a = 2 (a∅ aω - a·c)`). So
+    /// `a rel^t = A a + (B N_a) b`: two dual scalings (24 products) in place of the power's
+    /// assembly and a motor product.
+    ///
+    /// `A → 0` as `t → 1`, where `cos - λ rel∅` cancels; past `t = ½` the weights come from
+    /// the other end, `a rel^t = N_a b rev(rel)^{1-t}` (`N_a N_b = 1` for a unit `rel`), whose
+    /// weights at `1 - t` are the same functions of `rel∅`, `|rel e123|` and `relω` (`rev`
+    /// changes none of them): `a rel^t = B' a + (N_a A') b`. The weight that vanishes at an
+    /// end is always a `λ` (a product, `t f sin`), never a difference.
+    #[inline(always)]
+    fn slerp_unit_weights(a: &Self, b: &Self, rel: &Self, t: &T) -> Self {
+        let s = rel;
+        let (ar, _) = split(s);
+        let xr = dot(&ar, &ar);
+        let late = *t > T::from_ratio(1, 2);
+        // 1 - t is exact for t in [½, 1] (Sterbenz)
+        let t = if late { T::one().sub_ref(t) } else { t.clone() };
+        let (th2, f, g) = angle_factors_fixed(&xr, &s.scalar.mul_ref(&s.scalar), &s.scalar, &Real::sqrt(&xr));
+        let tf = t.mul_ref(&f);
+        let u1 = t.mul_ref(&t).mul_ref(&th2);
+        let [cc, lam, lam2, omega] = unit_weights(s, &t, [tf, f, g], exp_kernel_fixed(&u1));
+        // A = a0 + a1 ω, B = lam - lam2 ω
+        let a0 = cc.sub_ref(&lam.mul_ref(&s.scalar));
+        let a1 = omega.sub_ref(&lam.mul_ref(&s.e123inf)).add_ref(&lam2.mul_ref(&s.scalar));
+        // N_a = alpha + beta ω
+        let (aa, ac) = split(a);
+        let alpha = a.scalar.mul_ref(&a.scalar).add_ref(&dot(&aa, &aa));
+        let beta = a.scalar.mul_ref(&a.e123inf).sub_ref(&dot(&aa, &ac));
+        let beta = beta.add_ref(&beta);
+        let (x, y) = if late {
+            // B' a + (N_a A') b
+            let (n0, n1) = (alpha.mul_ref(&a0), alpha.mul_ref(&a1).add_ref(&beta.mul_ref(&a0)));
+            (dual_scale(&lam, &lam2.neg_ref(), a), dual_scale(&n0, &n1, b))
+        } else {
+            // A a + (B N_a) b
+            let (n0, n1) = (lam.mul_ref(&alpha), lam.mul_ref(&beta).sub_ref(&lam2.mul_ref(&alpha)));
+            (dual_scale(&a0, &a1, a), dual_scale(&n0, &n1, b))
+        };
+        let [s0, s1, s2, s3, s4, s5, s6, s7] = std::array::from_fn(|i| x[i].add_ref(&y[i]));
+        Pose::new(s0, s1, s2, s3, s4, s5, s6, s7)
     }
 }
 

@@ -13,7 +13,7 @@ use algebra_core::test_support::Xorshift;
 use algebra_core::{MpFloat, PrecisionGuard, Real, Ring};
 
 use common::{cga_null_action, diff, size};
-use motion::{Even, Pose, Pseudoscalar};
+use motion::{Even, Pose, Pseudoscalar, UnitPose};
 
 /// The condition of the logarithm of `s`: it grows like `1/sin θ` near a rotation by 2π
 /// (half-angle θ near π).
@@ -234,4 +234,55 @@ fn transform_point_overflowing_in_one_coordinate_equals_the_careful_path_or_fail
     }
     // both outcomes occur, on each side of the tame range
     assert!(checked[0] > 100 && checked[1] > 30, "{checked:?}");
+}
+
+/// The slerp of unit poses (`rev(a) b` unit with non-negative scalar part: the direct path
+/// that skips the last motor product, `a rel^t = A a + (B N_a) b` with dual-scalar weights,
+/// and its mirror form past `t = ½`) against the 256-bit careful path `a (rev(a) b)^t`:
+/// 2400 random pairs with translations of 0.1 to 1000 and rotations up to 3.1 rad, at the
+/// ends, near them, on both sides of `½` and outside `[0, 1]`. The error is at most 4
+/// roundings of the inputs' size times the weights' size `|t| + |1 - t|` (1 inside `[0, 1]`,
+/// 2.4 at t = 1.7). Measured, in those units: `Pose::slerp` 1.9, `UnitPose::slerp` 2.6; the
+/// previous form (the power, then a motor product) 2.5 and 3.0.
+#[test]
+fn unit_slerp_equals_the_256_bit_careful_path() {
+    let _g = PrecisionGuard::new(256);
+    let mut rng = Xorshift(0x1234_5678_9ABC_DEF1);
+    let ts = [0.0, 0.001, 0.1, 0.25, 0.4, 0.5, 0.6, 0.75, 0.9, 0.99, 0.999, 1.0, -0.5, 1.7];
+    let mut direct = 0;
+    for case in 0..3000 {
+        let scale = [0.1, 1.0, 10.0, 1000.0][case % 4];
+        let mut pose = || {
+            let axis = [rng.symmetric(), rng.symmetric(), rng.symmetric()];
+            let n = axis.iter().map(|x| x * x).sum::<f64>().sqrt();
+            let (angle, d) =
+                (3.1 * rng.symmetric(), [scale * rng.symmetric(), scale * rng.symmetric(), scale * rng.symmetric()]);
+            Pose::from_axis_angle_translation(&axis.map(|x| x / n), &angle, &d).unwrap()
+        };
+        let (a, b) = (pose(), pose());
+        if (a.reverse() * b).scalar < 0.0 {
+            continue;
+        }
+        direct += 1;
+        let (ua, ub) = (a.to_unit().unwrap(), b.to_unit().unwrap());
+        let input = size(&a).max(1.0) * size(&b).max(1.0);
+        for t in ts {
+            let tol = 4.0 * f64::EPSILON * input * (t.abs() + (1.0 - t).abs());
+            let reference = to_f64(&Pose::slerp(&to_mp(&a), &to_mp(&b), &MpFloat::from_f64(t)).unwrap());
+            let s = Pose::slerp(&a, &b, &t).unwrap();
+            assert!(diff(&s, &reference) <= tol, "slerp({a}, {b}, {t}): {s} vs {reference}");
+            // `to_unit` rescales the keys by their rounding-level norms: the reference is theirs
+            let u = UnitPose::slerp(&ua, &ub, &t).unwrap();
+            let (ma, mb) = (to_mp(ua.as_pose()), to_mp(ub.as_pose()));
+            let reference = to_f64(&Pose::slerp(&ma, &mb, &MpFloat::from_f64(t)).unwrap());
+            assert!(
+                diff(u.as_pose(), &reference) <= tol,
+                "unit slerp({}, {}, {t}): {} vs {reference}",
+                ua.as_pose(),
+                ub.as_pose(),
+                u.as_pose()
+            );
+        }
+    }
+    assert!(direct > 2000, "{direct} pairs on the direct path");
 }

@@ -197,11 +197,17 @@ fn higher_degrees() {
             assert_eq!(seg.degree(), n);
             let (s0, psi0) = pose_and_indicatrix(&seg, 0.0);
             let (s1, psi1) = pose_and_indicatrix(&seg, 1.0);
-            assert!(diff(&s0, &a.pose) < 1e-14 && diff(&s1, &b.pose) < 1e-12, "{kind} n = {n}");
+            // The pairwise slerp scales non-unit keys, Φ(αA, βB; t) = α^{1+t} β^t Φ(A, B; t)
+            // (eq. 16), so the control poses' rounding-level norms (|N - 1| up to 4e-16) are
+            // raised to powers up to 2^n along the tableau: the end pose's error grows as 2^n
+            // (n = 7: 3e-13 to 1.1e-12 depending on the slerp's rounding; the same tableau
+            // evaluated at 256 bits is 0.9e-12 to 1.2e-12 from the prescribed pose).
+            let amplified = f64::from(1u32 << n);
+            assert!(diff(&s0, &a.pose) < 1e-14 && diff(&s1, &b.pose) < amplified * 2e-14, "{kind} n = {n}");
             let want0 = shape0.indicatrix(&a.velocity_bivector());
             let want1 = shape1.indicatrix(&b.velocity_bivector());
             assert!(diff(&psi0, &want0) < 1e-11, "{kind} n = {n}: {psi0} vs {want0}");
-            assert!(diff(&psi1, &want1) < 1e-11, "{kind} n = {n}: {psi1} vs {want1}");
+            assert!(diff(&psi1, &want1) < amplified * 2e-13, "{kind} n = {n}: {psi1} vs {want1}");
             let c = seg.control_poses();
             for i in 2..n - 1 {
                 let t = (i - 1) as f64 / (n - 2) as f64;
