@@ -144,13 +144,6 @@ impl<T: Real> Pose<T> {
         n2.scalar.sub_ref(&one).is_negligible(&one, UNIT_ULPS) && n2.e123inf.is_negligible(&beta_scale, UNIT_ULPS)
     }
 
-    /// [`Pose::power_fused_with`] for non-unit `S`, out of line: with the unit form beside it
-    /// in one function, the registers spill (slerp 1.13x nalgebra against 1.07x).
-    #[inline(never)]
-    fn power_fused_general(&self, t: &T, alpha: &T, beta: &T) -> Self {
-        self.power_fused_with::<false>(t, alpha, beta)
-    }
-
     /// The direct path of [`crate::UnitPose::slerp`] (`a`, `b` unit): `rev(a) b` unit to
     /// rounding with non-negative scalar part, at `f64` precision or less, by the weights'
     /// form ([`Pose::slerp_unit_weights`]) and one test of the result (a non-finite `t` enters
@@ -173,44 +166,32 @@ impl<T: Real> Pose<T> {
     /// of a unit pose). The result is not tested here.
     #[inline(never)]
     pub(crate) fn power_fused_unit(&self, t: &T) -> Self {
-        let one = T::one();
-        self.power_fused_with::<true>(t, &one, &T::zero())
+        power_from_weights(self, unit_weights(self, t))
     }
 
-    /// The closed form of [`Pose::power_fused`] given `rev(S) S = α + βω`; with `UNIT` the
-    /// caller promises `α = 1` and `β = 0`, and the factors they give are left out.
-    // always: its two instances (unit and not) must not become calls that return through memory
-    #[inline(always)]
-    fn power_fused_with<const UNIT: bool>(&self, t: &T, alpha: &T, beta: &T) -> Self {
+    /// The closed form of [`Pose::power_fused`] for a non-unit `S` with `rev(S) S = α + βω`,
+    /// out of line: with the unit form beside it in one function, the registers spill (slerp
+    /// 1.13x nalgebra against 1.07x).
+    #[inline(never)]
+    fn power_fused_general(&self, t: &T, alpha: &T, beta: &T) -> Self {
         let s = self;
-        let (a, c) = split(s);
+        let (a, _) = split(s);
         let xr = dot(&a, &a);
         // x = sin² θ and y = cos² θ of the unit S/√α by one division (no square root on the
         // way to θ², which starts the exp kernel); ρ = 1/√α beside the angle's polynomial
-        let (inv_alpha, rho) = if UNIT {
-            (T::one(), T::one())
-        } else {
-            let inv = T::one().div_ref(alpha);
-            let rho = Real::sqrt(&inv);
-            (inv, rho)
-        };
-        let by = |x: T, r: &T| if UNIT { x } else { x.mul_ref(r) };
+        let inv_alpha = T::one().div_ref(alpha);
+        let rho = Real::sqrt(&inv_alpha);
         let half = T::from_ratio(1, 2);
-        let x = by(xr.clone(), &inv_alpha);
-        let y = by(s.scalar.mul_ref(&s.scalar), &inv_alpha);
-        let u0 = by(s.scalar.clone(), &rho);
-        let sin = by(Real::sqrt(&xr), &rho);
+        let x = xr.mul_ref(&inv_alpha);
+        let y = s.scalar.mul_ref(&s.scalar).mul_ref(&inv_alpha);
+        let u0 = s.scalar.mul_ref(&rho);
+        let sin = Real::sqrt(&xr).mul_ref(&rho);
         let (th2, f, g) = angle_factors_fixed(&x, &y, &u0, &sin);
         let tf = t.mul_ref(&f);
         // u' = (tθ)² = t² θ²: θ² comes without a square root, whose derivative at a pure
         // translation would make a dual number's result non-finite
         let u1 = t.mul_ref(t).mul_ref(&th2);
         let [cc, sn, tt] = exp_kernel_fixed(&u1);
-        if UNIT {
-            let [cc, lam, lam2, omega] = unit_weights(s, t, [tf, f, g], [cc, sn, tt]);
-            let c_out = std::array::from_fn(|i| c[i].mul_ref(&lam).add_ref(&a[i].mul_ref(&lam2)));
-            return assemble(cc, a.map(|x| x.mul_ref(&lam)), c_out, omega);
-        }
         let m = beta.mul_ref(&inv_alpha).mul_ref(&half);
         let q_u = s.e123inf.sub_ref(&m.mul_ref(&s.scalar)).mul_ref(&rho);
         let w1 = t.mul_ref(&tf).mul_ref(&q_u);
@@ -221,17 +202,32 @@ impl<T: Real> Pose<T> {
         let k = f.mul_ref(&m).add_ref(&g.mul_ref(&q_u));
         let lam2 = et.mul_ref(&sn.mul_ref(&k).sub_ref(&f.mul_ref(&w1.mul_ref(&tt).add_ref(&p1.mul_ref(&sn)))));
         let omega = e.mul_ref(&w1.mul_ref(&sn).add_ref(&p1.mul_ref(&cc)));
-        let c_out = std::array::from_fn(|i| c[i].mul_ref(&lam).add_ref(&a[i].mul_ref(&lam2)));
-        assemble(e.mul_ref(&cc), a.map(|x| x.mul_ref(&lam)), c_out, omega)
+        power_from_weights(s, [e.mul_ref(&cc), lam, lam2, omega])
     }
 }
 
-/// The unit power's weights `[cos, λ, λ₂, Ω]`: `S^t = cos + λ a e123 + (λ c + λ₂ a) einf + Ωω`
-/// for a unit `S = S∅ + a e123 + c einf + Sω ω` (`m = 0`, `e = 1`: `q_U = Sω`, `λ = t f sin`,
-/// `λ₂ = t (sin g q_U - f w' T)`, `Ω = w' sin` with `w' = t² f Sω`), from the angle's factors
-/// `[t f, f, g]` and the exp kernel's `[cos, sin, T]` at `u' = (tθ)²`.
+/// `S^t` from its weights `[σ', λ, λ₂, Ω]`: `σ' + λ a e123 + (λ c + λ₂ a) einf + Ωω` for
+/// `S = S∅ + a e123 + c einf + Sω ω` (the shape of every fused power).
 #[inline(always)]
-fn unit_weights<T: Real>(s: &Pose<T>, t: &T, [tf, f, g]: [T; 3], [cc, sn, tt]: [T; 3]) -> [T; 4] {
+fn power_from_weights<T: Real>(s: &Pose<T>, [sigma, lam, lam2, omega]: [T; 4]) -> Pose<T> {
+    let (a, c) = split(s);
+    let c_out = std::array::from_fn(|i| c[i].mul_ref(&lam).add_ref(&a[i].mul_ref(&lam2)));
+    assemble(sigma, a.map(|x| x.mul_ref(&lam)), c_out, omega)
+}
+
+/// The unit power's weights `[cos, λ, λ₂, Ω]` ([`power_from_weights`]) for a unit
+/// `S = S∅ + a e123 + c einf + Sω ω` with `S∅ ≥ 0` (`α = 1`, `m = 0`, `e = 1`: `q_U = Sω`,
+/// `λ = t f sin`, `λ₂ = t (sin g q_U - f w' T)`, `Ω = w' sin` with `w' = t² f Sω`), the exp
+/// kernel's `[cos, sin, T]` taken at `u' = (tθ)²`.
+#[inline(always)]
+fn unit_weights<T: Real>(s: &Pose<T>, t: &T) -> [T; 4] {
+    let (a, _) = split(s);
+    let xr = dot(&a, &a);
+    // sin² θ = |a|², cos² θ = S∅² (α = 1): θ² without a square root on its chain
+    let (th2, f, g) = angle_factors_fixed(&xr, &s.scalar.mul_ref(&s.scalar), &s.scalar, &Real::sqrt(&xr));
+    let tf = t.mul_ref(&f);
+    let u1 = t.mul_ref(t).mul_ref(&th2);
+    let [cc, sn, tt] = exp_kernel_fixed(&u1);
     let w1 = t.mul_ref(&tf).mul_ref(&s.e123inf);
     let lam = tf.mul_ref(&sn);
     let lam2 = t.mul_ref(&sn.mul_ref(&g.mul_ref(&s.e123inf)).sub_ref(&f.mul_ref(&w1.mul_ref(&tt))));
@@ -274,15 +270,10 @@ impl<T: Real> Pose<T> {
     #[inline(always)]
     fn slerp_unit_weights(a: &Self, b: &Self, rel: &Self, t: &T) -> Self {
         let s = rel;
-        let (ar, _) = split(s);
-        let xr = dot(&ar, &ar);
         let late = *t > T::from_ratio(1, 2);
         // 1 - t is exact for t in [½, 1] (Sterbenz)
         let t = if late { T::one().sub_ref(t) } else { t.clone() };
-        let (th2, f, g) = angle_factors_fixed(&xr, &s.scalar.mul_ref(&s.scalar), &s.scalar, &Real::sqrt(&xr));
-        let tf = t.mul_ref(&f);
-        let u1 = t.mul_ref(&t).mul_ref(&th2);
-        let [cc, lam, lam2, omega] = unit_weights(s, &t, [tf, f, g], exp_kernel_fixed(&u1));
+        let [cc, lam, lam2, omega] = unit_weights(s, &t);
         // A = a0 + a1 ω, B = lam - lam2 ω
         let a0 = cc.sub_ref(&lam.mul_ref(&s.scalar));
         let a1 = omega.sub_ref(&lam.mul_ref(&s.e123inf)).add_ref(&lam2.mul_ref(&s.scalar));

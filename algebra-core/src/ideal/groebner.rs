@@ -39,11 +39,12 @@ pub struct GroebnerBasis {
 impl PartialEq for GroebnerBasis {
     /// The same ring and the same polynomials, whichever exponent fields each was computed in.
     fn eq(&self, other: &Self) -> bool {
-        if self.ring.fields() == other.ring.fields() {
-            self.ring == other.ring && self.basis == other.basis
-        } else {
-            self.ring == other.ring && self.widened().basis == other.widened().basis
-        }
+        self.ring == other.ring
+            && if self.ring.fields() == other.ring.fields() {
+                self.basis == other.basis
+            } else {
+                self.widened().basis == other.widened().basis
+            }
     }
 }
 
