@@ -14,10 +14,10 @@
 //! cargo run --release -p algebra-codegen --example pairing_wisdom -- [DIR] [ROUNDS] [CORE]
 //! ```
 //! (`DIR` the scratch directory, default `/tmp/gam-pairing`; `ROUNDS` default 1000; `CORE`
-//! the core to pin to with `taskset`, default 1; `GAM_PAIRING_ONLY=name` one case,
-//! `GAM_PAIRING_FACTORED=1` the search among factored kernels, `versor::factor_outputs`).
-//! Kernels are verified against the default
-//! order's result before timing (the same values up to rounding).
+//! the core to pin to with `taskset`, default 1; `GAM_PAIRING_ONLY=name` one case). The best
+//! eight orders of phase 2 are timed again in a third program, the check on noise. Kernels
+//! are verified against the default order's result before timing (the same values up to
+//! rounding).
 
 use algebra_codegen::plan::Plan;
 use algebra_codegen::standalone::{Selection, file_with};
@@ -92,7 +92,7 @@ fn cases() -> Vec<Case> {
             versor: "Motor",
             operand: "Trivector",
             point: "Trivector::from_array([p[0], p[1], p[2], 1.0])",
-            conventions: &[Convention::Sandwich],
+            conventions: both,
         },
         Case {
             name: "cga",
@@ -152,9 +152,9 @@ fn phase2(best: &[TermOrder]) -> Vec<TermOrder> {
     out
 }
 
-/// Per candidate: label, fingerprint, order (`None`: the default, first of its group), the
-/// function's name, and whether its outputs are factored ([`versor::factor_outputs`]).
-type Kernels = Vec<(String, u64, Option<TermOrder>, String, bool)>;
+/// Per candidate: label, fingerprint, order (`None`: the default, first of its group) and the
+/// function's name.
+type Kernels = Vec<(String, u64, Option<TermOrder>, String)>;
 
 /// The kernels to order, per convention of the case: the general form and, where it is exact,
 /// the scalar-norm form (`versor::norm_form`), each in the tables' order.
@@ -189,12 +189,10 @@ fn general_kernel(case: &Case, v: usize, x: usize, conv: Convention) -> ActionKe
 }
 
 /// Writes, compiles and runs one program timing `orders` of the kernels of `case` (per
-/// convention, the default order first; with `factor` each order also with its outputs
-/// factored where they can be); returns the kernels and their ratios.
+/// convention, the default order first); returns the kernels and their ratios.
 fn measure(
     case: &Case,
     orders: &dyn Fn(&ActionKernel) -> Vec<TermOrder>,
-    factor: bool,
     dir: &std::path::Path,
     rounds: usize,
     core: &str,
@@ -214,25 +212,10 @@ fn measure(
         let mut bodies: Vec<String> = Vec::new();
         let mut all = vec![None];
         all.extend(orders(&k).into_iter().map(Some));
-        let variants = match (factor, factored_only()) {
-            (_, true) => &[true][..],
-            (true, false) => &[false, true][..],
-            (false, false) => &[false][..],
-        };
-        // the default (first of its group) unfactored only: `groups` starts a group at each `None`
-        let candidates = all.into_iter().flat_map(|o| {
-            let v: &[bool] = if o.is_none() { &[false] } else { variants };
-            v.iter().map(move |&f| (o, f))
-        });
-        for (order, factored) in candidates {
+        // `groups` starts a group at each `None` (the default order)
+        for order in all {
             let mut kk = k.clone();
             apply_order(&mut kk, order.unwrap_or_else(|| default_order(&k)));
-            if factored {
-                versor::factor_outputs(&mut kk);
-                if kk.factored.is_empty() {
-                    continue;
-                }
-            }
             // as the plan binds them (`ActionKernel::operand_constants`)
             kk.operand_constants = kk.norm.is_none();
             let body = emit::action_body(&case.plan, &kk)
@@ -255,19 +238,12 @@ fn measure(
                 None => format!("{form} default"),
                 Some(o) => format!("{form} {o:?}"),
             };
-            let label = if factored { format!("{label} factored") } else { label };
-            kernels.push((label, f, order, name, factored));
+            kernels.push((label, f, order, name));
         }
     }
     harness(&mut src, case, &kernels, rounds);
     let ratios = common::compile_and_time(dir, case.name, &src, core, kernels.len());
     (kernels, ratios)
-}
-
-/// `GAM_PAIRING_FACTORED=1`: every candidate of phases 1 and 2 with its outputs factored (the
-/// search in the factored kernels' own orders); the default stays the unfactored reference.
-fn factored_only() -> bool {
-    std::env::var_os("GAM_PAIRING_FACTORED").is_some()
 }
 
 fn main() {
@@ -282,7 +258,7 @@ fn main() {
             continue;
         }
         // phase 1: flips and norm orders; the best four of each convention go to phase 2
-        let (kernels, ratios) = measure(&case, &phase1, false, &dir, rounds, core);
+        let (kernels, ratios) = measure(&case, &phase1, &dir, rounds, core);
         let mut best: Vec<Vec<TermOrder>> = Vec::new();
         for (lo, hi) in groups(&kernels) {
             let mut ranked: Vec<usize> = (lo + 1..hi).collect();
@@ -305,17 +281,17 @@ fn main() {
         }
         let fps: Vec<u64> = groups(&kernels).iter().map(|&(lo, _)| kernels[lo].1).collect();
         let index = |k: &ActionKernel| fps.iter().position(|f| *f == fingerprint(k)).expect("a measured kernel");
-        let (kernels, ratios) = measure(&case, &|k| phase2(&best[index(k)]), false, &dir, rounds, core);
+        let (kernels, ratios) = measure(&case, &|k| phase2(&best[index(k)]), &dir, rounds, core);
         report(&case, &kernels, &ratios);
-        // phase 3: the best eight orders of phase 2, each also with its outputs factored
-        // (`versor::FACTORED` lists the kernels where that was faster)
+        // phase 3: the best eight orders of phase 2 timed again in a new program (the ranking
+        // should hold; the ratios move with the machine's noise)
         let mut top: Vec<Vec<TermOrder>> = Vec::new();
         for (lo, hi) in groups(&kernels) {
             let mut ranked: Vec<usize> = (lo + 1..hi).collect();
             ranked.sort_by(|&a, &b| ratios[a].total_cmp(&ratios[b]));
             top.push(ranked.iter().take(8).map(|&i| kernels[i].2.expect("a candidate")).collect());
         }
-        let (kernels, ratios) = measure(&case, &|k| top[index(k)].clone(), true, &dir, rounds, core);
+        let (kernels, ratios) = measure(&case, &|k| top[index(k)].clone(), &dir, rounds, core);
         report(&case, &kernels, &ratios);
     }
 }
@@ -406,12 +382,11 @@ fn report(case: &Case, kernels: &Kernels, ratios: &[f64]) {
         {
             let order = kernels[best].2.expect("a candidate");
             println!(
-                "  wisdom: ({:#018x}, \"{} {}\", {order:?}), // {:.3} (default {default:.3}){}",
+                "  wisdom: ({:#018x}, \"{} {}\", {order:?}), // {:.3} (default {default:.3})",
                 kernels[i].1,
                 case.name,
                 kernels[i].0.split(' ').next().unwrap_or(""),
                 ratios[best],
-                if kernels[best].4 { ", outputs factored (versor::FACTORED)" } else { "" }
             );
         }
     }

@@ -240,7 +240,6 @@ impl Plan {
             let table_driven = super::size::table_driven(table_above, declared, &[k.versor, k.operand], lens);
             super::versor::order_for_pairing(k, table_driven);
             if !table_driven {
-                super::versor::factor_measured(k);
                 k.operand_constants = k.norm.is_none();
             }
         }

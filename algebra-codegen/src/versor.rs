@@ -58,11 +58,6 @@ pub struct ActionKernel {
     /// so that neighbouring sums have the same signs (a cross product's `v = (b23, -b13,
     /// b12)`); the negation is of the versor's coefficient, off the operand's chain.
     pub flip: u32,
-    /// Outputs computed as one operand coefficient times a quadratic form in the versor's
-    /// coefficients ([`Factored`], [`factor_outputs`]), indexed by output (empty or `None`:
-    /// the output is its stage-2 sum). Their stage-2 rows stay, for the fingerprint and the
-    /// exact checks; intermediates no other output reads are then not computed.
-    pub factored: Vec<Option<Factored>>,
     /// Stage 1's constants other than ±1 multiply the operand's coefficient, bound once per
     /// (constant, field) before the intermediates (`let xc = 2 · x.eo;`, then `s.e1inf · xc`),
     /// instead of the versor's coefficient in each term (`(2 · s.e1inf) · x.eo`): one
@@ -72,25 +67,15 @@ pub struct ActionKernel {
     pub operand_constants: bool,
 }
 
-/// An output `x[operand] · Σ c · s[a] · s[b]` (`a <= b`, the versor's fields as declared, not
-/// negated by [`ActionKernel::flip`]): the stage-2 sum `Σ c2 · t[k] · s[a]` when each `t[k]` it
-/// reads is one product `c1 · s[a1] · x[operand]`, regrouped. A conformal point's `eo` under a
-/// motor is `xo (s² + b12² + b13² + b23²)`: 5 multiplications and 3 additions instead of the
-/// four intermediates' 4 and the sum's 4 and 3.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Factored {
-    /// The operand field that multiplies the form.
-    pub operand: usize,
-    /// The form's terms `(a, b, c)`, `a <= b`.
-    pub terms: Vec<(usize, usize, Ratio)>,
-}
-
 /// `out_j = n · x_j + scale · Σ stage2_j` with `n = Σ c · s[a] · s[b]` (the scalar
 /// `rev(S) S` of `sandwich`, `S rev(S)` of `apply`): the identity
-/// `rev(S) x S = x (rev(S) S) + (rev(S) x - x rev(S)) S`, where `x (rev(S) S) = n x` because
-/// the norm is a scalar for every element of the versor type (checked symbolically,
-/// [`scalar_norm`]). The generalised quaternion (Rodrigues) form
-/// `|R|² x + 2 s (b × x) + 2 b × (b × x)` of a rotor's action is this form in `g3`.
+/// `rev(S) x S = x (rev(S) S) + (rev(S) x - x rev(S)) S`, projected onto `x`'s type, where
+/// `x (rev(S) S)` projects to `n x` for every element of the versor type: the norm is a scalar
+/// ([`scalar_norm`]), or its other components put nothing into `x`'s type (checked
+/// symbolically, [`norm_acts_as_scalar`]). The generalised quaternion (Rodrigues) form
+/// `|R|² x + 2 s (b × x) + 2 b × (b × x)` of a rotor's action is this form in `g3`; a
+/// conformal motor on a point, whose norm `α + β e123inf` is not a scalar, takes it too (45
+/// multiplications and 35 additions instead of 61 and 43 in `cga_null`).
 #[derive(Debug, Clone, PartialEq)]
 pub struct NormForm {
     /// The norm's terms `(a, b, c)`, `a <= b`: `n = Σ c · s[a] · s[b]`.
@@ -100,54 +85,17 @@ pub struct NormForm {
 }
 
 impl ActionKernel {
-    /// The factored form of output `j`, if it has one ([`ActionKernel::factored`]).
-    ///
-    /// ```
-    /// use algebra_core::{Algebra, Basis, Metric};
-    /// use algebra_codegen::{ModuleSpec, plan::Plan, versor::Convention};
-    /// // GATL's conformal declaration, whose point actions are factored (`versor::FACTORED`)
-    /// let z = "0";
-    /// let gram: [&[&str]; 5] = [&["1", z, z, z, z], &[z, "1", z, z, z], &[z, z, "1", z, z], &[z, z, z, z, "-1"], &[z, z, z, "-1", z]];
-    /// let metric = Metric::from_strs(&["1", "2", "3", "o", "inf"], &gram).unwrap();
-    /// let alg = Algebra::new("gatl", metric.clone());
-    /// let types = ModuleSpec::parse_types("Vector=grade1;Motor=1,e12,e13,e23,e1inf,e2inf,e3inf,e123inf", &alg).unwrap();
-    /// let plan = Plan::new(ModuleSpec::new("gatl", metric, Basis::Blade, types).unwrap()).unwrap();
-    /// let k = plan.actions.iter().find(|k| (k.versor, k.operand, k.convention) == (1, 0, Convention::Apply)).unwrap();
-    /// // `eo` (field 3) is `xo` times the rotational part's squared norm; the others are sums
-    /// assert_eq!(k.factor(3).map(|f| (f.operand, f.terms.len())), Some((3, 4)));
-    /// assert!((0..5).filter(|&j| j != 3).all(|j| k.factor(j).is_none()));
-    /// // its four intermediates `s xo`, `b12 xo`, ... are no longer computed
-    /// assert_eq!(k.used_intermediates().iter().filter(|u| !**u).count(), 4);
-    /// ```
-    pub fn factor(&self, j: usize) -> Option<&Factored> {
-        self.factored.get(j).and_then(Option::as_ref)
-    }
-
-    /// The distinct `(|c|, operand field)` of stage 1's constants other than ±1 (in the
-    /// intermediates that are computed), in order of first use: the bindings of
-    /// [`ActionKernel::operand_constants`].
+    /// The distinct `(|c|, operand field)` of stage 1's constants other than ±1, in order of
+    /// first use: the bindings of [`ActionKernel::operand_constants`].
     pub fn operand_constant_fields(&self) -> Vec<(Ratio, usize)> {
-        let used = self.used_intermediates();
         let mut out: Vec<(Ratio, usize)> = Vec::new();
-        for &(_, b, c) in self.stage1.iter().zip(&used).filter(|r| *r.1).flat_map(|r| r.0.iter()) {
+        for &(_, b, c) in self.stage1.iter().flatten() {
             let key = ((c.0.abs(), c.1), b);
             if !is_unit(c) && !out.contains(&key) {
                 out.push(key);
             }
         }
         out
-    }
-
-    /// Which intermediates an output that is not factored reads: the others are not computed
-    /// (example at [`ActionKernel::factor`]).
-    pub fn used_intermediates(&self) -> Vec<bool> {
-        let mut used = vec![false; self.stage1.len()];
-        for (j, row) in self.stage2.iter().enumerate() {
-            if self.factor(j).is_none() {
-                row.iter().for_each(|t| used[t.0] = true);
-            }
-        }
-        used
     }
 
     /// Multiplications and additions (as [`super::plan::KernelStats`] counts them).
@@ -159,22 +107,14 @@ impl ActionKernel {
             let adds = s.iter().map(|o| o.len().saturating_sub(1)).sum();
             (products + consts, adds)
         };
-        let used = self.used_intermediates();
-        let rows1: Vec<_> = self.stage1.iter().zip(&used).filter(|r| *r.1).map(|r| r.0).collect();
-        let rows2: Vec<_> =
-            self.stage2.iter().enumerate().filter(|r| self.factor(r.0).is_none()).map(|r| r.1).collect();
+        let rows1: Vec<_> = self.stage1.iter().collect();
         let (mut m1, a1) = terms(&rows1);
         if self.operand_constants {
             // one product per distinct (constant, operand field) instead of one per term
             let per_term = rows1.iter().copied().flatten().filter(|t| is_const(&t.2)).count();
             m1 = m1 - per_term + self.operand_constant_fields().len();
         }
-        let (mut m2, mut a2) = terms(&rows2);
-        for f in self.factored.iter().flatten() {
-            // the form's products (and constants), its sum, and the operand's product
-            m2 += 2 * f.terms.len() - f.terms.iter().filter(|t| !is_const(&t.2)).count() + 1;
-            a2 += f.terms.len().saturating_sub(1);
-        }
+        let (m2, a2) = terms(&self.stage2.iter().collect::<Vec<_>>());
         let Some(norm) = &self.norm else { return (m1 + m2, a1 + a2) };
         // the norm, `n · x_j` per output, and `+ scale · y` per corrected output
         let nm = norm.terms.len() + norm.terms.iter().filter(|t| !is_unit(t.2)).count();
@@ -383,7 +323,9 @@ pub fn fingerprint(k: &ActionKernel) -> u64 {
 /// the four conformal point actions (the comment above them).
 pub const WISDOM: &[(u64, &str, TermOrder)] = {
     use NormOrder::{Halves, Outside, Tables as NormTables};
-    use RowOrder::{PositiveFirst, PositiveHalves, PositiveVersor, Tables, Versor};
+    use RowOrder::{
+        PositiveFirst, PositiveHalves, PositiveHalvesVersor, PositiveOther, PositiveVersor, Tables, Versor,
+    };
     const fn o(stage1: RowOrder, stage2: RowOrder, chains: [bool; 2], flip: u32, norm: NormOrder) -> TermOrder {
         TermOrder { stage1, stage2, chains, flip, norm }
     }
@@ -394,41 +336,57 @@ pub const WISDOM: &[(u64, &str, TermOrder)] = {
         // `g3::Rotor::apply(&Vector)`, scalar-norm form: `-s`, `-b13`, the norm
         // `(s² + b23²) + (b12² + b13²)`: 1.303 (the general kernel 1.384)
         (0xfb5b_ad7b_ab55_ccde, "g3 Rotor apply Vector", o(Tables, Versor, [true, false], 0b0101, Outside)),
-        // The four conformal entries below were measured on an Intel Xeon (the third machine,
-        // 2026-12-05) against the motor product in its measured order
-        // (`crate::product_order::WISDOM`); the AMD EPYC orders they replace are in
-        // docs/performance.md, "Orders measured per kernel".
-        // `cga_null::Motor::sandwich(&Vector)`, `-e1inf`, `-e2inf`: 1.319 (default 1.418)
+        // The conformal and pga3 point actions take the norm form (`norm_acts_as_scalar`: the
+        // norm `α + β e123inf`, or `α + β e0123`, puts nothing into a point), measured on an
+        // Intel Xeon, 2026-12-05 (twelfth session) with `pairing_wisdom`, against the motor
+        // product in its measured order (`crate::product_order::WISDOM`). The orders of their
+        // general kernels, which these replace, are in docs/performance.md.
+        // `cga_null::Motor::sandwich(&Vector)`, `-s -e23 -e1inf -e3inf -e123inf`: 0.991
+        // (the general kernel in its best order 1.303)
         (
-            0x0bbd_d462_89ea_dd15,
-            "cga_null Motor sandwich Vector",
-            o(Tables, PositiveVersor, [true, true], 0b11_0000, NormTables),
+            0xb2cc_f7a2_4497_b931,
+            "cga_null Motor sandwich Vector, norm form",
+            o(Versor, PositiveVersor, [false, false], 0b1101_1001, Halves),
         ),
-        // `cga_null::Motor::apply(&Vector)`, `-e3inf`: 1.275 (default 1.316)
+        // `cga_null::Motor::apply(&Vector)`, `-s -e13 -e23 -e2inf -e3inf -e123inf`: 0.982
+        // (general 1.279)
         (
-            0xa047_aee2_1f55_280f,
-            "cga_null Motor apply Vector",
-            o(PositiveFirst, PositiveFirst, [true, true], 0b100_0000, NormTables),
+            0x334f_a0fe_d977_8b55,
+            "cga_null Motor apply Vector, norm form",
+            o(PositiveOther, PositiveVersor, [true, false], 0b1110_1101, Halves),
         ),
-        // GATL's declaration `Motor::sandwich(&Vector)`, `-e123inf`, stage 1 sign-sorted by
-        // halves: 1.312 (default 1.409; the products bench 1.344, against 1.365 for the best
-        // order without halves)
+        // GATL's declaration `Motor::sandwich(&Vector)`, `-s -e12 -e1inf`: 0.984 (general 1.240)
         (
-            0x171c_29ca_63e8_7e55,
-            "gatl Motor sandwich Vector",
-            o(PositiveHalves, Versor, [false, false], 0b1000_0000, NormTables),
+            0x074f_5c08_e424_5735,
+            "gatl Motor sandwich Vector, norm form",
+            o(PositiveHalves, PositiveFirst, [false, false], 0b1_0011, Halves),
         ),
-        // GATL's declaration `Motor::apply(&Vector)`, `-e23`: 1.348 (default 1.362)
-        (0x1f16_4979_183b_f233, "gatl Motor apply Vector", o(PositiveFirst, Versor, [true, false], 0b1000, NormTables)),
-        // `pga3::Motor::sandwich(&Trivector)` (the point action), `-s`, `-e02`, `-e12`, `-e03`,
-        // `-e13`, `-e0123`: 0.739 (default, the tables' order, 0.899)
+        // GATL's declaration `Motor::apply(&Vector)`, `-s -e123inf`: 0.966 (general 1.216)
         (
-            0x98c1_083b_349d_a2f6,
-            "pga3 Motor sandwich Trivector",
-            o(PositiveFirst, PositiveVersor, [false, false], 0b1011_1101, NormTables),
+            0x37db_2959_0dbb_4327,
+            "gatl Motor apply Vector, norm form",
+            o(Versor, Versor, [false, false], 0b1000_0001, Halves),
         ),
-        // `cga::Motor::sandwich(&Vector)` (16-field motors): 0.529 (the tables' order 0.577)
-        (0x7a11_e143_2ccc_12ba, "cga Motor sandwich Vector", o(Tables, Versor, [false, true], 0, NormTables)),
+        // `pga3::Motor::sandwich(&Trivector)` (the point action), `-e01 -e02 -e03 -e23`: 0.496
+        // (general 0.814)
+        (
+            0xf05e_31d1_0a25_d331,
+            "pga3 Motor sandwich Trivector, norm form",
+            o(Tables, PositiveVersor, [false, false], 0b101_0110, Halves),
+        ),
+        // `pga3::Motor::apply(&Trivector)`, `-e23 -e0123`: 0.510 (general 0.834)
+        (
+            0x2f5a_ffe7_e1bc_0dfc,
+            "pga3 Motor apply Trivector, norm form",
+            o(Tables, PositiveVersor, [false, true], 0b1100_0000, Outside),
+        ),
+        // `cga::Motor::sandwich(&Vector)` (16-field motors; flips not searched), norm form:
+        // 0.544 (general 0.571)
+        (
+            0x36ac_24cd_b7d8_9fb6,
+            "cga Motor sandwich Vector, norm form",
+            o(PositiveFirst, PositiveHalvesVersor, [false, false], 0, NormTables),
+        ),
     ]
 };
 
@@ -516,6 +474,55 @@ pub fn order_for_pairing(k: &mut ActionKernel, table_driven: bool) {
 /// assert!(!scalar_norm(&spec, 0, Convention::Sandwich)); // `rev(M) M = α + β e0123`
 /// ```
 pub fn scalar_norm(spec: &ModuleSpec, v: usize, convention: Convention) -> bool {
+    norm_polynomial(spec, v, convention).iter().all(|(&k, p)| k == 0 || p.values().all(Zero::is_zero))
+}
+
+/// Whether `x N` projected onto the operand type `x` is `n · x` for every element `S` of the
+/// versor type `v` and every `x`, where `N` is the norm (`rev(S) S` for `sandwich`, `S rev(S)`
+/// for `apply`) and `n` its scalar part: the norm's other components, whatever their
+/// coefficients, put nothing into `x`'s type. Decided exactly, from `N` as a polynomial in the
+/// versor's coefficients ([`scalar_norm`]'s expansion) multiplied by each of `x`'s basis
+/// elements. This is what the scalar-norm form ([`NormForm`]) needs: its identity
+/// `rev(S) x S = x (rev(S) S) + (rev(S) x - x rev(S)) S` holds for every `S`, and only `x`'s
+/// components of it are kept. It holds when the norm is a scalar ([`scalar_norm`]), and also
+/// for motors with a translation part, whose norm `α + β I` has a pseudoscalar-like part of
+/// grade 4 that turns a vector (or a point of 3D PGA, a trivector) into other grades.
+///
+/// ```
+/// use algebra_core::{Algebra, Basis};
+/// use algebra_codegen::{ModuleSpec, versor::{Convention, norm_acts_as_scalar, scalar_norm}};
+/// let alg = Algebra::builtin("cga-null").unwrap();
+/// let types = ModuleSpec::parse_types("Motor=1,e12,e13,e23,e1inf,e2inf,e3inf,e123inf;Vector=grade1;Bivector=grade2", &alg).unwrap();
+/// let spec = ModuleSpec::new("c", alg.metric().clone(), Basis::Product, types).unwrap();
+/// // `rev(M) M = α + β e123inf` is not a scalar, but `x e123inf` has no vector part
+/// assert!(!scalar_norm(&spec, 0, Convention::Sandwich));
+/// assert!(norm_acts_as_scalar(&spec, 0, 1, Convention::Sandwich));
+/// assert!(norm_acts_as_scalar(&spec, 0, 1, Convention::Apply));
+/// // a bivector times `e123inf` has a bivector part (`e12 e123inf = -e3inf`)
+/// assert!(!norm_acts_as_scalar(&spec, 0, 2, Convention::Sandwich));
+/// ```
+pub fn norm_acts_as_scalar(spec: &ModuleSpec, v: usize, x: usize, convention: Convention) -> bool {
+    let gp = spec.algebra.tables().product(spec.basis, Product::Geometric);
+    let xm = &spec.types[x].elements;
+    // Σ over the norm's non-scalar components k: x_b e_b · P_k(s) e_k, kept where it lands in X
+    let mut image: BTreeMap<(u32, usize, (usize, usize)), Q> = BTreeMap::new();
+    for (&k, p) in norm_polynomial(spec, v, convention).iter().filter(|(k, _)| **k != 0) {
+        for (b, &mb) in xm.iter().enumerate() {
+            for (j, c) in gp.get(mb, k).expect("a mask of the spec's algebra") {
+                if xm.contains(j) {
+                    for (&mono, pc) in p {
+                        *image.entry((*j, b, mono)).or_insert_with(Q::zero) += c * pc;
+                    }
+                }
+            }
+        }
+    }
+    image.values().all(Zero::is_zero)
+}
+
+/// The norm of the versor type `v` (`rev(S) S` for `sandwich`, `S rev(S)` for `apply`) as a
+/// polynomial per basis mask: the coefficient of the monomial `s_a s_a'`, keyed `(min, max)`.
+fn norm_polynomial(spec: &ModuleSpec, v: usize, convention: Convention) -> BTreeMap<u32, BTreeMap<(usize, usize), Q>> {
     let tables = spec.algebra.tables();
     let (gp, rev) = (tables.product(spec.basis, Product::Geometric), tables.unary(spec.basis, Unary::Reverse));
     let vm = &spec.types[v].elements;
@@ -542,11 +549,11 @@ pub fn scalar_norm(spec: &ModuleSpec, v: usize, convention: Convention) -> bool 
             }
         }
     }
-    poly.iter().all(|(&k, p)| k == 0 || p.values().all(Zero::is_zero))
+    poly
 }
 
 /// Replaces each fused kernel of `plan` by its scalar-norm form ([`norm_form`]) when the
-/// versor type's norm is a scalar for every element ([`scalar_norm`]), the general kernel is
+/// form is exact for every element of the versor type ([`norm_acts_as_scalar`]), the general kernel is
 /// straight-line code (not table-driven, [`crate::size`]), the form needs fewer operations
 /// (multiplications plus additions), and its term order was measured ([`WISDOM`]): in the
 /// default order the form was *slower* than the general kernel (`g3`'s rotor on a vector
@@ -584,7 +591,7 @@ pub(crate) fn norm_forms(plan: &mut crate::plan::Plan) -> Result<(), CodegenErro
 }
 
 /// The scalar-norm form ([`NormForm`]) of a planned fused kernel, in the tables' order, when
-/// it is exact for every element of the versor type ([`scalar_norm`]) and the kernel is
+/// it is exact for every element of the versor type ([`norm_acts_as_scalar`]) and the kernel is
 /// straight-line code; `None` otherwise. The plan uses it only where it is cheaper and its
 /// order was measured ([`WISDOM`]); `examples/pairing_wisdom.rs` times both forms.
 ///
@@ -593,7 +600,7 @@ pub(crate) fn norm_forms(plan: &mut crate::plan::Plan) -> Result<(), CodegenErro
 pub fn norm_form(plan: &crate::plan::Plan, k: &ActionKernel) -> Result<Option<ActionKernel>, CodegenError> {
     let lens = k.stage1.iter().chain(&k.stage2).map(Vec::len);
     if crate::size::table_driven(plan.spec.table_above, plan.declared, &[k.versor, k.operand], lens)
-        || !scalar_norm(&plan.spec, k.versor, k.convention)
+        || !norm_acts_as_scalar(&plan.spec, k.versor, k.operand, k.convention)
     {
         return Ok(None);
     }
@@ -796,105 +803,8 @@ fn action_kernel_in(
         chains: [false; 2],
         norm: None,
         flip: 0,
-        factored: Vec::new(),
         operand_constants: false,
     })
-}
-
-/// The kernels whose factored outputs ([`factor_outputs`]) were measured faster, by
-/// [`fingerprint`]; the plan factors only these. On the products bench (Intel Xeon VM,
-/// 2026-12-05, ratios to the module's motor product): GATL's declaration `sandwich` 1.345 →
-/// 1.298, `apply` 1.354 → 1.291; the same factoring made `cga_null`'s (product basis, `e0`
-/// first) 1.328 → 1.500 and 1.280 → 1.495, so it is not the default.
-///
-/// ```
-/// use algebra_codegen::versor::{FACTORED, WISDOM};
-/// // each factored kernel's term order was measured too
-/// assert!(FACTORED.iter().all(|f| WISDOM.iter().any(|w| w.0 == f.0)));
-/// ```
-pub const FACTORED: &[(u64, &str)] =
-    &[(0x171c_29ca_63e8_7e55, "gatl Motor sandwich Vector"), (0x1f16_4979_183b_f233, "gatl Motor apply Vector")];
-
-/// [`factor_outputs`] for the kernels listed in [`FACTORED`] (the plan's rule).
-pub(crate) fn factor_measured(k: &mut ActionKernel) {
-    if FACTORED.iter().any(|f| f.0 == fingerprint(k)) {
-        factor_outputs(k);
-    }
-}
-
-/// Factors each output of a straight-line general kernel ([`ActionKernel::norm`] `None`)
-/// whose stage-2 sum reads only intermediates that are one product `c1 · s[a1] · x[b]` with
-/// the same operand field `b`, when that costs fewer operations (the intermediates no other
-/// output reads included): the output becomes `x[b] · Σ c · s[a] · s[a']` ([`Factored`]), the
-/// same polynomial, so the kernel's value over exact scalars is unchanged. Run after the term
-/// order ([`order_for_pairing`]): the fingerprint and the orders read the stage-2 rows, which
-/// stay.
-///
-/// ```
-/// use algebra_core::{Algebra, Basis};
-/// use algebra_codegen::{ModuleSpec, plan::Plan, versor::{self, Convention}};
-/// let alg = Algebra::builtin("cga-null").unwrap();
-/// let types = ModuleSpec::parse_types("Vector=grade1;Motor=1,e12,e13,e23,e1inf,e2inf,e3inf,e123inf", &alg).unwrap();
-/// let plan = Plan::new(ModuleSpec::new("c", alg.metric().clone(), Basis::Product, types).unwrap()).unwrap();
-/// let mut k = plan.actions.iter().find(|k| (k.versor, k.operand, k.convention) == (1, 0, Convention::Sandwich)).unwrap().clone();
-/// assert!(k.factor(0).is_none()); // not in `FACTORED`: measured slower for this module
-/// versor::factor_outputs(&mut k);
-/// // the point's e0 coefficient: x0 (s² + b12² + b13² + b23²), four squares
-/// let f = k.factor(0).unwrap();
-/// assert_eq!((f.operand, f.terms.len()), (0, 4));
-/// // unfactored: 61 and 43; 64 and 43 with the constants on the versor's side (`operand_constants`)
-/// assert_eq!(k.counts(), (58, 43));
-/// ```
-pub fn factor_outputs(k: &mut ActionKernel) {
-    if k.norm.is_some() {
-        return;
-    }
-    let sign = |a: usize| if k.flip >> a & 1 == 1 { -1 } else { 1 };
-    let mut readers = vec![0usize; k.stage1.len()];
-    k.stage2.iter().flatten().for_each(|t| readers[t.0] += 1);
-    let is_const = |c: &Ratio| !is_unit(*c);
-    let mut factored = vec![None; k.stage2.len()];
-    for (j, row) in k.stage2.iter().enumerate() {
-        let Some(&(t0, _, _)) = row.first() else { continue };
-        let Some(&(_, b, _)) = k.stage1[t0].first() else { continue };
-        if !row.iter().all(|t| k.stage1[t.0].len() == 1 && k.stage1[t.0][0].1 == b) {
-            continue;
-        }
-        let mut form: BTreeMap<(usize, usize), Q> = BTreeMap::new();
-        for &(t, a, c2) in row {
-            let (a1, _, c1) = k.stage1[t][0];
-            let c = Q::new(c1.0.into(), c1.1.into())
-                * Q::new(c2.0.into(), c2.1.into())
-                * Q::from_integer((sign(a) * sign(a1)).into());
-            *form.entry((a.min(a1), a.max(a1))).or_insert_with(Q::zero) += c;
-        }
-        let Ok(terms) = form
-            .into_iter()
-            .filter(|(_, c)| !c.is_zero())
-            .map(|((a, a1), c)| to_ratio(&c).map(|c| (a, a1, c)))
-            .collect::<Result<Vec<_>, _>>()
-        else {
-            continue;
-        };
-        if terms.is_empty() {
-            continue;
-        }
-        // before: the row (and the intermediates only it reads); after: the form and x[b]
-        let mut distinct: Vec<usize> = row.iter().map(|t| t.0).collect();
-        distinct.sort_unstable();
-        distinct.dedup();
-        let own: usize = distinct
-            .iter()
-            .filter(|&&t| readers[t] == row.iter().filter(|r| r.0 == t).count())
-            .map(|&t| 1 + usize::from(is_const(&k.stage1[t][0].2)))
-            .sum();
-        let before = own + 2 * row.len() - 1 + row.iter().filter(|t| is_const(&t.2)).count();
-        let after = 2 * terms.len() + terms.iter().filter(|t| is_const(&t.2)).count();
-        if after < before {
-            factored[j] = Some(Factored { operand: b, terms });
-        }
-    }
-    k.factored = if factored.iter().any(Option::is_some) { factored } else { Vec::new() };
 }
 
 #[cfg(test)]
@@ -937,10 +847,7 @@ mod tests {
         let sf: Vec<Q> =
             s.iter().enumerate().map(|(a, v)| if k.flip >> a & 1 == 1 { -v.clone() } else { v.clone() }).collect();
         let t: Vec<Q> = k.stage1.iter().map(|row| row.iter().map(|&(a, b, c)| r(c) * &sf[a] * &x[b]).sum()).collect();
-        let y = k.stage2.iter().enumerate().map(|(j, row)| match k.factor(j) {
-            Some(f) => f.terms.iter().map(|&(a, b, c)| r(c) * &s[a] * &s[b]).sum::<Q>() * &x[f.operand],
-            None => row.iter().map(|&(i, a, c)| r(c) * &t[i] * &sf[a]).sum::<Q>(),
-        });
+        let y = k.stage2.iter().map(|row| row.iter().map(|&(i, a, c)| r(c) * &t[i] * &sf[a]).sum::<Q>());
         match &k.norm {
             None => y.collect(),
             Some(norm) => {
@@ -969,7 +876,7 @@ mod tests {
             // as the predefined `cga` module: straight-line kernels up to 256 terms
             (builtin("cga"), Basis::Blade, "Vector=grade1;Motor=even".to_string(), Some(256)),
         ];
-        let (mut flipped, mut normed, mut wise, mut factored) = (0, 0, 0, 0);
+        let (mut flipped, mut normed, mut wise) = (0, 0, 0);
         for (metric, basis, types, table_above) in specs {
             let alg = Algebra::new("m", metric.clone());
             let types = ModuleSpec::parse_types(&types, &alg).unwrap();
@@ -1011,12 +918,12 @@ mod tests {
                 flipped += usize::from(k.flip != 0);
                 normed += usize::from(k.norm.is_some());
                 wise += usize::from(WISDOM.iter().any(|w| w.0 == fingerprint(k)));
-                factored += k.factored.iter().flatten().count();
             }
         }
-        // the wisdom's eight kernels, seven with flips, two in the scalar-norm form; the
-        // conformal point's eo output factored in GATL's declaration (`FACTORED`)
-        assert_eq!((wise, flipped, normed, factored), (8, 7, 2, 2));
+        // the wisdom's nine kernels, all in the scalar-norm form: `g3`'s rotor on a vector,
+        // the conformal point actions of GATL's declaration and `cga_null`, `pga3`'s on a
+        // point (both conventions each, every one with flips) and `cga`'s `sandwich`
+        assert_eq!((wise, flipped, normed), (9, 8, 9));
     }
 
     /// GATL's conformal declaration (blade basis, `eo · einf = -1`): the intermediate is taken

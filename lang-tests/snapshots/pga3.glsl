@@ -504,19 +504,19 @@ pga3_Motor pga3_motor_apply_motor(pga3_Motor s, pga3_Motor x) {
 
 // S x rev(S) for a Motor S and a Point x, in one fused kernel.
 pga3_Point pga3_motor_apply_point(pga3_Motor s, pga3_Point x) {
-    float t0 = -(((s.e12 * x.e012) + (s.e13 * x.e013)) + ((s.e23 * x.e023) + (s.e0123 * x.e123)));
-    float t1 = -(s.e23 * x.e123);
-    float t2 = s.e13 * x.e123;
-    float t3 = ((s.scalar * x.e012) + (s.e03 * x.e123)) - ((s.e13 * x.e023) - (s.e23 * x.e013));
-    float t4 = -(s.e12 * x.e123);
-    float t5 = ((s.scalar * x.e013) - (s.e02 * x.e123)) + ((s.e12 * x.e023) - (s.e23 * x.e012));
-    float t6 = ((s.scalar * x.e023) + (s.e01 * x.e123)) - ((s.e12 * x.e013) - (s.e13 * x.e012));
-    float t7 = s.scalar * x.e123;
+    float t0 = (-s.e0123) * x.e123;
+    float t1 = (s.e03 * x.e123) - ((s.e13 * x.e023) + ((-s.e23) * x.e013));
+    float t2 = -((s.e02 * x.e123) - ((s.e12 * x.e023) + ((-s.e23) * x.e012)));
+    float t3 = (s.e01 * x.e123) - ((s.e12 * x.e013) - (s.e13 * x.e012));
+    float t4 = ((s.scalar * s.scalar) + (s.e23 * s.e23)) + ((s.e12 * s.e12) + (s.e13 * s.e13));
+    float t5 = (((t1 * s.scalar) - (t0 * s.e12)) - (t3 * s.e13)) - (t2 * (-s.e23));
+    float t6 = (((t2 * s.scalar) + (t3 * s.e12)) + (t1 * (-s.e23))) - (t0 * s.e13);
+    float t7 = (((t3 * s.scalar) + (t1 * s.e13)) + (t0 * (-s.e23))) - (t2 * s.e12);
     return pga3_Point(
-        -((((t0 * s.e12) - (t1 * s.e02)) + ((t2 * s.e01) - (t3 * s.scalar))) + (((t4 * s.e0123) - (t5 * s.e23)) + ((t6 * s.e13) - (t7 * s.e03)))),
-        -((((t0 * s.e13) - (t1 * s.e03)) - ((t2 * s.e0123) - (t3 * s.e23))) + (((t4 * s.e01) - (t5 * s.scalar)) - ((t6 * s.e12) - (t7 * s.e02)))),
-        -((((t0 * s.e23) + (t1 * s.e0123)) - ((t2 * s.e03) + (t3 * s.e13))) + (((t4 * s.e02) + (t5 * s.e12)) - ((t6 * s.scalar) + (t7 * s.e01)))),
-        -(((t1 * s.e23) - (t2 * s.e13)) + ((t4 * s.e12) - (t7 * s.scalar)))
+        (t4 * x.e012) + (t5 + t5),
+        (t4 * x.e013) + (t6 + t6),
+        (t4 * x.e023) + (t7 + t7),
+        t4 * x.e123
     );
 }
 

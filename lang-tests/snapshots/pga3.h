@@ -513,19 +513,19 @@ static inline pga3_Motor pga3_motor_apply_motor(pga3_Motor s, pga3_Motor x) {
 
 /* S x rev(S) for a Motor S and a Point x, in one fused kernel. */
 static inline pga3_Point pga3_motor_apply_point(pga3_Motor s, pga3_Point x) {
-    const double t0 = -(((s.e12 * x.e012) + (s.e13 * x.e013)) + ((s.e23 * x.e023) + (s.e0123 * x.e123)));
-    const double t1 = -(s.e23 * x.e123);
-    const double t2 = s.e13 * x.e123;
-    const double t3 = ((s.scalar * x.e012) + (s.e03 * x.e123)) - ((s.e13 * x.e023) - (s.e23 * x.e013));
-    const double t4 = -(s.e12 * x.e123);
-    const double t5 = ((s.scalar * x.e013) - (s.e02 * x.e123)) + ((s.e12 * x.e023) - (s.e23 * x.e012));
-    const double t6 = ((s.scalar * x.e023) + (s.e01 * x.e123)) - ((s.e12 * x.e013) - (s.e13 * x.e012));
-    const double t7 = s.scalar * x.e123;
+    const double t0 = (-s.e0123) * x.e123;
+    const double t1 = (s.e03 * x.e123) - ((s.e13 * x.e023) + ((-s.e23) * x.e013));
+    const double t2 = -((s.e02 * x.e123) - ((s.e12 * x.e023) + ((-s.e23) * x.e012)));
+    const double t3 = (s.e01 * x.e123) - ((s.e12 * x.e013) - (s.e13 * x.e012));
+    const double t4 = ((s.scalar * s.scalar) + (s.e23 * s.e23)) + ((s.e12 * s.e12) + (s.e13 * s.e13));
+    const double t5 = (((t1 * s.scalar) - (t0 * s.e12)) - (t3 * s.e13)) - (t2 * (-s.e23));
+    const double t6 = (((t2 * s.scalar) + (t3 * s.e12)) + (t1 * (-s.e23))) - (t0 * s.e13);
+    const double t7 = (((t3 * s.scalar) + (t1 * s.e13)) + (t0 * (-s.e23))) - (t2 * s.e12);
     pga3_Point r;
-    r.e012 = -((((t0 * s.e12) - (t1 * s.e02)) + ((t2 * s.e01) - (t3 * s.scalar))) + (((t4 * s.e0123) - (t5 * s.e23)) + ((t6 * s.e13) - (t7 * s.e03))));
-    r.e013 = -((((t0 * s.e13) - (t1 * s.e03)) - ((t2 * s.e0123) - (t3 * s.e23))) + (((t4 * s.e01) - (t5 * s.scalar)) - ((t6 * s.e12) - (t7 * s.e02))));
-    r.e023 = -((((t0 * s.e23) + (t1 * s.e0123)) - ((t2 * s.e03) + (t3 * s.e13))) + (((t4 * s.e02) + (t5 * s.e12)) - ((t6 * s.scalar) + (t7 * s.e01))));
-    r.e123 = -(((t1 * s.e23) - (t2 * s.e13)) + ((t4 * s.e12) - (t7 * s.scalar)));
+    r.e012 = (t4 * x.e012) + (t5 + t5);
+    r.e013 = (t4 * x.e013) + (t6 + t6);
+    r.e023 = (t4 * x.e023) + (t7 + t7);
+    r.e123 = t4 * x.e123;
     return r;
 }
 
@@ -1414,19 +1414,19 @@ static inline pga3_Motorf pga3_motor_apply_motorf(pga3_Motorf s, pga3_Motorf x) 
 
 /* S x rev(S) for a Motor S and a Point x, in one fused kernel. */
 static inline pga3_Pointf pga3_motor_apply_pointf(pga3_Motorf s, pga3_Pointf x) {
-    const float t0 = -(((s.e12 * x.e012) + (s.e13 * x.e013)) + ((s.e23 * x.e023) + (s.e0123 * x.e123)));
-    const float t1 = -(s.e23 * x.e123);
-    const float t2 = s.e13 * x.e123;
-    const float t3 = ((s.scalar * x.e012) + (s.e03 * x.e123)) - ((s.e13 * x.e023) - (s.e23 * x.e013));
-    const float t4 = -(s.e12 * x.e123);
-    const float t5 = ((s.scalar * x.e013) - (s.e02 * x.e123)) + ((s.e12 * x.e023) - (s.e23 * x.e012));
-    const float t6 = ((s.scalar * x.e023) + (s.e01 * x.e123)) - ((s.e12 * x.e013) - (s.e13 * x.e012));
-    const float t7 = s.scalar * x.e123;
+    const float t0 = (-s.e0123) * x.e123;
+    const float t1 = (s.e03 * x.e123) - ((s.e13 * x.e023) + ((-s.e23) * x.e013));
+    const float t2 = -((s.e02 * x.e123) - ((s.e12 * x.e023) + ((-s.e23) * x.e012)));
+    const float t3 = (s.e01 * x.e123) - ((s.e12 * x.e013) - (s.e13 * x.e012));
+    const float t4 = ((s.scalar * s.scalar) + (s.e23 * s.e23)) + ((s.e12 * s.e12) + (s.e13 * s.e13));
+    const float t5 = (((t1 * s.scalar) - (t0 * s.e12)) - (t3 * s.e13)) - (t2 * (-s.e23));
+    const float t6 = (((t2 * s.scalar) + (t3 * s.e12)) + (t1 * (-s.e23))) - (t0 * s.e13);
+    const float t7 = (((t3 * s.scalar) + (t1 * s.e13)) + (t0 * (-s.e23))) - (t2 * s.e12);
     pga3_Pointf r;
-    r.e012 = -((((t0 * s.e12) - (t1 * s.e02)) + ((t2 * s.e01) - (t3 * s.scalar))) + (((t4 * s.e0123) - (t5 * s.e23)) + ((t6 * s.e13) - (t7 * s.e03))));
-    r.e013 = -((((t0 * s.e13) - (t1 * s.e03)) - ((t2 * s.e0123) - (t3 * s.e23))) + (((t4 * s.e01) - (t5 * s.scalar)) - ((t6 * s.e12) - (t7 * s.e02))));
-    r.e023 = -((((t0 * s.e23) + (t1 * s.e0123)) - ((t2 * s.e03) + (t3 * s.e13))) + (((t4 * s.e02) + (t5 * s.e12)) - ((t6 * s.scalar) + (t7 * s.e01))));
-    r.e123 = -(((t1 * s.e23) - (t2 * s.e13)) + ((t4 * s.e12) - (t7 * s.scalar)));
+    r.e012 = (t4 * x.e012) + (t5 + t5);
+    r.e013 = (t4 * x.e013) + (t6 + t6);
+    r.e023 = (t4 * x.e023) + (t7 + t7);
+    r.e123 = t4 * x.e123;
     return r;
 }
 

@@ -504,19 +504,19 @@ fn pga3_motor_apply_motor(s: pga3_Motor, x: pga3_Motor) -> pga3_Motor {
 
 // S x rev(S) for a Motor S and a Point x, in one fused kernel.
 fn pga3_motor_apply_point(s: pga3_Motor, x: pga3_Point) -> pga3_Point {
-    let t0 = -(((s.e12 * x.e012) + (s.e13 * x.e013)) + ((s.e23 * x.e023) + (s.e0123 * x.e123)));
-    let t1 = -(s.e23 * x.e123);
-    let t2 = s.e13 * x.e123;
-    let t3 = ((s.scalar * x.e012) + (s.e03 * x.e123)) - ((s.e13 * x.e023) - (s.e23 * x.e013));
-    let t4 = -(s.e12 * x.e123);
-    let t5 = ((s.scalar * x.e013) - (s.e02 * x.e123)) + ((s.e12 * x.e023) - (s.e23 * x.e012));
-    let t6 = ((s.scalar * x.e023) + (s.e01 * x.e123)) - ((s.e12 * x.e013) - (s.e13 * x.e012));
-    let t7 = s.scalar * x.e123;
+    let t0 = (-s.e0123) * x.e123;
+    let t1 = (s.e03 * x.e123) - ((s.e13 * x.e023) + ((-s.e23) * x.e013));
+    let t2 = -((s.e02 * x.e123) - ((s.e12 * x.e023) + ((-s.e23) * x.e012)));
+    let t3 = (s.e01 * x.e123) - ((s.e12 * x.e013) - (s.e13 * x.e012));
+    let t4 = ((s.scalar * s.scalar) + (s.e23 * s.e23)) + ((s.e12 * s.e12) + (s.e13 * s.e13));
+    let t5 = (((t1 * s.scalar) - (t0 * s.e12)) - (t3 * s.e13)) - (t2 * (-s.e23));
+    let t6 = (((t2 * s.scalar) + (t3 * s.e12)) + (t1 * (-s.e23))) - (t0 * s.e13);
+    let t7 = (((t3 * s.scalar) + (t1 * s.e13)) + (t0 * (-s.e23))) - (t2 * s.e12);
     return pga3_Point(
-        -((((t0 * s.e12) - (t1 * s.e02)) + ((t2 * s.e01) - (t3 * s.scalar))) + (((t4 * s.e0123) - (t5 * s.e23)) + ((t6 * s.e13) - (t7 * s.e03)))),
-        -((((t0 * s.e13) - (t1 * s.e03)) - ((t2 * s.e0123) - (t3 * s.e23))) + (((t4 * s.e01) - (t5 * s.scalar)) - ((t6 * s.e12) - (t7 * s.e02)))),
-        -((((t0 * s.e23) + (t1 * s.e0123)) - ((t2 * s.e03) + (t3 * s.e13))) + (((t4 * s.e02) + (t5 * s.e12)) - ((t6 * s.scalar) + (t7 * s.e01)))),
-        -(((t1 * s.e23) - (t2 * s.e13)) + ((t4 * s.e12) - (t7 * s.scalar))),
+        (t4 * x.e012) + (t5 + t5),
+        (t4 * x.e013) + (t6 + t6),
+        (t4 * x.e023) + (t7 + t7),
+        t4 * x.e123,
     );
 }
 

@@ -60,7 +60,8 @@ algebra_macros::algebra! {
 
 algebra_macros::algebra! {
     /// The conformal model as GATL declares it (blade basis, `eo · einf = -1`): its point
-    /// actions have a factored output (`algebra_codegen::versor::FACTORED`).
+    /// actions take the scalar-norm form, though the motor's norm is not a scalar
+    /// (`algebra_codegen::versor::norm_acts_as_scalar`).
     pub mod gatl {
         generators { e1, e2, e3, eo, einf }
         metric { (e1, e1) = 1, (e2, e2) = 1, (e3, e3) = 1, (eo, einf) = -1 }
@@ -228,8 +229,9 @@ fn gatl_declaration_header_equals_the_rust_kernels() {
     let alg = Algebra::new("gatl", metric.clone());
     let types = ModuleSpec::parse_types("Vector=grade1;Motor=1,e12,e13,e23,e1inf,e2inf,e3inf,e123inf", &alg).unwrap();
     let plan = Plan::new(ModuleSpec::new("gatl", metric, Basis::Blade, types).unwrap()).unwrap();
-    // the factored outputs are printed in C as in Rust
-    assert_eq!(plan.actions.iter().filter(|k| !k.factored.is_empty()).count(), 2);
+    // the motor's point actions in the norm form (`n x_j + 2 y_j`) are printed in C as in Rust
+    let normed = |k: &&algebra_codegen::versor::ActionKernel| k.norm.is_some() && (k.versor, k.operand) == (1, 0);
+    assert_eq!(plan.actions.iter().filter(normed).count(), 2);
     let r64 = registry!(gatl, f64; types [Vector, Motor, Even, Odd, Multivector]; versors [Motor, Vector, Even, Odd] on [Vector, Even, Odd]; versors [Motor] on [Motor]; closed []);
     check_f64(&plan, &r64);
 }

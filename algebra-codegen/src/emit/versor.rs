@@ -90,7 +90,6 @@ fn scaled(c: Ratio, field: &proc_macro2::Ident, flipped: bool) -> (Ratio, TokenS
 pub(crate) fn stage1_binds(names: &Names, k: &ActionKernel) -> Vec<TokenStream> {
     let (vf, xf) = (&names.fields[k.versor], &names.fields[k.operand]);
     let mut binds = Vec::new();
-    let used = k.used_intermediates();
     // `let xc_N_D_B = N/D · x.B;` ([`ActionKernel::operand_constants`])
     let xc = |(n, d): Ratio, b: usize| format_ident!("xc_{}_{}_{}", n.unsigned_abs(), d.unsigned_abs(), b);
     if k.operand_constants {
@@ -99,7 +98,7 @@ pub(crate) fn stage1_binds(names: &Names, k: &ActionKernel) -> Vec<TokenStream> 
             binds.push(quote!(let #name = T::from_ratio(#n, #d) * &x.#fb;));
         }
     }
-    for (i, terms) in k.stage1.iter().enumerate().filter(|(i, _)| used[*i]) {
+    for (i, terms) in k.stage1.iter().enumerate() {
         let summands: Vec<SumTerm> = terms
             .iter()
             .map(|&(a, b, c)| {
@@ -126,21 +125,7 @@ pub(crate) fn stage1_binds(names: &Names, k: &ActionKernel) -> Vec<TokenStream> 
 pub(super) fn unrolled_body(names: &Names, k: &ActionKernel) -> TokenStream {
     let (xt, vf, xf) = (&names.types[k.operand], &names.fields[k.versor], &names.fields[k.operand]);
     let mut binds = stage1_binds(names, k);
-    let outs = k.stage2.iter().zip(xf).enumerate().map(|(j, (terms, f))| {
-        if let Some(form) = k.factor(j) {
-            // `x[b] · Σ c · s[a] · s[a']` ([`crate::versor::Factored`])
-            let terms = form
-                .terms
-                .iter()
-                .map(|&(a, b, c)| {
-                    let (c, fa) = scaled(c, &vf[a], false);
-                    let fb = &vf[b];
-                    (c, quote!((#fa.mul_ref(&self.#fb))), true)
-                })
-                .collect();
-            let (q, xb) = (tree_sum(terms), &xf[form.operand]);
-            return quote!((#q).mul_ref(&x.#xb));
-        }
+    let outs = k.stage2.iter().zip(xf).map(|(terms, f)| {
         let terms: Vec<SumTerm> = terms
             .iter()
             .map(|&(i, a, c)| {

@@ -125,13 +125,11 @@ fn scaled(c: Ratio, a: usize, flip: u32) -> (Ratio, Expr) {
 }
 
 /// The first stage's locals: the operand's constants first when the kernel binds them
-/// ([`ActionKernel::operand_constants`]), then the intermediates every output reads (all of
-/// them, but those read only by factored outputs, [`ActionKernel::factored`]).
+/// ([`ActionKernel::operand_constants`]), then the intermediates.
 fn stage1(k: &ActionKernel) -> Vec<Expr> {
-    let used = k.used_intermediates();
     let consts = if k.operand_constants { k.operand_constant_fields() } else { Vec::new() };
     let mut lets: Vec<Expr> = consts.iter().map(|&(c, b)| mul(Expr::Const(c), field(1, b))).collect();
-    let temps = k.stage1.iter().zip(used).filter(|(_, u)| *u).map(|(terms, _)| {
+    let temps = k.stage1.iter().map(|terms| {
         let summands: Vec<Term<Expr>> = terms
             .iter()
             .map(|&(a, b, c)| {
@@ -148,22 +146,6 @@ fn stage1(k: &ActionKernel) -> Vec<Expr> {
     });
     lets.extend(temps);
     lets
-}
-
-/// The local of each intermediate in [`stage1`]'s numbering (`usize::MAX` when not computed).
-fn intermediate_locals(k: &ActionKernel) -> Vec<usize> {
-    let first = if k.operand_constants { k.operand_constant_fields().len() } else { 0 };
-    let used = k.used_intermediates();
-    used.iter()
-        .scan(first, |n, &u| {
-            Some(if u {
-                *n += 1;
-                *n - 1
-            } else {
-                usize::MAX
-            })
-        })
-        .collect()
 }
 
 fn stage2(terms: &[(usize, usize, Ratio)]) -> Expr {
@@ -183,29 +165,14 @@ fn stage2_shaped(terms: &[(usize, usize, Ratio)], chain: bool, flip: u32) -> Exp
 }
 
 /// The outputs of a straight-line general kernel: each stage-2 sum over the intermediates'
-/// locals ([`stage1`]'s numbering), or a factored output `x[b] · Σ c · s[a] · s[a']` as the
-/// Rust kernel computes it.
+/// locals ([`stage1`]'s numbering: after the operand's constants).
 fn stage2_outputs(k: &ActionKernel) -> Vec<Expr> {
-    let local = intermediate_locals(k);
+    let first = if k.operand_constants { k.operand_constant_fields().len() } else { 0 };
     k.stage2
         .iter()
-        .enumerate()
-        .map(|(j, terms)| match k.factor(j) {
-            Some(f) => {
-                let form = f
-                    .terms
-                    .iter()
-                    .map(|&(a, b, c)| {
-                        let (c, s) = scaled(c, a, 0);
-                        (c, mul(s, field(0, b)), true)
-                    })
-                    .collect();
-                mul(tree_sum_in::<Ir>(form), field(1, f.operand))
-            }
-            None => {
-                let renumbered: Vec<_> = terms.iter().map(|&(i, a, c)| (local[i], a, c)).collect();
-                stage2_shaped(&renumbered, k.chains[1], k.flip)
-            }
+        .map(|terms| {
+            let renumbered: Vec<_> = terms.iter().map(|&(i, a, c)| (first + i, a, c)).collect();
+            stage2_shaped(&renumbered, k.chains[1], k.flip)
         })
         .collect()
 }
