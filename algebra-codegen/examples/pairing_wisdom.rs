@@ -94,6 +94,17 @@ fn cases() -> Vec<Case> {
             point: "Trivector::from_array([p[0], p[1], p[2], 1.0])",
             conventions: both,
         },
+        // a motor on a plane: not benched, timed as the evidence for the plan's rule that takes
+        // the norm form without a measured order where it saves a fifth of the operations
+        // (`versor::NORM_FORM_SAVING`)
+        Case {
+            name: "pga3_planes",
+            plan: plan(&pga3, pga3.metric().clone(), Basis::Blade, "Vector=grade1;Motor=even", None),
+            versor: "Motor",
+            operand: "Vector",
+            point: "Vector::from_array([p[0], p[1], p[2], 1.0])",
+            conventions: both,
+        },
         Case {
             name: "cga",
             plan: plan(&cga, cga.metric().clone(), Basis::Blade, "Vector=grade1;Motor=even", Some(256)),

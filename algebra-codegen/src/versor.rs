@@ -552,16 +552,38 @@ fn norm_polynomial(spec: &ModuleSpec, v: usize, convention: Convention) -> BTree
     poly
 }
 
+/// The share of the general kernel's operations (multiplications plus additions) at or below
+/// which the plan takes the scalar-norm form without a measured order ([`norm_forms`]): 4/5.
+///
+/// ```
+/// use algebra_core::{Algebra, Basis};
+/// use algebra_codegen::{ModuleSpec, plan::Plan, versor::{Convention, NORM_FORM_SAVING}};
+/// // 3D PGA with klein's orientation: not in the wisdom, yet its point action takes the form
+/// let alg = Algebra::builtin("pga3").unwrap();
+/// let types = ModuleSpec::parse_types("Point=e032,e013,e021,e123;Motor=1,e23,e31,e12,e01,e02,e03,e0123", &alg).unwrap();
+/// let plan = Plan::new(ModuleSpec::new("k", alg.metric().clone(), Basis::Blade, types).unwrap()).unwrap();
+/// let k = plan.actions.iter().find(|k| (k.versor, k.operand, k.convention) == (1, 0, Convention::Apply)).unwrap();
+/// assert!(k.norm.is_some());
+/// let (num, den) = NORM_FORM_SAVING;
+/// assert!((k.counts().0 + k.counts().1) * den <= 84 * num); // the general kernel: 84
+/// ```
+pub const NORM_FORM_SAVING: (usize, usize) = (4, 5);
+
 /// Replaces each fused kernel of `plan` by its scalar-norm form ([`norm_form`]) when the
-/// form is exact for every element of the versor type ([`norm_acts_as_scalar`]), the general kernel is
-/// straight-line code (not table-driven, [`crate::size`]), the form needs fewer operations
-/// (multiplications plus additions), and its term order was measured ([`WISDOM`]): in the
-/// default order the form was *slower* than the general kernel (`g3`'s rotor on a vector
-/// 1.54x the rotor product against 1.40x), with the measured order (a cross product's signs)
-/// 1.21x. The form is exact over any ring for every element of the type, as the general
-/// kernel is. `g3`'s rotor on a vector: 22 multiplications and 18 additions against 24 and 18
-/// (docs/performance.md, "fifth session"). Run after the action matrices are composed (they
-/// use the general form).
+/// form is exact for every element of the versor type ([`norm_acts_as_scalar`]), the general
+/// kernel is straight-line code (not table-driven, [`crate::size`]), and the form needs
+/// fewer operations (multiplications plus additions), with either its term order measured
+/// ([`WISDOM`]) or at least a fifth fewer operations ([`NORM_FORM_SAVING`]). The form is exact
+/// over any ring for every element of the type, as the general kernel is.
+///
+/// The second condition is what was measured: in the default order the form was *slower*
+/// than the general kernel where it saves little (`g3`'s rotor on a vector, 40 operations
+/// against 41: 1.54x the rotor product against 1.40x; 1.21x with the measured order, a cross
+/// product's signs), and faster, by 13-42 %, wherever it saves a seventh or more (the
+/// conformal point actions, `pga3`'s motor on a point and on a plane, `cga`'s 16-field
+/// motors; docs/performance.md, "twelfth session"). So a declaration the wisdom does not know
+/// (another orientation, metric or basis) gets the form where it saves a fifth. Run after the
+/// action matrices are composed (they use the general form).
 ///
 /// ```
 /// use algebra_core::{Algebra, Basis};
@@ -583,7 +605,9 @@ pub(crate) fn norm_forms(plan: &mut crate::plan::Plan) -> Result<(), CodegenErro
         let Some(form) = norm_form(plan, k)? else { continue };
         let cost = |k: &ActionKernel| k.counts().0 + k.counts().1;
         let f = fingerprint(&form);
-        if cost(&form) < cost(k) && WISDOM.iter().any(|w| w.0 == f) {
+        let (num, den) = NORM_FORM_SAVING;
+        let saves = cost(&form) * den <= cost(k) * num;
+        if cost(&form) < cost(k) && (saves || WISDOM.iter().any(|w| w.0 == f)) {
             plan.actions[i] = form;
         }
     }
@@ -922,8 +946,9 @@ mod tests {
         }
         // the wisdom's nine kernels, all in the scalar-norm form: `g3`'s rotor on a vector,
         // the conformal point actions of GATL's declaration and `cga_null`, `pga3`'s on a
-        // point (both conventions each, every one with flips) and `cga`'s `sandwich`
-        assert_eq!((wise, flipped, normed), (9, 8, 9));
+        // point (both conventions each, every one with flips) and `cga`'s `sandwich`; ten more
+        // in the form by the saving rule (`NORM_FORM_SAVING`), in the default order
+        assert_eq!((wise, flipped, normed), (9, 8, 19));
     }
 
     /// GATL's conformal declaration (blade basis, `eo · einf = -1`): the intermediate is taken

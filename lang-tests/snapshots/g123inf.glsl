@@ -542,19 +542,23 @@ g123inf_Motor g123inf_motor_sandwich_motor(g123inf_Motor s, g123inf_Motor x) {
 
 // rev(S) x S for a Motor S and a Vector x, in one fused kernel.
 g123inf_Vector g123inf_motor_sandwich_vector(g123inf_Motor s, g123inf_Vector x) {
-    float t0 = (s.scalar * x.e1) - ((s.e12 * x.e2) + (s.e13 * x.e3));
-    float t1 = (s.scalar * x.e2) + ((s.e12 * x.e1) - (s.e23 * x.e3));
-    float t2 = (s.scalar * x.e3) + ((s.e13 * x.e1) + (s.e23 * x.e2));
-    float t3 = (s.e13 * x.e2) - ((s.e12 * x.e3) + (s.e23 * x.e1));
-    float t4 = ((s.scalar * x.einf) + (s.e1inf * x.e1)) + ((s.e2inf * x.e2) + (s.e3inf * x.e3));
-    float t5 = ((s.e1inf * x.e2) - (s.e12 * x.einf)) - ((s.e2inf * x.e1) + (s.e123inf * x.e3));
-    float t6 = ((s.e1inf * x.e3) + (s.e123inf * x.e2)) - ((s.e13 * x.einf) + (s.e3inf * x.e1));
-    float t7 = ((s.e2inf * x.e3) - (s.e23 * x.einf)) - ((s.e3inf * x.e2) + (s.e123inf * x.e1));
+    float t0 = -((s.e12 * x.e2) + (s.e13 * x.e3));
+    float t1 = (s.e12 * x.e1) - (s.e23 * x.e3);
+    float t2 = (s.e13 * x.e1) + (s.e23 * x.e2);
+    float t3 = (s.e1inf * x.e1) + ((s.e2inf * x.e2) + (s.e3inf * x.e3));
+    float t4 = -(s.e123inf * x.e3);
+    float t5 = s.e123inf * x.e2;
+    float t6 = -(s.e123inf * x.e1);
+    float t7 = ((s.scalar * s.scalar) + (s.e12 * s.e12)) + ((s.e13 * s.e13) + (s.e23 * s.e23));
+    float t8 = (t0 * s.scalar) - ((t1 * s.e12) + (t2 * s.e13));
+    float t9 = (t1 * s.scalar) + ((t0 * s.e12) - (t2 * s.e23));
+    float t10 = (t2 * s.scalar) + ((t0 * s.e13) + (t1 * s.e23));
+    float t11 = ((t3 * s.scalar) - ((t4 * s.e12) + (t5 * s.e13))) - (((t6 * s.e23) - (t0 * s.e1inf)) - ((t1 * s.e2inf) + (t2 * s.e3inf)));
     return g123inf_Vector(
-        ((t0 * s.scalar) - (t1 * s.e12)) - ((t2 * s.e13) + (t3 * s.e23)),
-        ((t1 * s.scalar) + (t0 * s.e12)) + ((t3 * s.e13) - (t2 * s.e23)),
-        ((t2 * s.scalar) - (t3 * s.e12)) + ((t0 * s.e13) + (t1 * s.e23)),
-        (((t4 * s.scalar) - (t5 * s.e12)) - ((t6 * s.e13) + (t7 * s.e23))) + (((t0 * s.e1inf) + (t1 * s.e2inf)) + ((t2 * s.e3inf) - (t3 * s.e123inf)))
+        (t7 * x.e1) + (t8 + t8),
+        (t7 * x.e2) + (t9 + t9),
+        (t7 * x.e3) + (t10 + t10),
+        (t7 * x.einf) + (t11 + t11)
     );
 }
 
@@ -622,18 +626,21 @@ g123inf_Bivector g123inf_vector_sandwich_bivector(g123inf_Vector s, g123inf_Bive
     float t0 = -((s.e2 * x.e12) + (s.e3 * x.e13));
     float t1 = (s.e1 * x.e12) - (s.e3 * x.e23);
     float t2 = (s.e1 * x.e13) + (s.e2 * x.e23);
-    float t3 = (s.e1 * x.e23) + ((s.e3 * x.e12) - (s.e2 * x.e13));
-    float t4 = (s.e1 * x.e1inf) + ((s.e2 * x.e2inf) + (s.e3 * x.e3inf));
-    float t5 = (s.e1 * x.e2inf) + ((s.einf * x.e12) - (s.e2 * x.e1inf));
-    float t6 = (s.e1 * x.e3inf) + ((s.einf * x.e13) - (s.e3 * x.e1inf));
-    float t7 = (s.e2 * x.e3inf) + ((s.einf * x.e23) - (s.e3 * x.e2inf));
+    float t3 = (s.e1 * x.e1inf) + ((s.e2 * x.e2inf) + (s.e3 * x.e3inf));
+    float t4 = (s.e1 * s.e1) + ((s.e2 * s.e2) + (s.e3 * s.e3));
+    float t5 = (t0 * s.e2) - (t1 * s.e1);
+    float t6 = (t0 * s.e3) - (t2 * s.e1);
+    float t7 = (t1 * s.e3) - (t2 * s.e2);
+    float t8 = (t0 * s.einf) - (t3 * s.e1);
+    float t9 = (t1 * s.einf) - (t3 * s.e2);
+    float t10 = (t2 * s.einf) - (t3 * s.e3);
     return g123inf_Bivector(
-        (t0 * s.e2) - ((t1 * s.e1) - (t3 * s.e3)),
-        (t0 * s.e3) - ((t2 * s.e1) + (t3 * s.e2)),
-        (t3 * s.e1) - ((t2 * s.e2) - (t1 * s.e3)),
-        ((t0 * s.einf) - (t4 * s.e1)) - ((t5 * s.e2) + (t6 * s.e3)),
-        ((t5 * s.e1) - (t4 * s.e2)) - ((t7 * s.e3) - (t1 * s.einf)),
-        ((t6 * s.e1) + (t7 * s.e2)) - ((t4 * s.e3) - (t2 * s.einf))
+        (t4 * x.e12) + (t5 + t5),
+        (t4 * x.e13) + (t6 + t6),
+        (t4 * x.e23) + (t7 + t7),
+        (t4 * x.e1inf) + (t8 + t8),
+        (t4 * x.e2inf) + (t9 + t9),
+        (t4 * x.e3inf) + (t10 + t10)
     );
 }
 
@@ -664,15 +671,16 @@ g123inf_Vector g123inf_bivector_sandwich_vector(g123inf_Bivector s, g123inf_Vect
     float t0 = -((s.e12 * x.e2) + (s.e13 * x.e3));
     float t1 = (s.e12 * x.e1) - (s.e23 * x.e3);
     float t2 = (s.e13 * x.e1) + (s.e23 * x.e2);
-    float t3 = (s.e13 * x.e2) - ((s.e12 * x.e3) + (s.e23 * x.e1));
-    float t4 = (s.e1inf * x.e2) - ((s.e12 * x.einf) + (s.e2inf * x.e1));
-    float t5 = (s.e1inf * x.e3) - ((s.e13 * x.einf) + (s.e3inf * x.e1));
-    float t6 = (s.e2inf * x.e3) - ((s.e23 * x.einf) + (s.e3inf * x.e2));
+    float t3 = (s.e12 * s.e12) + ((s.e13 * s.e13) + (s.e23 * s.e23));
+    float t4 = -((t1 * s.e12) + (t2 * s.e13));
+    float t5 = (t0 * s.e12) - (t2 * s.e23);
+    float t6 = (t0 * s.e13) + (t1 * s.e23);
+    float t7 = (t0 * s.e1inf) + ((t1 * s.e2inf) + (t2 * s.e3inf));
     return g123inf_Vector(
-        -((t1 * s.e12) + ((t2 * s.e13) + (t3 * s.e23))),
-        (t0 * s.e12) + ((t3 * s.e13) - (t2 * s.e23)),
-        (t0 * s.e13) - ((t3 * s.e12) - (t1 * s.e23)),
-        ((t0 * s.e1inf) - ((t4 * s.e12) + (t5 * s.e13))) - ((t6 * s.e23) - ((t1 * s.e2inf) + (t2 * s.e3inf)))
+        (t3 * x.e1) + (t4 + t4),
+        (t3 * x.e2) + (t5 + t5),
+        (t3 * x.e3) + (t6 + t6),
+        (t3 * x.einf) + (t7 + t7)
     );
 }
 

@@ -551,19 +551,23 @@ static inline g123inf_Motor g123inf_motor_sandwich_motor(g123inf_Motor s, g123in
 
 /* rev(S) x S for a Motor S and a Vector x, in one fused kernel. */
 static inline g123inf_Vector g123inf_motor_sandwich_vector(g123inf_Motor s, g123inf_Vector x) {
-    const double t0 = (s.scalar * x.e1) - ((s.e12 * x.e2) + (s.e13 * x.e3));
-    const double t1 = (s.scalar * x.e2) + ((s.e12 * x.e1) - (s.e23 * x.e3));
-    const double t2 = (s.scalar * x.e3) + ((s.e13 * x.e1) + (s.e23 * x.e2));
-    const double t3 = (s.e13 * x.e2) - ((s.e12 * x.e3) + (s.e23 * x.e1));
-    const double t4 = ((s.scalar * x.einf) + (s.e1inf * x.e1)) + ((s.e2inf * x.e2) + (s.e3inf * x.e3));
-    const double t5 = ((s.e1inf * x.e2) - (s.e12 * x.einf)) - ((s.e2inf * x.e1) + (s.e123inf * x.e3));
-    const double t6 = ((s.e1inf * x.e3) + (s.e123inf * x.e2)) - ((s.e13 * x.einf) + (s.e3inf * x.e1));
-    const double t7 = ((s.e2inf * x.e3) - (s.e23 * x.einf)) - ((s.e3inf * x.e2) + (s.e123inf * x.e1));
+    const double t0 = -((s.e12 * x.e2) + (s.e13 * x.e3));
+    const double t1 = (s.e12 * x.e1) - (s.e23 * x.e3);
+    const double t2 = (s.e13 * x.e1) + (s.e23 * x.e2);
+    const double t3 = (s.e1inf * x.e1) + ((s.e2inf * x.e2) + (s.e3inf * x.e3));
+    const double t4 = -(s.e123inf * x.e3);
+    const double t5 = s.e123inf * x.e2;
+    const double t6 = -(s.e123inf * x.e1);
+    const double t7 = ((s.scalar * s.scalar) + (s.e12 * s.e12)) + ((s.e13 * s.e13) + (s.e23 * s.e23));
+    const double t8 = (t0 * s.scalar) - ((t1 * s.e12) + (t2 * s.e13));
+    const double t9 = (t1 * s.scalar) + ((t0 * s.e12) - (t2 * s.e23));
+    const double t10 = (t2 * s.scalar) + ((t0 * s.e13) + (t1 * s.e23));
+    const double t11 = ((t3 * s.scalar) - ((t4 * s.e12) + (t5 * s.e13))) - (((t6 * s.e23) - (t0 * s.e1inf)) - ((t1 * s.e2inf) + (t2 * s.e3inf)));
     g123inf_Vector r;
-    r.e1 = ((t0 * s.scalar) - (t1 * s.e12)) - ((t2 * s.e13) + (t3 * s.e23));
-    r.e2 = ((t1 * s.scalar) + (t0 * s.e12)) + ((t3 * s.e13) - (t2 * s.e23));
-    r.e3 = ((t2 * s.scalar) - (t3 * s.e12)) + ((t0 * s.e13) + (t1 * s.e23));
-    r.einf = (((t4 * s.scalar) - (t5 * s.e12)) - ((t6 * s.e13) + (t7 * s.e23))) + (((t0 * s.e1inf) + (t1 * s.e2inf)) + ((t2 * s.e3inf) - (t3 * s.e123inf)));
+    r.e1 = (t7 * x.e1) + (t8 + t8);
+    r.e2 = (t7 * x.e2) + (t9 + t9);
+    r.e3 = (t7 * x.e3) + (t10 + t10);
+    r.einf = (t7 * x.einf) + (t11 + t11);
     return r;
 }
 
@@ -631,18 +635,21 @@ static inline g123inf_Bivector g123inf_vector_sandwich_bivector(g123inf_Vector s
     const double t0 = -((s.e2 * x.e12) + (s.e3 * x.e13));
     const double t1 = (s.e1 * x.e12) - (s.e3 * x.e23);
     const double t2 = (s.e1 * x.e13) + (s.e2 * x.e23);
-    const double t3 = (s.e1 * x.e23) + ((s.e3 * x.e12) - (s.e2 * x.e13));
-    const double t4 = (s.e1 * x.e1inf) + ((s.e2 * x.e2inf) + (s.e3 * x.e3inf));
-    const double t5 = (s.e1 * x.e2inf) + ((s.einf * x.e12) - (s.e2 * x.e1inf));
-    const double t6 = (s.e1 * x.e3inf) + ((s.einf * x.e13) - (s.e3 * x.e1inf));
-    const double t7 = (s.e2 * x.e3inf) + ((s.einf * x.e23) - (s.e3 * x.e2inf));
+    const double t3 = (s.e1 * x.e1inf) + ((s.e2 * x.e2inf) + (s.e3 * x.e3inf));
+    const double t4 = (s.e1 * s.e1) + ((s.e2 * s.e2) + (s.e3 * s.e3));
+    const double t5 = (t0 * s.e2) - (t1 * s.e1);
+    const double t6 = (t0 * s.e3) - (t2 * s.e1);
+    const double t7 = (t1 * s.e3) - (t2 * s.e2);
+    const double t8 = (t0 * s.einf) - (t3 * s.e1);
+    const double t9 = (t1 * s.einf) - (t3 * s.e2);
+    const double t10 = (t2 * s.einf) - (t3 * s.e3);
     g123inf_Bivector r;
-    r.e12 = (t0 * s.e2) - ((t1 * s.e1) - (t3 * s.e3));
-    r.e13 = (t0 * s.e3) - ((t2 * s.e1) + (t3 * s.e2));
-    r.e23 = (t3 * s.e1) - ((t2 * s.e2) - (t1 * s.e3));
-    r.e1inf = ((t0 * s.einf) - (t4 * s.e1)) - ((t5 * s.e2) + (t6 * s.e3));
-    r.e2inf = ((t5 * s.e1) - (t4 * s.e2)) - ((t7 * s.e3) - (t1 * s.einf));
-    r.e3inf = ((t6 * s.e1) + (t7 * s.e2)) - ((t4 * s.e3) - (t2 * s.einf));
+    r.e12 = (t4 * x.e12) + (t5 + t5);
+    r.e13 = (t4 * x.e13) + (t6 + t6);
+    r.e23 = (t4 * x.e23) + (t7 + t7);
+    r.e1inf = (t4 * x.e1inf) + (t8 + t8);
+    r.e2inf = (t4 * x.e2inf) + (t9 + t9);
+    r.e3inf = (t4 * x.e3inf) + (t10 + t10);
     return r;
 }
 
@@ -673,15 +680,16 @@ static inline g123inf_Vector g123inf_bivector_sandwich_vector(g123inf_Bivector s
     const double t0 = -((s.e12 * x.e2) + (s.e13 * x.e3));
     const double t1 = (s.e12 * x.e1) - (s.e23 * x.e3);
     const double t2 = (s.e13 * x.e1) + (s.e23 * x.e2);
-    const double t3 = (s.e13 * x.e2) - ((s.e12 * x.e3) + (s.e23 * x.e1));
-    const double t4 = (s.e1inf * x.e2) - ((s.e12 * x.einf) + (s.e2inf * x.e1));
-    const double t5 = (s.e1inf * x.e3) - ((s.e13 * x.einf) + (s.e3inf * x.e1));
-    const double t6 = (s.e2inf * x.e3) - ((s.e23 * x.einf) + (s.e3inf * x.e2));
+    const double t3 = (s.e12 * s.e12) + ((s.e13 * s.e13) + (s.e23 * s.e23));
+    const double t4 = -((t1 * s.e12) + (t2 * s.e13));
+    const double t5 = (t0 * s.e12) - (t2 * s.e23);
+    const double t6 = (t0 * s.e13) + (t1 * s.e23);
+    const double t7 = (t0 * s.e1inf) + ((t1 * s.e2inf) + (t2 * s.e3inf));
     g123inf_Vector r;
-    r.e1 = -((t1 * s.e12) + ((t2 * s.e13) + (t3 * s.e23)));
-    r.e2 = (t0 * s.e12) + ((t3 * s.e13) - (t2 * s.e23));
-    r.e3 = (t0 * s.e13) - ((t3 * s.e12) - (t1 * s.e23));
-    r.einf = ((t0 * s.e1inf) - ((t4 * s.e12) + (t5 * s.e13))) - ((t6 * s.e23) - ((t1 * s.e2inf) + (t2 * s.e3inf)));
+    r.e1 = (t3 * x.e1) + (t4 + t4);
+    r.e2 = (t3 * x.e2) + (t5 + t5);
+    r.e3 = (t3 * x.e3) + (t6 + t6);
+    r.einf = (t3 * x.einf) + (t7 + t7);
     return r;
 }
 
@@ -1514,19 +1522,23 @@ static inline g123inf_Motorf g123inf_motor_sandwich_motorf(g123inf_Motorf s, g12
 
 /* rev(S) x S for a Motor S and a Vector x, in one fused kernel. */
 static inline g123inf_Vectorf g123inf_motor_sandwich_vectorf(g123inf_Motorf s, g123inf_Vectorf x) {
-    const float t0 = (s.scalar * x.e1) - ((s.e12 * x.e2) + (s.e13 * x.e3));
-    const float t1 = (s.scalar * x.e2) + ((s.e12 * x.e1) - (s.e23 * x.e3));
-    const float t2 = (s.scalar * x.e3) + ((s.e13 * x.e1) + (s.e23 * x.e2));
-    const float t3 = (s.e13 * x.e2) - ((s.e12 * x.e3) + (s.e23 * x.e1));
-    const float t4 = ((s.scalar * x.einf) + (s.e1inf * x.e1)) + ((s.e2inf * x.e2) + (s.e3inf * x.e3));
-    const float t5 = ((s.e1inf * x.e2) - (s.e12 * x.einf)) - ((s.e2inf * x.e1) + (s.e123inf * x.e3));
-    const float t6 = ((s.e1inf * x.e3) + (s.e123inf * x.e2)) - ((s.e13 * x.einf) + (s.e3inf * x.e1));
-    const float t7 = ((s.e2inf * x.e3) - (s.e23 * x.einf)) - ((s.e3inf * x.e2) + (s.e123inf * x.e1));
+    const float t0 = -((s.e12 * x.e2) + (s.e13 * x.e3));
+    const float t1 = (s.e12 * x.e1) - (s.e23 * x.e3);
+    const float t2 = (s.e13 * x.e1) + (s.e23 * x.e2);
+    const float t3 = (s.e1inf * x.e1) + ((s.e2inf * x.e2) + (s.e3inf * x.e3));
+    const float t4 = -(s.e123inf * x.e3);
+    const float t5 = s.e123inf * x.e2;
+    const float t6 = -(s.e123inf * x.e1);
+    const float t7 = ((s.scalar * s.scalar) + (s.e12 * s.e12)) + ((s.e13 * s.e13) + (s.e23 * s.e23));
+    const float t8 = (t0 * s.scalar) - ((t1 * s.e12) + (t2 * s.e13));
+    const float t9 = (t1 * s.scalar) + ((t0 * s.e12) - (t2 * s.e23));
+    const float t10 = (t2 * s.scalar) + ((t0 * s.e13) + (t1 * s.e23));
+    const float t11 = ((t3 * s.scalar) - ((t4 * s.e12) + (t5 * s.e13))) - (((t6 * s.e23) - (t0 * s.e1inf)) - ((t1 * s.e2inf) + (t2 * s.e3inf)));
     g123inf_Vectorf r;
-    r.e1 = ((t0 * s.scalar) - (t1 * s.e12)) - ((t2 * s.e13) + (t3 * s.e23));
-    r.e2 = ((t1 * s.scalar) + (t0 * s.e12)) + ((t3 * s.e13) - (t2 * s.e23));
-    r.e3 = ((t2 * s.scalar) - (t3 * s.e12)) + ((t0 * s.e13) + (t1 * s.e23));
-    r.einf = (((t4 * s.scalar) - (t5 * s.e12)) - ((t6 * s.e13) + (t7 * s.e23))) + (((t0 * s.e1inf) + (t1 * s.e2inf)) + ((t2 * s.e3inf) - (t3 * s.e123inf)));
+    r.e1 = (t7 * x.e1) + (t8 + t8);
+    r.e2 = (t7 * x.e2) + (t9 + t9);
+    r.e3 = (t7 * x.e3) + (t10 + t10);
+    r.einf = (t7 * x.einf) + (t11 + t11);
     return r;
 }
 
@@ -1594,18 +1606,21 @@ static inline g123inf_Bivectorf g123inf_vector_sandwich_bivectorf(g123inf_Vector
     const float t0 = -((s.e2 * x.e12) + (s.e3 * x.e13));
     const float t1 = (s.e1 * x.e12) - (s.e3 * x.e23);
     const float t2 = (s.e1 * x.e13) + (s.e2 * x.e23);
-    const float t3 = (s.e1 * x.e23) + ((s.e3 * x.e12) - (s.e2 * x.e13));
-    const float t4 = (s.e1 * x.e1inf) + ((s.e2 * x.e2inf) + (s.e3 * x.e3inf));
-    const float t5 = (s.e1 * x.e2inf) + ((s.einf * x.e12) - (s.e2 * x.e1inf));
-    const float t6 = (s.e1 * x.e3inf) + ((s.einf * x.e13) - (s.e3 * x.e1inf));
-    const float t7 = (s.e2 * x.e3inf) + ((s.einf * x.e23) - (s.e3 * x.e2inf));
+    const float t3 = (s.e1 * x.e1inf) + ((s.e2 * x.e2inf) + (s.e3 * x.e3inf));
+    const float t4 = (s.e1 * s.e1) + ((s.e2 * s.e2) + (s.e3 * s.e3));
+    const float t5 = (t0 * s.e2) - (t1 * s.e1);
+    const float t6 = (t0 * s.e3) - (t2 * s.e1);
+    const float t7 = (t1 * s.e3) - (t2 * s.e2);
+    const float t8 = (t0 * s.einf) - (t3 * s.e1);
+    const float t9 = (t1 * s.einf) - (t3 * s.e2);
+    const float t10 = (t2 * s.einf) - (t3 * s.e3);
     g123inf_Bivectorf r;
-    r.e12 = (t0 * s.e2) - ((t1 * s.e1) - (t3 * s.e3));
-    r.e13 = (t0 * s.e3) - ((t2 * s.e1) + (t3 * s.e2));
-    r.e23 = (t3 * s.e1) - ((t2 * s.e2) - (t1 * s.e3));
-    r.e1inf = ((t0 * s.einf) - (t4 * s.e1)) - ((t5 * s.e2) + (t6 * s.e3));
-    r.e2inf = ((t5 * s.e1) - (t4 * s.e2)) - ((t7 * s.e3) - (t1 * s.einf));
-    r.e3inf = ((t6 * s.e1) + (t7 * s.e2)) - ((t4 * s.e3) - (t2 * s.einf));
+    r.e12 = (t4 * x.e12) + (t5 + t5);
+    r.e13 = (t4 * x.e13) + (t6 + t6);
+    r.e23 = (t4 * x.e23) + (t7 + t7);
+    r.e1inf = (t4 * x.e1inf) + (t8 + t8);
+    r.e2inf = (t4 * x.e2inf) + (t9 + t9);
+    r.e3inf = (t4 * x.e3inf) + (t10 + t10);
     return r;
 }
 
@@ -1636,15 +1651,16 @@ static inline g123inf_Vectorf g123inf_bivector_sandwich_vectorf(g123inf_Bivector
     const float t0 = -((s.e12 * x.e2) + (s.e13 * x.e3));
     const float t1 = (s.e12 * x.e1) - (s.e23 * x.e3);
     const float t2 = (s.e13 * x.e1) + (s.e23 * x.e2);
-    const float t3 = (s.e13 * x.e2) - ((s.e12 * x.e3) + (s.e23 * x.e1));
-    const float t4 = (s.e1inf * x.e2) - ((s.e12 * x.einf) + (s.e2inf * x.e1));
-    const float t5 = (s.e1inf * x.e3) - ((s.e13 * x.einf) + (s.e3inf * x.e1));
-    const float t6 = (s.e2inf * x.e3) - ((s.e23 * x.einf) + (s.e3inf * x.e2));
+    const float t3 = (s.e12 * s.e12) + ((s.e13 * s.e13) + (s.e23 * s.e23));
+    const float t4 = -((t1 * s.e12) + (t2 * s.e13));
+    const float t5 = (t0 * s.e12) - (t2 * s.e23);
+    const float t6 = (t0 * s.e13) + (t1 * s.e23);
+    const float t7 = (t0 * s.e1inf) + ((t1 * s.e2inf) + (t2 * s.e3inf));
     g123inf_Vectorf r;
-    r.e1 = -((t1 * s.e12) + ((t2 * s.e13) + (t3 * s.e23)));
-    r.e2 = (t0 * s.e12) + ((t3 * s.e13) - (t2 * s.e23));
-    r.e3 = (t0 * s.e13) - ((t3 * s.e12) - (t1 * s.e23));
-    r.einf = ((t0 * s.e1inf) - ((t4 * s.e12) + (t5 * s.e13))) - ((t6 * s.e23) - ((t1 * s.e2inf) + (t2 * s.e3inf)));
+    r.e1 = (t3 * x.e1) + (t4 + t4);
+    r.e2 = (t3 * x.e2) + (t5 + t5);
+    r.e3 = (t3 * x.e3) + (t6 + t6);
+    r.einf = (t3 * x.einf) + (t7 + t7);
     return r;
 }
 

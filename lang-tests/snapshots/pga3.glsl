@@ -542,23 +542,24 @@ pga3_Line pga3_motor_apply_line(pga3_Motor s, pga3_Line x) {
 
 // S x rev(S) for a Point S and a Motor x, in one fused kernel.
 pga3_Motor pga3_point_apply_motor(pga3_Point s, pga3_Motor x) {
-    float t0 = -(((s.e012 * x.e12) + (s.e013 * x.e13)) + ((s.e023 * x.e23) - (s.e123 * x.e0123)));
-    float t1 = -(s.e123 * x.e23);
-    float t2 = s.e123 * x.e13;
-    float t3 = ((s.e012 * x.scalar) - (s.e013 * x.e23)) + ((s.e023 * x.e13) - (s.e123 * x.e03));
-    float t4 = -(s.e123 * x.e12);
-    float t5 = ((s.e012 * x.e23) + (s.e013 * x.scalar)) - ((s.e023 * x.e12) - (s.e123 * x.e02));
-    float t6 = -(((s.e012 * x.e13) - (s.e013 * x.e12)) - ((s.e023 * x.scalar) - (s.e123 * x.e01)));
-    float t7 = s.e123 * x.scalar;
+    float t0 = s.e123 * x.e0123;
+    float t1 = -((s.e013 * x.e23) - ((s.e023 * x.e13) - (s.e123 * x.e03)));
+    float t2 = (s.e012 * x.e23) - ((s.e023 * x.e12) - (s.e123 * x.e02));
+    float t3 = -((s.e012 * x.e13) - ((s.e013 * x.e12) - (s.e123 * x.e01)));
+    float t4 = s.e123 * s.e123;
+    float t5 = t3 * s.e123;
+    float t6 = -(t2 * s.e123);
+    float t7 = t1 * s.e123;
+    float t8 = -(t0 * s.e123);
     return pga3_Motor(
-        t7 * s.e123,
-        ((t6 * s.e123) - (t2 * s.e012)) - ((t4 * s.e013) + (t7 * s.e023)),
-        ((t1 * s.e012) + (t7 * s.e013)) - ((t4 * s.e023) + (t5 * s.e123)),
-        -(t4 * s.e123),
-        ((t1 * s.e013) - (t7 * s.e012)) + ((t2 * s.e023) + (t3 * s.e123)),
-        t2 * s.e123,
-        -(t1 * s.e123),
-        ((t4 * s.e012) - (t2 * s.e013)) + ((t1 * s.e023) - (t0 * s.e123))
+        t4 * x.scalar,
+        (t4 * x.e01) + (t5 + t5),
+        (t4 * x.e02) + (t6 + t6),
+        t4 * x.e12,
+        (t4 * x.e03) + (t7 + t7),
+        t4 * x.e13,
+        t4 * x.e23,
+        (t4 * x.e0123) + (t8 + t8)
     );
 }
 
@@ -618,18 +619,18 @@ pga3_Motor pga3_line_apply_motor(pga3_Line s, pga3_Motor x) {
 
 // S x rev(S) for a Line S and a Point x, in one fused kernel.
 pga3_Point pga3_line_apply_point(pga3_Line s, pga3_Point x) {
-    float t0 = -((s.e12 * x.e012) + ((s.e13 * x.e013) + (s.e23 * x.e023)));
-    float t1 = -(s.e23 * x.e123);
-    float t2 = s.e13 * x.e123;
-    float t3 = (s.e03 * x.e123) - ((s.e13 * x.e023) - (s.e23 * x.e013));
-    float t4 = -(s.e12 * x.e123);
-    float t5 = -((s.e02 * x.e123) - ((s.e12 * x.e023) - (s.e23 * x.e012)));
-    float t6 = (s.e01 * x.e123) - ((s.e12 * x.e013) - (s.e13 * x.e012));
+    float t0 = (s.e03 * x.e123) - ((s.e13 * x.e023) - (s.e23 * x.e013));
+    float t1 = -((s.e02 * x.e123) - ((s.e12 * x.e023) - (s.e23 * x.e012)));
+    float t2 = (s.e01 * x.e123) - ((s.e12 * x.e013) - (s.e13 * x.e012));
+    float t3 = (s.e12 * s.e12) + ((s.e13 * s.e13) + (s.e23 * s.e23));
+    float t4 = (t1 * s.e23) - (t2 * s.e13);
+    float t5 = (t2 * s.e12) - (t0 * s.e23);
+    float t6 = (t0 * s.e13) - (t1 * s.e12);
     return pga3_Point(
-        ((t1 * s.e02) - (t2 * s.e01)) - ((t0 * s.e12) + ((t6 * s.e13) - (t5 * s.e23))),
-        ((t6 * s.e12) - (t4 * s.e01)) + ((t1 * s.e03) - ((t0 * s.e13) + (t3 * s.e23))),
-        ((t2 * s.e03) - (t4 * s.e02)) - ((t5 * s.e12) - ((t3 * s.e13) - (t0 * s.e23))),
-        (t2 * s.e13) - ((t4 * s.e12) + (t1 * s.e23))
+        (t3 * x.e012) + (t4 + t4),
+        (t3 * x.e013) + (t5 + t5),
+        (t3 * x.e023) + (t6 + t6),
+        t3 * x.e123
     );
 }
 

@@ -551,23 +551,24 @@ static inline pga3_Line pga3_motor_apply_line(pga3_Motor s, pga3_Line x) {
 
 /* S x rev(S) for a Point S and a Motor x, in one fused kernel. */
 static inline pga3_Motor pga3_point_apply_motor(pga3_Point s, pga3_Motor x) {
-    const double t0 = -(((s.e012 * x.e12) + (s.e013 * x.e13)) + ((s.e023 * x.e23) - (s.e123 * x.e0123)));
-    const double t1 = -(s.e123 * x.e23);
-    const double t2 = s.e123 * x.e13;
-    const double t3 = ((s.e012 * x.scalar) - (s.e013 * x.e23)) + ((s.e023 * x.e13) - (s.e123 * x.e03));
-    const double t4 = -(s.e123 * x.e12);
-    const double t5 = ((s.e012 * x.e23) + (s.e013 * x.scalar)) - ((s.e023 * x.e12) - (s.e123 * x.e02));
-    const double t6 = -(((s.e012 * x.e13) - (s.e013 * x.e12)) - ((s.e023 * x.scalar) - (s.e123 * x.e01)));
-    const double t7 = s.e123 * x.scalar;
+    const double t0 = s.e123 * x.e0123;
+    const double t1 = -((s.e013 * x.e23) - ((s.e023 * x.e13) - (s.e123 * x.e03)));
+    const double t2 = (s.e012 * x.e23) - ((s.e023 * x.e12) - (s.e123 * x.e02));
+    const double t3 = -((s.e012 * x.e13) - ((s.e013 * x.e12) - (s.e123 * x.e01)));
+    const double t4 = s.e123 * s.e123;
+    const double t5 = t3 * s.e123;
+    const double t6 = -(t2 * s.e123);
+    const double t7 = t1 * s.e123;
+    const double t8 = -(t0 * s.e123);
     pga3_Motor r;
-    r.scalar = t7 * s.e123;
-    r.e01 = ((t6 * s.e123) - (t2 * s.e012)) - ((t4 * s.e013) + (t7 * s.e023));
-    r.e02 = ((t1 * s.e012) + (t7 * s.e013)) - ((t4 * s.e023) + (t5 * s.e123));
-    r.e12 = -(t4 * s.e123);
-    r.e03 = ((t1 * s.e013) - (t7 * s.e012)) + ((t2 * s.e023) + (t3 * s.e123));
-    r.e13 = t2 * s.e123;
-    r.e23 = -(t1 * s.e123);
-    r.e0123 = ((t4 * s.e012) - (t2 * s.e013)) + ((t1 * s.e023) - (t0 * s.e123));
+    r.scalar = t4 * x.scalar;
+    r.e01 = (t4 * x.e01) + (t5 + t5);
+    r.e02 = (t4 * x.e02) + (t6 + t6);
+    r.e12 = t4 * x.e12;
+    r.e03 = (t4 * x.e03) + (t7 + t7);
+    r.e13 = t4 * x.e13;
+    r.e23 = t4 * x.e23;
+    r.e0123 = (t4 * x.e0123) + (t8 + t8);
     return r;
 }
 
@@ -627,18 +628,18 @@ static inline pga3_Motor pga3_line_apply_motor(pga3_Line s, pga3_Motor x) {
 
 /* S x rev(S) for a Line S and a Point x, in one fused kernel. */
 static inline pga3_Point pga3_line_apply_point(pga3_Line s, pga3_Point x) {
-    const double t0 = -((s.e12 * x.e012) + ((s.e13 * x.e013) + (s.e23 * x.e023)));
-    const double t1 = -(s.e23 * x.e123);
-    const double t2 = s.e13 * x.e123;
-    const double t3 = (s.e03 * x.e123) - ((s.e13 * x.e023) - (s.e23 * x.e013));
-    const double t4 = -(s.e12 * x.e123);
-    const double t5 = -((s.e02 * x.e123) - ((s.e12 * x.e023) - (s.e23 * x.e012)));
-    const double t6 = (s.e01 * x.e123) - ((s.e12 * x.e013) - (s.e13 * x.e012));
+    const double t0 = (s.e03 * x.e123) - ((s.e13 * x.e023) - (s.e23 * x.e013));
+    const double t1 = -((s.e02 * x.e123) - ((s.e12 * x.e023) - (s.e23 * x.e012)));
+    const double t2 = (s.e01 * x.e123) - ((s.e12 * x.e013) - (s.e13 * x.e012));
+    const double t3 = (s.e12 * s.e12) + ((s.e13 * s.e13) + (s.e23 * s.e23));
+    const double t4 = (t1 * s.e23) - (t2 * s.e13);
+    const double t5 = (t2 * s.e12) - (t0 * s.e23);
+    const double t6 = (t0 * s.e13) - (t1 * s.e12);
     pga3_Point r;
-    r.e012 = ((t1 * s.e02) - (t2 * s.e01)) - ((t0 * s.e12) + ((t6 * s.e13) - (t5 * s.e23)));
-    r.e013 = ((t6 * s.e12) - (t4 * s.e01)) + ((t1 * s.e03) - ((t0 * s.e13) + (t3 * s.e23)));
-    r.e023 = ((t2 * s.e03) - (t4 * s.e02)) - ((t5 * s.e12) - ((t3 * s.e13) - (t0 * s.e23)));
-    r.e123 = (t2 * s.e13) - ((t4 * s.e12) + (t1 * s.e23));
+    r.e012 = (t3 * x.e012) + (t4 + t4);
+    r.e013 = (t3 * x.e013) + (t5 + t5);
+    r.e023 = (t3 * x.e023) + (t6 + t6);
+    r.e123 = t3 * x.e123;
     return r;
 }
 
@@ -1452,23 +1453,24 @@ static inline pga3_Linef pga3_motor_apply_linef(pga3_Motorf s, pga3_Linef x) {
 
 /* S x rev(S) for a Point S and a Motor x, in one fused kernel. */
 static inline pga3_Motorf pga3_point_apply_motorf(pga3_Pointf s, pga3_Motorf x) {
-    const float t0 = -(((s.e012 * x.e12) + (s.e013 * x.e13)) + ((s.e023 * x.e23) - (s.e123 * x.e0123)));
-    const float t1 = -(s.e123 * x.e23);
-    const float t2 = s.e123 * x.e13;
-    const float t3 = ((s.e012 * x.scalar) - (s.e013 * x.e23)) + ((s.e023 * x.e13) - (s.e123 * x.e03));
-    const float t4 = -(s.e123 * x.e12);
-    const float t5 = ((s.e012 * x.e23) + (s.e013 * x.scalar)) - ((s.e023 * x.e12) - (s.e123 * x.e02));
-    const float t6 = -(((s.e012 * x.e13) - (s.e013 * x.e12)) - ((s.e023 * x.scalar) - (s.e123 * x.e01)));
-    const float t7 = s.e123 * x.scalar;
+    const float t0 = s.e123 * x.e0123;
+    const float t1 = -((s.e013 * x.e23) - ((s.e023 * x.e13) - (s.e123 * x.e03)));
+    const float t2 = (s.e012 * x.e23) - ((s.e023 * x.e12) - (s.e123 * x.e02));
+    const float t3 = -((s.e012 * x.e13) - ((s.e013 * x.e12) - (s.e123 * x.e01)));
+    const float t4 = s.e123 * s.e123;
+    const float t5 = t3 * s.e123;
+    const float t6 = -(t2 * s.e123);
+    const float t7 = t1 * s.e123;
+    const float t8 = -(t0 * s.e123);
     pga3_Motorf r;
-    r.scalar = t7 * s.e123;
-    r.e01 = ((t6 * s.e123) - (t2 * s.e012)) - ((t4 * s.e013) + (t7 * s.e023));
-    r.e02 = ((t1 * s.e012) + (t7 * s.e013)) - ((t4 * s.e023) + (t5 * s.e123));
-    r.e12 = -(t4 * s.e123);
-    r.e03 = ((t1 * s.e013) - (t7 * s.e012)) + ((t2 * s.e023) + (t3 * s.e123));
-    r.e13 = t2 * s.e123;
-    r.e23 = -(t1 * s.e123);
-    r.e0123 = ((t4 * s.e012) - (t2 * s.e013)) + ((t1 * s.e023) - (t0 * s.e123));
+    r.scalar = t4 * x.scalar;
+    r.e01 = (t4 * x.e01) + (t5 + t5);
+    r.e02 = (t4 * x.e02) + (t6 + t6);
+    r.e12 = t4 * x.e12;
+    r.e03 = (t4 * x.e03) + (t7 + t7);
+    r.e13 = t4 * x.e13;
+    r.e23 = t4 * x.e23;
+    r.e0123 = (t4 * x.e0123) + (t8 + t8);
     return r;
 }
 
@@ -1528,18 +1530,18 @@ static inline pga3_Motorf pga3_line_apply_motorf(pga3_Linef s, pga3_Motorf x) {
 
 /* S x rev(S) for a Line S and a Point x, in one fused kernel. */
 static inline pga3_Pointf pga3_line_apply_pointf(pga3_Linef s, pga3_Pointf x) {
-    const float t0 = -((s.e12 * x.e012) + ((s.e13 * x.e013) + (s.e23 * x.e023)));
-    const float t1 = -(s.e23 * x.e123);
-    const float t2 = s.e13 * x.e123;
-    const float t3 = (s.e03 * x.e123) - ((s.e13 * x.e023) - (s.e23 * x.e013));
-    const float t4 = -(s.e12 * x.e123);
-    const float t5 = -((s.e02 * x.e123) - ((s.e12 * x.e023) - (s.e23 * x.e012)));
-    const float t6 = (s.e01 * x.e123) - ((s.e12 * x.e013) - (s.e13 * x.e012));
+    const float t0 = (s.e03 * x.e123) - ((s.e13 * x.e023) - (s.e23 * x.e013));
+    const float t1 = -((s.e02 * x.e123) - ((s.e12 * x.e023) - (s.e23 * x.e012)));
+    const float t2 = (s.e01 * x.e123) - ((s.e12 * x.e013) - (s.e13 * x.e012));
+    const float t3 = (s.e12 * s.e12) + ((s.e13 * s.e13) + (s.e23 * s.e23));
+    const float t4 = (t1 * s.e23) - (t2 * s.e13);
+    const float t5 = (t2 * s.e12) - (t0 * s.e23);
+    const float t6 = (t0 * s.e13) - (t1 * s.e12);
     pga3_Pointf r;
-    r.e012 = ((t1 * s.e02) - (t2 * s.e01)) - ((t0 * s.e12) + ((t6 * s.e13) - (t5 * s.e23)));
-    r.e013 = ((t6 * s.e12) - (t4 * s.e01)) + ((t1 * s.e03) - ((t0 * s.e13) + (t3 * s.e23)));
-    r.e023 = ((t2 * s.e03) - (t4 * s.e02)) - ((t5 * s.e12) - ((t3 * s.e13) - (t0 * s.e23)));
-    r.e123 = (t2 * s.e13) - ((t4 * s.e12) + (t1 * s.e23));
+    r.e012 = (t3 * x.e012) + (t4 + t4);
+    r.e013 = (t3 * x.e013) + (t5 + t5);
+    r.e023 = (t3 * x.e023) + (t6 + t6);
+    r.e123 = t3 * x.e123;
     return r;
 }
 

@@ -773,23 +773,32 @@ impl<T: self::Ring> self::Apply<Rotor<T>> for Rotor<T> {
     ///`self x rev(self)` in one fused kernel: every component of the full product is a [`Rotor`] component.
     #[inline(always)]
     fn apply(&self, x: &Rotor<T>) -> Rotor<T> {
-        let t0 = (((self.scalar.mul_ref(&x.scalar)) - &(self.e12.mul_ref(&x.e12)))
-            - &((self.e13.mul_ref(&x.e13)) + &(self.e23.mul_ref(&x.e23))));
-        let t1 = (((self.scalar.mul_ref(&x.e12)) + &(self.e12.mul_ref(&x.scalar)))
-            - &((self.e13.mul_ref(&x.e23)) - &(self.e23.mul_ref(&x.e13))));
-        let t2 = (((self.scalar.mul_ref(&x.e13)) + &(self.e12.mul_ref(&x.e23)))
-            + &((self.e13.mul_ref(&x.scalar)) - &(self.e23.mul_ref(&x.e12))));
-        let t3 = (((self.scalar.mul_ref(&x.e23)) - &(self.e12.mul_ref(&x.e13)))
-            + &((self.e13.mul_ref(&x.e12)) + &(self.e23.mul_ref(&x.scalar))));
+        let t0 = self::Ring::neg_ref(
+            &((self.e13.mul_ref(&x.e23)) - &(self.e23.mul_ref(&x.e13))),
+        );
+        let t1 = ((self.e12.mul_ref(&x.e23)) - &(self.e23.mul_ref(&x.e12)));
+        let t2 = self::Ring::neg_ref(
+            &((self.e12.mul_ref(&x.e13)) - &(self.e13.mul_ref(&x.e12))),
+        );
+        let n = (((self.scalar.mul_ref(&self.scalar)) + &(self.e12.mul_ref(&self.e12)))
+            + &((self.e13.mul_ref(&self.e13)) + &(self.e23.mul_ref(&self.e23))));
         Rotor {
-            scalar: (((t0.mul_ref(&self.scalar)) + &(t1.mul_ref(&self.e12)))
-                + &((t2.mul_ref(&self.e13)) + &(t3.mul_ref(&self.e23)))),
-            e12: (((t1.mul_ref(&self.scalar)) - &(t0.mul_ref(&self.e12)))
-                - &((t3.mul_ref(&self.e13)) - &(t2.mul_ref(&self.e23)))),
-            e13: (((t2.mul_ref(&self.scalar)) + &(t3.mul_ref(&self.e12)))
-                - &((t0.mul_ref(&self.e13)) + &(t1.mul_ref(&self.e23)))),
-            e23: (((t3.mul_ref(&self.scalar)) - &(t2.mul_ref(&self.e12)))
-                + &((t1.mul_ref(&self.e13)) - &(t0.mul_ref(&self.e23)))),
+            scalar: n.mul_ref(&x.scalar),
+            e12: {
+                let y = ((t0.mul_ref(&self.scalar))
+                    - &((t2.mul_ref(&self.e13)) - &(t1.mul_ref(&self.e23))));
+                n.mul_ref(&x.e12) + &(y.add_ref(&y))
+            },
+            e13: {
+                let y = ((t1.mul_ref(&self.scalar))
+                    + &((t2.mul_ref(&self.e12)) - &(t0.mul_ref(&self.e23))));
+                n.mul_ref(&x.e13) + &(y.add_ref(&y))
+            },
+            e23: {
+                let y = ((t2.mul_ref(&self.scalar))
+                    - &((t1.mul_ref(&self.e12)) - &(t0.mul_ref(&self.e13))));
+                n.mul_ref(&x.e23) + &(y.add_ref(&y))
+            },
         }
     }
 }
