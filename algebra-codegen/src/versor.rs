@@ -553,7 +553,7 @@ fn norm_polynomial(spec: &ModuleSpec, v: usize, convention: Convention) -> BTree
 }
 
 /// The share of the general kernel's operations (multiplications plus additions) at or below
-/// which the plan takes the scalar-norm form without a measured order ([`norm_forms`]): 4/5.
+/// which the plan takes the scalar-norm form ([`norm_form`]) without a measured order: 4/5.
 ///
 /// ```
 /// use algebra_core::{Algebra, Basis};
