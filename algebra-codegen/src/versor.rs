@@ -319,8 +319,9 @@ pub fn fingerprint(k: &ActionKernel) -> u64 {
 /// pairing_wisdom` (docs/performance.md, "fifth session"): it times every candidate order of
 /// the benched kernels beside their module's motor product in one `rustc -O` program (the
 /// generated kernel bodies, interleaved rounds, pinned to one core) and prints the table.
-/// Measured on 2-core VMs, baseline x86-64 (SSE2), rustc 1.95: an AMD EPYC, and an Intel Xeon for
-/// the four conformal point actions (the comment above them).
+/// Measured on 2-core VMs, baseline x86-64 (SSE2), rustc 1.95: an AMD EPYC for `g3`'s two
+/// entries, an Intel Xeon for the others (the comments above them). Every entry is a
+/// scalar-norm form ([`NormForm`]).
 pub const WISDOM: &[(u64, &str, TermOrder)] = {
     use NormOrder::{Halves, Outside, Tables as NormTables};
     use RowOrder::{
