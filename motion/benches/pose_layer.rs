@@ -1,7 +1,11 @@
 //! The pose layer against the kernels under it and against nalgebra (issue 31, item 1),
 //! measured interleaved in one process (every kernel back to back in each round, rotating
 //! order; the shared loop of the motion benches), f64, the same inputs on both sides, every
-//! whole result through `black_box` (so no component is left uncomputed):
+//! whole result through `black_box` (so no component is left uncomputed). A fallible
+//! operation's value goes through it after the caller's `match`, as nalgebra's value does:
+//! `black_box` on the whole `Result` would also time a copy of its 56 bytes, which the inlined
+//! `Pose::transform_point` pays as a store-forwarding stall (docs/performance.md, thirteenth
+//! session):
 //!
 //! - `Pose::exp` / the generated `g123inf::Bivector::exp` (target <= 1.4x);
 //! - `Pose::log` / the generated `g123inf::Motor::log_unit` on unit motors (target <= 1.7x);
@@ -103,15 +107,15 @@ fn kernel_exp(d: &Data) -> f64 {
 }
 
 fn pose_exp(d: &Data) -> f64 {
-    d.generators.iter().map(|g| black_box(Pose::exp(black_box(g))).map_or(0.0, |p| p.scalar)).sum()
+    d.generators.iter().map(|g| Pose::exp(black_box(g)).map_or(0.0, |p| black_box(p).scalar)).sum()
 }
 
 fn kernel_log_unit(d: &Data) -> f64 {
-    d.motors.iter().map(|m| black_box(black_box(m).log_unit()).map_or(0.0, |l| l.e12)).sum()
+    d.motors.iter().map(|m| black_box(m).log_unit().map_or(0.0, |l| black_box(l).e12)).sum()
 }
 
 fn pose_log(d: &Data) -> f64 {
-    d.poses.iter().map(|p| black_box(black_box(p).log()).map_or(0.0, |l| l.e12)).sum()
+    d.poses.iter().map(|p| black_box(p).log().map_or(0.0, |l| black_box(l).e12)).sum()
 }
 
 fn nalgebra_transform_point(d: &Data) -> f64 {
@@ -122,7 +126,7 @@ fn pose_transform_point(d: &Data) -> f64 {
     d.poses
         .iter()
         .zip(&d.points)
-        .map(|(s, p)| black_box(black_box(s).transform_point(black_box(p))).map_or(0.0, |q| q[0]))
+        .map(|(s, p)| black_box(s).transform_point(black_box(p)).map_or(0.0, |q| black_box(q)[0]))
         .sum()
 }
 
@@ -137,21 +141,21 @@ fn nalgebra_sclerp(d: &Data) -> f64 {
 
 fn pose_slerp(d: &Data) -> f64 {
     let pairs = d.poses.iter().zip(&d.others).zip(&d.ts);
-    pairs.map(|((a, b), t)| black_box(Pose::slerp(black_box(a), black_box(b), t)).map_or(0.0, |s| s.e1inf)).sum()
+    pairs.map(|((a, b), t)| Pose::slerp(black_box(a), black_box(b), t).map_or(0.0, |s| black_box(s).e1inf)).sum()
 }
 
 fn unit_slerp(d: &Data) -> f64 {
     let pairs = d.units.iter().zip(&d.other_units).zip(&d.ts);
-    pairs.map(|((a, b), t)| black_box(UnitPose::slerp(black_box(a), black_box(b), t)).map_or(0.0, |s| s.e1inf)).sum()
+    pairs.map(|((a, b), t)| UnitPose::slerp(black_box(a), black_box(b), t).map_or(0.0, |s| black_box(s).e1inf)).sum()
 }
 
 fn pose_slerp_non_unit(d: &Data) -> f64 {
     let pairs = d.scaled.iter().zip(&d.other_scaled).zip(&d.ts);
-    pairs.map(|((a, b), t)| black_box(Pose::slerp(black_box(a), black_box(b), t)).map_or(0.0, |s| s.e1inf)).sum()
+    pairs.map(|((a, b), t)| Pose::slerp(black_box(a), black_box(b), t).map_or(0.0, |s| black_box(s).e1inf)).sum()
 }
 
 fn pose_power(d: &Data) -> f64 {
-    d.poses.iter().zip(&d.ts).map(|(s, t)| black_box(black_box(s).power(t)).map_or(0.0, |p| p.e1inf)).sum()
+    d.poses.iter().zip(&d.ts).map(|(s, t)| black_box(s).power(t).map_or(0.0, |p| black_box(p).e1inf)).sum()
 }
 
 /// The kernels; each pose-layer row follows the reference it is compared with.

@@ -145,6 +145,10 @@ impl<T: Field> Pose<T> {
     /// let p = s.transform_point(&[1.0, 0.0, 5.0]).unwrap();
     /// assert!(p[0].abs() < 1e-15 && (p[1] - 1.0).abs() < 1e-15 && (p[2] - 5.0).abs() < 1e-15);
     /// ```
+    // Inlined at the caller's site: the call, the returned `Result` in memory and its
+    // discriminant test cost 5 % of the action (docs/performance.md, "thirteenth session");
+    // the careful path stays out of line.
+    #[inline(always)]
     pub fn transform_point(&self, p: &[T; 3]) -> Result<[T; 3], MotionError> {
         let alpha = self.alpha();
         // 2/α in one step: one addition less on the point's chain than 1/α + 1/α
@@ -156,18 +160,23 @@ impl<T: Field> Pose<T> {
             }
             return Ok(self.image_with_twice(p, &two.div_ref(&alpha)));
         }
-        // floats: the image first (a zero or tiny α gives infinities, never a trap), then one
-        // test for both conditions, off the division's chain: α tame (1/α a normal number)
-        // and each coordinate finite. The careful path names whatever failed.
+        // floats: the image first (a zero or tiny α gives infinities, never a trap), then the
+        // tests, off the division's chain: α tame (1/α a normal number) and each coordinate
+        // finite. The careful path names whatever failed.
         let out = self.image_with_twice(p, &two.div_ref(&alpha));
         let direct = if crate::series::plain_f64::<T>() {
-            // `z = Σ (o_i - o_i)` is +0 when every coordinate is finite and NaN otherwise, so
-            // `α + z` is `α` or NaN, and one integer comparison on its bits tests both (NaN's
-            // bits lie above the tame range): 6 instructions and one branch instead of 17 and
-            // four (docs/performance.md, "tenth session"). Dual numbers and jets keep the
-            // separate tests: their `magnitude` is a largest part that does not propagate NaN.
-            let z = out[0].sub_ref(&out[0]).add_ref(&out[1].sub_ref(&out[1])).add_ref(&out[2].sub_ref(&out[2]));
-            crate::scaled::tame(&alpha.add_ref(&z))
+            // The coordinates' sum is finite when every coordinate is, and infinite or NaN
+            // when one is not (or when three finite ones overflow in the sum: the careful path
+            // then gives the same bits). One integer test on its bits: `|sum| + (2^63 - ∞)`
+            // has its sign bit set exactly when `|sum|` is infinite or NaN. Fewer instructions
+            // than folding `Σ (o_i - o_i)` into `α` (docs/performance.md, "thirteenth
+            // session"), and `α`'s own test branches before the division. Dual numbers and
+            // jets keep the separate tests: their `magnitude` is a largest part that does not
+            // propagate NaN.
+            const C: u64 = (1 << 63) - f64::INFINITY.to_bits();
+            let sum = out[0].add_ref(&out[1]).add_ref(&out[2]);
+            let over = sum.magnitude().to_bits().wrapping_add(C);
+            (over >> 63 == 0) & crate::scaled::tame(&alpha)
         } else {
             let finite = out[0].is_finite_value() & out[1].is_finite_value() & out[2].is_finite_value();
             crate::scaled::tame(&alpha) & finite

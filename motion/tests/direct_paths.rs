@@ -169,9 +169,8 @@ fn log_of_large_translations_equals_the_careful_path_or_fails() {
     }
 }
 
-/// `Pose::transform_point` at `f64` folds its tests (`α` tame, each coordinate finite) into one
-/// number, `α + Σ (o_i - o_i)`: images that overflow in exactly one coordinate (each of the
-/// three in turn), translations and points up to `1.7e308`, rotational scales `2^±240` and
+/// `Pose::transform_point` at `f64` tests `α` (tame) and the coordinates' sum (finite):
+/// images that overflow in exactly one coordinate (each of the three in turn), translations and points up to `1.7e308`, rotational scales `2^±240` and
 /// `2^±260` (outside the tame range: the careful path), against the 256-bit careful path.
 /// Where the reference is finite in `f64` the fast result equals it; where it is not, the fast
 /// path declines with `NotFinite`. A NaN or infinite coordinate of the point, in any place,
@@ -234,6 +233,33 @@ fn transform_point_overflowing_in_one_coordinate_equals_the_careful_path_or_fail
     }
     // both outcomes occur, on each side of the tame range
     assert!(checked[0] > 100 && checked[1] > 30, "{checked:?}");
+}
+
+/// Images whose coordinates are all finite but whose sum overflows: the sum test of
+/// `Pose::transform_point` declines them, and the careful path must still return them, equal to
+/// the 256-bit action (each coordinate's error within 4 roundings of its size), not an error.
+#[test]
+fn transform_point_images_whose_sum_overflows_are_returned() {
+    let _g = PrecisionGuard::new(256);
+    let big = 1.7e308;
+    let turn = Pose::from_axis_angle_translation(&[0.0, 0.0, 1.0], &0.1, &[0.0, 0.0, 1.0]).unwrap();
+    let cases = [
+        (Pose::identity(), [big, big, 0.5]),
+        (Pose::identity(), [big, 0.25, big]),
+        (Pose::identity(), [-big, -big, -big]),
+        (Pose::translation(&[5e307, 5e307, -5e307]), [1e308, 1e308, -1e308]),
+        (turn, [1.2e308, 1.2e308, 0.0]),
+        (turn.scale(&3.0), [1.2e308, 1.2e308, -1.0]),
+    ];
+    for (s, p) in cases {
+        let reference = to_mp(&s).transform_point(&p.map(MpFloat::from_f64)).unwrap().map(|c| c.to_f64());
+        assert!(reference.iter().all(|c| c.is_finite()), "case {s} on {p:?}: {reference:?}");
+        assert!(!(reference[0] + reference[1] + reference[2]).is_finite(), "the sum must overflow: {reference:?}");
+        let fast = s.transform_point(&p).unwrap_or_else(|e| panic!("{s} on {p:?} failed: {e}"));
+        for (f, r) in fast.iter().zip(&reference) {
+            assert!((f - r).abs() <= 4.0 * f64::EPSILON * r.abs().max(1.0), "{s} on {p:?}: {fast:?} vs {reference:?}");
+        }
+    }
 }
 
 /// The slerp of unit poses (`rev(a) b` unit with non-negative scalar part: the direct path
