@@ -602,11 +602,14 @@ pub(crate) fn norm_forms(plan: &mut crate::plan::Plan) -> Result<(), CodegenErro
     for i in 0..plan.actions.len() {
         let k = &plan.actions[i];
         let Some(form) = norm_form(plan, k)? else { continue };
-        let cost = |k: &ActionKernel| k.counts().0 + k.counts().1;
-        let f = fingerprint(&form);
+        let cost = |k: &ActionKernel| {
+            let (m, a) = k.counts();
+            m + a
+        };
+        let (new, old) = (cost(&form), cost(k));
         let (num, den) = NORM_FORM_SAVING;
-        let saves = cost(&form) * den <= cost(k) * num;
-        if cost(&form) < cost(k) && (saves || WISDOM.iter().any(|w| w.0 == f)) {
+        let measured = || WISDOM.iter().any(|w| w.0 == fingerprint(&form));
+        if new < old && (new * den <= old * num || measured()) {
             plan.actions[i] = form;
         }
     }

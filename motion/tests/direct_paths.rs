@@ -170,8 +170,9 @@ fn log_of_large_translations_equals_the_careful_path_or_fails() {
 }
 
 /// `Pose::transform_point` at `f64` tests `α` (tame) and the coordinates' sum (finite):
-/// images that overflow in exactly one coordinate (each of the three in turn), translations and points up to `1.7e308`, rotational scales `2^±240` and
-/// `2^±260` (outside the tame range: the careful path), against the 256-bit careful path.
+/// images that overflow in exactly one coordinate (each of the three in turn), translations
+/// and points up to `1.7e308`, rotational scales `2^±240` and `2^±260` (outside the tame
+/// range: the careful path), against the 256-bit careful path.
 /// Where the reference is finite in `f64` the fast result equals it; where it is not, the fast
 /// path declines with `NotFinite`. A NaN or infinite coordinate of the point, in any place,
 /// fails the same way.
